@@ -1,0 +1,194 @@
+#include "cli_options.h"
+
+namespace cambench::cli {
+
+namespace {
+
+Error usageError(const QString& what) {
+    return Error::usage(QStringLiteral("%1; see `cambench-cli --help`").arg(what));
+}
+
+// Splits `--name=value`; returns true when `arg` names option `name`.
+bool matchesOption(const QString& arg, const QString& name, QString* inlineValue) {
+    if (arg == name) return true;
+    if (name.startsWith(QLatin1String("--")) && arg.startsWith(name + QLatin1Char('='))) {
+        *inlineValue = arg.mid(name.size() + 1);
+        return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+int GlobalOptions::effectiveBaud() const {
+    if (baud > 0) return baud;
+    return framing == comm::Framing::Multiuser ? 38400 : 9600;
+}
+
+Result<int> parseIntArgument(const QString& text, const QString& what, int min, int max) {
+    bool ok = false;
+    const int value = text.toInt(&ok, 10);
+    if (!ok || value < min || value > max) {
+        return usageError(QStringLiteral("%1 must be a whole number from %2 to %3, not \"%4\"")
+                              .arg(what)
+                              .arg(min)
+                              .arg(max)
+                              .arg(text));
+    }
+    return value;
+}
+
+Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
+    GlobalOptions options;
+    int i = 0;
+    // Takes the value of the option at args[i] (inline or the next word).
+    auto valueOf = [&](const QString& name, const QString& inlineValue,
+                       bool hasInline) -> Result<QString> {
+        if (hasInline) return inlineValue;
+        if (i + 1 >= args.size()) return usageError(QStringLiteral("%1 needs a value").arg(name));
+        return args.at(++i);
+    };
+    for (; i < args.size(); ++i) {
+        const QString& arg = args.at(i);
+        if (!arg.startsWith(QLatin1Char('-'))) {
+            options.command = arg;
+            options.commandArgs = args.mid(i + 1);
+            return options;
+        }
+        static const QStringList kNames = {
+            QStringLiteral("--port"),      QStringLiteral("--protocol"),
+            QStringLiteral("--baud"),      QStringLiteral("--device"),
+            QStringLiteral("--pc-number"), QStringLiteral("--timeout"),
+            QStringLiteral("--log")};
+        QString name;
+        QString inlineValue;
+        for (const QString& candidate : kNames) {
+            inlineValue.clear();
+            if (matchesOption(arg, candidate, &inlineValue)) {
+                name = candidate;
+                break;
+            }
+        }
+        if (name.isEmpty()) return usageError(QStringLiteral("unknown option \"%1\"").arg(arg));
+        const Result<QString> value = valueOf(name, inlineValue, arg.contains(QLatin1Char('=')));
+        if (!value) return value.error();
+        if (name == QLatin1String("--port")) {
+            options.port = *value;
+        } else if (name == QLatin1String("--protocol")) {
+            if (*value == QLatin1String("standard")) {
+                options.framing = comm::Framing::Standard;
+            } else if (*value == QLatin1String("multiuser")) {
+                options.framing = comm::Framing::Multiuser;
+            } else {
+                return usageError(
+                    QStringLiteral("--protocol must be \"standard\" or \"multiuser\", not \"%1\"")
+                        .arg(*value));
+            }
+        } else if (name == QLatin1String("--log")) {
+            options.logFile = *value;
+        } else {
+            struct Range { const char* name; int min; int max; int* target; };
+            const Range ranges[] = {{"--baud", 50, 4000000, &options.baud},
+                                    {"--device", 0, 63, &options.device},
+                                    {"--pc-number", 0, 63, &options.pcNumber},
+                                    {"--timeout", 10, 600000, &options.timeoutMs}};
+            for (const Range& range : ranges) {
+                if (name != QLatin1String(range.name)) continue;
+                const Result<int> number = parseIntArgument(*value, name, range.min, range.max);
+                if (!number) return number.error();
+                *range.target = *number;
+            }
+        }
+    }
+    return usageError(QStringLiteral("no COMMAND given"));
+}
+
+bool CommandArgs::takeFlag(const QString& name) {
+    return m_args.removeOne(name);
+}
+
+Result<QString> CommandArgs::takeOption(const QString& name, const QString& shortName) {
+    for (int i = 0; i < m_args.size(); ++i) {
+        QString inlineValue;
+        const bool isLong = matchesOption(m_args.at(i), name, &inlineValue);
+        if (!isLong && (shortName.isEmpty() || m_args.at(i) != shortName)) continue;
+        if (isLong && m_args.at(i).contains(QLatin1Char('='))) {
+            m_args.removeAt(i);
+            return inlineValue;
+        }
+        if (i + 1 >= m_args.size()) {
+            return usageError(QStringLiteral("%1 %2 needs a value").arg(m_command, m_args.at(i)));
+        }
+        const QString value = m_args.at(i + 1);
+        m_args.remove(i, 2);
+        return value;
+    }
+    return QString();
+}
+
+Result<int> CommandArgs::takeIntOption(const QString& name, int fallback, int min, int max) {
+    const Result<QString> text = takeOption(name);
+    if (!text) return text.error();
+    if (text->isEmpty()) return fallback;
+    return parseIntArgument(*text, name, min, max);
+}
+
+QString CommandArgs::takePositional() {
+    for (int i = 0; i < m_args.size(); ++i) {
+        const QString& arg = m_args.at(i);
+        // A lone "-" is a positional (stdin/stdout); anything else with a dash is an option.
+        if (arg.startsWith(QLatin1Char('-')) && arg != QLatin1String("-")) continue;
+        return m_args.takeAt(i);
+    }
+    return {};
+}
+
+Result<QString> CommandArgs::takeRequiredPositional(const QString& what) {
+    const QString value = takePositional();
+    if (value.isEmpty()) return usageError(QStringLiteral("%1 needs %2").arg(m_command, what));
+    return value;
+}
+
+Status CommandArgs::finish() const {
+    if (m_args.isEmpty()) return success();
+    return usageError(QStringLiteral("%1 does not take \"%2\"").arg(m_command, m_args.join(u' ')));
+}
+
+QString usageText() {
+    return QStringLiteral(
+        "Usage: cambench-cli [--port PORT] [--protocol standard|multiuser] [--baud N]\n"
+        "                    [--device N] [--pc-number N] [--timeout MS] [--log FILE] COMMAND\n"
+        "\n"
+        "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the default)\n"
+        "  --protocol    standard (default, 9600 baud) or multiuser (38400 baud)\n"
+        "  --baud N      line speed; overrides the protocol's default\n"
+        "  --device N    Multiuser device number 0..63 (default 0)\n"
+        "  --pc-number N Multiuser number of this PC 0..63 (default 63)\n"
+        "  --timeout MS  reply timeout per attempt (default 1000)\n"
+        "  --log FILE    write the traffic (hex and ASCII, user numbers masked) to FILE\n"
+        "\n"
+        "Commands:\n"
+        "  info [--json]                    identity and capacities, \"key: value\" lines\n"
+        "  status [--json]                  position, speed, program, error state, outputs\n"
+        "  scan [--json]                    Multiuser: device numbers that answer, one a line\n"
+        "  cams read --program P [--output O] [-o FILE]   CSV, header \"output,cam,on,off\"\n"
+        "  cams write --program P FILE      replaces exactly the tracks that FILE lists\n"
+        "  deadtimes read [-o FILE] | deadtimes write FILE     CSV \"output,deadtime\" (0.1 ms)\n"
+        "  names read [-o FILE] | names write FILE        CSV \"kind,number,name\" (output|program)\n"
+        "  settings read [-o FILE] | settings write FILE  JSON, system and encoder settings\n"
+        "  users list                       names and rights, numbers masked\n"
+        "  plc read [-o FILE] | plc write FILE            JSON\n"
+        "  backup -o FILE                   whole EEPROM image\n"
+        "  restore FILE [--force] [--no-safety-backup]\n"
+        "                                   checks FILE, matches it against the device, saves a\n"
+        "                                   safety backup next to FILE, then erases and writes\n"
+        "  verify FILE                      compare device with image; exit 0 when equal,\n"
+        "                                   1 when the device differs\n"
+        "  raw \"COMMAND\"                    one ASCII command, checksum added; prints the reply\n"
+        "\n"
+        "Outputs and inputs count from 1, programs from 0.\n"
+        "Exit codes: 0 ok, 1 device error reply (verify: device differs), 2 usage,\n"
+        "            3 communication failure, 4 invalid file or data\n");
+}
+
+}  // namespace cambench::cli

@@ -1,0 +1,57 @@
+#pragma once
+
+#include "comm/protocol/frame.h"
+#include "model/result.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace cambench::cli {
+
+// The options before COMMAND (see usageText()).
+struct GlobalOptions {
+    QString port = QStringLiteral("sim");
+    comm::Framing framing = comm::Framing::Standard;
+    int baud = 0;  // 0 = the protocol's default
+    int device = 0;
+    int pcNumber = 63;
+    int timeoutMs = 1000;
+    QString logFile;
+    QString command;
+    QStringList commandArgs;  // everything after COMMAND
+
+    int effectiveBaud() const;
+};
+
+// Parses argv (without the program name). Fails with ErrorKind::Usage.
+Result<GlobalOptions> parseGlobalOptions(const QStringList& args);
+
+// The arguments of one command: options and positionals, consumed one by one;
+// finish() rejects whatever is left over.
+class CommandArgs {
+public:
+    CommandArgs(QString command, QStringList args)
+        : m_command(std::move(command)), m_args(std::move(args)) {}
+
+    const QString& command() const { return m_command; }
+
+    bool takeFlag(const QString& name);
+    // Value of `--name VALUE`, `--name=VALUE` (or a short alias `-o VALUE`).
+    Result<QString> takeOption(const QString& name, const QString& shortName = {});
+    Result<int> takeIntOption(const QString& name, int fallback, int min, int max);
+    // The next word that is not an option; empty when there is none.
+    QString takePositional();
+    Result<QString> takeRequiredPositional(const QString& what);
+    Status finish() const;
+
+private:
+    QString m_command;
+    QStringList m_args;
+};
+
+// Parses a whole decimal number in [min,max] with a usage error naming `what`.
+Result<int> parseIntArgument(const QString& text, const QString& what, int min, int max);
+
+QString usageText();
+
+}  // namespace cambench::cli

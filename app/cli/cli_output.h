@@ -1,0 +1,22 @@
+#pragma once
+
+#include "model/result.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace cambench::cli {
+
+// "cambench-cli: <message>" on stderr.
+void printError(const QString& message);
+// Prints the error and returns its exit code.
+int reportError(const Error& error);
+
+void printOut(const QString& text);  // stdout, as UTF-8
+
+// Writes `data` to `path` atomically, or to stdout when `path` is empty or "-".
+Status writeOutput(const QString& path, const QByteArray& data);
+// Reads a whole input file; a missing or unreadable file is InvalidData.
+Result<QByteArray> readInputFile(const QString& path);
+
+}  // namespace cambench::cli

@@ -1,0 +1,78 @@
+#include "cli_session.h"
+
+#include <QTimer>
+
+namespace cambench::cli {
+
+namespace {
+
+// Opening a serial port or a TCP connection is bounded by the transport;
+// this only guards against a worker that never reports back.
+constexpr int kConnectGuardMs = 60000;
+
+}  // namespace
+
+CliSession::CliSession(GlobalOptions options) : m_options(std::move(options)) {
+    QObject::connect(&m_worker, &comm::CommWorker::jobProgress, &m_context,
+                     [this](quint64, qint64 done, qint64 total, const QString& text) {
+                         if (m_showProgress) m_progress.update(done, total, text);
+                     });
+    if (!m_options.logFile.isEmpty()) {
+        m_log = std::make_unique<TrafficLogFile>(m_options.logFile);
+        QObject::connect(&m_worker, &comm::CommWorker::traffic, &m_context,
+                         [this](const comm::TrafficEntry& entry) { m_log->append(entry); });
+    }
+}
+
+CliSession::~CliSession() {
+    m_worker.disconnectFromDevice();
+}
+
+QString CliSession::where() const {
+    if (m_options.framing == comm::Framing::Multiuser) {
+        return QStringLiteral("%1 (device %2)").arg(m_options.port).arg(m_options.device);
+    }
+    return m_options.port;
+}
+
+Status CliSession::ensureConnected() {
+    if (m_connection) return *m_connection;
+    comm::ConnectionSettings connection;
+    connection.port = m_options.port;
+    connection.serial.baud = m_options.effectiveBaud();
+    comm::LinkSettings link;
+    link.framing = m_options.framing;
+    link.device = m_options.device;
+    link.pcNumber = m_options.pcNumber;
+    link.timeoutMs = m_options.timeoutMs;
+
+    QEventLoop loop;
+    bool finished = false;
+    Status outcome = Error::communication(
+        QStringLiteral("no answer from the connection to %1; check the port name").arg(where()));
+    QObject::connect(&m_worker, &comm::CommWorker::connectionStateChanged, &loop,
+                     [&](comm::ConnectionState state, const QString& message) {
+                         if (state == comm::ConnectionState::Connected) {
+                             outcome = success();
+                             finished = true;
+                             loop.quit();
+                         } else if (state != comm::ConnectionState::Connecting) {
+                             outcome = Error::communication(
+                                 message.isEmpty()
+                                     ? QStringLiteral("cannot open %1; check the port name and "
+                                                      "that no other program uses it")
+                                           .arg(where())
+                                     : message);
+                             finished = true;
+                             loop.quit();
+                         }
+                     });
+    QTimer::singleShot(kConnectGuardMs, &loop, &QEventLoop::quit);
+    m_worker.connectTo(connection, link);
+    if (!finished) loop.exec();  // the worker may have reported synchronously
+    m_connection = outcome;
+    if (m_log && outcome.ok()) m_log->note(QStringLiteral("connected to %1").arg(where()));
+    return outcome;
+}
+
+}  // namespace cambench::cli

@@ -1,0 +1,75 @@
+#pragma once
+
+#include "cli_options.h"
+#include "progress_bar.h"
+#include "traffic_log_file.h"
+
+#include "comm/operations/camcon_client.h"
+#include "comm/worker/comm_worker.h"
+
+#include <QEventLoop>
+#include <QObject>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace cambench::cli {
+
+// The connection of one cambench-cli run. The device work happens in
+// CommWorker jobs; the main thread only runs an event loop until a job's
+// result arrives, so it never waits on the line itself.
+class CliSession {
+public:
+    explicit CliSession(GlobalOptions options);
+    ~CliSession();
+
+    const GlobalOptions& options() const { return m_options; }
+
+    // Draw a progress bar for the following jobs (only on a terminal).
+    void setShowProgress(bool show) { m_showProgress = show; }
+
+    template <class T>
+    using Work = std::function<Result<T>(comm::CamConClient&, comm::JobContext&)>;
+
+    // Connects on first use, runs `work` as one job and returns its result.
+    template <class T>
+    Result<T> run(const QString& title, Work<T> work);
+
+    // Where the device is, for messages: "sim", "/dev/ttyUSB0 (device 5)".
+    QString where() const;
+
+private:
+    Status ensureConnected();
+
+    GlobalOptions m_options;
+    comm::CommWorker m_worker;
+    QObject m_context;  // receives the queued results
+    ProgressBar m_progress;
+    std::unique_ptr<TrafficLogFile> m_log;
+    bool m_showProgress = false;
+    std::optional<Status> m_connection;
+};
+
+template <class T>
+Result<T> CliSession::run(const QString& title, Work<T> work) {
+    const Status connected = ensureConnected();
+    if (!connected) return connected.error();
+    QEventLoop loop;
+    std::optional<Result<T>> result;
+    m_worker.run<Result<T>>(
+        &m_context, comm::JobPriority::User, title,
+        [work = std::move(work)](comm::JobContext& job) {
+            comm::CamConClient client(job.link());
+            return work(client, job);
+        },
+        [&](Result<T> value) {
+            result.emplace(std::move(value));
+            loop.quit();
+        });
+    loop.exec();
+    m_progress.finish();
+    return std::move(*result);
+}
+
+}  // namespace cambench::cli

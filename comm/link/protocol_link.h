@@ -1,0 +1,81 @@
+#pragma once
+
+#include "comm/protocol/catalogue.h"
+#include "comm/protocol/command_codec.h"
+#include "comm/protocol/stream_decoder.h"
+#include "comm/transport/transport.h"
+
+#include <QDateTime>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+
+namespace cambench::comm {
+
+struct LinkSettings {
+    Framing framing = Framing::Standard;
+    int device = 0;        // Multiuser destination 0..63
+    int pcNumber = 63;     // Multiuser own number
+    int timeoutMs = 1000;  // per attempt, normal commands
+    int longTimeoutMs = 150000;  // !CA, !EE0000 (manual: up to 2 minutes)
+    int retries = 3;       // further attempts after the first
+};
+
+// One line of the traffic log. User numbers are masked by the link before
+// the entry leaves it (the ?USER/!USER number fields).
+struct TrafficEntry {
+    QDateTime time;
+    bool outgoing = true;
+    QByteArray bytes;      // wire bytes, secrets overwritten with '*'
+};
+
+// Speaks the ASCII protocol over a Transport: frames a request, waits for
+// the matching reply, retries on timeout or checksum error (Multiuser: with
+// the same block number), keeps a block counter per destination device.
+// Lives in the worker thread; every call blocks that thread only.
+class ProtocolLink {
+public:
+    ProtocolLink(Transport& transport, LinkSettings settings);
+
+    const LinkSettings& settings() const { return m_settings; }
+    void setDevice(int device) { m_settings.device = device; }
+    void setTimeout(int ms) { m_settings.timeoutMs = ms; }
+    void setRetries(int retries) { m_settings.retries = retries; }
+
+    // Set from any thread; an ongoing call returns Cancelled within ~50 ms.
+    void setCancelFlag(const std::atomic_bool* flag) { m_cancel = flag; }
+    void setTrafficSink(std::function<void(const TrafficEntry&)> sink) { m_sink = std::move(sink); }
+
+    // Sends `spec` with `fields` and returns the reply's fields. Device
+    // errors (ERR) and :Z are returned at once, without retries.
+    // `timeoutMs` overrides the per-attempt timeout when > 0.
+    Result<Fields> call(const CommandSpec& spec, const Fields& fields = {}, int timeoutMs = 0);
+    Result<Fields> call(char kind, const char* name, const Fields& fields = {}, int timeoutMs = 0);
+
+    // A free-form request body ("IFGWG", "NF000003") with checksum added:
+    // returns the reply frame's body. For the terminal and `raw`.
+    Result<QByteArray> raw(char kind, const QByteArray& body, int timeoutMs = 0);
+
+    // Counters for benchmarks and logs.
+    struct Stats {
+        qint64 bytesSent = 0;
+        qint64 bytesReceived = 0;
+        int requests = 0;
+        int retries = 0;
+        int badFrames = 0;
+    };
+    const Stats& stats() const { return m_stats; }
+    void resetStats() { m_stats = {}; }
+
+private:
+    Transport& m_transport;
+    LinkSettings m_settings;
+    const std::atomic_bool* m_cancel = nullptr;
+    std::function<void(const TrafficEntry&)> m_sink;
+    std::unique_ptr<StreamDecoder> m_decoder;
+    int m_nextBlock[64] = {};
+    Stats m_stats;
+};
+
+}  // namespace cambench::comm

@@ -1,0 +1,3 @@
+target_sources(cambench_comm PRIVATE
+  link/protocol_link.h
+)

@@ -1,0 +1,3 @@
+target_sources(cambench_comm PRIVATE
+  operations/camcon_client.h
+)

@@ -1,0 +1,39 @@
+#include "sim_axis.h"
+
+#include <cmath>
+#include <utility>
+
+namespace cambench::comm {
+
+SimAxis::SimAxis(qint32 minPosition, qint32 maxPosition, double unitsPerSecond)
+    : m_min(minPosition), m_max(maxPosition), m_unitsPerSecond(unitsPerSecond), m_basePosition(minPosition) {
+    m_timer.start();
+}
+
+void SimAxis::setClock(Clock clock) {
+    const qint32 current = position();
+    m_clock = std::move(clock);
+    setPosition(current);
+}
+
+qint32 SimAxis::position() const {
+    if (!m_running || span() <= 0) return m_basePosition;
+    const double travelled = m_unitsPerSecond * double(now() - m_baseMs) / 1000.0;
+    const qint64 offset = (qint64(m_basePosition) - m_min + qint64(std::floor(travelled))) % span();
+    return qint32(m_min + (offset < 0 ? offset + span() : offset));
+}
+
+double SimAxis::rpm() const { return span() > 0 ? unitsPerSecond() * 60.0 / double(span()) : 0.0; }
+
+void SimAxis::setRunning(bool running) {
+    const qint32 current = position();
+    m_running = running;
+    setPosition(current);
+}
+
+void SimAxis::setPosition(qint32 position) {
+    m_basePosition = position;
+    m_baseMs = now();
+}
+
+}  // namespace cambench::comm

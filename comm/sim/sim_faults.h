@@ -1,0 +1,44 @@
+#pragma once
+
+#include "sim_output.h"
+
+#include <QRandomGenerator>
+
+#include <optional>
+
+namespace cambench::comm {
+
+// Misbehaviour on purpose (cf. libmodbus' unit-test server): all random
+// choices come from one seeded generator, so a test sees the same faults
+// on every run.
+struct SimFaultSettings {
+    double corruptProbability = 0.0;  // one byte of a reply changed
+    double dropProbability = 0.0;     // a reply never sent
+    int extraDelayMs = 0;             // added to every reply
+    bool dead = false;                // never answers
+    quint32 seed = 1;
+};
+
+struct SimFaultCounters {
+    int replies = 0;    // replies offered to the injector
+    int corrupted = 0;
+    int dropped = 0;    // by chance or because the device is dead
+};
+
+class SimFaults {
+public:
+    explicit SimFaults(const SimFaultSettings& settings = {});
+
+    const SimFaultSettings& settings() const { return m_settings; }
+    const SimFaultCounters& counters() const { return m_counters; }
+
+    // The reply as it reaches the line; nullopt when it is lost.
+    std::optional<SimOutput> apply(SimOutput output);
+
+private:
+    SimFaultSettings m_settings;
+    SimFaultCounters m_counters;
+    QRandomGenerator m_random;
+};
+
+}  // namespace cambench::comm

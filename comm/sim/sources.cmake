@@ -1,0 +1,2 @@
+target_sources(cambench_comm PRIVATE
+)

@@ -1,0 +1,93 @@
+#pragma once
+
+#include "job.h"
+#include "comm/link/protocol_link.h"
+#include "comm/transport/transport.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QThread>
+
+#include <atomic>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+
+namespace cambench::comm {
+
+enum class ConnectionState { Disconnected, Connecting, Connected, Lost };
+
+// Owns the transport and runs jobs on its own QThread. Thread-safe front:
+// connectTo(), submit(), cancel() may be called from any thread and return
+// at once; results come back as queued calls on the submitter's context
+// object (see run()). Nothing on the caller's thread waits on the line.
+//
+// A job is a function that uses the link synchronously on the worker
+// thread. Jobs run one at a time; User jobs before Poll jobs; a Poll job
+// with the same key as a queued one replaces it (no pile-up of polls).
+class CommWorker : public QObject {
+    Q_OBJECT
+public:
+    explicit CommWorker(QObject* parent = nullptr);
+    ~CommWorker() override;  // stops the thread with a bounded wait
+
+    using JobFn = std::function<void(JobContext&)>;
+
+    // Opens the transport for `connection` (closing any open one). Emits
+    // connectionStateChanged. `link` carries framing, device, timeouts.
+    void connectTo(const ConnectionSettings& connection, const LinkSettings& link);
+    void disconnectFromDevice();
+    void setLinkDevice(int device);  // Multiuser destination for later jobs
+
+    // Queues `fn`; returns the job id. `pollKey` (Poll jobs only) collapses
+    // repeated polls. If the link is not connected the job still runs and
+    // its calls fail with a Communication error.
+    quint64 submit(JobPriority priority, const QString& title, JobFn fn,
+                   const QString& pollKey = {});
+    void cancel(quint64 id);     // running or queued
+    void cancelAll();
+
+    // Convenience: runs `work` on the worker thread and `done` with its
+    // result on `context`'s thread (queued), unless `context` died.
+    template <class T>
+    quint64 run(QObject* context, JobPriority priority, const QString& title,
+                std::function<T(JobContext&)> work, std::function<void(T)> done,
+                const QString& pollKey = {});
+
+    ConnectionState state() const { return m_state.load(); }
+
+Q_SIGNALS:
+    void connectionStateChanged(cambench::comm::ConnectionState state, const QString& message);
+    void jobStarted(quint64 id, const QString& title);
+    void jobProgress(quint64 id, qint64 done, qint64 total, const QString& text);
+    void jobFinished(quint64 id);
+    void traffic(const cambench::comm::TrafficEntry& entry);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+    std::atomic<ConnectionState> m_state{ConnectionState::Disconnected};
+    friend struct Impl;
+};
+
+template <class T>
+quint64 CommWorker::run(QObject* context, JobPriority priority, const QString& title,
+                        std::function<T(JobContext&)> work, std::function<void(T)> done,
+                        const QString& pollKey) {
+    QPointer<QObject> guard(context);
+    return submit(
+        priority, title,
+        [guard, work = std::move(work), done = std::move(done)](JobContext& ctx) {
+            T result = work(ctx);
+            if (!guard) return;
+            QMetaObject::invokeMethod(
+                guard.data(), [done, result = std::move(result)]() { done(result); },
+                Qt::QueuedConnection);
+        },
+        pollKey);
+}
+
+}  // namespace cambench::comm
+
+Q_DECLARE_METATYPE(cambench::comm::TrafficEntry)

@@ -1,0 +1,65 @@
+#include "sim_process.h"
+
+#include <QDeadlineTimer>
+
+namespace cambench::e2e {
+
+namespace {
+
+constexpr int kStartBoundMs = 20000;
+
+}  // namespace
+
+SimProcess::~SimProcess() {
+    stop();
+}
+
+bool SimProcess::start(const QStringList& args, const QString& stderrLog) {
+    m_process.setProgram(QStringLiteral(CAMBENCH_SIM_EXE));
+    m_process.setArguments(args);
+    // Nobody reads the simulator's log while a test runs: a pipe could fill
+    // up and stall it, so its stderr goes to a file (or nowhere).
+    m_process.setStandardErrorFile(stderrLog.isEmpty() ? QProcess::nullDevice() : stderrLog);
+    m_process.start();
+    if (!m_process.waitForStarted(kStartBoundMs)) {
+        m_error = QStringLiteral("cambench-sim did not start: %1").arg(m_process.errorString());
+        return false;
+    }
+    const QDeadlineTimer deadline(kStartBoundMs);
+    while (!m_process.canReadLine()) {
+        if (deadline.hasExpired() || m_process.state() != QProcess::Running) {
+            m_error = QStringLiteral("cambench-sim printed no pty path (arguments: %1)")
+                          .arg(args.join(u' '));
+            stop();
+            return false;
+        }
+        m_process.waitForReadyRead(100);
+    }
+    m_ptyPath = QString::fromUtf8(m_process.readLine()).trimmed();
+    return !m_ptyPath.isEmpty();
+}
+
+void SimProcess::stop() {
+    if (m_process.state() == QProcess::NotRunning) return;
+    m_process.kill();
+    m_process.waitForFinished(5000);
+}
+
+CliRun runCli(const QStringList& args, int timeoutMs) {
+    QProcess process;
+    process.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+    process.setArguments(args);
+    process.start();
+    CliRun run;
+    run.finished = process.waitForStarted(10000) && process.waitForFinished(timeoutMs);
+    if (!run.finished) {
+        process.kill();
+        process.waitForFinished(5000);
+    }
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    run.out = QString::fromUtf8(process.readAllStandardOutput());
+    run.err = QString::fromUtf8(process.readAllStandardError());
+    return run;
+}
+
+}  // namespace cambench::e2e

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+namespace cambench::e2e {
+
+// The real `cambench-sim` executable serving a pseudo-terminal. Killed when
+// this object dies, so every test ends with its simulator gone.
+class SimProcess {
+public:
+    SimProcess() = default;
+    ~SimProcess();
+    SimProcess(const SimProcess&) = delete;
+    SimProcess& operator=(const SimProcess&) = delete;
+
+    // Starts the simulator with `args` and waits (bounded) for the pty path
+    // on its first stdout line. False, with errorText(), when it did not start.
+    // The simulator's stderr goes to `stderrLog` when given.
+    bool start(const QStringList& args, const QString& stderrLog = {});
+    void stop();
+
+    QString ptyPath() const { return m_ptyPath; }
+    QString errorText() const { return m_error; }
+
+private:
+    QProcess m_process;
+    QString m_ptyPath;
+    QString m_error;
+};
+
+// One run of the real `cambench-cli` executable.
+struct CliRun {
+    int exitCode = -1;
+    bool finished = false;  // false: it had to be killed (hang)
+    QString out;
+    QString err;
+};
+
+// Runs cambench-cli with `args`, bounded by `timeoutMs` (a hang bound, not a
+// performance limit).
+CliRun runCli(const QStringList& args, int timeoutMs = 120000);
+
+}  // namespace cambench::e2e

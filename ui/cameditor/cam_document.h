@@ -1,0 +1,137 @@
+#pragma once
+
+#include "model/cam_program.h"
+#include "model/dead_times.h"
+#include "model/device_info.h"
+
+#include <QList>
+#include <QMap>
+#include <QObject>
+#include <QString>
+
+class QUndoStack;
+
+namespace cambench {
+
+// Where an edited item stands relative to the device.
+enum class ChangeState {
+    Unchanged,  // equal to what was last read from or written to the device
+    Edited,     // differs from the device copy, not yet written
+    PcOnly,     // the device copy of this program is unknown (never read)
+};
+
+// One line of "Compare with device".
+struct TrackDifference {
+    int program = 0;
+    int output = 1;
+    bool deviceKnown = false;  // false: the program was never read from the device
+    Track deviceTrack;
+    Track editedTrack;
+};
+
+// The edited state of one device's cam programs, beside the device copy (what
+// was last read from or written to the device). Every user change goes
+// through undo commands on undoStack(); the apply*() setters are for those
+// commands only. Nothing here talks to the device: the shell reads and
+// writes, then calls loadProgramFromDevice()/markWritten().
+class CamDocument : public QObject {
+    Q_OBJECT
+
+public:
+    explicit CamDocument(QObject* parent = nullptr);
+    ~CamDocument() override;
+
+    // Limits of the device (IMIN..IMAX, outputs, programs) and the axis kind.
+    void setLimits(const DeviceInfo& info, bool rotary);
+    const DeviceInfo& deviceInfo() const { return m_info; }
+    bool isRotary() const { return m_rotary; }
+    qint32 minPosition() const { return m_info.minPosition; }
+    qint32 maxPosition() const { return m_info.maxPosition; }
+    // Number of distinct positions, the period of a rotary axis.
+    qint64 positionSpan() const;
+    int outputCount() const { return m_info.outputs; }
+    int programCount() const { return m_info.programs; }
+
+    CamProgram program(int number) const;
+    Track track(int program, int output) const;
+    QString programName(int program) const;
+    QString outputName(int output) const;
+    qint32 deadTime(int output) const;  // 0.1 ms steps
+    const Names& names() const { return m_names; }
+    const DeadTimes& deadTimes() const { return m_deadTimes; }
+
+    // Device side (called by the shell after device work succeeded).
+    void loadProgramFromDevice(const CamProgram& program);
+    void loadOutputSettingsFromDevice(const QMap<int, QString>& outputNames,
+                                      const DeadTimes& deadTimes);
+    // Replaces the edited state without a device copy (e.g. a project file).
+    void loadOffline(const QMap<int, CamProgram>& programs, const Names& names,
+                     const DeadTimes& deadTimes);
+    void markWritten(int program);
+    void markOutputSettingsWritten();
+    bool hasDeviceCopy(int program) const { return m_device.contains(program); }
+    QList<int> editedPrograms() const { return m_edited.keys(); }
+
+    ChangeState programState(int program) const;
+    ChangeState trackState(int program, int output) const;
+    ChangeState camState(int program, int output, int index) const;
+    QList<TrackDifference> differences() const;
+    // Tracks, program names, output names and dead times that differ from
+    // the device (for the window title).
+    int changedCount() const;
+
+    QUndoStack* undoStack() const { return m_undoStack; }
+    // A key no other edit uses: all setCam() calls with it merge into one
+    // undo command (one per drag in the diagram).
+    quint64 newDragKey();
+
+    // User edits: each pushes one undo command.
+    void setCam(int program, int output, int index, const Cam& cam, quint64 mergeKey = 0);
+    void insertCam(int program, int output, const Cam& cam);
+    void deleteCam(int program, int output, int index);
+    void replaceTrack(int program, const Track& track, const QString& text);
+    void copyTrack(int program, int fromOutput, int toProgram, int toOutput);
+    void copyProgram(int from, int to);
+    void generateCams(int program, const Track& track);
+    void setProgramName(int program, const QString& name);
+    void setOutputName(int output, const QString& name);
+    void setDeadTime(int output, qint32 deadTime);
+
+    // For the undo commands: change state without recording undo.
+    void applyTrack(int program, const Track& track);
+    void applyProgram(const CamProgram& program);
+    void applyProgramName(int program, const QString& name);
+    void applyOutputName(int output, const QString& name);
+    void applyDeadTime(int output, qint32 deadTime);
+
+    // Cams on a track are kept ordered by switch-on point.
+    static Track normalized(Track track);
+
+Q_SIGNALS:
+    void limitsChanged();
+    void trackChanged(int program, int output);
+    void programChanged(int program);  // name, or every track at once
+    void outputNameChanged(int output);
+    void deadTimeChanged(int output);
+    // The device copy changed (read or written): change markers must follow.
+    void deviceStateChanged();
+    void changedCountChanged(int count);
+
+private:
+    void notifyChangedCount();
+
+    DeviceInfo m_info;
+    bool m_rotary = true;
+    QMap<int, CamProgram> m_edited;
+    QMap<int, CamProgram> m_device;
+    Names m_names;  // edited output names; program names live in CamProgram
+    DeadTimes m_deadTimes;
+    QMap<int, QString> m_deviceOutputNames;
+    DeadTimes m_deviceDeadTimes;
+    bool m_outputSettingsKnown = false;
+    QUndoStack* m_undoStack = nullptr;
+    quint64 m_lastDragKey = 0;
+    int m_lastChangedCount = 0;
+};
+
+}  // namespace cambench
