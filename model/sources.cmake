@@ -2,9 +2,36 @@ target_sources(cambench_model PRIVATE
   result.h
   cam_program.h
   device_info.h
+  device_info.cpp
   dead_times.h
   user.h
   plc_network.h
+  plc_network.cpp
   eeprom_image.h
+  eeprom_image.cpp
   system_settings.h
+  system_settings.cpp
+  settings_validation.cpp
+  model_log.h
+  model_log.cpp
+  atomic_file.h
+  atomic_file.cpp
+  file_read.h
+  file_read.cpp
+  cam_validation.h
+  cam_validation.cpp
+  data_validation.h
+  data_validation.cpp
+  json_reader.h
+  json_reader.cpp
+  json_file.h
+  json_file.cpp
+  device_info_json.h
+  device_info_json.cpp
+  project_file.h
+  project_file.cpp
+  eeprom_image_file.h
+  eeprom_image_file.cpp
+  csv_io.h
+  csv_io.cpp
 )

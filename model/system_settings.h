@@ -3,6 +3,7 @@
 #include <QList>
 #include <QMap>
 #include <QString>
+#include <QStringList>
 #include <QVariant>
 
 namespace cambench {
@@ -39,6 +40,7 @@ struct SettingSpec {
     const char* section = "";   // manual section
     QList<SettingChoice> choices{};
     bool readOnly = false;
+    bool excludeZero = false;   // [min,max] without 0 (gear multiplier)
 };
 
 // Every setting of manual 5.3 and 5.4 that is a single value.
@@ -52,5 +54,19 @@ using SystemSettings = QMap<QString, QVariant>;
 
 // Empty when valid; otherwise one message per offending key, naming it.
 QStringList validateSettings(const SystemSettings& settings);
+
+// Empty when `value` fits `spec`; otherwise why not and what is allowed,
+// without the key ("0 is not allowed; allowed are -99999..-1 and 1..99999").
+// Numbers must be integer QVariants (Fixed: the scaled integer), texts
+// QStrings.
+QString settingValueProblem(const SettingSpec& spec, const QVariant& value);
+
+// A Fixed or Integer value as a person writes it ("0.00001" for a speed
+// factor of 1 with 5 decimals).
+QString formatSettingValue(const SettingSpec& spec, qint64 value);
+
+// "axisType" (?WLIN): 0 rotary, 1 linear. A project without it is rotary,
+// as the default range 0..359 suggests.
+bool isRotaryAxis(const SystemSettings& settings);
 
 }  // namespace cambench

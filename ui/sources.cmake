@@ -1,2 +1,22 @@
 target_sources(cambench_ui PRIVATE
+  shell_log.h
+  shell_log.cpp
+  write_report.h
+  write_report.cpp
+  change_marker.h
+  device_session.h
+  device_session.cpp
+  workspace.h
+  workspace.cpp
+  section_page.h
+  connection_page.h
+  connection_page.cpp
+  dead_times_model.h
+  dead_times_model.cpp
+  dead_times_page.h
+  dead_times_page.cpp
+  setting_field.h
+  setting_field.cpp
+  settings_page.h
+  settings_page.cpp
 )

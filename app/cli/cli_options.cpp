@@ -97,6 +97,7 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
                 const Result<int> number = parseIntArgument(*value, name, range.min, range.max);
                 if (!number) return number.error();
                 *range.target = *number;
+                if (range.target == &options.timeoutMs) options.timeoutGiven = true;
             }
         }
     }

@@ -16,6 +16,7 @@ struct GlobalOptions {
     int device = 0;
     int pcNumber = 63;
     int timeoutMs = 1000;
+    bool timeoutGiven = false;  // scan uses a short timeout unless --timeout is given
     QString logFile;
     QString command;
     QStringList commandArgs;  // everything after COMMAND

@@ -1,5 +1,6 @@
 #include "cli_output.h"
 
+#include "cli_options.h"
 #include "exit_codes.h"
 
 #include <QFile>
@@ -16,6 +17,10 @@ void printError(const QString& message) {
 
 int reportError(const Error& error) {
     printError(error.message);
+    if (error.kind == ErrorKind::Usage) {
+        std::fputs("\n", stderr);
+        std::fputs(usageText().toUtf8().constData(), stderr);
+    }
     return exitCodeFor(error.kind);
 }
 

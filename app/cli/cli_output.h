@@ -9,7 +9,7 @@ namespace cambench::cli {
 
 // "cambench-cli: <message>" on stderr.
 void printError(const QString& message);
-// Prints the error and returns its exit code.
+// Prints the error (usage errors: and the usage) and returns its exit code.
 int reportError(const Error& error);
 
 void printOut(const QString& text);  // stdout, as UTF-8

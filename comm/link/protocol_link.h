@@ -10,6 +10,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace cambench::comm {
 
@@ -69,11 +70,36 @@ public:
     void resetStats() { m_stats = {}; }
 
 private:
+    // What a reply frame means to the request waiting for it.
+    enum class Verdict { Accept, Ignore, Retry };
+    using Judge = std::function<Verdict(const Frame&)>;
+
+    // Sends `body` (framed, with the next block number in Multiuser) and
+    // retries until `judge` accepts a reply, the attempts run out or the
+    // cancel flag is set. `expectReply` false returns after writing.
+    Result<Frame> exchange(const QString& label, char kind, const QByteArray& body,
+                           int timeoutMs, bool expectReply, const Judge& judge);
+    // One attempt's wait: the accepted frame, or nothing when the attempt
+    // failed (`problem` says why) and another may follow.
+    Result<std::optional<Frame>> awaitReply(const std::optional<MultiuserAddress>& request,
+                                            int timeoutMs, const Judge& judge,
+                                            QString& problem);
+    Verdict judgeFrame(const DecodeEvent& event, const std::optional<MultiuserAddress>& request,
+                       const Judge& judge, QString& problem);
+    int timeoutFor(const CommandSpec* spec, const QByteArray& body, int timeoutMs) const;
+    QString noReplyMessage(const QString& label, int attempts, int timeoutMs,
+                           const QString& problem) const;
+    bool cancelled() const { return m_cancel && m_cancel->load(); }
+    void report(const QByteArray& bytes, bool outgoing);
+    // Logs bytes left from an earlier exchange and starts the decoder afresh.
+    void dropStaleInput();
+
     Transport& m_transport;
     LinkSettings m_settings;
     const std::atomic_bool* m_cancel = nullptr;
     std::function<void(const TrafficEntry&)> m_sink;
     std::unique_ptr<StreamDecoder> m_decoder;
+    QByteArray m_undecoded;  // received bytes of a frame not yet complete
     int m_nextBlock[64] = {};
     Stats m_stats;
 };

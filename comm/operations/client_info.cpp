@@ -82,8 +82,8 @@ Result<DeviceStatus> CamConClient::readStatus(int outputs, int inputs) {
         {"BSPEED", [&](const Fields& f) { status.speed = qint32(f.num("value")); }},
         {"SPEED", [&](const Fields& f) { status.speedText = text(f, "text").trimmed(); }},
         {"PAU", [&](const Fields& f) { status.activeProgram = int(f.num("value")); }},
-        {"ATAB", [&](const Fields& f) { status.outputs = bitsOf(f.bytes("value"), outputs); }},
-        {"ETAB", [&](const Fields& f) { status.inputs = bitsOf(f.bytes("value"), inputs); }},
+        {"ATAB", [&](const Fields& f) { status.outputs = bitsOf(f.bytes("data"), outputs); }},
+        {"ETAB", [&](const Fields& f) { status.inputs = bitsOf(f.bytes("data"), inputs); }},
     };
     for (const Optional& query : queries) {
         const Result<Fields> reply = m_link.call('?', query.command);

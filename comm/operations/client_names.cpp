@@ -13,14 +13,14 @@ Result<DeadTimes> CamConClient::readDeadTimes(int outputs) {
             return inContext(QStringLiteral("reading the dead time of output %1 (?TZK)").arg(output),
                              reply.error());
         }
-        deadTimes.insert(output, qint32(reply->num("deadTime")));
+        deadTimes.insert(output, qint32(reply->num("value")));
     }
     return deadTimes;
 }
 
 Status CamConClient::writeDeadTime(int output, qint32 tenthsMs) {
     const Result<Fields> reply = m_link.call(
-        '!', "TZK", Fields{{"output", wireOutput(output)}, {"deadTime", qint64(tenthsMs)}});
+        '!', "TZK", Fields{{"output", wireOutput(output)}, {"value", qint64(tenthsMs)}});
     if (!reply) {
         return inContext(QStringLiteral("writing the dead time of output %1 (!TZK)").arg(output),
                          reply.error());
@@ -34,12 +34,12 @@ Result<QString> CamConClient::readOutputName(int output) {
         return inContext(QStringLiteral("reading the name of output %1 (?ANAME)").arg(output),
                          reply.error());
     }
-    return text(*reply, "name");
+    return text(*reply, "text");
 }
 
 Status CamConClient::writeOutputName(int output, const QString& name) {
     Fields fields{{"output", wireOutput(output)}};
-    fields.setBytes("name", wireText(name));
+    fields.setBytes("text", wireText(name));
     const Result<Fields> reply = m_link.call('!', "ANAME", fields);
     if (!reply) {
         return inContext(QStringLiteral("writing the name of output %1 (!ANAME)").arg(output),
@@ -54,12 +54,12 @@ Result<QString> CamConClient::readProgramName(int program) {
         return inContext(QStringLiteral("reading the name of program %1 (?PNAME)").arg(program),
                          reply.error());
     }
-    return text(*reply, "name");
+    return text(*reply, "text");
 }
 
 Status CamConClient::writeProgramName(int program, const QString& name) {
     Fields fields{{"program", qint64(program)}};
-    fields.setBytes("name", wireText(name));
+    fields.setBytes("text", wireText(name));
     const Result<Fields> reply = m_link.call('!', "PNAME", fields);
     if (!reply) {
         return inContext(QStringLiteral("writing the name of program %1 (!PNAME)").arg(program),

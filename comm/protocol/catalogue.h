@@ -16,12 +16,14 @@ enum class FieldType {
     HexBytes,   // status tables: 2 hex digits per 8 bits, up to the checksum
     HexWords,   // `count` words of `width` hex digits each (PLC symbol fields)
 };
+// A field that runs "up to the checksum" (TextRest, HexBytes, Binary -1,
+// HexWords count -1) is always the last one of its list.
 
 struct FieldSpec {
     const char* name;
     FieldType type;
     int width;      // characters for Hex/SignedHex/Text/HexWords, bytes for Binary, -1 = rest
-    int count = 1;  // HexWords only
+    int count = 1;  // HexWords only; -1 = as many words as the data holds (?ANTAB)
 };
 
 enum class ReplyKind {

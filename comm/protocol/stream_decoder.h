@@ -44,10 +44,31 @@ public:
     int pendingBytes() const { return int(m_buffer.size()); }
 
 private:
+    enum class State {
+        Hunt,     // looking for a frame start; m_buffer holds a partial Multiuser header
+        Body,     // inside a frame; m_buffer holds its wire bytes so far
+        Discard,  // skipping the rest of an oversized frame up to its CR LF
+    };
+
+    void huntByte(char c, QList<DecodeEvent>& events);
+    void bodyByte(char c, QList<DecodeEvent>& events);
+    void discardByte(char c, QList<DecodeEvent>& events);
+    void completeFrame(QList<DecodeEvent>& events);
+    bool isFrameStartPrefix(QByteArrayView bytes) const;
+    void startBody();
+    void addGarbage(QByteArrayView bytes, const QString& reason, QList<DecodeEvent>& events);
+    void flushGarbage(QList<DecodeEvent>& events);
+
     Framing m_framing;
     QByteArray m_acceptLeads;
     bool m_checksumEnabled = true;
     QByteArray m_buffer;
+    State m_state = State::Hunt;
+    QByteArray m_body;         // unescaped bytes after the lead
+    bool m_escaped = false;    // an ESC was read: the next byte is literal
+    bool m_crSeen = false;     // an unescaped CR waits for its LF
+    QByteArray m_garbage;      // skipped bytes not yet reported
+    QString m_garbageReason;
 };
 
 }  // namespace cambench::comm

@@ -11,8 +11,6 @@ namespace cambench::comm {
 
 namespace {
 
-constexpr int kRamBytes = 4096;
-
 QByteArray handlerKey(char kind, QByteArrayView name) { return QByteArray(1, kind) + name.toByteArray(); }
 
 }  // namespace
@@ -21,8 +19,7 @@ SimDevice::SimDevice(SimProfile profile, int number)
     : m_profile(std::move(profile)),
       m_number(number),
       m_eeprom(m_profile),
-      m_axis(m_profile.minPosition, m_profile.maxPosition, m_profile.unitsPerSecond),
-      m_ram(kRamBytes, '\0') {
+      m_axis(m_profile.minPosition, m_profile.maxPosition, m_profile.unitsPerSecond) {
     m_state = defaultState(m_profile, m_number);
     registerStatusHandlers(*this);
     registerCamHandlers(*this);
@@ -45,8 +42,7 @@ bool SimDevice::hasHandler(char kind, const QByteArray& name) const {
 void SimDevice::clearAll() {
     m_state = defaultState(m_profile, m_number);
     m_cursor.reset();
-    m_plcActuals.clear();
-    m_userCursor = 0;
+    m_runtime = SimRuntime();
 }
 
 void SimDevice::start(SimState state) {

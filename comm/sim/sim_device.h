@@ -17,6 +17,16 @@
 
 namespace cambench::comm {
 
+// What a device knows while it runs but does not keep in its EEPROM.
+struct SimRuntime {
+    static constexpr int kRamBytes = 4096;
+    int errorState = 0;                 // ?ERR
+    QHash<SimPlcKey, qint32> plcActuals;  // timer and counter actual values (?SPSIST)
+    QByteArray vInputs;                 // !GVSPSTAB
+    int userCursor = 0;                 // position of the ?USER00 / ?USER01 walk
+    QByteArray ram = QByteArray(kRamBytes, '\0');  // ?ML / !MS / !MW
+};
+
 // One simulated CamCon: the state of the manual's menus, decoded with the
 // command catalogue. Handlers live in files by manual section
 // (sim_*_handlers.cpp) and register themselves in the constructor.
@@ -43,15 +53,11 @@ public:
     SimEeprom& eeprom() { return m_eeprom; }
     SimAxis& axis() { return m_axis; }
     const SimAxis& axis() const { return m_axis; }
-    QHash<SimPlcKey, qint32>& plcActuals() { return m_plcActuals; }
-    QByteArray& ram() { return m_ram; }
+    SimRuntime& runtime() { return m_runtime; }
 
     bool checksumsEnabled() const { return m_checksums; }
     void setChecksumsEnabled(bool enabled) { m_checksums = enabled; }
     qint64 executions() const { return m_executions; }
-
-    // ?USER00 / ?USER01: the position of the user list walk.
-    int& userCursor() { return m_userCursor; }
 
     // The state after !CA: no cams, default settings.
     void clearAll();
@@ -72,9 +78,7 @@ private:
     SimCamCursor m_cursor;
     SimEeprom m_eeprom;
     SimAxis m_axis;
-    QHash<SimPlcKey, qint32> m_plcActuals;  // timers and counters: runtime, not in the EEPROM
-    QByteArray m_ram;
-    int m_userCursor = 0;
+    SimRuntime m_runtime;
     bool m_checksums = true;
     qint64 m_executions = 0;
     QHash<QByteArray, SimHandler> m_handlers;  // key: kind + name, e.g. "?NF"

@@ -45,4 +45,28 @@ QList<PacedReply> SimPacer::schedule(qint64 sentUs, int requestBytes, const QLis
     return replies;
 }
 
+QByteArray PacedQueue::takeDue(qint64 nowUs) {
+    QByteArray out;
+    while (!m_replies.isEmpty()) {
+        const PacedReply& reply = m_replies.first();
+        const int due = reply.bytesDueAt(nowUs);
+        out += reply.bytes.mid(m_taken, due - m_taken);
+        m_taken = std::max(m_taken, due);
+        if (m_taken < reply.bytes.size()) break;
+        m_replies.removeFirst();
+        m_taken = 0;
+    }
+    return out;
+}
+
+std::optional<qint64> PacedQueue::nextDueUs() const {
+    if (m_replies.isEmpty()) return std::nullopt;
+    return m_replies.first().dueUs(m_taken + 1);
+}
+
+void PacedQueue::clear() {
+    m_replies.clear();
+    m_taken = 0;
+}
+
 }  // namespace cambench::comm

@@ -5,6 +5,8 @@
 #include <QByteArray>
 #include <QList>
 
+#include <optional>
+
 namespace cambench::comm {
 
 // A reply on its way to the PC: its bytes trickle out from `startUs` on.
@@ -44,6 +46,21 @@ private:
     bool m_throttle;
     qint64 m_toDeviceFreeUs = 0;
     qint64 m_toPcFreeUs = 0;
+};
+
+// Replies in flight, read off in order as their bytes arrive.
+class PacedQueue {
+public:
+    void append(const QList<PacedReply>& replies) { m_replies += replies; }
+    // Every byte received by `nowUs` and not taken yet.
+    QByteArray takeDue(qint64 nowUs);
+    // When the next byte arrives; nullopt when nothing is in flight.
+    std::optional<qint64> nextDueUs() const;
+    void clear();
+
+private:
+    QList<PacedReply> m_replies;
+    int m_taken = 0;  // bytes of the first reply already taken
 };
 
 }  // namespace cambench::comm

@@ -91,3 +91,4 @@ quint64 CommWorker::run(QObject* context, JobPriority priority, const QString& t
 }  // namespace cambench::comm
 
 Q_DECLARE_METATYPE(cambench::comm::TrafficEntry)
+Q_DECLARE_METATYPE(cambench::comm::ConnectionState)

@@ -1,8 +1,10 @@
 #pragma once
 
 #include "model/cam_program.h"
+#include "model/cam_validation.h"
 #include "model/dead_times.h"
 #include "model/device_info.h"
+#include "ui/cameditor/cam_geometry.h"
 
 #include <QList>
 #include <QMap>
@@ -47,8 +49,7 @@ public:
     bool isRotary() const { return m_rotary; }
     qint32 minPosition() const { return m_info.minPosition; }
     qint32 maxPosition() const { return m_info.maxPosition; }
-    // Number of distinct positions, the period of a rotary axis.
-    qint64 positionSpan() const;
+    Axis axis() const { return {m_info.minPosition, m_info.maxPosition, m_rotary}; }
     int outputCount() const { return m_info.outputs; }
     int programCount() const { return m_info.programs; }
 
@@ -76,6 +77,8 @@ public:
     ChangeState trackState(int program, int output) const;
     ChangeState camState(int program, int output, int index) const;
     QList<TrackDifference> differences() const;
+    // What is wrong with a track of the edited state (model/cam_validation.h).
+    QList<CamProblem> problems(int program, int output) const;
     // Tracks, program names, output names and dead times that differ from
     // the device (for the window title).
     int changedCount() const;
@@ -106,6 +109,7 @@ public:
 
     // Cams on a track are kept ordered by switch-on point.
     static Track normalized(Track track);
+    static CamProgram normalized(CamProgram program);
 
 Q_SIGNALS:
     void limitsChanged();

@@ -1,2 +1,22 @@
 target_sources(cambench_ui PRIVATE
+  cameditor/cam_commands.cpp
+  cameditor/cam_commands.h
+  cameditor/cam_diagram_widget.cpp
+  cameditor/cam_diagram_widget.h
+  cameditor/cam_document.cpp
+  cameditor/cam_document.h
+  cameditor/cam_generator.cpp
+  cameditor/cam_generator.h
+  cameditor/cam_geometry.cpp
+  cameditor/cam_geometry.h
+  cameditor/cam_table_model.cpp
+  cameditor/cam_table_model.h
+  cameditor/diagram_layout.cpp
+  cameditor/diagram_layout.h
+  cameditor/editor_colors.h
+  cameditor/editor_roles.h
+  cameditor/range_delegate.cpp
+  cameditor/range_delegate.h
+  cameditor/track_table_model.cpp
+  cameditor/track_table_model.h
 )

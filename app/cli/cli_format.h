@@ -1,0 +1,27 @@
+#pragma once
+
+#include "model/device_info.h"
+#include "model/user.h"
+
+#include <QJsonObject>
+#include <QList>
+#include <QPair>
+#include <QString>
+#include <QVariant>
+
+namespace cambench::cli {
+
+// The fields of `info`, in print order, with stable keys for text and JSON.
+QList<QPair<QString, QVariant>> deviceInfoEntries(const DeviceInfo& info);
+QJsonObject deviceInfoJson(const DeviceInfo& info);
+
+// "program selection, programming" for a user's rights mask.
+QString rightsText(quint32 rights);
+
+// Device bytes for a terminal: printable ASCII as is, others as \xHH.
+QString printableBytes(const QByteArray& bytes);
+
+// "key: value" lines.
+QString keyValueLines(const QList<QPair<QString, QVariant>>& entries);
+
+}  // namespace cambench::cli

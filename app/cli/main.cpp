@@ -1,0 +1,38 @@
+#include "cli_options.h"
+#include "cli_output.h"
+#include "cli_session.h"
+#include "commands.h"
+#include "exit_codes.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+
+using namespace cambench;
+using namespace cambench::cli;
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("cambench-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+
+    const QStringList args = app.arguments().mid(1);
+    if (args.contains(QLatin1String("--help")) || args.contains(QLatin1String("-h"))) {
+        printOut(usageText());
+        return ExitOk;
+    }
+    if (args.contains(QLatin1String("--version"))) {
+        printOut(QStringLiteral("cambench-cli %1\n").arg(QLatin1String(CAMBENCH_VERSION)));
+        return ExitOk;
+    }
+    const Result<GlobalOptions> options = parseGlobalOptions(args);
+    if (!options) return reportError(options.error());
+    const CommandGroup* group = findCommandGroup(options->command);
+    if (!group) {
+        return reportError(Error::usage(
+            QStringLiteral("unknown command \"%1\"; see `cambench-cli --help`").arg(options->command)));
+    }
+    CliSession session(*options);
+    CommandArgs commandArgs(options->command, options->commandArgs);
+    return group->run(session, commandArgs);
+}

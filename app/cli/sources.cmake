@@ -1,0 +1,25 @@
+# cambench-cli: the command-line tool (paths relative to app/).
+add_executable(cambench-cli
+  cli/main.cpp
+  cli/exit_codes.h
+  cli/cli_options.h
+  cli/cli_options.cpp
+  cli/cli_output.h
+  cli/cli_output.cpp
+  cli/cli_format.h
+  cli/cli_format.cpp
+  cli/progress_bar.h
+  cli/progress_bar.cpp
+  cli/traffic_log_file.h
+  cli/traffic_log_file.cpp
+  cli/cli_session.h
+  cli/cli_session.cpp
+  cli/commands.h
+  cli/commands.cpp
+  cli/device_commands.cpp
+  cli/cam_commands.cpp
+  cli/table_commands.cpp
+  cli/config_commands.cpp
+  cli/eeprom_commands.cpp
+)
+target_link_libraries(cambench-cli PRIVATE cambench_comm cambench_model Qt6::Core)

@@ -1,0 +1,171 @@
+// cambench-sim: a simulated CamCon on a pseudo-terminal (default) or a TCP
+// port, for the tool, its tests and demos without hardware.
+
+#include "signal_quitter.h"
+
+#include "comm/sim/sim_demo.h"
+#include "comm/sim/sim_line.h"
+#include "comm/sim/sim_pacer.h"
+#include "comm/sim/sim_port_config.h"
+#include "comm/sim/sim_pty_server.h"
+#include "comm/sim/sim_tcp_server.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QLoggingCategory>
+#include <QTextStream>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+using namespace cambench;
+using namespace cambench::comm;
+
+namespace {
+
+constexpr int kStandardBaud = 9600;
+constexpr int kMultiuserBaud = 38400;
+
+struct Options {
+    SimPortConfig config;
+    std::optional<int> pcNumber;
+    std::optional<quint16> tcpPort;
+    bool verbose = false;
+};
+
+int fail(const QString& message) {
+    QTextStream(stderr) << "cambench-sim: " << message << Qt::endl;
+    return 2;
+}
+
+std::optional<double> probability(const QString& text) {
+    bool ok = false;
+    const double p = text.toDouble(&ok);
+    if (!ok || p < 0.0 || p > 1.0) return std::nullopt;
+    return p;
+}
+
+// Empty on success, else what is wrong.
+QString readOptions(const QCommandLineParser& parser, Options& options) {
+    SimPortConfig& config = options.config;
+    if (parser.isSet(QStringLiteral("protocol"))) {
+        const QString protocol = parser.value(QStringLiteral("protocol"));
+        if (protocol == QLatin1String("standard")) {
+            config.framing = Framing::Standard;
+        } else if (protocol == QLatin1String("multiuser")) {
+            config.framing = Framing::Multiuser;
+        } else {
+            return QStringLiteral("--protocol must be standard or multiuser, not \"%1\".").arg(protocol);
+        }
+    }
+    if (parser.isSet(QStringLiteral("devices"))) {
+        Result<QList<int>> devices = parseDeviceList(parser.value(QStringLiteral("devices")));
+        if (!devices) return QStringLiteral("--devices: %1").arg(devices.error().message);
+        config.devices = *devices;
+    }
+    if (config.effectiveFraming() == Framing::Standard && config.devices.size() > 1) {
+        return QStringLiteral("Standard framing has one device; add --protocol multiuser.");
+    }
+    bool ok = true;
+    config.baud = config.effectiveFraming() == Framing::Multiuser ? kMultiuserBaud : kStandardBaud;
+    if (parser.isSet(QStringLiteral("baud"))) config.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
+    if (!ok || config.baud < 300) return QStringLiteral("--baud needs a baud rate of 300 or more.");
+    if (parser.isSet(QStringLiteral("pc-number"))) {
+        const int pc = parser.value(QStringLiteral("pc-number")).toInt(&ok);
+        if (!ok || pc < 0 || pc > 63) return QStringLiteral("--pc-number needs a number 0..63.");
+        options.pcNumber = pc;
+    }
+    if (parser.isSet(QStringLiteral("tcp"))) {
+        const uint port = parser.value(QStringLiteral("tcp")).toUInt(&ok);
+        if (!ok || port > 65535) return QStringLiteral("--tcp needs a port number 0..65535.");
+        options.tcpPort = quint16(port);
+    }
+    for (const char* name : {"corrupt", "drop"}) {
+        if (!parser.isSet(QLatin1String(name))) continue;
+        const auto p = probability(parser.value(QLatin1String(name)));
+        if (!p) return QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name));
+        (QByteArray(name) == "corrupt" ? config.faults.corruptProbability : config.faults.dropProbability) = *p;
+    }
+    for (const char* name : {"delay", "fill"}) {
+        if (!parser.isSet(QLatin1String(name))) continue;
+        const int n = parser.value(QLatin1String(name)).toInt(&ok);
+        if (!ok || n < 0) return QStringLiteral("--%1 needs a whole number of 0 or more.").arg(QLatin1String(name));
+        (QByteArray(name) == "delay" ? config.faults.extraDelayMs : config.fill) = n;
+    }
+    if (parser.isSet(QStringLiteral("seed"))) {
+        config.faults.seed = parser.value(QStringLiteral("seed")).toUInt(&ok);
+        if (!ok) return QStringLiteral("--seed needs a whole number.");
+    }
+    config.throttle = !parser.isSet(QStringLiteral("no-throttle"));
+    config.faults.dead = parser.isSet(QStringLiteral("dead"));
+    options.verbose = parser.isSet(QStringLiteral("verbose"));
+    return {};
+}
+
+void addOptions(QCommandLineParser& parser) {
+    parser.setApplicationDescription(QStringLiteral(
+        "Simulated CamCon cam controller. Without --tcp it serves a pseudo-terminal and prints its "
+        "path as the first line on stdout."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOptions({
+        {QStringLiteral("protocol"), QStringLiteral("standard or multiuser (default: multiuser for several devices)."),
+         QStringLiteral("framing")},
+        {QStringLiteral("devices"), QStringLiteral("Device numbers 0..63, e.g. 0,5 (default 0)."),
+         QStringLiteral("list")},
+        {QStringLiteral("baud"), QStringLiteral("Baud rate for the timing (default 9600, Multiuser 38400)."),
+         QStringLiteral("rate")},
+        {QStringLiteral("pc-number"), QStringLiteral("Multiuser: answer only this PC number (default any)."),
+         QStringLiteral("n")},
+        {QStringLiteral("tcp"), QStringLiteral("Serve TCP on this port instead of a pseudo-terminal."),
+         QStringLiteral("port")},
+        {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."), QStringLiteral("p")},
+        {QStringLiteral("drop"), QStringLiteral("Probability of a lost reply."), QStringLiteral("p")},
+        {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."), QStringLiteral("ms")},
+        {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator (default 1)."), QStringLiteral("n")},
+        {QStringLiteral("no-throttle"), QStringLiteral("Send replies at once instead of at the baud rate.")},
+        {QStringLiteral("fill"), QStringLiteral("Benchmark state: n cams on every output of every program."),
+         QStringLiteral("n")},
+        {QStringLiteral("dead"), QStringLiteral("Never answer.")},
+        {QStringLiteral("verbose"), QStringLiteral("Log requests to stderr.")},
+    });
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("cambench-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+    QCommandLineParser parser;
+    addOptions(parser);
+    parser.process(app);
+    Options options;
+    if (const QString problem = readOptions(parser, options); !problem.isEmpty()) return fail(problem);
+    QLoggingCategory::setFilterRules(options.verbose ? QStringLiteral("cambench.comm.sim.debug=true")
+                                                     : QStringLiteral("cambench.comm.sim.info=false"));
+
+    std::unique_ptr<SimLine> line = makeSimLine(options.config);
+    line->setPcNumber(options.pcNumber);
+    const SimPacer pacer(options.config.baud, options.config.throttle);
+    SignalQuitter quitter;
+    if (!quitter.isValid()) return fail(QStringLiteral("cannot watch for SIGTERM/SIGINT."));
+
+    std::unique_ptr<QObject> server;
+    if (options.tcpPort) {
+        auto tcp = std::make_unique<SimTcpServer>(*line, pacer);
+        if (const Status listening = tcp->listen(*options.tcpPort); !listening) return fail(listening.error().message);
+        std::printf("tcp://127.0.0.1:%u\n", unsigned(tcp->port()));
+        server = std::move(tcp);
+    } else {
+        auto pty = std::make_unique<SimPtyServer>(*line, pacer);
+        if (const Status opened = pty->open(); !opened) return fail(opened.error().message);
+        std::printf("%s\n", qPrintable(pty->slavePath()));
+        server = std::move(pty);
+    }
+    std::fflush(stdout);
+    const int code = app.exec();
+    server.reset();  // before the line it serves
+    return code;
+}

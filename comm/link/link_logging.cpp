@@ -1,0 +1,3 @@
+#include "link_logging.h"
+
+Q_LOGGING_CATEGORY(commLinkLog, "cambench.comm.link")

@@ -1,0 +1,130 @@
+#include "camcon_client.h"
+#include "client_support.h"
+
+#include <QDateTime>
+
+namespace cambench::comm {
+
+using namespace client;
+
+namespace {
+
+constexpr quint16 kEndBlock = 0xFFFF;
+constexpr int kBasicBlockBytes = 128;
+
+// Block 0 holds 128 bytes; every other block tells its length in the upper
+// nibble of its first byte, in units of 6 bytes (notes 6).
+QString blockProblem(quint16 number, const QByteArray& data) {
+    if (number == 0) {
+        if (data.size() == kBasicBlockBytes) return {};
+        return QStringLiteral("block 0000 has %1 bytes instead of %2")
+            .arg(data.size())
+            .arg(kBasicBlockBytes);
+    }
+    if (data.isEmpty()) return QStringLiteral("block %1 is empty").arg(number, 4, 16, QChar(u'0'));
+    const int nibble = quint8(data.at(0)) >> 4;
+    if (nibble == 0 || data.size() != nibble * 6) {
+        return QStringLiteral("block %1 has %2 bytes but its first byte announces %3")
+            .arg(number, 4, 16, QChar(u'0'))
+            .arg(data.size())
+            .arg(nibble * 6);
+    }
+    return {};
+}
+
+QString hex4(int number) {
+    return QStringLiteral("%1").arg(number, 4, 16, QChar(u'0')).toUpper();
+}
+
+}  // namespace
+
+Result<EepromImage> CamConClient::backup(const ProgressFn& progress) {
+    Result<DeviceInfo> info = readInfo();
+    if (!info) return info.error();
+    EepromImage image;
+    image.device = std::move(info).value();
+    image.taken = QDateTime::currentDateTimeUtc();
+    image.toolVersion = QStringLiteral(CAMBENCH_VERSION);
+    // The device does not say how much it holds; its EEPROM size bounds it.
+    const qint64 estimate = qMax<qint64>(image.device.serialEepromSize, 0);
+    qint64 bytes = 0;
+    for (int number = 0; number < kEndBlock; ++number) {
+        if (progress) progress(qMin(bytes, estimate), estimate);
+        const Result<Fields> reply = m_link.call('?', "EE", Fields{{"block", qint64(number)}});
+        if (!reply) {
+            return inContext(QStringLiteral("reading EEPROM block %1 (?EE)").arg(hex4(number)),
+                             reply.error());
+        }
+        const qint64 replyNumber = reply->num("block");
+        if (replyNumber == kEndBlock) {
+            if (number == 0) {
+                return Error::communication(
+                    QStringLiteral("the device sent no EEPROM block 0000; check the device"));
+            }
+            if (progress) progress(estimate, estimate);
+            return image;
+        }
+        if (replyNumber != number) {
+            return Error::communication(
+                QStringLiteral("asked for EEPROM block %1, the device sent block %2; try again")
+                    .arg(hex4(number), hex4(int(replyNumber))));
+        }
+        EepromBlock block{quint16(number), reply->bytes("data")};
+        const QString problem = blockProblem(block.number, block.data);
+        if (!problem.isEmpty()) {
+            return Error::communication(
+                QStringLiteral("reading the EEPROM: %1; try again").arg(problem));
+        }
+        bytes += block.data.size();
+        image.blocks.append(std::move(block));
+    }
+    return Error::communication(
+        QStringLiteral("the device sent EEPROM blocks up to FFFE without the end marker FFFF; "
+                       "check the device"));
+}
+
+Status CamConClient::restore(const EepromImage& image, const ProgressFn& progress) {
+    if (image.blocks.isEmpty() || image.blocks.first().number != 0) {
+        return Error::invalidData(
+            QStringLiteral("the EEPROM image does not start with block 0000; nothing was sent"));
+    }
+    const int total = int(image.blocks.size()) + 1;  // + the empty end block
+    const int longTimeout = m_link.settings().longTimeoutMs;
+    const QString again =
+        QStringLiteral("Running the same restore again is safe: it starts by erasing the device.");
+
+    for (int i = 0; i <= image.blocks.size(); ++i) {
+        if (progress) progress(i, total);
+        const bool endBlock = i == image.blocks.size();
+        const int number = endBlock ? image.blocks.last().number + 1 : image.blocks.at(i).number;
+        Fields fields{{"block", qint64(number)}};
+        fields.setBytes("data", endBlock ? QByteArray() : image.blocks.at(i).data);
+        // Block 0000 erases the EEPROM and the end block starts the device:
+        // both may take far longer than an ordinary reply.
+        const bool slow = i == 0 || endBlock;
+        const Result<Fields> reply = m_link.call('!', "EE", fields, slow ? longTimeout : 0);
+        if (reply) continue;
+        QString state;
+        if (i == 0) {
+            state = QStringLiteral("The device may already be ERASED (block 0000 starts the "
+                                   "erase).");
+        } else if (!endBlock) {
+            state = QStringLiteral("The device is now ERASED: it holds only the blocks before "
+                                   "%1 and does not run.")
+                        .arg(hex4(number));
+        } else {
+            state = QStringLiteral("The device holds every block but did not confirm that it "
+                                   "started.");
+        }
+        return inContext(
+            QStringLiteral("restore failed at EEPROM block %1 of %2 (!EE%3). %4 %5 Cause")
+                .arg(i + 1)
+                .arg(total)
+                .arg(hex4(number), state, again),
+            reply.error());
+    }
+    if (progress) progress(total, total);
+    return success();
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,86 @@
+#include "sim_demo.h"
+
+#include "sim_device.h"
+#include "sim_line.h"
+
+#include <algorithm>
+
+namespace cambench::comm {
+
+namespace {
+
+void addCams(SimDevice& device, int program, int output, const QList<Cam>& cams) {
+    for (const Cam& cam : cams) device.state().cams.insert(program, output, cam);
+}
+
+SimUser demoUser(const char* name, const char* number, quint32 rights, int outputs) {
+    SimUser user;
+    user.name = name;
+    user.number = number;
+    user.rights = rights;
+    for (int output = 0; output < outputs; ++output) {
+        user.access[output / 8] = char(user.access.at(output / 8) | (1 << (output % 8)));
+    }
+    user.allOutputs = outputs >= SimUser::kAccessBytes * 8;
+    return user;
+}
+
+}  // namespace
+
+void loadDemoState(SimDevice& device) {
+    SimState& state = device.state();
+    const qint32 max = device.profile().maxPosition;
+    addCams(device, 0, 0, {{10, 90}, {180, 270}});
+    addCams(device, 0, 1, {{max - 20, 30}});  // wraps through zero
+    addCams(device, 0, 2, {{0, 45}, {90, 135}, {180, 225}, {270, 315}});
+    addCams(device, 1, 0, {{45, 200}});
+    addCams(device, 1, 3, {{100, 110}, {300, 350}});
+    addCams(device, 2, 5, {{5, 355}});
+    state.programNames = {{0, "Standard"}, {1, "Format A4"}, {2, "Cleaning"}};
+    state.outputNames = {{0, "Glue valve"}, {1, "Knife"}, {2, "Stacker"}, {3, "Punch"}, {5, "Blower"}};
+    state.deadTimes = {{0, 25}, {1, 120}, {3, 9999}};
+    state.users = {demoUser("Supervisor", "4711", 0xEF, 256), demoUser("Operator", "1234", 0x01, 8)};
+    SimPlcNetwork andGate;  // O0 = I1 AND M2
+    andGate.symbols[0] = 0x0101;
+    andGate.symbols[1] = 0x0A02;
+    state.plcNetworks.insert({0x08, 0}, andGate);
+    SimPlcNetwork timer;
+    timer.value = 500;
+    timer.symbols[0] = 0x0103;
+    state.plcNetworks.insert({0x0A, 4}, timer);
+    device.runtime().plcActuals.insert({0x0A, 4}, 120);
+    state.userTexts = {{0, "CamBench demo"}, {1, "Simulated CamCon"}};
+}
+
+void fillBenchmarkCams(SimDevice& device, int camsPerTrack) {
+    const SimProfile& profile = device.profile();
+    const qint64 span = qint64(profile.maxPosition) - profile.minPosition + 1;
+    const int count = int(std::min<qint64>(camsPerTrack, span / 2));
+    SimCamStore& cams = device.state().cams;
+    cams.clear();
+    if (count <= 0) return;
+    const qint64 width = span / count;
+    for (int program = 0; program < profile.programs; ++program) {
+        for (int output = 0; output < profile.outputs; ++output) {
+            for (int i = 0; i < count; ++i) {
+                const auto on = qint32(profile.minPosition + i * width);
+                cams.insert(program, output, {on, qint32(on + std::max<qint64>(1, width / 2))});
+            }
+        }
+    }
+}
+
+std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile) {
+    auto line = std::make_unique<SimLine>(config.effectiveFraming());
+    SimProfile sized = profile;
+    sized.camCapacity = std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
+    for (int number : config.devices) {
+        SimDevice& device = line->addDevice(std::make_unique<SimDevice>(sized, number));
+        loadDemoState(device);
+        if (config.fill > 0) fillBenchmarkCams(device, config.fill);
+    }
+    line->setFaults(config.faults);
+    return line;
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "sim_faults.h"
+
+#include "comm/protocol/frame.h"
+#include "comm/transport/transport.h"
+#include "model/result.h"
+
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+namespace cambench::comm {
+
+// How to build a simulated line: from a port string ("sim",
+// "sim:devices=0,5;baud=38400;corrupt=0.01") or from cambench-sim's options.
+struct SimPortConfig {
+    QList<int> devices{0};            // device numbers 0..63
+    std::optional<Framing> framing;   // unset: Multiuser if more than one device
+    int baud = 9600;
+    bool throttle = true;             // false: bytes arrive at once
+    int fill = 0;                     // > 0: benchmark cams per track instead of the demo cams
+    SimFaultSettings faults;
+
+    Framing effectiveFraming() const {
+        return framing ? *framing : (devices.size() > 1 ? Framing::Multiuser : Framing::Standard);
+    }
+};
+
+bool isSimPort(const QString& port);
+
+// Keys: devices, framing (standard|multiuser), baud, corrupt, drop, delay,
+// seed, throttle (0|1), fill, dead (0|1). The baud rate defaults to
+// `serial.baud`. Fails with Usage on an unknown key or a bad value.
+Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);
+
+// Device numbers "0,5" -> {0, 5}; each 0..63, no duplicates.
+Result<QList<int>> parseDeviceList(const QString& text);
+
+}  // namespace cambench::comm

@@ -1,0 +1,44 @@
+#include "sim_tcp_server.h"
+
+#include "sim_log.h"
+
+#include <QHostAddress>
+
+namespace cambench::comm {
+
+SimTcpServer::SimTcpServer(SimLine& line, const SimPacer& pacer, QObject* parent)
+    : QObject(parent), m_scheduler(line, pacer, [this](const QByteArray& bytes) {
+          if (m_client) m_client->write(bytes);
+      }) {
+    connect(&m_server, &QTcpServer::newConnection, this, &SimTcpServer::onNewConnection);
+}
+
+Status SimTcpServer::listen(quint16 port) {
+    if (!m_server.listen(QHostAddress::Any, port)) {
+        return Error::communication(
+            QStringLiteral("Cannot listen on TCP port %1: %2.").arg(port).arg(m_server.errorString()));
+    }
+    return success();
+}
+
+void SimTcpServer::onNewConnection() {
+    while (QTcpSocket* socket = m_server.nextPendingConnection()) {
+        if (m_client) {
+            qCInfo(commSimLog) << "turned away a second client from" << socket->peerAddress().toString();
+            socket->disconnectFromHost();
+            socket->deleteLater();
+            continue;
+        }
+        m_client = socket;
+        m_scheduler.reset();
+        qCInfo(commSimLog) << "client connected from" << socket->peerAddress().toString();
+        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { m_scheduler.received(socket->readAll()); });
+        connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
+            qCInfo(commSimLog) << "client disconnected";
+            m_scheduler.reset();
+            socket->deleteLater();
+        });
+    }
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,70 @@
+#include "sim_transport.h"
+
+#include "sim_demo.h"
+
+#include <QThread>
+
+#include <algorithm>
+
+namespace cambench::comm {
+
+namespace {
+// Longest sleep between looks at the clock: short enough that a reply is
+// seen within a byte time at 9600 baud.
+constexpr qint64 kSliceUs = 1000;
+}  // namespace
+
+SimTransport::SimTransport(const SimPortConfig& config)
+    : m_config(config), m_line(makeSimLine(config)), m_pacer(config.baud, config.throttle) {
+    m_clock.start();
+}
+
+Status SimTransport::open() {
+    m_open = true;
+    return success();
+}
+
+void SimTransport::close() {
+    m_open = false;
+    m_pending.clear();
+}
+
+Status SimTransport::write(const QByteArray& bytes) {
+    if (!m_open) return Error::communication(QStringLiteral("%1 is not open.").arg(description()));
+    const qint64 sentUs = nowUs();
+    m_pending.append(m_pacer.schedule(sentUs, int(bytes.size()), m_line->feed(bytes)));
+    return success();
+}
+
+Result<QByteArray> SimTransport::read(int timeoutMs) {
+    if (!m_open) return Error::communication(QStringLiteral("%1 is not open.").arg(description()));
+    const qint64 deadlineUs = nowUs() + qint64(std::max(timeoutMs, 0)) * 1000;
+    for (;;) {
+        const qint64 now = nowUs();
+        QByteArray bytes = m_pending.takeDue(now);
+        if (!bytes.isEmpty() || now >= deadlineUs) return bytes;
+        qint64 wakeUs = deadlineUs;
+        if (const auto due = m_pending.nextDueUs()) wakeUs = std::min(wakeUs, *due);
+        QThread::usleep(quint64(std::clamp<qint64>(wakeUs - now, 1, kSliceUs)));
+    }
+}
+
+void SimTransport::discardInput() { m_pending.takeDue(nowUs()); }
+
+QString SimTransport::description() const {
+    QStringList devices;
+    for (int number : m_config.devices) devices << QString::number(number);
+    const bool multi = m_config.effectiveFraming() == Framing::Multiuser;
+    return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
+        .arg(multi ? QStringLiteral("Multiuser") : QStringLiteral("Standard"), devices.join(QLatin1Char(',')))
+        .arg(m_config.baud)
+        .arg(m_config.throttle ? QString() : QStringLiteral(", unthrottled"));
+}
+
+Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port, const SerialSettings& serial) {
+    Result<SimPortConfig> config = parseSimPort(port, serial);
+    if (!config) return config.error();
+    return std::unique_ptr<Transport>(std::make_unique<SimTransport>(*config));
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "sim_line.h"
+#include "sim_pacer.h"
+#include "sim_port_config.h"
+
+#include "comm/transport/transport.h"
+
+#include <QElapsedTimer>
+
+#include <memory>
+
+namespace cambench::comm {
+
+// The in-process simulator behind the Transport interface ("--port sim"):
+// write() hands the request to a SimLine, and the replies become readable
+// as the pacer lets their bytes arrive at the configured baud rate.
+class SimTransport : public Transport {
+public:
+    explicit SimTransport(const SimPortConfig& config);
+
+    Status open() override;
+    void close() override;
+    bool isOpen() const override { return m_open; }
+    Status write(const QByteArray& bytes) override;
+    Result<QByteArray> read(int timeoutMs) override;
+    void discardInput() override;
+    QString description() const override;
+
+    SimLine& line() { return *m_line; }
+    const SimPacer& pacer() const { return m_pacer; }
+
+private:
+    qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
+
+    SimPortConfig m_config;
+    std::unique_ptr<SimLine> m_line;
+    SimPacer m_pacer;
+    QElapsedTimer m_clock;
+    PacedQueue m_pending;
+    bool m_open = false;
+};
+
+// "sim" or "sim:key=value;..." (see parseSimPort) as a Transport.
+Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port, const SerialSettings& serial);
+
+}  // namespace cambench::comm

@@ -1,0 +1,107 @@
+#include "comm_worker.h"
+
+#include "job_queue.h"
+#include "worker_core.h"
+#include "worker_logging.h"
+
+namespace cambench::comm {
+
+namespace {
+
+constexpr int kStopWaitMs = 3000;
+
+}  // namespace
+
+struct CommWorker::Impl {
+    std::shared_ptr<JobQueue> queue = std::make_shared<JobQueue>();
+    QThread* thread = new QThread;
+    WorkerCore* core = new WorkerCore(queue);
+
+    template <class F>
+    void post(F&& fn) {
+        QMetaObject::invokeMethod(core, std::forward<F>(fn), Qt::QueuedConnection);
+    }
+};
+
+CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Impl>()) {
+    qRegisterMetaType<ConnectionState>();
+    qRegisterMetaType<TrafficEntry>();
+
+    d->thread->setObjectName(QStringLiteral("CommWorker"));
+    d->core->moveToThread(d->thread);
+    connect(d->thread, &QThread::finished, d->core, &QObject::deleteLater);
+
+    // The core emits on the worker thread; the front re-emits on its own.
+    connect(d->core, &WorkerCore::stateChanged, this,
+            [this](ConnectionState state, const QString& message) {
+                m_state = state;
+                Q_EMIT connectionStateChanged(state, message);
+            },
+            Qt::QueuedConnection);
+    connect(d->core, &WorkerCore::jobStarted, this, &CommWorker::jobStarted, Qt::QueuedConnection);
+    connect(d->core, &WorkerCore::jobProgress, this, &CommWorker::jobProgress,
+            Qt::QueuedConnection);
+    connect(d->core, &WorkerCore::jobFinished, this, &CommWorker::jobFinished,
+            Qt::QueuedConnection);
+    connect(d->core, &WorkerCore::traffic, this, &CommWorker::traffic, Qt::QueuedConnection);
+    d->thread->start();
+}
+
+CommWorker::~CommWorker() {
+    d->queue->cancelAll();
+    d->thread->quit();
+    if (d->thread->wait(kStopWaitMs)) {
+        delete d->thread;
+        return;
+    }
+    // A job ignores its cancel flag. Terminating the thread could leave the
+    // port or a lock half-done, so the thread is left to finish on its own
+    // and cleans up after itself.
+    qCWarning(commWorkerLog) << "a job did not stop within" << kStopWaitMs
+                             << "ms; leaving its thread to finish on its own";
+    QThread* thread = d->thread;
+    connect(thread, &QThread::finished, thread, &QObject::deleteLater);
+}
+
+void CommWorker::connectTo(const ConnectionSettings& connection, const LinkSettings& link) {
+    WorkerCore* core = d->core;
+    d->post([core, connection, link] { core->connectTo(connection, link); });
+}
+
+void CommWorker::disconnectFromDevice() {
+    WorkerCore* core = d->core;
+    d->post([core] { core->disconnectFromDevice(); });
+}
+
+void CommWorker::setLinkDevice(int device) {
+    WorkerCore* core = d->core;
+    d->post([core, device] { core->setLinkDevice(device); });
+}
+
+quint64 CommWorker::submit(JobPriority priority, const QString& title, JobFn fn,
+                           const QString& pollKey) {
+    const JobQueue::Pushed pushed = d->queue->push(priority, title, std::move(fn), pollKey);
+    if (pushed.replaced != 0) {
+        // The replaced poll never runs; it still finishes, like every job.
+        QMetaObject::invokeMethod(
+            this, [this, id = pushed.replaced] { Q_EMIT jobFinished(id); }, Qt::QueuedConnection);
+        return pushed.id;
+    }
+    WorkerCore* core = d->core;
+    d->post([core] { core->runNextJob(); });
+    return pushed.id;
+}
+
+void CommWorker::cancel(quint64 id) {
+    if (d->queue->cancel(id) == JobQueue::Cancelled::Removed)
+        QMetaObject::invokeMethod(
+            this, [this, id] { Q_EMIT jobFinished(id); }, Qt::QueuedConnection);
+}
+
+void CommWorker::cancelAll() {
+    for (const quint64 id : d->queue->cancelAll())
+        QMetaObject::invokeMethod(
+            this, [this, id] { Q_EMIT jobFinished(id); }, Qt::QueuedConnection);
+}
+
+}  // namespace cambench::comm

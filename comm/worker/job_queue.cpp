@@ -1,0 +1,84 @@
+#include "job_queue.h"
+
+#include <algorithm>
+
+namespace cambench::comm {
+
+JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn,
+                                QString pollKey) {
+    std::lock_guard lock(m_mutex);
+    QueuedJob job;
+    job.id = m_nextId++;
+    job.priority = priority;
+    job.title = std::move(title);
+    job.fn = std::move(fn);
+    job.pollKey = priority == JobPriority::Poll ? std::move(pollKey) : QString();
+
+    auto& queue = m_queues[int(priority)];
+    if (!job.pollKey.isEmpty()) {
+        const auto same = std::find_if(queue.begin(), queue.end(), [&](const QueuedJob& queued) {
+            return queued.pollKey == job.pollKey;
+        });
+        if (same != queue.end()) {
+            const quint64 replaced = same->id;
+            *same = std::move(job);
+            return {same->id, replaced};
+        }
+    }
+    queue.push_back(std::move(job));
+    return {queue.back().id, 0};
+}
+
+std::optional<QueuedJob> JobQueue::takeNext() {
+    std::lock_guard lock(m_mutex);
+    for (auto& queue : m_queues) {
+        if (queue.empty()) continue;
+        QueuedJob job = std::move(queue.front());
+        queue.pop_front();
+        m_runningId = job.id;
+        m_runningCancel = job.cancel;
+        return job;
+    }
+    return std::nullopt;
+}
+
+void JobQueue::finishRunning() {
+    std::lock_guard lock(m_mutex);
+    m_runningId = 0;
+    m_runningCancel.reset();
+}
+
+JobQueue::Cancelled JobQueue::cancel(quint64 id) {
+    std::lock_guard lock(m_mutex);
+    if (id != 0 && id == m_runningId) {
+        m_runningCancel->store(true);
+        return Cancelled::Signalled;
+    }
+    for (auto& queue : m_queues) {
+        const auto it = std::find_if(queue.begin(), queue.end(),
+                                     [id](const QueuedJob& job) { return job.id == id; });
+        if (it != queue.end()) {
+            queue.erase(it);
+            return Cancelled::Removed;
+        }
+    }
+    return Cancelled::Unknown;
+}
+
+QList<quint64> JobQueue::cancelAll() {
+    std::lock_guard lock(m_mutex);
+    QList<quint64> removed;
+    for (auto& queue : m_queues) {
+        for (const QueuedJob& job : queue) removed.append(job.id);
+        queue.clear();
+    }
+    if (m_runningCancel) m_runningCancel->store(true);
+    return removed;
+}
+
+qsizetype JobQueue::size() const {
+    std::lock_guard lock(m_mutex);
+    return qsizetype(m_queues[0].size() + m_queues[1].size());
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "comm_worker.h"
+#include "guarded_transport.h"
+#include "job_queue.h"
+
+#include <QObject>
+
+#include <memory>
+
+namespace cambench::comm {
+
+// The part of CommWorker that lives on its thread: owns the transport and
+// the link and runs the queued jobs one at a time. Its methods run only on
+// that thread (CommWorker posts to them); its signals reach the front queued.
+class WorkerCore : public QObject {
+    Q_OBJECT
+public:
+    explicit WorkerCore(std::shared_ptr<JobQueue> queue);
+    ~WorkerCore() override;
+
+    void connectTo(const ConnectionSettings& connection, const LinkSettings& link);
+    void disconnectFromDevice();
+    void setLinkDevice(int device);
+    // Runs the next queued job, if any.
+    void runNextJob();
+
+Q_SIGNALS:
+    void stateChanged(cambench::comm::ConnectionState state, const QString& message);
+    void jobStarted(quint64 id, const QString& title);
+    void jobProgress(quint64 id, qint64 done, qint64 total, const QString& text);
+    void jobFinished(quint64 id);
+    void traffic(const cambench::comm::TrafficEntry& entry);
+
+private:
+    void makeLink(const LinkSettings& settings);
+    void setState(ConnectionState state, const QString& message);
+    void checkLine();
+
+    std::shared_ptr<JobQueue> m_queue;
+    GuardedTransport m_line;
+    std::unique_ptr<ProtocolLink> m_link;
+    ConnectionState m_state = ConnectionState::Disconnected;
+};
+
+}  // namespace cambench::comm

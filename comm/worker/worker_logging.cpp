@@ -1,0 +1,3 @@
+#include "worker_logging.h"
+
+Q_LOGGING_CATEGORY(commWorkerLog, "cambench.comm.worker")

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "dead_times.h"
+#include "device_info.h"
+#include "plc_network.h"
+#include "user.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+namespace cambench {
+
+// Names and user names: 22 bytes on the device including the NUL.
+constexpr int kMaxNameLength = 21;
+// User numbers: 6 bytes on the device including the NUL.
+constexpr int kMaxUserNumberLength = 5;
+// The PLC counts go up to 248 (manual 5.4.6) and the ASCII protocol numbers
+// networks from 0, so the highest network number is 247.
+constexpr int kMaxPlcNumber = 247;
+
+// Each function returns an empty string / list when everything is valid,
+// otherwise one complete sentence per problem naming the item.
+
+// What is wrong with a name (output, program, user): too long, not
+// Latin-1, or a control character. Empty if it is fine.
+QString nameProblem(const QString& name);
+
+// Outputs 1..deadTimeOutputs, values 0..maxDeadTime (0.1 ms).
+QStringList validateDeadTimes(const DeadTimes& deadTimes, const DeviceInfo& device);
+// Output names for outputs 1..outputs, program names for 0..programs-1.
+QStringList validateNames(const Names& names, const DeviceInfo& device);
+
+// One user: name, number of 1..5 printable ASCII characters other than
+// "DEL" (which means "delete" to the device), at most 256 access entries.
+// Never quotes the number: it is the user's access code.
+QString userProblem(const User& user);
+// Every user, and that no two users share a number.
+QStringList validateUsers(const QList<User>& users);
+
+// Area O, P, M or X and a number 0..kMaxPlcNumber.
+QStringList validatePlcNetwork(const PlcNetwork& network);
+
+}  // namespace cambench

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "result.h"
+
+#include <QByteArray>
+#include <QJsonObject>
+#include <QString>
+
+namespace cambench {
+
+// The envelope every CamBench JSON file shares: {"format": ..., "version": n, ...}.
+struct JsonFileType {
+    const char* format;   // "cambench-project"
+    int version;          // the version this build writes and reads
+    const char* noun;     // "project", for messages
+};
+
+// The top-level object, once the bytes are JSON, the format matches and the
+// version is one this build reads. A newer version gets its own message
+// asking for a newer CamBench.
+Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& type);
+
+// The envelope of a new file.
+QJsonObject jsonFileHeader(const JsonFileType& type);
+
+// Indented JSON: QJsonObject keeps keys sorted, so equal data give
+// byte-identical files that diff cleanly.
+QByteArray toIndentedJson(const QJsonObject& object);
+
+}  // namespace cambench

@@ -1,0 +1,4 @@
+cambench_add_test(tst_protocol_frame SOURCES comm/protocol/tst_frame.cpp LIBS cambench_comm)
+cambench_add_test(tst_protocol_stream_decoder SOURCES comm/protocol/tst_stream_decoder.cpp LIBS cambench_comm)
+cambench_add_test(tst_protocol_catalogue SOURCES comm/protocol/tst_catalogue.cpp LIBS cambench_comm)
+cambench_add_test(tst_protocol_command_codec SOURCES comm/protocol/tst_command_codec.cpp LIBS cambench_comm)

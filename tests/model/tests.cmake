@@ -1,0 +1,7 @@
+cambench_add_test(tst_cam_validation SOURCES model/tst_cam_validation.cpp LIBS cambench_model)
+cambench_add_test(tst_data_validation SOURCES model/tst_data_validation.cpp LIBS cambench_model)
+cambench_add_test(tst_system_settings SOURCES model/tst_system_settings.cpp LIBS cambench_model)
+cambench_add_test(tst_project_file SOURCES model/tst_project_file.cpp LIBS cambench_model)
+cambench_add_test(tst_eeprom_image_file SOURCES model/tst_eeprom_image_file.cpp LIBS cambench_model)
+cambench_add_test(tst_csv_io SOURCES model/tst_csv_io.cpp LIBS cambench_model)
+cambench_add_test(tst_atomic_file SOURCES model/tst_atomic_file.cpp LIBS cambench_model)

@@ -1,0 +1,234 @@
+#include "connection_page.h"
+
+#include "device_session.h"
+#include "workspace.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSerialPortInfo>
+#include <QSpinBox>
+#include <QToolButton>
+
+namespace cambench {
+
+namespace {
+const QString kSimPort = QStringLiteral("sim");
+}
+
+ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
+    : SectionPage(parent), m_session(session), m_workspace(workspace) {
+    auto* line = new QGroupBox(tr("Line"));
+    auto* form = new QFormLayout(line);
+
+    m_port = new QComboBox;
+    m_port->setEditable(true);
+    m_port->setToolTip(tr("A serial port, tcp://host:port for a serial device server, or the "
+                          "simulated device."));
+    auto* refresh = new QToolButton;
+    refresh->setText(tr("Refresh"));
+    refresh->setToolTip(tr("Look for serial ports again"));
+    auto* portRow = new QHBoxLayout;
+    portRow->addWidget(m_port, 1);
+    portRow->addWidget(refresh);
+    form->addRow(tr("Port:"), portRow);
+
+    m_protocol = new QComboBox;
+    m_protocol->addItem(tr("Standard (point to point)"), int(comm::Framing::Standard));
+    m_protocol->addItem(tr("Multiuser (RS485 bus)"), int(comm::Framing::Multiuser));
+    form->addRow(tr("Protocol:"), m_protocol);
+
+    m_baud = new QComboBox;
+    for (int baud : {9600, 19200, 38400, 57600, 115200}) m_baud->addItem(QString::number(baud), baud);
+    form->addRow(tr("Baud rate:"), m_baud);
+
+    m_device = new QSpinBox;
+    m_device->setRange(0, 63);
+    m_device->setToolTip(tr("Multiuser: the number of the CamCon to talk to (0–63)."));
+    form->addRow(tr("Device number:"), m_device);
+
+    m_pcNumber = new QSpinBox;
+    m_pcNumber->setRange(0, 63);
+    m_pcNumber->setValue(63);
+    m_pcNumber->setToolTip(tr("Multiuser: this PC's own number on the bus (0–63)."));
+    form->addRow(tr("PC number:"), m_pcNumber);
+
+    m_connect = new QPushButton(tr("Connect"));
+    m_disconnect = new QPushButton(tr("Disconnect"));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_connect);
+    buttons->addWidget(m_disconnect);
+    buttons->addStretch();
+    form->addRow(buttons);
+
+    auto* bus = new QGroupBox(tr("Devices on the line"));
+    auto* busLayout = new QVBoxLayout(bus);
+    m_scan = new QPushButton(tr("Scan bus"));
+    m_scan->setToolTip(tr("Ask every device number 0–63 for an answer (Multiuser), or identify "
+                          "the one device of a point-to-point line."));
+    m_devices = new QListWidget;
+    m_devices->setToolTip(tr("Double-click a device to work with it."));
+    busLayout->addWidget(m_scan, 0, Qt::AlignLeft);
+    busLayout->addWidget(m_devices);
+
+    auto* identity = new QGroupBox(tr("Device"));
+    m_info = new QFormLayout(identity);
+
+    auto* left = new QVBoxLayout;
+    left->addWidget(line);
+    left->addWidget(bus, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addLayout(left, 3);
+    layout->addWidget(identity, 2);
+
+    fillPorts();
+    connect(refresh, &QToolButton::clicked, this, &ConnectionPage::fillPorts);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
+        const bool multi = m_protocol->currentData().toInt() == int(comm::Framing::Multiuser);
+        m_baud->setCurrentText(multi ? QStringLiteral("38400") : QStringLiteral("9600"));
+        updateButtons();
+    });
+    connect(m_connect, &QPushButton::clicked, this, [this] {
+        m_session->connectTo(connectionSettings(), linkSettings());
+    });
+    connect(m_disconnect, &QPushButton::clicked, m_session, &DeviceSession::disconnectFromDevice);
+    connect(m_scan, &QPushButton::clicked, this, &ConnectionPage::scanBus);
+    connect(m_devices, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        const int device = item->data(Qt::UserRole).toInt();
+        m_device->setValue(device);
+        m_session->setDevice(device);
+        Q_EMIT deviceSelected(device);
+    });
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::updateButtons);
+    connect(m_workspace, &Workspace::infoChanged, this, &ConnectionPage::showInfo);
+    updateButtons();
+    showInfo();
+}
+
+void ConnectionPage::fillPorts() {
+    const QString current = connectionSettings().port;
+    m_port->clear();
+    m_port->addItem(tr("Simulated device"), kSimPort);
+    const auto ports = QSerialPortInfo::availablePorts();
+    for (const QSerialPortInfo& info : ports) {
+        const QString text = info.description().isEmpty()
+                                 ? info.systemLocation()
+                                 : QStringLiteral("%1 (%2)").arg(info.systemLocation(),
+                                                                 info.description());
+        m_port->addItem(text, info.systemLocation());
+    }
+    setPort(current.isEmpty() ? kSimPort : current);
+}
+
+void ConnectionPage::setPort(const QString& port) {
+    const int index = m_port->findData(port);
+    if (index >= 0) {
+        m_port->setCurrentIndex(index);
+    } else {
+        m_port->setEditText(port);
+    }
+}
+
+comm::ConnectionSettings ConnectionPage::connectionSettings() const {
+    comm::ConnectionSettings settings;
+    const int index = m_port->currentIndex();
+    // An entry from the list carries its port in the data; typed text is the port.
+    settings.port = (index >= 0 && m_port->itemText(index) == m_port->currentText())
+                        ? m_port->itemData(index).toString()
+                        : m_port->currentText().trimmed();
+    settings.serial.baud = m_baud->currentData().toInt();
+    return settings;
+}
+
+comm::LinkSettings ConnectionPage::linkSettings() const {
+    comm::LinkSettings link;
+    link.framing = comm::Framing(m_protocol->currentData().toInt());
+    link.device = m_device->value();
+    link.pcNumber = m_pcNumber->value();
+    return link;
+}
+
+void ConnectionPage::updateButtons() {
+    const auto state = m_session->state();
+    const bool idle = state == comm::ConnectionState::Disconnected;
+    m_connect->setEnabled(state != comm::ConnectionState::Connecting);
+    m_connect->setText(idle ? tr("Connect") : tr("Reconnect"));
+    m_disconnect->setEnabled(!idle);
+    m_scan->setEnabled(m_session->isOnline());
+}
+
+void ConnectionPage::scanBus() {
+    m_devices->clear();
+    m_scan->setEnabled(false);
+    Q_EMIT statusMessage(tr("Scanning the bus…"));
+    if (m_session->link().framing != comm::Framing::Multiuser) {
+        // A point-to-point line has exactly one device: identify it.
+        m_session->run<QList<int>>(
+            this, tr("Identify device"),
+            [](comm::CamConClient& client, comm::JobContext&) -> Result<QList<int>> {
+                const auto info = client.readInfo();
+                if (!info) return info.error();
+                return QList<int>{info->deviceNumber};
+            },
+            [this](Result<QList<int>> devices) { showScanResult(devices); });
+        return;
+    }
+    m_session->run<QList<int>>(
+        this, tr("Scan bus"),
+        [](comm::CamConClient& client, comm::JobContext& job) {
+            return client.scanBus(0, 63, 60,
+                                  [&job](qint64 done, qint64 total) { job.progress(done, total); });
+        },
+        [this](Result<QList<int>> devices) { showScanResult(devices); });
+}
+
+void ConnectionPage::showScanResult(const Result<QList<int>>& devices) {
+    updateButtons();
+    if (!devices) {
+        Q_EMIT statusMessage(tr("Bus scan failed: %1").arg(devices.error().message));
+        return;
+    }
+    for (int device : devices.value()) {
+        auto* item = new QListWidgetItem(tr("CamCon, device number %1").arg(device));
+        item->setData(Qt::UserRole, device);
+        m_devices->addItem(item);
+    }
+    Q_EMIT statusMessage(tr("%n device(s) found", nullptr, int(devices->size())));
+}
+
+void ConnectionPage::showInfo() {
+    while (m_info->rowCount() > 0) m_info->removeRow(0);
+    const DeviceInfo& info = m_workspace->info();
+    if (!m_workspace->infoFromDevice()) {
+        m_info->addRow(new QLabel(tr("Not read from a device (offline project).")));
+    }
+    const QString units = tr("%1 … %2");
+    const auto row = [this](const QString& label, const QString& value) {
+        auto* text = new QLabel(value);
+        text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        m_info->addRow(label, text);
+    };
+    if (m_workspace->infoFromDevice()) {
+        row(tr("Firmware (EPROM date):"), info.epromDate);
+        row(tr("Device number:"), QString::number(info.deviceNumber));
+    }
+    row(tr("Outputs:"), QString::number(info.outputs));
+    row(tr("Inputs:"), QString::number(info.inputs));
+    row(tr("Programs:"), tr("0 … %1").arg(info.programs - 1));
+    row(tr("Position range:"), units.arg(info.minPosition).arg(info.maxPosition));
+    row(tr("Outputs with dead time:"), QString::number(info.deadTimeOutputs));
+    row(tr("Maximum dead time:"), tr("%1 ms").arg(QLocale().toString(info.maxDeadTime / 10.0, 'f', 1)));
+    if (m_workspace->infoFromDevice()) {
+        row(tr("Programmed cams:"), QString::number(info.programmedCams));
+        row(tr("Free cam memory:"), tr("%n cam(s)", nullptr, int(info.freeCams)));
+        row(tr("CPU clock:"), info.cpuClock == 1 ? tr("25.2 MHz") : tr("16.7 MHz"));
+        row(tr("Temperature:"), info.temperature == 255 ? tr("no sensor")
+                                                         : tr("%1 °C").arg(info.temperature));
+    }
+}
+
+}  // namespace cambench

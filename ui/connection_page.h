@@ -1,0 +1,59 @@
+#pragma once
+
+#include "section_page.h"
+
+#include "comm/transport/transport.h"
+#include "comm/link/protocol_link.h"
+
+class QComboBox;
+class QFormLayout;
+class QListWidget;
+class QPushButton;
+class QSpinBox;
+
+namespace cambench {
+
+class DeviceSession;
+class Workspace;
+
+// Where the device is (serial port, tcp://, simulated), the protocol and
+// its numbers; a bus scan that lists the devices on an RS485 line; and the
+// identity of the connected device.
+class ConnectionPage : public SectionPage {
+    Q_OBJECT
+public:
+    ConnectionPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+
+    QString sectionTitle() const override { return tr("Connection"); }
+
+    comm::ConnectionSettings connectionSettings() const;
+    comm::LinkSettings linkSettings() const;
+    void setPort(const QString& port);
+
+    void scanBus();
+
+Q_SIGNALS:
+    // The user picked another device of the bus: read its identity.
+    void deviceSelected(int device);
+
+private:
+    void fillPorts();
+    void updateButtons();
+    void showInfo();
+    void showScanResult(const Result<QList<int>>& devices);
+
+    DeviceSession* m_session;
+    Workspace* m_workspace;
+    QComboBox* m_port;
+    QComboBox* m_protocol;
+    QComboBox* m_baud;
+    QSpinBox* m_device;
+    QSpinBox* m_pcNumber;
+    QPushButton* m_connect;
+    QPushButton* m_disconnect;
+    QPushButton* m_scan;
+    QListWidget* m_devices;
+    QFormLayout* m_info;
+};
+
+}  // namespace cambench

@@ -1,0 +1,87 @@
+#include "device_session.h"
+
+#include "shell_log.h"
+
+namespace cambench {
+
+DeviceSession::DeviceSession(QObject* parent) : QObject(parent) {
+    m_retry.setInterval(2000);
+    connect(&m_retry, &QTimer::timeout, this, [this] {
+        qCInfo(shellLog) << "retrying lost connection to" << m_connection.port;
+        m_worker.connectTo(m_connection, m_link);
+    });
+    connect(&m_worker, &comm::CommWorker::connectionStateChanged, this,
+            &DeviceSession::onStateChanged, Qt::QueuedConnection);
+}
+
+DeviceSession::~DeviceSession() { m_retry.stop(); }
+
+void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
+                              const comm::LinkSettings& link) {
+    m_connection = connection;
+    m_link = link;
+    reconnect();
+}
+
+void DeviceSession::reconnect() {
+    m_wantConnected = true;
+    m_worker.cancelAll();
+    m_worker.connectTo(m_connection, m_link);
+}
+
+void DeviceSession::disconnectFromDevice() {
+    m_wantConnected = false;
+    m_wasLost = false;
+    m_retry.stop();
+    m_worker.cancelAll();
+    m_worker.disconnectFromDevice();
+}
+
+void DeviceSession::setDevice(int device) {
+    m_link.device = device;
+    m_worker.setLinkDevice(device);
+}
+
+QString DeviceSession::stateText() const {
+    switch (m_state) {
+    case comm::ConnectionState::Disconnected:
+        return tr("Offline");
+    case comm::ConnectionState::Connecting:
+        return tr("Connecting to %1…").arg(m_connection.port);
+    case comm::ConnectionState::Connected:
+        return m_connection.port == QLatin1String("sim")
+                   ? tr("Connected to the simulated device")
+                   : tr("Connected to %1").arg(m_connection.port);
+    case comm::ConnectionState::Lost:
+        return tr("Connection to %1 lost, retrying").arg(m_connection.port);
+    }
+    return {};
+}
+
+void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& message) {
+    m_state = state;
+    m_message = message;
+    qCInfo(shellLog) << "connection state" << int(state) << message;
+    switch (state) {
+    case comm::ConnectionState::Lost:
+        m_wasLost = true;
+        if (m_wantConnected && !m_retry.isActive()) m_retry.start();
+        break;
+    case comm::ConnectionState::Connected:
+        m_retry.stop();
+        break;
+    case comm::ConnectionState::Disconnected:
+        // A failed retry ends here too; keep trying while the user wants the line.
+        if (m_wasLost && m_wantConnected && !m_retry.isActive()) m_retry.start();
+        break;
+    case comm::ConnectionState::Connecting:
+        break;
+    }
+    Q_EMIT stateChanged(state, message);
+    if (state == comm::ConnectionState::Connected && m_wasLost) {
+        m_wasLost = false;
+        Q_EMIT reconnected();
+    }
+}
+
+}  // namespace cambench

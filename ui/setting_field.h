@@ -1,0 +1,51 @@
+#pragma once
+
+#include "model/system_settings.h"
+
+#include <QObject>
+#include <QVariant>
+
+class QLabel;
+class QWidget;
+
+namespace cambench {
+
+// One editor of the settings form, made from a SettingSpec: a spin box with
+// the manual's range, a combo box with readable names, a line edit with the
+// device's maximum length. Knows its label so it can mark a change.
+class SettingField : public QObject {
+    Q_OBJECT
+public:
+    SettingField(const SettingSpec& spec, QObject* parent = nullptr);
+
+    const SettingSpec& spec() const { return m_spec; }
+    QWidget* editor() const { return m_editor; }
+    QLabel* label() const { return m_label; }
+    QLabel* rangeLabel() const { return m_range; }
+
+    QVariant value() const;
+    void setValue(const QVariant& value);  // no valueEdited
+    // Marks the field as differing from the device (or clears the mark).
+    void setDeviceValue(const QVariant& device, bool known);
+
+    // Texts of a value for comparisons and the report.
+    static QString displayText(const SettingSpec& spec, const QVariant& value);
+    static QString labelText(const SettingSpec& spec);
+    static QString rangeText(const SettingSpec& spec);
+    static QString toolTipText(const SettingSpec& spec);
+
+Q_SIGNALS:
+    void valueEdited(const QString& key, const QVariant& value);
+
+private:
+    void createEditor();
+    void emitEdited();
+
+    const SettingSpec& m_spec;
+    QWidget* m_editor = nullptr;
+    QLabel* m_label = nullptr;
+    QLabel* m_range = nullptr;
+    bool m_updating = false;
+};
+
+}  // namespace cambench

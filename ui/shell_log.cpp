@@ -1,0 +1,7 @@
+#include "shell_log.h"
+
+namespace cambench {
+
+Q_LOGGING_CATEGORY(shellLog, "cambench.ui")
+
+}  // namespace cambench
