@@ -15,9 +15,11 @@ namespace cambench {
 constexpr int kMaxNameLength = 21;
 // User numbers: 6 bytes on the device including the NUL.
 constexpr int kMaxUserNumberLength = 5;
-// The PLC counts go up to 248 (manual 5.4.6) and the ASCII protocol numbers
-// networks from 0, so the highest network number is 247.
-constexpr int kMaxPlcNumber = 247;
+// Highest PLC network number as agreed for CamBench (brief, simulator).
+// Doubtful: the counts of manual 5.4.6 go up to 248 and the ASCII protocol
+// numbers from 0, which would make 247 the highest; change it here if a
+// device refuses 248.
+constexpr int kMaxPlcNumber = 248;
 
 // Each function returns an empty string / list when everything is valid,
 // otherwise one complete sentence per problem naming the item.

@@ -7,6 +7,7 @@
 #include "ui/cameditor/cam_document.h"
 #include "ui/cameditor/range_delegate.h"
 
+#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>

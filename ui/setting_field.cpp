@@ -19,7 +19,9 @@ namespace {
 
 QString settingsText(const char* text) { return QCoreApplication::translate("Settings", text); }
 
-QString field(const char* text) { return QCoreApplication::translate("cambench::SettingField", text); }
+QString field(const char* text, int n = -1) {
+    return QCoreApplication::translate("cambench::SettingField", text, nullptr, n);
+}
 
 double scale(const SettingSpec& spec) { return std::pow(10.0, spec.decimals); }
 
@@ -67,7 +69,7 @@ QString SettingField::rangeText(const SettingSpec& spec) {
         case SettingKind::InputRef:
             return field("input 1 … %1, 0 = none").arg(spec.max);
         case SettingKind::Text:
-            return field("up to %n character(s)", nullptr, spec.maxLength);
+            return field("up to %n character(s)", spec.maxLength);
         case SettingKind::Enum:
             return {};
     }

@@ -143,8 +143,9 @@ int main(int argc, char* argv[]) {
     parser.process(app);
     Options options;
     if (const QString problem = readOptions(parser, options); !problem.isEmpty()) return fail(problem);
-    QLoggingCategory::setFilterRules(options.verbose ? QStringLiteral("cambench.comm.sim.debug=true")
-                                                     : QStringLiteral("cambench.comm.sim.info=false"));
+    QLoggingCategory::setFilterRules(options.verbose
+                                         ? QStringLiteral("cambench.comm.sim.debug=true")
+                                         : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
 
     std::unique_ptr<SimLine> line = makeSimLine(options.config);
     line->setPcNumber(options.pcNumber);

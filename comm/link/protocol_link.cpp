@@ -57,13 +57,15 @@ Result<Fields> ProtocolLink::call(const CommandSpec& spec, const Fields& fields,
     if (!body) return body.error();
 
     ReplyMatch match;
-    const Judge judge = [&](const Frame& frame) {
+    const Judge judge = [&](const Frame& frame, QString& problem) {
         match = matchReply(spec, frame);
         switch (match.kind) {
         case ReplyMatch::Matches:
         case ReplyMatch::DeviceError:
         case ReplyMatch::NotUnderstood: return Verdict::Accept;
-        case ReplyMatch::Malformed: return Verdict::Retry;
+        case ReplyMatch::Malformed:
+            problem = QStringLiteral("a malformed reply: %1").arg(match.detail);
+            return Verdict::Retry;
         case ReplyMatch::Unrelated: break;
         }
         return Verdict::Ignore;
@@ -102,7 +104,7 @@ Result<QByteArray> ProtocolLink::raw(char kind, const QByteArray& body, int time
     const bool expectReply = !spec || spec->replyKind != ReplyKind::None;
     const Result<Frame> reply =
         exchange(rawLabel(kind, body), kind, body, timeoutFor(spec, body, timeoutMs), expectReply,
-                 [](const Frame&) { return Verdict::Accept; });
+                 [](const Frame&, QString&) { return Verdict::Accept; });
     if (!reply) return reply.error();
     return reply->body;
 }
@@ -216,9 +218,9 @@ ProtocolLink::Verdict ProtocolLink::judgeFrame(const DecodeEvent& event,
                                  << event.raw.toHex(' ');
             return Verdict::Ignore;
         }
-        if (const Verdict verdict = judge(event.frame); verdict != Verdict::Retry) return verdict;
+        if (const Verdict verdict = judge(event.frame, problem); verdict != Verdict::Retry)
+            return verdict;
         ++m_stats.badFrames;
-        problem = QStringLiteral("a malformed reply");
         return Verdict::Retry;
     case DecodeEvent::BadChecksum:
         if (!isOurs(event.frame)) return Verdict::Ignore;

@@ -70,9 +70,10 @@ public:
     void resetStats() { m_stats = {}; }
 
 private:
-    // What a reply frame means to the request waiting for it.
+    // What a reply frame means to the request waiting for it; Retry says
+    // why in `problem`.
     enum class Verdict { Accept, Ignore, Retry };
-    using Judge = std::function<Verdict(const Frame&)>;
+    using Judge = std::function<Verdict(const Frame&, QString& problem)>;
 
     // Sends `body` (framed, with the next block number in Multiuser) and
     // retries until `judge` accepts a reply, the attempts run out or the

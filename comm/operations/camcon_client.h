@@ -47,7 +47,11 @@ public:
     Result<QString> readProgramName(int program);
     Status writeProgramName(int program, const QString& name);
 
-    Result<SystemSettings> readSettings();
+    // Settings the device answers :Z to are left out and, when `skipped` is
+    // given, listed there ("GSPLL (specialEncoder.pll.*)").
+    Result<SystemSettings> readSettings(QStringList* skipped = nullptr);
+    // Writes the keys of `settings` whose values differ from the device's
+    // (read first); read-only keys are ignored. Keys absent stay as they are.
     Status writeSettings(const SystemSettings& settings);
 
     Result<QList<User>> readUsers();

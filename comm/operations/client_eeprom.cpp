@@ -1,6 +1,8 @@
 #include "camcon_client.h"
 #include "client_support.h"
 
+#include "model/eeprom_image_file.h"
+
 #include <QDateTime>
 
 namespace cambench::comm {
@@ -10,27 +12,6 @@ using namespace client;
 namespace {
 
 constexpr quint16 kEndBlock = 0xFFFF;
-constexpr int kBasicBlockBytes = 128;
-
-// Block 0 holds 128 bytes; every other block tells its length in the upper
-// nibble of its first byte, in units of 6 bytes (notes 6).
-QString blockProblem(quint16 number, const QByteArray& data) {
-    if (number == 0) {
-        if (data.size() == kBasicBlockBytes) return {};
-        return QStringLiteral("block 0000 has %1 bytes instead of %2")
-            .arg(data.size())
-            .arg(kBasicBlockBytes);
-    }
-    if (data.isEmpty()) return QStringLiteral("block %1 is empty").arg(number, 4, 16, QChar(u'0'));
-    const int nibble = quint8(data.at(0)) >> 4;
-    if (nibble == 0 || data.size() != nibble * 6) {
-        return QStringLiteral("block %1 has %2 bytes but its first byte announces %3")
-            .arg(number, 4, 16, QChar(u'0'))
-            .arg(data.size())
-            .arg(nibble * 6);
-    }
-    return {};
-}
 
 QString hex4(int number) {
     return QStringLiteral("%1").arg(number, 4, 16, QChar(u'0')).toUpper();
@@ -69,14 +50,17 @@ Result<EepromImage> CamConClient::backup(const ProgressFn& progress) {
                 QStringLiteral("asked for EEPROM block %1, the device sent block %2; try again")
                     .arg(hex4(number), hex4(int(replyNumber))));
         }
-        EepromBlock block{quint16(number), reply->bytes("data")};
-        const QString problem = blockProblem(block.number, block.data);
-        if (!problem.isEmpty()) {
+        image.blocks.append(EepromBlock{quint16(number), reply->bytes("data")});
+        // Each block must pass the length rule (128 bytes for 0000, the
+        // nibble rule after it) before the next one is worth reading.
+        const Status blocks = checkImageBlocks(
+            number == 0 ? image.blocks : QList<EepromBlock>{image.blocks.first(), image.blocks.last()});
+        if (!blocks) {
             return Error::communication(
-                QStringLiteral("reading the EEPROM: %1; try again").arg(problem));
+                QStringLiteral("the device sent a malformed EEPROM block: %1; try again")
+                    .arg(blocks.error().message));
         }
-        bytes += block.data.size();
-        image.blocks.append(std::move(block));
+        bytes += image.blocks.last().data.size();
     }
     return Error::communication(
         QStringLiteral("the device sent EEPROM blocks up to FFFE without the end marker FFFF; "

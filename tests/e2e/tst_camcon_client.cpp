@@ -1,8 +1,11 @@
 // CamConClient against the in-process simulator: no subprocess, no worker.
 #include "comm/link/protocol_link.h"
 #include "comm/operations/camcon_client.h"
+#include "comm/operations/settings_commands.h"
 #include "comm/sim/sim_transport.h"
 
+#include <QLoggingCategory>
+#include <QSet>
 #include <QTest>
 
 #include <memory>
@@ -49,6 +52,7 @@ Track track(int output, QList<Cam> cams) {
 class TestCamConClient : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void initTestCase();
     void readInfoReportsTheDeviceProfile();
     void writeTrackThenReadTrackGivesTheTarget();
     void writeTrackReplacesOverlappingCamsByDeletingFirst();
@@ -63,7 +67,16 @@ private Q_SLOTS:
     void restoreFailureSaysTheDeviceIsErased();
     void scanBusFindsExactlyTheDevicesOnTheLine();
     void scanBusRestoresTheLinkSettings();
+    void everyModelSettingHasACommand();
+    void settingsWriteChangesOnlyWhatDiffers();
+    void specialEncoderPageWriteSelectsItsType();
 };
+
+void TestCamConClient::initTestCase() {
+    // The scan's expected timeouts would flood the output.
+    QLoggingCategory::setFilterRules(QStringLiteral("cambench.*.debug=false\n"
+                                                    "cambench.comm.link.warning=false"));
+}
 
 void TestCamConClient::readInfoReportsTheDeviceProfile() {
     Bench bench;
@@ -254,6 +267,51 @@ void TestCamConClient::scanBusRestoresTheLinkSettings() {
     QCOMPARE(bench.link->settings().retries, before.retries);
     // And the link still talks to device 5.
     QVERIFY(bench.client->readInfo().ok());
+}
+
+void TestCamConClient::everyModelSettingHasACommand() {
+    QSet<QString> mapped;
+    for (const SettingPage& page : settingPages()) {
+        QVERIFY2(findCommand('?', page.command), page.command);
+        for (const SettingField& field : page.fields) mapped.insert(QLatin1String(field.key));
+    }
+    for (const SettingSpec& spec : settingSpecs()) {
+        QVERIFY2(mapped.contains(QLatin1String(spec.key)), spec.key);
+    }
+}
+
+void TestCamConClient::settingsWriteChangesOnlyWhatDiffers() {
+    Bench bench;
+    QStringList skipped;
+    Result<SystemSettings> settings = bench.client->readSettings(&skipped);
+    QVERIFY2(settings.ok(), qPrintable(settings.error().message));
+    QVERIFY2(skipped.isEmpty(), qPrintable(skipped.join(u';')));
+    const qint64 hysteresis = settings->value(QStringLiteral("actualValueHysteresis")).toLongLong();
+    settings.value().insert(QStringLiteral("actualValueHysteresis"), hysteresis + 3);
+    settings.value().insert(QStringLiteral("speedFormat"), QStringLiteral("###.# U/m"));
+    bench.link->resetStats();
+    const Status written = bench.client->writeSettings(*settings);
+    QVERIFY2(written.ok(), qPrintable(written.error().message));
+    // One read of every page, then exactly the two changed commands.
+    QCOMPARE(bench.link->stats().requests, int(settingPages().size()) + 2);
+    const Result<SystemSettings> again = bench.client->readSettings();
+    QVERIFY(again.ok());
+    QCOMPARE(again->value(QStringLiteral("actualValueHysteresis")).toLongLong(), hysteresis + 3);
+    QCOMPARE(again->value(QStringLiteral("speedFormat")).toString(), QStringLiteral("###.# U/m"));
+}
+
+void TestCamConClient::specialEncoderPageWriteSelectsItsType() {
+    Bench bench;
+    Result<SystemSettings> settings = bench.client->readSettings();
+    QVERIFY(settings.ok());
+    settings.value().insert(QStringLiteral("specialEncoder.timer.resolution"), 720);
+    settings.value().insert(QStringLiteral("specialEncoder.text1"), QStringLiteral("Timer axis"));
+    QVERIFY(bench.client->writeSettings(*settings).ok());
+    const Result<SystemSettings> again = bench.client->readSettings();
+    QVERIFY(again.ok());
+    QCOMPARE(again->value(QStringLiteral("specialEncoder.timer.resolution")).toLongLong(), 720);
+    QCOMPARE(again->value(QStringLiteral("specialEncoder.type")).toLongLong(), 5);
+    QCOMPARE(again->value(QStringLiteral("encoderText1")).toString(), QStringLiteral("Timer axis"));
 }
 
 QTEST_GUILESS_MAIN(TestCamConClient)

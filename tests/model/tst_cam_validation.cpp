@@ -40,7 +40,7 @@ class TestCamValidation : public QObject {
 private Q_SLOTS:
     void validTrackHasNoProblems()
     {
-        const Track t = track(5, {{10, 50}, {100, 200}, {300, 20}});
+        const Track t = track(5, {{10, 50}, {100, 200}, {300, 5}});
         QVERIFY(validateTrack(t, 3, rotaryDevice(), true).isEmpty());
     }
 

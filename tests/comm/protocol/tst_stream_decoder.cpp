@@ -226,7 +226,7 @@ void TestStreamDecoder::decodesSeveralFramesInOneRead()
     const QList<Frame> frames = sampleFrames(multiuser);
     StreamDecoder decoder(multiuser ? Framing::Multiuser : Framing::Standard, ":");
     const QList<DecodeEvent> events = decoder.feed(wireOf(frames));
-    QCOMPARE(kinds(events), QList(frames.size(), DecodeEvent::FrameOk));
+    QCOMPARE(kinds(events), QList<DecodeEvent::Kind>(frames.size(), DecodeEvent::FrameOk));
     QCOMPARE(framesOf(events), frames);
 }
 
@@ -252,7 +252,7 @@ void TestStreamDecoder::decodesStreamSplitAtEveryPosition()
             QList<DecodeEvent> events = decoder.feed(wire.left(split));
             events += decoder.feed(wire.mid(split));
             QVERIFY2(framesOf(events) == frames, qPrintable(QStringLiteral("split at %1").arg(split)));
-            QCOMPARE(kinds(events), QList(frames.size(), DecodeEvent::FrameOk));
+            QCOMPARE(kinds(events), QList<DecodeEvent::Kind>(frames.size(), DecodeEvent::FrameOk));
         }
     }
 }

@@ -1,0 +1,16 @@
+# CamConClient against the in-process simulator, and end-to-end runs of the
+# real cambench-cli against the real cambench-sim (paths relative to tests/).
+cambench_add_test(tst_operations_camcon_client
+  SOURCES e2e/tst_camcon_client.cpp
+  LIBS cambench_comm)
+
+# The end-to-end tests start both executables as subprocesses.
+function(cambench_add_e2e_test name)
+  cambench_add_test(${name} SOURCES ${ARGN} e2e/sim_process.h e2e/sim_process.cpp
+                    e2e/e2e_support.h e2e/e2e_support.cpp LIBS Qt6::Core)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
+  target_compile_definitions(${name} PRIVATE
+    CAMBENCH_SIM_EXE="$<TARGET_FILE:cambench-sim>"
+    CAMBENCH_CLI_EXE="$<TARGET_FILE:cambench-cli>")
+  add_dependencies(${name} cambench-sim cambench-cli)
+endfunction()

@@ -1,0 +1,278 @@
+#include "model/project_file.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace cambench;
+
+namespace {
+
+Project sampleProject()
+{
+    Project project;
+    project.device.epromDate = QStringLiteral("11.10.1994");
+    project.device.outputs = 32;
+    project.device.programs = 16;
+    project.device.minPosition = 0;
+    project.device.maxPosition = 359;
+
+    CamProgram program;
+    program.number = 3;
+    program.name = QStringLiteral("Bottles 0,5 l");
+    Track track;
+    track.output = 5;
+    track.cams = {{10, 50}, {100, 200}, {300, 5}};
+    program.tracks.insert(5, track);
+    track.output = 1;
+    track.cams = {{0, 1}};
+    program.tracks.insert(1, track);
+    project.programs << program;
+    CamProgram empty;
+    empty.number = 0;
+    empty.name = QStringLiteral("Leer");
+    project.programs << empty;
+
+    project.deadTimes = {{1, 12}, {2, 9999}};
+    project.names.outputs = {{1, QStringLiteral("Glue \"hot\"")}, {5, QStringLiteral("Knife")}};
+    project.names.programs = {{3, QStringLiteral("Bottles 0,5 l")}, {7, QStringLiteral("Spare")}};
+    project.settings = {{QStringLiteral("gearMultiplier"), qint64(-5)},
+                        {QStringLiteral("actualValueFormat"), QStringLiteral("###.#")},
+                        {QStringLiteral("axisType"), qint64(0)}};
+
+    User user;
+    user.name = QStringLiteral("Anna");
+    user.number = QStringLiteral("4711");
+    user.outputAccess = QList<bool>(256, false);
+    user.outputAccess[0] = true;
+    user.outputAccess[255] = true;
+    user.rights = User::Programming | User::UserMenu;
+    project.users << user;
+
+    PlcNetwork network;
+    network.area = PlcNetwork::M;
+    network.number = 10;
+    network.value = -3;
+    network.reset = 0x1234;
+    network.symbols[0] = 0x0801;
+    network.symbols[29] = 0xFFFF;
+    project.plcNetworks << network;
+    return project;
+}
+
+// The sample file with one value replaced (path of object keys and indexes).
+QByteArray withValue(const QStringList& path, const QJsonValue& value)
+{
+    std::function<QJsonValue(const QJsonValue&, int)> set = [&](const QJsonValue& node, int depth) -> QJsonValue {
+        if (depth == path.size())
+            return value;
+        bool isIndex = false;
+        const int index = path.at(depth).toInt(&isIndex);
+        if (isIndex) {
+            QJsonArray array = node.toArray();
+            array[index] = set(array.at(index), depth + 1);
+            return array;
+        }
+        QJsonObject object = node.toObject();
+        object[path.at(depth)] = set(object.value(path.at(depth)), depth + 1);
+        return object;
+    };
+    const QJsonObject root = QJsonDocument::fromJson(projectToJson(sampleProject())).object();
+    return QJsonDocument(set(root, 0).toObject()).toJson();
+}
+
+QString loadError(const QByteArray& bytes)
+{
+    const Result<Project> result = projectFromJson(bytes);
+    return result.ok() ? QString() : result.error().message;
+}
+
+}  // namespace
+
+class TestProjectFile : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void sampleIsValid() { QCOMPARE(validateProject(sampleProject()), QStringList()); }
+
+    void saveAndLoadRoundTrip()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("line1.cambench"));
+        const Project project = sampleProject();
+        const Status saved = saveProject(path, project);
+        QVERIFY2(saved.ok(), qPrintable(saved.error().message));
+        const Result<Project> loaded = loadProject(path);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
+        QCOMPARE(loaded->device, project.device);
+        QCOMPARE(loaded->programs, project.programs);
+        QCOMPARE(loaded->settings, project.settings);
+        QCOMPARE(loaded->users, project.users);
+        QVERIFY(*loaded == project);
+    }
+
+    void savingTwiceGivesIdenticalBytes()
+    {
+        QTemporaryDir dir;
+        const QString first = dir.filePath(QStringLiteral("a.cambench"));
+        const QString second = dir.filePath(QStringLiteral("b.cambench"));
+        QVERIFY(saveProject(first, sampleProject()).ok());
+        const Result<Project> loaded = loadProject(first);
+        QVERIFY(loaded.ok());
+        QVERIFY(saveProject(second, *loaded).ok());
+        QFile a(first), b(second);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        const QByteArray bytes = a.readAll();
+        QCOMPARE(bytes, b.readAll());
+        QVERIFY(bytes.contains("\"format\": \"cambench-project\""));
+    }
+
+    void camsAreWrittenAsPairs()
+    {
+        const QJsonObject root = QJsonDocument::fromJson(projectToJson(sampleProject())).object();
+        const QJsonArray cams = root[QStringLiteral("programs")][0][QStringLiteral("tracks")][1]
+                                    [QStringLiteral("cams")].toArray();
+        QCOMPARE(cams.size(), 3);
+        QCOMPARE(cams.at(2).toArray(), (QJsonArray{300, 5}));
+    }
+
+    void notJsonIsRejected()
+    {
+        const QString error = loadError("this is no json {");
+        QVERIFY2(error.contains(QStringLiteral("not valid JSON")), qPrintable(error));
+    }
+
+    void truncatedFileIsRejected()
+    {
+        const QByteArray bytes = projectToJson(sampleProject());
+        QVERIFY(loadError(bytes.left(bytes.size() / 2)).contains(QStringLiteral("not valid JSON")));
+    }
+
+    void wrongFormatIsRejected()
+    {
+        const QString error = loadError(R"({"format":"cambench-eeprom-image","version":1})");
+        QVERIFY2(error.contains(QStringLiteral("not a CamBench project")), qPrintable(error));
+        QVERIFY(loadError(R"({"name":"package.json"})").contains(QStringLiteral("not a CamBench project")));
+        QVERIFY(loadError("[1,2,3]").contains(QStringLiteral("not a CamBench project")));
+    }
+
+    void newerVersionAsksForNewerCamBench()
+    {
+        const QString error = loadError(withValue({QStringLiteral("version")}, 2));
+        QVERIFY2(error.contains(QStringLiteral("newer CamBench")), qPrintable(error));
+        QVERIFY(error.contains(QStringLiteral("version 2")));
+    }
+
+    void badValueIsReportedWithItsPath_data()
+    {
+        QTest::addColumn<QStringList>("path");
+        QTest::addColumn<QJsonValue>("value");
+        QTest::addColumn<QString>("expected");
+        const auto p = [](const char* text) { return QString::fromLatin1(text).split(QLatin1Char('/')); };
+        QTest::newRow("cam point not integer")
+            << p("programs/0/tracks/1/cams/2/1") << QJsonValue(2.5)
+            << QStringLiteral("programs[0].tracks[1].cams[2]: switch-off point is not an integer.");
+        QTest::newRow("cam point a string")
+            << p("programs/0/tracks/1/cams/0/0") << QJsonValue(QStringLiteral("10"))
+            << QStringLiteral("programs[0].tracks[1].cams[0]: switch-on point is not an integer.");
+        QTest::newRow("cam above maximum")
+            << p("programs/0/tracks/1/cams/1/1") << QJsonValue(400)
+            << QStringLiteral("programs[0].tracks[1].cams[1]: program 3, output 5, cam 2: "
+                              "switch-off point 400 is above the maximum 359.");
+        QTest::newRow("overlap")
+            << p("programs/0/tracks/1/cams/1/0") << QJsonValue(40)
+            << QStringLiteral("programs[0].tracks[1].cams[1]: program 3, output 5, cam 2: "
+                              "40..200 overlaps cam 1 (10..50).");
+        QTest::newRow("output beyond device")
+            << p("programs/0/tracks/1/output") << QJsonValue(33)
+            << QStringLiteral("programs[0].tracks[1].output: output 33 is outside 1..32.");
+        QTest::newRow("program beyond device")
+            << p("programs/0/number") << QJsonValue(16)
+            << QStringLiteral("programs[0].number: program number 16 is outside 0..15.");
+        QTest::newRow("missing key")
+            << p("device/outputs") << QJsonValue(QJsonValue::Undefined)
+            << QStringLiteral("device: \"outputs\" is missing.");
+        QTest::newRow("outputs not multiple of 8")
+            << p("device/outputs") << QJsonValue(12)
+            << QStringLiteral("device.outputs: number of outputs 12 is not a multiple of 8.");
+        QTest::newRow("dead time too large")
+            << p("deadTimes/1/deadTime") << QJsonValue(10000)
+            << QStringLiteral("deadTimes[1].deadTime: dead time 10000 is outside 0..9999.");
+        QTest::newRow("setting out of range")
+            << p("settings/gearMultiplier") << QJsonValue(0)
+            << QStringLiteral("settings.gearMultiplier: 0 is not allowed; allowed are "
+                              "-99999..-1 and 1..99999.");
+        QTest::newRow("unknown setting")
+            << p("settings/warpDrive") << QJsonValue(1)
+            << QStringLiteral("settings.warpDrive: there is no such setting.");
+        QTest::newRow("name too long")
+            << p("outputNames/0/name") << QJsonValue(QString(22, QLatin1Char('x')))
+            << QStringLiteral("outputNames[0].name: \"xxxxxxxxxxxxxxxxxxxxxx\" has 22 "
+                              "characters; the device stores at most 21.");
+        QTest::newRow("user number DEL")
+            << p("users/0/number") << QJsonValue(QStringLiteral("DEL"))
+            << QStringLiteral("users[0]: the user number \"DEL\" is reserved: it deletes a user.");
+        QTest::newRow("plc symbol too large")
+            << p("plcNetworks/0/symbols/3") << QJsonValue(65536)
+            << QStringLiteral("plcNetworks[0].symbols[3]: symbol 65536 is outside 0..65535.");
+        QTest::newRow("programs not an array")
+            << p("programs") << QJsonValue(5)
+            << QStringLiteral("programs: a JSON array is expected.");
+    }
+
+    void badValueIsReportedWithItsPath()
+    {
+        QFETCH(QStringList, path);
+        QFETCH(QJsonValue, value);
+        QFETCH(QString, expected);
+        QCOMPARE(loadError(withValue(path, value)), expected);
+    }
+
+    void wrapAroundCamIsRejectedOnLinearAxis()
+    {
+        const QString error = loadError(withValue({QStringLiteral("settings"), QStringLiteral("axisType")}, 1));
+        QVERIFY2(error.startsWith(QStringLiteral("programs[0].tracks[1].cams[2]: ")), qPrintable(error));
+        QVERIFY(error.contains(QStringLiteral("rotary")));
+    }
+
+    void loadErrorNamesTheFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("broken.cambench"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("{");
+        file.close();
+        const Result<Project> result = loadProject(path);
+        QVERIFY(!result.ok());
+        QCOMPARE(result.error().kind, ErrorKind::InvalidData);
+        QVERIFY(result.error().message.startsWith(path + QStringLiteral(": ")));
+        QVERIFY(!loadProject(dir.filePath(QStringLiteral("missing.cambench"))).ok());
+    }
+
+    void invalidProjectIsNotSaved()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bad.cambench"));
+        Project project = sampleProject();
+        project.programs[0].tracks[5].cams << Cam{40, 60};
+        const Status saved = saveProject(path, project);
+        QVERIFY(!saved.ok());
+        QVERIFY(saved.error().message.contains(QStringLiteral("overlaps")));
+        QVERIFY(!QFile::exists(path));
+    }
+
+    void programNameMustAgreeWithNameList()
+    {
+        Project project = sampleProject();
+        project.names.programs[3] = QStringLiteral("Cans");
+        const QStringList problems = validateProject(project);
+        QCOMPARE(problems.size(), 1);
+        QVERIFY(problems.first().contains(QStringLiteral("Cans")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProjectFile)
+#include "tst_project_file.moc"
