@@ -8,26 +8,22 @@ namespace cambench {
 
 namespace {
 
-Error writeError(const QString& path, const QString& why)
-{
-    return Error::usage(QStringLiteral("Could not write %1: %2. The file was not changed.")
-                            .arg(path, why));
+Error writeError(const QString& path, const QString& why) {
+    return Error::usage(
+        QStringLiteral("Could not write %1: %2. The file was not changed.").arg(path, why));
 }
 
 }  // namespace
 
-Status writeFileAtomically(const QString& path, const QByteArray& bytes)
-{
+Status writeFileAtomically(const QString& path, const QByteArray& bytes) {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return writeError(path, file.errorString());
+    if (!file.open(QIODevice::WriteOnly)) return writeError(path, file.errorString());
     if (file.write(bytes) != bytes.size()) {
         const QString why = file.errorString();
         file.cancelWriting();
         return writeError(path, why);
     }
-    if (!file.commit())
-        return writeError(path, file.errorString());
+    if (!file.commit()) return writeError(path, file.errorString());
     qCDebug(modelLog) << "wrote" << path << bytes.size() << "bytes";
     return success();
 }

@@ -7,18 +7,14 @@ namespace cambench {
 
 namespace {
 
-QString where(int program, int output, int cam)
-{
+QString where(int program, int output, int cam) {
     QString text = QStringLiteral("program %1").arg(program);
-    if (output >= 0)
-        text += QStringLiteral(", output %1").arg(output);
-    if (cam >= 0)
-        text += QStringLiteral(", cam %1").arg(cam + 1);
+    if (output >= 0) text += QStringLiteral(", output %1").arg(output);
+    if (cam >= 0) text += QStringLiteral(", cam %1").arg(cam + 1);
     return text;
 }
 
-CamProblem problem(int program, int output, int cam, const QString& what)
-{
+CamProblem problem(int program, int output, int cam, const QString& what) {
     return {program, output, cam, where(program, output, cam) + QStringLiteral(": ") + what};
 }
 
@@ -29,16 +25,14 @@ struct Span {
     int cam;
 };
 
-QString camText(const Cam& cam)
-{
+QString camText(const Cam& cam) {
     return QStringLiteral("%1..%2").arg(cam.on).arg(cam.off);
 }
 
 // Problems of one cam on its own; empty if the cam can take part in the
 // overlap check.
 QList<CamProblem> camProblems(const Cam& cam, int index, int program, int output,
-                              const DeviceInfo& device, bool rotary)
-{
+                              const DeviceInfo& device, bool rotary) {
     QList<CamProblem> problems;
     const auto checkPoint = [&](qint32 point, const char* name) {
         if (point < device.minPosition) {
@@ -74,22 +68,18 @@ QList<CamProblem> camProblems(const Cam& cam, int index, int program, int output
 
 }  // namespace
 
-bool camCovers(const Cam& cam, qint32 position)
-{
-    if (cam.on <= cam.off)
-        return position >= cam.on && position < cam.off;
+bool camCovers(const Cam& cam, qint32 position) {
+    if (cam.on <= cam.off) return position >= cam.on && position < cam.off;
     return position >= cam.on || position < cam.off;
 }
 
-bool trackActiveAt(const Track& track, qint32 position)
-{
+bool trackActiveAt(const Track& track, qint32 position) {
     return std::any_of(track.cams.cbegin(), track.cams.cend(),
                        [position](const Cam& cam) { return camCovers(cam, position); });
 }
 
 QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInfo& device,
-                                bool rotary)
-{
+                                bool rotary) {
     QList<CamProblem> problems;
     if (track.output < 1 || track.output > device.outputs) {
         problems << problem(program, track.output, -1,
@@ -111,8 +101,7 @@ QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInf
         const Cam& cam = track.cams.at(i);
         const QList<CamProblem> own = camProblems(cam, i, program, track.output, device, rotary);
         problems << own;
-        if (!own.isEmpty())
-            continue;
+        if (!own.isEmpty()) continue;
         if (cam.on < cam.off) {
             spans.push_back({cam.on, cam.off, i});
         } else {
@@ -126,8 +115,7 @@ QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInf
     std::vector<bool> reported(std::size_t(track.cams.size()), false);
     const Span* furthest = nullptr;
     for (const Span& span : spans) {
-        if (span.start >= span.end)
-            continue;
+        if (span.start >= span.end) continue;
         if (furthest && span.start < furthest->end && furthest->cam != span.cam &&
             !reported[std::size_t(span.cam)]) {
             reported[std::size_t(span.cam)] = true;
@@ -137,20 +125,18 @@ QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInf
                                     .arg(furthest->cam + 1)
                                     .arg(camText(track.cams.at(furthest->cam))));
         }
-        if (!furthest || span.end > furthest->end)
-            furthest = &span;
+        if (!furthest || span.end > furthest->end) furthest = &span;
     }
     return problems;
 }
 
 QList<CamProblem> validateProgram(const CamProgram& program, const DeviceInfo& device,
-                                  bool rotary)
-{
+                                  bool rotary) {
     QList<CamProblem> problems;
     if (program.number < 0 || program.number >= device.programs) {
-        problems << problem(program.number, -1, -1,
-                            QStringLiteral("the device has programs 0..%1")
-                                .arg(device.programs - 1));
+        problems << problem(
+            program.number, -1, -1,
+            QStringLiteral("the device has programs 0..%1").arg(device.programs - 1));
     }
     for (auto it = program.tracks.cbegin(); it != program.tracks.cend(); ++it) {
         if (it.key() != it->output) {
@@ -165,14 +151,12 @@ QList<CamProblem> validateProgram(const CamProgram& program, const DeviceInfo& d
     return problems;
 }
 
-void normaliseTrack(Track& track)
-{
+void normaliseTrack(Track& track) {
     std::stable_sort(track.cams.begin(), track.cams.end(),
                      [](const Cam& a, const Cam& b) { return a.on < b.on; });
 }
 
-void normaliseProgram(CamProgram& program)
-{
+void normaliseProgram(CamProgram& program) {
     for (auto it = program.tracks.begin(); it != program.tracks.end();) {
         if (it->cams.isEmpty()) {
             it = program.tracks.erase(it);

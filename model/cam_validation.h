@@ -37,8 +37,7 @@ QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInf
                                 bool rotary);
 // The program number (0..programs-1), every track, and that each track is
 // stored under its own output number.
-QList<CamProblem> validateProgram(const CamProgram& program, const DeviceInfo& device,
-                                  bool rotary);
+QList<CamProblem> validateProgram(const CamProgram& program, const DeviceInfo& device, bool rotary);
 
 // Orders the cams by switch-on point (stable, so equal points keep their order).
 void normaliseTrack(Track& track);

@@ -12,20 +12,17 @@ namespace {
 // Outputs the device's access table can address (32 bytes of bits).
 constexpr int kUserAccessOutputs = 256;
 
-QString quoted(const QString& name)
-{
+QString quoted(const QString& name) {
     return QLatin1Char('"') + name + QLatin1Char('"');
 }
 
-bool isPrintableAscii(QChar c)
-{
+bool isPrintableAscii(QChar c) {
     return c.unicode() >= 0x20 && c.unicode() <= 0x7E;
 }
 
 }  // namespace
 
-QString nameProblem(const QString& name)
-{
+QString nameProblem(const QString& name) {
     if (name.size() > kMaxNameLength) {
         return QStringLiteral("%1 has %2 characters; the device stores at most %3")
             .arg(quoted(name))
@@ -34,8 +31,9 @@ QString nameProblem(const QString& name)
     }
     for (const QChar c : name) {
         if (c.unicode() > 0xFF) {
-            return QStringLiteral("%1 contains '%2', which the device cannot show (only "
-                                  "Latin-1 characters are possible)")
+            return QStringLiteral(
+                       "%1 contains '%2', which the device cannot show (only "
+                       "Latin-1 characters are possible)")
                 .arg(quoted(name), c);
         }
         if (c.unicode() < 0x20 || (c.unicode() >= 0x7F && c.unicode() < 0xA0)) {
@@ -47,19 +45,20 @@ QString nameProblem(const QString& name)
     return {};
 }
 
-QStringList validateDeadTimes(const DeadTimes& deadTimes, const DeviceInfo& device)
-{
+QStringList validateDeadTimes(const DeadTimes& deadTimes, const DeviceInfo& device) {
     QStringList problems;
     for (auto it = deadTimes.cbegin(); it != deadTimes.cend(); ++it) {
         if (it.key() < 1 || it.key() > device.deadTimeOutputs) {
-            problems << QStringLiteral("Dead time of output %1: the device compensates outputs "
-                                       "1..%2 only.")
+            problems << QStringLiteral(
+                            "Dead time of output %1: the device compensates outputs "
+                            "1..%2 only.")
                             .arg(it.key())
                             .arg(device.deadTimeOutputs);
         }
         if (*it < 0 || *it > device.maxDeadTime) {
-            problems << QStringLiteral("Dead time of output %1: %2 is outside 0..%3 "
-                                       "(0.1 ms steps).")
+            problems << QStringLiteral(
+                            "Dead time of output %1: %2 is outside 0..%3 "
+                            "(0.1 ms steps).")
                             .arg(it.key())
                             .arg(*it)
                             .arg(device.maxDeadTime);
@@ -68,8 +67,7 @@ QStringList validateDeadTimes(const DeadTimes& deadTimes, const DeviceInfo& devi
     return problems;
 }
 
-QStringList validateNames(const Names& names, const DeviceInfo& device)
-{
+QStringList validateNames(const Names& names, const DeviceInfo& device) {
     QStringList problems;
     for (auto it = names.outputs.cbegin(); it != names.outputs.cend(); ++it) {
         if (it.key() < 1 || it.key() > device.outputs) {
@@ -94,11 +92,9 @@ QStringList validateNames(const Names& names, const DeviceInfo& device)
     return problems;
 }
 
-QString userProblem(const User& user)
-{
+QString userProblem(const User& user) {
     const QString name = nameProblem(user.name);
-    if (!name.isEmpty())
-        return QStringLiteral("the name %1").arg(name);
+    if (!name.isEmpty()) return QStringLiteral("the name %1").arg(name);
     if (user.number.isEmpty() || user.number.size() > kMaxUserNumberLength)
         return QStringLiteral("the user number must have 1 to %1 characters")
             .arg(kMaxUserNumberLength);
@@ -113,20 +109,19 @@ QString userProblem(const User& user)
     return {};
 }
 
-QStringList validateUsers(const QList<User>& users)
-{
+QStringList validateUsers(const QList<User>& users) {
     QStringList problems;
     QHash<QString, int> firstWithNumber;
     for (int i = 0; i < users.size(); ++i) {
         const User& user = users.at(i);
         const QString label = QStringLiteral("User %1 (%2)").arg(i + 1).arg(quoted(user.name));
         const QString problem = userProblem(user);
-        if (!problem.isEmpty())
-            problems << QStringLiteral("%1: %2.").arg(label, problem);
+        if (!problem.isEmpty()) problems << QStringLiteral("%1: %2.").arg(label, problem);
         const auto first = firstWithNumber.constFind(user.number);
         if (first != firstWithNumber.cend()) {
-            problems << QStringLiteral("%1 has the same user number as user %2; numbers must "
-                                       "be unique.")
+            problems << QStringLiteral(
+                            "%1 has the same user number as user %2; numbers must "
+                            "be unique.")
                             .arg(label)
                             .arg(*first + 1);
         } else {
@@ -136,13 +131,13 @@ QStringList validateUsers(const QList<User>& users)
     return problems;
 }
 
-QStringList validatePlcNetwork(const PlcNetwork& network)
-{
+QStringList validatePlcNetwork(const PlcNetwork& network) {
     QStringList problems;
     static const QSet<int> areas = {PlcNetwork::O, PlcNetwork::P, PlcNetwork::M, PlcNetwork::X};
     if (!areas.contains(network.area)) {
-        problems << QStringLiteral("PLC network area 0x%1 is unknown; allowed are 0x08 (O), "
-                                   "0x09 (P), 0x0A (M) and 0x0B (X).")
+        problems << QStringLiteral(
+                        "PLC network area 0x%1 is unknown; allowed are 0x08 (O), "
+                        "0x09 (P), 0x0A (M) and 0x0B (X).")
                         .arg(network.area, 2, 16, QLatin1Char('0'));
     }
     if (network.number < 0 || network.number > kMaxPlcNumber) {

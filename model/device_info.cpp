@@ -2,18 +2,16 @@
 
 namespace cambench {
 
-bool operator==(const DeviceInfo& a, const DeviceInfo& b)
-{
+bool operator==(const DeviceInfo& a, const DeviceInfo& b) {
     return a.epromDate == b.epromDate && a.deviceNumber == b.deviceNumber &&
            a.protocol == b.protocol && a.outputs == b.outputs && a.inputs == b.inputs &&
            a.deadTimeOutputs == b.deadTimeOutputs && a.programs == b.programs &&
            a.minPosition == b.minPosition && a.maxPosition == b.maxPosition &&
            a.maxDeadTime == b.maxDeadTime && a.cpuClock == b.cpuClock &&
            a.temperature == b.temperature && a.freeCams == b.freeCams &&
-           a.programmedCams == b.programmedCams &&
-           a.programmedDeadTimes == b.programmedDeadTimes && a.ramSize == b.ramSize &&
-           a.ramFree == b.ramFree && a.serialEepromSize == b.serialEepromSize &&
-           a.parallelEepromSize == b.parallelEepromSize;
+           a.programmedCams == b.programmedCams && a.programmedDeadTimes == b.programmedDeadTimes &&
+           a.ramSize == b.ramSize && a.ramFree == b.ramFree &&
+           a.serialEepromSize == b.serialEepromSize && a.parallelEepromSize == b.parallelEepromSize;
 }
 
 }  // namespace cambench

@@ -55,22 +55,21 @@ const Bound<qint32> kInt32Fields[] = {
 
 template <class T>
 void readField(JsonReader& reader, const QJsonObject& object, const QString& path,
-               const Bound<T>& bound, DeviceInfo& info)
-{
+               const Bound<T>& bound, DeviceInfo& info) {
     const IntField& f = bound.field;
     const QString key = QLatin1String(f.key);
     const qint64 value = reader.integer(object, path, key, QLatin1String(f.what), f.min, f.max);
     if (f.multipleOf8 && value % 8 != 0) {
-        reader.fail(JsonReader::member(path, key),
-                    QStringLiteral("%1 %2 is not a multiple of 8").arg(QLatin1String(f.what)).arg(value));
+        reader.fail(
+            JsonReader::member(path, key),
+            QStringLiteral("%1 %2 is not a multiple of 8").arg(QLatin1String(f.what)).arg(value));
     }
     info.*bound.member = T(value);
 }
 
 }  // namespace
 
-QJsonObject deviceInfoToJson(const DeviceInfo& info)
-{
+QJsonObject deviceInfoToJson(const DeviceInfo& info) {
     QJsonObject object;
     object.insert(QStringLiteral("epromDate"), info.epromDate);
     for (const auto& bound : kIntFields)
@@ -80,15 +79,12 @@ QJsonObject deviceInfoToJson(const DeviceInfo& info)
     return object;
 }
 
-DeviceInfo readDeviceInfo(JsonReader& reader, const QJsonObject& object, const QString& path)
-{
+DeviceInfo readDeviceInfo(JsonReader& reader, const QJsonObject& object, const QString& path) {
     DeviceInfo info;
-    info.epromDate = reader.string(object, path, QStringLiteral("epromDate"),
-                                   QStringLiteral("EPROM date"));
-    for (const auto& bound : kIntFields)
-        readField(reader, object, path, bound, info);
-    for (const auto& bound : kInt32Fields)
-        readField(reader, object, path, bound, info);
+    info.epromDate =
+        reader.string(object, path, QStringLiteral("epromDate"), QStringLiteral("EPROM date"));
+    for (const auto& bound : kIntFields) readField(reader, object, path, bound, info);
+    for (const auto& bound : kInt32Fields) readField(reader, object, path, bound, info);
     if (!reader.failed() && info.minPosition >= info.maxPosition) {
         reader.fail(JsonReader::member(path, QStringLiteral("maxPosition")),
                     QStringLiteral("maximum position %1 is not above the minimum position %2")

@@ -2,11 +2,9 @@
 
 namespace cambench {
 
-int EepromImage::totalBytes() const
-{
+int EepromImage::totalBytes() const {
     int total = 0;
-    for (const EepromBlock& block : blocks)
-        total += block.data.size();
+    for (const EepromBlock& block : blocks) total += block.data.size();
     return total;
 }
 

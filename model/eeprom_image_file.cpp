@@ -17,49 +17,42 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kImageFile{"cambench-eeprom-image", kEepromImageFormatVersion,
-                              "EEPROM image"};
+const JsonFileType kImageFile{"cambench-eeprom-image", kEepromImageFormatVersion, "EEPROM image"};
 const QLatin1String kToolPrefix("CamBench ");
 constexpr int kEndBlockNumber = 0xFFFF;
 
-QString key(const char* text)
-{
+QString key(const char* text) {
     return QString::fromLatin1(text);
 }
 
-QByteArray hashOf(const QJsonObject& withoutHash)
-{
+QByteArray hashOf(const QJsonObject& withoutHash) {
     return QCryptographicHash::hash(QJsonDocument(withoutHash).toJson(QJsonDocument::Compact),
                                     QCryptographicHash::Sha256)
         .toHex();
 }
 
 // Block numbers as the protocol writes them: 4 upper-case hex digits.
-QString hex4(int number)
-{
+QString hex4(int number) {
     return QString::number(number, 16).toUpper().rightJustified(4, QLatin1Char('0'));
 }
 
-QString blockName(int index, int number)
-{
+QString blockName(int index, int number) {
     return QStringLiteral("Block %1 (entry %2 of the list)").arg(hex4(number)).arg(index);
 }
 
-QList<EepromBlock> readBlocks(JsonReader& reader, const QJsonArray& array)
-{
+QList<EepromBlock> readBlocks(JsonReader& reader, const QJsonArray& array) {
     QList<EepromBlock> blocks;
     for (int i = 0; i < array.size() && !reader.failed(); ++i) {
         const QString path = JsonReader::element(key("blocks"), i);
         const QJsonObject object = reader.objectValue(array.at(i), path);
         EepromBlock block;
-        block.number = quint16(reader.integer(object, path, key("number"),
-                                              QStringLiteral("block number"), 0,
-                                              kEndBlockNumber - 1));
+        block.number = quint16(reader.integer(
+            object, path, key("number"), QStringLiteral("block number"), 0, kEndBlockNumber - 1));
         const QString hex = reader.string(object, path, key("data"), QStringLiteral("block data"));
         const QByteArray latin = hex.toLatin1();
-        const bool isHex = hex.size() % 2 == 0 &&
-                           std::all_of(latin.cbegin(), latin.cend(),
-                                       [](char c) { return std::isxdigit(uchar(c)) != 0; });
+        const bool isHex =
+            hex.size() % 2 == 0 && std::all_of(latin.cbegin(), latin.cend(),
+                                               [](char c) { return std::isxdigit(uchar(c)) != 0; });
         if (!reader.failed() && !isHex) {
             reader.fail(JsonReader::member(path, key("data")),
                         QStringLiteral("block data is not an even number of hex digits"));
@@ -72,10 +65,8 @@ QList<EepromBlock> readBlocks(JsonReader& reader, const QJsonArray& array)
 
 }  // namespace
 
-Status checkImageBlocks(const QList<EepromBlock>& blocks)
-{
-    if (blocks.isEmpty())
-        return Error::invalidData(QStringLiteral("The image holds no blocks."));
+Status checkImageBlocks(const QList<EepromBlock>& blocks) {
+    if (blocks.isEmpty()) return Error::invalidData(QStringLiteral("The image holds no blocks."));
     const EepromBlock& first = blocks.first();
     if (first.number != 0) {
         return Error::invalidData(QStringLiteral("The image does not start with block 0000 (the "
@@ -122,8 +113,7 @@ Status checkImageBlocks(const QList<EepromBlock>& blocks)
     return success();
 }
 
-QStringList identityMismatch(const DeviceInfo& image, const DeviceInfo& device)
-{
+QStringList identityMismatch(const DeviceInfo& image, const DeviceInfo& device) {
     QStringList differences;
     if (image.epromDate != device.epromDate) {
         differences << QStringLiteral("EPROM date: image \"%1\", device \"%2\".")
@@ -144,8 +134,7 @@ QStringList identityMismatch(const DeviceInfo& image, const DeviceInfo& device)
     return differences;
 }
 
-QByteArray eepromImageToJson(const EepromImage& image)
-{
+QByteArray eepromImageToJson(const EepromImage& image) {
     QJsonObject root = jsonFileHeader(kImageFile);
     root.insert(key("device"), deviceInfoToJson(image.device));
     root.insert(key("taken"), image.taken.toUTC().toString(Qt::ISODateWithMs));
@@ -160,21 +149,19 @@ QByteArray eepromImageToJson(const EepromImage& image)
     return toIndentedJson(root);
 }
 
-Result<EepromImage> eepromImageFromJson(const QByteArray& bytes)
-{
+Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
     const Result<QJsonObject> parsed = parseJsonFile(bytes, kImageFile);
-    if (!parsed)
-        return parsed.error();
+    if (!parsed) return parsed.error();
     QJsonObject root = *parsed;
     JsonReader reader;
     const QString storedHash = reader.string(root, {}, key("sha256"), QStringLiteral("checksum"));
-    if (reader.failed())
-        return Error::invalidData(reader.problem() + QLatin1Char('.'));
+    if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     root.remove(key("sha256"));
     if (storedHash.toLatin1().toLower() != hashOf(root)) {
-        return Error::invalidData(QStringLiteral("The file was changed or damaged: its SHA-256 "
-                                                 "checksum does not match its content. Do not "
-                                                 "restore it; take a new backup."));
+        return Error::invalidData(
+            QStringLiteral("The file was changed or damaged: its SHA-256 "
+                           "checksum does not match its content. Do not "
+                           "restore it; take a new backup."));
     }
 
     EepromImage image;
@@ -188,16 +175,13 @@ Result<EepromImage> eepromImageFromJson(const QByteArray& bytes)
     const QString tool = reader.string(root, {}, key("tool"), QStringLiteral("tool"));
     image.toolVersion = tool.startsWith(kToolPrefix) ? tool.mid(kToolPrefix.size()) : tool;
     image.blocks = readBlocks(reader, reader.array(root, {}, key("blocks")));
-    if (reader.failed())
-        return Error::invalidData(reader.problem() + QLatin1Char('.'));
+    if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     const Status blocks = checkImageBlocks(image.blocks);
-    if (!blocks)
-        return blocks.error();
+    if (!blocks) return blocks.error();
     return image;
 }
 
-Status saveEepromImage(const QString& path, const EepromImage& image)
-{
+Status saveEepromImage(const QString& path, const EepromImage& image) {
     const Status blocks = checkImageBlocks(image.blocks);
     if (!blocks) {
         return Error::invalidData(
@@ -206,14 +190,11 @@ Status saveEepromImage(const QString& path, const EepromImage& image)
     return writeFileAtomically(path, eepromImageToJson(image));
 }
 
-Result<EepromImage> loadEepromImage(const QString& path)
-{
+Result<EepromImage> loadEepromImage(const QString& path) {
     const Result<QByteArray> bytes = readFileBytes(path);
-    if (!bytes)
-        return bytes.error();
+    if (!bytes) return bytes.error();
     Result<EepromImage> image = eepromImageFromJson(*bytes);
-    if (!image)
-        return inFile(path, image.error());
+    if (!image) return inFile(path, image.error());
     return image;
 }
 

@@ -5,13 +5,14 @@
 
 namespace cambench {
 
-Result<QByteArray> readFileBytes(const QString& path, qint64 maxBytes)
-{
+Result<QByteArray> readFileBytes(const QString& path, qint64 maxBytes) {
     const QFileInfo info(path);
     if (!info.exists())
-        return Error::usage(QStringLiteral("Could not read %1: the file does not exist.").arg(path));
+        return Error::usage(
+            QStringLiteral("Could not read %1: the file does not exist.").arg(path));
     if (!info.isFile())
-        return Error::usage(QStringLiteral("Could not read %1: it is not a regular file.").arg(path));
+        return Error::usage(
+            QStringLiteral("Could not read %1: it is not a regular file.").arg(path));
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return Error::usage(QStringLiteral("Could not read %1: %2.").arg(path, file.errorString()));
@@ -28,8 +29,7 @@ Result<QByteArray> readFileBytes(const QString& path, qint64 maxBytes)
     return bytes;
 }
 
-Error inFile(const QString& path, const Error& error)
-{
+Error inFile(const QString& path, const Error& error) {
     Error located = error;
     located.message = QStringLiteral("%1: %2").arg(path, error.message);
     return located;

@@ -9,15 +9,13 @@ namespace cambench {
 
 namespace {
 
-int lineAt(const QByteArray& bytes, int offset)
-{
+int lineAt(const QByteArray& bytes, int offset) {
     return int(bytes.left(offset).count('\n')) + 1;
 }
 
 }  // namespace
 
-Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& type)
-{
+Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& type) {
     const QString noun = QString::fromLatin1(type.noun);
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
@@ -45,11 +43,10 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
                      expected));
     }
     JsonReader reader;
-    const qint64 version = reader.integer(root, QString(), QStringLiteral("version"),
-                                          QStringLiteral("the format version"), 1,
-                                          std::numeric_limits<qint32>::max());
-    if (reader.failed())
-        return Error::invalidData(reader.problem() + QLatin1Char('.'));
+    const qint64 version =
+        reader.integer(root, QString(), QStringLiteral("version"),
+                       QStringLiteral("the format version"), 1, std::numeric_limits<qint32>::max());
+    if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     if (version > type.version) {
         return Error::invalidData(
             QStringLiteral("This %1 was written by a newer CamBench (format version %2); this "
@@ -61,16 +58,14 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
     return root;
 }
 
-QJsonObject jsonFileHeader(const JsonFileType& type)
-{
+QJsonObject jsonFileHeader(const JsonFileType& type) {
     QJsonObject header;
     header.insert(QStringLiteral("format"), QString::fromLatin1(type.format));
     header.insert(QStringLiteral("version"), type.version);
     return header;
 }
 
-QByteArray toIndentedJson(const QJsonObject& object)
-{
+QByteArray toIndentedJson(const QJsonObject& object) {
     return QJsonDocument(object).toJson(QJsonDocument::Indented);
 }
 

@@ -10,9 +10,9 @@ namespace cambench {
 
 // The envelope every CamBench JSON file shares: {"format": ..., "version": n, ...}.
 struct JsonFileType {
-    const char* format;   // "cambench-project"
-    int version;          // the version this build writes and reads
-    const char* noun;     // "project", for messages
+    const char* format;  // "cambench-project"
+    int version;         // the version this build writes and reads
+    const char* noun;    // "project", for messages
 };
 
 // The top-level object, once the bytes are JSON, the format matches and the

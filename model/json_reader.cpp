@@ -11,27 +11,21 @@ constexpr double kExactIntegerLimit = 9007199254740992.0;
 
 }  // namespace
 
-void JsonReader::fail(const QString& path, const QString& what)
-{
-    if (failed())
-        return;
+void JsonReader::fail(const QString& path, const QString& what) {
+    if (failed()) return;
     m_problem = path.isEmpty() ? what : path + QStringLiteral(": ") + what;
 }
 
-QString JsonReader::member(const QString& path, const QString& key)
-{
+QString JsonReader::member(const QString& path, const QString& key) {
     return path.isEmpty() ? key : path + QLatin1Char('.') + key;
 }
 
-QString JsonReader::element(const QString& path, int index)
-{
+QString JsonReader::element(const QString& path, int index) {
     return QStringLiteral("%1[%2]").arg(path).arg(index);
 }
 
-bool JsonReader::has(const QJsonObject& object, const QString& path, const QString& key)
-{
-    if (failed())
-        return false;
+bool JsonReader::has(const QJsonObject& object, const QString& path, const QString& key) {
+    if (failed()) return false;
     if (!object.contains(key)) {
         fail(path, QStringLiteral("\"%1\" is missing").arg(key));
         return false;
@@ -40,10 +34,8 @@ bool JsonReader::has(const QJsonObject& object, const QString& path, const QStri
 }
 
 qint64 JsonReader::integerValue(const QJsonValue& value, const QString& path, const QString& what,
-                                qint64 min, qint64 max)
-{
-    if (failed())
-        return 0;
+                                qint64 min, qint64 max) {
+    if (failed()) return 0;
     const double d = value.toDouble();
     if (!value.isDouble() || !std::isfinite(d) || d != std::trunc(d) ||
         std::abs(d) > kExactIntegerLimit) {
@@ -59,18 +51,14 @@ qint64 JsonReader::integerValue(const QJsonValue& value, const QString& path, co
 }
 
 qint64 JsonReader::integer(const QJsonObject& object, const QString& path, const QString& key,
-                           const QString& what, qint64 min, qint64 max)
-{
-    if (!has(object, path, key))
-        return 0;
+                           const QString& what, qint64 min, qint64 max) {
+    if (!has(object, path, key)) return 0;
     return integerValue(object.value(key), member(path, key), what, min, max);
 }
 
 QString JsonReader::string(const QJsonObject& object, const QString& path, const QString& key,
-                           const QString& what)
-{
-    if (!has(object, path, key))
-        return {};
+                           const QString& what) {
+    if (!has(object, path, key)) return {};
     const QJsonValue value = object.value(key);
     if (!value.isString()) {
         fail(member(path, key), QStringLiteral("%1 is not a string").arg(what));
@@ -80,10 +68,8 @@ QString JsonReader::string(const QJsonObject& object, const QString& path, const
 }
 
 bool JsonReader::boolean(const QJsonObject& object, const QString& path, const QString& key,
-                         const QString& what)
-{
-    if (!has(object, path, key))
-        return false;
+                         const QString& what) {
+    if (!has(object, path, key)) return false;
     const QJsonValue value = object.value(key);
     if (!value.isBool()) {
         fail(member(path, key), QStringLiteral("%1 is not true or false").arg(what));
@@ -92,25 +78,18 @@ bool JsonReader::boolean(const QJsonObject& object, const QString& path, const Q
     return value.toBool();
 }
 
-QJsonArray JsonReader::array(const QJsonObject& object, const QString& path, const QString& key)
-{
-    if (!has(object, path, key))
-        return {};
+QJsonArray JsonReader::array(const QJsonObject& object, const QString& path, const QString& key) {
+    if (!has(object, path, key)) return {};
     return arrayValue(object.value(key), member(path, key));
 }
 
-QJsonObject JsonReader::object(const QJsonObject& object, const QString& path,
-                               const QString& key)
-{
-    if (!has(object, path, key))
-        return {};
+QJsonObject JsonReader::object(const QJsonObject& object, const QString& path, const QString& key) {
+    if (!has(object, path, key)) return {};
     return objectValue(object.value(key), member(path, key));
 }
 
-QJsonObject JsonReader::objectValue(const QJsonValue& value, const QString& path)
-{
-    if (failed())
-        return {};
+QJsonObject JsonReader::objectValue(const QJsonValue& value, const QString& path) {
+    if (failed()) return {};
     if (!value.isObject()) {
         fail(path, QStringLiteral("a JSON object is expected"));
         return {};
@@ -118,10 +97,8 @@ QJsonObject JsonReader::objectValue(const QJsonValue& value, const QString& path
     return value.toObject();
 }
 
-QJsonArray JsonReader::arrayValue(const QJsonValue& value, const QString& path)
-{
-    if (failed())
-        return {};
+QJsonArray JsonReader::arrayValue(const QJsonValue& value, const QString& path) {
+    if (failed()) return {};
     if (!value.isArray()) {
         fail(path, QStringLiteral("a JSON array is expected"));
         return {};

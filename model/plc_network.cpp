@@ -4,8 +4,7 @@
 
 namespace cambench {
 
-bool PlcNetwork::isEmpty() const
-{
+bool PlcNetwork::isEmpty() const {
     return value == 0 && reset == 0 &&
            std::all_of(symbols.begin(), symbols.end(), [](quint16 s) { return s == 0; });
 }

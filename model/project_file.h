@@ -19,17 +19,16 @@ namespace cambench {
 // JSON file ({"format":"cambench-project","version":1,...}).
 struct Project {
     DeviceInfo device;
-    QList<CamProgram> programs;   // each with its number and name
+    QList<CamProgram> programs;  // each with its number and name
     DeadTimes deadTimes;
     // Output names, and names of programs that need not be in `programs`.
     // A program in both places must carry the same name (validateProject).
     Names names;
     SystemSettings settings;
-    QList<User> users;            // user numbers are access codes: keep the file private
+    QList<User> users;  // user numbers are access codes: keep the file private
     QList<PlcNetwork> plcNetworks;
 
-    friend bool operator==(const Project& a, const Project& b)
-    {
+    friend bool operator==(const Project& a, const Project& b) {
         return a.device == b.device && a.programs == b.programs && a.deadTimes == b.deadTimes &&
                a.names == b.names && a.settings == b.settings && a.users == b.users &&
                a.plcNetworks == b.plcNetworks;

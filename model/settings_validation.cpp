@@ -8,29 +8,27 @@ namespace cambench {
 
 namespace {
 
-bool isIntegerType(const QVariant& value)
-{
+bool isIntegerType(const QVariant& value) {
     switch (value.typeId()) {
-    case QMetaType::Int:
-    case QMetaType::UInt:
-    case QMetaType::LongLong:
-    case QMetaType::ULongLong:
-    case QMetaType::Long:
-    case QMetaType::ULong:
-    case QMetaType::Short:
-    case QMetaType::UShort:
-    case QMetaType::Char:
-    case QMetaType::SChar:
-    case QMetaType::UChar:
-        return true;
-    default:
-        return false;
+        case QMetaType::Int:
+        case QMetaType::UInt:
+        case QMetaType::LongLong:
+        case QMetaType::ULongLong:
+        case QMetaType::Long:
+        case QMetaType::ULong:
+        case QMetaType::Short:
+        case QMetaType::UShort:
+        case QMetaType::Char:
+        case QMetaType::SChar:
+        case QMetaType::UChar:
+            return true;
+        default:
+            return false;
     }
 }
 
 // Integers, and doubles without a fraction (JSON numbers arrive as doubles).
-std::optional<qint64> integerValue(const QVariant& value)
-{
+std::optional<qint64> integerValue(const QVariant& value) {
     if (isIntegerType(value)) {
         if (value.typeId() == QMetaType::ULongLong &&
             value.toULongLong() > quint64(std::numeric_limits<qint64>::max()))
@@ -39,38 +37,33 @@ std::optional<qint64> integerValue(const QVariant& value)
     }
     if (value.typeId() == QMetaType::Double) {
         const double d = value.toDouble();
-        if (std::isfinite(d) && d == std::trunc(d) && std::abs(d) < 9.0e15)
-            return qint64(d);
+        if (std::isfinite(d) && d == std::trunc(d) && std::abs(d) < 9.0e15) return qint64(d);
     }
     return std::nullopt;
 }
 
 // "0..20, 255" for the values of an Enum.
-QString choiceRanges(const SettingSpec& spec)
-{
+QString choiceRanges(const SettingSpec& spec) {
     QStringList parts;
     const auto& choices = spec.choices;
     for (int i = 0; i < choices.size();) {
         int j = i;
-        while (j + 1 < choices.size() && choices.at(j + 1).value == choices.at(j).value + 1)
-            ++j;
-        parts << (j == i ? QString::number(choices.at(i).value)
-                         : QStringLiteral("%1..%2").arg(choices.at(i).value).arg(choices.at(j).value));
+        while (j + 1 < choices.size() && choices.at(j + 1).value == choices.at(j).value + 1) ++j;
+        parts << (j == i
+                      ? QString::number(choices.at(i).value)
+                      : QStringLiteral("%1..%2").arg(choices.at(i).value).arg(choices.at(j).value));
         i = j + 1;
     }
     return parts.join(QStringLiteral(", "));
 }
 
-QString rangeText(const SettingSpec& spec)
-{
+QString rangeText(const SettingSpec& spec) {
     return QStringLiteral("%1..%2").arg(formatSettingValue(spec, spec.min),
                                         formatSettingValue(spec, spec.max));
 }
 
-QString textProblem(const SettingSpec& spec, const QVariant& value)
-{
-    if (value.typeId() != QMetaType::QString)
-        return QStringLiteral("a text is expected");
+QString textProblem(const SettingSpec& spec, const QVariant& value) {
+    if (value.typeId() != QMetaType::QString) return QStringLiteral("a text is expected");
     const QString text = value.toString();
     if (text.size() > spec.maxLength) {
         return QStringLiteral("\"%1\" has %2 characters; at most %3 are allowed")
@@ -79,22 +72,22 @@ QString textProblem(const SettingSpec& spec, const QVariant& value)
             .arg(spec.maxLength);
     }
     for (const QChar c : text) {
-        if (c.unicode() < 0x20 || c.unicode() > 0xFF || (c.unicode() >= 0x7F && c.unicode() < 0xA0)) {
-            return QStringLiteral("\"%1\" contains a character the device cannot store (only "
-                                  "printable Latin-1 characters are allowed)")
+        if (c.unicode() < 0x20 || c.unicode() > 0xFF ||
+            (c.unicode() >= 0x7F && c.unicode() < 0xA0)) {
+            return QStringLiteral(
+                       "\"%1\" contains a character the device cannot store (only "
+                       "printable Latin-1 characters are allowed)")
                 .arg(text);
         }
     }
     return {};
 }
 
-QString numberProblem(const SettingSpec& spec, qint64 v)
-{
+QString numberProblem(const SettingSpec& spec, qint64 v) {
     const QString shown = formatSettingValue(spec, v);
     if (spec.kind == SettingKind::Enum) {
         for (const SettingChoice& c : spec.choices) {
-            if (c.value == v)
-                return {};
+            if (c.value == v) return {};
         }
         return QStringLiteral("%1 is not one of the allowed values %2")
             .arg(shown, choiceRanges(spec));
@@ -107,8 +100,7 @@ QString numberProblem(const SettingSpec& spec, qint64 v)
     const bool isRef = spec.kind == SettingKind::InputRef || spec.kind == SettingKind::OutputRef;
     if (v < spec.min || v > spec.max) {
         return QStringLiteral("%1 is outside the allowed range %2%3")
-            .arg(shown, rangeText(spec),
-                 isRef ? QStringLiteral(" (0 = none)") : QString());
+            .arg(shown, rangeText(spec), isRef ? QStringLiteral(" (0 = none)") : QString());
     }
     if (spec.step > 1 && v % spec.step != 0) {
         return QStringLiteral("%1 is not a multiple of %2 (allowed are %3 in steps of %2)")
@@ -121,22 +113,17 @@ QString numberProblem(const SettingSpec& spec, qint64 v)
 
 }  // namespace
 
-const SettingSpec* findSetting(const QString& key)
-{
+const SettingSpec* findSetting(const QString& key) {
     for (const SettingSpec& spec : settingSpecs()) {
-        if (key == QLatin1String(spec.key))
-            return &spec;
+        if (key == QLatin1String(spec.key)) return &spec;
     }
     return nullptr;
 }
 
-QString formatSettingValue(const SettingSpec& spec, qint64 value)
-{
-    if (spec.kind != SettingKind::Fixed || spec.decimals <= 0)
-        return QString::number(value);
+QString formatSettingValue(const SettingSpec& spec, qint64 value) {
+    if (spec.kind != SettingKind::Fixed || spec.decimals <= 0) return QString::number(value);
     qint64 scale = 1;
-    for (int i = 0; i < spec.decimals; ++i)
-        scale *= 10;
+    for (int i = 0; i < spec.decimals; ++i) scale *= 10;
     const quint64 magnitude = value < 0 ? 0 - quint64(value) : quint64(value);
     return QStringLiteral("%1%2.%3")
         .arg(value < 0 ? QStringLiteral("-") : QString())
@@ -144,18 +131,14 @@ QString formatSettingValue(const SettingSpec& spec, qint64 value)
         .arg(magnitude % quint64(scale), spec.decimals, 10, QLatin1Char('0'));
 }
 
-QString settingValueProblem(const SettingSpec& spec, const QVariant& value)
-{
-    if (spec.kind == SettingKind::Text)
-        return textProblem(spec, value);
+QString settingValueProblem(const SettingSpec& spec, const QVariant& value) {
+    if (spec.kind == SettingKind::Text) return textProblem(spec, value);
     const std::optional<qint64> number = integerValue(value);
-    if (!number)
-        return QStringLiteral("\"%1\" is not a whole number").arg(value.toString());
+    if (!number) return QStringLiteral("\"%1\" is not a whole number").arg(value.toString());
     return numberProblem(spec, *number);
 }
 
-QStringList validateSettings(const SystemSettings& settings)
-{
+QStringList validateSettings(const SystemSettings& settings) {
     QStringList problems;
     for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
         const SettingSpec* spec = findSetting(it.key());
@@ -164,14 +147,12 @@ QStringList validateSettings(const SystemSettings& settings)
             continue;
         }
         const QString problem = settingValueProblem(*spec, *it);
-        if (!problem.isEmpty())
-            problems << QStringLiteral("%1: %2.").arg(it.key(), problem);
+        if (!problem.isEmpty()) problems << QStringLiteral("%1: %2.").arg(it.key(), problem);
     }
     return problems;
 }
 
-bool isRotaryAxis(const SystemSettings& settings)
-{
+bool isRotaryAxis(const SystemSettings& settings) {
     return settings.value(QStringLiteral("axisType"), 0).toLongLong() == 0;
 }
 

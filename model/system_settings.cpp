@@ -18,10 +18,8 @@ constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
 // Outputs and inputs are addressed by 2 hex digits, 1..200 (0 = none).
 constexpr qint64 kMaxIoNumber = 200;
 
-SettingSpec integer(const char* key, const char* group, qint64 min, qint64 max,
-                    const char* unit, const char* label, const char* tooltip,
-                    const char* section)
-{
+SettingSpec integer(const char* key, const char* group, qint64 min, qint64 max, const char* unit,
+                    const char* label, const char* tooltip, const char* section) {
     SettingSpec spec{};
     spec.key = key;
     spec.group = group;
@@ -36,8 +34,7 @@ SettingSpec integer(const char* key, const char* group, qint64 min, qint64 max,
 }
 
 SettingSpec choice(const char* key, const char* group, QList<SettingChoice> choices,
-                   const char* label, const char* tooltip, const char* section)
-{
+                   const char* label, const char* tooltip, const char* section) {
     SettingSpec spec = integer(key, group, 0, 0, "", label, tooltip, section);
     spec.kind = SettingKind::Enum;
     for (const SettingChoice& c : choices) {
@@ -49,28 +46,24 @@ SettingSpec choice(const char* key, const char* group, QList<SettingChoice> choi
 }
 
 SettingSpec ioRef(SettingKind kind, const char* key, const char* group, const char* label,
-                  const char* tooltip, const char* section)
-{
+                  const char* tooltip, const char* section) {
     SettingSpec spec = integer(key, group, 0, kMaxIoNumber, "", label, tooltip, section);
     spec.kind = kind;
     return spec;
 }
 
-SettingSpec inputRef(const char* key, const char* group, const char* label,
-                     const char* tooltip, const char* section)
-{
+SettingSpec inputRef(const char* key, const char* group, const char* label, const char* tooltip,
+                     const char* section) {
     return ioRef(SettingKind::InputRef, key, group, label, tooltip, section);
 }
 
-SettingSpec outputRef(const char* key, const char* group, const char* label,
-                      const char* tooltip, const char* section)
-{
+SettingSpec outputRef(const char* key, const char* group, const char* label, const char* tooltip,
+                      const char* section) {
     return ioRef(SettingKind::OutputRef, key, group, label, tooltip, section);
 }
 
 SettingSpec text(const char* key, const char* group, int maxLength, const char* label,
-                 const char* tooltip, const char* section)
-{
+                 const char* tooltip, const char* section) {
     SettingSpec spec = integer(key, group, 0, 0, "", label, tooltip, section);
     spec.kind = SettingKind::Text;
     spec.maxLength = maxLength;
@@ -78,8 +71,7 @@ SettingSpec text(const char* key, const char* group, int maxLength, const char* 
 }
 
 SettingSpec fixed(const char* key, const char* group, qint64 min, qint64 max, int decimals,
-                  const char* label, const char* tooltip, const char* section)
-{
+                  const char* label, const char* tooltip, const char* section) {
     SettingSpec spec = integer(key, group, min, max, "", label, tooltip, section);
     spec.kind = SettingKind::Fixed;
     spec.decimals = decimals;
@@ -87,24 +79,21 @@ SettingSpec fixed(const char* key, const char* group, qint64 min, qint64 max, in
 }
 
 // A count that must be a multiple of 8 (manual 5.3.6, 5.4.6).
-SettingSpec count8(const char* key, const char* group, qint64 min, qint64 max,
-                   const char* label, const char* tooltip, const char* section)
-{
+SettingSpec count8(const char* key, const char* group, qint64 min, qint64 max, const char* label,
+                   const char* tooltip, const char* section) {
     SettingSpec spec = integer(key, group, min, max, "", label, tooltip, section);
     spec.step = 8;
     return spec;
 }
 
-SettingSpec readOnly(SettingSpec spec)
-{
+SettingSpec readOnly(SettingSpec spec) {
     spec.readOnly = true;
     return spec;
 }
 
 const QList<SettingChoice> kOffOn = {{0, "Off"}, {1, "On"}};
 
-QList<SettingSpec> buildSpecs()
-{
+QList<SettingSpec> buildSpecs() {
     QList<SettingSpec> specs;
 
     // 5.3.1 Encoder
@@ -154,12 +143,12 @@ QList<SettingSpec> buildSpecs()
                      "Largest plausible change of the encoder value within one cycle; a "
                      "bigger jump is reported as an encoder error. 0 switches the check off.",
                      "5.3.1.7");
-    SettingSpec multiplier = integer("gearMultiplier", "encoder", -99999, 99999, "",
-                                     "Gear multiplier",
-                                     "The encoder value is multiplied by this factor and divided "
-                                     "by the gear divisor. A negative factor reverses the "
-                                     "direction; 0 is not allowed.",
-                                     "5.3.1.9");
+    SettingSpec multiplier =
+        integer("gearMultiplier", "encoder", -99999, 99999, "", "Gear multiplier",
+                "The encoder value is multiplied by this factor and divided "
+                "by the gear divisor. A negative factor reverses the "
+                "direction; 0 is not allowed.",
+                "5.3.1.9");
     multiplier.excludeZero = true;
     specs << multiplier;
     specs << integer("gearDivisor", "encoder", 1, 99999, "", "Gear divisor",
@@ -184,13 +173,11 @@ QList<SettingSpec> buildSpecs()
     specs << integer("specialEncoder.ssi.resolutionBits", "specialEncoder", 1, 32, "bits",
                      "SSI resolution", "Number of data bits the SSI encoder sends per value.",
                      "5.3.1.15");
-    specs << integer("specialEncoder.ssi.firstBit", "specialEncoder", 0, 31, "",
-                     "SSI first bit", "Position of the first valid bit in the SSI telegram.",
-                     "5.3.1.15");
-    specs << integer("specialEncoder.ssi.capping", "specialEncoder", 0, 31, "bits",
-                     "SSI capping", "Number of low bits cut off the SSI value.", "5.3.1.15");
-    specs << integer("specialEncoder.ssi.errorBit", "specialEncoder", 0, 32, "",
-                     "SSI error bit",
+    specs << integer("specialEncoder.ssi.firstBit", "specialEncoder", 0, 31, "", "SSI first bit",
+                     "Position of the first valid bit in the SSI telegram.", "5.3.1.15");
+    specs << integer("specialEncoder.ssi.capping", "specialEncoder", 0, 31, "bits", "SSI capping",
+                     "Number of low bits cut off the SSI value.", "5.3.1.15");
+    specs << integer("specialEncoder.ssi.errorBit", "specialEncoder", 0, 32, "", "SSI error bit",
                      "Bit of the SSI telegram that signals an encoder error (0 = none).",
                      "5.3.1.15");
     specs << integer("specialEncoder.parallel.resolution", "specialEncoder", 1, kInt32Max,
@@ -210,8 +197,7 @@ QList<SettingSpec> buildSpecs()
                      "The incremental pulses are divided by this number.", "5.3.1.15");
     specs << integer("specialEncoder.incremental.clearMode", "specialEncoder", 0, 255, "",
                      "Incremental encoder clear mode",
-                     "When the incremental counter is cleared (device-specific code).",
-                     "5.3.1.15");
+                     "When the incremental counter is cleared (device-specific code).", "5.3.1.15");
     specs << integer("specialEncoder.multiturn.resolution", "specialEncoder", 1, kInt32Max,
                      "increments", "Multiturn resolution",
                      "Increments per turn of the multiturn encoder.", "5.3.1.15");
@@ -221,35 +207,30 @@ QList<SettingSpec> buildSpecs()
     specs << integer("specialEncoder.multiturn.divider", "specialEncoder", 1, kInt32Max, "",
                      "Multiturn divider", "The multiturn value is divided by this number.",
                      "5.3.1.15");
-    specs << integer("specialEncoder.pll.pulsesPerInputPulse", "specialEncoder", 1, kInt32Max,
-                     "", "PLL pulses per input pulse",
+    specs << integer("specialEncoder.pll.pulsesPerInputPulse", "specialEncoder", 1, kInt32Max, "",
+                     "PLL pulses per input pulse",
                      "Increments the PLL generates for each input pulse.", "5.3.1.15");
     specs << integer("specialEncoder.pll.pulsesPerTurn", "specialEncoder", 1, kInt32Max, "",
-                     "PLL pulses per turn", "Input pulses per turn of the machine.",
-                     "5.3.1.15");
-    specs << integer("specialEncoder.pll.errorWindow", "specialEncoder", 0, kInt32Max,
-                     "increments", "PLL error window",
-                     "Deviation from the expected pulse count that is still accepted.",
-                     "5.3.1.15");
+                     "PLL pulses per turn", "Input pulses per turn of the machine.", "5.3.1.15");
+    specs << integer("specialEncoder.pll.errorWindow", "specialEncoder", 0, kInt32Max, "increments",
+                     "PLL error window",
+                     "Deviation from the expected pulse count that is still accepted.", "5.3.1.15");
     specs << inputRef("specialEncoder.pll.pulseInput", "specialEncoder", "PLL pulse input",
                       "Input that receives the PLL's pulses.", "5.3.1.15");
     specs << inputRef("specialEncoder.pll.clearInput", "specialEncoder", "PLL clear input",
                       "Input that clears the PLL's position (0 = none).", "5.3.1.15");
     specs << outputRef("specialEncoder.pll.syncOutput", "specialEncoder", "PLL sync output",
-                       "Output that signals that the PLL is synchronised (0 = none).",
-                       "5.3.1.15");
+                       "Output that signals that the PLL is synchronised (0 = none).", "5.3.1.15");
     specs << integer("specialEncoder.timer.stepMs", "specialEncoder", 0, kInt32Max, "ms",
                      "Timer step time", "Time after which the timer encoder counts one step.",
                      "5.3.1.15.12");
-    specs << integer("specialEncoder.timer.resolution", "specialEncoder", 1, kInt32Max,
-                     "steps", "Timer resolution",
-                     "Steps of the timer encoder before it starts again at zero.",
-                     "5.3.1.15.12");
+    specs << integer("specialEncoder.timer.resolution", "specialEncoder", 1, kInt32Max, "steps",
+                     "Timer resolution",
+                     "Steps of the timer encoder before it starts again at zero.", "5.3.1.15.12");
     specs << inputRef("specialEncoder.timer.holdInput", "specialEncoder", "Timer hold input",
                       "Input that holds the timer encoder (0 = none).", "5.3.1.15.12");
     specs << inputRef("specialEncoder.timer.clearInput", "specialEncoder", "Timer clear input",
-                      "Input that sets the timer encoder back to zero (0 = none).",
-                      "5.3.1.15.12");
+                      "Input that sets the timer encoder back to zero (0 = none).", "5.3.1.15.12");
 
     // 5.3.2 Adaptation
     specs << choice("axisType", "adaptation", {{0, "Rotary"}, {1, "Linear"}}, "Axis type",
@@ -262,8 +243,7 @@ QList<SettingSpec> buildSpecs()
     specs << integer("offset", "adaptation", kInt32Min, kInt32Max, "", "Offset",
                      "Zero-point shift added to the encoder value.", "5.3.2.5");
     specs << integer("presetValue", "adaptation", kInt32Min, kInt32Max, "", "Preset value",
-                     "Actual value the device takes when the preset input switches on.",
-                     "5.3.2.7");
+                     "Actual value the device takes when the preset input switches on.", "5.3.2.7");
     specs << inputRef("presetInput", "adaptation", "Preset input",
                       "Input that sets the actual value to the preset value (0 = none).",
                       "5.3.2.9");
@@ -284,8 +264,8 @@ QList<SettingSpec> buildSpecs()
                      "5.3.3.5");
     specs << fixed("speedAccuracy", "speed", 1, 999, 2, "Speed accuracy",
                    "Resolution of the speed measurement (0.01 to 9.99).", "5.3.3.7");
-    specs << choice("displaySwitchMode", "speed",
-                    {{0, "Automatic"}, {1, "Speed"}, {2, "Position"}}, "Display mode",
+    specs << choice("displaySwitchMode", "speed", {{0, "Automatic"}, {1, "Speed"}, {2, "Position"}},
+                    "Display mode",
                     "What the display shows: automatic change, speed or position. With speed "
                     "or position an input can switch the display.",
                     "5.3.3.9");
@@ -330,9 +310,8 @@ QList<SettingSpec> buildSpecs()
                      "Speed below which the axis counts as standing still.", "5.3.5.9");
     specs << choice("analogueSpeedOutput", "specialOutputs", kOffOn, "Analogue speed output",
                     "Whether the device puts out the speed as an analogue value.", "5.3.5.11");
-    specs << integer("analogueCamOutputs", "specialOutputs", 0, 14, "",
-                     "Analogue cam outputs", "Number of analogue cam outputs in use.",
-                     "5.3.5.13");
+    specs << integer("analogueCamOutputs", "specialOutputs", 0, 14, "", "Analogue cam outputs",
+                     "Number of analogue cam outputs in use.", "5.3.5.13");
 
     // 5.3.6 System expansion
     specs << count8("inputCount", "expansion", 0, 200, "Inputs",
@@ -350,8 +329,7 @@ QList<SettingSpec> buildSpecs()
                      "Number of inputs that select the program in binary (0 = no external "
                      "program selection).",
                      "5.3.6.9");
-    specs << inputRef("externalProgramFirstInput", "expansion",
-                      "First program selection input",
+    specs << inputRef("externalProgramFirstInput", "expansion", "First program selection input",
                       "First of the inputs that select the program (0 = none).", "5.3.6.11");
     specs << choice("programSelection.mode", "expansion",
                     {{0, "Slow"}, {1, "Within one cycle"}, {2, "At actual value"}},
@@ -367,8 +345,7 @@ QList<SettingSpec> buildSpecs()
 
     // 5.4.3 Device configuration
     specs << choice("protocol", "configuration",
-                    {{0, "Cam-BUS"}, {1, "Standard"}, {2, "Multiuser"}, {3, "S5-L1"},
-                     {4, "3964R"}},
+                    {{0, "Cam-BUS"}, {1, "Standard"}, {2, "Multiuser"}, {3, "S5-L1"}, {4, "3964R"}},
                     "Communication protocol",
                     "Protocol of the serial interface. Changing it ends the connection with "
                     "the current protocol.",
@@ -400,9 +377,9 @@ QList<SettingSpec> buildSpecs()
                      "5.4.4.1");
 
     // 5.4.6 PLC configuration
-    specs << readOnly(choice("plcBooster", "configurationPlc",
-                             {{0, "Not fitted"}, {1, "Fitted"}}, "PLC accelerator",
-                             "Whether the PLC accelerator hardware is fitted.", "5.4.6.1"));
+    specs << readOnly(choice("plcBooster", "configurationPlc", {{0, "Not fitted"}, {1, "Fitted"}},
+                             "PLC accelerator", "Whether the PLC accelerator hardware is fitted.",
+                             "5.4.6.1"));
     specs << choice("plcMode", "configurationPlc",
                     {{0, "Off"}, {1, "On"}, {2, "On, flags retained"}}, "PLC module",
                     "Switches the PLC module off or on; \"flags retained\" keeps the flags "
@@ -427,8 +404,7 @@ QList<SettingSpec> buildSpecs()
 
 }  // namespace
 
-const QList<SettingSpec>& settingSpecs()
-{
+const QList<SettingSpec>& settingSpecs() {
     static const QList<SettingSpec> specs = buildSpecs();
     return specs;
 }

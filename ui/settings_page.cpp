@@ -4,6 +4,7 @@
 #include "setting_field.h"
 #include "workspace.h"
 
+#include <QCoreApplication>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>

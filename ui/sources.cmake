@@ -19,4 +19,12 @@ target_sources(cambench_ui PRIVATE
   setting_field.cpp
   settings_page.h
   settings_page.cpp
+  led_strip.h
+  led_strip.cpp
+  trend_chart.h
+  trend_chart.cpp
+  monitor_page.h
+  monitor_page.cpp
+  terminal_page.h
+  terminal_page.cpp
 )

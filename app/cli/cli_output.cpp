@@ -3,8 +3,8 @@
 #include "cli_options.h"
 #include "exit_codes.h"
 
-#include <QFile>
-#include <QSaveFile>
+#include "model/atomic_file.h"
+#include "model/file_read.h"
 
 #include <cstdio>
 
@@ -36,22 +36,22 @@ Status writeOutput(const QString& path, const QByteArray& data) {
         std::fflush(stdout);
         return success();
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
-        return Error::invalidData(QStringLiteral("cannot write %1 (%2); check the folder exists "
-                                                 "and is writable")
-                                      .arg(path, file.errorString()));
+    return writeFileAtomically(path, data);
+}
+
+Error invalidFileError(const QString& path, const QStringList& problems) {
+    constexpr int kShown = 5;  // enough to see the pattern, short enough to read
+    QStringList shown = problems.mid(0, kShown);
+    if (problems.size() > kShown) {
+        shown.append(QStringLiteral("and %1 more").arg(problems.size() - kShown));
     }
-    return success();
+    return Error::invalidData(QStringLiteral("%1 does not fit the device: %2; fix the file and "
+                                             "run the command again (the device was not changed)")
+                                  .arg(path, shown.join(QLatin1String("; "))));
 }
 
 Result<QByteArray> readInputFile(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        return Error::invalidData(
-            QStringLiteral("cannot read %1 (%2); check the path").arg(path, file.errorString()));
-    }
-    return file.readAll();
+    return readFileBytes(path);
 }
 
 }  // namespace cambench::cli

@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QString>
+#include <QStringList>
 
 namespace cambench::cli {
 
@@ -16,6 +17,10 @@ void printOut(const QString& text);  // stdout, as UTF-8
 
 // Writes `data` to `path` atomically, or to stdout when `path` is empty or "-".
 Status writeOutput(const QString& path, const QByteArray& data);
+// "FILE does not fit the device: <first problems>; ..." as InvalidData,
+// saying that the device was left unchanged.
+Error invalidFileError(const QString& path, const QStringList& problems);
+
 // Reads a whole input file; a missing or unreadable file is InvalidData.
 Result<QByteArray> readInputFile(const QString& path);
 

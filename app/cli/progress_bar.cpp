@@ -22,7 +22,7 @@ ProgressBar::~ProgressBar() {
 
 void ProgressBar::update(qint64 done, qint64 total, const QString& text) {
     if (!m_enabled || total <= 0) return;
-    const int percent = int(qBound<qint64>(0, done * 100 / total, 100));
+    const int percent = int(qBound(qint64(0), done * 100 / total, qint64(100)));
     if (percent == m_lastPercent) return;
     m_lastPercent = percent;
     constexpr int kWidth = 30;

@@ -53,6 +53,8 @@ public:
     // Writes the keys of `settings` whose values differ from the device's
     // (read first); read-only keys are ignored. Keys absent stay as they are.
     Status writeSettings(const SystemSettings& settings);
+    // One setting by its model key (reads the command that holds it).
+    Result<QVariant> readSetting(const QString& key);
 
     Result<QList<User>> readUsers();
     // `oldNumber` empty for a new user.

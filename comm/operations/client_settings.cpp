@@ -75,6 +75,23 @@ Result<SystemSettings> CamConClient::readSettings(QStringList* skipped) {
     return settings;
 }
 
+Result<QVariant> CamConClient::readSetting(const QString& key) {
+    for (const SettingPage& page : settingPages()) {
+        for (const SettingField& field : page.fields) {
+            if (key != QLatin1String(field.key)) continue;
+            const Result<Fields> reply = m_link.call('?', page.command);
+            if (!reply) {
+                return inContext(QStringLiteral("reading %1 (?%2)")
+                                     .arg(key, QLatin1String(page.command)),
+                                 reply.error());
+            }
+            return isTextKey(key) ? QVariant(text(*reply, field.field))
+                                  : QVariant(reply->num(field.field));
+        }
+    }
+    return Error::usage(QStringLiteral("\"%1\" is no device setting").arg(key));
+}
+
 Status CamConClient::writeSettings(const SystemSettings& settings) {
     const Result<SystemSettings> current = readSettings();
     if (!current) return current.error();

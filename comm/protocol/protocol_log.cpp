@@ -2,6 +2,8 @@
 
 namespace cambench::comm {
 
-Q_LOGGING_CATEGORY(commProtocolLog, "cambench.comm.protocol")
+// Debug messages (every skipped byte, every bad checksum) only when asked for
+// with QT_LOGGING_RULES="cambench.comm.protocol.debug=true".
+Q_LOGGING_CATEGORY(commProtocolLog, "cambench.comm.protocol", QtInfoMsg)
 
 }  // namespace cambench::comm

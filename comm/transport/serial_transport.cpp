@@ -128,8 +128,14 @@ bool SerialTransport::isOpen() const {
 }
 
 Error SerialTransport::lose(const QString& action) {
+    // A pulled USB adapter fails with EIO or ENODEV; a tty whose other end
+    // hung up (a pty's master closed) reads as end of file, which
+    // QSerialPort reports as ReadError.
     const auto error = m_port->error();
-    if (error == QSerialPort::ResourceError || error == QSerialPort::DeviceNotFoundError)
+    const bool vanished = error == QSerialPort::ResourceError ||
+                          error == QSerialPort::DeviceNotFoundError ||
+                          error == QSerialPort::ReadError || error == QSerialPort::WriteError;
+    if (vanished)
         m_lostMessage = QStringLiteral("the port %1 disappeared (cable pulled or adapter "
                                        "removed); reconnect and retry")
                             .arg(m_portName);

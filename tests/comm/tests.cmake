@@ -12,3 +12,5 @@ cambench_add_test(tst_sim_line SOURCES comm/sim/tst_sim_line.cpp comm/sim/sim_te
 cambench_add_test(tst_sim_executable SOURCES comm/sim/tst_sim_executable.cpp LIBS cambench_comm Qt6::SerialPort Qt6::Network)
 target_compile_definitions(tst_sim_executable PRIVATE CAMBENCH_SIM_EXECUTABLE="$<TARGET_FILE:cambench-sim>")
 add_dependencies(tst_sim_executable cambench-sim)
+cambench_add_test(tst_worker_job_queue SOURCES comm/worker/tst_job_queue.cpp LIBS cambench_comm)
+cambench_add_test(tst_worker_comm_worker SOURCES comm/worker/tst_comm_worker.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_comm)

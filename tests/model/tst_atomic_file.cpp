@@ -10,8 +10,7 @@ class TestAtomicFile : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    void writesAndReplacesContent()
-    {
+    void writesAndReplacesContent() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("a.txt"));
         QVERIFY(writeFileAtomically(path, "first").ok());
@@ -19,8 +18,7 @@ private Q_SLOTS:
         QCOMPARE(*readFileBytes(path), QByteArray("second"));
     }
 
-    void failureNamesFileAndSaysNothingChanged()
-    {
+    void failureNamesFileAndSaysNothingChanged() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("no/such/dir/a.txt"));
         const Status status = writeFileAtomically(path, "x");
@@ -29,8 +27,7 @@ private Q_SLOTS:
         QVERIFY(status.error().message.contains(QStringLiteral("not changed")));
     }
 
-    void readRefusesDirectoriesMissingAndOversizedFiles()
-    {
+    void readRefusesDirectoriesMissingAndOversizedFiles() {
         QTemporaryDir dir;
         QVERIFY(!readFileBytes(dir.path()).ok());
         QVERIFY(!readFileBytes(dir.filePath(QStringLiteral("missing"))).ok());

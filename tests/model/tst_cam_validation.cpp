@@ -6,8 +6,7 @@ using namespace cambench;
 
 namespace {
 
-DeviceInfo rotaryDevice()
-{
+DeviceInfo rotaryDevice() {
     DeviceInfo device;
     device.minPosition = 0;
     device.maxPosition = 359;
@@ -16,19 +15,16 @@ DeviceInfo rotaryDevice()
     return device;
 }
 
-Track track(int output, QList<Cam> cams)
-{
+Track track(int output, QList<Cam> cams) {
     Track t;
     t.output = output;
     t.cams = std::move(cams);
     return t;
 }
 
-QStringList messages(const QList<CamProblem>& problems)
-{
+QStringList messages(const QList<CamProblem>& problems) {
     QStringList list;
-    for (const CamProblem& p : problems)
-        list << p.message;
+    for (const CamProblem& p : problems) list << p.message;
     return list;
 }
 
@@ -38,14 +34,12 @@ class TestCamValidation : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    void validTrackHasNoProblems()
-    {
+    void validTrackHasNoProblems() {
         const Track t = track(5, {{10, 50}, {100, 200}, {300, 5}});
         QVERIFY(validateTrack(t, 3, rotaryDevice(), true).isEmpty());
     }
 
-    void pointAboveMaximumNamesProgramOutputAndCam()
-    {
+    void pointAboveMaximumNamesProgramOutputAndCam() {
         const Track t = track(5, {{10, 50}, {300, 400}});
         const QList<CamProblem> problems = validateTrack(t, 3, rotaryDevice(), true);
         QCOMPARE(problems.size(), 1);
@@ -57,25 +51,24 @@ private Q_SLOTS:
                                 "the maximum 359"));
     }
 
-    void pointBelowMinimumIsReported()
-    {
+    void pointBelowMinimumIsReported() {
         DeviceInfo device = rotaryDevice();
         device.minPosition = 100;
         const QList<CamProblem> problems = validateTrack(track(1, {{50, 150}}), 0, device, true);
         QCOMPARE(problems.size(), 1);
-        QVERIFY(problems.first().message.contains(QStringLiteral("switch-on point 50 is below the minimum 100")));
+        QVERIFY(problems.first().message.contains(
+            QStringLiteral("switch-on point 50 is below the minimum 100")));
     }
 
-    void equalPointsAreAnError()
-    {
-        const QList<CamProblem> problems = validateTrack(track(1, {{40, 40}}), 0, rotaryDevice(), true);
+    void equalPointsAreAnError() {
+        const QList<CamProblem> problems =
+            validateTrack(track(1, {{40, 40}}), 0, rotaryDevice(), true);
         QCOMPARE(problems.size(), 1);
         QCOMPARE(problems.first().cam, 0);
         QVERIFY(problems.first().message.contains(QStringLiteral("both 40")));
     }
 
-    void wrapAroundIsAnErrorOnLinearAxis()
-    {
+    void wrapAroundIsAnErrorOnLinearAxis() {
         const Track t = track(1, {{300, 20}});
         QVERIFY(validateTrack(t, 0, rotaryDevice(), true).isEmpty());
         const QList<CamProblem> problems = validateTrack(t, 0, rotaryDevice(), false);
@@ -83,8 +76,7 @@ private Q_SLOTS:
         QVERIFY(problems.first().message.contains(QStringLiteral("rotary")));
     }
 
-    void overlapIsReportedWithBothCams()
-    {
+    void overlapIsReportedWithBothCams() {
         const QList<CamProblem> problems =
             validateTrack(track(2, {{10, 50}, {40, 80}}), 1, rotaryDevice(), true);
         QCOMPARE(problems.size(), 1);
@@ -93,8 +85,7 @@ private Q_SLOTS:
                  QStringLiteral("program 1, output 2, cam 2: 40..80 overlaps cam 1 (10..50)"));
     }
 
-    void wrapAroundCamOverlapsCamAfterZero()
-    {
+    void wrapAroundCamOverlapsCamAfterZero() {
         // [300,20] covers 300..359 and 0..19, so it overlaps [10,50].
         const QList<CamProblem> problems =
             validateTrack(track(1, {{300, 20}, {10, 50}}), 0, rotaryDevice(), true);
@@ -102,36 +93,35 @@ private Q_SLOTS:
         QVERIFY(problems.first().message.contains(QStringLiteral("overlaps")));
     }
 
-    void wrapAroundCamOverlapsCamBeforeMaximum()
-    {
+    void wrapAroundCamOverlapsCamBeforeMaximum() {
         const QList<CamProblem> problems =
             validateTrack(track(1, {{350, 355}, {300, 20}}), 0, rotaryDevice(), true);
         QCOMPARE(problems.size(), 1);
     }
 
-    void touchingCamsDoNotOverlap()
-    {
+    void touchingCamsDoNotOverlap() {
         // The switch-off point is the first position that is off again.
         QVERIFY(validateTrack(track(1, {{300, 20}, {20, 40}}), 0, rotaryDevice(), true).isEmpty());
         QVERIFY(validateTrack(track(1, {{10, 20}, {20, 30}}), 0, rotaryDevice(), false).isEmpty());
-        QVERIFY(validateTrack(track(1, {{100, 300}, {300, 100}}), 0, rotaryDevice(), true).isEmpty());
+        QVERIFY(
+            validateTrack(track(1, {{100, 300}, {300, 100}}), 0, rotaryDevice(), true).isEmpty());
     }
 
-    void twoWrapAroundCamsOverlap()
-    {
-        QCOMPARE(validateTrack(track(1, {{300, 20}, {350, 10}}), 0, rotaryDevice(), true).size(), 1);
+    void twoWrapAroundCamsOverlap() {
+        QCOMPARE(validateTrack(track(1, {{300, 20}, {350, 10}}), 0, rotaryDevice(), true).size(),
+                 1);
     }
 
-    void camInsideAnotherOverlaps()
-    {
-        QCOMPARE(validateTrack(track(1, {{0, 300}, {100, 110}, {200, 210}}), 0, rotaryDevice(), true).size(), 2);
+    void camInsideAnotherOverlaps() {
+        QCOMPARE(
+            validateTrack(track(1, {{0, 300}, {100, 110}, {200, 210}}), 0, rotaryDevice(), true)
+                .size(),
+            2);
     }
 
-    void tooManyCamsPerTrack()
-    {
+    void tooManyCamsPerTrack() {
         QList<Cam> cams;
-        for (int i = 0; i < kMaxCamsPerTrack + 1; ++i)
-            cams << Cam{i * 2, i * 2 + 1};
+        for (int i = 0; i < kMaxCamsPerTrack + 1; ++i) cams << Cam{i * 2, i * 2 + 1};
         DeviceInfo device = rotaryDevice();
         device.maxPosition = 1000;
         QVERIFY(validateTrack(track(1, cams.mid(0, kMaxCamsPerTrack)), 0, device, true).isEmpty());
@@ -141,18 +131,17 @@ private Q_SLOTS:
         QVERIFY(problems.first().message.contains(QStringLiteral("at most 125")));
     }
 
-    void outputOutsideDeviceRange()
-    {
+    void outputOutsideDeviceRange() {
         QCOMPARE(validateTrack(track(0, {{1, 2}}), 0, rotaryDevice(), true).size(), 1);
-        const QList<CamProblem> problems = validateTrack(track(33, {{1, 2}}), 0, rotaryDevice(), true);
+        const QList<CamProblem> problems =
+            validateTrack(track(33, {{1, 2}}), 0, rotaryDevice(), true);
         QCOMPARE(problems.size(), 1);
         QCOMPARE(problems.first().message,
                  QStringLiteral("program 0, output 33: the device has outputs 1..32"));
         QVERIFY(validateTrack(track(32, {{1, 2}}), 0, rotaryDevice(), true).isEmpty());
     }
 
-    void programOutsideDeviceRange()
-    {
+    void programOutsideDeviceRange() {
         CamProgram program;
         program.number = 16;
         QCOMPARE(messages(validateProgram(program, rotaryDevice(), true)),
@@ -163,8 +152,7 @@ private Q_SLOTS:
         QVERIFY(validateProgram(program, rotaryDevice(), true).isEmpty());
     }
 
-    void programChecksEveryTrackAndItsKey()
-    {
+    void programChecksEveryTrackAndItsKey() {
         CamProgram program;
         program.number = 2;
         program.tracks.insert(1, track(1, {{10, 20}, {15, 30}}));
@@ -175,8 +163,7 @@ private Q_SLOTS:
         QVERIFY(problems.at(1).message.contains(QStringLiteral("output 4")));
     }
 
-    void camCoversHalfOpenRange()
-    {
+    void camCoversHalfOpenRange() {
         const Cam normal{10, 50};
         QVERIFY(!camCovers(normal, 9));
         QVERIFY(camCovers(normal, 10));
@@ -191,8 +178,7 @@ private Q_SLOTS:
         QVERIFY(!camCovers(wrap, 299));
     }
 
-    void trackActiveAtAnyCam()
-    {
+    void trackActiveAtAnyCam() {
         const Track t = track(1, {{10, 20}, {300, 5}});
         QVERIFY(trackActiveAt(t, 15));
         QVERIFY(trackActiveAt(t, 2));
@@ -200,8 +186,7 @@ private Q_SLOTS:
         QVERIFY(!trackActiveAt(Track{}, 0));
     }
 
-    void normaliseSortsBySwitchOnAndDropsEmptyTracks()
-    {
+    void normaliseSortsBySwitchOnAndDropsEmptyTracks() {
         CamProgram program;
         program.tracks.insert(1, track(1, {{300, 20}, {10, 50}, {100, 120}}));
         program.tracks.insert(2, track(2, {}));

@@ -6,8 +6,7 @@ using namespace cambench;
 
 namespace {
 
-User user(const QString& name, const QString& number)
-{
+User user(const QString& name, const QString& number) {
     User u;
     u.name = name;
     u.number = number;
@@ -21,16 +20,14 @@ class TestDataValidation : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    void deadTimesWithinDeviceLimitsAreValid()
-    {
+    void deadTimesWithinDeviceLimitsAreValid() {
         DeviceInfo device;
         device.deadTimeOutputs = 16;
         device.maxDeadTime = 500;
         QVERIFY(validateDeadTimes({{1, 0}, {16, 500}}, device).isEmpty());
     }
 
-    void deadTimeOutsideLimitsNamesOutputAndRange()
-    {
+    void deadTimeOutsideLimitsNamesOutputAndRange() {
         DeviceInfo device;
         device.deadTimeOutputs = 16;
         device.maxDeadTime = 500;
@@ -43,18 +40,17 @@ private Q_SLOTS:
         QCOMPARE(validateDeadTimes({{0, 1}}, device).size(), 1);
     }
 
-    void nameRules()
-    {
+    void nameRules() {
         QVERIFY(nameProblem(QString()).isEmpty());
         QVERIFY(nameProblem(QString(21, QLatin1Char('x'))).isEmpty());
         QVERIFY(nameProblem(QStringLiteral("Förderband Ä")).isEmpty());
-        QVERIFY(nameProblem(QString(22, QLatin1Char('x'))).contains(QStringLiteral("22 characters")));
+        QVERIFY(
+            nameProblem(QString(22, QLatin1Char('x'))).contains(QStringLiteral("22 characters")));
         QVERIFY(nameProblem(QStringLiteral("Euro €")).contains(QStringLiteral("Latin-1")));
         QVERIFY(!nameProblem(QStringLiteral("tab\there")).isEmpty());
     }
 
-    void namesOutsideDeviceRange()
-    {
+    void namesOutsideDeviceRange() {
         DeviceInfo device;
         device.outputs = 16;
         device.programs = 4;
@@ -67,8 +63,7 @@ private Q_SLOTS:
         QVERIFY(problems.at(1).contains(QStringLiteral("program 4")));
     }
 
-    void userNumberRules()
-    {
+    void userNumberRules() {
         QVERIFY(userProblem(user(QStringLiteral("Anna"), QStringLiteral("12345"))).isEmpty());
         QVERIFY(userProblem(user(QStringLiteral("Anna"), QStringLiteral("a1"))).isEmpty());
         QVERIFY(!userProblem(user(QStringLiteral("Anna"), QString())).isEmpty());
@@ -78,20 +73,18 @@ private Q_SLOTS:
         QVERIFY(!userProblem(user(QString(22, QLatin1Char('n')), QStringLiteral("1"))).isEmpty());
     }
 
-    void userProblemsNeverShowTheNumber()
-    {
-        const QStringList problems = validateUsers(
-            {user(QStringLiteral("Anna"), QStringLiteral("4711")),
-             user(QStringLiteral("Bert"), QStringLiteral("4711")),
-             user(QStringLiteral("Carl"), QStringLiteral("DEL"))});
+    void userProblemsNeverShowTheNumber() {
+        const QStringList problems =
+            validateUsers({user(QStringLiteral("Anna"), QStringLiteral("4711")),
+                           user(QStringLiteral("Bert"), QStringLiteral("4711")),
+                           user(QStringLiteral("Carl"), QStringLiteral("DEL"))});
         QCOMPARE(problems.size(), 2);
         QVERIFY(problems.at(0).contains(QStringLiteral("user 1")));
         for (const QString& p : problems)
             QVERIFY2(!p.contains(QStringLiteral("4711")), qPrintable(p));
     }
 
-    void plcNetworkAreaAndNumber()
-    {
+    void plcNetworkAreaAndNumber() {
         PlcNetwork network;
         network.area = PlcNetwork::X;
         network.number = kMaxPlcNumber;
@@ -105,8 +98,7 @@ private Q_SLOTS:
         QCOMPARE(validatePlcNetwork(network).size(), 1);
     }
 
-    void plcNetworkIsEmptyOnlyWithoutContent()
-    {
+    void plcNetworkIsEmptyOnlyWithoutContent() {
         PlcNetwork network;
         network.number = 7;
         QVERIFY(network.isEmpty());

@@ -9,8 +9,7 @@ using namespace cambench;
 
 namespace {
 
-Project sampleProject()
-{
+Project sampleProject() {
     Project project;
     project.device.epromDate = QStringLiteral("11.10.1994");
     project.device.outputs = 32;
@@ -62,11 +61,10 @@ Project sampleProject()
 }
 
 // The sample file with one value replaced (path of object keys and indexes).
-QByteArray withValue(const QStringList& path, const QJsonValue& value)
-{
-    std::function<QJsonValue(const QJsonValue&, int)> set = [&](const QJsonValue& node, int depth) -> QJsonValue {
-        if (depth == path.size())
-            return value;
+QByteArray withValue(const QStringList& path, const QJsonValue& value) {
+    std::function<QJsonValue(const QJsonValue&, int)> set = [&](const QJsonValue& node,
+                                                                int depth) -> QJsonValue {
+        if (depth == path.size()) return value;
         bool isIndex = false;
         const int index = path.at(depth).toInt(&isIndex);
         if (isIndex) {
@@ -82,8 +80,7 @@ QByteArray withValue(const QStringList& path, const QJsonValue& value)
     return QJsonDocument(set(root, 0).toObject()).toJson();
 }
 
-QString loadError(const QByteArray& bytes)
-{
+QString loadError(const QByteArray& bytes) {
     const Result<Project> result = projectFromJson(bytes);
     return result.ok() ? QString() : result.error().message;
 }
@@ -96,8 +93,7 @@ class TestProjectFile : public QObject {
 private Q_SLOTS:
     void sampleIsValid() { QCOMPARE(validateProject(sampleProject()), QStringList()); }
 
-    void saveAndLoadRoundTrip()
-    {
+    void saveAndLoadRoundTrip() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("line1.cambench"));
@@ -113,8 +109,7 @@ private Q_SLOTS:
         QVERIFY(*loaded == project);
     }
 
-    void savingTwiceGivesIdenticalBytes()
-    {
+    void savingTwiceGivesIdenticalBytes() {
         QTemporaryDir dir;
         const QString first = dir.filePath(QStringLiteral("a.cambench"));
         const QString second = dir.filePath(QStringLiteral("b.cambench"));
@@ -129,48 +124,46 @@ private Q_SLOTS:
         QVERIFY(bytes.contains("\"format\": \"cambench-project\""));
     }
 
-    void camsAreWrittenAsPairs()
-    {
+    void camsAreWrittenAsPairs() {
         const QJsonObject root = QJsonDocument::fromJson(projectToJson(sampleProject())).object();
-        const QJsonArray cams = root[QStringLiteral("programs")][0][QStringLiteral("tracks")][1]
-                                    [QStringLiteral("cams")].toArray();
+        const QJsonArray cams =
+            root[QStringLiteral("programs")][0][QStringLiteral("tracks")][1][QStringLiteral("cams")]
+                .toArray();
         QCOMPARE(cams.size(), 3);
         QCOMPARE(cams.at(2).toArray(), (QJsonArray{300, 5}));
     }
 
-    void notJsonIsRejected()
-    {
+    void notJsonIsRejected() {
         const QString error = loadError("this is no json {");
         QVERIFY2(error.contains(QStringLiteral("not valid JSON")), qPrintable(error));
     }
 
-    void truncatedFileIsRejected()
-    {
+    void truncatedFileIsRejected() {
         const QByteArray bytes = projectToJson(sampleProject());
         QVERIFY(loadError(bytes.left(bytes.size() / 2)).contains(QStringLiteral("not valid JSON")));
     }
 
-    void wrongFormatIsRejected()
-    {
+    void wrongFormatIsRejected() {
         const QString error = loadError(R"({"format":"cambench-eeprom-image","version":1})");
         QVERIFY2(error.contains(QStringLiteral("not a CamBench project")), qPrintable(error));
-        QVERIFY(loadError(R"({"name":"package.json"})").contains(QStringLiteral("not a CamBench project")));
+        QVERIFY(loadError(R"({"name":"package.json"})")
+                    .contains(QStringLiteral("not a CamBench project")));
         QVERIFY(loadError("[1,2,3]").contains(QStringLiteral("not a CamBench project")));
     }
 
-    void newerVersionAsksForNewerCamBench()
-    {
+    void newerVersionAsksForNewerCamBench() {
         const QString error = loadError(withValue({QStringLiteral("version")}, 2));
         QVERIFY2(error.contains(QStringLiteral("newer CamBench")), qPrintable(error));
         QVERIFY(error.contains(QStringLiteral("version 2")));
     }
 
-    void badValueIsReportedWithItsPath_data()
-    {
+    void badValueIsReportedWithItsPath_data() {
         QTest::addColumn<QStringList>("path");
         QTest::addColumn<QJsonValue>("value");
         QTest::addColumn<QString>("expected");
-        const auto p = [](const char* text) { return QString::fromLatin1(text).split(QLatin1Char('/')); };
+        const auto p = [](const char* text) {
+            return QString::fromLatin1(text).split(QLatin1Char('/'));
+        };
         QTest::newRow("cam point not integer")
             << p("programs/0/tracks/1/cams/2/1") << QJsonValue(2.5)
             << QStringLiteral("programs[0].tracks[1].cams[2]: switch-off point is not an integer.");
@@ -179,21 +172,22 @@ private Q_SLOTS:
             << QStringLiteral("programs[0].tracks[1].cams[0]: switch-on point is not an integer.");
         QTest::newRow("cam above maximum")
             << p("programs/0/tracks/1/cams/1/1") << QJsonValue(400)
-            << QStringLiteral("programs[0].tracks[1].cams[1]: program 3, output 5, cam 2: "
-                              "switch-off point 400 is above the maximum 359.");
+            << QStringLiteral(
+                   "programs[0].tracks[1].cams[1]: program 3, output 5, cam 2: "
+                   "switch-off point 400 is above the maximum 359.");
         QTest::newRow("overlap")
             << p("programs/0/tracks/1/cams/1/0") << QJsonValue(40)
-            << QStringLiteral("programs[0].tracks[1].cams[1]: program 3, output 5, cam 2: "
-                              "40..200 overlaps cam 1 (10..50).");
+            << QStringLiteral(
+                   "programs[0].tracks[1].cams[1]: program 3, output 5, cam 2: "
+                   "40..200 overlaps cam 1 (10..50).");
         QTest::newRow("output beyond device")
             << p("programs/0/tracks/1/output") << QJsonValue(33)
             << QStringLiteral("programs[0].tracks[1].output: output 33 is outside 1..32.");
         QTest::newRow("program beyond device")
             << p("programs/0/number") << QJsonValue(16)
             << QStringLiteral("programs[0].number: program number 16 is outside 0..15.");
-        QTest::newRow("missing key")
-            << p("device/outputs") << QJsonValue(QJsonValue::Undefined)
-            << QStringLiteral("device: \"outputs\" is missing.");
+        QTest::newRow("missing key") << p("device/outputs") << QJsonValue(QJsonValue::Undefined)
+                                     << QStringLiteral("device: \"outputs\" is missing.");
         QTest::newRow("outputs not multiple of 8")
             << p("device/outputs") << QJsonValue(12)
             << QStringLiteral("device.outputs: number of outputs 12 is not a multiple of 8.");
@@ -202,15 +196,17 @@ private Q_SLOTS:
             << QStringLiteral("deadTimes[1].deadTime: dead time 10000 is outside 0..9999.");
         QTest::newRow("setting out of range")
             << p("settings/gearMultiplier") << QJsonValue(0)
-            << QStringLiteral("settings.gearMultiplier: 0 is not allowed; allowed are "
-                              "-99999..-1 and 1..99999.");
+            << QStringLiteral(
+                   "settings.gearMultiplier: 0 is not allowed; allowed are "
+                   "-99999..-1 and 1..99999.");
         QTest::newRow("unknown setting")
             << p("settings/warpDrive") << QJsonValue(1)
             << QStringLiteral("settings.warpDrive: there is no such setting.");
         QTest::newRow("name too long")
             << p("outputNames/0/name") << QJsonValue(QString(22, QLatin1Char('x')))
-            << QStringLiteral("outputNames[0].name: \"xxxxxxxxxxxxxxxxxxxxxx\" has 22 "
-                              "characters; the device stores at most 21.");
+            << QStringLiteral(
+                   "outputNames[0].name: \"xxxxxxxxxxxxxxxxxxxxxx\" has 22 "
+                   "characters; the device stores at most 21.");
         QTest::newRow("user number DEL")
             << p("users/0/number") << QJsonValue(QStringLiteral("DEL"))
             << QStringLiteral("users[0]: the user number \"DEL\" is reserved: it deletes a user.");
@@ -222,23 +218,22 @@ private Q_SLOTS:
             << QStringLiteral("programs: a JSON array is expected.");
     }
 
-    void badValueIsReportedWithItsPath()
-    {
+    void badValueIsReportedWithItsPath() {
         QFETCH(QStringList, path);
         QFETCH(QJsonValue, value);
         QFETCH(QString, expected);
         QCOMPARE(loadError(withValue(path, value)), expected);
     }
 
-    void wrapAroundCamIsRejectedOnLinearAxis()
-    {
-        const QString error = loadError(withValue({QStringLiteral("settings"), QStringLiteral("axisType")}, 1));
-        QVERIFY2(error.startsWith(QStringLiteral("programs[0].tracks[1].cams[2]: ")), qPrintable(error));
+    void wrapAroundCamIsRejectedOnLinearAxis() {
+        const QString error =
+            loadError(withValue({QStringLiteral("settings"), QStringLiteral("axisType")}, 1));
+        QVERIFY2(error.startsWith(QStringLiteral("programs[0].tracks[1].cams[2]: ")),
+                 qPrintable(error));
         QVERIFY(error.contains(QStringLiteral("rotary")));
     }
 
-    void loadErrorNamesTheFile()
-    {
+    void loadErrorNamesTheFile() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("broken.cambench"));
         QFile file(path);
@@ -252,8 +247,7 @@ private Q_SLOTS:
         QVERIFY(!loadProject(dir.filePath(QStringLiteral("missing.cambench"))).ok());
     }
 
-    void invalidProjectIsNotSaved()
-    {
+    void invalidProjectIsNotSaved() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("bad.cambench"));
         Project project = sampleProject();
@@ -264,8 +258,7 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(path));
     }
 
-    void programNameMustAgreeWithNameList()
-    {
+    void programNameMustAgreeWithNameList() {
         Project project = sampleProject();
         project.names.programs[3] = QStringLiteral("Cans");
         const QStringList problems = validateProject(project);

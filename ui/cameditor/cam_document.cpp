@@ -235,6 +235,17 @@ void CamDocument::generateCams(int program, const Track& track) {
     replaceTrack(program, track, tr("Generate cams on output %1").arg(track.output));
 }
 
+void CamDocument::replaceTracks(int program, const QMap<int, Track>& tracks,
+                                const QString& text) {
+    CamProgram after = this->program(program);
+    after.tracks = tracks;
+    after = normalized(after);
+    const CamProgram before = this->program(program);
+    if (before != after) {
+        m_undoStack->push(new ReplaceProgramCommand(this, before, after, text));
+    }
+}
+
 void CamDocument::setProgramName(int program, const QString& name) {
     const QString before = programName(program);
     if (before == name) {
@@ -315,6 +326,31 @@ CamProgram CamDocument::normalized(CamProgram program) {
 
 QList<CamProblem> CamDocument::problems(int program, int output) const {
     return validateTrack(track(program, output), program, m_info, m_rotary);
+}
+
+Cam CamDocument::suggestNewCam(int program, int output) const {
+    const Axis axis = this->axis();
+    constexpr int kSuggestedCamsPerAxis = 36;
+    const qint64 length = std::max<qint64>(axis.span() / kSuggestedCamsPerAxis, 1);
+    Track candidate = track(program, output);
+    candidate.cams.append(Cam{});
+    QList<qint64> starts{axis.min};
+    for (const Cam& cam : track(program, output).cams) {
+        starts.append(cam.off);  // right after an existing cam first
+    }
+    for (qint64 on = axis.min; on + length <= axis.max; on += length) {
+        starts.append(on);
+    }
+    for (qint64 on : starts) {
+        if (on + length > qint64(axis.max) + (axis.rotary ? 1 : 0)) {
+            continue;
+        }
+        candidate.cams.last() = {qint32(on), axis.wrap(on + length)};
+        if (validateTrack(candidate, program, m_info, m_rotary).isEmpty()) {
+            return candidate.cams.last();
+        }
+    }
+    return {axis.min, axis.moved(axis.min, length)};
 }
 
 void CamDocument::notifyChangedCount() {

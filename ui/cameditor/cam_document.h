@@ -79,6 +79,9 @@ public:
     QList<TrackDifference> differences() const;
     // What is wrong with a track of the edited state (model/cam_validation.h).
     QList<CamProblem> problems(int program, int output) const;
+    // A cam for "Add cam": the first gap on the track that takes a cam of
+    // 1/36 of the axis without a problem, else one at IMIN (shown in error).
+    Cam suggestNewCam(int program, int output) const;
     // Tracks, program names, output names and dead times that differ from
     // the device (for the window title).
     int changedCount() const;
@@ -96,6 +99,8 @@ public:
     void copyTrack(int program, int fromOutput, int toProgram, int toOutput);
     void copyProgram(int from, int to);
     void generateCams(int program, const Track& track);
+    // Replaces every track of a program (CSV import), keeping its name.
+    void replaceTracks(int program, const QMap<int, Track>& tracks, const QString& text);
     void setProgramName(int program, const QString& name);
     void setOutputName(int output, const QString& name);
     void setDeadTime(int output, qint32 deadTime);

@@ -5,8 +5,12 @@ target_sources(cambench_ui PRIVATE
   cameditor/cam_diagram_widget.h
   cameditor/cam_document.cpp
   cameditor/cam_document.h
+  cameditor/cam_editor_widget.cpp
+  cameditor/cam_editor_widget.h
   cameditor/cam_generator.cpp
   cameditor/cam_generator.h
+  cameditor/cam_generator_dialog.cpp
+  cameditor/cam_generator_dialog.h
   cameditor/cam_geometry.cpp
   cameditor/cam_geometry.h
   cameditor/cam_table_model.cpp

@@ -76,7 +76,7 @@ void TestFrame::checksumExcludesEscapeBytes()
     quint8 sum = '!';
     for (char c : frame.body) sum = quint8(sum + quint8(c));
     const QByteArray expectedChecksum = checksumText(quint8(~sum));
-    QCOMPARE(wire, QByteArray("!EE0001\x20\x1b\r\x1b\x1b\x00\x0a", 12) + expectedChecksum + "\r\n");
+    QCOMPARE(wire, QByteArray("!EE0001\x20\x1b\r\x1b\x1b\x00\x0a", 14) + expectedChecksum + "\r\n");
 }
 
 void TestFrame::frameWithoutChecksumEndsDirectlyWithCrLf()

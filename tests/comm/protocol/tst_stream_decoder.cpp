@@ -163,7 +163,7 @@ void TestStreamDecoder::unescapesBinaryDataWithCrAndEsc()
 {
     const Frame frame = makeFrame('!', QByteArray("EE0001\x30\r\x1b\x1b\r\n\x00", 13));
     const QByteArray wire = encodeFrame(frame);
-    QCOMPARE(wire.count('\x1b'), 2 + 2);  // one ESC before each CR and ESC of the data
+    QCOMPARE(wire.count('\x1b'), 2 + 4);  // the data's two ESCs, plus one before each CR and ESC
 
     StreamDecoder decoder(Framing::Standard, "!");
     const QList<DecodeEvent> events = decoder.feed(wire);
@@ -287,7 +287,11 @@ void TestStreamDecoder::acceptsFrameOfExactlyMaximumSize()
     QCOMPARE(framesOf(decoder.feed(wire)), QList{frame});
 
     const Frame tooBig = makeFrame('!', QByteArray(StreamDecoder::kMaxFrameBytes - 4, 'B'));
-    QCOMPARE(kinds(decoder.feed(encodeFrame(tooBig))), QList{DecodeEvent::Oversized});
+    const QList<DecodeEvent> events = decoder.feed(encodeFrame(tooBig));
+    QCOMPARE(kinds(events), (QList{DecodeEvent::Oversized, DecodeEvent::Garbage}));
+    QCOMPARE(events[0].raw.size(), StreamDecoder::kMaxFrameBytes);
+    QCOMPARE(events[1].raw, QByteArray("\n"));  // the rest up to the frame's end
+    QCOMPARE(decoder.pendingBytes(), 0);
 }
 
 void TestStreamDecoder::dropsFrameEndedByCrWithoutLf()

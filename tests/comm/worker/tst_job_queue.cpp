@@ -1,0 +1,114 @@
+#include "comm/worker/job_queue.h"
+
+#include <QtTest>
+
+using namespace cambench::comm;
+
+namespace {
+
+// The titles in the order the queue hands the jobs out.
+QStringList drain(JobQueue& queue) {
+    QStringList titles;
+    while (auto job = queue.takeNext()) {
+        titles.append(job->title);
+        queue.finishRunning();
+    }
+    return titles;
+}
+
+}  // namespace
+
+class TestJobQueue : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void userJobsComeBeforePollJobs();
+    void pollWithSameKeyReplacesQueuedPoll();
+    void pollKeysOnlyCollapseEqualKeys();
+    void userJobsNeverCollapse();
+    void cancelRemovesQueuedJob();
+    void cancelSignalsRunningJob();
+    void cancelUnknownIdChangesNothing();
+    void cancelAllEmptiesQueueAndSignalsRunningJob();
+};
+
+void TestJobQueue::userJobsComeBeforePollJobs() {
+    JobQueue queue;
+    queue.push(JobPriority::Poll, "p1", {});
+    queue.push(JobPriority::User, "u1", {});
+    queue.push(JobPriority::Poll, "p2", {});
+    queue.push(JobPriority::User, "u2", {});
+    QCOMPARE(drain(queue), QStringList({"u1", "u2", "p1", "p2"}));
+}
+
+void TestJobQueue::pollWithSameKeyReplacesQueuedPoll() {
+    JobQueue queue;
+    const auto first = queue.push(JobPriority::Poll, "status 1", {}, "status");
+    queue.push(JobPriority::Poll, "value", {}, "value");
+    const auto second = queue.push(JobPriority::Poll, "status 2", {}, "status");
+    QCOMPARE(first.replaced, 0u);
+    QCOMPARE(second.replaced, first.id);
+    QVERIFY(second.id != first.id);
+    QCOMPARE(queue.size(), 2);
+    // The newer poll takes the older one's place.
+    QCOMPARE(drain(queue), QStringList({"status 2", "value"}));
+}
+
+void TestJobQueue::pollKeysOnlyCollapseEqualKeys() {
+    JobQueue queue;
+    queue.push(JobPriority::Poll, "a", {}, "a");
+    queue.push(JobPriority::Poll, "b", {}, "b");
+    queue.push(JobPriority::Poll, "none", {});
+    queue.push(JobPriority::Poll, "none again", {});
+    QCOMPARE(queue.size(), 4);
+}
+
+void TestJobQueue::userJobsNeverCollapse() {
+    JobQueue queue;
+    queue.push(JobPriority::User, "u1", {}, "key");
+    const auto second = queue.push(JobPriority::User, "u2", {}, "key");
+    QCOMPARE(second.replaced, 0u);
+    QCOMPARE(drain(queue), QStringList({"u1", "u2"}));
+}
+
+void TestJobQueue::cancelRemovesQueuedJob() {
+    JobQueue queue;
+    queue.push(JobPriority::User, "u1", {});
+    const auto victim = queue.push(JobPriority::User, "u2", {});
+    QCOMPARE(queue.cancel(victim.id), JobQueue::Cancelled::Removed);
+    QCOMPARE(drain(queue), QStringList({"u1"}));
+}
+
+void TestJobQueue::cancelSignalsRunningJob() {
+    JobQueue queue;
+    const auto pushed = queue.push(JobPriority::User, "u1", {});
+    const auto running = queue.takeNext();
+    QVERIFY(running);
+    QVERIFY(!running->cancel->load());
+    QCOMPARE(queue.cancel(pushed.id), JobQueue::Cancelled::Signalled);
+    QVERIFY(running->cancel->load());
+    queue.finishRunning();
+    QCOMPARE(queue.cancel(pushed.id), JobQueue::Cancelled::Unknown);
+}
+
+void TestJobQueue::cancelUnknownIdChangesNothing() {
+    JobQueue queue;
+    queue.push(JobPriority::User, "u1", {});
+    QCOMPARE(queue.cancel(999), JobQueue::Cancelled::Unknown);
+    QCOMPARE(queue.cancel(0), JobQueue::Cancelled::Unknown);
+    QCOMPARE(queue.size(), 1);
+}
+
+void TestJobQueue::cancelAllEmptiesQueueAndSignalsRunningJob() {
+    JobQueue queue;
+    queue.push(JobPriority::User, "running", {});
+    const auto running = queue.takeNext();
+    const auto a = queue.push(JobPriority::User, "a", {});
+    const auto b = queue.push(JobPriority::Poll, "b", {}, "b");
+    const QList<quint64> removed = queue.cancelAll();
+    QCOMPARE(removed, QList<quint64>({a.id, b.id}));
+    QVERIFY(running->cancel->load());
+    QCOMPARE(queue.size(), 0);
+}
+
+QTEST_GUILESS_MAIN(TestJobQueue)
+#include "tst_job_queue.moc"
