@@ -1,3 +1,3 @@
 #include "model_log.h"
 
-Q_LOGGING_CATEGORY(modelLog, "cambench.model")
+Q_LOGGING_CATEGORY(modelLog, "cambench.model", QtWarningMsg)

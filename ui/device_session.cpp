@@ -45,7 +45,8 @@ void DeviceSession::setDevice(int device) {
 QString DeviceSession::stateText() const {
     switch (m_state) {
     case comm::ConnectionState::Disconnected:
-        return tr("Offline");
+        return m_retry.isActive() ? tr("Connection to %1 lost, retrying").arg(m_connection.port)
+                                  : tr("Offline");
     case comm::ConnectionState::Connecting:
         return tr("Connecting to %1…").arg(m_connection.port);
     case comm::ConnectionState::Connected:

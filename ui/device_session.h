@@ -28,6 +28,8 @@ public:
     void setDevice(int device);  // Multiuser destination after a bus scan
 
     comm::ConnectionState state() const { return m_state; }
+    // Lost and trying to get the line back by itself.
+    bool isRetrying() const { return m_retry.isActive(); }
     bool isOnline() const { return m_state == comm::ConnectionState::Connected; }
     QString stateText() const;  // translated, for the status bar
     QString lastMessage() const { return m_message; }

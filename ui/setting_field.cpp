@@ -19,10 +19,6 @@ namespace {
 
 QString settingsText(const char* text) { return QCoreApplication::translate("Settings", text); }
 
-QString field(const char* text, int n = -1) {
-    return QCoreApplication::translate("cambench::SettingField", text, nullptr, n);
-}
-
 double scale(const SettingSpec& spec) { return std::pow(10.0, spec.decimals); }
 
 bool fitsInt(const SettingSpec& spec) {
@@ -56,20 +52,20 @@ QString SettingField::rangeText(const SettingSpec& spec) {
     switch (spec.kind) {
         case SettingKind::Integer:
             if (spec.step > 1)
-                return field("%1 … %2%3, steps of %4").arg(spec.min).arg(spec.max).arg(unit).arg(spec.step);
-            return field("%1 … %2%3").arg(spec.min).arg(spec.max).arg(unit);
+                return SettingField::tr("%1 … %2%3, steps of %4").arg(spec.min).arg(spec.max).arg(unit).arg(spec.step);
+            return SettingField::tr("%1 … %2%3").arg(spec.min).arg(spec.max).arg(unit);
         case SettingKind::Fixed: {
             const QLocale locale;
-            return field("%1 … %2%3")
+            return SettingField::tr("%1 … %2%3")
                 .arg(locale.toString(spec.min / scale(spec), 'f', spec.decimals),
                      locale.toString(spec.max / scale(spec), 'f', spec.decimals), unit);
         }
         case SettingKind::OutputRef:
-            return field("output 1 … %1, 0 = none").arg(spec.max);
+            return SettingField::tr("output 1 … %1, 0 = none").arg(spec.max);
         case SettingKind::InputRef:
-            return field("input 1 … %1, 0 = none").arg(spec.max);
+            return SettingField::tr("input 1 … %1, 0 = none").arg(spec.max);
         case SettingKind::Text:
-            return field("up to %n character(s)", spec.maxLength);
+            return SettingField::tr("up to %n character(s)", nullptr, spec.maxLength);
         case SettingKind::Enum:
             return {};
     }
@@ -79,14 +75,14 @@ QString SettingField::rangeText(const SettingSpec& spec) {
 QString SettingField::toolTipText(const SettingSpec& spec) {
     QString tip = settingsText(spec.tooltip);
     const QString range = rangeText(spec);
-    if (!range.isEmpty()) tip += QLatin1Char('\n') + field("Range: %1").arg(range);
-    if (*spec.section) tip += QLatin1Char('\n') + field("Manual section %1").arg(QLatin1String(spec.section));
-    if (spec.readOnly) tip += QLatin1Char('\n') + field("Read only: shown as the device reports it.");
+    if (!range.isEmpty()) tip += QLatin1Char('\n') + SettingField::tr("Range: %1").arg(range);
+    if (*spec.section) tip += QLatin1Char('\n') + SettingField::tr("Manual section %1").arg(QLatin1String(spec.section));
+    if (spec.readOnly) tip += QLatin1Char('\n') + SettingField::tr("Read only: shown as the device reports it.");
     return tip;
 }
 
 QString SettingField::displayText(const SettingSpec& spec, const QVariant& value) {
-    if (!value.isValid()) return field("(not set)");
+    if (!value.isValid()) return SettingField::tr("(not set)");
     switch (spec.kind) {
         case SettingKind::Enum:
             for (const SettingChoice& choice : spec.choices) {
@@ -95,7 +91,7 @@ QString SettingField::displayText(const SettingSpec& spec, const QVariant& value
             return QString::number(value.toLongLong());
         case SettingKind::OutputRef:
         case SettingKind::InputRef:
-            return value.toLongLong() == 0 ? field("none") : QString::number(value.toLongLong());
+            return value.toLongLong() == 0 ? SettingField::tr("none") : QString::number(value.toLongLong());
         case SettingKind::Fixed:
             return QLocale().toString(value.toLongLong() / scale(spec), 'f', spec.decimals);
         case SettingKind::Text:
@@ -152,7 +148,7 @@ void SettingField::createEditor() {
     spin->setSingleStep(std::max(1, m_spec.step));
     if (isReference(m_spec)) {
         spin->setMinimum(0);
-        spin->setSpecialValueText(field("none"));
+        spin->setSpecialValueText(SettingField::tr("none"));
     }
     connect(spin, &QSpinBox::valueChanged, this, &SettingField::emitEdited);
     m_editor = spin;
@@ -174,7 +170,7 @@ void SettingField::setValue(const QVariant& value) {
         int index = combo->findData(QVariant::fromValue<qint64>(value.toLongLong()));
         if (index < 0 && value.isValid()) {
             // A value the table does not name still has to be shown.
-            combo->addItem(field("unknown (%1)").arg(value.toLongLong()),
+            combo->addItem(SettingField::tr("unknown (%1)").arg(value.toLongLong()),
                            QVariant::fromValue<qint64>(value.toLongLong()));
             index = combo->count() - 1;
         }
@@ -195,8 +191,8 @@ void SettingField::setDeviceValue(const QVariant& device, bool known) {
     m_label->setFont(changed ? changedFont(m_label->font()) : QFont());
     const QString tip = toolTipText(m_spec);
     m_editor->setToolTip(changed ? tip + QLatin1Char('\n') +
-                                       field("On the device: %1").arg(known ? displayText(m_spec, device)
-                                                                            : field("not read"))
+                                       SettingField::tr("On the device: %1").arg(known ? displayText(m_spec, device)
+                                                                            : SettingField::tr("not read"))
                                  : tip);
 }
 

@@ -2,6 +2,6 @@
 
 namespace cambench {
 
-Q_LOGGING_CATEGORY(shellLog, "cambench.ui")
+Q_LOGGING_CATEGORY(shellLog, "cambench.ui", QtWarningMsg)
 
 }  // namespace cambench

@@ -27,4 +27,38 @@ target_sources(cambench_ui PRIVATE
   monitor_page.cpp
   terminal_page.h
   terminal_page.cpp
+  users_model.h
+  users_model.cpp
+  access_grid_model.h
+  access_grid_model.cpp
+  users_page.h
+  users_page.cpp
+  plc_symbol.h
+  plc_symbol.cpp
+  plc_matrix_model.h
+  plc_matrix_model.cpp
+  plc_page.h
+  plc_page.cpp
+  cam_page.h
+  cam_page.cpp
+  compare_dialog.h
+  compare_dialog.cpp
+  progress_page.h
+  progress_page.cpp
+  backup_wizard.h
+  backup_wizard.cpp
+  backup_page.h
+  backup_page.cpp
+  theme.h
+  theme.cpp
+  language.h
+  language.cpp
+  project_io.h
+  project_io.cpp
+  new_project_dialog.h
+  new_project_dialog.cpp
+  commissioning_report.h
+  commissioning_report.cpp
+  main_window.h
+  main_window.cpp
 )

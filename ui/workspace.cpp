@@ -203,14 +203,14 @@ void Workspace::setPlcNetwork(const PlcNetwork& network) {
     notifyChanged();
 }
 
-bool Workspace::plcChanged(int key) const {
+bool Workspace::isPlcNetworkChanged(int key) const {
     return !m_devicePlc.contains(key) || !(m_devicePlc.value(key) == m_plc.value(key));
 }
 
 QList<int> Workspace::changedPlcNetworks() const {
     QList<int> keys;
     for (auto it = m_plc.cbegin(); it != m_plc.cend(); ++it) {
-        if (plcChanged(it.key())) keys << it.key();
+        if (isPlcNetworkChanged(it.key())) keys << it.key();
     }
     return keys;
 }

@@ -79,7 +79,7 @@ public:
     PlcNetwork plcNetwork(int area, int number) const;
     void loadPlcFromDevice(const PlcNetwork& network);
     void setPlcNetwork(const PlcNetwork& network);
-    bool plcChanged(int key) const;
+    bool isPlcNetworkChanged(int key) const;
     QList<int> changedPlcNetworks() const;
     void markPlcWritten(int key);
 

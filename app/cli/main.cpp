@@ -5,6 +5,7 @@
 #include "exit_codes.h"
 
 #include <QCoreApplication>
+#include <QLoggingCategory>
 
 #include <cstdio>
 
@@ -15,6 +16,10 @@ int main(int argc, char* argv[]) {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+
+    // stderr carries one clear line per problem; the components' logs would
+    // drown it. QT_LOGGING_RULES still turns them on for debugging.
+    QLoggingCategory::setFilterRules(QStringLiteral("cambench.*=false"));
 
     const QStringList args = app.arguments().mid(1);
     if (args.contains(QLatin1String("--help")) || args.contains(QLatin1String("-h"))) {

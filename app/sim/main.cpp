@@ -56,7 +56,8 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
         } else if (protocol == QLatin1String("multiuser")) {
             config.framing = Framing::Multiuser;
         } else {
-            return QStringLiteral("--protocol must be standard or multiuser, not \"%1\".").arg(protocol);
+            return QStringLiteral("--protocol must be standard or multiuser, not \"%1\".")
+                .arg(protocol);
         }
     }
     if (parser.isSet(QStringLiteral("devices"))) {
@@ -69,7 +70,8 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
     }
     bool ok = true;
     config.baud = config.effectiveFraming() == Framing::Multiuser ? kMultiuserBaud : kStandardBaud;
-    if (parser.isSet(QStringLiteral("baud"))) config.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
+    if (parser.isSet(QStringLiteral("baud")))
+        config.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
     if (!ok || config.baud < 300) return QStringLiteral("--baud needs a baud rate of 300 or more.");
     if (parser.isSet(QStringLiteral("pc-number"))) {
         const int pc = parser.value(QStringLiteral("pc-number")).toInt(&ok);
@@ -85,12 +87,15 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const auto p = probability(parser.value(QLatin1String(name)));
         if (!p) return QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name));
-        (QByteArray(name) == "corrupt" ? config.faults.corruptProbability : config.faults.dropProbability) = *p;
+        (QByteArray(name) == "corrupt" ? config.faults.corruptProbability
+                                       : config.faults.dropProbability) = *p;
     }
     for (const char* name : {"delay", "fill"}) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const int n = parser.value(QLatin1String(name)).toInt(&ok);
-        if (!ok || n < 0) return QStringLiteral("--%1 needs a whole number of 0 or more.").arg(QLatin1String(name));
+        if (!ok || n < 0)
+            return QStringLiteral("--%1 needs a whole number of 0 or more.")
+                .arg(QLatin1String(name));
         (QByteArray(name) == "delay" ? config.faults.extraDelayMs : config.fill) = n;
     }
     if (parser.isSet(QStringLiteral("seed"))) {
@@ -110,22 +115,32 @@ void addOptions(QCommandLineParser& parser) {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOptions({
-        {QStringLiteral("protocol"), QStringLiteral("standard or multiuser (default: multiuser for several devices)."),
+        {QStringLiteral("protocol"),
+         QStringLiteral("standard or multiuser (default: multiuser for several devices)."),
          QStringLiteral("framing")},
         {QStringLiteral("devices"), QStringLiteral("Device numbers 0..63, e.g. 0,5 (default 0)."),
          QStringLiteral("list")},
-        {QStringLiteral("baud"), QStringLiteral("Baud rate for the timing (default 9600, Multiuser 38400)."),
+        {QStringLiteral("baud"),
+         QStringLiteral("Baud rate for the timing (default 9600, Multiuser 38400)."),
          QStringLiteral("rate")},
-        {QStringLiteral("pc-number"), QStringLiteral("Multiuser: answer only this PC number (default any)."),
+        {QStringLiteral("pc-number"),
+         QStringLiteral("Multiuser: answer only this PC number (default any)."),
          QStringLiteral("n")},
-        {QStringLiteral("tcp"), QStringLiteral("Serve TCP on this port instead of a pseudo-terminal."),
+        {QStringLiteral("tcp"),
+         QStringLiteral("Serve TCP on this port instead of a pseudo-terminal."),
          QStringLiteral("port")},
-        {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."), QStringLiteral("p")},
-        {QStringLiteral("drop"), QStringLiteral("Probability of a lost reply."), QStringLiteral("p")},
-        {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."), QStringLiteral("ms")},
-        {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator (default 1)."), QStringLiteral("n")},
-        {QStringLiteral("no-throttle"), QStringLiteral("Send replies at once instead of at the baud rate.")},
-        {QStringLiteral("fill"), QStringLiteral("Benchmark state: n cams on every output of every program."),
+        {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."),
+         QStringLiteral("p")},
+        {QStringLiteral("drop"), QStringLiteral("Probability of a lost reply."),
+         QStringLiteral("p")},
+        {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."),
+         QStringLiteral("ms")},
+        {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator (default 1)."),
+         QStringLiteral("n")},
+        {QStringLiteral("no-throttle"),
+         QStringLiteral("Send replies at once instead of at the baud rate.")},
+        {QStringLiteral("fill"),
+         QStringLiteral("Benchmark state: n cams on every output of every program."),
          QStringLiteral("n")},
         {QStringLiteral("dead"), QStringLiteral("Never answer.")},
         {QStringLiteral("verbose"), QStringLiteral("Log requests to stderr.")},
@@ -142,10 +157,12 @@ int main(int argc, char* argv[]) {
     addOptions(parser);
     parser.process(app);
     Options options;
-    if (const QString problem = readOptions(parser, options); !problem.isEmpty()) return fail(problem);
-    QLoggingCategory::setFilterRules(options.verbose
-                                         ? QStringLiteral("cambench.comm.sim.debug=true")
-                                         : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
+    if (const QString problem = readOptions(parser, options); !problem.isEmpty())
+        return fail(problem);
+    QLoggingCategory::setFilterRules(
+        options.verbose
+            ? QStringLiteral("cambench.comm.sim.debug=true")
+            : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
 
     std::unique_ptr<SimLine> line = makeSimLine(options.config);
     line->setPcNumber(options.pcNumber);
@@ -156,7 +173,8 @@ int main(int argc, char* argv[]) {
     std::unique_ptr<QObject> server;
     if (options.tcpPort) {
         auto tcp = std::make_unique<SimTcpServer>(*line, pacer);
-        if (const Status listening = tcp->listen(*options.tcpPort); !listening) return fail(listening.error().message);
+        if (const Status listening = tcp->listen(*options.tcpPort); !listening)
+            return fail(listening.error().message);
         std::printf("tcp://127.0.0.1:%u\n", unsigned(tcp->port()));
         server = std::move(tcp);
     } else {

@@ -2,9 +2,9 @@
 
 #include <QCoreApplication>
 
-#include <csignal>
 #include <sys/socket.h>
 #include <unistd.h>
+#include <csignal>
 
 namespace cambench {
 

@@ -1,3 +1,3 @@
 #include "link_logging.h"
 
-Q_LOGGING_CATEGORY(commLinkLog, "cambench.comm.link")
+Q_LOGGING_CATEGORY(commLinkLog, "cambench.comm.link", QtWarningMsg)

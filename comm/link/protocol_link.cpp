@@ -130,7 +130,7 @@ Result<Frame> ProtocolLink::exchange(const QString& label, char kind, const QByt
         const int device = std::clamp(m_settings.device, 0, 63);
         const int block = m_nextBlock[device];
         m_nextBlock[device] = (block + 1) % 64;
-        request.address = MultiuserAddress{m_settings.pcNumber, device, block};
+        request.address = MultiuserAddress{std::clamp(m_settings.pcNumber, 0, 63), device, block};
     }
     const QByteArray wire = encodeFrame(request);
 

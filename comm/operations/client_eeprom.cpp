@@ -12,6 +12,7 @@ using namespace client;
 namespace {
 
 constexpr quint16 kEndBlock = 0xFFFF;
+constexpr qint32 kWrongBlockOrder = -43;  // manual 4.6.1
 
 QString hex4(int number) {
     return QStringLiteral("%1").arg(number, 4, 16, QChar(u'0')).toUpper();
@@ -86,8 +87,17 @@ Status CamConClient::restore(const EepromImage& image, const ProgressFn& progres
         // Block 0000 erases the EEPROM and the end block starts the device:
         // both may take far longer than an ordinary reply.
         const bool slow = i == 0 || endBlock;
+        const int retriesBefore = m_link.stats().retries;
         const Result<Fields> reply = m_link.call('!', "EE", fields, slow ? longTimeout : 0);
         if (reply) continue;
+        // Standard framing has no block numbers: when the acknowledgement
+        // of a block was lost, the retry sends the same block again and the
+        // device, which stored it already, answers "wrong order" (-43).
+        const bool retried = m_link.stats().retries != retriesBefore;
+        if (i > 0 && retried && reply.error().kind == ErrorKind::DeviceError &&
+            reply.error().deviceCode == kWrongBlockOrder) {
+            continue;
+        }
         QString state;
         if (i == 0) {
             state = QStringLiteral("The device may already be ERASED (block 0000 starts the "

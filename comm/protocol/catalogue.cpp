@@ -7,112 +7,127 @@ namespace cambench::comm {
 namespace {
 
 // Normalised widths (notes 2).
-constexpr int kSmall = 2;       // small numbers, flags, input/output numbers, counts
-constexpr int kProgram = 4;     // program numbers, ?GPRGMAX, ?GVMAX
-constexpr int kWord = 4;        // 16-bit words
-constexpr int kLong = 8;        // every field the manual writes with 7 or 8 letters
-constexpr int kTextLine = 22;   // names and text lines, including the NUL
-constexpr int kFormat = 10;     // display formats and formatted values, including the NUL
-constexpr int kUserNumber = 6;  // user numbers, including the NUL
-constexpr int kEpromDate = 11;  // "tt.tt.tttt" + NUL
+constexpr int kSmall = 2;         // small numbers, flags, input/output numbers, counts
+constexpr int kProgram = 4;       // program numbers, ?GPRGMAX, ?GVMAX
+constexpr int kWord = 4;          // 16-bit words
+constexpr int kLong = 8;          // every field the manual writes with 7 or 8 letters
+constexpr int kTextLine = 22;     // names and text lines, including the NUL
+constexpr int kFormat = 10;       // display formats and formatted values, including the NUL
+constexpr int kUserNumber = 6;    // user numbers, including the NUL
+constexpr int kEpromDate = 11;    // "tt.tt.tttt" + NUL
 constexpr int kAccessBytes = 32;  // 256 output access bits of ?USER/!USER
 constexpr int kPlcSymbols = 30;   // 5 current paths x 6 symbols (notes 5)
 
-FieldSpec hex(const char* name, int width) { return {name, FieldType::Hex, width}; }
-FieldSpec signedHex(const char* name, int width = kLong) { return {name, FieldType::SignedHex, width}; }
-FieldSpec text(const char* name, int width) { return {name, FieldType::Text, width}; }
-FieldSpec textRest(const char* name) { return {name, FieldType::TextRest, -1}; }
-FieldSpec binary(const char* name, int bytes) { return {name, FieldType::Binary, bytes}; }
-FieldSpec hexBytes(const char* name) { return {name, FieldType::HexBytes, -1}; }
-FieldSpec hexWords(const char* name, int width, int count) { return {name, FieldType::HexWords, width, count}; }
+FieldSpec hex(const char* name, int width) {
+    return {name, FieldType::Hex, width};
+}
+FieldSpec signedHex(const char* name, int width = kLong) {
+    return {name, FieldType::SignedHex, width};
+}
+FieldSpec text(const char* name, int width) {
+    return {name, FieldType::Text, width};
+}
+FieldSpec textRest(const char* name) {
+    return {name, FieldType::TextRest, -1};
+}
+FieldSpec binary(const char* name, int bytes) {
+    return {name, FieldType::Binary, bytes};
+}
+FieldSpec hexBytes(const char* name) {
+    return {name, FieldType::HexBytes, -1};
+}
+FieldSpec hexWords(const char* name, int width, int count) {
+    return {name, FieldType::HexWords, width, count};
+}
 
 // Query with a data reply; command acknowledged with "OK".
-CommandSpec query(const char* name, QList<FieldSpec> request, QList<FieldSpec> reply, const char* section)
-{
+CommandSpec query(const char* name, QList<FieldSpec> request, QList<FieldSpec> reply,
+                  const char* section) {
     return {kQuery, name, std::move(request), ReplyKind::Data, std::move(reply), section};
 }
-CommandSpec command(const char* name, QList<FieldSpec> request, const char* section)
-{
+CommandSpec command(const char* name, QList<FieldSpec> request, const char* section) {
     return {kCommand, name, std::move(request), ReplyKind::Ok, {}, section};
 }
 
-CommandSpec provisional(CommandSpec spec)
-{
+CommandSpec provisional(CommandSpec spec) {
     spec.provisional = true;
     return spec;
 }
-CommandSpec slow(CommandSpec spec)
-{
+CommandSpec slow(CommandSpec spec) {
     spec.timeout = TimeoutClass::Long;
     return spec;
 }
-CommandSpec withOkOptional(CommandSpec spec)
-{
+CommandSpec withOkOptional(CommandSpec spec) {
     spec.okOptional = true;
     return spec;
 }
-CommandSpec withReplyAlias(CommandSpec spec, const char* alias)
-{
+CommandSpec withReplyAlias(CommandSpec spec, const char* alias) {
     spec.replyAliases.append(QByteArray(alias));
     return spec;
 }
-CommandSpec withoutReply(CommandSpec spec)
-{
+CommandSpec withoutReply(CommandSpec spec) {
     spec.replyKind = ReplyKind::None;
     return spec;
 }
 
-// Field lists shared by several rows. Single-value settings read and write a
-// field named "value" (numbers) or "text" (texts), so that settings code can
-// treat them generically.
-const QList<FieldSpec> kNone{};
-QList<FieldSpec> value(int width) { return {hex("value", width)}; }
-QList<FieldSpec> signedValue() { return {signedHex("value")}; }
-QList<FieldSpec> textValue(int width) { return {text("text", width)}; }
-const QList<FieldSpec> kStatusTable{hexBytes("data")};
-
-// The next cam after a search (notes 3): flags "earlier" and/or "more".
-const QList<FieldSpec> kCamBoth{signedHex("on"), signedHex("off"), hex("earlier", kSmall),
-                                hex("more", kSmall)};
+// Single-value settings read and write a field named "value" (numbers) or
+// "text" (texts), so that settings code can treat them generically.
+QList<FieldSpec> value(int width) {
+    return {hex("value", width)};
+}
+QList<FieldSpec> signedValue() {
+    return {signedHex("value")};
+}
+QList<FieldSpec> textValue(int width) {
+    return {text("text", width)};
+}
 
 // Special encoder blocks (notes 3, provisional): '!' = the two text lines and
 // the type, then the same fields as the '?' reply.
-QList<FieldSpec> encoderWrite(QList<FieldSpec> fields)
-{
-    QList<FieldSpec> all{text("text1", kTextLine), text("text2", kTextLine), hex("type", kSmall)};
-    all.append(fields);
-    return all;
+QList<FieldSpec> encoderWrite(const QList<FieldSpec>& fields) {
+    return QList<FieldSpec>{text("text1", kTextLine), text("text2", kTextLine),
+                            hex("type", kSmall)} +
+           fields;
 }
-const QList<FieldSpec> kSsi{hex("resolutionBits", kLong), hex("firstBit", kLong), hex("capping", kLong),
-                            hex("errorBit", kLong)};
-const QList<FieldSpec> kParallel{hex("resolution", kLong), hex("firstInput", kSmall), hex("mode", kSmall)};
-const QList<FieldSpec> kIncremental{hex("resolution", kLong), hex("divider", kLong),
-                                    hex("clearMode", kSmall)};
-const QList<FieldSpec> kMultiturn{hex("resolution", kLong), hex("turns", kLong), hex("divider", kLong)};
-const QList<FieldSpec> kPll{hex("pulsesPerInputPulse", kLong), hex("pulsesPerTurn", kLong),
-                            hex("errorWindow", kLong), hex("pulseInput", kSmall),
-                            hex("clearInput", kSmall), hex("syncOutput", kSmall)};
-const QList<FieldSpec> kTimer{hex("stepTime", kLong), hex("resolution", kLong), hex("holdInput", kSmall),
-                              hex("clearInput", kSmall)};
 
-const QList<FieldSpec> kAnalogueMode{signedHex("minimum"), signedHex("maximum"), text("format", kFormat),
-                                     hex("interpolation", kSmall), hex("disableInput", kSmall),
-                                     signedHex("disableValue"), signedHex("gain"),
-                                     signedHex("offset", kWord)};
+QList<CommandSpec> buildCatalogue() {
+    // Field lists shared by several rows. Locals, not globals: the catalogue
+    // may be built during another file's static initialisation.
+    const QList<FieldSpec> kNone{};
+    const QList<FieldSpec> kStatusTable{hexBytes("data")};
+    // The cam a search found (notes 3) and the flags "earlier" and "more".
+    const QList<FieldSpec> kCamBoth{signedHex("on"), signedHex("off"), hex("earlier", kSmall),
+                                    hex("more", kSmall)};
+    const QList<FieldSpec> kSsi{hex("resolutionBits", kLong), hex("firstBit", kLong),
+                                hex("capping", kLong), hex("errorBit", kLong)};
+    const QList<FieldSpec> kParallel{hex("resolution", kLong), hex("firstInput", kSmall),
+                                     hex("mode", kSmall)};
+    const QList<FieldSpec> kIncremental{hex("resolution", kLong), hex("divider", kLong),
+                                        hex("clearMode", kSmall)};
+    const QList<FieldSpec> kMultiturn{hex("resolution", kLong), hex("turns", kLong),
+                                      hex("divider", kLong)};
+    const QList<FieldSpec> kPll{hex("pulsesPerInputPulse", kLong), hex("pulsesPerTurn", kLong),
+                                hex("errorWindow", kLong),         hex("pulseInput", kSmall),
+                                hex("clearInput", kSmall),         hex("syncOutput", kSmall)};
+    const QList<FieldSpec> kTimer{hex("stepTime", kLong), hex("resolution", kLong),
+                                  hex("holdInput", kSmall), hex("clearInput", kSmall)};
+    const QList<FieldSpec> kAnalogueMode{signedHex("minimum"),        signedHex("maximum"),
+                                         text("format", kFormat),     hex("interpolation", kSmall),
+                                         hex("disableInput", kSmall), signedHex("disableValue"),
+                                         signedHex("gain"),           signedHex("offset", kWord)};
+    const QList<FieldSpec> kUserFields{text("name", kTextLine), text("number", kUserNumber),
+                                       binary("access", kAccessBytes), hex("all", kSmall),
+                                       hex("rights", kLong)};
+    const QList<FieldSpec> kPlcAddress{hex("area", kSmall), hex("number", kSmall)};
+    const QList<FieldSpec> kPlcNetwork{hex("area", kSmall), hex("number", kSmall),
+                                       signedHex("value"), hex("reset", kWord),
+                                       hexWords("symbols", kWord, kPlcSymbols)};
+    const QList<FieldSpec> kPlcValue{hex("area", kSmall), hex("number", kSmall),
+                                     signedHex("value")};
+    const QList<FieldSpec> kErrorText{hex("message", kSmall), text("text1", kTextLine),
+                                      text("text2", kTextLine), text("text3", kTextLine),
+                                      text("text4", kTextLine)};
 
-const QList<FieldSpec> kUserFields{text("name", kTextLine), text("number", kUserNumber),
-                                   binary("access", kAccessBytes), hex("all", kSmall), hex("rights", kLong)};
-
-const QList<FieldSpec> kPlcAddress{hex("area", kSmall), hex("number", kSmall)};
-const QList<FieldSpec> kPlcNetwork{hex("area", kSmall), hex("number", kSmall), signedHex("value"),
-                                   hex("reset", kWord), hexWords("symbols", kWord, kPlcSymbols)};
-const QList<FieldSpec> kPlcValue{hex("area", kSmall), hex("number", kSmall), signedHex("value")};
-
-const QList<FieldSpec> kErrorText{hex("message", kSmall), text("text1", kTextLine), text("text2", kTextLine),
-                                  text("text3", kTextLine), text("text4", kTextLine)};
-
-QList<CommandSpec> buildCatalogue()
-{
     return {
         // 4.3 Checksum on/off (the !C0 request itself carries no checksum).
         command("C0", kNone, "4.3.1"),
@@ -142,7 +157,8 @@ QList<CommandSpec> buildCatalogue()
         provisional(command("PAU", value(kProgram), "5.1.8.2")),
         provisional(query("PNAME", {hex("program", kProgram)},
                           {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.3")),
-        provisional(command("PNAME", {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.4")),
+        provisional(
+            command("PNAME", {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.4")),
         // 5.1.9 is missing, but 5.4.3.5 describes ?UNIT: an empty reply.
         query("UNIT", kNone, kNone, "5.4.3.5"),
 
@@ -153,20 +169,26 @@ QList<CommandSpec> buildCatalogue()
         query("NS", {signedHex("on")}, kCamBoth, "5.2.1.3"),
         query("NN", kNone, kCamBoth, "5.2.1.4"),
         query("NP", kNone, kCamBoth, "5.2.1.5"),
-        command("NINS", {hex("program", kProgram), hex("output", kSmall), signedHex("on"), signedHex("off")},
-                "5.2.1.6"),
-        command("NDEL", {hex("program", kProgram), hex("output", kSmall), signedHex("on")}, "5.2.1.7"),
-        provisional(command("NC", {hex("program", kProgram), hex("output", kSmall), signedHex("oldOn"),
-                                   signedHex("on"), signedHex("off")}, "5.2.1.8")),
-        provisional(query("TZK", {hex("output", kSmall)}, {hex("output", kSmall), hex("value", kLong)},
-                          "5.2.2.1")),
+        command(
+            "NINS",
+            {hex("program", kProgram), hex("output", kSmall), signedHex("on"), signedHex("off")},
+            "5.2.1.6"),
+        command("NDEL", {hex("program", kProgram), hex("output", kSmall), signedHex("on")},
+                "5.2.1.7"),
+        provisional(command("NC",
+                            {hex("program", kProgram), hex("output", kSmall), signedHex("oldOn"),
+                             signedHex("on"), signedHex("off")},
+                            "5.2.1.8")),
+        provisional(query("TZK", {hex("output", kSmall)},
+                          {hex("output", kSmall), hex("value", kLong)}, "5.2.2.1")),
         provisional(command("TZK", {hex("output", kSmall), hex("value", kLong)}, "5.2.2.2")),
-        provisional(query("ANAME", {hex("output", kSmall)}, {hex("output", kSmall), text("text", kTextLine)},
-                          "5.2.3")),
+        provisional(query("ANAME", {hex("output", kSmall)},
+                          {hex("output", kSmall), text("text", kTextLine)}, "5.2.3")),
         provisional(command("ANAME", {hex("output", kSmall), text("text", kTextLine)}, "5.2.4")),
         command("PDEL", {hex("program", kProgram)}, "5.2.5"),
         command("PCPY", {hex("target", kProgram), hex("source", kProgram)}, "5.2.6"),
-        command("PACPY", {hex("program", kProgram), hex("target", kSmall), hex("source", kSmall)}, "5.2.7"),
+        command("PACPY", {hex("program", kProgram), hex("target", kSmall), hex("source", kSmall)},
+                "5.2.7"),
         command("PT", {hex("program", kProgram), hex("type", kSmall)}, "5.2.8"),
 
         // 5.3.1 Encoder
@@ -299,7 +321,8 @@ QList<CommandSpec> buildCatalogue()
         // 5.4.4 Language, 5.4.5 user texts
         query("GSPRACHE", kNone, value(kSmall), "5.4.4.1"),
         command("GSPRACHE", value(kSmall), "5.4.4.2"),
-        query("BTXT", {hex("line", kSmall)}, {hex("line", kSmall), text("text", kTextLine)}, "5.4.5.1"),
+        query("BTXT", {hex("line", kSmall)}, {hex("line", kSmall), text("text", kTextLine)},
+              "5.4.5.1"),
         command("BTXT", {hex("line", kSmall), text("text", kTextLine)}, "5.4.5.2"),
 
         // 5.4.6 PLC configuration
@@ -362,22 +385,19 @@ QList<CommandSpec> buildCatalogue()
 
 }  // namespace
 
-const QList<CommandSpec>& commandCatalogue()
-{
+const QList<CommandSpec>& commandCatalogue() {
     static const QList<CommandSpec> catalogue = buildCatalogue();
     return catalogue;
 }
 
-const CommandSpec* findCommand(char kind, QByteArrayView name)
-{
+const CommandSpec* findCommand(char kind, QByteArrayView name) {
     for (const CommandSpec& spec : commandCatalogue()) {
         if (spec.kind == kind && name == QByteArrayView(spec.name)) return &spec;
     }
     return nullptr;
 }
 
-const CommandSpec* matchRequest(char kind, QByteArrayView body)
-{
+const CommandSpec* matchRequest(char kind, QByteArrayView body) {
     const CommandSpec* best = nullptr;
     qsizetype bestLength = -1;
     for (const CommandSpec& spec : commandCatalogue()) {

@@ -10,15 +10,13 @@ constexpr quint8 kHeaderBlock = 0xC0;
 
 }  // namespace
 
-quint8 checksum(char lead, QByteArrayView body)
-{
+quint8 checksum(char lead, QByteArrayView body) {
     quint8 sum = quint8(lead);
     for (char c : body) sum = quint8(sum + quint8(c));
     return quint8(~sum);
 }
 
-QByteArray checksumText(quint8 sum)
-{
+QByteArray checksumText(quint8 sum) {
     static const char kDigits[] = "0123456789ABCDEF";
     QByteArray text(2, '0');
     text[0] = kDigits[sum >> 4];
@@ -26,8 +24,7 @@ QByteArray checksumText(quint8 sum)
     return text;
 }
 
-QByteArray escapeBody(QByteArrayView body)
-{
+QByteArray escapeBody(QByteArrayView body) {
     QByteArray out;
     out.reserve(body.size() + 8);
     for (char c : body) {
@@ -37,8 +34,7 @@ QByteArray escapeBody(QByteArrayView body)
     return out;
 }
 
-QByteArray encodeFrame(const Frame& frame)
-{
+QByteArray encodeFrame(const Frame& frame) {
     QByteArray out;
     out.reserve(frame.body.size() + 10);
     if (frame.address) {

@@ -8,8 +8,7 @@ namespace {
 
 constexpr int kHeaderBytes = 3;
 
-int hexValue(char c)
-{
+int hexValue(char c) {
     if (c >= '0' && c <= '9') return c - '0';
     if (c >= 'A' && c <= 'F') return c - 'A' + 10;
     if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -18,14 +17,12 @@ int hexValue(char c)
 
 // Manual 4.3.1: "!C0" travels without a checksum even while checksums are on,
 // and the device acknowledges it with ":C0OK" without one.
-bool isUncheckedC0(char lead, const QByteArray& body)
-{
+bool isUncheckedC0(char lead, const QByteArray& body) {
     return (lead == kCommand && body == "C0") || (lead == kReply && body == "C0OK");
 }
 
 // Multiuser header byte i (0..2) lies in 0x40+0x40*i .. 0x7F+0x40*i.
-bool isHeaderByte(int index, char c)
-{
+bool isHeaderByte(int index, char c) {
     const int low = 0x40 + 0x40 * index;
     const int value = quint8(c);
     return value >= low && value <= low + 0x3F;
@@ -34,18 +31,21 @@ bool isHeaderByte(int index, char c)
 }  // namespace
 
 StreamDecoder::StreamDecoder(Framing framing, QByteArray acceptLeads)
-    : m_framing(framing), m_acceptLeads(std::move(acceptLeads))
-{
-}
+    : m_framing(framing), m_acceptLeads(std::move(acceptLeads)) {}
 
-QList<DecodeEvent> StreamDecoder::feed(QByteArrayView bytes)
-{
+QList<DecodeEvent> StreamDecoder::feed(QByteArrayView bytes) {
     QList<DecodeEvent> events;
     for (char c : bytes) {
         switch (m_state) {
-        case State::Hunt: huntByte(c, events); break;
-        case State::Body: bodyByte(c, events); break;
-        case State::Discard: discardByte(c, events); break;
+            case State::Hunt:
+                huntByte(c, events);
+                break;
+            case State::Body:
+                bodyByte(c, events);
+                break;
+            case State::Discard:
+                discardByte(c, events);
+                break;
         }
     }
     // Garbage is reported once per feed so that a log shows it near the time
@@ -54,8 +54,7 @@ QList<DecodeEvent> StreamDecoder::feed(QByteArrayView bytes)
     return events;
 }
 
-void StreamDecoder::reset()
-{
+void StreamDecoder::reset() {
     m_buffer.clear();
     m_body.clear();
     m_garbage.clear();
@@ -65,8 +64,7 @@ void StreamDecoder::reset()
     m_state = State::Hunt;
 }
 
-bool StreamDecoder::isFrameStartPrefix(QByteArrayView bytes) const
-{
+bool StreamDecoder::isFrameStartPrefix(QByteArrayView bytes) const {
     const int header = m_framing == Framing::Multiuser ? kHeaderBytes : 0;
     for (int i = 0; i < bytes.size() && i <= header; ++i) {
         const bool fits = i < header ? isHeaderByte(i, bytes[i]) : m_acceptLeads.contains(bytes[i]);
@@ -75,8 +73,7 @@ bool StreamDecoder::isFrameStartPrefix(QByteArrayView bytes) const
     return true;
 }
 
-void StreamDecoder::huntByte(char c, QList<DecodeEvent>& events)
-{
+void StreamDecoder::huntByte(char c, QList<DecodeEvent>& events) {
     m_buffer.append(c);
     // Drop leading bytes until what is held could still begin a frame.
     while (!m_buffer.isEmpty() && !isFrameStartPrefix(m_buffer)) {
@@ -90,16 +87,14 @@ void StreamDecoder::huntByte(char c, QList<DecodeEvent>& events)
     }
 }
 
-void StreamDecoder::startBody()
-{
+void StreamDecoder::startBody() {
     m_state = State::Body;
     m_body.clear();
     m_escaped = false;
     m_crSeen = false;
 }
 
-void StreamDecoder::bodyByte(char c, QList<DecodeEvent>& events)
-{
+void StreamDecoder::bodyByte(char c, QList<DecodeEvent>& events) {
     if (m_crSeen) {
         if (c == kLf) {
             m_buffer.append(c);
@@ -140,8 +135,7 @@ void StreamDecoder::bodyByte(char c, QList<DecodeEvent>& events)
     }
 }
 
-void StreamDecoder::discardByte(char c, QList<DecodeEvent>& events)
-{
+void StreamDecoder::discardByte(char c, QList<DecodeEvent>& events) {
     addGarbage(QByteArrayView(&c, 1), QStringLiteral("the rest of an oversized frame"), events);
     if (m_escaped) {
         m_escaped = false;
@@ -157,8 +151,7 @@ void StreamDecoder::discardByte(char c, QList<DecodeEvent>& events)
     m_escaped = c == kEsc;
 }
 
-void StreamDecoder::completeFrame(QList<DecodeEvent>& events)
-{
+void StreamDecoder::completeFrame(QList<DecodeEvent>& events) {
     const int header = m_framing == Framing::Multiuser ? kHeaderBytes : 0;
     DecodeEvent event;
     event.raw = m_buffer;
@@ -204,21 +197,20 @@ void StreamDecoder::completeFrame(QList<DecodeEvent>& events)
 }
 
 void StreamDecoder::addGarbage(QByteArrayView bytes, const QString& reason,
-                               QList<DecodeEvent>& events)
-{
+                               QList<DecodeEvent>& events) {
     if (!m_garbage.isEmpty() && reason != m_garbageReason) flushGarbage(events);
     m_garbageReason = reason;
     m_garbage.append(bytes);
     if (m_garbage.size() >= kMaxFrameBytes) flushGarbage(events);
 }
 
-void StreamDecoder::flushGarbage(QList<DecodeEvent>& events)
-{
+void StreamDecoder::flushGarbage(QList<DecodeEvent>& events) {
     if (m_garbage.isEmpty()) return;
     DecodeEvent event;
     event.kind = DecodeEvent::Garbage;
     event.raw = m_garbage;
-    event.detail = QStringLiteral("Skipped %1 bytes: %2.").arg(m_garbage.size()).arg(m_garbageReason);
+    event.detail =
+        QStringLiteral("Skipped %1 bytes: %2.").arg(m_garbage.size()).arg(m_garbageReason);
     qCDebug(commProtocolLog) << event.detail;
     events.append(event);
     m_garbage.clear();

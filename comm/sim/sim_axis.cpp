@@ -6,7 +6,10 @@
 namespace cambench::comm {
 
 SimAxis::SimAxis(qint32 minPosition, qint32 maxPosition, double unitsPerSecond)
-    : m_min(minPosition), m_max(maxPosition), m_unitsPerSecond(unitsPerSecond), m_basePosition(minPosition) {
+    : m_min(minPosition),
+      m_max(maxPosition),
+      m_unitsPerSecond(unitsPerSecond),
+      m_basePosition(minPosition) {
     m_timer.start();
 }
 
@@ -23,7 +26,9 @@ qint32 SimAxis::position() const {
     return qint32(m_min + (offset < 0 ? offset + span() : offset));
 }
 
-double SimAxis::rpm() const { return span() > 0 ? unitsPerSecond() * 60.0 / double(span()) : 0.0; }
+double SimAxis::rpm() const {
+    return span() > 0 ? unitsPerSecond() * 60.0 / double(span()) : 0.0;
+}
 
 void SimAxis::setRunning(bool running) {
     const qint32 current = position();

@@ -18,10 +18,13 @@ Fields camFields(const SimCamCursor::Answer& answer) {
 }
 
 bool validTrack(const SimDevice& device, const Fields& request) {
-    return validProgram(device, request.num("program")) && validOutput(device, request.num("output"));
+    return validProgram(device, request.num("program")) &&
+           validOutput(device, request.num("output"));
 }
 
-Cam requestCam(const Fields& request) { return {qint32(request.num("on")), qint32(request.num("off"))}; }
+Cam requestCam(const Fields& request) {
+    return {qint32(request.num("on")), qint32(request.num("off"))};
+}
 
 // !PT: 0 = running light (one cam per output, one after the other),
 // 1 = every output on from the minimum to half the maximum.
@@ -34,7 +37,8 @@ void testProgram(SimDevice& device, int program, int type) {
         if (type == 0) {
             const qint64 width = std::max<qint64>(1, span / profile.outputs);
             const auto on = qint32(profile.minPosition + (output * width) % span);
-            cams.insert(program, output, {on, qint32(std::min<qint64>(on + width, profile.maxPosition))});
+            cams.insert(program, output,
+                        {on, qint32(std::min<qint64>(on + width, profile.maxPosition))});
         } else {
             cams.insert(program, output, {profile.minPosition, profile.maxPosition / 2});
         }
@@ -44,7 +48,8 @@ void testProgram(SimDevice& device, int program, int type) {
 void registerSearch(SimDevice& d) {
     d.addHandler(kQuery, "NF", [&d](const Fields& r) {
         if (!validTrack(d, r)) return SimResult::error(sim_errors::kUnknown);
-        return SimResult::data(camFields(d.cursor().first(d.state().cams, int(r.num("program")), int(r.num("output")))));
+        return SimResult::data(camFields(
+            d.cursor().first(d.state().cams, int(r.num("program")), int(r.num("output")))));
     });
     const auto moving = [&d](SimCamCursor::Answer (SimCamCursor::*move)(const SimCamStore&)) {
         return [&d, move](const Fields&) {
@@ -64,11 +69,13 @@ void registerSearch(SimDevice& d) {
 void registerEditing(SimDevice& d) {
     d.addHandler(kCommand, "NINS", [&d](const Fields& r) {
         if (!validTrack(d, r)) return SimResult::error(sim_errors::kUnknown);
-        return SimResult::okOr(d.state().cams.insert(int(r.num("program")), int(r.num("output")), requestCam(r)));
+        return SimResult::okOr(
+            d.state().cams.insert(int(r.num("program")), int(r.num("output")), requestCam(r)));
     });
     d.addHandler(kCommand, "NDEL", [&d](const Fields& r) {
         if (!validTrack(d, r)) return SimResult::error(sim_errors::kUnknown);
-        return SimResult::okOr(d.state().cams.remove(int(r.num("program")), int(r.num("output")), qint32(r.num("on"))));
+        return SimResult::okOr(d.state().cams.remove(int(r.num("program")), int(r.num("output")),
+                                                     qint32(r.num("on"))));
     });
     d.addHandler(kCommand, "NC", [&d](const Fields& r) {
         if (!validTrack(d, r)) return SimResult::error(sim_errors::kUnknown);
@@ -96,7 +103,8 @@ void registerEditing(SimDevice& d) {
         return SimResult::ok();
     });
     d.addHandler(kCommand, "PT", [&d](const Fields& r) {
-        if (!validProgram(d, r.num("program")) || r.num("type") > 1) return SimResult::error(sim_errors::kUnknown);
+        if (!validProgram(d, r.num("program")) || r.num("type") > 1)
+            return SimResult::error(sim_errors::kUnknown);
         testProgram(d, int(r.num("program")), int(r.num("type")));
         return SimResult::ok();
     });

@@ -13,7 +13,9 @@ QList<std::pair<qint64, qint64>> pieces(const Cam& cam, qint32 min, qint32 max) 
     return {{cam.on, qint64(max) + 1}, {min, cam.off}};
 }
 
-bool byOn(const Cam& a, const Cam& b) { return a.on < b.on; }
+bool byOn(const Cam& a, const Cam& b) {
+    return a.on < b.on;
+}
 
 }  // namespace
 
@@ -65,7 +67,8 @@ qint32 SimCamStore::insert(int program, int output, Cam cam) {
 
 qint32 SimCamStore::remove(int program, int output, qint32 on) {
     QList<Cam> cams = track(program, output);
-    const auto it = std::find_if(cams.begin(), cams.end(), [on](const Cam& c) { return c.on == on; });
+    const auto it =
+        std::find_if(cams.begin(), cams.end(), [on](const Cam& c) { return c.on == on; });
     if (it == cams.end()) return sim_errors::kUnknown;
     cams.erase(it);
     setTrack(program, output, std::move(cams));
@@ -84,7 +87,9 @@ qint32 SimCamStore::change(int program, int output, qint32 oldOn, Cam cam) {
     return 0;
 }
 
-void SimCamStore::removeProgram(int program) { m_programs.remove(program); }
+void SimCamStore::removeProgram(int program) {
+    m_programs.remove(program);
+}
 
 void SimCamStore::copyProgram(int from, int to) {
     if (from == to) return;
@@ -160,8 +165,8 @@ SimCamCursor::Answer SimCamCursor::previous(const SimCamStore& store) {
 
 SimCamCursor::Answer SimCamCursor::search(const SimCamStore& store, qint32 fromOn) {
     const QList<Cam> cams = store.track(m_program, m_output);
-    const auto it = std::find_if(cams.begin(), cams.end(),
-                                 [fromOn](const Cam& c) { return c.on >= fromOn; });
+    const auto it =
+        std::find_if(cams.begin(), cams.end(), [fromOn](const Cam& c) { return c.on >= fromOn; });
     return at(cams, int(it - cams.begin()));
 }
 

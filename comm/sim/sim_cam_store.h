@@ -9,7 +9,7 @@ namespace cambench::comm {
 
 // Device error numbers the simulator answers with (manual 4.6.1).
 namespace sim_errors {
-constexpr qint32 kUnknown = -1;          // invalid value, overlap, no such item
+constexpr qint32 kUnknown = -1;  // invalid value, overlap, no such item
 constexpr qint32 kRamTooSmall = -10;
 constexpr qint32 kDeadTimeTooLarge = -12;
 constexpr qint32 kEepromFull = -21;

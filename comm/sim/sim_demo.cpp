@@ -37,9 +37,11 @@ void loadDemoState(SimDevice& device) {
     addCams(device, 1, 3, {{100, 110}, {300, 350}});
     addCams(device, 2, 5, {{5, 355}});
     state.programNames = {{0, "Standard"}, {1, "Format A4"}, {2, "Cleaning"}};
-    state.outputNames = {{0, "Glue valve"}, {1, "Knife"}, {2, "Stacker"}, {3, "Punch"}, {5, "Blower"}};
+    state.outputNames = {
+        {0, "Glue valve"}, {1, "Knife"}, {2, "Stacker"}, {3, "Punch"}, {5, "Blower"}};
     state.deadTimes = {{0, 25}, {1, 120}, {3, 9999}};
-    state.users = {demoUser("Supervisor", "4711", 0xEF, 256), demoUser("Operator", "1234", 0x01, 8)};
+    state.users = {demoUser("Supervisor", "4711", 0xEF, 256),
+                   demoUser("Operator", "1234", 0x01, 8)};
     SimPlcNetwork andGate;  // O0 = I1 AND M2
     andGate.symbols[0] = 0x0101;
     andGate.symbols[1] = 0x0A02;
@@ -73,7 +75,9 @@ void fillBenchmarkCams(SimDevice& device, int camsPerTrack) {
 std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile) {
     auto line = std::make_unique<SimLine>(config.effectiveFraming());
     SimProfile sized = profile;
-    sized.camCapacity = std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
+    sized.protocol = config.effectiveFraming() == Framing::Multiuser ? 2 : 1;
+    sized.camCapacity =
+        std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
     for (int number : config.devices) {
         SimDevice& device = line->addDevice(std::make_unique<SimDevice>(sized, number));
         loadDemoState(device);

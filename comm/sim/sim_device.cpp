@@ -11,7 +11,9 @@ namespace cambench::comm {
 
 namespace {
 
-QByteArray handlerKey(char kind, QByteArrayView name) { return QByteArray(1, kind) + name.toByteArray(); }
+QByteArray handlerKey(char kind, QByteArrayView name) {
+    return QByteArray(1, kind) + name.toByteArray();
+}
 
 }  // namespace
 
@@ -60,12 +62,14 @@ void SimDevice::erase() {
 std::optional<SimDevice::Reply> SimDevice::execute(const Frame& request) {
     ++m_executions;
     const CommandSpec* spec = matchRequest(request.lead, request.body);
-    const auto handler = spec ? m_handlers.constFind(handlerKey(spec->kind, spec->name)) : m_handlers.cend();
+    const auto handler =
+        spec ? m_handlers.constFind(handlerKey(spec->kind, spec->name)) : m_handlers.cend();
     SimResult result;
     Reply reply;
     reply.frame.lead = kReply;
     if (handler == m_handlers.cend()) {
-        qCDebug(commSimLog) << "device" << m_number << "does not understand" << request.lead << request.body.left(12);
+        qCDebug(commSimLog) << "device" << m_number << "does not understand" << request.lead
+                            << request.body.left(12);
         reply.frame.body = notUnderstoodBody(m_profile.epromDate);
     } else {
         const Result<Fields> fields = decodeRequestFields(*spec, request.body);
@@ -86,15 +90,18 @@ std::optional<SimDevice::Reply> SimDevice::execute(const Frame& request) {
 
 QByteArray SimDevice::replyBody(const CommandSpec& spec, const SimResult& result) const {
     switch (result.kind) {
-    case SimResult::Data: {
-        const Result<QByteArray> body = encodeReplyBody(spec, result.fields);
-        if (body) return *body;
-        qCWarning(commSimLog) << "cannot encode reply to" << spec.name << ":" << body.error().message;
-        return errorReplyBody(spec, sim_errors::kUnknown);
-    }
-    case SimResult::Error: return errorReplyBody(spec, result.code);
-    case SimResult::Ok:
-    case SimResult::NoReply: break;
+        case SimResult::Data: {
+            const Result<QByteArray> body = encodeReplyBody(spec, result.fields);
+            if (body) return *body;
+            qCWarning(commSimLog) << "cannot encode reply to" << spec.name << ":"
+                                  << body.error().message;
+            return errorReplyBody(spec, sim_errors::kUnknown);
+        }
+        case SimResult::Error:
+            return errorReplyBody(spec, result.code);
+        case SimResult::Ok:
+        case SimResult::NoReply:
+            break;
     }
     return okReplyBody(spec);
 }

@@ -20,10 +20,10 @@ namespace cambench::comm {
 // What a device knows while it runs but does not keep in its EEPROM.
 struct SimRuntime {
     static constexpr int kRamBytes = 4096;
-    int errorState = 0;                 // ?ERR
-    QHash<SimPlcKey, qint32> plcActuals;  // timer and counter actual values (?SPSIST)
-    QByteArray vInputs;                 // !GVSPSTAB
-    int userCursor = 0;                 // position of the ?USER00 / ?USER01 walk
+    int errorState = 0;                            // ?ERR
+    QHash<SimPlcKey, qint32> plcActuals;           // timer and counter actual values (?SPSIST)
+    QByteArray vInputs;                            // !GVSPSTAB
+    int userCursor = 0;                            // position of the ?USER00 / ?USER01 walk
     QByteArray ram = QByteArray(kRamBytes, '\0');  // ?ML / !MS / !MW
 };
 

@@ -42,7 +42,8 @@ SimEeprom::WriteOutcome SimEeprom::write(int number, const QByteArray& data) {
         outcome.restored = std::move(state).value();
         return outcome;
     }
-    if (sim_eeprom::blockLength(quint8(data.at(0))) != data.size()) return abort(sim_errors::kBlockLength);
+    if (sim_eeprom::blockLength(quint8(data.at(0))) != data.size())
+        return abort(sim_errors::kBlockLength);
     m_received.append(data);
     ++m_next;
     return {};

@@ -22,8 +22,8 @@ public:
     std::optional<QByteArray> read(int number, const SimState& state);
 
     struct WriteOutcome {
-        qint32 error = 0;       // 0 or a device error number (-41..-46)
-        bool erased = false;    // block 0000 accepted: the device is now erased
+        qint32 error = 0;                  // 0 or a device error number (-41..-46)
+        bool erased = false;               // block 0000 accepted: the device is now erased
         std::optional<SimState> restored;  // closing block: the device starts with this
     };
     // !EE: one block of a restore.

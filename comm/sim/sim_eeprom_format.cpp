@@ -45,10 +45,22 @@ QByteArray untilNul(const QByteArray& raw) {
 class Writer {
 public:
     Writer() : m_stream(&m_bytes, QIODevice::WriteOnly) {}
-    Writer& u8(int v) { m_stream << quint8(v); return *this; }
-    Writer& u16(int v) { m_stream << quint16(v); return *this; }
-    Writer& i32(qint32 v) { m_stream << v; return *this; }
-    Writer& u32(quint32 v) { m_stream << v; return *this; }
+    Writer& u8(int v) {
+        m_stream << quint8(v);
+        return *this;
+    }
+    Writer& u16(int v) {
+        m_stream << quint16(v);
+        return *this;
+    }
+    Writer& i32(qint32 v) {
+        m_stream << v;
+        return *this;
+    }
+    Writer& u32(quint32 v) {
+        m_stream << v;
+        return *this;
+    }
     Writer& raw(const QByteArray& bytes) {
         m_stream.writeRawData(bytes.constData(), int(bytes.size()));
         return *this;
@@ -63,13 +75,30 @@ private:
 class Reader {
 public:
     explicit Reader(const QByteArray& bytes) : m_bytes(bytes), m_stream(m_bytes) {}
-    int u8() { quint8 v = 0; m_stream >> v; return v; }
-    int u16() { quint16 v = 0; m_stream >> v; return v; }
-    qint32 i32() { qint32 v = 0; m_stream >> v; return v; }
-    quint32 u32() { quint32 v = 0; m_stream >> v; return v; }
+    int u8() {
+        quint8 v = 0;
+        m_stream >> v;
+        return v;
+    }
+    int u16() {
+        quint16 v = 0;
+        m_stream >> v;
+        return v;
+    }
+    qint32 i32() {
+        qint32 v = 0;
+        m_stream >> v;
+        return v;
+    }
+    quint32 u32() {
+        quint32 v = 0;
+        m_stream >> v;
+        return v;
+    }
     QByteArray raw(int count) {
         QByteArray out(count, '\0');
-        if (m_stream.readRawData(out.data(), count) != count) m_stream.setStatus(QDataStream::ReadPastEnd);
+        if (m_stream.readRawData(out.data(), count) != count)
+            m_stream.setStatus(QDataStream::ReadPastEnd);
         return out;
     }
     bool ok() const { return m_stream.status() == QDataStream::Ok; }
@@ -125,7 +154,8 @@ void appendSettings(QList<QByteArray>& blocks, const QMap<SimSettingKey, Fields>
         if (!query) continue;
         const Result<QByteArray> data = encodeFields(query->reply, it.value());
         if (!data) {
-            qCWarning(commSimLog) << "setting" << it.key().first << "not stored:" << data.error().message;
+            qCWarning(commSimLog) << "setting" << it.key().first
+                                  << "not stored:" << data.error().message;
             continue;
         }
         Writer w;
@@ -138,7 +168,8 @@ void appendSettings(QList<QByteArray>& blocks, const QMap<SimSettingKey, Fields>
     }
 }
 
-void appendTextLine(QList<QByteArray>& blocks, char kind, int index, int line, const QByteArray& text) {
+void appendTextLine(QList<QByteArray>& blocks, char kind, int index, int line,
+                    const QByteArray& text) {
     Writer w;
     w.u8(kind).u8(index).u8(line).raw(fixedText(text, kTextBytes));
     appendRecord(blocks, TextLine, w.bytes());
@@ -146,7 +177,9 @@ void appendTextLine(QList<QByteArray>& blocks, char kind, int index, int line, c
 
 }  // namespace
 
-int blockLength(quint8 firstByte) { return (firstByte >> 4) * 6; }
+int blockLength(quint8 firstByte) {
+    return (firstByte >> 4) * 6;
+}
 
 QList<QByteArray> serialize(const SimState& state, const SimProfile& profile) {
     QList<QByteArray> blocks{basicBlock(state, profile)};
@@ -155,15 +188,19 @@ QList<QByteArray> serialize(const SimState& state, const SimProfile& profile) {
         appendRecord(blocks, DeadTime, Writer().u8(it.key()).i32(it.value()).bytes());
     }
     for (auto it = state.outputNames.cbegin(); it != state.outputNames.cend(); ++it) {
-        appendRecord(blocks, OutputName, Writer().u8(it.key()).raw(fixedText(it.value(), kTextBytes)).bytes());
+        appendRecord(blocks, OutputName,
+                     Writer().u8(it.key()).raw(fixedText(it.value(), kTextBytes)).bytes());
     }
     for (auto it = state.programNames.cbegin(); it != state.programNames.cend(); ++it) {
-        appendRecord(blocks, ProgramName, Writer().u16(it.key()).raw(fixedText(it.value(), kTextBytes)).bytes());
+        appendRecord(blocks, ProgramName,
+                     Writer().u16(it.key()).raw(fixedText(it.value(), kTextBytes)).bytes());
     }
     for (const SimUser& user : state.users) {
         Writer w;
         w.raw(fixedText(user.name, kTextBytes)).raw(fixedText(user.number, kUserNumberBytes));
-        w.raw(user.access.leftJustified(SimUser::kAccessBytes, '\0', true)).u8(user.allOutputs).u32(user.rights);
+        w.raw(user.access.leftJustified(SimUser::kAccessBytes, '\0', true))
+            .u8(user.allOutputs)
+            .u32(user.rights);
         appendRecord(blocks, User, w.bytes());
     }
     for (auto it = state.plcNetworks.cbegin(); it != state.plcNetworks.cend(); ++it) {
@@ -193,49 +230,55 @@ public:
     // Empty on success, else what is wrong with the record.
     QString record(int type, Reader& r) {
         switch (type) {
-        case Cams: return cams(r);
-        case DeadTime: {
-            const int output = r.u8();
-            const qint32 value = r.i32();
-            if (!validOutput(output)) return QStringLiteral("dead time of output %1").arg(output);
-            m_state.deadTimes.insert(output, value);
-            return {};
-        }
-        case OutputName: {
-            const int output = r.u8();
-            if (!validOutput(output)) return QStringLiteral("name of output %1").arg(output);
-            m_state.outputNames.insert(output, untilNul(r.raw(kTextBytes)));
-            return {};
-        }
-        case ProgramName: {
-            const int program = r.u16();
-            if (!validProgram(program)) return QStringLiteral("name of program %1").arg(program);
-            m_state.programNames.insert(program, untilNul(r.raw(kTextBytes)));
-            return {};
-        }
-        case User: {
-            SimUser user;
-            user.name = untilNul(r.raw(kTextBytes));
-            user.number = untilNul(r.raw(kUserNumberBytes));
-            user.access = r.raw(SimUser::kAccessBytes);
-            user.allOutputs = r.u8() != 0;
-            user.rights = r.u32();
-            m_state.users.append(user);
-            return {};
-        }
-        case PlcNetwork: {
-            const int area = r.u8();
-            const int number = r.u8();
-            SimPlcNetwork network;
-            network.value = r.i32();
-            network.reset = quint16(r.u16());
-            for (quint16& symbol : network.symbols) symbol = quint16(r.u16());
-            m_state.plcNetworks.insert({area, number}, network);
-            return {};
-        }
-        case Setting: return setting(r);
-        case TextLine: return textLine(r);
-        default: return QStringLiteral("unknown record type %1").arg(type);
+            case Cams:
+                return cams(r);
+            case DeadTime: {
+                const int output = r.u8();
+                const qint32 value = r.i32();
+                if (!validOutput(output))
+                    return QStringLiteral("dead time of output %1").arg(output);
+                m_state.deadTimes.insert(output, value);
+                return {};
+            }
+            case OutputName: {
+                const int output = r.u8();
+                if (!validOutput(output)) return QStringLiteral("name of output %1").arg(output);
+                m_state.outputNames.insert(output, untilNul(r.raw(kTextBytes)));
+                return {};
+            }
+            case ProgramName: {
+                const int program = r.u16();
+                if (!validProgram(program))
+                    return QStringLiteral("name of program %1").arg(program);
+                m_state.programNames.insert(program, untilNul(r.raw(kTextBytes)));
+                return {};
+            }
+            case User: {
+                SimUser user;
+                user.name = untilNul(r.raw(kTextBytes));
+                user.number = untilNul(r.raw(kUserNumberBytes));
+                user.access = r.raw(SimUser::kAccessBytes);
+                user.allOutputs = r.u8() != 0;
+                user.rights = r.u32();
+                m_state.users.append(user);
+                return {};
+            }
+            case PlcNetwork: {
+                const int area = r.u8();
+                const int number = r.u8();
+                SimPlcNetwork network;
+                network.value = r.i32();
+                network.reset = quint16(r.u16());
+                for (quint16& symbol : network.symbols) symbol = quint16(r.u16());
+                m_state.plcNetworks.insert({area, number}, network);
+                return {};
+            }
+            case Setting:
+                return setting(r);
+            case TextLine:
+                return textLine(r);
+            default:
+                return QStringLiteral("unknown record type %1").arg(type);
         }
     }
 
@@ -254,7 +297,11 @@ private:
             const qint32 on = r.i32();
             const qint32 off = r.i32();
             if (m_state.cams.insert(program, output, {on, off}) != 0) {
-                return QStringLiteral("cam %1..%2 of program %3 output %4").arg(on).arg(off).arg(program).arg(output);
+                return QStringLiteral("cam %1..%2 of program %3 output %4")
+                    .arg(on)
+                    .arg(off)
+                    .arg(program)
+                    .arg(output);
             }
         }
         return {};
@@ -267,7 +314,9 @@ private:
         const CommandSpec* query = findCommand(kQuery, name);
         if (!query) return QStringLiteral("unknown setting %1").arg(QString::fromLatin1(name));
         Result<Fields> fields = decodeFields(query->reply, data);
-        if (!fields) return QStringLiteral("setting %1: %2").arg(QString::fromLatin1(name), fields.error().message);
+        if (!fields)
+            return QStringLiteral("setting %1: %2")
+                .arg(QString::fromLatin1(name), fields.error().message);
         m_state.settings.insert({name, index}, std::move(fields).value());
         return {};
     }
@@ -299,14 +348,16 @@ Result<SimState> parse(const QList<QByteArray>& blocks, const SimProfile& profil
     }
     Reader basic(blocks.first());
     if (basic.raw(4) != QByteArray(kMagic, 4) || basic.u8() != kLayoutVersion) {
-        return Error::invalidData(QStringLiteral("EEPROM block 0000 is not from a simulated CamCon"));
+        return Error::invalidData(
+            QStringLiteral("EEPROM block 0000 is not from a simulated CamCon"));
     }
     basic.raw(11 + 3 * 2 + 3 * 4);  // identity and capacities: informative only
     SimState state;
     state.cams = SimCamStore(profile.minPosition, profile.maxPosition, profile.camCapacity);
     state.activeProgram = basic.u16();
     if (state.activeProgram >= profile.programs) {
-        return Error::invalidData(QStringLiteral("active program %1 out of range").arg(state.activeProgram));
+        return Error::invalidData(
+            QStringLiteral("active program %1 out of range").arg(state.activeProgram));
     }
     Parser parser(state, profile);
     for (qsizetype i = 1; i < blocks.size(); ++i) {
@@ -317,9 +368,10 @@ Result<SimState> parse(const QList<QByteArray>& blocks, const SimProfile& profil
         Reader reader(block.mid(1));
         const QString problem = parser.record(quint8(block.at(0)) & 0x0F, reader);
         if (!problem.isEmpty() || !reader.ok()) {
-            return Error::invalidData(QStringLiteral("EEPROM block %1: %2")
-                                          .arg(i)
-                                          .arg(problem.isEmpty() ? QStringLiteral("record too short") : problem));
+            return Error::invalidData(
+                QStringLiteral("EEPROM block %1: %2")
+                    .arg(i)
+                    .arg(problem.isEmpty() ? QStringLiteral("record too short") : problem));
         }
     }
     return state;

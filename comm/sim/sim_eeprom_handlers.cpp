@@ -1,5 +1,5 @@
-#include "sim_handlers.h"
 #include "sim_device.h"
+#include "sim_handlers.h"
 
 namespace cambench::comm {
 
@@ -11,7 +11,8 @@ void registerEepromHandlers(SimDevice& d) {
     d.addHandler(kQuery, "EE", [&d](const Fields& r) {
         const std::optional<QByteArray> block = d.eeprom().read(int(r.num("block")), d.state());
         Fields reply;
-        reply.set("block", block ? r.num("block") : kNoMoreBlocks).setBytes("data", block.value_or(QByteArray()));
+        reply.set("block", block ? r.num("block") : kNoMoreBlocks)
+            .setBytes("data", block.value_or(QByteArray()));
         return SimResult::data(reply);
     });
     d.addHandler(kCommand, "EE", [&d](const Fields& r) {

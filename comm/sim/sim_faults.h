@@ -20,9 +20,9 @@ struct SimFaultSettings {
 };
 
 struct SimFaultCounters {
-    int replies = 0;    // replies offered to the injector
+    int replies = 0;  // replies offered to the injector
     int corrupted = 0;
-    int dropped = 0;    // by chance or because the device is dead
+    int dropped = 0;  // by chance or because the device is dead
 };
 
 class SimFaults {

@@ -1,5 +1,5 @@
-#include "sim_handlers.h"
 #include "sim_device.h"
+#include "sim_handlers.h"
 
 #include <QtEndian>
 
@@ -38,13 +38,17 @@ void registerIdentity(SimDevice& d) {
     constant("GPRGMAX", p.programs);
     constant("GZYKLIST", kCycleTime);
     constant("GBOOST", 0);
-    d.addHandler(kQuery, "MEENOCK", [&d](const Fields&) { return SimResult::data(value(d.state().cams.camCount())); });
+    d.addHandler(kQuery, "MEENOCK",
+                 [&d](const Fields&) { return SimResult::data(value(d.state().cams.camCount())); });
     d.addHandler(kQuery, "MEEFREE", [&d](const Fields&) {
         return SimResult::data(value(d.profile().camCapacity - d.state().cams.camCount()));
     });
-    d.addHandler(kQuery, "MEETZK", [&d](const Fields&) { return SimResult::data(value(d.state().deadTimes.size())); });
+    d.addHandler(kQuery, "MEETZK", [&d](const Fields&) {
+        return SimResult::data(value(d.state().deadTimes.size()));
+    });
     d.addHandler(kQuery, "MRAMFREE", [&d](const Fields&) {
-        return SimResult::data(value(std::max<qint64>(0, d.profile().ramSize - kRamPerCam * d.state().cams.camCount())));
+        return SimResult::data(value(
+            std::max<qint64>(0, d.profile().ramSize - kRamPerCam * d.state().cams.camCount())));
     });
     // The unit number is in the Multiuser header: answering is the answer.
     d.addHandler(kQuery, "UNIT", [](const Fields&) { return SimResult::data({}); });
@@ -80,7 +84,8 @@ void registerRam(SimDevice& d) {
         const qint64 address = r.num("address");
         if (!fits(address, 4)) return SimResult::error(sim_errors::kUnknown);
         Fields reply;
-        reply.set("address", address).set("value", qFromBigEndian<quint32>(d.runtime().ram.constData() + address));
+        reply.set("address", address)
+            .set("value", qFromBigEndian<quint32>(d.runtime().ram.constData() + address));
         return SimResult::data(reply);
     });
     d.addHandler(kCommand, "MS", [&d, fits](const Fields& r) {

@@ -8,7 +8,8 @@
 
 namespace cambench::comm {
 
-SimLine::SimLine(Framing framing) : m_framing(framing), m_decoder(framing, QByteArrayLiteral("?!")) {}
+SimLine::SimLine(Framing framing)
+    : m_framing(framing), m_decoder(framing, QByteArrayLiteral("?!")) {}
 
 SimDevice& SimLine::addDevice(std::unique_ptr<SimDevice> device) {
     m_devices.push_back(std::move(device));
@@ -72,13 +73,16 @@ std::optional<SimOutput> SimLine::answer(const Frame& request) {
 std::optional<SimOutput> SimLine::execute(SimDevice& device, const Frame& request) {
     // Only the command name: data may hold secrets (user numbers).
     const CommandSpec* spec = matchRequest(request.lead, request.body);
-    qCDebug(commSimLog).noquote() << "device" << device.number() << "<-" << QString(QChar(request.lead))
-                                  << (spec ? spec->name : "(unknown)") << request.body.size() << "bytes";
+    qCDebug(commSimLog).noquote() << "device" << device.number() << "<-"
+                                  << QString(QChar(request.lead))
+                                  << (spec ? spec->name : "(unknown)") << request.body.size()
+                                  << "bytes";
     std::optional<SimDevice::Reply> reply = device.execute(request);
     updateChecksumMode();
     if (!reply) return std::nullopt;
     if (request.address) {
-        reply->frame.address = MultiuserAddress{device.number(), request.address->source, request.address->block};
+        reply->frame.address =
+            MultiuserAddress{device.number(), request.address->source, request.address->block};
     }
     return SimOutput{encodeFrame(reply->frame), reply->delayMs};
 }

@@ -1,3 +1,3 @@
 #include "sim_log.h"
 
-Q_LOGGING_CATEGORY(commSimLog, "cambench.comm.sim")
+Q_LOGGING_CATEGORY(commSimLog, "cambench.comm.sim", QtWarningMsg)

@@ -33,14 +33,17 @@ void registerNumberedText(SimDevice& d, const char* name, const char* numberFiel
 const char* const kPlcTextFields[SimState::kPlcTextLines] = {"text1", "text2", "text3", "text4"};
 
 void registerPlcTexts(SimDevice& d) {
-    const auto valid = [&d](qint64 message) { return message >= 0 && message < d.profile().plcTexts; };
+    const auto valid = [&d](qint64 message) {
+        return message >= 0 && message < d.profile().plcTexts;
+    };
     d.addHandler(kQuery, "ETXT", [&d, valid](const Fields& r) {
         const qint64 message = r.num("message");
         if (!valid(message)) return SimResult::error(sim_errors::kUnknown);
         const auto lines = d.state().plcTexts.value(int(message));
         Fields reply;
         reply.set("message", message);
-        for (int i = 0; i < SimState::kPlcTextLines; ++i) reply.setBytes(kPlcTextFields[i], lines[i]);
+        for (int i = 0; i < SimState::kPlcTextLines; ++i)
+            reply.setBytes(kPlcTextFields[i], lines[i]);
         return SimResult::data(reply);
     });
     d.addHandler(kCommand, "ETXT", [&d, valid](const Fields& r) {

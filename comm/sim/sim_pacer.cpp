@@ -30,7 +30,8 @@ qint64 SimPacer::transferUs(qint64 bytes) const {
     return (bytes * kBitsPerByte * kUsPerSecond + m_baud - 1) / m_baud;
 }
 
-QList<PacedReply> SimPacer::schedule(qint64 sentUs, int requestBytes, const QList<SimOutput>& outputs) {
+QList<PacedReply> SimPacer::schedule(qint64 sentUs, int requestBytes,
+                                     const QList<SimOutput>& outputs) {
     const qint64 arrivedUs = std::max(sentUs, m_toDeviceFreeUs) + transferUs(requestBytes);
     m_toDeviceFreeUs = arrivedUs;
     QList<PacedReply> replies;

@@ -1,5 +1,5 @@
-#include "sim_handlers.h"
 #include "sim_device.h"
+#include "sim_handlers.h"
 
 namespace cambench::comm {
 
@@ -15,7 +15,9 @@ bool validAddress(const Fields& r) {
     return area >= kFirstArea && area <= kLastArea && number >= 0 && number <= kMaxNumber;
 }
 
-SimPlcKey keyOf(const Fields& r) { return {int(r.num("area")), int(r.num("number"))}; }
+SimPlcKey keyOf(const Fields& r) {
+    return {int(r.num("area")), int(r.num("number"))};
+}
 
 Fields networkFields(const SimPlcKey& key, const SimPlcNetwork& network) {
     QList<qint64> symbols;
@@ -27,7 +29,8 @@ Fields networkFields(const SimPlcKey& key, const SimPlcNetwork& network) {
 }
 
 // Empty networks are not kept, so a cleared network leaves no trace.
-void store(QMap<SimPlcKey, SimPlcNetwork>& networks, const SimPlcKey& key, const SimPlcNetwork& network) {
+void store(QMap<SimPlcKey, SimPlcNetwork>& networks, const SimPlcKey& key,
+           const SimPlcNetwork& network) {
     if (network.isEmpty()) {
         networks.remove(key);
     } else {
@@ -48,7 +51,8 @@ void registerMatrix(SimDevice& d) {
         SimPlcNetwork network;
         network.value = qint32(r.num("value"));
         network.reset = quint16(r.num("reset"));
-        for (int i = 0; i < SimPlcNetwork::kSymbols; ++i) network.symbols[i] = quint16(symbols.at(i));
+        for (int i = 0; i < SimPlcNetwork::kSymbols; ++i)
+            network.symbols[i] = quint16(symbols.at(i));
         store(d.state().plcNetworks, keyOf(r), network);
         return SimResult::ok();
     });

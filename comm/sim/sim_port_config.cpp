@@ -7,9 +7,11 @@ namespace cambench::comm {
 namespace {
 
 const QString kPrefix = QStringLiteral("sim");
-const QString kKeys = QStringLiteral("devices, framing, baud, corrupt, drop, delay, seed, throttle, fill, dead");
+const QString kKeys =
+    QStringLiteral("devices, framing, baud, corrupt, drop, delay, seed, throttle, fill, dead");
 
-Error badValue(const QString& port, const QString& key, const QString& value, const QString& expected) {
+Error badValue(const QString& port, const QString& key, const QString& value,
+               const QString& expected) {
     return Error::usage(QStringLiteral("Simulator port \"%1\": %2=%3 is not valid; expected %4.")
                             .arg(port, key, value, expected));
 }
@@ -20,7 +22,9 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
     bool ok = false;
     if (key == QLatin1String("devices")) {
         Result<QList<int>> devices = parseDeviceList(value);
-        if (!devices) return Error::usage(QStringLiteral("Simulator port \"%1\": %2").arg(port, devices.error().message));
+        if (!devices)
+            return Error::usage(
+                QStringLiteral("Simulator port \"%1\": %2").arg(port, devices.error().message));
         config.devices = *devices;
     } else if (key == QLatin1String("framing")) {
         if (value == QLatin1String("standard")) {
@@ -32,14 +36,18 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         }
     } else if (key == QLatin1String("baud")) {
         config.baud = value.toInt(&ok);
-        if (!ok || config.baud < 300) return badValue(port, key, value, QStringLiteral("a baud rate of 300 or more"));
+        if (!ok || config.baud < 300)
+            return badValue(port, key, value, QStringLiteral("a baud rate of 300 or more"));
     } else if (key == QLatin1String("corrupt") || key == QLatin1String("drop")) {
         const double p = value.toDouble(&ok);
-        if (!ok || p < 0.0 || p > 1.0) return badValue(port, key, value, QStringLiteral("a probability 0..1"));
-        (key == QLatin1String("corrupt") ? config.faults.corruptProbability : config.faults.dropProbability) = p;
+        if (!ok || p < 0.0 || p > 1.0)
+            return badValue(port, key, value, QStringLiteral("a probability 0..1"));
+        (key == QLatin1String("corrupt") ? config.faults.corruptProbability
+                                         : config.faults.dropProbability) = p;
     } else if (key == QLatin1String("delay") || key == QLatin1String("fill")) {
         const int n = value.toInt(&ok);
-        if (!ok || n < 0) return badValue(port, key, value, QStringLiteral("a whole number of 0 or more"));
+        if (!ok || n < 0)
+            return badValue(port, key, value, QStringLiteral("a whole number of 0 or more"));
         (key == QLatin1String("delay") ? config.faults.extraDelayMs : config.fill) = n;
     } else if (key == QLatin1String("seed")) {
         config.faults.seed = value.toUInt(&ok);
@@ -48,10 +56,12 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         if (value != QLatin1String("0") && value != QLatin1String("1")) {
             return badValue(port, key, value, QStringLiteral("0 or 1"));
         }
-        (key == QLatin1String("throttle") ? config.throttle : config.faults.dead) = value == QLatin1String("1");
+        (key == QLatin1String("throttle") ? config.throttle : config.faults.dead) =
+            value == QLatin1String("1");
     } else {
-        return Error::usage(QStringLiteral("Simulator port \"%1\": unknown key \"%2\"; use one of %3.")
-                                .arg(port, key, kKeys));
+        return Error::usage(
+            QStringLiteral("Simulator port \"%1\": unknown key \"%2\"; use one of %3.")
+                .arg(port, key, kKeys));
     }
     return std::nullopt;
 }
@@ -70,16 +80,20 @@ Result<QList<int>> parseDeviceList(const QString& text) {
         if (!ok || number < 0 || number > 63) {
             return Error::usage(QStringLiteral("device number \"%1\" is not 0..63.").arg(part));
         }
-        if (devices.contains(number)) return Error::usage(QStringLiteral("device %1 is listed twice.").arg(number));
+        if (devices.contains(number))
+            return Error::usage(QStringLiteral("device %1 is listed twice.").arg(number));
         devices.append(number);
     }
-    if (devices.isEmpty()) return Error::usage(QStringLiteral("no device numbers in \"%1\".").arg(text));
+    if (devices.isEmpty())
+        return Error::usage(QStringLiteral("no device numbers in \"%1\".").arg(text));
     return devices;
 }
 
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial) {
     if (!isSimPort(port)) {
-        return Error::usage(QStringLiteral("\"%1\" is not a simulator port; use sim or sim:key=value;...").arg(port));
+        return Error::usage(
+            QStringLiteral("\"%1\" is not a simulator port; use sim or sim:key=value;...")
+                .arg(port));
     }
     SimPortConfig config;
     config.baud = serial.baud;
@@ -87,16 +101,20 @@ Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& se
     for (const QString& item : options.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
         const qsizetype eq = item.indexOf(QLatin1Char('='));
         if (eq <= 0) {
-            return Error::usage(QStringLiteral("Simulator port \"%1\": \"%2\" is not key=value; use one of %3.")
-                                    .arg(port, item, kKeys));
+            return Error::usage(
+                QStringLiteral("Simulator port \"%1\": \"%2\" is not key=value; use one of %3.")
+                    .arg(port, item, kKeys));
         }
-        if (auto error = applyKey(config, port, item.left(eq).trimmed(), item.mid(eq + 1).trimmed())) {
+        if (auto error =
+                applyKey(config, port, item.left(eq).trimmed(), item.mid(eq + 1).trimmed())) {
             return *error;
         }
     }
     if (config.effectiveFraming() == Framing::Standard && config.devices.size() > 1) {
-        return Error::usage(QStringLiteral("Simulator port \"%1\": Standard framing has one device; "
-                                           "use framing=multiuser for several.").arg(port));
+        return Error::usage(
+            QStringLiteral("Simulator port \"%1\": Standard framing has one device; "
+                           "use framing=multiuser for several.")
+                .arg(port));
     }
     return config;
 }

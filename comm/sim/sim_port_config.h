@@ -16,11 +16,11 @@ namespace cambench::comm {
 // How to build a simulated line: from a port string ("sim",
 // "sim:devices=0,5;baud=38400;corrupt=0.01") or from cambench-sim's options.
 struct SimPortConfig {
-    QList<int> devices{0};            // device numbers 0..63
-    std::optional<Framing> framing;   // unset: Multiuser if more than one device
+    QList<int> devices{0};           // device numbers 0..63
+    std::optional<Framing> framing;  // unset: Multiuser if more than one device
     int baud = 9600;
-    bool throttle = true;             // false: bytes arrive at once
-    int fill = 0;                     // > 0: benchmark cams per track instead of the demo cams
+    bool throttle = true;  // false: bytes arrive at once
+    int fill = 0;          // > 0: benchmark cams per track instead of the demo cams
     SimFaultSettings faults;
 
     Framing effectiveFraming() const {

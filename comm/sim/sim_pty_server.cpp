@@ -2,12 +2,12 @@
 
 #include "sim_log.h"
 
-#include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <pty.h>
 #include <termios.h>
 #include <unistd.h>
+#include <cerrno>
+#include <cstring>
 
 namespace cambench::comm {
 
@@ -21,13 +21,15 @@ bool makeRaw(int fd) {
 }
 
 QString systemError(const char* what) {
-    return QStringLiteral("%1 failed: %2").arg(QLatin1String(what), QString::fromLocal8Bit(std::strerror(errno)));
+    return QStringLiteral("%1 failed: %2")
+        .arg(QLatin1String(what), QString::fromLocal8Bit(std::strerror(errno)));
 }
 
 }  // namespace
 
 SimPtyServer::SimPtyServer(SimLine& line, const SimPacer& pacer, QObject* parent)
-    : QObject(parent), m_scheduler(line, pacer, [this](const QByteArray& bytes) { write(bytes); }) {}
+    : QObject(parent),
+      m_scheduler(line, pacer, [this](const QByteArray& bytes) { write(bytes); }) {}
 
 SimPtyServer::~SimPtyServer() {
     m_notifier.reset();
@@ -38,10 +40,12 @@ SimPtyServer::~SimPtyServer() {
 Status SimPtyServer::open() {
     char name[256] = {};
     if (openpty(&m_master, &m_slave, name, nullptr, nullptr) != 0) {
-        return Error::communication(QStringLiteral("Cannot create a pseudo-terminal: %1.").arg(systemError("openpty")));
+        return Error::communication(
+            QStringLiteral("Cannot create a pseudo-terminal: %1.").arg(systemError("openpty")));
     }
     if (!makeRaw(m_master) || !makeRaw(m_slave)) {
-        return Error::communication(QStringLiteral("Cannot make the pseudo-terminal raw: %1.").arg(systemError("tcsetattr")));
+        return Error::communication(QStringLiteral("Cannot make the pseudo-terminal raw: %1.")
+                                        .arg(systemError("tcsetattr")));
     }
     fcntl(m_master, F_SETFL, fcntl(m_master, F_GETFL) | O_NONBLOCK);
     m_slavePath = QString::fromLocal8Bit(name);

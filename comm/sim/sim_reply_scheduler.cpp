@@ -5,7 +5,8 @@
 
 namespace cambench::comm {
 
-SimReplyScheduler::SimReplyScheduler(SimLine& line, const SimPacer& pacer, WriteFn write, QObject* parent)
+SimReplyScheduler::SimReplyScheduler(SimLine& line, const SimPacer& pacer, WriteFn write,
+                                     QObject* parent)
     : QObject(parent), m_line(line), m_pacer(pacer), m_write(std::move(write)) {
     m_clock.start();
     m_timer.setSingleShot(true);

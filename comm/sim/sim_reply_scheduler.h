@@ -20,7 +20,8 @@ class SimReplyScheduler : public QObject {
 public:
     using WriteFn = std::function<void(const QByteArray&)>;
 
-    SimReplyScheduler(SimLine& line, const SimPacer& pacer, WriteFn write, QObject* parent = nullptr);
+    SimReplyScheduler(SimLine& line, const SimPacer& pacer, WriteFn write,
+                      QObject* parent = nullptr);
 
     void received(const QByteArray& bytes);
     // A new client: forget replies to the old one.

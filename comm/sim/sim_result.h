@@ -12,9 +12,9 @@ namespace cambench::comm {
 struct SimResult {
     enum Kind { Data, Ok, Error, NoReply };
     Kind kind = Ok;
-    Fields fields;     // Data
-    qint32 code = 0;   // Error
-    int delayMs = 0;   // extra work before the reply (!CA, erasing the EEPROM)
+    Fields fields;    // Data
+    qint32 code = 0;  // Error
+    int delayMs = 0;  // extra work before the reply (!CA, erasing the EEPROM)
 
     static SimResult data(Fields fields) { return {Data, std::move(fields), 0, 0}; }
     static SimResult ok(int delayMs = 0) { return {Ok, {}, 0, delayMs}; }

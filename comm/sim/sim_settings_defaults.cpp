@@ -4,8 +4,12 @@ namespace cambench::comm {
 
 namespace {
 
-Fields number(qint64 value) { return Fields{{"value", QVariant::fromValue(value)}}; }
-Fields text(const char* value) { return Fields{{"text", QByteArray(value)}}; }
+Fields number(qint64 value) {
+    return Fields{{"value", QVariant::fromValue(value)}};
+}
+Fields text(const char* value) {
+    return Fields{{"text", QByteArray(value)}};
+}
 
 }  // namespace
 
@@ -23,12 +27,12 @@ SimState defaultState(const SimProfile& profile, int deviceNumber) {
         {"SFAK", number(100000)},  // 1.00000
         {"SFOR", text("####")},
         {"S100", number(1000)},
-        {"SEXA", number(100)},     // 1.00
+        {"SEXA", number(100)},  // 1.00
         {"GKL", number(10)},
         {"EMAX", number(profile.inputs)},
         {"AMAX", number(profile.outputs)},
         {"GTZKANZ", number(profile.outputs)},
-        {"GSIO", number(1)},
+        {"GSIO", number(profile.protocol)},
         {"GNR", number(deviceNumber)},
         {"GONSPS", number(1)},
         {"GESPSMAX", number(16)},
@@ -39,7 +43,8 @@ SimState defaultState(const SimProfile& profile, int deviceNumber) {
         {"GVSPSMAX", number(8)},
         {"GSSPSMAX", number(8)},
     };
-    for (const auto& [name, fields] : defaults) state.settings.insert({QByteArray(name), -1}, fields);
+    for (const auto& [name, fields] : defaults)
+        state.settings.insert({QByteArray(name), -1}, fields);
     return state;
 }
 

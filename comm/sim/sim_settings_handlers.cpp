@@ -1,5 +1,5 @@
-#include "sim_handlers.h"
 #include "sim_device.h"
+#include "sim_handlers.h"
 
 #include "comm/protocol/catalogue.h"
 
@@ -18,18 +18,18 @@ struct Range {
 
 const QList<Range>& ranges() {
     static const QList<Range> table{
-        {"GISTHYS", 0, 125},     {"GVMAX", 0, 9999},          {"IMUL", -99999, 99999, 1, true},
-        {"IDIV", 1, 99999},      {"WLIN", 0, 1},              {"WEINPRE", 0, 200},
-        {"WFLPRE", 0, 1},        {"SFAK", 1, 99999999},       {"S100", 1, 999999999},
-        {"SEXA", 1, 999},        {"SSPA", 0, 2},              {"SSPE", 0, 200},
-        {"GKL", 0, 1000},        {"GZYKLSOLL", 0, 100000},    {"ASICH", 0, 200},
-        {"GISTAUS", 0, 3},       {"GVRAUS", 0, 200},          {"GV0AUS", 0, 200},
-        {"ASPEED", 0, 1},        {"ANOCK", 0, 14},            {"EMAX", 0, 200, 8},
-        {"AMAX", 8, 200, 8},     {"GTZKANZ", 0, 200, 8},      {"GTLOCK", 0, 200},
-        {"GPRGEXT", 0, 15},      {"GPRGEINEXT", 0, 200},      {"GSIO", 0, 4},
-        {"GNR", 0, 63},          {"GANL", 0, 2},              {"GTERM", 0, 1},
-        {"GONSPS", 0, 2},        {"GESPSMAX", 0, 200, 8},     {"GASPSMAX", 8, 200, 8},
-        {"GMSPSMAX", 0, 248, 8}, {"GXSPSMAX", 0, 248, 8},     {"GTSPSMAX", 0, 248, 8},
+        {"GISTHYS", 0, 125},     {"GVMAX", 0, 9999},       {"IMUL", -99999, 99999, 1, true},
+        {"IDIV", 1, 99999},      {"WLIN", 0, 1},           {"WEINPRE", 0, 200},
+        {"WFLPRE", 0, 1},        {"SFAK", 1, 99999999},    {"S100", 1, 999999999},
+        {"SEXA", 1, 999},        {"SSPA", 0, 2},           {"SSPE", 0, 200},
+        {"GKL", 0, 1000},        {"GZYKLSOLL", 0, 100000}, {"ASICH", 0, 200},
+        {"GISTAUS", 0, 3},       {"GVRAUS", 0, 200},       {"GV0AUS", 0, 200},
+        {"ASPEED", 0, 1},        {"ANOCK", 0, 14},         {"EMAX", 0, 200, 8},
+        {"AMAX", 8, 200, 8},     {"GTZKANZ", 0, 200, 8},   {"GTLOCK", 0, 200},
+        {"GPRGEXT", 0, 15},      {"GPRGEINEXT", 0, 200},   {"GSIO", 0, 4},
+        {"GNR", 0, 63},          {"GANL", 0, 2},           {"GTERM", 0, 1},
+        {"GONSPS", 0, 2},        {"GESPSMAX", 0, 200, 8},  {"GASPSMAX", 8, 200, 8},
+        {"GMSPSMAX", 0, 248, 8}, {"GXSPSMAX", 0, 248, 8},  {"GTSPSMAX", 0, 248, 8},
         {"GVSPSMAX", 0, 248, 8}, {"GSSPSMAX", 0, 248, 8},
     };
     return table;
@@ -48,7 +48,8 @@ bool inRange(const SimDevice& d, const QByteArray& name, const Fields& request) 
     if (name == "EMAX" && v > d.profile().inputs) return false;
     for (const Range& range : ranges()) {
         if (name != range.name) continue;
-        return v >= range.min && v <= range.max && v % range.step == 0 && !(range.nonZero && v == 0);
+        return v >= range.min && v <= range.max && v % range.step == 0 &&
+               !(range.nonZero && v == 0);
     }
     return true;
 }
@@ -60,13 +61,19 @@ Fields pick(const QList<FieldSpec>& specs, const Fields& from) {
         const QByteArray name(field.name);
         if (!from.has(name)) continue;
         switch (field.type) {
-        case FieldType::Hex:
-        case FieldType::SignedHex: kept.set(name, from.num(name)); break;
-        case FieldType::HexWords: kept.setWords(name, from.words(name)); break;
-        case FieldType::Text:
-        case FieldType::TextRest:
-        case FieldType::Binary:
-        case FieldType::HexBytes: kept.setBytes(name, from.bytes(name)); break;
+            case FieldType::Hex:
+            case FieldType::SignedHex:
+                kept.set(name, from.num(name));
+                break;
+            case FieldType::HexWords:
+                kept.setWords(name, from.words(name));
+                break;
+            case FieldType::Text:
+            case FieldType::TextRest:
+            case FieldType::Binary:
+            case FieldType::HexBytes:
+                kept.setBytes(name, from.bytes(name));
+                break;
         }
     }
     return kept;
@@ -107,7 +114,8 @@ void registerAnalogueModes(SimDevice& d) {
         return SimResult::data(d.state().settings.value({"AMODE", int(r.num("channel"))}));
     });
     d.addHandler(kCommand, "AMODE", [&d, valid, query](const Fields& r) {
-        if (!valid(r) || qAbs(r.num("offset")) > kMaxAnalogueOffset) return SimResult::error(sim_errors::kUnknown);
+        if (!valid(r) || qAbs(r.num("offset")) > kMaxAnalogueOffset)
+            return SimResult::error(sim_errors::kUnknown);
         stored(d, "AMODE", int(r.num("channel"))) = pick(query->reply, r);
         return SimResult::ok();
     });
@@ -117,7 +125,8 @@ void registerAnalogueModes(SimDevice& d) {
 // stored setting (0 until set), and its command, if any, sets it.
 void registerGenericSettings(SimDevice& d) {
     for (const CommandSpec& spec : commandCatalogue()) {
-        if (spec.kind != kQuery || !spec.request.isEmpty() || spec.replyKind != ReplyKind::Data) continue;
+        if (spec.kind != kQuery || !spec.request.isEmpty() || spec.replyKind != ReplyKind::Data)
+            continue;
         const QByteArray name(spec.name);
         if (!d.hasHandler(kQuery, name)) {
             d.addHandler(kQuery, name, [&d, name](const Fields&) {

@@ -16,8 +16,8 @@ namespace cambench::comm {
 // A key-assignment entry as the device stores it (notes 4).
 struct SimUser {
     static constexpr int kAccessBytes = 32;
-    QByteArray name;    // without NUL padding
-    QByteArray number;  // the access code, a secret
+    QByteArray name;                                     // without NUL padding
+    QByteArray number;                                   // the access code, a secret
     QByteArray access = QByteArray(kAccessBytes, '\0');  // bit per output
     bool allOutputs = false;
     quint32 rights = 0;
@@ -56,7 +56,7 @@ struct SimState {
     QList<SimUser> users;                // in the order ?USER lists them
     QMap<SimPlcKey, SimPlcNetwork> plcNetworks;
     QMap<SimSettingKey, Fields> settings;
-    QMap<int, QByteArray> userTexts;     // ?BTXT line -> text
+    QMap<int, QByteArray> userTexts;                            // ?BTXT line -> text
     QMap<int, std::array<QByteArray, kPlcTextLines>> plcTexts;  // ?ETXT message -> lines
     int activeProgram = 0;
 

@@ -27,10 +27,13 @@ Fields formatted(const QByteArray& text) {
     return fields;
 }
 
-int setting(SimDevice& d, const char* name) { return int(d.state().settings.value({name, -1}).num("value")); }
+int setting(SimDevice& d, const char* name) {
+    return int(d.state().settings.value({name, -1}).num("value"));
+}
 
 void registerAxis(SimDevice& d) {
-    d.addHandler(kQuery, "IGWG", [&d](const Fields&) { return SimResult::data(number(d.axis().position())); });
+    d.addHandler(kQuery, "IGWG",
+                 [&d](const Fields&) { return SimResult::data(number(d.axis().position())); });
     d.addHandler(kQuery, "IREE", [&d](const Fields&) {
         return SimResult::data(number(qint64(d.axis().position()) - d.profile().minPosition));
     });
@@ -47,7 +50,9 @@ void registerAxis(SimDevice& d) {
     // text that runs up to the checksum.
     d.addHandler(kQuery, "AUTO", [&d](const Fields&) {
         Fields reply;
-        reply.setBytes("text", "P" + QByteArray::number(d.axis().position()).rightJustified(kFormattedWidth, ' '));
+        reply.setBytes(
+            "text",
+            "P" + QByteArray::number(d.axis().position()).rightJustified(kFormattedWidth, ' '));
         return SimResult::data(reply);
     });
 }
@@ -63,13 +68,14 @@ void registerTables(SimDevice& d) {
     });
     // Input 0 reports "running", the others are open.
     d.addHandler(kQuery, "ETAB", [&d](const Fields&) {
-        return SimResult::data(table(sim_util::bitTable(d.profile().inputs, [&](int input) {
-            return input == 0 && d.axis().running();
-        })));
+        return SimResult::data(table(sim_util::bitTable(
+            d.profile().inputs, [&](int input) { return input == 0 && d.axis().running(); })));
     });
-    const QList<std::pair<const char*, const char*>> plcTables{
-        {"GASPSTAB", "GASPSMAX"}, {"GESPSTAB", "GESPSMAX"}, {"GMPSTAB", "GMSPSMAX"},
-        {"GXSPSTAB", "GXSPSMAX"}, {"GSSPSTAB", "GSSPSMAX"}};
+    const QList<std::pair<const char*, const char*>> plcTables{{"GASPSTAB", "GASPSMAX"},
+                                                               {"GESPSTAB", "GESPSMAX"},
+                                                               {"GMPSTAB", "GMSPSMAX"},
+                                                               {"GXSPSTAB", "GXSPSMAX"},
+                                                               {"GSSPSTAB", "GSSPSMAX"}};
     for (const auto& [query, count] : plcTables) {
         const char* countName = count;
         d.addHandler(kQuery, query, [&d, countName](const Fields&) {
@@ -88,14 +94,17 @@ void registerTables(SimDevice& d) {
 }
 
 void registerErrorAndProgram(SimDevice& d) {
-    d.addHandler(kQuery, "ERR", [&d](const Fields&) { return SimResult::data(number(d.runtime().errorState)); });
+    d.addHandler(kQuery, "ERR",
+                 [&d](const Fields&) { return SimResult::data(number(d.runtime().errorState)); });
     d.addHandler(kCommand, "ERR", [&d](const Fields&) {
         d.runtime().errorState = 0;
         return SimResult::ok();
     });
-    d.addHandler(kQuery, "PAU", [&d](const Fields&) { return SimResult::data(number(d.state().activeProgram)); });
+    d.addHandler(kQuery, "PAU",
+                 [&d](const Fields&) { return SimResult::data(number(d.state().activeProgram)); });
     d.addHandler(kCommand, "PAU", [&d](const Fields& r) {
-        if (!sim_util::validProgram(d, r.num("value"))) return SimResult::error(sim_errors::kUnknown);
+        if (!sim_util::validProgram(d, r.num("value")))
+            return SimResult::error(sim_errors::kUnknown);
         d.state().activeProgram = int(r.num("value"));
         return SimResult::ok();
     });

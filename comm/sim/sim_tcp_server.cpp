@@ -15,8 +15,9 @@ SimTcpServer::SimTcpServer(SimLine& line, const SimPacer& pacer, QObject* parent
 
 Status SimTcpServer::listen(quint16 port) {
     if (!m_server.listen(QHostAddress::Any, port)) {
-        return Error::communication(
-            QStringLiteral("Cannot listen on TCP port %1: %2.").arg(port).arg(m_server.errorString()));
+        return Error::communication(QStringLiteral("Cannot listen on TCP port %1: %2.")
+                                        .arg(port)
+                                        .arg(m_server.errorString()));
     }
     return success();
 }
@@ -24,7 +25,8 @@ Status SimTcpServer::listen(quint16 port) {
 void SimTcpServer::onNewConnection() {
     while (QTcpSocket* socket = m_server.nextPendingConnection()) {
         if (m_client) {
-            qCInfo(commSimLog) << "turned away a second client from" << socket->peerAddress().toString();
+            qCInfo(commSimLog) << "turned away a second client from"
+                               << socket->peerAddress().toString();
             socket->disconnectFromHost();
             socket->deleteLater();
             continue;
@@ -32,7 +34,8 @@ void SimTcpServer::onNewConnection() {
         m_client = socket;
         m_scheduler.reset();
         qCInfo(commSimLog) << "client connected from" << socket->peerAddress().toString();
-        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { m_scheduler.received(socket->readAll()); });
+        connect(socket, &QTcpSocket::readyRead, this,
+                [this, socket] { m_scheduler.received(socket->readAll()); });
         connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
             qCInfo(commSimLog) << "client disconnected";
             m_scheduler.reset();

@@ -49,19 +49,23 @@ Result<QByteArray> SimTransport::read(int timeoutMs) {
     }
 }
 
-void SimTransport::discardInput() { m_pending.takeDue(nowUs()); }
+void SimTransport::discardInput() {
+    m_pending.takeDue(nowUs());
+}
 
 QString SimTransport::description() const {
     QStringList devices;
     for (int number : m_config.devices) devices << QString::number(number);
     const bool multi = m_config.effectiveFraming() == Framing::Multiuser;
     return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
-        .arg(multi ? QStringLiteral("Multiuser") : QStringLiteral("Standard"), devices.join(QLatin1Char(',')))
+        .arg(multi ? QStringLiteral("Multiuser") : QStringLiteral("Standard"),
+             devices.join(QLatin1Char(',')))
         .arg(m_config.baud)
         .arg(m_config.throttle ? QString() : QStringLiteral(", unthrottled"));
 }
 
-Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port, const SerialSettings& serial) {
+Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
+                                                    const SerialSettings& serial) {
     Result<SimPortConfig> config = parseSimPort(port, serial);
     if (!config) return config.error();
     return std::unique_ptr<Transport>(std::make_unique<SimTransport>(*config));

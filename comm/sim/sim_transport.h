@@ -42,6 +42,7 @@ private:
 };
 
 // "sim" or "sim:key=value;..." (see parseSimPort) as a Transport.
-Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port, const SerialSettings& serial);
+Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
+                                                    const SerialSettings& serial);
 
 }  // namespace cambench::comm

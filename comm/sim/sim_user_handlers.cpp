@@ -1,5 +1,5 @@
-#include "sim_handlers.h"
 #include "sim_device.h"
+#include "sim_handlers.h"
 
 #include <algorithm>
 
@@ -11,7 +11,9 @@ const QByteArray kDelete = QByteArrayLiteral("DEL");
 
 Fields userFields(const SimUser& user) {
     Fields fields;
-    fields.setBytes("name", user.name).setBytes("number", user.number).setBytes("access", user.access);
+    fields.setBytes("name", user.name)
+        .setBytes("number", user.number)
+        .setBytes("access", user.access);
     fields.set("all", user.allOutputs ? 1 : 0).set("rights", user.rights);
     return fields;
 }
@@ -27,7 +29,8 @@ SimUser userFrom(const Fields& r) {
 }
 
 qsizetype findUser(const QList<SimUser>& users, const QByteArray& number) {
-    const auto it = std::find_if(users.begin(), users.end(), [&](const SimUser& u) { return u.number == number; });
+    const auto it = std::find_if(users.begin(), users.end(),
+                                 [&](const SimUser& u) { return u.number == number; });
     return it == users.end() ? -1 : it - users.begin();
 }
 

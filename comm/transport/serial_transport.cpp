@@ -142,7 +142,8 @@ Error SerialTransport::lose(const QString& action) {
     else
         m_lostMessage = QStringLiteral("%1 %2 failed: %3; reconnect and retry")
                             .arg(action, m_portName, m_port->errorString());
-    qCWarning(commSerialLog) << m_lostMessage << "(" << m_port->errorString() << ")";
+    // errorString() may be a stale errno after an end of file; the code is not.
+    qCWarning(commSerialLog) << m_lostMessage << "- QSerialPort error" << int(error);
     close();
     return Error::communication(m_lostMessage);
 }

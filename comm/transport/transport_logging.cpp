@@ -1,3 +1,3 @@
 #include "transport_logging.h"
 
-Q_LOGGING_CATEGORY(commSerialLog, "cambench.comm.serial")
+Q_LOGGING_CATEGORY(commSerialLog, "cambench.comm.serial", QtWarningMsg)

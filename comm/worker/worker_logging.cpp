@@ -1,3 +1,3 @@
 #include "worker_logging.h"
 
-Q_LOGGING_CATEGORY(commWorkerLog, "cambench.comm.worker")
+Q_LOGGING_CATEGORY(commWorkerLog, "cambench.comm.worker", QtWarningMsg)

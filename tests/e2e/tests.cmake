@@ -7,10 +7,14 @@ cambench_add_test(tst_operations_camcon_client
 # The end-to-end tests start both executables as subprocesses.
 function(cambench_add_e2e_test name)
   cambench_add_test(${name} SOURCES ${ARGN} e2e/sim_process.h e2e/sim_process.cpp
-                    e2e/e2e_support.h e2e/e2e_support.cpp LIBS Qt6::Core)
+                    e2e/e2e_support.h e2e/e2e_support.cpp LIBS cambench_model)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
   target_compile_definitions(${name} PRIVATE
     CAMBENCH_SIM_EXE="$<TARGET_FILE:cambench-sim>"
     CAMBENCH_CLI_EXE="$<TARGET_FILE:cambench-cli>")
   add_dependencies(${name} cambench-sim cambench-cli)
 endfunction()
+
+cambench_add_e2e_test(tst_e2e_cli e2e/tst_e2e_cli.cpp)
+cambench_add_e2e_test(tst_e2e_eeprom e2e/tst_e2e_eeprom.cpp)
+cambench_add_e2e_test(tst_e2e_faults e2e/tst_e2e_faults.cpp)

@@ -18,8 +18,7 @@ using namespace cambench::comm;
 constexpr int kRandomInputs = 20000;
 
 QByteArray wire(char lead, const QByteArray& body, std::optional<MultiuserAddress> address = {},
-                bool hasChecksum = true)
-{
+                bool hasChecksum = true) {
     Frame frame;
     frame.lead = lead;
     frame.body = body;
@@ -28,8 +27,7 @@ QByteArray wire(char lead, const QByteArray& body, std::optional<MultiuserAddres
     return encodeFrame(frame);
 }
 
-QList<QByteArray> seedCorpus()
-{
+QList<QByteArray> seedCorpus() {
     const MultiuserAddress pc{63, 4, 17};
     const MultiuserAddress device{4, 63, 17};
     return {
@@ -56,22 +54,36 @@ QList<QByteArray> seedCorpus()
     };
 }
 
+// The short seeds, to splice into random inputs.
+QList<QByteArray> spliceFrames() {
+    QList<QByteArray> frames;
+    for (const QByteArray& seed : seedCorpus()) {
+        if (!seed.isEmpty() && seed.size() <= 64) frames.append(seed);
+    }
+    return frames;
+}
+
 // Random inputs biased towards the bytes the decoder cares about, spliced
-// with valid frames.
-QByteArray randomInput(std::mt19937& random)
-{
-    static const char kInteresting[] = {'?', '!', ':', '\r', '\n', '\x1b', '0', 'F', 'C', '\x40', '\x7F',
-                                        '\x80', '\xBF', '\xC0', '\xFF', '\0'};
-    static const QList<QByteArray> frames = seedCorpus();
-    std::uniform_int_distribution<int> lengthOf(0, random() % 16 == 0 ? 3000 : 300);
+// with valid frames; one in 32 is long enough to overflow the frame cap.
+QByteArray randomInput(std::mt19937& random) {
+    static const char kInteresting[] = {'?', '!',    ':',    '\r',   '\n',   '\x1b', '0',    'F',
+                                        'C', '\x40', '\x7F', '\x80', '\xBF', '\xC0', '\xFF', '\0'};
+    static const QList<QByteArray> frames = spliceFrames();
+    std::uniform_int_distribution<int> lengthOf(0, random() % 32 == 0 ? 2500 : 200);
     const int length = lengthOf(random);
     QByteArray input;
     while (input.size() < length) {
         switch (random() % 4) {
-        case 0: input.append(char(random())); break;
-        case 1:
-        case 2: input.append(kInteresting[random() % sizeof kInteresting]); break;
-        default: input.append(frames[random() % frames.size()]); break;
+            case 0:
+                input.append(char(random()));
+                break;
+            case 1:
+            case 2:
+                input.append(kInteresting[random() % sizeof kInteresting]);
+                break;
+            default:
+                input.append(frames[random() % frames.size()]);
+                break;
         }
     }
     return input;
@@ -79,17 +91,18 @@ QByteArray randomInput(std::mt19937& random)
 
 }  // namespace
 
-int main()
-{
+int main() {
     int runs = 0;
     for (const QByteArray& seed : seedCorpus()) {
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(seed.constData()), size_t(seed.size()));
+        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(seed.constData()),
+                               size_t(seed.size()));
         ++runs;
     }
     std::mt19937 random(20240601u);
     for (int i = 0; i < kRandomInputs; ++i) {
         const QByteArray input = randomInput(random);
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(input.constData()), size_t(input.size()));
+        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(input.constData()),
+                               size_t(input.size()));
         ++runs;
     }
     std::printf("fuzz_stream_decoder_replay: %d inputs, all invariants held\n", runs);

@@ -440,8 +440,10 @@ void CamDiagramWidget::paintRows(QPainter& painter) const {
         }
         paintLabel(painter, output);
     }
-    // Grid lines at the scale's ticks, under the cams.
-    painter.setClipRect(plot);
+    // Grid lines at the scale's ticks, under the cams, only as far as there are rows.
+    const double rowsBottom = m_layout.rowBand(m_document->outputCount()).bottom();
+    painter.setClipRect(QRectF(plot).intersected(
+        QRectF(plot.left(), plot.top(), plot.width(), rowsBottom - plot.top())));
     painter.setPen(withAlpha(pal.color(QPalette::Text), 40));
     const double end = m_layout.viewStart() + m_layout.viewSpan();
     for (double tick = std::ceil(m_layout.viewStart() / step) * step; tick <= end; tick += step) {
@@ -531,22 +533,26 @@ void CamDiagramWidget::paintScale(QPainter& painter) const {
     painter.drawText(QRect(4, 0, plot.left() - 8, plot.top() - 2), Qt::AlignLeft | Qt::AlignBottom,
                      tr("Output"));
     painter.save();
-    painter.setClipRect(QRect(plot.left(), 0, plot.width(), plot.top()));
+    // Labels may reach a little past the plot's ends, ticks may not.
+    painter.setClipRect(QRect(plot.left() - 20, 0, plot.width() + 40, plot.top()));
     const qint64 step = m_layout.tickStep(kScaleTickPixels);
     const qint64 minor = step >= 5 ? step / 5 : 1;
     const double end = m_layout.viewStart() + m_layout.viewSpan();
     const int base = plot.top() - 1;
     painter.drawLine(plot.left(), base, plot.right(), base);
-    for (double tick = std::ceil(m_layout.viewStart() / minor) * minor; tick <= end;
+    for (double tick = std::ceil(m_layout.viewStart() / minor) * minor; tick < end;
          tick += minor) {
         const double x = m_layout.xForPosition(tick);
         const bool major = std::fmod(tick, double(step)) == 0.0;
         painter.drawLine(QPointF(x, base), QPointF(x, base - (major ? 6 : 3)));
         if (major) {
             const QString label = QString::number(qint64(tick));
-            const int width = fontMetrics().horizontalAdvance(label);
-            painter.drawText(QRectF(x - width / 2.0 - 2, 0, width + 4, base - 6),
-                             Qt::AlignHCenter | Qt::AlignBottom, label);
+            const double width = fontMetrics().horizontalAdvance(label) + 4;
+            // Keep labels at the ends inside the widget instead of cutting them.
+            const double left = std::clamp(x - width / 2, double(plot.left()) - 2,
+                                           double(plot.right()) + 2 - width);
+            painter.drawText(QRectF(left, 0, width, base - 6), Qt::AlignHCenter | Qt::AlignBottom,
+                             label);
         }
     }
     painter.restore();
@@ -561,8 +567,9 @@ void CamDiagramWidget::paintLiveCursor(QPainter& painter) const {
     if (x < plot.left() || x > plot.right()) {
         return;
     }
+    const double rowsBottom = m_layout.rowBand(m_document->outputCount()).bottom();
     painter.setPen(QPen(kLiveColor, 2));
-    painter.drawLine(QPointF(x, plot.top() - 8), QPointF(x, plot.bottom()));
+    painter.drawLine(QPointF(x, plot.top() - 8), QPointF(x, std::min(rowsBottom, double(plot.bottom()))));
 }
 
 }  // namespace cambench

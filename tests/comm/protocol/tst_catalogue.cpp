@@ -8,15 +8,15 @@ using namespace cambench::comm;
 
 namespace {
 
-QByteArray label(const CommandSpec& spec) { return spec.kind + QByteArray(spec.name); }
+QByteArray label(const CommandSpec& spec) {
+    return spec.kind + QByteArray(spec.name);
+}
 
-const CommandSpec* find(const QByteArray& labelText)
-{
+const CommandSpec* find(const QByteArray& labelText) {
     return findCommand(labelText.at(0), QByteArrayView(labelText).sliced(1));
 }
 
-bool isRest(const FieldSpec& field)
-{
+bool isRest(const FieldSpec& field) {
     return field.type == FieldType::TextRest || field.type == FieldType::HexBytes ||
            (field.type == FieldType::Binary && field.width < 0) ||
            (field.type == FieldType::HexWords && field.count < 0);
@@ -25,42 +25,212 @@ bool isRest(const FieldSpec& field)
 // Every command of manual section 5 (with the typo fixes of notes 10), the
 // provisional ones of notes 3, and !C0/!C1 of 4.3.
 const QList<QByteArray> kManualCommands{
-    "!C0", "!C1",
+    "!C0",
+    "!C1",
     // 5.1
-    "?ERR", "!ERR", "?AUTO", "?ATAB", "?ETAB", "?GASPSTAB", "?GESPSTAB", "?GMPSTAB", "?GXSPSTAB",
-    "?GVSPSTAB", "!GVSPSTAB", "?BSPEED", "?SPEED", "?IGWG", "?IFGWG", "?IREE", "?PAU", "!PAU",
-    "?PNAME", "!PNAME", "?UNIT",
+    "?ERR",
+    "!ERR",
+    "?AUTO",
+    "?ATAB",
+    "?ETAB",
+    "?GASPSTAB",
+    "?GESPSTAB",
+    "?GMPSTAB",
+    "?GXSPSTAB",
+    "?GVSPSTAB",
+    "!GVSPSTAB",
+    "?BSPEED",
+    "?SPEED",
+    "?IGWG",
+    "?IFGWG",
+    "?IREE",
+    "?PAU",
+    "!PAU",
+    "?PNAME",
+    "!PNAME",
+    "?UNIT",
     // 5.2
-    "?NF", "?NL", "?NS", "?NN", "?NP", "!NINS", "!NDEL", "!NC", "?TZK", "!TZK", "?ANAME", "!ANAME",
-    "!PDEL", "!PCPY", "!PACPY", "!PT",
+    "?NF",
+    "?NL",
+    "?NS",
+    "?NN",
+    "?NP",
+    "!NINS",
+    "!NDEL",
+    "!NC",
+    "?TZK",
+    "!TZK",
+    "?ANAME",
+    "!ANAME",
+    "!PDEL",
+    "!PCPY",
+    "!PACPY",
+    "!PT",
     // 5.3
-    "?GEBER", "!GEBER", "?GTXT1", "?GTXT2", "?GISTHYS", "!GISTHYS", "?GVMAX", "!GVMAX", "?IMUL", "!IMUL",
-    "?IDIV", "!IDIV", "?IFOR", "!IFOR", "?GSTYP", "?GSSSI", "!GSSSI", "?GSPAR", "!GSPAR", "?GSINK",
-    "!GSINK", "?GSMULTI", "!GSMULTI", "?GSPLL", "!GSPLL", "?GSTIM", "!GSTIM", "?WLIN", "!WLIN", "?WANF",
-    "!WANF", "?WNULLV", "!WNULLV", "?WPRE", "!WPRE", "?WEINPRE", "!WEINPRE", "?WFLPRE", "!WFLPRE",
-    "?SFAK", "!SFAK", "?SFOR", "!SFOR", "?S100", "!S100", "?SEXA", "!SEXA", "?SSPA", "!SSPA", "?SSPE",
-    "!SSPE", "?GKL", "!GKL", "?GZYKLSOLL", "!GZYKLSOLL", "?GZYKLIST", "?ASICH", "!ASICH", "?GISTAUS",
-    "!GISTAUS", "?GVRAUS", "!GVRAUS", "?GV0AUS", "!GV0AUS", "?GV0SPEED", "!GV0SPEED", "?ASPEED",
-    "!ASPEED", "?ANOCK", "!ANOCK", "?AMODE", "!AMODE", "?ANTAB", "?EMAX", "!EMAX", "?AMAX", "!AMAX",
-    "?GTZKANZ", "!GTZKANZ", "?GTLOCK", "!GTLOCK", "?GPRGEXT", "!GPRGEXT", "?GPRGEINEXT", "!GPRGEINEXT",
-    "?GPATYP", "!GPATYP",
+    "?GEBER",
+    "!GEBER",
+    "?GTXT1",
+    "?GTXT2",
+    "?GISTHYS",
+    "!GISTHYS",
+    "?GVMAX",
+    "!GVMAX",
+    "?IMUL",
+    "!IMUL",
+    "?IDIV",
+    "!IDIV",
+    "?IFOR",
+    "!IFOR",
+    "?GSTYP",
+    "?GSSSI",
+    "!GSSSI",
+    "?GSPAR",
+    "!GSPAR",
+    "?GSINK",
+    "!GSINK",
+    "?GSMULTI",
+    "!GSMULTI",
+    "?GSPLL",
+    "!GSPLL",
+    "?GSTIM",
+    "!GSTIM",
+    "?WLIN",
+    "!WLIN",
+    "?WANF",
+    "!WANF",
+    "?WNULLV",
+    "!WNULLV",
+    "?WPRE",
+    "!WPRE",
+    "?WEINPRE",
+    "!WEINPRE",
+    "?WFLPRE",
+    "!WFLPRE",
+    "?SFAK",
+    "!SFAK",
+    "?SFOR",
+    "!SFOR",
+    "?S100",
+    "!S100",
+    "?SEXA",
+    "!SEXA",
+    "?SSPA",
+    "!SSPA",
+    "?SSPE",
+    "!SSPE",
+    "?GKL",
+    "!GKL",
+    "?GZYKLSOLL",
+    "!GZYKLSOLL",
+    "?GZYKLIST",
+    "?ASICH",
+    "!ASICH",
+    "?GISTAUS",
+    "!GISTAUS",
+    "?GVRAUS",
+    "!GVRAUS",
+    "?GV0AUS",
+    "!GV0AUS",
+    "?GV0SPEED",
+    "!GV0SPEED",
+    "?ASPEED",
+    "!ASPEED",
+    "?ANOCK",
+    "!ANOCK",
+    "?AMODE",
+    "!AMODE",
+    "?ANTAB",
+    "?EMAX",
+    "!EMAX",
+    "?AMAX",
+    "!AMAX",
+    "?GTZKANZ",
+    "!GTZKANZ",
+    "?GTLOCK",
+    "!GTLOCK",
+    "?GPRGEXT",
+    "!GPRGEXT",
+    "?GPRGEINEXT",
+    "!GPRGEINEXT",
+    "?GPATYP",
+    "!GPATYP",
     // 5.4
-    "?USER", "!USER", "!CA", "!GRESET", "?GSIO", "!GSIO", "?GNR", "!GNR", "?GANL", "!GANL", "!A0", "?A1",
-    "!A1", "?A2", "!A2", "?A3", "!A3", "?A4", "!A4", "?GTERM", "!GTERM", "?GSPRACHE", "!GSPRACHE",
-    "?BTXT", "!BTXT", "?GBOOST", "?GONSPS", "!GONSPS", "?GESPSMAX", "!GESPSMAX", "?GASPSMAX",
-    "!GASPSMAX", "?GMSPSMAX", "!GMSPSMAX", "?GXSPSMAX", "!GXSPSMAX", "?GTSPSMAX", "!GTSPSMAX",
-    "?GVSPSMAX", "!GVSPSMAX", "?GSSPSMAX", "!GSSPSMAX", "?EPROM", "?GCPUCLK", "?GTEMP", "?MEEFREE",
-    "?MEENOCK", "?GTZKMAX", "?MRAMMAX", "?MRAMFREE", "?MEES", "?MPEE", "?IMIN", "?IMAX", "?GPRGMAX",
+    "?USER",
+    "!USER",
+    "!CA",
+    "!GRESET",
+    "?GSIO",
+    "!GSIO",
+    "?GNR",
+    "!GNR",
+    "?GANL",
+    "!GANL",
+    "!A0",
+    "?A1",
+    "!A1",
+    "?A2",
+    "!A2",
+    "?A3",
+    "!A3",
+    "?A4",
+    "!A4",
+    "?GTERM",
+    "!GTERM",
+    "?GSPRACHE",
+    "!GSPRACHE",
+    "?BTXT",
+    "!BTXT",
+    "?GBOOST",
+    "?GONSPS",
+    "!GONSPS",
+    "?GESPSMAX",
+    "!GESPSMAX",
+    "?GASPSMAX",
+    "!GASPSMAX",
+    "?GMSPSMAX",
+    "!GMSPSMAX",
+    "?GXSPSMAX",
+    "!GXSPSMAX",
+    "?GTSPSMAX",
+    "!GTSPSMAX",
+    "?GVSPSMAX",
+    "!GVSPSMAX",
+    "?GSSPSMAX",
+    "!GSSPSMAX",
+    "?EPROM",
+    "?GCPUCLK",
+    "?GTEMP",
+    "?MEEFREE",
+    "?MEENOCK",
+    "?GTZKMAX",
+    "?MRAMMAX",
+    "?MRAMFREE",
+    "?MEES",
+    "?MPEE",
+    "?IMIN",
+    "?IMAX",
+    "?GPRGMAX",
     "?MEETZK",
     // 5.5 .. 5.7
-    "?GMXSPS", "!GMXSPS", "?SPSIST", "!SPSIST", "?SPSSOLL", "!SPSSOLL", "?ETXT", "!ETXT", "?EE", "!EE",
-    "?ML", "!MS", "!MW",
+    "?GMXSPS",
+    "!GMXSPS",
+    "?SPSIST",
+    "!SPSIST",
+    "?SPSSOLL",
+    "!SPSSOLL",
+    "?ETXT",
+    "!ETXT",
+    "?EE",
+    "!EE",
+    "?ML",
+    "!MS",
+    "!MW",
 };
 
 const QList<QByteArray> kProvisional{
-    "?BSPEED", "?SPEED", "?IGWG", "?IFGWG", "?IREE", "?PAU", "!PAU", "?PNAME", "!PNAME", "!NC",
-    "?TZK", "!TZK", "?ANAME", "!ANAME", "?GSTYP", "?GSSSI", "!GSSSI", "?GSPAR", "!GSPAR", "?GSINK",
-    "!GSINK", "?GSMULTI", "!GSMULTI", "?GSPLL", "!GSPLL",
+    "?BSPEED", "?SPEED", "?IGWG",  "?IFGWG",   "?IREE",    "?PAU",   "!PAU",   "?PNAME", "!PNAME",
+    "!NC",     "?TZK",   "!TZK",   "?ANAME",   "!ANAME",   "?GSTYP", "?GSSSI", "!GSSSI", "?GSPAR",
+    "!GSPAR",  "?GSINK", "!GSINK", "?GSMULTI", "!GSMULTI", "?GSPLL", "!GSPLL",
 };
 
 }  // namespace
@@ -85,23 +255,20 @@ private Q_SLOTS:
     void noCommandNameIsPrefixOfAnotherOfSameKind();
 };
 
-void TestCatalogue::containsEveryManualCommand()
-{
+void TestCatalogue::containsEveryManualCommand() {
     for (const QByteArray& command : kManualCommands) {
         QVERIFY2(find(command) != nullptr, command.constData());
     }
 }
 
-void TestCatalogue::hasNoDuplicateCommands()
-{
+void TestCatalogue::hasNoDuplicateCommands() {
     std::set<QByteArray> seen;
     for (const CommandSpec& spec : commandCatalogue()) {
         QVERIFY2(seen.insert(label(spec)).second, label(spec).constData());
     }
 }
 
-void TestCatalogue::everyRowNamesItsSection()
-{
+void TestCatalogue::everyRowNamesItsSection() {
     for (const CommandSpec& spec : commandCatalogue()) {
         QVERIFY2(spec.section && QByteArray(spec.section).size() >= 3, label(spec).constData());
         QVERIFY2(spec.kind == '?' || spec.kind == '!', label(spec).constData());
@@ -109,8 +276,7 @@ void TestCatalogue::everyRowNamesItsSection()
     }
 }
 
-void TestCatalogue::marksProvisionalFormats()
-{
+void TestCatalogue::marksProvisionalFormats() {
     for (const QByteArray& command : kProvisional) {
         const CommandSpec* spec = find(command);
         QVERIFY2(spec && spec->provisional, command.constData());
@@ -119,9 +285,9 @@ void TestCatalogue::marksProvisionalFormats()
     QVERIFY(!find("?GSTIM")->provisional);
 }
 
-void TestCatalogue::appliesTypoFixesOfNotes()
-{
-    for (const char* command : {"!GEBER", "!IMUL", "!IDIV", "!WLIN", "!WPRE", "!GANL", "!SPSSOLL"}) {
+void TestCatalogue::appliesTypoFixesOfNotes() {
+    for (const char* command :
+         {"!GEBER", "!IMUL", "!IDIV", "!WLIN", "!WPRE", "!GANL", "!SPSSOLL"}) {
         const CommandSpec* spec = find(command);
         QVERIFY2(spec && spec->replyKind == ReplyKind::Ok, command);
     }
@@ -132,8 +298,7 @@ void TestCatalogue::appliesTypoFixesOfNotes()
     QCOMPARE(find("?MPEE")->replyAliases, QList<QByteArray>{"MPE"});
 }
 
-void TestCatalogue::marksSlowAndSilentCommands()
-{
+void TestCatalogue::marksSlowAndSilentCommands() {
     QCOMPARE(find("!CA")->timeout, TimeoutClass::Long);
     QCOMPARE(find("!EE")->timeout, TimeoutClass::Long);
     QCOMPARE(find("?EE")->timeout, TimeoutClass::Normal);
@@ -143,8 +308,7 @@ void TestCatalogue::marksSlowAndSilentCommands()
     }
 }
 
-void TestCatalogue::fieldNamesAreUniqueAndRestFieldsComeLast()
-{
+void TestCatalogue::fieldNamesAreUniqueAndRestFieldsComeLast() {
     for (const CommandSpec& spec : commandCatalogue()) {
         for (const QList<FieldSpec>* list : {&spec.request, &spec.reply}) {
             std::set<QByteArray> names;
@@ -162,8 +326,7 @@ void TestCatalogue::fieldNamesAreUniqueAndRestFieldsComeLast()
     }
 }
 
-void TestCatalogue::fieldWidthsFollowNormalisedTable()
-{
+void TestCatalogue::fieldWidthsFollowNormalisedTable() {
     auto field = [](const char* command, bool reply, const char* name) -> FieldSpec {
         const CommandSpec* spec = find(command);
         for (const FieldSpec& f : reply ? spec->reply : spec->request) {
@@ -197,20 +360,21 @@ void TestCatalogue::fieldWidthsFollowNormalisedTable()
     QCOMPARE(field("?AUTO", true, "text").type, FieldType::TextRest);
 }
 
-void TestCatalogue::singleValueSettingsUseValueOrTextOnBothSides()
-{
+void TestCatalogue::singleValueSettingsUseValueOrTextOnBothSides() {
     int checked = 0;
     for (const CommandSpec& spec : commandCatalogue()) {
         if (spec.kind != '?' || !spec.request.isEmpty() || spec.reply.size() != 1) continue;
         const FieldSpec& reply = spec.reply.first();
-        if (reply.type == FieldType::HexBytes || reply.type == FieldType::HexWords) continue;  // tables
-        const QByteArray expected = reply.type == FieldType::Text || reply.type == FieldType::TextRest
-                                        ? "text" : "value";
+        if (reply.type == FieldType::HexBytes || reply.type == FieldType::HexWords)
+            continue;  // tables
+        const QByteArray expected =
+            reply.type == FieldType::Text || reply.type == FieldType::TextRest ? "text" : "value";
         QVERIFY2(QByteArray(reply.name) == expected, label(spec).constData());
         const CommandSpec* write = findCommand('!', spec.name);
         if (write && !write->request.isEmpty()) {  // !ERR resets, it writes no value
             QCOMPARE(write->request.size(), 1);
-            QVERIFY2(QByteArray(write->request.first().name) == expected, label(*write).constData());
+            QVERIFY2(QByteArray(write->request.first().name) == expected,
+                     label(*write).constData());
             QCOMPARE(write->request.first().width, reply.width);
             QCOMPARE(write->request.first().type, reply.type);
         }
@@ -219,8 +383,7 @@ void TestCatalogue::singleValueSettingsUseValueOrTextOnBothSides()
     QVERIFY(checked > 50);
 }
 
-void TestCatalogue::userCommandsCarryRightsAndBinaryAccess()
-{
+void TestCatalogue::userCommandsCarryRightsAndBinaryAccess() {
     const CommandSpec* query = find("?USER");
     const CommandSpec* write = find("!USER");
     QCOMPARE(query->section, "7.1.1.1");
@@ -234,16 +397,14 @@ void TestCatalogue::userCommandsCarryRightsAndBinaryAccess()
     QCOMPARE(write->request.mid(1).size(), query->reply.size());
 }
 
-void TestCatalogue::findCommandReturnsNullForUnknownNames()
-{
+void TestCatalogue::findCommandReturnsNullForUnknownNames() {
     QVERIFY(findCommand('?', "NOPE") == nullptr);
     QVERIFY(findCommand('?', "N") == nullptr);
     QVERIFY(findCommand('!', "NF") == nullptr);  // ?NF only
     QVERIFY(findCommand(':', "NF") == nullptr);
 }
 
-void TestCatalogue::matchRequestPrefersLongestName_data()
-{
+void TestCatalogue::matchRequestPrefersLongestName_data() {
     QTest::addColumn<char>("kind");
     QTest::addColumn<QByteArray>("body");
     QTest::addColumn<QByteArray>("expected");  // empty = no match
@@ -262,8 +423,7 @@ void TestCatalogue::matchRequestPrefersLongestName_data()
     QTest::newRow("kind matters") << '!' << QByteArray("NF000003") << QByteArray();
 }
 
-void TestCatalogue::matchRequestPrefersLongestName()
-{
+void TestCatalogue::matchRequestPrefersLongestName() {
     QFETCH(char, kind);
     QFETCH(QByteArray, body);
     QFETCH(QByteArray, expected);
@@ -277,8 +437,7 @@ void TestCatalogue::matchRequestPrefersLongestName()
     }
 }
 
-void TestCatalogue::noCommandNameIsPrefixOfAnotherOfSameKind()
-{
+void TestCatalogue::noCommandNameIsPrefixOfAnotherOfSameKind() {
     // With no such pair, a request or reply name is found by prefix alone,
     // whatever data follows.
     const QList<CommandSpec>& catalogue = commandCatalogue();

@@ -14,34 +14,34 @@ namespace {
 // Sample values per variant: 0 = largest values and full texts, 1 = smallest
 // values and empty texts, 2 = mixed values with CR, ESC and LF in texts and
 // binary data (exercising the frame escapes).
-qint64 sampleNumber(const FieldSpec& field, int variant, int index)
-{
+qint64 sampleNumber(const FieldSpec& field, int variant, int index) {
     const int bits = 4 * field.width;
     const bool isSigned = field.type == FieldType::SignedHex;
     const qint64 max = isSigned ? (qint64(1) << (bits - 1)) - 1 : (qint64(1) << bits) - 1;
     const qint64 min = isSigned ? -(qint64(1) << (bits - 1)) : 0;
     switch (variant) {
-    case 0: return isSigned ? min : max;
-    case 1: return isSigned ? max : min;
-    default: {
-        const qint64 span = max - min + 1;
-        return min + (0x5A3C96E1LL + 7919LL * index) % span;
-    }
+        case 0:
+            return isSigned ? min : max;
+        case 1:
+            return isSigned ? max : min;
+        default: {
+            const qint64 span = max - min + 1;
+            return min + (0x5A3C96E1LL + 7919LL * index) % span;
+        }
     }
 }
 
-QByteArray sampleBytes(int size, int variant)
-{
+QByteArray sampleBytes(int size, int variant) {
     static const char kSpecial[] = {'\r', '\x1b', '\n', '\0', ':', '?', '!'};
     QByteArray bytes;
     for (int i = 0; i < size; ++i) {
-        bytes.append(variant == 2 && i % 3 == 0 ? kSpecial[(i / 3) % sizeof kSpecial] : char(0x20 + (i * 37 + variant) % 200));
+        bytes.append(variant == 2 && i % 3 == 0 ? kSpecial[(i / 3) % sizeof kSpecial]
+                                                : char(0x20 + (i * 37 + variant) % 200));
     }
     return bytes;
 }
 
-QByteArray sampleText(int maxLength, int variant)
-{
+QByteArray sampleText(int maxLength, int variant) {
     if (variant == 1) return {};
     QByteArray text;
     static const char kChars[] = "Ab3 #.,\r\x1b\n-Zz9";
@@ -50,43 +50,54 @@ QByteArray sampleText(int maxLength, int variant)
     return text;
 }
 
-Fields sampleFields(const QList<FieldSpec>& specs, int variant)
-{
+Fields sampleFields(const QList<FieldSpec>& specs, int variant) {
     Fields fields;
     for (int i = 0; i < specs.size(); ++i) {
         const FieldSpec& field = specs[i];
         switch (field.type) {
-        case FieldType::Hex:
-        case FieldType::SignedHex: fields.set(field.name, sampleNumber(field, variant, i)); break;
-        case FieldType::Text: fields.setBytes(field.name, sampleText(field.width - 1, variant)); break;
-        case FieldType::TextRest: fields.setBytes(field.name, sampleText(12, variant)); break;
-        case FieldType::Binary:
-            fields.setBytes(field.name, sampleBytes(field.width >= 0 ? field.width : (variant == 1 ? 0 : 90 + variant * 19), variant));
-            break;
-        case FieldType::HexBytes: fields.setBytes(field.name, sampleBytes(variant == 1 ? 0 : 25, variant)); break;
-        case FieldType::HexWords: {
-            const int count = field.count >= 0 ? field.count : (variant == 1 ? 0 : 5 + variant);
-            QList<qint64> words;
-            for (int w = 0; w < count; ++w) {
-                words.append(variant == 0 ? 0xFFFF : variant == 1 ? 0 : (w * 4099 + 17) & 0xFFFF);
+            case FieldType::Hex:
+            case FieldType::SignedHex:
+                fields.set(field.name, sampleNumber(field, variant, i));
+                break;
+            case FieldType::Text:
+                fields.setBytes(field.name, sampleText(field.width - 1, variant));
+                break;
+            case FieldType::TextRest:
+                fields.setBytes(field.name, sampleText(12, variant));
+                break;
+            case FieldType::Binary:
+                fields.setBytes(
+                    field.name,
+                    sampleBytes(
+                        field.width >= 0 ? field.width : (variant == 1 ? 0 : 90 + variant * 19),
+                        variant));
+                break;
+            case FieldType::HexBytes:
+                fields.setBytes(field.name, sampleBytes(variant == 1 ? 0 : 25, variant));
+                break;
+            case FieldType::HexWords: {
+                const int count = field.count >= 0 ? field.count : (variant == 1 ? 0 : 5 + variant);
+                QList<qint64> words;
+                for (int w = 0; w < count; ++w) {
+                    words.append(variant == 0   ? 0xFFFF
+                                 : variant == 1 ? 0
+                                                : (w * 4099 + 17) & 0xFFFF);
+                }
+                fields.setWords(field.name, words);
+                break;
             }
-            fields.setWords(field.name, words);
-            break;
-        }
         }
     }
     return fields;
 }
 
-const CommandSpec& spec(char kind, const char* name)
-{
+const CommandSpec& spec(char kind, const char* name) {
     const CommandSpec* found = findCommand(kind, name);
     Q_ASSERT(found);
     return *found;
 }
 
-Frame replyFrame(const QByteArray& body)
-{
+Frame replyFrame(const QByteArray& body) {
     Frame frame;
     frame.lead = ':';
     frame.body = body;
@@ -94,16 +105,14 @@ Frame replyFrame(const QByteArray& body)
 }
 
 // Sends `frame` through encodeFrame and a fresh decoder: the frame that arrives.
-std::optional<Frame> overTheWire(const Frame& frame, const QByteArray& leads)
-{
+std::optional<Frame> overTheWire(const Frame& frame, const QByteArray& leads) {
     StreamDecoder decoder(frame.address ? Framing::Multiuser : Framing::Standard, leads);
     const QList<DecodeEvent> events = decoder.feed(encodeFrame(frame));
     if (events.size() != 1 || events[0].kind != DecodeEvent::FrameOk) return std::nullopt;
     return events[0].frame;
 }
 
-void addCatalogueRows()
-{
+void addCatalogueRows() {
     QTest::addColumn<int>("index");
     QTest::addColumn<int>("variant");
     const QList<CommandSpec>& catalogue = commandCatalogue();
@@ -148,10 +157,11 @@ private Q_SLOTS:
     void deviceErrorTextsCoverManualList();
 };
 
-void TestCommandCodec::everyRequestRoundTripsThroughTheWire_data() { addCatalogueRows(); }
+void TestCommandCodec::everyRequestRoundTripsThroughTheWire_data() {
+    addCatalogueRows();
+}
 
-void TestCommandCodec::everyRequestRoundTripsThroughTheWire()
-{
+void TestCommandCodec::everyRequestRoundTripsThroughTheWire() {
     QFETCH(int, index);
     QFETCH(int, variant);
     const CommandSpec& command = commandCatalogue().at(index);
@@ -174,28 +184,32 @@ void TestCommandCodec::everyRequestRoundTripsThroughTheWire()
     QCOMPARE(*decoded, fields);
 }
 
-void TestCommandCodec::everyReplyRoundTripsThroughTheWire_data() { addCatalogueRows(); }
+void TestCommandCodec::everyReplyRoundTripsThroughTheWire_data() {
+    addCatalogueRows();
+}
 
-void TestCommandCodec::everyReplyRoundTripsThroughTheWire()
-{
+void TestCommandCodec::everyReplyRoundTripsThroughTheWire() {
     QFETCH(int, index);
     QFETCH(int, variant);
     const CommandSpec& command = commandCatalogue().at(index);
     Fields fields;
     QByteArray body;
     switch (command.replyKind) {
-    case ReplyKind::Data: {
-        fields = sampleFields(command.reply, variant);
-        const Result<QByteArray> encoded = encodeReplyBody(command, fields);
-        QVERIFY2(encoded.ok(), qPrintable(encoded.error().message));
-        body = *encoded;
-        break;
-    }
-    case ReplyKind::Ok: body = okReplyBody(command); break;
-    case ReplyKind::None:
-        QVERIFY(!encodeReplyBody(command, {}).ok());
-        QCOMPARE(matchReply(command, replyFrame(okReplyBody(command))).kind, ReplyMatch::Unrelated);
-        return;
+        case ReplyKind::Data: {
+            fields = sampleFields(command.reply, variant);
+            const Result<QByteArray> encoded = encodeReplyBody(command, fields);
+            QVERIFY2(encoded.ok(), qPrintable(encoded.error().message));
+            body = *encoded;
+            break;
+        }
+        case ReplyKind::Ok:
+            body = okReplyBody(command);
+            break;
+        case ReplyKind::None:
+            QVERIFY(!encodeReplyBody(command, {}).ok());
+            QCOMPARE(matchReply(command, replyFrame(okReplyBody(command))).kind,
+                     ReplyMatch::Unrelated);
+            return;
     }
     Frame frame = replyFrame(body);
     if (variant == 2) frame.address = MultiuserAddress{12, 63, 40};
@@ -207,10 +221,11 @@ void TestCommandCodec::everyReplyRoundTripsThroughTheWire()
     QCOMPARE(match.fields, fields);
 }
 
-void TestCommandCodec::everyCommandRecognisesItsErrorReply_data() { addCatalogueRows(); }
+void TestCommandCodec::everyCommandRecognisesItsErrorReply_data() {
+    addCatalogueRows();
+}
 
-void TestCommandCodec::everyCommandRecognisesItsErrorReply()
-{
+void TestCommandCodec::everyCommandRecognisesItsErrorReply() {
     QFETCH(int, index);
     QFETCH(int, variant);
     const CommandSpec& command = commandCatalogue().at(index);
@@ -220,8 +235,7 @@ void TestCommandCodec::everyCommandRecognisesItsErrorReply()
     QCOMPARE(match.errorCode, code);
 }
 
-void TestCommandCodec::manualVectorsEncodeAsRequests()
-{
+void TestCommandCodec::manualVectorsEncodeAsRequests() {
     auto wire = [](char kind, const char* name, const Fields& fields) {
         Frame frame;
         frame.lead = kind;
@@ -235,8 +249,7 @@ void TestCommandCodec::manualVectorsEncodeAsRequests()
     QCOMPARE(wire('!', "EE", emptyBlock), QByteArray("!EE00058F\r\n"));
 }
 
-void TestCommandCodec::manualVectorsMatchAsReplies()
-{
+void TestCommandCodec::manualVectorsMatchAsReplies() {
     StreamDecoder decoder(Framing::Standard, ":");
     const QList<DecodeEvent> events =
         decoder.feed(":IFOROKFB\r\n:EEOKA1\r\n:EEFFFF23\r\n:EEERRFFFFFFD535\r\n");
@@ -255,11 +268,11 @@ void TestCommandCodec::manualVectorsMatchAsReplies()
     QCOMPARE(error.errorCode, -43);
 }
 
-void TestCommandCodec::errorCodeIsSignedThirtyTwoBits()
-{
+void TestCommandCodec::errorCodeIsSignedThirtyTwoBits() {
     const CommandSpec& nf = spec('?', "NF");
     QCOMPARE(matchReply(nf, replyFrame("NFERR7FFFFFFF")).errorCode, 2147483647);
-    QCOMPARE(matchReply(nf, replyFrame("NFERR80000000")).errorCode, std::numeric_limits<qint32>::min());
+    QCOMPARE(matchReply(nf, replyFrame("NFERR80000000")).errorCode,
+             std::numeric_limits<qint32>::min());
     QCOMPARE(errorReplyBody(nf, -43), QByteArray("NFERRFFFFFFD5"));
     // ?ERR's own reply starts with its name "ERR": the data still decides.
     const ReplyMatch status = matchReply(spec('?', "ERR"), replyFrame("ERR04"));
@@ -268,8 +281,7 @@ void TestCommandCodec::errorCodeIsSignedThirtyTwoBits()
     QCOMPARE(matchReply(spec('?', "ERR"), replyFrame("ERRERRFFFFFFFF")).errorCode, -1);
 }
 
-void TestCommandCodec::notUnderstoodCarriesEpromDate()
-{
+void TestCommandCodec::notUnderstoodCarriesEpromDate() {
     const QByteArray body = notUnderstoodBody("11.10.1994");
     QCOMPARE(body, QByteArray("Z11.10.1994\0", 12));
     const ReplyMatch match = matchReply(spec('?', "GSPLL"), replyFrame(body));
@@ -277,8 +289,7 @@ void TestCommandCodec::notUnderstoodCarriesEpromDate()
     QCOMPARE(match.eprom, QByteArray("11.10.1994"));
 }
 
-void TestCommandCodec::repliesToOtherCommandsAreUnrelated()
-{
+void TestCommandCodec::repliesToOtherCommandsAreUnrelated() {
     const CommandSpec& nf = spec('?', "NF");
     QCOMPARE(matchReply(nf, replyFrame("NL0000000A0000001401")).kind, ReplyMatch::Unrelated);
     QCOMPARE(matchReply(nf, replyFrame("EEOK")).kind, ReplyMatch::Unrelated);
@@ -287,8 +298,7 @@ void TestCommandCodec::repliesToOtherCommandsAreUnrelated()
     QCOMPARE(matchReply(nf, request).kind, ReplyMatch::Unrelated);
 }
 
-void TestCommandCodec::wrongDataIsMalformed()
-{
+void TestCommandCodec::wrongDataIsMalformed() {
     const CommandSpec& nf = spec('?', "NF");
     QCOMPARE(matchReply(nf, replyFrame("NF0000000A0000001401")).kind, ReplyMatch::Matches);
     const ReplyMatch shortReply = matchReply(nf, replyFrame("NF0000000A00000014"));
@@ -302,8 +312,7 @@ void TestCommandCodec::wrongDataIsMalformed()
     QCOMPARE(matchReply(spec('?', "ANTAB"), replyFrame("ANTAB12345")).kind, ReplyMatch::Malformed);
 }
 
-void TestCommandCodec::okReplyMustSayOkUnlessOptional()
-{
+void TestCommandCodec::okReplyMustSayOkUnlessOptional() {
     QCOMPARE(matchReply(spec('!', "AMAX"), replyFrame("AMAXOK")).kind, ReplyMatch::Matches);
     QCOMPARE(matchReply(spec('!', "AMAX"), replyFrame("AMAX")).kind, ReplyMatch::Malformed);
     QCOMPARE(matchReply(spec('!', "AMAX"), replyFrame("AMAXNO")).kind, ReplyMatch::Malformed);
@@ -311,27 +320,28 @@ void TestCommandCodec::okReplyMustSayOkUnlessOptional()
     QCOMPARE(matchReply(spec('!', "GTZKANZ"), replyFrame("GTZKANZOK")).kind, ReplyMatch::Matches);
 }
 
-void TestCommandCodec::replyAliasIsAccepted()
-{
+void TestCommandCodec::replyAliasIsAccepted() {
     const ReplyMatch printed = matchReply(spec('?', "MEES"), replyFrame("MSE0000ABCD"));
     QCOMPARE(printed.kind, ReplyMatch::Matches);
     QCOMPARE(printed.fields.num("value"), 0xABCD);
     QCOMPARE(matchReply(spec('?', "MEES"), replyFrame("MEES0000ABCD")).fields.num("value"), 0xABCD);
     // "MPE" prefixes "MPEE": a value starting with E must still decode.
-    QCOMPARE(matchReply(spec('?', "MPEE"), replyFrame("MPEE0001234")).fields.num("value"), 0xE0001234);
-    QCOMPARE(matchReply(spec('?', "MPEE"), replyFrame("MPEEE0001234")).fields.num("value"), 0xE0001234);
+    QCOMPARE(matchReply(spec('?', "MPEE"), replyFrame("MPEE0001234")).fields.num("value"),
+             0xE0001234);
+    QCOMPARE(matchReply(spec('?', "MPEE"), replyFrame("MPEEE0001234")).fields.num("value"),
+             0xE0001234);
     QCOMPARE(matchReply(spec('?', "MPEE"), replyFrame("MPE12")).kind, ReplyMatch::Malformed);
 }
 
-void TestCommandCodec::silentCommandTreatsEveryReplyAsUnrelated()
-{
+void TestCommandCodec::silentCommandTreatsEveryReplyAsUnrelated() {
     QCOMPARE(matchReply(spec('!', "GRESET"), replyFrame("GRESETOK")).kind, ReplyMatch::Unrelated);
 }
 
-void TestCommandCodec::signedFieldsAreSignExtended()
-{
-    const QList<FieldSpec> specs{{"a", FieldType::SignedHex, 8}, {"b", FieldType::SignedHex, 4},
-                                 {"c", FieldType::Hex, 4}, {"d", FieldType::SignedHex, 8}};
+void TestCommandCodec::signedFieldsAreSignExtended() {
+    const QList<FieldSpec> specs{{"a", FieldType::SignedHex, 8},
+                                 {"b", FieldType::SignedHex, 4},
+                                 {"c", FieldType::Hex, 4},
+                                 {"d", FieldType::SignedHex, 8}};
     const Result<Fields> fields = decodeFields(specs, "FFFFFFFF8000FFFF80000000");
     QVERIFY(fields.ok());
     QCOMPARE(fields->num("a"), -1);
@@ -341,15 +351,13 @@ void TestCommandCodec::signedFieldsAreSignExtended()
     QCOMPARE(encodeFields(specs, *fields).value(), QByteArray("FFFFFFFF8000FFFF80000000"));
 }
 
-void TestCommandCodec::decodeAcceptsLowerCaseHex()
-{
+void TestCommandCodec::decodeAcceptsLowerCaseHex() {
     const Result<Fields> fields = decodeFields({{"v", FieldType::Hex, 4}}, "abcd");
     QVERIFY(fields.ok());
     QCOMPARE(fields->num("v"), 0xABCD);
 }
 
-void TestCommandCodec::decodeRejectsTrailingData()
-{
+void TestCommandCodec::decodeRejectsTrailingData() {
     const Result<Fields> fields = decodeFields({{"v", FieldType::Hex, 2}}, "0102");
     QVERIFY(!fields.ok());
     QCOMPARE(fields.error().kind, ErrorKind::Communication);
@@ -357,22 +365,23 @@ void TestCommandCodec::decodeRejectsTrailingData()
     QVERIFY(decodeFields({}, "").ok());
 }
 
-void TestCommandCodec::textsLoseTheirNulPadding()
-{
-    const Result<Fields> fields = decodeFields({{"t", FieldType::Text, 10}}, QByteArray("#.##\0\0\0\0\0\0", 10));
+void TestCommandCodec::textsLoseTheirNulPadding() {
+    const Result<Fields> fields =
+        decodeFields({{"t", FieldType::Text, 10}}, QByteArray("#.##\0\0\0\0\0\0", 10));
     QVERIFY(fields.ok());
     QCOMPARE(fields->bytes("t"), QByteArray("#.##"));
     Fields text;
     text.setBytes("t", "#.##");
-    QCOMPARE(encodeFields({{"t", FieldType::Text, 10}}, text).value(), QByteArray("#.##\0\0\0\0\0\0", 10));
+    QCOMPARE(encodeFields({{"t", FieldType::Text, 10}}, text).value(),
+             QByteArray("#.##\0\0\0\0\0\0", 10));
 }
 
-void TestCommandCodec::valueOutsideWidthIsInvalidDataNamingTheField_data()
-{
+void TestCommandCodec::valueOutsideWidthIsInvalidDataNamingTheField_data() {
     QTest::addColumn<QByteArray>("command");
     QTest::addColumn<Fields>("fields");
     QTest::addColumn<QString>("field");
-    QTest::newRow("program too big") << QByteArray("?NF") << Fields{{"program", 0x10000}} << "program";
+    QTest::newRow("program too big")
+        << QByteArray("?NF") << Fields{{"program", 0x10000}} << "program";
     QTest::newRow("negative output") << QByteArray("?NF") << Fields{{"output", -1}} << "output";
     QTest::newRow("cam point above int32")
         << QByteArray("!NINS") << Fields{{"on", qint64(0x80000000LL)}} << "on";
@@ -380,7 +389,8 @@ void TestCommandCodec::valueOutsideWidthIsInvalidDataNamingTheField_data()
         << QByteArray("!NINS") << Fields{{"off", qint64(-0x80000001LL)}} << "off";
     QTest::newRow("offset word") << QByteArray("!AMODE") << Fields{{"offset", 40000}} << "offset";
     QTest::newRow("dead time negative") << QByteArray("!TZK") << Fields{{"value", -1}} << "value";
-    QTest::newRow("not a number") << QByteArray("!PAU") << Fields{{"value", QByteArray("abc")}} << "value";
+    QTest::newRow("not a number") << QByteArray("!PAU") << Fields{{"value", QByteArray("abc")}}
+                                  << "value";
     Fields longText;
     longText.setBytes("text", "1234567890");
     QTest::newRow("format too long") << QByteArray("!IFOR") << longText << "text";
@@ -398,44 +408,45 @@ void TestCommandCodec::valueOutsideWidthIsInvalidDataNamingTheField_data()
     QTest::newRow("symbol word") << QByteArray("!GMXSPS") << symbolValue << "symbols";
 }
 
-void TestCommandCodec::valueOutsideWidthIsInvalidDataNamingTheField()
-{
+void TestCommandCodec::valueOutsideWidthIsInvalidDataNamingTheField() {
     QFETCH(QByteArray, command);
     QFETCH(Fields, fields);
     QFETCH(QString, field);
-    const Result<QByteArray> body = encodeRequestBody(spec(command[0], command.constData() + 1), fields);
+    const Result<QByteArray> body =
+        encodeRequestBody(spec(command[0], command.constData() + 1), fields);
     QVERIFY(!body.ok());
     QCOMPARE(body.error().kind, ErrorKind::InvalidData);
     QVERIFY2(body.error().message.contains(QLatin1Char('"') + field + QLatin1Char('"')),
              qPrintable(body.error().message));
-    QVERIFY2(body.error().message.contains(QString::fromLatin1(command)), qPrintable(body.error().message));
+    QVERIFY2(body.error().message.contains(QString::fromLatin1(command)),
+             qPrintable(body.error().message));
 }
 
-void TestCommandCodec::missingValuesEncodeAsZeroOrEmpty()
-{
+void TestCommandCodec::missingValuesEncodeAsZeroOrEmpty() {
     QCOMPARE(encodeRequestBody(spec('?', "NF"), {}).value(), QByteArray("NF000000"));
     QCOMPARE(encodeRequestBody(spec('?', "NF"), {{"program", 3}, {"output", 0xD5}}).value(),
              QByteArray("NF0003D5"));
-    QCOMPARE(encodeRequestBody(spec('!', "IFOR"), {}).value(), QByteArray("IFOR") + QByteArray(10, '\0'));
+    QCOMPARE(encodeRequestBody(spec('!', "IFOR"), {}).value(),
+             QByteArray("IFOR") + QByteArray(10, '\0'));
     QCOMPARE(encodeRequestBody(spec('!', "NINS"), {{"on", -1}, {"off", 359}}).value(),
              QByteArray("NINS000000FFFFFFFF00000167"));
 }
 
-void TestCommandCodec::requestOfWrongCommandIsRejected()
-{
+void TestCommandCodec::requestOfWrongCommandIsRejected() {
     QVERIFY(!decodeRequestFields(spec('?', "NF"), "NL").ok());
     const Result<Fields> shortRequest = decodeRequestFields(spec('?', "NF"), "NF0001");
     QVERIFY(!shortRequest.ok());
-    QVERIFY2(shortRequest.error().message.contains("output"), qPrintable(shortRequest.error().message));
+    QVERIFY2(shortRequest.error().message.contains("output"),
+             qPrintable(shortRequest.error().message));
 }
 
-void TestCommandCodec::deviceErrorTextsCoverManualList()
-{
+void TestCommandCodec::deviceErrorTextsCoverManualList() {
     QVERIFY(deviceErrorText(-43).contains("block number order"));
     QVERIFY(deviceErrorText(-21).contains("EEPROM full"));
     QVERIFY(deviceErrorText(-39).contains("EEPROM full"));
     for (qint32 code : {-1, -10, -12, -20, -30, -40, -41, -42, -43, -44, -45, -46}) {
-        QVERIFY2(!deviceErrorText(code).contains("Unknown device error"), qPrintable(QString::number(code)));
+        QVERIFY2(!deviceErrorText(code).contains("Unknown device error"),
+                 qPrintable(QString::number(code)));
     }
     QCOMPARE(deviceErrorText(5), QStringLiteral("Unknown device error 5."));
     QCOMPARE(deviceErrorText(-47), QStringLiteral("Unknown device error -47."));

@@ -19,8 +19,7 @@ private Q_SLOTS:
     void multiuserHeaderPrecedesLeadAndIsNotInChecksum();
 };
 
-void TestFrame::manualVectorsEncodeByteExact_data()
-{
+void TestFrame::manualVectorsEncodeByteExact_data() {
     QTest::addColumn<char>("lead");
     QTest::addColumn<QByteArray>("body");
     QTest::addColumn<QByteArray>("wire");
@@ -31,11 +30,11 @@ void TestFrame::manualVectorsEncodeByteExact_data()
     QTest::newRow(":EEFFFF") << ':' << QByteArray("EEFFFF") << QByteArray(":EEFFFF23\r\n");
     QTest::newRow("?EE0001") << '?' << QByteArray("EE0001") << QByteArray("?EE000175\r\n");
     QTest::newRow("!EE0005") << '!' << QByteArray("EE0005") << QByteArray("!EE00058F\r\n");
-    QTest::newRow(":EEERR-43") << ':' << QByteArray("EEERRFFFFFFD5") << QByteArray(":EEERRFFFFFFD535\r\n");
+    QTest::newRow(":EEERR-43") << ':' << QByteArray("EEERRFFFFFFD5")
+                               << QByteArray(":EEERRFFFFFFD535\r\n");
 }
 
-void TestFrame::manualVectorsEncodeByteExact()
-{
+void TestFrame::manualVectorsEncodeByteExact() {
     QFETCH(char, lead);
     QFETCH(QByteArray, body);
     QFETCH(QByteArray, wire);
@@ -45,28 +44,29 @@ void TestFrame::manualVectorsEncodeByteExact()
     QCOMPARE(encodeFrame(frame), wire);
 }
 
-void TestFrame::checksumOfManualExampleIs4C()
-{
+void TestFrame::checksumOfManualExampleIs4C() {
     // Manual 4.3: sum of "?IFGWG" is B3h, inverted 4Ch.
     QCOMPARE(checksum('?', "IFGWG"), quint8(0x4C));
 }
 
-void TestFrame::checksumTextIsTwoUpperCaseDigits()
-{
+void TestFrame::checksumTextIsTwoUpperCaseDigits() {
     QCOMPARE(checksumText(0x00), QByteArray("00"));
     QCOMPARE(checksumText(0x0A), QByteArray("0A"));
     QCOMPARE(checksumText(0xFB), QByteArray("FB"));
 }
 
-void TestFrame::escapeBodyPrefixesCrAndEscOnly()
-{
-    const QByteArray body("A\rB\x1b" "C\nD", 7);
-    QCOMPARE(escapeBody(body), QByteArray("A\x1b\rB\x1b\x1b" "C\nD", 9));
+void TestFrame::escapeBodyPrefixesCrAndEscOnly() {
+    const QByteArray body(
+        "A\rB\x1b"
+        "C\nD",
+        7);
+    QCOMPARE(escapeBody(body), QByteArray("A\x1b\rB\x1b\x1b"
+                                          "C\nD",
+                                          9));
     QCOMPARE(escapeBody(""), QByteArray());
 }
 
-void TestFrame::checksumExcludesEscapeBytes()
-{
+void TestFrame::checksumExcludesEscapeBytes() {
     const QByteArray data("\x20\r\x1b\x00\x0a", 5);
     Frame frame;
     frame.lead = '!';
@@ -79,8 +79,7 @@ void TestFrame::checksumExcludesEscapeBytes()
     QCOMPARE(wire, QByteArray("!EE0001\x20\x1b\r\x1b\x1b\x00\x0a", 14) + expectedChecksum + "\r\n");
 }
 
-void TestFrame::frameWithoutChecksumEndsDirectlyWithCrLf()
-{
+void TestFrame::frameWithoutChecksumEndsDirectlyWithCrLf() {
     Frame frame;
     frame.lead = '!';
     frame.body = "C0";
@@ -88,14 +87,12 @@ void TestFrame::frameWithoutChecksumEndsDirectlyWithCrLf()
     QCOMPARE(encodeFrame(frame), QByteArray("!C0\r\n"));
 }
 
-void TestFrame::multiuserHeaderPrecedesLeadAndIsNotInChecksum_data()
-{
+void TestFrame::multiuserHeaderPrecedesLeadAndIsNotInChecksum_data() {
     QTest::addColumn<int>("block");
     for (int block = 0; block < 64; ++block) QTest::addRow("block %d", block) << block;
 }
 
-void TestFrame::multiuserHeaderPrecedesLeadAndIsNotInChecksum()
-{
+void TestFrame::multiuserHeaderPrecedesLeadAndIsNotInChecksum() {
     QFETCH(int, block);
     Frame frame;
     frame.lead = '?';

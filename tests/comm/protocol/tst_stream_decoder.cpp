@@ -6,8 +6,7 @@ using namespace cambench::comm;
 
 namespace {
 
-Frame makeFrame(char lead, const QByteArray& body, std::optional<MultiuserAddress> address = {})
-{
+Frame makeFrame(char lead, const QByteArray& body, std::optional<MultiuserAddress> address = {}) {
     Frame frame;
     frame.lead = lead;
     frame.body = body;
@@ -15,15 +14,13 @@ Frame makeFrame(char lead, const QByteArray& body, std::optional<MultiuserAddres
     return frame;
 }
 
-QList<DecodeEvent::Kind> kinds(const QList<DecodeEvent>& events)
-{
+QList<DecodeEvent::Kind> kinds(const QList<DecodeEvent>& events) {
     QList<DecodeEvent::Kind> out;
     for (const DecodeEvent& event : events) out.append(event.kind);
     return out;
 }
 
-QList<Frame> framesOf(const QList<DecodeEvent>& events)
-{
+QList<Frame> framesOf(const QList<DecodeEvent>& events) {
     QList<Frame> out;
     for (const DecodeEvent& event : events) {
         if (event.kind == DecodeEvent::FrameOk) out.append(event.frame);
@@ -31,16 +28,14 @@ QList<Frame> framesOf(const QList<DecodeEvent>& events)
     return out;
 }
 
-QList<DecodeEvent> feedByteByByte(StreamDecoder& decoder, const QByteArray& bytes)
-{
+QList<DecodeEvent> feedByteByByte(StreamDecoder& decoder, const QByteArray& bytes) {
     QList<DecodeEvent> events;
     for (char c : bytes) events.append(decoder.feed(QByteArrayView(&c, 1)));
     return events;
 }
 
 // Three frames of different kinds, including binary data that needs escapes.
-QList<Frame> sampleFrames(bool multiuser)
-{
+QList<Frame> sampleFrames(bool multiuser) {
     auto address = [&](int block) -> std::optional<MultiuserAddress> {
         if (!multiuser) return std::nullopt;
         return MultiuserAddress{7, 63, block};
@@ -50,8 +45,7 @@ QList<Frame> sampleFrames(bool multiuser)
             makeFrame(':', "EEFFFF", address(63))};
 }
 
-QByteArray wireOf(const QList<Frame>& frames)
-{
+QByteArray wireOf(const QList<Frame>& frames) {
     QByteArray wire;
     for (const Frame& frame : frames) wire += encodeFrame(frame);
     return wire;
@@ -89,8 +83,7 @@ private Q_SLOTS:
     void resetDropsPartialFrame();
 };
 
-void TestStreamDecoder::decodesManualVectors_data()
-{
+void TestStreamDecoder::decodesManualVectors_data() {
     QTest::addColumn<QByteArray>("wire");
     QTest::addColumn<char>("lead");
     QTest::addColumn<QByteArray>("body");
@@ -100,11 +93,11 @@ void TestStreamDecoder::decodesManualVectors_data()
     QTest::newRow(":EEFFFF") << QByteArray(":EEFFFF23\r\n") << ':' << QByteArray("EEFFFF");
     QTest::newRow("?EE0001") << QByteArray("?EE000175\r\n") << '?' << QByteArray("EE0001");
     QTest::newRow("!EE0005") << QByteArray("!EE00058F\r\n") << '!' << QByteArray("EE0005");
-    QTest::newRow(":EEERR-43") << QByteArray(":EEERRFFFFFFD535\r\n") << ':' << QByteArray("EEERRFFFFFFD5");
+    QTest::newRow(":EEERR-43") << QByteArray(":EEERRFFFFFFD535\r\n") << ':'
+                               << QByteArray("EEERRFFFFFFD5");
 }
 
-void TestStreamDecoder::decodesManualVectors()
-{
+void TestStreamDecoder::decodesManualVectors() {
     QFETCH(QByteArray, wire);
     QFETCH(char, lead);
     QFETCH(QByteArray, body);
@@ -119,8 +112,7 @@ void TestStreamDecoder::decodesManualVectors()
     QCOMPARE(decoder.pendingBytes(), 0);
 }
 
-void TestStreamDecoder::reportsWrongChecksum()
-{
+void TestStreamDecoder::reportsWrongChecksum() {
     StreamDecoder decoder(Framing::Standard, "?");
     const QList<DecodeEvent> events = decoder.feed("?IFGWG4D\r\n");
     QCOMPARE(kinds(events), QList{DecodeEvent::BadChecksum});
@@ -128,15 +120,13 @@ void TestStreamDecoder::reportsWrongChecksum()
     QVERIFY2(events[0].detail.contains("4C"), qPrintable(events[0].detail));
 }
 
-void TestStreamDecoder::reportsMissingChecksum()
-{
+void TestStreamDecoder::reportsMissingChecksum() {
     StreamDecoder decoder(Framing::Standard, "?");
     QCOMPARE(kinds(decoder.feed("?\r\n")), QList{DecodeEvent::BadChecksum});
     QCOMPARE(kinds(decoder.feed("?IFGWG\r\n")), QList{DecodeEvent::BadChecksum});  // "WG" is no hex
 }
 
-void TestStreamDecoder::acceptsC0WithoutChecksumWhileChecksumsAreOn()
-{
+void TestStreamDecoder::acceptsC0WithoutChecksumWhileChecksumsAreOn() {
     StreamDecoder device(Framing::Standard, "?!");
     const QList<DecodeEvent> request = device.feed("!C0\r\n");
     QCOMPARE(kinds(request), QList{DecodeEvent::FrameOk});
@@ -149,8 +139,7 @@ void TestStreamDecoder::acceptsC0WithoutChecksumWhileChecksumsAreOn()
     QCOMPARE(reply[0].frame.body, QByteArray("C0OK"));
 }
 
-void TestStreamDecoder::acceptsFramesWithoutChecksumWhenChecksumsAreOff()
-{
+void TestStreamDecoder::acceptsFramesWithoutChecksumWhenChecksumsAreOff() {
     StreamDecoder decoder(Framing::Standard, ":");
     decoder.setChecksumEnabled(false);
     const QList<DecodeEvent> events = decoder.feed(":IFOROK\r\n");
@@ -159,8 +148,7 @@ void TestStreamDecoder::acceptsFramesWithoutChecksumWhenChecksumsAreOff()
     QVERIFY(!events[0].frame.hasChecksum);
 }
 
-void TestStreamDecoder::unescapesBinaryDataWithCrAndEsc()
-{
+void TestStreamDecoder::unescapesBinaryDataWithCrAndEsc() {
     const Frame frame = makeFrame('!', QByteArray("EE0001\x30\r\x1b\x1b\r\n\x00", 13));
     const QByteArray wire = encodeFrame(frame);
     QCOMPARE(wire.count('\x1b'), 2 + 4);  // the data's two ESCs, plus one before each CR and ESC
@@ -171,8 +159,7 @@ void TestStreamDecoder::unescapesBinaryDataWithCrAndEsc()
     QCOMPARE(events[0].frame, frame);
 }
 
-void TestStreamDecoder::decodesMultiuserHeaderForEveryBlock()
-{
+void TestStreamDecoder::decodesMultiuserHeaderForEveryBlock() {
     StreamDecoder decoder(Framing::Multiuser, ":");
     for (int block = 0; block < 64; ++block) {
         const Frame frame = makeFrame(':', "EEOK", MultiuserAddress{block % 64, 63, block});
@@ -182,8 +169,7 @@ void TestStreamDecoder::decodesMultiuserHeaderForEveryBlock()
     }
 }
 
-void TestStreamDecoder::multiuserChecksumExcludesHeader()
-{
+void TestStreamDecoder::multiuserChecksumExcludesHeader() {
     // The manual vector with a header in front: checksum A1 stays valid.
     StreamDecoder decoder(Framing::Multiuser, ":");
     const QList<DecodeEvent> events = decoder.feed(QByteArray("\x45\xBF\xC9:EEOKA1\r\n"));
@@ -192,10 +178,10 @@ void TestStreamDecoder::multiuserChecksumExcludesHeader()
     QCOMPARE(events[0].frame.body, QByteArray("EEOK"));
 }
 
-void TestStreamDecoder::skipsGarbageBeforeAndBetweenFrames()
-{
+void TestStreamDecoder::skipsGarbageBeforeAndBetweenFrames() {
     StreamDecoder decoder(Framing::Standard, ":");
-    const QByteArray wire = QByteArray("\x00\xFFnoise", 7) + ":EEOKA1\r\n" + "\r\n##" + ":EEFFFF23\r\n";
+    const QByteArray wire =
+        QByteArray("\x00\xFFnoise", 7) + ":EEOKA1\r\n" + "\r\n##" + ":EEFFFF23\r\n";
     const QList<DecodeEvent> events = decoder.feed(wire);
     QCOMPARE(kinds(events), (QList{DecodeEvent::Garbage, DecodeEvent::FrameOk, DecodeEvent::Garbage,
                                    DecodeEvent::FrameOk}));
@@ -204,8 +190,7 @@ void TestStreamDecoder::skipsGarbageBeforeAndBetweenFrames()
     QCOMPARE(events[3].frame.body, QByteArray("EEFFFF"));
 }
 
-void TestStreamDecoder::coalescesGarbageOfOneRead()
-{
+void TestStreamDecoder::coalescesGarbageOfOneRead() {
     StreamDecoder decoder(Framing::Standard, ":");
     const QList<DecodeEvent> events = decoder.feed(QByteArray(300, 'x'));
     QCOMPARE(kinds(events), QList{DecodeEvent::Garbage});
@@ -213,15 +198,13 @@ void TestStreamDecoder::coalescesGarbageOfOneRead()
     QCOMPARE(decoder.pendingBytes(), 0);
 }
 
-void TestStreamDecoder::decodesSeveralFramesInOneRead_data()
-{
+void TestStreamDecoder::decodesSeveralFramesInOneRead_data() {
     QTest::addColumn<bool>("multiuser");
     QTest::newRow("standard") << false;
     QTest::newRow("multiuser") << true;
 }
 
-void TestStreamDecoder::decodesSeveralFramesInOneRead()
-{
+void TestStreamDecoder::decodesSeveralFramesInOneRead() {
     QFETCH(bool, multiuser);
     const QList<Frame> frames = sampleFrames(multiuser);
     StreamDecoder decoder(multiuser ? Framing::Multiuser : Framing::Standard, ":");
@@ -230,10 +213,11 @@ void TestStreamDecoder::decodesSeveralFramesInOneRead()
     QCOMPARE(framesOf(events), frames);
 }
 
-void TestStreamDecoder::decodesByteByByte_data() { decodesSeveralFramesInOneRead_data(); }
+void TestStreamDecoder::decodesByteByByte_data() {
+    decodesSeveralFramesInOneRead_data();
+}
 
-void TestStreamDecoder::decodesByteByByte()
-{
+void TestStreamDecoder::decodesByteByByte() {
     QFETCH(bool, multiuser);
     const QList<Frame> frames = sampleFrames(multiuser);
     StreamDecoder decoder(multiuser ? Framing::Multiuser : Framing::Standard, ":");
@@ -242,8 +226,7 @@ void TestStreamDecoder::decodesByteByByte()
     QCOMPARE(decoder.pendingBytes(), 0);
 }
 
-void TestStreamDecoder::decodesStreamSplitAtEveryPosition()
-{
+void TestStreamDecoder::decodesStreamSplitAtEveryPosition() {
     for (bool multiuser : {false, true}) {
         const QList<Frame> frames = sampleFrames(multiuser);
         const QByteArray wire = wireOf(frames);
@@ -251,14 +234,14 @@ void TestStreamDecoder::decodesStreamSplitAtEveryPosition()
             StreamDecoder decoder(multiuser ? Framing::Multiuser : Framing::Standard, ":");
             QList<DecodeEvent> events = decoder.feed(wire.left(split));
             events += decoder.feed(wire.mid(split));
-            QVERIFY2(framesOf(events) == frames, qPrintable(QStringLiteral("split at %1").arg(split)));
+            QVERIFY2(framesOf(events) == frames,
+                     qPrintable(QStringLiteral("split at %1").arg(split)));
             QCOMPARE(kinds(events), QList<DecodeEvent::Kind>(frames.size(), DecodeEvent::FrameOk));
         }
     }
 }
 
-void TestStreamDecoder::dropsOversizedFrameAndResynchronises()
-{
+void TestStreamDecoder::dropsOversizedFrameAndResynchronises() {
     StreamDecoder decoder(Framing::Standard, "?");
     const QByteArray huge = "?" + QByteArray(3000, 'A') + "\r\n";
     QList<DecodeEvent> events;
@@ -277,8 +260,7 @@ void TestStreamDecoder::dropsOversizedFrameAndResynchronises()
     QCOMPARE(consumed, huge.size() + 10);  // every byte is accounted for exactly once
 }
 
-void TestStreamDecoder::acceptsFrameOfExactlyMaximumSize()
-{
+void TestStreamDecoder::acceptsFrameOfExactlyMaximumSize() {
     // lead + body + 2 checksum + CR LF = kMaxFrameBytes
     const Frame frame = makeFrame('!', QByteArray(StreamDecoder::kMaxFrameBytes - 5, 'B'));
     const QByteArray wire = encodeFrame(frame);
@@ -294,8 +276,7 @@ void TestStreamDecoder::acceptsFrameOfExactlyMaximumSize()
     QCOMPARE(decoder.pendingBytes(), 0);
 }
 
-void TestStreamDecoder::dropsFrameEndedByCrWithoutLf()
-{
+void TestStreamDecoder::dropsFrameEndedByCrWithoutLf() {
     StreamDecoder decoder(Framing::Standard, "?");
     const QList<DecodeEvent> events = decoder.feed("?IFGWG4C\r?IFGWG4C\r\n");
     QCOMPARE(kinds(events), (QList{DecodeEvent::Garbage, DecodeEvent::FrameOk}));
@@ -303,8 +284,7 @@ void TestStreamDecoder::dropsFrameEndedByCrWithoutLf()
     QVERIFY2(events[0].detail.contains("CR without LF"), qPrintable(events[0].detail));
 }
 
-void TestStreamDecoder::treatsLfWithoutCrAsDataInsideAndGarbageOutside()
-{
+void TestStreamDecoder::treatsLfWithoutCrAsDataInsideAndGarbageOutside() {
     StreamDecoder decoder(Framing::Standard, "?");
     const Frame frame = makeFrame('?', "A\nB");
     const QList<DecodeEvent> events = decoder.feed("\n" + encodeFrame(frame));
@@ -312,20 +292,17 @@ void TestStreamDecoder::treatsLfWithoutCrAsDataInsideAndGarbageOutside()
     QCOMPARE(events[1].frame, frame);
 }
 
-void TestStreamDecoder::ignoresLeadsItDoesNotAccept()
-{
+void TestStreamDecoder::ignoresLeadsItDoesNotAccept() {
     StreamDecoder pc(Framing::Standard, ":");
     QCOMPARE(kinds(pc.feed("?IFGWG4C\r\n")), QList{DecodeEvent::Garbage});
 }
 
-void TestStreamDecoder::multiuserIgnoresFrameWithoutHeader()
-{
+void TestStreamDecoder::multiuserIgnoresFrameWithoutHeader() {
     StreamDecoder decoder(Framing::Multiuser, ":");
     QCOMPARE(kinds(decoder.feed(":EEOKA1\r\n")), QList{DecodeEvent::Garbage});
 }
 
-void TestStreamDecoder::multiuserResynchronisesOnFalseHeaderStart()
-{
+void TestStreamDecoder::multiuserResynchronisesOnFalseHeaderStart() {
     // 0x41 0x82 looks like a header start but 0x41 cannot be a block byte.
     StreamDecoder decoder(Framing::Multiuser, ":");
     const QByteArray wire = QByteArray("\x41\x82\x41\x82\xC3:EEOKA1\r\n");
@@ -340,8 +317,7 @@ void TestStreamDecoder::multiuserResynchronisesOnFalseHeaderStart()
     QCOMPARE(garbage, 2);
 }
 
-void TestStreamDecoder::resetDropsPartialFrame()
-{
+void TestStreamDecoder::resetDropsPartialFrame() {
     StreamDecoder decoder(Framing::Standard, "?");
     QVERIFY(decoder.feed("?IFG").isEmpty());
     QCOMPARE(decoder.pendingBytes(), 4);

@@ -9,11 +9,13 @@ QByteArray SimTestClient::rawRequest(char lead, const QByteArray& body, int bloc
     Frame frame;
     frame.lead = lead;
     frame.body = body;
-    if (m_line.framing() == Framing::Multiuser) frame.address = MultiuserAddress{m_pc, m_device, block};
+    if (m_line.framing() == Framing::Multiuser)
+        frame.address = MultiuserAddress{m_pc, m_device, block};
     return encodeFrame(frame);
 }
 
-QByteArray SimTestClient::requestBytes(char kind, const char* name, const Fields& fields, int block) const {
+QByteArray SimTestClient::requestBytes(char kind, const char* name, const Fields& fields,
+                                       int block) const {
     const CommandSpec* spec = findCommand(kind, name);
     if (!spec) return {};
     const Result<QByteArray> body = encodeRequestBody(*spec, fields);

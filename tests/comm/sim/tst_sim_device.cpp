@@ -17,7 +17,9 @@ namespace {
 
 constexpr qint64 kNoCam = -qint64(0x80000000LL);
 
-Fields track(int program, int output) { return Fields().set("program", program).set("output", output); }
+Fields track(int program, int output) {
+    return Fields().set("program", program).set("output", output);
+}
 Fields cam(int program, int output, qint64 on, qint64 off) {
     return track(program, output).set("on", on).set("off", off);
 }
@@ -128,9 +130,11 @@ void TestSimDevice::insertRejectsOverlapAndRange() {
     QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 300, 360)).errorCode, -1);  // beyond ?IMAX 359
     QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 300, 300)).errorCode, -1);  // empty
     QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 350, 120)).errorCode, -1);  // wraps into 100..200
-    QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 350, 100)).kind, ReplyMatch::Matches);  // wraps, touches
-    QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 200, 210)).kind, ReplyMatch::Matches);  // touches the end
-    QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 5, 6)).errorCode, -1);      // inside the wrapping cam
+    QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 350, 100)).kind,
+             ReplyMatch::Matches);  // wraps, touches
+    QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 200, 210)).kind,
+             ReplyMatch::Matches);                                       // touches the end
+    QCOMPARE(pc.call(kCommand, "NINS", cam(3, 0, 5, 6)).errorCode, -1);  // inside the wrapping cam
 
     ReplyMatch r = pc.call(kQuery, "NF", track(3, 0));
     QCOMPARE(r.fields.num("on"), 100);
@@ -150,7 +154,8 @@ void TestSimDevice::deleteAndChangeNeedAnExistingCam() {
     QCOMPARE(pc.call(kCommand, "NDEL", track(0, 0).set("on", 10)).errorCode, -1);
 
     QCOMPARE(pc.call(kCommand, "NC", cam(0, 0, 20, 30).set("oldOn", 999)).errorCode, -1);
-    QCOMPARE(pc.call(kCommand, "NC", cam(0, 0, 20, 30).set("oldOn", 180)).kind, ReplyMatch::Matches);
+    QCOMPARE(pc.call(kCommand, "NC", cam(0, 0, 20, 30).set("oldOn", 180)).kind,
+             ReplyMatch::Matches);
     const ReplyMatch r = pc.call(kQuery, "NF", track(0, 0));
     QCOMPARE(r.fields.num("on"), 20);
     QCOMPARE(r.fields.num("off"), 30);
@@ -161,15 +166,19 @@ void TestSimDevice::programAndTrackCopies() {
     auto line = demoLine();
     SimTestClient pc(*line);
     const SimCamStore& cams = line->device(0)->state().cams;
-    QCOMPARE(pc.call(kCommand, "PCPY", Fields().set("target", 9).set("source", 0)).kind, ReplyMatch::Matches);
-    QCOMPARE(cams.programs().value(9), cams.programs().value(0));
-    QCOMPARE(pc.call(kCommand, "PACPY", Fields().set("program", 9).set("target", 7).set("source", 2)).kind,
+    QCOMPARE(pc.call(kCommand, "PCPY", Fields().set("target", 9).set("source", 0)).kind,
              ReplyMatch::Matches);
+    QCOMPARE(cams.programs().value(9), cams.programs().value(0));
+    QCOMPARE(
+        pc.call(kCommand, "PACPY", Fields().set("program", 9).set("target", 7).set("source", 2))
+            .kind,
+        ReplyMatch::Matches);
     QCOMPARE(cams.track(9, 7), cams.track(0, 2));
     QCOMPARE(pc.call(kCommand, "PDEL", Fields().set("program", 9)).kind, ReplyMatch::Matches);
     QVERIFY(!cams.programs().contains(9));
     QCOMPARE(pc.call(kCommand, "PDEL", Fields().set("program", 16)).errorCode, -1);
-    QCOMPARE(pc.call(kCommand, "PT", Fields().set("program", 4).set("type", 1)).kind, ReplyMatch::Matches);
+    QCOMPARE(pc.call(kCommand, "PT", Fields().set("program", 4).set("type", 1)).kind,
+             ReplyMatch::Matches);
     QCOMPARE(cams.track(4, 31), (QList<cambench::Cam>{{0, 179}}));
 }
 
@@ -179,7 +188,8 @@ void TestSimDevice::deadTimeAboveMaximumIsRejected() {
     ReplyMatch r = pc.call(kCommand, "TZK", Fields().set("output", 4).set("value", 10000));
     QCOMPARE(r.kind, ReplyMatch::DeviceError);
     QCOMPARE(r.errorCode, -12);
-    QCOMPARE(pc.call(kCommand, "TZK", Fields().set("output", 4).set("value", 9999)).kind, ReplyMatch::Matches);
+    QCOMPARE(pc.call(kCommand, "TZK", Fields().set("output", 4).set("value", 9999)).kind,
+             ReplyMatch::Matches);
     r = pc.call(kQuery, "TZK", Fields().set("output", 4));
     QCOMPARE(r.fields.num("output"), 4);
     QCOMPARE(r.fields.num("value"), 9999);
@@ -200,11 +210,13 @@ void TestSimDevice::settingsKeepValuesAndCheckRanges() {
     QCOMPARE(pc.call(kCommand, "GISTHYS", Fields().set("value", 126)).errorCode, -1);
     QCOMPARE(pc.call(kCommand, "GISTHYS", Fields().set("value", 12)).kind, ReplyMatch::Matches);
     QCOMPARE(pc.call(kQuery, "GISTHYS").fields.num("value"), 12);
-    QCOMPARE(pc.call(kCommand, "AMAX", Fields().set("value", 12)).errorCode, -1);  // not a multiple of 8
+    QCOMPARE(pc.call(kCommand, "AMAX", Fields().set("value", 12)).errorCode,
+             -1);  // not a multiple of 8
     QCOMPARE(pc.call(kCommand, "IMUL", Fields().set("value", 0)).errorCode, -1);
     QCOMPARE(pc.call(kCommand, "IMUL", Fields().set("value", -5)).kind, ReplyMatch::Matches);
     QCOMPARE(pc.call(kQuery, "IMUL").fields.num("value"), -5);
-    QCOMPARE(pc.call(kCommand, "IFOR", Fields().setBytes("text", "##.##")).kind, ReplyMatch::Matches);
+    QCOMPARE(pc.call(kCommand, "IFOR", Fields().setBytes("text", "##.##")).kind,
+             ReplyMatch::Matches);
     QCOMPARE(pc.call(kQuery, "IFOR").fields.bytes("text"), QByteArray("##.##"));
     QCOMPARE(pc.call(kQuery, "GPRGMAX").fields.num("value"), 16);
     QCOMPARE(pc.call(kQuery, "IMAX").fields.num("value"), 359);
@@ -237,15 +249,19 @@ void TestSimDevice::specialEncoderPageSetsTextsAndType() {
 void TestSimDevice::usersWalkCreateAndDelete() {
     auto line = demoLine();
     SimTestClient pc(*line);
-    QCOMPARE(pc.call(kQuery, "USER", Fields().set("index", 0)).fields.bytes("name"), QByteArray("Supervisor"));
-    QCOMPARE(pc.call(kQuery, "USER", Fields().set("index", 1)).fields.bytes("name"), QByteArray("Operator"));
+    QCOMPARE(pc.call(kQuery, "USER", Fields().set("index", 0)).fields.bytes("name"),
+             QByteArray("Supervisor"));
+    QCOMPARE(pc.call(kQuery, "USER", Fields().set("index", 1)).fields.bytes("name"),
+             QByteArray("Operator"));
     ReplyMatch end = pc.call(kQuery, "USER", Fields().set("index", 1));
     QCOMPARE(end.kind, ReplyMatch::Matches);
     QVERIFY(end.fields.bytes("name").isEmpty());
     QVERIFY(end.fields.bytes("number").isEmpty());
 
     Fields user;
-    user.setBytes("name", "Setter").setBytes("number", "777").setBytes("access", QByteArray(32, '\x0F'));
+    user.setBytes("name", "Setter")
+        .setBytes("number", "777")
+        .setBytes("access", QByteArray(32, '\x0F'));
     user.set("rights", 0x03);
     QCOMPARE(pc.call(kCommand, "USER", user).kind, ReplyMatch::Matches);
     QCOMPARE(pc.call(kCommand, "USER", user).errorCode, -1);  // number in use
@@ -265,15 +281,25 @@ void TestSimDevice::plcNetworkRoundTrip() {
     symbols[0] = 0x0105;
     symbols[29] = 0x0B07;
     Fields network;
-    network.set("area", 0x0B).set("number", 3).set("value", 42).set("reset", 0x0102).setWords("symbols", symbols);
+    network.set("area", 0x0B)
+        .set("number", 3)
+        .set("value", 42)
+        .set("reset", 0x0102)
+        .setWords("symbols", symbols);
     QCOMPARE(pc.call(kCommand, "GMXSPS", network).kind, ReplyMatch::Matches);
     const ReplyMatch r = pc.call(kQuery, "GMXSPS", Fields().set("area", 0x0B).set("number", 3));
     QCOMPARE(r.fields.words("symbols"), symbols);
     QCOMPARE(r.fields.num("reset"), 0x0102);
-    QCOMPARE(pc.call(kQuery, "SPSSOLL", Fields().set("area", 0x0B).set("number", 3)).fields.num("value"), 42);
-    QCOMPARE(pc.call(kCommand, "SPSIST", Fields().set("area", 0x0B).set("number", 3).set("value", 7)).kind,
-             ReplyMatch::Matches);
-    QCOMPARE(pc.call(kQuery, "SPSIST", Fields().set("area", 0x0B).set("number", 3)).fields.num("value"), 7);
+    QCOMPARE(
+        pc.call(kQuery, "SPSSOLL", Fields().set("area", 0x0B).set("number", 3)).fields.num("value"),
+        42);
+    QCOMPARE(
+        pc.call(kCommand, "SPSIST", Fields().set("area", 0x0B).set("number", 3).set("value", 7))
+            .kind,
+        ReplyMatch::Matches);
+    QCOMPARE(
+        pc.call(kQuery, "SPSIST", Fields().set("area", 0x0B).set("number", 3)).fields.num("value"),
+        7);
     QCOMPARE(pc.call(kQuery, "GMXSPS", Fields().set("area", 0x07).set("number", 0)).errorCode, -1);
 }
 
@@ -315,7 +341,8 @@ void TestSimDevice::backupRestoreBackupIsIdentical() {
     SimTestClient pc(*source);
     pc.call(kCommand, "IFOR", Fields().setBytes("text", "#.###"));
     pc.call(kCommand, "BTXT", Fields().set("line", 3).setBytes("text", "line three"));
-    pc.call(kCommand, "ETXT", Fields().set("message", 2).setBytes("text1", "Oil low").setBytes("text4", "call 99"));
+    pc.call(kCommand, "ETXT",
+            Fields().set("message", 2).setBytes("text1", "Oil low").setBytes("text4", "call 99"));
     pc.call(kCommand, "PAU", Fields().set("value", 2));
     fillBenchmarkCams(*source->device(0), 3);
     const QList<QByteArray> first = pc.backup();
@@ -325,13 +352,15 @@ void TestSimDevice::backupRestoreBackupIsIdentical() {
     SimLine target(Framing::Standard);
     target.addDevice(std::make_unique<SimDevice>());
     SimTestClient writer(target);
-    for (int i = 0; i < first.size(); ++i) QCOMPARE(writer.writeBlock(i, first.at(i)).kind, ReplyMatch::Matches);
+    for (int i = 0; i < first.size(); ++i)
+        QCOMPARE(writer.writeBlock(i, first.at(i)).kind, ReplyMatch::Matches);
     QCOMPARE(writer.writeBlock(int(first.size()), {}).kind, ReplyMatch::Matches);
 
     QVERIFY(target.device(0)->state() == source->device(0)->state());
     QCOMPARE(writer.backup(), first);
     QCOMPARE(writer.call(kQuery, "PAU").fields.num("value"), 2);
-    QCOMPARE(writer.call(kQuery, "ETXT", Fields().set("message", 2)).fields.bytes("text4"), QByteArray("call 99"));
+    QCOMPARE(writer.call(kQuery, "ETXT", Fields().set("message", 2)).fields.bytes("text4"),
+             QByteArray("call 99"));
 }
 
 void TestSimDevice::benchmarkFillMakesALargeBackup() {
@@ -351,21 +380,26 @@ void TestSimDevice::restoreErrors_data() {
     QTest::addColumn<QList<QByteArray>>("data");
 
     const QByteArray basic = sim_eeprom::serialize(SimState(), SimProfile()).first();
-    const QByteArray record = sim_eeprom::serialize(defaultState(SimProfile(), 0), SimProfile()).at(1);
+    const QByteArray record =
+        sim_eeprom::serialize(defaultState(SimProfile(), 0), SimProfile()).at(1);
     QByteArray badMagic = basic;
     badMagic[0] = 'X';
     QByteArray shortRecord = record;
     shortRecord.chop(1);
-    QTest::newRow("-41 block 0 not 128 bytes") << -41 << false << QList<int>{0} << QList<QByteArray>{basic.left(100)};
-    QTest::newRow("-42 erase impossible") << -42 << true << QList<int>{0} << QList<QByteArray>{basic};
-    QTest::newRow("-43 block skipped") << -43 << false << QList<int>{0, 2} << QList<QByteArray>{basic, record};
-    QTest::newRow("-43 block repeated") << -43 << false << QList<int>{0, 1, 1}
-                                        << QList<QByteArray>{basic, record, record};
-    QTest::newRow("-44 cannot start") << -44 << false << QList<int>{0, 1} << QList<QByteArray>{badMagic, {}};
-    QTest::newRow("-45 length disagrees") << -45 << false << QList<int>{0, 1}
-                                          << QList<QByteArray>{basic, shortRecord};
-    QTest::newRow("-45 nibble zero") << -45 << false << QList<int>{0, 1}
-                                     << QList<QByteArray>{basic, QByteArray(6, '\x07')};
+    QTest::newRow("-41 block 0 not 128 bytes")
+        << -41 << false << QList<int>{0} << QList<QByteArray>{basic.left(100)};
+    QTest::newRow("-42 erase impossible")
+        << -42 << true << QList<int>{0} << QList<QByteArray>{basic};
+    QTest::newRow("-43 block skipped")
+        << -43 << false << QList<int>{0, 2} << QList<QByteArray>{basic, record};
+    QTest::newRow("-43 block repeated")
+        << -43 << false << QList<int>{0, 1, 1} << QList<QByteArray>{basic, record, record};
+    QTest::newRow("-44 cannot start")
+        << -44 << false << QList<int>{0, 1} << QList<QByteArray>{badMagic, {}};
+    QTest::newRow("-45 length disagrees")
+        << -45 << false << QList<int>{0, 1} << QList<QByteArray>{basic, shortRecord};
+    QTest::newRow("-45 nibble zero")
+        << -45 << false << QList<int>{0, 1} << QList<QByteArray>{basic, QByteArray(6, '\x07')};
     QTest::newRow("-46 no block 0") << -46 << false << QList<int>{1} << QList<QByteArray>{record};
 }
 
@@ -395,7 +429,8 @@ void TestSimDevice::restoreErasesAndStopsUntilTheClosingBlock() {
     QCOMPARE(pc.writeBlock(0, blocks.first()).kind, ReplyMatch::Matches);
     QCOMPARE(pc.call(kQuery, "MEENOCK").fields.num("value"), 0);
     QVERIFY(!line->device(0)->axis().running());
-    for (int i = 1; i < blocks.size(); ++i) QCOMPARE(pc.writeBlock(i, blocks.at(i)).kind, ReplyMatch::Matches);
+    for (int i = 1; i < blocks.size(); ++i)
+        QCOMPARE(pc.writeBlock(i, blocks.at(i)).kind, ReplyMatch::Matches);
     QCOMPARE(pc.writeBlock(int(blocks.size()), {}).kind, ReplyMatch::Matches);
     QVERIFY(line->device(0)->axis().running());
     QCOMPARE(pc.call(kQuery, "MEENOCK").fields.num("value"), 11);

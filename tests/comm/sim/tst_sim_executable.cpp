@@ -82,11 +82,12 @@ void TestSimExecutable::answersOverThePseudoTerminal() {
 
 void TestSimExecutable::answersOverTcp() {
     QProcess process;
-    const QString address = start(process, {QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--baud"),
-                                            QStringLiteral("115200")});
+    const QString address = start(process, {QStringLiteral("--tcp"), QStringLiteral("0"),
+                                            QStringLiteral("--baud"), QStringLiteral("115200")});
     QVERIFY2(address.startsWith(QStringLiteral("tcp://127.0.0.1:")), qPrintable(address));
     QTcpSocket socket;
-    socket.connectToHost(QStringLiteral("127.0.0.1"), quint16(address.section(QLatin1Char(':'), -1).toUInt()));
+    socket.connectToHost(QStringLiteral("127.0.0.1"),
+                         quint16(address.section(QLatin1Char(':'), -1).toUInt()));
     QVERIFY(socket.waitForConnected(5000));
     socket.write(kEpromRequest);
     checkEpromReply(readReply(socket));
@@ -95,7 +96,8 @@ void TestSimExecutable::answersOverTcp() {
 
 void TestSimExecutable::rejectsBadOptions() {
     QProcess process;
-    process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE), {QStringLiteral("--devices"), QStringLiteral("0,99")});
+    process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
+                  {QStringLiteral("--devices"), QStringLiteral("0,99")});
     QVERIFY(process.waitForFinished(10000));
     QCOMPARE(process.exitCode(), 2);
     QVERIFY(process.readAllStandardError().contains("0..63"));

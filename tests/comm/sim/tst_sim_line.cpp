@@ -66,6 +66,9 @@ void TestSimLine::onlyTheAddressedDeviceAnswers() {
     pc.setDevice(0);
     QCOMPARE(pc.call(kQuery, "UNIT").kind, ReplyMatch::Matches);
     QCOMPARE(line->device(0)->executions(), 1);
+    QCOMPARE(pc.call(kQuery, "GSIO").fields.num("value"),
+             2);  // the device says it speaks Multiuser
+    QCOMPARE(pc.call(kQuery, "GNR").fields.num("value"), 0);
 }
 
 void TestSimLine::repeatedBlockRepeatsWithoutExecuting() {
@@ -83,7 +86,8 @@ void TestSimLine::repeatedBlockRepeatsWithoutExecuting() {
     QCOMPARE(line->device(5)->state().cams.track(7, 1).size(), 1);
 
     // A new block number executes again: now the cam overlaps.
-    const QList<Frame> frames = pc.replies(line->feed(pc.requestBytes(kCommand, "NINS", cam(10, 20), 34)));
+    const QList<Frame> frames =
+        pc.replies(line->feed(pc.requestBytes(kCommand, "NINS", cam(10, 20), 34)));
     QCOMPARE(frames.size(), 1);
     QCOMPARE(matchReply(*findCommand(kCommand, "NINS"), frames.first()).errorCode, -1);
     QCOMPARE(line->device(5)->executions(), 2);
@@ -124,13 +128,17 @@ void TestSimLine::faultRatesFollowTheSeed() {
     };
     const auto [counters, wire] = run();
     QCOMPARE(counters.replies, 1000);
-    QVERIFY2(counters.dropped > 60 && counters.dropped < 140, qPrintable(QString::number(counters.dropped)));
-    QVERIFY2(counters.corrupted > 180 && counters.corrupted < 270, qPrintable(QString::number(counters.corrupted)));
+    QVERIFY2(counters.dropped > 60 && counters.dropped < 140,
+             qPrintable(QString::number(counters.dropped)));
+    QVERIFY2(counters.corrupted > 180 && counters.corrupted < 270,
+             qPrintable(QString::number(counters.corrupted)));
     QCOMPARE(wire.count(QByteArray()), counters.dropped);
     auto clean = makeSimLine({});
-    const QByteArray good = clean->feed(SimTestClient(*clean).requestBytes(kQuery, "EPROM", {}, 0)).first().bytes;
-    const auto changed = std::count_if(wire.begin(), wire.end(),
-                                       [&good](const QByteArray& w) { return !w.isEmpty() && w != good; });
+    const QByteArray good =
+        clean->feed(SimTestClient(*clean).requestBytes(kQuery, "EPROM", {}, 0)).first().bytes;
+    const auto changed = std::count_if(wire.begin(), wire.end(), [&good](const QByteArray& w) {
+        return !w.isEmpty() && w != good;
+    });
     QCOMPARE(int(changed), counters.corrupted);
 
     const auto [again, wireAgain] = run();
@@ -152,7 +160,8 @@ void TestSimLine::fixedDelayIsAdded() {
     SimPortConfig config;
     config.faults.extraDelayMs = 250;
     auto line = makeSimLine(config);
-    const QList<SimOutput> out = line->feed(SimTestClient(*line).requestBytes(kQuery, "EPROM", {}, 0));
+    const QList<SimOutput> out =
+        line->feed(SimTestClient(*line).requestBytes(kQuery, "EPROM", {}, 0));
     QCOMPARE(out.size(), 1);
     QCOMPARE(out.first().delayMs, SimProfile().processingDelayMs + 250);
 }
@@ -160,7 +169,8 @@ void TestSimLine::fixedDelayIsAdded() {
 void TestSimLine::pacerTiming() {
     SimPacer pacer(9600);
     QCOMPARE(pacer.transferUs(96), 100000);  // 96 bytes * 10 bits / 9600 baud = 0.1 s
-    const QList<PacedReply> replies = pacer.schedule(1000, 96, {{QByteArray(48, 'a'), 5}, {QByteArray(96, 'b'), 0}});
+    const QList<PacedReply> replies =
+        pacer.schedule(1000, 96, {{QByteArray(48, 'a'), 5}, {QByteArray(96, 'b'), 0}});
     QCOMPARE(replies.size(), 2);
     // Arrives at 1 ms + 100 ms, the device works 5 ms, 48 bytes take 50 ms.
     QCOMPARE(replies.at(0).startUs, 106000);
@@ -200,9 +210,10 @@ void TestSimLine::portStringKeys() {
     QCOMPARE(plain->baud, 19200);
     QCOMPARE(plain->effectiveFraming(), Framing::Standard);
 
-    Result<SimPortConfig> full = parseSimPort(
-        QStringLiteral("sim:devices=0,5;baud=38400;corrupt=0.01;drop=0.2;delay=5;seed=7;throttle=0;fill=3;dead=1"),
-        serial);
+    Result<SimPortConfig> full =
+        parseSimPort(QStringLiteral("sim:devices=0,5;baud=38400;corrupt=0.01;drop=0.2;delay=5;seed="
+                                    "7;throttle=0;fill=3;dead=1"),
+                     serial);
     QVERIFY2(full.ok(), qPrintable(full.error().message));
     QCOMPARE(full->devices, (QList<int>{0, 5}));
     QCOMPARE(full->effectiveFraming(), Framing::Multiuser);
@@ -215,7 +226,8 @@ void TestSimLine::portStringKeys() {
     QCOMPARE(full->fill, 3);
     QCOMPARE(full->faults.dead, true);
 
-    Result<SimPortConfig> single = parseSimPort(QStringLiteral("sim:framing=multiuser;devices=9"), serial);
+    Result<SimPortConfig> single =
+        parseSimPort(QStringLiteral("sim:framing=multiuser;devices=9"), serial);
     QVERIFY(single.ok());
     QCOMPARE(single->effectiveFraming(), Framing::Multiuser);
 }
@@ -223,13 +235,20 @@ void TestSimLine::portStringKeys() {
 void TestSimLine::portStringErrors_data() {
     QTest::addColumn<QString>("port");
     QTest::addColumn<QString>("mentions");
-    QTest::newRow("unknown key") << "sim:speed=3" << "unknown key \"speed\"";
-    QTest::newRow("no value") << "sim:devices" << "not key=value";
-    QTest::newRow("device out of range") << "sim:devices=64" << "0..63";
-    QTest::newRow("bad probability") << "sim:corrupt=1.5" << "probability";
-    QTest::newRow("bad framing") << "sim:framing=cambus" << "standard or multiuser";
-    QTest::newRow("two devices standard") << "sim:framing=standard;devices=1,2" << "one device";
-    QTest::newRow("not sim") << "simulator" << "not a simulator port";
+    QTest::newRow("unknown key") << "sim:speed=3"
+                                 << "unknown key \"speed\"";
+    QTest::newRow("no value") << "sim:devices"
+                              << "not key=value";
+    QTest::newRow("device out of range") << "sim:devices=64"
+                                         << "0..63";
+    QTest::newRow("bad probability") << "sim:corrupt=1.5"
+                                     << "probability";
+    QTest::newRow("bad framing") << "sim:framing=cambus"
+                                 << "standard or multiuser";
+    QTest::newRow("two devices standard") << "sim:framing=standard;devices=1,2"
+                                          << "one device";
+    QTest::newRow("not sim") << "simulator"
+                             << "not a simulator port";
 }
 
 void TestSimLine::portStringErrors() {
@@ -243,7 +262,8 @@ void TestSimLine::portStringErrors() {
 }
 
 void TestSimLine::transportDeliversReplies() {
-    Result<std::unique_ptr<Transport>> made = makeSimTransport(QStringLiteral("sim:baud=115200"), {});
+    Result<std::unique_ptr<Transport>> made =
+        makeSimTransport(QStringLiteral("sim:baud=115200"), {});
     QVERIFY(made.ok());
     Transport& transport = *made.value();
     QVERIFY(!transport.write("?EPROM4F\r\n").ok());  // not open yet

@@ -17,8 +17,6 @@ using namespace cambench;
 using namespace cambench::comm;
 using namespace cambench::comm::test;
 
-Q_DECLARE_METATYPE(cambench::comm::ConnectionState)
-
 namespace {
 
 constexpr int kHangBoundMs = 20000;  // bounds a hang; never a speed check

@@ -1,0 +1,41 @@
+#include "e2e_support.h"
+
+#include <QFile>
+
+namespace cambench::e2e {
+
+bool SimSession::start(const QStringList& simArgs) {
+    return m_dir.isValid() &&
+           m_sim.start(QStringList{QStringLiteral("--baud"), kFastBaud} + simArgs,
+                       m_dir.filePath(QStringLiteral("sim-stderr.log")));
+}
+
+CliRun SimSession::cli(const QStringList& args, int timeoutMs) const {
+    return runCli(QStringList{QStringLiteral("--port"), m_sim.ptyPath(), QStringLiteral("--baud"),
+                              kFastBaud} +
+                      args,
+                  timeoutMs);
+}
+
+CliRun SimSession::cliMultiuser(const QStringList& args) const {
+    return cli(QStringList{QStringLiteral("--protocol"), QStringLiteral("multiuser")} + args);
+}
+
+QByteArray readBytes(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+bool writeBytes(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+}
+
+QByteArray describe(const CliRun& run) {
+    return QStringLiteral("exit %1%2\nstdout: %3\nstderr: %4")
+        .arg(run.exitCode)
+        .arg(run.finished ? QString() : QStringLiteral(" (killed: hung)"), run.out, run.err)
+        .toLocal8Bit();
+}
+
+}  // namespace cambench::e2e

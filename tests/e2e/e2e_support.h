@@ -1,0 +1,40 @@
+#pragma once
+
+#include "sim_process.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+#include <QTemporaryDir>
+
+namespace cambench::e2e {
+
+// Fast lines keep the suite short; both ends must agree on the rate.
+inline const QString kFastBaud = QStringLiteral("115200");
+
+// One simulator on a pty and a scratch folder for the files of one test.
+class SimSession {
+public:
+    // `simArgs` are added to "--baud 115200"; false when the sim did not start.
+    bool start(const QStringList& simArgs = {});
+    QString errorText() const { return m_sim.errorText(); }
+
+    // cambench-cli with --port <pty> --baud 115200 and then `args`.
+    CliRun cli(const QStringList& args, int timeoutMs = 120000) const;
+    // The same with the Multiuser protocol.
+    CliRun cliMultiuser(const QStringList& args) const;
+
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+
+private:
+    QTemporaryDir m_dir;
+    SimProcess m_sim;
+};
+
+QByteArray readBytes(const QString& path);
+bool writeBytes(const QString& path, const QByteArray& bytes);
+
+// For QVERIFY2: the run's exit code, stdout and stderr.
+QByteArray describe(const CliRun& run);
+
+}  // namespace cambench::e2e

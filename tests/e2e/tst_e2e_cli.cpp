@@ -1,0 +1,260 @@
+// The real cambench-cli against the real cambench-sim on a pseudo-terminal.
+#include "e2e_support.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSet>
+#include <QTest>
+
+using namespace cambench::e2e;
+
+#define START_SIM(session, ...) \
+    QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
+#define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
+
+class TestE2eCli : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void infoPrintsIdentityAndCapacities();
+    void infoJsonIsAnObject();
+    void camsEditRoundTrip();
+    void camsWriteRejectsOverlapAndLeavesDeviceUntouched();
+    void deadTimesRoundTrip();
+    void namesRoundTrip();
+    void settingsChangeOneValue();
+    void usersListNeverShowsNumbers();
+    void plcRoundTrip();
+    void multiuserScanListsExactlyTheDevices();
+    void multiuserDeviceOptionReachesThatDevice();
+    void scanNeedsMultiuser();
+    void usageErrorsExitTwoWithUsage();
+    void rawPrintsReplyBody();
+};
+
+void TestE2eCli::infoPrintsIdentityAndCapacities() {
+    SimSession session;
+    START_SIM(session);
+    const CliRun run = session.cli({QStringLiteral("info")});
+    VERIFY_EXIT(run, 0);
+    QVERIFY(run.out.contains(QLatin1String("eprom: 11.10.1994\n")));
+    QVERIFY(run.out.contains(QLatin1String("outputs: 32\n")));
+    QVERIFY(run.out.contains(QLatin1String("maxPosition: 359\n")));
+    QVERIFY(run.err.isEmpty());
+}
+
+void TestE2eCli::infoJsonIsAnObject() {
+    SimSession session;
+    START_SIM(session);
+    const CliRun run = session.cli({QStringLiteral("info"), QStringLiteral("--json")});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject object = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    QCOMPARE(object.value(QStringLiteral("programs")).toInt(), 16);
+    QCOMPARE(object.value(QStringLiteral("eprom")).toString(), QStringLiteral("11.10.1994"));
+}
+
+void TestE2eCli::camsEditRoundTrip() {
+    SimSession session;
+    START_SIM(session);
+    const QString before = session.path(QStringLiteral("before.csv"));
+    VERIFY_EXIT(session.cli({"cams", "read", "--program", "0", "-o", before}), 0);
+    QByteArray csv = readBytes(before);
+    QVERIFY(csv.startsWith("output,cam,on,off\n"));
+    // The edit: a new track on output 20 and output 1 replaced by one cam.
+    QByteArray edited = "output,cam,on,off\n1,1,100,200\n20,1,5,50\n20,2,300,2\n";
+    const QString editedPath = session.path(QStringLiteral("edited.csv"));
+    QVERIFY(writeBytes(editedPath, edited));
+    VERIFY_EXIT(session.cli({"cams", "write", "--program", "0", editedPath}), 0);
+
+    const CliRun after = session.cli({"cams", "read", "--program", "0"});
+    VERIFY_EXIT(after, 0);
+    // Tracks the file lists equal it; the others are as before.
+    QByteArray expected = "output,cam,on,off\n1,1,100,200\n";
+    for (const QByteArray& line : csv.split('\n')) {
+        if (line.isEmpty() || line.startsWith("output") || line.startsWith("1,") || line.startsWith("20,")) continue;
+        expected += line + '\n';
+    }
+    QList<QByteArray> expectedLines = expected.split('\n');
+    expectedLines.append("20,1,5,50");
+    expectedLines.append("20,2,300,2");
+    QList<QByteArray> actualLines = after.out.toUtf8().split('\n');
+    std::sort(expectedLines.begin(), expectedLines.end());
+    std::sort(actualLines.begin(), actualLines.end());
+    expectedLines.removeAll(QByteArray());
+    actualLines.removeAll(QByteArray());
+    QCOMPARE(actualLines, expectedLines);
+
+    const CliRun one = session.cli({"cams", "read", "--program", "0", "--output", "20"});
+    VERIFY_EXIT(one, 0);
+    QCOMPARE(one.out, QStringLiteral("output,cam,on,off\n20,1,5,50\n20,2,300,2\n"));
+}
+
+void TestE2eCli::camsWriteRejectsOverlapAndLeavesDeviceUntouched() {
+    SimSession session;
+    START_SIM(session);
+    const CliRun before = session.cli({"cams", "read", "--program", "0"});
+    VERIFY_EXIT(before, 0);
+    const QString bad = session.path(QStringLiteral("bad.csv"));
+    // Cam 2 overlaps cam 1, and 400 lies beyond ?IMAX (359).
+    QVERIFY(writeBytes(bad, "output,cam,on,off\n1,1,10,100\n1,2,50,150\n2,1,0,400\n"));
+    const CliRun run = session.cli({"cams", "write", "--program", "0", bad});
+    VERIFY_EXIT(run, 4);
+    QVERIFY(run.err.startsWith(QLatin1String("cambench-cli: ")));
+    QVERIFY(run.err.contains(QLatin1String("not changed")));
+    const CliRun after = session.cli({"cams", "read", "--program", "0"});
+    QCOMPARE(after.out, before.out);
+}
+
+void TestE2eCli::deadTimesRoundTrip() {
+    SimSession session;
+    START_SIM(session);
+    const QString file = session.path(QStringLiteral("dt.csv"));
+    QVERIFY(writeBytes(file, "output,deadtime\n5,321\n6,0\n"));
+    VERIFY_EXIT(session.cli({"deadtimes", "write", file}), 0);
+    const CliRun read = session.cli({"deadtimes", "read"});
+    VERIFY_EXIT(read, 0);
+    QVERIFY2(read.out.contains(QLatin1String("\n5,321\n")), qPrintable(read.out));
+    QVERIFY(read.out.contains(QLatin1String("\n6,0\n")));
+    QVERIFY(writeBytes(file, "output,deadtime\n5,100000\n"));  // beyond ?GTZKMAX
+    VERIFY_EXIT(session.cli({"deadtimes", "write", file}), 4);
+}
+
+void TestE2eCli::namesRoundTrip() {
+    SimSession session;
+    START_SIM(session);
+    const QString file = session.path(QStringLiteral("names.csv"));
+    QVERIFY(writeBytes(file, "kind,number,name\noutput,4,Pusher\nprogram,3,\"Format \"\"C\"\"\"\n"));
+    VERIFY_EXIT(session.cli({"names", "write", file}), 0);
+    const QString out = session.path(QStringLiteral("out.csv"));
+    VERIFY_EXIT(session.cli({"names", "read", "-o", out}), 0);
+    const QByteArray names = readBytes(out);
+    QVERIFY2(names.contains("output,4,Pusher\n"), names.constData());
+    QVERIFY(names.contains("program,3,\"Format \"\"C\"\"\"\n"));
+}
+
+void TestE2eCli::settingsChangeOneValue() {
+    SimSession session;
+    START_SIM(session);
+    const QString file = session.path(QStringLiteral("settings.json"));
+    VERIFY_EXIT(session.cli({"settings", "read", "-o", file}), 0);
+    QJsonObject root = QJsonDocument::fromJson(readBytes(file)).object();
+    QJsonObject settings = root.value(QStringLiteral("settings")).toObject();
+    QVERIFY(settings.contains(QStringLiteral("cableLength")));
+    const int changed = settings.value(QStringLiteral("cableLength")).toInt() + 17;
+    settings.insert(QStringLiteral("cableLength"), changed);
+    root.insert(QStringLiteral("settings"), settings);
+    QVERIFY(writeBytes(file, QJsonDocument(root).toJson()));
+    VERIFY_EXIT(session.cli({"settings", "write", file}), 0);
+
+    const CliRun read = session.cli({"settings", "read"});
+    VERIFY_EXIT(read, 0);
+    const QJsonObject again = QJsonDocument::fromJson(read.out.toUtf8()).object();
+    QCOMPARE(again.value(QStringLiteral("settings")).toObject().value(QStringLiteral("cableLength")).toInt(),
+             changed);
+}
+
+void TestE2eCli::usersListNeverShowsNumbers() {
+    SimSession session;
+    START_SIM(session);
+    const QString log = session.path(QStringLiteral("traffic.log"));
+    const CliRun run = session.cli({"--log", log, "users", "list"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY(run.out.contains(QLatin1String("Supervisor")));
+    QVERIFY(run.out.contains(QLatin1String("*****")));
+    // The demo device's access codes.
+    for (const char* secret : {"4711", "1234"}) {
+        QVERIFY2(!run.out.contains(QLatin1String(secret)), secret);
+    }
+    const QList<QByteArray> lines = readBytes(log).split('\n');
+    int userLines = 0;
+    for (const QByteArray& line : lines) {
+        if (!line.contains("USER")) continue;
+        ++userLines;
+        QVERIFY2(!line.contains("4711") && !line.contains("1234"), line.constData());
+        // Nor as hex bytes: "34 37 31 31" / "31 32 33 34".
+        QVERIFY2(!line.contains("34 37 31 31") && !line.contains("31 32 33 34"), line.constData());
+    }
+    QVERIFY(userLines >= 4);
+}
+
+void TestE2eCli::plcRoundTrip() {
+    SimSession session;
+    START_SIM(session);
+    const QString file = session.path(QStringLiteral("plc.json"));
+    VERIFY_EXIT(session.cli({"plc", "read", "-o", file}), 0);
+    QJsonObject root = QJsonDocument::fromJson(readBytes(file)).object();
+    QJsonArray networks = root.value(QStringLiteral("networks")).toArray();
+    QJsonArray symbols;
+    for (int i = 0; i < 30; ++i) symbols.append(i == 0 ? 0x0107 : 0);
+    networks.append(QJsonObject{{QStringLiteral("area"), QStringLiteral("M")},
+                                {QStringLiteral("number"), 3},
+                                {QStringLiteral("value"), 2500},
+                                {QStringLiteral("reset"), 0},
+                                {QStringLiteral("symbols"), symbols}});
+    root.insert(QStringLiteral("networks"), networks);
+    QVERIFY(writeBytes(file, QJsonDocument(root).toJson()));
+    VERIFY_EXIT(session.cli({"plc", "write", file}), 0);
+    const CliRun read = session.cli({"plc", "read"});
+    VERIFY_EXIT(read, 0);
+    const QJsonArray again =
+        QJsonDocument::fromJson(read.out.toUtf8()).object().value(QStringLiteral("networks")).toArray();
+    // The file lists networks in device order; compare regardless of order.
+    const auto asSet = [](const QJsonArray& array) {
+        QSet<QByteArray> set;
+        for (const QJsonValue& value : array) set.insert(QJsonDocument(value.toObject()).toJson());
+        return set;
+    };
+    QCOMPARE(again.size(), networks.size());
+    QCOMPARE(asSet(again), asSet(networks));
+}
+
+void TestE2eCli::multiuserScanListsExactlyTheDevices() {
+    SimSession session;
+    START_SIM(session, {"--protocol", "multiuser", "--devices", "0,5"});
+    const CliRun run = session.cliMultiuser({"scan"});
+    VERIFY_EXIT(run, 0);
+    QCOMPARE(run.out, QStringLiteral("0\n5\n"));
+}
+
+void TestE2eCli::multiuserDeviceOptionReachesThatDevice() {
+    SimSession session;
+    START_SIM(session, {"--protocol", "multiuser", "--devices", "0,5"});
+    const CliRun run = session.cliMultiuser({"--device", "5", "info"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY(run.out.contains(QLatin1String("deviceNumber: 5\n")));
+    const CliRun absent = session.cliMultiuser({"--device", "7", "--timeout", "100", "info"});
+    VERIFY_EXIT(absent, 3);
+}
+
+void TestE2eCli::scanNeedsMultiuser() {
+    SimSession session;
+    START_SIM(session);
+    const CliRun run = session.cli({"scan"});
+    VERIFY_EXIT(run, 2);
+    QVERIFY(run.err.contains(QLatin1String("--protocol multiuser")));
+}
+
+void TestE2eCli::usageErrorsExitTwoWithUsage() {
+    for (const QStringList& args : {QStringList{"frobnicate"}, QStringList{"cams", "read"},
+                                    QStringList{"--baud", "fast", "info"}, QStringList{},
+                                    QStringList{"info", "--bogus"}}) {
+        const CliRun run = runCli(args, 30000);
+        VERIFY_EXIT(run, 2);
+        QVERIFY2(run.err.startsWith(QLatin1String("cambench-cli: ")), qPrintable(run.err));
+        QVERIFY(run.err.contains(QLatin1String("Usage: cambench-cli")));
+    }
+    const CliRun help = runCli({"--help"}, 30000);
+    VERIFY_EXIT(help, 0);
+    QVERIFY(help.out.contains(QLatin1String("exit 0 when equal")));
+}
+
+void TestE2eCli::rawPrintsReplyBody() {
+    SimSession session;
+    START_SIM(session);
+    const CliRun run = session.cli({"raw", "?GPRGMAX"});
+    VERIFY_EXIT(run, 0);
+    QCOMPARE(run.out, QStringLiteral("GPRGMAX0010\n"));
+}
+
+QTEST_GUILESS_MAIN(TestE2eCli)
+#include "tst_e2e_cli.moc"

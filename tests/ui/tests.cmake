@@ -1,0 +1,2 @@
+cambench_add_test(cameditor_document_test SOURCES ui/cameditor/tst_cam_document.cpp ui/cameditor/cam_test_support.h LIBS cambench_ui)
+cambench_add_test(cameditor_widget_test SOURCES ui/cameditor/tst_cam_editor_widget.cpp ui/cameditor/cam_test_support.h LIBS cambench_ui)

@@ -1,0 +1,74 @@
+#pragma once
+
+#include "model/eeprom_image.h"
+#include "model/result.h"
+
+#include <QWizard>
+
+#include <optional>
+
+class QCheckBox;
+class QLabel;
+class QLineEdit;
+class QRadioButton;
+
+namespace cambench {
+
+class DeviceSession;
+class ProgressPage;
+class Workspace;
+
+// Backup and restore of the whole EEPROM, following the safety rules: the
+// image is checked by the model's loader, a different device needs an
+// explicit confirmation, a safety backup of the device is taken first, and
+// the report says plainly when a failed restore left the device erased.
+class BackupWizard : public QWizard {
+    Q_OBJECT
+public:
+    enum Page { ChoosePage, CheckPage, RunPage };
+    enum class Mode { Backup, Restore };
+
+    BackupWizard(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+
+    void setMode(Mode mode);
+    void setPath(const QString& path);
+    void setSafetyBackupPath(const QString& path);
+    void setForceRestore(bool force);
+    Mode mode() const;
+    ProgressPage* progressPage() const { return m_progress; }
+    QString checkText() const;
+
+    int nextId() const override;
+    bool validateCurrentPage() override;
+    void initializePage(int id) override;
+    void reject() override;
+
+Q_SIGNALS:
+    // The device's content was replaced: everything read before is stale.
+    void restored();
+    void finishedWork(bool ok);
+
+private:
+    QWizardPage* createChoosePage();
+    QWizardPage* createCheckPage();
+    void runBackup();
+    void runSafetyBackup();
+    void runRestore();
+    void finishWork(bool ok, const QString& report);
+    quint64 track(quint64 job);
+
+    DeviceSession* m_session;
+    Workspace* m_workspace;
+    QRadioButton* m_backup;
+    QRadioButton* m_restore;
+    QLineEdit* m_path;
+    QLabel* m_check;
+    QCheckBox* m_force;
+    QLineEdit* m_safetyPath;
+    ProgressPage* m_progress;
+    std::optional<EepromImage> m_image;
+    QStringList m_mismatch;
+    quint64 m_job = 0;
+};
+
+}  // namespace cambench

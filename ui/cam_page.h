@@ -1,0 +1,40 @@
+#pragma once
+
+#include "section_page.h"
+
+#include "model/device_info.h"
+
+namespace cambench {
+
+class CamEditorWidget;
+class DeviceSession;
+class Workspace;
+
+// The cam program editor (ui/cameditor) wired to the device: its read and
+// write requests become jobs, and the monitor's live position and outputs
+// reach its diagram while online.
+class CamPage : public SectionPage {
+    Q_OBJECT
+public:
+    CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+
+    QString sectionTitle() const override { return tr("Cam programs"); }
+    QList<SectionDifference> differences() const override;
+    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
+
+    CamEditorWidget* editor() const { return m_editor; }
+
+    void readProgram(int program, std::function<void(const Status&)> done = {});
+    void writeProgram(int program, std::function<void(const WriteReport&)> done = {});
+    void showStatus(const DeviceStatus& status);
+    void clearLive();
+
+private:
+    void applyWritten(const QList<int>& programs, const ItemOutcomes& outcomes);
+
+    DeviceSession* m_session;
+    Workspace* m_workspace;
+    CamEditorWidget* m_editor;
+};
+
+}  // namespace cambench

@@ -1,0 +1,114 @@
+#pragma once
+
+#include "write_report.h"
+
+#include <QMainWindow>
+
+class QAction;
+class QFrame;
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QStackedWidget;
+
+namespace cambench {
+
+class BackupWizard;
+class CamPage;
+class CompareDialog;
+class ConnectionPage;
+class DeadTimesPage;
+class DeviceSession;
+class MonitorPage;
+class PlcPage;
+class SectionPage;
+class SettingsPage;
+class TerminalPage;
+class UsersPage;
+class Workspace;
+
+// The CamBench window: connection panel and the sections of one device
+// (cam programs, dead times, encoder & system, users, PLC, monitor, backup,
+// terminal). Session and workspace live outside it: the window can be
+// rebuilt (language switch) without losing the line or an edit.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    enum Section { Connection, Cams, DeadTimes, Settings, Users, Plc, Monitor, Backup, Terminal, COUNT };
+
+    MainWindow(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    void showSection(Section section);
+    Section currentSection() const;
+
+    ConnectionPage* connectionPage() const { return m_connection; }
+    CamPage* camPage() const { return m_cams; }
+    DeadTimesPage* deadTimesPage() const { return m_deadTimes; }
+    SettingsPage* settingsPage() const { return m_settings; }
+    UsersPage* usersPage() const { return m_users; }
+    PlcPage* plcPage() const { return m_plc; }
+    MonitorPage* monitorPage() const { return m_monitor; }
+    TerminalPage* terminalPage() const { return m_terminal; }
+    QList<SectionPage*> dataPages() const;
+
+    // Connect, read the identity, then each section and program `program`.
+    void connectAndLoad(int program = 0);
+    // Reads identity; then every section (after connect or a restore).
+    void readEverything(int program = 0);
+
+    CompareDialog* openCompare();
+    BackupWizard* openBackupWizard();
+    QString lastMessage() const { return m_lastMessage; }
+    // Asks before closing when edits are not written; true = may close.
+    bool confirmClose();
+
+    void saveProjectTo(const QString& path);
+    Status exportReport(const QString& path);
+
+Q_SIGNALS:
+    void languageRequested(const QString& language);
+    void darkRequested(bool dark);
+    // The identity (and the first program) arrived after connectAndLoad.
+    void loaded(bool ok);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createPages();
+    void createMenus();
+    void createStatusBar();
+    void showMessage(const QString& text);
+    void updateTitle();
+    void updateConnection();
+    void newProject();
+    void openProject();
+    void saveProject();
+    void saveProjectAs();
+    void exportReportInteractive();
+
+    DeviceSession* m_session;
+    Workspace* m_workspace;
+    QListWidget* m_nav;
+    QStackedWidget* m_stack;
+    QFrame* m_lostBanner;
+    QLabel* m_lostText;
+    QLabel* m_connectionLabel;
+    QLabel* m_jobLabel;
+    QProgressBar* m_jobProgress;
+    ConnectionPage* m_connection = nullptr;
+    CamPage* m_cams = nullptr;
+    DeadTimesPage* m_deadTimes = nullptr;
+    SettingsPage* m_settings = nullptr;
+    UsersPage* m_users = nullptr;
+    PlcPage* m_plc = nullptr;
+    MonitorPage* m_monitor = nullptr;
+    TerminalPage* m_terminal = nullptr;
+    QList<SectionPage*> m_pages;
+    QString m_projectPath;
+    QString m_lastMessage;
+    int m_pendingProgram = -1;
+};
+
+}  // namespace cambench

@@ -1,0 +1,275 @@
+#include "users_page.h"
+
+#include "access_grid_model.h"
+#include "device_session.h"
+#include "users_model.h"
+#include "workspace.h"
+
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace cambench {
+
+namespace {
+constexpr int kNameLength = 21;
+constexpr int kNumberLength = 5;
+}  // namespace
+
+UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
+    : SectionPage(parent),
+      m_session(session),
+      m_workspace(workspace),
+      m_model(new UsersModel(workspace, this)),
+      m_access(new AccessGridModel(workspace, this)),
+      m_view(new QTableView),
+      m_show(new QCheckBox(tr("Show numbers"))),
+      m_name(new QLineEdit),
+      m_number(new QLineEdit),
+      m_allOutputs(new QCheckBox(tr("May change all outputs"))),
+      m_editor(new QWidget) {
+    auto* read = new QPushButton(tr("Read from device"));
+    auto* write = new QPushButton(tr("Write changes"));
+    auto* add = new QPushButton(tr("Add user"));
+    auto* remove = new QPushButton(tr("Remove user"));
+    m_show->setToolTip(tr("User numbers are access codes. They stay hidden unless you show them."));
+    auto* buttons = new QHBoxLayout;
+    for (QWidget* w : {static_cast<QWidget*>(read), static_cast<QWidget*>(write),
+                       static_cast<QWidget*>(add), static_cast<QWidget*>(remove)})
+        buttons->addWidget(w);
+    buttons->addStretch();
+    buttons->addWidget(m_show);
+
+    m_view->setModel(m_model);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_view->verticalHeader()->hide();
+    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::RightsColumn, QHeaderView::Stretch);
+
+    m_name->setMaxLength(kNameLength);
+    m_number->setMaxLength(kNumberLength);
+    m_number->setEchoMode(QLineEdit::Password);
+    auto* details = new QGroupBox(tr("User"));
+    auto* form = new QFormLayout(details);
+    form->addRow(tr("Name:"), m_name);
+    form->addRow(tr("User number:"), m_number);
+    auto* rightsBox = new QGroupBox(tr("Rights"));
+    auto* rightsGrid = new QGridLayout(rightsBox);
+    const QList<QPair<quint32, QString>> rights{
+        {User::ProgramSelection, tr("Program selection")},
+        {User::Programming, tr("Programming")},
+        {User::SystemSettings, tr("System settings")},
+        {User::DeviceConfiguration, tr("Device configuration")},
+        {User::PlcMenu, tr("PLC menu")},
+        {User::AllOutputs, tr("All outputs menu")},
+        {User::UserMenu, tr("User menu")},
+    };
+    for (int i = 0; i < rights.size(); ++i) {
+        auto* box = new QCheckBox(rights[i].second);
+        rightsGrid->addWidget(box, i / 2, i % 2);
+        m_rights.append({rights[i].first, box});
+        connect(box, &QCheckBox::toggled, this, &UsersPage::editUser);
+    }
+    auto* accessBox = new QGroupBox(tr("Outputs this user may change"));
+    auto* accessLayout = new QVBoxLayout(accessBox);
+    auto* grid = new QTableView;
+    grid->setModel(m_access);
+    grid->horizontalHeader()->hide();
+    grid->verticalHeader()->hide();
+    grid->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    grid->setShowGrid(false);
+    accessLayout->addWidget(m_allOutputs);
+    accessLayout->addWidget(grid);
+
+    auto* editorLayout = new QVBoxLayout(m_editor);
+    editorLayout->setContentsMargins(0, 0, 0, 0);
+    editorLayout->addWidget(details);
+    editorLayout->addWidget(rightsBox);
+    editorLayout->addWidget(accessBox, 1);
+
+    auto* body = new QHBoxLayout;
+    body->addWidget(m_view, 2);
+    body->addWidget(m_editor, 3);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(buttons);
+    layout->addLayout(body, 1);
+
+    connect(read, &QPushButton::clicked, this, &UsersPage::readFromDevice);
+    connect(write, &QPushButton::clicked, this, [this] {
+        writeItems({}, [this](const WriteReport& report) {
+            Q_EMIT statusMessage(tr("Users: %1").arg(report.summary()));
+            if (!report.complete()) QMessageBox::warning(this, sectionTitle(), report.details());
+        });
+    });
+    connect(add, &QPushButton::clicked, this, [this] {
+        User user;
+        user.name = tr("New user");
+        user.outputAccess.resize(256);
+        selectUser(m_workspace->addUser(user));
+    });
+    connect(remove, &QPushButton::clicked, this, [this] {
+        if (currentUser() >= 0) m_workspace->removeUser(currentUser());
+    });
+    connect(m_show, &QCheckBox::toggled, this, &UsersPage::setNumbersShown);
+    connect(m_view->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &UsersPage::showUser);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &UsersPage::showUser);
+    connect(m_name, &QLineEdit::textEdited, this, &UsersPage::editUser);
+    connect(m_number, &QLineEdit::textEdited, this, &UsersPage::editUser);
+    connect(m_allOutputs, &QCheckBox::toggled, this, &UsersPage::editUser);
+    showUser();
+}
+
+void UsersPage::setNumbersShown(bool shown) {
+    m_show->setChecked(shown);
+    m_model->revealNumbers(shown);
+    m_number->setEchoMode(shown ? QLineEdit::Normal : QLineEdit::Password);
+}
+
+int UsersPage::currentUser() const {
+    const QModelIndex index = m_view->currentIndex();
+    return index.isValid() ? index.row() : -1;
+}
+
+void UsersPage::selectUser(int index) { m_view->selectRow(index); }
+
+void UsersPage::showUser() {
+    const int index = currentUser();
+    m_access->setUser(index);
+    m_editor->setEnabled(index >= 0);
+    m_updating = true;
+    const User user = index >= 0 ? m_workspace->users().at(index).user : User();
+    m_name->setText(user.name);
+    m_number->setText(user.number);
+    m_allOutputs->setChecked(user.allOutputs);
+    for (const auto& [bit, box] : m_rights) box->setChecked(user.rights & bit);
+    m_updating = false;
+}
+
+void UsersPage::editUser() {
+    const int index = currentUser();
+    if (m_updating || index < 0) return;
+    User user = m_workspace->users().at(index).user;
+    user.name = m_name->text();
+    user.number = m_number->text();
+    user.allOutputs = m_allOutputs->isChecked();
+    user.rights = 0;
+    for (const auto& [bit, box] : m_rights) {
+        if (box->isChecked()) user.rights |= bit;
+    }
+    m_workspace->setUser(index, user);
+}
+
+void UsersPage::deviceConnected() { readFromDevice(); }
+
+void UsersPage::readFromDevice() {
+    Q_EMIT statusMessage(tr("Reading users…"));
+    m_session->run<QList<User>>(
+        this, tr("Read users"),
+        [](comm::CamConClient& client, comm::JobContext&) { return client.readUsers(); },
+        [this](Result<QList<User>> users) {
+            if (!users) {
+                Q_EMIT statusMessage(tr("Reading users failed: %1").arg(users.error().message));
+                return;
+            }
+            m_workspace->loadUsersFromDevice(users.value());
+            Q_EMIT statusMessage(tr("%n user(s) read.", nullptr, int(users->size())));
+        });
+}
+
+QList<SectionDifference> UsersPage::differences() const {
+    QList<SectionDifference> list;
+    const auto& users = m_workspace->users();
+    const auto described = [this](const User& user) {
+        return tr("%1, number %2, rights: %3")
+            .arg(user.name, m_model->numbersRevealed() ? user.number : user.maskedNumber(),
+                 UsersModel::rightsText(user.rights));
+    };
+    for (int i = 0; i < users.size(); ++i) {
+        if (!m_workspace->userChanged(i)) continue;
+        QString device = tr("absent");
+        for (const User& d : m_workspace->deviceUsers()) {
+            if (!users[i].deviceNumber.isEmpty() && d.number == users[i].deviceNumber) device = described(d);
+        }
+        list.append({QStringLiteral("user:%1").arg(i), tr("User \"%1\"").arg(users[i].user.name), device,
+                     described(users[i].user)});
+    }
+    for (const QString& number : m_workspace->deletedUserNumbers()) {
+        for (const User& d : m_workspace->deviceUsers()) {
+            if (d.number == number)
+                list.append({QStringLiteral("delete:%1").arg(number), tr("User \"%1\"").arg(d.name),
+                             described(d), tr("deleted")});
+        }
+    }
+    return list;
+}
+
+void UsersPage::writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) {
+    struct Item {
+        QString key;
+        QString label;
+        QString oldNumber;
+        User user;
+        bool remove;
+    };
+    QList<Item> items;
+    const QList<SectionDifference> all = differences();
+    for (const SectionDifference& difference : all) {
+        if (!keys.isEmpty() && !keys.contains(difference.key)) continue;
+        const QString arg = difference.key.section(QLatin1Char(':'), 1);
+        if (difference.key.startsWith(QLatin1String("delete:"))) {
+            items.append({difference.key, difference.item, arg, User(), true});
+        } else {
+            const auto& edited = m_workspace->users().at(arg.toInt());
+            items.append({difference.key, difference.item, edited.deviceNumber, edited.user, false});
+        }
+    }
+    for (const Item& item : items) {
+        // The device would refuse these; say so before touching it.
+        if (!item.remove && item.user.number.isEmpty()) {
+            WriteReport report;
+            report.addFailure(item.label, Error::invalidData(tr("The user has no number: enter one.")));
+            done(report);
+            return;
+        }
+    }
+    WriteReport base;
+    base.unchanged = keys.isEmpty() ? int(m_workspace->users().size()) - int(all.size() -
+                                                                            m_workspace->deletedUserNumbers().size())
+                                    : int(keys.size() - items.size());
+    m_session->run<ItemOutcomes>(
+        this, tr("Write users"),
+        [items](comm::CamConClient& client, comm::JobContext& job) -> Result<ItemOutcomes> {
+            ItemOutcomes outcomes;
+            for (const Item& item : items) {
+                const Status status = job.cancelled() ? Status(Error::cancelled())
+                                      : item.remove   ? client.deleteUser(item.oldNumber)
+                                                      : client.writeUser(item.oldNumber, item.user);
+                outcomes.append({item.key, item.label, status ? Error{} : status.error()});
+            }
+            return outcomes;
+        },
+        [this, base, done](Result<ItemOutcomes> outcomes) {
+            WriteReport report = base;
+            report.add(outcomes.value());
+            for (const ItemOutcome& outcome : outcomes.value()) {
+                if (outcome.error.kind != ErrorKind::None) continue;
+                const QString arg = outcome.key.section(QLatin1Char(':'), 1);
+                if (outcome.key.startsWith(QLatin1String("delete:"))) {
+                    m_workspace->markUserDeleted(arg);
+                } else {
+                    m_workspace->markUserWritten(arg.toInt());
+                }
+            }
+            done(report);
+        });
+}
+
+}  // namespace cambench
