@@ -5,6 +5,8 @@
 
 #include <QDateTime>
 
+#include <optional>
+
 namespace cambench::comm {
 
 using namespace client;
@@ -14,8 +16,48 @@ namespace {
 constexpr quint16 kEndBlock = 0xFFFF;
 constexpr qint32 kWrongBlockOrder = -43;  // manual 4.6.1
 
+// A restore that lost an acknowledgement starts over, a bounded number of times.
+constexpr int kTransferAttempts = 5;
+
 QString hex4(int number) {
     return QStringLiteral("%1").arg(number, 4, 16, QChar(u'0')).toUpper();
+}
+
+struct TransferFailure {
+    int index;      // position in the transfer, 0 = block 0000
+    int number;     // block number sent
+    Error error;
+    // Standard framing has no block numbers: when the acknowledgement of a
+    // block was lost, the retry sends the same block again and the device,
+    // which stored it already, answers "wrong order" (-43) and ends the
+    // transfer. Starting over from block 0000 is then the only way on.
+    bool duplicate;
+};
+
+// One pass: !EE0000 (erases), every block in ascending order, then the
+// empty block that starts the device.
+std::optional<TransferFailure> transfer(ProtocolLink& link, const EepromImage& image,
+                                        const ProgressFn& progress) {
+    const int total = int(image.blocks.size()) + 1;
+    for (int i = 0; i < total; ++i) {
+        if (progress) progress(i, total);
+        const bool endBlock = i == total - 1;
+        const int number = endBlock ? image.blocks.last().number + 1 : image.blocks.at(i).number;
+        Fields fields{{"block", qint64(number)}};
+        fields.setBytes("data", endBlock ? QByteArray() : image.blocks.at(i).data);
+        // Block 0000 erases the EEPROM and the end block starts the device:
+        // both may take far longer than an ordinary reply.
+        const bool slow = i == 0 || endBlock;
+        const int retriesBefore = link.stats().retries;
+        const Result<Fields> reply =
+            link.call('!', "EE", fields, slow ? link.settings().longTimeoutMs : 0);
+        if (reply) continue;
+        const bool duplicate = i > 0 && link.stats().retries != retriesBefore &&
+                               reply.error().kind == ErrorKind::DeviceError &&
+                               reply.error().deviceCode == kWrongBlockOrder;
+        return TransferFailure{i, number, reply.error(), duplicate};
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -74,51 +116,33 @@ Status CamConClient::restore(const EepromImage& image, const ProgressFn& progres
             QStringLiteral("the EEPROM image does not start with block 0000; nothing was sent"));
     }
     const int total = int(image.blocks.size()) + 1;  // + the empty end block
-    const int longTimeout = m_link.settings().longTimeoutMs;
-    const QString again =
-        QStringLiteral("Running the same restore again is safe: it starts by erasing the device.");
-
-    for (int i = 0; i <= image.blocks.size(); ++i) {
-        if (progress) progress(i, total);
-        const bool endBlock = i == image.blocks.size();
-        const int number = endBlock ? image.blocks.last().number + 1 : image.blocks.at(i).number;
-        Fields fields{{"block", qint64(number)}};
-        fields.setBytes("data", endBlock ? QByteArray() : image.blocks.at(i).data);
-        // Block 0000 erases the EEPROM and the end block starts the device:
-        // both may take far longer than an ordinary reply.
-        const bool slow = i == 0 || endBlock;
-        const int retriesBefore = m_link.stats().retries;
-        const Result<Fields> reply = m_link.call('!', "EE", fields, slow ? longTimeout : 0);
-        if (reply) continue;
-        // Standard framing has no block numbers: when the acknowledgement
-        // of a block was lost, the retry sends the same block again and the
-        // device, which stored it already, answers "wrong order" (-43).
-        const bool retried = m_link.stats().retries != retriesBefore;
-        if (i > 0 && retried && reply.error().kind == ErrorKind::DeviceError &&
-            reply.error().deviceCode == kWrongBlockOrder) {
-            continue;
+    std::optional<TransferFailure> failure;
+    for (int attempt = 1; attempt <= kTransferAttempts; ++attempt) {
+        failure = transfer(m_link, image, progress);
+        if (!failure) {
+            if (progress) progress(total, total);
+            return success();
         }
-        QString state;
-        if (i == 0) {
-            state = QStringLiteral("The device may already be ERASED (block 0000 starts the "
-                                   "erase).");
-        } else if (!endBlock) {
-            state = QStringLiteral("The device is now ERASED: it holds only the blocks before "
-                                   "%1 and does not run.")
-                        .arg(hex4(number));
-        } else {
-            state = QStringLiteral("The device holds every block but did not confirm that it "
-                                   "started.");
-        }
-        return inContext(
-            QStringLiteral("restore failed at EEPROM block %1 of %2 (!EE%3). %4 %5 Cause")
-                .arg(i + 1)
-                .arg(total)
-                .arg(hex4(number), state, again),
-            reply.error());
+        if (!failure->duplicate) break;
     }
-    if (progress) progress(total, total);
-    return success();
+    QString state;
+    if (failure->index == 0) {
+        state = QStringLiteral("The device may already be ERASED (block 0000 starts the erase).");
+    } else if (failure->index < total - 1) {
+        state = QStringLiteral("The device is now ERASED: it holds only the blocks before %1 "
+                               "and does not run.")
+                    .arg(hex4(failure->number));
+    } else {
+        state = QStringLiteral("The device holds every block but did not confirm that it "
+                               "started.");
+    }
+    return inContext(
+        QStringLiteral("restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same "
+                       "restore again is safe: it starts by erasing the device. Cause")
+            .arg(failure->index + 1)
+            .arg(total)
+            .arg(hex4(failure->number), state),
+        failure->error);
 }
 
 }  // namespace cambench::comm
