@@ -11,6 +11,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSerialPortInfo>
+#include <QSettings>
 #include <QSpinBox>
 #include <QToolButton>
 
@@ -86,6 +87,14 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     layout->addWidget(identity, 2);
 
     fillPorts();
+    // A rebuilt window (language switch) shows the line in use.
+    if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying()) {
+        setPort(m_session->connection().port);
+        m_protocol->setCurrentIndex(m_protocol->findData(int(m_session->link().framing)));
+        m_baud->setCurrentText(QString::number(m_session->connection().serial.baud));
+        m_device->setValue(m_session->link().device);
+        m_pcNumber->setValue(m_session->link().pcNumber);
+    }
     connect(refresh, &QToolButton::clicked, this, &ConnectionPage::fillPorts);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
         const bool multi = m_protocol->currentData().toInt() == int(comm::Framing::Multiuser);
@@ -93,6 +102,8 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
         updateButtons();
     });
     connect(m_connect, &QPushButton::clicked, this, [this] {
+        // Remembered: the next start connects here instead of the simulator.
+        QSettings().setValue(QStringLiteral("connection/port"), connectionSettings().port);
         m_session->connectTo(connectionSettings(), linkSettings());
     });
     connect(m_disconnect, &QPushButton::clicked, m_session, &DeviceSession::disconnectFromDevice);
@@ -131,6 +142,10 @@ void ConnectionPage::setPort(const QString& port) {
     } else {
         m_port->setEditText(port);
     }
+}
+
+void ConnectionPage::setFraming(comm::Framing framing) {
+    m_protocol->setCurrentIndex(m_protocol->findData(int(framing)));
 }
 
 comm::ConnectionSettings ConnectionPage::connectionSettings() const {

@@ -29,6 +29,7 @@ public:
     comm::ConnectionSettings connectionSettings() const;
     comm::LinkSettings linkSettings() const;
     void setPort(const QString& port);
+    void setFraming(comm::Framing framing);
 
     void scanBus();
 

@@ -61,4 +61,8 @@ target_sources(cambench_ui PRIVATE
   commissioning_report.cpp
   main_window.h
   main_window.cpp
+  shell.h
+  shell.cpp
+  screenshot_tour.h
+  screenshot_tour.cpp
 )

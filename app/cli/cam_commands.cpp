@@ -24,20 +24,24 @@ Status checkProgram(int program, const DeviceInfo& info) {
 }
 
 int readCams(CliSession& session, CommandArgs& args) {
-    const Result<int> program = args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);
+    const Result<int> program =
+        args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);
     if (!program) return reportError(program.error());
     const Result<int> output = args.takeIntOption(QStringLiteral("--output"), 0, 1, 200);
     if (!output) return reportError(output.error());
-    const Result<QString> path = args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
+    const Result<QString> path =
+        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    if (*program < 0) return reportError(Error::usage(QStringLiteral("cams read needs --program P")));
+    if (*program < 0)
+        return reportError(Error::usage(QStringLiteral("cams read needs --program P")));
 
     session.setShowProgress(true);
     const int p = *program;
     const int o = *output;
     const Result<Tracks> tracks = session.run<Tracks>(
-        QStringLiteral("cams read"), [p, o](CamConClient& client, JobContext& job) -> Result<Tracks> {
+        QStringLiteral("cams read"),
+        [p, o](CamConClient& client, JobContext& job) -> Result<Tracks> {
             const Result<DeviceInfo> info = client.readInfo();
             if (!info) return info.error();
             if (const Status ok = checkProgram(p, *info); !ok) return ok.error();
@@ -67,12 +71,14 @@ int readCams(CliSession& session, CommandArgs& args) {
 }
 
 int writeCams(CliSession& session, CommandArgs& args) {
-    const Result<int> program = args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);
+    const Result<int> program =
+        args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);
     if (!program) return reportError(program.error());
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a CSV FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    if (*program < 0) return reportError(Error::usage(QStringLiteral("cams write needs --program P")));
+    if (*program < 0)
+        return reportError(Error::usage(QStringLiteral("cams write needs --program P")));
     // The file's format is checked before any device work.
     const Result<Tracks> tracks = loadCamsCsv(*path);
     if (!tracks) return reportError(tracks.error());
@@ -82,7 +88,8 @@ int writeCams(CliSession& session, CommandArgs& args) {
     const QString file = *path;
     const Tracks target = *tracks;
     const Status written = session.run<Done>(
-        QStringLiteral("cams write"), [p, file, target](CamConClient& client, JobContext& job) -> Status {
+        QStringLiteral("cams write"),
+        [p, file, target](CamConClient& client, JobContext& job) -> Status {
             // The device's limits decide whether the file fits; nothing is
             // written unless every track does.
             const Result<DeviceInfo> info = client.readInfo();

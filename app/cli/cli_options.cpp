@@ -56,9 +56,8 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
             return options;
         }
         static const QStringList kNames = {
-            QStringLiteral("--port"),      QStringLiteral("--protocol"),
-            QStringLiteral("--baud"),      QStringLiteral("--device"),
-            QStringLiteral("--pc-number"), QStringLiteral("--timeout"),
+            QStringLiteral("--port"),   QStringLiteral("--protocol"),  QStringLiteral("--baud"),
+            QStringLiteral("--device"), QStringLiteral("--pc-number"), QStringLiteral("--timeout"),
             QStringLiteral("--log")};
         QString name;
         QString inlineValue;
@@ -87,7 +86,12 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         } else if (name == QLatin1String("--log")) {
             options.logFile = *value;
         } else {
-            struct Range { const char* name; int min; int max; int* target; };
+            struct Range {
+                const char* name;
+                int min;
+                int max;
+                int* target;
+            };
             const Range ranges[] = {{"--baud", 50, 4000000, &options.baud},
                                     {"--device", 0, 63, &options.device},
                                     {"--pc-number", 0, 63, &options.pcNumber},
@@ -160,7 +164,8 @@ QString usageText() {
         "Usage: cambench-cli [--port PORT] [--protocol standard|multiuser] [--baud N]\n"
         "                    [--device N] [--pc-number N] [--timeout MS] [--log FILE] COMMAND\n"
         "\n"
-        "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the default)\n"
+        "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
+        "default)\n"
         "  --protocol    standard (default, 9600 baud) or multiuser (38400 baud)\n"
         "  --baud N      line speed; overrides the protocol's default\n"
         "  --device N    Multiuser device number 0..63 (default 0)\n"
@@ -175,7 +180,8 @@ QString usageText() {
         "  cams read --program P [--output O] [-o FILE]   CSV, header \"output,cam,on,off\"\n"
         "  cams write --program P FILE      replaces exactly the tracks that FILE lists\n"
         "  deadtimes read [-o FILE] | deadtimes write FILE     CSV \"output,deadtime\" (0.1 ms)\n"
-        "  names read [-o FILE] | names write FILE        CSV \"kind,number,name\" (output|program)\n"
+        "  names read [-o FILE] | names write FILE        CSV \"kind,number,name\" "
+        "(output|program)\n"
         "  settings read [-o FILE] | settings write FILE  JSON, system and encoder settings\n"
         "  users list                       names and rights, numbers masked\n"
         "  plc read [-o FILE] | plc write FILE            JSON\n"

@@ -4,10 +4,10 @@ namespace cambench::cli {
 
 const CommandGroup* findCommandGroup(const QString& name) {
     static const CommandGroup kGroups[] = {
-        {"info", runInfo},         {"status", runStatus},   {"scan", runScan},
-        {"raw", runRaw},           {"cams", runCams},       {"deadtimes", runDeadTimes},
-        {"names", runNames},       {"settings", runSettings}, {"users", runUsers},
-        {"plc", runPlc},           {"backup", runBackup},   {"restore", runRestore},
+        {"info", runInfo},     {"status", runStatus},     {"scan", runScan},
+        {"raw", runRaw},       {"cams", runCams},         {"deadtimes", runDeadTimes},
+        {"names", runNames},   {"settings", runSettings}, {"users", runUsers},
+        {"plc", runPlc},       {"backup", runBackup},     {"restore", runRestore},
         {"verify", runVerify},
     };
     for (const CommandGroup& group : kGroups) {
@@ -19,10 +19,10 @@ const CommandGroup* findCommandGroup(const QString& name) {
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs) {
     const QString verb = args.takePositional();
     if (verbs.contains(verb)) return verb;
-    return Error::usage(QStringLiteral("%1 needs one of: %2%3; see `cambench-cli --help`")
-                            .arg(args.command(), verbs.join(QLatin1String(", ")),
-                                 verb.isEmpty() ? QString()
-                                                : QStringLiteral(" (not \"%1\")").arg(verb)));
+    return Error::usage(
+        QStringLiteral("%1 needs one of: %2%3; see `cambench-cli --help`")
+            .arg(args.command(), verbs.join(QLatin1String(", ")),
+                 verb.isEmpty() ? QString() : QStringLiteral(" (not \"%1\")").arg(verb)));
 }
 
 }  // namespace cambench::cli

@@ -93,7 +93,8 @@ QByteArray settingsToFile(const SystemSettings& settings) {
 }
 
 int readSettings(CliSession& session, CommandArgs& args) {
-    const Result<QString> path = args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
+    const Result<QString> path =
+        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     struct Read {
@@ -110,8 +111,8 @@ int readSettings(CliSession& session, CommandArgs& args) {
         });
     if (!read) return reportError(read.error());
     for (const QString& skipped : read->skipped) {
-        printError(QStringLiteral("note: the device does not know %1; left out of the file")
-                       .arg(skipped));
+        printError(
+            QStringLiteral("note: the device does not know %1; left out of the file").arg(skipped));
     }
     const Status written = writeOutput(*path, settingsToFile(read->settings));
     return written ? ExitOk : reportError(written.error());
@@ -125,25 +126,27 @@ int writeSettings(CliSession& session, CommandArgs& args) {
     if (!settings) return reportError(settings.error());
     const QString file = *path;
     const SystemSettings wanted = *settings;
-    const Status written = session.run<Done>(
-        QStringLiteral("settings write"), [file, wanted](CamConClient& client, JobContext&) -> Status {
-            // Only values that differ from the device are written, so only
-            // they must pass validation (a device may hold odd defaults).
-            const Result<SystemSettings> current = client.readSettings();
-            if (!current) return current.error();
-            SystemSettings changed;
-            for (auto it = wanted.begin(); it != wanted.end(); ++it) {
-                const SettingSpec* spec = findSetting(it.key());
-                if (spec->readOnly) continue;
-                if (current->contains(it.key()) && current->value(it.key()).toString() == it->toString()) {
-                    continue;
-                }
-                changed.insert(it.key(), *it);
-            }
-            const QStringList problems = validateSettings(changed);
-            if (!problems.isEmpty()) return invalidFileError(file, problems);
-            return changed.isEmpty() ? success() : client.writeSettings(changed);
-        });
+    const Status written =
+        session.run<Done>(QStringLiteral("settings write"),
+                          [file, wanted](CamConClient& client, JobContext&) -> Status {
+                              // Only values that differ from the device are written, so only
+                              // they must pass validation (a device may hold odd defaults).
+                              const Result<SystemSettings> current = client.readSettings();
+                              if (!current) return current.error();
+                              SystemSettings changed;
+                              for (auto it = wanted.begin(); it != wanted.end(); ++it) {
+                                  const SettingSpec* spec = findSetting(it.key());
+                                  if (spec->readOnly) continue;
+                                  if (current->contains(it.key()) &&
+                                      current->value(it.key()).toString() == it->toString()) {
+                                      continue;
+                                  }
+                                  changed.insert(it.key(), *it);
+                              }
+                              const QStringList problems = validateSettings(changed);
+                              if (!problems.isEmpty()) return invalidFileError(file, problems);
+                              return changed.isEmpty() ? success() : client.writeSettings(changed);
+                          });
     return written ? ExitOk : reportError(written.error());
 }
 
@@ -166,15 +169,17 @@ Result<PlcNetwork> networkFromJson(const QJsonValue& value, int index, const QSt
     for (const PlcArea& candidate : kPlcAreas) {
         if (letter == QLatin1String(candidate.letter)) area = &candidate;
     }
-    if (!area) return fileError(path, QStringLiteral("%1: \"area\" must be O, P, M or X").arg(where));
+    if (!area)
+        return fileError(path, QStringLiteral("%1: \"area\" must be O, P, M or X").arg(where));
     network.area = area->area;
     qint64 number = 0;
     qint64 setValue = 0;
     qint64 reset = 0;
     if (!wholeNumber(object.value(QStringLiteral("number")), &number) ||
         !wholeNumber(object.value(QStringLiteral("value")), &setValue) ||
-        !wholeNumber(object.value(QStringLiteral("reset")), &reset) || reset < 0 || reset > 0xFFFF ||
-        setValue < std::numeric_limits<qint32>::min() || setValue > std::numeric_limits<qint32>::max()) {
+        !wholeNumber(object.value(QStringLiteral("reset")), &reset) || reset < 0 ||
+        reset > 0xFFFF || setValue < std::numeric_limits<qint32>::min() ||
+        setValue > std::numeric_limits<qint32>::max()) {
         return fileError(path, QStringLiteral("%1: \"number\", \"value\" and \"reset\" must be "
                                               "whole numbers (reset 0..65535)")
                                    .arg(where));
@@ -191,9 +196,9 @@ Result<PlcNetwork> networkFromJson(const QJsonValue& value, int index, const QSt
     for (int i = 0; i < PlcNetwork::kSymbols; ++i) {
         qint64 word = 0;
         if (!wholeNumber(symbols.at(i), &word) || word < 0 || word > 0xFFFF) {
-            return fileError(path, QStringLiteral("%1: symbol %2 must be a word 0..65535")
-                                       .arg(where)
-                                       .arg(i + 1));
+            return fileError(
+                path,
+                QStringLiteral("%1: symbol %2 must be a word 0..65535").arg(where).arg(i + 1));
         }
         network.symbols[size_t(i)] = quint16(word);
     }
@@ -201,18 +206,21 @@ Result<PlcNetwork> networkFromJson(const QJsonValue& value, int index, const QSt
 }
 
 int readPlc(CliSession& session, CommandArgs& args) {
-    const Result<QString> path = args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
+    const Result<QString> path =
+        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     session.setShowProgress(true);
     const Result<QJsonArray> networks = session.run<QJsonArray>(
-        QStringLiteral("plc read"), [](CamConClient& client, JobContext& job) -> Result<QJsonArray> {
+        QStringLiteral("plc read"),
+        [](CamConClient& client, JobContext& job) -> Result<QJsonArray> {
             QList<int> counts;
             int total = 0;
             for (const PlcArea& area : kPlcAreas) {
                 const Result<QVariant> count = client.readSetting(QLatin1String(area.countKey));
                 if (!count) return count.error();
-                counts.append(int(qBound(qint64(0), count->toLongLong(), qint64(kMaxPlcNumber + 1))));
+                counts.append(
+                    int(qBound(qint64(0), count->toLongLong(), qint64(kMaxPlcNumber + 1))));
                 total += counts.last();
             }
             QJsonArray result;
@@ -220,10 +228,12 @@ int readPlc(CliSession& session, CommandArgs& args) {
             for (int a = 0; a < int(std::size(kPlcAreas)); ++a) {
                 for (int number = 0; number < counts.at(a); ++number) {
                     job.progress(done++, total, QStringLiteral("reading PLC networks"));
-                    const Result<PlcNetwork> network = client.readPlcNetwork(kPlcAreas[a].area, number);
+                    const Result<PlcNetwork> network =
+                        client.readPlcNetwork(kPlcAreas[a].area, number);
                     if (!network) return network.error();
                     // Empty networks are the default; the file lists the used ones.
-                    if (!network->isEmpty()) result.append(networkToJson(*network, kPlcAreas[a].letter));
+                    if (!network->isEmpty())
+                        result.append(networkToJson(*network, kPlcAreas[a].letter));
                 }
             }
             return result;
@@ -268,7 +278,8 @@ int writePlc(CliSession& session, CommandArgs& args) {
 int runSettings(CliSession& session, CommandArgs& args) {
     const Result<QString> verb = takeVerb(args, {QStringLiteral("read"), QStringLiteral("write")});
     if (!verb) return reportError(verb.error());
-    return *verb == QLatin1String("read") ? readSettings(session, args) : writeSettings(session, args);
+    return *verb == QLatin1String("read") ? readSettings(session, args)
+                                          : writeSettings(session, args);
 }
 
 int runPlc(CliSession& session, CommandArgs& args) {

@@ -50,13 +50,18 @@ QJsonArray jsonNumbers(const QList<int>& numbers) {
 
 QString errorStateText(int state) {
     switch (state) {
-    case 0: return QStringLiteral("ok");
-    case 1:
-    case 2:
-    case 3: return QStringLiteral("actual-value error %1").arg(state);
-    case 4: return QStringLiteral("output error");
-    case 0xFF: return QStringLiteral("EEPROM checksum error");
-    default: return QStringLiteral("unknown error %1").arg(state);
+        case 0:
+            return QStringLiteral("ok");
+        case 1:
+        case 2:
+        case 3:
+            return QStringLiteral("actual-value error %1").arg(state);
+        case 4:
+            return QStringLiteral("output error");
+        case 0xFF:
+            return QStringLiteral("EEPROM checksum error");
+        default:
+            return QStringLiteral("unknown error %1").arg(state);
     }
 }
 
@@ -66,7 +71,8 @@ int runInfo(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<DeviceInfo> info = session.run<DeviceInfo>(
-        QStringLiteral("info"), [](CamConClient& client, JobContext&) { return client.readInfo(); });
+        QStringLiteral("info"),
+        [](CamConClient& client, JobContext&) { return client.readInfo(); });
     if (!info) return reportError(info.error());
     if (json) return printJson(QJsonDocument(deviceInfoJson(*info)));
     printOut(keyValueLines(deviceInfoEntries(*info)));
@@ -76,8 +82,8 @@ int runInfo(CliSession& session, CommandArgs& args) {
 int runStatus(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<DeviceStatus> status = session.run<DeviceStatus>(
-        QStringLiteral("status"), [](CamConClient& client, JobContext&) {
+    const Result<DeviceStatus> status =
+        session.run<DeviceStatus>(QStringLiteral("status"), [](CamConClient& client, JobContext&) {
             return client.readStatus(kMaxPoints, kMaxPoints);
         });
     if (!status) return reportError(status.error());
@@ -133,7 +139,8 @@ int runScan(CliSession& session, CommandArgs& args) {
 }
 
 int runRaw(CliSession& session, CommandArgs& args) {
-    const Result<QString> command = args.takeRequiredPositional(QStringLiteral("a COMMAND such as \"?IFGWG\""));
+    const Result<QString> command =
+        args.takeRequiredPositional(QStringLiteral("a COMMAND such as \"?IFGWG\""));
     if (!command) return reportError(command.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const QByteArray bytes = command->toLatin1();
@@ -157,7 +164,8 @@ int runUsers(CliSession& session, CommandArgs& args) {
     if (!verb) return reportError(verb.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<QList<User>> users = session.run<QList<User>>(
-        QStringLiteral("users"), [](CamConClient& client, JobContext&) { return client.readUsers(); });
+        QStringLiteral("users"),
+        [](CamConClient& client, JobContext&) { return client.readUsers(); });
     if (!users) return reportError(users.error());
     QString text;
     for (const User& user : *users) {

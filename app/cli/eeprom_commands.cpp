@@ -45,13 +45,15 @@ QStringList differingBlocks(const QList<EepromBlock>& device, const QList<Eeprom
 // "<image>.safety-20261121T231500Z.json" next to the image.
 QString safetyBackupPath(const QString& imagePath) {
     return QStringLiteral("%1.safety-%2.json")
-        .arg(imagePath, QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'")));
+        .arg(imagePath,
+             QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'")));
 }
 
 }  // namespace
 
 int runBackup(CliSession& session, CommandArgs& args) {
-    const Result<QString> path = args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
+    const Result<QString> path =
+        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     if (path->isEmpty()) return reportError(Error::usage(QStringLiteral("backup needs -o FILE")));
@@ -79,7 +81,8 @@ int runRestore(CliSession& session, CommandArgs& args) {
     if (!image) return reportError(image.error());
 
     const Result<DeviceInfo> device = session.run<DeviceInfo>(
-        QStringLiteral("identify"), [](CamConClient& client, JobContext&) { return client.readInfo(); });
+        QStringLiteral("identify"),
+        [](CamConClient& client, JobContext&) { return client.readInfo(); });
     if (!device) return reportError(device.error());
     const QStringList mismatch = identityMismatch(image->device, *device);
     if (!mismatch.isEmpty() && !force) {
@@ -94,8 +97,9 @@ int runRestore(CliSession& session, CommandArgs& args) {
         const Result<EepromImage> safety = backupJob(session, QStringLiteral("safety backup"));
         if (!safety) {
             Error error = safety.error();
-            error.message = QStringLiteral("cannot take the safety backup before the restore: %1 "
-                                           "The device was not changed.")
+            error.message = QStringLiteral(
+                                "cannot take the safety backup before the restore: %1 "
+                                "The device was not changed.")
                                 .arg(error.message);
             return reportError(error);
         }
@@ -114,14 +118,17 @@ int runRestore(CliSession& session, CommandArgs& args) {
         Error error = restored.error();
         error.message += safetyPath.isEmpty()
                              ? QStringLiteral(" No safety backup was taken (--no-safety-backup).")
-                             : QStringLiteral(" The device's previous content is in the safety "
-                                              "backup %1.")
+                             : QStringLiteral(
+                                   " The device's previous content is in the safety "
+                                   "backup %1.")
                                    .arg(safetyPath);
-        error.message += QStringLiteral(" Nothing else was changed. Run the same restore command "
-                                        "again once the connection works.");
+        error.message += QStringLiteral(
+            " Nothing else was changed. Run the same restore command "
+            "again once the connection works.");
         return reportError(error);
     }
-    printOut(QStringLiteral("restored %1 EEPROM blocks from %2\n").arg(image->blocks.size()).arg(*path));
+    printOut(
+        QStringLiteral("restored %1 EEPROM blocks from %2\n").arg(image->blocks.size()).arg(*path));
     return ExitOk;
 }
 
@@ -135,7 +142,9 @@ int runVerify(CliSession& session, CommandArgs& args) {
     if (!device) return reportError(device.error());
     const QStringList differences = differingBlocks(device->blocks, image->blocks);
     if (differences.isEmpty()) {
-        printOut(QStringLiteral("the device equals %1 (%2 blocks)\n").arg(*path).arg(image->blocks.size()));
+        printOut(QStringLiteral("the device equals %1 (%2 blocks)\n")
+                     .arg(*path)
+                     .arg(image->blocks.size()));
         return ExitOk;
     }
     printOut(QStringLiteral("the device differs from %1: device %2 blocks, image %3 blocks; "

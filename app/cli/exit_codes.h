@@ -15,13 +15,18 @@ enum ExitCode {
 
 inline int exitCodeFor(ErrorKind kind) {
     switch (kind) {
-    case ErrorKind::None: return ExitOk;
-    case ErrorKind::DeviceError:
-    case ErrorKind::NotUnderstood: return ExitDevice;
-    case ErrorKind::Communication:
-    case ErrorKind::Cancelled: return ExitCommunication;
-    case ErrorKind::InvalidData: return ExitInvalidData;
-    case ErrorKind::Usage: return ExitUsage;
+        case ErrorKind::None:
+            return ExitOk;
+        case ErrorKind::DeviceError:
+        case ErrorKind::NotUnderstood:
+            return ExitDevice;
+        case ErrorKind::Communication:
+        case ErrorKind::Cancelled:
+            return ExitCommunication;
+        case ErrorKind::InvalidData:
+            return ExitInvalidData;
+        case ErrorKind::Usage:
+            return ExitUsage;
     }
     return ExitCommunication;
 }

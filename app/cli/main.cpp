@@ -34,8 +34,9 @@ int main(int argc, char* argv[]) {
     if (!options) return reportError(options.error());
     const CommandGroup* group = findCommandGroup(options->command);
     if (!group) {
-        return reportError(Error::usage(
-            QStringLiteral("unknown command \"%1\"; see `cambench-cli --help`").arg(options->command)));
+        return reportError(
+            Error::usage(QStringLiteral("unknown command \"%1\"; see `cambench-cli --help`")
+                             .arg(options->command)));
     }
     CliSession session(*options);
     CommandArgs commandArgs(options->command, options->commandArgs);

@@ -17,7 +17,8 @@ using comm::JobContext;
 template <class T>
 int readTable(CliSession& session, CommandArgs& args, const QString& title,
               CliSession::Work<T> read, QByteArray (*toCsv)(const T&)) {
-    const Result<QString> path = args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
+    const Result<QString> path =
+        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<T> table = session.run<T>(title, std::move(read));
@@ -103,8 +104,8 @@ int runDeadTimes(CliSession& session, CommandArgs& args) {
         return readTable<DeadTimes>(session, args, QStringLiteral("deadtimes read"),
                                     readAllDeadTimes, deadTimesToCsv);
     }
-    return writeTable<DeadTimes>(session, args, QStringLiteral("deadtimes write"),
-                                 loadDeadTimesCsv, validateDeadTimes, writeAllDeadTimes);
+    return writeTable<DeadTimes>(session, args, QStringLiteral("deadtimes write"), loadDeadTimesCsv,
+                                 validateDeadTimes, writeAllDeadTimes);
 }
 
 int runNames(CliSession& session, CommandArgs& args) {

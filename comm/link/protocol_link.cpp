@@ -122,6 +122,7 @@ int ProtocolLink::timeoutFor(const CommandSpec* spec, const QByteArray& body,
 Result<Frame> ProtocolLink::exchange(const QString& label, char kind, const QByteArray& body,
                                      int timeoutMs, bool expectReply, const Judge& judge) {
     ++m_stats.requests;
+    m_lastAttempts = 0;
     if (cancelled()) return Error::cancelled();
     dropStaleInput();
 
@@ -138,6 +139,7 @@ Result<Frame> ProtocolLink::exchange(const QString& label, char kind, const QByt
     QString problem;
     for (int attempt = 1; attempt <= attempts; ++attempt) {
         if (cancelled()) return Error::cancelled();
+        m_lastAttempts = attempt;
         if (attempt > 1) {
             ++m_stats.retries;
             qCDebug(commLinkLog) << "retrying" << label << "attempt" << attempt << "after"

@@ -58,6 +58,13 @@ public:
     // returns the reply frame's body. For the terminal and `raw`.
     Result<QByteArray> raw(char kind, const QByteArray& body, int timeoutMs = 0);
 
+    // How many times the last call sent its request. Above 1 an earlier
+    // attempt may have reached the device and been executed although its
+    // reply was lost: in Standard framing (no block numbers) a repeated
+    // cursor step (?NN, ?USER01) or a repeated insert or EEPROM block then
+    // acts twice, and the caller has to re-synchronise (see CamConClient).
+    int lastAttempts() const { return m_lastAttempts; }
+
     // Counters for benchmarks and logs.
     struct Stats {
         qint64 bytesSent = 0;
@@ -103,6 +110,7 @@ private:
     QByteArray m_undecoded;  // received bytes of a frame not yet complete
     int m_nextBlock[64] = {};
     Stats m_stats;
+    int m_lastAttempts = 0;
 };
 
 }  // namespace cambench::comm

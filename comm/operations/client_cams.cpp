@@ -70,26 +70,23 @@ Status CamConClient::writeTrack(int program, const Track& track) {
     // target plus cams that stay: nothing the device could reject as overlap.
     for (const Cam& cam : current->cams) {
         if (track.cams.contains(cam)) continue;
-        const Result<Fields> reply =
-            m_link.call('!', "NDEL",
-                        Fields{{"program", qint64(program)},
-                               {"output", wireOutput(track.output)},
-                               {"on", qint64(cam.on)}});
+        const Result<Fields> reply = m_link.call('!', "NDEL",
+                                                 Fields{{"program", qint64(program)},
+                                                        {"output", wireOutput(track.output)},
+                                                        {"on", qint64(cam.on)}});
         if (!reply) {
-            return inContext(QStringLiteral("deleting the cam at %1 on %2 (!NDEL)")
-                                 .arg(cam.on)
-                                 .arg(where),
-                             reply.error());
+            return inContext(
+                QStringLiteral("deleting the cam at %1 on %2 (!NDEL)").arg(cam.on).arg(where),
+                reply.error());
         }
     }
     for (const Cam& cam : track.cams) {
         if (current->cams.contains(cam)) continue;
-        const Result<Fields> reply =
-            m_link.call('!', "NINS",
-                        Fields{{"program", qint64(program)},
-                               {"output", wireOutput(track.output)},
-                               {"on", qint64(cam.on)},
-                               {"off", qint64(cam.off)}});
+        const Result<Fields> reply = m_link.call('!', "NINS",
+                                                 Fields{{"program", qint64(program)},
+                                                        {"output", wireOutput(track.output)},
+                                                        {"on", qint64(cam.on)},
+                                                        {"off", qint64(cam.off)}});
         if (!reply) {
             return inContext(QStringLiteral("inserting the cam %1..%2 on %3 (!NINS)")
                                  .arg(cam.on)

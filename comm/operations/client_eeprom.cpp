@@ -24,8 +24,8 @@ QString hex4(int number) {
 }
 
 struct TransferFailure {
-    int index;      // position in the transfer, 0 = block 0000
-    int number;     // block number sent
+    int index;   // position in the transfer, 0 = block 0000
+    int number;  // block number sent
     Error error;
     // Standard framing has no block numbers: when the acknowledgement of a
     // block was lost, the retry sends the same block again and the device,
@@ -97,7 +97,8 @@ Result<EepromImage> CamConClient::backup(const ProgressFn& progress) {
         // Each block must pass the length rule (128 bytes for 0000, the
         // nibble rule after it) before the next one is worth reading.
         const Status blocks = checkImageBlocks(
-            number == 0 ? image.blocks : QList<EepromBlock>{image.blocks.first(), image.blocks.last()});
+            number == 0 ? image.blocks
+                        : QList<EepromBlock>{image.blocks.first(), image.blocks.last()});
         if (!blocks) {
             return Error::communication(
                 QStringLiteral("the device sent a malformed EEPROM block: %1; try again")
@@ -129,12 +130,14 @@ Status CamConClient::restore(const EepromImage& image, const ProgressFn& progres
     if (failure->index == 0) {
         state = QStringLiteral("The device may already be ERASED (block 0000 starts the erase).");
     } else if (failure->index < total - 1) {
-        state = QStringLiteral("The device is now ERASED: it holds only the blocks before %1 "
-                               "and does not run.")
+        state = QStringLiteral(
+                    "The device is now ERASED: it holds only the blocks before %1 "
+                    "and does not run.")
                     .arg(hex4(failure->number));
     } else {
-        state = QStringLiteral("The device holds every block but did not confirm that it "
-                               "started.");
+        state = QStringLiteral(
+            "The device holds every block but did not confirm that it "
+            "started.");
     }
     return inContext(
         QStringLiteral("restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same "

@@ -50,7 +50,8 @@ QList<bool> bitsOf(const QByteArray& table, int count) {
 Result<DeviceInfo> CamConClient::readInfo() {
     DeviceInfo info;
     const Result<Fields> eprom = m_link.call('?', "EPROM");
-    if (!eprom) return inContext(QStringLiteral("reading the device identity (?EPROM)"), eprom.error());
+    if (!eprom)
+        return inContext(QStringLiteral("reading the device identity (?EPROM)"), eprom.error());
     info.epromDate = text(*eprom, "text");
     for (const InfoQuery& query : kInfoQueries) {
         const Result<Fields> reply = m_link.call('?', query.command);

@@ -8,10 +8,12 @@ using namespace client;
 Result<DeadTimes> CamConClient::readDeadTimes(int outputs) {
     DeadTimes deadTimes;
     for (int output = 1; output <= outputs; ++output) {
-        const Result<Fields> reply = m_link.call('?', "TZK", Fields{{"output", wireOutput(output)}});
+        const Result<Fields> reply =
+            m_link.call('?', "TZK", Fields{{"output", wireOutput(output)}});
         if (!reply) {
-            return inContext(QStringLiteral("reading the dead time of output %1 (?TZK)").arg(output),
-                             reply.error());
+            return inContext(
+                QStringLiteral("reading the dead time of output %1 (?TZK)").arg(output),
+                reply.error());
         }
         deadTimes.insert(output, qint32(reply->num("value")));
     }

@@ -17,8 +17,8 @@ QString networkText(int area, int number) {
 }  // namespace
 
 Result<PlcNetwork> CamConClient::readPlcNetwork(int area, int number) {
-    const Result<Fields> reply = m_link.call(
-        '?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
+    const Result<Fields> reply =
+        m_link.call('?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
         return inContext(QStringLiteral("reading %1 (?GMXSPS)").arg(networkText(area, number)),
                          reply.error());
@@ -53,19 +53,19 @@ Status CamConClient::writePlcNetwork(const PlcNetwork& network) {
 }
 
 Result<qint32> CamConClient::readPlcActual(int area, int number) {
-    const Result<Fields> reply = m_link.call(
-        '?', "SPSIST", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
+    const Result<Fields> reply =
+        m_link.call('?', "SPSIST", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(
-            QStringLiteral("reading the actual value of %1 (?SPSIST)").arg(networkText(area, number)),
-            reply.error());
+        return inContext(QStringLiteral("reading the actual value of %1 (?SPSIST)")
+                             .arg(networkText(area, number)),
+                         reply.error());
     }
     return qint32(reply->num("value"));
 }
 
 Result<qint32> CamConClient::readPlcSetpoint(int area, int number) {
-    const Result<Fields> reply = m_link.call(
-        '?', "SPSSOLL", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
+    const Result<Fields> reply =
+        m_link.call('?', "SPSSOLL", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
         return inContext(
             QStringLiteral("reading the set value of %1 (?SPSSOLL)").arg(networkText(area, number)),

@@ -46,9 +46,13 @@ Result<QList<int>> CamConClient::scanBus(int first, int last, int timeoutMs,
             continue;
         }
         switch (reply.error().kind) {
-        case ErrorKind::Communication: break;  // nobody there
-        case ErrorKind::Cancelled: return reply.error();
-        default: found.append(device); break;  // it answered, if with an error
+            case ErrorKind::Communication:
+                break;  // nobody there
+            case ErrorKind::Cancelled:
+                return reply.error();
+            default:
+                found.append(device);
+                break;  // it answered, if with an error
         }
     }
     if (progress) progress(last - first + 1, last - first + 1);

@@ -81,9 +81,9 @@ Result<QVariant> CamConClient::readSetting(const QString& key) {
             if (key != QLatin1String(field.key)) continue;
             const Result<Fields> reply = m_link.call('?', page.command);
             if (!reply) {
-                return inContext(QStringLiteral("reading %1 (?%2)")
-                                     .arg(key, QLatin1String(page.command)),
-                                 reply.error());
+                return inContext(
+                    QStringLiteral("reading %1 (?%2)").arg(key, QLatin1String(page.command)),
+                    reply.error());
             }
             return isTextKey(key) ? QVariant(text(*reply, field.field))
                                   : QVariant(reply->num(field.field));
@@ -97,7 +97,8 @@ Status CamConClient::writeSettings(const SystemSettings& settings) {
     if (!current) return current.error();
     const QString text1 = QLatin1String(kEncoderText1Key);
     const QString text2 = QLatin1String(kEncoderText2Key);
-    const bool textsChange = changes(settings, *current, text1) || changes(settings, *current, text2);
+    const bool textsChange =
+        changes(settings, *current, text1) || changes(settings, *current, text2);
     const qint64 currentType = current->value(QLatin1String(kEncoderTypeKey), -1).toLongLong();
 
     for (const SettingPage& page : settingPages()) {
@@ -119,9 +120,9 @@ Status CamConClient::writeSettings(const SystemSettings& settings) {
         }
         const Result<Fields> reply = m_link.call('!', page.command, fields);
         if (!reply) {
-            return inContext(QStringLiteral("writing %1 (!%2)")
-                                 .arg(pageKeys(page), QLatin1String(page.command)),
-                             reply.error());
+            return inContext(
+                QStringLiteral("writing %1 (!%2)").arg(pageKeys(page), QLatin1String(page.command)),
+                reply.error());
         }
     }
     return success();

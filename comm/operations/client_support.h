@@ -13,14 +13,20 @@ namespace cambench::comm::client {
 
 // The only place where the 1-based output numbers of the model meet the
 // 0-based numbers of the ASCII protocol.
-inline qint64 wireOutput(int output) { return output - 1; }
-inline int modelOutput(qint64 wireNumber) { return int(wireNumber) + 1; }
+inline qint64 wireOutput(int output) {
+    return output - 1;
+}
+inline int modelOutput(qint64 wireNumber) {
+    return int(wireNumber) + 1;
+}
 
 // Device texts are single-byte characters padded with NUL.
 inline QString text(const Fields& fields, const char* name) {
     return QString::fromLatin1(fields.bytes(name));
 }
-inline QByteArray wireText(const QString& text) { return text.toLatin1(); }
+inline QByteArray wireText(const QString& text) {
+    return text.toLatin1();
+}
 
 // Both points of an empty track or of a search past the end (notes 3).
 inline bool isNoCamPoint(qint64 point) {

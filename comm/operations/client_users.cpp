@@ -41,7 +41,8 @@ Result<QList<User>> CamConClient::readUsers() {
     QList<User> users;
     for (int i = 0; i <= kMaxUsers; ++i) {
         // ?USER00 asks for the first entry, ?USER01 for the next one.
-        const Result<Fields> reply = m_link.call('?', "USER", Fields{{"index", qint64(i == 0 ? 0 : 1)}});
+        const Result<Fields> reply =
+            m_link.call('?', "USER", Fields{{"index", qint64(i == 0 ? 0 : 1)}});
         if (!reply) {
             return inContext(QStringLiteral("reading user entry %1 (?USER)").arg(i + 1),
                              reply.error());
@@ -64,7 +65,8 @@ Status CamConClient::writeUser(const QString& oldNumber, const User& user) {
     fields.setBytes("access", accessBytes(user));
     const Result<Fields> reply = m_link.call('!', "USER", fields);
     if (!reply) {
-        return inContext(QStringLiteral("writing user \"%1\" (!USER)").arg(user.name), reply.error());
+        return inContext(QStringLiteral("writing user \"%1\" (!USER)").arg(user.name),
+                         reply.error());
     }
     return success();
 }

@@ -3,6 +3,8 @@
 namespace cambench::comm {
 
 const QList<SettingPage>& settingPages() {
+    // One line per setting or page.
+    // clang-format off
     static const QList<SettingPage> pages{
         // 5.3.1 Encoder
         {"GEBER", {{"encoderType", "value"}}},
@@ -78,6 +80,7 @@ const QList<SettingPage>& settingPages() {
         {"GSPLL", {{"specialEncoder.pll.pulsesPerInputPulse", "pulsesPerInputPulse"}, {"specialEncoder.pll.pulsesPerTurn", "pulsesPerTurn"}, {"specialEncoder.pll.errorWindow", "errorWindow"}, {"specialEncoder.pll.pulseInput", "pulseInput"}, {"specialEncoder.pll.clearInput", "clearInput"}, {"specialEncoder.pll.syncOutput", "syncOutput"}}, 4},
         {"GSTIM", {{"specialEncoder.timer.stepMs", "stepTime"}, {"specialEncoder.timer.resolution", "resolution"}, {"specialEncoder.timer.holdInput", "holdInput"}, {"specialEncoder.timer.clearInput", "clearInput"}}, 5},
     };
+    // clang-format on
     return pages;
 }
 

@@ -74,8 +74,9 @@ private Q_SLOTS:
 
 void TestCamConClient::initTestCase() {
     // The scan's expected timeouts would flood the output.
-    QLoggingCategory::setFilterRules(QStringLiteral("cambench.*.debug=false\n"
-                                                    "cambench.comm.link.warning=false"));
+    QLoggingCategory::setFilterRules(
+        QStringLiteral("cambench.*.debug=false\n"
+                       "cambench.comm.link.warning=false"));
 }
 
 void TestCamConClient::readInfoReportsTheDeviceProfile() {

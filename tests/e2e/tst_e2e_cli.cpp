@@ -71,7 +71,9 @@ void TestE2eCli::camsEditRoundTrip() {
     // Tracks the file lists equal it; the others are as before.
     QByteArray expected = "output,cam,on,off\n1,1,100,200\n";
     for (const QByteArray& line : csv.split('\n')) {
-        if (line.isEmpty() || line.startsWith("output") || line.startsWith("1,") || line.startsWith("20,")) continue;
+        if (line.isEmpty() || line.startsWith("output") || line.startsWith("1,") ||
+            line.startsWith("20,"))
+            continue;
         expected += line + '\n';
     }
     QList<QByteArray> expectedLines = expected.split('\n');
@@ -123,7 +125,8 @@ void TestE2eCli::namesRoundTrip() {
     SimSession session;
     START_SIM(session);
     const QString file = session.path(QStringLiteral("names.csv"));
-    QVERIFY(writeBytes(file, "kind,number,name\noutput,4,Pusher\nprogram,3,\"Format \"\"C\"\"\"\n"));
+    QVERIFY(
+        writeBytes(file, "kind,number,name\noutput,4,Pusher\nprogram,3,\"Format \"\"C\"\"\"\n"));
     VERIFY_EXIT(session.cli({"names", "write", file}), 0);
     const QString out = session.path(QStringLiteral("out.csv"));
     VERIFY_EXIT(session.cli({"names", "read", "-o", out}), 0);
@@ -149,7 +152,10 @@ void TestE2eCli::settingsChangeOneValue() {
     const CliRun read = session.cli({"settings", "read"});
     VERIFY_EXIT(read, 0);
     const QJsonObject again = QJsonDocument::fromJson(read.out.toUtf8()).object();
-    QCOMPARE(again.value(QStringLiteral("settings")).toObject().value(QStringLiteral("cableLength")).toInt(),
+    QCOMPARE(again.value(QStringLiteral("settings"))
+                 .toObject()
+                 .value(QStringLiteral("cableLength"))
+                 .toInt(),
              changed);
 }
 
@@ -196,8 +202,10 @@ void TestE2eCli::plcRoundTrip() {
     VERIFY_EXIT(session.cli({"plc", "write", file}), 0);
     const CliRun read = session.cli({"plc", "read"});
     VERIFY_EXIT(read, 0);
-    const QJsonArray again =
-        QJsonDocument::fromJson(read.out.toUtf8()).object().value(QStringLiteral("networks")).toArray();
+    const QJsonArray again = QJsonDocument::fromJson(read.out.toUtf8())
+                                 .object()
+                                 .value(QStringLiteral("networks"))
+                                 .toArray();
     // The file lists networks in device order; compare regardless of order.
     const auto asSet = [](const QJsonArray& array) {
         QSet<QByteArray> set;
@@ -235,9 +243,9 @@ void TestE2eCli::scanNeedsMultiuser() {
 }
 
 void TestE2eCli::usageErrorsExitTwoWithUsage() {
-    for (const QStringList& args : {QStringList{"frobnicate"}, QStringList{"cams", "read"},
-                                    QStringList{"--baud", "fast", "info"}, QStringList{},
-                                    QStringList{"info", "--bogus"}}) {
+    for (const QStringList& args :
+         {QStringList{"frobnicate"}, QStringList{"cams", "read"},
+          QStringList{"--baud", "fast", "info"}, QStringList{}, QStringList{"info", "--bogus"}}) {
         const CliRun run = runCli(args, 30000);
         VERIFY_EXIT(run, 2);
         QVERIFY2(run.err.startsWith(QLatin1String("cambench-cli: ")), qPrintable(run.err));

@@ -49,7 +49,8 @@ void TestE2eEeprom::backupChangeRestoreVerify() {
     const CliRun restore = session.cli({"restore", image});
     VERIFY_EXIT(restore, 0);
     // The safety backup lies next to the image and holds the changed device.
-    const QStringList safety = QDir(session.path(QString())).entryList({QStringLiteral("image.json.safety-*.json")});
+    const QStringList safety =
+        QDir(session.path(QString())).entryList({QStringLiteral("image.json.safety-*.json")});
     QCOMPARE(safety.size(), 1);
     QVERIFY(restore.err.contains(safety.first()));
     VERIFY_EXIT(session.cli({"verify", image}), 0);

@@ -118,6 +118,38 @@ void CamDocument::markOutputSettingsWritten() {
     notifyChangedCount();
 }
 
+void CamDocument::markTrackWritten(int program, int output) {
+    CamProgram& device = m_device[program];
+    device.number = program;
+    const Track edited = track(program, output);
+    if (edited.cams.isEmpty()) {
+        device.tracks.remove(output);
+    } else {
+        device.tracks.insert(output, edited);
+    }
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+void CamDocument::markProgramNameWritten(int program) {
+    m_device[program].number = program;
+    m_device[program].name = programName(program);
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+void CamDocument::markOutputNameWritten(int output) {
+    m_deviceOutputNames.insert(output, outputName(output));
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+void CamDocument::markDeadTimeWritten(int output) {
+    m_deviceDeadTimes.insert(output, deadTime(output));
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
 ChangeState CamDocument::programState(int program) const {
     return compare(m_device.contains(program), this->program(program) == m_device.value(program));
 }

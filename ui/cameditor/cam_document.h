@@ -70,6 +70,12 @@ public:
                      const DeadTimes& deadTimes);
     void markWritten(int program);
     void markOutputSettingsWritten();
+    // After a partial write: only these items now equal the device. They keep
+    // the undo stack. For a program never read, the device copy starts empty.
+    void markTrackWritten(int program, int output);
+    void markProgramNameWritten(int program);
+    void markOutputNameWritten(int output);
+    void markDeadTimeWritten(int output);
     bool hasDeviceCopy(int program) const { return m_device.contains(program); }
     QList<int> editedPrograms() const { return m_edited.keys(); }
 

@@ -27,6 +27,7 @@ private Q_SLOTS:
     void editsOfDifferentCellsStaySeparate();
     void compareListsChangedTrackAndMarkWrittenClearsIt();
     void neverReadProgramIsPcOnly();
+    void markTrackWrittenKeepsOtherEditsAndUndo();
     void loadingFromDeviceClearsUndo();
     void copyProgramIsOneUndoStep();
     void copyTrackReplacesTargetOutput();
@@ -129,6 +130,22 @@ void CamDocumentTest::neverReadProgramIsPcOnly() {
     QCOMPARE(differences.at(0).program, 2);
     QVERIFY(!differences.at(0).deviceKnown);
     QVERIFY(differences.at(0).deviceTrack.cams.isEmpty());
+}
+
+void CamDocumentTest::markTrackWrittenKeepsOtherEditsAndUndo() {
+    CamDocument document;
+    test::loadDemo(document);
+    document.setCam(0, 1, 0, {25, 60});
+    document.setCam(0, 3, 0, {300, 20});
+    document.setProgramName(0, QStringLiteral("New"));
+    QCOMPARE(document.changedCount(), 3);
+    document.markTrackWritten(0, 3);
+    QCOMPARE(document.trackState(0, 3), ChangeState::Unchanged);
+    QCOMPARE(document.trackState(0, 1), ChangeState::Edited);
+    QCOMPARE(document.changedCount(), 2);
+    document.markProgramNameWritten(0);
+    QCOMPARE(document.changedCount(), 1);
+    QCOMPARE(document.undoStack()->count(), 3);
 }
 
 void CamDocumentTest::loadingFromDeviceClearsUndo() {

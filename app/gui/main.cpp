@@ -1,0 +1,64 @@
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/screenshot_tour.h"
+#include "ui/shell.h"
+#include "ui/theme.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSettings>
+
+#include <cstdio>
+
+int main(int argc, char* argv[]) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("CamBench"));
+    QApplication::setApplicationName(QStringLiteral("CamBench"));
+    QApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Programming and monitoring of CamCon cam controllers."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption lang(QStringLiteral("lang"), QStringLiteral("User interface language: de or en."),
+                                  QStringLiteral("language"));
+    const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
+    const QCommandLineOption port(QStringLiteral("port"),
+                                  QStringLiteral("Connect to this port at start (serial port, tcp://host:port, sim)."),
+                                  QStringLiteral("port"));
+    const QCommandLineOption shots(QStringLiteral("screenshots"),
+                                   QStringLiteral("Visit every screen on the simulated device, save one PNG "
+                                                  "each into DIR, and exit."),
+                                   QStringLiteral("DIR"));
+    parser.addOptions({lang, dark, port, shots});
+    parser.process(app);
+
+    const QString language = parser.isSet(lang) ? parser.value(lang) : cambench::systemLanguage();
+    if (language != QLatin1String("de") && language != QLatin1String("en")) {
+        std::fprintf(stderr, "cambench: unknown language '%s'; use de or en.\n", qPrintable(language));
+        return 2;
+    }
+    cambench::setLanguage(language);
+    cambench::applyTheme(parser.isSet(dark));
+
+    // Without a configured device the simulated one, with its demo program.
+    QString startPort = parser.value(port);
+    if (parser.isSet(shots)) {
+        startPort = QStringLiteral("sim");
+    } else if (startPort.isEmpty()) {
+        startPort = QSettings().value(QStringLiteral("connection/port"), QStringLiteral("sim")).toString();
+    }
+    cambench::Shell shell;
+    shell.start(startPort);
+
+    if (parser.isSet(shots)) {
+        auto* tour = new cambench::ScreenshotTour(&shell, parser.value(shots), &shell);
+        QObject::connect(tour, &cambench::ScreenshotTour::finished, &app, [tour](bool ok) {
+            for (const QString& failure : tour->failures()) std::fprintf(stderr, "cambench: %s\n", qPrintable(failure));
+            QCoreApplication::exit(ok ? 0 : 1);
+        });
+        QObject::connect(shell.window(), &cambench::MainWindow::loaded, tour, [tour] { tour->start(); },
+                         Qt::SingleShotConnection);
+    }
+    return app.exec();
+}

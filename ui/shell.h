@@ -1,0 +1,40 @@
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+
+namespace cambench {
+
+class DeviceSession;
+class MainWindow;
+class Workspace;
+
+// The application around the window: one session and one workspace for the
+// whole run, and a main window that is rebuilt on a language switch (its
+// texts are set when it is built) without losing the line or any edit.
+class Shell : public QObject {
+    Q_OBJECT
+public:
+    explicit Shell(QObject* parent = nullptr);
+    ~Shell() override;
+
+    DeviceSession* session() const { return m_session; }
+    Workspace* workspace() const { return m_workspace; }
+    MainWindow* window() const { return m_window; }
+
+    // Shows the window; with a port, connects and reads identity and program 0.
+    void start(const QString& port);
+    void switchLanguage(const QString& language);
+
+Q_SIGNALS:
+    void windowRebuilt(cambench::MainWindow* window);
+
+private:
+    MainWindow* createWindow();
+
+    DeviceSession* m_session;
+    Workspace* m_workspace;
+    QPointer<MainWindow> m_window;
+};
+
+}  // namespace cambench
