@@ -59,6 +59,8 @@ QString SettingsPage::groupTitle(const QString& group) {
         {QStringLiteral("display"), QT_TR_NOOP("Display")},
         {QStringLiteral("interface"), QT_TR_NOOP("Interface")},
         {QStringLiteral("identity"), QT_TR_NOOP("Identity")},
+        {QStringLiteral("expansion"), QT_TR_NOOP("Expansion modules")},
+        {QStringLiteral("language"), QT_TR_NOOP("Language")},
     };
     const auto it = titles.constFind(group);
     return it == titles.cend() ? group : tr(it.value());

@@ -1,6 +1,8 @@
 #include "camcon_client.h"
 #include "client_support.h"
 
+#include "model/cam_validation.h"
+
 namespace cambench::comm {
 
 using namespace client;
@@ -39,6 +41,15 @@ Result<Track> CamConClient::readTrack(int program, int output) {
         }
         reply = m_link.call('?', "NN");
         if (!reply) return inContext(QStringLiteral("reading %1 (?NN)").arg(where), reply.error());
+        if (m_link.lastAttempts() > 1) {
+            // A lost reply may hide an executed ?NN: the cursor could have
+            // stepped twice. ?NS from just past the last cam read is
+            // idempotent and lands on the right cam either way.
+            reply = m_link.call('?', "NS", Fields{{"on", qint64(track.cams.last().on) + 1}});
+            if (!reply) {
+                return inContext(QStringLiteral("reading %1 (?NS)").arg(where), reply.error());
+            }
+        }
     }
     return track;
 }
@@ -66,6 +77,10 @@ Status CamConClient::writeTrack(int program, const Track& track) {
     const Result<Track> current = readTrack(program, track.output);
     if (!current) return current.error();
     const QString where = trackText(program, track.output);
+    const auto repeatedAfterLostReply = [this](const Error& error) {
+        return error.kind == ErrorKind::DeviceError && m_link.lastAttempts() > 1;
+    };
+    bool needsReadBack = false;
     // Deleting first means every intermediate track is a subset of the
     // target plus cams that stay: nothing the device could reject as overlap.
     for (const Cam& cam : current->cams) {
@@ -74,11 +89,12 @@ Status CamConClient::writeTrack(int program, const Track& track) {
                                                  Fields{{"program", qint64(program)},
                                                         {"output", wireOutput(track.output)},
                                                         {"on", qint64(cam.on)}});
-        if (!reply) {
+        if (!reply && !repeatedAfterLostReply(reply.error())) {
             return inContext(
                 QStringLiteral("deleting the cam at %1 on %2 (!NDEL)").arg(cam.on).arg(where),
                 reply.error());
         }
+        needsReadBack |= m_link.lastAttempts() > 1;
     }
     for (const Cam& cam : track.cams) {
         if (current->cams.contains(cam)) continue;
@@ -87,13 +103,29 @@ Status CamConClient::writeTrack(int program, const Track& track) {
                                                         {"output", wireOutput(track.output)},
                                                         {"on", qint64(cam.on)},
                                                         {"off", qint64(cam.off)}});
-        if (!reply) {
+        if (!reply && !repeatedAfterLostReply(reply.error())) {
             return inContext(QStringLiteral("inserting the cam %1..%2 on %3 (!NINS)")
                                  .arg(cam.on)
                                  .arg(cam.off)
                                  .arg(where),
                              reply.error());
         }
+        needsReadBack |= m_link.lastAttempts() > 1;
+    }
+    if (!needsReadBack) return success();
+    // An edit was sent more than once: make sure the device holds exactly
+    // the target track rather than trusting the replies.
+    const Result<Track> written = readTrack(program, track.output);
+    if (!written) return written.error();
+    Track expected = track;
+    normaliseTrack(expected);
+    if (written->cams != expected.cams) {
+        return Error::communication(
+            QStringLiteral("writing %1: after lost replies the device holds %2 cams instead of "
+                           "the %3 written; write the track again")
+                .arg(where)
+                .arg(written->cams.size())
+                .arg(track.cams.size()));
     }
     return success();
 }
