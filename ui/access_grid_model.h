@@ -6,11 +6,11 @@ namespace cambench {
 
 class Workspace;
 
-// The per-output access bits of one user as a grid of 16 outputs per row.
+// The per-output access bits of one user as a grid of 8 outputs per row.
 class AccessGridModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    static constexpr int kColumns = 16;
+    static constexpr int kColumns = 8;
 
     explicit AccessGridModel(Workspace* workspace, QObject* parent = nullptr);
 

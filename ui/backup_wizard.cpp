@@ -45,7 +45,6 @@ BackupWizard::BackupWizard(DeviceSession* session, Workspace* workspace, QWidget
     setOption(QWizard::NoBackButtonOnLastPage);
     setPage(ChoosePage, createChoosePage());
     setPage(CheckPage, createCheckPage());
-    m_progress->setTitle(tr("Working"));
     m_progress->setCommitPage(false);
     setPage(RunPage, m_progress);
     connect(&m_session->worker(), &comm::CommWorker::jobProgress, this,
@@ -184,6 +183,7 @@ void BackupWizard::initializePage(int id) {
         }
     }
     if (id == RunPage) {
+        m_progress->setTitle(mode() == Mode::Backup ? tr("Backup") : tr("Restore"));
         if (mode() == Mode::Backup) {
             runBackup();
         } else {

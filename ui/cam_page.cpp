@@ -65,16 +65,9 @@ void CamPage::readProgram(int program, std::function<void(const Status&)> done) 
     Q_EMIT statusMessage(tr("Reading program %1…").arg(program));
     m_session->run<CamProgram>(
         this, tr("Read program %1").arg(program),
-        [program, outputs](comm::CamConClient& client, comm::JobContext& job) -> Result<CamProgram> {
-            auto read = client.readProgram(program, outputs,
-                                           [&job](qint64 done, qint64 total) { job.progress(done, total); });
-            if (!read) return read.error();
-            CamProgram result = read.value();
-            auto name = client.readProgramName(program);
-            // Older firmware has no program names (:Z); the cams still count.
-            if (name) result.name = name.value();
-            else if (name.error().kind != ErrorKind::NotUnderstood) return name.error();
-            return result;
+        [program, outputs](comm::CamConClient& client, comm::JobContext& job) {
+            return client.readProgram(program, outputs,
+                                      [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this, program, done](Result<CamProgram> result) {
             if (!result) {

@@ -228,7 +228,7 @@ void MainWindow::updateTitle() {
                     ? tr("CamCon %1 (device %2)").arg(m_workspace->info().epromDate).arg(m_workspace->info().deviceNumber)
                     : tr("offline project");
     }
-    QString title = tr("CamBench – %1").arg(where);
+    QString title = tr("CamBench – %1").arg(where) + QStringLiteral("[*]");
     if (changes > 0) title += QLatin1Char(' ') + tr("[%n change(s) not written]", nullptr, changes);
     setWindowTitle(title);
     setWindowModified(changes > 0);

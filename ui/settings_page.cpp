@@ -79,7 +79,7 @@ SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget
     buttons->addWidget(write);
     buttons->addStretch();
 
-    m_groups->setMaximumWidth(260);
+    m_groups->setMaximumWidth(220);
     auto* body = new QHBoxLayout;
     body->addWidget(m_groups);
     body->addWidget(m_pages, 1);

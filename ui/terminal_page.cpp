@@ -107,7 +107,10 @@ void TerminalPage::send(const QString& command) {
                 return;
             }
             // User numbers are secrets here too, not only in the log.
-            const QByteArray shown = comm::maskSecrets(':' + reply.value(), false);
+            QByteArray shown = comm::maskSecrets(':' + reply.value(), false);
+            for (char& c : shown) {
+                if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E) c = '.';
+            }
             m_replies->appendPlainText(QStringLiteral("< %1").arg(QString::fromLatin1(shown)));
         });
 }

@@ -6,6 +6,7 @@
 #include <QValueAxis>
 
 #include <algorithm>
+#include <cmath>
 
 namespace cambench {
 
@@ -16,7 +17,9 @@ void fitAxis(QValueAxis* axis, const QList<QPointF>& points) {
     if (points.isEmpty()) return;
     const auto [lo, hi] = std::minmax_element(points.cbegin(), points.cend(),
                                               [](const QPointF& a, const QPointF& b) { return a.y() < b.y(); });
-    const double margin = std::max(1.0, (hi->y() - lo->y()) * 0.05);
+    // A flat line (constant speed) still gets a readable, non-degenerate scale.
+    const double margin = std::max({1.0, (hi->y() - lo->y()) * 0.05,
+                                    std::max(std::abs(hi->y()), std::abs(lo->y())) * 0.05});
     axis->setRange(lo->y() - margin, hi->y() + margin);
 }
 }  // namespace

@@ -52,11 +52,12 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::SingleSelection);
     m_view->verticalHeader()->hide();
+    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::NameColumn, QHeaderView::ResizeToContents);
+    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::NumberColumn, QHeaderView::ResizeToContents);
     m_view->horizontalHeader()->setSectionResizeMode(UsersModel::RightsColumn, QHeaderView::Stretch);
 
     m_name->setMaxLength(kNameLength);
     m_number->setMaxLength(kNumberLength);
-    m_number->setEchoMode(QLineEdit::Password);
     auto* details = new QGroupBox(tr("User"));
     auto* form = new QFormLayout(details);
     form->addRow(tr("Name:"), m_name);
@@ -130,7 +131,7 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
 void UsersPage::setNumbersShown(bool shown) {
     m_show->setChecked(shown);
     m_model->revealNumbers(shown);
-    m_number->setEchoMode(shown ? QLineEdit::Normal : QLineEdit::Password);
+    showUser();
 }
 
 int UsersPage::currentUser() const {
@@ -147,7 +148,12 @@ void UsersPage::showUser() {
     m_updating = true;
     const User user = index >= 0 ? m_workspace->users().at(index).user : User();
     m_name->setText(user.name);
-    m_number->setText(user.number);
+    // Hidden numbers are not even in the field (a password field would
+    // still tell their length); they can be edited once shown.
+    const bool shown = m_model->numbersRevealed();
+    m_number->setReadOnly(!shown);
+    m_number->setText(shown ? user.number : QString());
+    m_number->setPlaceholderText(shown ? QString() : tr("hidden – check \"Show numbers\" to see or change it"));
     m_allOutputs->setChecked(user.allOutputs);
     for (const auto& [bit, box] : m_rights) box->setChecked(user.rights & bit);
     m_updating = false;
@@ -158,7 +164,7 @@ void UsersPage::editUser() {
     if (m_updating || index < 0) return;
     User user = m_workspace->users().at(index).user;
     user.name = m_name->text();
-    user.number = m_number->text();
+    if (m_model->numbersRevealed()) user.number = m_number->text();
     user.allOutputs = m_allOutputs->isChecked();
     user.rights = 0;
     for (const auto& [bit, box] : m_rights) {

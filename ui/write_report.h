@@ -2,6 +2,7 @@
 
 #include "model/result.h"
 
+#include <QMetaType>
 #include <QString>
 #include <QStringList>
 
@@ -38,3 +39,5 @@ struct WriteReport {
 };
 
 }  // namespace cambench
+
+Q_DECLARE_METATYPE(cambench::WriteReport)

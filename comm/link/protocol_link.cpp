@@ -123,6 +123,7 @@ Result<Frame> ProtocolLink::exchange(const QString& label, char kind, const QByt
                                      int timeoutMs, bool expectReply, const Judge& judge) {
     ++m_stats.requests;
     m_lastAttempts = 0;
+    m_lastHeardDevice = false;
     if (cancelled()) return Error::cancelled();
     dropStaleInput();
 
@@ -179,6 +180,7 @@ Result<std::optional<Frame>> ProtocolLink::awaitReply(
             return chunk.error();
         }
         if (!chunk->isEmpty()) {
+            m_lastHeardDevice = true;
             m_stats.bytesReceived += chunk->size();
             m_undecoded += *chunk;
             const QList<DecodeEvent> events = m_decoder->feed(*chunk);

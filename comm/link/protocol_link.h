@@ -64,6 +64,10 @@ public:
     // cursor step (?NN, ?USER01) or a repeated insert or EEPROM block then
     // acts twice, and the caller has to re-synchronise (see CamConClient).
     int lastAttempts() const { return m_lastAttempts; }
+    // Whether bytes came back during the last call, valid or not: with
+    // stale input dropped before each request, the device then received
+    // the request and answered, so a failed call may still have acted.
+    bool lastCallHeardDevice() const { return m_lastHeardDevice; }
 
     // Counters for benchmarks and logs.
     struct Stats {
@@ -111,6 +115,7 @@ private:
     int m_nextBlock[64] = {};
     Stats m_stats;
     int m_lastAttempts = 0;
+    bool m_lastHeardDevice = false;
 };
 
 }  // namespace cambench::comm

@@ -27,18 +27,55 @@ struct TransferFailure {
     int index;   // position in the transfer, 0 = block 0000
     int number;  // block number sent
     Error error;
-    // Standard framing has no block numbers: when the acknowledgement of a
-    // block was lost, the retry sends the same block again and the device,
-    // which stored it already, answers "wrong order" (-43) and ends the
-    // transfer. Starting over from block 0000 is then the only way on.
+    // The device answered "wrong order" (-43) because a block reached it
+    // twice or one assumed stored had not: it ended the transfer, and
+    // starting over from block 0000 (which erases first) is the way on.
     bool duplicate;
 };
+
+// Sends one !EE block. In Multiuser framing the link's retries are safe: a
+// repeated block number makes the device repeat its answer. Standard framing
+// has no block numbers, and a block that reached the device must not be sent
+// again (it would answer -43 and end the transfer). So there a block is sent
+// without the link's retries: a reply that arrived damaged still proves the
+// device took the block (it answers after storing it), and only a block that
+// drew no answer at all is sent again.
+struct BlockSend {
+    bool assumedAccepted = false;  // a damaged answer was taken as "stored"
+    bool repeated = false;         // the block went out more than once
+};
+
+Result<Fields> sendBlock(ProtocolLink& link, const Fields& fields, int timeoutMs,
+                         BlockSend& send) {
+    send = {};
+    if (link.settings().framing == Framing::Multiuser) {
+        Result<Fields> reply = link.call('!', "EE", fields, timeoutMs);
+        send.repeated = link.lastAttempts() > 1;
+        return reply;
+    }
+    const int retries = link.settings().retries;
+    link.setRetries(0);
+    Result<Fields> reply = link.call('!', "EE", fields, timeoutMs);
+    for (int attempt = 0; !reply && attempt < retries; ++attempt) {
+        if (reply.error().kind != ErrorKind::Communication) break;
+        if (link.lastCallHeardDevice()) {
+            send.assumedAccepted = true;
+            reply = Fields{};
+            break;
+        }
+        send.repeated = true;
+        reply = link.call('!', "EE", fields, timeoutMs);
+    }
+    link.setRetries(retries);
+    return reply;
+}
 
 // One pass: !EE0000 (erases), every block in ascending order, then the
 // empty block that starts the device.
 std::optional<TransferFailure> transfer(ProtocolLink& link, const EepromImage& image,
                                         const ProgressFn& progress) {
     const int total = int(image.blocks.size()) + 1;
+    bool previousAssumed = false;
     for (int i = 0; i < total; ++i) {
         if (progress) progress(i, total);
         const bool endBlock = i == total - 1;
@@ -48,14 +85,20 @@ std::optional<TransferFailure> transfer(ProtocolLink& link, const EepromImage& i
         // Block 0000 erases the EEPROM and the end block starts the device:
         // both may take far longer than an ordinary reply.
         const bool slow = i == 0 || endBlock;
-        const int retriesBefore = link.stats().retries;
+        BlockSend send;
         const Result<Fields> reply =
-            link.call('!', "EE", fields, slow ? link.settings().longTimeoutMs : 0);
-        if (reply) continue;
-        const bool duplicate = i > 0 && link.stats().retries != retriesBefore &&
-                               reply.error().kind == ErrorKind::DeviceError &&
-                               reply.error().deviceCode == kWrongBlockOrder;
-        return TransferFailure{i, number, reply.error(), duplicate};
+            sendBlock(link, fields, slow ? link.settings().longTimeoutMs : 0, send);
+        if (reply) {
+            previousAssumed = send.assumedAccepted;
+            continue;
+        }
+        // -43 after a repeated block (the first copy was stored) or after a
+        // block assumed stored that was not: the device ended the transfer,
+        // and only a new pass from block 0000 goes on.
+        const bool orderLost = i > 0 && reply.error().kind == ErrorKind::DeviceError &&
+                               reply.error().deviceCode == kWrongBlockOrder &&
+                               (send.repeated || previousAssumed);
+        return TransferFailure{i, number, reply.error(), orderLost};
     }
     return std::nullopt;
 }

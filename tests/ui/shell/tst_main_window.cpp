@@ -1,0 +1,237 @@
+// The shell against the in-process simulator through the real CommWorker:
+// read, edit, write, compare, backup/restore, a failing line.
+#include "shell_fixture.h"
+
+#include "model/eeprom_image_file.h"
+#include "ui/backup_wizard.h"
+#include "ui/language.h"
+#include "ui/cam_page.h"
+#include "ui/compare_dialog.h"
+#include "ui/dead_times_model.h"
+#include "ui/dead_times_page.h"
+#include "ui/device_session.h"
+#include "ui/progress_page.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace cambench;
+using namespace cambench::test;
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    // As the application does at start: English catalogue (plural forms).
+    void initTestCase() { QVERIFY(setLanguage(QStringLiteral("en"))); }
+    void startReadsIdentityAndProgramZero();
+    void editedCamWrittenAndReadBackEqualsEdit();
+    void compareWritesOnlySelectedItems();
+    void deadTimeEditIsWrittenInTenthsOfMs();
+    void backupAndRestoreThroughWizard();
+    void restoreRefusesDamagedImage();
+    void failedReadOnDeadLineKeepsEditsAndSaysWhy();
+    void closingWithUnwrittenChangesCountsThem();
+};
+
+void MainWindowTest::startReadsIdentityAndProgramZero() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(shell->workspace()->infoFromDevice());
+    QCOMPARE(shell->workspace()->info().epromDate, QStringLiteral("11.10.1994"));
+    QVERIFY(shell->workspace()->cams()->hasDeviceCopy(0));
+    QVERIFY(!shell->workspace()->cams()->program(0).tracks.isEmpty());
+    QCOMPARE(shell->workspace()->changedCount(), 0);
+}
+
+void MainWindowTest::editedCamWrittenAndReadBackEqualsEdit() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    CamDocument* cams = shell->workspace()->cams();
+    const Track before = cams->track(0, 1);
+    QVERIFY(!before.cams.isEmpty());
+    Cam edited = before.cams.first();
+    edited.off += 7;
+    cams->setCam(0, 1, 0, edited);
+    QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
+
+    CamPage* page = shell->window()->camPage();
+    std::optional<WriteReport> report;
+    page->writeProgram(0, [&](const WriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(report->complete(), qPrintable(report->details()));
+    QCOMPARE(report->written, 1);
+    QCOMPARE(report->unchanged, shell->workspace()->info().outputs - 1);
+    QCOMPARE(cams->trackState(0, 1), ChangeState::Unchanged);
+
+    // Make the PC copy differ, then read: the device must hold the edit.
+    cams->setCam(0, 1, 0, before.cams.first());
+    std::optional<Status> read;
+    page->readProgram(0, [&](const Status& s) { read = s; });
+    QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
+    QVERIFY(read->ok());
+    QCOMPARE(cams->track(0, 1).cams.first(), edited);
+    QCOMPARE(cams->changedCount(), 0);
+}
+
+void MainWindowTest::compareWritesOnlySelectedItems() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(waitForSections(*shell));
+    CamDocument* cams = shell->workspace()->cams();
+    cams->setDeadTime(2, cams->deadTime(2) + 15);
+    Cam cam = cams->track(0, 1).cams.first();
+    cam.on += 1;
+    cams->setCam(0, 1, 0, cam);
+
+    CompareDialog* compare = shell->window()->openCompare();
+    QCOMPARE(compare->differenceCount(), 2);
+    compare->checkOnly({QStringLiteral("tzk:2")});
+    QSignalSpy finished(compare, &CompareDialog::writeFinished);
+    compare->writeChecked();
+    QVERIFY(finished.wait(kDeviceTimeoutMs));
+    const auto report = finished.first().first().value<WriteReport>();
+    QCOMPARE(report.written, 1);
+    QCOMPARE(report.failed, 0);
+    QVERIFY(compare->reportText().contains(QStringLiteral("1 written")));
+    // The cam edit was not selected and is still a difference.
+    QCOMPARE(compare->differenceCount(), 1);
+    QCOMPARE(shell->workspace()->deviceDeadTime(2), cams->deadTime(2));
+    QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
+    compare->close();
+}
+
+void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(waitForSections(*shell));
+    DeadTimesPage* page = shell->window()->deadTimesPage();
+    DeadTimesModel* model = page->model();
+    const QModelIndex cell = model->index(0, DeadTimesModel::DeadTimeColumn);
+    QVERIFY(model->setData(cell, 12.3));
+    QCOMPARE(shell->workspace()->cams()->deadTime(1), 123);
+    QVERIFY(model->data(cell).toString().startsWith(QStringLiteral("● ")));
+    // Above the device's maximum (?GTZKMAX) is refused.
+    QVERIFY(!model->setData(cell, shell->workspace()->info().maxDeadTime / 10.0 + 0.1));
+
+    std::optional<WriteReport> report;
+    page->writeItems({}, [&](const WriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QCOMPARE(report->written, 1);
+    QCOMPARE(report->failed, 0);
+    QVERIFY(!model->data(cell).toString().startsWith(QStringLiteral("● ")));
+
+    page->readFromDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(shell->workspace()->deviceDeadTime(1), 123, kDeviceTimeoutMs);
+}
+
+void MainWindowTest::backupAndRestoreThroughWizard() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString image = dir.filePath(QStringLiteral("backup.json"));
+    const QString safety = dir.filePath(QStringLiteral("safety.json"));
+
+    BackupWizard* backup = shell->window()->openBackupWizard();
+    backup->setMode(BackupWizard::Mode::Backup);
+    backup->setPath(image);
+    backup->next();
+    QCOMPARE(backup->currentId(), int(BackupWizard::RunPage));
+    QTRY_VERIFY_WITH_TIMEOUT(backup->progressPage()->isComplete(), kDeviceTimeoutMs);
+    QVERIFY2(backup->progressPage()->reportText().contains(QStringLiteral("Backup complete")),
+             qPrintable(backup->progressPage()->reportText()));
+    QVERIFY(loadEepromImage(image).ok());
+    backup->close();
+
+    BackupWizard* restore = shell->window()->openBackupWizard();
+    QSignalSpy restored(restore, &BackupWizard::restored);
+    restore->setMode(BackupWizard::Mode::Restore);
+    restore->setPath(image);
+    restore->next();
+    QCOMPARE(restore->currentId(), int(BackupWizard::CheckPage));
+    QVERIFY(restore->checkText().contains(QStringLiteral("matches")));
+    restore->setSafetyBackupPath(safety);
+    restore->next();
+    QTRY_VERIFY_WITH_TIMEOUT(restore->progressPage()->isComplete(), kDeviceTimeoutMs);
+    const QString report = restore->progressPage()->reportText();
+    QVERIFY2(report.contains(QStringLiteral("Restore complete")), qPrintable(report));
+    QVERIFY(report.contains(QStringLiteral("0 failed")));
+    QCOMPARE(restored.size(), 1);
+    QVERIFY(loadEepromImage(safety).ok());
+    restore->close();
+}
+
+void MainWindowTest::restoreRefusesDamagedImage() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("damaged.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{\"format\":\"cambench-eeprom-image\",\"version\":1,\"blocks\":[]}");
+    file.close();
+    BackupWizard* restore = shell->window()->openBackupWizard();
+    restore->setMode(BackupWizard::Mode::Restore);
+    restore->setPath(path);
+    // The refusal is a message box; answer it so the test goes on.
+    QTimer::singleShot(0, restore, [] {
+        if (QWidget* box = QApplication::activeModalWidget()) box->close();
+    });
+    restore->next();
+    QCOMPARE(restore->currentId(), int(BackupWizard::ChoosePage));
+    restore->close();
+}
+
+void MainWindowTest::failedReadOnDeadLineKeepsEditsAndSaysWhy() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    CamDocument* cams = shell->workspace()->cams();
+    Cam cam = cams->track(0, 1).cams.first();
+    cam.off += 3;
+    cams->setCam(0, 1, 0, cam);
+    const int changes = shell->workspace()->changedCount();
+    QVERIFY(changes > 0);
+
+    // The same line now loses every answer (a pulled cable).
+    DeviceSession* session = shell->session();
+    comm::LinkSettings link = session->link();
+    link.timeoutMs = 100;
+    link.retries = 1;
+    comm::ConnectionSettings dead;
+    dead.port = QStringLiteral("sim:throttle=0;dead=1");
+    session->connectTo(dead, link);
+    QTRY_VERIFY_WITH_TIMEOUT(session->isOnline(), kDeviceTimeoutMs);
+
+    std::optional<Status> read;
+    shell->window()->camPage()->readProgram(0, [&](const Status& s) { read = s; });
+    QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
+    QVERIFY(!read->ok());
+    QVERIFY(!read->error().message.isEmpty());
+    QVERIFY2(shell->window()->lastMessage().contains(QStringLiteral("Your edits are kept")),
+             qPrintable(shell->window()->lastMessage()));
+    QCOMPARE(cams->track(0, 1).cams.first(), cam);
+    QCOMPARE(shell->workspace()->changedCount(), changes);
+}
+
+void MainWindowTest::closingWithUnwrittenChangesCountsThem() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    QVERIFY(!window->windowTitle().contains(QStringLiteral("not written")));
+    CamDocument* cams = shell->workspace()->cams();
+    Cam cam = cams->track(0, 1).cams.first();
+    cam.on += 2;
+    cams->setCam(0, 1, 0, cam);
+    QVERIFY(window->windowTitle().contains(QStringLiteral("[1 change not written]")));
+    QVERIFY(window->isWindowModified());
+    // The question comes first; cancel it and the window stays.
+    QTimer::singleShot(0, window, [] {
+        if (QWidget* box = QApplication::activeModalWidget()) box->close();
+    });
+    QVERIFY(!window->confirmClose());
+}
+
+QTEST_MAIN(MainWindowTest)
+#include "tst_main_window.moc"

@@ -1,0 +1,251 @@
+// Pages and models of the shell: generated settings form, masked user
+// numbers, PLC symbols, language switch, and every model under
+// QAbstractItemModelTester.
+#include "shell_fixture.h"
+
+#include "ui/access_grid_model.h"
+#include "ui/dead_times_model.h"
+#include "ui/dead_times_page.h"
+#include "ui/device_session.h"
+#include "ui/language.h"
+#include "ui/plc_matrix_model.h"
+#include "ui/plc_page.h"
+#include "ui/plc_symbol.h"
+#include "ui/setting_field.h"
+#include "ui/settings_page.h"
+#include "ui/users_model.h"
+#include "ui/users_page.h"
+#include "ui/write_report.h"
+
+#include <QAbstractItemModelTester>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QSpinBox>
+#include <QTranslator>
+#include <QtTest>
+
+using namespace cambench;
+using namespace cambench::test;
+
+class ShellPagesTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    // As the application does at start: English catalogue (plural forms).
+    void initTestCase() { QVERIFY(setLanguage(QStringLiteral("en"))); }
+    void modelsPassTheModelTester();
+    void settingsFormShowsRangeAndTooltipOfSpec();
+    void settingsEditMarksFieldUntilWritten();
+    void userNumbersMaskedUntilRevealed();
+    void plcSymbolsDecodeWhereKnownAndStayEditableAsHex();
+    void plcMatrixEditMarksNetworkChanged();
+    void reportNamesFailuresInsteadOfDone();
+    void languageSwitchShowsGermanLabels();
+    void everySettingTextHasAGermanTranslation();
+};
+
+void ShellPagesTest::modelsPassTheModelTester() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(waitForSections(*shell));
+    Workspace* ws = shell->workspace();
+    DeadTimesModel deadTimes(ws);
+    UsersModel users(ws);
+    AccessGridModel access(ws);
+    PlcMatrixModel plc(ws);
+    QAbstractItemModelTester t1(&deadTimes, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester t2(&users, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester t3(&access, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester t4(&plc, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    // Changes while the testers watch: capacities, users, access, symbols.
+    DeviceInfo info = ws->info();
+    info.outputs = 48;
+    info.deadTimeOutputs = 48;
+    ws->setInfo(info, true);
+    QCOMPARE(deadTimes.rowCount(), 48);
+    access.setUser(0);
+    QCOMPARE(access.rowCount(), 6);
+    QVERIFY(access.setData(access.index(0, 3), Qt::Checked, Qt::CheckStateRole) ||
+            ws->users().at(0).user.allOutputs);
+    User user;
+    user.name = QStringLiteral("Night shift");
+    user.number = QStringLiteral("4711");
+    ws->addUser(user);
+    QCOMPARE(users.rowCount(), int(ws->users().size()));
+    ws->removeUser(int(ws->users().size()) - 1);
+    plc.setNetwork(PlcNetwork::M, 4);
+    QVERIFY(plc.setData(plc.index(1, 2), QStringLiteral("M11")));
+    QVERIFY(!plc.setData(plc.index(1, 2), QStringLiteral("not a symbol")));
+}
+
+void ShellPagesTest::settingsFormShowsRangeAndTooltipOfSpec() {
+    Workspace workspace;
+    DeviceSession session;
+    SettingsPage page(&session, &workspace);
+    const SettingSpec* integer = nullptr;
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (spec.kind == SettingKind::Integer && !spec.readOnly && *spec.tooltip &&
+            spec.min >= std::numeric_limits<int>::min() && spec.max <= std::numeric_limits<int>::max()) {
+            integer = &spec;
+            break;
+        }
+    }
+    QVERIFY(integer);
+    SettingField* field = page.field(QString::fromLatin1(integer->key));
+    QVERIFY(field);
+    auto* spin = qobject_cast<QSpinBox*>(field->editor());
+    QVERIFY(spin);
+    QCOMPARE(spin->minimum(), int(integer->min));
+    QCOMPARE(spin->maximum(), int(integer->max));
+    QVERIFY(field->editor()->toolTip().contains(QString::fromUtf8(integer->tooltip)));
+    QVERIFY(field->editor()->toolTip().contains(QString::number(integer->max)));
+    QVERIFY(field->rangeLabel()->text().contains(QString::number(integer->max)));
+
+    // Output references show "none" for 0.
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (spec.kind != SettingKind::OutputRef) continue;
+        auto* ref = qobject_cast<QSpinBox*>(page.field(QString::fromLatin1(spec.key))->editor());
+        QVERIFY(ref);
+        QCOMPARE(ref->minimum(), 0);
+        QCOMPARE(ref->specialValueText(), QStringLiteral("none"));
+        break;
+    }
+}
+
+void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(waitForSections(*shell));
+    Workspace* ws = shell->workspace();
+    SettingsPage* page = shell->window()->settingsPage();
+    const SettingSpec* spec = nullptr;
+    for (const SettingSpec& s : settingSpecs()) {
+        if (s.kind == SettingKind::Integer && !s.readOnly && ws->deviceSettings().contains(QString::fromLatin1(s.key)) &&
+            ws->deviceSettings().value(QString::fromLatin1(s.key)).toLongLong() < s.max) {
+            spec = &s;
+            break;
+        }
+    }
+    QVERIFY(spec);
+    const QString key = QString::fromLatin1(spec->key);
+    SettingField* field = page->field(key);
+    auto* spin = qobject_cast<QSpinBox*>(field->editor());
+    QVERIFY(spin);
+    spin->setValue(spin->value() + 1);
+    QCOMPARE(ws->changedSettings(), QStringList{key});
+    QVERIFY(field->label()->text().startsWith(QStringLiteral("● ")));
+
+    std::optional<WriteReport> report;
+    page->writeItems({}, [&](const WriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(report->complete(), qPrintable(report->details()));
+    QCOMPARE(report->written, 1);
+    QVERIFY(ws->changedSettings().isEmpty());
+    QVERIFY(!field->label()->text().startsWith(QStringLiteral("● ")));
+}
+
+void ShellPagesTest::userNumbersMaskedUntilRevealed() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(waitForSections(*shell));
+    UsersPage* page = shell->window()->usersPage();
+    const QString number = shell->workspace()->users().first().user.number;
+    QVERIFY(!number.isEmpty());
+    const QModelIndex cell = page->model()->index(0, UsersModel::NumberColumn);
+    page->selectUser(0);
+    QCOMPARE(cell.data().toString(), QStringLiteral("*****"));
+    QVERIFY(page->numberEdit()->text().isEmpty());
+    QVERIFY(page->numberEdit()->isReadOnly());
+    for (const SectionDifference& d : page->differences()) QVERIFY(!d.device.contains(number));
+
+    page->setNumbersShown(true);
+    QCOMPARE(cell.data().toString(), number);
+    QCOMPARE(page->numberEdit()->text(), number);
+    QVERIFY(!page->numberEdit()->isReadOnly());
+    page->setNumbersShown(false);
+    QCOMPARE(cell.data().toString(), QStringLiteral("*****"));
+}
+
+void ShellPagesTest::plcSymbolsDecodeWhereKnownAndStayEditableAsHex() {
+    QCOMPARE(plcsymbol::display(0), QString());
+    QCOMPARE(plcsymbol::display(0x0A0A), QStringLiteral("M 11"));
+    QCOMPARE(plcsymbol::display(0x0101), QStringLiteral("0x0101"));
+    QCOMPARE(plcsymbol::parse(QStringLiteral("M11")), std::optional<quint16>(0x0A0A));
+    QCOMPARE(plcsymbol::parse(QStringLiteral("0101")), std::optional<quint16>(0x0101));
+    QCOMPARE(plcsymbol::parse(QStringLiteral("0x1F2e")), std::optional<quint16>(0x1F2E));
+    QCOMPARE(plcsymbol::parse(QString()), std::optional<quint16>(0));
+    QVERIFY(!plcsymbol::parse(QStringLiteral("M0")));
+    QVERIFY(!plcsymbol::parse(QStringLiteral("12345")));
+    QCOMPARE(plcsymbol::editText(0x0A0A), QStringLiteral("0A0A"));
+}
+
+void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
+    Workspace workspace;
+    PlcNetwork network;
+    network.area = PlcNetwork::X;
+    network.number = 2;
+    network.symbols[0] = 0x0A00;
+    workspace.loadPlcFromDevice(network);
+    PlcMatrixModel model(&workspace);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    model.setNetwork(PlcNetwork::X, 2);
+    QCOMPARE(model.index(0, 0).data().toString(), QStringLiteral("M 1"));
+    QVERIFY(model.setData(model.index(4, 5), QStringLiteral("ABCD")));
+    QCOMPARE(workspace.plcNetwork(PlcNetwork::X, 2).symbols[29], quint16(0xABCD));
+    QVERIFY(model.index(4, 5).data().toString().startsWith(QStringLiteral("● ")));
+    QCOMPARE(workspace.changedPlcNetworks(), QList<int>{Workspace::plcKey(PlcNetwork::X, 2)});
+}
+
+void ShellPagesTest::reportNamesFailuresInsteadOfDone() {
+    WriteReport report;
+    report.addWritten();
+    report.addUnchanged();
+    report.addFailure(QStringLiteral("Output 3 dead time"), Error::communication(QStringLiteral("No answer.")));
+    QVERIFY(!report.complete());
+    QCOMPARE(report.summary(), QStringLiteral("1 written, 1 unchanged, 1 failed"));
+    QVERIFY(report.details().contains(QStringLiteral("Output 3 dead time: No answer.")));
+}
+
+void ShellPagesTest::languageSwitchShowsGermanLabels() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    CamDocument* cams = shell->workspace()->cams();
+    Cam cam = cams->track(0, 1).cams.first();
+    cam.on += 1;
+    cams->setCam(0, 1, 0, cam);
+    QSignalSpy rebuilt(shell.get(), &Shell::windowRebuilt);
+    shell->switchLanguage(QStringLiteral("de"));
+    QCOMPARE(rebuilt.size(), 1);
+    auto* nav = shell->window()->findChild<QListWidget*>();
+    QVERIFY(nav);
+    QCOMPARE(nav->item(MainWindow::Connection)->text(), QStringLiteral("Verbindung"));
+    QCOMPARE(nav->item(MainWindow::DeadTimes)->text(), QStringLiteral("Totzeiten"));
+    // The edit and the line survived the rebuilt window.
+    QCOMPARE(cams->track(0, 1).cams.first(), cam);
+    QVERIFY(shell->session()->isOnline());
+    shell->switchLanguage(QStringLiteral("en"));
+    nav = shell->window()->findChild<QListWidget*>();
+    QCOMPARE(nav->item(MainWindow::Connection)->text(), QStringLiteral("Connection"));
+}
+
+void ShellPagesTest::everySettingTextHasAGermanTranslation() {
+    QTranslator german;
+    QVERIFY(german.load(QStringLiteral(":/i18n/cambench_de.qm")));
+    QStringList missing;
+    const auto check = [&](const char* text) {
+        if (!text || !*text) return;
+        if (german.translate("Settings", text).isEmpty()) missing << QString::fromUtf8(text);
+    };
+    for (const SettingSpec& spec : settingSpecs()) {
+        check(spec.label);
+        check(spec.tooltip);
+        for (const SettingChoice& choice : spec.choices) check(choice.label);
+    }
+    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("untranslated (run the update_setting_texts "
+                                                          "target and lupdate): ") +
+                                           missing.join(QStringLiteral(" | "))));
+}
+
+QTEST_MAIN(ShellPagesTest)
+#include "tst_shell_pages.moc"
