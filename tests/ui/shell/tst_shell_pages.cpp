@@ -4,6 +4,7 @@
 #include "shell_fixture.h"
 
 #include "ui/access_grid_model.h"
+#include "ui/commissioning_report.h"
 #include "ui/dead_times_model.h"
 #include "ui/dead_times_page.h"
 #include "ui/device_session.h"
@@ -11,6 +12,7 @@
 #include "ui/plc_matrix_model.h"
 #include "ui/plc_page.h"
 #include "ui/plc_symbol.h"
+#include "ui/project_io.h"
 #include "ui/setting_field.h"
 #include "ui/settings_page.h"
 #include "ui/users_model.h"
@@ -22,6 +24,8 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTextDocument>
 #include <QTranslator>
 #include <QtTest>
 
@@ -43,6 +47,8 @@ private Q_SLOTS:
     void reportNamesFailuresInsteadOfDone();
     void languageSwitchShowsGermanLabels();
     void everySettingTextHasAGermanTranslation();
+    void reportPdfHoldsIdentityAndPrograms();
+    void projectRoundTripKeepsEditsAsUnwritten();
 };
 
 void ShellPagesTest::modelsPassTheModelTester() {
@@ -245,6 +251,37 @@ void ShellPagesTest::everySettingTextHasAGermanTranslation() {
     QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("untranslated (run the update_setting_texts "
                                                           "target and lupdate): ") +
                                            missing.join(QStringLiteral(" | "))));
+}
+
+void ShellPagesTest::reportPdfHoldsIdentityAndPrograms() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QTextDocument document;
+    CommissioningReport::build(document, *shell->workspace());
+    const QString text = document.toPlainText();
+    QVERIFY(text.contains(QStringLiteral("11.10.1994")));
+    QVERIFY(text.contains(QStringLiteral("Program 0")));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("report.pdf"));
+    QVERIFY(CommissioningReport::write(path, *shell->workspace()).ok());
+    QFile pdf(path);
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    QVERIFY(pdf.read(5) == "%PDF-");
+}
+
+void ShellPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QVERIFY(waitForSections(*shell));
+    const Project saved = projectFromWorkspace(*shell->workspace());
+    QVERIFY(!saved.programs.isEmpty());
+    Workspace offline;
+    loadProjectIntoWorkspace(offline, saved);
+    QCOMPARE(offline.cams()->program(0).tracks, shell->workspace()->cams()->program(0).tracks);
+    QCOMPARE(offline.settings(), shell->workspace()->settings());
+    // Nothing of a loaded project is on a device yet.
+    QVERIFY(offline.changedCount() > 0);
+    QCOMPARE(projectToJson(projectFromWorkspace(offline)), projectToJson(saved));
 }
 
 QTEST_MAIN(ShellPagesTest)
