@@ -77,13 +77,15 @@ Result<DeviceStatus> CamConClient::readStatus(int outputs, int inputs) {
         const char* command;
         std::function<void(const Fields&)> apply;
     };
+    // The axis moves between replies: the output states are read right
+    // after the position so that the two shown together belong together.
     const Optional queries[] = {
         {"IGWG", [&](const Fields& f) { status.position = qint32(f.num("value")); }},
+        {"ATAB", [&](const Fields& f) { status.outputs = bitsOf(f.bytes("data"), outputs); }},
         {"IFGWG", [&](const Fields& f) { status.positionText = text(f, "text").trimmed(); }},
         {"BSPEED", [&](const Fields& f) { status.speed = qint32(f.num("value")); }},
         {"SPEED", [&](const Fields& f) { status.speedText = text(f, "text").trimmed(); }},
         {"PAU", [&](const Fields& f) { status.activeProgram = int(f.num("value")); }},
-        {"ATAB", [&](const Fields& f) { status.outputs = bitsOf(f.bytes("data"), outputs); }},
         {"ETAB", [&](const Fields& f) { status.inputs = bitsOf(f.bytes("data"), inputs); }},
     };
     for (const Optional& query : queries) {

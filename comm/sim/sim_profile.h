@@ -28,7 +28,9 @@ struct SimProfile {
 
     // The simulated axis turns at this many actual-value units per second
     // (0 = standing still).
-    double unitsPerSecond = 360.0;
+    // One turn in 10 s: slow enough that a 250 ms trend shows a clean
+    // sawtooth instead of aliasing, fast enough to see the outputs switch.
+    double unitsPerSecond = 36.0;
 
     // Delays in milliseconds before a reply leaves the device.
     int processingDelayMs = 2;  // every request

@@ -179,7 +179,12 @@ void CamEditorWidget::createTables() {
     m_trackTable->setSelectionMode(QAbstractItemView::SingleSelection);
     m_trackTable->verticalHeader()->hide();
     m_trackTable->horizontalHeader()->setStretchLastSection(true);
+    m_trackTable->setWordWrap(false);
     m_trackTable->resizeColumnsToContents();
+    // Sized for the longest value, not the (empty) first contents: German
+    // decimals ("999,9 ms") must not wrap.
+    m_trackTable->setColumnWidth(TrackTableModel::DeadTimeColumn,
+                                 fontMetrics().horizontalAdvance(QStringLiteral("00000,0 ms")));
     m_trackTable->setColumnWidth(TrackTableModel::NameColumn,
                                  fontMetrics().averageCharWidth() * (kMaxNameLength + 2));
     connect(m_trackTable->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
