@@ -13,6 +13,13 @@ SimTcpServer::SimTcpServer(SimLine& line, const SimPacer& pacer, QObject* parent
     connect(&m_server, &QTcpServer::newConnection, this, &SimTcpServer::onNewConnection);
 }
 
+// The client socket is a child of m_server, which outlives m_scheduler:
+// without this its "disconnected" signal would reach the destroyed
+// scheduler while m_server tears the socket down.
+SimTcpServer::~SimTcpServer() {
+    if (m_client) QObject::disconnect(m_client, nullptr, this, nullptr);
+}
+
 Status SimTcpServer::listen(quint16 port) {
     if (!m_server.listen(QHostAddress::Any, port)) {
         return Error::communication(QStringLiteral("Cannot listen on TCP port %1: %2.")

@@ -20,6 +20,7 @@ class SimTcpServer : public QObject {
 
 public:
     SimTcpServer(SimLine& line, const SimPacer& pacer, QObject* parent = nullptr);
+    ~SimTcpServer() override;
 
     // Port 0 picks a free port; port() tells which.
     Status listen(quint16 port);
