@@ -3,8 +3,8 @@
 // simulator, and what retries cost under 1 % corrupted replies. Figures,
 // not assertions: docs/performance.md records a run.
 
-#include "comm/link/protocol_link.h"
-#include "comm/operations/camcon_client.h"
+#include "comm/camcon/ascii/ascii_link.h"
+#include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/transport/transport_factory.h"
 
 #include <QCommandLineParser>

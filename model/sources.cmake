@@ -1,37 +1,37 @@
 target_sources(cambench_model PRIVATE
   result.h
-  cam_program.h
-  device_info.h
-  device_info.cpp
-  dead_times.h
-  user.h
-  plc_network.h
-  plc_network.cpp
-  eeprom_image.h
-  eeprom_image.cpp
-  system_settings.h
-  system_settings.cpp
-  settings_validation.cpp
+  camcon/cam_program.h
+  camcon/device_info.h
+  camcon/device_info.cpp
+  camcon/dead_times.h
+  camcon/user.h
+  camcon/plc_network.h
+  camcon/plc_network.cpp
+  camcon/eeprom_image.h
+  camcon/eeprom_image.cpp
+  camcon/system_settings.h
+  camcon/system_settings.cpp
+  camcon/settings_validation.cpp
   model_log.h
   model_log.cpp
   atomic_file.h
   atomic_file.cpp
   file_read.h
   file_read.cpp
-  cam_validation.h
-  cam_validation.cpp
-  data_validation.h
-  data_validation.cpp
+  camcon/cam_validation.h
+  camcon/cam_validation.cpp
+  camcon/data_validation.h
+  camcon/data_validation.cpp
   json_reader.h
   json_reader.cpp
   json_file.h
   json_file.cpp
-  device_info_json.h
-  device_info_json.cpp
-  project_file.h
-  project_file.cpp
-  eeprom_image_file.h
-  eeprom_image_file.cpp
-  csv_io.h
-  csv_io.cpp
+  camcon/device_info_json.h
+  camcon/device_info_json.cpp
+  camcon/project_file.h
+  camcon/project_file.cpp
+  camcon/eeprom_image_file.h
+  camcon/eeprom_image_file.cpp
+  camcon/csv_io.h
+  camcon/csv_io.cpp
 )

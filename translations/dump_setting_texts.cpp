@@ -2,7 +2,7 @@
 // QT_TRANSLATE_NOOP lines in context "Settings", the input lupdate reads to
 // put them into the .ts files (the model knows no translation). Run after
 // the table changed:  cmake --build <dir> --target update_setting_texts
-#include "model/system_settings.h"
+#include "model/camcon/system_settings.h"
 
 #include <QFile>
 #include <QSet>

@@ -4,7 +4,7 @@
 #include "progress_page.h"
 #include "workspace.h"
 
-#include "model/eeprom_image_file.h"
+#include "model/camcon/eeprom_image_file.h"
 
 #include <QCheckBox>
 #include <QDateTime>

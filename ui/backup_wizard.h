@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/eeprom_image.h"
+#include "model/camcon/eeprom_image.h"
 #include "model/result.h"
 
 #include <QWizard>

@@ -3,7 +3,7 @@
 #include "section_page.h"
 
 #include "comm/transport/transport.h"
-#include "comm/link/protocol_link.h"
+#include "comm/camcon/ascii/ascii_link.h"
 
 class QComboBox;
 class QFormLayout;

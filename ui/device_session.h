@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/operations/camcon_client.h"
+#include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QObject>

@@ -2,7 +2,7 @@
 
 #include "section_page.h"
 
-#include "model/device_info.h"
+#include "model/camcon/device_info.h"
 
 #include <QElapsedTimer>
 #include <QTimer>

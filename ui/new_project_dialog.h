@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/device_info.h"
+#include "model/camcon/device_info.h"
 
 #include <QDialog>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/project_file.h"
+#include "model/camcon/project_file.h"
 
 namespace cambench {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/system_settings.h"
+#include "model/camcon/system_settings.h"
 
 #include <QObject>
 #include <QVariant>

@@ -2,8 +2,8 @@
 
 #include "device_session.h"
 
-#include "comm/link/traffic_log.h"
-#include "comm/link/traffic_mask.h"
+#include "comm/engine/traffic_log.h"
+#include "comm/camcon/ascii/traffic_mask.h"
 
 #include <QCheckBox>
 #include <QFileDialog>

@@ -2,7 +2,7 @@
 
 #include "section_page.h"
 
-#include "comm/link/protocol_link.h"
+#include "comm/camcon/ascii/ascii_link.h"
 
 class QCheckBox;
 class QLineEdit;

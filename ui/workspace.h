@@ -1,10 +1,10 @@
 #pragma once
 
-#include "model/dead_times.h"
-#include "model/device_info.h"
-#include "model/plc_network.h"
-#include "model/system_settings.h"
-#include "model/user.h"
+#include "model/camcon/dead_times.h"
+#include "model/camcon/device_info.h"
+#include "model/camcon/plc_network.h"
+#include "model/camcon/system_settings.h"
+#include "model/camcon/user.h"
 
 #include <QList>
 #include <QMap>

@@ -3,8 +3,8 @@
 #include "commands.h"
 #include "exit_codes.h"
 
-#include "model/cam_validation.h"
-#include "model/csv_io.h"
+#include "model/camcon/cam_validation.h"
+#include "model/camcon/csv_io.h"
 
 namespace cambench::cli {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "model/device_info.h"
-#include "model/user.h"
+#include "model/camcon/device_info.h"
+#include "model/camcon/user.h"
 
 #include <QJsonObject>
 #include <QList>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/protocol/frame.h"
+#include "comm/camcon/ascii/frame.h"
 #include "model/result.h"
 
 #include <QString>

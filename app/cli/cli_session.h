@@ -4,7 +4,7 @@
 #include "progress_bar.h"
 #include "traffic_log_file.h"
 
-#include "comm/operations/camcon_client.h"
+#include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QEventLoop>

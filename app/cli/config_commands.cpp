@@ -3,7 +3,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 
-#include "model/data_validation.h"
+#include "model/camcon/data_validation.h"
 #include "model/json_file.h"
 
 #include <QJsonArray>

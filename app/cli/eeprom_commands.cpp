@@ -3,7 +3,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 
-#include "model/eeprom_image_file.h"
+#include "model/camcon/eeprom_image_file.h"
 
 #include <QDateTime>
 

@@ -3,8 +3,8 @@
 #include "commands.h"
 #include "exit_codes.h"
 
-#include "model/csv_io.h"
-#include "model/data_validation.h"
+#include "model/camcon/csv_io.h"
+#include "model/camcon/data_validation.h"
 
 namespace cambench::cli {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/link/protocol_link.h"
+#include "comm/camcon/ascii/ascii_link.h"
 
 #include <QSaveFile>
 #include <QString>

@@ -3,7 +3,7 @@
 #include "sim_handlers.h"
 #include "sim_log.h"
 
-#include "comm/protocol/command_codec.h"
+#include "comm/camcon/ascii/command_codec.h"
 
 #include <utility>
 

@@ -7,8 +7,8 @@
 #include "sim_result.h"
 #include "sim_state.h"
 
-#include "comm/protocol/catalogue.h"
-#include "comm/protocol/frame.h"
+#include "comm/camcon/ascii/catalogue.h"
+#include "comm/camcon/ascii/frame.h"
 
 #include <QByteArray>
 #include <QHash>

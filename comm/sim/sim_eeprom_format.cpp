@@ -2,8 +2,8 @@
 
 #include "sim_log.h"
 
-#include "comm/protocol/catalogue.h"
-#include "comm/protocol/command_codec.h"
+#include "comm/camcon/ascii/catalogue.h"
+#include "comm/camcon/ascii/command_codec.h"
 
 #include <QDataStream>
 #include <QIODevice>

@@ -2,7 +2,7 @@
 
 #include "sim_log.h"
 
-#include "comm/protocol/catalogue.h"
+#include "comm/camcon/ascii/catalogue.h"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 #include "sim_faults.h"
 #include "sim_output.h"
 
-#include "comm/protocol/stream_decoder.h"
+#include "comm/camcon/ascii/stream_decoder.h"
 
 #include <QByteArrayView>
 #include <QHash>

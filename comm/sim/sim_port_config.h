@@ -2,7 +2,7 @@
 
 #include "sim_faults.h"
 
-#include "comm/protocol/frame.h"
+#include "comm/camcon/ascii/frame.h"
 #include "comm/transport/transport.h"
 #include "model/result.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/protocol/fields.h"
+#include "comm/camcon/ascii/fields.h"
 
 #include <functional>
 #include <utility>

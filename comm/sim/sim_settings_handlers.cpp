@@ -1,7 +1,7 @@
 #include "sim_device.h"
 #include "sim_handlers.h"
 
-#include "comm/protocol/catalogue.h"
+#include "comm/camcon/ascii/catalogue.h"
 
 namespace cambench::comm {
 

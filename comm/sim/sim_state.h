@@ -2,7 +2,7 @@
 
 #include "sim_cam_store.h"
 
-#include "comm/protocol/fields.h"
+#include "comm/camcon/ascii/fields.h"
 
 #include <QByteArray>
 #include <QList>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "job.h"
-#include "comm/link/protocol_link.h"
+#include "comm/camcon/ascii/ascii_link.h"
 #include "comm/transport/transport.h"
 
 #include <QObject>

@@ -1,7 +1,7 @@
 // CamConClient against the in-process simulator: no subprocess, no worker.
-#include "comm/link/protocol_link.h"
-#include "comm/operations/camcon_client.h"
-#include "comm/operations/settings_commands.h"
+#include "comm/camcon/ascii/ascii_link.h"
+#include "comm/camcon/ascii/ascii_camcon.h"
+#include "comm/camcon/ascii/settings_commands.h"
 #include "comm/sim/sim_transport.h"
 
 #include <QLoggingCategory>

@@ -2,7 +2,7 @@
 // refusal of damaged, truncated and foreign images.
 #include "e2e_support.h"
 
-#include "model/eeprom_image_file.h"
+#include "model/camcon/eeprom_image_file.h"
 
 #include <QDir>
 #include <QTest>

@@ -1,6 +1,6 @@
 // Runs the fuzz function without libFuzzer: over a fixed seed corpus and
 // pseudo-random inputs from a fixed seed, so every normal build exercises it.
-#include "comm/protocol/frame.h"
+#include "comm/camcon/ascii/frame.h"
 
 #include <QByteArray>
 #include <QList>

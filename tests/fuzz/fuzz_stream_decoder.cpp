@@ -1,6 +1,6 @@
 // libFuzzer target for the frame decoder. The same function runs in normal
 // builds through fuzz_replay_main.cpp (fuzz_stream_decoder_replay).
-#include "comm/protocol/stream_decoder.h"
+#include "comm/camcon/ascii/stream_decoder.h"
 
 #include <QLoggingCategory>
 

@@ -1,4 +1,4 @@
-#include "model/cam_validation.h"
+#include "model/camcon/cam_validation.h"
 
 #include <QtTest>
 

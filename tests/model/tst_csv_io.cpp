@@ -1,4 +1,4 @@
-#include "model/csv_io.h"
+#include "model/camcon/csv_io.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

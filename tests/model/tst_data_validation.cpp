@@ -1,4 +1,4 @@
-#include "model/data_validation.h"
+#include "model/camcon/data_validation.h"
 
 #include <QtTest>
 

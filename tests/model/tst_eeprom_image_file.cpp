@@ -1,4 +1,4 @@
-#include "model/eeprom_image_file.h"
+#include "model/camcon/eeprom_image_file.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,4 +1,4 @@
-#include "model/project_file.h"
+#include "model/camcon/project_file.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

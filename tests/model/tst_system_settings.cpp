@@ -1,4 +1,4 @@
-#include "model/system_settings.h"
+#include "model/camcon/system_settings.h"
 
 #include <QSet>
 #include <QtTest>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "model/cam_program.h"
-#include "model/cam_validation.h"
-#include "model/dead_times.h"
-#include "model/device_info.h"
+#include "model/camcon/cam_program.h"
+#include "model/camcon/cam_validation.h"
+#include "model/camcon/dead_times.h"
+#include "model/camcon/device_info.h"
 #include "ui/cameditor/cam_geometry.h"
 
 #include <QList>

@@ -1,7 +1,7 @@
 #include "ui/cameditor/cam_editor_widget.h"
 
-#include "model/csv_io.h"
-#include "model/data_validation.h"
+#include "model/camcon/csv_io.h"
+#include "model/camcon/data_validation.h"
 #include "ui/cameditor/cam_diagram_widget.h"
 #include "ui/cameditor/cam_document.h"
 #include "ui/cameditor/cam_generator_dialog.h"

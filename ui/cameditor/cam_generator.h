@@ -1,7 +1,7 @@
 #pragma once
 
-#include "model/cam_program.h"
-#include "model/cam_validation.h"
+#include "model/camcon/cam_program.h"
+#include "model/camcon/cam_validation.h"
 #include "model/result.h"
 
 #include <QCoreApplication>

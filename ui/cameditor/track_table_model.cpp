@@ -3,7 +3,7 @@
 #include "ui/cameditor/cam_document.h"
 #include "ui/cameditor/editor_colors.h"
 #include "ui/cameditor/editor_roles.h"
-#include "model/data_validation.h"
+#include "model/camcon/data_validation.h"
 
 #include <QBrush>
 #include <QFont>

@@ -1,6 +1,6 @@
 #include "pty_device.h"
 
-#include "comm/protocol/stream_decoder.h"
+#include "comm/camcon/ascii/stream_decoder.h"
 
 #include <fcntl.h>
 #include <poll.h>

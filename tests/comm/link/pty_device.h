@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/protocol/frame.h"
+#include "comm/camcon/ascii/frame.h"
 
 #include <QByteArray>
 #include <QList>

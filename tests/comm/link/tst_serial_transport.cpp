@@ -2,7 +2,7 @@
 // lacks, and a port that vanishes while the link waits.
 #include "pty_device.h"
 
-#include "comm/link/protocol_link.h"
+#include "comm/camcon/ascii/ascii_link.h"
 #include "comm/transport/serial_transport.h"
 
 #include <QtTest>

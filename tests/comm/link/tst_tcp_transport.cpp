@@ -3,8 +3,8 @@
 // event loop.
 #include "pty_device.h"
 
-#include "comm/link/protocol_link.h"
-#include "comm/protocol/stream_decoder.h"
+#include "comm/camcon/ascii/ascii_link.h"
+#include "comm/camcon/ascii/stream_decoder.h"
 #include "comm/transport/tcp_transport.h"
 
 #include <QTcpServer>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "comm/protocol/command_codec.h"
-#include "comm/protocol/stream_decoder.h"
+#include "comm/camcon/ascii/command_codec.h"
+#include "comm/camcon/ascii/stream_decoder.h"
 #include "comm/sim/sim_line.h"
 
 #include <QList>

@@ -1,8 +1,8 @@
 // The real cambench-sim: started as a process, reached over its
 // pseudo-terminal with QSerialPort and over TCP, stopped with SIGTERM.
 
-#include "comm/protocol/command_codec.h"
-#include "comm/protocol/stream_decoder.h"
+#include "comm/camcon/ascii/command_codec.h"
+#include "comm/camcon/ascii/stream_decoder.h"
 
 #include <QProcess>
 #include <QSerialPort>

@@ -2,7 +2,7 @@
 // a pseudo-terminal (QSerialPort) for cancelling and a vanishing port.
 #include "../link/pty_device.h"
 
-#include "comm/link/traffic_log.h"
+#include "comm/engine/traffic_log.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QSemaphore>

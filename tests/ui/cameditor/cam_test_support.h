@@ -1,7 +1,7 @@
 #pragma once
 
-#include "model/cam_program.h"
-#include "model/device_info.h"
+#include "model/camcon/cam_program.h"
+#include "model/camcon/device_info.h"
 #include "ui/cameditor/cam_document.h"
 
 namespace cambench::test {

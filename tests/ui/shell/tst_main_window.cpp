@@ -2,7 +2,7 @@
 // read, edit, write, compare, backup/restore, a failing line.
 #include "shell_fixture.h"
 
-#include "model/eeprom_image_file.h"
+#include "model/camcon/eeprom_image_file.h"
 #include "ui/backup_wizard.h"
 #include "ui/language.h"
 #include "ui/cam_page.h"

@@ -1,0 +1,73 @@
+#include "ascii_camcon.h"
+#include "ascii_support.h"
+
+namespace cambench::comm {
+
+using namespace client;
+
+Result<DeadTimes> CamConClient::readDeadTimes(int outputs) {
+    DeadTimes deadTimes;
+    for (int output = 1; output <= outputs; ++output) {
+        const Result<Fields> reply =
+            m_link.call('?', "TZK", Fields{{"output", wireOutput(output)}});
+        if (!reply) {
+            return inContext(
+                QStringLiteral("reading the dead time of output %1 (?TZK)").arg(output),
+                reply.error());
+        }
+        deadTimes.insert(output, qint32(reply->num("value")));
+    }
+    return deadTimes;
+}
+
+Status CamConClient::writeDeadTime(int output, qint32 tenthsMs) {
+    const Result<Fields> reply = m_link.call(
+        '!', "TZK", Fields{{"output", wireOutput(output)}, {"value", qint64(tenthsMs)}});
+    if (!reply) {
+        return inContext(QStringLiteral("writing the dead time of output %1 (!TZK)").arg(output),
+                         reply.error());
+    }
+    return success();
+}
+
+Result<QString> CamConClient::readOutputName(int output) {
+    const Result<Fields> reply = m_link.call('?', "ANAME", Fields{{"output", wireOutput(output)}});
+    if (!reply) {
+        return inContext(QStringLiteral("reading the name of output %1 (?ANAME)").arg(output),
+                         reply.error());
+    }
+    return text(*reply, "text");
+}
+
+Status CamConClient::writeOutputName(int output, const QString& name) {
+    Fields fields{{"output", wireOutput(output)}};
+    fields.setBytes("text", wireText(name));
+    const Result<Fields> reply = m_link.call('!', "ANAME", fields);
+    if (!reply) {
+        return inContext(QStringLiteral("writing the name of output %1 (!ANAME)").arg(output),
+                         reply.error());
+    }
+    return success();
+}
+
+Result<QString> CamConClient::readProgramName(int program) {
+    const Result<Fields> reply = m_link.call('?', "PNAME", Fields{{"program", qint64(program)}});
+    if (!reply) {
+        return inContext(QStringLiteral("reading the name of program %1 (?PNAME)").arg(program),
+                         reply.error());
+    }
+    return text(*reply, "text");
+}
+
+Status CamConClient::writeProgramName(int program, const QString& name) {
+    Fields fields{{"program", qint64(program)}};
+    fields.setBytes("text", wireText(name));
+    const Result<Fields> reply = m_link.call('!', "PNAME", fields);
+    if (!reply) {
+        return inContext(QStringLiteral("writing the name of program %1 (!PNAME)").arg(program),
+                         reply.error());
+    }
+    return success();
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "fields.h"
+
+#include "model/result.h"
+
+#include <QString>
+
+#include <limits>
+
+// Small helpers shared by the CamConClient .cpp files (not part of its API).
+namespace cambench::comm::client {
+
+// The only place where the 1-based output numbers of the model meet the
+// 0-based numbers of the ASCII protocol.
+inline qint64 wireOutput(int output) {
+    return output - 1;
+}
+inline int modelOutput(qint64 wireNumber) {
+    return int(wireNumber) + 1;
+}
+
+// Device texts are single-byte characters padded with NUL.
+inline QString text(const Fields& fields, const char* name) {
+    return QString::fromLatin1(fields.bytes(name));
+}
+inline QByteArray wireText(const QString& text) {
+    return text.toLatin1();
+}
+
+// Both points of an empty track or of a search past the end (notes 3).
+inline bool isNoCamPoint(qint64 point) {
+    return point == std::numeric_limits<qint32>::min() || point == 0x80000000LL;
+}
+
+inline bool isNotUnderstood(const Error& error) {
+    return error.kind == ErrorKind::NotUnderstood;
+}
+
+// Prefixes a step to an error's message, keeping its kind and code:
+// "reading program 3, output 5: <link message>".
+inline Error inContext(const QString& step, const Error& error) {
+    Error result = error;
+    result.message = QStringLiteral("%1: %2").arg(step, error.message);
+    return result;
+}
+
+}  // namespace cambench::comm::client

@@ -1,0 +1,3 @@
+#include "engine_logging.h"
+
+Q_LOGGING_CATEGORY(commLinkLog, "cambench.comm.link", QtWarningMsg)

@@ -1,0 +1,14 @@
+# The protocol-neutral request engine: timeouts from the line, retries where
+# they are safe, cancel, the traffic sink. Knows no protocol.
+target_sources(cambench_comm PRIVATE
+  engine/engine_logging.h
+  engine/engine_logging.cpp
+  engine/framing_backend.h
+  engine/line_timing.h
+  engine/request.h
+  engine/request_engine.h
+  engine/request_engine.cpp
+  engine/traffic_entry.h
+  engine/traffic_log.h
+  engine/traffic_log.cpp
+)

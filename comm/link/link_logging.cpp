@@ -1,3 +1,0 @@
-#include "link_logging.h"
-
-Q_LOGGING_CATEGORY(commLinkLog, "cambench.comm.link", QtWarningMsg)
