@@ -5,7 +5,9 @@
 
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/ascii_camcon.h"
-#include "comm/transport/transport_factory.h"
+#include "app/registry/builtin_registry.h"
+#include "comm/device/protocol_registry.h"
+#include "comm/transport/transport_registry.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -28,13 +30,13 @@ QTextStream& out() {
 
 struct Measurement {
     double seconds = 0;
-    ProtocolLink::Stats stats;
+    AsciiLink::Stats stats;
 };
 
 // Opens a fresh simulated device described by `simOptions` at `baud` and
 // runs `work` on it; the line's counters give the bytes that crossed the wire.
 Measurement measure(const QString& simOptions, int baud,
-                    const std::function<void(CamConClient&, ProtocolLink&)>& work) {
+                    const std::function<void(AsciiCamCon&, AsciiLink&)>& work) {
     ConnectionSettings connection;
     connection.port = QStringLiteral("sim:baud=%1;%2").arg(baud).arg(simOptions);
     connection.serial.baud = baud;
@@ -48,18 +50,17 @@ Measurement measure(const QString& simOptions, int baud,
         std::fprintf(stderr, "cambench-bench: %s\n", qPrintable(opened.error().message));
         std::exit(3);
     }
-    LinkSettings settings;
-    settings.timeoutMs = 1000;
+    AsciiSettings settings;  // the per-attempt timeout derives from the line
     if (simOptions.contains(QStringLiteral("framing=multiuser"))) settings.framing = Framing::Multiuser;
-    ProtocolLink link(*pipe, settings);
-    CamConClient client(link);
+    AsciiLink link(*pipe, settings, lineTimingFor(connection.serial));
+    AsciiCamCon client(link);
     QElapsedTimer timer;
     timer.start();
     work(client, link);
     return {timer.nsecsElapsed() / 1e9, link.stats()};
 }
 
-double wireLimitSeconds(const ProtocolLink::Stats& stats, int baud) {
+double wireLimitSeconds(const AsciiLink::Stats& stats, int baud) {
     return double(stats.bytesSent + stats.bytesReceived) * 10.0 / baud;
 }
 
@@ -100,7 +101,7 @@ void benchEeprom(int baud, const QString& faults) {
     // 8 cams on each of 32 outputs of 16 programs: more than 32 KiB of blocks.
     const QString options = QStringLiteral("fill=8") + faults;
     EepromImage image;
-    const Measurement backup = measure(options, baud, [&](CamConClient& client, ProtocolLink&) {
+    const Measurement backup = measure(options, baud, [&](AsciiCamCon& client, AsciiLink&) {
         auto result = client.backup();
         if (!result) fail(result.error());
         image = result.value();
@@ -108,7 +109,7 @@ void benchEeprom(int baud, const QString& faults) {
     printRow(QStringLiteral("EEPROM backup (%1 blocks)%2").arg(image.blocks.size())
                  .arg(faultText(faults)),
              baud, backup, imageBytes(image));
-    const Measurement restore = measure(options, baud, [&](CamConClient& client, ProtocolLink&) {
+    const Measurement restore = measure(options, baud, [&](AsciiCamCon& client, AsciiLink&) {
         if (Status done = client.restore(image); !done) fail(done.error());
     });
     printRow(QStringLiteral("EEPROM restore (%1 blocks)%2").arg(image.blocks.size())
@@ -119,7 +120,7 @@ void benchEeprom(int baud, const QString& faults) {
 void benchProgram(int baud, const QString& faults) {
     int cams = 0;
     const Measurement read = measure(QStringLiteral("fill=20") + faults, baud,
-                                     [&](CamConClient& client, ProtocolLink&) {
+                                     [&](AsciiCamCon& client, AsciiLink&) {
                                          auto program = client.readProgram(0, 32);
                                          if (!program) fail(program.error());
                                          for (const Track& track : program->tracks)
@@ -133,6 +134,7 @@ void benchProgram(int baud, const QString& faults) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    cambench::registerBuiltins();
     QCoreApplication app(argc, argv);
     QCommandLineParser parser;
     parser.setApplicationDescription(

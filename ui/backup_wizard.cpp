@@ -203,7 +203,7 @@ void BackupWizard::runBackup() {
     const QString path = m_path->text();
     track(m_session->run<EepromImage>(
         this, tr("Backup"),
-        [](comm::CamConClient& client, comm::JobContext& job) {
+        [](comm::CamConDevice& client, comm::JobContext& job) {
             return client.backup([&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this, path](Result<EepromImage> image) {
@@ -229,7 +229,7 @@ void BackupWizard::runSafetyBackup() {
     m_progress->start(tr("Step 1 of 2: saving what the device holds now into %1…").arg(safety));
     track(m_session->run<EepromImage>(
         this, tr("Safety backup"),
-        [](comm::CamConClient& client, comm::JobContext& job) {
+        [](comm::CamConDevice& client, comm::JobContext& job) {
             return client.backup([&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this, safety](Result<EepromImage> image) {
@@ -250,7 +250,7 @@ void BackupWizard::runRestore() {
                          int(image.blocks.size())));
     track(m_session->run<Done>(
         this, tr("Restore"),
-        [image](comm::CamConClient& client, comm::JobContext& job) {
+        [image](comm::CamConDevice& client, comm::JobContext& job) {
             return client.restore(image, [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this, safety, image](Status status) {

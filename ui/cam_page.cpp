@@ -65,7 +65,7 @@ void CamPage::readProgram(int program, std::function<void(const Status&)> done) 
     Q_EMIT statusMessage(tr("Reading program %1…").arg(program));
     m_session->run<CamProgram>(
         this, tr("Read program %1").arg(program),
-        [program, outputs](comm::CamConClient& client, comm::JobContext& job) {
+        [program, outputs](comm::CamConDevice& client, comm::JobContext& job) {
             return client.readProgram(program, outputs,
                                       [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
@@ -157,7 +157,7 @@ void CamPage::writeItems(const QStringList& keys, std::function<void(const Write
     base.unchanged = int(remaining.size());
     m_session->run<ItemOutcomes>(
         this, tr("Write cams"),
-        [items](comm::CamConClient& client, comm::JobContext& job) -> Result<ItemOutcomes> {
+        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
             ItemOutcomes outcomes;
             int n = 0;
             for (const Item& item : items) {

@@ -3,6 +3,8 @@
 #include "device_session.h"
 #include "workspace.h"
 
+#include "comm/device/protocol_registry.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -39,8 +41,8 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     form->addRow(tr("Port:"), portRow);
 
     m_protocol = new QComboBox;
-    m_protocol->addItem(tr("Standard (point to point)"), int(comm::Framing::Standard));
-    m_protocol->addItem(tr("Multiuser (RS485 bus)"), int(comm::Framing::Multiuser));
+    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
+        m_protocol->addItem(protocolTitle(*info), info->id);
     form->addRow(tr("Protocol:"), m_protocol);
 
     m_baud = new QComboBox;
@@ -90,21 +92,22 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     // A rebuilt window (language switch) shows the line in use.
     if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying()) {
         setPort(m_session->connection().port);
-        m_protocol->setCurrentIndex(m_protocol->findData(int(m_session->link().framing)));
+        setProtocol(m_session->protocol().protocolId());
         m_baud->setCurrentText(QString::number(m_session->connection().serial.baud));
-        m_device->setValue(m_session->link().device);
-        m_pcNumber->setValue(m_session->link().pcNumber);
+        const QVariantMap numbers = m_session->protocol().toMap();
+        m_device->setValue(numbers.value(QStringLiteral("device")).toInt());
+        m_pcNumber->setValue(numbers.value(QStringLiteral("pcNumber"), 63).toInt());
     }
     connect(refresh, &QToolButton::clicked, this, &ConnectionPage::fillPorts);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
-        const bool multi = m_protocol->currentData().toInt() == int(comm::Framing::Multiuser);
-        m_baud->setCurrentText(multi ? QStringLiteral("38400") : QStringLiteral("9600"));
+        if (const comm::ProtocolInfo* info = currentProtocol())
+            m_baud->setCurrentText(QString::number(info->defaultSerial.baud));
         updateButtons();
     });
     connect(m_connect, &QPushButton::clicked, this, [this] {
         // Remembered: the next start connects here instead of the simulator.
         QSettings().setValue(QStringLiteral("connection/port"), connectionSettings().port);
-        m_session->connectTo(connectionSettings(), linkSettings());
+        m_session->connectTo(connectionSettings(), protocolSettings());
     });
     connect(m_disconnect, &QPushButton::clicked, m_session, &DeviceSession::disconnectFromDevice);
     connect(m_scan, &QPushButton::clicked, this, &ConnectionPage::scanBus);
@@ -144,8 +147,19 @@ void ConnectionPage::setPort(const QString& port) {
     }
 }
 
-void ConnectionPage::setFraming(comm::Framing framing) {
-    m_protocol->setCurrentIndex(m_protocol->findData(int(framing)));
+void ConnectionPage::setProtocol(const QString& id) {
+    const int index = m_protocol->findData(id);
+    if (index >= 0) m_protocol->setCurrentIndex(index);
+}
+
+const comm::ProtocolInfo* ConnectionPage::currentProtocol() const {
+    return comm::ProtocolRegistry::instance().find(m_protocol->currentData().toString());
+}
+
+QString ConnectionPage::protocolTitle(const comm::ProtocolInfo& info) {
+    if (info.id == QLatin1String("standard")) return tr("Standard (point to point)");
+    if (info.id == QLatin1String("multiuser")) return tr("Multiuser (RS485 bus)");
+    return info.title;
 }
 
 comm::ConnectionSettings ConnectionPage::connectionSettings() const {
@@ -155,16 +169,21 @@ comm::ConnectionSettings ConnectionPage::connectionSettings() const {
     settings.port = (index >= 0 && m_port->itemText(index) == m_port->currentText())
                         ? m_port->itemData(index).toString()
                         : m_port->currentText().trimmed();
+    if (const comm::ProtocolInfo* info = currentProtocol()) {
+        settings.serial = info->defaultSerial;
+        settings.protocol = info->id;
+    }
     settings.serial.baud = m_baud->currentData().toInt();
     return settings;
 }
 
-comm::LinkSettings ConnectionPage::linkSettings() const {
-    comm::LinkSettings link;
-    link.framing = comm::Framing(m_protocol->currentData().toInt());
-    link.device = m_device->value();
-    link.pcNumber = m_pcNumber->value();
-    return link;
+comm::ProtocolSettingsPtr ConnectionPage::protocolSettings() const {
+    const comm::ProtocolInfo* info = currentProtocol();
+    if (!info) return m_session->protocolSettings();
+    std::unique_ptr<comm::ProtocolSettings> settings = info->makeSettings();
+    settings->fromMap({{QStringLiteral("device"), m_device->value()},
+                       {QStringLiteral("pcNumber"), m_pcNumber->value()}});
+    return comm::ProtocolSettingsPtr(std::move(settings));
 }
 
 void ConnectionPage::updateButtons() {
@@ -180,11 +199,13 @@ void ConnectionPage::scanBus() {
     m_devices->clear();
     m_scan->setEnabled(false);
     Q_EMIT statusMessage(tr("Scanning the bus…"));
-    if (m_session->link().framing != comm::Framing::Multiuser) {
+    const comm::ProtocolInfo* info =
+        comm::ProtocolRegistry::instance().find(m_session->protocol().protocolId());
+    if (!info || !info->isBus) {
         // A point-to-point line has exactly one device: identify it.
         m_session->run<QList<int>>(
             this, tr("Identify device"),
-            [](comm::CamConClient& client, comm::JobContext&) -> Result<QList<int>> {
+            [](comm::CamConDevice& client, comm::JobContext&) -> Result<QList<int>> {
                 const auto info = client.readInfo();
                 if (!info) return info.error();
                 return QList<int>{info->deviceNumber};
@@ -194,8 +215,10 @@ void ConnectionPage::scanBus() {
     }
     m_session->run<QList<int>>(
         this, tr("Scan bus"),
-        [](comm::CamConClient& client, comm::JobContext& job) {
-            return client.scanBus(0, 63, 60,
+        [](comm::CamConDevice& device, comm::JobContext& job) -> Result<QList<int>> {
+            if (!device.has(comm::CamConCapability::BusScan))
+                return device.missing(comm::CamConCapability::BusScan);
+            return device.scanBus(0, 63,
                                   [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this](Result<QList<int>> devices) { showScanResult(devices); });

@@ -2,8 +2,8 @@
 
 #include "section_page.h"
 
+#include "comm/device/protocol_settings.h"
 #include "comm/transport/transport.h"
-#include "comm/camcon/ascii/ascii_link.h"
 
 class QComboBox;
 class QFormLayout;
@@ -12,6 +12,9 @@ class QPushButton;
 class QSpinBox;
 
 namespace cambench {
+namespace comm {
+struct ProtocolInfo;
+}
 
 class DeviceSession;
 class Workspace;
@@ -27,9 +30,10 @@ public:
     QString sectionTitle() const override { return tr("Connection"); }
 
     comm::ConnectionSettings connectionSettings() const;
-    comm::LinkSettings linkSettings() const;
+    comm::ProtocolSettingsPtr protocolSettings() const;
     void setPort(const QString& port);
-    void setFraming(comm::Framing framing);
+    // A ProtocolRegistry id: "standard", "multiuser", ...
+    void setProtocol(const QString& id);
 
     void scanBus();
 
@@ -39,6 +43,8 @@ Q_SIGNALS:
 
 private:
     void fillPorts();
+    const comm::ProtocolInfo* currentProtocol() const;
+    static QString protocolTitle(const comm::ProtocolInfo& info);
     void updateButtons();
     void showInfo();
     void showScanResult(const Result<QList<int>>& devices);

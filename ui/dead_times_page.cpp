@@ -88,7 +88,7 @@ void DeadTimesPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading dead times…"));
     m_session->run<OutputSettings>(
         this, tr("Read dead times"),
-        [outputs](comm::CamConClient& client, comm::JobContext& job) -> Result<OutputSettings> {
+        [outputs](comm::CamConDevice& client, comm::JobContext& job) -> Result<OutputSettings> {
             OutputSettings settings;
             auto deadTimes = client.readDeadTimes(outputs);
             if (!deadTimes) return deadTimes.error();
@@ -161,7 +161,7 @@ void DeadTimesPage::writeItems(const QStringList& keys,
     if (base.unchanged < 0) base.unchanged = 0;
     m_session->run<ItemOutcomes>(
         this, tr("Write dead times"),
-        [items](comm::CamConClient& client, comm::JobContext& job) -> Result<ItemOutcomes> {
+        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
             ItemOutcomes outcomes;
             int n = 0;
             for (const Item& item : items) {

@@ -2,13 +2,20 @@
 
 #include "shell_log.h"
 
+#include "comm/device/protocol_registry.h"
+
 namespace cambench {
 
-DeviceSession::DeviceSession(QObject* parent) : QObject(parent) {
+DeviceSession::DeviceSession(QObject* parent)
+    : QObject(parent),
+      m_protocol(comm::ProtocolRegistry::instance().all().value(0)
+                     ? comm::ProtocolSettingsPtr(
+                           comm::ProtocolRegistry::instance().all().value(0)->makeSettings())
+                     : nullptr) {
     m_retry.setInterval(2000);
     connect(&m_retry, &QTimer::timeout, this, [this] {
         qCInfo(shellLog) << "retrying lost connection to" << m_connection.port;
-        m_worker.connectTo(m_connection, m_link);
+        m_worker.connectTo(m_connection, m_protocol);
     });
     connect(&m_worker, &comm::CommWorker::connectionStateChanged, this,
             &DeviceSession::onStateChanged, Qt::QueuedConnection);
@@ -17,16 +24,16 @@ DeviceSession::DeviceSession(QObject* parent) : QObject(parent) {
 DeviceSession::~DeviceSession() { m_retry.stop(); }
 
 void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
-                              const comm::LinkSettings& link) {
+                              const comm::ProtocolSettingsPtr& protocol) {
     m_connection = connection;
-    m_link = link;
+    m_protocol = protocol;
     reconnect();
 }
 
 void DeviceSession::reconnect() {
     m_wantConnected = true;
     m_worker.cancelAll();
-    m_worker.connectTo(m_connection, m_link);
+    m_worker.connectTo(m_connection, m_protocol);
 }
 
 void DeviceSession::disconnectFromDevice() {
@@ -38,7 +45,9 @@ void DeviceSession::disconnectFromDevice() {
 }
 
 void DeviceSession::setDevice(int device) {
-    m_link.device = device;
+    std::unique_ptr<comm::ProtocolSettings> changed = m_protocol->clone();
+    changed->setDevice(device);
+    m_protocol = std::move(changed);
     m_worker.setLinkDevice(device);
 }
 

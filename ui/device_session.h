@@ -1,6 +1,7 @@
 #pragma once
 
-#include "comm/camcon/ascii/ascii_camcon.h"
+#include "comm/camcon/camcon_device.h"
+#include "comm/device/protocol_settings.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QObject>
@@ -22,10 +23,11 @@ public:
 
     comm::CommWorker& worker() { return m_worker; }
 
-    void connectTo(const comm::ConnectionSettings& connection, const comm::LinkSettings& link);
+    void connectTo(const comm::ConnectionSettings& connection,
+                   const comm::ProtocolSettingsPtr& protocol);
     void reconnect();  // with the last settings
     void disconnectFromDevice();
-    void setDevice(int device);  // Multiuser destination after a bus scan
+    void setDevice(int device);  // bus address after a bus scan
 
     comm::ConnectionState state() const { return m_state; }
     // Lost and trying to get the line back by itself.
@@ -34,14 +36,16 @@ public:
     QString stateText() const;  // translated, for the status bar
     QString lastMessage() const { return m_message; }
     const comm::ConnectionSettings& connection() const { return m_connection; }
-    const comm::LinkSettings& link() const { return m_link; }
+    // The protocol's settings of the last connect (never null).
+    const comm::ProtocolSettings& protocol() const { return *m_protocol; }
+    comm::ProtocolSettingsPtr protocolSettings() const { return m_protocol; }
 
     void setRetryInterval(int ms) { m_retry.setInterval(ms); }
 
     template <class T>
-    using Work = std::function<Result<T>(comm::CamConClient&, comm::JobContext&)>;
+    using Work = std::function<Result<T>(comm::CamConDevice&, comm::JobContext&)>;
 
-    // Runs `work` with a CamConClient on the worker thread's link; `done`
+    // Runs `work` with the connected CamCon on the worker thread; `done`
     // gets the result on `context`'s thread. The GUI never waits.
     template <class T>
     quint64 run(QObject* context, const QString& title, Work<T> work,
@@ -50,9 +54,10 @@ public:
                 const QString& pollKey = {}) {
         return m_worker.run<Result<T>>(
             context, priority, title,
-            [work = std::move(work)](comm::JobContext& job) {
-                comm::CamConClient client(job.link());
-                return work(client, job);
+            [work = std::move(work)](comm::JobContext& job) -> Result<T> {
+                Result<comm::CamConDevice*> device = job.family<comm::CamConDevice>();
+                if (!device) return device.error();
+                return work(**device, job);
             },
             std::move(done), pollKey);
     }
@@ -67,7 +72,7 @@ private:
 
     comm::CommWorker m_worker;
     comm::ConnectionSettings m_connection;
-    comm::LinkSettings m_link;
+    comm::ProtocolSettingsPtr m_protocol;
     comm::ConnectionState m_state = comm::ConnectionState::Disconnected;
     QString m_message;
     QTimer m_retry;

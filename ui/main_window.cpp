@@ -144,7 +144,7 @@ void MainWindow::createMenus() {
 
     QMenu* device = menuBar()->addMenu(tr("&Device"));
     device->addAction(tr("&Connect"), this, [this] {
-        m_session->connectTo(m_connection->connectionSettings(), m_connection->linkSettings());
+        m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
     });
     device->addAction(tr("&Disconnect"), m_session, &DeviceSession::disconnectFromDevice);
     device->addAction(tr("&Read everything"), this, [this] { readEverything(m_cams->editor()->currentProgram()); });
@@ -265,14 +265,14 @@ void MainWindow::updateConnection() {
 
 void MainWindow::connectAndLoad(int program) {
     m_pendingProgram = program;
-    m_session->connectTo(m_connection->connectionSettings(), m_connection->linkSettings());
+    m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
 }
 
 void MainWindow::readEverything(int program) {
     showMessage(tr("Reading the device…"));
     m_session->run<DeviceInfo>(
         this, tr("Read device identity"),
-        [](comm::CamConClient& client, comm::JobContext&) { return client.readInfo(); },
+        [](comm::CamConDevice& client, comm::JobContext&) { return client.readInfo(); },
         [this, program](Result<DeviceInfo> info) {
             if (!info) {
                 showMessage(tr("The device did not identify itself: %1").arg(info.error().message));

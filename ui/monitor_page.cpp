@@ -101,7 +101,7 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
         const int program = m_newProgram->value();
         m_session->run<Done>(
             this, tr("Select program"),
-            [program](comm::CamConClient& client, comm::JobContext&) { return client.selectProgram(program); },
+            [program](comm::CamConDevice& client, comm::JobContext&) { return client.selectProgram(program); },
             [this, program](Status status) {
                 Q_EMIT statusMessage(status ? tr("Program %1 is active.").arg(program)
                                             : tr("Program %1 not activated: %2")
@@ -112,7 +112,7 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     connect(m_reset, &QPushButton::clicked, this, [this] {
         m_session->run<Done>(
             this, tr("Reset error"),
-            [](comm::CamConClient& client, comm::JobContext&) { return client.resetError(); },
+            [](comm::CamConDevice& client, comm::JobContext&) { return client.resetError(); },
             [this](Status status) {
                 Q_EMIT statusMessage(status ? tr("Error reset sent.")
                                             : tr("Error not reset: %1").arg(status.error().message));
@@ -158,7 +158,7 @@ void MonitorPage::poll() {
     const int inputs = m_workspace->info().inputs;
     m_session->run<DeviceStatus>(
         this, tr("Monitor"),
-        [outputs, inputs](comm::CamConClient& client, comm::JobContext&) {
+        [outputs, inputs](comm::CamConDevice& client, comm::JobContext&) {
             return client.readStatus(outputs, inputs);
         },
         [this](Result<DeviceStatus> status) {

@@ -167,7 +167,7 @@ void PlcPage::readNetwork() {
     const int number = m_model->number();
     m_session->run<PlcNetwork>(
         this, tr("Read PLC network"),
-        [area, number](comm::CamConClient& client, comm::JobContext&) {
+        [area, number](comm::CamConDevice& client, comm::JobContext&) {
             return client.readPlcNetwork(area, number);
         },
         [this, area, number](Result<PlcNetwork> network) {
@@ -205,7 +205,7 @@ void PlcPage::writeItems(const QStringList& keys, std::function<void(const Write
                                     : int(keys.size() - items.size());
     m_session->run<ItemOutcomes>(
         this, tr("Write PLC networks"),
-        [items](comm::CamConClient& client, comm::JobContext& job) -> Result<ItemOutcomes> {
+        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
             ItemOutcomes outcomes;
             for (const auto& [key, network] : items) {
                 const Status status = job.cancelled() ? Status(Error::cancelled())

@@ -165,7 +165,7 @@ void SettingsPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading settings…"));
     m_session->run<SystemSettings>(
         this, tr("Read settings"),
-        [](comm::CamConClient& client, comm::JobContext&) { return client.readSettings(); },
+        [](comm::CamConDevice& client, comm::JobContext&) { return client.readSettings(); },
         [this](Result<SystemSettings> result) {
             if (!result) {
                 Q_EMIT statusMessage(tr("Reading settings failed: %1").arg(result.error().message));
@@ -215,15 +215,17 @@ void SettingsPage::writeItems(const QStringList& keys, std::function<void(const 
     }
     if (keys.isEmpty()) base.unchanged = int(m_fields.size() - changed.size());
     const QString label = tr("Setting %1");
+    const SystemSettings onDevice = m_workspace->deviceSettings();
     m_session->run<ItemOutcomes>(
         this, tr("Write settings"),
-        [items, label](comm::CamConClient& client, comm::JobContext& job) -> Result<ItemOutcomes> {
+        [items, label, onDevice](comm::CamConDevice& client,
+                                 comm::JobContext& job) -> Result<ItemOutcomes> {
             ItemOutcomes outcomes;
             int n = 0;
             for (const auto& item : items) {
                 job.progress(n++, items.size());
                 const Status status = job.cancelled() ? Status(Error::cancelled())
-                                                      : client.writeSettings(item.second);
+                                                      : client.writeSettings(item.second, onDevice);
                 outcomes.append({item.first, label.arg(item.first), status ? Error{} : status.error()});
             }
             return outcomes;

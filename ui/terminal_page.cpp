@@ -3,7 +3,6 @@
 #include "device_session.h"
 
 #include "comm/engine/traffic_log.h"
-#include "comm/camcon/ascii/traffic_mask.h"
 
 #include <QCheckBox>
 #include <QFileDialog>
@@ -95,19 +94,22 @@ void TerminalPage::send(const QString& command) {
                                       "letters and data, e.g. ?IFGWG."));
         return;
     }
-    const char kind = text.front().toLatin1();
-    const QByteArray body = text.mid(1).toLatin1();
+    const QByteArray request = text.toLatin1();
     m_replies->appendPlainText(QStringLiteral("> %1").arg(text));
-    m_session->worker().run<Result<QByteArray>>(
-        this, comm::JobPriority::User, tr("Terminal"),
-        [kind, body](comm::JobContext& job) { return job.link().raw(kind, body); },
+    m_session->run<QByteArray>(
+        this, tr("Terminal"),
+        [request](comm::CamConDevice& device, comm::JobContext&) -> Result<QByteArray> {
+            if (!device.has(comm::CamConCapability::Terminal))
+                return device.missing(comm::CamConCapability::Terminal);
+            return device.raw(request);
+        },
         [this](Result<QByteArray> reply) {
             if (!reply) {
                 m_replies->appendPlainText(tr("< error: %1").arg(reply.error().message));
                 return;
             }
-            // User numbers are secrets here too, not only in the log.
-            QByteArray shown = comm::maskSecrets(':' + reply.value(), false);
+            // The device has masked the user numbers already.
+            QByteArray shown = ':' + reply.value();
             for (char& c : shown) {
                 if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E) c = '.';
             }

@@ -179,7 +179,7 @@ void UsersPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading users…"));
     m_session->run<QList<User>>(
         this, tr("Read users"),
-        [](comm::CamConClient& client, comm::JobContext&) { return client.readUsers(); },
+        [](comm::CamConDevice& client, comm::JobContext&) { return client.readUsers(); },
         [this](Result<QList<User>> users) {
             if (!users) {
                 Q_EMIT statusMessage(tr("Reading users failed: %1").arg(users.error().message));
@@ -252,7 +252,7 @@ void UsersPage::writeItems(const QStringList& keys, std::function<void(const Wri
                                     : int(keys.size() - items.size());
     m_session->run<ItemOutcomes>(
         this, tr("Write users"),
-        [items](comm::CamConClient& client, comm::JobContext& job) -> Result<ItemOutcomes> {
+        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
             ItemOutcomes outcomes;
             for (const Item& item : items) {
                 const Status status = job.cancelled() ? Status(Error::cancelled())

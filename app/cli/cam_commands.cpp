@@ -10,7 +10,7 @@ namespace cambench::cli {
 
 namespace {
 
-using comm::CamConClient;
+using comm::CamConDevice;
 using comm::JobContext;
 
 constexpr int kMaxProgramNumber = 32767;  // 4 hex digits, manual 5.2.1.1
@@ -41,7 +41,7 @@ int readCams(CliSession& session, CommandArgs& args) {
     const int o = *output;
     const Result<Tracks> tracks = session.run<Tracks>(
         QStringLiteral("cams read"),
-        [p, o](CamConClient& client, JobContext& job) -> Result<Tracks> {
+        [p, o](CamConDevice& client, JobContext& job) -> Result<Tracks> {
             const Result<DeviceInfo> info = client.readInfo();
             if (!info) return info.error();
             if (const Status ok = checkProgram(p, *info); !ok) return ok.error();
@@ -89,7 +89,7 @@ int writeCams(CliSession& session, CommandArgs& args) {
     const Tracks target = *tracks;
     const Status written = session.run<Done>(
         QStringLiteral("cams write"),
-        [p, file, target](CamConClient& client, JobContext& job) -> Status {
+        [p, file, target](CamConDevice& client, JobContext& job) -> Status {
             // The device's limits decide whether the file fits; nothing is
             // written unless every track does.
             const Result<DeviceInfo> info = client.readInfo();

@@ -20,9 +20,32 @@ bool matchesOption(const QString& arg, const QString& name, QString* inlineValue
 
 }  // namespace
 
+const comm::ProtocolInfo& GlobalOptions::protocolInfo() const {
+    const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(protocol);
+    Q_ASSERT(info);
+    return *info;
+}
+
 int GlobalOptions::effectiveBaud() const {
     if (baud > 0) return baud;
-    return framing == comm::Framing::Multiuser ? 38400 : 9600;
+    return protocolInfo().defaultSerial.baud;
+}
+
+comm::ConnectionSettings GlobalOptions::connection() const {
+    comm::ConnectionSettings connection;
+    connection.port = port;
+    connection.serial = protocolInfo().defaultSerial;
+    connection.serial.baud = effectiveBaud();
+    connection.protocol = protocolInfo().id;
+    return connection;
+}
+
+comm::ProtocolSettingsPtr GlobalOptions::protocolSettings() const {
+    std::unique_ptr<comm::ProtocolSettings> settings = protocolInfo().makeSettings();
+    settings->fromMap({{QStringLiteral("device"), device},
+                       {QStringLiteral("pcNumber"), pcNumber},
+                       {QStringLiteral("timeoutMs"), timeoutMs}});
+    return comm::ProtocolSettingsPtr(std::move(settings));
 }
 
 Result<int> parseIntArgument(const QString& text, const QString& what, int min, int max) {
@@ -74,15 +97,12 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         if (name == QLatin1String("--port")) {
             options.port = *value;
         } else if (name == QLatin1String("--protocol")) {
-            if (*value == QLatin1String("standard")) {
-                options.framing = comm::Framing::Standard;
-            } else if (*value == QLatin1String("multiuser")) {
-                options.framing = comm::Framing::Multiuser;
-            } else {
-                return usageError(
-                    QStringLiteral("--protocol must be \"standard\" or \"multiuser\", not \"%1\"")
-                        .arg(*value));
+            const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(*value);
+            if (!info) {
+                return usageError(QStringLiteral("--protocol must be one of %1, not \"%2\"")
+                                      .arg(comm::ProtocolRegistry::instance().idList(), *value));
             }
+            options.protocol = info->id;
         } else if (name == QLatin1String("--log")) {
             options.logFile = *value;
         } else {
@@ -170,7 +190,7 @@ QString usageText() {
         "  --baud N      line speed; overrides the protocol's default\n"
         "  --device N    Multiuser device number 0..63 (default 0)\n"
         "  --pc-number N Multiuser number of this PC 0..63 (default 63)\n"
-        "  --timeout MS  reply timeout per attempt (default 1000)\n"
+        "  --timeout MS  reply timeout per attempt (default: derived from the baud rate)\n"
         "  --log FILE    write the traffic (hex and ASCII, user numbers masked) to FILE\n"
         "\n"
         "Commands:\n"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/camcon/ascii/frame.h"
+#include "comm/device/protocol_registry.h"
 #include "model/result.h"
 
 #include <QString>
@@ -11,17 +11,22 @@ namespace cambench::cli {
 // The options before COMMAND (see usageText()).
 struct GlobalOptions {
     QString port = QStringLiteral("sim");
-    comm::Framing framing = comm::Framing::Standard;
+    QString protocol = QStringLiteral("standard");  // a ProtocolRegistry id
     int baud = 0;  // 0 = the protocol's default
     int device = 0;
     int pcNumber = 63;
-    int timeoutMs = 1000;
-    bool timeoutGiven = false;  // scan uses a short timeout unless --timeout is given
+    int timeoutMs = 0;  // 0 = derived from the line
+    bool timeoutGiven = false;
     QString logFile;
     QString command;
     QStringList commandArgs;  // everything after COMMAND
 
+    const comm::ProtocolInfo& protocolInfo() const;  // parseGlobalOptions checked the id
     int effectiveBaud() const;
+    bool isBus() const { return protocolInfo().isBus; }
+    // The line and the protocol settings these options describe.
+    comm::ConnectionSettings connection() const;
+    comm::ProtocolSettingsPtr protocolSettings() const;
 };
 
 // Parses argv (without the program name). Fails with ErrorKind::Usage.

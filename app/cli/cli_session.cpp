@@ -29,7 +29,7 @@ CliSession::~CliSession() {
 }
 
 QString CliSession::where() const {
-    if (m_options.framing == comm::Framing::Multiuser) {
+    if (m_options.isBus()) {
         return QStringLiteral("%1 (device %2)").arg(m_options.port).arg(m_options.device);
     }
     return m_options.port;
@@ -37,14 +37,6 @@ QString CliSession::where() const {
 
 Status CliSession::ensureConnected() {
     if (m_connection) return *m_connection;
-    comm::ConnectionSettings connection;
-    connection.port = m_options.port;
-    connection.serial.baud = m_options.effectiveBaud();
-    comm::LinkSettings link;
-    link.framing = m_options.framing;
-    link.device = m_options.device;
-    link.pcNumber = m_options.pcNumber;
-    link.timeoutMs = m_options.timeoutMs;
 
     QEventLoop loop;
     bool finished = false;
@@ -68,7 +60,7 @@ Status CliSession::ensureConnected() {
                          }
                      });
     QTimer::singleShot(kConnectGuardMs, &loop, &QEventLoop::quit);
-    m_worker.connectTo(connection, link);
+    m_worker.connectTo(m_options.connection(), m_options.protocolSettings());
     if (!finished) loop.exec();  // the worker may have reported synchronously
     m_connection = outcome;
     if (m_log && outcome.ok()) m_log->note(QStringLiteral("connected to %1").arg(where()));

@@ -4,7 +4,7 @@
 #include "progress_bar.h"
 #include "traffic_log_file.h"
 
-#include "comm/camcon/ascii/ascii_camcon.h"
+#include "comm/camcon/camcon_device.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QEventLoop>
@@ -30,7 +30,7 @@ public:
     void setShowProgress(bool show) { m_showProgress = show; }
 
     template <class T>
-    using Work = std::function<Result<T>(comm::CamConClient&, comm::JobContext&)>;
+    using Work = std::function<Result<T>(comm::CamConDevice&, comm::JobContext&)>;
 
     // Connects on first use, runs `work` as one job and returns its result.
     template <class T>
@@ -59,9 +59,10 @@ Result<T> CliSession::run(const QString& title, Work<T> work) {
     std::optional<Result<T>> result;
     m_worker.run<Result<T>>(
         &m_context, comm::JobPriority::User, title,
-        [work = std::move(work)](comm::JobContext& job) {
-            comm::CamConClient client(job.link());
-            return work(client, job);
+        [work = std::move(work)](comm::JobContext& job) -> Result<T> {
+            Result<comm::CamConDevice*> device = job.family<comm::CamConDevice>();
+            if (!device) return device.error();
+            return work(**device, job);
         },
         [&](Result<T> value) {
             result.emplace(std::move(value));

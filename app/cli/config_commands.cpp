@@ -16,7 +16,7 @@ namespace cambench::cli {
 
 namespace {
 
-using comm::CamConClient;
+using comm::CamConDevice;
 using comm::JobContext;
 
 const JsonFileType kSettingsFile{"cambench-settings", 1, "settings file"};
@@ -102,7 +102,7 @@ int readSettings(CliSession& session, CommandArgs& args) {
         QStringList skipped;
     };
     const Result<Read> read = session.run<Read>(
-        QStringLiteral("settings read"), [](CamConClient& client, JobContext&) -> Result<Read> {
+        QStringLiteral("settings read"), [](CamConDevice& client, JobContext&) -> Result<Read> {
             Read result;
             Result<SystemSettings> settings = client.readSettings(&result.skipped);
             if (!settings) return settings.error();
@@ -128,7 +128,7 @@ int writeSettings(CliSession& session, CommandArgs& args) {
     const SystemSettings wanted = *settings;
     const Status written =
         session.run<Done>(QStringLiteral("settings write"),
-                          [file, wanted](CamConClient& client, JobContext&) -> Status {
+                          [file, wanted](CamConDevice& client, JobContext&) -> Status {
                               // Only values that differ from the device are written, so only
                               // they must pass validation (a device may hold odd defaults).
                               const Result<SystemSettings> current = client.readSettings();
@@ -145,7 +145,8 @@ int writeSettings(CliSession& session, CommandArgs& args) {
                               }
                               const QStringList problems = validateSettings(changed);
                               if (!problems.isEmpty()) return invalidFileError(file, problems);
-                              return changed.isEmpty() ? success() : client.writeSettings(changed);
+                              return changed.isEmpty() ? success()
+                                                       : client.writeSettings(changed, *current);
                           });
     return written ? ExitOk : reportError(written.error());
 }
@@ -213,7 +214,7 @@ int readPlc(CliSession& session, CommandArgs& args) {
     session.setShowProgress(true);
     const Result<QJsonArray> networks = session.run<QJsonArray>(
         QStringLiteral("plc read"),
-        [](CamConClient& client, JobContext& job) -> Result<QJsonArray> {
+        [](CamConDevice& client, JobContext& job) -> Result<QJsonArray> {
             QList<int> counts;
             int total = 0;
             for (const PlcArea& area : kPlcAreas) {
@@ -263,7 +264,7 @@ int writePlc(CliSession& session, CommandArgs& args) {
     if (!problems.isEmpty()) return reportError(invalidFileError(*path, problems));
     session.setShowProgress(true);
     const Status written = session.run<Done>(
-        QStringLiteral("plc write"), [networks](CamConClient& client, JobContext& job) -> Status {
+        QStringLiteral("plc write"), [networks](CamConDevice& client, JobContext& job) -> Status {
             for (int i = 0; i < networks.size(); ++i) {
                 job.progress(i, networks.size(), QStringLiteral("writing PLC networks"));
                 if (const Status ok = client.writePlcNetwork(networks.at(i)); !ok) return ok;

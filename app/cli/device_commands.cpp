@@ -12,12 +12,11 @@ namespace cambench::cli {
 
 namespace {
 
-using comm::CamConClient;
+using comm::CamConDevice;
 using comm::JobContext;
 
 // Device numbers answer within a few milliseconds; without --timeout a scan
 // of all 64 numbers stays short.
-constexpr int kScanTimeoutMs = 100;
 
 // The device status tables list every possible output and input; only the
 // ones that are on are printed.
@@ -72,7 +71,7 @@ int runInfo(CliSession& session, CommandArgs& args) {
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<DeviceInfo> info = session.run<DeviceInfo>(
         QStringLiteral("info"),
-        [](CamConClient& client, JobContext&) { return client.readInfo(); });
+        [](CamConDevice& client, JobContext&) { return client.readInfo(); });
     if (!info) return reportError(info.error());
     if (json) return printJson(QJsonDocument(deviceInfoJson(*info)));
     printOut(keyValueLines(deviceInfoEntries(*info)));
@@ -83,7 +82,7 @@ int runStatus(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<DeviceStatus> status =
-        session.run<DeviceStatus>(QStringLiteral("status"), [](CamConClient& client, JobContext&) {
+        session.run<DeviceStatus>(QStringLiteral("status"), [](CamConDevice& client, JobContext&) {
             return client.readStatus(kMaxPoints, kMaxPoints);
         });
     if (!status) return reportError(status.error());
@@ -117,16 +116,16 @@ int runStatus(CliSession& session, CommandArgs& args) {
 int runScan(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    if (session.options().framing != comm::Framing::Multiuser) {
+    if (!session.options().isBus()) {
         return reportError(Error::usage(
-            QStringLiteral("scan needs the Multiuser protocol; add --protocol multiuser")));
+            QStringLiteral("scan needs a bus protocol; add --protocol multiuser")));
     }
-    const int timeoutMs =
-        session.options().timeoutGiven ? session.options().timeoutMs : kScanTimeoutMs;
     session.setShowProgress(true);
     const Result<QList<int>> found = session.run<QList<int>>(
-        QStringLiteral("scan"), [timeoutMs](CamConClient& client, JobContext& job) {
-            return client.scanBus(0, 63, timeoutMs, [&job](qint64 done, qint64 total) {
+        QStringLiteral("scan"), [](CamConDevice& device, JobContext& job) -> Result<QList<int>> {
+            if (!device.has(comm::CamConCapability::BusScan))
+                return device.missing(comm::CamConCapability::BusScan);
+            return device.scanBus(0, 63, [&job](qint64 done, qint64 total) {
                 job.progress(done, total, QStringLiteral("scanning"));
             });
         });
@@ -149,11 +148,12 @@ int runRaw(CliSession& session, CommandArgs& args) {
             QStringLiteral("raw needs a command that starts with '?' or '!', such as \"?IFGWG\"; "
                            "the checksum is added")));
     }
-    const char kind = bytes.at(0);
-    const QByteArray body = bytes.mid(1);
     const Result<QByteArray> reply = session.run<QByteArray>(
-        QStringLiteral("raw"),
-        [kind, body](CamConClient&, JobContext& job) { return job.link().raw(kind, body); });
+        QStringLiteral("raw"), [bytes](CamConDevice& device, JobContext&) -> Result<QByteArray> {
+            if (!device.has(comm::CamConCapability::Terminal))
+                return device.missing(comm::CamConCapability::Terminal);
+            return device.raw(bytes);
+        });
     if (!reply) return reportError(reply.error());
     printOut(printableBytes(*reply) + u'\n');
     return ExitOk;
@@ -165,7 +165,7 @@ int runUsers(CliSession& session, CommandArgs& args) {
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<QList<User>> users = session.run<QList<User>>(
         QStringLiteral("users"),
-        [](CamConClient& client, JobContext&) { return client.readUsers(); });
+        [](CamConDevice& client, JobContext&) { return client.readUsers(); });
     if (!users) return reportError(users.error());
     QString text;
     for (const User& user : *users) {

@@ -11,7 +11,7 @@ namespace cambench::cli {
 
 namespace {
 
-using comm::CamConClient;
+using comm::CamConDevice;
 using comm::JobContext;
 
 comm::ProgressFn reporter(JobContext& job, const QString& text) {
@@ -20,7 +20,7 @@ comm::ProgressFn reporter(JobContext& job, const QString& text) {
 
 Result<EepromImage> backupJob(CliSession& session, const QString& title) {
     session.setShowProgress(true);
-    return session.run<EepromImage>(title, [title](CamConClient& client, JobContext& job) {
+    return session.run<EepromImage>(title, [title](CamConDevice& client, JobContext& job) {
         return client.backup(reporter(job, title));
     });
 }
@@ -82,7 +82,7 @@ int runRestore(CliSession& session, CommandArgs& args) {
 
     const Result<DeviceInfo> device = session.run<DeviceInfo>(
         QStringLiteral("identify"),
-        [](CamConClient& client, JobContext&) { return client.readInfo(); });
+        [](CamConDevice& client, JobContext&) { return client.readInfo(); });
     if (!device) return reportError(device.error());
     const QStringList mismatch = identityMismatch(image->device, *device);
     if (!mismatch.isEmpty() && !force) {
@@ -111,7 +111,7 @@ int runRestore(CliSession& session, CommandArgs& args) {
 
     const EepromImage blocks = *image;
     const Status restored = session.run<Done>(
-        QStringLiteral("restore"), [blocks](CamConClient& client, JobContext& job) {
+        QStringLiteral("restore"), [blocks](CamConDevice& client, JobContext& job) {
             return client.restore(blocks, reporter(job, QStringLiteral("restore")));
         });
     if (!restored) {

@@ -1,3 +1,4 @@
+#include "app/registry/builtin_registry.h"
 #include "cli_options.h"
 #include "cli_output.h"
 #include "cli_session.h"
@@ -13,6 +14,7 @@ using namespace cambench;
 using namespace cambench::cli;
 
 int main(int argc, char* argv[]) {
+    cambench::registerBuiltins();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));

@@ -22,4 +22,4 @@ add_executable(cambench-cli
   cli/config_commands.cpp
   cli/eeprom_commands.cpp
 )
-target_link_libraries(cambench-cli PRIVATE cambench_comm cambench_model Qt6::Core)
+target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_comm cambench_model Qt6::Core)

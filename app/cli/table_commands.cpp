@@ -10,7 +10,7 @@ namespace cambench::cli {
 
 namespace {
 
-using comm::CamConClient;
+using comm::CamConDevice;
 using comm::JobContext;
 
 // `read [-o FILE]`: runs `read` and writes what `toCsv` makes of it.
@@ -33,7 +33,7 @@ template <class T>
 int writeTable(CliSession& session, CommandArgs& args, const QString& title,
                Result<T> (*load)(const QString&),
                QStringList (*validate)(const T&, const DeviceInfo&),
-               std::function<Status(CamConClient&, const T&)> write) {
+               std::function<Status(CamConDevice&, const T&)> write) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a CSV FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
@@ -42,7 +42,7 @@ int writeTable(CliSession& session, CommandArgs& args, const QString& title,
     const QString file = *path;
     const T data = *table;
     const Status written = session.run<Done>(
-        title, [file, data, validate, write](CamConClient& client, JobContext&) -> Status {
+        title, [file, data, validate, write](CamConDevice& client, JobContext&) -> Status {
             const Result<DeviceInfo> info = client.readInfo();
             if (!info) return info.error();
             const QStringList problems = validate(data, *info);
@@ -52,20 +52,20 @@ int writeTable(CliSession& session, CommandArgs& args, const QString& title,
     return written ? ExitOk : reportError(written.error());
 }
 
-Result<DeadTimes> readAllDeadTimes(CamConClient& client, JobContext&) {
+Result<DeadTimes> readAllDeadTimes(CamConDevice& client, JobContext&) {
     const Result<DeviceInfo> info = client.readInfo();
     if (!info) return info.error();
     return client.readDeadTimes(info->deadTimeOutputs);
 }
 
-Status writeAllDeadTimes(CamConClient& client, const DeadTimes& deadTimes) {
+Status writeAllDeadTimes(CamConDevice& client, const DeadTimes& deadTimes) {
     for (auto it = deadTimes.begin(); it != deadTimes.end(); ++it) {
         if (const Status ok = client.writeDeadTime(it.key(), it.value()); !ok) return ok;
     }
     return success();
 }
 
-Result<Names> readAllNames(CamConClient& client, JobContext& job) {
+Result<Names> readAllNames(CamConDevice& client, JobContext& job) {
     const Result<DeviceInfo> info = client.readInfo();
     if (!info) return info.error();
     Names names;
@@ -85,7 +85,7 @@ Result<Names> readAllNames(CamConClient& client, JobContext& job) {
     return names;
 }
 
-Status writeAllNames(CamConClient& client, const Names& names) {
+Status writeAllNames(CamConDevice& client, const Names& names) {
     for (auto it = names.outputs.begin(); it != names.outputs.end(); ++it) {
         if (const Status ok = client.writeOutputName(it.key(), it.value()); !ok) return ok;
     }

@@ -1,3 +1,4 @@
+#include "app/registry/builtin_registry.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/screenshot_tour.h"
@@ -11,6 +12,7 @@
 #include <cstdio>
 
 int main(int argc, char* argv[]) {
+    cambench::registerBuiltins();
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("CamBench"));
     QApplication::setApplicationName(QStringLiteral("CamBench"));

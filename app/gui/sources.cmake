@@ -1,3 +1,3 @@
 # The desktop application: main() only wires the libraries together.
 add_executable(cambench gui/main.cpp)
-target_link_libraries(cambench PRIVATE cambench_ui)
+target_link_libraries(cambench PRIVATE cambench_ui cambench_registry)

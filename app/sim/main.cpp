@@ -1,6 +1,7 @@
 // cambench-sim: a simulated CamCon on a pseudo-terminal (default) or a TCP
 // port, for the tool, its tests and demos without hardware.
 
+#include "app/registry/builtin_registry.h"
 #include "signal_quitter.h"
 
 #include "comm/sim/sim_demo.h"
@@ -150,6 +151,7 @@ void addOptions(QCommandLineParser& parser) {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+    cambench::registerBuiltins();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));

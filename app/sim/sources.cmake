@@ -4,4 +4,4 @@ add_executable(cambench-sim
   sim/signal_quitter.cpp
   sim/signal_quitter.h
 )
-target_link_libraries(cambench-sim PRIVATE cambench_comm)
+target_link_libraries(cambench-sim PRIVATE cambench_registry cambench_sim)

@@ -65,10 +65,25 @@ QString SimTransport::description() const {
 }
 
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
-                                                    const SerialSettings& serial) {
-    Result<SimPortConfig> config = parseSimPort(port, serial);
-    if (!config) return config.error();
-    return std::unique_ptr<Transport>(std::make_unique<SimTransport>(*config));
+                                                    const SerialSettings& serial,
+                                                    const QString& protocol) {
+    Result<SimPortConfig> parsed = parseSimPort(port, serial);
+    if (!parsed) return parsed.error();
+    SimPortConfig config = *parsed;
+    // Unless the port names a framing, the simulated device speaks the
+    // protocol the PC connects with.
+    if (!config.framing && protocol == QLatin1String("multiuser"))
+        config.framing = Framing::Multiuser;
+    if (!config.framing && protocol == QLatin1String("standard") && config.devices.size() == 1)
+        config.framing = Framing::Standard;
+    return std::unique_ptr<Transport>(std::make_unique<SimTransport>(config));
+}
+
+void registerSimTransport(TransportRegistry& registry) {
+    registry.add({QStringLiteral("sim"), isSimPort, [](const ConnectionSettings& connection) {
+                      return makeSimTransport(connection.port, connection.serial,
+                                              connection.protocol);
+                  }});
 }
 
 }  // namespace cambench::comm

@@ -4,7 +4,7 @@
 #include "sim_pacer.h"
 #include "sim_port_config.h"
 
-#include "comm/transport/transport.h"
+#include "comm/transport/transport_registry.h"
 
 #include <QElapsedTimer>
 
@@ -41,8 +41,13 @@ private:
     bool m_open = false;
 };
 
-// "sim" or "sim:key=value;..." (see parseSimPort) as a Transport.
+// "sim" or "sim:key=value;..." (see parseSimPort) as a Transport. The
+// device speaks `protocol` (a registry id) unless the port names a framing.
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
-                                                    const SerialSettings& serial);
+                                                    const SerialSettings& serial,
+                                                    const QString& protocol = {});
+
+// Adds "sim" and "sim:..." to `registry`.
+void registerSimTransport(TransportRegistry& registry);
 
 }  // namespace cambench::comm

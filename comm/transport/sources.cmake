@@ -6,6 +6,6 @@ target_sources(cambench_comm PRIVATE
   transport/serial_transport.cpp
   transport/tcp_transport.h
   transport/tcp_transport.cpp
-  transport/transport_factory.h
-  transport/transport_factory.cpp
+  transport/transport_registry.h
+  transport/transport_registry.cpp
 )

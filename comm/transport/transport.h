@@ -25,6 +25,9 @@ struct SerialSettings {
 struct ConnectionSettings {
     QString port = QStringLiteral("sim");
     SerialSettings serial;
+    // The protocol id the PC speaks ("standard", "3964r-n96"): a transport
+    // ignores it, but a simulated device on the far side answers in it.
+    QString protocol;
 };
 
 // A byte pipe to the device, used only from the worker thread, with a

@@ -63,9 +63,10 @@ CommWorker::~CommWorker() {
     connect(thread, &QThread::finished, thread, &QObject::deleteLater);
 }
 
-void CommWorker::connectTo(const ConnectionSettings& connection, const LinkSettings& link) {
+void CommWorker::connectTo(const ConnectionSettings& connection,
+                           const ProtocolSettingsPtr& protocol) {
     WorkerCore* core = d->core;
-    d->post([core, connection, link] { core->connectTo(connection, link); });
+    d->post([core, connection, protocol] { core->connectTo(connection, protocol); });
 }
 
 void CommWorker::disconnectFromDevice() {

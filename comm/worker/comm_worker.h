@@ -1,7 +1,8 @@
 #pragma once
 
 #include "job.h"
-#include "comm/camcon/ascii/ascii_link.h"
+#include "comm/device/protocol_settings.h"
+#include "comm/engine/traffic_entry.h"
 #include "comm/transport/transport.h"
 
 #include <QObject>
@@ -34,11 +35,11 @@ public:
 
     using JobFn = std::function<void(JobContext&)>;
 
-    // Opens the transport for `connection` (closing any open one). Emits
-    // connectionStateChanged. `link` carries framing, device, timeouts.
-    void connectTo(const ConnectionSettings& connection, const LinkSettings& link);
+    // Opens the transport for `connection` (closing any open one) and the
+    // device connection of `protocol` over it. Emits connectionStateChanged.
+    void connectTo(const ConnectionSettings& connection, const ProtocolSettingsPtr& protocol);
     void disconnectFromDevice();
-    void setLinkDevice(int device);  // Multiuser destination for later jobs
+    void setLinkDevice(int device);  // bus address for later jobs
 
     // Queues `fn`; returns the job id. `pollKey` (Poll jobs only) collapses
     // repeated polls. If the link is not connected the job still runs and

@@ -22,6 +22,8 @@ public:
     // A transport is attached but has closed itself (port gone, peer closed).
     bool lineLost() const { return m_inner && !m_inner->isOpen(); }
     QString lossMessage() const;
+    // Why calls fail while no transport is attached.
+    QString reason() const { return m_reason; }
 
     Status open() override;
     void close() override;

@@ -2,31 +2,38 @@
 
 #include "worker_logging.h"
 
-#include "comm/transport/transport_factory.h"
+#include "comm/device/protocol_registry.h"
+#include "comm/transport/transport_registry.h"
 
 namespace cambench::comm {
 
-WorkerCore::WorkerCore(std::shared_ptr<JobQueue> queue) : m_queue(std::move(queue)) {
-    makeLink(LinkSettings{});
-}
+WorkerCore::WorkerCore(std::shared_ptr<JobQueue> queue) : m_queue(std::move(queue)) {}
 
 WorkerCore::~WorkerCore() = default;
-
-void WorkerCore::makeLink(const LinkSettings& settings) {
-    m_link = std::make_unique<ProtocolLink>(m_line, settings);
-    m_link->setTrafficSink([this](const TrafficEntry& entry) { Q_EMIT traffic(entry); });
-}
 
 void WorkerCore::setState(ConnectionState state, const QString& message) {
     m_state = state;
     Q_EMIT stateChanged(state, message);
 }
 
-void WorkerCore::connectTo(const ConnectionSettings& connection, const LinkSettings& link) {
+void WorkerCore::connectTo(const ConnectionSettings& connection,
+                           const ProtocolSettingsPtr& protocol) {
+    m_device.reset();
     m_line.detach(QStringLiteral("not connected: connecting to %1").arg(connection.port));
     setState(ConnectionState::Connecting, connection.port);
-    Result<std::unique_ptr<Transport>> transport = makeTransport(connection);
-    Status opened = transport ? (*transport)->open() : Status(transport.error());
+    const ProtocolInfo* info =
+        protocol ? ProtocolRegistry::instance().find(protocol->protocolId()) : nullptr;
+    Status opened = success();
+    if (!info) {
+        opened = Error::usage(QStringLiteral("unknown protocol \"%1\"; known: %2")
+                                  .arg(protocol ? protocol->protocolId() : QString(),
+                                       ProtocolRegistry::instance().idList()));
+    }
+    ConnectionSettings line = connection;
+    if (info) line.protocol = info->id;
+    Result<std::unique_ptr<Transport>> transport =
+        opened ? makeTransport(line) : Result<std::unique_ptr<Transport>>(opened.error());
+    if (opened) opened = transport ? (*transport)->open() : Status(transport.error());
     if (!opened) {
         qCWarning(commWorkerLog) << "cannot connect:" << opened.error().message;
         m_line.detach(QStringLiteral("not connected: %1").arg(opened.error().message));
@@ -35,7 +42,15 @@ void WorkerCore::connectTo(const ConnectionSettings& connection, const LinkSetti
     }
     const QString description = (*transport)->description();
     m_line.attach(std::move(transport.value()));
-    makeLink(link);
+    Result<std::unique_ptr<DeviceConnection>> device =
+        info->connect(m_line, *protocol, lineTimingFor(connection.serial));
+    if (!device) {
+        m_line.detach(QStringLiteral("not connected: %1").arg(device.error().message));
+        setState(ConnectionState::Disconnected, device.error().message);
+        return;
+    }
+    m_device = std::move(device).value();
+    m_device->engine().setTrafficSink([this](const TrafficEntry& entry) { Q_EMIT traffic(entry); });
     qCInfo(commWorkerLog) << "connected to" << description;
     setState(ConnectionState::Connected, description);
 }
@@ -47,7 +62,7 @@ void WorkerCore::disconnectFromDevice() {
 }
 
 void WorkerCore::setLinkDevice(int device) {
-    m_link->setDevice(device);
+    if (m_device) m_device->setDevice(device);
 }
 
 void WorkerCore::checkLine() {
@@ -64,13 +79,13 @@ void WorkerCore::runNextJob() {
     const quint64 id = job->id;
     qCDebug(commWorkerLog) << "job" << id << "started:" << job->title;
     Q_EMIT jobStarted(id, job->title);
-    m_link->setCancelFlag(job->cancel.get());
-    JobContext context(*m_link, *job->cancel,
+    if (m_device) m_device->engine().setCancelFlag(job->cancel.get());
+    JobContext context(m_device.get(), m_line.reason(), *job->cancel,
                        [this, id](qint64 done, qint64 total, const QString& text) {
                            Q_EMIT jobProgress(id, done, total, text);
                        });
     job->fn(context);
-    m_link->setCancelFlag(nullptr);
+    if (m_device) m_device->engine().setCancelFlag(nullptr);
     m_queue->finishRunning();
     qCDebug(commWorkerLog) << "job" << id << "finished";
     Q_EMIT jobFinished(id);

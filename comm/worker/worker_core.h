@@ -19,7 +19,7 @@ public:
     explicit WorkerCore(std::shared_ptr<JobQueue> queue);
     ~WorkerCore() override;
 
-    void connectTo(const ConnectionSettings& connection, const LinkSettings& link);
+    void connectTo(const ConnectionSettings& connection, const ProtocolSettingsPtr& protocol);
     void disconnectFromDevice();
     void setLinkDevice(int device);
     // Runs the next queued job, if any.
@@ -33,13 +33,12 @@ Q_SIGNALS:
     void traffic(const cambench::comm::TrafficEntry& entry);
 
 private:
-    void makeLink(const LinkSettings& settings);
     void setState(ConnectionState state, const QString& message);
     void checkLine();
 
     std::shared_ptr<JobQueue> m_queue;
     GuardedTransport m_line;
-    std::unique_ptr<ProtocolLink> m_link;
+    std::unique_ptr<DeviceConnection> m_device;
     ConnectionState m_state = ConnectionState::Disconnected;
 };
 

@@ -2,7 +2,7 @@
 # real cambench-cli against the real cambench-sim (paths relative to tests/).
 cambench_add_test(tst_operations_camcon_client
   SOURCES e2e/tst_camcon_client.cpp
-  LIBS cambench_comm)
+  LIBS cambench_sim)
 
 # The end-to-end tests start both executables as subprocesses.
 function(cambench_add_e2e_test name)

@@ -1,4 +1,4 @@
-// CamConClient against the in-process simulator: no subprocess, no worker.
+// The ASCII CamCon against the in-process simulator: no subprocess, no worker.
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/camcon/ascii/settings_commands.h"
@@ -30,14 +30,14 @@ struct Bench {
         settings.device = devices.first();
         settings.timeoutMs = 500;
         settings.longTimeoutMs = 5000;
-        link = std::make_unique<ProtocolLink>(*transport, settings);
-        client = std::make_unique<CamConClient>(*link);
+        link = std::make_unique<AsciiLink>(*transport, settings);
+        client = std::make_unique<AsciiCamCon>(*link);
     }
     SimDevice& device(int number = 0) { return *transport->line().device(number); }
 
     std::unique_ptr<SimTransport> transport;
-    std::unique_ptr<ProtocolLink> link;
-    std::unique_ptr<CamConClient> client;
+    std::unique_ptr<AsciiLink> link;
+    std::unique_ptr<AsciiCamCon> client;
 };
 
 Track track(int output, QList<Cam> cams) {
@@ -49,7 +49,7 @@ Track track(int output, QList<Cam> cams) {
 
 }  // namespace
 
-class TestCamConClient : public QObject {
+class TestAsciiCamCon : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase();
@@ -72,14 +72,14 @@ private Q_SLOTS:
     void specialEncoderPageWriteSelectsItsType();
 };
 
-void TestCamConClient::initTestCase() {
+void TestAsciiCamCon::initTestCase() {
     // The scan's expected timeouts would flood the output.
     QLoggingCategory::setFilterRules(
         QStringLiteral("cambench.*.debug=false\n"
                        "cambench.comm.link.warning=false"));
 }
 
-void TestCamConClient::readInfoReportsTheDeviceProfile() {
+void TestAsciiCamCon::readInfoReportsTheDeviceProfile() {
     Bench bench;
     const Result<DeviceInfo> info = bench.client->readInfo();
     QVERIFY2(info.ok(), qPrintable(info.error().message));
@@ -93,7 +93,7 @@ void TestCamConClient::readInfoReportsTheDeviceProfile() {
     QCOMPARE(info->maxDeadTime, profile.maxDeadTime);
 }
 
-void TestCamConClient::writeTrackThenReadTrackGivesTheTarget() {
+void TestAsciiCamCon::writeTrackThenReadTrackGivesTheTarget() {
     Bench bench;
     const Track target = track(3, {{10, 20}, {100, 180}, {300, 350}});
     const Status written = bench.client->writeTrack(2, target);
@@ -103,7 +103,7 @@ void TestCamConClient::writeTrackThenReadTrackGivesTheTarget() {
     QCOMPARE(read->cams, target.cams);
 }
 
-void TestCamConClient::writeTrackReplacesOverlappingCamsByDeletingFirst() {
+void TestAsciiCamCon::writeTrackReplacesOverlappingCamsByDeletingFirst() {
     Bench bench;
     QVERIFY(bench.client->writeTrack(1, track(4, {{10, 60}, {200, 250}})).ok());
     // Each new cam overlaps an old one: inserting before deleting would fail.
@@ -113,7 +113,7 @@ void TestCamConClient::writeTrackReplacesOverlappingCamsByDeletingFirst() {
     QCOMPARE(bench.client->readTrack(1, 4)->cams, target.cams);
 }
 
-void TestCamConClient::writeTrackLeavesEqualTrackUntouched() {
+void TestAsciiCamCon::writeTrackLeavesEqualTrackUntouched() {
     Bench bench;
     const Track target = track(5, {{10, 20}, {30, 40}});
     QVERIFY(bench.client->writeTrack(0, target).ok());
@@ -123,14 +123,14 @@ void TestCamConClient::writeTrackLeavesEqualTrackUntouched() {
     QCOMPARE(bench.link->stats().requests, 2);
 }
 
-void TestCamConClient::outputOneIsProtocolOutputZero() {
+void TestAsciiCamCon::outputOneIsProtocolOutputZero() {
     Bench bench;
     QVERIFY(bench.client->writeTrack(7, track(1, {{5, 15}})).ok());
     QCOMPARE(bench.device().state().cams.track(7, 0), (QList<Cam>{{5, 15}}));
     QVERIFY(bench.device().state().cams.track(7, 1).isEmpty());
 }
 
-void TestCamConClient::emptyTrackReadsAsNoCams() {
+void TestAsciiCamCon::emptyTrackReadsAsNoCams() {
     Bench bench;
     QVERIFY(bench.client->deleteProgram(9).ok());
     const Result<Track> read = bench.client->readTrack(9, 2);
@@ -139,7 +139,7 @@ void TestCamConClient::emptyTrackReadsAsNoCams() {
     QCOMPARE(read->output, 2);
 }
 
-void TestCamConClient::readProgramListsOnlyTracksWithCams() {
+void TestAsciiCamCon::readProgramListsOnlyTracksWithCams() {
     Bench bench;
     QVERIFY(bench.client->deleteProgram(10).ok());
     QVERIFY(bench.client->writeTrack(10, track(2, {{1, 2}})).ok());
@@ -155,7 +155,7 @@ void TestCamConClient::readProgramListsOnlyTracksWithCams() {
     QCOMPARE(lastDone, 32);
 }
 
-void TestCamConClient::deadTimesAndNamesRoundTrip() {
+void TestAsciiCamCon::deadTimesAndNamesRoundTrip() {
     Bench bench;
     QVERIFY(bench.client->writeDeadTime(3, 125).ok());
     QVERIFY(bench.client->writeOutputName(3, QStringLiteral("Glue valve")).ok());
@@ -169,7 +169,7 @@ void TestCamConClient::deadTimesAndNamesRoundTrip() {
     QCOMPARE(*bench.client->readProgramName(4), QStringLiteral("Format B"));
 }
 
-void TestCamConClient::usersRoundTripAndDelete() {
+void TestAsciiCamCon::usersRoundTripAndDelete() {
     Bench bench;
     User user;
     user.name = QStringLiteral("Night shift");
@@ -188,7 +188,7 @@ void TestCamConClient::usersRoundTripAndDelete() {
     QVERIFY(!users->contains(user));
 }
 
-void TestCamConClient::plcNetworkRoundTrip() {
+void TestAsciiCamCon::plcNetworkRoundTrip() {
     Bench bench;
     PlcNetwork network;
     network.area = PlcNetwork::M;
@@ -203,7 +203,7 @@ void TestCamConClient::plcNetworkRoundTrip() {
     QVERIFY(*read == network);
 }
 
-void TestCamConClient::backupRestoreBringsBackTheState() {
+void TestAsciiCamCon::backupRestoreBringsBackTheState() {
     Bench bench;
     QVERIFY(bench.client->writeTrack(1, track(2, {{10, 90}})).ok());
     QVERIFY(bench.client->writeDeadTime(2, 40).ok());
@@ -232,7 +232,7 @@ void TestCamConClient::backupRestoreBringsBackTheState() {
     QCOMPARE(again->blocks, image->blocks);
 }
 
-void TestCamConClient::restoreFailureSaysTheDeviceIsErased() {
+void TestAsciiCamCon::restoreFailureSaysTheDeviceIsErased() {
     Bench bench;
     QVERIFY(bench.client->writeTrack(1, track(2, {{10, 90}})).ok());
     Result<EepromImage> image = bench.client->backup();
@@ -248,7 +248,7 @@ void TestCamConClient::restoreFailureSaysTheDeviceIsErased() {
     QVERIFY(restored.error().message.contains(QLatin1String("again is safe")));
 }
 
-void TestCamConClient::scanBusFindsExactlyTheDevicesOnTheLine() {
+void TestAsciiCamCon::scanBusFindsExactlyTheDevicesOnTheLine() {
     Bench bench({0, 5}, Framing::Multiuser);
     int calls = 0;
     const Result<QList<int>> found =
@@ -258,7 +258,7 @@ void TestCamConClient::scanBusFindsExactlyTheDevicesOnTheLine() {
     QVERIFY(calls >= 64);
 }
 
-void TestCamConClient::scanBusRestoresTheLinkSettings() {
+void TestAsciiCamCon::scanBusRestoresTheLinkSettings() {
     Bench bench({0, 5}, Framing::Multiuser);
     bench.link->setDevice(5);
     const LinkSettings before = bench.link->settings();
@@ -270,7 +270,7 @@ void TestCamConClient::scanBusRestoresTheLinkSettings() {
     QVERIFY(bench.client->readInfo().ok());
 }
 
-void TestCamConClient::everyModelSettingHasACommand() {
+void TestAsciiCamCon::everyModelSettingHasACommand() {
     QSet<QString> mapped;
     for (const SettingPage& page : settingPages()) {
         QVERIFY2(findCommand('?', page.command), page.command);
@@ -281,7 +281,7 @@ void TestCamConClient::everyModelSettingHasACommand() {
     }
 }
 
-void TestCamConClient::settingsWriteChangesOnlyWhatDiffers() {
+void TestAsciiCamCon::settingsWriteChangesOnlyWhatDiffers() {
     Bench bench;
     QStringList skipped;
     Result<SystemSettings> settings = bench.client->readSettings(&skipped);
@@ -301,7 +301,7 @@ void TestCamConClient::settingsWriteChangesOnlyWhatDiffers() {
     QCOMPARE(again->value(QStringLiteral("speedFormat")).toString(), QStringLiteral("###.# U/m"));
 }
 
-void TestCamConClient::specialEncoderPageWriteSelectsItsType() {
+void TestAsciiCamCon::specialEncoderPageWriteSelectsItsType() {
     Bench bench;
     Result<SystemSettings> settings = bench.client->readSettings();
     QVERIFY(settings.ok());
@@ -315,5 +315,5 @@ void TestCamConClient::specialEncoderPageWriteSelectsItsType() {
     QCOMPARE(again->value(QStringLiteral("encoderText1")).toString(), QStringLiteral("Timer axis"));
 }
 
-QTEST_GUILESS_MAIN(TestCamConClient)
+QTEST_GUILESS_MAIN(TestAsciiCamCon)
 #include "tst_camcon_client.moc"

@@ -2,83 +2,84 @@
 
 #include "ascii_link.h"
 
-#include "model/camcon/cam_program.h"
-#include "model/camcon/dead_times.h"
-#include "model/camcon/device_info.h"
-#include "model/camcon/eeprom_image.h"
-#include "model/camcon/plc_network.h"
-#include "model/result.h"
-#include "model/camcon/system_settings.h"
-#include "model/camcon/user.h"
+#include "comm/camcon/camcon_device.h"
 
-#include <functional>
+#include <memory>
 
 namespace cambench::comm {
 
-using ProgressFn = std::function<void(qint64 done, qint64 total)>;
-
-// What a user asks of one device ("read program 3"), as sequences of
-// catalogue commands over a ProtocolLink. Synchronous: runs on the worker
-// thread inside a job. Converts the device's 0-based output numbers to the
-// 1-based numbers of the model; nothing 0-based leaves this class.
-class CamConClient {
+// A CamCon over the ASCII protocol (Standard or Multiuser framing): each
+// operation a sequence of catalogue commands over an AsciiLink. Converts
+// the device's 0-based output numbers to the model's 1-based ones; nothing
+// 0-based leaves this folder.
+class AsciiCamCon : public CamConDevice {
 public:
-    explicit CamConClient(ProtocolLink& link) : m_link(link) {}
+    // Owns its link over `transport`.
+    AsciiCamCon(Transport& transport, const AsciiSettings& settings, const LineTiming& line);
+    // Uses a link owned by the caller (tests, the benchmark).
+    explicit AsciiCamCon(AsciiLink& link);
+    ~AsciiCamCon() override;
 
-    Result<DeviceInfo> readInfo();
-    Result<DeviceStatus> readStatus(int outputs, int inputs);
-    Status resetError();
-    Status selectProgram(int program);
+    AsciiLink& link() { return m_link; }
+
+    QString protocolId() const override;
+    RequestEngine& engine() override { return m_link.engine(); }
+    void setDevice(int device) override { m_link.setDevice(device); }
+    bool has(CamConCapability capability) const override;
+
+    Result<DeviceInfo> readInfo() override;
+    Result<DeviceStatus> readStatus(int outputs, int inputs) override;
+    Status resetError() override;
+    Status selectProgram(int program) override;
 
     // Cam tracks: ?NF then ?NN until no more cams.
-    Result<Track> readTrack(int program, int output);
-    Result<CamProgram> readProgram(int program, int outputs, const ProgressFn& progress = {});
-    // Makes the device's track equal `track` (deletes, inserts; unchanged
-    // cams are left alone).
-    Status writeTrack(int program, const Track& track);
-    Status deleteProgram(int program);
-    Status copyProgram(int from, int to);
-    Status copyTrack(int program, int fromOutput, int toOutput);
+    Result<Track> readTrack(int program, int output) override;
+    Result<CamProgram> readProgram(int program, int outputs,
+                                   const ProgressFn& progress = {}) override;
+    // Deletes, then inserts; unchanged cams are left alone.
+    Status writeTrack(int program, const Track& track) override;
+    Status deleteProgram(int program) override;
+    Status copyProgram(int from, int to) override;
+    Status copyTrack(int program, int fromOutput, int toOutput) override;
 
-    Result<DeadTimes> readDeadTimes(int outputs);
-    Status writeDeadTime(int output, qint32 tenthsMs);
-    Result<QString> readOutputName(int output);
-    Status writeOutputName(int output, const QString& name);
-    Result<QString> readProgramName(int program);
-    Status writeProgramName(int program, const QString& name);
+    Result<DeadTimes> readDeadTimes(int outputs) override;
+    Status writeDeadTime(int output, qint32 tenthsMs) override;
+    Result<QString> readOutputName(int output) override;
+    Status writeOutputName(int output, const QString& name) override;
+    Result<QString> readProgramName(int program) override;
+    Status writeProgramName(int program, const QString& name) override;
 
-    // Settings the device answers :Z to are left out and, when `skipped` is
-    // given, listed there ("GSPLL (specialEncoder.pll.*)").
-    Result<SystemSettings> readSettings(QStringList* skipped = nullptr);
-    // Writes the keys of `settings` whose values differ from the device's
-    // (read first); read-only keys are ignored. Keys absent stay as they are.
+    Result<SystemSettings> readSettings(QStringList* skipped = nullptr) override;
+    Status writeSettings(const SystemSettings& settings, const SystemSettings& onDevice) override;
+    // Reads the device's settings first, then writes what differs.
     Status writeSettings(const SystemSettings& settings);
-    // One setting by its model key (reads the command that holds it).
-    Result<QVariant> readSetting(const QString& key);
+    Result<QVariant> readSetting(const QString& key) override;
 
-    Result<QList<User>> readUsers();
+    Result<QList<User>> readUsers() override;
     // `oldNumber` empty for a new user.
-    Status writeUser(const QString& oldNumber, const User& user);
-    Status deleteUser(const QString& number);
+    Status writeUser(const QString& oldNumber, const User& user) override;
+    Status deleteUser(const QString& number) override;
 
-    Result<PlcNetwork> readPlcNetwork(int area, int number);
-    Status writePlcNetwork(const PlcNetwork& network);
-    Result<qint32> readPlcActual(int area, int number);
-    Result<qint32> readPlcSetpoint(int area, int number);
+    Result<PlcNetwork> readPlcNetwork(int area, int number) override;
+    Status writePlcNetwork(const PlcNetwork& network) override;
+    Result<qint32> readPlcActual(int area, int number) override;
+    Result<qint32> readPlcSetpoint(int area, int number) override;
 
     // Whole EEPROM (notes 6).
-    Result<EepromImage> backup(const ProgressFn& progress = {});
-    // Erases the device and writes `image`; the caller has validated it.
-    // On failure the message says whether the device is erased or partial.
-    Status restore(const EepromImage& image, const ProgressFn& progress = {});
+    Result<EepromImage> backup(const ProgressFn& progress = {}) override;
+    Status restore(const EepromImage& image, const ProgressFn& progress = {}) override;
 
-    // Multiuser: device numbers in [first,last] that answer ?UNIT, with a
-    // short per-number timeout.
-    Result<QList<int>> scanBus(int first = 0, int last = 63, int timeoutMs = 60,
-                               const ProgressFn& progress = {});
+    // Multiuser: device numbers in [first,last] that answer ?UNIT.
+    Result<QList<int>> scanBus(int first, int last, const ProgressFn& progress = {}) override;
+    // With an explicit per-number timeout (0 = derived from the line).
+    Result<QList<int>> scanBus(int first, int last, int timeoutMs, const ProgressFn& progress = {});
+    // "?IFGWG" or "!PAU0003": lead, command letters and data; the checksum
+    // is added. The reply's body, user numbers masked.
+    Result<QByteArray> raw(const QByteArray& request) override;
 
 private:
-    ProtocolLink& m_link;
+    std::unique_ptr<AsciiLink> m_ownLink;
+    AsciiLink& m_link;
 };
 
 }  // namespace cambench::comm

@@ -19,7 +19,7 @@ QString trackText(int program, int output) {
 
 }  // namespace
 
-Result<Track> CamConClient::readTrack(int program, int output) {
+Result<Track> AsciiCamCon::readTrack(int program, int output) {
     Track track;
     track.output = output;
     const QString where = trackText(program, output);
@@ -54,7 +54,7 @@ Result<Track> CamConClient::readTrack(int program, int output) {
     return track;
 }
 
-Result<CamProgram> CamConClient::readProgram(int program, int outputs, const ProgressFn& progress) {
+Result<CamProgram> AsciiCamCon::readProgram(int program, int outputs, const ProgressFn& progress) {
     CamProgram result;
     result.number = program;
     const Result<QString> name = readProgramName(program);
@@ -73,7 +73,7 @@ Result<CamProgram> CamConClient::readProgram(int program, int outputs, const Pro
     return result;
 }
 
-Status CamConClient::writeTrack(int program, const Track& track) {
+Status AsciiCamCon::writeTrack(int program, const Track& track) {
     const Result<Track> current = readTrack(program, track.output);
     if (!current) return current.error();
     const QString where = trackText(program, track.output);
@@ -130,7 +130,7 @@ Status CamConClient::writeTrack(int program, const Track& track) {
     return success();
 }
 
-Status CamConClient::deleteProgram(int program) {
+Status AsciiCamCon::deleteProgram(int program) {
     const Result<Fields> reply = m_link.call('!', "PDEL", Fields{{"program", qint64(program)}});
     if (!reply) {
         return inContext(QStringLiteral("deleting program %1 (!PDEL)").arg(program), reply.error());
@@ -138,7 +138,7 @@ Status CamConClient::deleteProgram(int program) {
     return success();
 }
 
-Status CamConClient::copyProgram(int from, int to) {
+Status AsciiCamCon::copyProgram(int from, int to) {
     const Result<Fields> reply =
         m_link.call('!', "PCPY", Fields{{"target", qint64(to)}, {"source", qint64(from)}});
     if (!reply) {
@@ -149,7 +149,7 @@ Status CamConClient::copyProgram(int from, int to) {
     return success();
 }
 
-Status CamConClient::copyTrack(int program, int fromOutput, int toOutput) {
+Status AsciiCamCon::copyTrack(int program, int fromOutput, int toOutput) {
     const Result<Fields> reply = m_link.call('!', "PACPY",
                                              Fields{{"program", qint64(program)},
                                                     {"target", wireOutput(toOutput)},

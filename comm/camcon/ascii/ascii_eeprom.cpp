@@ -105,7 +105,7 @@ std::optional<TransferFailure> transfer(ProtocolLink& link, const EepromImage& i
 
 }  // namespace
 
-Result<EepromImage> CamConClient::backup(const ProgressFn& progress) {
+Result<EepromImage> AsciiCamCon::backup(const ProgressFn& progress) {
     Result<DeviceInfo> info = readInfo();
     if (!info) return info.error();
     EepromImage image;
@@ -154,7 +154,7 @@ Result<EepromImage> CamConClient::backup(const ProgressFn& progress) {
                        "check the device"));
 }
 
-Status CamConClient::restore(const EepromImage& image, const ProgressFn& progress) {
+Status AsciiCamCon::restore(const EepromImage& image, const ProgressFn& progress) {
     if (image.blocks.isEmpty() || image.blocks.first().number != 0) {
         return Error::invalidData(
             QStringLiteral("the EEPROM image does not start with block 0000; nothing was sent"));

@@ -47,7 +47,7 @@ QList<bool> bitsOf(const QByteArray& table, int count) {
 
 }  // namespace
 
-Result<DeviceInfo> CamConClient::readInfo() {
+Result<DeviceInfo> AsciiCamCon::readInfo() {
     DeviceInfo info;
     const Result<Fields> eprom = m_link.call('?', "EPROM");
     if (!eprom)
@@ -66,7 +66,7 @@ Result<DeviceInfo> CamConClient::readInfo() {
     return info;
 }
 
-Result<DeviceStatus> CamConClient::readStatus(int outputs, int inputs) {
+Result<DeviceStatus> AsciiCamCon::readStatus(int outputs, int inputs) {
     DeviceStatus status;
     const Result<Fields> error = m_link.call('?', "ERR");
     if (!error) return inContext(QStringLiteral("reading the error state (?ERR)"), error.error());
@@ -101,13 +101,13 @@ Result<DeviceStatus> CamConClient::readStatus(int outputs, int inputs) {
     return status;
 }
 
-Status CamConClient::resetError() {
+Status AsciiCamCon::resetError() {
     const Result<Fields> reply = m_link.call('!', "ERR");
     if (!reply) return inContext(QStringLiteral("resetting the error (!ERR)"), reply.error());
     return success();
 }
 
-Status CamConClient::selectProgram(int program) {
+Status AsciiCamCon::selectProgram(int program) {
     const Result<Fields> reply = m_link.call('!', "PAU", Fields{{"value", qint64(program)}});
     if (!reply) {
         return inContext(QStringLiteral("selecting program %1 (!PAU)").arg(program), reply.error());

@@ -5,7 +5,7 @@ namespace cambench::comm {
 
 using namespace client;
 
-Result<DeadTimes> CamConClient::readDeadTimes(int outputs) {
+Result<DeadTimes> AsciiCamCon::readDeadTimes(int outputs) {
     DeadTimes deadTimes;
     for (int output = 1; output <= outputs; ++output) {
         const Result<Fields> reply =
@@ -20,7 +20,7 @@ Result<DeadTimes> CamConClient::readDeadTimes(int outputs) {
     return deadTimes;
 }
 
-Status CamConClient::writeDeadTime(int output, qint32 tenthsMs) {
+Status AsciiCamCon::writeDeadTime(int output, qint32 tenthsMs) {
     const Result<Fields> reply = m_link.call(
         '!', "TZK", Fields{{"output", wireOutput(output)}, {"value", qint64(tenthsMs)}});
     if (!reply) {
@@ -30,7 +30,7 @@ Status CamConClient::writeDeadTime(int output, qint32 tenthsMs) {
     return success();
 }
 
-Result<QString> CamConClient::readOutputName(int output) {
+Result<QString> AsciiCamCon::readOutputName(int output) {
     const Result<Fields> reply = m_link.call('?', "ANAME", Fields{{"output", wireOutput(output)}});
     if (!reply) {
         return inContext(QStringLiteral("reading the name of output %1 (?ANAME)").arg(output),
@@ -39,7 +39,7 @@ Result<QString> CamConClient::readOutputName(int output) {
     return text(*reply, "text");
 }
 
-Status CamConClient::writeOutputName(int output, const QString& name) {
+Status AsciiCamCon::writeOutputName(int output, const QString& name) {
     Fields fields{{"output", wireOutput(output)}};
     fields.setBytes("text", wireText(name));
     const Result<Fields> reply = m_link.call('!', "ANAME", fields);
@@ -50,7 +50,7 @@ Status CamConClient::writeOutputName(int output, const QString& name) {
     return success();
 }
 
-Result<QString> CamConClient::readProgramName(int program) {
+Result<QString> AsciiCamCon::readProgramName(int program) {
     const Result<Fields> reply = m_link.call('?', "PNAME", Fields{{"program", qint64(program)}});
     if (!reply) {
         return inContext(QStringLiteral("reading the name of program %1 (?PNAME)").arg(program),
@@ -59,7 +59,7 @@ Result<QString> CamConClient::readProgramName(int program) {
     return text(*reply, "text");
 }
 
-Status CamConClient::writeProgramName(int program, const QString& name) {
+Status AsciiCamCon::writeProgramName(int program, const QString& name) {
     Fields fields{{"program", qint64(program)}};
     fields.setBytes("text", wireText(name));
     const Result<Fields> reply = m_link.call('!', "PNAME", fields);

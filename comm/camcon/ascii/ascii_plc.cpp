@@ -16,7 +16,7 @@ QString networkText(int area, int number) {
 
 }  // namespace
 
-Result<PlcNetwork> CamConClient::readPlcNetwork(int area, int number) {
+Result<PlcNetwork> AsciiCamCon::readPlcNetwork(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
@@ -35,7 +35,7 @@ Result<PlcNetwork> CamConClient::readPlcNetwork(int area, int number) {
     return network;
 }
 
-Status CamConClient::writePlcNetwork(const PlcNetwork& network) {
+Status AsciiCamCon::writePlcNetwork(const PlcNetwork& network) {
     Fields fields{{"area", qint64(network.area)},
                   {"number", qint64(network.number)},
                   {"value", qint64(network.value)},
@@ -52,7 +52,7 @@ Status CamConClient::writePlcNetwork(const PlcNetwork& network) {
     return success();
 }
 
-Result<qint32> CamConClient::readPlcActual(int area, int number) {
+Result<qint32> AsciiCamCon::readPlcActual(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "SPSIST", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
@@ -63,7 +63,7 @@ Result<qint32> CamConClient::readPlcActual(int area, int number) {
     return qint32(reply->num("value"));
 }
 
-Result<qint32> CamConClient::readPlcSetpoint(int area, int number) {
+Result<qint32> AsciiCamCon::readPlcSetpoint(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "SPSSOLL", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {

@@ -8,7 +8,7 @@ namespace {
 // Puts the link's destination, timeout and retries back however the scan ends.
 class LinkSettingsGuard {
 public:
-    explicit LinkSettingsGuard(ProtocolLink& link) : m_link(link), m_saved(link.settings()) {}
+    explicit LinkSettingsGuard(AsciiLink& link) : m_link(link), m_saved(link.settings()) {}
     ~LinkSettingsGuard() {
         m_link.setDevice(m_saved.device);
         m_link.setTimeout(m_saved.timeoutMs);
@@ -18,13 +18,13 @@ public:
     LinkSettingsGuard& operator=(const LinkSettingsGuard&) = delete;
 
 private:
-    ProtocolLink& m_link;
-    LinkSettings m_saved;
+    AsciiLink& m_link;
+    AsciiSettings m_saved;
 };
 
 }  // namespace
 
-Result<QList<int>> CamConClient::scanBus(int first, int last, int timeoutMs,
+Result<QList<int>> AsciiCamCon::scanBus(int first, int last, int timeoutMs,
                                          const ProgressFn& progress) {
     if (m_link.settings().framing != Framing::Multiuser) {
         return Error::usage(QStringLiteral(
@@ -57,6 +57,10 @@ Result<QList<int>> CamConClient::scanBus(int first, int last, int timeoutMs,
     }
     if (progress) progress(last - first + 1, last - first + 1);
     return found;
+}
+
+Result<QList<int>> AsciiCamCon::scanBus(int first, int last, const ProgressFn& progress) {
+    return scanBus(first, last, 0, progress);
 }
 
 }  // namespace cambench::comm

@@ -50,7 +50,7 @@ QString pageKeys(const SettingPage& page) {
 
 }  // namespace
 
-Result<SystemSettings> CamConClient::readSettings(QStringList* skipped) {
+Result<SystemSettings> AsciiCamCon::readSettings(QStringList* skipped) {
     SystemSettings settings;
     for (const SettingPage& page : settingPages()) {
         const Result<Fields> reply = m_link.call('?', page.command);
@@ -75,7 +75,7 @@ Result<SystemSettings> CamConClient::readSettings(QStringList* skipped) {
     return settings;
 }
 
-Result<QVariant> CamConClient::readSetting(const QString& key) {
+Result<QVariant> AsciiCamCon::readSetting(const QString& key) {
     for (const SettingPage& page : settingPages()) {
         for (const SettingField& field : page.fields) {
             if (key != QLatin1String(field.key)) continue;
@@ -92,9 +92,14 @@ Result<QVariant> CamConClient::readSetting(const QString& key) {
     return Error::usage(QStringLiteral("\"%1\" is no device setting").arg(key));
 }
 
-Status CamConClient::writeSettings(const SystemSettings& settings) {
+Status AsciiCamCon::writeSettings(const SystemSettings& settings) {
     const Result<SystemSettings> current = readSettings();
     if (!current) return current.error();
+    return writeSettings(settings, *current);
+}
+
+Status AsciiCamCon::writeSettings(const SystemSettings& settings, const SystemSettings& onDevice) {
+    const SystemSettings* current = &onDevice;
     const QString text1 = QLatin1String(kEncoderText1Key);
     const QString text2 = QLatin1String(kEncoderText2Key);
     const bool textsChange =

@@ -37,7 +37,7 @@ QByteArray accessBytes(const User& user) {
 
 }  // namespace
 
-Result<QList<User>> CamConClient::readUsers() {
+Result<QList<User>> AsciiCamCon::readUsers() {
     QList<User> users;
     for (int i = 0; i <= kMaxUsers; ++i) {
         // ?USER00 asks for the first entry, ?USER01 for the next one.
@@ -57,7 +57,7 @@ Result<QList<User>> CamConClient::readUsers() {
             .arg(kMaxUsers));
 }
 
-Status CamConClient::writeUser(const QString& oldNumber, const User& user) {
+Status AsciiCamCon::writeUser(const QString& oldNumber, const User& user) {
     Fields fields{{"all", qint64(user.allOutputs ? 1 : 0)}, {"rights", qint64(user.rights)}};
     fields.setBytes("oldNumber", wireText(oldNumber));
     fields.setBytes("name", wireText(user.name));
@@ -71,7 +71,7 @@ Status CamConClient::writeUser(const QString& oldNumber, const User& user) {
     return success();
 }
 
-Status CamConClient::deleteUser(const QString& number) {
+Status AsciiCamCon::deleteUser(const QString& number) {
     Fields fields;
     fields.setBytes("oldNumber", wireText(number));
     fields.setBytes("number", QByteArrayLiteral("DEL"));

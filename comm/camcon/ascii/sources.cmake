@@ -27,6 +27,9 @@ target_sources(cambench_comm PRIVATE
   camcon/ascii/ascii_link.h
   camcon/ascii/ascii_link.cpp
   camcon/ascii/ascii_camcon.h
+  camcon/ascii/ascii_camcon.cpp
+  camcon/ascii/ascii_protocol.h
+  camcon/ascii/ascii_protocol.cpp
   camcon/ascii/ascii_support.h
   camcon/ascii/ascii_info.cpp
   camcon/ascii/ascii_cams.cpp

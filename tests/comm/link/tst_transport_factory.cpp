@@ -1,4 +1,4 @@
-#include "comm/transport/transport_factory.h"
+#include "comm/transport/transport_registry.h"
 
 #include <QtTest>
 
@@ -8,7 +8,7 @@ using namespace cambench::comm;
 namespace {
 
 Result<std::unique_ptr<Transport>> make(const QString& port, SerialSettings serial = {}) {
-    return makeTransport(ConnectionSettings{port, serial});
+    return makeTransport(ConnectionSettings{port, serial, {}});
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // a pseudo-terminal (QSerialPort) for cancelling and a vanishing port.
 #include "../link/pty_device.h"
 
+#include "comm/camcon/ascii/ascii_camcon.h"
+#include "comm/camcon/ascii/ascii_protocol.h"
 #include "comm/engine/traffic_log.h"
 #include "comm/worker/comm_worker.h"
 
@@ -21,12 +23,20 @@ namespace {
 
 constexpr int kHangBoundMs = 20000;  // bounds a hang; never a speed check
 
-LinkSettings linkSettings(int timeoutMs, int retries = 0) {
-    return LinkSettings{Framing::Standard, 0, 63, timeoutMs, 150000, retries};
+ProtocolSettingsPtr linkSettings(int timeoutMs, int retries = 0) {
+    return std::make_shared<AsciiProtocolSettings>(
+        AsciiSettings{Framing::Standard, 0, 63, timeoutMs, 150000, retries});
+}
+
+// ?UNIT to the connected CamCon (Standard framing) through its ASCII link.
+Result<Fields> askUnit(JobContext& ctx) {
+    Result<AsciiCamCon*> device = ctx.family<AsciiCamCon>();
+    if (!device) return device.error();
+    return (*device)->link().call('?', "UNIT");
 }
 
 ConnectionSettings portSettings(const QString& port) {
-    return ConnectionSettings{port, SerialSettings{}};
+    return ConnectionSettings{port, SerialSettings{}, {}};
 }
 
 // Records job titles in the order they run, from the worker thread.
@@ -115,7 +125,7 @@ void TestCommWorker::jobCallsReachTheDevice() {
     worker.connectTo(portSettings("sim:throttle=0"), linkSettings(1000, 2));
     std::optional<Result<Fields>> reply;
     worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return ctx.link().call('?', "UNIT"); },
+                               [](JobContext& ctx) { return askUnit(ctx); },
                                [&](Result<Fields> result) { reply = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), kHangBoundMs);
     QVERIFY2(reply->ok(), qPrintable(reply->error().message));
@@ -125,7 +135,7 @@ void TestCommWorker::jobWithoutConnectionFailsWithNotConnected() {
     CommWorker worker;
     std::optional<Result<Fields>> reply;
     worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return ctx.link().call('?', "UNIT"); },
+                               [](JobContext& ctx) { return askUnit(ctx); },
                                [&](Result<Fields> result) { reply = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), kHangBoundMs);
     QVERIFY(!reply->ok());
@@ -193,7 +203,7 @@ void TestCommWorker::cancelRunningJobReturnsCancelled() {
     worker.connectTo(portSettings(device.slavePath()), linkSettings(120000));
     std::optional<Result<Fields>> reply;
     const quint64 id = worker.run<Result<Fields>>(
-        this, JobPriority::User, "silent", [](JobContext& ctx) { return ctx.link().call('?', "UNIT"); },
+        this, JobPriority::User, "silent", [](JobContext& ctx) { return askUnit(ctx); },
         [&](Result<Fields> result) { reply = std::move(result); });
     // Only a working cancel ends the wait: the device never answers.
     QTRY_COMPARE_WITH_TIMEOUT(device.requestCount(), 1, kHangBoundMs);
@@ -212,7 +222,7 @@ void TestCommWorker::cancelAllStopsEverything() {
     QSignalSpy finished(&worker, &CommWorker::jobFinished);
     std::optional<ErrorKind> kind;
     worker.submit(JobPriority::User, "silent", [&kind](JobContext& ctx) {
-        kind = ctx.link().call('?', "UNIT").error().kind;
+        kind = askUnit(ctx).error().kind;
     });
     worker.submit(JobPriority::User, "queued", [&log](JobContext&) { log.add("queued"); });
     worker.submit(JobPriority::Poll, "poll", [&log](JobContext&) { log.add("poll"); }, "p");
@@ -232,7 +242,7 @@ void TestCommWorker::jobProgressAndTrafficReachTheFront() {
     QSignalSpy traffic(&worker, &CommWorker::traffic);
     const quint64 id = worker.submit(JobPriority::User, "two steps", [](JobContext& ctx) {
         ctx.progress(1, 2, "first");
-        ctx.link().call('?', "UNIT");
+        askUnit(ctx);
         ctx.progress(2, 2, "second");
     });
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, kHangBoundMs);
@@ -258,7 +268,7 @@ void TestCommWorker::vanishingPortMakesStateLostAndLaterJobsFailFast() {
 
     std::optional<Result<Fields>> first;
     worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return ctx.link().call('?', "UNIT"); },
+                               [](JobContext& ctx) { return askUnit(ctx); },
                                [&](Result<Fields> result) { first = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(first.has_value(), kHangBoundMs);
     QVERIFY(!first->ok());
@@ -271,7 +281,7 @@ void TestCommWorker::vanishingPortMakesStateLostAndLaterJobsFailFast() {
 
     std::optional<Result<Fields>> second;
     worker.run<Result<Fields>>(this, JobPriority::User, "unit again",
-                               [](JobContext& ctx) { return ctx.link().call('?', "UNIT"); },
+                               [](JobContext& ctx) { return askUnit(ctx); },
                                [&](Result<Fields> result) { second = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(second.has_value(), kHangBoundMs);
     QVERIFY(!second->ok());
@@ -287,14 +297,14 @@ void TestCommWorker::reconnectAfterLostWorks() {
     });
     CommWorker worker;
     worker.connectTo(portSettings(vanishing.slavePath()), linkSettings(60000));
-    worker.submit(JobPriority::User, "lose it", [](JobContext& ctx) { ctx.link().call('?', "UNIT"); });
+    worker.submit(JobPriority::User, "lose it", [](JobContext& ctx) { askUnit(ctx); });
     QTRY_COMPARE_WITH_TIMEOUT(worker.state(), ConnectionState::Lost, kHangBoundMs);
 
     worker.connectTo(portSettings(healthy.slavePath()), linkSettings(5000));
     QTRY_COMPARE_WITH_TIMEOUT(worker.state(), ConnectionState::Connected, kHangBoundMs);
     std::optional<Result<Fields>> reply;
     worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return ctx.link().call('?', "UNIT"); },
+                               [](JobContext& ctx) { return askUnit(ctx); },
                                [&](Result<Fields> result) { reply = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), kHangBoundMs);
     QVERIFY2(reply->ok(), qPrintable(reply->error().message));
@@ -306,7 +316,7 @@ void TestCommWorker::destructorReturnsWhileJobRuns() {
     worker->connectTo(portSettings(device.slavePath()), linkSettings(120000, 3));
     std::atomic_bool jobReturned{false};
     worker->submit(JobPriority::User, "silent", [&jobReturned](JobContext& ctx) {
-        ctx.link().call('?', "UNIT");
+        askUnit(ctx);
         jobReturned = true;
     });
     QTRY_COMPARE_WITH_TIMEOUT(device.requestCount(), 1, kHangBoundMs);

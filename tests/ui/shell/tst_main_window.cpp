@@ -1,5 +1,6 @@
 // The shell against the in-process simulator through the real CommWorker:
 // read, edit, write, compare, backup/restore, a failing line.
+#include "comm/camcon/ascii/ascii_protocol.h"
 #include "shell_fixture.h"
 
 #include "model/camcon/eeprom_image_file.h"
@@ -196,12 +197,13 @@ void MainWindowTest::failedReadOnDeadLineKeepsEditsAndSaysWhy() {
 
     // The same line now loses every answer (a pulled cable).
     DeviceSession* session = shell->session();
-    comm::LinkSettings link = session->link();
-    link.timeoutMs = 100;
-    link.retries = 1;
+    comm::AsciiProtocolSettings link(comm::Framing::Standard);
+    link.fromMap(session->protocol().toMap());
+    link.ascii.timeoutMs = 100;
+    link.ascii.retries = 1;
     comm::ConnectionSettings dead;
     dead.port = QStringLiteral("sim:throttle=0;dead=1");
-    session->connectTo(dead, link);
+    session->connectTo(dead, std::make_shared<comm::AsciiProtocolSettings>(link));
     QTRY_VERIFY_WITH_TIMEOUT(session->isOnline(), kDeviceTimeoutMs);
 
     std::optional<Status> read;

@@ -1,0 +1,19 @@
+#include "builtin_registry.h"
+
+#include "comm/camcon/ascii/ascii_protocol.h"
+#include "comm/device/protocol_registry.h"
+#include "comm/sim/sim_transport.h"
+#include "comm/transport/transport_registry.h"
+
+namespace cambench {
+
+void registerBuiltins() {
+    comm::TransportRegistry& transports = comm::TransportRegistry::instance();
+    comm::registerSimTransport(transports);
+    comm::registerLineTransports(transports);  // serial is the catch-all: last
+
+    comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
+    comm::registerCamConAscii(protocols);
+}
+
+}  // namespace cambench

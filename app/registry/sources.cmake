@@ -1,0 +1,7 @@
+# What CamBench can talk to: transports, protocols, simulators. Linked by
+# every program and by the tests that open connections.
+add_library(cambench_registry STATIC
+  registry/builtin_registry.h
+  registry/builtin_registry.cpp
+)
+target_link_libraries(cambench_registry PUBLIC cambench_comm cambench_sim)

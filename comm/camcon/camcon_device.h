@@ -1,0 +1,99 @@
+#pragma once
+
+#include "comm/device/device_connection.h"
+#include "comm/device/progress.h"
+
+#include "model/camcon/cam_program.h"
+#include "model/camcon/dead_times.h"
+#include "model/camcon/device_info.h"
+#include "model/camcon/eeprom_image.h"
+#include "model/camcon/plc_network.h"
+#include "model/camcon/system_settings.h"
+#include "model/camcon/user.h"
+#include "model/result.h"
+
+#include <QStringList>
+
+namespace cambench::comm {
+
+// What a CamCon protocol may or may not offer. The GUI and the CLI ask
+// before they offer an action; a missing one comes with a reason.
+enum class CamConCapability {
+    Users,          // users and rights: ASCII only
+    EepromBackup,   // whole-EEPROM backup and restore (?EE/!EE): ASCII only
+    BusScan,        // device numbers on a bus: Multiuser
+    Terminal,       // free-form requests typed by the user: ASCII
+    OutputNames,    // output and program names: ASCII
+    PlcNetworks,    // PLC links (?GMXSPS / data area 216)
+    DeadTimeModes,  // dead-time modes and separate on/off dead times: table interface
+    AnalogueCams,   // analogue cams (data areas 241..254): table interface
+    EepromLock,     // EEPROM write lock, changes held in RAM: table interface
+};
+
+// Everything the GUI and the CLI ask of a CamCon, whatever the protocol.
+// Runs on the worker thread inside a job; synchronous. Outputs and inputs
+// count from 1, programs from 0: the protocols' own numbering stays in
+// their folders.
+class CamConDevice : public DeviceConnection {
+public:
+    QString familyId() const override { return QStringLiteral("camcon"); }
+
+    virtual bool has(CamConCapability capability) const = 0;
+    // Why `capability` is missing, as a sentence naming the protocol that
+    // has it: "Users exist only in the ASCII protocol (standard or multiuser)."
+    virtual QString lacks(CamConCapability capability) const;
+    // A Usage error carrying lacks(), for callers that must refuse.
+    Error missing(CamConCapability capability) const;
+
+    virtual Result<DeviceInfo> readInfo() = 0;
+    virtual Result<DeviceStatus> readStatus(int outputs, int inputs) = 0;
+    virtual Status resetError() = 0;
+    virtual Status selectProgram(int program) = 0;
+
+    virtual Result<Track> readTrack(int program, int output) = 0;
+    virtual Result<CamProgram> readProgram(int program, int outputs,
+                                           const ProgressFn& progress = {}) = 0;
+    // Makes the device's track equal `track`.
+    virtual Status writeTrack(int program, const Track& track) = 0;
+    virtual Status deleteProgram(int program) = 0;
+    virtual Status copyProgram(int from, int to) = 0;
+    virtual Status copyTrack(int program, int fromOutput, int toOutput) = 0;
+
+    virtual Result<DeadTimes> readDeadTimes(int outputs) = 0;
+    virtual Status writeDeadTime(int output, qint32 tenthsMs) = 0;
+    virtual Result<QString> readOutputName(int output) = 0;
+    virtual Status writeOutputName(int output, const QString& name) = 0;
+    virtual Result<QString> readProgramName(int program) = 0;
+    virtual Status writeProgramName(int program, const QString& name) = 0;
+
+    // Settings the device does not know are left out and, when `skipped`
+    // is given, listed there.
+    virtual Result<SystemSettings> readSettings(QStringList* skipped = nullptr) = 0;
+    // Writes the keys of `settings` whose values differ from `onDevice`
+    // (read by the caller, so nothing is read twice); read-only keys are
+    // ignored, keys absent stay as they are.
+    virtual Status writeSettings(const SystemSettings& settings,
+                                 const SystemSettings& onDevice) = 0;
+    virtual Result<QVariant> readSetting(const QString& key) = 0;
+
+    virtual Result<QList<User>> readUsers() = 0;
+    virtual Status writeUser(const QString& oldNumber, const User& user) = 0;
+    virtual Status deleteUser(const QString& number) = 0;
+
+    virtual Result<PlcNetwork> readPlcNetwork(int area, int number) = 0;
+    virtual Status writePlcNetwork(const PlcNetwork& network) = 0;
+    virtual Result<qint32> readPlcActual(int area, int number) = 0;
+    virtual Result<qint32> readPlcSetpoint(int area, int number) = 0;
+
+    virtual Result<EepromImage> backup(const ProgressFn& progress = {}) = 0;
+    // Erases the device and writes `image`; the caller has validated it.
+    // On failure the message says whether the device is erased or partial.
+    virtual Status restore(const EepromImage& image, const ProgressFn& progress = {}) = 0;
+
+    // Device numbers in [first,last] that answer.
+    virtual Result<QList<int>> scanBus(int first, int last, const ProgressFn& progress = {}) = 0;
+    // A request typed by the user; returns the reply as text.
+    virtual Result<QByteArray> raw(const QByteArray& request) = 0;
+};
+
+}  // namespace cambench::comm

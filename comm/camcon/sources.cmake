@@ -1,0 +1,5 @@
+# The CamCon family: the device interface both CamCon protocols implement.
+target_sources(cambench_comm PRIVATE
+  camcon/camcon_device.h
+  camcon/camcon_device.cpp
+)

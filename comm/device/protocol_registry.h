@@ -1,0 +1,54 @@
+#pragma once
+
+#include "device_connection.h"
+#include "protocol_settings.h"
+
+#include "comm/engine/line_timing.h"
+#include "comm/transport/transport.h"
+#include "model/result.h"
+
+#include <QList>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+namespace cambench::comm {
+
+// What the rest of CamBench knows of one protocol: its name, the family of
+// devices it reaches, its default line, and how to open a device
+// connection over a transport. Protocols register themselves from app/
+// (one line each); nothing else lists them.
+struct ProtocolInfo {
+    QString id;        // "standard": the CLI's --protocol value, the settings key
+    QString familyId;  // "camcon"
+    QString title;     // "CamCon ASCII, Multiuser (RS485)" (English; ui/ translates)
+    SerialSettings defaultSerial;
+    bool isBus = false;  // devices are addressed by number (and may be scanned)
+    std::function<std::unique_ptr<ProtocolSettings>()> makeSettings;
+    // Opens the device connection over an open transport. `line` carries
+    // the baud rate and character size the timeouts derive from.
+    std::function<Result<std::unique_ptr<DeviceConnection>>(
+        Transport& transport, const ProtocolSettings& settings, const LineTiming& line)>
+        connect;
+};
+
+class ProtocolRegistry {
+public:
+    static ProtocolRegistry& instance();
+
+    void add(ProtocolInfo info);
+    const ProtocolInfo* find(const QString& id) const;
+    QList<const ProtocolInfo*> all() const;
+    // "standard, multiuser, 3964r-n96" for usage messages.
+    QString idList() const;
+
+private:
+    QList<std::shared_ptr<ProtocolInfo>> m_protocols;
+};
+
+// The line timing a serial setting gives: bits per byte from data bits,
+// parity and stop bits.
+LineTiming lineTimingFor(const SerialSettings& serial);
+
+}  // namespace cambench::comm

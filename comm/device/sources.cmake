@@ -1,0 +1,9 @@
+# The protocol-neutral device seam: protocol settings, device connections,
+# the protocol registry.
+target_sources(cambench_comm PRIVATE
+  device/device_connection.h
+  device/progress.h
+  device/protocol_settings.h
+  device/protocol_registry.h
+  device/protocol_registry.cpp
+)
