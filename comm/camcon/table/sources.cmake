@@ -14,5 +14,9 @@ target_sources(cambench_comm PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/rk512.cpp
   ${CMAKE_CURRENT_LIST_DIR}/rk512_planner.h
   ${CMAKE_CURRENT_LIST_DIR}/rk512_planner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_map.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_map.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/cam_track_words.h
+  ${CMAKE_CURRENT_LIST_DIR}/cam_track_words.cpp
   ${CAMBENCH_TABLE_LINK_SOURCES}
 )
