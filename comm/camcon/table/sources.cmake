@@ -18,5 +18,7 @@ target_sources(cambench_comm PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/table_map.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cam_track_words.h
   ${CMAKE_CURRENT_LIST_DIR}/cam_track_words.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/short_commands.h
+  ${CMAKE_CURRENT_LIST_DIR}/short_commands.cpp
   ${CAMBENCH_TABLE_LINK_SOURCES}
 )
