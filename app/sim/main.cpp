@@ -1,6 +1,7 @@
 // cambench-sim: a simulated CamCon on a pseudo-terminal (default) or a TCP
 // port, for the tool, its tests and demos without hardware.
 
+#include "cambench_version.h"
 #include "signal_quitter.h"
 
 #include "comm/sim/sim_demo.h"
@@ -152,7 +153,7 @@ void addOptions(QCommandLineParser& parser) {
 int main(int argc, char* argv[]) {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-sim"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
     QCommandLineParser parser;
     addOptions(parser);
     parser.process(app);
