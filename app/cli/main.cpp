@@ -1,4 +1,5 @@
 #include "app/registry/builtin_registry.h"
+#include "cambench_version.h"
 #include "cli_options.h"
 #include "cli_output.h"
 #include "cli_session.h"
@@ -17,7 +18,7 @@ int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-cli"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
 
     // stderr carries one clear line per problem; the components' logs would
     // drown it. QT_LOGGING_RULES still turns them on for debugging.
@@ -29,7 +30,7 @@ int main(int argc, char* argv[]) {
         return ExitOk;
     }
     if (args.contains(QLatin1String("--version"))) {
-        printOut(QStringLiteral("cambench-cli %1\n").arg(QLatin1String(CAMBENCH_VERSION)));
+        printOut(QStringLiteral("cambench-cli %1\n").arg(QLatin1String(CAMBENCH_VERSION_TEXT)));
         return ExitOk;
     }
     const Result<GlobalOptions> options = parseGlobalOptions(args);

@@ -23,3 +23,4 @@ add_executable(cambench-cli
   cli/eeprom_commands.cpp
 )
 target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_comm cambench_model Qt6::Core)
+install(TARGETS cambench-cli)  # to bin/ under the install prefix

@@ -1,4 +1,5 @@
 #include "app/registry/builtin_registry.h"
+#include "cambench_version.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/screenshot_tour.h"
@@ -16,10 +17,12 @@ int main(int argc, char* argv[]) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("CamBench"));
     QApplication::setApplicationName(QStringLiteral("CamBench"));
-    QApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+    QApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Programming and monitoring of CamCon cam controllers."));
+    parser.setApplicationDescription(
+        QStringLiteral("Programming and monitoring of CamCon cam controllers.\n"
+                       "Version " CAMBENCH_VERSION_TEXT "."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption lang(QStringLiteral("lang"), QStringLiteral("User interface language: de or en."),

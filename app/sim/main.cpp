@@ -2,6 +2,7 @@
 // port, for the tool, its tests and demos without hardware.
 
 #include "app/registry/builtin_registry.h"
+#include "cambench_version.h"
 #include "signal_quitter.h"
 
 #include "comm/sim/sim_demo.h"
@@ -154,7 +155,7 @@ int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-sim"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
     QCommandLineParser parser;
     addOptions(parser);
     parser.process(app);

@@ -5,3 +5,4 @@ add_executable(cambench-sim
   sim/signal_quitter.h
 )
 target_link_libraries(cambench-sim PRIVATE cambench_registry cambench_sim)
+install(TARGETS cambench-sim)  # to bin/ under the install prefix
