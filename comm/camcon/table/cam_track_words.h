@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/cam_program.h"
+#include "model/camcon/cam_program.h"
 #include "model/result.h"
 
 #include <QList>
