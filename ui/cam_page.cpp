@@ -1,6 +1,7 @@
 #include "cam_page.h"
 
 #include "device_session.h"
+#include "report_dialog.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_diagram_widget.h"
@@ -45,7 +46,7 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     connect(m_editor, &CamEditorWidget::writeProgramRequested, this, [this](int program) {
         writeProgram(program, [this, program](const WriteReport& report) {
             if (!report.complete())
-                QMessageBox::warning(this, tr("Write program %1").arg(program), report.details());
+                ReportDialog::presentText(this, QMessageBox::Warning, tr("Write program %1").arg(program), report.details());
         });
     });
     const auto online = [this] { m_editor->setOnline(m_session->isOnline()); };

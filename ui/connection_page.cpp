@@ -13,7 +13,6 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSerialPortInfo>
-#include <QSettings>
 #include <QSpinBox>
 #include <QToolButton>
 
@@ -90,25 +89,16 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
 
     fillPorts();
     // A rebuilt window (language switch) shows the line in use.
-    if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying()) {
-        setPort(m_session->connection().port);
-        setProtocol(m_session->protocol().protocolId());
-        m_baud->setCurrentText(QString::number(m_session->connection().serial.baud));
-        const QVariantMap numbers = m_session->protocol().toMap();
-        m_device->setValue(numbers.value(QStringLiteral("device")).toInt());
-        m_pcNumber->setValue(numbers.value(QStringLiteral("pcNumber"), 63).toInt());
-    }
+    if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying())
+        showConnection(m_session->connection(), m_session->protocol());
     connect(refresh, &QToolButton::clicked, this, &ConnectionPage::fillPorts);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
         if (const comm::ProtocolInfo* info = currentProtocol())
             m_baud->setCurrentText(QString::number(info->defaultSerial.baud));
         updateButtons();
     });
-    connect(m_connect, &QPushButton::clicked, this, [this] {
-        // Remembered: the next start connects here instead of the simulator.
-        QSettings().setValue(QStringLiteral("connection/port"), connectionSettings().port);
-        m_session->connectTo(connectionSettings(), protocolSettings());
-    });
+    connect(m_connect, &QPushButton::clicked, this,
+            [this] { m_session->connectTo(connectionSettings(), protocolSettings()); });
     connect(m_disconnect, &QPushButton::clicked, m_session, &DeviceSession::disconnectFromDevice);
     connect(m_scan, &QPushButton::clicked, this, &ConnectionPage::scanBus);
     connect(m_devices, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
@@ -145,6 +135,16 @@ void ConnectionPage::setPort(const QString& port) {
     } else {
         m_port->setEditText(port);
     }
+}
+
+void ConnectionPage::showConnection(const comm::ConnectionSettings& connection,
+                                    const comm::ProtocolSettings& protocol) {
+    setPort(connection.port);
+    setProtocol(protocol.protocolId());
+    m_baud->setCurrentText(QString::number(connection.serial.baud));
+    const QVariantMap numbers = protocol.toMap();
+    m_device->setValue(numbers.value(QStringLiteral("device")).toInt());
+    m_pcNumber->setValue(numbers.value(QStringLiteral("pcNumber"), 63).toInt());
 }
 
 void ConnectionPage::setProtocol(const QString& id) {

@@ -32,6 +32,9 @@ public:
     comm::ConnectionSettings connectionSettings() const;
     comm::ProtocolSettingsPtr protocolSettings() const;
     void setPort(const QString& port);
+    // Shows a connection's line and protocol settings in the form.
+    void showConnection(const comm::ConnectionSettings& connection,
+                        const comm::ProtocolSettings& protocol);
     // A ProtocolRegistry id: "standard", "multiuser", ...
     void setProtocol(const QString& id);
 

@@ -2,6 +2,7 @@
 
 #include "dead_times_model.h"
 #include "device_session.h"
+#include "report_dialog.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_document.h"
@@ -70,7 +71,7 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Dead times: %1").arg(report.summary()));
             if (!report.complete())
-                QMessageBox::warning(this, tr("Dead times"), report.details());
+                ReportDialog::presentText(this, QMessageBox::Warning, tr("Dead times"), report.details());
         });
     });
     connect(m_workspace, &Workspace::infoChanged, this, &DeadTimesPage::showLimits);

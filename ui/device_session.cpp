@@ -27,6 +27,7 @@ void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
                               const comm::ProtocolSettingsPtr& protocol) {
     m_connection = connection;
     m_protocol = protocol;
+    m_freshness.reset();
     reconnect();
 }
 
@@ -42,6 +43,7 @@ void DeviceSession::disconnectFromDevice() {
     m_retry.stop();
     m_worker.cancelAll();
     m_worker.disconnectFromDevice();
+    m_freshness.paused();
 }
 
 void DeviceSession::setDevice(int device) {
@@ -75,6 +77,7 @@ void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& m
     switch (state) {
     case comm::ConnectionState::Lost:
         m_wasLost = true;
+        m_freshness.missed();
         if (m_wantConnected && !m_retry.isActive()) m_retry.start();
         break;
     case comm::ConnectionState::Connected:

@@ -3,6 +3,7 @@
 #include "comm/camcon/camcon_device.h"
 #include "comm/device/protocol_settings.h"
 #include "comm/worker/comm_worker.h"
+#include "live_freshness.h"
 
 #include <QObject>
 #include <QTimer>
@@ -42,6 +43,10 @@ public:
 
     void setRetryInterval(int ms) { m_retry.setInterval(ms); }
 
+    // How old the live values are; fed by the monitor's poll cycles, made
+    // stale by a lost line, reset by a connect to another device.
+    LiveFreshness* freshness() { return &m_freshness; }
+
     template <class T>
     using Work = std::function<Result<T>(comm::CamConDevice&, comm::JobContext&)>;
 
@@ -76,6 +81,7 @@ private:
     comm::ConnectionState m_state = comm::ConnectionState::Disconnected;
     QString m_message;
     QTimer m_retry;
+    LiveFreshness m_freshness;
     bool m_wasLost = false;
     bool m_wantConnected = false;
 };

@@ -6,13 +6,16 @@
 #include "commissioning_report.h"
 #include "compare_dialog.h"
 #include "connection_page.h"
+#include "connection_status.h"
 #include "dead_times_page.h"
 #include "device_session.h"
+#include "gui_settings.h"
 #include "language.h"
 #include "monitor_page.h"
 #include "new_project_dialog.h"
 #include "plc_page.h"
 #include "project_io.h"
+#include "report_dialog.h"
 #include "settings_page.h"
 #include "terminal_page.h"
 #include "theme.h"
@@ -46,29 +49,13 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
       m_workspace(workspace),
       m_nav(new QListWidget),
       m_stack(new QStackedWidget),
-      m_lostBanner(new QFrame),
-      m_lostText(new QLabel),
-      m_connectionLabel(new QLabel),
+      m_strip(new ConnectionStrip(session, workspace)),
+      m_indicator(new ConnectionIndicator(session)),
       m_jobLabel(new QLabel),
       m_jobProgress(new QProgressBar) {
     createPages();
     createMenus();
     createStatusBar();
-
-    // A lost line is reported where the user looks, with the way back.
-    m_lostBanner->setFrameShape(QFrame::StyledPanel);
-    m_lostBanner->setAutoFillBackground(true);
-    QPalette warn = m_lostBanner->palette();
-    warn.setColor(QPalette::Window, QColor(0xb0, 0x3a, 0x2e));
-    warn.setColor(QPalette::WindowText, Qt::white);
-    m_lostBanner->setPalette(warn);
-    m_lostText->setWordWrap(true);
-    auto* reconnect = new QPushButton(tr("Reconnect now"));
-    auto* bannerLayout = new QHBoxLayout(m_lostBanner);
-    bannerLayout->addWidget(m_lostText, 1);
-    bannerLayout->addWidget(reconnect);
-    m_lostBanner->hide();
-    connect(reconnect, &QPushButton::clicked, m_session, &DeviceSession::reconnect);
 
     m_nav->setMaximumWidth(220);
     m_nav->setMinimumWidth(170);
@@ -77,21 +64,25 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
     body->addWidget(m_stack, 1);
     auto* central = new QWidget;
     auto* layout = new QVBoxLayout(central);
-    layout->addWidget(m_lostBanner);
+    // A lost or silent line is reported where the user looks, with the way back.
+    layout->addWidget(m_strip);
     layout->addLayout(body, 1);
     setCentralWidget(central);
 
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+    connect(m_nav, &QListWidget::currentRowChanged, this, &MainWindow::updateLivePolling);
     connect(m_session, &DeviceSession::stateChanged, this, &MainWindow::updateConnection);
     connect(m_session, &DeviceSession::reconnected, this, [this] {
         showMessage(tr("Connection re-established. Your edits are unchanged."));
     });
     connect(m_workspace, &Workspace::changedCountChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::infoChanged, this, &MainWindow::updateTitle);
+    connect(m_workspace, &Workspace::projectPathChanged, this, &MainWindow::updateTitle);
     m_nav->setCurrentRow(Connection);
     updateConnection();
     updateTitle();
     resize(1280, 800);
+    updateLivePolling();
 }
 
 MainWindow::~MainWindow() = default;
@@ -114,7 +105,7 @@ void MainWindow::createPages() {
     }
     connect(backup, &BackupPage::wizardRequested, this, &MainWindow::openBackupWizard);
     connect(m_monitor, &MonitorPage::statusUpdated, m_cams, &CamPage::showStatus);
-    connect(m_monitor, &MonitorPage::pollingStopped, m_cams, &CamPage::clearLive);
+    connect(m_monitor, &MonitorPage::liveEnded, m_cams, &CamPage::clearLive);
     connect(m_connection, &ConnectionPage::deviceSelected, this, [this] { readEverything(0); });
 }
 
@@ -126,6 +117,9 @@ void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&New project…"), this, &MainWindow::newProject);
     file->addAction(tr("&Open project…"), QKeySequence::Open, this, &MainWindow::openProject);
+    m_recentMenu = file->addMenu(tr("Recent &files"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentFiles);
+    fillRecentFiles();
     file->addAction(tr("&Save project"), QKeySequence::Save, this, &MainWindow::saveProject);
     file->addAction(tr("Save project &as…"), QKeySequence::SaveAs, this, &MainWindow::saveProjectAs);
     file->addSeparator();
@@ -136,7 +130,8 @@ void MainWindow::createMenus() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     CamEditorWidget* editor = m_cams->editor();
     editor->undoAction()->setShortcut(QKeySequence::Undo);
-    editor->redoAction()->setShortcut(QKeySequence::Redo);
+    // Ctrl+Y as well: what most Windows programs and many technicians use.
+    editor->redoAction()->setShortcuts({QKeySequence(QKeySequence::Redo), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     edit->addAction(editor->undoAction());
     edit->addAction(editor->redoAction());
     edit->addSeparator();
@@ -158,6 +153,7 @@ void MainWindow::createMenus() {
     dark->setChecked(isDarkTheme());
     connect(dark, &QAction::toggled, this, [this](bool on) {
         applyTheme(on);
+        guisettings::setDark(on);
         Q_EMIT darkRequested(on);
     });
     QMenu* language = view->addMenu(tr("&Language"));
@@ -172,8 +168,12 @@ void MainWindow::createMenus() {
         const QString lang = code;
         connect(action, &QAction::triggered, this, [this, lang] { Q_EMIT languageRequested(lang); });
     }
+    view->addSeparator();
     for (int i = 0; i < COUNT; ++i) {
-        view->addAction(m_pages[i]->sectionTitle(), this, [this, i] { showSection(Section(i)); });
+        // "Encoder & system" would make "&s" a mnemonic: double the ampersand.
+        QString title = m_pages[i]->sectionTitle();
+        view->addAction(title.replace(QLatin1Char('&'), QLatin1String("&&")), this,
+                        [this, i] { showSection(Section(i)); });
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -191,7 +191,7 @@ void MainWindow::createStatusBar() {
     m_jobProgress->hide();
     statusBar()->addPermanentWidget(m_jobLabel);
     statusBar()->addPermanentWidget(m_jobProgress);
-    statusBar()->addPermanentWidget(m_connectionLabel);
+    statusBar()->addPermanentWidget(m_indicator);
     comm::CommWorker& worker = m_session->worker();
     connect(&worker, &comm::CommWorker::jobStarted, this, [this](quint64, const QString& title) {
         if (title == MonitorPage::tr("Monitor")) return;  // polls would make the bar flicker
@@ -208,21 +208,33 @@ void MainWindow::createStatusBar() {
     connect(&worker, &comm::CommWorker::jobFinished, this, [this] {
         m_jobLabel->clear();
         m_jobProgress->hide();
+        // "Reading …" is over once its job is: its outcome replaces it, or
+        // nothing does (a job without a message of its own).
+        if (statusBar()->currentMessage().endsWith(QChar(0x2026))) statusBar()->clearMessage();
     });
 }
 
 void MainWindow::showSection(Section section) { m_nav->setCurrentRow(section); }
 
+void MainWindow::updateLivePolling() {
+    // Only pages that show live values keep the line busy with polls.
+    const Section section = currentSection();
+    m_monitor->setLiveWanted(section == Monitor || section == Cams);
+}
+
 MainWindow::Section MainWindow::currentSection() const { return Section(m_stack->currentIndex()); }
 
 void MainWindow::showMessage(const QString& text) {
     m_lastMessage = text;
-    statusBar()->showMessage(text, 15000);
+    // Long enough to read twice, short enough not to describe a past state.
+    constexpr int kMessageMs = 10000;
+    statusBar()->showMessage(text, kMessageMs);
 }
 
 void MainWindow::updateTitle() {
     const int changes = m_workspace->changedCount();
-    QString where = m_projectPath.isEmpty() ? QString() : QFileInfo(m_projectPath).fileName();
+    const QString projectPath = m_workspace->projectPath();
+    QString where = projectPath.isEmpty() ? QString() : QFileInfo(projectPath).fileName();
     if (where.isEmpty()) {
         where = m_workspace->infoFromDevice()
                     ? tr("CamCon %1 (device %2)").arg(m_workspace->info().epromDate).arg(m_workspace->info().deviceNumber)
@@ -236,21 +248,8 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateConnection() {
     const comm::ConnectionState state = m_session->state();
-    QString color = QStringLiteral("#808080");
-    if (state == comm::ConnectionState::Connected) color = QStringLiteral("#2eaa40");
-    if (state == comm::ConnectionState::Connecting) color = QStringLiteral("#d89a1e");
-    if (state == comm::ConnectionState::Lost) color = QStringLiteral("#d0402e");
-    m_connectionLabel->setText(QStringLiteral("<span style='color:%1'>●</span> %2")
-                                   .arg(color, m_session->stateText().toHtmlEscaped()));
-    m_connectionLabel->setToolTip(m_session->lastMessage());
-    const bool lost = state == comm::ConnectionState::Lost || m_session->isRetrying();
-    if (state == comm::ConnectionState::Lost) {
-        m_lostText->setText(tr("The connection to %1 was lost: %2 CamBench retries by itself; your "
-                               "edits are kept.")
-                                .arg(m_session->connection().port, m_session->lastMessage()));
-        showMessage(tr("Connection lost: %1").arg(m_session->lastMessage()));
-    }
-    m_lostBanner->setVisible(lost);
+    if (state == comm::ConnectionState::Lost)
+        showMessage(tr("Connection lost: %1").arg(asSentence(m_session->lastMessage())));
     if (state == comm::ConnectionState::Connected && m_pendingProgram >= 0) {
         const int program = m_pendingProgram;
         m_pendingProgram = -1;
@@ -322,13 +321,14 @@ bool MainWindow::confirmClose() {
     }
     if (box.clickedButton() == save) {
         saveProject();
-        return m_workspace->changedCount() == 0 || !m_projectPath.isEmpty();
+        return m_workspace->changedCount() == 0 || !m_workspace->projectPath().isEmpty();
     }
     return box.clickedButton() != cancel;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (confirmClose()) {
+        guisettings::saveWindow(*this, currentSection());
         event->accept();
     } else {
         event->ignore();
@@ -344,36 +344,61 @@ void MainWindow::newProject() {
         return;
     m_session->disconnectFromDevice();
     loadProjectIntoWorkspace(*m_workspace, emptyProject(dialog.capacities()));
-    m_projectPath.clear();
-    updateTitle();
+    m_workspace->setProjectPath({});
     showSection(Cams);
 }
 
 void MainWindow::openProject() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), QString(),
                                                       tr("CamBench projects (*.json)"));
-    if (path.isEmpty()) return;
+    if (!path.isEmpty()) openProjectFile(path);
+}
+
+void MainWindow::openProjectFile(const QString& path) {
     const Result<Project> project = loadProject(path);
     if (!project) {
-        QMessageBox::warning(this, tr("Open project"), project.error().message);
+        ReportDialog::present(this, QMessageBox::Warning, tr("Open project"),
+                              tr("The project %1 was not opened.").arg(path), project.error().message);
+        if (!QFileInfo::exists(path)) guisettings::removeRecentProject(path);
         return;
     }
     loadProjectIntoWorkspace(*m_workspace, project.value());
-    m_projectPath = path;
-    updateTitle();
+    m_workspace->setProjectPath(path);
+    guisettings::addRecentProject(path);
     showMessage(tr("Project %1 opened. Its content is not on the device until you write it.").arg(path));
 }
 
+void MainWindow::fillRecentFiles() {
+    m_recentMenu->clear();
+    const QStringList recent = guisettings::recentProjects();
+    for (int i = 0; i < recent.size(); ++i) {
+        const QString path = recent.at(i);
+        // "&1 name.json" – the path in the tooltip and the status bar.
+        QString name = QFileInfo(path).fileName();
+        QAction* action = m_recentMenu->addAction(
+            QStringLiteral("&%1 %2").arg(i + 1).arg(name.replace(QLatin1Char('&'), QLatin1String("&&"))));
+        action->setToolTip(path);
+        action->setStatusTip(path);
+        connect(action, &QAction::triggered, this, [this, path] { openProjectFile(path); });
+    }
+    if (recent.isEmpty()) m_recentMenu->addAction(tr("No recent projects"))->setEnabled(false);
+    m_recentMenu->addSeparator();
+    QAction* clear = m_recentMenu->addAction(tr("&Clear list"), this, [] {
+        for (const QString& path : guisettings::recentProjects()) guisettings::removeRecentProject(path);
+    });
+    clear->setEnabled(!recent.isEmpty());
+}
+
 void MainWindow::saveProject() {
-    if (m_projectPath.isEmpty()) {
+    if (m_workspace->projectPath().isEmpty()) {
         saveProjectAs();
     } else {
-        saveProjectTo(m_projectPath);
+        saveProjectTo(m_workspace->projectPath());
     }
 }
 
 void MainWindow::saveProjectAs() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save project"), m_projectPath,
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save project"), m_workspace->projectPath(),
                                                       tr("CamBench projects (*.json)"));
     if (!path.isEmpty()) saveProjectTo(path);
 }
@@ -384,8 +409,8 @@ void MainWindow::saveProjectTo(const QString& path) {
         QMessageBox::warning(this, tr("Save project"), saved.error().message);
         return;
     }
-    m_projectPath = path;
-    updateTitle();
+    m_workspace->setProjectPath(path);
+    guisettings::addRecentProject(path);
     showMessage(tr("Project saved to %1.").arg(path));
 }
 

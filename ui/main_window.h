@@ -5,9 +5,9 @@
 #include <QMainWindow>
 
 class QAction;
-class QFrame;
 class QLabel;
 class QListWidget;
+class QMenu;
 class QProgressBar;
 class QStackedWidget;
 
@@ -16,7 +16,9 @@ namespace cambench {
 class BackupWizard;
 class CamPage;
 class CompareDialog;
+class ConnectionIndicator;
 class ConnectionPage;
+class ConnectionStrip;
 class DeadTimesPage;
 class DeviceSession;
 class MonitorPage;
@@ -64,7 +66,12 @@ public:
     bool confirmClose();
 
     void saveProjectTo(const QString& path);
+    // Opens a project file (asks first when it would replace edits).
+    void openProjectFile(const QString& path);
     Status exportReport(const QString& path);
+    QMenu* recentFilesMenu() const { return m_recentMenu; }
+    ConnectionStrip* connectionStrip() const { return m_strip; }
+    ConnectionIndicator* connectionIndicator() const { return m_indicator; }
 
 Q_SIGNALS:
     void languageRequested(const QString& language);
@@ -80,6 +87,8 @@ private:
     void createMenus();
     void createStatusBar();
     void showMessage(const QString& text);
+    void fillRecentFiles();
+    void updateLivePolling();
     void updateTitle();
     void updateConnection();
     void newProject();
@@ -92,9 +101,9 @@ private:
     Workspace* m_workspace;
     QListWidget* m_nav;
     QStackedWidget* m_stack;
-    QFrame* m_lostBanner;
-    QLabel* m_lostText;
-    QLabel* m_connectionLabel;
+    ConnectionStrip* m_strip;
+    ConnectionIndicator* m_indicator;
+    QMenu* m_recentMenu = nullptr;
     QLabel* m_jobLabel;
     QProgressBar* m_jobProgress;
     ConnectionPage* m_connection = nullptr;
@@ -106,7 +115,6 @@ private:
     MonitorPage* m_monitor = nullptr;
     TerminalPage* m_terminal = nullptr;
     QList<SectionPage*> m_pages;
-    QString m_projectPath;
     QString m_lastMessage;
     int m_pendingProgram = -1;
 };

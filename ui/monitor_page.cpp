@@ -2,6 +2,7 @@
 
 #include "device_session.h"
 #include "led_strip.h"
+#include "live_freshness.h"
 #include "trend_chart.h"
 #include "workspace.h"
 
@@ -15,10 +16,17 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 namespace cambench {
 
 namespace {
 const QString kPollKey = QStringLiteral("monitor");
+constexpr int kDefaultIntervalMs = 250;
+constexpr int kIntervalStepMs = 50;
+// Head room over the measured line time, so that a normal answer always
+// arrives before the next cycle and only a missing one counts as missed.
+constexpr double kLineMargin = 1.5;
 
 QLabel* bigValue() {
     auto* label = new QLabel(QStringLiteral("—"));
@@ -29,12 +37,25 @@ QLabel* bigValue() {
     label->setTextInteractionFlags(Qt::TextSelectableByMouse);
     return label;
 }
+
+// The readouts show the device's formatted texts (?IFGWG, ?SPEED); the
+// trend plots the same numbers, the raw value only when the text is none.
+double plotted(const QString& text, qint32 raw) {
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    return ok ? value : double(raw);
+}
+
+QString readout(const QString& text, qint32 raw) {
+    return text.trimmed().isEmpty() ? QString::number(raw) : text.trimmed();
+}
 }  // namespace
 
 MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : SectionPage(parent),
       m_session(session),
       m_workspace(workspace),
+      m_freshness(new QLabel),
       m_position(bigValue()),
       m_speed(bigValue()),
       m_program(bigValue()),
@@ -45,7 +66,10 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
       m_inputs(new LedStrip),
       m_trend(new TrendChart),
       m_pause(new QCheckBox(tr("Pause trend"))),
-      m_rate(new QSpinBox) {
+      m_rate(new QSpinBox),
+      m_rateNote(new QLabel) {
+    m_freshness->setObjectName(QStringLiteral("monitorFreshness"));
+    m_freshness->setWordWrap(true);
     auto* values = new QGroupBox(tr("Axis"));
     auto* form = new QFormLayout(values);
     form->addRow(tr("Position:"), m_position);
@@ -77,31 +101,52 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     top->addWidget(leds, 3);
 
     m_rate->setRange(100, 5000);
-    m_rate->setSingleStep(100);
-    m_rate->setValue(250);
+    m_rate->setSingleStep(kIntervalStepMs);
+    m_rate->setValue(kDefaultIntervalMs);
     m_rate->setSuffix(tr(" ms"));
-    m_rate->setToolTip(tr("How often the device is asked for its state."));
+    m_rate->setToolTip(
+        tr("How often the device is asked for its state. CamBench polls no faster "
+           "than the line can answer."));
+    m_rateNote->setWordWrap(true);
+    m_rateNote->setObjectName(QStringLiteral("pollRateNote"));
     auto* trendControls = new QHBoxLayout;
     trendControls->addWidget(new QLabel(tr("Poll every")));
     trendControls->addWidget(m_rate);
     trendControls->addWidget(m_pause);
-    trendControls->addStretch();
+    trendControls->addWidget(m_rateNote, 1);
 
     auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_freshness);
     layout->addLayout(top);
     layout->addLayout(trendControls);
     layout->addWidget(m_trend, 1);
 
-    m_timer.setInterval(m_rate->value());
+    m_timer.setInterval(kDefaultIntervalMs);
     m_clock.start();
-    connect(&m_timer, &QTimer::timeout, this, &MonitorPage::poll);
-    connect(m_rate, &QSpinBox::valueChanged, this, &MonitorPage::setPollInterval);
+    connect(&m_timer, &QTimer::timeout, this, &MonitorPage::pollCycle);
+    connect(m_rate, &QSpinBox::valueChanged, this, [this](int ms) {
+        if (ms == m_timer.interval()) return;  // our own adjustment
+        m_requestedInterval = ms;
+        m_timer.setInterval(ms);
+        m_rateNote->clear();
+    });
     connect(m_session, &DeviceSession::stateChanged, this, &MonitorPage::updateRunning);
+    connect(m_session->freshness(), &LiveFreshness::changed, this, &MonitorPage::showFreshness);
+    comm::CommWorker* worker = &m_session->worker();
+    connect(worker, &comm::CommWorker::jobStarted, this, [this](quint64 id) {
+        if (id == m_pollJob) m_lineClock.start();
+    });
+    connect(worker, &comm::CommWorker::jobFinished, this, [this](quint64 id) {
+        // Removed from the queue (cancel, reconnect) without an answer.
+        if (id == m_pollJob) m_pollJob = 0;
+    });
     connect(select, &QPushButton::clicked, this, [this] {
         const int program = m_newProgram->value();
         m_session->run<Done>(
             this, tr("Select program"),
-            [program](comm::CamConDevice& client, comm::JobContext&) { return client.selectProgram(program); },
+            [program](comm::CamConDevice& client, comm::JobContext&) {
+                return client.selectProgram(program);
+            },
             [this, program](Status status) {
                 Q_EMIT statusMessage(status ? tr("Program %1 is active.").arg(program)
                                             : tr("Program %1 not activated: %2")
@@ -114,8 +159,9 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
             this, tr("Reset error"),
             [](comm::CamConDevice& client, comm::JobContext&) { return client.resetError(); },
             [this](Status status) {
-                Q_EMIT statusMessage(status ? tr("Error reset sent.")
-                                            : tr("Error not reset: %1").arg(status.error().message));
+                Q_EMIT statusMessage(status
+                                         ? tr("Error reset sent.")
+                                         : tr("Error not reset: %1").arg(status.error().message));
             });
     });
     const auto resize = [this] {
@@ -125,47 +171,99 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     };
     connect(m_workspace, &Workspace::infoChanged, this, resize);
     resize();
-    showStatus({});
+    m_reset->setEnabled(false);
+    showFreshness();
     updateRunning();
 }
 
 void MonitorPage::setPollInterval(int ms) {
-    m_rate->setValue(ms);
+    m_requestedInterval = ms;
     m_timer.setInterval(ms);
+    m_rate->setValue(ms);
+    m_rateNote->clear();
 }
 
-void MonitorPage::setPaused(bool paused) { m_pause->setChecked(paused); }
+QString MonitorPage::rateNote() const {
+    return m_rateNote->text();
+}
 
-int MonitorPage::trendSamples() const { return m_trend->sampleCount(); }
+void MonitorPage::setPaused(bool paused) {
+    m_pause->setChecked(paused);
+}
+
+int MonitorPage::trendSamples() const {
+    return m_trend->sampleCount();
+}
+
+void MonitorPage::setTimerDriven(bool on) {
+    m_timerDriven = on;
+    updateRunning();
+}
+
+void MonitorPage::setLiveWanted(bool wanted) {
+    if (m_liveWanted == wanted) return;
+    m_liveWanted = wanted;
+    updateRunning();
+}
 
 void MonitorPage::updateRunning() {
-    if (m_session->isOnline()) {
-        if (!m_timer.isActive()) m_timer.start();
-    } else {
-        m_timer.stop();
-        m_pollPending = false;
-        Q_EMIT pollingStopped();
+    const bool polling = m_session->isOnline() && m_liveWanted;
+    if (polling) {
+        if (m_timerDriven && !m_timer.isActive()) {
+            m_timer.start();
+            pollCycle();  // the first values now, not one interval later
+        }
+        if (!m_timerDriven) m_timer.stop();
+        return;
     }
+    m_timer.stop();
+    if (m_session->isOnline()) m_session->freshness()->paused();
+    Q_EMIT liveEnded();
 }
 
-void MonitorPage::poll() {
-    // One poll in flight at a time; the key also collapses queued ones. A
-    // poll whose answer never came (cancelled with the queue) expires.
-    if (m_pollPending && m_pollSince.elapsed() < 10000) return;
-    m_pollPending = true;
-    m_pollSince.start();
+void MonitorPage::pollCycle() {
+    if (!m_session->isOnline()) return;
+    if (m_pollJob != 0) {
+        // Still waiting in the queue behind a user job: the line is busy,
+        // not silent. On the line for a whole cycle: no answer.
+        if (m_lineClock.isValid()) m_session->freshness()->missed();
+        return;
+    }
     const int outputs = m_workspace->info().outputs;
     const int inputs = m_workspace->info().inputs;
-    m_session->run<DeviceStatus>(
+    m_lineClock.invalidate();
+    m_pollJob = m_session->run<DeviceStatus>(
         this, tr("Monitor"),
         [outputs, inputs](comm::CamConDevice& client, comm::JobContext&) {
             return client.readStatus(outputs, inputs);
         },
-        [this](Result<DeviceStatus> status) {
-            m_pollPending = false;
-            if (status) showStatus(status.value());
-        },
-        comm::JobPriority::Poll, kPollKey);
+        [this](Result<DeviceStatus> status) { onPollDone(status); }, comm::JobPriority::Poll,
+        kPollKey);
+}
+
+void MonitorPage::onPollDone(const Result<DeviceStatus>& status) {
+    const qint64 lineMs = m_lineClock.isValid() ? m_lineClock.elapsed() : 0;
+    m_pollJob = 0;
+    m_lineClock.invalidate();
+    if (!status) {
+        if (status.error().kind != ErrorKind::Cancelled) m_session->freshness()->missed();
+        return;
+    }
+    adaptInterval(lineMs);
+    m_session->freshness()->answered(QDateTime::currentDateTime());
+    showStatus(status.value());
+}
+
+void MonitorPage::adaptInterval(qint64 lineMs) {
+    if (!m_timerDriven || lineMs * kLineMargin <= m_timer.interval()) return;
+    const int needed = int(std::ceil(lineMs * kLineMargin / kIntervalStepMs)) * kIntervalStepMs;
+    m_timer.setInterval(needed);
+    m_rate->setValue(needed);
+    m_rateNote->setText(
+        tr("The line needs about %1 ms per poll: polling every %2 ms instead of %3 ms.")
+            .arg(lineMs)
+            .arg(needed)
+            .arg(m_requestedInterval));
 }
 
 QString MonitorPage::errorText(int errorState) {
@@ -178,7 +276,8 @@ QString MonitorPage::errorText(int errorState) {
             return tr("Actual-value error %1: check the encoder and its cable, then reset.")
                 .arg(errorState);
         case 4:
-            return tr("Output error: an output is overloaded or short-circuited; fix it, then reset.");
+            return tr(
+                "Output error: an output is overloaded or short-circuited; fix it, then reset.");
         case 0xFF:
             return tr("EEPROM checksum error: the stored data are damaged; restore a backup.");
         default:
@@ -186,24 +285,85 @@ QString MonitorPage::errorText(int errorState) {
     }
 }
 
+QString MonitorPage::freshnessText() const {
+    return m_freshness->text();
+}
+
+QString MonitorPage::stateText() const {
+    return m_error->text();
+}
+
 void MonitorPage::showStatus(const DeviceStatus& status) {
-    const bool known = m_session->isOnline();
-    m_position->setText(known ? (status.positionText.trimmed().isEmpty()
-                                     ? QString::number(status.position)
-                                     : status.positionText.trimmed())
-                              : QStringLiteral("—"));
-    m_speed->setText(known ? (status.speedText.trimmed().isEmpty() ? QString::number(status.speed)
-                                                                   : status.speedText.trimmed())
-                           : QStringLiteral("—"));
-    m_program->setText(known ? QString::number(status.activeProgram) : QStringLiteral("—"));
-    m_error->setText(known ? errorText(status.errorState) : tr("offline"));
-    m_reset->setEnabled(known && status.errorState != 0);
+    m_position->setText(readout(status.positionText, status.position));
+    m_speed->setText(readout(status.speedText, status.speed));
+    m_program->setText(QString::number(status.activeProgram));
+    m_lastErrorState = status.errorState;
     if (!status.outputs.isEmpty()) m_outputs->setStates(status.outputs);
     if (!status.inputs.isEmpty()) m_inputs->setStates(status.inputs);
-    if (!known) return;
-    if (!m_pause->isChecked())
-        m_trend->addSample(m_clock.elapsed() / 1000.0, status.position, status.speed);
+    showFreshness();
+    if (!m_pause->isChecked()) {
+        m_trend->addSample(m_clock.elapsed() / 1000.0,
+                           plotted(status.positionText, status.position),
+                           plotted(status.speedText, status.speed));
+    }
     Q_EMIT statusUpdated(status);
+}
+
+void MonitorPage::showFreshness() {
+    const LiveFreshness* freshness = m_session->freshness();
+    const bool live = freshness->isLive();
+    const bool known = m_lastErrorState >= 0 && freshness->lastAnswer().isValid();
+    QString text;
+    switch (freshness->state()) {
+        case LiveFreshness::State::NoValues:
+            text = m_session->isOnline() ? tr("Waiting for the first answer.")
+                                         : tr("Offline: no live values.");
+            break;
+        case LiveFreshness::State::Live:
+            text = tr("Live: last answer at %1.").arg(freshness->lastAnswerText());
+            break;
+        case LiveFreshness::State::Stale:
+            text = known ? tr("No answer since %1. The values below are from then, not live.")
+                               .arg(freshness->lastAnswerText())
+                         : tr("No answer from the device.");
+            break;
+        case LiveFreshness::State::Paused:
+            text = known ? tr("Not polled: the values below are from %1.")
+                               .arg(freshness->lastAnswerText())
+                         : tr("Not polled: no live values.");
+            break;
+    }
+    m_freshness->setText(text);
+    QPalette pal = palette();
+    if (freshness->isStale()) {
+        pal.setColor(QPalette::WindowText, QColor(0xd0, 0x40, 0x2e));
+        QFont bold = font();
+        bold.setBold(true);
+        m_freshness->setFont(bold);
+    } else {
+        m_freshness->setFont(font());
+    }
+    m_freshness->setPalette(pal);
+    // Old values stay readable but are not shown as live.
+    for (QWidget* value : {static_cast<QWidget*>(m_position), static_cast<QWidget*>(m_speed),
+                           static_cast<QWidget*>(m_program), static_cast<QWidget*>(m_outputs),
+                           static_cast<QWidget*>(m_inputs)}) {
+        value->setEnabled(live);
+        value->setToolTip(known ? tr("Value of %1").arg(freshness->lastAnswerText()) : QString());
+    }
+    if (!known) {
+        m_error->setText(m_session->isOnline() ? tr("unknown") : tr("offline"));
+    } else if (live) {
+        m_error->setText(errorText(m_lastErrorState));
+    } else {
+        m_error->setText(tr("unknown now; at %1: %2")
+                             .arg(freshness->lastAnswerText(), errorText(m_lastErrorState)));
+    }
+    m_reset->setEnabled(live && m_lastErrorState > 0);
+    if (!live) {
+        m_trend->breakLine();
+        Q_EMIT liveEnded();
+    }
 }
 
 }  // namespace cambench

@@ -20,8 +20,10 @@ class TrendChart;
 class Workspace;
 
 // Live view of the device: position, speed, active program (changeable),
-// error state with reset, output and input LEDs, and a trend. Polls with
-// Poll jobs under one key, so slow lines never pile polls up.
+// error state with reset, output and input LEDs, and a trend. Polls in
+// cycles: one Poll job per cycle, never a second while one is unanswered;
+// a cycle that finds the last poll unanswered marks every live value stale
+// (see LiveFreshness). Polls only while a page shows live values.
 class MonitorPage : public SectionPage {
     Q_OBJECT
 public:
@@ -29,27 +31,49 @@ public:
 
     QString sectionTitle() const override { return tr("Monitor"); }
 
+    // One poll cycle: what the timer does every interval. Public so tests
+    // drive cycles instead of waiting for the clock.
+    void pollCycle();
+    // False: cycles come only from pollCycle() (tests).
+    void setTimerDriven(bool on);
+    // A page that shows live values is in front (monitor, cam editor).
+    void setLiveWanted(bool wanted);
+    bool isPolling() const { return m_timer.isActive(); }
+
     void setPollInterval(int ms);
+    int pollInterval() const { return m_timer.interval(); }
+    // Why the interval differs from the one asked for (empty when it does not).
+    QString rateNote() const;
     void setPaused(bool paused);
     int trendSamples() const;
+    TrendChart* trend() const { return m_trend; }
+    QString freshnessText() const;
+    QString stateText() const;
     static QString errorText(int errorState);
 
 Q_SIGNALS:
     // Every status that arrived (the cam diagram shows it live).
     void statusUpdated(const cambench::DeviceStatus& status);
-    void pollingStopped();
+    // The live values are not live any more (stale, paused or offline).
+    void liveEnded();
 
 private:
-    void poll();
+    void onPollDone(const Result<DeviceStatus>& status);
     void showStatus(const DeviceStatus& status);
+    void showFreshness();
     void updateRunning();
+    void adaptInterval(qint64 lineMs);
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     QTimer m_timer;
     QElapsedTimer m_clock;
-    bool m_pollPending = false;
-    QElapsedTimer m_pollSince;
+    bool m_timerDriven = true;
+    bool m_liveWanted = false;
+    quint64 m_pollJob = 0;      // the poll in flight, 0 = none
+    QElapsedTimer m_lineClock;  // started when the poll job reaches the line
+    int m_requestedInterval = 250;
+    QLabel* m_freshness;
     QLabel* m_position;
     QLabel* m_speed;
     QLabel* m_program;
@@ -61,6 +85,8 @@ private:
     TrendChart* m_trend;
     QCheckBox* m_pause;
     QSpinBox* m_rate;
+    QLabel* m_rateNote;
+    int m_lastErrorState = -1;
 };
 
 }  // namespace cambench

@@ -2,6 +2,7 @@
 
 #include "change_marker.h"
 #include "device_session.h"
+#include "report_dialog.h"
 #include "plc_matrix_model.h"
 #include "plc_symbol.h"
 #include "workspace.h"
@@ -106,7 +107,7 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("PLC: %1").arg(report.summary()));
-            if (!report.complete()) QMessageBox::warning(this, sectionTitle(), report.details());
+            if (!report.complete()) ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(), report.details());
         });
     });
     connect(m_value, &QSpinBox::valueChanged, this, &PlcPage::editFields);

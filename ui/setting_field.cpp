@@ -1,6 +1,7 @@
 #include "setting_field.h"
 
 #include "change_marker.h"
+#include "wheel_guard.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -43,6 +44,7 @@ SettingField::SettingField(const SettingSpec& spec, QObject* parent)
     m_label->setBuddy(m_editor);
     m_editor->setEnabled(!spec.readOnly);
     m_editor->setObjectName(QString::fromLatin1(spec.key));
+    guardWheel(m_editor);
 }
 
 QString SettingField::labelText(const SettingSpec& spec) { return settingsText(spec.label); }
@@ -164,8 +166,31 @@ QVariant SettingField::value() const {
     return {};
 }
 
+void SettingField::fitRange(const QVariant& shown) {
+    qint64 low = m_spec.min;
+    qint64 high = m_spec.max;
+    qsizetype length = m_spec.maxLength;
+    for (const QVariant& value : {shown, m_deviceKnown ? m_device : QVariant()}) {
+        if (!value.isValid()) continue;
+        low = std::min(low, value.toLongLong());
+        high = std::max(high, value.toLongLong());
+        length = std::max(length, value.toString().size());
+    }
+    if (isReference(m_spec)) low = std::min<qint64>(low, 0);  // 0 = none
+    if (auto* spin = qobject_cast<QSpinBox*>(m_editor)) {
+        spin->setRange(int(std::max<qint64>(low, std::numeric_limits<int>::min())),
+                       int(std::min<qint64>(high, std::numeric_limits<int>::max())));
+    } else if (auto* spin = qobject_cast<QDoubleSpinBox*>(m_editor)) {
+        spin->setRange(low / scale(m_spec), high / scale(m_spec));
+    } else if (auto* edit = qobject_cast<QLineEdit*>(m_editor)) {
+        // A longer text from the device is shown whole, not cut.
+        if (m_spec.maxLength > 0) edit->setMaxLength(int(length));
+    }
+}
+
 void SettingField::setValue(const QVariant& value) {
     m_updating = true;
+    fitRange(value);
     if (auto* combo = qobject_cast<QComboBox*>(m_editor)) {
         int index = combo->findData(QVariant::fromValue<qint64>(value.toLongLong()));
         if (index < 0 && value.isValid()) {
@@ -183,21 +208,49 @@ void SettingField::setValue(const QVariant& value) {
         spin->setValue(value.toLongLong() / scale(m_spec));
     }
     m_updating = false;
+    updateMarks();
 }
 
 void SettingField::setDeviceValue(const QVariant& device, bool known) {
-    const bool changed = !known || device != value();
-    m_label->setText((changed ? changedMarker() : QString()) + labelText(m_spec));
-    m_label->setFont(changed ? changedFont(m_label->font()) : QFont());
-    const QString tip = toolTipText(m_spec);
-    m_editor->setToolTip(changed ? tip + QLatin1Char('\n') +
-                                       SettingField::tr("On the device: %1").arg(known ? displayText(m_spec, device)
-                                                                            : SettingField::tr("not read"))
-                                 : tip);
+    m_device = device;
+    m_deviceKnown = known;
+    m_updating = true;
+    fitRange(value());  // going back to the device's value stays possible
+    m_updating = false;
+    updateMarks();
+}
+
+void SettingField::updateMarks() {
+    const QVariant shown = value();
+    m_changed = !m_deviceKnown || m_device != shown;
+    m_problem = shown.isValid() && !m_spec.readOnly ? settingValueProblem(m_spec, shown) : QString();
+    QString prefix = m_changed ? changedMarker() : QString();
+    if (!m_problem.isEmpty()) prefix += QStringLiteral("⚠ ");
+    m_label->setText(prefix + labelText(m_spec));
+    m_label->setFont(m_changed ? changedFont(m_label->font()) : QFont());
+    QPalette pal = m_label->parentWidget() ? m_label->parentWidget()->palette() : m_label->palette();
+    if (!m_problem.isEmpty()) pal.setColor(QPalette::WindowText, QColor(0xd0, 0x40, 0x2e));
+    m_label->setPalette(pal);
+    QString tip = toolTipText(m_spec);
+    if (!m_problem.isEmpty()) {
+        tip += QLatin1Char('\n') +
+               (m_changed ? SettingField::tr("Not allowed: %1.").arg(m_problem)
+                          : SettingField::tr("The device holds a value outside the allowed range: %1. "
+                                             "It is shown as the device has it, not changed.")
+                                .arg(m_problem));
+    }
+    if (m_changed)
+        tip += QLatin1Char('\n') + SettingField::tr("On the device: %1")
+                                       .arg(m_deviceKnown ? displayText(m_spec, m_device)
+                                                          : SettingField::tr("not read"));
+    m_editor->setToolTip(tip);
+    m_label->setToolTip(tip);
 }
 
 void SettingField::emitEdited() {
-    if (!m_updating) Q_EMIT valueEdited(QString::fromLatin1(m_spec.key), value());
+    if (m_updating) return;
+    Q_EMIT valueEdited(QString::fromLatin1(m_spec.key), value());
+    updateMarks();
 }
 
 }  // namespace cambench

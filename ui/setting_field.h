@@ -24,9 +24,14 @@ public:
     QLabel* rangeLabel() const { return m_range; }
 
     QVariant value() const;
-    void setValue(const QVariant& value);  // no valueEdited
+    // Shows `value` exactly, also outside the manual's range (the editor's
+    // range widens to hold it, and the field is flagged); no valueEdited.
+    void setValue(const QVariant& value);
     // Marks the field as differing from the device (or clears the mark).
     void setDeviceValue(const QVariant& device, bool known);
+    // Why the shown value is not one the manual allows (empty when it is).
+    QString problem() const { return m_problem; }
+    bool isMarkedChanged() const { return m_changed; }
 
     // Texts of a value for comparisons and the report.
     static QString displayText(const SettingSpec& spec, const QVariant& value);
@@ -40,12 +45,19 @@ Q_SIGNALS:
 private:
     void createEditor();
     void emitEdited();
+    // The editor's limits: the manual's range, widened to hold `value`.
+    void fitRange(const QVariant& value);
+    void updateMarks();
 
     const SettingSpec& m_spec;
     QWidget* m_editor = nullptr;
     QLabel* m_label = nullptr;
     QLabel* m_range = nullptr;
     bool m_updating = false;
+    QVariant m_device;
+    bool m_deviceKnown = false;
+    bool m_changed = false;
+    QString m_problem;
 };
 
 }  // namespace cambench

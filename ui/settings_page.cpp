@@ -1,6 +1,7 @@
 #include "settings_page.h"
 
 #include "device_session.h"
+#include "report_dialog.h"
 #include "setting_field.h"
 #include "workspace.h"
 
@@ -95,7 +96,7 @@ SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Settings: %1").arg(report.summary()));
-            if (!report.complete()) QMessageBox::warning(this, sectionTitle(), report.details());
+            if (!report.complete()) ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(), report.details());
         });
     });
     connect(m_workspace, &Workspace::settingsChanged, this, &SettingsPage::showValues);

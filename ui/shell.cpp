@@ -2,6 +2,7 @@
 
 #include "connection_page.h"
 #include "device_session.h"
+#include "gui_settings.h"
 #include "language.h"
 #include "main_window.h"
 #include "workspace.h"
@@ -9,7 +10,13 @@
 namespace cambench {
 
 Shell::Shell(QObject* parent)
-    : QObject(parent), m_session(new DeviceSession(this)), m_workspace(new Workspace(this)) {}
+    : QObject(parent), m_session(new DeviceSession(this)), m_workspace(new Workspace(this)) {
+    // Only a connection that worked is worth remembering for the next start.
+    connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
+        if (state == comm::ConnectionState::Connected)
+            guisettings::saveConnection(m_session->connection(), m_session->protocol());
+    });
+}
 
 Shell::~Shell() { delete m_window; }
 
@@ -21,14 +28,23 @@ MainWindow* Shell::createWindow() {
 
 void Shell::start(const QString& port) {
     m_window = createWindow();
+    const int section = guisettings::restoreWindow(*m_window);
+    if (section >= 0 && section < MainWindow::COUNT) m_window->showSection(MainWindow::Section(section));
     m_window->show();
-    if (port.isEmpty()) return;
-    m_window->connectionPage()->setPort(port);
+    if (port.isEmpty()) {
+        // The last connection that worked, with its protocol and settings.
+        const auto remembered = guisettings::loadConnection();
+        if (!remembered) return;
+        m_window->connectionPage()->showConnection(remembered->connection, *remembered->protocol);
+    } else {
+        m_window->connectionPage()->setPort(port);
+    }
     m_window->connectAndLoad(0);
 }
 
 void Shell::switchLanguage(const QString& language) {
     setLanguage(language);
+    guisettings::setLanguage(currentLanguage());
     if (!m_window) return;
     MainWindow* old = m_window;
     MainWindow* window = createWindow();

@@ -22,7 +22,8 @@ public:
     Workspace* workspace() const { return m_workspace; }
     MainWindow* window() const { return m_window; }
 
-    // Shows the window; with a port, connects and reads identity and program 0.
+    // Shows the window as it was left; connects to `port`, or without one
+    // to the last connection that worked, and reads identity and program 0.
     void start(const QString& port);
     void switchLanguage(const QString& language);
 

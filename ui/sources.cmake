@@ -1,9 +1,15 @@
 target_sources(cambench_ui PRIVATE
   shell_log.h
   shell_log.cpp
+  report_dialog.h
+  report_dialog.cpp
   write_report.h
   write_report.cpp
   change_marker.h
+  live_freshness.h
+  live_freshness.cpp
+  connection_status.h
+  connection_status.cpp
   device_session.h
   device_session.cpp
   workspace.h
@@ -15,6 +21,8 @@ target_sources(cambench_ui PRIVATE
   dead_times_model.cpp
   dead_times_page.h
   dead_times_page.cpp
+  wheel_guard.h
+  wheel_guard.cpp
   setting_field.h
   setting_field.cpp
   settings_page.h
@@ -49,6 +57,8 @@ target_sources(cambench_ui PRIVATE
   backup_wizard.cpp
   backup_page.h
   backup_page.cpp
+  gui_settings.h
+  gui_settings.cpp
   theme.h
   theme.cpp
   language.h

@@ -2,6 +2,7 @@
 
 #include "access_grid_model.h"
 #include "device_session.h"
+#include "report_dialog.h"
 #include "users_model.h"
 #include "workspace.h"
 
@@ -107,7 +108,7 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Users: %1").arg(report.summary()));
-            if (!report.complete()) QMessageBox::warning(this, sectionTitle(), report.details());
+            if (!report.complete()) ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(), report.details());
         });
     });
     connect(add, &QPushButton::clicked, this, [this] {

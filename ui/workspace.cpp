@@ -31,6 +31,12 @@ void Workspace::setInfo(const DeviceInfo& info, bool fromDevice) {
     Q_EMIT infoChanged();
 }
 
+void Workspace::setProjectPath(const QString& path) {
+    if (m_projectPath == path) return;
+    m_projectPath = path;
+    Q_EMIT projectPathChanged();
+}
+
 // --- output names and dead times
 
 void Workspace::loadOutputSettingsFromDevice(const QMap<int, QString>& names,

@@ -32,6 +32,11 @@ public:
 
     CamDocument* cams() const { return m_cams; }
 
+    // The project file this work was last opened from or saved to (empty:
+    // none). Kept here, not in the window, so a language switch keeps it.
+    QString projectPath() const { return m_projectPath; }
+    void setProjectPath(const QString& path);
+
     // --- Output names and dead times: edited in the CamDocument; the device
     // copy is mirrored here per output so a partly failed write keeps exactly
     // the failed items marked as edited.
@@ -88,6 +93,7 @@ public:
 
 Q_SIGNALS:
     void infoChanged();
+    void projectPathChanged();
     void settingsChanged();
     void usersChanged();
     void plcChanged();
@@ -97,6 +103,7 @@ private:
     void notifyChanged();
 
     DeviceInfo m_info;
+    QString m_projectPath;
     bool m_infoFromDevice = false;
     CamDocument* m_cams;
     bool m_outputSettingsKnown = false;

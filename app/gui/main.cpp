@@ -1,5 +1,6 @@
 #include "app/registry/builtin_registry.h"
 #include "cambench_version.h"
+#include "ui/gui_settings.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/screenshot_tour.h"
@@ -9,6 +10,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QSettings>
+#include <QTemporaryDir>
 
 #include <cstdio>
 
@@ -38,21 +40,29 @@ int main(int argc, char* argv[]) {
     parser.addOptions({lang, dark, port, shots});
     parser.process(app);
 
-    const QString language = parser.isSet(lang) ? parser.value(lang) : cambench::systemLanguage();
+    // The screenshot tour shows the program as first started and must not
+    // overwrite what the user's CamBench remembers: its own, empty settings.
+    QTemporaryDir tourSettings;
+    if (parser.isSet(shots)) {
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, tourSettings.path());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, tourSettings.path());
+    }
+
+    // The command line first, then what the user chose last time, then the system's.
+    QString language = parser.isSet(lang) ? parser.value(lang) : cambench::guisettings::language();
+    if (language.isEmpty()) language = cambench::systemLanguage();
     if (language != QLatin1String("de") && language != QLatin1String("en")) {
         std::fprintf(stderr, "cambench: unknown language '%s'; use de or en.\n", qPrintable(language));
         return 2;
     }
     cambench::setLanguage(language);
-    cambench::applyTheme(parser.isSet(dark));
+    cambench::applyTheme(parser.isSet(dark) || cambench::guisettings::dark().value_or(false));
 
-    // Without a configured device the simulated one, with its demo program.
+    // The port given, else the last connection that worked (empty: the
+    // shell takes it), else the simulated device with its demo program.
     QString startPort = parser.value(port);
-    if (parser.isSet(shots)) {
+    if (parser.isSet(shots) || (startPort.isEmpty() && !cambench::guisettings::loadConnection()))
         startPort = QStringLiteral("sim");
-    } else if (startPort.isEmpty()) {
-        startPort = QSettings().value(QStringLiteral("connection/port"), QStringLiteral("sim")).toString();
-    }
     cambench::Shell shell;
     shell.start(startPort);
 

@@ -1,0 +1,139 @@
+#include "connection_status.h"
+
+#include "device_session.h"
+#include "live_freshness.h"
+#include "workspace.h"
+
+#include <QHBoxLayout>
+#include <QPushButton>
+
+namespace cambench {
+
+namespace {
+const QColor kAlarm(0xb0, 0x3a, 0x2e);
+const QColor kGood(0x2e, 0xaa, 0x40);
+const QColor kBusy(0xd8, 0x9a, 0x1e);
+const QColor kIdle(0x80, 0x80, 0x80);
+
+bool silent(DeviceSession* session) {
+    return session->state() == comm::ConnectionState::Connected && session->freshness()->isStale();
+}
+}  // namespace
+
+QString asSentence(const QString& text) {
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty()) return trimmed;
+    const QChar last = trimmed.back();
+    if (last == QLatin1Char('.') || last == QLatin1Char('!') || last == QLatin1Char('?') ||
+        last == QChar(0x2026))
+        return trimmed;
+    return trimmed + QLatin1Char('.');
+}
+
+ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, QWidget* parent)
+    : QFrame(parent),
+      m_session(session),
+      m_workspace(workspace),
+      m_text(new QLabel),
+      m_reconnect(new QPushButton(tr("Reconnect now"))) {
+    setObjectName(QStringLiteral("connectionStrip"));
+    setFrameShape(QFrame::StyledPanel);
+    setAutoFillBackground(true);
+    m_text->setWordWrap(true);
+    m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(8, 4, 8, 4);
+    layout->addWidget(m_text, 1);
+    layout->addWidget(m_reconnect);
+    // Two lines of text and the button, whatever is shown: the pages below
+    // never move when the line is lost or comes back.
+    const int lines = 2 * fontMetrics().lineSpacing() + 8;
+    setFixedHeight(std::max(lines, m_reconnect->sizeHint().height() + 8));
+    m_reconnect->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    QSizePolicy keep = m_reconnect->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    m_reconnect->setSizePolicy(keep);
+    connect(m_reconnect, &QPushButton::clicked, m_session, &DeviceSession::reconnect);
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionStrip::update);
+    connect(m_session->freshness(), &LiveFreshness::changed, this, &ConnectionStrip::update);
+    connect(m_workspace, &Workspace::infoChanged, this, &ConnectionStrip::update);
+    update();
+}
+
+QString ConnectionStrip::text() const {
+    return m_text->text();
+}
+
+void ConnectionStrip::update() {
+    const comm::ConnectionState state = m_session->state();
+    const QString port = m_session->connection().port;
+    const bool lost = state == comm::ConnectionState::Lost || m_session->isRetrying();
+    QString text;
+    if (lost) {
+        text = tr("The connection to %1 is lost.").arg(port);
+        if (!m_session->lastMessage().isEmpty())
+            text += QLatin1Char(' ') + asSentence(m_session->lastMessage());
+        text += QLatin1Char('\n') + tr("CamBench tries again by itself; your edits are kept.");
+    } else if (silent(m_session)) {
+        text = tr("The device on %1 has not answered since %2.")
+                   .arg(port, m_session->freshness()->lastAnswerText()) +
+               QLatin1Char('\n') +
+               tr("Live values are from then. Check the cable and the device's power; your edits "
+                  "are kept.");
+    } else if (state == comm::ConnectionState::Connected) {
+        const DeviceInfo& info = m_workspace->info();
+        text = m_workspace->infoFromDevice()
+                   ? tr("Connected to %1: CamCon %2, device number %3.")
+                         .arg(m_session->stateText(), info.epromDate)
+                         .arg(info.deviceNumber)
+                   : tr("%1; identity not read yet.").arg(m_session->stateText());
+    } else if (state == comm::ConnectionState::Connecting) {
+        text = m_session->stateText();
+    } else {
+        text = tr("Offline. What you edit stays on this PC until you connect and write it.");
+    }
+    m_alarm = lost || silent(m_session);
+    m_text->setText(text);
+    m_reconnect->setVisible(lost);
+    QPalette pal = palette();
+    if (m_alarm) {
+        pal.setColor(QPalette::Window, kAlarm);
+        pal.setColor(QPalette::WindowText, Qt::white);
+    } else {
+        pal = QPalette();
+    }
+    setPalette(pal);
+    m_text->setPalette(pal);
+}
+
+ConnectionIndicator::ConnectionIndicator(DeviceSession* session, QWidget* parent)
+    : QLabel(parent), m_session(session) {
+    setObjectName(QStringLiteral("connectionIndicator"));
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionIndicator::update);
+    connect(m_session->freshness(), &LiveFreshness::changed, this, &ConnectionIndicator::update);
+    update();
+}
+
+void ConnectionIndicator::update() {
+    const comm::ConnectionState state = m_session->state();
+    QColor color = kIdle;
+    m_stateText = m_session->stateText();
+    if (state == comm::ConnectionState::Connected) {
+        color = kGood;
+        if (silent(m_session)) {
+            color = kAlarm;
+            m_stateText =
+                tr("No answer since %1 (%2)")
+                    .arg(m_session->freshness()->lastAnswerText(), m_session->connection().port);
+        }
+    }
+    if (state == comm::ConnectionState::Connecting) color = kBusy;
+    if (state == comm::ConnectionState::Lost || m_session->isRetrying()) color = kAlarm;
+    setText(QStringLiteral("<span style='color:%1'>●</span> %2")
+                .arg(color.name(), m_stateText.toHtmlEscaped()));
+    QString tip = m_session->freshness()->describe();
+    if (!m_session->lastMessage().isEmpty()) tip += QLatin1Char('\n') + m_session->lastMessage();
+    setToolTip(tip);
+}
+
+}  // namespace cambench

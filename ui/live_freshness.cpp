@@ -1,0 +1,59 @@
+#include "live_freshness.h"
+
+#include <QLocale>
+
+namespace cambench {
+
+LiveFreshness::LiveFreshness(QObject* parent) : QObject(parent) {}
+
+void LiveFreshness::answered(const QDateTime& at) {
+    const bool wasLive = m_state == State::Live;
+    m_lastAnswer = at;
+    if (wasLive) {
+        Q_EMIT changed(m_state);  // still live, with a new time to show
+    } else {
+        setState(State::Live);
+    }
+}
+
+void LiveFreshness::missed() {
+    if (m_state != State::Stale) setState(State::Stale);
+}
+
+void LiveFreshness::paused() {
+    if (m_state != State::NoValues) setState(State::Paused);
+}
+
+void LiveFreshness::reset() {
+    m_lastAnswer = {};
+    setState(State::NoValues);
+}
+
+void LiveFreshness::setState(State state) {
+    if (m_state == state) return;
+    m_state = state;
+    Q_EMIT changed(state);
+}
+
+QString LiveFreshness::lastAnswerText() const {
+    return m_lastAnswer.isValid()
+               ? QLocale().toString(m_lastAnswer.time(), QStringLiteral("HH:mm:ss"))
+               : QStringLiteral("—");
+}
+
+QString LiveFreshness::describe() const {
+    switch (m_state) {
+        case State::NoValues:
+            return tr("No live values yet");
+        case State::Live:
+            return tr("Live, last answer %1").arg(lastAnswerText());
+        case State::Stale:
+            return m_lastAnswer.isValid() ? tr("No answer since %1").arg(lastAnswerText())
+                                          : tr("No answer yet");
+        case State::Paused:
+            return tr("Not polled now; values of %1").arg(lastAnswerText());
+    }
+    return {};
+}
+
+}  // namespace cambench

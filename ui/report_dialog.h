@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QDialog>
+#include <QMessageBox>
+
+class QDialogButtonBox;
+class QLabel;
+class QPlainTextEdit;
+
+namespace cambench {
+
+// A message with a short summary above and any number of detail lines in
+// a scrolling box below: never taller than the screen, its OK button always
+// on it (a QMessageBox grows with its text; 96 failures made one 2,774 px).
+class ReportDialog : public QDialog {
+    Q_OBJECT
+public:
+    ReportDialog(QMessageBox::Icon icon, const QString& title, const QString& summary,
+                 const QString& details, QWidget* parent = nullptr);
+
+    QString summary() const;
+    QString details() const;
+    QDialogButtonBox* buttons() const { return m_buttons; }
+
+    // Modal; returns when the user closed it.
+    static void present(QWidget* parent, QMessageBox::Icon icon, const QString& title,
+                        const QString& summary, const QString& details = {});
+    // The summary is the first line of `text`, the rest the details.
+    static void presentText(QWidget* parent, QMessageBox::Icon icon, const QString& title,
+                            const QString& text);
+
+private:
+    QLabel* m_summary;
+    QPlainTextEdit* m_details;
+    QDialogButtonBox* m_buttons;
+};
+
+}  // namespace cambench
