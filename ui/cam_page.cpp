@@ -11,9 +11,9 @@
 #include <QCoreApplication>
 #include <QMessageBox>
 
-#include <algorithm>
 #include <QSet>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace cambench {
 
@@ -26,7 +26,9 @@ QString camsText(const Track& track) {
     return cams.join(QStringLiteral(", "));
 }
 
-QString trackKey(int program, int output) { return QStringLiteral("track:%1:%2").arg(program).arg(output); }
+QString trackKey(int program, int output) {
+    return QStringLiteral("track:%1:%2").arg(program).arg(output);
+}
 
 }  // namespace
 
@@ -40,13 +42,16 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     layout->addWidget(m_editor);
     connect(m_editor, &CamEditorWidget::readProgramRequested, this, [this](int program) {
         readProgram(program, [this, program](const Status& status) {
-            if (!status) QMessageBox::warning(this, tr("Read program %1").arg(program), status.error().message);
+            if (!status)
+                QMessageBox::warning(this, tr("Read program %1").arg(program),
+                                     status.error().message);
         });
     });
     connect(m_editor, &CamEditorWidget::writeProgramRequested, this, [this](int program) {
         writeProgram(program, [this, program](const WriteReport& report) {
             if (!report.complete())
-                ReportDialog::presentText(this, QMessageBox::Warning, tr("Write program %1").arg(program), report.details());
+                ReportDialog::presentText(this, QMessageBox::Warning,
+                                          tr("Write program %1").arg(program), report.details());
         });
     });
     const auto online = [this] { m_editor->setOnline(m_session->isOnline()); };
@@ -59,7 +64,9 @@ void CamPage::showStatus(const DeviceStatus& status) {
     m_editor->diagram()->setOutputStates(status.outputs);
 }
 
-void CamPage::clearLive() { m_editor->diagram()->clearLive(); }
+void CamPage::clearLive() {
+    m_editor->diagram()->clearLive();
+}
 
 void CamPage::readProgram(int program, std::function<void(const Status&)> done) {
     const int outputs = m_workspace->info().outputs;
@@ -67,8 +74,8 @@ void CamPage::readProgram(int program, std::function<void(const Status&)> done) 
     m_session->run<CamProgram>(
         this, tr("Read program %1").arg(program),
         [program, outputs](comm::CamConDevice& client, comm::JobContext& job) {
-            return client.readProgram(program, outputs,
-                                      [&job](qint64 done, qint64 total) { job.progress(done, total); });
+            return client.readProgram(
+                program, outputs, [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this, program, done](Result<CamProgram> result) {
             if (!result) {
@@ -87,7 +94,8 @@ void CamPage::readProgram(int program, std::function<void(const Status&)> done) 
 void CamPage::writeProgram(int program, std::function<void(const WriteReport&)> done) {
     QStringList keys;
     for (const SectionDifference& difference : differences()) {
-        if (difference.key.section(QLatin1Char(':'), 1, 1).toInt() == program) keys << difference.key;
+        if (difference.key.section(QLatin1Char(':'), 1, 1).toInt() == program)
+            keys << difference.key;
     }
     const int unchanged = m_workspace->info().outputs -
                           int(std::count_if(keys.cbegin(), keys.cend(), [](const QString& key) {
@@ -109,7 +117,8 @@ QList<SectionDifference> CamPage::differences() const {
         withTracks.insert(d.program);
         list.append({trackKey(d.program, d.output),
                      tr("Program %1, output %2").arg(d.program).arg(d.output),
-                     d.deviceKnown ? camsText(d.deviceTrack) : tr("not read"), camsText(d.editedTrack)});
+                     d.deviceKnown ? camsText(d.deviceTrack) : tr("not read"),
+                     camsText(d.editedTrack)});
     }
     // An edited program whose tracks all match differs in its name.
     for (int program : cams->editedPrograms()) {
@@ -143,16 +152,24 @@ void CamPage::writeItems(const QStringList& keys, std::function<void(const Write
         if (parts.at(0) == QLatin1String("name")) {
             items.append({d.key, d.item, program, {}, true, cams->programName(program)});
         } else {
-            items.append({d.key, d.item, program, cams->track(program, parts.at(2).toInt()), false, {}});
+            items.append(
+                {d.key, d.item, program, cams->track(program, parts.at(2).toInt()), false, {}});
         }
     }
     // A program's name travels with it: write it along when it changed.
     for (int program : programs) {
         const QString key = QStringLiteral("programName:%1").arg(program);
-        const bool listed = std::any_of(items.cbegin(), items.cend(),
-                                        [&](const Item& item) { return item.isName && item.program == program; });
-        if (!listed && cams->hasDeviceCopy(program) && cams->programState(program) == ChangeState::Edited)
-            items.append({key, tr("Program %1 name").arg(program), program, {}, true, cams->programName(program)});
+        const bool listed = std::any_of(items.cbegin(), items.cend(), [&](const Item& item) {
+            return item.isName && item.program == program;
+        });
+        if (!listed && cams->hasDeviceCopy(program) &&
+            cams->programState(program) == ChangeState::Edited)
+            items.append({key,
+                          tr("Program %1 name").arg(program),
+                          program,
+                          {},
+                          true,
+                          cams->programName(program)});
     }
     WriteReport base;
     base.unchanged = int(remaining.size());
@@ -169,7 +186,8 @@ void CamPage::writeItems(const QStringList& keys, std::function<void(const Write
                                          : client.writeTrack(item.program, item.track);
                 }
                 // Old firmware without program names: the cams are what counts.
-                if (item.isName && !status && status.error().kind == ErrorKind::NotUnderstood) continue;
+                if (item.isName && !status && status.error().kind == ErrorKind::NotUnderstood)
+                    continue;
                 outcomes.append({item.key, item.label, status ? Error{} : status.error()});
             }
             return outcomes;
@@ -178,8 +196,10 @@ void CamPage::writeItems(const QStringList& keys, std::function<void(const Write
             WriteReport report = base;
             ItemOutcomes counted;
             for (const ItemOutcome& outcome : outcomes.value()) {
-                if (!outcome.key.startsWith(QLatin1String("programName:"))) counted << outcome;
-                else if (outcome.error.kind != ErrorKind::None) counted << outcome;
+                if (!outcome.key.startsWith(QLatin1String("programName:")))
+                    counted << outcome;
+                else if (outcome.error.kind != ErrorKind::None)
+                    counted << outcome;
             }
             report.add(counted);
             applyWritten(programs, outcomes.value());

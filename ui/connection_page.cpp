@@ -29,8 +29,9 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
 
     m_port = new QComboBox;
     m_port->setEditable(true);
-    m_port->setToolTip(tr("A serial port, tcp://host:port for a serial device server, or the "
-                          "simulated device."));
+    m_port->setToolTip(
+        tr("A serial port, tcp://host:port for a serial device server, or the "
+           "simulated device."));
     auto* refresh = new QToolButton;
     refresh->setText(tr("Refresh"));
     refresh->setToolTip(tr("Look for serial ports again"));
@@ -45,7 +46,8 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     form->addRow(tr("Protocol:"), m_protocol);
 
     m_baud = new QComboBox;
-    for (int baud : {9600, 19200, 38400, 57600, 115200}) m_baud->addItem(QString::number(baud), baud);
+    for (int baud : {9600, 19200, 38400, 57600, 115200})
+        m_baud->addItem(QString::number(baud), baud);
     form->addRow(tr("Baud rate:"), m_baud);
 
     m_device = new QSpinBox;
@@ -70,8 +72,9 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     auto* bus = new QGroupBox(tr("Devices on the line"));
     auto* busLayout = new QVBoxLayout(bus);
     m_scan = new QPushButton(tr("Scan bus"));
-    m_scan->setToolTip(tr("Ask every device number 0–63 for an answer (Multiuser), or identify "
-                          "the one device of a point-to-point line."));
+    m_scan->setToolTip(
+        tr("Ask every device number 0–63 for an answer (Multiuser), or identify "
+           "the one device of a point-to-point line."));
     m_devices = new QListWidget;
     m_devices->setToolTip(tr("Double-click a device to work with it."));
     busLayout->addWidget(m_scan, 0, Qt::AlignLeft);
@@ -119,10 +122,10 @@ void ConnectionPage::fillPorts() {
     m_port->addItem(tr("Simulated device"), kSimPort);
     const auto ports = QSerialPortInfo::availablePorts();
     for (const QSerialPortInfo& info : ports) {
-        const QString text = info.description().isEmpty()
-                                 ? info.systemLocation()
-                                 : QStringLiteral("%1 (%2)").arg(info.systemLocation(),
-                                                                 info.description());
+        const QString text =
+            info.description().isEmpty()
+                ? info.systemLocation()
+                : QStringLiteral("%1 (%2)").arg(info.systemLocation(), info.description());
         m_port->addItem(text, info.systemLocation());
     }
     setPort(current.isEmpty() ? kSimPort : current);
@@ -259,13 +262,14 @@ void ConnectionPage::showInfo() {
     row(tr("Programs:"), tr("0 … %1").arg(info.programs - 1));
     row(tr("Position range:"), units.arg(info.minPosition).arg(info.maxPosition));
     row(tr("Outputs with dead time:"), QString::number(info.deadTimeOutputs));
-    row(tr("Maximum dead time:"), tr("%1 ms").arg(QLocale().toString(info.maxDeadTime / 10.0, 'f', 1)));
+    row(tr("Maximum dead time:"),
+        tr("%1 ms").arg(QLocale().toString(info.maxDeadTime / 10.0, 'f', 1)));
     if (m_workspace->infoFromDevice()) {
         row(tr("Programmed cams:"), QString::number(info.programmedCams));
         row(tr("Free cam memory:"), tr("%n cam(s)", nullptr, int(info.freeCams)));
         row(tr("CPU clock:"), info.cpuClock == 1 ? tr("25.2 MHz") : tr("16.7 MHz"));
-        row(tr("Temperature:"), info.temperature == 255 ? tr("no sensor")
-                                                         : tr("%1 °C").arg(info.temperature));
+        row(tr("Temperature:"),
+            info.temperature == 255 ? tr("no sensor") : tr("%1 °C").arg(info.temperature));
     }
 }
 

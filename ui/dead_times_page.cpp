@@ -58,9 +58,10 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
     buttons->addWidget(m_limits);
 
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(tr("The dead time makes an output switch earlier by the time its "
-                                "actuator needs, at every speed. It belongs to the output, not "
-                                "to a program."));
+    auto* intro =
+        new QLabel(tr("The dead time makes an output switch earlier by the time its "
+                      "actuator needs, at every speed. It belongs to the output, not "
+                      "to a program."));
     intro->setWordWrap(true);
     layout->addWidget(intro);
     layout->addLayout(buttons);
@@ -71,7 +72,8 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Dead times: %1").arg(report.summary()));
             if (!report.complete())
-                ReportDialog::presentText(this, QMessageBox::Warning, tr("Dead times"), report.details());
+                ReportDialog::presentText(this, QMessageBox::Warning, tr("Dead times"),
+                                          report.details());
         });
     });
     connect(m_workspace, &Workspace::infoChanged, this, &DeadTimesPage::showLimits);
@@ -79,10 +81,13 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
 }
 
 void DeadTimesPage::showLimits() {
-    m_limits->setText(tr("0.1 ms steps, at most %1 (?GTZKMAX)").arg(ms(m_workspace->info().maxDeadTime)));
+    m_limits->setText(
+        tr("0.1 ms steps, at most %1 (?GTZKMAX)").arg(ms(m_workspace->info().maxDeadTime)));
 }
 
-void DeadTimesPage::deviceConnected() { readFromDevice(); }
+void DeadTimesPage::deviceConnected() {
+    readFromDevice();
+}
 
 void DeadTimesPage::readFromDevice() {
     const int outputs = m_workspace->info().deadTimeOutputs;
@@ -105,7 +110,8 @@ void DeadTimesPage::readFromDevice() {
         },
         [this](Result<OutputSettings> result) {
             if (!result) {
-                Q_EMIT statusMessage(tr("Reading dead times failed: %1").arg(result.error().message));
+                Q_EMIT statusMessage(
+                    tr("Reading dead times failed: %1").arg(result.error().message));
                 return;
             }
             m_workspace->loadOutputSettingsFromDevice(result->names, result->deadTimes);
@@ -153,7 +159,8 @@ void DeadTimesPage::writeItems(const QStringList& keys,
         const int output = difference.key.section(QLatin1Char(':'), 1).toInt();
         const bool isName = difference.key.startsWith(QLatin1String("name:"));
         items.append({difference.key, difference.item, output, isName,
-                      m_workspace->cams()->deadTime(output), m_workspace->cams()->outputName(output)});
+                      m_workspace->cams()->deadTime(output),
+                      m_workspace->cams()->outputName(output)});
     }
     WriteReport base;
     // Selected items that already match, or (write all) every output that does.
@@ -171,8 +178,9 @@ void DeadTimesPage::writeItems(const QStringList& keys,
                     outcomes.append({item.key, item.label, Error::cancelled()});
                     continue;
                 }
-                const Status status = item.isName ? client.writeOutputName(item.output, item.name)
-                                                  : client.writeDeadTime(item.output, item.deadTime);
+                const Status status = item.isName
+                                          ? client.writeOutputName(item.output, item.name)
+                                          : client.writeDeadTime(item.output, item.deadTime);
                 outcomes.append({item.key, item.label, status ? Error{} : status.error()});
             }
             return outcomes;

@@ -21,7 +21,9 @@ DeviceSession::DeviceSession(QObject* parent)
             &DeviceSession::onStateChanged, Qt::QueuedConnection);
 }
 
-DeviceSession::~DeviceSession() { m_retry.stop(); }
+DeviceSession::~DeviceSession() {
+    m_retry.stop();
+}
 
 void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
                               const comm::ProtocolSettingsPtr& protocol) {
@@ -55,17 +57,17 @@ void DeviceSession::setDevice(int device) {
 
 QString DeviceSession::stateText() const {
     switch (m_state) {
-    case comm::ConnectionState::Disconnected:
-        return m_retry.isActive() ? tr("Connection to %1 lost, retrying").arg(m_connection.port)
-                                  : tr("Offline");
-    case comm::ConnectionState::Connecting:
-        return tr("Connecting to %1…").arg(m_connection.port);
-    case comm::ConnectionState::Connected:
-        return m_connection.port == QLatin1String("sim")
-                   ? tr("Connected to the simulated device")
-                   : tr("Connected to %1").arg(m_connection.port);
-    case comm::ConnectionState::Lost:
-        return tr("Connection to %1 lost, retrying").arg(m_connection.port);
+        case comm::ConnectionState::Disconnected:
+            return m_retry.isActive() ? tr("Connection to %1 lost, retrying").arg(m_connection.port)
+                                      : tr("Offline");
+        case comm::ConnectionState::Connecting:
+            return tr("Connecting to %1…").arg(m_connection.port);
+        case comm::ConnectionState::Connected:
+            return m_connection.port == QLatin1String("sim")
+                       ? tr("Connected to the simulated device")
+                       : tr("Connected to %1").arg(m_connection.port);
+        case comm::ConnectionState::Lost:
+            return tr("Connection to %1 lost, retrying").arg(m_connection.port);
     }
     return {};
 }
@@ -75,20 +77,20 @@ void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& m
     m_message = message;
     qCInfo(shellLog) << "connection state" << int(state) << message;
     switch (state) {
-    case comm::ConnectionState::Lost:
-        m_wasLost = true;
-        m_freshness.missed();
-        if (m_wantConnected && !m_retry.isActive()) m_retry.start();
-        break;
-    case comm::ConnectionState::Connected:
-        m_retry.stop();
-        break;
-    case comm::ConnectionState::Disconnected:
-        // A failed retry ends here too; keep trying while the user wants the line.
-        if (m_wasLost && m_wantConnected && !m_retry.isActive()) m_retry.start();
-        break;
-    case comm::ConnectionState::Connecting:
-        break;
+        case comm::ConnectionState::Lost:
+            m_wasLost = true;
+            m_freshness.missed();
+            if (m_wantConnected && !m_retry.isActive()) m_retry.start();
+            break;
+        case comm::ConnectionState::Connected:
+            m_retry.stop();
+            break;
+        case comm::ConnectionState::Disconnected:
+            // A failed retry ends here too; keep trying while the user wants the line.
+            if (m_wasLost && m_wantConnected && !m_retry.isActive()) m_retry.start();
+            break;
+        case comm::ConnectionState::Connecting:
+            break;
     }
     Q_EMIT stateChanged(state, message);
     if (state == comm::ConnectionState::Connected && m_wasLost) {

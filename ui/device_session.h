@@ -55,8 +55,7 @@ public:
     template <class T>
     quint64 run(QObject* context, const QString& title, Work<T> work,
                 std::function<void(Result<T>)> done,
-                comm::JobPriority priority = comm::JobPriority::User,
-                const QString& pollKey = {}) {
+                comm::JobPriority priority = comm::JobPriority::User, const QString& pollKey = {}) {
         return m_worker.run<Result<T>>(
             context, priority, title,
             [work = std::move(work)](comm::JobContext& job) -> Result<T> {

@@ -72,9 +72,8 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_nav, &QListWidget::currentRowChanged, this, &MainWindow::updateLivePolling);
     connect(m_session, &DeviceSession::stateChanged, this, &MainWindow::updateConnection);
-    connect(m_session, &DeviceSession::reconnected, this, [this] {
-        showMessage(tr("Connection re-established. Your edits are unchanged."));
-    });
+    connect(m_session, &DeviceSession::reconnected, this,
+            [this] { showMessage(tr("Connection re-established. Your edits are unchanged.")); });
     connect(m_workspace, &Workspace::changedCountChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::infoChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::projectPathChanged, this, &MainWindow::updateTitle);
@@ -97,7 +96,8 @@ void MainWindow::createPages() {
     m_monitor = new MonitorPage(m_session, m_workspace);
     auto* backup = new BackupPage;
     m_terminal = new TerminalPage(m_session);
-    m_pages = {m_connection, m_cams, m_deadTimes, m_settings, m_users, m_plc, m_monitor, backup, m_terminal};
+    m_pages = {m_connection, m_cams,    m_deadTimes, m_settings, m_users,
+               m_plc,        m_monitor, backup,      m_terminal};
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
         m_nav->addItem(page->sectionTitle());
@@ -121,7 +121,8 @@ void MainWindow::createMenus() {
     connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentFiles);
     fillRecentFiles();
     file->addAction(tr("&Save project"), QKeySequence::Save, this, &MainWindow::saveProject);
-    file->addAction(tr("Save project &as…"), QKeySequence::SaveAs, this, &MainWindow::saveProjectAs);
+    file->addAction(tr("Save project &as…"), QKeySequence::SaveAs, this,
+                    &MainWindow::saveProjectAs);
     file->addSeparator();
     file->addAction(tr("Commissioning &report (PDF)…"), this, &MainWindow::exportReportInteractive);
     file->addSeparator();
@@ -131,7 +132,8 @@ void MainWindow::createMenus() {
     CamEditorWidget* editor = m_cams->editor();
     editor->undoAction()->setShortcut(QKeySequence::Undo);
     // Ctrl+Y as well: what most Windows programs and many technicians use.
-    editor->redoAction()->setShortcuts({QKeySequence(QKeySequence::Redo), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    editor->redoAction()->setShortcuts(
+        {QKeySequence(QKeySequence::Redo), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     edit->addAction(editor->undoAction());
     edit->addAction(editor->redoAction());
     edit->addSeparator();
@@ -142,7 +144,8 @@ void MainWindow::createMenus() {
         m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
     });
     device->addAction(tr("&Disconnect"), m_session, &DeviceSession::disconnectFromDevice);
-    device->addAction(tr("&Read everything"), this, [this] { readEverything(m_cams->editor()->currentProgram()); });
+    device->addAction(tr("&Read everything"), this,
+                      [this] { readEverything(m_cams->editor()->currentProgram()); });
     device->addSeparator();
     device->addAction(tr("Co&mpare with device…"), this, &MainWindow::openCompare);
     device->addAction(tr("&Backup and restore…"), this, &MainWindow::openBackupWizard);
@@ -158,15 +161,17 @@ void MainWindow::createMenus() {
     });
     QMenu* language = view->addMenu(tr("&Language"));
     auto* group = new QActionGroup(language);
-    const QList<QPair<QString, QString>> languages{{QStringLiteral("en"), QStringLiteral("English")},
-                                                   {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+    const QList<QPair<QString, QString>> languages{
+        {QStringLiteral("en"), QStringLiteral("English")},
+        {QStringLiteral("de"), QStringLiteral("Deutsch")}};
     for (const auto& [code, name] : languages) {
         QAction* action = language->addAction(name);
         action->setCheckable(true);
         action->setChecked(currentLanguage() == code);
         group->addAction(action);
         const QString lang = code;
-        connect(action, &QAction::triggered, this, [this, lang] { Q_EMIT languageRequested(lang); });
+        connect(action, &QAction::triggered, this,
+                [this, lang] { Q_EMIT languageRequested(lang); });
     }
     view->addSeparator();
     for (int i = 0; i < COUNT; ++i) {
@@ -178,10 +183,11 @@ void MainWindow::createMenus() {
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About CamBench"), this, [this] {
-        QMessageBox::about(this, tr("About CamBench"),
-                           tr("<b>CamBench %1</b><p>Programming, monitoring and backup of Digitronic "
-                              "CamCon electronic cam controllers.</p>")
-                               .arg(QStringLiteral(CAMBENCH_VERSION)));
+        QMessageBox::about(
+            this, tr("About CamBench"),
+            tr("<b>CamBench %1</b><p>Programming, monitoring and backup of Digitronic "
+               "CamCon electronic cam controllers.</p>")
+                .arg(QStringLiteral(CAMBENCH_VERSION)));
     });
 }
 
@@ -214,7 +220,9 @@ void MainWindow::createStatusBar() {
     });
 }
 
-void MainWindow::showSection(Section section) { m_nav->setCurrentRow(section); }
+void MainWindow::showSection(Section section) {
+    m_nav->setCurrentRow(section);
+}
 
 void MainWindow::updateLivePolling() {
     // Only pages that show live values keep the line busy with polls.
@@ -222,7 +230,9 @@ void MainWindow::updateLivePolling() {
     m_monitor->setLiveWanted(section == Monitor || section == Cams);
 }
 
-MainWindow::Section MainWindow::currentSection() const { return Section(m_stack->currentIndex()); }
+MainWindow::Section MainWindow::currentSection() const {
+    return Section(m_stack->currentIndex());
+}
 
 void MainWindow::showMessage(const QString& text) {
     m_lastMessage = text;
@@ -236,9 +246,10 @@ void MainWindow::updateTitle() {
     const QString projectPath = m_workspace->projectPath();
     QString where = projectPath.isEmpty() ? QString() : QFileInfo(projectPath).fileName();
     if (where.isEmpty()) {
-        where = m_workspace->infoFromDevice()
-                    ? tr("CamCon %1 (device %2)").arg(m_workspace->info().epromDate).arg(m_workspace->info().deviceNumber)
-                    : tr("offline project");
+        where = m_workspace->infoFromDevice() ? tr("CamCon %1 (device %2)")
+                                                    .arg(m_workspace->info().epromDate)
+                                                    .arg(m_workspace->info().deviceNumber)
+                                              : tr("offline project");
     }
     QString title = tr("CamBench – %1").arg(where) + QStringLiteral("[*]");
     if (changes > 0) title += QLatin1Char(' ') + tr("[%n change(s) not written]", nullptr, changes);
@@ -255,7 +266,8 @@ void MainWindow::updateConnection() {
         m_pendingProgram = -1;
         readEverything(program);
     }
-    if (state == comm::ConnectionState::Disconnected && m_pendingProgram >= 0 && !m_session->lastMessage().isEmpty()) {
+    if (state == comm::ConnectionState::Disconnected && m_pendingProgram >= 0 &&
+        !m_session->lastMessage().isEmpty()) {
         m_pendingProgram = -1;
         showMessage(tr("Not connected: %1").arg(m_session->lastMessage()));
         Q_EMIT loaded(false);
@@ -281,7 +293,8 @@ void MainWindow::readEverything(int program) {
             m_workspace->setInfo(info.value(), true);
             for (SectionPage* page : m_pages) page->deviceConnected();
             m_cams->editor()->setCurrentProgram(program);
-            m_cams->readProgram(program, [this](const Status& status) { Q_EMIT loaded(status.ok()); });
+            m_cams->readProgram(program,
+                                [this](const Status& status) { Q_EMIT loaded(status.ok()); });
         });
 }
 
@@ -306,9 +319,10 @@ BackupWizard* MainWindow::openBackupWizard() {
 bool MainWindow::confirmClose() {
     const int changes = m_workspace->changedCount();
     if (changes == 0) return true;
-    QMessageBox box(QMessageBox::Warning, tr("Unwritten changes"),
-                    tr("%n change(s) are not written to the device. Close anyway?", nullptr, changes),
-                    QMessageBox::NoButton, this);
+    QMessageBox box(
+        QMessageBox::Warning, tr("Unwritten changes"),
+        tr("%n change(s) are not written to the device. Close anyway?", nullptr, changes),
+        QMessageBox::NoButton, this);
     QPushButton* compare = box.addButton(tr("Compare with device…"), QMessageBox::AcceptRole);
     QPushButton* save = box.addButton(tr("Save project…"), QMessageBox::ActionRole);
     box.addButton(tr("Close without writing"), QMessageBox::DestructiveRole);
@@ -340,7 +354,8 @@ void MainWindow::newProject() {
     if (dialog.exec() != QDialog::Accepted) return;
     if (m_workspace->changedCount() > 0 &&
         QMessageBox::question(this, tr("New project"),
-                              tr("The current edits are not written or saved. Replace them?")) != QMessageBox::Yes)
+                              tr("The current edits are not written or saved. Replace them?")) !=
+            QMessageBox::Yes)
         return;
     m_session->disconnectFromDevice();
     loadProjectIntoWorkspace(*m_workspace, emptyProject(dialog.capacities()));
@@ -358,14 +373,16 @@ void MainWindow::openProjectFile(const QString& path) {
     const Result<Project> project = loadProject(path);
     if (!project) {
         ReportDialog::present(this, QMessageBox::Warning, tr("Open project"),
-                              tr("The project %1 was not opened.").arg(path), project.error().message);
+                              tr("The project %1 was not opened.").arg(path),
+                              project.error().message);
         if (!QFileInfo::exists(path)) guisettings::removeRecentProject(path);
         return;
     }
     loadProjectIntoWorkspace(*m_workspace, project.value());
     m_workspace->setProjectPath(path);
     guisettings::addRecentProject(path);
-    showMessage(tr("Project %1 opened. Its content is not on the device until you write it.").arg(path));
+    showMessage(
+        tr("Project %1 opened. Its content is not on the device until you write it.").arg(path));
 }
 
 void MainWindow::fillRecentFiles() {
@@ -375,8 +392,8 @@ void MainWindow::fillRecentFiles() {
         const QString path = recent.at(i);
         // "&1 name.json" – the path in the tooltip and the status bar.
         QString name = QFileInfo(path).fileName();
-        QAction* action = m_recentMenu->addAction(
-            QStringLiteral("&%1 %2").arg(i + 1).arg(name.replace(QLatin1Char('&'), QLatin1String("&&"))));
+        QAction* action = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(
+            name.replace(QLatin1Char('&'), QLatin1String("&&"))));
         action->setToolTip(path);
         action->setStatusTip(path);
         connect(action, &QAction::triggered, this, [this, path] { openProjectFile(path); });
@@ -384,7 +401,8 @@ void MainWindow::fillRecentFiles() {
     if (recent.isEmpty()) m_recentMenu->addAction(tr("No recent projects"))->setEnabled(false);
     m_recentMenu->addSeparator();
     QAction* clear = m_recentMenu->addAction(tr("&Clear list"), this, [] {
-        for (const QString& path : guisettings::recentProjects()) guisettings::removeRecentProject(path);
+        for (const QString& path : guisettings::recentProjects())
+            guisettings::removeRecentProject(path);
     });
     clear->setEnabled(!recent.isEmpty());
 }
@@ -398,8 +416,8 @@ void MainWindow::saveProject() {
 }
 
 void MainWindow::saveProjectAs() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save project"), m_workspace->projectPath(),
-                                                      tr("CamBench projects (*.json)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save project"), m_workspace->projectPath(), tr("CamBench projects (*.json)"));
     if (!path.isEmpty()) saveProjectTo(path);
 }
 
@@ -414,7 +432,9 @@ void MainWindow::saveProjectTo(const QString& path) {
     showMessage(tr("Project saved to %1.").arg(path));
 }
 
-Status MainWindow::exportReport(const QString& path) { return CommissioningReport::write(path, *m_workspace); }
+Status MainWindow::exportReport(const QString& path) {
+    return CommissioningReport::write(path, *m_workspace);
+}
 
 void MainWindow::exportReportInteractive() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Commissioning report"), QString(),

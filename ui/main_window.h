@@ -36,7 +36,18 @@ class Workspace;
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    enum Section { Connection, Cams, DeadTimes, Settings, Users, Plc, Monitor, Backup, Terminal, COUNT };
+    enum Section {
+        Connection,
+        Cams,
+        DeadTimes,
+        Settings,
+        Users,
+        Plc,
+        Monitor,
+        Backup,
+        Terminal,
+        COUNT
+    };
 
     MainWindow(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
     ~MainWindow() override;

@@ -2,9 +2,9 @@
 
 #include "change_marker.h"
 #include "device_session.h"
-#include "report_dialog.h"
 #include "plc_matrix_model.h"
 #include "plc_symbol.h"
+#include "report_dialog.h"
 #include "workspace.h"
 
 #include <QComboBox>
@@ -30,12 +30,16 @@ constexpr int kMaxNumber = 249;  // 0..248 on the device, shown from 1
 QString networkText(const PlcNetwork& n) {
     QStringList symbols;
     for (quint16 word : n.symbols) symbols << plcsymbol::editText(word);
-    return QStringLiteral("%1 / %2 / %3").arg(n.value).arg(plcsymbol::editText(n.reset), symbols.join(QLatin1Char(' ')));
+    return QStringLiteral("%1 / %2 / %3")
+        .arg(n.value)
+        .arg(plcsymbol::editText(n.reset), symbols.join(QLatin1Char(' ')));
 }
 }  // namespace
 
 QString PlcPage::networkName(int area, int number) {
-    return QStringLiteral("%1%2").arg(QLatin1Char(plcsymbol::areaLetter(area))).arg(number + 1, 3, 10, QLatin1Char('0'));
+    return QStringLiteral("%1%2")
+        .arg(QLatin1Char(plcsymbol::areaLetter(area)))
+        .arg(number + 1, 3, 10, QLatin1Char('0'));
 }
 
 PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
@@ -78,9 +82,10 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     m_matrix->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_matrix->verticalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_matrix->setEditTriggers(QAbstractItemView::AllEditTriggers);
-    auto* note = new QLabel(tr("Symbols are decoded provisionally (high byte operand kind, low byte "
-                               "number; empty = 0000). Unknown words are shown as hex; every cell "
-                               "accepts 4 hex digits or a form like M11."));
+    auto* note =
+        new QLabel(tr("Symbols are decoded provisionally (high byte operand kind, low byte "
+                      "number; empty = 0000). Unknown words are shown as hex; every cell "
+                      "accepts 4 hex digits or a form like M11."));
     note->setWordWrap(true);
 
     auto* center = new QVBoxLayout;
@@ -107,7 +112,9 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("PLC: %1").arg(report.summary()));
-            if (!report.complete()) ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(), report.details());
+            if (!report.complete())
+                ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(),
+                                          report.details());
         });
     });
     connect(m_value, &QSpinBox::valueChanged, this, &PlcPage::editFields);
@@ -187,7 +194,8 @@ QList<SectionDifference> PlcPage::differences() const {
     for (int key : m_workspace->changedPlcNetworks()) {
         const PlcNetwork edited = m_workspace->plcNetworks().value(key);
         const auto& device = m_workspace->devicePlcNetworks();
-        list.append({QString::number(key), tr("Network %1").arg(networkName(edited.area, edited.number)),
+        list.append({QString::number(key),
+                     tr("Network %1").arg(networkName(edited.area, edited.number)),
                      device.contains(key) ? networkText(device.value(key)) : tr("not read"),
                      networkText(edited)});
     }
@@ -209,8 +217,8 @@ void PlcPage::writeItems(const QStringList& keys, std::function<void(const Write
         [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
             ItemOutcomes outcomes;
             for (const auto& [key, network] : items) {
-                const Status status = job.cancelled() ? Status(Error::cancelled())
-                                                      : client.writePlcNetwork(network);
+                const Status status =
+                    job.cancelled() ? Status(Error::cancelled()) : client.writePlcNetwork(network);
                 outcomes.append({key, networkName(network.area, network.number),
                                  status ? Error{} : status.error()});
             }
@@ -220,7 +228,8 @@ void PlcPage::writeItems(const QStringList& keys, std::function<void(const Write
             WriteReport report = base;
             report.add(outcomes.value());
             for (const ItemOutcome& outcome : outcomes.value()) {
-                if (outcome.error.kind == ErrorKind::None) m_workspace->markPlcWritten(outcome.key.toInt());
+                if (outcome.error.kind == ErrorKind::None)
+                    m_workspace->markPlcWritten(outcome.key.toInt());
             }
             done(report);
         });

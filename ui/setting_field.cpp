@@ -18,12 +18,17 @@ namespace cambench {
 
 namespace {
 
-QString settingsText(const char* text) { return QCoreApplication::translate("Settings", text); }
+QString settingsText(const char* text) {
+    return QCoreApplication::translate("Settings", text);
+}
 
-double scale(const SettingSpec& spec) { return std::pow(10.0, spec.decimals); }
+double scale(const SettingSpec& spec) {
+    return std::pow(10.0, spec.decimals);
+}
 
 bool fitsInt(const SettingSpec& spec) {
-    return spec.min >= std::numeric_limits<int>::min() && spec.max <= std::numeric_limits<int>::max();
+    return spec.min >= std::numeric_limits<int>::min() &&
+           spec.max <= std::numeric_limits<int>::max();
 }
 
 bool isReference(const SettingSpec& spec) {
@@ -47,14 +52,20 @@ SettingField::SettingField(const SettingSpec& spec, QObject* parent)
     guardWheel(m_editor);
 }
 
-QString SettingField::labelText(const SettingSpec& spec) { return settingsText(spec.label); }
+QString SettingField::labelText(const SettingSpec& spec) {
+    return settingsText(spec.label);
+}
 
 QString SettingField::rangeText(const SettingSpec& spec) {
     const QString unit = *spec.unit ? QLatin1Char(' ') + settingsText(spec.unit) : QString();
     switch (spec.kind) {
         case SettingKind::Integer:
             if (spec.step > 1)
-                return SettingField::tr("%1 … %2%3, steps of %4").arg(spec.min).arg(spec.max).arg(unit).arg(spec.step);
+                return SettingField::tr("%1 … %2%3, steps of %4")
+                    .arg(spec.min)
+                    .arg(spec.max)
+                    .arg(unit)
+                    .arg(spec.step);
             return SettingField::tr("%1 … %2%3").arg(spec.min).arg(spec.max).arg(unit);
         case SettingKind::Fixed: {
             const QLocale locale;
@@ -78,8 +89,11 @@ QString SettingField::toolTipText(const SettingSpec& spec) {
     QString tip = settingsText(spec.tooltip);
     const QString range = rangeText(spec);
     if (!range.isEmpty()) tip += QLatin1Char('\n') + SettingField::tr("Range: %1").arg(range);
-    if (*spec.section) tip += QLatin1Char('\n') + SettingField::tr("Manual section %1").arg(QLatin1String(spec.section));
-    if (spec.readOnly) tip += QLatin1Char('\n') + SettingField::tr("Read only: shown as the device reports it.");
+    if (*spec.section)
+        tip += QLatin1Char('\n') +
+               SettingField::tr("Manual section %1").arg(QLatin1String(spec.section));
+    if (spec.readOnly)
+        tip += QLatin1Char('\n') + SettingField::tr("Read only: shown as the device reports it.");
     return tip;
 }
 
@@ -93,7 +107,8 @@ QString SettingField::displayText(const SettingSpec& spec, const QVariant& value
             return QString::number(value.toLongLong());
         case SettingKind::OutputRef:
         case SettingKind::InputRef:
-            return value.toLongLong() == 0 ? SettingField::tr("none") : QString::number(value.toLongLong());
+            return value.toLongLong() == 0 ? SettingField::tr("none")
+                                           : QString::number(value.toLongLong());
         case SettingKind::Fixed:
             return QLocale().toString(value.toLongLong() / scale(spec), 'f', spec.decimals);
         case SettingKind::Text:
@@ -109,7 +124,8 @@ void SettingField::createEditor() {
         case SettingKind::Enum: {
             auto* combo = new QComboBox;
             for (const SettingChoice& choice : m_spec.choices)
-                combo->addItem(settingsText(choice.label), QVariant::fromValue<qint64>(choice.value));
+                combo->addItem(settingsText(choice.label),
+                               QVariant::fromValue<qint64>(choice.value));
             connect(combo, &QComboBox::currentIndexChanged, this, &SettingField::emitEdited);
             m_editor = combo;
             return;
@@ -159,7 +175,8 @@ void SettingField::createEditor() {
 QVariant SettingField::value() const {
     if (auto* combo = qobject_cast<QComboBox*>(m_editor)) return combo->currentData();
     if (auto* edit = qobject_cast<QLineEdit*>(m_editor)) return edit->text();
-    if (auto* spin = qobject_cast<QSpinBox*>(m_editor)) return QVariant::fromValue<qint64>(spin->value());
+    if (auto* spin = qobject_cast<QSpinBox*>(m_editor))
+        return QVariant::fromValue<qint64>(spin->value());
     if (auto* spin = qobject_cast<QDoubleSpinBox*>(m_editor)) {
         return QVariant::fromValue<qint64>(std::llround(spin->value() * scale(m_spec)));
     }
@@ -223,21 +240,24 @@ void SettingField::setDeviceValue(const QVariant& device, bool known) {
 void SettingField::updateMarks() {
     const QVariant shown = value();
     m_changed = !m_deviceKnown || m_device != shown;
-    m_problem = shown.isValid() && !m_spec.readOnly ? settingValueProblem(m_spec, shown) : QString();
+    m_problem =
+        shown.isValid() && !m_spec.readOnly ? settingValueProblem(m_spec, shown) : QString();
     QString prefix = m_changed ? changedMarker() : QString();
     if (!m_problem.isEmpty()) prefix += QStringLiteral("⚠ ");
     m_label->setText(prefix + labelText(m_spec));
     m_label->setFont(m_changed ? changedFont(m_label->font()) : QFont());
-    QPalette pal = m_label->parentWidget() ? m_label->parentWidget()->palette() : m_label->palette();
+    QPalette pal =
+        m_label->parentWidget() ? m_label->parentWidget()->palette() : m_label->palette();
     if (!m_problem.isEmpty()) pal.setColor(QPalette::WindowText, QColor(0xd0, 0x40, 0x2e));
     m_label->setPalette(pal);
     QString tip = toolTipText(m_spec);
     if (!m_problem.isEmpty()) {
-        tip += QLatin1Char('\n') +
-               (m_changed ? SettingField::tr("Not allowed: %1.").arg(m_problem)
-                          : SettingField::tr("The device holds a value outside the allowed range: %1. "
-                                             "It is shown as the device has it, not changed.")
-                                .arg(m_problem));
+        tip +=
+            QLatin1Char('\n') +
+            (m_changed ? SettingField::tr("Not allowed: %1.").arg(m_problem)
+                       : SettingField::tr("The device holds a value outside the allowed range: %1. "
+                                          "It is shown as the device has it, not changed.")
+                             .arg(m_problem));
     }
     if (m_changed)
         tip += QLatin1Char('\n') + SettingField::tr("On the device: %1")

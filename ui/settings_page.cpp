@@ -30,11 +30,16 @@ QString subgroupOf(const QString& key) {
 QString subgroupTitle(const QString& subgroup) {
     static const QMap<QString, const char*> titles{
         {QStringLiteral("ssi"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "SSI encoder")},
-        {QStringLiteral("parallel"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "Parallel encoder")},
-        {QStringLiteral("incremental"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "Incremental encoder")},
-        {QStringLiteral("multiturn"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "Multi-turn encoder")},
-        {QStringLiteral("multi"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "Multi-turn encoder")},
-        {QStringLiteral("pll"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "PLL (pulse multiplier)")},
+        {QStringLiteral("parallel"),
+         QT_TRANSLATE_NOOP("cambench::SettingsPage", "Parallel encoder")},
+        {QStringLiteral("incremental"),
+         QT_TRANSLATE_NOOP("cambench::SettingsPage", "Incremental encoder")},
+        {QStringLiteral("multiturn"),
+         QT_TRANSLATE_NOOP("cambench::SettingsPage", "Multi-turn encoder")},
+        {QStringLiteral("multi"),
+         QT_TRANSLATE_NOOP("cambench::SettingsPage", "Multi-turn encoder")},
+        {QStringLiteral("pll"),
+         QT_TRANSLATE_NOOP("cambench::SettingsPage", "PLL (pulse multiplier)")},
         {QStringLiteral("timer"), QT_TRANSLATE_NOOP("cambench::SettingsPage", "Time-based axis")},
     };
     const auto it = titles.constFind(subgroup);
@@ -96,7 +101,9 @@ SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Settings: %1").arg(report.summary()));
-            if (!report.complete()) ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(), report.details());
+            if (!report.complete())
+                ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(),
+                                          report.details());
         });
     });
     connect(m_workspace, &Workspace::settingsChanged, this, &SettingsPage::showValues);
@@ -160,7 +167,9 @@ void SettingsPage::showValues() {
     }
 }
 
-void SettingsPage::deviceConnected() { readFromDevice(); }
+void SettingsPage::deviceConnected() {
+    readFromDevice();
+}
 
 void SettingsPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading settings…"));
@@ -191,7 +200,8 @@ QList<SectionDifference> SettingsPage::differences() const {
     return list;
 }
 
-void SettingsPage::writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) {
+void SettingsPage::writeItems(const QStringList& keys,
+                              std::function<void(const WriteReport&)> done) {
     const QStringList changed = m_workspace->changedSettings();
     const QStringList selected = keys.isEmpty() ? changed : keys;
     WriteReport base;
@@ -205,7 +215,8 @@ void SettingsPage::writeItems(const QStringList& keys, std::function<void(const 
         // A setting travels with its group's other values (composite device
         // commands need them); those are sent as the device has them.
         SystemSettings values;
-        for (auto it = m_workspace->deviceSettings().cbegin(); it != m_workspace->deviceSettings().cend(); ++it) {
+        for (auto it = m_workspace->deviceSettings().cbegin();
+             it != m_workspace->deviceSettings().cend(); ++it) {
             const SettingSpec* other = findSetting(it.key());
             if (spec && other && qstrcmp(other->group, spec->group) == 0 &&
                 subgroupOf(it.key()) == subgroupOf(key))
@@ -227,7 +238,8 @@ void SettingsPage::writeItems(const QStringList& keys, std::function<void(const 
                 job.progress(n++, items.size());
                 const Status status = job.cancelled() ? Status(Error::cancelled())
                                                       : client.writeSettings(item.second, onDevice);
-                outcomes.append({item.first, label.arg(item.first), status ? Error{} : status.error()});
+                outcomes.append(
+                    {item.first, label.arg(item.first), status ? Error{} : status.error()});
             }
             return outcomes;
         },

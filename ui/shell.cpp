@@ -18,18 +18,22 @@ Shell::Shell(QObject* parent)
     });
 }
 
-Shell::~Shell() { delete m_window; }
+Shell::~Shell() {
+    delete m_window;
+}
 
 MainWindow* Shell::createWindow() {
     auto* window = new MainWindow(m_session, m_workspace);
-    connect(window, &MainWindow::languageRequested, this, &Shell::switchLanguage, Qt::QueuedConnection);
+    connect(window, &MainWindow::languageRequested, this, &Shell::switchLanguage,
+            Qt::QueuedConnection);
     return window;
 }
 
 void Shell::start(const QString& port) {
     m_window = createWindow();
     const int section = guisettings::restoreWindow(*m_window);
-    if (section >= 0 && section < MainWindow::COUNT) m_window->showSection(MainWindow::Section(section));
+    if (section >= 0 && section < MainWindow::COUNT)
+        m_window->showSection(MainWindow::Section(section));
     m_window->show();
     if (port.isEmpty()) {
         // The last connection that worked, with its protocol and settings.

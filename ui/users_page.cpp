@@ -53,9 +53,12 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::SingleSelection);
     m_view->verticalHeader()->hide();
-    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::NameColumn, QHeaderView::ResizeToContents);
-    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::NumberColumn, QHeaderView::ResizeToContents);
-    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::RightsColumn, QHeaderView::Stretch);
+    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::NameColumn,
+                                                     QHeaderView::ResizeToContents);
+    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::NumberColumn,
+                                                     QHeaderView::ResizeToContents);
+    m_view->horizontalHeader()->setSectionResizeMode(UsersModel::RightsColumn,
+                                                     QHeaderView::Stretch);
 
     m_name->setMaxLength(kNameLength);
     m_number->setMaxLength(kNumberLength);
@@ -108,7 +111,9 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Users: %1").arg(report.summary()));
-            if (!report.complete()) ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(), report.details());
+            if (!report.complete())
+                ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(),
+                                          report.details());
         });
     });
     connect(add, &QPushButton::clicked, this, [this] {
@@ -121,7 +126,8 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
         if (currentUser() >= 0) m_workspace->removeUser(currentUser());
     });
     connect(m_show, &QCheckBox::toggled, this, &UsersPage::setNumbersShown);
-    connect(m_view->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &UsersPage::showUser);
+    connect(m_view->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            &UsersPage::showUser);
     connect(m_model, &QAbstractItemModel::modelReset, this, &UsersPage::showUser);
     connect(m_name, &QLineEdit::textEdited, this, &UsersPage::editUser);
     connect(m_number, &QLineEdit::textEdited, this, &UsersPage::editUser);
@@ -140,7 +146,9 @@ int UsersPage::currentUser() const {
     return index.isValid() ? index.row() : -1;
 }
 
-void UsersPage::selectUser(int index) { m_view->selectRow(index); }
+void UsersPage::selectUser(int index) {
+    m_view->selectRow(index);
+}
 
 void UsersPage::showUser() {
     const int index = currentUser();
@@ -154,7 +162,8 @@ void UsersPage::showUser() {
     const bool shown = m_model->numbersRevealed();
     m_number->setReadOnly(!shown);
     m_number->setText(shown ? user.number : QString());
-    m_number->setPlaceholderText(shown ? QString() : tr("hidden – check \"Show numbers\" to see or change it"));
+    m_number->setPlaceholderText(shown ? QString()
+                                       : tr("hidden – check \"Show numbers\" to see or change it"));
     m_allOutputs->setChecked(user.allOutputs);
     for (const auto& [bit, box] : m_rights) box->setChecked(user.rights & bit);
     m_updating = false;
@@ -174,7 +183,9 @@ void UsersPage::editUser() {
     m_workspace->setUser(index, user);
 }
 
-void UsersPage::deviceConnected() { readFromDevice(); }
+void UsersPage::deviceConnected() {
+    readFromDevice();
+}
 
 void UsersPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading users…"));
@@ -203,10 +214,11 @@ QList<SectionDifference> UsersPage::differences() const {
         if (!m_workspace->userChanged(i)) continue;
         QString device = tr("absent");
         for (const User& d : m_workspace->deviceUsers()) {
-            if (!users[i].deviceNumber.isEmpty() && d.number == users[i].deviceNumber) device = described(d);
+            if (!users[i].deviceNumber.isEmpty() && d.number == users[i].deviceNumber)
+                device = described(d);
         }
-        list.append({QStringLiteral("user:%1").arg(i), tr("User \"%1\"").arg(users[i].user.name), device,
-                     described(users[i].user)});
+        list.append({QStringLiteral("user:%1").arg(i), tr("User \"%1\"").arg(users[i].user.name),
+                     device, described(users[i].user)});
     }
     for (const QString& number : m_workspace->deletedUserNumbers()) {
         for (const User& d : m_workspace->deviceUsers()) {
@@ -235,21 +247,23 @@ void UsersPage::writeItems(const QStringList& keys, std::function<void(const Wri
             items.append({difference.key, difference.item, arg, User(), true});
         } else {
             const auto& edited = m_workspace->users().at(arg.toInt());
-            items.append({difference.key, difference.item, edited.deviceNumber, edited.user, false});
+            items.append(
+                {difference.key, difference.item, edited.deviceNumber, edited.user, false});
         }
     }
     for (const Item& item : items) {
         // The device would refuse these; say so before touching it.
         if (!item.remove && item.user.number.isEmpty()) {
             WriteReport report;
-            report.addFailure(item.label, Error::invalidData(tr("The user has no number: enter one.")));
+            report.addFailure(item.label,
+                              Error::invalidData(tr("The user has no number: enter one.")));
             done(report);
             return;
         }
     }
     WriteReport base;
-    base.unchanged = keys.isEmpty() ? int(m_workspace->users().size()) - int(all.size() -
-                                                                            m_workspace->deletedUserNumbers().size())
+    base.unchanged = keys.isEmpty() ? int(m_workspace->users().size()) -
+                                          int(all.size() - m_workspace->deletedUserNumbers().size())
                                     : int(keys.size() - items.size());
     m_session->run<ItemOutcomes>(
         this, tr("Write users"),

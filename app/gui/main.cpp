@@ -27,16 +27,19 @@ int main(int argc, char* argv[]) {
                        "Version " CAMBENCH_VERSION_TEXT "."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption lang(QStringLiteral("lang"), QStringLiteral("User interface language: de or en."),
+    const QCommandLineOption lang(QStringLiteral("lang"),
+                                  QStringLiteral("User interface language: de or en."),
                                   QStringLiteral("language"));
     const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
-    const QCommandLineOption port(QStringLiteral("port"),
-                                  QStringLiteral("Connect to this port at start (serial port, tcp://host:port, sim)."),
-                                  QStringLiteral("port"));
-    const QCommandLineOption shots(QStringLiteral("screenshots"),
-                                   QStringLiteral("Visit every screen on the simulated device, save one PNG "
-                                                  "each into DIR, and exit."),
-                                   QStringLiteral("DIR"));
+    const QCommandLineOption port(
+        QStringLiteral("port"),
+        QStringLiteral("Connect to this port at start (serial port, tcp://host:port, sim)."),
+        QStringLiteral("port"));
+    const QCommandLineOption shots(
+        QStringLiteral("screenshots"),
+        QStringLiteral("Visit every screen on the simulated device, save one PNG "
+                       "each into DIR, and exit."),
+        QStringLiteral("DIR"));
     parser.addOptions({lang, dark, port, shots});
     parser.process(app);
 
@@ -52,7 +55,8 @@ int main(int argc, char* argv[]) {
     QString language = parser.isSet(lang) ? parser.value(lang) : cambench::guisettings::language();
     if (language.isEmpty()) language = cambench::systemLanguage();
     if (language != QLatin1String("de") && language != QLatin1String("en")) {
-        std::fprintf(stderr, "cambench: unknown language '%s'; use de or en.\n", qPrintable(language));
+        std::fprintf(stderr, "cambench: unknown language '%s'; use de or en.\n",
+                     qPrintable(language));
         return 2;
     }
     cambench::setLanguage(language);
@@ -69,11 +73,13 @@ int main(int argc, char* argv[]) {
     if (parser.isSet(shots)) {
         auto* tour = new cambench::ScreenshotTour(&shell, parser.value(shots), &shell);
         QObject::connect(tour, &cambench::ScreenshotTour::finished, &app, [tour](bool ok) {
-            for (const QString& failure : tour->failures()) std::fprintf(stderr, "cambench: %s\n", qPrintable(failure));
+            for (const QString& failure : tour->failures())
+                std::fprintf(stderr, "cambench: %s\n", qPrintable(failure));
             QCoreApplication::exit(ok ? 0 : 1);
         });
-        QObject::connect(shell.window(), &cambench::MainWindow::loaded, tour, [tour] { tour->start(); },
-                         Qt::SingleShotConnection);
+        QObject::connect(
+            shell.window(), &cambench::MainWindow::loaded, tour, [tour] { tour->start(); },
+            Qt::SingleShotConnection);
     }
     return app.exec();
 }
