@@ -22,5 +22,5 @@ add_executable(cambench-cli
   cli/config_commands.cpp
   cli/eeprom_commands.cpp
 )
-target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_comm cambench_model Qt6::Core)
+target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

@@ -368,7 +368,7 @@ QStringList validateProject(const Project& project) {
     return problems;
 }
 
-QByteArray projectToJson(const Project& project) {
+QByteArray projectToJson(const Project& project, const ProjectSaveOptions&) {
     QJsonObject root = jsonFileHeader(kProjectFile);
     root.insert(key("device"), deviceInfoToJson(project.device));
     root.insert(key("settings"), settingsToJson(project.settings));
@@ -394,7 +394,7 @@ Result<Project> projectFromJson(const QByteArray& bytes) {
     return ProjectReader().read(*root);
 }
 
-Status saveProject(const QString& path, const Project& project) {
+Status saveProject(const QString& path, const Project& project, const ProjectSaveOptions& options) {
     const QStringList problems = validateProject(project);
     if (!problems.isEmpty()) {
         QString message = QStringLiteral("%1 was not saved: %2").arg(path, problems.first());
@@ -402,7 +402,7 @@ Status saveProject(const QString& path, const Project& project) {
             message += QStringLiteral(" (and %1 more problems)").arg(problems.size() - 1);
         return Error::invalidData(message);
     }
-    return writeFileAtomically(path, projectToJson(project));
+    return writeFileAtomically(path, projectToJson(project, options));
 }
 
 Result<Project> loadProject(const QString& path) {

@@ -1,0 +1,3 @@
+#include "line_manifest.h"
+
+namespace cambench {}  // namespace cambench

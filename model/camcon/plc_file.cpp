@@ -1,0 +1,3 @@
+#include "plc_file.h"
+
+namespace cambench {}  // namespace cambench

@@ -1,0 +1,3 @@
+#include "settings_file.h"
+
+namespace cambench {}  // namespace cambench
