@@ -1,5 +1,6 @@
 #pragma once
 
+#include "device_writer.h"
 #include "section_page.h"
 
 #include "model/camcon/device_info.h"
@@ -12,7 +13,7 @@ class Workspace;
 
 // The cam program editor (ui/cameditor) wired to the device: its read and
 // write requests become jobs, and the monitor's live position and outputs
-// reach its diagram while online.
+// reach its diagram while they are live.
 class CamPage : public SectionPage {
     Q_OBJECT
 public:
@@ -20,18 +21,16 @@ public:
 
     QString sectionTitle() const override { return tr("Cam programs"); }
     QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
 
     CamEditorWidget* editor() const { return m_editor; }
 
     void readProgram(int program, std::function<void(const Status&)> done = {});
-    void writeProgram(int program, std::function<void(const WriteReport&)> done = {});
+    // Writes what differs in `program` (a program never read: all of it).
+    void writeProgram(int program, std::function<void(const WriteResult&)> done = {});
     void showStatus(const DeviceStatus& status);
     void clearLive();
 
 private:
-    void applyWritten(const QList<int>& programs, const ItemOutcomes& outcomes);
-
     DeviceSession* m_session;
     Workspace* m_workspace;
     CamEditorWidget* m_editor;

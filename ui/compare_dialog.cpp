@@ -1,11 +1,20 @@
 #include "compare_dialog.h"
 
+#include "device_session.h"
+#include "incoming_values.h"
 #include "section_page.h"
+#include "workspace.h"
+
+#include "comm/usecases/read_everything.h"
 
 #include <QDialogButtonBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
+#include <QPlainTextEdit>
 #include <QPointer>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -13,32 +22,49 @@
 namespace cambench {
 
 namespace {
-constexpr int kKeyRole = Qt::UserRole;
-constexpr int kPageRole = Qt::UserRole + 1;
+constexpr int kItemRole = Qt::UserRole;
+
+QString timeText(const QDateTime& utc) {
+    return QLocale().toString(utc.toLocalTime().time(), QStringLiteral("HH:mm:ss"));
+}
 }  // namespace
 
-CompareDialog::CompareDialog(const QList<SectionPage*>& pages, QWidget* parent)
-    : QDialog(parent), m_pages(pages), m_tree(new QTreeWidget), m_report(new QLabel) {
+CompareDialog::CompareDialog(DeviceSession* session, Workspace* workspace, const QList<SectionPage*>& pages,
+                             QWidget* parent)
+    : QDialog(parent),
+      m_session(session),
+      m_workspace(workspace),
+      m_pages(pages),
+      m_source(new QLabel),
+      m_progress(new QProgressBar),
+      m_cancel(new QPushButton(tr("Cancel reading"))),
+      m_tree(new QTreeWidget),
+      m_report(new QPlainTextEdit) {
     setWindowTitle(tr("Compare with device"));
+    m_source->setWordWrap(true);
+    m_source->setObjectName(QStringLiteral("compareSource"));
     m_tree->setColumnCount(3);
     m_tree->setHeaderLabels({tr("Item"), tr("On the device"), tr("Edited on this PC")});
     m_tree->header()->setSectionResizeMode(QHeaderView::Interactive);
     m_tree->setColumnWidth(0, 280);
     m_tree->setColumnWidth(1, 360);
     m_tree->setWordWrap(true);
-    m_report->setWordWrap(true);
-    m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_report->setReadOnly(true);
+    m_report->setMaximumHeight(fontMetrics().lineSpacing() * 8);
+    m_report->hide();
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     m_writeChecked = buttons->addButton(tr("Write selected"), QDialogButtonBox::ActionRole);
     m_writeAll = buttons->addButton(tr("Write all"), QDialogButtonBox::ActionRole);
-    auto* refreshButton = buttons->addButton(tr("Refresh"), QDialogButtonBox::ResetRole);
+    m_refresh = buttons->addButton(tr("Read the device again"), QDialogButtonBox::ResetRole);
+
+    auto* readRow = new QHBoxLayout;
+    readRow->addWidget(m_progress, 1);
+    readRow->addWidget(m_cancel);
 
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(tr("Items edited on this PC that differ from the device. Check the ones "
-                                "to write, or write all."));
-    intro->setWordWrap(true);
-    layout->addWidget(intro);
+    layout->addWidget(m_source);
+    layout->addLayout(readRow);
     layout->addWidget(m_tree, 1);
     layout->addWidget(m_report);
     layout->addWidget(buttons);
@@ -46,50 +72,139 @@ CompareDialog::CompareDialog(const QList<SectionPage*>& pages, QWidget* parent)
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_writeChecked, &QPushButton::clicked, this, &CompareDialog::writeChecked);
     connect(m_writeAll, &QPushButton::clicked, this, &CompareDialog::writeAll);
-    connect(refreshButton, &QPushButton::clicked, this, &CompareDialog::refresh);
+    connect(m_refresh, &QPushButton::clicked, this, &CompareDialog::refresh);
+    connect(m_cancel, &QPushButton::clicked, this, &CompareDialog::cancelReading);
+    connect(&m_session->worker(), &comm::CommWorker::jobProgress, this,
+            [this](quint64 id, qint64 done, qint64 total, const QString& text) {
+                if (id != m_readJob || total <= 0) return;
+                m_progress->setRange(0, 1000);
+                m_progress->setValue(int(done * 1000 / total));
+                if (!text.isEmpty()) m_progress->setFormat(text + QStringLiteral(" (%p %)"));
+            });
     resize(1000, 600);
     refresh();
 }
 
+void CompareDialog::setBusy(bool busy) {
+    m_progress->setVisible(busy);
+    m_cancel->setVisible(busy);
+    m_refresh->setEnabled(!busy && m_session->isOnline());
+    const bool any = !busy && differenceCount() > 0;
+    m_writeChecked->setEnabled(any && m_session->isOnline());
+    m_writeAll->setEnabled(any && m_session->isOnline());
+}
+
 void CompareDialog::refresh() {
+    if (m_readJob != 0) return;
+    if (!m_session->isOnline()) {
+        const QDateTime read = m_workspace->lastReadTime();
+        m_source->setText(read.isValid()
+                              ? tr("Not connected: compared with the device values read at %1. The "
+                                   "device may have changed since.")
+                                    .arg(timeText(read))
+                              : tr("Not connected, and nothing was read from a device: every edited "
+                                   "item is listed as \"not read\"."));
+        showDifferences();
+        setBusy(false);
+        Q_EMIT compared();
+        return;
+    }
+    m_source->setText(tr("Reading what the device holds now…"));
+    m_progress->setRange(0, 0);
+    m_progress->setFormat(QStringLiteral("%p %"));
     m_tree->clear();
-    for (int i = 0; i < m_pages.size(); ++i) {
-        const QList<SectionDifference> differences = m_pages[i]->differences();
+    setBusy(true);
+    QPointer<CompareDialog> self(this);
+    Workspace* workspace = m_workspace;
+    m_readJob = m_session->run<usecases::ReadEverything>(
+        this, tr("Compare with device"),
+        [](comm::CamConDevice& device, comm::JobContext& job) -> Result<usecases::ReadEverything> {
+            const Result<DeviceInfo> identity = device.readInfo();
+            if (!identity) return identity.error();
+            return usecases::readEverything(device, identity.value(), usecases::UseCaseProgress::of(job));
+        },
+        [this, workspace](Result<usecases::ReadEverything> result) {
+            m_readJob = 0;
+            if (!result) {
+                const QDateTime read = workspace->lastReadTime();
+                m_source->setText(
+                    (result.error().kind == ErrorKind::Cancelled
+                         ? tr("Reading cancelled.")
+                         : tr("The device could not be read: %1").arg(result.error().message)) +
+                    QLatin1Char(' ') +
+                    (read.isValid() ? tr("Shown: the device values read at %1.").arg(timeText(read))
+                                    : tr("Nothing was read from the device: edited items are listed as \"not read\".")));
+            } else {
+                // Compare never replaces an edit: edited items keep theirs,
+                // the rest follows the device.
+                m_deviceChanges = deviceChanges(*workspace, result->project);
+                mergeIncoming(*workspace, result->project, ValueSource::Device,
+                              {EditSection::Cams, EditSection::OutputSettings, EditSection::Settings,
+                               EditSection::Users, EditSection::Plc});
+                QString text = tr("Device values read at %1.").arg(timeText(QDateTime::currentDateTimeUtc()));
+                if (!result->skipped.isEmpty()) text += QLatin1Char(' ') + tr("Not read: %1").arg(result->skipped.join(QLatin1Char(' ')));
+                m_source->setText(text);
+            }
+            showDifferences();
+            setBusy(false);
+            Q_EMIT compared();
+        });
+}
+
+void CompareDialog::cancelReading() {
+    if (m_readJob != 0) m_session->worker().cancel(m_readJob);
+}
+
+void CompareDialog::showDifferences() {
+    m_tree->clear();
+    if (!m_deviceChanges.isEmpty()) {
+        auto* section = new QTreeWidgetItem(
+            m_tree, {tr("Changed on the device since it was last read (%1)").arg(m_deviceChanges.size())});
+        for (const QString& line : m_deviceChanges) {
+            auto* item = new QTreeWidgetItem(section, {line});
+            item->setFirstColumnSpanned(true);
+        }
+        section->setExpanded(true);
+    }
+    int count = 0;
+    for (SectionPage* page : m_pages) {
+        const QList<SectionDifference> differences = page->differences();
         if (differences.isEmpty()) continue;
-        auto* section = new QTreeWidgetItem(m_tree, {tr("%1 (%2)").arg(m_pages[i]->sectionTitle()).arg(differences.size())});
+        count += int(differences.size());
+        auto* section =
+            new QTreeWidgetItem(m_tree, {tr("%1 (%2)").arg(page->sectionTitle()).arg(differences.size())});
         section->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsAutoTristate);
         section->setCheckState(0, Qt::Checked);
-        section->setFirstColumnSpanned(false);
         for (const SectionDifference& d : differences) {
-            auto* item = new QTreeWidgetItem(section, {d.item, d.device, d.edited});
+            auto* item = new QTreeWidgetItem(section, {d.label, d.device, d.edited});
             item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
             item->setCheckState(0, Qt::Checked);
-            item->setData(0, kKeyRole, d.key);
-            item->setData(0, kPageRole, i);
+            item->setData(0, kItemRole, QVariant::fromValue(d.item));
             for (int column = 0; column < 3; ++column) item->setToolTip(column, item->text(column));
         }
         section->setExpanded(true);
     }
-    const int count = differenceCount();
-    if (count == 0) {
-        new QTreeWidgetItem(m_tree, {tr("No differences: the device holds what you see.")});
-    }
-    m_writeChecked->setEnabled(count > 0);
-    m_writeAll->setEnabled(count > 0);
+    if (count == 0) new QTreeWidgetItem(m_tree, {tr("No differences: the device holds what you see.")});
 }
 
 int CompareDialog::differenceCount() const {
     int count = 0;
-    for (int i = 0; i < m_tree->topLevelItemCount(); ++i) count += m_tree->topLevelItem(i)->childCount();
+    for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* section = m_tree->topLevelItem(i);
+        for (int j = 0; j < section->childCount(); ++j)
+            count += section->child(j)->data(0, kItemRole).isValid() ? 1 : 0;
+    }
     return count;
 }
 
-void CompareDialog::checkOnly(const QStringList& keys) {
+void CompareDialog::checkOnly(const QList<WorkspaceItem>& items) {
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
         QTreeWidgetItem* section = m_tree->topLevelItem(i);
         for (int j = 0; j < section->childCount(); ++j) {
             QTreeWidgetItem* item = section->child(j);
-            const bool on = keys.isEmpty() || keys.contains(item->data(0, kKeyRole).toString());
+            const QVariant data = item->data(0, kItemRole);
+            if (!data.isValid()) continue;
+            const bool on = items.isEmpty() || items.contains(data.value<WorkspaceItem>());
             item->setCheckState(0, on ? Qt::Checked : Qt::Unchecked);
         }
     }
@@ -99,44 +214,36 @@ void CompareDialog::writeChecked() { write(true); }
 
 void CompareDialog::writeAll() { write(false); }
 
-QString CompareDialog::reportText() const { return m_report->text(); }
+QString CompareDialog::reportText() const { return m_report->toPlainText(); }
+
+QString CompareDialog::sourceText() const { return m_source->text(); }
 
 void CompareDialog::write(bool onlyChecked) {
-    QList<QPair<SectionPage*, QStringList>> queue;
+    QList<WorkspaceItem> items;
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
         QTreeWidgetItem* section = m_tree->topLevelItem(i);
-        QStringList keys;
-        int page = -1;
         for (int j = 0; j < section->childCount(); ++j) {
             QTreeWidgetItem* item = section->child(j);
-            page = item->data(0, kPageRole).toInt();
-            if (!onlyChecked || item->checkState(0) == Qt::Checked) keys << item->data(0, kKeyRole).toString();
+            const QVariant data = item->data(0, kItemRole);
+            if (data.isValid() && (!onlyChecked || item->checkState(0) == Qt::Checked))
+                items << data.value<WorkspaceItem>();
         }
-        if (!keys.isEmpty()) queue.append({m_pages.at(page), keys});
     }
-    if (queue.isEmpty()) {
-        m_report->setText(tr("Nothing selected: nothing was written."));
+    m_report->show();
+    if (items.isEmpty()) {
+        m_report->setPlainText(tr("Nothing selected: nothing was written."));
         return;
     }
     m_writeChecked->setEnabled(false);
     m_writeAll->setEnabled(false);
-    m_report->setText(tr("Writing…"));
-    writeNext(queue, {});
-}
-
-void CompareDialog::writeNext(QList<QPair<SectionPage*, QStringList>> queue, WriteReport report) {
-    if (queue.isEmpty()) {
-        m_report->setText(report.details());
-        refresh();
-        Q_EMIT writeFinished(report);
-        return;
-    }
-    const auto [page, keys] = queue.takeFirst();
-    QPointer<CompareDialog> self(this);
-    page->writeItems(keys, [self, queue, report](const WriteReport& part) {
-        WriteReport total = report;
-        total.merge(part);
-        if (self) self->writeNext(queue, total);
+    m_report->setPlainText(tr("Writing…"));
+    writeToDevice(this, m_session, m_workspace, items, [this](const WriteResult& result) {
+        const QString details = writeDetails(result);
+        m_report->setPlainText(writeSummary(result) + (details.isEmpty() ? QString() : QLatin1Char('\n') + details));
+        m_deviceChanges.clear();
+        showDifferences();
+        setBusy(false);
+        Q_EMIT writeFinished(result);
     });
 }
 

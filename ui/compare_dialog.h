@@ -1,46 +1,70 @@
 #pragma once
 
-#include "write_report.h"
+#include "device_writer.h"
 
 #include <QDialog>
 
 class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
 class QPushButton;
 class QTreeWidget;
 
 namespace cambench {
 
+class DeviceSession;
 class SectionPage;
+class Workspace;
 
-// "Compare with device": every edited item that differs from the device,
-// grouped by section; writes all of them or only the checked ones and
-// reports what was written, unchanged and failed.
+// "Compare with device": reads the device first (progress, cancel), then
+// lists every edited item that differs from what the device holds now,
+// grouped by section, and says when those device values were read. Items
+// the device changed by itself since the last read are listed too. Writes
+// all items or only the checked ones, and reports per item.
 class CompareDialog : public QDialog {
     Q_OBJECT
 public:
-    CompareDialog(const QList<SectionPage*>& pages, QWidget* parent = nullptr);
+    CompareDialog(DeviceSession* session, Workspace* workspace, const QList<SectionPage*>& pages,
+                  QWidget* parent = nullptr);
 
+    // Reads the device again (offline: shows the last device copy, saying so).
     void refresh();
+    bool isReading() const { return m_readJob != 0; }
+    void cancelReading();
     int differenceCount() const;
-    // Checks exactly the items whose key is in `keys` (all when empty).
-    void checkOnly(const QStringList& keys);
+    // Checks exactly the items in `items` (all when empty).
+    void checkOnly(const QList<WorkspaceItem>& items);
     void writeChecked();
     void writeAll();
     QTreeWidget* tree() const { return m_tree; }
     QString reportText() const;
+    // "Device values read at 12:03:04" and what the read said.
+    QString sourceText() const;
+    QStringList deviceSideChanges() const { return m_deviceChanges; }
 
 Q_SIGNALS:
-    void writeFinished(const cambench::WriteReport& report);
+    void writeFinished(const cambench::WriteResult& result);
+    // The device's values arrived (or could not be read); the list is current.
+    void compared();
 
 private:
+    void showDifferences();
     void write(bool onlyChecked);
-    void writeNext(QList<QPair<SectionPage*, QStringList>> queue, WriteReport report);
+    void setBusy(bool busy);
 
+    DeviceSession* m_session;
+    Workspace* m_workspace;
     QList<SectionPage*> m_pages;
+    QLabel* m_source;
+    QProgressBar* m_progress;
+    QPushButton* m_cancel;
     QTreeWidget* m_tree;
-    QLabel* m_report;
+    QPlainTextEdit* m_report;
     QPushButton* m_writeChecked;
     QPushButton* m_writeAll;
+    QPushButton* m_refresh;
+    quint64 m_readJob = 0;
+    QStringList m_deviceChanges;
 };
 
 }  // namespace cambench

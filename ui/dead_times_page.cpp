@@ -1,8 +1,8 @@
 #include "dead_times_page.h"
 
 #include "dead_times_model.h"
+#include "device_reads.h"
 #include "device_session.h"
-#include "report_dialog.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_document.h"
@@ -13,7 +13,6 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -21,11 +20,6 @@
 namespace cambench {
 
 namespace {
-
-struct OutputSettings {
-    QMap<int, QString> names;
-    DeadTimes deadTimes;
-};
 
 QString ms(qint32 tenths) {
     return QCoreApplication::translate("cambench::DeadTimesModel", "%1 ms")
@@ -68,14 +62,7 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
     layout->addWidget(m_view);
 
     connect(read, &QPushButton::clicked, this, &DeadTimesPage::readFromDevice);
-    connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const WriteReport& report) {
-            Q_EMIT statusMessage(tr("Dead times: %1").arg(report.summary()));
-            if (!report.complete())
-                ReportDialog::presentText(this, QMessageBox::Warning, tr("Dead times"),
-                                          report.details());
-        });
-    });
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(m_workspace, &Workspace::infoChanged, this, &DeadTimesPage::showLimits);
     showLimits();
 }
@@ -85,119 +72,42 @@ void DeadTimesPage::showLimits() {
         tr("0.1 ms steps, at most %1 (?GTZKMAX)").arg(ms(m_workspace->info().maxDeadTime)));
 }
 
-void DeadTimesPage::deviceConnected() {
-    readFromDevice();
-}
-
 void DeadTimesPage::readFromDevice() {
-    const int outputs = m_workspace->info().deadTimeOutputs;
     Q_EMIT statusMessage(tr("Reading dead times…"));
-    m_session->run<OutputSettings>(
-        this, tr("Read dead times"),
-        [outputs](comm::CamConDevice& client, comm::JobContext& job) -> Result<OutputSettings> {
-            OutputSettings settings;
-            auto deadTimes = client.readDeadTimes(outputs);
-            if (!deadTimes) return deadTimes.error();
-            settings.deadTimes = deadTimes.value();
-            for (int output = 1; output <= outputs; ++output) {
-                if (job.cancelled()) return Error::cancelled();
-                job.progress(output, outputs);
-                auto name = client.readOutputName(output);
-                if (!name) return name.error();
-                settings.names.insert(output, name.value());
-            }
-            return settings;
-        },
-        [this](Result<OutputSettings> result) {
-            if (!result) {
-                Q_EMIT statusMessage(
-                    tr("Reading dead times failed: %1").arg(result.error().message));
-                return;
-            }
-            m_workspace->loadOutputSettingsFromDevice(result->names, result->deadTimes);
+    devicereads::readOutputSettings(this, m_session, m_workspace, [this](const Status& status) {
+        if (status) {
             Q_EMIT statusMessage(tr("Dead times read."));
-        });
+        } else if (status.error().kind == ErrorKind::Cancelled) {
+            Q_EMIT statusMessage(status.error().message);
+        } else {
+            Q_EMIT statusMessage(tr("Reading dead times failed: %1").arg(status.error().message));
+        }
+    });
 }
 
 QList<SectionDifference> DeadTimesPage::differences() const {
     QList<SectionDifference> list;
     const CamDocument* cams = m_workspace->cams();
-    const bool known = m_workspace->outputSettingsKnown();
     const QString unknown = tr("not read");
+    // Over the device's outputs: dead times where it has them, names on all.
     for (int output = 1; output <= m_workspace->info().outputs; ++output) {
+        const std::optional<qint32> deviceTime = cams->deviceDeadTime(output);
         if (output <= m_workspace->info().deadTimeOutputs &&
-            (!known || cams->deadTime(output) != m_workspace->deviceDeadTime(output))) {
-            list.append({QStringLiteral("tzk:%1").arg(output),
-                         tr("Output %1 dead time").arg(output),
-                         known ? ms(m_workspace->deviceDeadTime(output)) : unknown,
-                         ms(cams->deadTime(output))});
+            cams->deadTime(output) != deviceTime.value_or(0)) {
+            list.append({WorkspaceItem::deadTime(output), tr("Output %1 dead time").arg(output),
+                         deviceTime ? ms(*deviceTime) : unknown, ms(cams->deadTime(output))});
         }
-        if (cams->outputName(output) != m_workspace->deviceOutputName(output) ||
-            (!known && !cams->outputName(output).isEmpty())) {
-            list.append({QStringLiteral("name:%1").arg(output), tr("Output %1 name").arg(output),
-                         known ? m_workspace->deviceOutputName(output) : unknown,
-                         cams->outputName(output)});
+        const std::optional<QString> deviceName = cams->deviceOutputName(output);
+        if (cams->outputName(output) != deviceName.value_or(QString())) {
+            list.append({WorkspaceItem::outputName(output), tr("Output %1 name").arg(output),
+                         deviceName ? *deviceName : unknown, cams->outputName(output)});
         }
     }
     return list;
 }
 
-void DeadTimesPage::writeItems(const QStringList& keys,
-                               std::function<void(const WriteReport&)> done) {
-    const QList<SectionDifference> all = differences();
-    struct Item {
-        QString key;
-        QString label;
-        int output;
-        bool isName;
-        qint32 deadTime;
-        QString name;
-    };
-    QList<Item> items;
-    for (const SectionDifference& difference : all) {
-        if (!keys.isEmpty() && !keys.contains(difference.key)) continue;
-        const int output = difference.key.section(QLatin1Char(':'), 1).toInt();
-        const bool isName = difference.key.startsWith(QLatin1String("name:"));
-        items.append({difference.key, difference.item, output, isName,
-                      m_workspace->cams()->deadTime(output),
-                      m_workspace->cams()->outputName(output)});
-    }
-    WriteReport base;
-    // Selected items that already match, or (write all) every output that does.
-    base.unchanged = keys.isEmpty() ? m_workspace->info().deadTimeOutputs * 2 - int(all.size())
-                                    : int(keys.size() - items.size());
-    if (base.unchanged < 0) base.unchanged = 0;
-    m_session->run<ItemOutcomes>(
-        this, tr("Write dead times"),
-        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
-            ItemOutcomes outcomes;
-            int n = 0;
-            for (const Item& item : items) {
-                job.progress(n++, items.size());
-                if (job.cancelled()) {
-                    outcomes.append({item.key, item.label, Error::cancelled()});
-                    continue;
-                }
-                const Status status = item.isName
-                                          ? client.writeOutputName(item.output, item.name)
-                                          : client.writeDeadTime(item.output, item.deadTime);
-                outcomes.append({item.key, item.label, status ? Error{} : status.error()});
-            }
-            return outcomes;
-        },
-        [this, base, done](Result<ItemOutcomes> outcomes) {
-            WriteReport report = base;
-            report.add(outcomes.value());
-            QList<int> deadTimes;
-            QList<int> names;
-            for (const ItemOutcome& outcome : outcomes.value()) {
-                if (outcome.error.kind != ErrorKind::None) continue;
-                const int output = outcome.key.section(QLatin1Char(':'), 1).toInt();
-                (outcome.key.startsWith(QLatin1String("name:")) ? names : deadTimes) << output;
-            }
-            m_workspace->markOutputSettingsWritten(deadTimes, names);
-            done(report);
-        });
+void DeadTimesPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    writeDifferences(m_session, m_workspace, std::move(done));
 }
 
 }  // namespace cambench

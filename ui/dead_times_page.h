@@ -19,8 +19,7 @@ public:
 
     QString sectionTitle() const override { return tr("Dead times"); }
     QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
-    void deviceConnected() override;
+    void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void readFromDevice();
     QTableView* view() const { return m_view; }

@@ -8,8 +8,10 @@
 #include "connection_page.h"
 #include "connection_status.h"
 #include "dead_times_page.h"
+#include "device_reads.h"
 #include "device_session.h"
 #include "gui_settings.h"
+#include "incoming_values.h"
 #include "language.h"
 #include "monitor_page.h"
 #include "new_project_dialog.h"
@@ -73,7 +75,10 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
     connect(m_nav, &QListWidget::currentRowChanged, this, &MainWindow::updateLivePolling);
     connect(m_session, &DeviceSession::stateChanged, this, &MainWindow::updateConnection);
     connect(m_session, &DeviceSession::reconnected, this,
-            [this] { showMessage(tr("Connection re-established. Your edits are unchanged.")); });
+            [this] {
+                showMessage(tr("Connection re-established. Your edits are unchanged; Compare with "
+                               "device reads what the device holds now."));
+            });
     connect(m_workspace, &Workspace::changedCountChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::infoChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::projectPathChanged, this, &MainWindow::updateTitle);
@@ -280,30 +285,32 @@ void MainWindow::connectAndLoad(int program) {
 }
 
 void MainWindow::readEverything(int program) {
-    showMessage(tr("Reading the device…"));
-    m_session->run<DeviceInfo>(
-        this, tr("Read device identity"),
-        [](comm::CamConDevice& client, comm::JobContext&) { return client.readInfo(); },
-        [this, program](Result<DeviceInfo> info) {
-            if (!info) {
-                showMessage(tr("The device did not identify itself: %1").arg(info.error().message));
-                Q_EMIT loaded(false);
-                return;
+    if (m_readJob != 0) return;  // one whole-device read at a time
+    showMessage(tr("Reading everything the device holds…"));
+    m_readJob = devicereads::readEverything(
+        this, m_session, m_workspace, [this, program](const Status& status, const QStringList& skipped) {
+            m_readJob = 0;
+            if (status) {
+                m_cams->editor()->setCurrentProgram(
+                    std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1)));
+                showMessage(skipped.isEmpty()
+                                ? tr("Everything read from the device.")
+                                : tr("Read from the device, except: %1").arg(skipped.join(QLatin1Char(' '))));
+            } else if (status.error().kind == ErrorKind::Cancelled) {
+                showMessage(tr("Reading the device cancelled: %1").arg(status.error().message));
+            } else {
+                showMessage(tr("Reading the device failed: %1 Your edits are kept.")
+                                .arg(asSentence(status.error().message)));
             }
-            m_workspace->setInfo(info.value(), true);
-            for (SectionPage* page : m_pages) page->deviceConnected();
-            m_cams->editor()->setCurrentProgram(program);
-            m_cams->readProgram(program,
-                                [this](const Status& status) { Q_EMIT loaded(status.ok()); });
+            Q_EMIT loaded(status.ok());
         });
 }
 
 CompareDialog* MainWindow::openCompare() {
-    auto* dialog = new CompareDialog(dataPages(), this);
+    auto* dialog = new CompareDialog(m_session, m_workspace, dataPages(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &CompareDialog::writeFinished, this, [this](const WriteReport& report) {
-        showMessage(tr("Write: %1").arg(report.summary()));
-    });
+    connect(dialog, &CompareDialog::writeFinished, this,
+            [this](const WriteResult& result) { showMessage(tr("Write: %1").arg(writeSummary(result))); });
     dialog->show();
     return dialog;
 }
@@ -354,11 +361,12 @@ void MainWindow::newProject() {
     if (dialog.exec() != QDialog::Accepted) return;
     if (m_workspace->changedCount() > 0 &&
         QMessageBox::question(this, tr("New project"),
-                              tr("The current edits are not written or saved. Replace them?")) !=
-            QMessageBox::Yes)
+                              tr("%n change(s) are not written or saved. Discard them for a new, "
+                                 "empty project?",
+                                 nullptr, m_workspace->changedCount())) != QMessageBox::Yes)
         return;
     m_session->disconnectFromDevice();
-    loadProjectIntoWorkspace(*m_workspace, emptyProject(dialog.capacities()));
+    m_workspace->clear(emptyProject(dialog.capacities()).device);
     m_workspace->setProjectPath({});
     showSection(Cams);
 }
@@ -378,7 +386,12 @@ void MainWindow::openProjectFile(const QString& path) {
         if (!QFileInfo::exists(path)) guisettings::removeRecentProject(path);
         return;
     }
-    loadProjectIntoWorkspace(*m_workspace, project.value());
+    if (!takeIncoming(this, *m_workspace, project.value(), ValueSource::File)) {
+        showMessage(tr("Project %1 not opened: your edits are unchanged.").arg(path));
+        return;
+    }
+    // The editors follow the project's device; writing checks the device on the line.
+    if (!(m_workspace->info() == project->device)) m_workspace->setInfo(project->device, false);
     m_workspace->setProjectPath(path);
     guisettings::addRecentProject(path);
     showMessage(
@@ -421,15 +434,32 @@ void MainWindow::saveProjectAs() {
     if (!path.isEmpty()) saveProjectTo(path);
 }
 
-void MainWindow::saveProjectTo(const QString& path) {
-    const Status saved = cambench::saveProject(path, projectFromWorkspace(*m_workspace));
+Status MainWindow::saveProjectTo(const QString& path) {
+    if (m_readJob != 0) {
+        // Half a device in a file would look like a whole one later.
+        const Status refused = Error::usage(tr("The device is still being read; the project was not "
+                                               "saved. Save again when the reading is done."));
+        ReportDialog::present(this, QMessageBox::Information, tr("Save project"), refused.error().message);
+        return refused;
+    }
+    const Project project = projectFromWorkspace(*m_workspace);
+    const Status saved = cambench::saveProject(path, project);
     if (!saved) {
-        QMessageBox::warning(this, tr("Save project"), saved.error().message);
-        return;
+        ReportDialog::present(this, QMessageBox::Warning, tr("Save project"),
+                              tr("The project was not saved."), saved.error().message);
+        return saved;
     }
     m_workspace->setProjectPath(path);
     guisettings::addRecentProject(path);
-    showMessage(tr("Project saved to %1.").arg(path));
+    // Values as the device holds them are saved as they are; say which a
+    // write would refuse.
+    const QStringList warnings = validateProject(project);
+    showMessage(warnings.isEmpty()
+                    ? tr("Project saved to %1.").arg(path)
+                    : tr("Project saved to %1. %n value(s) are outside what a write accepts (%2).", nullptr,
+                         int(warnings.size()))
+                          .arg(path, warnings.first()));
+    return saved;
 }
 
 Status MainWindow::exportReport(const QString& path) {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "write_report.h"
+#include "model/result.h"
 
 #include <QMainWindow>
 
@@ -76,7 +76,10 @@ public:
     // Asks before closing when edits are not written; true = may close.
     bool confirmClose();
 
-    void saveProjectTo(const QString& path);
+    // Refuses while the device is still being read; warns about values a
+    // write would refuse, but saves them as they are.
+    Status saveProjectTo(const QString& path);
+    bool isReadingDevice() const { return m_readJob != 0; }
     // Opens a project file (asks first when it would replace edits).
     void openProjectFile(const QString& path);
     Status exportReport(const QString& path);
@@ -128,6 +131,7 @@ private:
     QList<SectionPage*> m_pages;
     QString m_lastMessage;
     int m_pendingProgram = -1;
+    quint64 m_readJob = 0;  // the whole-device read running, 0 = none
 };
 
 }  // namespace cambench

@@ -1,6 +1,7 @@
 #include "plc_page.h"
 
 #include "change_marker.h"
+#include "device_reads.h"
 #include "device_session.h"
 #include "plc_matrix_model.h"
 #include "plc_symbol.h"
@@ -15,7 +16,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpressionValidator>
 #include <QSpinBox>
@@ -109,14 +109,7 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     connect(m_area, &QComboBox::currentIndexChanged, this, select);
     connect(m_number, &QSpinBox::valueChanged, this, select);
     connect(read, &QPushButton::clicked, this, &PlcPage::readNetwork);
-    connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const WriteReport& report) {
-            Q_EMIT statusMessage(tr("PLC: %1").arg(report.summary()));
-            if (!report.complete())
-                ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(),
-                                          report.details());
-        });
-    });
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(m_value, &QSpinBox::valueChanged, this, &PlcPage::editFields);
     connect(m_reset, &QLineEdit::textEdited, this, &PlcPage::editFields);
     connect(m_networks, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
@@ -173,20 +166,18 @@ void PlcPage::fillList() {
 void PlcPage::readNetwork() {
     const int area = m_model->area();
     const int number = m_model->number();
-    m_session->run<PlcNetwork>(
-        this, tr("Read PLC network"),
-        [area, number](comm::CamConDevice& client, comm::JobContext&) {
-            return client.readPlcNetwork(area, number);
-        },
-        [this, area, number](Result<PlcNetwork> network) {
-            if (!network) {
-                Q_EMIT statusMessage(tr("Reading %1 failed: %2")
-                                         .arg(networkName(area, number), network.error().message));
-                return;
-            }
-            m_workspace->loadPlcFromDevice(network.value());
-            Q_EMIT statusMessage(tr("%1 read.").arg(networkName(area, number)));
-        });
+    devicereads::readPlcNetwork(this, m_session, m_workspace, area, number,
+                                [this, area, number](const Status& status) {
+                                    if (status) {
+                                        Q_EMIT statusMessage(tr("%1 read.").arg(networkName(area, number)));
+                                    } else if (status.error().kind == ErrorKind::Cancelled) {
+                                        Q_EMIT statusMessage(status.error().message);
+                                    } else {
+                                        Q_EMIT statusMessage(tr("Reading %1 failed: %2")
+                                                                 .arg(networkName(area, number),
+                                                                      status.error().message));
+                                    }
+                                });
 }
 
 QList<SectionDifference> PlcPage::differences() const {
@@ -194,7 +185,7 @@ QList<SectionDifference> PlcPage::differences() const {
     for (int key : m_workspace->changedPlcNetworks()) {
         const PlcNetwork edited = m_workspace->plcNetworks().value(key);
         const auto& device = m_workspace->devicePlcNetworks();
-        list.append({QString::number(key),
+        list.append({WorkspaceItem::plcNetwork(key),
                      tr("Network %1").arg(networkName(edited.area, edited.number)),
                      device.contains(key) ? networkText(device.value(key)) : tr("not read"),
                      networkText(edited)});
@@ -202,37 +193,8 @@ QList<SectionDifference> PlcPage::differences() const {
     return list;
 }
 
-void PlcPage::writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) {
-    QList<QPair<QString, PlcNetwork>> items;
-    const QList<int> changed = m_workspace->changedPlcNetworks();
-    WriteReport base;
-    for (int key : changed) {
-        if (keys.isEmpty() || keys.contains(QString::number(key)))
-            items.append({QString::number(key), m_workspace->plcNetworks().value(key)});
-    }
-    base.unchanged = keys.isEmpty() ? int(m_workspace->plcNetworks().size() - changed.size())
-                                    : int(keys.size() - items.size());
-    m_session->run<ItemOutcomes>(
-        this, tr("Write PLC networks"),
-        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
-            ItemOutcomes outcomes;
-            for (const auto& [key, network] : items) {
-                const Status status =
-                    job.cancelled() ? Status(Error::cancelled()) : client.writePlcNetwork(network);
-                outcomes.append({key, networkName(network.area, network.number),
-                                 status ? Error{} : status.error()});
-            }
-            return outcomes;
-        },
-        [this, base, done](Result<ItemOutcomes> outcomes) {
-            WriteReport report = base;
-            report.add(outcomes.value());
-            for (const ItemOutcome& outcome : outcomes.value()) {
-                if (outcome.error.kind == ErrorKind::None)
-                    m_workspace->markPlcWritten(outcome.key.toInt());
-            }
-            done(report);
-        });
+void PlcPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    writeDifferences(m_session, m_workspace, std::move(done));
 }
 
 }  // namespace cambench

@@ -23,7 +23,7 @@ public:
 
     QString sectionTitle() const override { return tr("PLC"); }
     QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
+    void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void showNetwork(int area, int number);  // number 0-based
     void readNetwork();

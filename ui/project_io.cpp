@@ -9,30 +9,34 @@ namespace cambench {
 Project projectFromWorkspace(const Workspace& workspace) {
     Project project;
     const CamDocument* cams = workspace.cams();
+    const ProjectReadTimes& read = workspace.readTimes();
     project.device = workspace.info();
+    if (workspace.infoFromDevice() && read.parts.contains(ProjectPart::Device))
+        project.readAt.parts.insert(ProjectPart::Device, read.parts.value(ProjectPart::Device));
     for (int number : cams->editedPrograms()) {
         const CamProgram program = cams->program(number);
-        if (!program.tracks.isEmpty() || !program.name.isEmpty()) project.programs.append(program);
+        project.programs.append(program);
+        if (!program.name.isEmpty()) project.names.programs.insert(number, program.name);
+        if (!cams->programEdited(number) && read.programs.contains(number))
+            project.readAt.programs.insert(number, read.programs.value(number));
     }
     project.deadTimes = cams->deadTimes();
     project.names.outputs = cams->names().outputs;
-    for (const CamProgram& program : project.programs) {
-        if (!program.name.isEmpty()) project.names.programs.insert(program.number, program.name);
+    if (workspace.outputSettingsEditCount() == 0) {
+        for (ProjectPart part : {ProjectPart::DeadTimes, ProjectPart::OutputNames}) {
+            if (read.parts.contains(part)) project.readAt.parts.insert(part, read.parts.value(part));
+        }
     }
     project.settings = workspace.settings();
+    if (workspace.changedSettings().isEmpty() && read.parts.contains(ProjectPart::Settings))
+        project.readAt.parts.insert(ProjectPart::Settings, read.parts.value(ProjectPart::Settings));
     for (const Workspace::EditedUser& user : workspace.users()) project.users.append(user.user);
+    if (workspace.userEditCount() == 0 && read.parts.contains(ProjectPart::Users))
+        project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
     project.plcNetworks = workspace.plcNetworks().values();
+    if (workspace.changedPlcNetworks().isEmpty() && read.parts.contains(ProjectPart::PlcNetworks))
+        project.readAt.parts.insert(ProjectPart::PlcNetworks, read.parts.value(ProjectPart::PlcNetworks));
     return project;
-}
-
-void loadProjectIntoWorkspace(Workspace& workspace, const Project& project) {
-    workspace.setInfo(project.device, false);
-    QMap<int, CamProgram> programs;
-    for (const CamProgram& program : project.programs) programs.insert(program.number, program);
-    workspace.cams()->loadOffline(programs, project.names, project.deadTimes);
-    workspace.loadSettingsOffline(project.settings);
-    workspace.loadUsersOffline(project.users);
-    for (const PlcNetwork& network : project.plcNetworks) workspace.setPlcNetwork(network);
 }
 
 Project emptyProject(const DeviceInfo& capacities) {

@@ -6,10 +6,12 @@ namespace cambench {
 
 class Workspace;
 
-// The workspace's edited state as a project (model/project_file.h), and
-// back. Loading a project makes everything "edited, not on the device".
+// The workspace as a project (model/camcon/project_file.h): every program
+// it holds (read from the device or edited; a program neither read nor
+// edited is absent, i.e. "not read"), names, dead times, settings, users
+// and PLC networks, with the read times of the parts that are still what
+// the device held (a part with edits gets none: its content is the PC's).
 Project projectFromWorkspace(const Workspace& workspace);
-void loadProjectIntoWorkspace(Workspace& workspace, const Project& project);
 
 // A new, empty project for a device with these capacities.
 Project emptyProject(const DeviceInfo& capacities);

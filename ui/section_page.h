@@ -1,25 +1,28 @@
 #pragma once
 
-#include "write_report.h"
+#include "device_writer.h"
+#include "workspace_item.h"
 
 #include <QWidget>
 
-#include <functional>
-
 namespace cambench {
 
+class DeviceSession;
+class Workspace;
+
 // One line of "Compare with device": an item whose edited value differs
-// from the device's. `key` identifies it for writeItems().
+// from the device's.
 struct SectionDifference {
-    QString key;
-    QString item;
+    WorkspaceItem item;
+    QString label;
     QString device;
     QString edited;
 };
 
 // A page of the main window that shows one section of a device. Pages that
-// hold data know what came from the device and what was edited, list the
-// differences and write a chosen subset of them.
+// hold data list where the edited values differ from the device; writing
+// goes through writeToDevice() (device_writer.h), reading through
+// DeviceReader.
 class SectionPage : public QWidget {
     Q_OBJECT
 public:
@@ -27,16 +30,16 @@ public:
 
     virtual QString sectionTitle() const = 0;
     virtual QList<SectionDifference> differences() const { return {}; }
-    // Writes the items with these keys; `done` gets the per-item report.
-    virtual void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) {
-        Q_UNUSED(keys);
-        done({});
-    }
-    // Called when the device's identity is known (after connect or reconnect).
-    virtual void deviceConnected() {}
 
 Q_SIGNALS:
     void statusMessage(const QString& text);
+
+protected:
+    // "Write changes" of a page: every difference of this section through
+    // the one write path; the summary in the status bar, the items not
+    // written in a dialog; then `done`.
+    void writeDifferences(DeviceSession* session, Workspace* workspace,
+                          std::function<void(const WriteResult&)> done = {});
 };
 
 }  // namespace cambench

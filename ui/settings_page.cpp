@@ -1,7 +1,7 @@
 #include "settings_page.h"
 
+#include "device_reads.h"
 #include "device_session.h"
-#include "report_dialog.h"
 #include "setting_field.h"
 #include "workspace.h"
 
@@ -11,7 +11,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QStackedWidget>
@@ -98,14 +97,7 @@ SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget
     connect(m_groups, &QListWidget::currentRowChanged, m_pages, &QStackedWidget::setCurrentIndex);
     m_groups->setCurrentRow(0);
     connect(read, &QPushButton::clicked, this, &SettingsPage::readFromDevice);
-    connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const WriteReport& report) {
-            Q_EMIT statusMessage(tr("Settings: %1").arg(report.summary()));
-            if (!report.complete())
-                ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(),
-                                          report.details());
-        });
-    });
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(m_workspace, &Workspace::settingsChanged, this, &SettingsPage::showValues);
     showValues();
 }
@@ -167,23 +159,17 @@ void SettingsPage::showValues() {
     }
 }
 
-void SettingsPage::deviceConnected() {
-    readFromDevice();
-}
-
 void SettingsPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading settings…"));
-    m_session->run<SystemSettings>(
-        this, tr("Read settings"),
-        [](comm::CamConDevice& client, comm::JobContext&) { return client.readSettings(); },
-        [this](Result<SystemSettings> result) {
-            if (!result) {
-                Q_EMIT statusMessage(tr("Reading settings failed: %1").arg(result.error().message));
-                return;
-            }
-            m_workspace->loadSettingsFromDevice(result.value());
+    devicereads::readSettings(this, m_session, m_workspace, [this](const Status& status) {
+        if (status) {
             Q_EMIT statusMessage(tr("Settings read."));
-        });
+        } else if (status.error().kind == ErrorKind::Cancelled) {
+            Q_EMIT statusMessage(status.error().message);
+        } else {
+            Q_EMIT statusMessage(tr("Reading settings failed: %1").arg(status.error().message));
+        }
+    });
 }
 
 QList<SectionDifference> SettingsPage::differences() const {
@@ -192,7 +178,7 @@ QList<SectionDifference> SettingsPage::differences() const {
     for (const QString& key : m_workspace->changedSettings()) {
         const SettingSpec* spec = findSetting(key);
         if (!spec) continue;
-        list.append({key, SettingField::labelText(*spec),
+        list.append({WorkspaceItem::setting(key), SettingField::labelText(*spec),
                      device.contains(key) ? SettingField::displayText(*spec, device.value(key))
                                           : tr("not read"),
                      SettingField::displayText(*spec, m_workspace->settings().value(key))});
@@ -200,61 +186,8 @@ QList<SectionDifference> SettingsPage::differences() const {
     return list;
 }
 
-void SettingsPage::writeItems(const QStringList& keys,
-                              std::function<void(const WriteReport&)> done) {
-    const QStringList changed = m_workspace->changedSettings();
-    const QStringList selected = keys.isEmpty() ? changed : keys;
-    WriteReport base;
-    QList<QPair<QString, SystemSettings>> items;
-    for (const QString& key : selected) {
-        if (!changed.contains(key)) {
-            base.addUnchanged();
-            continue;
-        }
-        const SettingSpec* spec = findSetting(key);
-        // A setting travels with its group's other values (composite device
-        // commands need them); those are sent as the device has them.
-        SystemSettings values;
-        for (auto it = m_workspace->deviceSettings().cbegin();
-             it != m_workspace->deviceSettings().cend(); ++it) {
-            const SettingSpec* other = findSetting(it.key());
-            if (spec && other && qstrcmp(other->group, spec->group) == 0 &&
-                subgroupOf(it.key()) == subgroupOf(key))
-                values.insert(it.key(), it.value());
-        }
-        values.insert(key, m_workspace->settings().value(key));
-        items.append({key, values});
-    }
-    if (keys.isEmpty()) base.unchanged = int(m_fields.size() - changed.size());
-    const QString label = tr("Setting %1");
-    const SystemSettings onDevice = m_workspace->deviceSettings();
-    m_session->run<ItemOutcomes>(
-        this, tr("Write settings"),
-        [items, label, onDevice](comm::CamConDevice& client,
-                                 comm::JobContext& job) -> Result<ItemOutcomes> {
-            ItemOutcomes outcomes;
-            int n = 0;
-            for (const auto& item : items) {
-                job.progress(n++, items.size());
-                const Status status = job.cancelled() ? Status(Error::cancelled())
-                                                      : client.writeSettings(item.second, onDevice);
-                outcomes.append(
-                    {item.first, label.arg(item.first), status ? Error{} : status.error()});
-            }
-            return outcomes;
-        },
-        [this, base, done](Result<ItemOutcomes> outcomes) {
-            WriteReport report = base;
-            QStringList written;
-            for (ItemOutcome outcome : outcomes.value()) {
-                if (const SettingSpec* spec = findSetting(outcome.key))
-                    outcome.item = SettingField::labelText(*spec);
-                report.add({outcome});
-                if (outcome.error.kind == ErrorKind::None) written << outcome.key;
-            }
-            m_workspace->markSettingsWritten(written);
-            done(report);
-        });
+void SettingsPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    writeDifferences(m_session, m_workspace, std::move(done));
 }
 
 }  // namespace cambench

@@ -23,8 +23,7 @@ public:
 
     QString sectionTitle() const override { return tr("Encoder & system"); }
     QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
-    void deviceConnected() override;
+    void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void readFromDevice();
     SettingField* field(const QString& key) const { return m_fields.value(key); }

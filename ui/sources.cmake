@@ -3,8 +3,6 @@ target_sources(cambench_ui PRIVATE
   shell_log.cpp
   report_dialog.h
   report_dialog.cpp
-  write_report.h
-  write_report.cpp
   change_marker.h
   live_freshness.h
   live_freshness.cpp
@@ -14,7 +12,19 @@ target_sources(cambench_ui PRIVATE
   device_session.cpp
   workspace.h
   workspace.cpp
+  workspace_item.h
   section_page.h
+  section_page.cpp
+  write_plan_builder.h
+  write_plan_builder.cpp
+  device_writer.h
+  device_writer.cpp
+  replace_edits_dialog.h
+  replace_edits_dialog.cpp
+  incoming_values.h
+  incoming_values.cpp
+  device_reads.h
+  device_reads.cpp
   connection_page.h
   connection_page.cpp
   dead_times_model.h

@@ -1,8 +1,8 @@
 #include "users_page.h"
 
 #include "access_grid_model.h"
+#include "device_reads.h"
 #include "device_session.h"
-#include "report_dialog.h"
 #include "users_model.h"
 #include "workspace.h"
 
@@ -13,7 +13,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLineEdit>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -108,14 +107,7 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
     layout->addLayout(body, 1);
 
     connect(read, &QPushButton::clicked, this, &UsersPage::readFromDevice);
-    connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const WriteReport& report) {
-            Q_EMIT statusMessage(tr("Users: %1").arg(report.summary()));
-            if (!report.complete())
-                ReportDialog::presentText(this, QMessageBox::Warning, sectionTitle(),
-                                          report.details());
-        });
-    });
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(add, &QPushButton::clicked, this, [this] {
         User user;
         user.name = tr("New user");
@@ -183,23 +175,17 @@ void UsersPage::editUser() {
     m_workspace->setUser(index, user);
 }
 
-void UsersPage::deviceConnected() {
-    readFromDevice();
-}
-
 void UsersPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading users…"));
-    m_session->run<QList<User>>(
-        this, tr("Read users"),
-        [](comm::CamConDevice& client, comm::JobContext&) { return client.readUsers(); },
-        [this](Result<QList<User>> users) {
-            if (!users) {
-                Q_EMIT statusMessage(tr("Reading users failed: %1").arg(users.error().message));
-                return;
-            }
-            m_workspace->loadUsersFromDevice(users.value());
-            Q_EMIT statusMessage(tr("%n user(s) read.", nullptr, int(users->size())));
-        });
+    devicereads::readUsers(this, m_session, m_workspace, [this](const Status& status) {
+        if (status) {
+            Q_EMIT statusMessage(tr("%n user(s) read.", nullptr, int(m_workspace->deviceUsers().size())));
+        } else if (status.error().kind == ErrorKind::Cancelled) {
+            Q_EMIT statusMessage(status.error().message);
+        } else {
+            Q_EMIT statusMessage(tr("Reading users failed: %1").arg(status.error().message));
+        }
+    });
 }
 
 QList<SectionDifference> UsersPage::differences() const {
@@ -217,80 +203,21 @@ QList<SectionDifference> UsersPage::differences() const {
             if (!users[i].deviceNumber.isEmpty() && d.number == users[i].deviceNumber)
                 device = described(d);
         }
-        list.append({QStringLiteral("user:%1").arg(i), tr("User \"%1\"").arg(users[i].user.name),
+        list.append({WorkspaceItem::user(i), tr("User \"%1\"").arg(users[i].user.name),
                      device, described(users[i].user)});
     }
     for (const QString& number : m_workspace->deletedUserNumbers()) {
         for (const User& d : m_workspace->deviceUsers()) {
             if (d.number == number)
-                list.append({QStringLiteral("delete:%1").arg(number), tr("User \"%1\"").arg(d.name),
+                list.append({WorkspaceItem::deletedUser(number), tr("User \"%1\"").arg(d.name),
                              described(d), tr("deleted")});
         }
     }
     return list;
 }
 
-void UsersPage::writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) {
-    struct Item {
-        QString key;
-        QString label;
-        QString oldNumber;
-        User user;
-        bool remove;
-    };
-    QList<Item> items;
-    const QList<SectionDifference> all = differences();
-    for (const SectionDifference& difference : all) {
-        if (!keys.isEmpty() && !keys.contains(difference.key)) continue;
-        const QString arg = difference.key.section(QLatin1Char(':'), 1);
-        if (difference.key.startsWith(QLatin1String("delete:"))) {
-            items.append({difference.key, difference.item, arg, User(), true});
-        } else {
-            const auto& edited = m_workspace->users().at(arg.toInt());
-            items.append(
-                {difference.key, difference.item, edited.deviceNumber, edited.user, false});
-        }
-    }
-    for (const Item& item : items) {
-        // The device would refuse these; say so before touching it.
-        if (!item.remove && item.user.number.isEmpty()) {
-            WriteReport report;
-            report.addFailure(item.label,
-                              Error::invalidData(tr("The user has no number: enter one.")));
-            done(report);
-            return;
-        }
-    }
-    WriteReport base;
-    base.unchanged = keys.isEmpty() ? int(m_workspace->users().size()) -
-                                          int(all.size() - m_workspace->deletedUserNumbers().size())
-                                    : int(keys.size() - items.size());
-    m_session->run<ItemOutcomes>(
-        this, tr("Write users"),
-        [items](comm::CamConDevice& client, comm::JobContext& job) -> Result<ItemOutcomes> {
-            ItemOutcomes outcomes;
-            for (const Item& item : items) {
-                const Status status = job.cancelled() ? Status(Error::cancelled())
-                                      : item.remove   ? client.deleteUser(item.oldNumber)
-                                                      : client.writeUser(item.oldNumber, item.user);
-                outcomes.append({item.key, item.label, status ? Error{} : status.error()});
-            }
-            return outcomes;
-        },
-        [this, base, done](Result<ItemOutcomes> outcomes) {
-            WriteReport report = base;
-            report.add(outcomes.value());
-            for (const ItemOutcome& outcome : outcomes.value()) {
-                if (outcome.error.kind != ErrorKind::None) continue;
-                const QString arg = outcome.key.section(QLatin1Char(':'), 1);
-                if (outcome.key.startsWith(QLatin1String("delete:"))) {
-                    m_workspace->markUserDeleted(arg);
-                } else {
-                    m_workspace->markUserWritten(arg.toInt());
-                }
-            }
-            done(report);
-        });
+void UsersPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    writeDifferences(m_session, m_workspace, std::move(done));
 }
 
 }  // namespace cambench

@@ -24,8 +24,7 @@ public:
 
     QString sectionTitle() const override { return tr("Users"); }
     QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
-    void deviceConnected() override;
+    void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void readFromDevice();
     void setNumbersShown(bool shown);

@@ -10,7 +10,14 @@ namespace {
 
 const User* findByNumber(const QList<User>& users, const QString& number) {
     for (const User& user : users) {
-        if (user.number == number) return &user;
+        if (!number.isEmpty() && user.number == number) return &user;
+    }
+    return nullptr;
+}
+
+const User* findByName(const QList<User>& users, const QString& name) {
+    for (const User& user : users) {
+        if (user.name == name) return &user;
     }
     return nullptr;
 }
@@ -37,44 +44,82 @@ void Workspace::setProjectPath(const QString& path) {
     Q_EMIT projectPathChanged();
 }
 
-// --- output names and dead times
-
-void Workspace::loadOutputSettingsFromDevice(const QMap<int, QString>& names,
-                                             const DeadTimes& deadTimes) {
-    m_deviceOutputNames = names;
-    m_deviceDeadTimes = deadTimes;
-    m_outputSettingsKnown = true;
-    m_cams->loadOutputSettingsFromDevice(names, deadTimes);
-}
-
-void Workspace::markOutputSettingsWritten(const QList<int>& deadTimes, const QList<int>& names) {
-    for (int output : deadTimes) m_deviceDeadTimes.insert(output, m_cams->deadTime(output));
-    for (int output : names) m_deviceOutputNames.insert(output, m_cams->outputName(output));
-    // The document only knows "all written"; hand it the new device copy and
-    // put back the edits that did not reach the device.
-    const DeadTimes editedDeadTimes = m_cams->deadTimes();
-    const QMap<int, QString> editedNames = m_cams->names().outputs;
-    m_cams->loadOutputSettingsFromDevice(m_deviceOutputNames, m_deviceDeadTimes);
-    for (int output = 1; output <= m_info.outputs; ++output) {
-        if (editedDeadTimes.value(output) != m_deviceDeadTimes.value(output))
-            m_cams->applyDeadTime(output, editedDeadTimes.value(output));
-        if (editedNames.value(output) != m_deviceOutputNames.value(output))
-            m_cams->applyOutputName(output, editedNames.value(output));
-    }
-}
-
-// --- settings
-
-void Workspace::loadSettingsFromDevice(const SystemSettings& settings) {
-    m_deviceSettings = settings;
-    m_settings = settings;
-    m_settingsKnown = true;
+void Workspace::clear(const DeviceInfo& info) {
+    m_cams->clear();
+    m_readAt = {};
+    m_settings.clear();
+    m_deviceSettings.clear();
+    m_settingsKnown = false;
+    m_users.clear();
+    m_deviceUsers.clear();
+    m_usersKnown = false;
+    m_plc.clear();
+    m_devicePlc.clear();
+    setInfo(info, false);
     Q_EMIT settingsChanged();
+    Q_EMIT usersChanged();
+    Q_EMIT plcChanged();
+    Q_EMIT readTimesChanged();
     notifyChanged();
 }
 
-void Workspace::loadSettingsOffline(const SystemSettings& settings) {
-    m_settings = settings;
+// --- read times
+
+void Workspace::setReadTime(ProjectPart part, const QDateTime& utc) {
+    m_readAt.parts.insert(part, utc);
+    Q_EMIT readTimesChanged();
+}
+
+void Workspace::setProgramReadTime(int program, const QDateTime& utc) {
+    m_readAt.programs.insert(program, utc);
+    Q_EMIT readTimesChanged();
+}
+
+QDateTime Workspace::lastReadTime() const {
+    QDateTime last;
+    for (const QDateTime& time : m_readAt.parts) last = std::max(last, time);
+    for (const QDateTime& time : m_readAt.programs) last = std::max(last, time);
+    return last;
+}
+
+// --- output names and dead times
+
+bool Workspace::outputSettingsKnown() const { return m_cams->outputSettingsKnown(); }
+
+qint32 Workspace::deviceDeadTime(int output) const { return m_cams->deviceDeadTime(output).value_or(0); }
+
+QString Workspace::deviceOutputName(int output) const {
+    return m_cams->deviceOutputName(output).value_or(QString());
+}
+
+void Workspace::mergeOutputSettings(const QMap<int, QString>& names, const DeadTimes& deadTimes,
+                                    ValueSource source, bool keepEdits) {
+    if (source == ValueSource::Device) {
+        m_cams->mergeOutputSettings(names, deadTimes, true, keepEdits);
+        return;
+    }
+    // A file leaves the outputs it does not name as they are.
+    QMap<int, QString> allNames = m_cams->names().outputs;
+    DeadTimes allDeadTimes = m_cams->deadTimes();
+    for (auto it = names.cbegin(); it != names.cend(); ++it) allNames.insert(it.key(), it.value());
+    for (auto it = deadTimes.cbegin(); it != deadTimes.cend(); ++it) allDeadTimes.insert(it.key(), it.value());
+    m_cams->mergeOutputSettings(allNames, allDeadTimes, false, keepEdits);
+}
+
+int Workspace::outputSettingsEditCount() const { return m_cams->outputSettingsEditCount(); }
+
+// --- settings
+
+void Workspace::mergeSettings(const SystemSettings& settings, ValueSource source, bool keepEdits) {
+    const QStringList edited = changedSettings();
+    if (source == ValueSource::Device) {
+        m_deviceSettings = settings;
+        m_settingsKnown = true;
+    }
+    for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
+        if (keepEdits && edited.contains(it.key())) continue;
+        m_settings.insert(it.key(), it.value());
+    }
     Q_EMIT settingsChanged();
     notifyChanged();
 }
@@ -86,8 +131,8 @@ void Workspace::setSetting(const QString& key, const QVariant& value) {
     notifyChanged();
 }
 
-void Workspace::markSettingsWritten(const QStringList& keys) {
-    for (const QString& key : keys) m_deviceSettings.insert(key, m_settings.value(key));
+void Workspace::setDeviceSettings(const SystemSettings& values) {
+    for (auto it = values.cbegin(); it != values.cend(); ++it) m_deviceSettings.insert(it.key(), it.value());
     Q_EMIT settingsChanged();
     notifyChanged();
 }
@@ -103,18 +148,72 @@ QStringList Workspace::changedSettings() const {
 
 // --- users
 
-void Workspace::loadUsersFromDevice(const QList<User>& users) {
+QString Workspace::deviceNumberFor(const User& user) const {
+    // A project may hold users without their numbers: the device's user
+    // of the same name is the one meant.
+    if (const User* device = findByNumber(m_deviceUsers, user.number)) return device->number;
+    if (user.number.isEmpty()) {
+        if (const User* device = findByName(m_deviceUsers, user.name)) return device->number;
+    }
+    return {};
+}
+
+void Workspace::mergeUsers(const QList<User>& users, ValueSource source, bool keepEdits) {
+    if (source == ValueSource::File) {
+        mergeUsersFromFile(users, keepEdits);
+        return;
+    }
+    QList<EditedUser> kept;  // edited users that keep their edit
+    QStringList deleted;
+    if (keepEdits) {
+        for (int i = 0; i < m_users.size(); ++i) {
+            if (userChanged(i)) kept << m_users.at(i);
+        }
+        deleted = deletedUserNumbers();
+    }
     m_deviceUsers = users;
-    m_users.clear();
-    for (const User& user : users) m_users.append({user, user.number});
+    m_usersKnown = true;
+    // The device's list, with the user's edits in place of their users.
+    QList<EditedUser> result;
+    for (const User& user : users) {
+        if (deleted.contains(user.number)) continue;
+        const auto mine = std::find_if(kept.begin(), kept.end(),
+                                       [&](const EditedUser& e) { return e.deviceNumber == user.number; });
+        if (mine != kept.end()) {
+            result << *mine;
+            kept.erase(mine);
+        } else {
+            result << EditedUser{user, user.number};
+        }
+    }
+    // Edited users the device does not have (new ones, or gone from it).
+    for (EditedUser& edited : kept) {
+        if (!findByNumber(m_deviceUsers, edited.deviceNumber)) edited.deviceNumber.clear();
+        result << edited;
+    }
+    m_users = result;
     Q_EMIT usersChanged();
     notifyChanged();
 }
 
-void Workspace::loadUsersOffline(const QList<User>& users) {
-    m_users.clear();
-    for (const User& user : users) {
-        m_users.append({user, findByNumber(m_deviceUsers, user.number) ? user.number : QString()});
+void Workspace::mergeUsersFromFile(const QList<User>& users, bool keepEdits) {
+    // A project names the users it wants; users it does not name are left
+    // as they are (as the CLI's write of a project leaves them).
+    for (User user : users) {
+        if (user.number.isEmpty()) {
+            // Saved without numbers: the device's user of the same name is meant.
+            if (const User* device = findByName(m_deviceUsers, user.name)) user.number = device->number;
+        }
+        const QString deviceNumber = deviceNumberFor(user);
+        const auto same = std::find_if(m_users.begin(), m_users.end(), [&](const EditedUser& e) {
+            return deviceNumber.isEmpty() ? e.deviceNumber.isEmpty() && e.user.name == user.name
+                                          : e.deviceNumber == deviceNumber;
+        });
+        if (same == m_users.end()) {
+            m_users << EditedUser{user, deviceNumber};
+        } else if (!(keepEdits && userChanged(int(same - m_users.begin())))) {
+            same->user = user;
+        }
     }
     Q_EMIT usersChanged();
     notifyChanged();
@@ -141,6 +240,8 @@ void Workspace::removeUser(int index) {
     notifyChanged();
 }
 
+const User* Workspace::deviceUser(const QString& number) const { return findByNumber(m_deviceUsers, number); }
+
 bool Workspace::userChanged(int index) const {
     const EditedUser& edited = m_users.at(index);
     if (edited.deviceNumber.isEmpty()) return true;
@@ -159,27 +260,18 @@ QStringList Workspace::deletedUserNumbers() const {
     return numbers;
 }
 
-void Workspace::markUserWritten(int index) {
-    EditedUser& edited = m_users[index];
-    for (int i = 0; i < m_deviceUsers.size(); ++i) {
-        if (!edited.deviceNumber.isEmpty() && m_deviceUsers[i].number == edited.deviceNumber) {
-            m_deviceUsers[i] = edited.user;
-            edited.deviceNumber = edited.user.number;
-            Q_EMIT usersChanged();
-            notifyChanged();
-            return;
-        }
-    }
-    m_deviceUsers.append(edited.user);
-    edited.deviceNumber = edited.user.number;
-    Q_EMIT usersChanged();
-    notifyChanged();
+int Workspace::userEditCount() const {
+    int count = int(deletedUserNumbers().size());
+    for (int i = 0; i < m_users.size(); ++i) count += userChanged(i) ? 1 : 0;
+    return count;
 }
 
-void Workspace::markUserDeleted(const QString& number) {
+void Workspace::setDeviceUser(int index, const QString& deviceNumber, const std::optional<User>& actual) {
     m_deviceUsers.erase(std::remove_if(m_deviceUsers.begin(), m_deviceUsers.end(),
-                                       [&](const User& u) { return u.number == number; }),
+                                       [&](const User& u) { return !deviceNumber.isEmpty() && u.number == deviceNumber; }),
                         m_deviceUsers.end());
+    if (actual) m_deviceUsers.append(*actual);
+    if (index >= 0 && index < m_users.size()) m_users[index].deviceNumber = actual ? actual->number : QString();
     Q_EMIT usersChanged();
     notifyChanged();
 }
@@ -193,10 +285,13 @@ PlcNetwork Workspace::plcNetwork(int area, int number) const {
     return m_plc.value(plcKey(area, number), empty);
 }
 
-void Workspace::loadPlcFromDevice(const PlcNetwork& network) {
-    const int key = plcKey(network.area, network.number);
-    m_devicePlc.insert(key, network);
-    m_plc.insert(key, network);
+void Workspace::mergePlcNetworks(const QList<PlcNetwork>& networks, ValueSource source, bool keepEdits) {
+    const QList<int> edited = changedPlcNetworks();
+    for (const PlcNetwork& network : networks) {
+        const int key = plcKey(network.area, network.number);
+        if (source == ValueSource::Device) m_devicePlc.insert(key, network);
+        if (!(keepEdits && edited.contains(key))) m_plc.insert(key, network);
+    }
     Q_EMIT plcChanged();
     notifyChanged();
 }
@@ -221,8 +316,8 @@ QList<int> Workspace::changedPlcNetworks() const {
     return keys;
 }
 
-void Workspace::markPlcWritten(int key) {
-    m_devicePlc.insert(key, m_plc.value(key));
+void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
+    m_devicePlc.insert(plcKey(network.area, network.number), network);
     Q_EMIT plcChanged();
     notifyChanged();
 }
@@ -230,9 +325,7 @@ void Workspace::markPlcWritten(int key) {
 // --- totals
 
 int Workspace::changedCount() const {
-    int users = int(deletedUserNumbers().size());
-    for (int i = 0; i < m_users.size(); ++i) users += userChanged(i) ? 1 : 0;
-    return m_cams->changedCount() + int(changedSettings().size()) + users +
+    return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
            int(changedPlcNetworks().size());
 }
 

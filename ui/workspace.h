@@ -3,6 +3,7 @@
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
 #include "model/camcon/plc_network.h"
+#include "model/camcon/project_file.h"
 #include "model/camcon/system_settings.h"
 #include "model/camcon/user.h"
 
@@ -10,15 +11,25 @@
 #include <QMap>
 #include <QObject>
 
+#include <optional>
+
 namespace cambench {
 
 class CamDocument;
+
+// Where values that replace the workspace's come from. A device read also
+// replaces the device copy; a file (a project) only the edited state.
+enum class ValueSource { Device, File };
 
 // Everything the user works on for one device, beside what the device holds
 // (the copy last read from or written to it). Lives outside the main window,
 // so a reconnect, a language switch (which rebuilds the window) or a failed
 // read never loses an unwritten edit. Cam programs, names and dead times are
 // in the cam editor's CamDocument; settings, users and PLC networks here.
+//
+// One rule for values that arrive (a read, an opened project): with
+// `keepEdits`, an item the user edited keeps the edit and every other item
+// takes the new value; without, every item takes it.
 class Workspace : public QObject {
     Q_OBJECT
 public:
@@ -36,25 +47,32 @@ public:
     // none). Kept here, not in the window, so a language switch keeps it.
     QString projectPath() const { return m_projectPath; }
     void setProjectPath(const QString& path);
+    // Forgets everything, edits and device copies (a new project).
+    void clear(const DeviceInfo& info);
 
-    // --- Output names and dead times: edited in the CamDocument; the device
-    // copy is mirrored here per output so a partly failed write keeps exactly
-    // the failed items marked as edited.
-    bool outputSettingsKnown() const { return m_outputSettingsKnown; }
-    qint32 deviceDeadTime(int output) const { return m_deviceDeadTimes.value(output); }
-    QString deviceOutputName(int output) const { return m_deviceOutputNames.value(output); }
-    void loadOutputSettingsFromDevice(const QMap<int, QString>& names, const DeadTimes& deadTimes);
-    // After a write: these outputs' dead times / names now match the device.
-    void markOutputSettingsWritten(const QList<int>& deadTimes, const QList<int>& names);
+    // When each part of the device copy was read (UTC); empty: not read.
+    const ProjectReadTimes& readTimes() const { return m_readAt; }
+    void setReadTime(ProjectPart part, const QDateTime& utc);
+    void setProgramReadTime(int program, const QDateTime& utc);
+    // The newest time anything was read from the device (invalid: never).
+    QDateTime lastReadTime() const;
+
+    // --- Output names and dead times: edited and device copy in the CamDocument.
+    bool outputSettingsKnown() const;
+    qint32 deviceDeadTime(int output) const;
+    QString deviceOutputName(int output) const;
+    void mergeOutputSettings(const QMap<int, QString>& names, const DeadTimes& deadTimes,
+                             ValueSource source, bool keepEdits);
+    int outputSettingsEditCount() const;
 
     // --- Encoder & system settings (keys of settingSpecs())
     const SystemSettings& settings() const { return m_settings; }
     const SystemSettings& deviceSettings() const { return m_deviceSettings; }
     bool settingsKnown() const { return m_settingsKnown; }
-    void loadSettingsFromDevice(const SystemSettings& settings);
-    void loadSettingsOffline(const SystemSettings& settings);
+    void mergeSettings(const SystemSettings& settings, ValueSource source, bool keepEdits);
     void setSetting(const QString& key, const QVariant& value);
-    void markSettingsWritten(const QStringList& keys);
+    // After a write: the device holds these values now.
+    void setDeviceSettings(const SystemSettings& values);
     QStringList changedSettings() const;
 
     // --- Users. Each edited user remembers the number it has on the device
@@ -66,27 +84,29 @@ public:
     };
     const QList<EditedUser>& users() const { return m_users; }
     const QList<User>& deviceUsers() const { return m_deviceUsers; }
-    void loadUsersFromDevice(const QList<User>& users);
-    void loadUsersOffline(const QList<User>& users);
+    bool usersKnown() const { return m_usersKnown; }
+    void mergeUsers(const QList<User>& users, ValueSource source, bool keepEdits);
     void setUser(int index, const User& user);
     int addUser(const User& user);
     void removeUser(int index);
     bool userChanged(int index) const;
     QStringList deletedUserNumbers() const;
-    // After a successful write of user `index` / a delete of `number`.
-    void markUserWritten(int index);
-    void markUserDeleted(const QString& number);
+    const User* deviceUser(const QString& number) const;
+    int userEditCount() const;
+    // After a write: the device's user `deviceNumber` is now `actual` (or
+    // gone, when empty); the edited user `index` (-1: a deletion) follows.
+    void setDeviceUser(int index, const QString& deviceNumber, const std::optional<User>& actual);
 
     // --- PLC networks, key = plcKey(area, number)
     static int plcKey(int area, int number) { return (area << 8) | number; }
     const QMap<int, PlcNetwork>& plcNetworks() const { return m_plc; }
     const QMap<int, PlcNetwork>& devicePlcNetworks() const { return m_devicePlc; }
     PlcNetwork plcNetwork(int area, int number) const;
-    void loadPlcFromDevice(const PlcNetwork& network);
+    void mergePlcNetworks(const QList<PlcNetwork>& networks, ValueSource source, bool keepEdits);
     void setPlcNetwork(const PlcNetwork& network);
     bool isPlcNetworkChanged(int key) const;
     QList<int> changedPlcNetworks() const;
-    void markPlcWritten(int key);
+    void setDevicePlcNetwork(const PlcNetwork& network);
 
     // Every item that differs from the device, across all sections.
     int changedCount() const;
@@ -97,23 +117,25 @@ Q_SIGNALS:
     void settingsChanged();
     void usersChanged();
     void plcChanged();
+    void readTimesChanged();
     void changedCountChanged(int count);
 
 private:
     void notifyChanged();
+    QString deviceNumberFor(const User& user) const;
+    void mergeUsersFromFile(const QList<User>& users, bool keepEdits);
 
     DeviceInfo m_info;
     QString m_projectPath;
     bool m_infoFromDevice = false;
     CamDocument* m_cams;
-    bool m_outputSettingsKnown = false;
-    DeadTimes m_deviceDeadTimes;
-    QMap<int, QString> m_deviceOutputNames;
+    ProjectReadTimes m_readAt;
     SystemSettings m_settings;
     SystemSettings m_deviceSettings;
     bool m_settingsKnown = false;
     QList<EditedUser> m_users;
     QList<User> m_deviceUsers;
+    bool m_usersKnown = false;
     QMap<int, PlcNetwork> m_plc;
     QMap<int, PlcNetwork> m_devicePlc;
     int m_lastCount = 0;

@@ -18,7 +18,7 @@ Track trackOf(const CamProgram& program, int output) {
 
 ChangeState compare(bool deviceKnown, bool equal) {
     if (!deviceKnown) {
-        return ChangeState::PcOnly;
+        return ChangeState::NotRead;
     }
     return equal ? ChangeState::Unchanged : ChangeState::Edited;
 }
@@ -51,51 +51,52 @@ QString CamDocument::outputName(int output) const { return m_names.outputs.value
 
 qint32 CamDocument::deadTime(int output) const { return m_deadTimes.value(output); }
 
-void CamDocument::loadProgramFromDevice(const CamProgram& program) {
-    const CamProgram clean = normalized(program);
-    m_device.insert(clean.number, clean);
-    m_edited.insert(clean.number, clean);
-    // Commands recorded against the replaced state would undo into a mix of
-    // old edits and fresh device data.
-    m_undoStack->clear();
-    Q_EMIT programChanged(clean.number);
-    Q_EMIT deviceStateChanged();
-    notifyChangedCount();
-}
-
-void CamDocument::loadOutputSettingsFromDevice(const QMap<int, QString>& outputNames,
-                                               const DeadTimes& deadTimes) {
-    m_names.outputs = outputNames;
-    m_deviceOutputNames = outputNames;
-    m_deadTimes = deadTimes;
-    m_deviceDeadTimes = deadTimes;
-    m_outputSettingsKnown = true;
-    for (int output = 1; output <= m_info.outputs; ++output) {
-        Q_EMIT outputNameChanged(output);
-        Q_EMIT deadTimeChanged(output);
+void CamDocument::mergeProgram(const CamProgram& incoming, bool fromDevice, bool keepEdits) {
+    const int number = incoming.number;
+    const CamProgram clean = normalized(incoming);
+    const CamProgram before = program(number);
+    const std::optional<CamProgram> oldDevice = deviceProgram(number);
+    const bool hadEdits = programEdited(number);
+    CamProgram after = clean;
+    if (keepEdits && hadEdits) {
+        // Item by item: what differs from the old device copy is an edit.
+        QList<int> outputs = before.tracks.keys() + clean.tracks.keys();
+        if (oldDevice) outputs += oldDevice->tracks.keys();
+        for (int output : outputs) {
+            const Track mine = trackOf(before, output);
+            if (oldDevice && mine.cams == trackOf(*oldDevice, output).cams) continue;
+            if (mine.cams.isEmpty()) {
+                after.tracks.remove(output);
+            } else {
+                after.tracks.insert(output, mine);
+            }
+        }
+        if (!oldDevice || before.name != oldDevice->name) after.name = before.name;
+    }
+    if (fromDevice) m_device.insert(number, clean);
+    if (after != before && hadEdits && !keepEdits) {
+        // The edits are replaced as one undo step: the history stays whole.
+        m_undoStack->push(new ReplaceProgramCommand(
+            this, before, after,
+            fromDevice ? tr("Take program %1 from the device").arg(number)
+                       : tr("Take program %1 from the file").arg(number)));
+    } else if (after != before || !m_edited.contains(number)) {
+        applyProgram(after);
     }
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
 
-void CamDocument::loadOffline(const QMap<int, CamProgram>& programs, const Names& names,
-                              const DeadTimes& deadTimes) {
+void CamDocument::clear() {
     m_undoStack->clear();
     m_edited.clear();
-    for (const CamProgram& program : programs) {
-        applyProgram(program);
-    }
-    m_names.outputs = names.outputs;
-    m_deadTimes = deadTimes;
-    for (auto it = names.programs.cbegin(); it != names.programs.cend(); ++it) {
-        if (m_edited.contains(it.key()) || !it.value().isEmpty()) {
-            m_edited[it.key()].number = it.key();
-            m_edited[it.key()].name = it.value();
-        }
-    }
-    for (int number = 0; number < m_info.programs; ++number) {
-        Q_EMIT programChanged(number);
-    }
+    m_device.clear();
+    m_names = {};
+    m_deadTimes.clear();
+    m_deviceOutputNames.clear();
+    m_deviceDeadTimes.clear();
+    m_outputSettingsKnown = false;
+    for (int number = 0; number < m_info.programs; ++number) Q_EMIT programChanged(number);
     for (int output = 1; output <= m_info.outputs; ++output) {
         Q_EMIT outputNameChanged(output);
         Q_EMIT deadTimeChanged(output);
@@ -104,50 +105,128 @@ void CamDocument::loadOffline(const QMap<int, CamProgram>& programs, const Names
     notifyChangedCount();
 }
 
-void CamDocument::markWritten(int program) {
-    m_device.insert(program, this->program(program));
+bool CamDocument::programEdited(int program) const {
+    if (!m_edited.contains(program)) return false;
+    const CamProgram edited = this->program(program);
+    if (!m_device.contains(program)) return !edited.tracks.isEmpty() || !edited.name.isEmpty();
+    return edited.tracks != m_device.value(program).tracks || edited.name != m_device.value(program).name;
+}
+
+void CamDocument::mergeOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes,
+                                      bool fromDevice, bool keepEdits) {
+    QMap<int, QString> names = outputNames;
+    DeadTimes times = deadTimes;
+    const bool edited = outputSettingsEditCount() > 0;
+    for (int output = 1; output <= m_info.outputs; ++output) {
+        const bool nameEdited = m_names.outputs.value(output) != m_deviceOutputNames.value(output);
+        const bool timeEdited = m_deadTimes.value(output) != m_deviceDeadTimes.value(output);
+        if (keepEdits && nameEdited) names.insert(output, m_names.outputs.value(output));
+        if (keepEdits && timeEdited) times.insert(output, m_deadTimes.value(output));
+    }
+    if (fromDevice) {
+        m_deviceOutputNames = outputNames;
+        m_deviceDeadTimes = deadTimes;
+        m_outputSettingsKnown = true;
+    }
+    if (edited && !keepEdits) m_undoStack->beginMacro(tr("Take names and dead times"));
+    for (int output = 1; output <= m_info.outputs; ++output) {
+        if (edited && !keepEdits) {
+            setOutputName(output, names.value(output));
+            setDeadTime(output, times.value(output));
+        } else {
+            if (m_names.outputs.value(output) != names.value(output)) applyOutputName(output, names.value(output));
+            if (m_deadTimes.value(output) != times.value(output)) applyDeadTime(output, times.value(output));
+        }
+    }
+    if (edited && !keepEdits) m_undoStack->endMacro();
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
 
-void CamDocument::markOutputSettingsWritten() {
-    m_deviceOutputNames = m_names.outputs;
-    m_deviceDeadTimes = m_deadTimes;
+int CamDocument::outputSettingsEditCount() const {
+    int count = 0;
+    for (int output = 1; output <= m_info.outputs; ++output) {
+        count += int(m_names.outputs.value(output) != m_deviceOutputNames.value(output));
+        count += int(m_deadTimes.value(output) != m_deviceDeadTimes.value(output));
+    }
+    return count;
+}
+
+void CamDocument::setDeviceProgram(const CamProgram& program) {
+    m_device.insert(program.number, normalized(program));
+    // A program only read, never edited, is shown as the device has it.
+    if (!m_edited.contains(program.number)) m_edited.insert(program.number, m_device.value(program.number));
+    Q_EMIT programChanged(program.number);
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+void CamDocument::setDeviceOutputSettings(const QMap<int, QString>& outputNames,
+                                          const DeadTimes& deadTimes) {
+    m_deviceOutputNames = outputNames;
+    m_deviceDeadTimes = deadTimes;
     m_outputSettingsKnown = true;
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
 
-void CamDocument::markTrackWritten(int program, int output) {
-    CamProgram& device = m_device[program];
-    device.number = program;
-    const Track edited = track(program, output);
-    if (edited.cams.isEmpty()) {
-        device.tracks.remove(output);
+void CamDocument::setDeviceTrack(int program, const Track& track) {
+    if (!m_device.contains(program)) return;
+    Track clean = normalized(track);
+    if (clean.cams.isEmpty()) {
+        m_device[program].tracks.remove(clean.output);
     } else {
-        device.tracks.insert(output, edited);
+        m_device[program].tracks.insert(clean.output, clean);
     }
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
 
-void CamDocument::markProgramNameWritten(int program) {
-    m_device[program].number = program;
-    m_device[program].name = programName(program);
+void CamDocument::setDeviceProgramName(int program, const QString& name) {
+    if (!m_device.contains(program)) return;
+    m_device[program].name = name;
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
 
-void CamDocument::markOutputNameWritten(int output) {
-    m_deviceOutputNames.insert(output, outputName(output));
+void CamDocument::setDeviceDeadTime(int output, qint32 deadTime) {
+    m_deviceDeadTimes.insert(output, deadTime);
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
 
-void CamDocument::markDeadTimeWritten(int output) {
-    m_deviceDeadTimes.insert(output, deadTime(output));
+void CamDocument::setDeviceOutputName(int output, const QString& name) {
+    m_deviceOutputNames.insert(output, name);
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
+}
+
+void CamDocument::forgetDeviceProgram(int program) {
+    if (m_device.remove(program) == 0) return;
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+std::optional<CamProgram> CamDocument::deviceProgram(int program) const {
+    if (!m_device.contains(program)) return std::nullopt;
+    CamProgram copy = m_device.value(program);
+    copy.number = program;
+    return copy;
+}
+
+std::optional<Track> CamDocument::deviceTrack(int program, int output) const {
+    if (!m_device.contains(program)) return std::nullopt;
+    return trackOf(m_device.value(program), output);
+}
+
+std::optional<qint32> CamDocument::deviceDeadTime(int output) const {
+    if (!m_outputSettingsKnown && !m_deviceDeadTimes.contains(output)) return std::nullopt;
+    return m_deviceDeadTimes.value(output);
+}
+
+std::optional<QString> CamDocument::deviceOutputName(int output) const {
+    if (!m_outputSettingsKnown && !m_deviceOutputNames.contains(output)) return std::nullopt;
+    return m_deviceOutputNames.value(output);
 }
 
 ChangeState CamDocument::programState(int program) const {

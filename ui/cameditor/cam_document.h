@@ -11,6 +11,8 @@
 #include <QObject>
 #include <QString>
 
+#include <optional>
+
 class QUndoStack;
 
 namespace cambench {
@@ -19,7 +21,7 @@ namespace cambench {
 enum class ChangeState {
     Unchanged,  // equal to what was last read from or written to the device
     Edited,     // differs from the device copy, not yet written
-    PcOnly,     // the device copy of this program is unknown (never read)
+    NotRead,    // the device copy of this program is unknown (never read)
 };
 
 // One line of "Compare with device".
@@ -35,7 +37,7 @@ struct TrackDifference {
 // was last read from or written to the device). Every user change goes
 // through undo commands on undoStack(); the apply*() setters are for those
 // commands only. Nothing here talks to the device: the shell reads and
-// writes, then calls loadProgramFromDevice()/markWritten().
+// writes, then calls loadProgramFromDevice(), setDeviceProgram() or setDeviceTrack().
 class CamDocument : public QObject {
     Q_OBJECT
 
@@ -61,23 +63,46 @@ public:
     const Names& names() const { return m_names; }
     const DeadTimes& deadTimes() const { return m_deadTimes; }
 
-    // Device side (called by the shell after device work succeeded).
-    void loadProgramFromDevice(const CamProgram& program);
+    // Values that arrive: from the device (also the new device copy) or
+    // from a file (edited state only). With `keepEdits` a track, name or
+    // dead time the user edited keeps the edit and the rest takes the new
+    // value; without, everything does. Edits replaced are one undo step.
+    void mergeProgram(const CamProgram& program, bool fromDevice, bool keepEdits);
+    // Forgets everything: edits, device copies, undo history (a new project).
+    void clear();
+    void mergeOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes,
+                             bool fromDevice, bool keepEdits);
+    // Takes the device's program / output settings as device copy and
+    // edited state (mergeProgram from the device, not keeping edits).
+    void loadProgramFromDevice(const CamProgram& program) { mergeProgram(program, true, false); }
     void loadOutputSettingsFromDevice(const QMap<int, QString>& outputNames,
-                                      const DeadTimes& deadTimes);
-    // Replaces the edited state without a device copy (e.g. a project file).
-    void loadOffline(const QMap<int, CamProgram>& programs, const Names& names,
-                     const DeadTimes& deadTimes);
-    void markWritten(int program);
-    void markOutputSettingsWritten();
-    // After a partial write: only these items now equal the device. They keep
-    // the undo stack. For a program never read, the device copy starts empty.
-    void markTrackWritten(int program, int output);
-    void markProgramNameWritten(int program);
-    void markOutputNameWritten(int output);
-    void markDeadTimeWritten(int output);
+                                      const DeadTimes& deadTimes) {
+        mergeOutputSettings(outputNames, deadTimes, true, false);
+    }
+    // Whether the program holds anything not on the device (edits, or
+    // content of a program not read).
+    bool programEdited(int program) const;
+    int outputSettingsEditCount() const;
+    // Only the device copy ("keep mine"): edits stay and now compare with it.
+    void setDeviceProgram(const CamProgram& program);
+    void setDeviceOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes);
+    // After a write: what the device holds now, item by item. A track or a
+    // program name of a program whose device copy is unknown stays unknown.
+    void setDeviceTrack(int program, const Track& track);
+    void setDeviceProgramName(int program, const QString& name);
+    void setDeviceDeadTime(int output, qint32 deadTime);
+    void setDeviceOutputName(int output, const QString& name);
+    // The device copy of a program is no longer known (a write whose
+    // outcome could not be read back).
+    void forgetDeviceProgram(int program);
+    std::optional<CamProgram> deviceProgram(int program) const;
+    std::optional<Track> deviceTrack(int program, int output) const;
+    bool outputSettingsKnown() const { return m_outputSettingsKnown; }
+    std::optional<qint32> deviceDeadTime(int output) const;
+    std::optional<QString> deviceOutputName(int output) const;
     bool hasDeviceCopy(int program) const { return m_device.contains(program); }
     QList<int> editedPrograms() const { return m_edited.keys(); }
+    QList<int> devicePrograms() const { return m_device.keys(); }
 
     ChangeState programState(int program) const;
     ChangeState trackState(int program, int output) const;

@@ -140,8 +140,8 @@ QVariant TrackTableModel::stateData(int output, int role) const {
                     return tr("unchanged");
                 case ChangeState::Edited:
                     return tr("edited");
-                case ChangeState::PcOnly:
-                    return tr("PC only");
+                case ChangeState::NotRead:
+                    return tr("not read");
             }
             return {};
         case Qt::ToolTipRole:
@@ -152,9 +152,9 @@ QVariant TrackTableModel::stateData(int output, int role) const {
                 case ChangeState::Edited:
                     return tr("Output %1 was changed and is not yet written to the device.")
                         .arg(output);
-                case ChangeState::PcOnly:
-                    return tr("Program %1 was never read from the device; its cams exist only "
-                              "on this PC.")
+                case ChangeState::NotRead:
+                    return tr("Program %1 was not read from the device: what the device holds is "
+                              "unknown. The cams shown exist on this PC.")
                         .arg(m_program);
             }
             return {};

@@ -26,9 +26,10 @@ private Q_SLOTS:
     void repeatedEditsOfOneCellMergeIntoOneCommand();
     void editsOfDifferentCellsStaySeparate();
     void compareListsChangedTrackAndMarkWrittenClearsIt();
-    void neverReadProgramIsPcOnly();
-    void markTrackWrittenKeepsOtherEditsAndUndo();
-    void loadingFromDeviceClearsUndo();
+    void neverReadProgramIsNotRead();
+    void deviceTrackAfterWriteKeepsOtherEditsAndUndo();
+    void takingTheDevicesProgramIsOneUndoStep();
+    void keepingMineUpdatesOnlyTheDeviceCopy();
     void copyProgramIsOneUndoStep();
     void copyTrackReplacesTargetOutput();
     void namesAndDeadTimesAreUndoable();
@@ -112,19 +113,19 @@ void CamDocumentTest::compareListsChangedTrackAndMarkWrittenClearsIt() {
     QCOMPARE(document.changedCount(), 1);
     QCOMPARE(count.count(), 1);
 
-    document.markWritten(0);
+    document.setDeviceProgram(document.program(0));
     QVERIFY(document.differences().isEmpty());
     QCOMPARE(document.trackState(0, 3), ChangeState::Unchanged);
     QCOMPARE(document.changedCount(), 0);
     QCOMPARE(count.count(), 2);
 }
 
-void CamDocumentTest::neverReadProgramIsPcOnly() {
+void CamDocumentTest::neverReadProgramIsNotRead() {
     CamDocument document;
     test::loadDemo(document);
     document.insertCam(2, 5, {10, 20});
-    QCOMPARE(document.trackState(2, 5), ChangeState::PcOnly);
-    QCOMPARE(document.programState(2), ChangeState::PcOnly);
+    QCOMPARE(document.trackState(2, 5), ChangeState::NotRead);
+    QCOMPARE(document.programState(2), ChangeState::NotRead);
     const QList<TrackDifference> differences = document.differences();
     QCOMPARE(differences.size(), 1);
     QCOMPARE(differences.at(0).program, 2);
@@ -132,29 +133,48 @@ void CamDocumentTest::neverReadProgramIsPcOnly() {
     QVERIFY(differences.at(0).deviceTrack.cams.isEmpty());
 }
 
-void CamDocumentTest::markTrackWrittenKeepsOtherEditsAndUndo() {
+void CamDocumentTest::deviceTrackAfterWriteKeepsOtherEditsAndUndo() {
     CamDocument document;
     test::loadDemo(document);
     document.setCam(0, 1, 0, {25, 60});
     document.setCam(0, 3, 0, {300, 20});
     document.setProgramName(0, QStringLiteral("New"));
     QCOMPARE(document.changedCount(), 3);
-    document.markTrackWritten(0, 3);
+    document.setDeviceTrack(0, document.track(0, 3));
     QCOMPARE(document.trackState(0, 3), ChangeState::Unchanged);
     QCOMPARE(document.trackState(0, 1), ChangeState::Edited);
     QCOMPARE(document.changedCount(), 2);
-    document.markProgramNameWritten(0);
+    document.setDeviceProgramName(0, document.programName(0));
     QCOMPARE(document.changedCount(), 1);
     QCOMPARE(document.undoStack()->count(), 3);
 }
 
-void CamDocumentTest::loadingFromDeviceClearsUndo() {
+void CamDocumentTest::takingTheDevicesProgramIsOneUndoStep() {
     CamDocument document;
     test::loadDemo(document);
     document.setCam(0, 1, 0, {25, 60});
     document.loadProgramFromDevice(test::demoProgram());
-    QCOMPARE(document.undoStack()->count(), 0);
     QCOMPARE(document.track(0, 1).cams.at(0), (Cam{20, 60}));
+    QCOMPARE(document.changedCount(), 0);
+    // The edit is not lost: one undo brings it back, as an edit.
+    QCOMPARE(document.undoStack()->count(), 2);
+    document.undoStack()->undo();
+    QCOMPARE(document.track(0, 1).cams.at(0), (Cam{25, 60}));
+    QCOMPARE(document.trackState(0, 1), ChangeState::Edited);
+}
+
+void CamDocumentTest::keepingMineUpdatesOnlyTheDeviceCopy() {
+    CamDocument document;
+    test::loadDemo(document);
+    document.setCam(0, 1, 0, {25, 60});
+    CamProgram device = test::demoProgram();
+    device.tracks[3].cams = {{100, 200}};
+    document.setDeviceProgram(device);
+    QCOMPARE(document.track(0, 1).cams.at(0), (Cam{25, 60}));
+    QCOMPARE(document.deviceTrack(0, 3)->cams, (QList<Cam>{{100, 200}}));
+    // Output 3 was not edited here, but the PC copy is what the user sees.
+    QCOMPARE(document.trackState(0, 3), ChangeState::Edited);
+    QCOMPARE(document.undoStack()->count(), 1);
 }
 
 void CamDocumentTest::copyProgramIsOneUndoStep() {
@@ -368,10 +388,10 @@ void CamDocumentTest::trackTableShowsDeadTimeAndState() {
     QCOMPARE(state.data().toString(), QStringLiteral("unchanged"));
     document.setCam(0, 3, 0, {300, 30});
     QCOMPARE(state.data().toString(), QStringLiteral("edited"));
-    document.markWritten(0);
+    document.setDeviceProgram(document.program(0));
     QCOMPARE(state.data().toString(), QStringLiteral("unchanged"));
     model.setProgram(1);
-    QCOMPARE(state.data().toString(), QStringLiteral("PC only"));
+    QCOMPARE(state.data().toString(), QStringLiteral("not read"));
     // A smaller device shrinks the table.
     DeviceInfo info = test::smallDevice();
     info.outputs = 16;

@@ -1,0 +1,184 @@
+#include "incoming_values.h"
+
+#include "plc_page.h"
+#include "replace_edits_dialog.h"
+#include "setting_field.h"
+
+#include "ui/cameditor/cam_document.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace cambench {
+
+IncomingParts partsOf(const Project& incoming, ValueSource source) {
+    IncomingParts parts;
+    const ProjectReadTimes& read = incoming.readAt;
+    for (const CamProgram& program : incoming.programs) {
+        if (source == ValueSource::File || read.programs.contains(program.number)) parts.programs << program.number;
+    }
+    if (source == ValueSource::File) {
+        parts.outputSettings = true;
+        parts.settings = !incoming.settings.isEmpty();
+        parts.users = !incoming.users.isEmpty();
+        parts.plc = !incoming.plcNetworks.isEmpty();
+        return parts;
+    }
+    parts.outputSettings =
+        read.parts.contains(ProjectPart::DeadTimes) || read.parts.contains(ProjectPart::OutputNames);
+    parts.settings = read.parts.contains(ProjectPart::Settings);
+    parts.users = read.parts.contains(ProjectPart::Users);
+    parts.plc = read.parts.contains(ProjectPart::PlcNetworks);
+    return parts;
+}
+
+QMap<EditSection, int> editsReplacedBy(const Workspace& workspace, const IncomingParts& parts) {
+    QMap<EditSection, int> edits;
+    const CamDocument* cams = workspace.cams();
+    int camEdits = 0;
+    for (const TrackDifference& d : cams->differences()) camEdits += parts.programs.contains(d.program) ? 1 : 0;
+    for (int program : parts.programs) {
+        const std::optional<CamProgram> device = cams->deviceProgram(program);
+        if (cams->programEdited(program) && cams->programName(program) != (device ? device->name : QString()))
+            ++camEdits;
+    }
+    if (camEdits > 0) edits.insert(EditSection::Cams, camEdits);
+    if (parts.outputSettings && workspace.outputSettingsEditCount() > 0)
+        edits.insert(EditSection::OutputSettings, workspace.outputSettingsEditCount());
+    if (parts.settings && !workspace.changedSettings().isEmpty())
+        edits.insert(EditSection::Settings, int(workspace.changedSettings().size()));
+    if (parts.users && workspace.userEditCount() > 0) edits.insert(EditSection::Users, workspace.userEditCount());
+    if (parts.plc && !workspace.changedPlcNetworks().isEmpty())
+        edits.insert(EditSection::Plc, int(workspace.changedPlcNetworks().size()));
+    return edits;
+}
+
+namespace {
+void stamp(Workspace& workspace, const ProjectReadTimes& read, ProjectPart part) {
+    const QDateTime time = read.parts.value(part);
+    if (time.isValid()) workspace.setReadTime(part, time);
+}
+}  // namespace
+
+void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource source,
+                   const QSet<EditSection>& keepEdits) {
+    const IncomingParts parts = partsOf(incoming, source);
+    const bool fromDevice = source == ValueSource::Device;
+    const ProjectReadTimes& read = incoming.readAt;
+    if (fromDevice && read.parts.contains(ProjectPart::Device)) {
+        workspace.setInfo(incoming.device, true);
+        stamp(workspace, read, ProjectPart::Device);
+    }
+    if (parts.settings) {
+        workspace.mergeSettings(incoming.settings, source, keepEdits.contains(EditSection::Settings));
+        if (fromDevice) stamp(workspace, read, ProjectPart::Settings);
+    }
+    for (const CamProgram& program : incoming.programs) {
+        if (!parts.programs.contains(program.number)) continue;
+        workspace.cams()->mergeProgram(program, fromDevice, keepEdits.contains(EditSection::Cams));
+        const QDateTime time = read.programs.value(program.number);
+        if (fromDevice && time.isValid()) workspace.setProgramReadTime(program.number, time);
+    }
+    if (parts.outputSettings) {
+        workspace.mergeOutputSettings(incoming.names.outputs, incoming.deadTimes, source,
+                                      keepEdits.contains(EditSection::OutputSettings));
+        for (ProjectPart part : {ProjectPart::DeadTimes, ProjectPart::OutputNames}) {
+            if (fromDevice) stamp(workspace, read, part);
+        }
+    }
+    if (parts.users) {
+        workspace.mergeUsers(incoming.users, source, keepEdits.contains(EditSection::Users));
+        if (fromDevice) stamp(workspace, read, ProjectPart::Users);
+    }
+    if (parts.plc) {
+        workspace.mergePlcNetworks(incoming.plcNetworks, source, keepEdits.contains(EditSection::Plc));
+        if (fromDevice) stamp(workspace, read, ProjectPart::PlcNetworks);
+    }
+}
+
+namespace {
+
+QString camsText(const Track& track) {
+    if (track.cams.isEmpty()) return QCoreApplication::translate("cambench::DeviceChanges", "no cams");
+    QStringList cams;
+    for (const Cam& cam : track.cams) cams << QStringLiteral("%1–%2").arg(cam.on).arg(cam.off);
+    return cams.join(QStringLiteral(", "));
+}
+
+QString change(const QString& item, const QString& before, const QString& after) {
+    return QCoreApplication::translate("cambench::DeviceChanges", "%1: %2 → %3").arg(item, before, after);
+}
+
+}  // namespace
+
+QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
+    QStringList changes;
+    const CamDocument* cams = workspace.cams();
+    const IncomingParts parts = partsOf(incoming, ValueSource::Device);
+    for (const CamProgram& program : incoming.programs) {
+        const std::optional<CamProgram> before = cams->deviceProgram(program.number);
+        if (!before || !parts.programs.contains(program.number)) continue;
+        QList<int> outputs = before->tracks.keys() + program.tracks.keys();
+        std::sort(outputs.begin(), outputs.end());
+        outputs.erase(std::unique(outputs.begin(), outputs.end()), outputs.end());
+        for (int output : outputs) {
+            const Track old = before->tracks.value(output);
+            const Track now = program.tracks.value(output);
+            if (old.cams != now.cams)
+                changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Program %1, output %2")
+                                      .arg(program.number)
+                                      .arg(output),
+                                  camsText(old), camsText(now));
+        }
+        if (before->name != program.name)
+            changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Program %1 name").arg(program.number),
+                              before->name, program.name);
+    }
+    if (parts.outputSettings && workspace.outputSettingsKnown()) {
+        for (int output = 1; output <= workspace.info().outputs; ++output) {
+            const qint32 oldTime = workspace.deviceDeadTime(output);
+            if (incoming.deadTimes.contains(output) && incoming.deadTimes.value(output) != oldTime)
+                changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Output %1 dead time").arg(output),
+                                  QString::number(oldTime / 10.0, 'f', 1), QString::number(incoming.deadTimes.value(output) / 10.0, 'f', 1));
+            const QString oldName = workspace.deviceOutputName(output);
+            if (incoming.names.outputs.contains(output) && incoming.names.outputs.value(output) != oldName)
+                changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Output %1 name").arg(output), oldName,
+                                  incoming.names.outputs.value(output));
+        }
+    }
+    if (parts.settings && workspace.settingsKnown()) {
+        for (auto it = incoming.settings.cbegin(); it != incoming.settings.cend(); ++it) {
+            const QVariant old = workspace.deviceSettings().value(it.key());
+            const SettingSpec* spec = findSetting(it.key());
+            if (spec && old.isValid() && old != it.value())
+                changes << change(SettingField::labelText(*spec), SettingField::displayText(*spec, old),
+                                  SettingField::displayText(*spec, it.value()));
+        }
+    }
+    if (parts.users && workspace.usersKnown() && !(workspace.deviceUsers() == incoming.users))
+        changes << QCoreApplication::translate("cambench::DeviceChanges", "Users: the device's list of users changed.");
+    if (parts.plc) {
+        for (const PlcNetwork& network : incoming.plcNetworks) {
+            const int key = Workspace::plcKey(network.area, network.number);
+            if (workspace.devicePlcNetworks().contains(key) && !(workspace.devicePlcNetworks().value(key) == network))
+                changes << QCoreApplication::translate("cambench::DeviceChanges", "PLC network %1 changed.")
+                               .arg(PlcPage::networkName(network.area, network.number));
+        }
+    }
+    return changes;
+}
+
+bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming, ValueSource source) {
+    const QMap<EditSection, int> edits = editsReplacedBy(workspace, partsOf(incoming, source));
+    QSet<EditSection> keep;
+    if (!edits.isEmpty()) {
+        ReplaceEditsDialog dialog(edits, source, parent);
+        if (dialog.exec() != QDialog::Accepted) return false;
+        keep = dialog.keptSections();
+    }
+    mergeIncoming(workspace, incoming, source, keep);
+    return true;
+}
+
+}  // namespace cambench
