@@ -179,6 +179,20 @@ Status CommandArgs::finish() const {
     return usageError(QStringLiteral("%1 does not take \"%2\"").arg(m_command, m_args.join(u' ')));
 }
 
+Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what) {
+    QList<int> numbers;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const Result<int> number = parseIntArgument(part.trimmed(), what, 0, 63);
+        if (!number) return number.error();
+        if (numbers.contains(*number))
+            return usageError(QStringLiteral("%1 lists device %2 twice").arg(what).arg(*number));
+        numbers.append(*number);
+    }
+    if (numbers.isEmpty())
+        return usageError(QStringLiteral("%1 needs device numbers such as 0,5").arg(what));
+    return numbers;
+}
+
 QString usageText() {
     return QStringLiteral(
         "Usage: cambench-cli [--port PORT] [--protocol standard|multiuser] [--baud N]\n"

@@ -36,7 +36,8 @@ QString lineImageName(int device, const DeviceInfo& identity);
 // Runs inside a worker job. The Error only when nothing could be done
 // (folder not writable, scan failed, cancelled before the first device);
 // otherwise the manifest, whose entries say per device what happened.
-// `connection` is left addressed to the device it was addressed to.
+// `connection` is left addressed to the last device it reached: address
+// it again (setDevice) before further work with one device.
 Result<LineManifest> backupLine(comm::CamConDevice& connection, const LineBackupOptions& options,
                                 const UseCaseProgress& progress = {},
                                 const DeviceProgressFn& perDevice = {});
@@ -48,8 +49,9 @@ struct LineVerifyEntry {
     QString text;  // "device 5: equals device-05_....json (42 blocks)" or what went wrong
 };
 
-// Compares every device the manifest lists as saved with its image.
-// Devices whose backup failed are listed as not verified.
+// Compares every device the manifest lists as saved with its image (the
+// image's SHA-256 is checked against the manifest first). Devices whose
+// backup failed are listed as not verified. Addressing as backupLine.
 Result<QList<LineVerifyEntry>> verifyLine(comm::CamConDevice& connection, const QString& directory,
                                           const UseCaseProgress& progress = {},
                                           const DeviceProgressFn& perDevice = {});

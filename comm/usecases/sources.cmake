@@ -5,6 +5,8 @@ target_sources(cambench_usecases PRIVATE
   write_plan.cpp
   write_report.h
   write_report.cpp
+  value_text.h
+  value_text.cpp
   plan_check.h
   plan_check.cpp
   write_items.h

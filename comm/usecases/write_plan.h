@@ -54,11 +54,12 @@ struct SettingsWrite {
 // A user: new (deviceNumber empty), changed, or deleted (wanted empty).
 // `deviceNumber` is the number the user has on the device now. A wanted
 // user without a number (a project saved without user numbers) keeps the
-// number of the device's user with the same name.
+// number of the device's user with the same name. What the device holds
+// before is WritePlan::usersOnDevice (read by writeItems when absent: the
+// check needs every user for duplicate numbers anyway).
 struct UserWrite {
     QString deviceNumber;
     std::optional<User> wanted;
-    std::optional<User> believed;
 };
 
 // One PLC network; identified by its area and number.

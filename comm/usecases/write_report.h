@@ -77,7 +77,7 @@ struct WriteReport {
 
     // Every item, in plan order.
     QList<OutcomeLine> lines() const;
-    // "3 written, 28 unchanged, 1 failed (the device keeps its values)";
+    // "32 items: 3 written, 28 unchanged, 1 failed (the device keeps its old values)";
     // categories other than written and unchanged only when they occur.
     QString summary() const;
 };
