@@ -22,11 +22,15 @@ namespace devicereads {
 
 using Done = std::function<void(const Status&)>;
 
+// The identity and capacities (the editors' limits follow).
+quint64 readIdentity(QWidget* context, DeviceSession* session, Workspace* workspace,
+                     Done done = {});
 quint64 readProgram(QWidget* context, DeviceSession* session, Workspace* workspace, int program,
                     Done done = {});
 quint64 readOutputSettings(QWidget* context, DeviceSession* session, Workspace* workspace,
                            Done done = {});
-quint64 readSettings(QWidget* context, DeviceSession* session, Workspace* workspace, Done done = {});
+quint64 readSettings(QWidget* context, DeviceSession* session, Workspace* workspace,
+                     Done done = {});
 quint64 readUsers(QWidget* context, DeviceSession* session, Workspace* workspace, Done done = {});
 quint64 readPlcNetwork(QWidget* context, DeviceSession* session, Workspace* workspace, int area,
                        int number, Done done = {});

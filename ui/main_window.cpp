@@ -42,6 +42,7 @@
 #include <QPushButton>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QToolButton>
 
 namespace cambench {
 
@@ -54,7 +55,8 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
       m_strip(new ConnectionStrip(session, workspace)),
       m_indicator(new ConnectionIndicator(session)),
       m_jobLabel(new QLabel),
-      m_jobProgress(new QProgressBar) {
+      m_jobProgress(new QProgressBar),
+      m_jobCancel(new QToolButton) {
     createPages();
     createMenus();
     createStatusBar();
@@ -74,11 +76,11 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_nav, &QListWidget::currentRowChanged, this, &MainWindow::updateLivePolling);
     connect(m_session, &DeviceSession::stateChanged, this, &MainWindow::updateConnection);
-    connect(m_session, &DeviceSession::reconnected, this,
-            [this] {
-                showMessage(tr("Connection re-established. Your edits are unchanged; Compare with "
-                               "device reads what the device holds now."));
-            });
+    connect(m_session, &DeviceSession::reconnected, this, [this] {
+        showMessage(
+            tr("Connection re-established. Your edits are unchanged; Compare with "
+               "device reads what the device holds now."));
+    });
     connect(m_workspace, &Workspace::changedCountChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::infoChanged, this, &MainWindow::updateTitle);
     connect(m_workspace, &Workspace::projectPathChanged, this, &MainWindow::updateTitle);
@@ -111,7 +113,7 @@ void MainWindow::createPages() {
     connect(backup, &BackupPage::wizardRequested, this, &MainWindow::openBackupWizard);
     connect(m_monitor, &MonitorPage::statusUpdated, m_cams, &CamPage::showStatus);
     connect(m_monitor, &MonitorPage::liveEnded, m_cams, &CamPage::clearLive);
-    connect(m_connection, &ConnectionPage::deviceSelected, this, [this] { readEverything(0); });
+    connect(m_connection, &ConnectionPage::deviceSelected, this, [this] { readAtStart(0); });
 }
 
 QList<SectionPage*> MainWindow::dataPages() const {
@@ -204,21 +206,33 @@ void MainWindow::createStatusBar() {
     statusBar()->addPermanentWidget(m_jobProgress);
     statusBar()->addPermanentWidget(m_indicator);
     comm::CommWorker& worker = m_session->worker();
-    connect(&worker, &comm::CommWorker::jobStarted, this, [this](quint64, const QString& title) {
+    m_jobCancel->setText(tr("Cancel"));
+    m_jobCancel->setToolTip(tr("Cancel what the device is doing for you now."));
+    m_jobCancel->hide();
+    statusBar()->insertPermanentWidget(2, m_jobCancel);
+    connect(m_jobCancel, &QToolButton::clicked, this, [this] {
+        if (m_runningJob != 0) m_session->worker().cancel(m_runningJob);
+    });
+    connect(&worker, &comm::CommWorker::jobStarted, this, [this](quint64 id, const QString& title) {
         if (title == MonitorPage::tr("Monitor")) return;  // polls would make the bar flicker
+        m_runningJob = id;
         m_jobLabel->setText(title);
         m_jobProgress->setRange(0, 0);
         m_jobProgress->show();
+        m_jobCancel->show();
     });
     connect(&worker, &comm::CommWorker::jobProgress, this,
-            [this](quint64, qint64 done, qint64 total, const QString&) {
-                if (total <= 0) return;
+            [this](quint64 id, qint64 done, qint64 total, const QString&) {
+                if (id != m_runningJob || total <= 0) return;
                 m_jobProgress->setRange(0, 1000);
                 m_jobProgress->setValue(int(done * 1000 / total));
             });
-    connect(&worker, &comm::CommWorker::jobFinished, this, [this] {
+    connect(&worker, &comm::CommWorker::jobFinished, this, [this](quint64 id) {
+        if (id != m_runningJob) return;
+        m_runningJob = 0;
         m_jobLabel->clear();
         m_jobProgress->hide();
+        m_jobCancel->hide();
         // "Reading …" is over once its job is: its outcome replaces it, or
         // nothing does (a job without a message of its own).
         if (statusBar()->currentMessage().endsWith(QChar(0x2026))) statusBar()->clearMessage();
@@ -269,7 +283,7 @@ void MainWindow::updateConnection() {
     if (state == comm::ConnectionState::Connected && m_pendingProgram >= 0) {
         const int program = m_pendingProgram;
         m_pendingProgram = -1;
-        readEverything(program);
+        readAtStart(program);
     }
     if (state == comm::ConnectionState::Disconnected && m_pendingProgram >= 0 &&
         !m_session->lastMessage().isEmpty()) {
@@ -284,33 +298,65 @@ void MainWindow::connectAndLoad(int program) {
     m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
 }
 
+void MainWindow::readAtStart(int program) {
+    // What a technician looks at first; the other programs stay "not read"
+    // until Device → Read everything (that takes long on a slow line).
+    showMessage(tr("Reading the device…"));
+    m_startReads = 1;
+    devicereads::readIdentity(
+        this, m_session, m_workspace, [this, program](const Status& identity) {
+            if (!identity) {
+                m_startReads = 0;
+                showMessage(
+                    tr("The device did not identify itself: %1").arg(identity.error().message));
+                Q_EMIT loaded(false);
+                return;
+            }
+            const int shown = std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1));
+            m_cams->editor()->setCurrentProgram(shown);
+            const auto finished = [this](const Status& status) {
+                if (!status && status.error().kind != ErrorKind::Cancelled)
+                    showMessage(tr("Reading the device: %1").arg(status.error().message));
+                if (--m_startReads > 0) return;
+                Q_EMIT loaded(true);
+            };
+            m_startReads = 4;
+            devicereads::readSettings(this, m_session, m_workspace, finished);
+            devicereads::readOutputSettings(this, m_session, m_workspace, finished);
+            devicereads::readUsers(this, m_session, m_workspace, finished);
+            m_cams->readProgram(shown, finished);
+        });
+}
+
 void MainWindow::readEverything(int program) {
     if (m_readJob != 0) return;  // one whole-device read at a time
     showMessage(tr("Reading everything the device holds…"));
     m_readJob = devicereads::readEverything(
-        this, m_session, m_workspace, [this, program](const Status& status, const QStringList& skipped) {
+        this, m_session, m_workspace,
+        [this, program](const Status& status, const QStringList& skipped) {
             m_readJob = 0;
             if (status) {
                 m_cams->editor()->setCurrentProgram(
                     std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1)));
-                showMessage(skipped.isEmpty()
-                                ? tr("Everything read from the device.")
-                                : tr("Read from the device, except: %1").arg(skipped.join(QLatin1Char(' '))));
+                showMessage(skipped.isEmpty() ? tr("Everything read from the device.")
+                                              : tr("Read from the device, except: %1")
+                                                    .arg(skipped.join(QLatin1Char(' '))));
             } else if (status.error().kind == ErrorKind::Cancelled) {
-                showMessage(tr("Reading the device cancelled: %1").arg(status.error().message));
+                showMessage(tr("Reading the device: %1").arg(status.error().message));
             } else {
                 showMessage(tr("Reading the device failed: %1 Your edits are kept.")
                                 .arg(asSentence(status.error().message)));
             }
-            Q_EMIT loaded(status.ok());
+            Q_EMIT everythingRead(status.ok());
         });
 }
 
 CompareDialog* MainWindow::openCompare() {
     auto* dialog = new CompareDialog(m_session, m_workspace, dataPages(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &CompareDialog::writeFinished, this,
-            [this](const WriteResult& result) { showMessage(tr("Write: %1").arg(writeSummary(result))); });
+    connect(dialog, &CompareDialog::writeFinished, this, [this](const WriteResult& result) {
+        showMessage(tr("Write: %1").arg(writeSummary(result)));
+    });
     dialog->show();
     return dialog;
 }
@@ -435,11 +481,13 @@ void MainWindow::saveProjectAs() {
 }
 
 Status MainWindow::saveProjectTo(const QString& path) {
-    if (m_readJob != 0) {
+    if (isReadingDevice()) {
         // Half a device in a file would look like a whole one later.
-        const Status refused = Error::usage(tr("The device is still being read; the project was not "
-                                               "saved. Save again when the reading is done."));
-        ReportDialog::present(this, QMessageBox::Information, tr("Save project"), refused.error().message);
+        const Status refused =
+            Error::usage(tr("The device is still being read; the project was not "
+                            "saved. Save again when the reading is done."));
+        ReportDialog::present(this, QMessageBox::Information, tr("Save project"),
+                              refused.error().message);
         return refused;
     }
     const Project project = projectFromWorkspace(*m_workspace);
@@ -456,8 +504,8 @@ Status MainWindow::saveProjectTo(const QString& path) {
     const QStringList warnings = validateProject(project);
     showMessage(warnings.isEmpty()
                     ? tr("Project saved to %1.").arg(path)
-                    : tr("Project saved to %1. %n value(s) are outside what a write accepts (%2).", nullptr,
-                         int(warnings.size()))
+                    : tr("Project saved to %1. %n value(s) are outside what a write accepts (%2).",
+                         nullptr, int(warnings.size()))
                           .arg(path, warnings.first()));
     return saved;
 }

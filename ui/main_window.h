@@ -10,6 +10,7 @@ class QListWidget;
 class QMenu;
 class QProgressBar;
 class QStackedWidget;
+class QToolButton;
 
 namespace cambench {
 
@@ -65,9 +66,12 @@ public:
     TerminalPage* terminalPage() const { return m_terminal; }
     QList<SectionPage*> dataPages() const;
 
-    // Connect, read the identity, then each section and program `program`.
+    // Connect, read the identity, then the settings, names, dead times,
+    // users and program `program` (readAtStart); `loaded` says when.
     void connectAndLoad(int program = 0);
-    // Reads identity; then every section (after connect or a restore).
+    void readAtStart(int program = 0);
+    // Device → Read everything: identity, every program and section in one
+    // job with one progress bar; `everythingRead` says when.
     void readEverything(int program = 0);
 
     CompareDialog* openCompare();
@@ -79,7 +83,7 @@ public:
     // Refuses while the device is still being read; warns about values a
     // write would refuse, but saves them as they are.
     Status saveProjectTo(const QString& path);
-    bool isReadingDevice() const { return m_readJob != 0; }
+    bool isReadingDevice() const { return m_readJob != 0 || m_startReads > 0; }
     // Opens a project file (asks first when it would replace edits).
     void openProjectFile(const QString& path);
     Status exportReport(const QString& path);
@@ -92,6 +96,7 @@ Q_SIGNALS:
     void darkRequested(bool dark);
     // The identity (and the first program) arrived after connectAndLoad.
     void loaded(bool ok);
+    void everythingRead(bool ok);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -120,6 +125,8 @@ private:
     QMenu* m_recentMenu = nullptr;
     QLabel* m_jobLabel;
     QProgressBar* m_jobProgress;
+    QToolButton* m_jobCancel;
+    quint64 m_runningJob = 0;  // the user job the status bar shows
     ConnectionPage* m_connection = nullptr;
     CamPage* m_cams = nullptr;
     DeadTimesPage* m_deadTimes = nullptr;
@@ -132,6 +139,7 @@ private:
     QString m_lastMessage;
     int m_pendingProgram = -1;
     quint64 m_readJob = 0;  // the whole-device read running, 0 = none
+    int m_startReads = 0;   // reads of readAtStart() still running
 };
 
 }  // namespace cambench

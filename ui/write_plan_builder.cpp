@@ -44,10 +44,12 @@ QList<WorkspaceItem> changedItems(const Workspace& workspace) {
     const CamDocument* cams = workspace.cams();
     for (int program : cams->editedPrograms()) {
         const std::optional<CamProgram> device = cams->deviceProgram(program);
-        if (!device ? !cams->programName(program).isEmpty() : cams->programName(program) != device->name)
+        if (!device ? !cams->programName(program).isEmpty()
+                    : cams->programName(program) != device->name)
             items << WorkspaceItem::programName(program);
     }
-    for (const TrackDifference& d : cams->differences()) items << WorkspaceItem::track(d.program, d.output);
+    for (const TrackDifference& d : cams->differences())
+        items << WorkspaceItem::track(d.program, d.output);
     for (int output = 1; output <= workspace.info().deadTimeOutputs; ++output) {
         // Unknown on the device counts as 0 / no name, as in CamDocument::changedCount().
         if (cams->deadTime(output) != cams->deviceDeadTime(output).value_or(0))
@@ -60,7 +62,8 @@ QList<WorkspaceItem> changedItems(const Workspace& workspace) {
     for (int i = 0; i < workspace.users().size(); ++i) {
         if (workspace.userChanged(i)) items << WorkspaceItem::user(i);
     }
-    for (const QString& number : workspace.deletedUserNumbers()) items << WorkspaceItem::deletedUser(number);
+    for (const QString& number : workspace.deletedUserNumbers())
+        items << WorkspaceItem::deletedUser(number);
     for (int key : workspace.changedPlcNetworks()) items << WorkspaceItem::plcNetwork(key);
     return items;
 }
@@ -70,7 +73,8 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
     PlannedWrite planned;
     usecases::WritePlan& plan = planned.plan;
     SystemSettings settings;
-    for (const WorkspaceItem& item : expanded(workspace, chosen.isEmpty() ? changedItems(workspace) : chosen)) {
+    for (const WorkspaceItem& item :
+         expanded(workspace, chosen.isEmpty() ? changedItems(workspace) : chosen)) {
         switch (item.kind) {
             case WorkspaceItem::Kind::Track: {
                 usecases::TrackWrite write{item.program, cams->track(item.program, item.number),
@@ -99,25 +103,21 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
             case WorkspaceItem::Kind::User: {
                 if (item.number < 0 || item.number >= workspace.users().size()) break;
                 const Workspace::EditedUser& edited = workspace.users().at(item.number);
-                const User* device = workspace.deviceUser(edited.deviceNumber);
-                plan.users << usecases::UserWrite{edited.deviceNumber, edited.user,
-                                                  device ? std::optional<User>(*device) : std::nullopt};
+                plan.users << usecases::UserWrite{edited.deviceNumber, edited.user};
                 planned.userIndex << item.number;
                 break;
             }
-            case WorkspaceItem::Kind::DeletedUser: {
-                const User* device = workspace.deviceUser(item.key);
-                plan.users << usecases::UserWrite{item.key, std::nullopt,
-                                                  device ? std::optional<User>(*device) : std::nullopt};
+            case WorkspaceItem::Kind::DeletedUser:
+                plan.users << usecases::UserWrite{item.key, std::nullopt};
                 planned.userIndex << -1;
                 break;
-            }
             case WorkspaceItem::Kind::PlcNetwork: {
                 const PlcNetwork wanted = workspace.plcNetworks().value(item.number);
                 const auto& device = workspace.devicePlcNetworks();
                 plan.plcNetworks << usecases::PlcWrite{
-                    wanted, device.contains(item.number) ? std::optional<PlcNetwork>(device.value(item.number))
-                                                         : std::nullopt};
+                    wanted, device.contains(item.number)
+                                ? std::optional<PlcNetwork>(device.value(item.number))
+                                : std::nullopt};
                 break;
             }
         }

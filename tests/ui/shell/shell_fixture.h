@@ -1,13 +1,21 @@
 #pragma once
 
+#include "ui/cameditor/cam_document.h"
 #include "ui/main_window.h"
+#include "ui/replace_edits_dialog.h"
 #include "ui/shell.h"
 #include "ui/workspace.h"
-#include "ui/cameditor/cam_document.h"
 
+#include <QApplication>
+#include <QCoreApplication>
+#include <QPointer>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 
+#include <functional>
 #include <memory>
 
 namespace cambench::test {
@@ -15,10 +23,20 @@ namespace cambench::test {
 // Bounds a wait on the simulator; never a pass/fail threshold.
 constexpr int kDeviceTimeoutMs = 60000;
 
+// The GUI remembers things (QSettings): tests keep theirs apart from the
+// user's and start from none. Call in initTestCase().
+inline void useTestSettings() {
+    QCoreApplication::setOrganizationName(QStringLiteral("CamBench"));
+    QCoreApplication::setApplicationName(QStringLiteral("CamBench-tests"));
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+}
+
 // A shell on the in-process simulator, connected through the real
 // CommWorker, with identity and program 0 read. Unthrottled: the tests
 // need the behaviour, not the baud rate.
-inline std::unique_ptr<Shell> startOnSimulator(const QString& port = QStringLiteral("sim:throttle=0")) {
+inline std::unique_ptr<Shell> startOnSimulator(
+    const QString& port = QStringLiteral("sim:throttle=0")) {
     auto shell = std::make_unique<Shell>();
     shell->start(port);
     // The result of the start sequence arrives through the event loop.
@@ -30,8 +48,48 @@ inline std::unique_ptr<Shell> startOnSimulator(const QString& port = QStringLite
 // Lets queued reads (dead times, settings, users) of the start finish.
 inline bool waitForSections(Shell& shell) {
     Workspace* ws = shell.workspace();
-    return QTest::qWaitFor([ws] { return ws->outputSettingsKnown() && ws->settingsKnown() && !ws->users().isEmpty(); },
-                           kDeviceTimeoutMs);
+    return QTest::qWaitFor(
+        [ws] { return ws->outputSettingsKnown() && ws->settingsKnown() && !ws->users().isEmpty(); },
+        kDeviceTimeoutMs);
+}
+
+// Answers the next modal dialog of type Dialog, whenever it comes up
+// (a question asked when a read finishes, say): `answer` gets it.
+template <class Dialog>
+class NextDialog : public QObject {
+public:
+    explicit NextDialog(std::function<void(Dialog*)> answer) : m_answer(std::move(answer)) {
+        // Polls only to find the dialog; the test's own waits bound the time.
+        m_timer.setInterval(10);
+        QObject::connect(&m_timer, &QTimer::timeout, this, [this] {
+            auto* dialog = qobject_cast<Dialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            m_timer.stop();
+            ++m_answered;
+            m_answer(dialog);
+        });
+        m_timer.start();
+    }
+    int answered() const { return m_answered; }
+
+private:
+    std::function<void(Dialog*)> m_answer;
+    QTimer m_timer;
+    int m_answered = 0;
+};
+
+// "Keep my edits / take the device's values": the same for every section.
+inline std::unique_ptr<NextDialog<ReplaceEditsDialog>> answerReplaceEdits(bool keepEdits) {
+    return std::make_unique<NextDialog<ReplaceEditsDialog>>(
+        [keepEdits](ReplaceEditsDialog* dialog) {
+            for (EditSection section : dialog->sections()) dialog->choose(section, keepEdits);
+            dialog->accept();
+        });
+}
+
+inline std::unique_ptr<NextDialog<ReplaceEditsDialog>> cancelReplaceEdits() {
+    return std::make_unique<NextDialog<ReplaceEditsDialog>>(
+        [](ReplaceEditsDialog* dialog) { dialog->reject(); });
 }
 
 }  // namespace cambench::test

@@ -5,12 +5,12 @@
 
 #include "model/camcon/eeprom_image_file.h"
 #include "ui/backup_wizard.h"
-#include "ui/language.h"
 #include "ui/cam_page.h"
 #include "ui/compare_dialog.h"
 #include "ui/dead_times_model.h"
 #include "ui/dead_times_page.h"
 #include "ui/device_session.h"
+#include "ui/language.h"
 #include "ui/progress_page.h"
 
 #include <QFile>
@@ -25,7 +25,10 @@ class MainWindowTest : public QObject {
 
 private Q_SLOTS:
     // As the application does at start: English catalogue (plural forms).
-    void initTestCase() { QVERIFY(setLanguage(QStringLiteral("en"))); }
+    void initTestCase() {
+        useTestSettings();
+        QVERIFY(setLanguage(QStringLiteral("en")));
+    }
     void startReadsIdentityAndProgramZero();
     void editedCamWrittenAndReadBackEqualsEdit();
     void compareWritesOnlySelectedItems();
@@ -58,20 +61,22 @@ void MainWindowTest::editedCamWrittenAndReadBackEqualsEdit() {
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
 
     CamPage* page = shell->window()->camPage();
-    std::optional<WriteReport> report;
-    page->writeProgram(0, [&](const WriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QVERIFY2(report->complete(), qPrintable(report->details()));
-    QCOMPARE(report->written, 1);
-    QCOMPARE(report->unchanged, shell->workspace()->info().outputs - 1);
+    std::optional<WriteResult> result;
+    page->writeProgram(0, [&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(result->ok() && result->value().complete(), qPrintable(writeSummary(*result)));
+    QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
     QCOMPARE(cams->trackState(0, 1), ChangeState::Unchanged);
 
-    // Make the PC copy differ, then read: the device must hold the edit.
+    // Make the PC copy differ, then read and take the device's: it must
+    // hold the edit.
     cams->setCam(0, 1, 0, before.cams.first());
+    const auto answer = answerReplaceEdits(false);
     std::optional<Status> read;
     page->readProgram(0, [&](const Status& s) { read = s; });
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QVERIFY(read->ok());
+    QCOMPARE(answer->answered(), 1);
     QCOMPARE(cams->track(0, 1).cams.first(), edited);
     QCOMPARE(cams->changedCount(), 0);
 }
@@ -87,15 +92,19 @@ void MainWindowTest::compareWritesOnlySelectedItems() {
     cams->setCam(0, 1, 0, cam);
 
     CompareDialog* compare = shell->window()->openCompare();
+    QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
     QCOMPARE(compare->differenceCount(), 2);
-    compare->checkOnly({QStringLiteral("tzk:2")});
-    QSignalSpy finished(compare, &CompareDialog::writeFinished);
+    compare->checkOnly({WorkspaceItem::deadTime(2)});
+    std::optional<WriteResult> result;
+    connect(compare, &CompareDialog::writeFinished, this,
+            [&](const WriteResult& r) { result = r; });
     compare->writeChecked();
-    QVERIFY(finished.wait(kDeviceTimeoutMs));
-    const auto report = finished.first().first().value<WriteReport>();
-    QCOMPARE(report.written, 1);
-    QCOMPARE(report.failed, 0);
-    QVERIFY(compare->reportText().contains(QStringLiteral("1 written")));
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY(result->ok());
+    QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
+    QVERIFY(result->value().complete());
+    QVERIFY2(compare->reportText().contains(QStringLiteral("1 written")),
+             qPrintable(compare->reportText()));
     // The cam edit was not selected and is still a difference.
     QCOMPARE(compare->differenceCount(), 1);
     QCOMPARE(shell->workspace()->deviceDeadTime(2), cams->deadTime(2));
@@ -116,11 +125,12 @@ void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {
     // Above the device's maximum (?GTZKMAX) is refused.
     QVERIFY(!model->setData(cell, shell->workspace()->info().maxDeadTime / 10.0 + 0.1));
 
-    std::optional<WriteReport> report;
-    page->writeItems({}, [&](const WriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QCOMPARE(report->written, 1);
-    QCOMPARE(report->failed, 0);
+    std::optional<WriteResult> result;
+    page->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY(result->ok());
+    QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
+    QVERIFY(result->value().complete());
     QVERIFY(!model->data(cell).toString().startsWith(QStringLiteral("● ")));
 
     page->readFromDevice();

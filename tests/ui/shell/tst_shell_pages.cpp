@@ -8,6 +8,7 @@
 #include "ui/dead_times_model.h"
 #include "ui/dead_times_page.h"
 #include "ui/device_session.h"
+#include "ui/incoming_values.h"
 #include "ui/language.h"
 #include "ui/plc_matrix_model.h"
 #include "ui/plc_page.h"
@@ -17,7 +18,6 @@
 #include "ui/settings_page.h"
 #include "ui/users_model.h"
 #include "ui/users_page.h"
-#include "ui/write_report.h"
 
 #include <QAbstractItemModelTester>
 #include <QLabel>
@@ -37,14 +37,16 @@ class ShellPagesTest : public QObject {
 
 private Q_SLOTS:
     // As the application does at start: English catalogue (plural forms).
-    void initTestCase() { QVERIFY(setLanguage(QStringLiteral("en"))); }
+    void initTestCase() {
+        useTestSettings();
+        QVERIFY(setLanguage(QStringLiteral("en")));
+    }
     void modelsPassTheModelTester();
     void settingsFormShowsRangeAndTooltipOfSpec();
     void settingsEditMarksFieldUntilWritten();
     void userNumbersMaskedUntilRevealed();
     void plcSymbolsDecodeWhereKnownAndStayEditableAsHex();
     void plcMatrixEditMarksNetworkChanged();
-    void reportNamesFailuresInsteadOfDone();
     void languageSwitchShowsGermanLabels();
     void everySettingTextHasAGermanTranslation();
     void reportPdfHoldsIdentityAndPrograms();
@@ -92,7 +94,8 @@ void ShellPagesTest::settingsFormShowsRangeAndTooltipOfSpec() {
     const SettingSpec* integer = nullptr;
     for (const SettingSpec& spec : settingSpecs()) {
         if (spec.kind == SettingKind::Integer && !spec.readOnly && *spec.tooltip &&
-            spec.min >= std::numeric_limits<int>::min() && spec.max <= std::numeric_limits<int>::max()) {
+            spec.min >= std::numeric_limits<int>::min() &&
+            spec.max <= std::numeric_limits<int>::max()) {
             integer = &spec;
             break;
         }
@@ -127,7 +130,8 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     SettingsPage* page = shell->window()->settingsPage();
     const SettingSpec* spec = nullptr;
     for (const SettingSpec& s : settingSpecs()) {
-        if (s.kind == SettingKind::Integer && !s.readOnly && ws->deviceSettings().contains(QString::fromLatin1(s.key)) &&
+        if (s.kind == SettingKind::Integer && !s.readOnly &&
+            ws->deviceSettings().contains(QString::fromLatin1(s.key)) &&
             ws->deviceSettings().value(QString::fromLatin1(s.key)).toLongLong() < s.max) {
             spec = &s;
             break;
@@ -142,11 +146,11 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     QCOMPARE(ws->changedSettings(), QStringList{key});
     QVERIFY(field->label()->text().startsWith(QStringLiteral("● ")));
 
-    std::optional<WriteReport> report;
-    page->writeItems({}, [&](const WriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QVERIFY2(report->complete(), qPrintable(report->details()));
-    QCOMPARE(report->written, 1);
+    std::optional<WriteResult> result;
+    page->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(result->ok() && result->value().complete(), qPrintable(writeSummary(*result)));
+    QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
     QVERIFY(ws->changedSettings().isEmpty());
     QVERIFY(!field->label()->text().startsWith(QStringLiteral("● ")));
 }
@@ -192,7 +196,7 @@ void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
     network.area = PlcNetwork::X;
     network.number = 2;
     network.symbols[0] = 0x0A00;
-    workspace.loadPlcFromDevice(network);
+    workspace.mergePlcNetworks({network}, ValueSource::Device, false);
     PlcMatrixModel model(&workspace);
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
     model.setNetwork(PlcNetwork::X, 2);
@@ -201,16 +205,6 @@ void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
     QCOMPARE(workspace.plcNetwork(PlcNetwork::X, 2).symbols[29], quint16(0xABCD));
     QVERIFY(model.index(4, 5).data().toString().startsWith(QStringLiteral("● ")));
     QCOMPARE(workspace.changedPlcNetworks(), QList<int>{Workspace::plcKey(PlcNetwork::X, 2)});
-}
-
-void ShellPagesTest::reportNamesFailuresInsteadOfDone() {
-    WriteReport report;
-    report.addWritten();
-    report.addUnchanged();
-    report.addFailure(QStringLiteral("Output 3 dead time"), Error::communication(QStringLiteral("No answer.")));
-    QVERIFY(!report.complete());
-    QCOMPARE(report.summary(), QStringLiteral("1 written, 1 unchanged, 1 failed"));
-    QVERIFY(report.details().contains(QStringLiteral("Output 3 dead time: No answer.")));
 }
 
 void ShellPagesTest::languageSwitchShowsGermanLabels() {
@@ -248,9 +242,10 @@ void ShellPagesTest::everySettingTextHasAGermanTranslation() {
         check(spec.tooltip);
         for (const SettingChoice& choice : spec.choices) check(choice.label);
     }
-    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("untranslated (run the update_setting_texts "
-                                                          "target and lupdate): ") +
-                                           missing.join(QStringLiteral(" | "))));
+    QVERIFY2(missing.isEmpty(),
+             qPrintable(QStringLiteral("untranslated (run the update_setting_texts "
+                                       "target and lupdate): ") +
+                        missing.join(QStringLiteral(" | "))));
 }
 
 void ShellPagesTest::reportPdfHoldsIdentityAndPrograms() {
@@ -276,12 +271,16 @@ void ShellPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
     const Project saved = projectFromWorkspace(*shell->workspace());
     QVERIFY(!saved.programs.isEmpty());
     Workspace offline;
-    loadProjectIntoWorkspace(offline, saved);
+    offline.setInfo(saved.device, false);
+    mergeIncoming(offline, saved, ValueSource::File, {});
     QCOMPARE(offline.cams()->program(0).tracks, shell->workspace()->cams()->program(0).tracks);
     QCOMPARE(offline.settings(), shell->workspace()->settings());
     // Nothing of a loaded project is on a device yet.
     QVERIFY(offline.changedCount() > 0);
-    QCOMPARE(projectToJson(projectFromWorkspace(offline)), projectToJson(saved));
+    // The same values; no read times: nothing of it was read from a device here.
+    Project expected = saved;
+    expected.readAt = {};
+    QCOMPARE(projectToJson(projectFromWorkspace(offline)), projectToJson(expected));
 }
 
 QTEST_MAIN(ShellPagesTest)
