@@ -4,6 +4,7 @@
 #include "progress_page.h"
 #include "workspace.h"
 
+#include "comm/usecases/backup_restore.h"
 #include "model/camcon/eeprom_image_file.h"
 
 #include <QCheckBox>
@@ -155,6 +156,18 @@ bool BackupWizard::validateCurrentPage() {
             QMessageBox::warning(this, windowTitle(), tr("Choose where the safety backup goes."));
             return false;
         }
+        // Its own question, also for the device the image came from: the
+        // next step erases it.
+        QMessageBox confirm(QMessageBox::Warning, windowTitle(),
+                            tr("This erases the device (%1) and writes the image %2 into it. Outputs "
+                               "may switch while the device restarts.\n\nErase and restore now?")
+                                .arg(identityText(m_workspace->info()), m_path->text()),
+                            QMessageBox::NoButton, this);
+        QPushButton* erase = confirm.addButton(tr("Erase and restore"), QMessageBox::DestructiveRole);
+        QPushButton* cancel = confirm.addButton(QMessageBox::Cancel);
+        confirm.setDefaultButton(cancel);
+        confirm.exec();
+        if (confirm.clickedButton() != erase) return false;
     }
     return true;
 }
@@ -178,8 +191,8 @@ void BackupWizard::initializePage(int id) {
         m_check->setText(text);
         m_force->setVisible(!m_mismatch.isEmpty());
         if (m_safetyPath->text().isEmpty()) {
-            const QFileInfo image(m_path->text());
-            m_safetyPath->setText(image.dir().filePath(QStringLiteral("safety-backup-%1.json").arg(stamp())));
+            // The same name the command line gives it: next to the image, with the time.
+            m_safetyPath->setText(usecases::safetyBackupPath(m_path->text(), QDateTime::currentDateTimeUtc()));
         }
     }
     if (id == RunPage) {
@@ -187,7 +200,7 @@ void BackupWizard::initializePage(int id) {
         if (mode() == Mode::Backup) {
             runBackup();
         } else {
-            runSafetyBackup();
+            runRestore();
         }
     }
     QWizard::initializePage(id);
@@ -199,71 +212,63 @@ quint64 BackupWizard::track(quint64 job) {
 }
 
 void BackupWizard::runBackup() {
-    m_progress->start(tr("Reading the EEPROM of the device into %1…").arg(m_path->text()));
     const QString path = m_path->text();
+    // The device does not say how much its EEPROM holds: bytes and the
+    // measured rate, no time left that would be a guess.
+    m_progress->start(tr("Reading the EEPROM of the device into %1…").arg(path), ProgressPage::Total::UpperBound);
     track(m_session->run<EepromImage>(
         this, tr("Backup"),
-        [](comm::CamConDevice& client, comm::JobContext& job) {
-            return client.backup([&job](qint64 done, qint64 total) { job.progress(done, total); });
+        [path](comm::CamConDevice& device, comm::JobContext& job) {
+            return usecases::backupToFile(device, path, usecases::UseCaseProgress::of(job));
         },
         [this, path](Result<EepromImage> image) {
             if (!image) {
                 finishWork(false, tr("Backup failed, no file was written: %1").arg(image.error().message));
                 return;
             }
-            const Status saved = saveEepromImage(path, image.value());
-            if (!saved) {
-                finishWork(false, tr("The device was read, but the file could not be written: %1")
-                                .arg(saved.error().message));
-                return;
-            }
             finishWork(true, tr("Backup complete: %n block(s), %1 bytes written to %2. Nothing failed.", nullptr,
-                          int(image->blocks.size()))
-                           .arg(image->totalBytes())
-                           .arg(path));
-        }));
-}
-
-void BackupWizard::runSafetyBackup() {
-    const QString safety = m_safetyPath->text();
-    m_progress->start(tr("Step 1 of 2: saving what the device holds now into %1…").arg(safety));
-    track(m_session->run<EepromImage>(
-        this, tr("Safety backup"),
-        [](comm::CamConDevice& client, comm::JobContext& job) {
-            return client.backup([&job](qint64 done, qint64 total) { job.progress(done, total); });
-        },
-        [this, safety](Result<EepromImage> image) {
-            const Status saved = image ? saveEepromImage(safety, image.value()) : Status(image.error());
-            if (!saved) {
-                finishWork(false, tr("Restore NOT started, the device is unchanged: the safety backup failed: %1")
-                                .arg(saved.error().message));
-                return;
-            }
-            runRestore();
+                                int(image->blocks.size()))
+                                 .arg(image->totalBytes())
+                                 .arg(path));
         }));
 }
 
 void BackupWizard::runRestore() {
-    const QString safety = m_safetyPath->text();
+    const QString imagePath = m_path->text();
     const EepromImage image = *m_image;
-    m_progress->start(tr("Step 2 of 2: erasing the device and writing %n block(s)…", nullptr,
-                         int(image.blocks.size())));
-    track(m_session->run<Done>(
+    usecases::RestoreOptions options;
+    options.force = m_force->isChecked();
+    options.safetyBackupPath = m_safetyPath->text();
+    // Step 1 (the safety backup) has no known size: no time left is given.
+    m_progress->start(tr("Step 1 of 2: saving what the device holds now into %1; step 2: erasing the "
+                         "device and writing %n block(s).",
+                         nullptr, int(image.blocks.size()))
+                          .arg(options.safetyBackupPath),
+                      ProgressPage::Total::UpperBound);
+    track(m_session->run<usecases::RestoreReport>(
         this, tr("Restore"),
-        [image](comm::CamConDevice& client, comm::JobContext& job) {
-            return client.restore(image, [&job](qint64 done, qint64 total) { job.progress(done, total); });
+        [image, imagePath, options](comm::CamConDevice& device, comm::JobContext& job) -> Result<usecases::RestoreReport> {
+            return usecases::restoreImage(device, image, imagePath, options, usecases::UseCaseProgress::of(job));
         },
-        [this, safety, image](Status status) {
-            if (!status) {
-                finishWork(false, tr("Restore FAILED: %1\n\nThe safety backup of the previous content is %2; "
-                               "restore it to get the device back.")
-                                .arg(status.error().message, safety));
-                return;
+        [this](Result<usecases::RestoreReport> result) {
+            const usecases::RestoreReport& report = result.value();
+            switch (report.state) {
+                case usecases::RestoredState::Restored:
+                    Q_EMIT restored();
+                    finishWork(true, tr("Restore complete: %n block(s) written, 0 failed. The safety backup of "
+                                        "the previous content is %1.",
+                                        nullptr, report.blocks)
+                                         .arg(report.safetyBackupPath));
+                    return;
+                case usecases::RestoredState::Unchanged:
+                    finishWork(false, tr("Restore NOT done, the device is unchanged: %1").arg(report.error.message));
+                    return;
+                case usecases::RestoredState::ErasedOrPartial:
+                    // Whatever the device holds now, the workspace's copy is not it.
+                    Q_EMIT restored();
+                    finishWork(false, tr("Restore FAILED: %1").arg(report.error.message));
+                    return;
             }
-            Q_EMIT restored();
-            finishWork(true, tr("Restore complete: %n block(s) written, 0 failed. The safety backup of the "
-                          "previous content is %1.", nullptr, int(image.blocks.size()))
-                           .arg(safety));
         }));
 }
 

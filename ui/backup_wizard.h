@@ -52,7 +52,6 @@ private:
     QWizardPage* createChoosePage();
     QWizardPage* createCheckPage();
     void runBackup();
-    void runSafetyBackup();
     void runRestore();
     void finishWork(bool ok, const QString& report);
     quint64 track(quint64 job);

@@ -60,7 +60,10 @@ QVariant PlcMatrixModel::data(const QModelIndex& index, int role) const {
 bool PlcMatrixModel::setData(const QModelIndex& index, const QVariant& value, int role) {
     if (role != Qt::EditRole || !checkIndex(index, CheckIndexOption::IndexIsValid)) return false;
     const auto word = plcsymbol::parse(value.toString());
-    if (!word) return false;
+    if (!word) {
+        Q_EMIT entryRefused(plcsymbol::whyNot(value.toString()));
+        return false;
+    }
     PlcNetwork network = m_workspace->plcNetwork(m_area, m_number);
     network.symbols[index.row() * PlcNetwork::kSymbolsPerPath + index.column()] = *word;
     m_workspace->setPlcNetwork(network);

@@ -26,6 +26,10 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation,
                         int role = Qt::DisplayRole) const override;
 
+Q_SIGNALS:
+    // An entry was not taken; `reason` says why and what would be.
+    void entryRefused(const QString& reason);
+
 private:
     void refresh();
 

@@ -52,7 +52,8 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
       m_value(new QSpinBox),
       m_reset(new QLineEdit),
       m_matrix(new QTableView),
-      m_networks(new QListWidget) {
+      m_networks(new QListWidget),
+      m_refusal(new QLabel) {
     m_area->addItem(tr("O – physical outputs"), int(PlcNetwork::O));
     m_area->addItem(tr("P – cam controller inputs"), int(PlcNetwork::P));
     m_area->addItem(tr("M – flags"), int(PlcNetwork::M));
@@ -79,6 +80,19 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     form->addRow(tr("Reset field (hex):"), m_reset);
 
     m_matrix->setModel(m_model);
+    // A refused entry says why where the user typed it, until the next edit.
+    m_refusal->setWordWrap(true);
+    m_refusal->setObjectName(QStringLiteral("plcRefusal"));
+    QPalette alarm = m_refusal->palette();
+    alarm.setColor(QPalette::WindowText, QColor(0xd0, 0x40, 0x2e));
+    m_refusal->setPalette(alarm);
+    m_refusal->hide();
+    connect(m_model, &PlcMatrixModel::entryRefused, this, [this](const QString& reason) {
+        m_refusal->setText(reason);
+        m_refusal->show();
+        Q_EMIT statusMessage(reason);
+    });
+    connect(m_model, &QAbstractItemModel::dataChanged, m_refusal, &QWidget::hide);
     m_matrix->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_matrix->verticalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_matrix->setEditTriggers(QAbstractItemView::AllEditTriggers);
@@ -91,6 +105,7 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     auto* center = new QVBoxLayout;
     center->addWidget(fields);
     center->addWidget(m_matrix, 1);
+    center->addWidget(m_refusal);
     center->addWidget(note);
 
     m_networks->setMaximumWidth(200);
@@ -122,6 +137,8 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     });
     showNetwork(PlcNetwork::O, 0);
 }
+
+QString PlcPage::refusalText() const { return m_refusal->isHidden() ? QString() : m_refusal->text(); }
 
 void PlcPage::showNetwork(int area, int number) {
     m_updating = true;

@@ -3,6 +3,7 @@
 #include "section_page.h"
 
 class QComboBox;
+class QLabel;
 class QLineEdit;
 class QListWidget;
 class QSpinBox;
@@ -28,6 +29,8 @@ public:
     void showNetwork(int area, int number);  // number 0-based
     void readNetwork();
     PlcMatrixModel* model() const { return m_model; }
+    // Why the last entry in the matrix was not taken (empty: it was).
+    QString refusalText() const;
 
     static QString networkName(int area, int number);
 
@@ -45,6 +48,7 @@ private:
     QLineEdit* m_reset;
     QTableView* m_matrix;
     QListWidget* m_networks;
+    QLabel* m_refusal;
     bool m_updating = false;
 };
 

@@ -1,5 +1,6 @@
 #include "plc_symbol.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 namespace cambench::plcsymbol {
@@ -42,6 +43,28 @@ std::optional<quint16> parse(const QString& input) {
         if (number >= 1 && number <= 256) return quint16((kind << 8) | (number - 1));
     }
     return std::nullopt;
+}
+
+QString whyNot(const QString& input) {
+    const QString text = input.trimmed();
+    static const QRegularExpression operand(QStringLiteral("^([A-Za-z])\\s*(\\d+)$"));
+    const auto m = operand.match(text);
+    if (m.hasMatch() && !areaKind(m.captured(1).toUpper().at(0).toLatin1())) {
+        // I and E (inputs in English and German) are the usual slips.
+        return QCoreApplication::translate("cambench::plcsymbol",
+                                           "\"%1\" is not taken: CamBench knows the operands O, P, M and X "
+                                           "only (P are the cam controller's inputs, e.g. P5). Enter one of "
+                                           "them with a number, or the symbol word as 4 hex digits.")
+            .arg(text);
+    }
+    if (m.hasMatch())
+        return QCoreApplication::translate("cambench::plcsymbol",
+                                           "\"%1\" is not taken: the number must be 1 … 256.")
+            .arg(text);
+    return QCoreApplication::translate("cambench::plcsymbol",
+                                       "\"%1\" is not taken: enter an operand such as M11 or P5, 4 hex "
+                                       "digits (0A0A), or nothing to clear the symbol.")
+        .arg(text);
 }
 
 }  // namespace cambench::plcsymbol

@@ -25,6 +25,8 @@ QString editText(quint16 word);
 // Accepts "", "-", 4 hex digits ("0A0A", "0x0A0A") or a decoded form
 // ("M11", "m 11"); nullopt when the text is none of these.
 std::optional<quint16> parse(const QString& text);
+// Why `text` is not accepted by parse(), as a sentence for the user.
+QString whyNot(const QString& text);
 
 }  // namespace plcsymbol
 }  // namespace cambench

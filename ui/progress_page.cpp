@@ -18,7 +18,8 @@ ProgressPage::ProgressPage(QWidget* parent)
     layout->addWidget(m_report, 1);
 }
 
-void ProgressPage::start(const QString& what) {
+void ProgressPage::start(const QString& what, Total total) {
+    m_total = total;
     m_what->setText(what);
     m_bar->setRange(0, 0);
     m_eta->clear();
@@ -32,8 +33,16 @@ void ProgressPage::setProgress(qint64 done, qint64 total) {
     if (total <= 0) return;
     m_bar->setRange(0, 1000);
     m_bar->setValue(int(done * 1000 / total));
-    m_eta->setText(etaText(m_clock.elapsed(), done, total));
+    if (m_total == Total::Exact) {
+        m_eta->setText(etaText(m_clock.elapsed(), done, total));
+    } else {
+        m_eta->setText(tr("%1 s so far. No time left is given: how much the device holds is not known "
+                          "before it is read.")
+                           .arg(m_clock.elapsed() / 1000));
+    }
 }
+
+QString ProgressPage::etaLabelText() const { return m_eta->text(); }
 
 QString ProgressPage::etaText(qint64 elapsedMs, qint64 done, qint64 total) {
     if (done <= 0 || total <= done) return {};

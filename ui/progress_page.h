@@ -15,14 +15,20 @@ class ProgressPage : public QWizardPage {
 public:
     explicit ProgressPage(QWidget* parent = nullptr);
 
-    void start(const QString& what);
+    // Whether the total of the progress is the real amount (a restore's
+    // image) or only a bound (a backup: the device does not say how much
+    // it holds). Only a real total gives a time left.
+    enum class Total { Exact, UpperBound };
+
+    void start(const QString& what, Total total = Total::Exact);
     void setProgress(qint64 done, qint64 total);
     void finish(bool ok, const QString& report);
     bool isComplete() const override { return m_finished; }
     bool isRunning() const { return m_running; }
     QString reportText() const;
+    QString etaLabelText() const;
 
-    // "about 1 min 20 s left", from the time taken so far.
+    // "about 1 min 20 s left", from the rate measured so far.
     static QString etaText(qint64 elapsedMs, qint64 done, qint64 total);
 
 private:
@@ -31,6 +37,7 @@ private:
     QLabel* m_eta;
     QLabel* m_report;
     QElapsedTimer m_clock;
+    Total m_total = Total::Exact;
     bool m_running = false;
     bool m_finished = false;
 };

@@ -77,6 +77,8 @@ target_sources(cambench_ui PRIVATE
   project_io.cpp
   new_project_dialog.h
   new_project_dialog.cpp
+  print_diagram.h
+  print_diagram.cpp
   commissioning_report.h
   commissioning_report.cpp
   main_window.h

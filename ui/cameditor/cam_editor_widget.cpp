@@ -45,6 +45,7 @@ CamEditorWidget::CamEditorWidget(CamDocument* document, QWidget* parent)
     m_redo->setShortcut(QKeySequence::Redo);
 
     createTables();
+    QToolBar* toolBar = createToolBar();  // makes the actions the zoom bar uses too
     auto* tables = new QSplitter(Qt::Horizontal);
     tables->addWidget(m_trackTable);
     auto* camPanel = new QWidget;
@@ -56,14 +57,32 @@ CamEditorWidget::CamEditorWidget(CamDocument* document, QWidget* parent)
     tables->setStretchFactor(0, 3);
     tables->setStretchFactor(1, 2);
 
+    // Zoom belongs to the diagram: its buttons sit on it, where a narrow
+    // window cannot push them into the tool bar's overflow menu.
+    auto* diagramPanel = new QWidget;
+    auto* diagramLayout = new QVBoxLayout(diagramPanel);
+    diagramLayout->setContentsMargins(0, 0, 0, 0);
+    diagramLayout->setSpacing(2);
+    auto* zoomBar = new QToolBar(diagramPanel);
+    zoomBar->setObjectName(QStringLiteral("zoomBar"));
+    zoomBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    auto* diagramTitle = new QLabel(tr("Diagram"), zoomBar);
+    zoomBar->addWidget(diagramTitle);
+    auto* spacer = new QWidget(zoomBar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    zoomBar->addWidget(spacer);
+    zoomBar->addActions({m_zoomIn, m_zoomOut, m_zoomFit});
+    diagramLayout->addWidget(zoomBar);
+    diagramLayout->addWidget(m_diagram, 1);
+
     auto* splitter = new QSplitter(Qt::Vertical);
     splitter->addWidget(tables);
-    splitter->addWidget(m_diagram);
+    splitter->addWidget(diagramPanel);
     splitter->setStretchFactor(0, 1);
     splitter->setStretchFactor(1, 1);
 
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(createToolBar());
+    layout->addWidget(toolBar);
     layout->addWidget(createProgramBar());
     layout->addWidget(splitter, 1);
 
@@ -142,8 +161,6 @@ QToolBar* CamEditorWidget::createToolBar() {
     toolBar->addActions({m_addCam, m_deleteCam, m_generate, m_copyTrack, m_copyProgram});
     toolBar->addSeparator();
     toolBar->addActions({m_import, m_export});
-    toolBar->addSeparator();
-    toolBar->addActions({m_zoomIn, m_zoomOut, m_zoomFit});
     return toolBar;
 }
 

@@ -4,6 +4,7 @@
 
 #include "ui/cameditor/cam_diagram_widget.h"
 #include "ui/cameditor/cam_editor_widget.h"
+#include "ui/cameditor/range_delegate.h"
 #include "ui/cameditor/cam_generator_dialog.h"
 #include "ui/cameditor/cam_table_model.h"
 #include "ui/cameditor/track_table_model.h"
@@ -109,8 +110,9 @@ void CamEditorWidgetTest::delegateEditUpdatesDocumentAndDiagram() {
     table->edit(cell);
     auto* editor = qobject_cast<QSpinBox*>(QApplication::focusWidget());
     QVERIFY(editor);
+    // The editor takes any digits; the range is checked when it commits.
     QCOMPARE(editor->minimum(), 0);
-    QCOMPARE(editor->maximum(), 359);
+    QVERIFY(editor->maximum() > 359);
     QCOMPARE(editor->value(), 100);
     editor->setValue(90);
     QTest::keyClick(editor, Qt::Key_Return);
@@ -118,6 +120,21 @@ void CamEditorWidgetTest::delegateEditUpdatesDocumentAndDiagram() {
     // The delegate commits through a queued call.
     QTRY_COMPARE(m_document->track(0, 1).cams.at(1), (Cam{90, 150}));
     QCOMPARE(m_document->undoStack()->count(), 1);
+
+    // 3600 is beyond IMAX 359: refused with a word, the editor stays open.
+    table->edit(cell);
+    editor = qobject_cast<QSpinBox*>(QApplication::focusWidget());
+    QVERIFY(editor);
+    editor->selectAll();
+    QTest::keyClicks(editor, QStringLiteral("3600"));
+    QCOMPARE(editor->text(), QStringLiteral("3600"));
+    QTest::keyClick(editor, Qt::Key_Return);
+    auto* delegate = qobject_cast<RangeDelegate*>(table->itemDelegate());
+    QVERIFY(delegate);
+    QVERIFY2(delegate->lastRefusal().contains(QStringLiteral("3600")), qPrintable(delegate->lastRefusal()));
+    QCOMPARE(QApplication::focusWidget(), editor);
+    QCOMPARE(m_document->track(0, 1).cams.at(1), (Cam{90, 150}));
+    QTest::keyClick(editor, Qt::Key_Escape);
     const QList<QRectF> rects = m_editor->diagram()->camRects(1, 1);
     QCOMPARE(rects.size(), 1);
     const DiagramLayout& layout = m_editor->diagram()->layout();
