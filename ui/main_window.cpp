@@ -13,6 +13,7 @@
 #include "gui_settings.h"
 #include "incoming_values.h"
 #include "language.h"
+#include "line_backup_dialog.h"
 #include "monitor_page.h"
 #include "new_project_dialog.h"
 #include "plc_page.h"
@@ -156,6 +157,7 @@ void MainWindow::createMenus() {
     device->addSeparator();
     device->addAction(tr("Co&mpare with device…"), this, &MainWindow::openCompare);
     device->addAction(tr("&Backup and restore…"), this, &MainWindow::openBackupWizard);
+    device->addAction(tr("Back up all devices on this &line…"), this, &MainWindow::openLineBackup);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* dark = view->addAction(tr("&Dark palette"));
@@ -367,6 +369,13 @@ BackupWizard* MainWindow::openBackupWizard() {
     connect(wizard, &BackupWizard::restored, this, [this] { readEverything(0); });
     wizard->show();
     return wizard;
+}
+
+LineBackupDialog* MainWindow::openLineBackup() {
+    auto* dialog = new LineBackupDialog(m_session, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    return dialog;
 }
 
 bool MainWindow::confirmClose() {

@@ -22,6 +22,7 @@ class ConnectionPage;
 class ConnectionStrip;
 class DeadTimesPage;
 class DeviceSession;
+class LineBackupDialog;
 class MonitorPage;
 class PlcPage;
 class SectionPage;
@@ -76,6 +77,7 @@ public:
 
     CompareDialog* openCompare();
     BackupWizard* openBackupWizard();
+    LineBackupDialog* openLineBackup();
     QString lastMessage() const { return m_lastMessage; }
     // Asks before closing when edits are not written; true = may close.
     bool confirmClose();

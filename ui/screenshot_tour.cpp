@@ -93,7 +93,10 @@ void ScreenshotTour::buildSteps() {
              w->showSection(MainWindow::Cams);
              m_dialog = w->openCompare();
          },
-         [this] { return static_cast<CompareDialog*>(m_dialog)->differenceCount() > 0; },
+         [this] {
+             auto* compare = static_cast<CompareDialog*>(m_dialog);
+             return !compare->isReading() && compare->differenceCount() > 0;
+         },
          [this] { return m_dialog; }},
         {QStringLiteral("09-backup-wizard"),
          [this, w] {

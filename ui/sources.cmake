@@ -65,6 +65,8 @@ target_sources(cambench_ui PRIVATE
   progress_page.cpp
   backup_wizard.h
   backup_wizard.cpp
+  line_backup_dialog.h
+  line_backup_dialog.cpp
   backup_page.h
   backup_page.cpp
   gui_settings.h
