@@ -83,7 +83,7 @@ void ConnectionStrip::update() {
     } else if (state == comm::ConnectionState::Connected) {
         const DeviceInfo& info = m_workspace->info();
         text = m_workspace->infoFromDevice()
-                   ? tr("Connected to %1: CamCon %2, device number %3.")
+                   ? tr("%1: CamCon %2, device number %3.")
                          .arg(m_session->stateText(), info.epromDate)
                          .arg(info.deviceNumber)
                    : tr("%1; identity not read yet.").arg(m_session->stateText());

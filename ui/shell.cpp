@@ -7,6 +7,8 @@
 #include "main_window.h"
 #include "workspace.h"
 
+#include <QScreen>
+
 namespace cambench {
 
 Shell::Shell(QObject* parent)

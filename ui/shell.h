@@ -32,6 +32,7 @@ Q_SIGNALS:
 
 private:
     MainWindow* createWindow();
+    static void showFitting(MainWindow& window, bool restored);
 
     DeviceSession* m_session;
     Workspace* m_workspace;

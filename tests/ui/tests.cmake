@@ -2,3 +2,11 @@ cambench_add_test(cameditor_document_test SOURCES ui/cameditor/tst_cam_document.
 cambench_add_test(cameditor_widget_test SOURCES ui/cameditor/tst_cam_editor_widget.cpp ui/cameditor/cam_test_support.h LIBS cambench_ui)
 cambench_add_test(ui_shell_main_window_test SOURCES ui/shell/tst_main_window.cpp ui/shell/shell_fixture.h LIBS cambench_ui)
 cambench_add_test(ui_shell_pages_test SOURCES ui/shell/tst_shell_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui)
+
+# Issue 6 ("what CamBench says about a device must be true"): the GUI on
+# real widgets against the simulator, one file per group of points.
+function(cambench_add_truth_test name)
+  cambench_add_test(${name} SOURCES ${ARGN} ui/truth/pty_simulator.h ui/shell/shell_fixture.h
+                    LIBS cambench_ui cambench_sim)
+endfunction()
+cambench_add_truth_test(ui_truth_write_test ui/truth/tst_write_truth.cpp)
