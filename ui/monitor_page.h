@@ -39,6 +39,8 @@ public:
     // A page that shows live values is in front (monitor, cam editor).
     void setLiveWanted(bool wanted);
     bool isPolling() const { return m_timer.isActive(); }
+    // The last cycle's poll is on the line and not answered yet.
+    bool isPollOnLine() const { return m_pollJob != 0 && m_lineClock.isValid(); }
 
     void setPollInterval(int ms);
     int pollInterval() const { return m_timer.interval(); }

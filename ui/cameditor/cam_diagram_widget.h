@@ -51,6 +51,7 @@ public Q_SLOTS:
     void setLivePosition(qint32 position);
     void setOutputStates(const QList<bool>& states);
     void clearLive();
+    bool isLive() const { return m_live; }
 
 Q_SIGNALS:
     // The user clicked a cam (cam >= 0) or an empty part of a row (cam = -1).

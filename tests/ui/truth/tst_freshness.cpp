@@ -1,0 +1,168 @@
+// Issue 6, point 5, and the poll rate: a silent or stopped device turns the
+// connection indicator and the monitor to "no answer since HH:MM:SS" within
+// one poll cycle, the trend shows a gap, polling stops behind pages without
+// live values, and a poll rate the line cannot carry is adjusted with a
+// word. Driven by poll cycles, never by the clock.
+#include "pty_simulator.h"
+#include "../shell/shell_fixture.h"
+
+#include "ui/cam_page.h"
+#include "ui/connection_status.h"
+#include "ui/device_session.h"
+#include "ui/language.h"
+#include "ui/monitor_page.h"
+#include "ui/trend_chart.h"
+#include "ui/cameditor/cam_diagram_widget.h"
+#include "ui/cameditor/cam_editor_widget.h"
+
+#include <QtTest>
+
+using namespace cambench;
+using namespace cambench::test;
+
+namespace {
+
+// One answered cycle: the poll went out and its answer came back.
+bool answeredCycle(MonitorPage* monitor, LiveFreshness* freshness) {
+    monitor->pollCycle();
+    return QTest::qWaitFor([monitor, freshness] { return !monitor->isPollOnLine() && freshness->isLive(); },
+                           kDeviceTimeoutMs);
+}
+
+}  // namespace
+
+class FreshnessTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() {
+        useTestSettings();
+        QVERIFY(setLanguage(QStringLiteral("en")));
+    }
+    void silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle();
+    void stoppedSimulatorTurnsIndicatorAndMonitorStale();
+    void pollingStopsBehindPagesWithoutLiveValues();
+    void pollRateTheLineCannotCarryIsAdjustedWithAWord();
+    void speedTrendPlotsTheValueTheReadoutShows();
+};
+
+void FreshnessTest::silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle() {
+    PtySimulator sim;
+    QVERIFY(sim.isOpen());
+    auto shell = startOnSimulator(sim.path());
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    MonitorPage* monitor = window->monitorPage();
+    LiveFreshness* freshness = shell->session()->freshness();
+    monitor->setTimerDriven(false);
+    window->showSection(MainWindow::Monitor);
+    QVERIFY(answeredCycle(monitor, freshness));
+    QVERIFY(answeredCycle(monitor, freshness));
+    const QString lastAnswer = freshness->lastAnswerText();
+    QVERIFY(monitor->freshnessText().startsWith(QStringLiteral("Live")));
+    QVERIFY(!window->connectionIndicator()->stateText().contains(QStringLiteral("No answer")));
+    const int segments = monitor->trend()->segmentCount();
+
+    // The cable is pulled at the device: its poll goes out and nothing comes back.
+    sim.fallSilent();
+    monitor->pollCycle();
+    QTRY_VERIFY_WITH_TIMEOUT(monitor->isPollOnLine(), kDeviceTimeoutMs);
+    QVERIFY(freshness->isLive());  // one cycle has not passed yet
+    monitor->pollCycle();          // the next cycle finds it unanswered
+    QVERIFY(freshness->isStale());
+    const QString since = QStringLiteral("No answer since %1").arg(lastAnswer);
+    QVERIFY2(window->connectionIndicator()->stateText().startsWith(since),
+             qPrintable(window->connectionIndicator()->stateText()));
+    QVERIFY2(monitor->freshnessText().startsWith(since), qPrintable(monitor->freshnessText()));
+    QVERIFY2(window->connectionStrip()->text().contains(lastAnswer), qPrintable(window->connectionStrip()->text()));
+    QVERIFY(window->connectionStrip()->isAlarm());
+    // "OK" is not claimed for now.
+    QVERIFY2(monitor->stateText().startsWith(QStringLiteral("unknown now")), qPrintable(monitor->stateText()));
+    // The cam diagram shows no live position any more.
+    QVERIFY(!window->camPage()->editor()->diagram()->isLive());
+
+    // The device answers again: live again, and the trend has a gap.
+    sim.fallSilent(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!monitor->isPollOnLine(), kDeviceTimeoutMs);
+    QVERIFY(answeredCycle(monitor, freshness));
+    QVERIFY(answeredCycle(monitor, freshness));
+    QVERIFY(!window->connectionIndicator()->stateText().contains(QStringLiteral("No answer")));
+    QCOMPARE(monitor->trend()->segmentCount(), segments + 1);
+}
+
+void FreshnessTest::stoppedSimulatorTurnsIndicatorAndMonitorStale() {
+    PtySimulator sim;
+    QVERIFY(sim.isOpen());
+    auto shell = startOnSimulator(sim.path());
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    MonitorPage* monitor = window->monitorPage();
+    LiveFreshness* freshness = shell->session()->freshness();
+    monitor->setTimerDriven(false);
+    window->showSection(MainWindow::Monitor);
+    QVERIFY(answeredCycle(monitor, freshness));
+    const QString lastAnswer = freshness->lastAnswerText();
+
+    sim.stop();
+    // The adapter is gone: this cycle's poll fails, and that is a missed cycle.
+    monitor->pollCycle();
+    QTRY_VERIFY_WITH_TIMEOUT(freshness->isStale(), kDeviceTimeoutMs);
+    QVERIFY2(monitor->freshnessText().startsWith(QStringLiteral("No answer since %1").arg(lastAnswer)),
+             qPrintable(monitor->freshnessText()));
+    const QString indicator = window->connectionIndicator()->stateText();
+    QVERIFY2(indicator.contains(QStringLiteral("No answer since")) || indicator.contains(QStringLiteral("lost")),
+             qPrintable(indicator));
+    QVERIFY(window->connectionStrip()->isAlarm());
+}
+
+void FreshnessTest::pollingStopsBehindPagesWithoutLiveValues() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    MonitorPage* monitor = window->monitorPage();
+    window->showSection(MainWindow::Monitor);
+    QVERIFY(monitor->isPolling());
+    window->showSection(MainWindow::Cams);  // the diagram shows the live position
+    QVERIFY(monitor->isPolling());
+    for (MainWindow::Section quiet : {MainWindow::Connection, MainWindow::DeadTimes, MainWindow::Settings,
+                                      MainWindow::Users, MainWindow::Plc, MainWindow::Backup, MainWindow::Terminal}) {
+        window->showSection(quiet);
+        QVERIFY2(!monitor->isPolling(), qPrintable(QString::number(int(quiet))));
+    }
+    QVERIFY(!shell->session()->freshness()->isLive());
+    window->showSection(MainWindow::Monitor);
+    QVERIFY(monitor->isPolling());
+}
+
+void FreshnessTest::pollRateTheLineCannotCarryIsAdjustedWithAWord() {
+    // 9600 baud, the bytes paced as on a real line.
+    auto shell = startOnSimulator(QStringLiteral("sim:baud=9600"));
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    MonitorPage* monitor = window->monitorPage();
+    monitor->setPollInterval(100);
+    QVERIFY(monitor->rateNote().isEmpty());
+    window->showSection(MainWindow::Monitor);
+    QTRY_VERIFY_WITH_TIMEOUT(!monitor->rateNote().isEmpty(), kDeviceTimeoutMs);
+    QVERIFY(monitor->pollInterval() > 100);
+    QVERIFY2(monitor->rateNote().contains(QStringLiteral("instead of 100 ms")), qPrintable(monitor->rateNote()));
+}
+
+void FreshnessTest::speedTrendPlotsTheValueTheReadoutShows() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    MonitorPage* monitor = window->monitorPage();
+    monitor->setTimerDriven(false);
+    window->showSection(MainWindow::Monitor);
+    std::optional<DeviceStatus> status;
+    connect(monitor, &MonitorPage::statusUpdated, this, [&](const DeviceStatus& s) { status = s; });
+    monitor->pollCycle();
+    QTRY_VERIFY_WITH_TIMEOUT(status.has_value(), kDeviceTimeoutMs);
+    // The simulated axis: 36 units/s raw (?BSPEED), shown as 6.0 (?SPEED).
+    QVERIFY(status->speed != 6);
+    QCOMPARE(monitor->trend()->speedPoints().last().y(), status->speedText.trimmed().toDouble());
+}
+
+QTEST_MAIN(FreshnessTest)
+#include "tst_freshness.moc"
