@@ -10,6 +10,8 @@
 #include "ui/cameditor/cam_editor_widget.h"
 
 #include <QCoreApplication>
+
+#include <algorithm>
 #include <QVBoxLayout>
 
 namespace cambench {
@@ -85,8 +87,17 @@ void CamPage::writeProgram(int program, std::function<void(const WriteResult&)> 
         return;
     }
     Q_EMIT statusMessage(tr("Writing program %1…").arg(program));
-    writeToDevice(this, m_session, m_workspace, items, [this, program, done](const WriteResult& result) {
-        Q_EMIT statusMessage(tr("Program %1: %2").arg(program).arg(writeSummary(result)));
+    // Outputs not sent were already as on the device: counted, not hidden.
+    const int tracksSent = int(std::count_if(items.cbegin(), items.cend(), [](const WorkspaceItem& item) {
+        return item.kind == WorkspaceItem::Kind::Track;
+    }));
+    const int others = m_workspace->cams()->hasDeviceCopy(program) ? m_workspace->info().outputs - tracksSent : 0;
+    writeToDevice(this, m_session, m_workspace, items, [this, program, others, done](const WriteResult& result) {
+        QString summary = tr("Program %1: %2").arg(program).arg(writeSummary(result));
+        if (result && others > 0)
+            summary += QLatin1Char(' ') +
+                       tr("%n other output(s) were already as on the device and not sent.", nullptr, others);
+        Q_EMIT statusMessage(summary);
         if (done) done(result);
     });
 }

@@ -85,6 +85,8 @@ void DeadTimesPage::readFromDevice() {
     });
 }
 
+int DeadTimesPage::itemCount() const { return m_workspace->info().deadTimeOutputs + m_workspace->info().outputs; }
+
 QList<SectionDifference> DeadTimesPage::differences() const {
     QList<SectionDifference> list;
     const CamDocument* cams = m_workspace->cams();

@@ -19,6 +19,7 @@ public:
 
     QString sectionTitle() const override { return tr("Dead times"); }
     QList<SectionDifference> differences() const override;
+    int itemCount() const override;
     void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void readFromDevice();

@@ -197,6 +197,8 @@ void PlcPage::readNetwork() {
                                 });
 }
 
+int PlcPage::itemCount() const { return int(m_workspace->plcNetworks().size()); }
+
 QList<SectionDifference> PlcPage::differences() const {
     QList<SectionDifference> list;
     for (int key : m_workspace->changedPlcNetworks()) {

@@ -24,6 +24,7 @@ public:
 
     QString sectionTitle() const override { return tr("PLC"); }
     QList<SectionDifference> differences() const override;
+    int itemCount() const override;
     void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void showNetwork(int area, int number);  // number 0-based

@@ -30,6 +30,9 @@ public:
 
     virtual QString sectionTitle() const = 0;
     virtual QList<SectionDifference> differences() const { return {}; }
+    // How many items the section holds for the device: a write reports
+    // the ones it did not send as already on the device.
+    virtual int itemCount() const { return int(differences().size()); }
 
 Q_SIGNALS:
     void statusMessage(const QString& text);

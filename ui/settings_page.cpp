@@ -172,6 +172,8 @@ void SettingsPage::readFromDevice() {
     });
 }
 
+int SettingsPage::itemCount() const { return int(m_workspace->settings().size()); }
+
 QList<SectionDifference> SettingsPage::differences() const {
     QList<SectionDifference> list;
     const SystemSettings& device = m_workspace->deviceSettings();

@@ -23,6 +23,7 @@ public:
 
     QString sectionTitle() const override { return tr("Encoder & system"); }
     QList<SectionDifference> differences() const override;
+    int itemCount() const override;
     void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void readFromDevice();

@@ -188,6 +188,8 @@ void UsersPage::readFromDevice() {
     });
 }
 
+int UsersPage::itemCount() const { return int(m_workspace->users().size() + m_workspace->deletedUserNumbers().size()); }
+
 QList<SectionDifference> UsersPage::differences() const {
     QList<SectionDifference> list;
     const auto& users = m_workspace->users();

@@ -24,6 +24,7 @@ public:
 
     QString sectionTitle() const override { return tr("Users"); }
     QList<SectionDifference> differences() const override;
+    int itemCount() const override;
     void writeChanges(std::function<void(const WriteResult&)> done = {});
 
     void readFromDevice();

@@ -98,6 +98,7 @@ CamEditorWidget::CamEditorWidget(CamDocument* document, QWidget* parent)
         }
     });
     connect(document, &CamDocument::outputNameChanged, this, [this] { setCurrentOutput(currentOutput()); });
+    connect(document, &CamDocument::deviceStateChanged, this, &CamEditorWidget::refreshProgramChooser);
     refreshProgramChooser();
     setCurrentProgram(0);
     setCurrentOutput(1);
@@ -294,8 +295,9 @@ void CamEditorWidget::refreshProgramChooser() {
     }
     for (int program = 0; program < count; ++program) {
         const QString name = m_document->programName(program);
-        const QString text =
-            name.isEmpty() ? QString::number(program) : tr("%1: %2").arg(program).arg(name);
+        QString text = name.isEmpty() ? QString::number(program) : tr("%1: %2").arg(program).arg(name);
+        // What the device holds there is unknown until it is read.
+        if (!m_document->hasDeviceCopy(program)) text = tr("%1 (not read)").arg(text);
         if (program < m_programChooser->count()) {
             m_programChooser->setItemText(program, text);
         } else {
