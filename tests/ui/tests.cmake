@@ -14,3 +14,4 @@ cambench_add_truth_test(ui_truth_unwritten_edits_test ui/truth/tst_unwritten_edi
 cambench_add_truth_test(ui_truth_freshness_test ui/truth/tst_freshness.cpp)
 cambench_add_truth_test(ui_truth_whole_device_test ui/truth/tst_whole_device.cpp)
 cambench_add_truth_test(ui_truth_report_and_counts_test ui/truth/tst_report_and_counts.cpp)
+cambench_add_test(ui_shell_small_faults_test SOURCES ui/shell/tst_small_faults.cpp ui/shell/shell_fixture.h LIBS cambench_ui)

@@ -22,6 +22,7 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -157,8 +158,7 @@ QToolBar* CamEditorWidget::createToolBar() {
 
     auto* toolBar = new QToolBar(this);
     toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    toolBar->addActions({m_read, m_write});
-    toolBar->addSeparator();
+    // Read and Write sit with the program they act on (createProgramBar).
     toolBar->addActions({m_addCam, m_deleteCam, m_generate, m_copyTrack, m_copyProgram});
     toolBar->addSeparator();
     toolBar->addActions({m_import, m_export});
@@ -183,6 +183,12 @@ QWidget* CamEditorWidget::createProgramBar() {
     layout->addSpacing(12);
     layout->addWidget(nameLabel);
     layout->addWidget(m_programName, 1);
+    for (QAction* action : {m_read, m_write}) {
+        auto* button = new QToolButton(bar);
+        button->setDefaultAction(action);
+        button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        layout->addWidget(button);
+    }
     connect(m_programChooser, &QComboBox::activated, this, &CamEditorWidget::setCurrentProgram);
     connect(m_programName, &QLineEdit::editingFinished, this,
             &CamEditorWidget::commitProgramName);

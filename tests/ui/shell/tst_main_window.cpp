@@ -13,7 +13,9 @@
 #include "ui/language.h"
 #include "ui/progress_page.h"
 
+#include <QAbstractButton>
 #include <QFile>
+#include <QMessageBox>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -164,7 +166,13 @@ void MainWindowTest::backupAndRestoreThroughWizard() {
     QCOMPARE(restore->currentId(), int(BackupWizard::CheckPage));
     QVERIFY(restore->checkText().contains(QStringLiteral("matches")));
     restore->setSafetyBackupPath(safety);
+    NextDialog<QMessageBox> erase([](QMessageBox* box) {
+        for (QAbstractButton* button : box->buttons()) {
+            if (box->buttonRole(button) == QMessageBox::DestructiveRole) button->click();
+        }
+    });
     restore->next();
+    QCOMPARE(erase.answered(), 1);
     QTRY_VERIFY_WITH_TIMEOUT(restore->progressPage()->isComplete(), kDeviceTimeoutMs);
     const QString report = restore->progressPage()->reportText();
     QVERIFY2(report.contains(QStringLiteral("Restore complete")), qPrintable(report));
