@@ -116,6 +116,8 @@ void LineBackupDialog::start() {
         delete item;
     }
     m_bars.clear();
+    // Known devices get their bar now; scanned ones as the scan finds them.
+    for (int device : options.devices) showDeviceProgress(device, 0, 1, tr("waiting"));
     m_report->setPlainText(options.devices.isEmpty() ? tr("Scanning the line…") : tr("Backing up…"));
     m_start->setEnabled(false);
     m_cancel->setEnabled(true);
@@ -174,10 +176,10 @@ void LineBackupDialog::showManifest(const Result<LineManifest>& manifest) {
     for (const LineManifestEntry& entry : manifest->devices) {
         const bool ok = entry.outcome == LineManifestEntry::Outcome::Saved;
         saved += ok ? 1 : 0;
-        if (QProgressBar* bar = m_bars.value(entry.device)) {
-            bar->setFormat(ok ? tr("saved") : tr("FAILED"));
-            if (ok) bar->setValue(bar->maximum());
-        }
+        if (!m_bars.contains(entry.device)) showDeviceProgress(entry.device, 0, 1, {});
+        QProgressBar* bar = m_bars.value(entry.device);
+        bar->setFormat(ok ? tr("saved") : tr("FAILED"));
+        if (ok) bar->setValue(bar->maximum());
         lines << (ok ? tr("Device %1: saved to %2.").arg(entry.device).arg(entry.file)
                      : tr("Device %1: NOT saved: %2").arg(entry.device).arg(entry.message));
     }

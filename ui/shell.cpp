@@ -58,8 +58,10 @@ void Shell::switchLanguage(const QString& language) {
     window->showSection(old->currentSection());
     m_window = window;
     window->show();
-    old->hide();
-    old->deleteLater();
+    // Deleted now, not later: its pages point at this shell's session, and
+    // the shell may be gone before a deferred delete would run. The switch
+    // arrives through a queued call, never from inside the old window.
+    delete old;
     Q_EMIT windowRebuilt(window);
 }
 
