@@ -109,13 +109,13 @@ public:
         m_total = m_plan.itemCount();
         for (const SettingsWrite& group : m_plan.settings) report.settings << writeSettings(group);
         for (const NameWrite& name : m_plan.programNames)
-            report.programNames << writeProgramName(name);
+            report.programNames << writeName(name, true);
         for (const TrackWrite& track : m_plan.tracks) report.tracks << writeTrack(track);
         fillDeadTimeBeliefs();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
             report.deadTimes << writeDeadTime(deadTime);
         for (const NameWrite& name : m_plan.outputNames)
-            report.outputNames << writeOutputName(name);
+            report.outputNames << writeName(name, false);
         for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
         for (const PlcWrite& network : m_plan.plcNetworks)
             report.plcNetworks << writePlcNetwork(network);
@@ -227,15 +227,22 @@ private:
                                          onlyKeys(m_settings, keys), ops);
     }
 
-    ItemOutcome<QString> writeProgramName(const NameWrite& name) {
+    // Program names (0-based) and output names (1-based) take the same course.
+    ItemOutcome<QString> writeName(const NameWrite& name, bool program) {
         ValueOps<QString> ops;
-        ops.read = [this, &name] { return m_connection.readProgramName(name.number); };
-        ops.write = [this, &name](const QString&) {
-            return m_connection.writeProgramName(name.number, name.wanted);
+        ops.read = [this, &name, program] {
+            return program ? m_connection.readProgramName(name.number)
+                           : m_connection.readOutputName(name.number);
+        };
+        ops.write = [this, &name, program](const QString&) {
+            return program ? m_connection.writeProgramName(name.number, name.wanted)
+                           : m_connection.writeOutputName(name.number, name.wanted);
         };
         ops.same = [](const QString& a, const QString& b) { return a == b; };
         ops.text = nameText;
-        return writeItem<QString>(programNameLabel(name.number), name.wanted, name.believed, ops);
+        const QString label =
+            program ? programNameLabel(name.number) : outputNameLabel(name.number);
+        return writeItem<QString>(label, name.wanted, name.believed, ops);
     }
 
     ItemOutcome<Track> writeTrack(const TrackWrite& write) {
@@ -278,17 +285,6 @@ private:
         std::optional<qint32> before = write.believed;
         if (!before && m_deadTimes) before = m_deadTimes->value(write.output, 0);
         return writeItem<qint32>(deadTimeLabel(write.output), write.wanted, before, ops);
-    }
-
-    ItemOutcome<QString> writeOutputName(const NameWrite& name) {
-        ValueOps<QString> ops;
-        ops.read = [this, &name] { return m_connection.readOutputName(name.number); };
-        ops.write = [this, &name](const QString&) {
-            return m_connection.writeOutputName(name.number, name.wanted);
-        };
-        ops.same = [](const QString& a, const QString& b) { return a == b; };
-        ops.text = nameText;
-        return writeItem<QString>(outputNameLabel(name.number), name.wanted, name.believed, ops);
     }
 
     ItemOutcome<std::optional<User>> writeUser(const UserWrite& write) {

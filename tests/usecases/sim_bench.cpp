@@ -22,12 +22,12 @@ SimBench::SimBench(QList<int> devices, std::optional<Framing> framing) {
     settings.timeoutMs = 200;
     settings.longTimeoutMs = 5000;
     link = std::make_unique<AsciiLink>(*transport, settings);
-    camcon = std::make_unique<AsciiCamCon>(*link);
+    client = std::make_unique<AsciiCamCon>(*link);
     injections().setLogging(true);
 }
 
 DeviceInfo SimBench::info() {
-    const Result<DeviceInfo> read = camcon->readInfo();
+    const Result<DeviceInfo> read = client->readInfo();
     if (!read) qFatal("%s", qPrintable(read.error().message));
     return *read;
 }

@@ -24,7 +24,7 @@ struct SimBench {
 
     std::unique_ptr<comm::SimTransport> transport;
     std::unique_ptr<comm::AsciiLink> link;
-    std::unique_ptr<comm::AsciiCamCon> camcon;
+    std::unique_ptr<comm::AsciiCamCon> client;
 };
 
 }  // namespace cambench::tests

@@ -61,12 +61,12 @@ void TestBackup::restoreTakesSafetyBackupThenRestores() {
     SimBench bench;
     QTemporaryDir dir;
     const QString imagePath = dir.filePath(QStringLiteral("image.json"));
-    const Result<EepromImage> image = backupToFile(*bench.camcon, imagePath);
+    const Result<EepromImage> image = backupToFile(*bench.client, imagePath);
     QVERIFY2(image.ok(), qPrintable(image.error().message));
     const SimState original = bench.device().state();
-    QVERIFY(bench.camcon->writeTrack(2, Track{9, {{200, 220}}}).ok());
+    QVERIFY(bench.client->writeTrack(2, Track{9, {{200, 220}}}).ok());
 
-    const RestoreReport report = restoreImage(*bench.camcon, *image, imagePath);
+    const RestoreReport report = restoreImage(*bench.client, *image, imagePath);
     QVERIFY2(report.ok(), qPrintable(report.error.message));
     QVERIFY(report.safetyBackupPath.startsWith(imagePath + QStringLiteral(".safety-")));
     QVERIFY(report.safetyBackupPath.endsWith(QStringLiteral("Z.json")));
@@ -74,42 +74,42 @@ void TestBackup::restoreTakesSafetyBackupThenRestores() {
     // The safety backup holds the changed device.
     const Result<EepromImage> safety = loadEepromImage(report.safetyBackupPath);
     QVERIFY(safety.ok());
-    const Result<VerifyReport> verified = verifyImage(*bench.camcon, *safety);
+    const Result<VerifyReport> verified = verifyImage(*bench.client, *safety);
     QVERIFY(verified.ok());
     QVERIFY(!verified->equal);
-    QVERIFY(verifyImage(*bench.camcon, *image)->equal);
+    QVERIFY(verifyImage(*bench.client, *image)->equal);
 }
 
 void TestBackup::restoreOfForeignImageIsRefusedUnlessForced() {
     SimBench bench;
-    Result<EepromImage> image = backupDevice(*bench.camcon);
+    Result<EepromImage> image = backupDevice(*bench.client);
     QVERIFY(image.ok());
     image.value().device.outputs = 64;
     bench.commandsSent();
     RestoreOptions options;
     options.safetyBackup = false;
     const RestoreReport refused =
-        restoreImage(*bench.camcon, *image, QStringLiteral("x.json"), options);
+        restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
     QCOMPARE(refused.state, RestoredState::Unchanged);
     QCOMPARE(refused.error.kind, ErrorKind::InvalidData);
     QVERIFY(refused.error.message.contains(QLatin1String("was not changed")));
     QCOMPARE(bench.commandsSent(), 0);
     options.force = true;
     const RestoreReport forced =
-        restoreImage(*bench.camcon, *image, QStringLiteral("x.json"), options);
+        restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
     QVERIFY2(forced.ok(), qPrintable(forced.error.message));
     QVERIFY(!forced.identityMismatch.isEmpty());
 }
 
 void TestBackup::failedRestoreSaysTheDeviceIsErased() {
     SimBench bench;
-    const Result<EepromImage> image = backupDevice(*bench.camcon);
+    const Result<EepromImage> image = backupDevice(*bench.client);
     QVERIFY(image.ok());
     // The third block is refused: the device is erased and partly written.
     bench.injections().refuse(0, '!', "EE", -46, 2);
     QTemporaryDir dir;
     const RestoreReport report =
-        restoreImage(*bench.camcon, *image, dir.filePath(QStringLiteral("image.json")));
+        restoreImage(*bench.client, *image, dir.filePath(QStringLiteral("image.json")));
     QCOMPARE(report.state, RestoredState::ErasedOrPartial);
     QVERIFY2(report.error.message.contains(QLatin1String("ERASED")),
              qPrintable(report.error.message));
@@ -131,7 +131,7 @@ struct Line {
         options.devices = {1, 2, 3};
         options.resume = resume;
         options.lineDescription = QStringLiteral("test line");
-        return backupLine(*bench.camcon, options);
+        return backupLine(*bench.client, options);
     }
 };
 
@@ -144,7 +144,7 @@ void TestBackup::lineBackupGoesOnPastADeadDevice() {
     options.directory = line.dir.path();
     options.devices = {1, 2, 3};
     const Result<LineManifest> manifest = backupLine(
-        *line.bench.camcon, options, {}, [&](int device, qint64, qint64, const QString&) {
+        *line.bench.client, options, {}, [&](int device, qint64, qint64, const QString&) {
             if (!progressDevices.contains(device)) progressDevices << device;
         });
     QVERIFY2(manifest.ok(), qPrintable(manifest.error().message));
@@ -173,7 +173,7 @@ void TestBackup::lineBackupGoesOnPastADeadDevice() {
 void TestBackup::verifyLineComparesEverySavedDevice() {
     Line line;
     QVERIFY(line.backup().ok());
-    const Result<QList<LineVerifyEntry>> entries = verifyLine(*line.bench.camcon, line.dir.path());
+    const Result<QList<LineVerifyEntry>> entries = verifyLine(*line.bench.client, line.dir.path());
     QVERIFY2(entries.ok(), qPrintable(entries.error().message));
     QCOMPARE(entries->size(), 3);
     QVERIFY(entries->at(0).equal);
@@ -181,9 +181,9 @@ void TestBackup::verifyLineComparesEverySavedDevice() {
     QVERIFY(entries->at(1).text.contains(QLatin1String("not verified")));
     QVERIFY(entries->at(2).equal);
     // A change on device 3 shows.
-    line.bench.camcon->setDevice(3);
-    QVERIFY(line.bench.camcon->writeTrack(0, Track{5, {{1, 2}}}).ok());
-    const Result<QList<LineVerifyEntry>> again = verifyLine(*line.bench.camcon, line.dir.path());
+    line.bench.client->setDevice(3);
+    QVERIFY(line.bench.client->writeTrack(0, Track{5, {{1, 2}}}).ok());
+    const Result<QList<LineVerifyEntry>> again = verifyLine(*line.bench.client, line.dir.path());
     QVERIFY(!again->at(2).equal);
     QVERIFY2(again->at(2).text.contains(QLatin1String("differs")), qPrintable(again->at(2).text));
 }

@@ -36,7 +36,7 @@ void TestReadEverything::readsEveryPartWithItsTime() {
     SimBench bench;
     const DeviceInfo info = bench.info();
     const QDateTime before = QDateTime::currentDateTimeUtc().addSecs(-1);
-    const Result<ReadEverything> read = readEverything(*bench.camcon, info);
+    const Result<ReadEverything> read = readEverything(*bench.client, info);
     QVERIFY2(read.ok(), qPrintable(read.error().message));
     const Project& project = read->project;
     QCOMPARE(project.device, info);
@@ -70,7 +70,7 @@ void TestReadEverything::progressRunsOnOneBarToTheEnd() {
         last = done;
         total = all;
     });
-    QVERIFY(readEverything(*bench.camcon, info, progress).ok());
+    QVERIFY(readEverything(*bench.client, info, progress).ok());
     QVERIFY(!backwards);
     QVERIFY(total > info.programs * info.outputs);
     QCOMPARE(last, total);
@@ -80,7 +80,7 @@ void TestReadEverything::devicesOwnValuesSaveAndLoad() {
     // The demo device holds specialEncoder.incremental.divider 0, below the
     // manual's minimum: a warning, never a refusal (issue 6, point 6).
     SimBench bench;
-    const Result<ReadEverything> read = readEverything(*bench.camcon, bench.info());
+    const Result<ReadEverything> read = readEverything(*bench.client, bench.info());
     QVERIFY(read.ok());
     QCOMPARE(read->project.settings.value(QStringLiteral("specialEncoder.incremental.divider"))
                  .toLongLong(),
@@ -101,11 +101,11 @@ void TestReadEverything::devicesOwnValuesSaveAndLoad() {
 void TestReadEverything::projectWrittenBackIsUnchangedEverywhere() {
     SimBench bench;
     const DeviceInfo info = bench.info();
-    const Result<ReadEverything> read = readEverything(*bench.camcon, info);
+    const Result<ReadEverything> read = readEverything(*bench.client, info);
     QVERIFY(read.ok());
     const WritePlan plan = planFromProject(read->project, read->project);
     bench.commandsSent();
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY2(report.ok(), qPrintable(report.error().message));
     QCOMPARE(report->count(WriteState::Written), 0);
     QCOMPARE(report->count(WriteState::Unchanged), report->total());
@@ -115,7 +115,7 @@ void TestReadEverything::projectWrittenBackIsUnchangedEverywhere() {
 void TestReadEverything::editedProjectWritesOnlyWhatDiffers() {
     SimBench bench;
     const DeviceInfo info = bench.info();
-    const Result<ReadEverything> read = readEverything(*bench.camcon, info);
+    const Result<ReadEverything> read = readEverything(*bench.client, info);
     QVERIFY(read.ok());
     Project edited = read->project;
     edited.programs[1].tracks[4] = Track{4, {{10, 20}}};
@@ -124,7 +124,7 @@ void TestReadEverything::editedProjectWritesOnlyWhatDiffers() {
     // Saved without user numbers: they stay as on the device.
     for (User& user : edited.users) user.number.clear();
     const WritePlan plan = planFromProject(edited, read->project);
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY2(report.ok(), qPrintable(report.error().message));
     QCOMPARE(report->count(WriteState::Written), 3);
     QVERIFY(report->complete());
@@ -150,7 +150,7 @@ void TestReadEverything::projectForBiggerDeviceIsRefusedBeforeAnyCommand() {
     onDevice.readAt.parts.insert(ProjectPart::Device, QDateTime::currentDateTimeUtc());
     bench.commandsSent();
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, planFromProject(big, onDevice));
+        writeItems(*bench.client, info, planFromProject(big, onDevice));
     QVERIFY(!report.ok());
     QVERIFY2(report.error().message.contains(QLatin1String("outputs 33..96")),
              qPrintable(report.error().message));
@@ -162,7 +162,7 @@ void TestReadEverything::cancelStopsTheRead() {
     SimBench bench;
     int asked = 0;
     const Result<ReadEverything> read = readEverything(
-        *bench.camcon, bench.info(), UseCaseProgress({}, [&asked] { return ++asked > 3; }));
+        *bench.client, bench.info(), UseCaseProgress({}, [&asked] { return ++asked > 3; }));
     QVERIFY(!read.ok());
     QCOMPARE(read.error().kind, ErrorKind::Cancelled);
 }

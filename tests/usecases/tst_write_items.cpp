@@ -74,7 +74,7 @@ void TestWriteItems::overlappingCamsAreRefusedBeforeAnyCommand() {
     const DeviceInfo info = bench.info();
     bench.commandsSent();
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(1, {{10, 90}, {80, 270}})));
+        writeItems(*bench.client, info, trackPlan(0, track(1, {{10, 90}, {80, 270}})));
     QVERIFY(!report.ok());
     QCOMPARE(report.error().kind, ErrorKind::InvalidData);
     QVERIFY2(report.error().message.contains(QLatin1String("overlaps")),
@@ -92,7 +92,7 @@ void TestWriteItems::fileForBiggerDeviceIsRefusedNamingOutputs() {
     for (int output = 1; output <= 96; ++output)
         plan.tracks << TrackWrite{0, track(output, {{output * 100, output * 100 + 50}}), {}};
     bench.commandsSent();
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(!report.ok());
     QCOMPARE(report.error().kind, ErrorKind::InvalidData);
     const QString message = report.error().message;
@@ -113,7 +113,7 @@ void TestWriteItems::refusedInsertAfterDeleteIsUndoneAndReported() {
     const DeviceInfo info = bench.info();
     bench.injections().refuse(0, '!', "NINS", kEepromFull);
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(1, {{10, 90}, {200, 300}})));
+        writeItems(*bench.client, info, trackPlan(0, track(1, {{10, 90}, {200, 300}})));
     QVERIFY2(report.ok(), qPrintable(report.error().message));
     const ItemOutcome<Track>& outcome = report->tracks.at(0);
     QCOMPARE(outcome.state, WriteState::Failed);
@@ -137,7 +137,7 @@ void TestWriteItems::refusedUndoReportsTheTrackAsItIs() {
     bench.injections().refuse(0, '!', "NINS", kEepromFull);
     bench.injections().refuse(0, '!', "NINS", kEepromFull);
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(1, {{10, 90}, {200, 300}})));
+        writeItems(*bench.client, info, trackPlan(0, track(1, {{10, 90}, {200, 300}})));
     QVERIFY(report.ok());
     const ItemOutcome<Track>& outcome = report->tracks.at(0);
     QCOMPARE(outcome.state, WriteState::ChangedThoughFailed);
@@ -159,7 +159,7 @@ void TestWriteItems::refusedFirstInsertLeavesOldCamsUntouched() {
     bench.injections().refuse(0, '!', "NINS", kRefused);
     bench.commandsSent();
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(1, {{10, 90}, {300, 350}})));
+        writeItems(*bench.client, info, trackPlan(0, track(1, {{10, 90}, {300, 350}})));
     QVERIFY(report.ok());
     QCOMPARE(report->tracks.at(0).state, WriteState::Failed);
     QCOMPARE(bench.device().state().cams.track(0, 0), kDemoOutput1);
@@ -175,7 +175,7 @@ void TestWriteItems::eepromFullDefersInsertsUntilDeletesMadeRoom() {
     // 180..270 goes, 300..350 comes: the insert first fails for want of
     // room, succeeds after the delete.
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(1, {{10, 90}, {300, 350}})));
+        writeItems(*bench.client, info, trackPlan(0, track(1, {{10, 90}, {300, 350}})));
     QVERIFY(report.ok());
     QCOMPARE(report->tracks.at(0).state, WriteState::Written);
     QCOMPARE(bench.device().state().cams.track(0, 0), (QList<Cam>{{10, 90}, {300, 350}}));
@@ -186,7 +186,7 @@ void TestWriteItems::unchangedTrackSendsNothing() {
     const DeviceInfo info = bench.info();
     bench.commandsSent();
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(1, {{180, 270}, {10, 90}})));
+        writeItems(*bench.client, info, trackPlan(0, track(1, {{180, 270}, {10, 90}})));
     QVERIFY(report.ok());
     QCOMPARE(report->tracks.at(0).state, WriteState::Unchanged);
     QCOMPARE(bench.commandsSent(), 0);
@@ -200,7 +200,7 @@ void TestWriteItems::emptyTrackOfUnreadProgramIsUnchangedNotWritten() {
     WritePlan plan;
     for (int output = 1; output <= 4; ++output) plan.tracks << TrackWrite{7, track(output, {}), {}};
     bench.commandsSent();
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(report.ok());
     QCOMPARE(report->count(WriteState::Written), 0);
     QCOMPARE(report->count(WriteState::Unchanged), 4);
@@ -211,7 +211,7 @@ void TestWriteItems::changedTrackReportsWritten() {
     SimBench bench;
     const DeviceInfo info = bench.info();
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(3, track(20, {{5, 50}, {300, 2}})));
+        writeItems(*bench.client, info, trackPlan(3, track(20, {{5, 50}, {300, 2}})));
     QVERIFY(report.ok());
     QCOMPARE(report->tracks.at(0).state, WriteState::Written);
     QCOMPARE(report->tracks.at(0).label, QStringLiteral("program 3, output 20"));
@@ -225,7 +225,7 @@ void TestWriteItems::deviceErrorTextSaysWhatOverlapMeans() {
     const DeviceInfo info = bench.info();
     bench.injections().refuse(0, '!', "NINS", kRefused);
     const Result<WriteReport> report =
-        writeItems(*bench.camcon, info, trackPlan(0, track(4, {{100, 120}})));
+        writeItems(*bench.client, info, trackPlan(0, track(4, {{100, 120}})));
     QVERIFY(report.ok());
     const QString message = report->tracks.at(0).error.message;
     QVERIFY2(message.contains(QLatin1String("the manual gives no meaning for error -1")) ||
@@ -249,7 +249,7 @@ void TestWriteItems::deadTimesNamesAndPlcAreWrittenOrUnchanged() {
     network.value = 2500;
     network.symbols[0] = 0x0107;
     plan.plcNetworks << PlcWrite{network, {}};
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY2(report.ok(), qPrintable(report.error().message));
     QCOMPARE(report->deadTimes.at(0).state, WriteState::Unchanged);
     QCOMPARE(report->deadTimes.at(1).state, WriteState::Written);
@@ -267,7 +267,7 @@ void TestWriteItems::deadTimesNamesAndPlcAreWrittenOrUnchanged() {
 void TestWriteItems::settingsAreWrittenAgainstTheValuesPassedIn() {
     SimBench bench;
     const DeviceInfo info = bench.info();
-    const Result<SystemSettings> onDevice = bench.camcon->readSettings();
+    const Result<SystemSettings> onDevice = bench.client->readSettings();
     QVERIFY(onDevice.ok());
     SystemSettings wanted = *onDevice;
     wanted.insert(QStringLiteral("cableLength"),
@@ -276,7 +276,7 @@ void TestWriteItems::settingsAreWrittenAgainstTheValuesPassedIn() {
     plan.settings = settingsGroups(wanted);
     plan.settingsOnDevice = *onDevice;
     bench.injections().clearLog();
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY2(report.ok(), qPrintable(report.error().message));
     QCOMPARE(report->count(WriteState::Written), 1);
     QCOMPARE(report->count(WriteState::Unchanged), plan.settings.size() - 1);
@@ -284,14 +284,14 @@ void TestWriteItems::settingsAreWrittenAgainstTheValuesPassedIn() {
     for (const SimInjections::Received& received : bench.injections().received())
         QVERIFY2(received.kind == '!', received.name.constData());
     QCOMPARE(bench.injections().commands(), 1);
-    const Result<QVariant> cable = bench.camcon->readSetting(QStringLiteral("cableLength"));
+    const Result<QVariant> cable = bench.client->readSetting(QStringLiteral("cableLength"));
     QCOMPARE(cable->toLongLong(), wanted.value(QStringLiteral("cableLength")).toLongLong());
 }
 
 void TestWriteItems::readOnlySettingThatDiffersIsRefused() {
     SimBench bench;
     const DeviceInfo info = bench.info();
-    const Result<SystemSettings> onDevice = bench.camcon->readSettings();
+    const Result<SystemSettings> onDevice = bench.client->readSettings();
     QVERIFY(onDevice.ok());
     SystemSettings wanted;
     wanted.insert(QStringLiteral("specialEncoder.type"),
@@ -299,7 +299,7 @@ void TestWriteItems::readOnlySettingThatDiffersIsRefused() {
     WritePlan plan;
     plan.settings = settingsGroups(wanted);
     plan.settingsOnDevice = *onDevice;
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(!report.ok());
     QVERIFY2(report.error().message.contains(QLatin1String("read-only")),
              qPrintable(report.error().message));
@@ -314,7 +314,7 @@ void TestWriteItems::duplicateUserNumberIsRefused() {
     WritePlan plan;
     plan.users << UserWrite{{}, user};
     bench.commandsSent();
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(!report.ok());
     QVERIFY2(report.error().message.contains(QLatin1String("same user number")),
              qPrintable(report.error().message));
@@ -327,17 +327,17 @@ void TestWriteItems::userWithoutNumberKeepsTheDevicesNumber() {
     // and keeps the number the device has for it.
     SimBench bench;
     const DeviceInfo info = bench.info();
-    const QList<User> users = *bench.camcon->readUsers();
+    const QList<User> users = *bench.client->readUsers();
     User changed = users.at(1);
     QCOMPARE(changed.name, QStringLiteral("Operator"));
     changed.number.clear();
     changed.rights = 0x03;
     WritePlan plan;
     plan.users << UserWrite{{}, changed};
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY2(report.ok(), qPrintable(report.error().message));
     QCOMPARE(report->users.at(0).state, WriteState::Written);
-    const QList<User> after = *bench.camcon->readUsers();
+    const QList<User> after = *bench.client->readUsers();
     QCOMPARE(after.size(), 2);
     QCOMPARE(after.at(1).number, QStringLiteral("1234"));
     QCOMPARE(after.at(1).rights, 0x03u);
@@ -351,7 +351,7 @@ void TestWriteItems::plcNetworkBeyondTheDevicesCountIsRefused() {
     network.number = 40;  // the demo device has 32 flags
     WritePlan plan;
     plan.plcNetworks << PlcWrite{network, {}};
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(!report.ok());
     QVERIFY2(report.error().message.contains(QLatin1String("PLC network M40")),
              qPrintable(report.error().message));
@@ -365,7 +365,7 @@ void TestWriteItems::cancelLeavesTheRestNotSent() {
         plan.deadTimes << DeadTimeWrite{output, 100 + output, 0};
     int asked = 0;
     const UseCaseProgress progress({}, [&asked] { return ++asked > 2; });
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan, progress);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan, progress);
     QVERIFY(report.ok());
     QCOMPARE(report->deadTimes.at(0).state, WriteState::Written);
     QCOMPARE(report->deadTimes.at(1).state, WriteState::NotSent);
@@ -382,7 +382,7 @@ void TestWriteItems::deadDeviceStopsTheRunAndSaysSo() {
                      << NameWrite{9, QStringLiteral("B"), QString()}
                      << NameWrite{10, QStringLiteral("C"), QString()};
     bench.injections().setDead(0, true);
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(report.ok());
     QCOMPARE(report->outputNames.at(0).state, WriteState::Unknown);
     QCOMPARE(report->outputNames.at(1).state, WriteState::NotSent);
@@ -397,7 +397,7 @@ void TestWriteItems::summaryCountsAddUp() {
     WritePlan plan;
     for (int output = 1; output <= 32; ++output)
         plan.deadTimes << DeadTimeWrite{output, output == 3 ? 77 : 0, std::nullopt};
-    const Result<WriteReport> report = writeItems(*bench.camcon, info, plan);
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
     QVERIFY(report.ok());
     // The demo device: 2.5 ms on 1, 12.0 ms on 2, 999.9 ms on 4.
     QCOMPARE(report->total(), 32);
