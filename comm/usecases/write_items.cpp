@@ -161,6 +161,13 @@ private:
             return outcome;
         }
         outcome.error = written.error();
+        if (written.error().kind == ErrorKind::NotUnderstood) {
+            // ":Z": the device does not know the command, so it did nothing.
+            outcome.state = WriteState::Failed;
+            outcome.actual = *before;
+            outcome.actualText = ops.text(*before);
+            return outcome;
+        }
         const Result<T> after = ops.read();
         if (!after) {
             outcome.state = WriteState::Unknown;
@@ -247,15 +254,30 @@ private:
 
     ItemOutcome<Track> writeTrack(const TrackWrite& write) {
         const int output = write.wanted.output;
+        std::optional<Track> found;  // the track as read before the write
         ValueOps<Track> ops;
-        ops.read = [this, &write, output] { return m_connection.readTrack(write.program, output); };
+        ops.read = [this, &write, output, &found]() -> Result<Track> {
+            Result<Track> read = m_connection.readTrack(write.program, output);
+            if (read && !found) found = *read;
+            return read;
+        };
         ops.write = [this, &write](const Track& before) {
             return m_connection.writeTrackFrom(write.program, write.wanted, before);
         };
         ops.same = sameCams;
         ops.text = [](const Track& track) { return camsText(normalised(track)); };
         // Always read first: the differing cams are what is sent.
-        return writeItem<Track>(trackLabel(write.program, output), write.wanted, std::nullopt, ops);
+        ItemOutcome<Track> outcome =
+            writeItem<Track>(trackLabel(write.program, output), write.wanted, std::nullopt, ops);
+        if (write.believed && found && !sameCams(*write.believed, *found)) {
+            // Changed on the device since the caller read it: say so.
+            const QString note =
+                QStringLiteral("the device held %1, not %2 as last read")
+                    .arg(camsText(normalised(*found)), camsText(normalised(*write.believed)));
+            outcome.note =
+                outcome.note.isEmpty() ? note : outcome.note + QStringLiteral("; ") + note;
+        }
+        return outcome;
     }
 
     // Dead times are read for all outputs up to the highest one at once:

@@ -123,7 +123,9 @@ void TestE2eCli::camsWriteForBiggerDeviceSendsNoWriteCommand() {
                QByteArray::number(output * 100 + 90) + "\n";
     const QString file = session.path(QStringLiteral("big.csv"));
     QVERIFY(writeBytes(file, csv));
-    const CliRun run = session.cli({"cams", "write", "--program", "0", file});
+    // A generous reply timeout: the logging simulator may be slow to start
+    // under a sanitizer (a bound, not a speed check).
+    const CliRun run = session.cli({"--timeout", "2000", "cams", "write", "--program", "0", file});
     VERIFY_EXIT(run, 4);
     QVERIFY2(run.err.contains(QLatin1String("outputs 33..96 do not exist on the device (it has "
                                             "1..32)")),
@@ -153,7 +155,7 @@ void TestE2eCli::projectReadThenWriteChangesNothing() {
     SimSession session;
     START_SIM(session, {"--verbose"});
     const QString file = session.path(QStringLiteral("device.cambench"));
-    const CliRun read = session.cli({"project", "read", "-o", file});
+    const CliRun read = session.cli({"--timeout", "2000", "project", "read", "-o", file});
     VERIFY_EXIT(read, 0);
     // The demo device's own odd value is noted, and saved all the same.
     QVERIFY2(read.err.contains(QLatin1String("specialEncoder.incremental.divider")),
@@ -168,7 +170,7 @@ void TestE2eCli::projectReadThenWriteChangesNothing() {
              16);
     QVERIFY(!readBytes(file).contains("4711"));  // user numbers only when asked for
     const qsizetype logBefore = readBytes(session.path(QStringLiteral("sim-stderr.log"))).size();
-    const CliRun write = session.cli({"project", "write", file});
+    const CliRun write = session.cli({"--timeout", "2000", "project", "write", file});
     VERIFY_EXIT(write, 0);
     QVERIFY2(write.out.contains(QLatin1String(" 0 written, ")), qPrintable(write.out));
     const QByteArray log = readBytes(session.path(QStringLiteral("sim-stderr.log"))).mid(logBefore);

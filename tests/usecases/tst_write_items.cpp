@@ -50,6 +50,7 @@ private Q_SLOTS:
     void unchangedTrackSendsNothing();
     void emptyTrackOfUnreadProgramIsUnchangedNotWritten();
     void changedTrackReportsWritten();
+    void trackChangedOnTheDeviceSinceReadIsNoted();
     void deviceErrorTextSaysWhatOverlapMeans();
     void deadTimesNamesAndPlcAreWrittenOrUnchanged();
     void settingsAreWrittenAgainstTheValuesPassedIn();
@@ -216,6 +217,19 @@ void TestWriteItems::changedTrackReportsWritten() {
     QCOMPARE(report->tracks.at(0).state, WriteState::Written);
     QCOMPARE(report->tracks.at(0).label, QStringLiteral("program 3, output 20"));
     QCOMPARE(bench.device().state().cams.track(3, 19), (QList<Cam>{{5, 50}, {300, 2}}));
+}
+
+void TestWriteItems::trackChangedOnTheDeviceSinceReadIsNoted() {
+    SimBench bench;
+    const DeviceInfo info = bench.info();
+    WritePlan plan;
+    plan.tracks << TrackWrite{0, track(1, {{10, 90}, {300, 350}}), track(1, {{10, 90}})};
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
+    QVERIFY(report.ok());
+    QCOMPARE(report->tracks.at(0).state, WriteState::Written);
+    QCOMPARE(report->lines().at(0).text,
+             QStringLiteral("program 0, output 1: written (the device held 10..90, 180..270, not "
+                            "10..90 as last read)"));
 }
 
 void TestWriteItems::deviceErrorTextSaysWhatOverlapMeans() {
