@@ -109,13 +109,13 @@ public:
         m_total = m_plan.itemCount();
         for (const SettingsWrite& group : m_plan.settings) report.settings << writeSettings(group);
         for (const NameWrite& name : m_plan.programNames)
-            report.programNames << writeProgramName(name);
+            report.programNames << writeName(name, true);
         for (const TrackWrite& track : m_plan.tracks) report.tracks << writeTrack(track);
         fillDeadTimeBeliefs();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
             report.deadTimes << writeDeadTime(deadTime);
         for (const NameWrite& name : m_plan.outputNames)
-            report.outputNames << writeOutputName(name);
+            report.outputNames << writeName(name, false);
         for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
         for (const PlcWrite& network : m_plan.plcNetworks)
             report.plcNetworks << writePlcNetwork(network);
@@ -161,6 +161,13 @@ private:
             return outcome;
         }
         outcome.error = written.error();
+        if (written.error().kind == ErrorKind::NotUnderstood) {
+            // ":Z": the device does not know the command, so it did nothing.
+            outcome.state = WriteState::Failed;
+            outcome.actual = *before;
+            outcome.actualText = ops.text(*before);
+            return outcome;
+        }
         const Result<T> after = ops.read();
         if (!after) {
             outcome.state = WriteState::Unknown;
@@ -227,28 +234,50 @@ private:
                                          onlyKeys(m_settings, keys), ops);
     }
 
-    ItemOutcome<QString> writeProgramName(const NameWrite& name) {
+    // Program names (0-based) and output names (1-based) take the same course.
+    ItemOutcome<QString> writeName(const NameWrite& name, bool program) {
         ValueOps<QString> ops;
-        ops.read = [this, &name] { return m_connection.readProgramName(name.number); };
-        ops.write = [this, &name](const QString&) {
-            return m_connection.writeProgramName(name.number, name.wanted);
+        ops.read = [this, &name, program] {
+            return program ? m_connection.readProgramName(name.number)
+                           : m_connection.readOutputName(name.number);
+        };
+        ops.write = [this, &name, program](const QString&) {
+            return program ? m_connection.writeProgramName(name.number, name.wanted)
+                           : m_connection.writeOutputName(name.number, name.wanted);
         };
         ops.same = [](const QString& a, const QString& b) { return a == b; };
         ops.text = nameText;
-        return writeItem<QString>(programNameLabel(name.number), name.wanted, name.believed, ops);
+        const QString label =
+            program ? programNameLabel(name.number) : outputNameLabel(name.number);
+        return writeItem<QString>(label, name.wanted, name.believed, ops);
     }
 
     ItemOutcome<Track> writeTrack(const TrackWrite& write) {
         const int output = write.wanted.output;
+        std::optional<Track> found;  // the track as read before the write
         ValueOps<Track> ops;
-        ops.read = [this, &write, output] { return m_connection.readTrack(write.program, output); };
+        ops.read = [this, &write, output, &found]() -> Result<Track> {
+            Result<Track> read = m_connection.readTrack(write.program, output);
+            if (read && !found) found = *read;
+            return read;
+        };
         ops.write = [this, &write](const Track& before) {
             return m_connection.writeTrackFrom(write.program, write.wanted, before);
         };
         ops.same = sameCams;
         ops.text = [](const Track& track) { return camsText(normalised(track)); };
         // Always read first: the differing cams are what is sent.
-        return writeItem<Track>(trackLabel(write.program, output), write.wanted, std::nullopt, ops);
+        ItemOutcome<Track> outcome =
+            writeItem<Track>(trackLabel(write.program, output), write.wanted, std::nullopt, ops);
+        if (write.believed && found && !sameCams(*write.believed, *found)) {
+            // Changed on the device since the caller read it: say so.
+            const QString note =
+                QStringLiteral("the device held %1, not %2 as last read")
+                    .arg(camsText(normalised(*found)), camsText(normalised(*write.believed)));
+            outcome.note =
+                outcome.note.isEmpty() ? note : outcome.note + QStringLiteral("; ") + note;
+        }
+        return outcome;
     }
 
     // Dead times are read for all outputs up to the highest one at once:
@@ -278,17 +307,6 @@ private:
         std::optional<qint32> before = write.believed;
         if (!before && m_deadTimes) before = m_deadTimes->value(write.output, 0);
         return writeItem<qint32>(deadTimeLabel(write.output), write.wanted, before, ops);
-    }
-
-    ItemOutcome<QString> writeOutputName(const NameWrite& name) {
-        ValueOps<QString> ops;
-        ops.read = [this, &name] { return m_connection.readOutputName(name.number); };
-        ops.write = [this, &name](const QString&) {
-            return m_connection.writeOutputName(name.number, name.wanted);
-        };
-        ops.same = [](const QString& a, const QString& b) { return a == b; };
-        ops.text = nameText;
-        return writeItem<QString>(outputNameLabel(name.number), name.wanted, name.believed, ops);
     }
 
     ItemOutcome<std::optional<User>> writeUser(const UserWrite& write) {

@@ -37,6 +37,7 @@ QString lineText(const ItemOutcome<T>& outcome) {
             break;
     }
     if (!outcome.error.message.isEmpty()) text += QStringLiteral(": ") + outcome.error.message;
+    if (!outcome.note.isEmpty()) text += QStringLiteral(" (%1)").arg(outcome.note);
     return text;
 }
 

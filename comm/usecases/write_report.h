@@ -42,8 +42,9 @@ struct ItemOutcome {
     std::optional<T> actual;
     // `actual` for a person: "10..90, 180..270", "\"Pusher\"", ...
     QString actualText;
-    // Written or unchanged only after a reply was lost and the value was
-    // read back: says so.
+    // Something a person should know besides the state: written only as
+    // read back after an error reply, or a track that had changed on the
+    // device since the caller read it.
     QString note;
 
     bool ok() const { return state == WriteState::Written || state == WriteState::Unchanged; }

@@ -125,11 +125,7 @@ Status saveLineManifest(const QString& path, const LineManifest& manifest) {
 }
 
 Result<LineManifest> loadLineManifest(const QString& path) {
-    const Result<QByteArray> bytes = readFileBytes(path);
-    if (!bytes) return bytes.error();
-    Result<LineManifest> manifest = lineManifestFromJson(*bytes);
-    if (!manifest) return inFile(path, manifest.error());
-    return manifest;
+    return loadFileWith<LineManifest>(path, lineManifestFromJson);
 }
 
 QString sha256Hex(const QByteArray& bytes) {

@@ -129,11 +129,7 @@ Status savePlcFile(const QString& path, const QList<PlcNetwork>& networks) {
 }
 
 Result<QList<PlcNetwork>> loadPlcFile(const QString& path) {
-    const Result<QByteArray> bytes = readFileBytes(path);
-    if (!bytes) return bytes.error();
-    Result<QList<PlcNetwork>> networks = plcFileFromJson(*bytes);
-    if (!networks) return inFile(path, networks.error());
-    return networks;
+    return loadFileWith<QList<PlcNetwork>>(path, plcFileFromJson);
 }
 
 }  // namespace cambench

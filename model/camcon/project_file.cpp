@@ -341,11 +341,7 @@ Status saveProject(const QString& path, const Project& project, const ProjectSav
 }
 
 Result<Project> loadProject(const QString& path) {
-    const Result<QByteArray> bytes = readFileBytes(path);
-    if (!bytes) return bytes.error();
-    Result<Project> project = projectFromJson(*bytes);
-    if (!project) return inFile(path, project.error());
-    return project;
+    return loadFileWith<Project>(path, projectFromJson);
 }
 
 }  // namespace cambench

@@ -74,11 +74,7 @@ Status saveSettingsFile(const QString& path, const SystemSettings& settings) {
 }
 
 Result<SystemSettings> loadSettingsFile(const QString& path) {
-    const Result<QByteArray> bytes = readFileBytes(path);
-    if (!bytes) return bytes.error();
-    Result<SystemSettings> settings = settingsFileFromJson(*bytes);
-    if (!settings) return inFile(path, settings.error());
-    return settings;
+    return loadFileWith<SystemSettings>(path, settingsFileFromJson);
 }
 
 }  // namespace cambench

@@ -105,7 +105,7 @@ public:
                                     reply.error());
             if (error.kind == ErrorKind::DeviceError && error.deviceCode == -1) {
                 error.message += QStringLiteral(
-                    " On an insert this means that the cam overlaps another cam of the track "
+                    " On an insert the usual cause is a cam that overlaps another cam of the track "
                     "or lies outside the device's range.");
             }
             return error;
