@@ -2,6 +2,7 @@
 
 #include "model_log.h"
 
+#include <QCoreApplication>
 #include <QSaveFile>
 
 namespace cambench {
@@ -9,8 +10,9 @@ namespace cambench {
 namespace {
 
 Error writeError(const QString& path, const QString& why) {
-    return Error::usage(
-        QStringLiteral("Could not write %1: %2. The file was not changed.").arg(path, why));
+    return Error::usage(QCoreApplication::translate(
+                            "cambench::model", "Could not write %1: %2. The file was not changed.")
+                            .arg(path, why));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "json_reader.h"
 
+#include <QCoreApplication>
 #include <QJsonDocument>
 #include <QJsonParseError>
 
@@ -21,22 +22,28 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         return Error::invalidData(
-            QStringLiteral("This is not a CamBench %1: it is not valid JSON (line %2: %3). "
-                           "The file may be truncated or damaged.")
+            QCoreApplication::translate(
+                "cambench::model",
+                "This is not a CamBench %1: it is not valid JSON (line %2: %3). "
+                "The file may be truncated or damaged.")
                 .arg(noun)
                 .arg(lineAt(bytes, parseError.offset))
                 .arg(parseError.errorString()));
     }
     if (!document.isObject()) {
         return Error::invalidData(
-            QStringLiteral("This is not a CamBench %1: the JSON holds no object.").arg(noun));
+            QCoreApplication::translate("cambench::model",
+                                        "This is not a CamBench %1: the JSON holds no object.")
+                .arg(noun));
     }
     const QJsonObject root = document.object();
     const QString expected = QString::fromLatin1(type.format);
     const QJsonValue format = root.value(QStringLiteral("format"));
     if (format.toString() != expected) {
         return Error::invalidData(
-            QStringLiteral("This is not a CamBench %1: its \"format\" is %2, expected \"%3\".")
+            QCoreApplication::translate(
+                "cambench::model",
+                "This is not a CamBench %1: its \"format\" is %2, expected \"%3\".")
                 .arg(noun,
                      format.isString() ? QLatin1Char('"') + format.toString() + QLatin1Char('"')
                                        : QStringLiteral("missing"),
@@ -45,12 +52,15 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
     JsonReader reader;
     const qint64 version =
         reader.integer(root, QString(), QStringLiteral("version"),
-                       QStringLiteral("the format version"), 1, std::numeric_limits<qint32>::max());
+                       QCoreApplication::translate("cambench::model", "the format version"), 1,
+                       std::numeric_limits<qint32>::max());
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     if (version > type.version) {
         return Error::invalidData(
-            QStringLiteral("This %1 was written by a newer CamBench (format version %2); this "
-                           "CamBench reads version %3. Open it with a newer CamBench.")
+            QCoreApplication::translate(
+                "cambench::model",
+                "This %1 was written by a newer CamBench (format version %2); this "
+                "CamBench reads version %3. Open it with a newer CamBench.")
                 .arg(noun)
                 .arg(version)
                 .arg(type.version));

@@ -1,5 +1,7 @@
 #include "json_reader.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 
 namespace cambench {
@@ -39,7 +41,8 @@ qint64 JsonReader::integerValue(const QJsonValue& value, const QString& path, co
     const double d = value.toDouble();
     if (!value.isDouble() || !std::isfinite(d) || d != std::trunc(d) ||
         std::abs(d) > kExactIntegerLimit) {
-        fail(path, QStringLiteral("%1 is not an integer").arg(what));
+        fail(path,
+             QCoreApplication::translate("cambench::model", "%1 is not an integer").arg(what));
         return 0;
     }
     const qint64 v = qint64(d);
@@ -61,7 +64,8 @@ QString JsonReader::string(const QJsonObject& object, const QString& path, const
     if (!has(object, path, key)) return {};
     const QJsonValue value = object.value(key);
     if (!value.isString()) {
-        fail(member(path, key), QStringLiteral("%1 is not a string").arg(what));
+        fail(member(path, key),
+             QCoreApplication::translate("cambench::model", "%1 is not a string").arg(what));
         return {};
     }
     return value.toString();
@@ -72,7 +76,8 @@ bool JsonReader::boolean(const QJsonObject& object, const QString& path, const Q
     if (!has(object, path, key)) return false;
     const QJsonValue value = object.value(key);
     if (!value.isBool()) {
-        fail(member(path, key), QStringLiteral("%1 is not true or false").arg(what));
+        fail(member(path, key),
+             QCoreApplication::translate("cambench::model", "%1 is not true or false").arg(what));
         return false;
     }
     return value.toBool();
@@ -91,7 +96,7 @@ QJsonObject JsonReader::object(const QJsonObject& object, const QString& path, c
 QJsonObject JsonReader::objectValue(const QJsonValue& value, const QString& path) {
     if (failed()) return {};
     if (!value.isObject()) {
-        fail(path, QStringLiteral("a JSON object is expected"));
+        fail(path, QCoreApplication::translate("cambench::model", "a JSON object is expected"));
         return {};
     }
     return value.toObject();
@@ -100,7 +105,7 @@ QJsonObject JsonReader::objectValue(const QJsonValue& value, const QString& path
 QJsonArray JsonReader::arrayValue(const QJsonValue& value, const QString& path) {
     if (failed()) return {};
     if (!value.isArray()) {
-        fail(path, QStringLiteral("a JSON array is expected"));
+        fail(path, QCoreApplication::translate("cambench::model", "a JSON array is expected"));
         return {};
     }
     return value.toArray();

@@ -1,30 +1,48 @@
 #include "camcon_device.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm {
 
 QString CamConDevice::lacks(CamConCapability capability) const {
-    const QString ascii = QStringLiteral("the CamCon ASCII protocol (--protocol standard or multiuser)");
-    const QString table =
-        QStringLiteral("the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)");
+    const QString ascii = QCoreApplication::translate(
+        "cambench::comm", "the CamCon ASCII protocol (--protocol standard or multiuser)");
+    const QString table = QCoreApplication::translate(
+        "cambench::comm", "the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)");
     switch (capability) {
-    case CamConCapability::Users:
-        return QStringLiteral("Users and rights exist only in %1.").arg(ascii);
-    case CamConCapability::EepromBackup:
-        return QStringLiteral("EEPROM backup and restore exist only in %1.").arg(ascii);
-    case CamConCapability::BusScan:
-        return QStringLiteral("A bus scan needs the Multiuser protocol (--protocol multiuser).");
-    case CamConCapability::Terminal:
-        return QStringLiteral("Typed requests exist only in %1.").arg(ascii);
-    case CamConCapability::OutputNames:
-        return QStringLiteral("Output and program names exist only in %1.").arg(ascii);
-    case CamConCapability::PlcNetworks:
-        return QStringLiteral("This protocol does not reach the PLC logic module.");
-    case CamConCapability::DeadTimeModes:
-        return QStringLiteral("Dead-time modes exist only in %1.").arg(table);
-    case CamConCapability::AnalogueCams:
-        return QStringLiteral("Analogue cams exist only in %1.").arg(table);
-    case CamConCapability::EepromLock:
-        return QStringLiteral("The EEPROM lock exists only in %1.").arg(table);
+        case CamConCapability::Users:
+            return QCoreApplication::translate("cambench::comm",
+                                               "Users and rights exist only in %1.")
+                .arg(ascii);
+        case CamConCapability::EepromBackup:
+            return QCoreApplication::translate("cambench::comm",
+                                               "EEPROM backup and restore exist only in %1.")
+                .arg(ascii);
+        case CamConCapability::BusScan:
+            return QCoreApplication::translate(
+                "cambench::comm",
+                "A bus scan needs the Multiuser protocol (--protocol multiuser).");
+        case CamConCapability::Terminal:
+            return QCoreApplication::translate("cambench::comm", "Typed requests exist only in %1.")
+                .arg(ascii);
+        case CamConCapability::OutputNames:
+            return QCoreApplication::translate("cambench::comm",
+                                               "Output and program names exist only in %1.")
+                .arg(ascii);
+        case CamConCapability::PlcNetworks:
+            return QCoreApplication::translate(
+                "cambench::comm", "This protocol does not reach the PLC logic module.");
+        case CamConCapability::DeadTimeModes:
+            return QCoreApplication::translate("cambench::comm",
+                                               "Dead-time modes exist only in %1.")
+                .arg(table);
+        case CamConCapability::AnalogueCams:
+            return QCoreApplication::translate("cambench::comm", "Analogue cams exist only in %1.")
+                .arg(table);
+        case CamConCapability::EepromLock:
+            return QCoreApplication::translate("cambench::comm",
+                                               "The EEPROM lock exists only in %1.")
+                .arg(table);
     }
     return {};
 }

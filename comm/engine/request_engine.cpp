@@ -1,5 +1,7 @@
 #include "request_engine.h"
 
+#include <QCoreApplication>
+
 #include "engine_logging.h"
 
 #include <algorithm>
@@ -19,8 +21,7 @@ constexpr int kMaxResends = 2;
 
 }  // namespace
 
-RequestEngine::RequestEngine(Transport& transport, FramingBackend& backend,
-                             EngineSettings settings)
+RequestEngine::RequestEngine(Transport& transport, FramingBackend& backend, EngineSettings settings)
     : m_transport(transport), m_backend(backend), m_settings(settings) {
     m_clock.start();
 }
@@ -70,27 +71,30 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         m_lastAttempts = attempt;
         if (attempt > 1) {
             ++m_stats.retries;
-            qCDebug(commLinkLog) << "retrying" << request.label << "attempt" << attempt
-                                 << "after" << problem;
+            qCDebug(commLinkLog) << "retrying" << request.label << "attempt" << attempt << "after"
+                                 << problem;
             report(m_backend.resetInput(), false);
             m_transport.discardInput();
         }
         Result<Attempt> result = runAttempt(request, attempt);
         if (!result) return result.error();
         switch (result->outcome) {
-        case Outcome::Answer: return result->answer;
-        case Outcome::Failed: problem = result->problem; break;
-        case Outcome::Resend:
-            problem = result->problem;
-            if (resends++ < kMaxResends) {
-                // Not executed: the same request under a new sequence number.
-                qCDebug(commLinkLog) << "resending" << request.label << "as a new request:"
-                                     << problem;
-                report(m_backend.resetInput(), false);
-                m_backend.beginRequest(request);
-                --attempt;
-            }
-            break;
+            case Outcome::Answer:
+                return result->answer;
+            case Outcome::Failed:
+                problem = result->problem;
+                break;
+            case Outcome::Resend:
+                problem = result->problem;
+                if (resends++ < kMaxResends) {
+                    // Not executed: the same request under a new sequence number.
+                    qCDebug(commLinkLog)
+                        << "resending" << request.label << "as a new request:" << problem;
+                    report(m_backend.resetInput(), false);
+                    m_backend.beginRequest(request);
+                    --attempt;
+                }
+                break;
         }
     }
     const QString message = failureMessage(request, attempts, attemptTimeoutMs(request), problem);
@@ -102,8 +106,8 @@ Result<RequestEngine::Attempt> RequestEngine::runAttempt(const Request& request,
     m_sent = false;
     Attempt result;
     bool decided = false;
-    const Status applied = apply(m_backend.startAttempt(request, attempt, now()), request, result,
-                                 decided);
+    const Status applied =
+        apply(m_backend.startAttempt(request, attempt, now()), request, result, decided);
     if (!applied) return applied.error();
     if (decided) return result;
     return awaitAnswer(request, attemptTimeoutMs(request));
@@ -146,7 +150,8 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
             if (decided) return result;
         }
         if (!m_sent && now() >= sendLimit) {
-            result.problem = QStringLiteral("the request could not be sent");
+            result.problem =
+                QCoreApplication::translate("cambench::comm", "the request could not be sent");
             return result;
         }
         if (!m_sent || now() < deadline) continue;
@@ -166,7 +171,8 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
                 result.answer = probed->answer;
                 return result;
             }
-            result.problem = QStringLiteral("no reply, though the device answered %1")
+            result.problem = QCoreApplication::translate("cambench::comm",
+                                                         "no reply, though the device answered %1")
                                  .arg(request.probe().label);
             return result;
         }
@@ -220,44 +226,45 @@ Status RequestEngine::apply(BackendStep&& step, const Request& request, Attempt&
         }
         report(in.wire, false);
         switch (in.kind) {
-        case Incoming::Garbage:
-            qCDebug(commLinkLog) << "skipped bytes outside a frame:" << in.wire.toHex(' ');
-            break;
-        case Incoming::Foreign:
-            qCDebug(commLinkLog) << "ignoring a frame for another device or block"
-                                 << in.wire.toHex(' ');
-            break;
-        case Incoming::Damaged:
-            ++m_stats.badFrames;
-            attempt.problem = in.detail;
-            attempt.outcome = Outcome::Failed;
-            decided = true;
-            break;
-        case Incoming::Message: {
-            QString problem;
-            const Verdict verdict =
-                request.judge ? request.judge(in.message, problem) : Verdict::Accept;
-            switch (verdict) {
-            case Verdict::Accept:
-                attempt.outcome = Outcome::Answer;
-                attempt.answer = std::move(in.message);
-                decided = true;
+            case Incoming::Garbage:
+                qCDebug(commLinkLog) << "skipped bytes outside a frame:" << in.wire.toHex(' ');
                 break;
-            case Verdict::Ignore: break;
-            case Verdict::Retry:
+            case Incoming::Foreign:
+                qCDebug(commLinkLog)
+                    << "ignoring a frame for another device or block" << in.wire.toHex(' ');
+                break;
+            case Incoming::Damaged:
                 ++m_stats.badFrames;
-                attempt.problem = problem;
+                attempt.problem = in.detail;
                 attempt.outcome = Outcome::Failed;
                 decided = true;
                 break;
-            case Verdict::Resend:
-                attempt.problem = problem;
-                attempt.outcome = Outcome::Resend;
-                decided = true;
+            case Incoming::Message: {
+                QString problem;
+                const Verdict verdict =
+                    request.judge ? request.judge(in.message, problem) : Verdict::Accept;
+                switch (verdict) {
+                    case Verdict::Accept:
+                        attempt.outcome = Outcome::Answer;
+                        attempt.answer = std::move(in.message);
+                        decided = true;
+                        break;
+                    case Verdict::Ignore:
+                        break;
+                    case Verdict::Retry:
+                        ++m_stats.badFrames;
+                        attempt.problem = problem;
+                        attempt.outcome = Outcome::Failed;
+                        decided = true;
+                        break;
+                    case Verdict::Resend:
+                        attempt.problem = problem;
+                        attempt.outcome = Outcome::Resend;
+                        decided = true;
+                        break;
+                }
                 break;
             }
-            break;
-        }
         }
     }
     if (!decided && !step.linkFailure.isEmpty()) {
@@ -270,10 +277,13 @@ Status RequestEngine::apply(BackendStep&& step, const Request& request, Attempt&
 
 QString RequestEngine::failureMessage(const Request& request, int attempts, int timeoutMs,
                                       const QString& problem) const {
-    const QString what = problem == QLatin1String("no reply")
-                             ? QStringLiteral("no reply")
-                             : QStringLiteral("no valid reply (last: %1)").arg(problem);
-    return QStringLiteral("%1 from %2 to %3 on %4 after %5 attempt%6 of %7 ms; %8")
+    const QString what =
+        problem == QLatin1String("no reply")
+            ? QStringLiteral("no reply")
+            : QCoreApplication::translate("cambench::comm", "no valid reply (last: %1)")
+                  .arg(problem);
+    return QCoreApplication::translate("cambench::comm",
+                                       "%1 from %2 to %3 on %4 after %5 attempt%6 of %7 ms; %8")
         .arg(what, m_backend.describe(), request.label, m_transport.description())
         .arg(attempts)
         .arg(attempts == 1 ? QString() : QStringLiteral("s"))

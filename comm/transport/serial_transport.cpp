@@ -2,6 +2,7 @@
 
 #include "transport_logging.h"
 
+#include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QSerialPort>
 
@@ -13,27 +14,38 @@ namespace {
 
 QSerialPort::Parity toParity(char parity) {
     switch (parity) {
-    case 'E': return QSerialPort::EvenParity;
-    case 'O': return QSerialPort::OddParity;
-    case 'S': return QSerialPort::SpaceParity;
-    case 'M': return QSerialPort::MarkParity;
-    default: return QSerialPort::NoParity;
+        case 'E':
+            return QSerialPort::EvenParity;
+        case 'O':
+            return QSerialPort::OddParity;
+        case 'S':
+            return QSerialPort::SpaceParity;
+        case 'M':
+            return QSerialPort::MarkParity;
+        default:
+            return QSerialPort::NoParity;
     }
 }
 
 QSerialPort::StopBits toStopBits(int stopBits) {
     switch (stopBits) {
-    case 2: return QSerialPort::TwoStop;
-    case 3: return QSerialPort::OneAndHalfStop;
-    default: return QSerialPort::OneStop;
+        case 2:
+            return QSerialPort::TwoStop;
+        case 3:
+            return QSerialPort::OneAndHalfStop;
+        default:
+            return QSerialPort::OneStop;
     }
 }
 
 QSerialPort::FlowControl toFlowControl(char flow) {
     switch (flow) {
-    case 'H': return QSerialPort::HardwareControl;
-    case 'S': return QSerialPort::SoftwareControl;
-    default: return QSerialPort::NoFlowControl;
+        case 'H':
+            return QSerialPort::HardwareControl;
+        case 'S':
+            return QSerialPort::SoftwareControl;
+        default:
+            return QSerialPort::NoFlowControl;
     }
 }
 
@@ -45,15 +57,22 @@ bool isLineGone(QSerialPort::SerialPortError error) {
 
 QString validateSerialSettings(const SerialSettings& s) {
     if (s.baud <= 0)
-        return QStringLiteral("baud rate %1 is not a positive number").arg(s.baud);
+        return QCoreApplication::translate("cambench::comm",
+                                           "baud rate %1 is not a positive number")
+            .arg(s.baud);
     if (s.dataBits < 5 || s.dataBits > 8)
-        return QStringLiteral("%1 data bits: use 5, 6, 7 or 8").arg(s.dataBits);
+        return QCoreApplication::translate("cambench::comm", "%1 data bits: use 5, 6, 7 or 8")
+            .arg(s.dataBits);
     if (!QByteArrayView("NEOSM").contains(s.parity))
-        return QStringLiteral("parity '%1': use N, E, O, S or M").arg(QChar(s.parity));
+        return QCoreApplication::translate("cambench::comm", "parity '%1': use N, E, O, S or M")
+            .arg(QChar(s.parity));
     if (s.stopBits < 1 || s.stopBits > 3)
-        return QStringLiteral("%1 stop bits: use 1, 2 or 3 (one and a half)").arg(s.stopBits);
+        return QCoreApplication::translate("cambench::comm",
+                                           "%1 stop bits: use 1, 2 or 3 (one and a half)")
+            .arg(s.stopBits);
     if (!QByteArrayView("NHS").contains(s.flowControl))
-        return QStringLiteral("flow control '%1': use N (none), H (RTS/CTS) or S (XON/XOFF)")
+        return QCoreApplication::translate(
+                   "cambench::comm", "flow control '%1': use N (none), H (RTS/CTS) or S (XON/XOFF)")
             .arg(QChar(s.flowControl));
     return {};
 }
@@ -74,7 +93,8 @@ Status SerialTransport::open() {
     m_lostMessage.clear();
     const QString invalid = validateSerialSettings(m_settings);
     if (!invalid.isEmpty())
-        return Error::usage(QStringLiteral("cannot use %1: %2").arg(m_portName, invalid));
+        return Error::usage(QCoreApplication::translate("cambench::comm", "cannot use %1: %2")
+                                .arg(m_portName, invalid));
 
     // Any path is opened as given: QSerialPortInfo does not list
     // pseudo-terminals, yet they are ports like any other here.
@@ -89,14 +109,19 @@ Status SerialTransport::open() {
         const QString reason = m_port->errorString();
         const auto error = m_port->error();
         m_port.reset();
-        QString hint = QStringLiteral("check the port name and that no other program uses it");
+        QString hint = QCoreApplication::translate(
+            "cambench::comm", "check the port name and that no other program uses it");
         if (error == QSerialPort::PermissionError)
-            hint = QStringLiteral("check that no other program uses it and that you may use "
-                                  "serial ports (on Linux: member of the group dialout)");
+            hint = QCoreApplication::translate(
+                "cambench::comm",
+                "check that no other program uses it and that you may use "
+                "serial ports (on Linux: member of the group dialout)");
         else if (error == QSerialPort::DeviceNotFoundError)
-            hint = QStringLiteral("check the port name and that the adapter is plugged in");
+            hint = QCoreApplication::translate(
+                "cambench::comm", "check the port name and that the adapter is plugged in");
         return Error::communication(
-            QStringLiteral("cannot open %1: %2; %3").arg(m_portName, reason, hint));
+            QCoreApplication::translate("cambench::comm", "cannot open %1: %2; %3")
+                .arg(m_portName, reason, hint));
     }
 
     // Pseudo-terminals and some adapters have no modem lines: the line works
@@ -136,12 +161,15 @@ Error SerialTransport::lose(const QString& action) {
                           error == QSerialPort::DeviceNotFoundError ||
                           error == QSerialPort::ReadError || error == QSerialPort::WriteError;
     if (vanished)
-        m_lostMessage = QStringLiteral("the port %1 disappeared (cable pulled or adapter "
-                                       "removed); reconnect and retry")
-                            .arg(m_portName);
+        m_lostMessage =
+            QCoreApplication::translate("cambench::comm",
+                                        "the port %1 disappeared (cable pulled or adapter "
+                                        "removed); reconnect and retry")
+                .arg(m_portName);
     else
-        m_lostMessage = QStringLiteral("%1 %2 failed: %3; reconnect and retry")
-                            .arg(action, m_portName, m_port->errorString());
+        m_lostMessage =
+            QCoreApplication::translate("cambench::comm", "%1 %2 failed: %3; reconnect and retry")
+                .arg(action, m_portName, m_port->errorString());
     // errorString() may be a stale errno after an end of file; the code is not.
     qCWarning(commSerialLog) << m_lostMessage << "- QSerialPort error" << int(error);
     close();
@@ -151,7 +179,8 @@ Error SerialTransport::lose(const QString& action) {
 Error SerialTransport::notOpenError() const {
     if (!m_lostMessage.isEmpty()) return Error::communication(m_lostMessage);
     return Error::communication(
-        QStringLiteral("the port %1 is not open; connect first").arg(m_portName));
+        QCoreApplication::translate("cambench::comm", "the port %1 is not open; connect first")
+            .arg(m_portName));
 }
 
 int SerialTransport::writeTimeoutMs(qint64 bytes) const {
@@ -170,8 +199,10 @@ Status SerialTransport::write(const QByteArray& bytes) {
         if (deadline.hasExpired()) {
             m_port->clear(QSerialPort::Output);
             return Error::communication(
-                QStringLiteral("could not send %1 bytes to %2 within %3 ms; check the flow "
-                               "control setting (RTS/CTS needs the CTS line)")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "could not send %1 bytes to %2 within %3 ms; check the flow "
+                    "control setting (RTS/CTS needs the CTS line)")
                     .arg(bytes.size())
                     .arg(description())
                     .arg(timeoutMs));
@@ -191,13 +222,15 @@ Result<QByteArray> SerialTransport::read(int timeoutMs) {
     while (m_port->bytesAvailable() == 0) {
         const int slice = int(std::min<qint64>(kSliceMs, deadline.remainingTime()));
         if (!m_port->waitForReadyRead(slice)) {
-            if (isLineGone(m_port->error())) return lose(QStringLiteral("reading from"));
+            if (isLineGone(m_port->error()))
+                return lose(QCoreApplication::translate("cambench::comm", "reading from"));
             m_port->clearError();
         }
         if (deadline.hasExpired()) break;
     }
     QByteArray bytes = m_port->readAll();
-    if (isLineGone(m_port->error())) return lose(QStringLiteral("reading from"));
+    if (isLineGone(m_port->error()))
+        return lose(QCoreApplication::translate("cambench::comm", "reading from"));
     return bytes;
 }
 

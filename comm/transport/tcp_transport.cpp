@@ -2,6 +2,7 @@
 
 #include "transport_logging.h"
 
+#include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QTcpSocket>
 
@@ -35,13 +36,16 @@ Status TcpTransport::open() {
         const bool failed = m_socket->error() != QAbstractSocket::SocketTimeoutError &&
                             m_socket->error() != QAbstractSocket::UnknownSocketError;
         if (failed || deadline.hasExpired()) {
-            const QString reason = failed ? m_socket->errorString()
-                                          : QStringLiteral("no answer within %1 ms")
-                                                .arg(m_connectTimeoutMs);
+            const QString reason =
+                failed ? m_socket->errorString()
+                       : QCoreApplication::translate("cambench::comm", "no answer within %1 ms")
+                             .arg(m_connectTimeoutMs);
             m_socket.reset();
             return Error::communication(
-                QStringLiteral("cannot connect to %1: %2; check the address, the port and "
-                               "that the device server is switched on")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "cannot connect to %1: %2; check the address, the port and "
+                    "that the device server is switched on")
                     .arg(description(), reason));
         }
     }
@@ -65,12 +69,15 @@ bool TcpTransport::isOpen() const {
 Error TcpTransport::lose() {
     if (m_socket->error() == QAbstractSocket::RemoteHostClosedError ||
         m_socket->state() != QAbstractSocket::ConnectedState)
-        m_lostMessage = QStringLiteral("the device server %1 closed the connection; "
-                                       "reconnect and retry")
+        m_lostMessage = QCoreApplication::translate("cambench::comm",
+                                                    "the device server %1 closed the connection; "
+                                                    "reconnect and retry")
                             .arg(description());
     else
-        m_lostMessage = QStringLiteral("the connection to %1 failed: %2; reconnect and retry")
-                            .arg(description(), m_socket->errorString());
+        m_lostMessage =
+            QCoreApplication::translate("cambench::comm",
+                                        "the connection to %1 failed: %2; reconnect and retry")
+                .arg(description(), m_socket->errorString());
     qCWarning(commSerialLog) << m_lostMessage;
     close();
     return Error::communication(m_lostMessage);
@@ -79,7 +86,8 @@ Error TcpTransport::lose() {
 Error TcpTransport::notOpenError() const {
     if (!m_lostMessage.isEmpty()) return Error::communication(m_lostMessage);
     return Error::communication(
-        QStringLiteral("not connected to %1; connect first").arg(description()));
+        QCoreApplication::translate("cambench::comm", "not connected to %1; connect first")
+            .arg(description()));
 }
 
 Status TcpTransport::write(const QByteArray& bytes) {
@@ -87,11 +95,12 @@ Status TcpTransport::write(const QByteArray& bytes) {
     if (!isOpen() || m_socket->write(bytes) != bytes.size()) return lose();
     QDeadlineTimer deadline(kWriteTimeoutMs);
     while (m_socket->bytesToWrite() > 0) {
-        if (!m_socket->waitForBytesWritten(sliceOf(deadline, kSliceMs)) && !isOpen())
-            return lose();
+        if (!m_socket->waitForBytesWritten(sliceOf(deadline, kSliceMs)) && !isOpen()) return lose();
         if (deadline.hasExpired() && m_socket->bytesToWrite() > 0)
             return Error::communication(
-                QStringLiteral("could not send %1 bytes to %2 within %3 ms; check the network")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "could not send %1 bytes to %2 within %3 ms; check the network")
                     .arg(bytes.size())
                     .arg(description())
                     .arg(kWriteTimeoutMs));

@@ -2,6 +2,7 @@
 
 #include "model/camcon/eeprom_image_file.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 
 namespace cambench::usecases {
@@ -48,7 +49,8 @@ QString safetyBackupPath(const QString& imagePath, const QDateTime& utc) {
 Result<EepromImage> backupDevice(CamConDevice& connection, const UseCaseProgress& progress) {
     if (!connection.has(CamConCapability::EepromBackup))
         return connection.missing(CamConCapability::EepromBackup);
-    return connection.backup(progress.forDevice(QStringLiteral("reading the EEPROM")));
+    return connection.backup(progress.forDevice(
+        QCoreApplication::translate("cambench::usecases", "reading the EEPROM")));
 }
 
 Result<EepromImage> backupToFile(CamConDevice& connection, const QString& path,
@@ -73,14 +75,17 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
     if (!device) {
         report.error = withMessage(
             device.error(),
-            QStringLiteral("%1 The device was not changed.").arg(device.error().message));
+            QCoreApplication::translate("cambench::usecases", "%1 The device was not changed.")
+                .arg(device.error().message));
         return report;
     }
     report.identityMismatch = identityMismatch(image.device, *device);
     if (!report.identityMismatch.isEmpty() && !options.force) {
         report.error = Error::invalidData(
-            QStringLiteral("%1 was taken from another kind of device: %2 It must be forced to be "
-                           "restored here. The device was not changed.")
+            QCoreApplication::translate(
+                "cambench::usecases",
+                "%1 was taken from another kind of device: %2 It must be forced to be "
+                "restored here. The device was not changed.")
                 .arg(imagePath, report.identityMismatch.join(QLatin1Char(' '))));
         return report;
     }
@@ -95,27 +100,34 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
             connection, path,
             UseCaseProgress(
                 [part](qint64 done, qint64 total, const QString&) {
-                    part.report(done, total, QStringLiteral("step 1 of 2: safety backup"));
+                    part.report(done, total,
+                                QCoreApplication::translate("cambench::usecases",
+                                                            "step 1 of 2: safety backup"));
                 },
                 [progress] { return progress.cancelled(); }));
         if (!safety) {
             report.error = withMessage(
-                safety.error(), QStringLiteral("Cannot take the safety backup before the restore: "
-                                               "%1 The device was not changed.")
-                                    .arg(safety.error().message));
+                safety.error(),
+                QCoreApplication::translate("cambench::usecases",
+                                            "Cannot take the safety backup before the restore: "
+                                            "%1 The device was not changed.")
+                    .arg(safety.error().message));
             return report;
         }
         report.safetyBackupPath = path;
     }
     if (progress.cancelled()) {
         report.error = withMessage(
-            Error::cancelled(), QStringLiteral("Cancelled before the restore started. The device "
-                                               "was not changed."));
+            Error::cancelled(),
+            QCoreApplication::translate("cambench::usecases",
+                                        "Cancelled before the restore started. The device "
+                                        "was not changed."));
         return report;
     }
     const UseCaseProgress part = progress.slice(steps - 1, 1, steps);
-    const QString text =
-        options.safetyBackup ? QStringLiteral("step 2 of 2: restore") : QStringLiteral("restore");
+    const QString text = options.safetyBackup ? QCoreApplication::translate("cambench::usecases",
+                                                                            "step 2 of 2: restore")
+                                              : QStringLiteral("restore");
     const Status restored = connection.restore(image, part.forDevice(text));
     if (restored) {
         report.state = RestoredState::Restored;
@@ -129,8 +141,10 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
     if (report.state == RestoredState::ErasedOrPartial) {
         message +=
             report.safetyBackupPath.isEmpty()
-                ? QStringLiteral(" No safety backup was taken.")
-                : QStringLiteral(" The device's previous content is in the safety backup %1.")
+                ? QCoreApplication::translate("cambench::usecases", " No safety backup was taken.")
+                : QCoreApplication::translate(
+                      "cambench::usecases",
+                      " The device's previous content is in the safety backup %1.")
                       .arg(report.safetyBackupPath);
     }
     report.error = withMessage(restored.error(), message);
@@ -139,13 +153,17 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
 
 QString VerifyReport::text(const QString& imagePath) const {
     if (equal)
-        return QStringLiteral("the device equals %1 (%2 blocks)").arg(imagePath).arg(imageBlocks);
-    QString text = QStringLiteral("the device differs from %1: device %2 blocks, image %3 blocks")
-                       .arg(imagePath)
-                       .arg(deviceBlocks)
-                       .arg(imageBlocks);
+        return QCoreApplication::translate("cambench::usecases", "the device equals %1 (%2 blocks)")
+            .arg(imagePath)
+            .arg(imageBlocks);
+    QString text =
+        QCoreApplication::translate("cambench::usecases",
+                                    "the device differs from %1: device %2 blocks, image %3 blocks")
+            .arg(imagePath)
+            .arg(deviceBlocks)
+            .arg(imageBlocks);
     if (!differingBlocks.isEmpty())
-        text += QStringLiteral("; first differing blocks: %1")
+        text += QCoreApplication::translate("cambench::usecases", "; first differing blocks: %1")
                     .arg(differingBlocks.join(QLatin1String(", ")));
     if (!identityMismatch.isEmpty())
         text += QStringLiteral("; %1").arg(identityMismatch.join(QLatin1Char(' ')));

@@ -5,6 +5,7 @@
 #include "model/camcon/eeprom_image_file.h"
 #include "model/file_read.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QRegularExpression>
 
@@ -67,10 +68,11 @@ LineManifestEntry backupOne(CamConDevice& connection, const QDir& dir, int devic
     const Result<QByteArray> bytes = readFileBytes(path);
     const Result<EepromImage> again = loadEepromImage(path);
     if (!bytes || !again || again->blocks != image->blocks) {
-        entry.message = QStringLiteral(
-                            "%1 was written but does not read back as the image "
-                            "taken; check the disk")
-                            .arg(path);
+        entry.message =
+            QCoreApplication::translate("cambench::usecases",
+                                        "%1 was written but does not read back as the image "
+                                        "taken; check the disk")
+                .arg(path);
         return entry;
     }
     entry.file = file;
@@ -84,13 +86,15 @@ Result<QList<int>> devicesOfLine(CamConDevice& connection, const LineBackupOptio
     if (!options.devices.isEmpty()) return options.devices;
     if (!connection.has(CamConCapability::BusScan))
         return connection.missing(CamConCapability::BusScan);
-    Result<QList<int>> found =
-        connection.scanBus(0, 63, progress.forDevice(QStringLiteral("scanning the line")));
+    Result<QList<int>> found = connection.scanBus(
+        0, 63,
+        progress.forDevice(QCoreApplication::translate("cambench::usecases", "scanning the line")));
     if (!found) return found.error();
     if (found->isEmpty())
-        return Error::communication(
-            QStringLiteral("no device answered on the line (numbers 0..63); check the cable, the "
-                           "baud rate and the protocol"));
+        return Error::communication(QCoreApplication::translate(
+            "cambench::usecases",
+            "no device answered on the line (numbers 0..63); check the cable, the "
+            "baud rate and the protocol"));
     return found;
 }
 
@@ -112,8 +116,10 @@ Result<LineManifest> backupLine(CamConDevice& connection, const LineBackupOption
         return connection.missing(CamConCapability::EepromBackup);
     QDir dir(options.directory);
     if (!dir.mkpath(QStringLiteral(".")))
-        return Error::usage(QStringLiteral("cannot create the folder %1; choose another one")
-                                .arg(options.directory));
+        return Error::usage(
+            QCoreApplication::translate("cambench::usecases",
+                                        "cannot create the folder %1; choose another one")
+                .arg(options.directory));
     const QString manifestPath = dir.filePath(QLatin1String(kLineManifestName));
     LineManifest manifest;
     if (options.resume && QFileInfo::exists(manifestPath)) {
@@ -133,7 +139,8 @@ Result<LineManifest> backupLine(CamConDevice& connection, const LineBackupOption
             LineManifestEntry entry;
             entry.device = device;
             entry.time = now();
-            entry.message = QStringLiteral("not backed up: the run was cancelled");
+            entry.message = QCoreApplication::translate("cambench::usecases",
+                                                        "not backed up: the run was cancelled");
             if (const LineManifestEntry* earlier = manifest.find(device);
                 !earlier || !stillSaved(dir, *earlier))
                 manifest.put(entry);
@@ -142,7 +149,10 @@ Result<LineManifest> backupLine(CamConDevice& connection, const LineBackupOption
         if (options.resume) {
             if (const LineManifestEntry* earlier = manifest.find(device);
                 earlier && stillSaved(dir, *earlier)) {
-                if (perDevice) perDevice(device, 1, 1, QStringLiteral("saved by an earlier run"));
+                if (perDevice)
+                    perDevice(device, 1, 1,
+                              QCoreApplication::translate("cambench::usecases",
+                                                          "saved by an earlier run"));
                 continue;
             }
         }
@@ -152,7 +162,8 @@ Result<LineManifest> backupLine(CamConDevice& connection, const LineBackupOption
         if (const Status saved = saveLineManifest(manifestPath, manifest); !saved)
             return saved.error();
     }
-    progress.report(devices->size(), devices->size(), QStringLiteral("line backed up"));
+    progress.report(devices->size(), devices->size(),
+                    QCoreApplication::translate("cambench::usecases", "line backed up"));
     if (const Status saved = saveLineManifest(manifestPath, manifest); !saved) return saved.error();
     return manifest;
 }
@@ -173,15 +184,17 @@ Result<QList<LineVerifyEntry>> verifyLine(CamConDevice& connection, const QStrin
         LineVerifyEntry result{entry.device, entry.file, false, {}};
         const QString prefix = QStringLiteral("device %1: ").arg(entry.device);
         if (entry.outcome != LineManifestEntry::Outcome::Saved) {
-            result.text =
-                prefix + QStringLiteral("not verified: its backup failed (%1)").arg(entry.message);
+            result.text = prefix + QCoreApplication::translate(
+                                       "cambench::usecases", "not verified: its backup failed (%1)")
+                                       .arg(entry.message);
             results << result;
             continue;
         }
         const QString path = dir.filePath(entry.file);
         const Result<QByteArray> bytes = readFileBytes(path);
         if (!bytes || sha256Hex(*bytes) != entry.sha256) {
-            result.text = prefix + QStringLiteral(
+            result.text = prefix + QCoreApplication::translate(
+                                       "cambench::usecases",
                                        "%1 is missing or was changed since the backup "
                                        "(SHA-256 differs from the manifest)")
                                        .arg(entry.file);
@@ -206,7 +219,8 @@ Result<QList<LineVerifyEntry>> verifyLine(CamConDevice& connection, const QStrin
         }
         results << result;
     }
-    progress.report(count, count, QStringLiteral("line verified"));
+    progress.report(count, count,
+                    QCoreApplication::translate("cambench::usecases", "line verified"));
     return results;
 }
 

@@ -6,6 +6,7 @@
 #include "model/camcon/data_validation.h"
 #include "model/camcon/plc_file.h"
 
+#include <QCoreApplication>
 #include <QHash>
 
 #include <algorithm>
@@ -52,7 +53,9 @@ private:
             for (auto it = group.wanted.cbegin(); it != group.wanted.cend(); ++it) {
                 const SettingSpec* spec = findSetting(it.key());
                 if (!spec) {
-                    problem(QStringLiteral("Setting %1: there is no such setting.").arg(it.key()));
+                    problem(QCoreApplication::translate("cambench::usecases",
+                                                        "Setting %1: there is no such setting.")
+                                .arg(it.key()));
                     continue;
                 }
                 // Values equal to the device's are not sent, so only the
@@ -62,11 +65,14 @@ private:
                                   onDevice->value(it.key()).toString() == it->toString();
                 if (same) continue;
                 if (spec->readOnly) {
-                    problem(QStringLiteral("Setting %1 is read-only: the device decides it (wanted "
-                                           "%2%3).")
+                    problem(QCoreApplication::translate(
+                                "cambench::usecases",
+                                "Setting %1 is read-only: the device decides it (wanted "
+                                "%2%3).")
                                 .arg(it.key(), it->toString(),
                                      onDevice && onDevice->contains(it.key())
-                                         ? QStringLiteral(", the device has %1")
+                                         ? QCoreApplication::translate("cambench::usecases",
+                                                                       ", the device has %1")
                                                .arg(onDevice->value(it.key()).toString())
                                          : QString()));
                     continue;
@@ -79,13 +85,16 @@ private:
 
     void checkProgramName(const NameWrite& name) {
         if (!programExists(name.number)) {
-            problem(QStringLiteral("Name of program %1: the device has programs 0..%2.")
+            problem(QCoreApplication::translate(
+                        "cambench::usecases", "Name of program %1: the device has programs 0..%2.")
                         .arg(name.number)
                         .arg(m_device.programs - 1));
         }
         const QString why = nameProblem(name.wanted);
         if (!why.isEmpty())
-            problem(QStringLiteral("Name of program %1: %2.").arg(name.number).arg(why));
+            problem(QCoreApplication::translate("cambench::usecases", "Name of program %1: %2.")
+                        .arg(name.number)
+                        .arg(why));
     }
 
     void checkTracks() {
@@ -95,19 +104,22 @@ private:
             const int output = write.wanted.output;
             if (!programExists(write.program) && !programsReported.contains(write.program)) {
                 programsReported.insert(write.program);
-                problem(QStringLiteral("Program %1: the device has programs 0..%2.")
+                problem(QCoreApplication::translate("cambench::usecases",
+                                                    "Program %1: the device has programs 0..%2.")
                             .arg(write.program)
                             .arg(m_device.programs - 1));
             }
             if (seen.contains({write.program, output})) {
-                problem(QStringLiteral("%1: the plan holds this track twice.")
+                problem(QCoreApplication::translate("cambench::usecases",
+                                                    "%1: the plan holds this track twice.")
                             .arg(trackLabel(write.program, output)));
             }
             seen.insert({write.program, output});
             // A track the device has no place for: its cams need no
             // further words.
             if (!outputExists(output, m_device.outputs)) {
-                problem(QStringLiteral("%1: the device has outputs 1..%2.")
+                problem(QCoreApplication::translate("cambench::usecases",
+                                                    "%1: the device has outputs 1..%2.")
                             .arg(trackLabel(write.program, output))
                             .arg(m_device.outputs));
                 continue;
@@ -127,13 +139,17 @@ private:
 
     void checkDeadTime(const DeadTimeWrite& write) {
         if (!outputExists(write.output, m_device.deadTimeOutputs)) {
-            problem(QStringLiteral("Dead time of output %1: the device compensates outputs "
-                                   "1..%2 only.")
+            problem(QCoreApplication::translate(
+                        "cambench::usecases",
+                        "Dead time of output %1: the device compensates outputs "
+                        "1..%2 only.")
                         .arg(write.output)
                         .arg(m_device.deadTimeOutputs));
         }
         if (write.wanted < 0 || write.wanted > m_device.maxDeadTime) {
-            problem(QStringLiteral("Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).")
+            problem(QCoreApplication::translate(
+                        "cambench::usecases",
+                        "Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).")
                         .arg(write.output)
                         .arg(write.wanted)
                         .arg(m_device.maxDeadTime));
@@ -142,13 +158,16 @@ private:
 
     void checkOutputName(const NameWrite& name) {
         if (!outputExists(name.number, m_device.outputs)) {
-            problem(QStringLiteral("Name of output %1: the device has outputs 1..%2.")
+            problem(QCoreApplication::translate("cambench::usecases",
+                                                "Name of output %1: the device has outputs 1..%2.")
                         .arg(name.number)
                         .arg(m_device.outputs));
         }
         const QString why = nameProblem(name.wanted);
         if (!why.isEmpty())
-            problem(QStringLiteral("Name of output %1: %2.").arg(name.number).arg(why));
+            problem(QCoreApplication::translate("cambench::usecases", "Name of output %1: %2.")
+                        .arg(name.number)
+                        .arg(why));
     }
 
     void checkUsers() {
@@ -166,8 +185,10 @@ private:
                 userLabel(write.wanted ? write.wanted->name : QStringLiteral("to delete"));
             const int index = write.deviceNumber.isEmpty() ? -1 : indexOf(write.deviceNumber);
             if (!write.deviceNumber.isEmpty() && index < 0) {
-                problem(QStringLiteral("%1: the device has no user with the number given for "
-                                       "it; read the users again.")
+                problem(QCoreApplication::translate(
+                            "cambench::usecases",
+                            "%1: the device has no user with the number given for "
+                            "it; read the users again.")
                             .arg(label));
                 continue;
             }
@@ -176,8 +197,10 @@ private:
                 continue;
             }
             if (write.wanted->number.isEmpty()) {
-                problem(QStringLiteral("%1 has no number and the device has no user of that "
-                                       "name whose number it could keep; enter a number.")
+                problem(QCoreApplication::translate(
+                            "cambench::usecases",
+                            "%1 has no number and the device has no user of that "
+                            "name whose number it could keep; enter a number.")
                             .arg(label));
                 continue;
             }
@@ -193,8 +216,10 @@ private:
             if (user.number.isEmpty()) continue;
             const auto first = firstWithNumber.constFind(user.number);
             if (first != firstWithNumber.cend()) {
-                problem(QStringLiteral("%1 would have the same user number as %2; numbers must "
-                                       "be unique.")
+                problem(QCoreApplication::translate(
+                            "cambench::usecases",
+                            "%1 would have the same user number as %2; numbers must "
+                            "be unique.")
                             .arg(userLabel(user.name), userLabel(*first)));
             } else {
                 firstWithNumber.insert(user.number, user.name);
@@ -207,13 +232,14 @@ private:
             problem(QStringLiteral("%1: %2").arg(plcLabel(network), why));
         const auto count = m_context.plcNetworksPerArea.constFind(network.area);
         if (count != m_context.plcNetworksPerArea.cend() && network.number >= *count) {
-            problem(
-                QStringLiteral("%1: the device has %2 networks in area %3 (%3%4); change the PLC "
-                               "counts in the settings first.")
-                    .arg(plcLabel(network))
-                    .arg(*count)
-                    .arg(plcAreaLetter(network.area))
-                    .arg(*count > 0 ? QStringLiteral("0..%1").arg(*count - 1) : QString()));
+            problem(QCoreApplication::translate(
+                        "cambench::usecases",
+                        "%1: the device has %2 networks in area %3 (%3%4); change the PLC "
+                        "counts in the settings first.")
+                        .arg(plcLabel(network))
+                        .arg(*count)
+                        .arg(plcAreaLetter(network.area))
+                        .arg(*count > 0 ? QStringLiteral("0..%1").arg(*count - 1) : QString()));
         }
     }
 
@@ -228,31 +254,39 @@ private:
 Error PlanCheck::refusal(const DeviceInfo& device, int listed) const {
     QStringList reasons;
     if (!missingOutputs.isEmpty()) {
-        reasons << QStringLiteral("outputs %1 do not exist on the device (it has 1..%2)")
+        reasons << QCoreApplication::translate(
+                       "cambench::usecases", "outputs %1 do not exist on the device (it has 1..%2)")
                        .arg(numberRanges(missingOutputs))
                        .arg(device.outputs);
     }
     if (!missingPrograms.isEmpty()) {
-        reasons << QStringLiteral("programs %1 do not exist on the device (it has 0..%2)")
+        reasons << QCoreApplication::translate(
+                       "cambench::usecases",
+                       "programs %1 do not exist on the device (it has 0..%2)")
                        .arg(numberRanges(missingPrograms))
                        .arg(device.programs - 1);
     }
     if (pointsOutOfRange > 0) {
-        reasons << QStringLiteral("%1 cam points lie outside the device's range %2..%3")
+        reasons << QCoreApplication::translate(
+                       "cambench::usecases", "%1 cam points lie outside the device's range %2..%3")
                        .arg(pointsOutOfRange)
                        .arg(device.minPosition)
                        .arg(device.maxPosition);
     }
-    if (reasons.isEmpty()) reasons << QStringLiteral("the plan holds invalid values");
+    if (reasons.isEmpty())
+        reasons << QCoreApplication::translate("cambench::usecases",
+                                               "the plan holds invalid values");
     QString message =
-        QStringLiteral("The write was refused before anything was sent: %1 (%2):")
+        QCoreApplication::translate("cambench::usecases",
+                                    "The write was refused before anything was sent: %1 (%2):")
             .arg(reasons.join(QLatin1String("; ")),
                  problems.size() == 1 ? QStringLiteral("1 problem")
                                       : QStringLiteral("%1 problems").arg(problems.size()));
     for (int i = 0; i < problems.size() && i < listed; ++i)
         message += QStringLiteral("\n  ") + problems.at(i);
     if (problems.size() > listed)
-        message += QStringLiteral("\n  and %1 more").arg(problems.size() - listed);
+        message += QCoreApplication::translate("cambench::usecases", "\n  and %1 more")
+                       .arg(problems.size() - listed);
     return Error::invalidData(message);
 }
 

@@ -2,6 +2,7 @@
 
 #include "model/camcon/data_validation.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 
 namespace cambench::usecases {
@@ -55,7 +56,8 @@ public:
         if (const Status ok = readOutputNames(names); !ok) return ok.error();
         if (const Status ok = readUsers(); !ok) return ok.error();
         if (const Status ok = readPlcNetworks(plcCounts); !ok) return ok.error();
-        m_progress.report(m_total, m_total, QStringLiteral("read everything"));
+        m_progress.report(m_total, m_total,
+                          QCoreApplication::translate("cambench::usecases", "read everything"));
         return m_result;
     }
 
@@ -68,14 +70,16 @@ private:
     }
 
     Status readSettings() {
-        m_progress.report(0, 1, QStringLiteral("reading the settings"));
+        m_progress.report(
+            0, 1, QCoreApplication::translate("cambench::usecases", "reading the settings"));
         QStringList unknown;
         Result<SystemSettings> settings = m_connection.readSettings(&unknown);
         if (!settings) return settings.error();
         m_result.project.settings = *settings;
         m_result.project.readAt.parts.insert(ProjectPart::Settings, now());
         for (const QString& page : unknown) {
-            m_result.skipped << QStringLiteral(
+            m_result.skipped << QCoreApplication::translate(
+                                    "cambench::usecases",
                                     "Settings: the device does not know %1; they are "
                                     "not in the project.")
                                     .arg(page);
@@ -85,7 +89,8 @@ private:
 
     Status readProgram(int program) {
         if (m_progress.cancelled()) return Error::cancelled();
-        const QString text = QStringLiteral("reading program %1").arg(program);
+        const QString text =
+            QCoreApplication::translate("cambench::usecases", "reading program %1").arg(program);
         const UseCaseProgress part = m_progress.slice(m_done, m_device.outputs, m_total);
         Result<CamProgram> read =
             m_connection.readProgram(program, m_device.outputs, part.forDevice(text));
@@ -97,7 +102,9 @@ private:
     }
 
     Status readDeadTimes() {
-        if (const Status ok = step(m_device.deadTimeOutputs, QStringLiteral("reading dead times"));
+        if (const Status ok =
+                step(m_device.deadTimeOutputs,
+                     QCoreApplication::translate("cambench::usecases", "reading dead times"));
             !ok)
             return ok;
         Result<DeadTimes> deadTimes = m_connection.readDeadTimes(m_device.deadTimeOutputs);
@@ -109,15 +116,21 @@ private:
 
     Status readOutputNames(bool reachable) {
         if (!reachable) {
-            skip(QStringLiteral("Output names"), CamConCapability::OutputNames);
+            skip(QCoreApplication::translate("cambench::usecases", "Output names"),
+                 CamConCapability::OutputNames);
             return success();
         }
         QMap<int, QString> names;
         for (int output = 1; output <= m_device.outputs; ++output) {
-            if (const Status ok = step(1, QStringLiteral("reading output names")); !ok) return ok;
+            if (const Status ok = step(
+                    1, QCoreApplication::translate("cambench::usecases", "reading output names"));
+                !ok)
+                return ok;
             const Result<QString> name = m_connection.readOutputName(output);
             if (!name && name.error().kind == ErrorKind::NotUnderstood) {
-                m_result.skipped << QStringLiteral("Output names: %1").arg(name.error().message);
+                m_result.skipped << QCoreApplication::translate("cambench::usecases",
+                                                                "Output names: %1")
+                                        .arg(name.error().message);
                 return success();
             }
             if (!name) return name.error();
@@ -129,7 +142,10 @@ private:
     }
 
     Status readUsers() {
-        if (const Status ok = step(1, QStringLiteral("reading users")); !ok) return ok;
+        if (const Status ok =
+                step(1, QCoreApplication::translate("cambench::usecases", "reading users"));
+            !ok)
+            return ok;
         if (!m_connection.has(CamConCapability::Users)) {
             skip(QStringLiteral("Users"), CamConCapability::Users);
             return success();
@@ -143,13 +159,16 @@ private:
 
     Status readPlcNetworks(const QMap<int, int>& counts) {
         if (!m_connection.has(CamConCapability::PlcNetworks)) {
-            skip(QStringLiteral("PLC networks"), CamConCapability::PlcNetworks);
+            skip(QCoreApplication::translate("cambench::usecases", "PLC networks"),
+                 CamConCapability::PlcNetworks);
             return success();
         }
         QList<PlcNetwork> networks;
         for (auto it = counts.cbegin(); it != counts.cend(); ++it) {
             for (int number = 0; number < *it; ++number) {
-                if (const Status ok = step(1, QStringLiteral("reading PLC networks")); !ok)
+                if (const Status ok = step(1, QCoreApplication::translate("cambench::usecases",
+                                                                          "reading PLC networks"));
+                    !ok)
                     return ok;
                 const Result<PlcNetwork> network = m_connection.readPlcNetwork(it.key(), number);
                 if (!network) return network.error();

@@ -1,5 +1,7 @@
 #include "write_items.h"
 
+#include <QCoreApplication>
+
 #include "plan_check.h"
 #include "read_everything.h"
 #include "value_text.h"
@@ -140,8 +142,9 @@ private:
         if (!before) {
             const Result<T> read = ops.read();
             if (!read) {
-                outcome.error =
-                    inContext(QStringLiteral("reading it before the write"), read.error());
+                outcome.error = inContext(QCoreApplication::translate(
+                                              "cambench::usecases", "reading it before the write"),
+                                          read.error());
                 if (stopsTheRun(read.error())) stopAfter(label, read.error());
                 return outcome;  // NotSent: nothing was written
             }
@@ -172,7 +175,8 @@ private:
         if (!after) {
             outcome.state = WriteState::Unknown;
             outcome.error.message +=
-                QStringLiteral(" Reading it back failed too: %1").arg(after.error().message);
+                QCoreApplication::translate("cambench::usecases", " Reading it back failed too: %1")
+                    .arg(after.error().message);
             if (stopsTheRun(after.error())) stopAfter(label, after.error());
             return outcome;
         }
@@ -183,8 +187,9 @@ private:
         } else if (ops.same(*after, wanted)) {
             // The reply said no (or was lost), the device says yes.
             outcome.state = WriteState::Written;
-            outcome.note =
-                QStringLiteral("read back after the error \"%1\"").arg(outcome.error.message);
+            outcome.note = QCoreApplication::translate("cambench::usecases",
+                                                       "read back after the error \"%1\"")
+                               .arg(outcome.error.message);
             outcome.error = Error();
         } else {
             outcome.state = WriteState::ChangedThoughFailed;
@@ -199,8 +204,10 @@ private:
             return;
         }
         m_stop = Error{error.kind,
-                       QStringLiteral("not sent: the connection failed at %1; nothing after it was "
-                                      "sent")
+                       QCoreApplication::translate(
+                           "cambench::usecases",
+                           "not sent: the connection failed at %1; nothing after it was "
+                           "sent")
                            .arg(label),
                        0};
     }
@@ -272,7 +279,8 @@ private:
         if (write.believed && found && !sameCams(*write.believed, *found)) {
             // Changed on the device since the caller read it: say so.
             const QString note =
-                QStringLiteral("the device held %1, not %2 as last read")
+                QCoreApplication::translate("cambench::usecases",
+                                            "the device held %1, not %2 as last read")
                     .arg(camsText(normalised(*found)), camsText(normalised(*write.believed)));
             outcome.note =
                 outcome.note.isEmpty() ? note : outcome.note + QStringLiteral("; ") + note;
@@ -396,13 +404,15 @@ Result<WriteReport> writeItems(CamConDevice& connection, const DeviceInfo& devic
                                const WritePlan& plan, const UseCaseProgress& progress) {
     WritePlan resolved = plan;
     if (!resolved.settingsOnDevice && needsSettings(plan)) {
-        progress.report(0, plan.itemCount(), QStringLiteral("reading the settings"));
+        progress.report(0, plan.itemCount(),
+                        QCoreApplication::translate("cambench::usecases", "reading the settings"));
         Result<SystemSettings> settings = connection.readSettings();
         if (!settings) return settings.error();
         resolved.settingsOnDevice = *settings;
     }
     if (!resolved.usersOnDevice && !plan.users.isEmpty()) {
-        progress.report(0, plan.itemCount(), QStringLiteral("reading the users"));
+        progress.report(0, plan.itemCount(),
+                        QCoreApplication::translate("cambench::usecases", "reading the users"));
         Result<QList<User>> users = connection.readUsers();
         if (!users) return users.error();
         resolved.usersOnDevice = *users;

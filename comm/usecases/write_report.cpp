@@ -1,5 +1,7 @@
 #include "write_report.h"
 
+#include <QCoreApplication>
+
 namespace cambench::usecases {
 
 namespace {
@@ -25,13 +27,16 @@ QString lineText(const ItemOutcome<T>& outcome) {
             if (!outcome.note.isEmpty()) text += QStringLiteral(" (%1)").arg(outcome.note);
             return text;
         case WriteState::Failed:
-            text += QStringLiteral(", the device keeps %1").arg(outcome.actualText);
+            text += QCoreApplication::translate("cambench::usecases", ", the device keeps %1")
+                        .arg(outcome.actualText);
             break;
         case WriteState::ChangedThoughFailed:
-            text += QStringLiteral(", the device NOW HOLDS %1").arg(outcome.actualText);
+            text += QCoreApplication::translate("cambench::usecases", ", the device NOW HOLDS %1")
+                        .arg(outcome.actualText);
             break;
         case WriteState::Unknown:
-            text += QStringLiteral(", what the device holds now could not be read");
+            text += QCoreApplication::translate("cambench::usecases",
+                                                ", what the device holds now could not be read");
             break;
         case WriteState::NotSent:
             break;
@@ -46,17 +51,18 @@ QString lineText(const ItemOutcome<T>& outcome) {
 QString writeStateText(WriteState state) {
     switch (state) {
         case WriteState::Written:
-            return QStringLiteral("written");
+            return QCoreApplication::translate("cambench::usecases", "written");
         case WriteState::Unchanged:
-            return QStringLiteral("unchanged");
+            return QCoreApplication::translate("cambench::usecases", "unchanged");
         case WriteState::Failed:
-            return QStringLiteral("failed");
+            return QCoreApplication::translate("cambench::usecases", "failed");
         case WriteState::ChangedThoughFailed:
-            return QStringLiteral("changed though the write failed");
+            return QCoreApplication::translate("cambench::usecases",
+                                               "changed though the write failed");
         case WriteState::Unknown:
-            return QStringLiteral("failed, state unknown");
+            return QCoreApplication::translate("cambench::usecases", "failed, state unknown");
         case WriteState::NotSent:
-            return QStringLiteral("not sent");
+            return QCoreApplication::translate("cambench::usecases", "not sent");
     }
     return {};
 }
@@ -99,21 +105,29 @@ QList<OutcomeLine> WriteReport::lines() const {
 }
 
 QString WriteReport::summary() const {
-    QStringList parts{QStringLiteral("%1 written").arg(count(WriteState::Written)),
-                      QStringLiteral("%1 unchanged").arg(count(WriteState::Unchanged))};
+    QStringList parts{QCoreApplication::translate("cambench::usecases", "%1 written")
+                          .arg(count(WriteState::Written)),
+                      QCoreApplication::translate("cambench::usecases", "%1 unchanged")
+                          .arg(count(WriteState::Unchanged))};
     const struct {
         WriteState state;
         const char* text;
     } others[] = {
-        {WriteState::Failed, "%1 failed (the device keeps its old values)"},
-        {WriteState::ChangedThoughFailed, "%1 CHANGED THOUGH THE WRITE FAILED"},
-        {WriteState::Unknown, "%1 failed with the device's state unknown"},
-        {WriteState::NotSent, "%1 not sent"},
+        {WriteState::Failed,
+         QT_TRANSLATE_NOOP("cambench::usecases", "%1 failed (the device keeps its old values)")},
+        {WriteState::ChangedThoughFailed,
+         QT_TRANSLATE_NOOP("cambench::usecases", "%1 CHANGED THOUGH THE WRITE FAILED")},
+        {WriteState::Unknown,
+         QT_TRANSLATE_NOOP("cambench::usecases", "%1 failed with the device's state unknown")},
+        {WriteState::NotSent, QT_TRANSLATE_NOOP("cambench::usecases", "%1 not sent")},
     };
     for (const auto& other : others) {
-        if (const int n = count(other.state)) parts << QString::fromLatin1(other.text).arg(n);
+        if (const int n = count(other.state))
+            parts << QCoreApplication::translate("cambench::usecases", other.text).arg(n);
     }
-    return QStringLiteral("%1 items: %2").arg(total()).arg(parts.join(QLatin1String(", ")));
+    return QCoreApplication::translate("cambench::usecases", "%1 items: %2")
+        .arg(total())
+        .arg(parts.join(QLatin1String(", ")));
 }
 
 }  // namespace cambench::usecases

@@ -1,9 +1,12 @@
 #include "guarded_transport.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm {
 
 GuardedTransport::GuardedTransport()
-    : m_reason(QStringLiteral("not connected to a device; connect first")) {}
+    : m_reason(QCoreApplication::translate("cambench::comm",
+                                           "not connected to a device; connect first")) {}
 
 GuardedTransport::~GuardedTransport() {
     close();
@@ -23,7 +26,8 @@ void GuardedTransport::detach(const QString& reason) {
 
 QString GuardedTransport::lossMessage() const {
     if (!m_lossMessage.isEmpty()) return m_lossMessage;
-    return QStringLiteral("the connection %1 closed; reconnect and retry")
+    return QCoreApplication::translate("cambench::comm",
+                                       "the connection %1 closed; reconnect and retry")
         .arg(m_inner ? m_inner->description() : QString());
 }
 

@@ -1,5 +1,7 @@
 #include "worker_core.h"
 
+#include <QCoreApplication>
+
 #include "worker_logging.h"
 
 #include "comm/device/protocol_registry.h"
@@ -19,15 +21,17 @@ void WorkerCore::setState(ConnectionState state, const QString& message) {
 void WorkerCore::connectTo(const ConnectionSettings& connection,
                            const ProtocolSettingsPtr& protocol) {
     m_device.reset();
-    m_line.detach(QStringLiteral("not connected: connecting to %1").arg(connection.port));
+    m_line.detach(QCoreApplication::translate("cambench::comm", "not connected: connecting to %1")
+                      .arg(connection.port));
     setState(ConnectionState::Connecting, connection.port);
     const ProtocolInfo* info =
         protocol ? ProtocolRegistry::instance().find(protocol->protocolId()) : nullptr;
     Status opened = success();
     if (!info) {
-        opened = Error::usage(QStringLiteral("unknown protocol \"%1\"; known: %2")
-                                  .arg(protocol ? protocol->protocolId() : QString(),
-                                       ProtocolRegistry::instance().idList()));
+        opened = Error::usage(
+            QCoreApplication::translate("cambench::comm", "unknown protocol \"%1\"; known: %2")
+                .arg(protocol ? protocol->protocolId() : QString(),
+                     ProtocolRegistry::instance().idList()));
     }
     ConnectionSettings line = connection;
     if (info) line.protocol = info->id;
@@ -36,7 +40,8 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
     if (opened) opened = transport ? (*transport)->open() : Status(transport.error());
     if (!opened) {
         qCWarning(commWorkerLog) << "cannot connect:" << opened.error().message;
-        m_line.detach(QStringLiteral("not connected: %1").arg(opened.error().message));
+        m_line.detach(QCoreApplication::translate("cambench::comm", "not connected: %1")
+                          .arg(opened.error().message));
         setState(ConnectionState::Disconnected, opened.error().message);
         return;
     }
@@ -45,7 +50,8 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
     Result<std::unique_ptr<DeviceConnection>> device =
         info->connect(m_line, *protocol, lineTimingFor(connection.serial));
     if (!device) {
-        m_line.detach(QStringLiteral("not connected: %1").arg(device.error().message));
+        m_line.detach(QCoreApplication::translate("cambench::comm", "not connected: %1")
+                          .arg(device.error().message));
         setState(ConnectionState::Disconnected, device.error().message);
         return;
     }
@@ -56,7 +62,8 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
 }
 
 void WorkerCore::disconnectFromDevice() {
-    m_line.detach(QStringLiteral("not connected to a device; connect first"));
+    m_line.detach(
+        QCoreApplication::translate("cambench::comm", "not connected to a device; connect first"));
     if (m_state != ConnectionState::Disconnected)
         setState(ConnectionState::Disconnected, QString());
 }
@@ -69,7 +76,7 @@ void WorkerCore::checkLine() {
     if (!m_line.lineLost()) return;
     const QString message = m_line.lossMessage();
     qCWarning(commWorkerLog) << "line lost:" << message;
-    m_line.detach(QStringLiteral("not connected: %1").arg(message));
+    m_line.detach(QCoreApplication::translate("cambench::comm", "not connected: %1").arg(message));
     setState(ConnectionState::Lost, message);
 }
 

@@ -1,5 +1,7 @@
 #include "cam_validation.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <limits>
 #include <utility>
@@ -38,32 +40,38 @@ QList<CamProblem> camProblems(const Cam& cam, int index, int program, int output
     QList<CamProblem> problems;
     const auto checkPoint = [&](qint32 point, const char* name) {
         if (point < device.minPosition) {
-            problems << problem(program, output, index,
-                                QStringLiteral("%1 %2 is below the minimum %3")
-                                    .arg(QLatin1String(name))
-                                    .arg(point)
-                                    .arg(device.minPosition));
+            problems << problem(
+                program, output, index,
+                QCoreApplication::translate("cambench::model", "%1 %2 is below the minimum %3")
+                    .arg(QLatin1String(name))
+                    .arg(point)
+                    .arg(device.minPosition));
         } else if (point > device.maxPosition) {
-            problems << problem(program, output, index,
-                                QStringLiteral("%1 %2 is above the maximum %3")
-                                    .arg(QLatin1String(name))
-                                    .arg(point)
-                                    .arg(device.maxPosition));
+            problems << problem(
+                program, output, index,
+                QCoreApplication::translate("cambench::model", "%1 %2 is above the maximum %3")
+                    .arg(QLatin1String(name))
+                    .arg(point)
+                    .arg(device.maxPosition));
         }
     };
     checkPoint(cam.on, "switch-on point");
     checkPoint(cam.off, "switch-off point");
     if (cam.on == cam.off) {
-        problems << problem(program, output, index,
-                            QStringLiteral("switch-on and switch-off point are both %1, so the "
-                                           "cam would never switch")
-                                .arg(cam.on));
+        problems << problem(
+            program, output, index,
+            QCoreApplication::translate("cambench::model",
+                                        "switch-on and switch-off point are both %1, so the "
+                                        "cam would never switch")
+                .arg(cam.on));
     } else if (cam.off < cam.on && !rotary) {
-        problems << problem(program, output, index,
-                            QStringLiteral("switch-off point %1 is below the switch-on point %2; "
-                                           "only on a rotary axis may a cam wrap through zero")
-                                .arg(cam.off)
-                                .arg(cam.on));
+        problems << problem(
+            program, output, index,
+            QCoreApplication::translate("cambench::model",
+                                        "switch-off point %1 is below the switch-on point %2; "
+                                        "only on a rotary axis may a cam wrap through zero")
+                .arg(cam.off)
+                .arg(cam.on));
     }
     return problems;
 }
@@ -108,14 +116,17 @@ QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInf
                                 bool rotary) {
     QList<CamProblem> problems;
     if (track.output < 1 || track.output > device.outputs) {
-        problems << problem(program, track.output, -1,
-                            QStringLiteral("the device has outputs 1..%1").arg(device.outputs));
+        problems << problem(
+            program, track.output, -1,
+            QCoreApplication::translate("cambench::model", "the device has outputs 1..%1")
+                .arg(device.outputs));
     }
     if (track.cams.size() > kMaxCamsPerTrack) {
-        problems << problem(program, track.output, -1,
-                            QStringLiteral("%1 cams, but a track holds at most %2")
-                                .arg(track.cams.size())
-                                .arg(kMaxCamsPerTrack));
+        problems << problem(
+            program, track.output, -1,
+            QCoreApplication::translate("cambench::model", "%1 cams, but a track holds at most %2")
+                .arg(track.cams.size())
+                .arg(kMaxCamsPerTrack));
     }
 
     // Sweep over the covered spans sorted by start: a span that starts
@@ -145,11 +156,12 @@ QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInf
         if (furthest && span.start < furthest->end && furthest->cam != span.cam &&
             !reported[std::size_t(span.cam)]) {
             reported[std::size_t(span.cam)] = true;
-            problems << problem(program, track.output, span.cam,
-                                QStringLiteral("%1 overlaps cam %2 (%3)")
-                                    .arg(camText(track.cams.at(span.cam)))
-                                    .arg(furthest->cam + 1)
-                                    .arg(camText(track.cams.at(furthest->cam))));
+            problems << problem(
+                program, track.output, span.cam,
+                QCoreApplication::translate("cambench::model", "%1 overlaps cam %2 (%3)")
+                    .arg(camText(track.cams.at(span.cam)))
+                    .arg(furthest->cam + 1)
+                    .arg(camText(track.cams.at(furthest->cam))));
         }
         if (!furthest || span.end > furthest->end) furthest = &span;
     }
@@ -162,15 +174,18 @@ QList<CamProblem> validateProgram(const CamProgram& program, const DeviceInfo& d
     if (program.number < 0 || program.number >= device.programs) {
         problems << problem(
             program.number, -1, -1,
-            QStringLiteral("the device has programs 0..%1").arg(device.programs - 1));
+            QCoreApplication::translate("cambench::model", "the device has programs 0..%1")
+                .arg(device.programs - 1));
     }
     for (auto it = program.tracks.cbegin(); it != program.tracks.cend(); ++it) {
         if (it.key() != it->output) {
-            problems << problem(program.number, it.key(), -1,
-                                QStringLiteral("the track stored for output %1 says it is "
-                                               "output %2")
-                                    .arg(it.key())
-                                    .arg(it->output));
+            problems << problem(
+                program.number, it.key(), -1,
+                QCoreApplication::translate("cambench::model",
+                                            "the track stored for output %1 says it is "
+                                            "output %2")
+                    .arg(it.key())
+                    .arg(it->output));
         }
         problems << validateTrack(*it, program.number, device, rotary);
     }

@@ -1,10 +1,11 @@
 #include "csv_io.h"
 
-#include "model/atomic_file.h"
 #include "cam_validation.h"
 #include "data_validation.h"
+#include "model/atomic_file.h"
 #include "model/file_read.h"
 
+#include <QCoreApplication>
 #include <QStringDecoder>
 #include <QStringList>
 
@@ -29,7 +30,9 @@ struct CsvRow {
 
 Error lineError(int line, const QString& reason) {
     return Error::invalidData(
-        QStringLiteral("Line %1: %2. Nothing was imported.").arg(line).arg(reason));
+        QCoreApplication::translate("cambench::model", "Line %1: %2. Nothing was imported.")
+            .arg(line)
+            .arg(reason));
 }
 
 // Splits one line. A field that starts with a quote runs to the next lone
@@ -57,12 +60,14 @@ std::optional<QStringList> splitLine(const QString& line, QString* why) {
                 field += line.at(i++);
             }
             if (!closed) {
-                *why = QStringLiteral("a quoted field has no closing quote");
+                *why = QCoreApplication::translate("cambench::model",
+                                                   "a quoted field has no closing quote");
                 return std::nullopt;
             }
             while (i < line.size() && line.at(i).isSpace()) ++i;
             if (i < line.size() && line.at(i) != QLatin1Char(',')) {
-                *why = QStringLiteral("there is text after a closing quote");
+                *why = QCoreApplication::translate("cambench::model",
+                                                   "there is text after a closing quote");
                 return std::nullopt;
             }
         } else {
@@ -81,16 +86,16 @@ Result<QList<CsvRow>> readRows(const QByteArray& content, const QString& header)
     QStringDecoder decoder(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
     QString text = decoder.decode(content);
     if (decoder.hasError()) {
-        return Error::invalidData(
-            QStringLiteral("The file is not UTF-8 text. Nothing was imported."));
+        return Error::invalidData(QCoreApplication::translate(
+            "cambench::model", "The file is not UTF-8 text. Nothing was imported."));
     }
     if (text.startsWith(QChar(0xFEFF))) text.remove(0, 1);
     const QStringList lines = text.split(QLatin1Char('\n'));
     const QString first = lines.value(0).trimmed();
     if (first != header) {
-        return lineError(
-            1,
-            QStringLiteral("the header must be \"%1\", found \"%2\"").arg(header, first.left(60)));
+        return lineError(1, QCoreApplication::translate("cambench::model",
+                                                        "the header must be \"%1\", found \"%2\"")
+                                .arg(header, first.left(60)));
     }
     const int columns = int(header.count(QLatin1Char(','))) + 1;
     QList<CsvRow> rows;
@@ -102,10 +107,11 @@ Result<QList<CsvRow>> readRows(const QByteArray& content, const QString& header)
         const std::optional<QStringList> fields = splitLine(line, &why);
         if (!fields) return lineError(i + 1, why);
         if (fields->size() != columns) {
-            return lineError(i + 1, QStringLiteral("%1 fields, expected %2 (%3)")
-                                        .arg(fields->size())
-                                        .arg(columns)
-                                        .arg(header));
+            return lineError(
+                i + 1, QCoreApplication::translate("cambench::model", "%1 fields, expected %2 (%3)")
+                           .arg(fields->size())
+                           .arg(columns)
+                           .arg(header));
         }
         rows << CsvRow{i + 1, *fields};
     }
@@ -118,7 +124,8 @@ std::optional<qint64> parseInteger(const QString& field, const char* what, qint6
     bool ok = false;
     const qint64 value = field.toLongLong(&ok);
     if (!ok) {
-        *why = QStringLiteral("%1 \"%2\" is not a whole number").arg(QLatin1String(what), field);
+        *why = QCoreApplication::translate("cambench::model", "%1 \"%2\" is not a whole number")
+                   .arg(QLatin1String(what), field);
         return std::nullopt;
     }
     if (value < min || value > max) {
@@ -209,10 +216,12 @@ Result<Tracks> camsFromCsv(const QByteArray& content) {
         if (!r.ok()) return lineError(row.line, r.why());
         auto& track = cams[output];
         if (track.contains(cam)) {
-            return lineError(row.line, QStringLiteral("output %1 has a cam %2 already (line %3)")
-                                           .arg(output)
-                                           .arg(cam)
-                                           .arg(track.value(cam).second));
+            return lineError(row.line,
+                             QCoreApplication::translate("cambench::model",
+                                                         "output %1 has a cam %2 already (line %3)")
+                                 .arg(output)
+                                 .arg(cam)
+                                 .arg(track.value(cam).second));
         }
         track.insert(cam, {Cam{on, off}, row.line});
     }
@@ -223,12 +232,14 @@ Result<Tracks> camsFromCsv(const QByteArray& content) {
         int expected = 1;
         for (auto cam = it->cbegin(); cam != it->cend(); ++cam, ++expected) {
             if (cam.key() != expected) {
-                return lineError(cam->second, QStringLiteral("cam %1 of output %2, but cam %3 is "
+                return lineError(cam->second,
+                                 QCoreApplication::translate("cambench::model",
+                                                             "cam %1 of output %2, but cam %3 is "
                                                              "missing; number the cams of an "
                                                              "output 1, 2, 3, ...")
-                                                  .arg(cam.key())
-                                                  .arg(it.key())
-                                                  .arg(expected));
+                                     .arg(cam.key())
+                                     .arg(it.key())
+                                     .arg(expected));
             }
             track.cams << cam->first;
         }
@@ -255,9 +266,11 @@ Result<DeadTimes> deadTimesFromCsv(const QByteArray& content) {
         const qint32 value = qint32(r.integer(1, "dead time", 0, kInt32Max));
         if (!r.ok()) return lineError(row.line, r.why());
         if (lineOf.contains(output)) {
-            return lineError(row.line, QStringLiteral("output %1 has a dead time already (line %2)")
-                                           .arg(output)
-                                           .arg(lineOf.value(output)));
+            return lineError(
+                row.line, QCoreApplication::translate("cambench::model",
+                                                      "output %1 has a dead time already (line %2)")
+                              .arg(output)
+                              .arg(lineOf.value(output)));
         }
         lineOf.insert(output, row.line);
         deadTimes.insert(output, value);
@@ -283,9 +296,11 @@ Result<Names> namesFromCsv(const QByteArray& content) {
         const QString kind = row.fields.at(0);
         const bool isOutput = kind == kOutputKind;
         if (!isOutput && kind != kProgramKind) {
-            return lineError(row.line, QStringLiteral("kind \"%1\" is neither \"output\" nor "
-                                                      "\"program\"")
-                                           .arg(kind));
+            return lineError(row.line,
+                             QCoreApplication::translate("cambench::model",
+                                                         "kind \"%1\" is neither \"output\" nor "
+                                                         "\"program\"")
+                                 .arg(kind));
         }
         FieldReader r(row);
         const int number = int(isOutput ? r.integer(1, "output", 1, kInt32Max)
@@ -294,10 +309,13 @@ Result<Names> namesFromCsv(const QByteArray& content) {
         const QString name = row.fields.at(2);
         const QString problem = nameProblem(name);
         if (!problem.isEmpty())
-            return lineError(row.line, QStringLiteral("the name %1").arg(problem));
+            return lineError(
+                row.line,
+                QCoreApplication::translate("cambench::model", "the name %1").arg(problem));
         const QPair<bool, int> id(isOutput, number);
         if (lineOf.contains(id)) {
-            return lineError(row.line, QStringLiteral("%1 %2 has a name already (line %3)")
+            return lineError(row.line, QCoreApplication::translate(
+                                           "cambench::model", "%1 %2 has a name already (line %3)")
                                            .arg(kind)
                                            .arg(number)
                                            .arg(lineOf.value(id)));

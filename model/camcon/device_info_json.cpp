@@ -1,5 +1,7 @@
 #include "device_info_json.h"
 
+#include <QCoreApplication>
+
 #include "model/json_reader.h"
 
 namespace cambench {
@@ -60,9 +62,10 @@ void readField(JsonReader& reader, const QJsonObject& object, const QString& pat
     const QString key = QLatin1String(f.key);
     const qint64 value = reader.integer(object, path, key, QLatin1String(f.what), f.min, f.max);
     if (f.multipleOf8 && value % 8 != 0) {
-        reader.fail(
-            JsonReader::member(path, key),
-            QStringLiteral("%1 %2 is not a multiple of 8").arg(QLatin1String(f.what)).arg(value));
+        reader.fail(JsonReader::member(path, key),
+                    QCoreApplication::translate("cambench::model", "%1 %2 is not a multiple of 8")
+                        .arg(QLatin1String(f.what))
+                        .arg(value));
     }
     info.*bound.member = T(value);
 }
@@ -81,15 +84,17 @@ QJsonObject deviceInfoToJson(const DeviceInfo& info) {
 
 DeviceInfo readDeviceInfo(JsonReader& reader, const QJsonObject& object, const QString& path) {
     DeviceInfo info;
-    info.epromDate =
-        reader.string(object, path, QStringLiteral("epromDate"), QStringLiteral("EPROM date"));
+    info.epromDate = reader.string(object, path, QStringLiteral("epromDate"),
+                                   QCoreApplication::translate("cambench::model", "EPROM date"));
     for (const auto& bound : kIntFields) readField(reader, object, path, bound, info);
     for (const auto& bound : kInt32Fields) readField(reader, object, path, bound, info);
     if (!reader.failed() && info.minPosition >= info.maxPosition) {
-        reader.fail(JsonReader::member(path, QStringLiteral("maxPosition")),
-                    QStringLiteral("maximum position %1 is not above the minimum position %2")
-                        .arg(info.maxPosition)
-                        .arg(info.minPosition));
+        reader.fail(
+            JsonReader::member(path, QStringLiteral("maxPosition")),
+            QCoreApplication::translate("cambench::model",
+                                        "maximum position %1 is not above the minimum position %2")
+                .arg(info.maxPosition)
+                .arg(info.minPosition));
     }
     return info;
 }

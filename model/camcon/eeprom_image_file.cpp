@@ -1,11 +1,12 @@
 #include "eeprom_image_file.h"
 
-#include "model/atomic_file.h"
 #include "device_info_json.h"
+#include "model/atomic_file.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
 
+#include <QCoreApplication>
 #include <QCryptographicHash>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -37,7 +38,9 @@ QString hex4(int number) {
 }
 
 QString blockName(int index, int number) {
-    return QStringLiteral("Block %1 (entry %2 of the list)").arg(hex4(number)).arg(index);
+    return QCoreApplication::translate("cambench::model", "Block %1 (entry %2 of the list)")
+        .arg(hex4(number))
+        .arg(index);
 }
 
 QList<EepromBlock> readBlocks(JsonReader& reader, const QJsonArray& array) {
@@ -46,16 +49,21 @@ QList<EepromBlock> readBlocks(JsonReader& reader, const QJsonArray& array) {
         const QString path = JsonReader::element(key("blocks"), i);
         const QJsonObject object = reader.objectValue(array.at(i), path);
         EepromBlock block;
-        block.number = quint16(reader.integer(
-            object, path, key("number"), QStringLiteral("block number"), 0, kEndBlockNumber - 1));
-        const QString hex = reader.string(object, path, key("data"), QStringLiteral("block data"));
+        block.number =
+            quint16(reader.integer(object, path, key("number"),
+                                   QCoreApplication::translate("cambench::model", "block number"),
+                                   0, kEndBlockNumber - 1));
+        const QString hex =
+            reader.string(object, path, key("data"),
+                          QCoreApplication::translate("cambench::model", "block data"));
         const QByteArray latin = hex.toLatin1();
         const bool isHex =
             hex.size() % 2 == 0 && std::all_of(latin.cbegin(), latin.cend(),
                                                [](char c) { return std::isxdigit(uchar(c)) != 0; });
         if (!reader.failed() && !isHex) {
             reader.fail(JsonReader::member(path, key("data")),
-                        QStringLiteral("block data is not an even number of hex digits"));
+                        QCoreApplication::translate(
+                            "cambench::model", "block data is not an even number of hex digits"));
         }
         block.data = QByteArray::fromHex(latin);
         blocks << block;
@@ -66,48 +74,62 @@ QList<EepromBlock> readBlocks(JsonReader& reader, const QJsonArray& array) {
 }  // namespace
 
 Status checkImageBlocks(const QList<EepromBlock>& blocks) {
-    if (blocks.isEmpty()) return Error::invalidData(QStringLiteral("The image holds no blocks."));
+    if (blocks.isEmpty())
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model", "The image holds no blocks."));
     const EepromBlock& first = blocks.first();
     if (first.number != 0) {
-        return Error::invalidData(QStringLiteral("The image does not start with block 0000 (the "
-                                                 "basic parameters) but with block %1.")
-                                      .arg(hex4(first.number)));
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model",
+                                        "The image does not start with block 0000 (the "
+                                        "basic parameters) but with block %1.")
+                .arg(hex4(first.number)));
     }
     if (first.data.size() != kEepromBasicBlockBytes) {
-        return Error::invalidData(QStringLiteral("Block 0000 has %1 bytes; the basic-parameter "
-                                                 "block has %2.")
-                                      .arg(first.data.size())
-                                      .arg(kEepromBasicBlockBytes));
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model",
+                                        "Block 0000 has %1 bytes; the basic-parameter "
+                                        "block has %2.")
+                .arg(first.data.size())
+                .arg(kEepromBasicBlockBytes));
     }
     for (int i = 1; i < blocks.size(); ++i) {
         const EepromBlock& block = blocks.at(i);
         const QString name = blockName(i, block.number);
         if (block.number <= blocks.at(i - 1).number) {
-            return Error::invalidData(QStringLiteral("%1 does not follow block %2: block "
-                                                     "numbers must ascend.")
-                                          .arg(name)
-                                          .arg(hex4(blocks.at(i - 1).number)));
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::model",
+                                            "%1 does not follow block %2: block "
+                                            "numbers must ascend.")
+                    .arg(name)
+                    .arg(hex4(blocks.at(i - 1).number)));
         }
         if (block.number >= kEndBlockNumber) {
             return Error::invalidData(
-                QStringLiteral("%1: FFFF marks the end of the EEPROM and is no block.").arg(name));
+                QCoreApplication::translate("cambench::model",
+                                            "%1: FFFF marks the end of the EEPROM and is no block.")
+                    .arg(name));
         }
         if (block.data.isEmpty())
             return Error::invalidData(QStringLiteral("%1 is empty.").arg(name));
         const int nibble = uchar(block.data.at(0)) >> 4;
         if (nibble == 0) {
-            return Error::invalidData(QStringLiteral("%1: its first byte 0x%2 gives no length "
-                                                     "(upper 4 bits are 0).")
-                                          .arg(name)
-                                          .arg(uchar(block.data.at(0)), 2, 16, QLatin1Char('0')));
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::model",
+                                            "%1: its first byte 0x%2 gives no length "
+                                            "(upper 4 bits are 0).")
+                    .arg(name)
+                    .arg(uchar(block.data.at(0)), 2, 16, QLatin1Char('0')));
         }
         if (block.data.size() != nibble * 6) {
-            return Error::invalidData(QStringLiteral("%1 has %2 bytes, but its first byte 0x%3 "
-                                                     "says %4.")
-                                          .arg(name)
-                                          .arg(block.data.size())
-                                          .arg(uchar(block.data.at(0)), 2, 16, QLatin1Char('0'))
-                                          .arg(nibble * 6));
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::model",
+                                            "%1 has %2 bytes, but its first byte 0x%3 "
+                                            "says %4.")
+                    .arg(name)
+                    .arg(block.data.size())
+                    .arg(uchar(block.data.at(0)), 2, 16, QLatin1Char('0'))
+                    .arg(nibble * 6));
         }
     }
     return success();
@@ -116,12 +138,14 @@ Status checkImageBlocks(const QList<EepromBlock>& blocks) {
 QStringList identityMismatch(const DeviceInfo& image, const DeviceInfo& device) {
     QStringList differences;
     if (image.epromDate != device.epromDate) {
-        differences << QStringLiteral("EPROM date: image \"%1\", device \"%2\".")
+        differences << QCoreApplication::translate("cambench::model",
+                                                   "EPROM date: image \"%1\", device \"%2\".")
                            .arg(image.epromDate, device.epromDate);
     }
     const auto compare = [&](const char* what, qint64 a, qint64 b) {
         if (a != b) {
-            differences << QStringLiteral("%1: image %2, device %3.")
+            differences << QCoreApplication::translate("cambench::model",
+                                                       "%1: image %2, device %3.")
                                .arg(QLatin1String(what))
                                .arg(a)
                                .arg(b);
@@ -159,18 +183,21 @@ Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
     root.remove(key("sha256"));
     if (storedHash.toLatin1().toLower() != hashOf(root)) {
         return Error::invalidData(
-            QStringLiteral("The file was changed or damaged: its SHA-256 "
-                           "checksum does not match its content. Do not "
-                           "restore it; take a new backup."));
+            QCoreApplication::translate("cambench::model",
+                                        "The file was changed or damaged: its SHA-256 "
+                                        "checksum does not match its content. Do not "
+                                        "restore it; take a new backup."));
     }
 
     EepromImage image;
     image.device = readDeviceInfo(reader, reader.object(root, {}, key("device")), key("device"));
-    const QString taken = reader.string(root, {}, key("taken"), QStringLiteral("time taken"));
+    const QString taken = reader.string(
+        root, {}, key("taken"), QCoreApplication::translate("cambench::model", "time taken"));
     image.taken = QDateTime::fromString(taken, Qt::ISODateWithMs).toUTC();
     if (!reader.failed() && !image.taken.isValid()) {
-        reader.fail(key("taken"),
-                    QStringLiteral("\"%1\" is not an ISO 8601 date and time").arg(taken));
+        reader.fail(key("taken"), QCoreApplication::translate(
+                                      "cambench::model", "\"%1\" is not an ISO 8601 date and time")
+                                      .arg(taken));
     }
     const QString tool = reader.string(root, {}, key("tool"), QStringLiteral("tool"));
     image.toolVersion = tool.startsWith(kToolPrefix) ? tool.mid(kToolPrefix.size()) : tool;
@@ -185,7 +212,8 @@ Status saveEepromImage(const QString& path, const EepromImage& image) {
     const Status blocks = checkImageBlocks(image.blocks);
     if (!blocks) {
         return Error::invalidData(
-            QStringLiteral("%1 was not saved: %2").arg(path, blocks.error().message));
+            QCoreApplication::translate("cambench::model", "%1 was not saved: %2")
+                .arg(path, blocks.error().message));
     }
     return writeFileAtomically(path, eepromImageToJson(image));
 }

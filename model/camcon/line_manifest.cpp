@@ -6,6 +6,7 @@
 #include "model/json_file.h"
 #include "model/json_reader.h"
 
+#include <QCoreApplication>
 #include <QCryptographicHash>
 #include <QJsonArray>
 
@@ -47,12 +48,15 @@ LineManifestEntry entryFromJson(JsonReader& reader, const QJsonValue& value, con
     const QString time = reader.string(object, path, key("time"), key("time"));
     entry.time = QDateTime::fromString(time, Qt::ISODate);
     if (!reader.failed() && !entry.time.isValid())
-        reader.fail(JsonReader::member(path, key("time")),
-                    QStringLiteral("\"%1\" is no ISO time").arg(time));
+        reader.fail(
+            JsonReader::member(path, key("time")),
+            QCoreApplication::translate("cambench::model", "\"%1\" is no ISO time").arg(time));
     const QString result = reader.string(object, path, key("result"), key("result"));
     if (!reader.failed() && result != key("saved") && result != key("failed"))
         reader.fail(JsonReader::member(path, key("result")),
-                    QStringLiteral("\"%1\" is neither \"saved\" nor \"failed\"").arg(result));
+                    QCoreApplication::translate("cambench::model",
+                                                "\"%1\" is neither \"saved\" nor \"failed\"")
+                        .arg(result));
     entry.outcome = result == key("saved") ? LineManifestEntry::Outcome::Saved
                                            : LineManifestEntry::Outcome::Failed;
     entry.message = reader.string(object, path, key("message"), key("message"));
@@ -113,7 +117,9 @@ Result<LineManifest> lineManifestFromJson(const QByteArray& bytes) {
         const QString path = JsonReader::element(key("devices"), i);
         const LineManifestEntry entry = entryFromJson(reader, devices.at(i), path);
         if (!reader.failed() && manifest.find(entry.device))
-            reader.fail(path, QStringLiteral("device %1 appears twice").arg(entry.device));
+            reader.fail(path,
+                        QCoreApplication::translate("cambench::model", "device %1 appears twice")
+                            .arg(entry.device));
         manifest.put(entry);
     }
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));

@@ -5,6 +5,7 @@
 #include "model/file_read.h"
 #include "model/json_file.h"
 
+#include <QCoreApplication>
 #include <QSet>
 
 namespace cambench {
@@ -28,11 +29,13 @@ int readArea(JsonReader& reader, const QJsonObject& object, const QString& path)
         for (int i = 0; i < 4; ++i) {
             if (letter == QLatin1Char(kLetters[i])) return PlcNetwork::O + i;
         }
-        reader.fail(where, QStringLiteral("the area \"%1\" is none of O, P, M, X").arg(letter));
+        reader.fail(where, QCoreApplication::translate("cambench::model",
+                                                       "the area \"%1\" is none of O, P, M, X")
+                               .arg(letter));
         return PlcNetwork::O;
     }
     if (!object.contains(key("area"))) {
-        reader.fail(path, QStringLiteral("\"area\" is missing"));
+        reader.fail(path, QCoreApplication::translate("cambench::model", "\"area\" is missing"));
         return PlcNetwork::O;
     }
     return int(reader.integerValue(value, where, QStringLiteral("area (O, P, M or X)"),
@@ -44,15 +47,18 @@ PlcNetwork readNetwork(JsonReader& reader, const QJsonValue& value, const QStrin
     PlcNetwork network;
     if (reader.failed()) return network;
     network.area = readArea(reader, object, path);
-    network.number = int(reader.integer(object, path, key("number"),
-                                        QStringLiteral("network number"), 0, kMaxPlcNumber));
+    network.number = int(reader.integer(
+        object, path, key("number"),
+        QCoreApplication::translate("cambench::model", "network number"), 0, kMaxPlcNumber));
     network.value = qint32(reader.integer(object, path, key("value"), QStringLiteral("value")));
     network.reset = quint16(
-        reader.integer(object, path, key("reset"), QStringLiteral("reset field"), 0, 0xFFFF));
+        reader.integer(object, path, key("reset"),
+                       QCoreApplication::translate("cambench::model", "reset field"), 0, 0xFFFF));
     const QJsonArray symbols = reader.array(object, path, key("symbols"));
     const QString symbolsPath = JsonReader::member(path, key("symbols"));
     if (!reader.failed() && symbols.size() != PlcNetwork::kSymbols) {
-        reader.fail(symbolsPath, QStringLiteral("%1 symbols, expected %2 (%3 paths of %4)")
+        reader.fail(symbolsPath, QCoreApplication::translate(
+                                     "cambench::model", "%1 symbols, expected %2 (%3 paths of %4)")
                                      .arg(symbols.size())
                                      .arg(PlcNetwork::kSymbols)
                                      .arg(PlcNetwork::kPaths)
@@ -98,9 +104,10 @@ QList<PlcNetwork> plcNetworksFromJson(JsonReader& reader, const QJsonArray& arra
         const PlcNetwork network = readNetwork(reader, array.at(i), where);
         const QPair<int, int> id(network.area, network.number);
         if (!reader.failed() && seen.contains(id)) {
-            reader.fail(where, QStringLiteral("network %1%2 appears twice")
-                                   .arg(plcAreaLetter(network.area))
-                                   .arg(network.number));
+            reader.fail(where,
+                        QCoreApplication::translate("cambench::model", "network %1%2 appears twice")
+                            .arg(plcAreaLetter(network.area))
+                            .arg(network.number));
         }
         seen.insert(id);
         networks << network;

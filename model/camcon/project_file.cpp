@@ -10,6 +10,7 @@
 #include "plc_file.h"
 #include "settings_file.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QSet>
 
@@ -126,12 +127,16 @@ private:
             const QJsonObject object = m_r.objectValue(array.at(i), path);
             CamProgram program;
             program.number =
-                int(m_r.integer(object, path, key("number"), QStringLiteral("program number"), 0,
+                int(m_r.integer(object, path, key("number"),
+                                QCoreApplication::translate("cambench::model", "program number"), 0,
                                 device.programs - 1));
-            program.name = m_r.string(object, path, key("name"), QStringLiteral("program name"));
+            program.name =
+                m_r.string(object, path, key("name"),
+                           QCoreApplication::translate("cambench::model", "program name"));
             if (!m_r.failed() && seen.contains(program.number)) {
                 m_r.fail(JsonReader::member(path, key("number")),
-                         QStringLiteral("program %1 appears twice").arg(program.number));
+                         QCoreApplication::translate("cambench::model", "program %1 appears twice")
+                             .arg(program.number));
             }
             seen.insert(program.number);
             const QJsonArray tracks = m_r.array(object, path, key("tracks"));
@@ -140,8 +145,10 @@ private:
                     JsonReader::element(JsonReader::member(path, key("tracks")), j);
                 const Track track = readTrack(tracks.at(j), trackPath, device);
                 if (!m_r.failed() && program.tracks.contains(track.output)) {
-                    m_r.fail(JsonReader::member(trackPath, key("output")),
-                             QStringLiteral("output %1 appears twice").arg(track.output));
+                    m_r.fail(
+                        JsonReader::member(trackPath, key("output")),
+                        QCoreApplication::translate("cambench::model", "output %1 appears twice")
+                            .arg(track.output));
                 }
                 program.tracks.insert(track.output, track);
             }
@@ -161,15 +168,19 @@ private:
             const QString camPath = JsonReader::element(camsPath, k);
             const QJsonArray pair = m_r.arrayValue(cams.at(k), camPath);
             if (!m_r.failed() && pair.size() != 2) {
-                m_r.fail(camPath, QStringLiteral("a cam is a pair [switch-on point, "
-                                                 "switch-off point], this has %1 values")
-                                      .arg(pair.size()));
+                m_r.fail(camPath,
+                         QCoreApplication::translate("cambench::model",
+                                                     "a cam is a pair [switch-on point, "
+                                                     "switch-off point], this has %1 values")
+                             .arg(pair.size()));
             }
             Cam cam;
-            cam.on =
-                qint32(m_r.integerValue(pair.at(0), camPath, QStringLiteral("switch-on point")));
-            cam.off =
-                qint32(m_r.integerValue(pair.at(1), camPath, QStringLiteral("switch-off point")));
+            cam.on = qint32(m_r.integerValue(
+                pair.at(0), camPath,
+                QCoreApplication::translate("cambench::model", "switch-on point")));
+            cam.off = qint32(m_r.integerValue(
+                pair.at(1), camPath,
+                QCoreApplication::translate("cambench::model", "switch-off point")));
             track.cams << cam;
         }
         return track;
@@ -183,10 +194,12 @@ private:
             const int output = int(m_r.integer(
                 object, path, key("output"), QStringLiteral("output"), 1, device.deadTimeOutputs));
             const qint32 value =
-                qint32(m_r.integer(object, path, key("deadTime"), QStringLiteral("dead time")));
+                qint32(m_r.integer(object, path, key("deadTime"),
+                                   QCoreApplication::translate("cambench::model", "dead time")));
             if (!m_r.failed() && deadTimes.contains(output)) {
                 m_r.fail(JsonReader::member(path, key("output")),
-                         QStringLiteral("output %1 appears twice").arg(output));
+                         QCoreApplication::translate("cambench::model", "output %1 appears twice")
+                             .arg(output));
             }
             deadTimes.insert(output, value);
         }
@@ -204,7 +217,9 @@ private:
             const QString name = m_r.string(object, path, key("name"), QStringLiteral("name"));
             if (!m_r.failed() && names.contains(number)) {
                 m_r.fail(JsonReader::member(path, key(numberKey)),
-                         QStringLiteral("%1 %2 appears twice").arg(key(numberKey)).arg(number));
+                         QCoreApplication::translate("cambench::model", "%1 %2 appears twice")
+                             .arg(key(numberKey))
+                             .arg(number));
             }
             names.insert(number, name);
         }
@@ -217,13 +232,16 @@ private:
             const QString path = JsonReader::element(key("users"), i);
             const QJsonObject object = m_r.objectValue(array.at(i), path);
             User user;
-            user.name = m_r.string(object, path, key("name"), QStringLiteral("user name"));
+            user.name = m_r.string(object, path, key("name"),
+                                   QCoreApplication::translate("cambench::model", "user name"));
             // Saved without numbers unless asked for (ProjectSaveOptions).
             if (object.contains(key("number")))
                 user.number =
-                    m_r.string(object, path, key("number"), QStringLiteral("user number"));
+                    m_r.string(object, path, key("number"),
+                               QCoreApplication::translate("cambench::model", "user number"));
             user.allOutputs =
-                m_r.boolean(object, path, key("allOutputs"), QStringLiteral("\"all outputs\""));
+                m_r.boolean(object, path, key("allOutputs"),
+                            QCoreApplication::translate("cambench::model", "\"all outputs\""));
             user.rights = quint32(m_r.integer(object, path, key("rights"), QStringLiteral("rights"),
                                               0, 0xFFFFFFFFLL));
             user.outputAccess = QList<bool>(kUserAccessOutputs, false);
@@ -244,7 +262,8 @@ private:
         const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
         if (!m_r.failed() && !time.isValid())
             m_r.fail(JsonReader::member(path, name),
-                     QStringLiteral("\"%1\" is no ISO 8601 time").arg(text));
+                     QCoreApplication::translate("cambench::model", "\"%1\" is no ISO 8601 time")
+                         .arg(text));
         return time.toUTC();
     }
 
@@ -259,8 +278,9 @@ private:
         for (int i = 0; i < programs.size() && !m_r.failed(); ++i) {
             const QString where = JsonReader::element(JsonReader::member(path, key("programs")), i);
             const QJsonObject entry = m_r.objectValue(programs.at(i), where);
-            const int program = int(m_r.integer(entry, where, key("program"),
-                                                QStringLiteral("program number"), 0, 32767));
+            const int program = int(m_r.integer(
+                entry, where, key("program"),
+                QCoreApplication::translate("cambench::model", "program number"), 0, 32767));
             readAt.programs.insert(program, readTime(entry, where, key("time")));
         }
         return readAt;
@@ -277,16 +297,20 @@ QStringList validateProject(const Project& project) {
     QSet<int> programNumbers;
     for (const CamProgram& program : project.programs) {
         if (programNumbers.contains(program.number))
-            problems << QStringLiteral("Program %1 appears twice.").arg(program.number);
+            problems << QCoreApplication::translate("cambench::model", "Program %1 appears twice.")
+                            .arg(program.number);
         programNumbers.insert(program.number);
         for (const CamProblem& problem : validateProgram(program, project.device, rotary))
             problems << problem.message + QLatin1Char('.');
         const QString name = nameProblem(program.name);
         if (!name.isEmpty())
-            problems << QStringLiteral("Name of program %1: %2.").arg(program.number).arg(name);
+            problems << QCoreApplication::translate("cambench::model", "Name of program %1: %2.")
+                            .arg(program.number)
+                            .arg(name);
         const auto named = project.names.programs.constFind(program.number);
         if (named != project.names.programs.cend() && *named != program.name) {
-            problems << QStringLiteral(
+            problems << QCoreApplication::translate(
+                            "cambench::model",
                             "Program %1 is named \"%2\", but the list of program "
                             "names says \"%3\".")
                             .arg(program.number)
@@ -302,7 +326,8 @@ QStringList validateProject(const Project& project) {
         problems << validatePlcNetwork(network);
         const QPair<int, int> id(network.area, network.number);
         if (networks.contains(id)) {
-            problems << QStringLiteral("PLC network %1 of area 0x%2 appears twice.")
+            problems << QCoreApplication::translate("cambench::model",
+                                                    "PLC network %1 of area 0x%2 appears twice.")
                             .arg(network.number)
                             .arg(network.area, 2, 16, QLatin1Char('0'));
         }

@@ -1,5 +1,7 @@
 #include "settings_file.h"
 
+#include <QCoreApplication>
+
 #include "model/atomic_file.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
@@ -33,21 +35,25 @@ SystemSettings settingsFromJson(JsonReader& reader, const QJsonObject& object,
         const QString where = JsonReader::member(path, it.key());
         const SettingSpec* spec = findSetting(it.key());
         if (!spec) {
-            reader.fail(where, QStringLiteral("there is no such setting"));
+            reader.fail(where,
+                        QCoreApplication::translate("cambench::model", "there is no such setting"));
             break;
         }
         if (spec->kind == SettingKind::Text) {
             if (!it->isString()) {
-                reader.fail(where, QStringLiteral("the value is not a text"));
+                reader.fail(where, QCoreApplication::translate("cambench::model",
+                                                               "the value is not a text"));
                 break;
             }
             settings.insert(it.key(), it->toString());
         } else {
             // Any whole number: a device may hold values outside the range
             // the manual gives; validateSettings() says so, loading keeps them.
-            settings.insert(it.key(), reader.integerValue(*it, where, QStringLiteral("the value"),
-                                                          std::numeric_limits<qint64>::min(),
-                                                          std::numeric_limits<qint64>::max()));
+            settings.insert(
+                it.key(),
+                reader.integerValue(
+                    *it, where, QCoreApplication::translate("cambench::model", "the value"),
+                    std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max()));
         }
     }
     return settings;

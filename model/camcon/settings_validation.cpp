@@ -1,5 +1,7 @@
 #include "system_settings.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -63,10 +65,12 @@ QString rangeText(const SettingSpec& spec) {
 }
 
 QString textProblem(const SettingSpec& spec, const QVariant& value) {
-    if (value.typeId() != QMetaType::QString) return QStringLiteral("a text is expected");
+    if (value.typeId() != QMetaType::QString)
+        return QCoreApplication::translate("cambench::model", "a text is expected");
     const QString text = value.toString();
     if (text.size() > spec.maxLength) {
-        return QStringLiteral("\"%1\" has %2 characters; at most %3 are allowed")
+        return QCoreApplication::translate("cambench::model",
+                                           "\"%1\" has %2 characters; at most %3 are allowed")
             .arg(text)
             .arg(text.size())
             .arg(spec.maxLength);
@@ -74,7 +78,8 @@ QString textProblem(const SettingSpec& spec, const QVariant& value) {
     for (const QChar c : text) {
         if (c.unicode() < 0x20 || c.unicode() > 0xFF ||
             (c.unicode() >= 0x7F && c.unicode() < 0xA0)) {
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                       "cambench::model",
                        "\"%1\" contains a character the device cannot store (only "
                        "printable Latin-1 characters are allowed)")
                 .arg(text);
@@ -89,21 +94,25 @@ QString numberProblem(const SettingSpec& spec, qint64 v) {
         for (const SettingChoice& c : spec.choices) {
             if (c.value == v) return {};
         }
-        return QStringLiteral("%1 is not one of the allowed values %2")
+        return QCoreApplication::translate("cambench::model",
+                                           "%1 is not one of the allowed values %2")
             .arg(shown, choiceRanges(spec));
     }
     if (spec.excludeZero && v == 0) {
-        return QStringLiteral("0 is not allowed; allowed are %1..-%3 and %3..%2")
+        return QCoreApplication::translate("cambench::model",
+                                           "0 is not allowed; allowed are %1..-%3 and %3..%2")
             .arg(formatSettingValue(spec, spec.min), formatSettingValue(spec, spec.max),
                  formatSettingValue(spec, 1));
     }
     const bool isRef = spec.kind == SettingKind::InputRef || spec.kind == SettingKind::OutputRef;
     if (v < spec.min || v > spec.max) {
-        return QStringLiteral("%1 is outside the allowed range %2%3")
+        return QCoreApplication::translate("cambench::model",
+                                           "%1 is outside the allowed range %2%3")
             .arg(shown, rangeText(spec), isRef ? QStringLiteral(" (0 = none)") : QString());
     }
     if (spec.step > 1 && v % spec.step != 0) {
-        return QStringLiteral("%1 is not a multiple of %2 (allowed are %3 in steps of %2)")
+        return QCoreApplication::translate(
+                   "cambench::model", "%1 is not a multiple of %2 (allowed are %3 in steps of %2)")
             .arg(shown)
             .arg(spec.step)
             .arg(rangeText(spec));
@@ -134,7 +143,9 @@ QString formatSettingValue(const SettingSpec& spec, qint64 value) {
 QString settingValueProblem(const SettingSpec& spec, const QVariant& value) {
     if (spec.kind == SettingKind::Text) return textProblem(spec, value);
     const std::optional<qint64> number = integerValue(value);
-    if (!number) return QStringLiteral("\"%1\" is not a whole number").arg(value.toString());
+    if (!number)
+        return QCoreApplication::translate("cambench::model", "\"%1\" is not a whole number")
+            .arg(value.toString());
     return numberProblem(spec, *number);
 }
 
@@ -143,7 +154,9 @@ QStringList validateSettings(const SystemSettings& settings) {
     for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
         const SettingSpec* spec = findSetting(it.key());
         if (!spec) {
-            problems << QStringLiteral("%1: there is no such setting.").arg(it.key());
+            problems << QCoreApplication::translate("cambench::model",
+                                                    "%1: there is no such setting.")
+                            .arg(it.key());
             continue;
         }
         const QString problem = settingValueProblem(*spec, *it);

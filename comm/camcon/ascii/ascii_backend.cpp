@@ -1,5 +1,7 @@
 #include "ascii_backend.h"
 
+#include <QCoreApplication>
+
 #include "traffic_mask.h"
 
 namespace cambench::comm {
@@ -24,20 +26,24 @@ void AsciiBackend::setDevice(int device) {
 
 QString AsciiBackend::describe() const {
     if (m_framing == Framing::Multiuser) return QStringLiteral("device %1").arg(m_device);
-    return QStringLiteral("the device");
+    return QCoreApplication::translate("cambench::comm", "the device");
 }
 
 QString AsciiBackend::checkHint() const {
     if (m_framing == Framing::Multiuser)
-        return QStringLiteral("check the cable, the baud rate, that the device speaks the "
-                              "Multiuser protocol and the device number");
-    return QStringLiteral("check the cable, the baud rate and that the device speaks the "
-                          "Standard protocol");
+        return QCoreApplication::translate(
+            "cambench::comm",
+            "check the cable, the baud rate, that the device speaks the "
+            "Multiuser protocol and the device number");
+    return QCoreApplication::translate(
+        "cambench::comm",
+        "check the cable, the baud rate and that the device speaks the "
+        "Standard protocol");
 }
 
 void AsciiBackend::beginRequest(const Request& request) {
-    Frame frame{request.message.isEmpty() ? kQuery : request.message.at(0),
-                request.message.mid(1), std::nullopt, true};
+    Frame frame{request.message.isEmpty() ? kQuery : request.message.at(0), request.message.mid(1),
+                std::nullopt, true};
     m_address.reset();
     if (m_framing == Framing::Multiuser) {
         // A new request takes the next block number; its retries reuse it,
@@ -76,26 +82,27 @@ BackendStep AsciiBackend::feed(QByteArrayView bytes, qint64) {
         Incoming in;
         in.wire = event.raw;
         switch (event.kind) {
-        case DecodeEvent::FrameOk:
-            if (isOurs(event.frame)) {
-                in.kind = Incoming::Message;
-                in.message = event.frame.lead + event.frame.body;
-            } else {
-                in.kind = Incoming::Foreign;
-            }
-            break;
-        case DecodeEvent::BadChecksum:
-            in.kind = isOurs(event.frame) ? Incoming::Damaged : Incoming::Foreign;
-            in.detail = QStringLiteral("a reply with a wrong checksum");
-            break;
-        case DecodeEvent::Oversized:
-            in.kind = Incoming::Damaged;
-            in.detail = QStringLiteral("an oversized reply");
-            break;
-        case DecodeEvent::Garbage:
-            in.kind = Incoming::Garbage;
-            in.detail = event.detail;
-            break;
+            case DecodeEvent::FrameOk:
+                if (isOurs(event.frame)) {
+                    in.kind = Incoming::Message;
+                    in.message = event.frame.lead + event.frame.body;
+                } else {
+                    in.kind = Incoming::Foreign;
+                }
+                break;
+            case DecodeEvent::BadChecksum:
+                in.kind = isOurs(event.frame) ? Incoming::Damaged : Incoming::Foreign;
+                in.detail =
+                    QCoreApplication::translate("cambench::comm", "a reply with a wrong checksum");
+                break;
+            case DecodeEvent::Oversized:
+                in.kind = Incoming::Damaged;
+                in.detail = QCoreApplication::translate("cambench::comm", "an oversized reply");
+                break;
+            case DecodeEvent::Garbage:
+                in.kind = Incoming::Garbage;
+                in.detail = event.detail;
+                break;
         }
         step.incoming.append(in);
     }

@@ -1,5 +1,7 @@
 #include "ascii_camcon.h"
 
+#include <QCoreApplication>
+
 #include "traffic_mask.h"
 
 namespace cambench::comm {
@@ -19,22 +21,26 @@ QString AsciiCamCon::protocolId() const {
 
 bool AsciiCamCon::has(CamConCapability capability) const {
     switch (capability) {
-    case CamConCapability::Users:
-    case CamConCapability::EepromBackup:
-    case CamConCapability::Terminal:
-    case CamConCapability::OutputNames:
-    case CamConCapability::PlcNetworks: return true;
-    case CamConCapability::BusScan: return m_link.settings().framing == Framing::Multiuser;
-    case CamConCapability::DeadTimeModes:
-    case CamConCapability::AnalogueCams:
-    case CamConCapability::EepromLock: return false;
+        case CamConCapability::Users:
+        case CamConCapability::EepromBackup:
+        case CamConCapability::Terminal:
+        case CamConCapability::OutputNames:
+        case CamConCapability::PlcNetworks:
+            return true;
+        case CamConCapability::BusScan:
+            return m_link.settings().framing == Framing::Multiuser;
+        case CamConCapability::DeadTimeModes:
+        case CamConCapability::AnalogueCams:
+        case CamConCapability::EepromLock:
+            return false;
     }
     return false;
 }
 
 Result<QByteArray> AsciiCamCon::raw(const QByteArray& request) {
     if (request.isEmpty())
-        return Error::usage(QStringLiteral("an empty request: type ? or ! and the command"));
+        return Error::usage(QCoreApplication::translate(
+            "cambench::comm", "an empty request: type ? or ! and the command"));
     const Result<QByteArray> reply = m_link.raw(request.at(0), request.mid(1));
     if (!reply) return reply.error();
     // User numbers are secrets on the screen too, not only in the log.

@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 
 #include "model/camcon/cam_validation.h"
@@ -17,7 +19,9 @@ namespace {
 constexpr int kMaxCamsPerTrack = 1024;
 
 QString trackText(int program, int output) {
-    return QStringLiteral("program %1, output %2").arg(program).arg(output);
+    return QCoreApplication::translate("cambench::comm", "program %1, output %2")
+        .arg(program)
+        .arg(output);
 }
 
 }  // namespace
@@ -37,8 +41,10 @@ Result<Track> AsciiCamCon::readTrack(int program, int output) {
         if (reply->num("more") == 0) break;
         if (track.cams.size() >= kMaxCamsPerTrack) {
             return Error::communication(
-                QStringLiteral("reading %1: the device reports more than %2 cams on one track; "
-                               "check the device")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "reading %1: the device reports more than %2 cams on one track; "
+                    "check the device")
                     .arg(where)
                     .arg(kMaxCamsPerTrack));
         }
@@ -98,13 +104,15 @@ public:
                                                         {"off", qint64(cam.off)}});
         m_repeated |= m_link.lastAttempts() > 1;
         if (!reply && !repeatedAfterLostReply(reply.error())) {
-            Error error = inContext(QStringLiteral("inserting the cam %1..%2 on %3 (!NINS)")
+            Error error = inContext(QCoreApplication::translate(
+                                        "cambench::comm", "inserting the cam %1..%2 on %3 (!NINS)")
                                         .arg(cam.on)
                                         .arg(cam.off)
                                         .arg(trackText(m_program, m_output)),
                                     reply.error());
             if (error.kind == ErrorKind::DeviceError && error.deviceCode == -1) {
-                error.message += QStringLiteral(
+                error.message += QCoreApplication::translate(
+                    "cambench::comm",
                     " On an insert the usual cause is a cam that overlaps another cam of the track "
                     "or lies outside the device's range.");
             }
@@ -121,7 +129,8 @@ public:
                                                         {"on", qint64(cam.on)}});
         m_repeated |= m_link.lastAttempts() > 1;
         if (!reply && !repeatedAfterLostReply(reply.error())) {
-            return inContext(QStringLiteral("deleting the cam at %1 on %2 (!NDEL)")
+            return inContext(QCoreApplication::translate("cambench::comm",
+                                                         "deleting the cam at %1 on %2 (!NDEL)")
                                  .arg(cam.on)
                                  .arg(trackText(m_program, m_output)),
                              reply.error());
@@ -139,12 +148,15 @@ public:
         for (auto it = inserted.crbegin(); it != inserted.crend(); ++it) back &= !remove(*it);
         for (auto it = deleted.crbegin(); it != deleted.crend(); ++it) back &= !insert(*it);
         if (inserted.isEmpty() && deleted.isEmpty()) {
-            cause.message += QStringLiteral(" Nothing had been changed on the track yet.");
+            cause.message += QCoreApplication::translate(
+                "cambench::comm", " Nothing had been changed on the track yet.");
         } else if (back) {
-            cause.message +=
-                QStringLiteral(" The cams already changed were put back: the track is as it was.");
+            cause.message += QCoreApplication::translate(
+                "cambench::comm",
+                " The cams already changed were put back: the track is as it was.");
         } else {
-            cause.message += QStringLiteral(
+            cause.message += QCoreApplication::translate(
+                "cambench::comm",
                 " Putting the track back failed too: it may now hold other cams than before; "
                 "read it to see.");
         }
@@ -222,8 +234,10 @@ Status AsciiCamCon::writeTrackFrom(int program, const Track& track, const Track&
     normaliseTrack(expected);
     if (written->cams != expected.cams) {
         return Error::communication(
-            QStringLiteral("writing %1: after lost replies the device holds %2 cams instead of "
-                           "the %3 written; write the track again")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "writing %1: after lost replies the device holds %2 cams instead of "
+                "the %3 written; write the track again")
                 .arg(where)
                 .arg(written->cams.size())
                 .arg(track.cams.size()));
@@ -234,7 +248,10 @@ Status AsciiCamCon::writeTrackFrom(int program, const Track& track, const Track&
 Status AsciiCamCon::deleteProgram(int program) {
     const Result<Fields> reply = m_link.call('!', "PDEL", Fields{{"program", qint64(program)}});
     if (!reply) {
-        return inContext(QStringLiteral("deleting program %1 (!PDEL)").arg(program), reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "deleting program %1 (!PDEL)")
+                .arg(program),
+            reply.error());
     }
     return success();
 }
@@ -243,9 +260,11 @@ Status AsciiCamCon::copyProgram(int from, int to) {
     const Result<Fields> reply =
         m_link.call('!', "PCPY", Fields{{"target", qint64(to)}, {"source", qint64(from)}});
     if (!reply) {
-        return inContext(
-            QStringLiteral("copying program %1 to program %2 (!PCPY)").arg(from).arg(to),
-            reply.error());
+        return inContext(QCoreApplication::translate("cambench::comm",
+                                                     "copying program %1 to program %2 (!PCPY)")
+                             .arg(from)
+                             .arg(to),
+                         reply.error());
     }
     return success();
 }
@@ -256,11 +275,13 @@ Status AsciiCamCon::copyTrack(int program, int fromOutput, int toOutput) {
                                                     {"target", wireOutput(toOutput)},
                                                     {"source", wireOutput(fromOutput)}});
     if (!reply) {
-        return inContext(QStringLiteral("copying output %1 to output %2 in program %3 (!PACPY)")
-                             .arg(fromOutput)
-                             .arg(toOutput)
-                             .arg(program),
-                         reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm",
+                                        "copying output %1 to output %2 in program %3 (!PACPY)")
+                .arg(fromOutput)
+                .arg(toOutput)
+                .arg(program),
+            reply.error());
     }
     return success();
 }

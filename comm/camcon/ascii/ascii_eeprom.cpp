@@ -3,6 +3,7 @@
 
 #include "model/camcon/eeprom_image_file.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 
 #include <optional>
@@ -45,8 +46,7 @@ struct BlockSend {
     bool repeated = false;         // the block went out more than once
 };
 
-Result<Fields> sendBlock(ProtocolLink& link, const Fields& fields, int timeoutMs,
-                         BlockSend& send) {
+Result<Fields> sendBlock(ProtocolLink& link, const Fields& fields, int timeoutMs, BlockSend& send) {
     send = {};
     if (link.settings().framing == Framing::Multiuser) {
         Result<Fields> reply = link.call('!', "EE", fields, timeoutMs);
@@ -119,21 +119,25 @@ Result<EepromImage> AsciiCamCon::backup(const ProgressFn& progress) {
         if (progress) progress(qMin(bytes, estimate), estimate);
         const Result<Fields> reply = m_link.call('?', "EE", Fields{{"block", qint64(number)}});
         if (!reply) {
-            return inContext(QStringLiteral("reading EEPROM block %1 (?EE)").arg(hex4(number)),
-                             reply.error());
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "reading EEPROM block %1 (?EE)")
+                    .arg(hex4(number)),
+                reply.error());
         }
         const qint64 replyNumber = reply->num("block");
         if (replyNumber == kEndBlock) {
             if (number == 0) {
-                return Error::communication(
-                    QStringLiteral("the device sent no EEPROM block 0000; check the device"));
+                return Error::communication(QCoreApplication::translate(
+                    "cambench::comm", "the device sent no EEPROM block 0000; check the device"));
             }
             if (progress) progress(estimate, estimate);
             return image;
         }
         if (replyNumber != number) {
             return Error::communication(
-                QStringLiteral("asked for EEPROM block %1, the device sent block %2; try again")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "asked for EEPROM block %1, the device sent block %2; try again")
                     .arg(hex4(number), hex4(int(replyNumber))));
         }
         image.blocks.append(EepromBlock{quint16(number), reply->bytes("data")});
@@ -144,20 +148,22 @@ Result<EepromImage> AsciiCamCon::backup(const ProgressFn& progress) {
                         : QList<EepromBlock>{image.blocks.first(), image.blocks.last()});
         if (!blocks) {
             return Error::communication(
-                QStringLiteral("the device sent a malformed EEPROM block: %1; try again")
+                QCoreApplication::translate(
+                    "cambench::comm", "the device sent a malformed EEPROM block: %1; try again")
                     .arg(blocks.error().message));
         }
         bytes += image.blocks.last().data.size();
     }
-    return Error::communication(
-        QStringLiteral("the device sent EEPROM blocks up to FFFE without the end marker FFFF; "
-                       "check the device"));
+    return Error::communication(QCoreApplication::translate(
+        "cambench::comm",
+        "the device sent EEPROM blocks up to FFFE without the end marker FFFF; "
+        "check the device"));
 }
 
 Status AsciiCamCon::restore(const EepromImage& image, const ProgressFn& progress) {
     if (image.blocks.isEmpty() || image.blocks.first().number != 0) {
-        return Error::invalidData(
-            QStringLiteral("the EEPROM image does not start with block 0000; nothing was sent"));
+        return Error::invalidData(QCoreApplication::translate(
+            "cambench::comm", "the EEPROM image does not start with block 0000; nothing was sent"));
     }
     const int total = int(image.blocks.size()) + 1;  // + the empty end block
     std::optional<TransferFailure> failure;
@@ -171,24 +177,28 @@ Status AsciiCamCon::restore(const EepromImage& image, const ProgressFn& progress
     }
     QString state;
     if (failure->index == 0) {
-        state = QStringLiteral("The device may already be ERASED (block 0000 starts the erase).");
+        state = QCoreApplication::translate(
+            "cambench::comm", "The device may already be ERASED (block 0000 starts the erase).");
     } else if (failure->index < total - 1) {
-        state = QStringLiteral(
+        state = QCoreApplication::translate(
+                    "cambench::comm",
                     "The device is now ERASED: it holds only the blocks before %1 "
                     "and does not run.")
                     .arg(hex4(failure->number));
     } else {
-        state = QStringLiteral(
-            "The device holds every block but did not confirm that it "
-            "started.");
+        state =
+            QCoreApplication::translate("cambench::comm",
+                                        "The device holds every block but did not confirm that it "
+                                        "started.");
     }
-    return inContext(
-        QStringLiteral("restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same "
-                       "restore again is safe: it starts by erasing the device. Cause")
-            .arg(failure->index + 1)
-            .arg(total)
-            .arg(hex4(failure->number), state),
-        failure->error);
+    return inContext(QCoreApplication::translate(
+                         "cambench::comm",
+                         "restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same "
+                         "restore again is safe: it starts by erasing the device. Cause")
+                         .arg(failure->index + 1)
+                         .arg(total)
+                         .arg(hex4(failure->number), state),
+                     failure->error);
 }
 
 }  // namespace cambench::comm

@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 
 namespace cambench::comm {
@@ -51,15 +53,18 @@ Result<DeviceInfo> AsciiCamCon::readInfo() {
     DeviceInfo info;
     const Result<Fields> eprom = m_link.call('?', "EPROM");
     if (!eprom)
-        return inContext(QStringLiteral("reading the device identity (?EPROM)"), eprom.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the device identity (?EPROM)"),
+            eprom.error());
     info.epromDate = text(*eprom, "text");
     for (const InfoQuery& query : kInfoQueries) {
         const Result<Fields> reply = m_link.call('?', query.command);
         if (!reply) {
             if (query.optional && isNotUnderstood(reply.error())) continue;
-            return inContext(QStringLiteral("reading the device identity (?%1)")
-                                 .arg(QLatin1String(query.command)),
-                             reply.error());
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "reading the device identity (?%1)")
+                    .arg(QLatin1String(query.command)),
+                reply.error());
         }
         info.*query.member = int(reply->num("value"));
     }
@@ -69,7 +74,10 @@ Result<DeviceInfo> AsciiCamCon::readInfo() {
 Result<DeviceStatus> AsciiCamCon::readStatus(int outputs, int inputs) {
     DeviceStatus status;
     const Result<Fields> error = m_link.call('?', "ERR");
-    if (!error) return inContext(QStringLiteral("reading the error state (?ERR)"), error.error());
+    if (!error)
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the error state (?ERR)"),
+            error.error());
     status.errorState = int(error->num("value"));
 
     // The provisional queries (notes 3) may be unknown to the firmware.
@@ -94,7 +102,8 @@ Result<DeviceStatus> AsciiCamCon::readStatus(int outputs, int inputs) {
             query.apply(*reply);
         } else if (!isNotUnderstood(reply.error())) {
             return inContext(
-                QStringLiteral("reading the status (?%1)").arg(QLatin1String(query.command)),
+                QCoreApplication::translate("cambench::comm", "reading the status (?%1)")
+                    .arg(QLatin1String(query.command)),
                 reply.error());
         }
     }
@@ -103,14 +112,20 @@ Result<DeviceStatus> AsciiCamCon::readStatus(int outputs, int inputs) {
 
 Status AsciiCamCon::resetError() {
     const Result<Fields> reply = m_link.call('!', "ERR");
-    if (!reply) return inContext(QStringLiteral("resetting the error (!ERR)"), reply.error());
+    if (!reply)
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "resetting the error (!ERR)"),
+            reply.error());
     return success();
 }
 
 Status AsciiCamCon::selectProgram(int program) {
     const Result<Fields> reply = m_link.call('!', "PAU", Fields{{"value", qint64(program)}});
     if (!reply) {
-        return inContext(QStringLiteral("selecting program %1 (!PAU)").arg(program), reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "selecting program %1 (!PAU)")
+                .arg(program),
+            reply.error());
     }
     return success();
 }

@@ -1,5 +1,7 @@
 #include "ascii_link.h"
 
+#include <QCoreApplication>
+
 #include "device_errors.h"
 
 #include <algorithm>
@@ -26,7 +28,8 @@ QString rawLabel(char kind, const QByteArray& body) {
     QByteArray shown = body.left(12);
     for (char& c : shown)
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '.';
-    return commandLabel(kind, shown) + (body.size() > shown.size() ? QStringLiteral("...") : QString());
+    return commandLabel(kind, shown) +
+           (body.size() > shown.size() ? QStringLiteral("...") : QString());
 }
 
 QString eepromDateText(const QByteArray& eprom) {
@@ -38,15 +41,17 @@ QString eepromDateText(const QByteArray& eprom) {
 
 int fieldChars(const FieldSpec& field) {
     switch (field.type) {
-    case FieldType::Hex:
-    case FieldType::SignedHex:
-    case FieldType::Text: return field.width;
-    case FieldType::TextRest:
-    case FieldType::HexBytes: return kLongestRestChars;
-    case FieldType::Binary:  // every byte may need an ESC
-        return 2 * (field.width < 0 ? kLongestBinaryBytes : field.width);
-    case FieldType::HexWords:
-        return field.width * (field.count < 0 ? kLongestWordList : field.count);
+        case FieldType::Hex:
+        case FieldType::SignedHex:
+        case FieldType::Text:
+            return field.width;
+        case FieldType::TextRest:
+        case FieldType::HexBytes:
+            return kLongestRestChars;
+        case FieldType::Binary:  // every byte may need an ESC
+            return 2 * (field.width < 0 ? kLongestBinaryBytes : field.width);
+        case FieldType::HexWords:
+            return field.width * (field.count < 0 ? kLongestWordList : field.count);
     }
     return 0;
 }
@@ -106,8 +111,8 @@ void AsciiLink::setLineTiming(const LineTiming& line) {
     applySettings();
 }
 
-Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fields,
-                                       int timeoutMs, ReplyMatch* match) {
+Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fields, int timeoutMs,
+                                       ReplyMatch* match) {
     Result<QByteArray> body = encodeRequestBody(spec, fields);
     if (!body) return body.error();
     Request request;
@@ -125,18 +130,22 @@ Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fi
                               true};
             *match = matchReply(spec, frame);
             switch (match->kind) {
-            case ReplyMatch::Matches:
-            case ReplyMatch::DeviceError:
-            case ReplyMatch::NotUnderstood: return Verdict::Accept;
-            case ReplyMatch::Malformed:
-                problem = QStringLiteral("a malformed reply: %1").arg(match->detail);
-                return Verdict::Retry;
-            case ReplyMatch::Unrelated: break;
+                case ReplyMatch::Matches:
+                case ReplyMatch::DeviceError:
+                case ReplyMatch::NotUnderstood:
+                    return Verdict::Accept;
+                case ReplyMatch::Malformed:
+                    problem = QCoreApplication::translate("cambench::comm", "a malformed reply: %1")
+                                  .arg(match->detail);
+                    return Verdict::Retry;
+                case ReplyMatch::Unrelated:
+                    break;
             }
             if (!multiuser) return Verdict::Ignore;
             // Our block number, another command's answer: the device repeated
             // its last answer and did not execute this request.
-            problem = QStringLiteral("the device repeated an answer to an earlier request");
+            problem = QCoreApplication::translate(
+                "cambench::comm", "the device repeated an answer to an earlier request");
             return Verdict::Resend;
         };
     }
@@ -191,8 +200,9 @@ int AsciiLink::attemptTimeoutMs(const CommandSpec& spec, const Fields& fields) {
 Result<Fields> AsciiLink::call(char kind, const char* name, const Fields& fields, int timeoutMs) {
     const CommandSpec* spec = findCommand(kind, name);
     if (!spec)
-        return Error::usage(QStringLiteral("%1 is not a command of the catalogue")
-                                .arg(commandLabel(kind, name)));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "%1 is not a command of the catalogue")
+                .arg(commandLabel(kind, name)));
     return call(*spec, fields, timeoutMs);
 }
 
@@ -213,29 +223,36 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
 
     const QString label = request->label;
     switch (match.kind) {
-    case ReplyMatch::DeviceError:
-        return Error::device(match.errorCode,
-                             QStringLiteral("%1: the device reported error %2: %3")
-                                 .arg(label)
-                                 .arg(match.errorCode)
-                                 .arg(deviceErrorText(match.errorCode)));
-    case ReplyMatch::NotUnderstood:
-        return Error{ErrorKind::NotUnderstood,
-                     QStringLiteral("%1: the device does not know this command (firmware dated "
-                                    "%2); it needs a newer firmware for it")
-                         .arg(label, eepromDateText(match.eprom)),
-                     0};
-    default: return match.fields;
+        case ReplyMatch::DeviceError:
+            return Error::device(match.errorCode,
+                                 QCoreApplication::translate("cambench::comm",
+                                                             "%1: the device reported error %2: %3")
+                                     .arg(label)
+                                     .arg(match.errorCode)
+                                     .arg(deviceErrorText(match.errorCode)));
+        case ReplyMatch::NotUnderstood:
+            return Error{ErrorKind::NotUnderstood,
+                         QCoreApplication::translate(
+                             "cambench::comm",
+                             "%1: the device does not know this command (firmware dated "
+                             "%2); it needs a newer firmware for it")
+                             .arg(label, eepromDateText(match.eprom)),
+                         0};
+        default:
+            return match.fields;
     }
 }
 
 Result<QByteArray> AsciiLink::raw(char kind, const QByteArray& body, int timeoutMs) {
     if (kind != kQuery && kind != kCommand)
-        return Error::usage(
-            QStringLiteral("a request starts with '?' or '!', not '%1'").arg(QChar(kind)));
-    if (body.isEmpty())
-        return Error::usage(QStringLiteral("an empty request: type the command letters after %1")
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::comm", "a request starts with '?' or '!', not '%1'")
                                 .arg(QChar(kind)));
+    if (body.isEmpty())
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "an empty request: type the command letters after %1")
+                .arg(QChar(kind)));
     const Status synced = ensureBlockSync();
     if (!synced) return synced.error();
     const CommandSpec* spec = matchRequest(kind, body);

@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 
 namespace cambench::comm {
@@ -11,9 +13,10 @@ Result<DeadTimes> AsciiCamCon::readDeadTimes(int outputs) {
         const Result<Fields> reply =
             m_link.call('?', "TZK", Fields{{"output", wireOutput(output)}});
         if (!reply) {
-            return inContext(
-                QStringLiteral("reading the dead time of output %1 (?TZK)").arg(output),
-                reply.error());
+            return inContext(QCoreApplication::translate(
+                                 "cambench::comm", "reading the dead time of output %1 (?TZK)")
+                                 .arg(output),
+                             reply.error());
         }
         deadTimes.insert(output, qint32(reply->num("value")));
     }
@@ -24,7 +27,9 @@ Status AsciiCamCon::writeDeadTime(int output, qint32 tenthsMs) {
     const Result<Fields> reply = m_link.call(
         '!', "TZK", Fields{{"output", wireOutput(output)}, {"value", qint64(tenthsMs)}});
     if (!reply) {
-        return inContext(QStringLiteral("writing the dead time of output %1 (!TZK)").arg(output),
+        return inContext(QCoreApplication::translate("cambench::comm",
+                                                     "writing the dead time of output %1 (!TZK)")
+                             .arg(output),
                          reply.error());
     }
     return success();
@@ -33,8 +38,10 @@ Status AsciiCamCon::writeDeadTime(int output, qint32 tenthsMs) {
 Result<QString> AsciiCamCon::readOutputName(int output) {
     const Result<Fields> reply = m_link.call('?', "ANAME", Fields{{"output", wireOutput(output)}});
     if (!reply) {
-        return inContext(QStringLiteral("reading the name of output %1 (?ANAME)").arg(output),
-                         reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the name of output %1 (?ANAME)")
+                .arg(output),
+            reply.error());
     }
     return text(*reply, "text");
 }
@@ -44,8 +51,10 @@ Status AsciiCamCon::writeOutputName(int output, const QString& name) {
     fields.setBytes("text", wireText(name));
     const Result<Fields> reply = m_link.call('!', "ANAME", fields);
     if (!reply) {
-        return inContext(QStringLiteral("writing the name of output %1 (!ANAME)").arg(output),
-                         reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "writing the name of output %1 (!ANAME)")
+                .arg(output),
+            reply.error());
     }
     return success();
 }
@@ -53,8 +62,10 @@ Status AsciiCamCon::writeOutputName(int output, const QString& name) {
 Result<QString> AsciiCamCon::readProgramName(int program) {
     const Result<Fields> reply = m_link.call('?', "PNAME", Fields{{"program", qint64(program)}});
     if (!reply) {
-        return inContext(QStringLiteral("reading the name of program %1 (?PNAME)").arg(program),
-                         reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the name of program %1 (?PNAME)")
+                .arg(program),
+            reply.error());
     }
     return text(*reply, "text");
 }
@@ -64,8 +75,10 @@ Status AsciiCamCon::writeProgramName(int program, const QString& name) {
     fields.setBytes("text", wireText(name));
     const Result<Fields> reply = m_link.call('!', "PNAME", fields);
     if (!reply) {
-        return inContext(QStringLiteral("writing the name of program %1 (!PNAME)").arg(program),
-                         reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "writing the name of program %1 (!PNAME)")
+                .arg(program),
+            reply.error());
     }
     return success();
 }

@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 
 namespace cambench::comm {
@@ -11,7 +13,9 @@ QString networkText(int area, int number) {
     const char* names = "OPMX";
     const int index = area - PlcNetwork::O;
     const QChar letter = index >= 0 && index < 4 ? QChar::fromLatin1(names[index]) : QChar(u'?');
-    return QStringLiteral("PLC network %1%2").arg(letter).arg(number);
+    return QCoreApplication::translate("cambench::comm", "PLC network %1%2")
+        .arg(letter)
+        .arg(number);
 }
 
 }  // namespace
@@ -20,7 +24,8 @@ Result<PlcNetwork> AsciiCamCon::readPlcNetwork(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(QStringLiteral("reading %1 (?GMXSPS)").arg(networkText(area, number)),
+        return inContext(QCoreApplication::translate("cambench::comm", "reading %1 (?GMXSPS)")
+                             .arg(networkText(area, number)),
                          reply.error());
     }
     PlcNetwork network;
@@ -45,9 +50,9 @@ Status AsciiCamCon::writePlcNetwork(const PlcNetwork& network) {
     fields.setWords("symbols", words);
     const Result<Fields> reply = m_link.call('!', "GMXSPS", fields);
     if (!reply) {
-        return inContext(
-            QStringLiteral("writing %1 (!GMXSPS)").arg(networkText(network.area, network.number)),
-            reply.error());
+        return inContext(QCoreApplication::translate("cambench::comm", "writing %1 (!GMXSPS)")
+                             .arg(networkText(network.area, network.number)),
+                         reply.error());
     }
     return success();
 }
@@ -56,7 +61,8 @@ Result<qint32> AsciiCamCon::readPlcActual(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "SPSIST", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(QStringLiteral("reading the actual value of %1 (?SPSIST)")
+        return inContext(QCoreApplication::translate("cambench::comm",
+                                                     "reading the actual value of %1 (?SPSIST)")
                              .arg(networkText(area, number)),
                          reply.error());
     }
@@ -68,7 +74,8 @@ Result<qint32> AsciiCamCon::readPlcSetpoint(int area, int number) {
         m_link.call('?', "SPSSOLL", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
         return inContext(
-            QStringLiteral("reading the set value of %1 (?SPSSOLL)").arg(networkText(area, number)),
+            QCoreApplication::translate("cambench::comm", "reading the set value of %1 (?SPSSOLL)")
+                .arg(networkText(area, number)),
             reply.error());
     }
     return qint32(reply->num("value"));

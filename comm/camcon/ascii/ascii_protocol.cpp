@@ -1,5 +1,7 @@
 #include "ascii_protocol.h"
 
+#include <QCoreApplication>
+
 #include "ascii_camcon.h"
 
 namespace cambench::comm {
@@ -20,8 +22,9 @@ ProtocolInfo asciiProtocol(Framing framing) {
     ProtocolInfo info;
     info.id = multi ? multiuserId() : standardId();
     info.familyId = QStringLiteral("camcon");
-    info.title = multi ? QStringLiteral("CamCon ASCII, Multiuser (RS485 bus)")
-                       : QStringLiteral("CamCon ASCII, Standard (RS232)");
+    info.title =
+        multi ? QCoreApplication::translate("cambench::comm", "CamCon ASCII, Multiuser (RS485 bus)")
+              : QCoreApplication::translate("cambench::comm", "CamCon ASCII, Standard (RS232)");
     info.defaultSerial.baud = multi ? 38400 : 9600;  // notes 1, both 8N1
     info.isBus = multi;
     info.makeSettings = [framing] { return std::make_unique<AsciiProtocolSettings>(framing); };
@@ -29,8 +32,10 @@ ProtocolInfo asciiProtocol(Framing framing) {
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {
         const auto* ascii = dynamic_cast<const AsciiProtocolSettings*>(&settings);
         if (!ascii)
-            return Error::usage(QStringLiteral("the %1 protocol got settings of %2")
-                                    .arg(settings.protocolId(), QStringLiteral("another protocol")));
+            return Error::usage(
+                QCoreApplication::translate("cambench::comm", "the %1 protocol got settings of %2")
+                    .arg(settings.protocolId(),
+                         QCoreApplication::translate("cambench::comm", "another protocol")));
         return std::unique_ptr<DeviceConnection>(
             std::make_unique<AsciiCamCon>(transport, ascii->ascii, line));
     };

@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 
 namespace cambench::comm {
@@ -25,9 +27,10 @@ private:
 }  // namespace
 
 Result<QList<int>> AsciiCamCon::scanBus(int first, int last, int timeoutMs,
-                                         const ProgressFn& progress) {
+                                        const ProgressFn& progress) {
     if (m_link.settings().framing != Framing::Multiuser) {
-        return Error::usage(QStringLiteral(
+        return Error::usage(QCoreApplication::translate(
+            "cambench::comm",
             "a bus scan needs the Multiuser protocol; connect with --protocol multiuser"));
     }
     first = qBound(0, first, 63);

@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 #include "settings_commands.h"
 
@@ -63,7 +65,8 @@ Result<SystemSettings> AsciiCamCon::readSettings(QStringList* skipped) {
                 continue;
             }
             return inContext(
-                QStringLiteral("reading the settings (?%1)").arg(QLatin1String(page.command)),
+                QCoreApplication::translate("cambench::comm", "reading the settings (?%1)")
+                    .arg(QLatin1String(page.command)),
                 reply.error());
         }
         for (const SettingField& field : page.fields) {
@@ -89,7 +92,8 @@ Result<QVariant> AsciiCamCon::readSetting(const QString& key) {
                                   : QVariant(reply->num(field.field));
         }
     }
-    return Error::usage(QStringLiteral("\"%1\" is no device setting").arg(key));
+    return Error::usage(
+        QCoreApplication::translate("cambench::comm", "\"%1\" is no device setting").arg(key));
 }
 
 Status AsciiCamCon::writeSettings(const SystemSettings& settings) {

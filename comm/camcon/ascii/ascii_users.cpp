@@ -1,4 +1,6 @@
 #include "ascii_camcon.h"
+
+#include <QCoreApplication>
 #include "ascii_support.h"
 
 namespace cambench::comm {
@@ -44,16 +46,20 @@ Result<QList<User>> AsciiCamCon::readUsers() {
         const Result<Fields> reply =
             m_link.call('?', "USER", Fields{{"index", qint64(i == 0 ? 0 : 1)}});
         if (!reply) {
-            return inContext(QStringLiteral("reading user entry %1 (?USER)").arg(i + 1),
-                             reply.error());
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "reading user entry %1 (?USER)")
+                    .arg(i + 1),
+                reply.error());
         }
         if (reply->bytes("name").isEmpty() && reply->bytes("number").isEmpty()) return users;
         if (i == kMaxUsers) break;
         users.append(userFrom(*reply));
     }
     return Error::communication(
-        QStringLiteral("reading the users: the device lists more than %1 entries and no end; "
-                       "check the device")
+        QCoreApplication::translate(
+            "cambench::comm",
+            "reading the users: the device lists more than %1 entries and no end; "
+            "check the device")
             .arg(kMaxUsers));
 }
 
@@ -65,8 +71,10 @@ Status AsciiCamCon::writeUser(const QString& oldNumber, const User& user) {
     fields.setBytes("access", accessBytes(user));
     const Result<Fields> reply = m_link.call('!', "USER", fields);
     if (!reply) {
-        return inContext(QStringLiteral("writing user \"%1\" (!USER)").arg(user.name),
-                         reply.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "writing user \"%1\" (!USER)")
+                .arg(user.name),
+            reply.error());
     }
     return success();
 }
@@ -77,7 +85,9 @@ Status AsciiCamCon::deleteUser(const QString& number) {
     fields.setBytes("number", QByteArrayLiteral("DEL"));
     fields.setBytes("access", QByteArray(kAccessBytes, '\0'));
     const Result<Fields> reply = m_link.call('!', "USER", fields);
-    if (!reply) return inContext(QStringLiteral("deleting a user (!USER)"), reply.error());
+    if (!reply)
+        return inContext(QCoreApplication::translate("cambench::comm", "deleting a user (!USER)"),
+                         reply.error());
     return success();
 }
 

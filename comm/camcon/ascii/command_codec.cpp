@@ -1,5 +1,7 @@
 #include "command_codec.h"
 
+#include <QCoreApplication>
+
 #include "protocol_log.h"
 
 namespace cambench::comm {
@@ -69,13 +71,15 @@ qint64 signExtend(quint64 value, int width) {
 }
 
 Error rangeError(const FieldSpec& spec, qint64 value, qint64 min, qint64 max) {
-    return Error::invalidData(QStringLiteral("The value %1 of field \"%2\" is outside %3..%4 (%5 "
-                                             "hex digits); use a value in that range.")
-                                  .arg(value)
-                                  .arg(fieldName(spec))
-                                  .arg(min)
-                                  .arg(max)
-                                  .arg(spec.width));
+    return Error::invalidData(
+        QCoreApplication::translate("cambench::comm",
+                                    "The value %1 of field \"%2\" is outside %3..%4 (%5 "
+                                    "hex digits); use a value in that range.")
+            .arg(value)
+            .arg(fieldName(spec))
+            .arg(min)
+            .arg(max)
+            .arg(spec.width));
 }
 
 Result<qint64> numberOf(const FieldSpec& spec, const Fields& fields) {
@@ -83,7 +87,8 @@ Result<qint64> numberOf(const FieldSpec& spec, const Fields& fields) {
     bool ok = false;
     const qint64 value = fields.value(spec.name).toLongLong(&ok);
     if (!ok) {
-        return Error::invalidData(QStringLiteral("Field \"%1\" needs a number, got \"%2\".")
+        return Error::invalidData(QCoreApplication::translate(
+                                      "cambench::comm", "Field \"%1\" needs a number, got \"%2\".")
                                       .arg(fieldName(spec), fields.value(spec.name).toString()));
     }
     return value;
@@ -100,13 +105,16 @@ Result<QByteArray> encodeHex(const FieldSpec& spec, qint64 value, bool isSigned)
 Result<QByteArray> encodeText(const FieldSpec& spec, const QByteArray& text, bool fixedWidth) {
     if (text.contains('\0')) {
         return Error::invalidData(
-            QStringLiteral("Field \"%1\" contains a NUL character; remove it.")
+            QCoreApplication::translate("cambench::comm",
+                                        "Field \"%1\" contains a NUL character; remove it.")
                 .arg(fieldName(spec)));
     }
     if (!fixedWidth) return text;
     if (text.size() > spec.width - 1) {
         return Error::invalidData(
-            QStringLiteral("The text \"%1\" of field \"%2\" is %3 characters long; at most %4 fit.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "The text \"%1\" of field \"%2\" is %3 characters long; at most %4 fit.")
                 .arg(QString::fromLatin1(text), fieldName(spec))
                 .arg(text.size())
                 .arg(spec.width - 1));
@@ -134,7 +142,8 @@ Result<QByteArray> encodeField(const FieldSpec& spec, const Fields& fields) {
             const QByteArray data = fields.bytes(spec.name);
             if (data.size() != spec.width) {
                 return Error::invalidData(
-                    QStringLiteral("Field \"%1\" needs exactly %2 bytes, got %3.")
+                    QCoreApplication::translate("cambench::comm",
+                                                "Field \"%1\" needs exactly %2 bytes, got %3.")
                         .arg(fieldName(spec))
                         .arg(spec.width)
                         .arg(data.size()));
@@ -148,7 +157,8 @@ Result<QByteArray> encodeField(const FieldSpec& spec, const Fields& fields) {
             if (!fields.has(spec.name) && spec.count > 0) words = QList<qint64>(spec.count, 0);
             if (spec.count >= 0 && words.size() != spec.count) {
                 return Error::invalidData(
-                    QStringLiteral("Field \"%1\" needs exactly %2 words, got %3.")
+                    QCoreApplication::translate("cambench::comm",
+                                                "Field \"%1\" needs exactly %2 words, got %3.")
                         .arg(fieldName(spec))
                         .arg(spec.count)
                         .arg(words.size()));
@@ -162,7 +172,9 @@ Result<QByteArray> encodeField(const FieldSpec& spec, const Fields& fields) {
             return out;
         }
     }
-    return Error::usage(QStringLiteral("Field \"%1\" has an unknown type.").arg(fieldName(spec)));
+    return Error::usage(
+        QCoreApplication::translate("cambench::comm", "Field \"%1\" has an unknown type.")
+            .arg(fieldName(spec)));
 }
 
 // Characters a fixed field takes, or -1 for a field that runs to the end.
@@ -173,23 +185,28 @@ int fixedLength(const FieldSpec& spec) {
 }
 
 Error malformed(const FieldSpec& spec, int offset, const QString& what) {
-    return Error::communication(QStringLiteral("Malformed data: field \"%1\" at offset %2 %3.")
-                                    .arg(fieldName(spec))
-                                    .arg(offset)
-                                    .arg(what));
+    return Error::communication(
+        QCoreApplication::translate("cambench::comm",
+                                    "Malformed data: field \"%1\" at offset %2 %3.")
+            .arg(fieldName(spec))
+            .arg(offset)
+            .arg(what));
 }
 
 Result<QList<qint64>> decodeWords(const FieldSpec& spec, QByteArrayView data, int offset) {
     if (data.size() % spec.width != 0) {
-        return malformed(spec, offset,
-                         QStringLiteral("has %1 characters, not a multiple of %2")
-                             .arg(data.size())
-                             .arg(spec.width));
+        return malformed(
+            spec, offset,
+            QCoreApplication::translate("cambench::comm", "has %1 characters, not a multiple of %2")
+                .arg(data.size())
+                .arg(spec.width));
     }
     QList<qint64> words;
     for (qsizetype i = 0; i < data.size(); i += spec.width) {
         const auto word = parseHex(data.sliced(i, spec.width));
-        if (!word) return malformed(spec, offset + int(i), QStringLiteral("is not hexadecimal"));
+        if (!word)
+            return malformed(spec, offset + int(i),
+                             QCoreApplication::translate("cambench::comm", "is not hexadecimal"));
         words.append(qint64(*word));
     }
     return words;
@@ -201,7 +218,10 @@ Status decodeField(const FieldSpec& spec, QByteArrayView data, int offset, Field
         case FieldType::Hex:
         case FieldType::SignedHex: {
             const auto value = parseHex(data);
-            if (!value) return malformed(spec, offset, QStringLiteral("is not hexadecimal"));
+            if (!value)
+                return malformed(
+                    spec, offset,
+                    QCoreApplication::translate("cambench::comm", "is not hexadecimal"));
             fields.set(spec.name, spec.type == FieldType::SignedHex ? signExtend(*value, spec.width)
                                                                     : qint64(*value));
             return success();
@@ -217,12 +237,16 @@ Status decodeField(const FieldSpec& spec, QByteArrayView data, int offset, Field
             return success();
         case FieldType::HexBytes: {
             if (data.size() % 2 != 0)
-                return malformed(spec, offset, QStringLiteral("has an odd number of digits"));
+                return malformed(
+                    spec, offset,
+                    QCoreApplication::translate("cambench::comm", "has an odd number of digits"));
             QByteArray bytes;
             for (qsizetype i = 0; i < data.size(); i += 2) {
                 const auto byte = parseHex(data.sliced(i, 2));
                 if (!byte)
-                    return malformed(spec, offset + int(i), QStringLiteral("is not hexadecimal"));
+                    return malformed(
+                        spec, offset + int(i),
+                        QCoreApplication::translate("cambench::comm", "is not hexadecimal"));
                 bytes.append(char(*byte));
             }
             fields.setBytes(spec.name, bytes);
@@ -235,7 +259,9 @@ Status decodeField(const FieldSpec& spec, QByteArrayView data, int offset, Field
             return success();
         }
     }
-    return Error::usage(QStringLiteral("Field \"%1\" has an unknown type.").arg(fieldName(spec)));
+    return Error::usage(
+        QCoreApplication::translate("cambench::comm", "Field \"%1\" has an unknown type.")
+            .arg(fieldName(spec)));
 }
 
 // A reply body without its name: "ERR" + 8 hex digits.
@@ -260,7 +286,8 @@ ReplyMatch matchReplyData(const CommandSpec& spec, QByteArrayView rest) {
             } else {
                 match.kind = ReplyMatch::Malformed;
                 match.detail =
-                    QStringLiteral("%1: expected \"OK\", got \"%2\".")
+                    QCoreApplication::translate("cambench::comm",
+                                                "%1: expected \"OK\", got \"%2\".")
                         .arg(commandName(spec),
                              QString::fromLatin1(rest.toByteArray().toPercentEncoding(" ")));
             }
@@ -306,7 +333,9 @@ Result<Fields> decodeFields(const QList<FieldSpec>& specs, QByteArrayView data) 
         if (length >= 0 && available < length) {
             return malformed(
                 spec, int(offset),
-                QStringLiteral("needs %1 characters, only %2 left").arg(length).arg(available));
+                QCoreApplication::translate("cambench::comm", "needs %1 characters, only %2 left")
+                    .arg(length)
+                    .arg(available));
         }
         const qsizetype take = length >= 0 ? length : available;
         const Status decoded = decodeField(spec, data.sliced(offset, take), int(offset), fields);
@@ -315,7 +344,8 @@ Result<Fields> decodeFields(const QList<FieldSpec>& specs, QByteArrayView data) 
     }
     if (offset != data.size()) {
         return Error::communication(
-            QStringLiteral("Malformed data: %1 unexpected characters after the last field.")
+            QCoreApplication::translate(
+                "cambench::comm", "Malformed data: %1 unexpected characters after the last field.")
                 .arg(data.size() - offset));
     }
     return fields;
@@ -325,7 +355,8 @@ Result<QByteArray> encodeRequestBody(const CommandSpec& spec, const Fields& fiel
     Result<QByteArray> data = encodeFields(spec.request, fields);
     if (!data) {
         Error error = data.error();
-        error.message = QStringLiteral("Cannot send %1: %2").arg(commandName(spec), error.message);
+        error.message = QCoreApplication::translate("cambench::comm", "Cannot send %1: %2")
+                            .arg(commandName(spec), error.message);
         return error;
     }
     return QByteArray(spec.name) + *data;
@@ -361,7 +392,8 @@ ReplyMatch matchReply(const CommandSpec& spec, const Frame& reply) {
 Result<Fields> decodeRequestFields(const CommandSpec& spec, QByteArrayView body) {
     if (!body.startsWith(QByteArrayView(spec.name))) {
         return Error::communication(
-            QStringLiteral("The request does not start with %1.").arg(commandName(spec)));
+            QCoreApplication::translate("cambench::comm", "The request does not start with %1.")
+                .arg(commandName(spec)));
     }
     Result<Fields> fields = decodeFields(spec.request, body.sliced(qstrlen(spec.name)));
     if (!fields) {
@@ -374,13 +406,14 @@ Result<Fields> decodeRequestFields(const CommandSpec& spec, QByteArrayView body)
 
 Result<QByteArray> encodeReplyBody(const CommandSpec& spec, const Fields& fields) {
     if (spec.replyKind != ReplyKind::Data) {
-        return Error::usage(QStringLiteral("%1 has no data reply.").arg(commandName(spec)));
+        return Error::usage(QCoreApplication::translate("cambench::comm", "%1 has no data reply.")
+                                .arg(commandName(spec)));
     }
     Result<QByteArray> data = encodeFields(spec.reply, fields);
     if (!data) {
         Error error = data.error();
-        error.message =
-            QStringLiteral("Cannot answer %1: %2").arg(commandName(spec), error.message);
+        error.message = QCoreApplication::translate("cambench::comm", "Cannot answer %1: %2")
+                            .arg(commandName(spec), error.message);
         return error;
     }
     return QByteArray(spec.name) + *data;

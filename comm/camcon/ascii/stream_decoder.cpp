@@ -1,5 +1,7 @@
 #include "stream_decoder.h"
 
+#include <QCoreApplication>
+
 #include "protocol_log.h"
 
 namespace cambench::comm {
@@ -77,7 +79,9 @@ void StreamDecoder::huntByte(char c, QList<DecodeEvent>& events) {
     m_buffer.append(c);
     // Drop leading bytes until what is held could still begin a frame.
     while (!m_buffer.isEmpty() && !isFrameStartPrefix(m_buffer)) {
-        addGarbage(m_buffer.first(1), QStringLiteral("bytes outside any frame"), events);
+        addGarbage(m_buffer.first(1),
+                   QCoreApplication::translate("cambench::comm", "bytes outside any frame"),
+                   events);
         m_buffer.remove(0, 1);
     }
     const int startLength = m_framing == Framing::Multiuser ? kHeaderBytes + 1 : 1;
@@ -103,7 +107,9 @@ void StreamDecoder::bodyByte(char c, QList<DecodeEvent>& events) {
         }
         // Inside a frame every CR is escaped, so a bare CR was meant to end
         // it: the LF got lost. The byte after the CR may start a new frame.
-        addGarbage(m_buffer, QStringLiteral("a frame ended by CR without LF"), events);
+        addGarbage(m_buffer,
+                   QCoreApplication::translate("cambench::comm", "a frame ended by CR without LF"),
+                   events);
         m_buffer.clear();
         m_state = State::Hunt;
         huntByte(c, events);
@@ -124,7 +130,8 @@ void StreamDecoder::bodyByte(char c, QList<DecodeEvent>& events) {
         DecodeEvent event;
         event.kind = DecodeEvent::Oversized;
         event.raw = m_buffer;
-        event.detail = QStringLiteral("No frame end within %1 bytes; the frame was dropped.")
+        event.detail = QCoreApplication::translate(
+                           "cambench::comm", "No frame end within %1 bytes; the frame was dropped.")
                            .arg(kMaxFrameBytes);
         qCWarning(commProtocolLog) << event.detail;
         flushGarbage(events);
@@ -136,7 +143,9 @@ void StreamDecoder::bodyByte(char c, QList<DecodeEvent>& events) {
 }
 
 void StreamDecoder::discardByte(char c, QList<DecodeEvent>& events) {
-    addGarbage(QByteArrayView(&c, 1), QStringLiteral("the rest of an oversized frame"), events);
+    addGarbage(QByteArrayView(&c, 1),
+               QCoreApplication::translate("cambench::comm", "the rest of an oversized frame"),
+               events);
     if (m_escaped) {
         m_escaped = false;
         return;
@@ -171,7 +180,8 @@ void StreamDecoder::completeFrame(QList<DecodeEvent>& events) {
         frame.body = m_body;
         frame.hasChecksum = false;
         event.kind = DecodeEvent::BadChecksum;
-        event.detail = QStringLiteral("The frame has no checksum characters.");
+        event.detail =
+            QCoreApplication::translate("cambench::comm", "The frame has no checksum characters.");
     } else {
         frame.body = m_body.chopped(2);
         frame.hasChecksum = true;
@@ -181,9 +191,10 @@ void StreamDecoder::completeFrame(QList<DecodeEvent>& events) {
             event.kind = DecodeEvent::FrameOk;
         } else {
             event.kind = DecodeEvent::BadChecksum;
-            event.detail = QStringLiteral("Checksum %1 received, %2 expected.")
-                               .arg(QString::fromLatin1(m_body.right(2)),
-                                    QString::fromLatin1(checksumText(expected)));
+            event.detail =
+                QCoreApplication::translate("cambench::comm", "Checksum %1 received, %2 expected.")
+                    .arg(QString::fromLatin1(m_body.right(2)),
+                         QString::fromLatin1(checksumText(expected)));
         }
     }
     if (event.kind == DecodeEvent::BadChecksum) qCDebug(commProtocolLog) << event.detail;
@@ -209,8 +220,9 @@ void StreamDecoder::flushGarbage(QList<DecodeEvent>& events) {
     DecodeEvent event;
     event.kind = DecodeEvent::Garbage;
     event.raw = m_garbage;
-    event.detail =
-        QStringLiteral("Skipped %1 bytes: %2.").arg(m_garbage.size()).arg(m_garbageReason);
+    event.detail = QCoreApplication::translate("cambench::comm", "Skipped %1 bytes: %2.")
+                       .arg(m_garbage.size())
+                       .arg(m_garbageReason);
     qCDebug(commProtocolLog) << event.detail;
     events.append(event);
     m_garbage.clear();
