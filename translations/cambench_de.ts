@@ -33,13 +33,68 @@
     </message>
 </context>
 <context>
+    <name>DeviceErrors</name>
+    <message>
+        <source>The device&apos;s RAM is too small for this setting (manual: &quot;RAM zu klein für Einstellung&quot;). Choose a smaller value, e.g. fewer PLC elements.</source>
+        <translation>Der RAM des Geräts ist zu klein für diese Einstellung (Handbuch: „RAM zu klein für Einstellung“). Wählen Sie einen kleineren Wert, z. B. weniger SPS-Elemente.</translation>
+    </message>
+    <message>
+        <source>The dead-time compensation value is too large. Enter at most the device&apos;s maximum dead time (cambench-cli info: maxDeadTime).</source>
+        <translation>Der Wert der Totzeitkompensation ist zu groß. Geben Sie höchstens die maximale Totzeit des Geräts ein (cambench-cli info: maxDeadTime).</translation>
+    </message>
+    <message>
+        <source>The device&apos;s EEPROM is defective. Back up what can still be read and have the device repaired.</source>
+        <translation>Das EEPROM des Geräts ist defekt. Sichern Sie, was sich noch lesen lässt, und lassen Sie das Gerät reparieren.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s EEPROM is full. Delete cams or programs that are no longer needed, then write again.</source>
+        <translation>Das EEPROM des Geräts ist voll. Löschen Sie nicht mehr benötigte Nocken oder Programme und schreiben Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>Checksum error in the device&apos;s EEPROM: the stored data may be damaged. Restore a backup or enter the data again.</source>
+        <translation>Prüfsummenfehler im EEPROM des Geräts: die gespeicherten Daten sind möglicherweise beschädigt. Stellen Sie eine Sicherung wieder her oder geben Sie die Daten neu ein.</translation>
+    </message>
+    <message>
+        <source>Block 0000 of the restore (!EE) has the wrong length: the image does not suit this device. Use an image taken from this kind of device.</source>
+        <translation>Block 0000 der Wiederherstellung (!EE) hat die falsche Länge: das Abbild passt nicht zu diesem Gerät. Verwenden Sie ein Abbild von einem Gerät dieser Art.</translation>
+    </message>
+    <message>
+        <source>The device cannot erase its EEPROM. Switch it off and on and restore again; if that fails too, the device needs repair.</source>
+        <translation>Das Gerät kann sein EEPROM nicht löschen. Schalten Sie es aus und wieder ein und stellen Sie erneut wieder her; schlägt auch das fehl, muss das Gerät repariert werden.</translation>
+    </message>
+    <message>
+        <source>The restore (!EE) sent the blocks in the wrong block number order. Restore again from the start; if it happens again, the image file is damaged.</source>
+        <translation>Die Wiederherstellung (!EE) hat die Blöcke in falscher Reihenfolge der Blocknummern gesendet. Stellen Sie von vorn wieder her; geschieht das erneut, ist die Abbilddatei beschädigt.</translation>
+    </message>
+    <message>
+        <source>The CamCon cannot start after the restore (!EE): the data do not suit it. Restore the safety backup or an image taken from this device.</source>
+        <translation>Die CamCon kann nach der Wiederherstellung (!EE) nicht starten: die Daten passen nicht zu ihr. Stellen Sie die Sicherheitskopie oder ein Abbild dieses Geräts wieder her.</translation>
+    </message>
+    <message>
+        <source>A block of the restore (!EE) has the wrong length: the image file is damaged. Restore another image.</source>
+        <translation>Ein Block der Wiederherstellung (!EE) hat die falsche Länge: die Abbilddatei ist beschädigt. Stellen Sie ein anderes Abbild wieder her.</translation>
+    </message>
+    <message>
+        <source>The device did not receive the data completely: the line lost bytes. Check the cable and the baud rate, then try again.</source>
+        <translation>Das Gerät hat die Daten nicht vollständig empfangen: auf der Leitung gingen Bytes verloren. Prüfen Sie Kabel und Baudrate und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The manual gives no meaning for error -1 (it lists it only as &quot;unknown error&quot;). The device refused the request: check that the values lie within its limits and that the item exists.</source>
+        <translation>Das Handbuch nennt für Fehler -1 keine Bedeutung (es führt ihn nur als „unbekannter Fehler“). Das Gerät hat die Anfrage abgelehnt: prüfen Sie, ob die Werte in seinen Grenzen liegen und ob das Element existiert.</translation>
+    </message>
+    <message>
+        <source>The manual gives no meaning for error %1. Note the number and the command and ask the device&apos;s supplier.</source>
+        <translation>Das Handbuch nennt für Fehler %1 keine Bedeutung. Notieren Sie Nummer und Befehl und fragen Sie den Lieferanten des Geräts.</translation>
+    </message>
+</context>
+<context>
     <name>Settings</name>
     <message>
         <source>Encoder</source>
         <translation>Geber</translation>
     </message>
     <message>
-        <source>The position encoder connected to the device, from the device's list of encoders, or the programmable special encoder set up on the special encoder page.</source>
+        <source>The position encoder connected to the device, from the device&apos;s list of encoders, or the programmable special encoder set up on the special encoder page.</source>
         <translation>Der am Gerät angeschlossene Positionsgeber aus der Geberliste des Geräts oder der programmierbare Sondergeber, der auf der Sondergeber-Seite eingestellt wird.</translation>
     </message>
     <message>
@@ -363,7 +418,7 @@
         <translation>PLL-Impulseingang</translation>
     </message>
     <message>
-        <source>Input that receives the PLL's pulses.</source>
+        <source>Input that receives the PLL&apos;s pulses.</source>
         <translation>Eingang, der die Impulse der PLL empfängt.</translation>
     </message>
     <message>
@@ -371,7 +426,7 @@
         <translation>PLL-Löscheingang</translation>
     </message>
     <message>
-        <source>Input that clears the PLL's position (0 = none).</source>
+        <source>Input that clears the PLL&apos;s position (0 = none).</source>
         <translation>Eingang, der die Position der PLL löscht (0 = keiner).</translation>
     </message>
     <message>
@@ -679,7 +734,7 @@
         <translation>Eingang Tastatursperre</translation>
     </message>
     <message>
-        <source>Input that locks the device's keyboard (0 = none).</source>
+        <source>Input that locks the device&apos;s keyboard (0 = none).</source>
         <translation>Eingang, der die Tastatur des Geräts sperrt (0 = keiner).</translation>
     </message>
     <message>
@@ -723,7 +778,7 @@
         <translation>Programmwahl-Istwert</translation>
     </message>
     <message>
-        <source>Actual value at which a new program takes effect (mode "At actual value" only).</source>
+        <source>Actual value at which a new program takes effect (mode &quot;At actual value&quot; only).</source>
         <translation>Istwert, bei dem ein neues Programm wirkt (nur Art „Bei Istwert“).</translation>
     </message>
     <message>
@@ -835,7 +890,7 @@
         <translation>Gerätesprache</translation>
     </message>
     <message>
-        <source>Language of the device's display: 0 German, 1 English, 2 French; further numbers depend on the firmware.</source>
+        <source>Language of the device&apos;s display: 0 German, 1 English, 2 French; further numbers depend on the firmware.</source>
         <translation>Sprache der Geräteanzeige: 0 Deutsch, 1 Englisch, 2 Französisch; weitere Nummern hängen von der Firmware ab.</translation>
     </message>
     <message>
@@ -859,7 +914,7 @@
         <translation>SPS-Modul</translation>
     </message>
     <message>
-        <source>Switches the PLC module off or on; "flags retained" keeps the flags at power-off.</source>
+        <source>Switches the PLC module off or on; &quot;flags retained&quot; keeps the flags at power-off.</source>
         <translation>Schaltet das SPS-Modul aus oder ein; „Merker remanent“ behält die Merker beim Ausschalten.</translation>
     </message>
     <message>
@@ -924,21 +979,6 @@
     </message>
 </context>
 <context>
-    <name>WriteReport</name>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 written, %2 unchanged, %3 failed</source>
-        <translation>%1 geschrieben, %2 unverändert, %3 fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>Not written (the device keeps its old values):</source>
-        <translation>Nicht geschrieben (das Gerät behält seine alten Werte):</translation>
-    </message>
-</context>
-<context>
     <name>cambench::AccessGridModel</name>
     <message>
         <source>Output %1: allowed (the user may change all outputs)</source>
@@ -979,7 +1019,7 @@
         <translation>Sichern oder wiederherstellen</translation>
     </message>
     <message>
-        <source>A backup copies the device's whole EEPROM into a file. A restore erases the device and writes such a file back.</source>
+        <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back.</source>
         <translation>Eine Sicherung kopiert das ganze EEPROM des Geräts in eine Datei. Eine Wiederherstellung löscht das Gerät und schreibt eine solche Datei zurück.</translation>
     </message>
     <message>
@@ -1049,9 +1089,12 @@
     <message numerus="yes">
         <source>Image: %1
 Taken %2 with %3, %n block(s), %4 bytes.</source>
-        <translation><numerusform>Abbild: %1
-Erstellt %2 mit %3, %n Block, %4 Bytes.</numerusform><numerusform>Abbild: %1
-Erstellt %2 mit %3, %n Blöcke, %4 Bytes.</numerusform></translation>
+        <translation>
+            <numerusform>Abbild: %1
+Erstellt %2 mit %3, %n Block, %4 Bytes.</numerusform>
+            <numerusform>Abbild: %1
+Erstellt %2 mit %3, %n Blöcke, %4 Bytes.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Device: %1</source>
@@ -1077,45 +1120,23 @@ Erstellt %2 mit %3, %n Blöcke, %4 Bytes.</numerusform></translation>
         <source>Backup failed, no file was written: %1</source>
         <translation>Sicherung fehlgeschlagen, es wurde keine Datei geschrieben: %1</translation>
     </message>
-    <message>
-        <source>The device was read, but the file could not be written: %1</source>
-        <translation>Das Gerät wurde gelesen, aber die Datei konnte nicht geschrieben werden: %1</translation>
-    </message>
     <message numerus="yes">
         <source>Backup complete: %n block(s), %1 bytes written to %2. Nothing failed.</source>
-        <translation><numerusform>Sicherung vollständig: %n Block, %1 Bytes nach %2 geschrieben. Nichts ist fehlgeschlagen.</numerusform><numerusform>Sicherung vollständig: %n Blöcke, %1 Bytes nach %2 geschrieben. Nichts ist fehlgeschlagen.</numerusform></translation>
-    </message>
-    <message>
-        <source>Step 1 of 2: saving what the device holds now into %1…</source>
-        <translation>Schritt 1 von 2: der jetzige Inhalt des Geräts wird nach %1 gesichert…</translation>
-    </message>
-    <message>
-        <source>Safety backup</source>
-        <translation>Sicherheitskopie</translation>
-    </message>
-    <message>
-        <source>Restore NOT started, the device is unchanged: the safety backup failed: %1</source>
-        <translation>Wiederherstellung NICHT begonnen, das Gerät ist unverändert: die Sicherheitskopie ist fehlgeschlagen: %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>Step 2 of 2: erasing the device and writing %n block(s)…</source>
-        <translation><numerusform>Schritt 2 von 2: das Gerät wird gelöscht und %n Block geschrieben…</numerusform><numerusform>Schritt 2 von 2: das Gerät wird gelöscht und %n Blöcke geschrieben…</numerusform></translation>
+        <translation>
+            <numerusform>Sicherung vollständig: %n Block, %1 Bytes nach %2 geschrieben. Nichts ist fehlgeschlagen.</numerusform>
+            <numerusform>Sicherung vollständig: %n Blöcke, %1 Bytes nach %2 geschrieben. Nichts ist fehlgeschlagen.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Restore</source>
         <translation>Wiederherstellung</translation>
     </message>
-    <message>
-        <source>Restore FAILED: %1
-
-The safety backup of the previous content is %2; restore it to get the device back.</source>
-        <translation>Wiederherstellung FEHLGESCHLAGEN: %1
-
-Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, um das Gerät zurückzubekommen.</translation>
-    </message>
     <message numerus="yes">
         <source>Restore complete: %n block(s) written, 0 failed. The safety backup of the previous content is %1.</source>
-        <translation><numerusform>Wiederherstellung vollständig: %n Block geschrieben, 0 fehlgeschlagen. Die Sicherheitskopie des vorherigen Inhalts ist %1.</numerusform><numerusform>Wiederherstellung vollständig: %n Blöcke geschrieben, 0 fehlgeschlagen. Die Sicherheitskopie des vorherigen Inhalts ist %1.</numerusform></translation>
+        <translation>
+            <numerusform>Wiederherstellung vollständig: %n Block geschrieben, 0 fehlgeschlagen. Die Sicherheitskopie des vorherigen Inhalts ist %1.</numerusform>
+            <numerusform>Wiederherstellung vollständig: %n Blöcke geschrieben, 0 fehlgeschlagen. Die Sicherheitskopie des vorherigen Inhalts ist %1.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cancel the restore? If the device is already being written, it stays ERASED until you restore an image.</source>
@@ -1124,6 +1145,33 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Cancel the backup? No file will be written.</source>
         <translation>Sicherung abbrechen? Es wird keine Datei geschrieben.</translation>
+    </message>
+    <message>
+        <source>This erases the device (%1) and writes the image %2 into it. Outputs may switch while the device restarts.
+
+Erase and restore now?</source>
+        <translation>Dies löscht das Gerät (%1) und schreibt das Abbild %2 hinein. Während das Gerät neu startet, können Ausgänge schalten.
+
+Jetzt löschen und wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Erase and restore</source>
+        <translation>Löschen und wiederherstellen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Step 1 of 2: saving what the device holds now into %1; step 2: erasing the device and writing %n block(s).</source>
+        <translation>
+            <numerusform>Schritt 1 von 2: den jetzigen Inhalt des Geräts nach %1 sichern; Schritt 2: das Gerät löschen und %n Block schreiben.</numerusform>
+            <numerusform>Schritt 1 von 2: den jetzigen Inhalt des Geräts nach %1 sichern; Schritt 2: das Gerät löschen und %n Blöcke schreiben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore NOT done, the device is unchanged: %1</source>
+        <translation>Wiederherstellung NICHT ausgeführt, das Gerät ist unverändert: %1</translation>
+    </message>
+    <message>
+        <source>Restore FAILED: %1</source>
+        <translation>Wiederherstellung FEHLGESCHLAGEN: %1</translation>
     </message>
 </context>
 <context>
@@ -1182,6 +1230,18 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Change dead time of output %1</source>
         <translation>Totzeit von Ausgang %1 ändern</translation>
+    </message>
+    <message>
+        <source>Take program %1 from the device</source>
+        <translation>Programm %1 aus dem Gerät übernehmen</translation>
+    </message>
+    <message>
+        <source>Take program %1 from the file</source>
+        <translation>Programm %1 aus der Datei übernehmen</translation>
+    </message>
+    <message>
+        <source>Take names and dead times</source>
+        <translation>Namen und Totzeiten übernehmen</translation>
     </message>
 </context>
 <context>
@@ -1353,9 +1413,12 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message numerus="yes">
         <source>The cams were imported, but %n need fixing before they can be written (shown in red):
 %1</source>
-        <translation><numerusform>Die Nocken wurden importiert, aber %n muss korrigiert werden, bevor sie geschrieben werden können (rot markiert):
-%1</numerusform><numerusform>Die Nocken wurden importiert, aber %n müssen korrigiert werden, bevor sie geschrieben werden können (rot markiert):
-%1</numerusform></translation>
+        <translation>
+            <numerusform>Die Nocken wurden importiert, aber %n muss korrigiert werden, bevor sie geschrieben werden können (rot markiert):
+%1</numerusform>
+            <numerusform>Die Nocken wurden importiert, aber %n müssen korrigiert werden, bevor sie geschrieben werden können (rot markiert):
+%1</numerusform>
+        </translation>
     </message>
     <message>
         <source>Export Cams</source>
@@ -1364,6 +1427,14 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>program-%1.csv</source>
         <translation>programm-%1.csv</translation>
+    </message>
+    <message>
+        <source>Diagram</source>
+        <translation>Diagramm</translation>
+    </message>
+    <message>
+        <source>%1 (not read)</source>
+        <translation>%1 (nicht gelesen)</translation>
     </message>
 </context>
 <context>
@@ -1418,7 +1489,10 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
     <message numerus="yes">
         <source>%n cam(s): %1</source>
-        <translation><numerusform>%n Nocken: %1</numerusform><numerusform>%n Nocken: %1</numerusform></translation>
+        <translation>
+            <numerusform>%n Nocken: %1</numerusform>
+            <numerusform>%n Nocken: %1</numerusform>
+        </translation>
     </message>
     <message>
         <source>, </source>
@@ -1468,16 +1542,31 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Name von Programm %1</translation>
     </message>
     <message>
-        <source>(other name)</source>
-        <translation>(anderer Name)</translation>
-    </message>
-    <message>
-        <source>Write cams</source>
-        <translation>Nocken schreiben</translation>
-    </message>
-    <message>
         <source>Cam programs</source>
         <translation>Nockenprogramme</translation>
+    </message>
+    <message>
+        <source>Program %1 was not read. Your edits are kept.</source>
+        <translation>Programm %1 wurde nicht gelesen. Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Program %1 read, not taken: your edits are unchanged.</source>
+        <translation>Programm %1 gelesen, aber nicht übernommen: Ihre Änderungen sind unverändert.</translation>
+    </message>
+    <message>
+        <source>Program %1: nothing to write, the device holds what you see.</source>
+        <translation>Programm %1: nichts zu schreiben, das Gerät enthält, was Sie sehen.</translation>
+    </message>
+    <message>
+        <source>Writing program %1…</source>
+        <translation>Programm %1 wird geschrieben…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other output(s) were already as on the device and not sent.</source>
+        <translation>
+            <numerusform>%n weiterer Ausgang war bereits wie im Gerät und wurde nicht gesendet.</numerusform>
+            <numerusform>%n weitere Ausgänge waren bereits wie im Gerät und wurden nicht gesendet.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1520,10 +1609,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Source</source>
         <translation>Quelle</translation>
-    </message>
-    <message>
-        <source>offline project, not read from a device</source>
-        <translation>Offline-Projekt, nicht aus einem Gerät gelesen</translation>
     </message>
     <message>
         <source>Outputs / inputs</source>
@@ -1570,16 +1655,131 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Programm %1: %2</translation>
     </message>
     <message>
-        <source>Switch on</source>
-        <translation>Einschalten</translation>
-    </message>
-    <message>
-        <source>Switch off</source>
-        <translation>Ausschalten</translation>
-    </message>
-    <message>
         <source>Cannot write the report to %1: %2</source>
         <translation>Das Protokoll kann nicht nach %1 geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 (device: %2)</source>
+        <translation>%1 (Gerät: %2)</translation>
+    </message>
+    <message>
+        <source>Read from the device at %1.</source>
+        <translation>Aus dem Gerät gelesen am %1.</translation>
+    </message>
+    <message>
+        <source>Not read from the device: the values are this PC&apos;s.</source>
+        <translation>Nicht aus dem Gerät gelesen: die Werte stammen von diesem PC.</translation>
+    </message>
+    <message>
+        <source>Offline project: the values are this PC&apos;s.</source>
+        <translation>Offline-Projekt: die Werte stammen von diesem PC.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) in this report are edited on this PC and NOT written to the device; they are marked %1 and show the device&apos;s value beside them.</source>
+        <translation>
+            <numerusform>%n Wert in diesem Protokoll ist auf diesem PC bearbeitet und NICHT ins Gerät geschrieben; er ist mit %1 markiert und zeigt den Wert des Geräts daneben.</numerusform>
+            <numerusform>%n Werte in diesem Protokoll sind auf diesem PC bearbeitet und NICHT ins Gerät geschrieben; sie sind mit %1 markiert und zeigen den Wert des Geräts daneben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Every value in this report is what the device held when it was read.</source>
+        <translation>Jeder Wert in diesem Protokoll ist, was das Gerät beim Lesen enthielt.</translation>
+    </message>
+    <message>
+        <source>Offline project: nothing in this report was read from a device.</source>
+        <translation>Offline-Projekt: nichts in diesem Protokoll wurde aus einem Gerät gelesen.</translation>
+    </message>
+    <message>
+        <source>Identity read at</source>
+        <translation>Kennung gelesen am</translation>
+    </message>
+    <message>
+        <source>offline project</source>
+        <translation>Offline-Projekt</translation>
+    </message>
+    <message>
+        <source>Project file</source>
+        <translation>Projektdatei</translation>
+    </message>
+    <message>
+        <source>0 … %1</source>
+        <translation>0 … %1</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Not read from the device: its content is unknown.</source>
+        <translation>Nicht aus dem Gerät gelesen: sein Inhalt ist unbekannt.</translation>
+    </message>
+    <message>
+        <source>Not read from the device: these cams exist on this PC only.</source>
+        <translation>Nicht aus dem Gerät gelesen: diese Nocken gibt es nur auf diesem PC.</translation>
+    </message>
+    <message>
+        <source>No cams.</source>
+        <translation>Keine Nocken.</translation>
+    </message>
+    <message>
+        <source>Cams (on–off)</source>
+        <translation>Nocken (ein–aus)</translation>
+    </message>
+    <message>
+        <source>no cams</source>
+        <translation>keine Nocken</translation>
+    </message>
+    <message>
+        <source>Users</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>No users.</source>
+        <translation>Keine Benutzer.</translation>
+    </message>
+    <message>
+        <source>User numbers are access codes: they are not printed.</source>
+        <translation>Benutzernummern sind Zugangscodes: sie werden nicht gedruckt.</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>Nummer</translation>
+    </message>
+    <message>
+        <source>Rights</source>
+        <translation>Rechte</translation>
+    </message>
+    <message>
+        <source>deleted on this PC, still on the device</source>
+        <translation>auf diesem PC gelöscht, noch im Gerät</translation>
+    </message>
+    <message>
+        <source>PLC networks</source>
+        <translation>SPS-Netzwerke</translation>
+    </message>
+    <message>
+        <source>No PLC networks read or edited.</source>
+        <translation>Keine SPS-Netzwerke gelesen oder bearbeitet.</translation>
+    </message>
+    <message>
+        <source>Network</source>
+        <translation>Netzwerk</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Rücksetzen</translation>
+    </message>
+    <message>
+        <source>Symbols by path</source>
+        <translation>Symbole je Strompfad</translation>
     </message>
 </context>
 <context>
@@ -1609,14 +1809,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Alle schreiben</translation>
     </message>
     <message>
-        <source>Refresh</source>
-        <translation>Aktualisieren</translation>
-    </message>
-    <message>
-        <source>Items edited on this PC that differ from the device. Check the ones to write, or write all.</source>
-        <translation>Auf diesem PC bearbeitete Einträge, die vom Gerät abweichen. Haken Sie die zu schreibenden an oder schreiben Sie alle.</translation>
-    </message>
-    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1631,6 +1823,61 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Writing…</source>
         <translation>Schreibt…</translation>
+    </message>
+    <message>
+        <source>Cancel reading</source>
+        <translation>Lesen abbrechen</translation>
+    </message>
+    <message>
+        <source>Read the device again</source>
+        <translation>Gerät erneut lesen</translation>
+    </message>
+    <message>
+        <source>Not connected: compared with the device values read at %1. The device may have changed since.</source>
+        <translation>Nicht verbunden: verglichen mit den um %1 gelesenen Werten des Geräts. Das Gerät kann sich seitdem geändert haben.</translation>
+    </message>
+    <message>
+        <source>Not connected, and nothing was read from a device: every edited item is listed as &quot;not read&quot;.</source>
+        <translation>Nicht verbunden, und aus keinem Gerät wurde gelesen: jedes bearbeitete Element steht als „nicht gelesen“ da.</translation>
+    </message>
+    <message>
+        <source>Reading what the device holds now…</source>
+        <translation>Der jetzige Inhalt des Geräts wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Reading cancelled.</source>
+        <translation>Lesen abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The device could not be read: %1</source>
+        <translation>Das Gerät konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Shown: the device values read at %1.</source>
+        <translation>Angezeigt: die um %1 gelesenen Werte des Geräts.</translation>
+    </message>
+    <message>
+        <source>Nothing was read from the device: edited items are listed as &quot;not read&quot;.</source>
+        <translation>Aus dem Gerät wurde nichts gelesen: bearbeitete Elemente stehen als „nicht gelesen“ da.</translation>
+    </message>
+    <message>
+        <source>Device values read at %1.</source>
+        <translation>Werte des Geräts gelesen um %1.</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>Changed on the device since it was last read (%1)</source>
+        <translation>Im Gerät geändert seit dem letzten Lesen (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::ConnectionIndicator</name>
+    <message>
+        <source>No answer since %1 (%2)</source>
+        <translation>Keine Antwort seit %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -1680,7 +1927,7 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Gerätenummer:</translation>
     </message>
     <message>
-        <source>Multiuser: this PC's own number on the bus (0–63).</source>
+        <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
         <translation>Multiuser: die eigene Nummer dieses PCs auf dem Bus (0–63).</translation>
     </message>
     <message>
@@ -1741,7 +1988,10 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
     <message numerus="yes">
         <source>%n device(s) found</source>
-        <translation><numerusform>%n Gerät gefunden</numerusform><numerusform>%n Geräte gefunden</numerusform></translation>
+        <translation>
+            <numerusform>%n Gerät gefunden</numerusform>
+            <numerusform>%n Geräte gefunden</numerusform>
+        </translation>
     </message>
     <message>
         <source>Not read from a device (offline project).</source>
@@ -1797,7 +2047,10 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
     <message numerus="yes">
         <source>%n cam(s)</source>
-        <translation><numerusform>%n Nocken</numerusform><numerusform>%n Nocken</numerusform></translation>
+        <translation>
+            <numerusform>%n Nocken</numerusform>
+            <numerusform>%n Nocken</numerusform>
+        </translation>
     </message>
     <message>
         <source>CPU clock:</source>
@@ -1826,6 +2079,41 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Connection</source>
         <translation>Verbindung</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::ConnectionStrip</name>
+    <message>
+        <source>Reconnect now</source>
+        <translation>Jetzt neu verbinden</translation>
+    </message>
+    <message>
+        <source>The connection to %1 is lost.</source>
+        <translation>Die Verbindung zu %1 ist unterbrochen.</translation>
+    </message>
+    <message>
+        <source>CamBench tries again by itself; your edits are kept.</source>
+        <translation>CamBench versucht es selbst erneut; Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>The device on %1 has not answered since %2.</source>
+        <translation>Das Gerät an %1 antwortet seit %2 nicht mehr.</translation>
+    </message>
+    <message>
+        <source>Live values are from then. Check the cable and the device&apos;s power; your edits are kept.</source>
+        <translation>Die Live-Werte sind von diesem Zeitpunkt. Prüfen Sie Kabel und Stromversorgung des Geräts; Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>%1: CamCon %2, device number %3.</source>
+        <translation>%1: CamCon %2, Gerätenummer %3.</translation>
+    </message>
+    <message>
+        <source>%1; identity not read yet.</source>
+        <translation>%1; Kennung noch nicht gelesen.</translation>
+    </message>
+    <message>
+        <source>Offline. What you edit stays on this PC until you connect and write it.</source>
+        <translation>Offline. Was Sie bearbeiten, bleibt auf diesem PC, bis Sie sich verbinden und es schreiben.</translation>
     </message>
 </context>
 <context>
@@ -1882,10 +2170,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Die Totzeit lässt einen Ausgang um die Zeit früher schalten, die sein Stellglied braucht, bei jeder Geschwindigkeit. Sie gehört zum Ausgang, nicht zu einem Programm.</translation>
     </message>
     <message>
-        <source>Dead times: %1</source>
-        <translation>Totzeiten: %1</translation>
-    </message>
-    <message>
         <source>Dead times</source>
         <translation>Totzeiten</translation>
     </message>
@@ -1896,10 +2180,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Reading dead times…</source>
         <translation>Totzeiten werden gelesen…</translation>
-    </message>
-    <message>
-        <source>Read dead times</source>
-        <translation>Totzeiten lesen</translation>
     </message>
     <message>
         <source>Reading dead times failed: %1</source>
@@ -1921,9 +2201,75 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <source>Output %1 name</source>
         <translation>Name von Ausgang %1</translation>
     </message>
+</context>
+<context>
+    <name>cambench::DeviceChanges</name>
     <message>
-        <source>Write dead times</source>
-        <translation>Totzeiten schreiben</translation>
+        <source>no cams</source>
+        <translation>keine Nocken</translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation>%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>Program %1, output %2</source>
+        <translation>Programm %1, Ausgang %2</translation>
+    </message>
+    <message>
+        <source>Program %1 name</source>
+        <translation>Name von Programm %1</translation>
+    </message>
+    <message>
+        <source>Output %1 dead time</source>
+        <translation>Totzeit von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>Output %1 name</source>
+        <translation>Name von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>Users: the device&apos;s list of users changed.</source>
+        <translation>Benutzer: die Benutzerliste des Geräts hat sich geändert.</translation>
+    </message>
+    <message>
+        <source>PLC network %1 changed.</source>
+        <translation>SPS-Netzwerk %1 hat sich geändert.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeviceReads</name>
+    <message>
+        <source>Not taken: your edits and the values shown are unchanged.</source>
+        <translation>Nicht übernommen: Ihre Änderungen und die angezeigten Werte sind unverändert.</translation>
+    </message>
+    <message>
+        <source>Read device identity</source>
+        <translation>Gerätekennung lesen</translation>
+    </message>
+    <message>
+        <source>Read program %1</source>
+        <translation>Programm %1 lesen</translation>
+    </message>
+    <message>
+        <source>Read names and dead times</source>
+        <translation>Namen und Totzeiten lesen</translation>
+    </message>
+    <message>
+        <source>Read settings</source>
+        <translation>Einstellungen lesen</translation>
+    </message>
+    <message>
+        <source>Read users</source>
+        <translation>Benutzer lesen</translation>
+    </message>
+    <message>
+        <source>Read PLC network</source>
+        <translation>SPS-Netzwerk lesen</translation>
+    </message>
+    <message>
+        <source>Read everything</source>
+        <translation>Alles lesen</translation>
     </message>
 </context>
 <context>
@@ -1950,15 +2296,135 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
 </context>
 <context>
+    <name>cambench::DeviceWriter</name>
+    <message>
+        <source>Write to the device</source>
+        <translation>Ins Gerät schreiben</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LineBackupDialog</name>
+    <message>
+        <source>Resume: skip devices already saved and verified in this folder</source>
+        <translation>Fortsetzen: Geräte überspringen, die in diesem Ordner bereits gesichert und geprüft sind</translation>
+    </message>
+    <message>
+        <source>Back up</source>
+        <translation>Sichern</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Back up all devices on this line</source>
+        <translation>Alle Geräte dieser Leitung sichern</translation>
+    </message>
+    <message>
+        <source>empty: scan the line for devices 0 … 63</source>
+        <translation>leer: Leitung nach Geräten 0 … 63 absuchen</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Folder:</source>
+        <translation>Ordner:</translation>
+    </message>
+    <message>
+        <source>Devices:</source>
+        <translation>Geräte:</translation>
+    </message>
+    <message>
+        <source>Each device of the line is backed up into its own image in the folder, with a manifest of what was saved. A device that fails is noted and the others are still backed up.</source>
+        <translation>Jedes Gerät der Leitung wird in ein eigenes Abbild im Ordner gesichert, mit einem Verzeichnis des Gesicherten. Ein Gerät, das fehlschlägt, wird vermerkt, und die anderen werden trotzdem gesichert.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a device number 0 … 63 (or given twice); write the numbers with commas, e.g. 0, 5, 7.</source>
+        <translation>„%1“ ist keine Gerätenummer 0 … 63 (oder doppelt angegeben); schreiben Sie die Nummern mit Kommas, z. B. 0, 5, 7.</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3 baud</source>
+        <translation>%1, %2, %3 Baud</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>wartet</translation>
+    </message>
+    <message>
+        <source>Scanning the line…</source>
+        <translation>Leitung wird abgesucht…</translation>
+    </message>
+    <message>
+        <source>Backing up…</source>
+        <translation>Wird gesichert…</translation>
+    </message>
+    <message>
+        <source>Back up the line</source>
+        <translation>Leitung sichern</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>Gerät %1</translation>
+    </message>
+    <message>
+        <source>Nothing was backed up: %1</source>
+        <translation>Nichts wurde gesichert: %1</translation>
+    </message>
+    <message>
+        <source>saved</source>
+        <translation>gesichert</translation>
+    </message>
+    <message>
+        <source>FAILED</source>
+        <translation>FEHLGESCHLAGEN</translation>
+    </message>
+    <message>
+        <source>Device %1: saved to %2.</source>
+        <translation>Gerät %1: gesichert in %2.</translation>
+    </message>
+    <message>
+        <source>Device %1: NOT saved: %2</source>
+        <translation>Gerät %1: NICHT gesichert: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>All %n device(s) saved into %1.</source>
+        <translation>
+            <numerusform>%n Gerät gesichert in %1.</numerusform>
+            <numerusform>Alle %n Geräte gesichert in %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 says the same.</source>
+        <translation>%1 von %2 Geräten gesichert; %3 NICHT gesichert (siehe unten). Das Verzeichnis in %4 sagt dasselbe.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LiveFreshness</name>
+    <message>
+        <source>No live values yet</source>
+        <translation>Noch keine Live-Werte</translation>
+    </message>
+    <message>
+        <source>Live, last answer %1</source>
+        <translation>Live, letzte Antwort %1</translation>
+    </message>
+    <message>
+        <source>No answer since %1</source>
+        <translation>Keine Antwort seit %1</translation>
+    </message>
+    <message>
+        <source>No answer yet</source>
+        <translation>Noch keine Antwort</translation>
+    </message>
+    <message>
+        <source>Not polled now; values of %1</source>
+        <translation>Derzeit nicht abgefragt; Werte von %1</translation>
+    </message>
+</context>
+<context>
     <name>cambench::MainWindow</name>
-    <message>
-        <source>Reconnect now</source>
-        <translation>Jetzt neu verbinden</translation>
-    </message>
-    <message>
-        <source>Connection re-established. Your edits are unchanged.</source>
-        <translation>Verbindung wiederhergestellt. Ihre Änderungen sind unverändert.</translation>
-    </message>
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
@@ -2057,11 +2523,10 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
     <message numerus="yes">
         <source>[%n change(s) not written]</source>
-        <translation><numerusform>[%n Änderung nicht geschrieben]</numerusform><numerusform>[%n Änderungen nicht geschrieben]</numerusform></translation>
-    </message>
-    <message>
-        <source>The connection to %1 was lost: %2 CamBench retries by itself; your edits are kept.</source>
-        <translation>Die Verbindung zu %1 ist verloren: %2 CamBench versucht es selbst erneut; Ihre Änderungen bleiben erhalten.</translation>
+        <translation>
+            <numerusform>[%n Änderung nicht geschrieben]</numerusform>
+            <numerusform>[%n Änderungen nicht geschrieben]</numerusform>
+        </translation>
     </message>
     <message>
         <source>Connection lost: %1</source>
@@ -2074,10 +2539,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Reading the device…</source>
         <translation>Gerät wird gelesen…</translation>
-    </message>
-    <message>
-        <source>Read device identity</source>
-        <translation>Gerätekennung lesen</translation>
     </message>
     <message>
         <source>The device did not identify itself: %1</source>
@@ -2093,7 +2554,10 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
     <message numerus="yes">
         <source>%n change(s) are not written to the device. Close anyway?</source>
-        <translation><numerusform>%n Änderung ist nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform><numerusform>%n Änderungen sind nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform></translation>
+        <translation>
+            <numerusform>%n Änderung ist nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform>
+            <numerusform>%n Änderungen sind nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform>
+        </translation>
     </message>
     <message>
         <source>Compare with device…</source>
@@ -2110,10 +2574,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>New project</source>
         <translation>Neues Projekt</translation>
-    </message>
-    <message>
-        <source>The current edits are not written or saved. Replace them?</source>
-        <translation>Die aktuellen Änderungen sind weder geschrieben noch gespeichert. Ersetzen?</translation>
     </message>
     <message>
         <source>Open project</source>
@@ -2146,6 +2606,84 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>Report written to %1.</source>
         <translation>Protokoll nach %1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</source>
+        <translation>Verbindung wiederhergestellt. Ihre Änderungen sind unverändert; „Mit Gerät vergleichen“ liest den jetzigen Inhalt des Geräts.</translation>
+    </message>
+    <message>
+        <source>Recent &amp;files</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>Back up all devices on this &amp;line…</source>
+        <translation>Alle Geräte dieser &amp;Leitung sichern…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Cancel what the device is doing for you now.</source>
+        <translation>Abbrechen, was das Gerät gerade für Sie tut.</translation>
+    </message>
+    <message>
+        <source>Reading the device: %1</source>
+        <translation>Gerät lesen: %1</translation>
+    </message>
+    <message>
+        <source>Reading everything the device holds…</source>
+        <translation>Der gesamte Inhalt des Geräts wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Everything read from the device.</source>
+        <translation>Alles aus dem Gerät gelesen.</translation>
+    </message>
+    <message>
+        <source>Read from the device, except: %1</source>
+        <translation>Aus dem Gerät gelesen, außer: %1</translation>
+    </message>
+    <message>
+        <source>Reading the device failed: %1 Your edits are kept.</source>
+        <translation>Lesen des Geräts fehlgeschlagen: %1 Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) are not written or saved. Discard them for a new, empty project?</source>
+        <translation>
+            <numerusform>%n Änderung ist weder geschrieben noch gespeichert. Für ein neues, leeres Projekt verwerfen?</numerusform>
+            <numerusform>%n Änderungen sind weder geschrieben noch gespeichert. Für ein neues, leeres Projekt verwerfen?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project %1 was not opened.</source>
+        <translation>Das Projekt %1 wurde nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>Project %1 not opened: your edits are unchanged.</source>
+        <translation>Projekt %1 nicht geöffnet: Ihre Änderungen sind unverändert.</translation>
+    </message>
+    <message>
+        <source>No recent projects</source>
+        <translation>Keine zuletzt geöffneten Projekte</translation>
+    </message>
+    <message>
+        <source>&amp;Clear list</source>
+        <translation>Liste &amp;leeren</translation>
+    </message>
+    <message>
+        <source>The device is still being read; the project was not saved. Save again when the reading is done.</source>
+        <translation>Das Gerät wird noch gelesen; das Projekt wurde nicht gespeichert. Speichern Sie erneut, wenn das Lesen fertig ist.</translation>
+    </message>
+    <message>
+        <source>The project was not saved.</source>
+        <translation>Das Projekt wurde nicht gespeichert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Project saved to %1. %n value(s) are outside what a write accepts (%2).</source>
+        <translation>
+            <numerusform>Projekt in %1 gespeichert. %n Wert liegt außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
+            <numerusform>Projekt in %1 gespeichert. %n Werte liegen außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2211,10 +2749,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation> ms</translation>
     </message>
     <message>
-        <source>How often the device is asked for its state.</source>
-        <translation>Wie oft das Gerät nach seinem Zustand gefragt wird.</translation>
-    </message>
-    <message>
         <source>Poll every</source>
         <translation>Abfrage alle</translation>
     </message>
@@ -2261,6 +2795,54 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>offline</source>
         <translation>offline</translation>
+    </message>
+    <message>
+        <source>How often the device is asked for its state. CamBench polls no faster than the line can answer.</source>
+        <translation>Wie oft das Gerät nach seinem Zustand gefragt wird. CamBench fragt nicht schneller ab, als die Leitung antworten kann.</translation>
+    </message>
+    <message>
+        <source>The line needs about %1 ms per poll: polling every %2 ms instead of %3 ms.</source>
+        <translation>Die Leitung braucht etwa %1 ms je Abfrage: Abfrage alle %2 ms statt %3 ms.</translation>
+    </message>
+    <message>
+        <source>Waiting for the first answer.</source>
+        <translation>Warten auf die erste Antwort.</translation>
+    </message>
+    <message>
+        <source>Offline: no live values.</source>
+        <translation>Offline: keine Live-Werte.</translation>
+    </message>
+    <message>
+        <source>Live: last answer at %1.</source>
+        <translation>Live: letzte Antwort um %1.</translation>
+    </message>
+    <message>
+        <source>No answer since %1. The values below are from then, not live.</source>
+        <translation>Keine Antwort seit %1. Die Werte unten sind von diesem Zeitpunkt, nicht live.</translation>
+    </message>
+    <message>
+        <source>No answer from the device.</source>
+        <translation>Keine Antwort vom Gerät.</translation>
+    </message>
+    <message>
+        <source>Not polled: the values below are from %1.</source>
+        <translation>Nicht abgefragt: die Werte unten sind von %1.</translation>
+    </message>
+    <message>
+        <source>Not polled: no live values.</source>
+        <translation>Nicht abgefragt: keine Live-Werte.</translation>
+    </message>
+    <message>
+        <source>Value of %1</source>
+        <translation>Wert von %1</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>unknown now; at %1: %2</source>
+        <translation>jetzt unbekannt; um %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2372,14 +2954,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>In dieser Sitzung gelesene oder bearbeitete Netzwerke</translation>
     </message>
     <message>
-        <source>PLC: %1</source>
-        <translation>SPS: %1</translation>
-    </message>
-    <message>
-        <source>Read PLC network</source>
-        <translation>SPS-Netzwerk lesen</translation>
-    </message>
-    <message>
         <source>Reading %1 failed: %2</source>
         <translation>Lesen von %1 fehlgeschlagen: %2</translation>
     </message>
@@ -2396,10 +2970,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <source>Write PLC networks</source>
-        <translation>SPS-Netzwerke schreiben</translation>
-    </message>
-    <message>
         <source>PLC</source>
         <translation>SPS</translation>
     </message>
@@ -2413,6 +2983,117 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>about %1 s left</source>
         <translation>noch etwa %1 s</translation>
+    </message>
+    <message>
+        <source>%1 s so far. No time left is given: how much the device holds is not known before it is read.</source>
+        <translation>Bisher %1 s. Keine Restzeit: wie viel das Gerät enthält, ist vor dem Lesen nicht bekannt.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::RangeDelegate</name>
+    <message>
+        <source>%1%2 is not taken: this device allows %3 … %4%2.</source>
+        <translation>%1%2 wird nicht übernommen: dieses Gerät erlaubt %3 … %4%2.</translation>
+    </message>
+    <message>
+        <source>The cell keeps its value.</source>
+        <translation>Die Zelle behält ihren Wert.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::ReplaceEditsDialog</name>
+    <message>
+        <source>Cam programs</source>
+        <translation>Nockenprogramme</translation>
+    </message>
+    <message>
+        <source>Output names and dead times</source>
+        <translation>Ausgangsnamen und Totzeiten</translation>
+    </message>
+    <message>
+        <source>Encoder and system settings</source>
+        <translation>Geber- und Systemeinstellungen</translation>
+    </message>
+    <message>
+        <source>Users</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>PLC networks</source>
+        <translation>SPS-Netzwerke</translation>
+    </message>
+    <message>
+        <source>Values read from the device</source>
+        <translation>Aus dem Gerät gelesene Werte</translation>
+    </message>
+    <message>
+        <source>Values from the project file</source>
+        <translation>Werte aus der Projektdatei</translation>
+    </message>
+    <message>
+        <source>The device&apos;s values would replace edits that are not written yet. For each section: keep your edits, or take the device&apos;s values?</source>
+        <translation>Die Werte des Geräts würden noch nicht geschriebene Änderungen ersetzen. Für jeden Bereich: Ihre Änderungen behalten oder die Werte des Geräts übernehmen?</translation>
+    </message>
+    <message>
+        <source>The project&apos;s values would replace edits that are not written yet. For each section: keep your edits, or take the project&apos;s values?</source>
+        <translation>Die Werte des Projekts würden noch nicht geschriebene Änderungen ersetzen. Für jeden Bereich: Ihre Änderungen behalten oder die Werte des Projekts übernehmen?</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n edit(s)</source>
+        <translation>
+            <numerusform>%1: %n Änderung</numerusform>
+            <numerusform>%1: %n Änderungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Keep my edits</source>
+        <translation>Meine Änderungen behalten</translation>
+    </message>
+    <message>
+        <source>Take the device&apos;s values</source>
+        <translation>Werte des Geräts übernehmen</translation>
+    </message>
+    <message>
+        <source>Take the project&apos;s values</source>
+        <translation>Werte des Projekts übernehmen</translation>
+    </message>
+    <message>
+        <source>Items you did not edit take the device&apos;s values either way. Taking the device&apos;s cam programs can be undone (Edit → Undo).</source>
+        <translation>Elemente, die Sie nicht bearbeitet haben, übernehmen in jedem Fall die Werte des Geräts. Das Übernehmen der Nockenprogramme des Geräts lässt sich rückgängig machen (Bearbeiten → Rückgängig).</translation>
+    </message>
+    <message>
+        <source>Items you did not edit take the project&apos;s values either way.</source>
+        <translation>Elemente, die Sie nicht bearbeitet haben, übernehmen in jedem Fall die Werte des Projekts.</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Cancel: change nothing</source>
+        <translation>Abbrechen: nichts ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::SectionPage</name>
+    <message>
+        <source>%1: nothing to write, the device holds what you see.</source>
+        <translation>%1: nichts zu schreiben, das Gerät enthält, was Sie sehen.</translation>
+    </message>
+    <message>
+        <source>%1: writing…</source>
+        <translation>%1: wird geschrieben…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other item(s) of this section were already as on the device and not sent.</source>
+        <translation>
+            <numerusform>%n weiteres Element dieses Bereichs war bereits wie im Gerät und wurde nicht gesendet.</numerusform>
+            <numerusform>%n weitere Elemente dieses Bereichs waren bereits wie im Gerät und wurden nicht gesendet.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2435,7 +3116,10 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     </message>
     <message numerus="yes">
         <source>up to %n character(s)</source>
-        <translation><numerusform>bis zu %n Zeichen</numerusform><numerusform>bis zu %n Zeichen</numerusform></translation>
+        <translation>
+            <numerusform>bis zu %n Zeichen</numerusform>
+            <numerusform>bis zu %n Zeichen</numerusform>
+        </translation>
     </message>
     <message>
         <source>Range: %1</source>
@@ -2468,6 +3152,14 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>not read</source>
         <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Not allowed: %1.</source>
+        <translation>Nicht erlaubt: %1.</translation>
+    </message>
+    <message>
+        <source>The device holds a value outside the allowed range: %1. It is shown as the device has it, not changed.</source>
+        <translation>Das Gerät enthält einen Wert außerhalb des erlaubten Bereichs: %1. Er wird gezeigt, wie das Gerät ihn hat, nicht verändert.</translation>
     </message>
 </context>
 <context>
@@ -2565,16 +3257,8 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Änderungen schreiben</translation>
     </message>
     <message>
-        <source>Settings: %1</source>
-        <translation>Einstellungen: %1</translation>
-    </message>
-    <message>
         <source>Reading settings…</source>
         <translation>Einstellungen werden gelesen…</translation>
-    </message>
-    <message>
-        <source>Read settings</source>
-        <translation>Einstellungen lesen</translation>
     </message>
     <message>
         <source>Reading settings failed: %1</source>
@@ -2587,14 +3271,6 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>not read</source>
         <translation>nicht gelesen</translation>
-    </message>
-    <message>
-        <source>Setting %1</source>
-        <translation>Einstellung %1</translation>
-    </message>
-    <message>
-        <source>Write settings</source>
-        <translation>Einstellungen schreiben</translation>
     </message>
     <message>
         <source>Encoder &amp; system</source>
@@ -2675,20 +3351,12 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>bearbeitet</translation>
     </message>
     <message>
-        <source>PC only</source>
-        <translation>nur PC</translation>
-    </message>
-    <message>
         <source>Output %1 is the same as on the device.</source>
         <translation>Ausgang %1 ist wie im Gerät.</translation>
     </message>
     <message>
         <source>Output %1 was changed and is not yet written to the device.</source>
         <translation>Ausgang %1 wurde geändert und ist noch nicht ins Gerät geschrieben.</translation>
-    </message>
-    <message>
-        <source>Program %1 was never read from the device; its cams exist only on this PC.</source>
-        <translation>Programm %1 wurde nie aus dem Gerät gelesen; seine Nocken gibt es nur auf diesem PC.</translation>
     </message>
     <message>
         <source>Output</source>
@@ -2709,6 +3377,14 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
     <message>
         <source>State</source>
         <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Program %1 was not read from the device: what the device holds is unknown. The cams shown exist on this PC.</source>
+        <translation>Programm %1 wurde nicht aus dem Gerät gelesen: was das Gerät enthält, ist unbekannt. Die gezeigten Nocken gibt es auf diesem PC.</translation>
     </message>
 </context>
 <context>
@@ -2856,15 +3532,11 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Ausgänge, die dieser Benutzer ändern darf</translation>
     </message>
     <message>
-        <source>Users: %1</source>
-        <translation>Benutzer: %1</translation>
-    </message>
-    <message>
         <source>New user</source>
         <translation>Neuer Benutzer</translation>
     </message>
     <message>
-        <source>hidden – check "Show numbers" to see or change it</source>
+        <source>hidden – check &quot;Show numbers&quot; to see or change it</source>
         <translation>verborgen – „Nummern zeigen“ anhaken, um sie zu sehen oder zu ändern</translation>
     </message>
     <message>
@@ -2872,16 +3544,15 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>Benutzer werden gelesen…</translation>
     </message>
     <message>
-        <source>Read users</source>
-        <translation>Benutzer lesen</translation>
-    </message>
-    <message>
         <source>Reading users failed: %1</source>
         <translation>Lesen der Benutzer fehlgeschlagen: %1</translation>
     </message>
     <message numerus="yes">
         <source>%n user(s) read.</source>
-        <translation><numerusform>%n Benutzer gelesen.</numerusform><numerusform>%n Benutzer gelesen.</numerusform></translation>
+        <translation>
+            <numerusform>%n Benutzer gelesen.</numerusform>
+            <numerusform>%n Benutzer gelesen.</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1, number %2, rights: %3</source>
@@ -2892,7 +3563,7 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>nicht vorhanden</translation>
     </message>
     <message>
-        <source>User "%1"</source>
+        <source>User &quot;%1&quot;</source>
         <translation>Benutzer „%1“</translation>
     </message>
     <message>
@@ -2900,16 +3571,1402 @@ Die Sicherheitskopie des vorherigen Inhalts ist %2; stellen Sie sie wieder her, 
         <translation>gelöscht</translation>
     </message>
     <message>
-        <source>The user has no number: enter one.</source>
-        <translation>Der Benutzer hat keine Nummer: geben Sie eine ein.</translation>
-    </message>
-    <message>
-        <source>Write users</source>
-        <translation>Benutzer schreiben</translation>
-    </message>
-    <message>
         <source>Users</source>
         <translation>Benutzer</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::comm</name>
+    <message>
+        <source>baud rate %1 is not a positive number</source>
+        <translation>Baudrate %1 ist keine positive Zahl</translation>
+    </message>
+    <message>
+        <source>%1 data bits: use 5, 6, 7 or 8</source>
+        <translation>%1 Datenbits: verwenden Sie 5, 6, 7 oder 8</translation>
+    </message>
+    <message>
+        <source>parity &apos;%1&apos;: use N, E, O, S or M</source>
+        <translation>Parität &apos;%1&apos;: verwenden Sie N, E, O, S oder M</translation>
+    </message>
+    <message>
+        <source>%1 stop bits: use 1, 2 or 3 (one and a half)</source>
+        <translation>%1 Stoppbits: verwenden Sie 1, 2 oder 3 (eineinhalb)</translation>
+    </message>
+    <message>
+        <source>flow control &apos;%1&apos;: use N (none), H (RTS/CTS) or S (XON/XOFF)</source>
+        <translation>Flusssteuerung &apos;%1&apos;: verwenden Sie N (keine), H (RTS/CTS) oder S (XON/XOFF)</translation>
+    </message>
+    <message>
+        <source>cannot use %1: %2</source>
+        <translation>%1 nicht verwendbar: %2</translation>
+    </message>
+    <message>
+        <source>check the port name and that no other program uses it</source>
+        <translation>prüfen Sie den Namen der Schnittstelle und dass kein anderes Programm sie benutzt</translation>
+    </message>
+    <message>
+        <source>check that no other program uses it and that you may use serial ports (on Linux: member of the group dialout)</source>
+        <translation>prüfen Sie, dass kein anderes Programm sie benutzt und dass Sie serielle Schnittstellen benutzen dürfen (unter Linux: Mitglied der Gruppe dialout)</translation>
+    </message>
+    <message>
+        <source>check the port name and that the adapter is plugged in</source>
+        <translation>prüfen Sie den Namen der Schnittstelle und dass der Adapter eingesteckt ist</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2; %3</source>
+        <translation>%1 kann nicht geöffnet werden: %2; %3</translation>
+    </message>
+    <message>
+        <source>the port %1 disappeared (cable pulled or adapter removed); reconnect and retry</source>
+        <translation>die Schnittstelle %1 ist verschwunden (Kabel gezogen oder Adapter entfernt); verbinden Sie neu und versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>%1 %2 failed: %3; reconnect and retry</source>
+        <translation>%1 %2 fehlgeschlagen: %3; verbinden Sie neu und versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>the port %1 is not open; connect first</source>
+        <translation>die Schnittstelle %1 ist nicht geöffnet; verbinden Sie zuerst</translation>
+    </message>
+    <message>
+        <source>could not send %1 bytes to %2 within %3 ms; check the flow control setting (RTS/CTS needs the CTS line)</source>
+        <translation>%1 Bytes konnten nicht innerhalb von %3 ms an %2 gesendet werden; prüfen Sie die Flusssteuerung (RTS/CTS braucht die CTS-Leitung)</translation>
+    </message>
+    <message>
+        <source>reading from</source>
+        <translation>Lesen von</translation>
+    </message>
+    <message>
+        <source>no answer within %1 ms</source>
+        <translation>keine Antwort innerhalb von %1 ms</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2; check the address, the port and that the device server is switched on</source>
+        <translation>Verbindung zu %1 nicht möglich: %2; prüfen Sie Adresse, Port und dass der Geräteserver eingeschaltet ist</translation>
+    </message>
+    <message>
+        <source>the device server %1 closed the connection; reconnect and retry</source>
+        <translation>der Geräteserver %1 hat die Verbindung geschlossen; verbinden Sie neu und versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>the connection to %1 failed: %2; reconnect and retry</source>
+        <translation>die Verbindung zu %1 ist fehlgeschlagen: %2; verbinden Sie neu und versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>not connected to %1; connect first</source>
+        <translation>nicht mit %1 verbunden; verbinden Sie zuerst</translation>
+    </message>
+    <message>
+        <source>could not send %1 bytes to %2 within %3 ms; check the network</source>
+        <translation>%1 Bytes konnten nicht innerhalb von %3 ms an %2 gesendet werden; prüfen Sie das Netzwerk</translation>
+    </message>
+    <message>
+        <source>write it as tcp://host:port, e.g. tcp://10.0.0.5:4001</source>
+        <translation>schreiben Sie tcp://host:port, z. B. tcp://10.0.0.5:4001</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no host; %2</source>
+        <translation>&apos;%1&apos; nennt keinen Host; %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no TCP port (1..65535); %2</source>
+        <translation>&apos;%1&apos; nennt keinen TCP-Port (1..65535); %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has more than a host and a port; %2</source>
+        <translation>&apos;%1&apos; enthält mehr als Host und Port; %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: unknown scheme; use tcp://host:port, a serial port name or sim</source>
+        <translation>&apos;%1&apos;: unbekanntes Schema; verwenden Sie tcp://host:port, den Namen einer seriellen Schnittstelle oder sim</translation>
+    </message>
+    <message>
+        <source>no port given; name a serial port (/dev/ttyUSB0, COM3), tcp://host:port or sim</source>
+        <translation>keine Schnittstelle angegeben; nennen Sie eine serielle Schnittstelle (/dev/ttyUSB0, COM3), tcp://host:port oder sim</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no port this program can open</source>
+        <translation>&apos;%1&apos; nennt keine Schnittstelle, die dieses Programm öffnen kann</translation>
+    </message>
+    <message>
+        <source>the request could not be sent</source>
+        <translation>die Anfrage konnte nicht gesendet werden</translation>
+    </message>
+    <message>
+        <source>no reply, though the device answered %1</source>
+        <translation>keine Antwort, obwohl das Gerät %1 geantwortet hat</translation>
+    </message>
+    <message>
+        <source>no valid reply (last: %1)</source>
+        <translation>keine gültige Antwort (zuletzt: %1)</translation>
+    </message>
+    <message>
+        <source>not connected to a device; connect first</source>
+        <translation>mit keinem Gerät verbunden; verbinden Sie zuerst</translation>
+    </message>
+    <message>
+        <source>the connection %1 closed; reconnect and retry</source>
+        <translation>die Verbindung %1 wurde geschlossen; verbinden Sie neu und versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>not connected: connecting to %1</source>
+        <translation>nicht verbunden: Verbindung zu %1 wird aufgebaut</translation>
+    </message>
+    <message>
+        <source>unknown protocol &quot;%1&quot;; known: %2</source>
+        <translation>unbekanntes Protokoll „%1“; bekannt: %2</translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation>nicht verbunden: %1</translation>
+    </message>
+    <message>
+        <source>the CamCon ASCII protocol (--protocol standard or multiuser)</source>
+        <translation>dem CamCon-ASCII-Protokoll (--protocol standard oder multiuser)</translation>
+    </message>
+    <message>
+        <source>the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)</source>
+        <translation>der CamCon-Tabellenschnittstelle (--protocol 3964r-n96 oder 3964r-e38)</translation>
+    </message>
+    <message>
+        <source>Users and rights exist only in %1.</source>
+        <translation>Benutzer und Rechte gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>EEPROM backup and restore exist only in %1.</source>
+        <translation>Sichern und Wiederherstellen des EEPROMs gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>A bus scan needs the Multiuser protocol (--protocol multiuser).</source>
+        <translation>Eine Bussuche braucht das Multiuser-Protokoll (--protocol multiuser).</translation>
+    </message>
+    <message>
+        <source>Typed requests exist only in %1.</source>
+        <translation>Eingetippte Anfragen gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>Output and program names exist only in %1.</source>
+        <translation>Ausgangs- und Programmnamen gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>This protocol does not reach the PLC logic module.</source>
+        <translation>Dieses Protokoll erreicht das SPS-Logikmodul nicht.</translation>
+    </message>
+    <message>
+        <source>Dead-time modes exist only in %1.</source>
+        <translation>Totzeit-Modi gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>Analogue cams exist only in %1.</source>
+        <translation>Analognocken gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>The EEPROM lock exists only in %1.</source>
+        <translation>Die EEPROM-Sperre gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>bytes outside any frame</source>
+        <translation>Bytes außerhalb eines Rahmens</translation>
+    </message>
+    <message>
+        <source>a frame ended by CR without LF</source>
+        <translation>ein Rahmen, der mit CR ohne LF endet</translation>
+    </message>
+    <message>
+        <source>No frame end within %1 bytes; the frame was dropped.</source>
+        <translation>Kein Rahmenende innerhalb von %1 Bytes; der Rahmen wurde verworfen.</translation>
+    </message>
+    <message>
+        <source>the rest of an oversized frame</source>
+        <translation>der Rest eines übergroßen Rahmens</translation>
+    </message>
+    <message>
+        <source>The frame has no checksum characters.</source>
+        <translation>Der Rahmen hat keine Prüfsummenzeichen.</translation>
+    </message>
+    <message>
+        <source>Checksum %1 received, %2 expected.</source>
+        <translation>Prüfsumme %1 empfangen, %2 erwartet.</translation>
+    </message>
+    <message>
+        <source>Skipped %1 bytes: %2.</source>
+        <translation>%1 Bytes übersprungen: %2.</translation>
+    </message>
+    <message>
+        <source>The value %1 of field &quot;%2&quot; is outside %3..%4 (%5 hex digits); use a value in that range.</source>
+        <translation>Der Wert %1 des Feldes „%2“ liegt außerhalb von %3..%4 (%5 Hex-Ziffern); verwenden Sie einen Wert in diesem Bereich.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; needs a number, got &quot;%2&quot;.</source>
+        <translation>Feld „%1“ braucht eine Zahl, erhalten: „%2“.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; contains a NUL character; remove it.</source>
+        <translation>Feld „%1“ enthält ein NUL-Zeichen; entfernen Sie es.</translation>
+    </message>
+    <message>
+        <source>The text &quot;%1&quot; of field &quot;%2&quot; is %3 characters long; at most %4 fit.</source>
+        <translation>Der Text „%1“ des Feldes „%2“ ist %3 Zeichen lang; höchstens %4 passen.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; needs exactly %2 bytes, got %3.</source>
+        <translation>Feld „%1“ braucht genau %2 Bytes, erhalten: %3.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; needs exactly %2 words, got %3.</source>
+        <translation>Feld „%1“ braucht genau %2 Wörter, erhalten: %3.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; has an unknown type.</source>
+        <translation>Feld „%1“ hat einen unbekannten Typ.</translation>
+    </message>
+    <message>
+        <source>Malformed data: field &quot;%1&quot; at offset %2 %3.</source>
+        <translation>Fehlerhafte Daten: Feld „%1“ an Stelle %2 %3.</translation>
+    </message>
+    <message>
+        <source>has %1 characters, not a multiple of %2</source>
+        <translation>hat %1 Zeichen, kein Vielfaches von %2</translation>
+    </message>
+    <message>
+        <source>is not hexadecimal</source>
+        <translation>ist nicht hexadezimal</translation>
+    </message>
+    <message>
+        <source>has an odd number of digits</source>
+        <translation>hat eine ungerade Zahl von Ziffern</translation>
+    </message>
+    <message>
+        <source>%1: expected &quot;OK&quot;, got &quot;%2&quot;.</source>
+        <translation>%1: „OK“ erwartet, erhalten: „%2“.</translation>
+    </message>
+    <message>
+        <source>needs %1 characters, only %2 left</source>
+        <translation>braucht %1 Zeichen, nur %2 übrig</translation>
+    </message>
+    <message>
+        <source>Malformed data: %1 unexpected characters after the last field.</source>
+        <translation>Fehlerhafte Daten: %1 unerwartete Zeichen nach dem letzten Feld.</translation>
+    </message>
+    <message>
+        <source>Cannot send %1: %2</source>
+        <translation>%1 kann nicht gesendet werden: %2</translation>
+    </message>
+    <message>
+        <source>The request does not start with %1.</source>
+        <translation>Die Anfrage beginnt nicht mit %1.</translation>
+    </message>
+    <message>
+        <source>%1 has no data reply.</source>
+        <translation>%1 hat keine Datenantwort.</translation>
+    </message>
+    <message>
+        <source>Cannot answer %1: %2</source>
+        <translation>%1 kann nicht beantwortet werden: %2</translation>
+    </message>
+    <message>
+        <source>the device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>check the cable, the baud rate, that the device speaks the Multiuser protocol and the device number</source>
+        <translation>prüfen Sie das Kabel, die Baudrate, dass das Gerät das Multiuser-Protokoll spricht, und die Gerätenummer</translation>
+    </message>
+    <message>
+        <source>check the cable, the baud rate and that the device speaks the Standard protocol</source>
+        <translation>prüfen Sie das Kabel, die Baudrate und dass das Gerät das Standard-Protokoll spricht</translation>
+    </message>
+    <message>
+        <source>a reply with a wrong checksum</source>
+        <translation>eine Antwort mit falscher Prüfsumme</translation>
+    </message>
+    <message>
+        <source>an oversized reply</source>
+        <translation>eine übergroße Antwort</translation>
+    </message>
+    <message>
+        <source>a malformed reply: %1</source>
+        <translation>eine fehlerhafte Antwort: %1</translation>
+    </message>
+    <message>
+        <source>the device repeated an answer to an earlier request</source>
+        <translation>das Gerät wiederholte die Antwort auf eine frühere Anfrage</translation>
+    </message>
+    <message>
+        <source>%1 is not a command of the catalogue</source>
+        <translation>%1 ist kein Befehl des Katalogs</translation>
+    </message>
+    <message>
+        <source>%1: the device reported error %2: %3</source>
+        <translation>%1: das Gerät meldete Fehler %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: the device does not know this command (firmware dated %2); it needs a newer firmware for it</source>
+        <translation>%1: das Gerät kennt diesen Befehl nicht (Firmware vom %2); dafür braucht es eine neuere Firmware</translation>
+    </message>
+    <message>
+        <source>a request starts with &apos;?&apos; or &apos;!&apos;, not &apos;%1&apos;</source>
+        <translation>eine Anfrage beginnt mit &apos;?&apos; oder &apos;!&apos;, nicht mit &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>an empty request: type the command letters after %1</source>
+        <translation>eine leere Anfrage: tippen Sie die Befehlsbuchstaben nach %1</translation>
+    </message>
+    <message>
+        <source>an empty request: type ? or ! and the command</source>
+        <translation>eine leere Anfrage: tippen Sie ? oder ! und den Befehl</translation>
+    </message>
+    <message>
+        <source>CamCon ASCII, Multiuser (RS485 bus)</source>
+        <translation>CamCon ASCII, Multiuser (RS485-Bus)</translation>
+    </message>
+    <message>
+        <source>CamCon ASCII, Standard (RS232)</source>
+        <translation>CamCon ASCII, Standard (RS232)</translation>
+    </message>
+    <message>
+        <source>the %1 protocol got settings of %2</source>
+        <translation>das Protokoll %1 erhielt Einstellungen von %2</translation>
+    </message>
+    <message>
+        <source>another protocol</source>
+        <translation>einem anderen Protokoll</translation>
+    </message>
+    <message>
+        <source>reading the device identity (?EPROM)</source>
+        <translation>Lesen der Gerätekennung (?EPROM)</translation>
+    </message>
+    <message>
+        <source>reading the device identity (?%1)</source>
+        <translation>Lesen der Gerätekennung (?%1)</translation>
+    </message>
+    <message>
+        <source>reading the error state (?ERR)</source>
+        <translation>Lesen des Fehlerzustands (?ERR)</translation>
+    </message>
+    <message>
+        <source>reading the status (?%1)</source>
+        <translation>Lesen des Zustands (?%1)</translation>
+    </message>
+    <message>
+        <source>resetting the error (!ERR)</source>
+        <translation>Zurücksetzen des Fehlers (!ERR)</translation>
+    </message>
+    <message>
+        <source>selecting program %1 (!PAU)</source>
+        <translation>Auswählen von Programm %1 (!PAU)</translation>
+    </message>
+    <message>
+        <source>program %1, output %2</source>
+        <translation>Programm %1, Ausgang %2</translation>
+    </message>
+    <message>
+        <source>reading %1: the device reports more than %2 cams on one track; check the device</source>
+        <translation>Lesen von %1: das Gerät meldet mehr als %2 Nocken auf einer Spur; prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <source>inserting the cam %1..%2 on %3 (!NINS)</source>
+        <translation>Einfügen des Nockens %1..%2 in %3 (!NINS)</translation>
+    </message>
+    <message>
+        <source> On an insert the usual cause is a cam that overlaps another cam of the track or lies outside the device&apos;s range.</source>
+        <translation> Beim Einfügen ist die übliche Ursache ein Nocken, der einen anderen Nocken der Spur überlappt oder außerhalb des Bereichs des Geräts liegt.</translation>
+    </message>
+    <message>
+        <source>deleting the cam at %1 on %2 (!NDEL)</source>
+        <translation>Löschen des Nockens bei %1 in %2 (!NDEL)</translation>
+    </message>
+    <message>
+        <source> Nothing had been changed on the track yet.</source>
+        <translation> An der Spur war noch nichts geändert worden.</translation>
+    </message>
+    <message>
+        <source> The cams already changed were put back: the track is as it was.</source>
+        <translation> Die bereits geänderten Nocken wurden zurückgesetzt: die Spur ist wie vorher.</translation>
+    </message>
+    <message>
+        <source> Putting the track back failed too: it may now hold other cams than before; read it to see.</source>
+        <translation> Auch das Zurücksetzen der Spur schlug fehl: sie kann jetzt andere Nocken als vorher enthalten; lesen Sie sie, um es zu sehen.</translation>
+    </message>
+    <message>
+        <source>writing %1: after lost replies the device holds %2 cams instead of the %3 written; write the track again</source>
+        <translation>Schreiben von %1: nach verlorenen Antworten enthält das Gerät %2 Nocken statt der %3 geschriebenen; schreiben Sie die Spur erneut</translation>
+    </message>
+    <message>
+        <source>deleting program %1 (!PDEL)</source>
+        <translation>Löschen von Programm %1 (!PDEL)</translation>
+    </message>
+    <message>
+        <source>copying program %1 to program %2 (!PCPY)</source>
+        <translation>Kopieren von Programm %1 nach Programm %2 (!PCPY)</translation>
+    </message>
+    <message>
+        <source>copying output %1 to output %2 in program %3 (!PACPY)</source>
+        <translation>Kopieren von Ausgang %1 nach Ausgang %2 in Programm %3 (!PACPY)</translation>
+    </message>
+    <message>
+        <source>reading the dead time of output %1 (?TZK)</source>
+        <translation>Lesen der Totzeit von Ausgang %1 (?TZK)</translation>
+    </message>
+    <message>
+        <source>writing the dead time of output %1 (!TZK)</source>
+        <translation>Schreiben der Totzeit von Ausgang %1 (!TZK)</translation>
+    </message>
+    <message>
+        <source>reading the name of output %1 (?ANAME)</source>
+        <translation>Lesen des Namens von Ausgang %1 (?ANAME)</translation>
+    </message>
+    <message>
+        <source>writing the name of output %1 (!ANAME)</source>
+        <translation>Schreiben des Namens von Ausgang %1 (!ANAME)</translation>
+    </message>
+    <message>
+        <source>reading the name of program %1 (?PNAME)</source>
+        <translation>Lesen des Namens von Programm %1 (?PNAME)</translation>
+    </message>
+    <message>
+        <source>writing the name of program %1 (!PNAME)</source>
+        <translation>Schreiben des Namens von Programm %1 (!PNAME)</translation>
+    </message>
+    <message>
+        <source>reading the settings (?%1)</source>
+        <translation>Lesen der Einstellungen (?%1)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no device setting</source>
+        <translation>„%1“ ist keine Geräteeinstellung</translation>
+    </message>
+    <message>
+        <source>reading user entry %1 (?USER)</source>
+        <translation>Lesen von Benutzereintrag %1 (?USER)</translation>
+    </message>
+    <message>
+        <source>reading the users: the device lists more than %1 entries and no end; check the device</source>
+        <translation>Lesen der Benutzer: das Gerät nennt mehr als %1 Einträge und kein Ende; prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <source>writing user &quot;%1&quot; (!USER)</source>
+        <translation>Schreiben von Benutzer „%1“ (!USER)</translation>
+    </message>
+    <message>
+        <source>deleting a user (!USER)</source>
+        <translation>Löschen eines Benutzers (!USER)</translation>
+    </message>
+    <message>
+        <source>PLC network %1%2</source>
+        <translation>SPS-Netzwerk %1%2</translation>
+    </message>
+    <message>
+        <source>reading %1 (?GMXSPS)</source>
+        <translation>Lesen von %1 (?GMXSPS)</translation>
+    </message>
+    <message>
+        <source>writing %1 (!GMXSPS)</source>
+        <translation>Schreiben von %1 (!GMXSPS)</translation>
+    </message>
+    <message>
+        <source>reading the actual value of %1 (?SPSIST)</source>
+        <translation>Lesen des Istwerts von %1 (?SPSIST)</translation>
+    </message>
+    <message>
+        <source>reading the set value of %1 (?SPSSOLL)</source>
+        <translation>Lesen des Sollwerts von %1 (?SPSSOLL)</translation>
+    </message>
+    <message>
+        <source>reading EEPROM block %1 (?EE)</source>
+        <translation>Lesen von EEPROM-Block %1 (?EE)</translation>
+    </message>
+    <message>
+        <source>the device sent no EEPROM block 0000; check the device</source>
+        <translation>das Gerät sandte keinen EEPROM-Block 0000; prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <source>asked for EEPROM block %1, the device sent block %2; try again</source>
+        <translation>EEPROM-Block %1 angefragt, das Gerät sandte Block %2; versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>the device sent a malformed EEPROM block: %1; try again</source>
+        <translation>das Gerät sandte einen fehlerhaften EEPROM-Block: %1; versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>the device sent EEPROM blocks up to FFFE without the end marker FFFF; check the device</source>
+        <translation>das Gerät sandte EEPROM-Blöcke bis FFFE ohne die Endmarke FFFF; prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <source>the EEPROM image does not start with block 0000; nothing was sent</source>
+        <translation>das EEPROM-Abbild beginnt nicht mit Block 0000; nichts wurde gesendet</translation>
+    </message>
+    <message>
+        <source>The device may already be ERASED (block 0000 starts the erase).</source>
+        <translation>Das Gerät ist möglicherweise bereits GELÖSCHT (Block 0000 startet das Löschen).</translation>
+    </message>
+    <message>
+        <source>The device is now ERASED: it holds only the blocks before %1 and does not run.</source>
+        <translation>Das Gerät ist jetzt GELÖSCHT: es enthält nur die Blöcke vor %1 und läuft nicht.</translation>
+    </message>
+    <message>
+        <source>The device holds every block but did not confirm that it started.</source>
+        <translation>Das Gerät enthält jeden Block, hat aber nicht bestätigt, dass es gestartet ist.</translation>
+    </message>
+    <message>
+        <source>restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same restore again is safe: it starts by erasing the device. Cause</source>
+        <translation>Wiederherstellung bei EEPROM-Block %1 von %2 fehlgeschlagen (!EE%3). %4 Dieselbe Wiederherstellung erneut auszuführen ist sicher: sie beginnt mit dem Löschen des Geräts. Ursache</translation>
+    </message>
+    <message>
+        <source>a bus scan needs the Multiuser protocol; connect with --protocol multiuser</source>
+        <translation>eine Bussuche braucht das Multiuser-Protokoll; verbinden Sie mit --protocol multiuser</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>1 attempt</source>
+        <translation>1 Versuch</translation>
+    </message>
+    <message>
+        <source>%1 attempts</source>
+        <translation>%1 Versuchen</translation>
+    </message>
+    <message>
+        <source>%1 from %2 to %3 on %4 after %5 of %6 ms; %7</source>
+        <translation>%1 von %2 auf %3 an %4 nach %5 zu je %6 ms; %7</translation>
+    </message>
+    <message>
+        <source>device %1</source>
+        <translation>Gerät %1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::model</name>
+    <message>
+        <source>a text is expected</source>
+        <translation>ein Text wird erwartet</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has %2 characters; at most %3 are allowed</source>
+        <translation>„%1“ hat %2 Zeichen; höchstens %3 sind erlaubt</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; contains a character the device cannot store (only printable Latin-1 characters are allowed)</source>
+        <translation>„%1“ enthält ein Zeichen, das das Gerät nicht speichern kann (nur druckbare Latin-1-Zeichen sind erlaubt)</translation>
+    </message>
+    <message>
+        <source>%1 is not one of the allowed values %2</source>
+        <translation>%1 ist keiner der erlaubten Werte %2</translation>
+    </message>
+    <message>
+        <source>0 is not allowed; allowed are %1..-%3 and %3..%2</source>
+        <translation>0 ist nicht erlaubt; erlaubt sind %1..-%3 und %3..%2</translation>
+    </message>
+    <message>
+        <source>%1 is outside the allowed range %2%3</source>
+        <translation>%1 liegt außerhalb des erlaubten Bereichs %2%3</translation>
+    </message>
+    <message>
+        <source>%1 is not a multiple of %2 (allowed are %3 in steps of %2)</source>
+        <translation>%1 ist kein Vielfaches von %2 (erlaubt sind %3 in Schritten von %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a whole number</source>
+        <translation>„%1“ ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1: there is no such setting.</source>
+        <translation>%1: diese Einstellung gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2. The file was not changed.</source>
+        <translation>%1 konnte nicht geschrieben werden: %2. Die Datei wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: the file does not exist.</source>
+        <translation>%1 konnte nicht gelesen werden: die Datei existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: it is not a regular file.</source>
+        <translation>%1 konnte nicht gelesen werden: es ist keine reguläre Datei.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: %2.</source>
+        <translation>%1 konnte nicht gelesen werden: %2.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: it is larger than %2 bytes, so it is not a CamBench file.</source>
+        <translation>%1 konnte nicht gelesen werden: sie ist größer als %2 Bytes, also keine CamBench-Datei.</translation>
+    </message>
+    <message>
+        <source>%1 %2 is below the minimum %3</source>
+        <translation>%1 %2 liegt unter dem Minimum %3</translation>
+    </message>
+    <message>
+        <source>%1 %2 is above the maximum %3</source>
+        <translation>%1 %2 liegt über dem Maximum %3</translation>
+    </message>
+    <message>
+        <source>switch-on and switch-off point are both %1, so the cam would never switch</source>
+        <translation>Einschalt- und Ausschaltpunkt sind beide %1, der Nocken würde also nie schalten</translation>
+    </message>
+    <message>
+        <source>switch-off point %1 is below the switch-on point %2; only on a rotary axis may a cam wrap through zero</source>
+        <translation>Ausschaltpunkt %1 liegt unter dem Einschaltpunkt %2; nur auf einer Rundachse darf ein Nocken über null laufen</translation>
+    </message>
+    <message>
+        <source>the device has outputs 1..%1</source>
+        <translation>das Gerät hat die Ausgänge 1..%1</translation>
+    </message>
+    <message>
+        <source>%1 cams, but a track holds at most %2</source>
+        <translation>%1 Nocken, aber eine Spur fasst höchstens %2</translation>
+    </message>
+    <message>
+        <source>%1 overlaps cam %2 (%3)</source>
+        <translation>%1 überlappt Nocken %2 (%3)</translation>
+    </message>
+    <message>
+        <source>the device has programs 0..%1</source>
+        <translation>das Gerät hat die Programme 0..%1</translation>
+    </message>
+    <message>
+        <source>the track stored for output %1 says it is output %2</source>
+        <translation>die für Ausgang %1 gespeicherte Spur gibt Ausgang %2 an</translation>
+    </message>
+    <message>
+        <source>%1 has %2 characters; the device stores at most %3</source>
+        <translation>%1 hat %2 Zeichen; das Gerät speichert höchstens %3</translation>
+    </message>
+    <message>
+        <source>%1 contains &apos;%2&apos;, which the device cannot show (only Latin-1 characters are possible)</source>
+        <translation>%1 enthält &apos;%2&apos;, das das Gerät nicht anzeigen kann (nur Latin-1-Zeichen sind möglich)</translation>
+    </message>
+    <message>
+        <source>%1 contains the control character 0x%2</source>
+        <translation>%1 enthält das Steuerzeichen 0x%2</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: the device compensates outputs 1..%2 only.</source>
+        <translation>Totzeit von Ausgang %1: das Gerät kompensiert nur die Ausgänge 1..%2.</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).</source>
+        <translation>Totzeit von Ausgang %1: %2 liegt außerhalb von 0..%3 (Schritte von 0,1 ms).</translation>
+    </message>
+    <message>
+        <source>Name of output %1: the device has outputs 1..%2.</source>
+        <translation>Name von Ausgang %1: das Gerät hat die Ausgänge 1..%2.</translation>
+    </message>
+    <message>
+        <source>Name of output %1: %2.</source>
+        <translation>Name von Ausgang %1: %2.</translation>
+    </message>
+    <message>
+        <source>Name of program %1: the device has programs 0..%2.</source>
+        <translation>Name von Programm %1: das Gerät hat die Programme 0..%2.</translation>
+    </message>
+    <message>
+        <source>Name of program %1: %2.</source>
+        <translation>Name von Programm %1: %2.</translation>
+    </message>
+    <message>
+        <source>the name %1</source>
+        <translation>der Name %1</translation>
+    </message>
+    <message>
+        <source>the user number must have 1 to %1 characters</source>
+        <translation>die Benutzernummer muss 1 bis %1 Zeichen haben</translation>
+    </message>
+    <message>
+        <source>the user number may hold only printable ASCII characters</source>
+        <translation>die Benutzernummer darf nur druckbare ASCII-Zeichen enthalten</translation>
+    </message>
+    <message>
+        <source>the user number &quot;DEL&quot; is reserved: it deletes a user</source>
+        <translation>die Benutzernummer „DEL“ ist reserviert: sie löscht einen Benutzer</translation>
+    </message>
+    <message>
+        <source>%1 output access entries, but the device has %2</source>
+        <translation>%1 Einträge für Ausgangszugriffe, aber das Gerät hat %2</translation>
+    </message>
+    <message>
+        <source>%1 has the same user number as user %2; numbers must be unique.</source>
+        <translation>%1 hat dieselbe Benutzernummer wie Benutzer %2; Nummern müssen eindeutig sein.</translation>
+    </message>
+    <message>
+        <source>PLC network area 0x%1 is unknown; allowed are 0x08 (O), 0x09 (P), 0x0A (M) and 0x0B (X).</source>
+        <translation>SPS-Netzwerkbereich 0x%1 ist unbekannt; erlaubt sind 0x08 (O), 0x09 (P), 0x0A (M) und 0x0B (X).</translation>
+    </message>
+    <message>
+        <source>PLC network number %1 is outside 0..%2.</source>
+        <translation>SPS-Netzwerknummer %1 liegt außerhalb von 0..%2.</translation>
+    </message>
+    <message>
+        <source>%1 is not an integer</source>
+        <translation>%1 ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>%1 is not a string</source>
+        <translation>%1 ist kein Text</translation>
+    </message>
+    <message>
+        <source>%1 is not true or false</source>
+        <translation>%1 ist weder true noch false</translation>
+    </message>
+    <message>
+        <source>a JSON object is expected</source>
+        <translation>ein JSON-Objekt wird erwartet</translation>
+    </message>
+    <message>
+        <source>a JSON array is expected</source>
+        <translation>ein JSON-Array wird erwartet</translation>
+    </message>
+    <message>
+        <source>This is not a CamBench %1: it is not valid JSON (line %2: %3). The file may be truncated or damaged.</source>
+        <translation>Dies ist keine CamBench-%1: sie ist kein gültiges JSON (Zeile %2: %3). Die Datei ist möglicherweise abgeschnitten oder beschädigt.</translation>
+    </message>
+    <message>
+        <source>This is not a CamBench %1: the JSON holds no object.</source>
+        <translation>Dies ist keine CamBench-%1: das JSON enthält kein Objekt.</translation>
+    </message>
+    <message>
+        <source>This is not a CamBench %1: its &quot;format&quot; is %2, expected &quot;%3&quot;.</source>
+        <translation>Dies ist keine CamBench-%1: ihr „format“ ist %2, erwartet: „%3“.</translation>
+    </message>
+    <message>
+        <source>the format version</source>
+        <translation>die Formatversion</translation>
+    </message>
+    <message>
+        <source>This %1 was written by a newer CamBench (format version %2); this CamBench reads version %3. Open it with a newer CamBench.</source>
+        <translation>Diese %1 wurde von einem neueren CamBench geschrieben (Formatversion %2); dieses CamBench liest Version %3. Öffnen Sie sie mit einem neueren CamBench.</translation>
+    </message>
+    <message>
+        <source>%1 %2 is not a multiple of 8</source>
+        <translation>%1 %2 ist kein Vielfaches von 8</translation>
+    </message>
+    <message>
+        <source>EPROM date</source>
+        <translation>EPROM-Datum</translation>
+    </message>
+    <message>
+        <source>maximum position %1 is not above the minimum position %2</source>
+        <translation>die höchste Position %1 liegt nicht über der niedrigsten Position %2</translation>
+    </message>
+    <message>
+        <source>program number</source>
+        <translation>Programmnummer</translation>
+    </message>
+    <message>
+        <source>program name</source>
+        <translation>Programmname</translation>
+    </message>
+    <message>
+        <source>program %1 appears twice</source>
+        <translation>Programm %1 kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>output %1 appears twice</source>
+        <translation>Ausgang %1 kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>a cam is a pair [switch-on point, switch-off point], this has %1 values</source>
+        <translation>ein Nocken ist ein Paar [Einschaltpunkt, Ausschaltpunkt], dieser hat %1 Werte</translation>
+    </message>
+    <message>
+        <source>switch-on point</source>
+        <translation>Einschaltpunkt</translation>
+    </message>
+    <message>
+        <source>switch-off point</source>
+        <translation>Ausschaltpunkt</translation>
+    </message>
+    <message>
+        <source>dead time</source>
+        <translation>Totzeit</translation>
+    </message>
+    <message>
+        <source>%1 %2 appears twice</source>
+        <translation>%1 %2 kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>user name</source>
+        <translation>Benutzername</translation>
+    </message>
+    <message>
+        <source>user number</source>
+        <translation>Benutzernummer</translation>
+    </message>
+    <message>
+        <source>&quot;all outputs&quot;</source>
+        <translation>„alle Ausgänge“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no ISO 8601 time</source>
+        <translation>„%1“ ist keine Zeit nach ISO 8601</translation>
+    </message>
+    <message>
+        <source>Program %1 appears twice.</source>
+        <translation>Programm %1 kommt zweimal vor.</translation>
+    </message>
+    <message>
+        <source>Program %1 is named &quot;%2&quot;, but the list of program names says &quot;%3&quot;.</source>
+        <translation>Programm %1 heißt „%2“, aber die Liste der Programmnamen sagt „%3“.</translation>
+    </message>
+    <message>
+        <source>PLC network %1 of area 0x%2 appears twice.</source>
+        <translation>SPS-Netzwerk %1 des Bereichs 0x%2 kommt zweimal vor.</translation>
+    </message>
+    <message>
+        <source>Block %1 (entry %2 of the list)</source>
+        <translation>Block %1 (Eintrag %2 der Liste)</translation>
+    </message>
+    <message>
+        <source>block number</source>
+        <translation>Blocknummer</translation>
+    </message>
+    <message>
+        <source>block data</source>
+        <translation>Blockdaten</translation>
+    </message>
+    <message>
+        <source>block data is not an even number of hex digits</source>
+        <translation>die Blockdaten sind keine gerade Zahl von Hex-Ziffern</translation>
+    </message>
+    <message>
+        <source>The image holds no blocks.</source>
+        <translation>Das Abbild enthält keine Blöcke.</translation>
+    </message>
+    <message>
+        <source>The image does not start with block 0000 (the basic parameters) but with block %1.</source>
+        <translation>Das Abbild beginnt nicht mit Block 0000 (den Grundparametern), sondern mit Block %1.</translation>
+    </message>
+    <message>
+        <source>Block 0000 has %1 bytes; the basic-parameter block has %2.</source>
+        <translation>Block 0000 hat %1 Bytes; der Grundparameterblock hat %2.</translation>
+    </message>
+    <message>
+        <source>%1 does not follow block %2: block numbers must ascend.</source>
+        <translation>%1 folgt nicht auf Block %2: Blocknummern müssen aufsteigen.</translation>
+    </message>
+    <message>
+        <source>%1: FFFF marks the end of the EEPROM and is no block.</source>
+        <translation>%1: FFFF markiert das Ende des EEPROMs und ist kein Block.</translation>
+    </message>
+    <message>
+        <source>%1: its first byte 0x%2 gives no length (upper 4 bits are 0).</source>
+        <translation>%1: sein erstes Byte 0x%2 gibt keine Länge an (die oberen 4 Bits sind 0).</translation>
+    </message>
+    <message>
+        <source>%1 has %2 bytes, but its first byte 0x%3 says %4.</source>
+        <translation>%1 hat %2 Bytes, aber sein erstes Byte 0x%3 sagt %4.</translation>
+    </message>
+    <message>
+        <source>EPROM date: image &quot;%1&quot;, device &quot;%2&quot;.</source>
+        <translation>EPROM-Datum: Abbild „%1“, Gerät „%2“.</translation>
+    </message>
+    <message>
+        <source>%1: image %2, device %3.</source>
+        <translation>%1: Abbild %2, Gerät %3.</translation>
+    </message>
+    <message>
+        <source>The file was changed or damaged: its SHA-256 checksum does not match its content. Do not restore it; take a new backup.</source>
+        <translation>Die Datei wurde verändert oder beschädigt: ihre SHA-256-Prüfsumme passt nicht zum Inhalt. Stellen Sie sie nicht wieder her; erstellen Sie eine neue Sicherung.</translation>
+    </message>
+    <message>
+        <source>time taken</source>
+        <translation>Zeitpunkt der Sicherung</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an ISO 8601 date and time</source>
+        <translation>„%1“ ist kein Datum mit Uhrzeit nach ISO 8601</translation>
+    </message>
+    <message>
+        <source>%1 was not saved: %2</source>
+        <translation>%1 wurde nicht gespeichert: %2</translation>
+    </message>
+    <message>
+        <source>Line %1: %2. Nothing was imported.</source>
+        <translation>Zeile %1: %2. Nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <source>a quoted field has no closing quote</source>
+        <translation>einem Feld in Anführungszeichen fehlt das schließende Anführungszeichen</translation>
+    </message>
+    <message>
+        <source>there is text after a closing quote</source>
+        <translation>nach einem schließenden Anführungszeichen steht Text</translation>
+    </message>
+    <message>
+        <source>The file is not UTF-8 text. Nothing was imported.</source>
+        <translation>Die Datei ist kein UTF-8-Text. Nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <source>the header must be &quot;%1&quot;, found &quot;%2&quot;</source>
+        <translation>die Kopfzeile muss „%1“ sein, gefunden: „%2“</translation>
+    </message>
+    <message>
+        <source>%1 fields, expected %2 (%3)</source>
+        <translation>%1 Felder, erwartet: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 &quot;%2&quot; is not a whole number</source>
+        <translation>%1 „%2“ ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>output %1 has a cam %2 already (line %3)</source>
+        <translation>Ausgang %1 hat schon einen Nocken %2 (Zeile %3)</translation>
+    </message>
+    <message>
+        <source>cam %1 of output %2, but cam %3 is missing; number the cams of an output 1, 2, 3, ...</source>
+        <translation>Nocken %1 von Ausgang %2, aber Nocken %3 fehlt; nummerieren Sie die Nocken eines Ausgangs 1, 2, 3, ...</translation>
+    </message>
+    <message>
+        <source>output %1 has a dead time already (line %2)</source>
+        <translation>Ausgang %1 hat schon eine Totzeit (Zeile %2)</translation>
+    </message>
+    <message>
+        <source>kind &quot;%1&quot; is neither &quot;output&quot; nor &quot;program&quot;</source>
+        <translation>Art „%1“ ist weder „output“ noch „program“</translation>
+    </message>
+    <message>
+        <source>%1 %2 has a name already (line %3)</source>
+        <translation>%1 %2 hat schon einen Namen (Zeile %3)</translation>
+    </message>
+    <message>
+        <source>there is no such setting</source>
+        <translation>diese Einstellung gibt es nicht</translation>
+    </message>
+    <message>
+        <source>the value is not a text</source>
+        <translation>der Wert ist kein Text</translation>
+    </message>
+    <message>
+        <source>the value</source>
+        <translation>der Wert</translation>
+    </message>
+    <message>
+        <source>the area &quot;%1&quot; is none of O, P, M, X</source>
+        <translation>der Bereich „%1“ ist keiner von O, P, M, X</translation>
+    </message>
+    <message>
+        <source>&quot;area&quot; is missing</source>
+        <translation>„area“ fehlt</translation>
+    </message>
+    <message>
+        <source>network number</source>
+        <translation>Netzwerknummer</translation>
+    </message>
+    <message>
+        <source>reset field</source>
+        <translation>Rücksetzfeld</translation>
+    </message>
+    <message>
+        <source>%1 symbols, expected %2 (%3 paths of %4)</source>
+        <translation>%1 Symbole, erwartet: %2 (%3 Strompfade zu %4)</translation>
+    </message>
+    <message>
+        <source>network %1%2 appears twice</source>
+        <translation>Netzwerk %1%2 kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no ISO time</source>
+        <translation>„%1“ ist keine ISO-Zeit</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is neither &quot;saved&quot; nor &quot;failed&quot;</source>
+        <translation>„%1“ ist weder „saved“ noch „failed“</translation>
+    </message>
+    <message>
+        <source>device %1 appears twice</source>
+        <translation>Gerät %1 kommt zweimal vor</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::plcsymbol</name>
+    <message>
+        <source>&quot;%1&quot; is not taken: CamBench knows the operands O, P, M and X only (P are the cam controller&apos;s inputs, e.g. P5). Enter one of them with a number, or the symbol word as 4 hex digits.</source>
+        <translation>„%1“ wird nicht übernommen: CamBench kennt nur die Operanden O, P, M und X (P sind die Eingänge des Nockenschaltwerks, z. B. P5). Geben Sie einen davon mit einer Nummer ein oder das Symbolwort als 4 Hex-Ziffern.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not taken: the number must be 1 … 256.</source>
+        <translation>„%1“ wird nicht übernommen: die Nummer muss 1 … 256 sein.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not taken: enter an operand such as M11 or P5, 4 hex digits (0A0A), or nothing to clear the symbol.</source>
+        <translation>„%1“ wird nicht übernommen: geben Sie einen Operanden wie M11 oder P5 ein, 4 Hex-Ziffern (0A0A) oder nichts, um das Symbol zu leeren.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases</name>
+    <message>
+        <source>, the device keeps %1</source>
+        <translation>, das Gerät behält %1</translation>
+    </message>
+    <message>
+        <source>, the device NOW HOLDS %1</source>
+        <translation>, das Gerät ENTHÄLT JETZT %1</translation>
+    </message>
+    <message>
+        <source>, what the device holds now could not be read</source>
+        <translation>, was das Gerät jetzt enthält, ließ sich nicht lesen</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>geschrieben</translation>
+    </message>
+    <message>
+        <source>unchanged</source>
+        <translation>unverändert</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>changed though the write failed</source>
+        <translation>geändert, obwohl das Schreiben fehlschlug</translation>
+    </message>
+    <message>
+        <source>failed, state unknown</source>
+        <translation>fehlgeschlagen, Zustand unbekannt</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1 written</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>%1 unchanged</source>
+        <translation>%1 unverändert</translation>
+    </message>
+    <message>
+        <source>%1 failed (the device keeps its old values)</source>
+        <translation>%1 fehlgeschlagen (das Gerät behält seine alten Werte)</translation>
+    </message>
+    <message>
+        <source>%1 CHANGED THOUGH THE WRITE FAILED</source>
+        <translation>%1 GEÄNDERT, OBWOHL DAS SCHREIBEN FEHLSCHLUG</translation>
+    </message>
+    <message>
+        <source>%1 failed with the device&apos;s state unknown</source>
+        <translation>%1 fehlgeschlagen, Zustand des Geräts unbekannt</translation>
+    </message>
+    <message>
+        <source>%1 not sent</source>
+        <translation>%1 nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1 items: %2</source>
+        <translation>%1 Elemente: %2</translation>
+    </message>
+    <message>
+        <source>no cams</source>
+        <translation>keine Nocken</translation>
+    </message>
+    <message>
+        <source>no name</source>
+        <translation>kein Name</translation>
+    </message>
+    <message>
+        <source>no values</source>
+        <translation>keine Werte</translation>
+    </message>
+    <message>
+        <source>no such user</source>
+        <translation>kein solcher Benutzer</translation>
+    </message>
+    <message>
+        <source>user %1 with rights 0x%2 and %3</source>
+        <translation>Benutzer %1 mit Rechten 0x%2 und %3</translation>
+    </message>
+    <message>
+        <source>all outputs</source>
+        <translation>alle Ausgänge</translation>
+    </message>
+    <message>
+        <source>%1 outputs</source>
+        <translation>%1 Ausgänge</translation>
+    </message>
+    <message>
+        <source>value %1, reset 0x%2, %3 symbols set</source>
+        <translation>Wert %1, Rücksetzen 0x%2, %3 Symbole gesetzt</translation>
+    </message>
+    <message>
+        <source>program %1, output %2</source>
+        <translation>Programm %1, Ausgang %2</translation>
+    </message>
+    <message>
+        <source>dead time of output %1</source>
+        <translation>Totzeit von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>name of output %1</source>
+        <translation>Name von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>name of program %1</source>
+        <translation>Name von Programm %1</translation>
+    </message>
+    <message>
+        <source>settings %1 (%2)</source>
+        <translation>Einstellungen %1 (%2)</translation>
+    </message>
+    <message>
+        <source>user %1</source>
+        <translation>Benutzer %1</translation>
+    </message>
+    <message>
+        <source>PLC network %1%2</source>
+        <translation>SPS-Netzwerk %1%2</translation>
+    </message>
+    <message>
+        <source>Setting %1: there is no such setting.</source>
+        <translation>Einstellung %1: diese Einstellung gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>Setting %1 is read-only: the device decides it (wanted %2%3).</source>
+        <translation>Einstellung %1 ist nur lesbar: das Gerät bestimmt sie (gewünscht %2%3).</translation>
+    </message>
+    <message>
+        <source>, the device has %1</source>
+        <translation>, das Gerät hat %1</translation>
+    </message>
+    <message>
+        <source>Name of program %1: the device has programs 0..%2.</source>
+        <translation>Name von Programm %1: das Gerät hat die Programme 0..%2.</translation>
+    </message>
+    <message>
+        <source>Name of program %1: %2.</source>
+        <translation>Name von Programm %1: %2.</translation>
+    </message>
+    <message>
+        <source>Program %1: the device has programs 0..%2.</source>
+        <translation>Programm %1: das Gerät hat die Programme 0..%2.</translation>
+    </message>
+    <message>
+        <source>%1: the plan holds this track twice.</source>
+        <translation>%1: der Plan enthält diese Spur zweimal.</translation>
+    </message>
+    <message>
+        <source>%1: the device has outputs 1..%2.</source>
+        <translation>%1: das Gerät hat die Ausgänge 1..%2.</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: the device compensates outputs 1..%2 only.</source>
+        <translation>Totzeit von Ausgang %1: das Gerät kompensiert nur die Ausgänge 1..%2.</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).</source>
+        <translation>Totzeit von Ausgang %1: %2 liegt außerhalb von 0..%3 (Schritte von 0,1 ms).</translation>
+    </message>
+    <message>
+        <source>Name of output %1: the device has outputs 1..%2.</source>
+        <translation>Name von Ausgang %1: das Gerät hat die Ausgänge 1..%2.</translation>
+    </message>
+    <message>
+        <source>Name of output %1: %2.</source>
+        <translation>Name von Ausgang %1: %2.</translation>
+    </message>
+    <message>
+        <source>%1: the device has no user with the number given for it; read the users again.</source>
+        <translation>%1: das Gerät hat keinen Benutzer mit der dafür angegebenen Nummer; lesen Sie die Benutzer erneut.</translation>
+    </message>
+    <message>
+        <source>%1 has no number and the device has no user of that name whose number it could keep; enter a number.</source>
+        <translation>%1 hat keine Nummer, und das Gerät hat keinen Benutzer dieses Namens, dessen Nummer er behalten könnte; geben Sie eine Nummer ein.</translation>
+    </message>
+    <message>
+        <source>%1 would have the same user number as %2; numbers must be unique.</source>
+        <translation>%1 hätte dieselbe Benutzernummer wie %2; Nummern müssen eindeutig sein.</translation>
+    </message>
+    <message>
+        <source>%1: the device has %2 networks in area %3 (%3%4); change the PLC counts in the settings first.</source>
+        <translation>%1: das Gerät hat %2 Netzwerke im Bereich %3 (%3%4); ändern Sie zuerst die SPS-Anzahlen in den Einstellungen.</translation>
+    </message>
+    <message>
+        <source>outputs %1 do not exist on the device (it has 1..%2)</source>
+        <translation>die Ausgänge %1 gibt es im Gerät nicht (es hat 1..%2)</translation>
+    </message>
+    <message>
+        <source>programs %1 do not exist on the device (it has 0..%2)</source>
+        <translation>die Programme %1 gibt es im Gerät nicht (es hat 0..%2)</translation>
+    </message>
+    <message>
+        <source>%1 cam points lie outside the device&apos;s range %2..%3</source>
+        <translation>%1 Nockenpunkte liegen außerhalb des Bereichs %2..%3 des Geräts</translation>
+    </message>
+    <message>
+        <source>the plan holds invalid values</source>
+        <translation>der Plan enthält ungültige Werte</translation>
+    </message>
+    <message>
+        <source>The write was refused before anything was sent: %1 (%2):</source>
+        <translation>Das Schreiben wurde abgelehnt, bevor etwas gesendet wurde: %1 (%2):</translation>
+    </message>
+    <message>
+        <source>
+  and %1 more</source>
+        <translation>
+  und %1 weitere</translation>
+    </message>
+    <message>
+        <source>reading it before the write</source>
+        <translation>beim Lesen vor dem Schreiben</translation>
+    </message>
+    <message>
+        <source> Reading it back failed too: %1</source>
+        <translation> Auch das Zurücklesen schlug fehl: %1</translation>
+    </message>
+    <message>
+        <source>read back after the error &quot;%1&quot;</source>
+        <translation>nach dem Fehler „%1“ zurückgelesen</translation>
+    </message>
+    <message>
+        <source>not sent: the connection failed at %1; nothing after it was sent</source>
+        <translation>nicht gesendet: die Verbindung brach bei %1 ab; nichts danach wurde gesendet</translation>
+    </message>
+    <message>
+        <source>the device held %1, not %2 as last read</source>
+        <translation>das Gerät enthielt %1, nicht %2 wie zuletzt gelesen</translation>
+    </message>
+    <message>
+        <source>reading the settings</source>
+        <translation>Einstellungen werden gelesen</translation>
+    </message>
+    <message>
+        <source>reading the users</source>
+        <translation>Benutzer werden gelesen</translation>
+    </message>
+    <message>
+        <source>read everything</source>
+        <translation>alles gelesen</translation>
+    </message>
+    <message>
+        <source>Settings: the device does not know %1; they are not in the project.</source>
+        <translation>Einstellungen: das Gerät kennt %1 nicht; sie sind nicht im Projekt.</translation>
+    </message>
+    <message>
+        <source>reading program %1</source>
+        <translation>Programm %1 wird gelesen</translation>
+    </message>
+    <message>
+        <source>reading dead times</source>
+        <translation>Totzeiten werden gelesen</translation>
+    </message>
+    <message>
+        <source>Output names</source>
+        <translation>Ausgangsnamen</translation>
+    </message>
+    <message>
+        <source>reading output names</source>
+        <translation>Ausgangsnamen werden gelesen</translation>
+    </message>
+    <message>
+        <source>Output names: %1</source>
+        <translation>Ausgangsnamen: %1</translation>
+    </message>
+    <message>
+        <source>reading users</source>
+        <translation>Benutzer werden gelesen</translation>
+    </message>
+    <message>
+        <source>PLC networks</source>
+        <translation>SPS-Netzwerke</translation>
+    </message>
+    <message>
+        <source>reading PLC networks</source>
+        <translation>SPS-Netzwerke werden gelesen</translation>
+    </message>
+    <message>
+        <source>reading the EEPROM</source>
+        <translation>EEPROM wird gelesen</translation>
+    </message>
+    <message>
+        <source>%1 The device was not changed.</source>
+        <translation>%1 Das Gerät wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>%1 was taken from another kind of device: %2 It must be forced to be restored here. The device was not changed.</source>
+        <translation>%1 stammt von einer anderen Art Gerät: %2 Es muss ausdrücklich erzwungen werden, um hier wiederhergestellt zu werden. Das Gerät wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>step 1 of 2: safety backup</source>
+        <translation>Schritt 1 von 2: Sicherheitskopie</translation>
+    </message>
+    <message>
+        <source>Cannot take the safety backup before the restore: %1 The device was not changed.</source>
+        <translation>Die Sicherheitskopie vor der Wiederherstellung ist nicht möglich: %1 Das Gerät wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>Cancelled before the restore started. The device was not changed.</source>
+        <translation>Abgebrochen, bevor die Wiederherstellung begann. Das Gerät wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>step 2 of 2: restore</source>
+        <translation>Schritt 2 von 2: Wiederherstellung</translation>
+    </message>
+    <message>
+        <source> No safety backup was taken.</source>
+        <translation> Es wurde keine Sicherheitskopie erstellt.</translation>
+    </message>
+    <message>
+        <source> The device&apos;s previous content is in the safety backup %1.</source>
+        <translation> Der vorherige Inhalt des Geräts ist in der Sicherheitskopie %1.</translation>
+    </message>
+    <message>
+        <source>the device equals %1 (%2 blocks)</source>
+        <translation>das Gerät gleicht %1 (%2 Blöcke)</translation>
+    </message>
+    <message>
+        <source>the device differs from %1: device %2 blocks, image %3 blocks</source>
+        <translation>das Gerät weicht von %1 ab: Gerät %2 Blöcke, Abbild %3 Blöcke</translation>
+    </message>
+    <message>
+        <source>; first differing blocks: %1</source>
+        <translation>; erste abweichende Blöcke: %1</translation>
+    </message>
+    <message>
+        <source>%1 was written but does not read back as the image taken; check the disk</source>
+        <translation>%1 wurde geschrieben, liest sich aber nicht als das erstellte Abbild zurück; prüfen Sie den Datenträger</translation>
+    </message>
+    <message>
+        <source>scanning the line</source>
+        <translation>Leitung wird abgesucht</translation>
+    </message>
+    <message>
+        <source>no device answered on the line (numbers 0..63); check the cable, the baud rate and the protocol</source>
+        <translation>kein Gerät hat auf der Leitung geantwortet (Nummern 0..63); prüfen Sie Kabel, Baudrate und Protokoll</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1; choose another one</source>
+        <translation>der Ordner %1 kann nicht angelegt werden; wählen Sie einen anderen</translation>
+    </message>
+    <message>
+        <source>not backed up: the run was cancelled</source>
+        <translation>nicht gesichert: der Lauf wurde abgebrochen</translation>
+    </message>
+    <message>
+        <source>saved by an earlier run</source>
+        <translation>von einem früheren Lauf gesichert</translation>
+    </message>
+    <message>
+        <source>line backed up</source>
+        <translation>Leitung gesichert</translation>
+    </message>
+    <message>
+        <source>not verified: its backup failed (%1)</source>
+        <translation>nicht geprüft: seine Sicherung schlug fehl (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is missing or was changed since the backup (SHA-256 differs from the manifest)</source>
+        <translation>%1 fehlt oder wurde seit der Sicherung verändert (SHA-256 weicht vom Verzeichnis ab)</translation>
+    </message>
+    <message>
+        <source>line verified</source>
+        <translation>Leitung geprüft</translation>
     </message>
 </context>
 </TS>

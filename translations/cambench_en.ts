@@ -33,14 +33,69 @@
     </message>
 </context>
 <context>
+    <name>DeviceErrors</name>
+    <message>
+        <source>The device&apos;s RAM is too small for this setting (manual: &quot;RAM zu klein für Einstellung&quot;). Choose a smaller value, e.g. fewer PLC elements.</source>
+        <translation>The device&apos;s RAM is too small for this setting (manual: &quot;RAM zu klein für Einstellung&quot;). Choose a smaller value, e.g. fewer PLC elements.</translation>
+    </message>
+    <message>
+        <source>The dead-time compensation value is too large. Enter at most the device&apos;s maximum dead time (cambench-cli info: maxDeadTime).</source>
+        <translation>The dead-time compensation value is too large. Enter at most the device&apos;s maximum dead time (cambench-cli info: maxDeadTime).</translation>
+    </message>
+    <message>
+        <source>The device&apos;s EEPROM is defective. Back up what can still be read and have the device repaired.</source>
+        <translation>The device&apos;s EEPROM is defective. Back up what can still be read and have the device repaired.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s EEPROM is full. Delete cams or programs that are no longer needed, then write again.</source>
+        <translation>The device&apos;s EEPROM is full. Delete cams or programs that are no longer needed, then write again.</translation>
+    </message>
+    <message>
+        <source>Checksum error in the device&apos;s EEPROM: the stored data may be damaged. Restore a backup or enter the data again.</source>
+        <translation>Checksum error in the device&apos;s EEPROM: the stored data may be damaged. Restore a backup or enter the data again.</translation>
+    </message>
+    <message>
+        <source>Block 0000 of the restore (!EE) has the wrong length: the image does not suit this device. Use an image taken from this kind of device.</source>
+        <translation>Block 0000 of the restore (!EE) has the wrong length: the image does not suit this device. Use an image taken from this kind of device.</translation>
+    </message>
+    <message>
+        <source>The device cannot erase its EEPROM. Switch it off and on and restore again; if that fails too, the device needs repair.</source>
+        <translation>The device cannot erase its EEPROM. Switch it off and on and restore again; if that fails too, the device needs repair.</translation>
+    </message>
+    <message>
+        <source>The restore (!EE) sent the blocks in the wrong block number order. Restore again from the start; if it happens again, the image file is damaged.</source>
+        <translation>The restore (!EE) sent the blocks in the wrong block number order. Restore again from the start; if it happens again, the image file is damaged.</translation>
+    </message>
+    <message>
+        <source>The CamCon cannot start after the restore (!EE): the data do not suit it. Restore the safety backup or an image taken from this device.</source>
+        <translation>The CamCon cannot start after the restore (!EE): the data do not suit it. Restore the safety backup or an image taken from this device.</translation>
+    </message>
+    <message>
+        <source>A block of the restore (!EE) has the wrong length: the image file is damaged. Restore another image.</source>
+        <translation>A block of the restore (!EE) has the wrong length: the image file is damaged. Restore another image.</translation>
+    </message>
+    <message>
+        <source>The device did not receive the data completely: the line lost bytes. Check the cable and the baud rate, then try again.</source>
+        <translation>The device did not receive the data completely: the line lost bytes. Check the cable and the baud rate, then try again.</translation>
+    </message>
+    <message>
+        <source>The manual gives no meaning for error -1 (it lists it only as &quot;unknown error&quot;). The device refused the request: check that the values lie within its limits and that the item exists.</source>
+        <translation>The manual gives no meaning for error -1 (it lists it only as &quot;unknown error&quot;). The device refused the request: check that the values lie within its limits and that the item exists.</translation>
+    </message>
+    <message>
+        <source>The manual gives no meaning for error %1. Note the number and the command and ask the device&apos;s supplier.</source>
+        <translation>The manual gives no meaning for error %1. Note the number and the command and ask the device&apos;s supplier.</translation>
+    </message>
+</context>
+<context>
     <name>Settings</name>
     <message>
         <source>Encoder</source>
         <translation>Encoder</translation>
     </message>
     <message>
-        <source>The position encoder connected to the device, from the device's list of encoders, or the programmable special encoder set up on the special encoder page.</source>
-        <translation>The position encoder connected to the device, from the device's list of encoders, or the programmable special encoder set up on the special encoder page.</translation>
+        <source>The position encoder connected to the device, from the device&apos;s list of encoders, or the programmable special encoder set up on the special encoder page.</source>
+        <translation>The position encoder connected to the device, from the device&apos;s list of encoders, or the programmable special encoder set up on the special encoder page.</translation>
     </message>
     <message>
         <source>SSI 256 Gray singleturn</source>
@@ -363,16 +418,16 @@
         <translation>PLL pulse input</translation>
     </message>
     <message>
-        <source>Input that receives the PLL's pulses.</source>
-        <translation>Input that receives the PLL's pulses.</translation>
+        <source>Input that receives the PLL&apos;s pulses.</source>
+        <translation>Input that receives the PLL&apos;s pulses.</translation>
     </message>
     <message>
         <source>PLL clear input</source>
         <translation>PLL clear input</translation>
     </message>
     <message>
-        <source>Input that clears the PLL's position (0 = none).</source>
-        <translation>Input that clears the PLL's position (0 = none).</translation>
+        <source>Input that clears the PLL&apos;s position (0 = none).</source>
+        <translation>Input that clears the PLL&apos;s position (0 = none).</translation>
     </message>
     <message>
         <source>PLL sync output</source>
@@ -679,8 +734,8 @@
         <translation>Keyboard lock input</translation>
     </message>
     <message>
-        <source>Input that locks the device's keyboard (0 = none).</source>
-        <translation>Input that locks the device's keyboard (0 = none).</translation>
+        <source>Input that locks the device&apos;s keyboard (0 = none).</source>
+        <translation>Input that locks the device&apos;s keyboard (0 = none).</translation>
     </message>
     <message>
         <source>External program selection inputs</source>
@@ -723,8 +778,8 @@
         <translation>Program selection actual value</translation>
     </message>
     <message>
-        <source>Actual value at which a new program takes effect (mode "At actual value" only).</source>
-        <translation>Actual value at which a new program takes effect (mode "At actual value" only).</translation>
+        <source>Actual value at which a new program takes effect (mode &quot;At actual value&quot; only).</source>
+        <translation>Actual value at which a new program takes effect (mode &quot;At actual value&quot; only).</translation>
     </message>
     <message>
         <source>Communication protocol</source>
@@ -835,8 +890,8 @@
         <translation>Device language</translation>
     </message>
     <message>
-        <source>Language of the device's display: 0 German, 1 English, 2 French; further numbers depend on the firmware.</source>
-        <translation>Language of the device's display: 0 German, 1 English, 2 French; further numbers depend on the firmware.</translation>
+        <source>Language of the device&apos;s display: 0 German, 1 English, 2 French; further numbers depend on the firmware.</source>
+        <translation>Language of the device&apos;s display: 0 German, 1 English, 2 French; further numbers depend on the firmware.</translation>
     </message>
     <message>
         <source>PLC accelerator</source>
@@ -859,8 +914,8 @@
         <translation>PLC module</translation>
     </message>
     <message>
-        <source>Switches the PLC module off or on; "flags retained" keeps the flags at power-off.</source>
-        <translation>Switches the PLC module off or on; "flags retained" keeps the flags at power-off.</translation>
+        <source>Switches the PLC module off or on; &quot;flags retained&quot; keeps the flags at power-off.</source>
+        <translation>Switches the PLC module off or on; &quot;flags retained&quot; keeps the flags at power-off.</translation>
     </message>
     <message>
         <source>On, flags retained</source>
@@ -924,21 +979,6 @@
     </message>
 </context>
 <context>
-    <name>WriteReport</name>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 written, %2 unchanged, %3 failed</source>
-        <translation>%1 written, %2 unchanged, %3 failed</translation>
-    </message>
-    <message>
-        <source>Not written (the device keeps its old values):</source>
-        <translation>Not written (the device keeps its old values):</translation>
-    </message>
-</context>
-<context>
     <name>cambench::AccessGridModel</name>
     <message>
         <source>Output %1: allowed (the user may change all outputs)</source>
@@ -979,8 +1019,8 @@
         <translation>Backup or restore</translation>
     </message>
     <message>
-        <source>A backup copies the device's whole EEPROM into a file. A restore erases the device and writes such a file back.</source>
-        <translation>A backup copies the device's whole EEPROM into a file. A restore erases the device and writes such a file back.</translation>
+        <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back.</source>
+        <translation>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back.</translation>
     </message>
     <message>
         <source>Back up the device into a file</source>
@@ -1049,9 +1089,12 @@
     <message numerus="yes">
         <source>Image: %1
 Taken %2 with %3, %n block(s), %4 bytes.</source>
-        <translation><numerusform>Image: %1
-Taken %2 with %3, %n block, %4 bytes.</numerusform><numerusform>Image: %1
-Taken %2 with %3, %n blocks, %4 bytes.</numerusform></translation>
+        <translation>
+            <numerusform>Image: %1
+Taken %2 with %3, %n block, %4 bytes.</numerusform>
+            <numerusform>Image: %1
+Taken %2 with %3, %n blocks, %4 bytes.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Device: %1</source>
@@ -1077,45 +1120,23 @@ Taken %2 with %3, %n blocks, %4 bytes.</numerusform></translation>
         <source>Backup failed, no file was written: %1</source>
         <translation>Backup failed, no file was written: %1</translation>
     </message>
-    <message>
-        <source>The device was read, but the file could not be written: %1</source>
-        <translation>The device was read, but the file could not be written: %1</translation>
-    </message>
     <message numerus="yes">
         <source>Backup complete: %n block(s), %1 bytes written to %2. Nothing failed.</source>
-        <translation><numerusform>Backup complete: %n block, %1 bytes written to %2. Nothing failed.</numerusform><numerusform>Backup complete: %n blocks, %1 bytes written to %2. Nothing failed.</numerusform></translation>
-    </message>
-    <message>
-        <source>Step 1 of 2: saving what the device holds now into %1…</source>
-        <translation>Step 1 of 2: saving what the device holds now into %1…</translation>
-    </message>
-    <message>
-        <source>Safety backup</source>
-        <translation>Safety backup</translation>
-    </message>
-    <message>
-        <source>Restore NOT started, the device is unchanged: the safety backup failed: %1</source>
-        <translation>Restore NOT started, the device is unchanged: the safety backup failed: %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>Step 2 of 2: erasing the device and writing %n block(s)…</source>
-        <translation><numerusform>Step 2 of 2: erasing the device and writing %n block…</numerusform><numerusform>Step 2 of 2: erasing the device and writing %n blocks…</numerusform></translation>
+        <translation>
+            <numerusform>Backup complete: %n block, %1 bytes written to %2. Nothing failed.</numerusform>
+            <numerusform>Backup complete: %n blocks, %1 bytes written to %2. Nothing failed.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Restore</source>
         <translation>Restore</translation>
     </message>
-    <message>
-        <source>Restore FAILED: %1
-
-The safety backup of the previous content is %2; restore it to get the device back.</source>
-        <translation>Restore FAILED: %1
-
-The safety backup of the previous content is %2; restore it to get the device back.</translation>
-    </message>
     <message numerus="yes">
         <source>Restore complete: %n block(s) written, 0 failed. The safety backup of the previous content is %1.</source>
-        <translation><numerusform>Restore complete: %n block written, 0 failed. The safety backup of the previous content is %1.</numerusform><numerusform>Restore complete: %n blocks written, 0 failed. The safety backup of the previous content is %1.</numerusform></translation>
+        <translation>
+            <numerusform>Restore complete: %n block written, 0 failed. The safety backup of the previous content is %1.</numerusform>
+            <numerusform>Restore complete: %n blocks written, 0 failed. The safety backup of the previous content is %1.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cancel the restore? If the device is already being written, it stays ERASED until you restore an image.</source>
@@ -1124,6 +1145,33 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Cancel the backup? No file will be written.</source>
         <translation>Cancel the backup? No file will be written.</translation>
+    </message>
+    <message>
+        <source>This erases the device (%1) and writes the image %2 into it. Outputs may switch while the device restarts.
+
+Erase and restore now?</source>
+        <translation>This erases the device (%1) and writes the image %2 into it. Outputs may switch while the device restarts.
+
+Erase and restore now?</translation>
+    </message>
+    <message>
+        <source>Erase and restore</source>
+        <translation>Erase and restore</translation>
+    </message>
+    <message numerus="yes">
+        <source>Step 1 of 2: saving what the device holds now into %1; step 2: erasing the device and writing %n block(s).</source>
+        <translation>
+            <numerusform>Step 1 of 2: saving what the device holds now into %1; step 2: erasing the device and writing %n block.</numerusform>
+            <numerusform>Step 1 of 2: saving what the device holds now into %1; step 2: erasing the device and writing %n blocks.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore NOT done, the device is unchanged: %1</source>
+        <translation>Restore NOT done, the device is unchanged: %1</translation>
+    </message>
+    <message>
+        <source>Restore FAILED: %1</source>
+        <translation>Restore FAILED: %1</translation>
     </message>
 </context>
 <context>
@@ -1182,6 +1230,18 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Change dead time of output %1</source>
         <translation>Change dead time of output %1</translation>
+    </message>
+    <message>
+        <source>Take program %1 from the device</source>
+        <translation>Take program %1 from the device</translation>
+    </message>
+    <message>
+        <source>Take program %1 from the file</source>
+        <translation>Take program %1 from the file</translation>
+    </message>
+    <message>
+        <source>Take names and dead times</source>
+        <translation>Take names and dead times</translation>
     </message>
 </context>
 <context>
@@ -1353,9 +1413,12 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message numerus="yes">
         <source>The cams were imported, but %n need fixing before they can be written (shown in red):
 %1</source>
-        <translation><numerusform>The cams were imported, but %n needs fixing before they can be written (shown in red):
-%1</numerusform><numerusform>The cams were imported, but %n need fixing before they can be written (shown in red):
-%1</numerusform></translation>
+        <translation>
+            <numerusform>The cams were imported, but %n needs fixing before they can be written (shown in red):
+%1</numerusform>
+            <numerusform>The cams were imported, but %n need fixing before they can be written (shown in red):
+%1</numerusform>
+        </translation>
     </message>
     <message>
         <source>Export Cams</source>
@@ -1364,6 +1427,14 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>program-%1.csv</source>
         <translation>program-%1.csv</translation>
+    </message>
+    <message>
+        <source>Diagram</source>
+        <translation>Diagram</translation>
+    </message>
+    <message>
+        <source>%1 (not read)</source>
+        <translation>%1 (not read)</translation>
     </message>
 </context>
 <context>
@@ -1418,7 +1489,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>%n cam(s): %1</source>
-        <translation><numerusform>%n cam: %1</numerusform><numerusform>%n cams: %1</numerusform></translation>
+        <translation>
+            <numerusform>%n cam: %1</numerusform>
+            <numerusform>%n cams: %1</numerusform>
+        </translation>
     </message>
     <message>
         <source>, </source>
@@ -1468,16 +1542,31 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Program %1 name</translation>
     </message>
     <message>
-        <source>(other name)</source>
-        <translation>(other name)</translation>
-    </message>
-    <message>
-        <source>Write cams</source>
-        <translation>Write cams</translation>
-    </message>
-    <message>
         <source>Cam programs</source>
         <translation>Cam programs</translation>
+    </message>
+    <message>
+        <source>Program %1 was not read. Your edits are kept.</source>
+        <translation>Program %1 was not read. Your edits are kept.</translation>
+    </message>
+    <message>
+        <source>Program %1 read, not taken: your edits are unchanged.</source>
+        <translation>Program %1 read, not taken: your edits are unchanged.</translation>
+    </message>
+    <message>
+        <source>Program %1: nothing to write, the device holds what you see.</source>
+        <translation>Program %1: nothing to write, the device holds what you see.</translation>
+    </message>
+    <message>
+        <source>Writing program %1…</source>
+        <translation>Writing program %1…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other output(s) were already as on the device and not sent.</source>
+        <translation>
+            <numerusform>%n other output was already as on the device and not sent.</numerusform>
+            <numerusform>%n other outputs were already as on the device and not sent.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1520,10 +1609,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Source</source>
         <translation>Source</translation>
-    </message>
-    <message>
-        <source>offline project, not read from a device</source>
-        <translation>offline project, not read from a device</translation>
     </message>
     <message>
         <source>Outputs / inputs</source>
@@ -1570,16 +1655,131 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Program %1: %2</translation>
     </message>
     <message>
-        <source>Switch on</source>
-        <translation>Switch on</translation>
-    </message>
-    <message>
-        <source>Switch off</source>
-        <translation>Switch off</translation>
-    </message>
-    <message>
         <source>Cannot write the report to %1: %2</source>
         <translation>Cannot write the report to %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 (device: %2)</source>
+        <translation>%1 (device: %2)</translation>
+    </message>
+    <message>
+        <source>Read from the device at %1.</source>
+        <translation>Read from the device at %1.</translation>
+    </message>
+    <message>
+        <source>Not read from the device: the values are this PC&apos;s.</source>
+        <translation>Not read from the device: the values are this PC&apos;s.</translation>
+    </message>
+    <message>
+        <source>Offline project: the values are this PC&apos;s.</source>
+        <translation>Offline project: the values are this PC&apos;s.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) in this report are edited on this PC and NOT written to the device; they are marked %1 and show the device&apos;s value beside them.</source>
+        <translation>
+            <numerusform>%n value in this report is edited on this PC and NOT written to the device; it is marked %1 and shows the device&apos;s value beside it.</numerusform>
+            <numerusform>%n values in this report are edited on this PC and NOT written to the device; they are marked %1 and show the device&apos;s value beside them.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Every value in this report is what the device held when it was read.</source>
+        <translation>Every value in this report is what the device held when it was read.</translation>
+    </message>
+    <message>
+        <source>Offline project: nothing in this report was read from a device.</source>
+        <translation>Offline project: nothing in this report was read from a device.</translation>
+    </message>
+    <message>
+        <source>Identity read at</source>
+        <translation>Identity read at</translation>
+    </message>
+    <message>
+        <source>offline project</source>
+        <translation>offline project</translation>
+    </message>
+    <message>
+        <source>Project file</source>
+        <translation>Project file</translation>
+    </message>
+    <message>
+        <source>0 … %1</source>
+        <translation>0 … %1</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>not read</translation>
+    </message>
+    <message>
+        <source>Not read from the device: its content is unknown.</source>
+        <translation>Not read from the device: its content is unknown.</translation>
+    </message>
+    <message>
+        <source>Not read from the device: these cams exist on this PC only.</source>
+        <translation>Not read from the device: these cams exist on this PC only.</translation>
+    </message>
+    <message>
+        <source>No cams.</source>
+        <translation>No cams.</translation>
+    </message>
+    <message>
+        <source>Cams (on–off)</source>
+        <translation>Cams (on–off)</translation>
+    </message>
+    <message>
+        <source>no cams</source>
+        <translation>no cams</translation>
+    </message>
+    <message>
+        <source>Users</source>
+        <translation>Users</translation>
+    </message>
+    <message>
+        <source>No users.</source>
+        <translation>No users.</translation>
+    </message>
+    <message>
+        <source>User numbers are access codes: they are not printed.</source>
+        <translation>User numbers are access codes: they are not printed.</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>Number</translation>
+    </message>
+    <message>
+        <source>Rights</source>
+        <translation>Rights</translation>
+    </message>
+    <message>
+        <source>deleted on this PC, still on the device</source>
+        <translation>deleted on this PC, still on the device</translation>
+    </message>
+    <message>
+        <source>PLC networks</source>
+        <translation>PLC networks</translation>
+    </message>
+    <message>
+        <source>No PLC networks read or edited.</source>
+        <translation>No PLC networks read or edited.</translation>
+    </message>
+    <message>
+        <source>Network</source>
+        <translation>Network</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Symbols by path</source>
+        <translation>Symbols by path</translation>
     </message>
 </context>
 <context>
@@ -1609,14 +1809,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Write all</translation>
     </message>
     <message>
-        <source>Refresh</source>
-        <translation>Refresh</translation>
-    </message>
-    <message>
-        <source>Items edited on this PC that differ from the device. Check the ones to write, or write all.</source>
-        <translation>Items edited on this PC that differ from the device. Check the ones to write, or write all.</translation>
-    </message>
-    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1631,6 +1823,61 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Writing…</source>
         <translation>Writing…</translation>
+    </message>
+    <message>
+        <source>Cancel reading</source>
+        <translation>Cancel reading</translation>
+    </message>
+    <message>
+        <source>Read the device again</source>
+        <translation>Read the device again</translation>
+    </message>
+    <message>
+        <source>Not connected: compared with the device values read at %1. The device may have changed since.</source>
+        <translation>Not connected: compared with the device values read at %1. The device may have changed since.</translation>
+    </message>
+    <message>
+        <source>Not connected, and nothing was read from a device: every edited item is listed as &quot;not read&quot;.</source>
+        <translation>Not connected, and nothing was read from a device: every edited item is listed as &quot;not read&quot;.</translation>
+    </message>
+    <message>
+        <source>Reading what the device holds now…</source>
+        <translation>Reading what the device holds now…</translation>
+    </message>
+    <message>
+        <source>Reading cancelled.</source>
+        <translation>Reading cancelled.</translation>
+    </message>
+    <message>
+        <source>The device could not be read: %1</source>
+        <translation>The device could not be read: %1</translation>
+    </message>
+    <message>
+        <source>Shown: the device values read at %1.</source>
+        <translation>Shown: the device values read at %1.</translation>
+    </message>
+    <message>
+        <source>Nothing was read from the device: edited items are listed as &quot;not read&quot;.</source>
+        <translation>Nothing was read from the device: edited items are listed as &quot;not read&quot;.</translation>
+    </message>
+    <message>
+        <source>Device values read at %1.</source>
+        <translation>Device values read at %1.</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Not read: %1</translation>
+    </message>
+    <message>
+        <source>Changed on the device since it was last read (%1)</source>
+        <translation>Changed on the device since it was last read (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::ConnectionIndicator</name>
+    <message>
+        <source>No answer since %1 (%2)</source>
+        <translation>No answer since %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -1680,8 +1927,8 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Device number:</translation>
     </message>
     <message>
-        <source>Multiuser: this PC's own number on the bus (0–63).</source>
-        <translation>Multiuser: this PC's own number on the bus (0–63).</translation>
+        <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
+        <translation>Multiuser: this PC&apos;s own number on the bus (0–63).</translation>
     </message>
     <message>
         <source>PC number:</source>
@@ -1741,7 +1988,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>%n device(s) found</source>
-        <translation><numerusform>%n device found</numerusform><numerusform>%n devices found</numerusform></translation>
+        <translation>
+            <numerusform>%n device found</numerusform>
+            <numerusform>%n devices found</numerusform>
+        </translation>
     </message>
     <message>
         <source>Not read from a device (offline project).</source>
@@ -1797,7 +2047,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>%n cam(s)</source>
-        <translation><numerusform>%n cam</numerusform><numerusform>%n cams</numerusform></translation>
+        <translation>
+            <numerusform>%n cam</numerusform>
+            <numerusform>%n cams</numerusform>
+        </translation>
     </message>
     <message>
         <source>CPU clock:</source>
@@ -1826,6 +2079,41 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Connection</source>
         <translation>Connection</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::ConnectionStrip</name>
+    <message>
+        <source>Reconnect now</source>
+        <translation>Reconnect now</translation>
+    </message>
+    <message>
+        <source>The connection to %1 is lost.</source>
+        <translation>The connection to %1 is lost.</translation>
+    </message>
+    <message>
+        <source>CamBench tries again by itself; your edits are kept.</source>
+        <translation>CamBench tries again by itself; your edits are kept.</translation>
+    </message>
+    <message>
+        <source>The device on %1 has not answered since %2.</source>
+        <translation>The device on %1 has not answered since %2.</translation>
+    </message>
+    <message>
+        <source>Live values are from then. Check the cable and the device&apos;s power; your edits are kept.</source>
+        <translation>Live values are from then. Check the cable and the device&apos;s power; your edits are kept.</translation>
+    </message>
+    <message>
+        <source>%1: CamCon %2, device number %3.</source>
+        <translation>%1: CamCon %2, device number %3.</translation>
+    </message>
+    <message>
+        <source>%1; identity not read yet.</source>
+        <translation>%1; identity not read yet.</translation>
+    </message>
+    <message>
+        <source>Offline. What you edit stays on this PC until you connect and write it.</source>
+        <translation>Offline. What you edit stays on this PC until you connect and write it.</translation>
     </message>
 </context>
 <context>
@@ -1882,10 +2170,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>The dead time makes an output switch earlier by the time its actuator needs, at every speed. It belongs to the output, not to a program.</translation>
     </message>
     <message>
-        <source>Dead times: %1</source>
-        <translation>Dead times: %1</translation>
-    </message>
-    <message>
         <source>Dead times</source>
         <translation>Dead times</translation>
     </message>
@@ -1896,10 +2180,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Reading dead times…</source>
         <translation>Reading dead times…</translation>
-    </message>
-    <message>
-        <source>Read dead times</source>
-        <translation>Read dead times</translation>
     </message>
     <message>
         <source>Reading dead times failed: %1</source>
@@ -1921,9 +2201,75 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <source>Output %1 name</source>
         <translation>Output %1 name</translation>
     </message>
+</context>
+<context>
+    <name>cambench::DeviceChanges</name>
     <message>
-        <source>Write dead times</source>
-        <translation>Write dead times</translation>
+        <source>no cams</source>
+        <translation>no cams</translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation>%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>Program %1, output %2</source>
+        <translation>Program %1, output %2</translation>
+    </message>
+    <message>
+        <source>Program %1 name</source>
+        <translation>Program %1 name</translation>
+    </message>
+    <message>
+        <source>Output %1 dead time</source>
+        <translation>Output %1 dead time</translation>
+    </message>
+    <message>
+        <source>Output %1 name</source>
+        <translation>Output %1 name</translation>
+    </message>
+    <message>
+        <source>Users: the device&apos;s list of users changed.</source>
+        <translation>Users: the device&apos;s list of users changed.</translation>
+    </message>
+    <message>
+        <source>PLC network %1 changed.</source>
+        <translation>PLC network %1 changed.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeviceReads</name>
+    <message>
+        <source>Not taken: your edits and the values shown are unchanged.</source>
+        <translation>Not taken: your edits and the values shown are unchanged.</translation>
+    </message>
+    <message>
+        <source>Read device identity</source>
+        <translation>Read device identity</translation>
+    </message>
+    <message>
+        <source>Read program %1</source>
+        <translation>Read program %1</translation>
+    </message>
+    <message>
+        <source>Read names and dead times</source>
+        <translation>Read names and dead times</translation>
+    </message>
+    <message>
+        <source>Read settings</source>
+        <translation>Read settings</translation>
+    </message>
+    <message>
+        <source>Read users</source>
+        <translation>Read users</translation>
+    </message>
+    <message>
+        <source>Read PLC network</source>
+        <translation>Read PLC network</translation>
+    </message>
+    <message>
+        <source>Read everything</source>
+        <translation>Read everything</translation>
     </message>
 </context>
 <context>
@@ -1950,15 +2296,135 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
 </context>
 <context>
+    <name>cambench::DeviceWriter</name>
+    <message>
+        <source>Write to the device</source>
+        <translation>Write to the device</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LineBackupDialog</name>
+    <message>
+        <source>Resume: skip devices already saved and verified in this folder</source>
+        <translation>Resume: skip devices already saved and verified in this folder</translation>
+    </message>
+    <message>
+        <source>Back up</source>
+        <translation>Back up</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Back up all devices on this line</source>
+        <translation>Back up all devices on this line</translation>
+    </message>
+    <message>
+        <source>empty: scan the line for devices 0 … 63</source>
+        <translation>empty: scan the line for devices 0 … 63</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Browse…</translation>
+    </message>
+    <message>
+        <source>Folder:</source>
+        <translation>Folder:</translation>
+    </message>
+    <message>
+        <source>Devices:</source>
+        <translation>Devices:</translation>
+    </message>
+    <message>
+        <source>Each device of the line is backed up into its own image in the folder, with a manifest of what was saved. A device that fails is noted and the others are still backed up.</source>
+        <translation>Each device of the line is backed up into its own image in the folder, with a manifest of what was saved. A device that fails is noted and the others are still backed up.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a device number 0 … 63 (or given twice); write the numbers with commas, e.g. 0, 5, 7.</source>
+        <translation>&quot;%1&quot; is not a device number 0 … 63 (or given twice); write the numbers with commas, e.g. 0, 5, 7.</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3 baud</source>
+        <translation>%1, %2, %3 baud</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>waiting</translation>
+    </message>
+    <message>
+        <source>Scanning the line…</source>
+        <translation>Scanning the line…</translation>
+    </message>
+    <message>
+        <source>Backing up…</source>
+        <translation>Backing up…</translation>
+    </message>
+    <message>
+        <source>Back up the line</source>
+        <translation>Back up the line</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>Device %1</translation>
+    </message>
+    <message>
+        <source>Nothing was backed up: %1</source>
+        <translation>Nothing was backed up: %1</translation>
+    </message>
+    <message>
+        <source>saved</source>
+        <translation>saved</translation>
+    </message>
+    <message>
+        <source>FAILED</source>
+        <translation>FAILED</translation>
+    </message>
+    <message>
+        <source>Device %1: saved to %2.</source>
+        <translation>Device %1: saved to %2.</translation>
+    </message>
+    <message>
+        <source>Device %1: NOT saved: %2</source>
+        <translation>Device %1: NOT saved: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>All %n device(s) saved into %1.</source>
+        <translation>
+            <numerusform>The %n device saved into %1.</numerusform>
+            <numerusform>All %n devices saved into %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 says the same.</source>
+        <translation>%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 says the same.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LiveFreshness</name>
+    <message>
+        <source>No live values yet</source>
+        <translation>No live values yet</translation>
+    </message>
+    <message>
+        <source>Live, last answer %1</source>
+        <translation>Live, last answer %1</translation>
+    </message>
+    <message>
+        <source>No answer since %1</source>
+        <translation>No answer since %1</translation>
+    </message>
+    <message>
+        <source>No answer yet</source>
+        <translation>No answer yet</translation>
+    </message>
+    <message>
+        <source>Not polled now; values of %1</source>
+        <translation>Not polled now; values of %1</translation>
+    </message>
+</context>
+<context>
     <name>cambench::MainWindow</name>
-    <message>
-        <source>Reconnect now</source>
-        <translation>Reconnect now</translation>
-    </message>
-    <message>
-        <source>Connection re-established. Your edits are unchanged.</source>
-        <translation>Connection re-established. Your edits are unchanged.</translation>
-    </message>
     <message>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
@@ -2057,11 +2523,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>[%n change(s) not written]</source>
-        <translation><numerusform>[%n change not written]</numerusform><numerusform>[%n changes not written]</numerusform></translation>
-    </message>
-    <message>
-        <source>The connection to %1 was lost: %2 CamBench retries by itself; your edits are kept.</source>
-        <translation>The connection to %1 was lost: %2 CamBench retries by itself; your edits are kept.</translation>
+        <translation>
+            <numerusform>[%n change not written]</numerusform>
+            <numerusform>[%n changes not written]</numerusform>
+        </translation>
     </message>
     <message>
         <source>Connection lost: %1</source>
@@ -2074,10 +2539,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Reading the device…</source>
         <translation>Reading the device…</translation>
-    </message>
-    <message>
-        <source>Read device identity</source>
-        <translation>Read device identity</translation>
     </message>
     <message>
         <source>The device did not identify itself: %1</source>
@@ -2093,7 +2554,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>%n change(s) are not written to the device. Close anyway?</source>
-        <translation><numerusform>%n change are not written to the device. Close anyway?</numerusform><numerusform>%n changes are not written to the device. Close anyway?</numerusform></translation>
+        <translation>
+            <numerusform>%n change are not written to the device. Close anyway?</numerusform>
+            <numerusform>%n changes are not written to the device. Close anyway?</numerusform>
+        </translation>
     </message>
     <message>
         <source>Compare with device…</source>
@@ -2110,10 +2574,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>New project</source>
         <translation>New project</translation>
-    </message>
-    <message>
-        <source>The current edits are not written or saved. Replace them?</source>
-        <translation>The current edits are not written or saved. Replace them?</translation>
     </message>
     <message>
         <source>Open project</source>
@@ -2146,6 +2606,84 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>Report written to %1.</source>
         <translation>Report written to %1.</translation>
+    </message>
+    <message>
+        <source>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</source>
+        <translation>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</translation>
+    </message>
+    <message>
+        <source>Recent &amp;files</source>
+        <translation>Recent &amp;files</translation>
+    </message>
+    <message>
+        <source>Back up all devices on this &amp;line…</source>
+        <translation>Back up all devices on this &amp;line…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Cancel what the device is doing for you now.</source>
+        <translation>Cancel what the device is doing for you now.</translation>
+    </message>
+    <message>
+        <source>Reading the device: %1</source>
+        <translation>Reading the device: %1</translation>
+    </message>
+    <message>
+        <source>Reading everything the device holds…</source>
+        <translation>Reading everything the device holds…</translation>
+    </message>
+    <message>
+        <source>Everything read from the device.</source>
+        <translation>Everything read from the device.</translation>
+    </message>
+    <message>
+        <source>Read from the device, except: %1</source>
+        <translation>Read from the device, except: %1</translation>
+    </message>
+    <message>
+        <source>Reading the device failed: %1 Your edits are kept.</source>
+        <translation>Reading the device failed: %1 Your edits are kept.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) are not written or saved. Discard them for a new, empty project?</source>
+        <translation>
+            <numerusform>%n change is not written or saved. Discard it for a new, empty project?</numerusform>
+            <numerusform>%n changes are not written or saved. Discard them for a new, empty project?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The project %1 was not opened.</source>
+        <translation>The project %1 was not opened.</translation>
+    </message>
+    <message>
+        <source>Project %1 not opened: your edits are unchanged.</source>
+        <translation>Project %1 not opened: your edits are unchanged.</translation>
+    </message>
+    <message>
+        <source>No recent projects</source>
+        <translation>No recent projects</translation>
+    </message>
+    <message>
+        <source>&amp;Clear list</source>
+        <translation>&amp;Clear list</translation>
+    </message>
+    <message>
+        <source>The device is still being read; the project was not saved. Save again when the reading is done.</source>
+        <translation>The device is still being read; the project was not saved. Save again when the reading is done.</translation>
+    </message>
+    <message>
+        <source>The project was not saved.</source>
+        <translation>The project was not saved.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Project saved to %1. %n value(s) are outside what a write accepts (%2).</source>
+        <translation>
+            <numerusform>Project saved to %1. %n value is outside what a write accepts (%2).</numerusform>
+            <numerusform>Project saved to %1. %n values are outside what a write accepts (%2).</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2211,10 +2749,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation> ms</translation>
     </message>
     <message>
-        <source>How often the device is asked for its state.</source>
-        <translation>How often the device is asked for its state.</translation>
-    </message>
-    <message>
         <source>Poll every</source>
         <translation>Poll every</translation>
     </message>
@@ -2261,6 +2795,54 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>offline</source>
         <translation>offline</translation>
+    </message>
+    <message>
+        <source>How often the device is asked for its state. CamBench polls no faster than the line can answer.</source>
+        <translation>How often the device is asked for its state. CamBench polls no faster than the line can answer.</translation>
+    </message>
+    <message>
+        <source>The line needs about %1 ms per poll: polling every %2 ms instead of %3 ms.</source>
+        <translation>The line needs about %1 ms per poll: polling every %2 ms instead of %3 ms.</translation>
+    </message>
+    <message>
+        <source>Waiting for the first answer.</source>
+        <translation>Waiting for the first answer.</translation>
+    </message>
+    <message>
+        <source>Offline: no live values.</source>
+        <translation>Offline: no live values.</translation>
+    </message>
+    <message>
+        <source>Live: last answer at %1.</source>
+        <translation>Live: last answer at %1.</translation>
+    </message>
+    <message>
+        <source>No answer since %1. The values below are from then, not live.</source>
+        <translation>No answer since %1. The values below are from then, not live.</translation>
+    </message>
+    <message>
+        <source>No answer from the device.</source>
+        <translation>No answer from the device.</translation>
+    </message>
+    <message>
+        <source>Not polled: the values below are from %1.</source>
+        <translation>Not polled: the values below are from %1.</translation>
+    </message>
+    <message>
+        <source>Not polled: no live values.</source>
+        <translation>Not polled: no live values.</translation>
+    </message>
+    <message>
+        <source>Value of %1</source>
+        <translation>Value of %1</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>unknown now; at %1: %2</source>
+        <translation>unknown now; at %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2372,14 +2954,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Networks read or edited in this session</translation>
     </message>
     <message>
-        <source>PLC: %1</source>
-        <translation>PLC: %1</translation>
-    </message>
-    <message>
-        <source>Read PLC network</source>
-        <translation>Read PLC network</translation>
-    </message>
-    <message>
         <source>Reading %1 failed: %2</source>
         <translation>Reading %1 failed: %2</translation>
     </message>
@@ -2396,10 +2970,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>not read</translation>
     </message>
     <message>
-        <source>Write PLC networks</source>
-        <translation>Write PLC networks</translation>
-    </message>
-    <message>
         <source>PLC</source>
         <translation>PLC</translation>
     </message>
@@ -2413,6 +2983,117 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>about %1 s left</source>
         <translation>about %1 s left</translation>
+    </message>
+    <message>
+        <source>%1 s so far. No time left is given: how much the device holds is not known before it is read.</source>
+        <translation>%1 s so far. No time left is given: how much the device holds is not known before it is read.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::RangeDelegate</name>
+    <message>
+        <source>%1%2 is not taken: this device allows %3 … %4%2.</source>
+        <translation>%1%2 is not taken: this device allows %3 … %4%2.</translation>
+    </message>
+    <message>
+        <source>The cell keeps its value.</source>
+        <translation>The cell keeps its value.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::ReplaceEditsDialog</name>
+    <message>
+        <source>Cam programs</source>
+        <translation>Cam programs</translation>
+    </message>
+    <message>
+        <source>Output names and dead times</source>
+        <translation>Output names and dead times</translation>
+    </message>
+    <message>
+        <source>Encoder and system settings</source>
+        <translation>Encoder and system settings</translation>
+    </message>
+    <message>
+        <source>Users</source>
+        <translation>Users</translation>
+    </message>
+    <message>
+        <source>PLC networks</source>
+        <translation>PLC networks</translation>
+    </message>
+    <message>
+        <source>Values read from the device</source>
+        <translation>Values read from the device</translation>
+    </message>
+    <message>
+        <source>Values from the project file</source>
+        <translation>Values from the project file</translation>
+    </message>
+    <message>
+        <source>The device&apos;s values would replace edits that are not written yet. For each section: keep your edits, or take the device&apos;s values?</source>
+        <translation>The device&apos;s values would replace edits that are not written yet. For each section: keep your edits, or take the device&apos;s values?</translation>
+    </message>
+    <message>
+        <source>The project&apos;s values would replace edits that are not written yet. For each section: keep your edits, or take the project&apos;s values?</source>
+        <translation>The project&apos;s values would replace edits that are not written yet. For each section: keep your edits, or take the project&apos;s values?</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n edit(s)</source>
+        <translation>
+            <numerusform>%1: %n edit</numerusform>
+            <numerusform>%1: %n edits</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Keep my edits</source>
+        <translation>Keep my edits</translation>
+    </message>
+    <message>
+        <source>Take the device&apos;s values</source>
+        <translation>Take the device&apos;s values</translation>
+    </message>
+    <message>
+        <source>Take the project&apos;s values</source>
+        <translation>Take the project&apos;s values</translation>
+    </message>
+    <message>
+        <source>Items you did not edit take the device&apos;s values either way. Taking the device&apos;s cam programs can be undone (Edit → Undo).</source>
+        <translation>Items you did not edit take the device&apos;s values either way. Taking the device&apos;s cam programs can be undone (Edit → Undo).</translation>
+    </message>
+    <message>
+        <source>Items you did not edit take the project&apos;s values either way.</source>
+        <translation>Items you did not edit take the project&apos;s values either way.</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Apply</translation>
+    </message>
+    <message>
+        <source>Cancel: change nothing</source>
+        <translation>Cancel: change nothing</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::SectionPage</name>
+    <message>
+        <source>%1: nothing to write, the device holds what you see.</source>
+        <translation>%1: nothing to write, the device holds what you see.</translation>
+    </message>
+    <message>
+        <source>%1: writing…</source>
+        <translation>%1: writing…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other item(s) of this section were already as on the device and not sent.</source>
+        <translation>
+            <numerusform>%n other item of this section was already as on the device and not sent.</numerusform>
+            <numerusform>%n other items of this section were already as on the device and not sent.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2435,7 +3116,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>up to %n character(s)</source>
-        <translation><numerusform>up to %n character</numerusform><numerusform>up to %n characters</numerusform></translation>
+        <translation>
+            <numerusform>up to %n character</numerusform>
+            <numerusform>up to %n characters</numerusform>
+        </translation>
     </message>
     <message>
         <source>Range: %1</source>
@@ -2468,6 +3152,14 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>not read</source>
         <translation>not read</translation>
+    </message>
+    <message>
+        <source>Not allowed: %1.</source>
+        <translation>Not allowed: %1.</translation>
+    </message>
+    <message>
+        <source>The device holds a value outside the allowed range: %1. It is shown as the device has it, not changed.</source>
+        <translation>The device holds a value outside the allowed range: %1. It is shown as the device has it, not changed.</translation>
     </message>
 </context>
 <context>
@@ -2565,16 +3257,8 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Write changes</translation>
     </message>
     <message>
-        <source>Settings: %1</source>
-        <translation>Settings: %1</translation>
-    </message>
-    <message>
         <source>Reading settings…</source>
         <translation>Reading settings…</translation>
-    </message>
-    <message>
-        <source>Read settings</source>
-        <translation>Read settings</translation>
     </message>
     <message>
         <source>Reading settings failed: %1</source>
@@ -2587,14 +3271,6 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>not read</source>
         <translation>not read</translation>
-    </message>
-    <message>
-        <source>Setting %1</source>
-        <translation>Setting %1</translation>
-    </message>
-    <message>
-        <source>Write settings</source>
-        <translation>Write settings</translation>
     </message>
     <message>
         <source>Encoder &amp; system</source>
@@ -2675,20 +3351,12 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>edited</translation>
     </message>
     <message>
-        <source>PC only</source>
-        <translation>PC only</translation>
-    </message>
-    <message>
         <source>Output %1 is the same as on the device.</source>
         <translation>Output %1 is the same as on the device.</translation>
     </message>
     <message>
         <source>Output %1 was changed and is not yet written to the device.</source>
         <translation>Output %1 was changed and is not yet written to the device.</translation>
-    </message>
-    <message>
-        <source>Program %1 was never read from the device; its cams exist only on this PC.</source>
-        <translation>Program %1 was never read from the device; its cams exist only on this PC.</translation>
     </message>
     <message>
         <source>Output</source>
@@ -2709,6 +3377,14 @@ The safety backup of the previous content is %2; restore it to get the device ba
     <message>
         <source>State</source>
         <translation>State</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>not read</translation>
+    </message>
+    <message>
+        <source>Program %1 was not read from the device: what the device holds is unknown. The cams shown exist on this PC.</source>
+        <translation>Program %1 was not read from the device: what the device holds is unknown. The cams shown exist on this PC.</translation>
     </message>
 </context>
 <context>
@@ -2856,24 +3532,16 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>Outputs this user may change</translation>
     </message>
     <message>
-        <source>Users: %1</source>
-        <translation>Users: %1</translation>
-    </message>
-    <message>
         <source>New user</source>
         <translation>New user</translation>
     </message>
     <message>
-        <source>hidden – check "Show numbers" to see or change it</source>
-        <translation>hidden – check "Show numbers" to see or change it</translation>
+        <source>hidden – check &quot;Show numbers&quot; to see or change it</source>
+        <translation>hidden – check &quot;Show numbers&quot; to see or change it</translation>
     </message>
     <message>
         <source>Reading users…</source>
         <translation>Reading users…</translation>
-    </message>
-    <message>
-        <source>Read users</source>
-        <translation>Read users</translation>
     </message>
     <message>
         <source>Reading users failed: %1</source>
@@ -2881,7 +3549,10 @@ The safety backup of the previous content is %2; restore it to get the device ba
     </message>
     <message numerus="yes">
         <source>%n user(s) read.</source>
-        <translation><numerusform>%n user read.</numerusform><numerusform>%n users read.</numerusform></translation>
+        <translation>
+            <numerusform>%n user read.</numerusform>
+            <numerusform>%n users read.</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1, number %2, rights: %3</source>
@@ -2892,24 +3563,1410 @@ The safety backup of the previous content is %2; restore it to get the device ba
         <translation>absent</translation>
     </message>
     <message>
-        <source>User "%1"</source>
-        <translation>User "%1"</translation>
+        <source>User &quot;%1&quot;</source>
+        <translation>User &quot;%1&quot;</translation>
     </message>
     <message>
         <source>deleted</source>
         <translation>deleted</translation>
     </message>
     <message>
-        <source>The user has no number: enter one.</source>
-        <translation>The user has no number: enter one.</translation>
-    </message>
-    <message>
-        <source>Write users</source>
-        <translation>Write users</translation>
-    </message>
-    <message>
         <source>Users</source>
         <translation>Users</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::comm</name>
+    <message>
+        <source>baud rate %1 is not a positive number</source>
+        <translation>baud rate %1 is not a positive number</translation>
+    </message>
+    <message>
+        <source>%1 data bits: use 5, 6, 7 or 8</source>
+        <translation>%1 data bits: use 5, 6, 7 or 8</translation>
+    </message>
+    <message>
+        <source>parity &apos;%1&apos;: use N, E, O, S or M</source>
+        <translation>parity &apos;%1&apos;: use N, E, O, S or M</translation>
+    </message>
+    <message>
+        <source>%1 stop bits: use 1, 2 or 3 (one and a half)</source>
+        <translation>%1 stop bits: use 1, 2 or 3 (one and a half)</translation>
+    </message>
+    <message>
+        <source>flow control &apos;%1&apos;: use N (none), H (RTS/CTS) or S (XON/XOFF)</source>
+        <translation>flow control &apos;%1&apos;: use N (none), H (RTS/CTS) or S (XON/XOFF)</translation>
+    </message>
+    <message>
+        <source>cannot use %1: %2</source>
+        <translation>cannot use %1: %2</translation>
+    </message>
+    <message>
+        <source>check the port name and that no other program uses it</source>
+        <translation>check the port name and that no other program uses it</translation>
+    </message>
+    <message>
+        <source>check that no other program uses it and that you may use serial ports (on Linux: member of the group dialout)</source>
+        <translation>check that no other program uses it and that you may use serial ports (on Linux: member of the group dialout)</translation>
+    </message>
+    <message>
+        <source>check the port name and that the adapter is plugged in</source>
+        <translation>check the port name and that the adapter is plugged in</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2; %3</source>
+        <translation>cannot open %1: %2; %3</translation>
+    </message>
+    <message>
+        <source>the port %1 disappeared (cable pulled or adapter removed); reconnect and retry</source>
+        <translation>the port %1 disappeared (cable pulled or adapter removed); reconnect and retry</translation>
+    </message>
+    <message>
+        <source>%1 %2 failed: %3; reconnect and retry</source>
+        <translation>%1 %2 failed: %3; reconnect and retry</translation>
+    </message>
+    <message>
+        <source>the port %1 is not open; connect first</source>
+        <translation>the port %1 is not open; connect first</translation>
+    </message>
+    <message>
+        <source>could not send %1 bytes to %2 within %3 ms; check the flow control setting (RTS/CTS needs the CTS line)</source>
+        <translation>could not send %1 bytes to %2 within %3 ms; check the flow control setting (RTS/CTS needs the CTS line)</translation>
+    </message>
+    <message>
+        <source>reading from</source>
+        <translation>reading from</translation>
+    </message>
+    <message>
+        <source>no answer within %1 ms</source>
+        <translation>no answer within %1 ms</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2; check the address, the port and that the device server is switched on</source>
+        <translation>cannot connect to %1: %2; check the address, the port and that the device server is switched on</translation>
+    </message>
+    <message>
+        <source>the device server %1 closed the connection; reconnect and retry</source>
+        <translation>the device server %1 closed the connection; reconnect and retry</translation>
+    </message>
+    <message>
+        <source>the connection to %1 failed: %2; reconnect and retry</source>
+        <translation>the connection to %1 failed: %2; reconnect and retry</translation>
+    </message>
+    <message>
+        <source>not connected to %1; connect first</source>
+        <translation>not connected to %1; connect first</translation>
+    </message>
+    <message>
+        <source>could not send %1 bytes to %2 within %3 ms; check the network</source>
+        <translation>could not send %1 bytes to %2 within %3 ms; check the network</translation>
+    </message>
+    <message>
+        <source>write it as tcp://host:port, e.g. tcp://10.0.0.5:4001</source>
+        <translation>write it as tcp://host:port, e.g. tcp://10.0.0.5:4001</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no host; %2</source>
+        <translation>&apos;%1&apos; names no host; %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no TCP port (1..65535); %2</source>
+        <translation>&apos;%1&apos; names no TCP port (1..65535); %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has more than a host and a port; %2</source>
+        <translation>&apos;%1&apos; has more than a host and a port; %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: unknown scheme; use tcp://host:port, a serial port name or sim</source>
+        <translation>&apos;%1&apos;: unknown scheme; use tcp://host:port, a serial port name or sim</translation>
+    </message>
+    <message>
+        <source>no port given; name a serial port (/dev/ttyUSB0, COM3), tcp://host:port or sim</source>
+        <translation>no port given; name a serial port (/dev/ttyUSB0, COM3), tcp://host:port or sim</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no port this program can open</source>
+        <translation>&apos;%1&apos; names no port this program can open</translation>
+    </message>
+    <message>
+        <source>the request could not be sent</source>
+        <translation>the request could not be sent</translation>
+    </message>
+    <message>
+        <source>no reply, though the device answered %1</source>
+        <translation>no reply, though the device answered %1</translation>
+    </message>
+    <message>
+        <source>no valid reply (last: %1)</source>
+        <translation>no valid reply (last: %1)</translation>
+    </message>
+    <message>
+        <source>not connected to a device; connect first</source>
+        <translation>not connected to a device; connect first</translation>
+    </message>
+    <message>
+        <source>the connection %1 closed; reconnect and retry</source>
+        <translation>the connection %1 closed; reconnect and retry</translation>
+    </message>
+    <message>
+        <source>not connected: connecting to %1</source>
+        <translation>not connected: connecting to %1</translation>
+    </message>
+    <message>
+        <source>unknown protocol &quot;%1&quot;; known: %2</source>
+        <translation>unknown protocol &quot;%1&quot;; known: %2</translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation>not connected: %1</translation>
+    </message>
+    <message>
+        <source>the CamCon ASCII protocol (--protocol standard or multiuser)</source>
+        <translation>the CamCon ASCII protocol (--protocol standard or multiuser)</translation>
+    </message>
+    <message>
+        <source>the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)</source>
+        <translation>the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)</translation>
+    </message>
+    <message>
+        <source>Users and rights exist only in %1.</source>
+        <translation>Users and rights exist only in %1.</translation>
+    </message>
+    <message>
+        <source>EEPROM backup and restore exist only in %1.</source>
+        <translation>EEPROM backup and restore exist only in %1.</translation>
+    </message>
+    <message>
+        <source>A bus scan needs the Multiuser protocol (--protocol multiuser).</source>
+        <translation>A bus scan needs the Multiuser protocol (--protocol multiuser).</translation>
+    </message>
+    <message>
+        <source>Typed requests exist only in %1.</source>
+        <translation>Typed requests exist only in %1.</translation>
+    </message>
+    <message>
+        <source>Output and program names exist only in %1.</source>
+        <translation>Output and program names exist only in %1.</translation>
+    </message>
+    <message>
+        <source>This protocol does not reach the PLC logic module.</source>
+        <translation>This protocol does not reach the PLC logic module.</translation>
+    </message>
+    <message>
+        <source>Dead-time modes exist only in %1.</source>
+        <translation>Dead-time modes exist only in %1.</translation>
+    </message>
+    <message>
+        <source>Analogue cams exist only in %1.</source>
+        <translation>Analogue cams exist only in %1.</translation>
+    </message>
+    <message>
+        <source>The EEPROM lock exists only in %1.</source>
+        <translation>The EEPROM lock exists only in %1.</translation>
+    </message>
+    <message>
+        <source>bytes outside any frame</source>
+        <translation>bytes outside any frame</translation>
+    </message>
+    <message>
+        <source>a frame ended by CR without LF</source>
+        <translation>a frame ended by CR without LF</translation>
+    </message>
+    <message>
+        <source>No frame end within %1 bytes; the frame was dropped.</source>
+        <translation>No frame end within %1 bytes; the frame was dropped.</translation>
+    </message>
+    <message>
+        <source>the rest of an oversized frame</source>
+        <translation>the rest of an oversized frame</translation>
+    </message>
+    <message>
+        <source>The frame has no checksum characters.</source>
+        <translation>The frame has no checksum characters.</translation>
+    </message>
+    <message>
+        <source>Checksum %1 received, %2 expected.</source>
+        <translation>Checksum %1 received, %2 expected.</translation>
+    </message>
+    <message>
+        <source>Skipped %1 bytes: %2.</source>
+        <translation>Skipped %1 bytes: %2.</translation>
+    </message>
+    <message>
+        <source>The value %1 of field &quot;%2&quot; is outside %3..%4 (%5 hex digits); use a value in that range.</source>
+        <translation>The value %1 of field &quot;%2&quot; is outside %3..%4 (%5 hex digits); use a value in that range.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; needs a number, got &quot;%2&quot;.</source>
+        <translation>Field &quot;%1&quot; needs a number, got &quot;%2&quot;.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; contains a NUL character; remove it.</source>
+        <translation>Field &quot;%1&quot; contains a NUL character; remove it.</translation>
+    </message>
+    <message>
+        <source>The text &quot;%1&quot; of field &quot;%2&quot; is %3 characters long; at most %4 fit.</source>
+        <translation>The text &quot;%1&quot; of field &quot;%2&quot; is %3 characters long; at most %4 fit.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; needs exactly %2 bytes, got %3.</source>
+        <translation>Field &quot;%1&quot; needs exactly %2 bytes, got %3.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; needs exactly %2 words, got %3.</source>
+        <translation>Field &quot;%1&quot; needs exactly %2 words, got %3.</translation>
+    </message>
+    <message>
+        <source>Field &quot;%1&quot; has an unknown type.</source>
+        <translation>Field &quot;%1&quot; has an unknown type.</translation>
+    </message>
+    <message>
+        <source>Malformed data: field &quot;%1&quot; at offset %2 %3.</source>
+        <translation>Malformed data: field &quot;%1&quot; at offset %2 %3.</translation>
+    </message>
+    <message>
+        <source>has %1 characters, not a multiple of %2</source>
+        <translation>has %1 characters, not a multiple of %2</translation>
+    </message>
+    <message>
+        <source>is not hexadecimal</source>
+        <translation>is not hexadecimal</translation>
+    </message>
+    <message>
+        <source>has an odd number of digits</source>
+        <translation>has an odd number of digits</translation>
+    </message>
+    <message>
+        <source>%1: expected &quot;OK&quot;, got &quot;%2&quot;.</source>
+        <translation>%1: expected &quot;OK&quot;, got &quot;%2&quot;.</translation>
+    </message>
+    <message>
+        <source>needs %1 characters, only %2 left</source>
+        <translation>needs %1 characters, only %2 left</translation>
+    </message>
+    <message>
+        <source>Malformed data: %1 unexpected characters after the last field.</source>
+        <translation>Malformed data: %1 unexpected characters after the last field.</translation>
+    </message>
+    <message>
+        <source>Cannot send %1: %2</source>
+        <translation>Cannot send %1: %2</translation>
+    </message>
+    <message>
+        <source>The request does not start with %1.</source>
+        <translation>The request does not start with %1.</translation>
+    </message>
+    <message>
+        <source>%1 has no data reply.</source>
+        <translation>%1 has no data reply.</translation>
+    </message>
+    <message>
+        <source>Cannot answer %1: %2</source>
+        <translation>Cannot answer %1: %2</translation>
+    </message>
+    <message>
+        <source>the device</source>
+        <translation>the device</translation>
+    </message>
+    <message>
+        <source>check the cable, the baud rate, that the device speaks the Multiuser protocol and the device number</source>
+        <translation>check the cable, the baud rate, that the device speaks the Multiuser protocol and the device number</translation>
+    </message>
+    <message>
+        <source>check the cable, the baud rate and that the device speaks the Standard protocol</source>
+        <translation>check the cable, the baud rate and that the device speaks the Standard protocol</translation>
+    </message>
+    <message>
+        <source>a reply with a wrong checksum</source>
+        <translation>a reply with a wrong checksum</translation>
+    </message>
+    <message>
+        <source>an oversized reply</source>
+        <translation>an oversized reply</translation>
+    </message>
+    <message>
+        <source>a malformed reply: %1</source>
+        <translation>a malformed reply: %1</translation>
+    </message>
+    <message>
+        <source>the device repeated an answer to an earlier request</source>
+        <translation>the device repeated an answer to an earlier request</translation>
+    </message>
+    <message>
+        <source>%1 is not a command of the catalogue</source>
+        <translation>%1 is not a command of the catalogue</translation>
+    </message>
+    <message>
+        <source>%1: the device reported error %2: %3</source>
+        <translation>%1: the device reported error %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: the device does not know this command (firmware dated %2); it needs a newer firmware for it</source>
+        <translation>%1: the device does not know this command (firmware dated %2); it needs a newer firmware for it</translation>
+    </message>
+    <message>
+        <source>a request starts with &apos;?&apos; or &apos;!&apos;, not &apos;%1&apos;</source>
+        <translation>a request starts with &apos;?&apos; or &apos;!&apos;, not &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>an empty request: type the command letters after %1</source>
+        <translation>an empty request: type the command letters after %1</translation>
+    </message>
+    <message>
+        <source>an empty request: type ? or ! and the command</source>
+        <translation>an empty request: type ? or ! and the command</translation>
+    </message>
+    <message>
+        <source>CamCon ASCII, Multiuser (RS485 bus)</source>
+        <translation>CamCon ASCII, Multiuser (RS485 bus)</translation>
+    </message>
+    <message>
+        <source>CamCon ASCII, Standard (RS232)</source>
+        <translation>CamCon ASCII, Standard (RS232)</translation>
+    </message>
+    <message>
+        <source>the %1 protocol got settings of %2</source>
+        <translation>the %1 protocol got settings of %2</translation>
+    </message>
+    <message>
+        <source>another protocol</source>
+        <translation>another protocol</translation>
+    </message>
+    <message>
+        <source>reading the device identity (?EPROM)</source>
+        <translation>reading the device identity (?EPROM)</translation>
+    </message>
+    <message>
+        <source>reading the device identity (?%1)</source>
+        <translation>reading the device identity (?%1)</translation>
+    </message>
+    <message>
+        <source>reading the error state (?ERR)</source>
+        <translation>reading the error state (?ERR)</translation>
+    </message>
+    <message>
+        <source>reading the status (?%1)</source>
+        <translation>reading the status (?%1)</translation>
+    </message>
+    <message>
+        <source>resetting the error (!ERR)</source>
+        <translation>resetting the error (!ERR)</translation>
+    </message>
+    <message>
+        <source>selecting program %1 (!PAU)</source>
+        <translation>selecting program %1 (!PAU)</translation>
+    </message>
+    <message>
+        <source>program %1, output %2</source>
+        <translation>program %1, output %2</translation>
+    </message>
+    <message>
+        <source>reading %1: the device reports more than %2 cams on one track; check the device</source>
+        <translation>reading %1: the device reports more than %2 cams on one track; check the device</translation>
+    </message>
+    <message>
+        <source>inserting the cam %1..%2 on %3 (!NINS)</source>
+        <translation>inserting the cam %1..%2 on %3 (!NINS)</translation>
+    </message>
+    <message>
+        <source> On an insert the usual cause is a cam that overlaps another cam of the track or lies outside the device&apos;s range.</source>
+        <translation> On an insert the usual cause is a cam that overlaps another cam of the track or lies outside the device&apos;s range.</translation>
+    </message>
+    <message>
+        <source>deleting the cam at %1 on %2 (!NDEL)</source>
+        <translation>deleting the cam at %1 on %2 (!NDEL)</translation>
+    </message>
+    <message>
+        <source> Nothing had been changed on the track yet.</source>
+        <translation> Nothing had been changed on the track yet.</translation>
+    </message>
+    <message>
+        <source> The cams already changed were put back: the track is as it was.</source>
+        <translation> The cams already changed were put back: the track is as it was.</translation>
+    </message>
+    <message>
+        <source> Putting the track back failed too: it may now hold other cams than before; read it to see.</source>
+        <translation> Putting the track back failed too: it may now hold other cams than before; read it to see.</translation>
+    </message>
+    <message>
+        <source>writing %1: after lost replies the device holds %2 cams instead of the %3 written; write the track again</source>
+        <translation>writing %1: after lost replies the device holds %2 cams instead of the %3 written; write the track again</translation>
+    </message>
+    <message>
+        <source>deleting program %1 (!PDEL)</source>
+        <translation>deleting program %1 (!PDEL)</translation>
+    </message>
+    <message>
+        <source>copying program %1 to program %2 (!PCPY)</source>
+        <translation>copying program %1 to program %2 (!PCPY)</translation>
+    </message>
+    <message>
+        <source>copying output %1 to output %2 in program %3 (!PACPY)</source>
+        <translation>copying output %1 to output %2 in program %3 (!PACPY)</translation>
+    </message>
+    <message>
+        <source>reading the dead time of output %1 (?TZK)</source>
+        <translation>reading the dead time of output %1 (?TZK)</translation>
+    </message>
+    <message>
+        <source>writing the dead time of output %1 (!TZK)</source>
+        <translation>writing the dead time of output %1 (!TZK)</translation>
+    </message>
+    <message>
+        <source>reading the name of output %1 (?ANAME)</source>
+        <translation>reading the name of output %1 (?ANAME)</translation>
+    </message>
+    <message>
+        <source>writing the name of output %1 (!ANAME)</source>
+        <translation>writing the name of output %1 (!ANAME)</translation>
+    </message>
+    <message>
+        <source>reading the name of program %1 (?PNAME)</source>
+        <translation>reading the name of program %1 (?PNAME)</translation>
+    </message>
+    <message>
+        <source>writing the name of program %1 (!PNAME)</source>
+        <translation>writing the name of program %1 (!PNAME)</translation>
+    </message>
+    <message>
+        <source>reading the settings (?%1)</source>
+        <translation>reading the settings (?%1)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no device setting</source>
+        <translation>&quot;%1&quot; is no device setting</translation>
+    </message>
+    <message>
+        <source>reading user entry %1 (?USER)</source>
+        <translation>reading user entry %1 (?USER)</translation>
+    </message>
+    <message>
+        <source>reading the users: the device lists more than %1 entries and no end; check the device</source>
+        <translation>reading the users: the device lists more than %1 entries and no end; check the device</translation>
+    </message>
+    <message>
+        <source>writing user &quot;%1&quot; (!USER)</source>
+        <translation>writing user &quot;%1&quot; (!USER)</translation>
+    </message>
+    <message>
+        <source>deleting a user (!USER)</source>
+        <translation>deleting a user (!USER)</translation>
+    </message>
+    <message>
+        <source>PLC network %1%2</source>
+        <translation>PLC network %1%2</translation>
+    </message>
+    <message>
+        <source>reading %1 (?GMXSPS)</source>
+        <translation>reading %1 (?GMXSPS)</translation>
+    </message>
+    <message>
+        <source>writing %1 (!GMXSPS)</source>
+        <translation>writing %1 (!GMXSPS)</translation>
+    </message>
+    <message>
+        <source>reading the actual value of %1 (?SPSIST)</source>
+        <translation>reading the actual value of %1 (?SPSIST)</translation>
+    </message>
+    <message>
+        <source>reading the set value of %1 (?SPSSOLL)</source>
+        <translation>reading the set value of %1 (?SPSSOLL)</translation>
+    </message>
+    <message>
+        <source>reading EEPROM block %1 (?EE)</source>
+        <translation>reading EEPROM block %1 (?EE)</translation>
+    </message>
+    <message>
+        <source>the device sent no EEPROM block 0000; check the device</source>
+        <translation>the device sent no EEPROM block 0000; check the device</translation>
+    </message>
+    <message>
+        <source>asked for EEPROM block %1, the device sent block %2; try again</source>
+        <translation>asked for EEPROM block %1, the device sent block %2; try again</translation>
+    </message>
+    <message>
+        <source>the device sent a malformed EEPROM block: %1; try again</source>
+        <translation>the device sent a malformed EEPROM block: %1; try again</translation>
+    </message>
+    <message>
+        <source>the device sent EEPROM blocks up to FFFE without the end marker FFFF; check the device</source>
+        <translation>the device sent EEPROM blocks up to FFFE without the end marker FFFF; check the device</translation>
+    </message>
+    <message>
+        <source>the EEPROM image does not start with block 0000; nothing was sent</source>
+        <translation>the EEPROM image does not start with block 0000; nothing was sent</translation>
+    </message>
+    <message>
+        <source>The device may already be ERASED (block 0000 starts the erase).</source>
+        <translation>The device may already be ERASED (block 0000 starts the erase).</translation>
+    </message>
+    <message>
+        <source>The device is now ERASED: it holds only the blocks before %1 and does not run.</source>
+        <translation>The device is now ERASED: it holds only the blocks before %1 and does not run.</translation>
+    </message>
+    <message>
+        <source>The device holds every block but did not confirm that it started.</source>
+        <translation>The device holds every block but did not confirm that it started.</translation>
+    </message>
+    <message>
+        <source>restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same restore again is safe: it starts by erasing the device. Cause</source>
+        <translation>restore failed at EEPROM block %1 of %2 (!EE%3). %4 Running the same restore again is safe: it starts by erasing the device. Cause</translation>
+    </message>
+    <message>
+        <source>a bus scan needs the Multiuser protocol; connect with --protocol multiuser</source>
+        <translation>a bus scan needs the Multiuser protocol; connect with --protocol multiuser</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>no reply</translation>
+    </message>
+    <message>
+        <source>1 attempt</source>
+        <translation>1 attempt</translation>
+    </message>
+    <message>
+        <source>%1 attempts</source>
+        <translation>%1 attempts</translation>
+    </message>
+    <message>
+        <source>%1 from %2 to %3 on %4 after %5 of %6 ms; %7</source>
+        <translation>%1 from %2 to %3 on %4 after %5 of %6 ms; %7</translation>
+    </message>
+    <message>
+        <source>device %1</source>
+        <translation>device %1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::model</name>
+    <message>
+        <source>a text is expected</source>
+        <translation>a text is expected</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has %2 characters; at most %3 are allowed</source>
+        <translation>&quot;%1&quot; has %2 characters; at most %3 are allowed</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; contains a character the device cannot store (only printable Latin-1 characters are allowed)</source>
+        <translation>&quot;%1&quot; contains a character the device cannot store (only printable Latin-1 characters are allowed)</translation>
+    </message>
+    <message>
+        <source>%1 is not one of the allowed values %2</source>
+        <translation>%1 is not one of the allowed values %2</translation>
+    </message>
+    <message>
+        <source>0 is not allowed; allowed are %1..-%3 and %3..%2</source>
+        <translation>0 is not allowed; allowed are %1..-%3 and %3..%2</translation>
+    </message>
+    <message>
+        <source>%1 is outside the allowed range %2%3</source>
+        <translation>%1 is outside the allowed range %2%3</translation>
+    </message>
+    <message>
+        <source>%1 is not a multiple of %2 (allowed are %3 in steps of %2)</source>
+        <translation>%1 is not a multiple of %2 (allowed are %3 in steps of %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a whole number</source>
+        <translation>&quot;%1&quot; is not a whole number</translation>
+    </message>
+    <message>
+        <source>%1: there is no such setting.</source>
+        <translation>%1: there is no such setting.</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2. The file was not changed.</source>
+        <translation>Could not write %1: %2. The file was not changed.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: the file does not exist.</source>
+        <translation>Could not read %1: the file does not exist.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: it is not a regular file.</source>
+        <translation>Could not read %1: it is not a regular file.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: %2.</source>
+        <translation>Could not read %1: %2.</translation>
+    </message>
+    <message>
+        <source>Could not read %1: it is larger than %2 bytes, so it is not a CamBench file.</source>
+        <translation>Could not read %1: it is larger than %2 bytes, so it is not a CamBench file.</translation>
+    </message>
+    <message>
+        <source>%1 %2 is below the minimum %3</source>
+        <translation>%1 %2 is below the minimum %3</translation>
+    </message>
+    <message>
+        <source>%1 %2 is above the maximum %3</source>
+        <translation>%1 %2 is above the maximum %3</translation>
+    </message>
+    <message>
+        <source>switch-on and switch-off point are both %1, so the cam would never switch</source>
+        <translation>switch-on and switch-off point are both %1, so the cam would never switch</translation>
+    </message>
+    <message>
+        <source>switch-off point %1 is below the switch-on point %2; only on a rotary axis may a cam wrap through zero</source>
+        <translation>switch-off point %1 is below the switch-on point %2; only on a rotary axis may a cam wrap through zero</translation>
+    </message>
+    <message>
+        <source>the device has outputs 1..%1</source>
+        <translation>the device has outputs 1..%1</translation>
+    </message>
+    <message>
+        <source>%1 cams, but a track holds at most %2</source>
+        <translation>%1 cams, but a track holds at most %2</translation>
+    </message>
+    <message>
+        <source>%1 overlaps cam %2 (%3)</source>
+        <translation>%1 overlaps cam %2 (%3)</translation>
+    </message>
+    <message>
+        <source>the device has programs 0..%1</source>
+        <translation>the device has programs 0..%1</translation>
+    </message>
+    <message>
+        <source>the track stored for output %1 says it is output %2</source>
+        <translation>the track stored for output %1 says it is output %2</translation>
+    </message>
+    <message>
+        <source>%1 has %2 characters; the device stores at most %3</source>
+        <translation>%1 has %2 characters; the device stores at most %3</translation>
+    </message>
+    <message>
+        <source>%1 contains &apos;%2&apos;, which the device cannot show (only Latin-1 characters are possible)</source>
+        <translation>%1 contains &apos;%2&apos;, which the device cannot show (only Latin-1 characters are possible)</translation>
+    </message>
+    <message>
+        <source>%1 contains the control character 0x%2</source>
+        <translation>%1 contains the control character 0x%2</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: the device compensates outputs 1..%2 only.</source>
+        <translation>Dead time of output %1: the device compensates outputs 1..%2 only.</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).</source>
+        <translation>Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).</translation>
+    </message>
+    <message>
+        <source>Name of output %1: the device has outputs 1..%2.</source>
+        <translation>Name of output %1: the device has outputs 1..%2.</translation>
+    </message>
+    <message>
+        <source>Name of output %1: %2.</source>
+        <translation>Name of output %1: %2.</translation>
+    </message>
+    <message>
+        <source>Name of program %1: the device has programs 0..%2.</source>
+        <translation>Name of program %1: the device has programs 0..%2.</translation>
+    </message>
+    <message>
+        <source>Name of program %1: %2.</source>
+        <translation>Name of program %1: %2.</translation>
+    </message>
+    <message>
+        <source>the name %1</source>
+        <translation>the name %1</translation>
+    </message>
+    <message>
+        <source>the user number must have 1 to %1 characters</source>
+        <translation>the user number must have 1 to %1 characters</translation>
+    </message>
+    <message>
+        <source>the user number may hold only printable ASCII characters</source>
+        <translation>the user number may hold only printable ASCII characters</translation>
+    </message>
+    <message>
+        <source>the user number &quot;DEL&quot; is reserved: it deletes a user</source>
+        <translation>the user number &quot;DEL&quot; is reserved: it deletes a user</translation>
+    </message>
+    <message>
+        <source>%1 output access entries, but the device has %2</source>
+        <translation>%1 output access entries, but the device has %2</translation>
+    </message>
+    <message>
+        <source>%1 has the same user number as user %2; numbers must be unique.</source>
+        <translation>%1 has the same user number as user %2; numbers must be unique.</translation>
+    </message>
+    <message>
+        <source>PLC network area 0x%1 is unknown; allowed are 0x08 (O), 0x09 (P), 0x0A (M) and 0x0B (X).</source>
+        <translation>PLC network area 0x%1 is unknown; allowed are 0x08 (O), 0x09 (P), 0x0A (M) and 0x0B (X).</translation>
+    </message>
+    <message>
+        <source>PLC network number %1 is outside 0..%2.</source>
+        <translation>PLC network number %1 is outside 0..%2.</translation>
+    </message>
+    <message>
+        <source>%1 is not an integer</source>
+        <translation>%1 is not an integer</translation>
+    </message>
+    <message>
+        <source>%1 is not a string</source>
+        <translation>%1 is not a string</translation>
+    </message>
+    <message>
+        <source>%1 is not true or false</source>
+        <translation>%1 is not true or false</translation>
+    </message>
+    <message>
+        <source>a JSON object is expected</source>
+        <translation>a JSON object is expected</translation>
+    </message>
+    <message>
+        <source>a JSON array is expected</source>
+        <translation>a JSON array is expected</translation>
+    </message>
+    <message>
+        <source>This is not a CamBench %1: it is not valid JSON (line %2: %3). The file may be truncated or damaged.</source>
+        <translation>This is not a CamBench %1: it is not valid JSON (line %2: %3). The file may be truncated or damaged.</translation>
+    </message>
+    <message>
+        <source>This is not a CamBench %1: the JSON holds no object.</source>
+        <translation>This is not a CamBench %1: the JSON holds no object.</translation>
+    </message>
+    <message>
+        <source>This is not a CamBench %1: its &quot;format&quot; is %2, expected &quot;%3&quot;.</source>
+        <translation>This is not a CamBench %1: its &quot;format&quot; is %2, expected &quot;%3&quot;.</translation>
+    </message>
+    <message>
+        <source>the format version</source>
+        <translation>the format version</translation>
+    </message>
+    <message>
+        <source>This %1 was written by a newer CamBench (format version %2); this CamBench reads version %3. Open it with a newer CamBench.</source>
+        <translation>This %1 was written by a newer CamBench (format version %2); this CamBench reads version %3. Open it with a newer CamBench.</translation>
+    </message>
+    <message>
+        <source>%1 %2 is not a multiple of 8</source>
+        <translation>%1 %2 is not a multiple of 8</translation>
+    </message>
+    <message>
+        <source>EPROM date</source>
+        <translation>EPROM date</translation>
+    </message>
+    <message>
+        <source>maximum position %1 is not above the minimum position %2</source>
+        <translation>maximum position %1 is not above the minimum position %2</translation>
+    </message>
+    <message>
+        <source>program number</source>
+        <translation>program number</translation>
+    </message>
+    <message>
+        <source>program name</source>
+        <translation>program name</translation>
+    </message>
+    <message>
+        <source>program %1 appears twice</source>
+        <translation>program %1 appears twice</translation>
+    </message>
+    <message>
+        <source>output %1 appears twice</source>
+        <translation>output %1 appears twice</translation>
+    </message>
+    <message>
+        <source>a cam is a pair [switch-on point, switch-off point], this has %1 values</source>
+        <translation>a cam is a pair [switch-on point, switch-off point], this has %1 values</translation>
+    </message>
+    <message>
+        <source>switch-on point</source>
+        <translation>switch-on point</translation>
+    </message>
+    <message>
+        <source>switch-off point</source>
+        <translation>switch-off point</translation>
+    </message>
+    <message>
+        <source>dead time</source>
+        <translation>dead time</translation>
+    </message>
+    <message>
+        <source>%1 %2 appears twice</source>
+        <translation>%1 %2 appears twice</translation>
+    </message>
+    <message>
+        <source>user name</source>
+        <translation>user name</translation>
+    </message>
+    <message>
+        <source>user number</source>
+        <translation>user number</translation>
+    </message>
+    <message>
+        <source>&quot;all outputs&quot;</source>
+        <translation>&quot;all outputs&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no ISO 8601 time</source>
+        <translation>&quot;%1&quot; is no ISO 8601 time</translation>
+    </message>
+    <message>
+        <source>Program %1 appears twice.</source>
+        <translation>Program %1 appears twice.</translation>
+    </message>
+    <message>
+        <source>Program %1 is named &quot;%2&quot;, but the list of program names says &quot;%3&quot;.</source>
+        <translation>Program %1 is named &quot;%2&quot;, but the list of program names says &quot;%3&quot;.</translation>
+    </message>
+    <message>
+        <source>PLC network %1 of area 0x%2 appears twice.</source>
+        <translation>PLC network %1 of area 0x%2 appears twice.</translation>
+    </message>
+    <message>
+        <source>Block %1 (entry %2 of the list)</source>
+        <translation>Block %1 (entry %2 of the list)</translation>
+    </message>
+    <message>
+        <source>block number</source>
+        <translation>block number</translation>
+    </message>
+    <message>
+        <source>block data</source>
+        <translation>block data</translation>
+    </message>
+    <message>
+        <source>block data is not an even number of hex digits</source>
+        <translation>block data is not an even number of hex digits</translation>
+    </message>
+    <message>
+        <source>The image holds no blocks.</source>
+        <translation>The image holds no blocks.</translation>
+    </message>
+    <message>
+        <source>The image does not start with block 0000 (the basic parameters) but with block %1.</source>
+        <translation>The image does not start with block 0000 (the basic parameters) but with block %1.</translation>
+    </message>
+    <message>
+        <source>Block 0000 has %1 bytes; the basic-parameter block has %2.</source>
+        <translation>Block 0000 has %1 bytes; the basic-parameter block has %2.</translation>
+    </message>
+    <message>
+        <source>%1 does not follow block %2: block numbers must ascend.</source>
+        <translation>%1 does not follow block %2: block numbers must ascend.</translation>
+    </message>
+    <message>
+        <source>%1: FFFF marks the end of the EEPROM and is no block.</source>
+        <translation>%1: FFFF marks the end of the EEPROM and is no block.</translation>
+    </message>
+    <message>
+        <source>%1: its first byte 0x%2 gives no length (upper 4 bits are 0).</source>
+        <translation>%1: its first byte 0x%2 gives no length (upper 4 bits are 0).</translation>
+    </message>
+    <message>
+        <source>%1 has %2 bytes, but its first byte 0x%3 says %4.</source>
+        <translation>%1 has %2 bytes, but its first byte 0x%3 says %4.</translation>
+    </message>
+    <message>
+        <source>EPROM date: image &quot;%1&quot;, device &quot;%2&quot;.</source>
+        <translation>EPROM date: image &quot;%1&quot;, device &quot;%2&quot;.</translation>
+    </message>
+    <message>
+        <source>%1: image %2, device %3.</source>
+        <translation>%1: image %2, device %3.</translation>
+    </message>
+    <message>
+        <source>The file was changed or damaged: its SHA-256 checksum does not match its content. Do not restore it; take a new backup.</source>
+        <translation>The file was changed or damaged: its SHA-256 checksum does not match its content. Do not restore it; take a new backup.</translation>
+    </message>
+    <message>
+        <source>time taken</source>
+        <translation>time taken</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an ISO 8601 date and time</source>
+        <translation>&quot;%1&quot; is not an ISO 8601 date and time</translation>
+    </message>
+    <message>
+        <source>%1 was not saved: %2</source>
+        <translation>%1 was not saved: %2</translation>
+    </message>
+    <message>
+        <source>Line %1: %2. Nothing was imported.</source>
+        <translation>Line %1: %2. Nothing was imported.</translation>
+    </message>
+    <message>
+        <source>a quoted field has no closing quote</source>
+        <translation>a quoted field has no closing quote</translation>
+    </message>
+    <message>
+        <source>there is text after a closing quote</source>
+        <translation>there is text after a closing quote</translation>
+    </message>
+    <message>
+        <source>The file is not UTF-8 text. Nothing was imported.</source>
+        <translation>The file is not UTF-8 text. Nothing was imported.</translation>
+    </message>
+    <message>
+        <source>the header must be &quot;%1&quot;, found &quot;%2&quot;</source>
+        <translation>the header must be &quot;%1&quot;, found &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1 fields, expected %2 (%3)</source>
+        <translation>%1 fields, expected %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 &quot;%2&quot; is not a whole number</source>
+        <translation>%1 &quot;%2&quot; is not a whole number</translation>
+    </message>
+    <message>
+        <source>output %1 has a cam %2 already (line %3)</source>
+        <translation>output %1 has a cam %2 already (line %3)</translation>
+    </message>
+    <message>
+        <source>cam %1 of output %2, but cam %3 is missing; number the cams of an output 1, 2, 3, ...</source>
+        <translation>cam %1 of output %2, but cam %3 is missing; number the cams of an output 1, 2, 3, ...</translation>
+    </message>
+    <message>
+        <source>output %1 has a dead time already (line %2)</source>
+        <translation>output %1 has a dead time already (line %2)</translation>
+    </message>
+    <message>
+        <source>kind &quot;%1&quot; is neither &quot;output&quot; nor &quot;program&quot;</source>
+        <translation>kind &quot;%1&quot; is neither &quot;output&quot; nor &quot;program&quot;</translation>
+    </message>
+    <message>
+        <source>%1 %2 has a name already (line %3)</source>
+        <translation>%1 %2 has a name already (line %3)</translation>
+    </message>
+    <message>
+        <source>there is no such setting</source>
+        <translation>there is no such setting</translation>
+    </message>
+    <message>
+        <source>the value is not a text</source>
+        <translation>the value is not a text</translation>
+    </message>
+    <message>
+        <source>the value</source>
+        <translation>the value</translation>
+    </message>
+    <message>
+        <source>the area &quot;%1&quot; is none of O, P, M, X</source>
+        <translation>the area &quot;%1&quot; is none of O, P, M, X</translation>
+    </message>
+    <message>
+        <source>&quot;area&quot; is missing</source>
+        <translation>&quot;area&quot; is missing</translation>
+    </message>
+    <message>
+        <source>network number</source>
+        <translation>network number</translation>
+    </message>
+    <message>
+        <source>reset field</source>
+        <translation>reset field</translation>
+    </message>
+    <message>
+        <source>%1 symbols, expected %2 (%3 paths of %4)</source>
+        <translation>%1 symbols, expected %2 (%3 paths of %4)</translation>
+    </message>
+    <message>
+        <source>network %1%2 appears twice</source>
+        <translation>network %1%2 appears twice</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no ISO time</source>
+        <translation>&quot;%1&quot; is no ISO time</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is neither &quot;saved&quot; nor &quot;failed&quot;</source>
+        <translation>&quot;%1&quot; is neither &quot;saved&quot; nor &quot;failed&quot;</translation>
+    </message>
+    <message>
+        <source>device %1 appears twice</source>
+        <translation>device %1 appears twice</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::plcsymbol</name>
+    <message>
+        <source>&quot;%1&quot; is not taken: CamBench knows the operands O, P, M and X only (P are the cam controller&apos;s inputs, e.g. P5). Enter one of them with a number, or the symbol word as 4 hex digits.</source>
+        <translation>&quot;%1&quot; is not taken: CamBench knows the operands O, P, M and X only (P are the cam controller&apos;s inputs, e.g. P5). Enter one of them with a number, or the symbol word as 4 hex digits.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not taken: the number must be 1 … 256.</source>
+        <translation>&quot;%1&quot; is not taken: the number must be 1 … 256.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not taken: enter an operand such as M11 or P5, 4 hex digits (0A0A), or nothing to clear the symbol.</source>
+        <translation>&quot;%1&quot; is not taken: enter an operand such as M11 or P5, 4 hex digits (0A0A), or nothing to clear the symbol.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases</name>
+    <message>
+        <source>, the device keeps %1</source>
+        <translation>, the device keeps %1</translation>
+    </message>
+    <message>
+        <source>, the device NOW HOLDS %1</source>
+        <translation>, the device NOW HOLDS %1</translation>
+    </message>
+    <message>
+        <source>, what the device holds now could not be read</source>
+        <translation>, what the device holds now could not be read</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>written</translation>
+    </message>
+    <message>
+        <source>unchanged</source>
+        <translation>unchanged</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>changed though the write failed</source>
+        <translation>changed though the write failed</translation>
+    </message>
+    <message>
+        <source>failed, state unknown</source>
+        <translation>failed, state unknown</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>not sent</translation>
+    </message>
+    <message>
+        <source>%1 written</source>
+        <translation>%1 written</translation>
+    </message>
+    <message>
+        <source>%1 unchanged</source>
+        <translation>%1 unchanged</translation>
+    </message>
+    <message>
+        <source>%1 failed (the device keeps its old values)</source>
+        <translation>%1 failed (the device keeps its old values)</translation>
+    </message>
+    <message>
+        <source>%1 CHANGED THOUGH THE WRITE FAILED</source>
+        <translation>%1 CHANGED THOUGH THE WRITE FAILED</translation>
+    </message>
+    <message>
+        <source>%1 failed with the device&apos;s state unknown</source>
+        <translation>%1 failed with the device&apos;s state unknown</translation>
+    </message>
+    <message>
+        <source>%1 not sent</source>
+        <translation>%1 not sent</translation>
+    </message>
+    <message>
+        <source>%1 items: %2</source>
+        <translation>%1 items: %2</translation>
+    </message>
+    <message>
+        <source>no cams</source>
+        <translation>no cams</translation>
+    </message>
+    <message>
+        <source>no name</source>
+        <translation>no name</translation>
+    </message>
+    <message>
+        <source>no values</source>
+        <translation>no values</translation>
+    </message>
+    <message>
+        <source>no such user</source>
+        <translation>no such user</translation>
+    </message>
+    <message>
+        <source>user %1 with rights 0x%2 and %3</source>
+        <translation>user %1 with rights 0x%2 and %3</translation>
+    </message>
+    <message>
+        <source>all outputs</source>
+        <translation>all outputs</translation>
+    </message>
+    <message>
+        <source>%1 outputs</source>
+        <translation>%1 outputs</translation>
+    </message>
+    <message>
+        <source>value %1, reset 0x%2, %3 symbols set</source>
+        <translation>value %1, reset 0x%2, %3 symbols set</translation>
+    </message>
+    <message>
+        <source>program %1, output %2</source>
+        <translation>program %1, output %2</translation>
+    </message>
+    <message>
+        <source>dead time of output %1</source>
+        <translation>dead time of output %1</translation>
+    </message>
+    <message>
+        <source>name of output %1</source>
+        <translation>name of output %1</translation>
+    </message>
+    <message>
+        <source>name of program %1</source>
+        <translation>name of program %1</translation>
+    </message>
+    <message>
+        <source>settings %1 (%2)</source>
+        <translation>settings %1 (%2)</translation>
+    </message>
+    <message>
+        <source>user %1</source>
+        <translation>user %1</translation>
+    </message>
+    <message>
+        <source>PLC network %1%2</source>
+        <translation>PLC network %1%2</translation>
+    </message>
+    <message>
+        <source>Setting %1: there is no such setting.</source>
+        <translation>Setting %1: there is no such setting.</translation>
+    </message>
+    <message>
+        <source>Setting %1 is read-only: the device decides it (wanted %2%3).</source>
+        <translation>Setting %1 is read-only: the device decides it (wanted %2%3).</translation>
+    </message>
+    <message>
+        <source>, the device has %1</source>
+        <translation>, the device has %1</translation>
+    </message>
+    <message>
+        <source>Name of program %1: the device has programs 0..%2.</source>
+        <translation>Name of program %1: the device has programs 0..%2.</translation>
+    </message>
+    <message>
+        <source>Name of program %1: %2.</source>
+        <translation>Name of program %1: %2.</translation>
+    </message>
+    <message>
+        <source>Program %1: the device has programs 0..%2.</source>
+        <translation>Program %1: the device has programs 0..%2.</translation>
+    </message>
+    <message>
+        <source>%1: the plan holds this track twice.</source>
+        <translation>%1: the plan holds this track twice.</translation>
+    </message>
+    <message>
+        <source>%1: the device has outputs 1..%2.</source>
+        <translation>%1: the device has outputs 1..%2.</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: the device compensates outputs 1..%2 only.</source>
+        <translation>Dead time of output %1: the device compensates outputs 1..%2 only.</translation>
+    </message>
+    <message>
+        <source>Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).</source>
+        <translation>Dead time of output %1: %2 is outside 0..%3 (0.1 ms steps).</translation>
+    </message>
+    <message>
+        <source>Name of output %1: the device has outputs 1..%2.</source>
+        <translation>Name of output %1: the device has outputs 1..%2.</translation>
+    </message>
+    <message>
+        <source>Name of output %1: %2.</source>
+        <translation>Name of output %1: %2.</translation>
+    </message>
+    <message>
+        <source>%1: the device has no user with the number given for it; read the users again.</source>
+        <translation>%1: the device has no user with the number given for it; read the users again.</translation>
+    </message>
+    <message>
+        <source>%1 has no number and the device has no user of that name whose number it could keep; enter a number.</source>
+        <translation>%1 has no number and the device has no user of that name whose number it could keep; enter a number.</translation>
+    </message>
+    <message>
+        <source>%1 would have the same user number as %2; numbers must be unique.</source>
+        <translation>%1 would have the same user number as %2; numbers must be unique.</translation>
+    </message>
+    <message>
+        <source>%1: the device has %2 networks in area %3 (%3%4); change the PLC counts in the settings first.</source>
+        <translation>%1: the device has %2 networks in area %3 (%3%4); change the PLC counts in the settings first.</translation>
+    </message>
+    <message>
+        <source>outputs %1 do not exist on the device (it has 1..%2)</source>
+        <translation>outputs %1 do not exist on the device (it has 1..%2)</translation>
+    </message>
+    <message>
+        <source>programs %1 do not exist on the device (it has 0..%2)</source>
+        <translation>programs %1 do not exist on the device (it has 0..%2)</translation>
+    </message>
+    <message>
+        <source>%1 cam points lie outside the device&apos;s range %2..%3</source>
+        <translation>%1 cam points lie outside the device&apos;s range %2..%3</translation>
+    </message>
+    <message>
+        <source>the plan holds invalid values</source>
+        <translation>the plan holds invalid values</translation>
+    </message>
+    <message>
+        <source>The write was refused before anything was sent: %1 (%2):</source>
+        <translation>The write was refused before anything was sent: %1 (%2):</translation>
+    </message>
+    <message>
+        <source>
+  and %1 more</source>
+        <translation>
+  and %1 more</translation>
+    </message>
+    <message>
+        <source>reading it before the write</source>
+        <translation>reading it before the write</translation>
+    </message>
+    <message>
+        <source> Reading it back failed too: %1</source>
+        <translation> Reading it back failed too: %1</translation>
+    </message>
+    <message>
+        <source>read back after the error &quot;%1&quot;</source>
+        <translation>read back after the error &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>not sent: the connection failed at %1; nothing after it was sent</source>
+        <translation>not sent: the connection failed at %1; nothing after it was sent</translation>
+    </message>
+    <message>
+        <source>the device held %1, not %2 as last read</source>
+        <translation>the device held %1, not %2 as last read</translation>
+    </message>
+    <message>
+        <source>reading the settings</source>
+        <translation>reading the settings</translation>
+    </message>
+    <message>
+        <source>reading the users</source>
+        <translation>reading the users</translation>
+    </message>
+    <message>
+        <source>read everything</source>
+        <translation>read everything</translation>
+    </message>
+    <message>
+        <source>Settings: the device does not know %1; they are not in the project.</source>
+        <translation>Settings: the device does not know %1; they are not in the project.</translation>
+    </message>
+    <message>
+        <source>reading program %1</source>
+        <translation>reading program %1</translation>
+    </message>
+    <message>
+        <source>reading dead times</source>
+        <translation>reading dead times</translation>
+    </message>
+    <message>
+        <source>Output names</source>
+        <translation>Output names</translation>
+    </message>
+    <message>
+        <source>reading output names</source>
+        <translation>reading output names</translation>
+    </message>
+    <message>
+        <source>Output names: %1</source>
+        <translation>Output names: %1</translation>
+    </message>
+    <message>
+        <source>reading users</source>
+        <translation>reading users</translation>
+    </message>
+    <message>
+        <source>PLC networks</source>
+        <translation>PLC networks</translation>
+    </message>
+    <message>
+        <source>reading PLC networks</source>
+        <translation>reading PLC networks</translation>
+    </message>
+    <message>
+        <source>reading the EEPROM</source>
+        <translation>reading the EEPROM</translation>
+    </message>
+    <message>
+        <source>%1 The device was not changed.</source>
+        <translation>%1 The device was not changed.</translation>
+    </message>
+    <message>
+        <source>%1 was taken from another kind of device: %2 It must be forced to be restored here. The device was not changed.</source>
+        <translation>%1 was taken from another kind of device: %2 It must be forced to be restored here. The device was not changed.</translation>
+    </message>
+    <message>
+        <source>step 1 of 2: safety backup</source>
+        <translation>step 1 of 2: safety backup</translation>
+    </message>
+    <message>
+        <source>Cannot take the safety backup before the restore: %1 The device was not changed.</source>
+        <translation>Cannot take the safety backup before the restore: %1 The device was not changed.</translation>
+    </message>
+    <message>
+        <source>Cancelled before the restore started. The device was not changed.</source>
+        <translation>Cancelled before the restore started. The device was not changed.</translation>
+    </message>
+    <message>
+        <source>step 2 of 2: restore</source>
+        <translation>step 2 of 2: restore</translation>
+    </message>
+    <message>
+        <source> No safety backup was taken.</source>
+        <translation> No safety backup was taken.</translation>
+    </message>
+    <message>
+        <source> The device&apos;s previous content is in the safety backup %1.</source>
+        <translation> The device&apos;s previous content is in the safety backup %1.</translation>
+    </message>
+    <message>
+        <source>the device equals %1 (%2 blocks)</source>
+        <translation>the device equals %1 (%2 blocks)</translation>
+    </message>
+    <message>
+        <source>the device differs from %1: device %2 blocks, image %3 blocks</source>
+        <translation>the device differs from %1: device %2 blocks, image %3 blocks</translation>
+    </message>
+    <message>
+        <source>; first differing blocks: %1</source>
+        <translation>; first differing blocks: %1</translation>
+    </message>
+    <message>
+        <source>%1 was written but does not read back as the image taken; check the disk</source>
+        <translation>%1 was written but does not read back as the image taken; check the disk</translation>
+    </message>
+    <message>
+        <source>scanning the line</source>
+        <translation>scanning the line</translation>
+    </message>
+    <message>
+        <source>no device answered on the line (numbers 0..63); check the cable, the baud rate and the protocol</source>
+        <translation>no device answered on the line (numbers 0..63); check the cable, the baud rate and the protocol</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1; choose another one</source>
+        <translation>cannot create the folder %1; choose another one</translation>
+    </message>
+    <message>
+        <source>not backed up: the run was cancelled</source>
+        <translation>not backed up: the run was cancelled</translation>
+    </message>
+    <message>
+        <source>saved by an earlier run</source>
+        <translation>saved by an earlier run</translation>
+    </message>
+    <message>
+        <source>line backed up</source>
+        <translation>line backed up</translation>
+    </message>
+    <message>
+        <source>not verified: its backup failed (%1)</source>
+        <translation>not verified: its backup failed (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is missing or was changed since the backup (SHA-256 differs from the manifest)</source>
+        <translation>%1 is missing or was changed since the backup (SHA-256 differs from the manifest)</translation>
+    </message>
+    <message>
+        <source>line verified</source>
+        <translation>line verified</translation>
     </message>
 </context>
 </TS>

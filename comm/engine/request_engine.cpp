@@ -279,14 +279,16 @@ QString RequestEngine::failureMessage(const Request& request, int attempts, int 
                                       const QString& problem) const {
     const QString what =
         problem == QLatin1String("no reply")
-            ? QStringLiteral("no reply")
+            ? QCoreApplication::translate("cambench::comm", "no reply")
             : QCoreApplication::translate("cambench::comm", "no valid reply (last: %1)")
                   .arg(problem);
+    // Whole phrases, so that a translation can put its own plural.
+    const QString tries =
+        attempts == 1 ? QCoreApplication::translate("cambench::comm", "1 attempt")
+                      : QCoreApplication::translate("cambench::comm", "%1 attempts").arg(attempts);
     return QCoreApplication::translate("cambench::comm",
-                                       "%1 from %2 to %3 on %4 after %5 attempt%6 of %7 ms; %8")
-        .arg(what, m_backend.describe(), request.label, m_transport.description())
-        .arg(attempts)
-        .arg(attempts == 1 ? QString() : QStringLiteral("s"))
+                                       "%1 from %2 to %3 on %4 after %5 of %6 ms; %7")
+        .arg(what, m_backend.describe(), request.label, m_transport.description(), tries)
         .arg(timeoutMs)
         .arg(m_backend.checkHint());
 }

@@ -25,7 +25,8 @@ void AsciiBackend::setDevice(int device) {
 }
 
 QString AsciiBackend::describe() const {
-    if (m_framing == Framing::Multiuser) return QStringLiteral("device %1").arg(m_device);
+    if (m_framing == Framing::Multiuser)
+        return QCoreApplication::translate("cambench::comm", "device %1").arg(m_device);
     return QCoreApplication::translate("cambench::comm", "the device");
 }
 
