@@ -47,7 +47,11 @@ qint64 JsonReader::integerValue(const QJsonValue& value, const QString& path, co
     }
     const qint64 v = qint64(d);
     if (v < min || v > max) {
-        fail(path, QStringLiteral("%1 %2 is outside %3..%4").arg(what).arg(v).arg(min).arg(max));
+        fail(path, QCoreApplication::translate("cambench::model", "%1 %2 is outside %3..%4")
+                       .arg(what)
+                       .arg(v)
+                       .arg(min)
+                       .arg(max));
         return 0;
     }
     return v;

@@ -4137,6 +4137,26 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>device %1</source>
         <translation>Gerät %1</translation>
     </message>
+    <message>
+        <source>reading %1 (?NF)</source>
+        <translation>Lesen von %1 (?NF)</translation>
+    </message>
+    <message>
+        <source>reading %1 (?NN)</source>
+        <translation>Lesen von %1 (?NN)</translation>
+    </message>
+    <message>
+        <source>reading %1 (?NS)</source>
+        <translation>Lesen von %1 (?NS)</translation>
+    </message>
+    <message>
+        <source>reading %1 (?%2)</source>
+        <translation>Lesen von %1 (?%2)</translation>
+    </message>
+    <message>
+        <source>writing %1 (!%2)</source>
+        <translation>Schreiben von %1 (!%2)</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -4580,6 +4600,38 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>device %1 appears twice</source>
         <translation>Gerät %1 kommt zweimal vor</translation>
     </message>
+    <message>
+        <source> (0 = none)</source>
+        <translation> (0 = keiner)</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>Programm %1</translation>
+    </message>
+    <message>
+        <source>, output %1</source>
+        <translation>, Ausgang %1</translation>
+    </message>
+    <message>
+        <source>, cam %1</source>
+        <translation>, Nocken %1</translation>
+    </message>
+    <message>
+        <source>User %1 (%2)</source>
+        <translation>Benutzer %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 %2 is outside %3..%4</source>
+        <translation>%1 %2 liegt außerhalb von %3..%4</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 ist leer.</translation>
+    </message>
+    <message>
+        <source>area (O, P, M or X)</source>
+        <translation>Bereich (O, P, M oder X)</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -4967,6 +5019,34 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>line verified</source>
         <translation>Leitung geprüft</translation>
+    </message>
+    <message>
+        <source>Setting %1: %2.</source>
+        <translation>Einstellung %1: %2.</translation>
+    </message>
+    <message>
+        <source>to delete</source>
+        <translation>zu löschen</translation>
+    </message>
+    <message>
+        <source>1 problem</source>
+        <translation>1 Problem</translation>
+    </message>
+    <message>
+        <source>%1 problems</source>
+        <translation>%1 Probleme</translation>
+    </message>
+    <message>
+        <source> (before: %1)</source>
+        <translation> (vorher: %1)</translation>
+    </message>
+    <message>
+        <source>device %1</source>
+        <translation>Gerät %1</translation>
+    </message>
+    <message>
+        <source>device %1: </source>
+        <translation>Gerät %1: </translation>
     </message>
 </context>
 </TS>

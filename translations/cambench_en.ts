@@ -4137,6 +4137,26 @@ Erase and restore now?</translation>
         <source>device %1</source>
         <translation>device %1</translation>
     </message>
+    <message>
+        <source>reading %1 (?NF)</source>
+        <translation>reading %1 (?NF)</translation>
+    </message>
+    <message>
+        <source>reading %1 (?NN)</source>
+        <translation>reading %1 (?NN)</translation>
+    </message>
+    <message>
+        <source>reading %1 (?NS)</source>
+        <translation>reading %1 (?NS)</translation>
+    </message>
+    <message>
+        <source>reading %1 (?%2)</source>
+        <translation>reading %1 (?%2)</translation>
+    </message>
+    <message>
+        <source>writing %1 (!%2)</source>
+        <translation>writing %1 (!%2)</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -4580,6 +4600,38 @@ Erase and restore now?</translation>
         <source>device %1 appears twice</source>
         <translation>device %1 appears twice</translation>
     </message>
+    <message>
+        <source> (0 = none)</source>
+        <translation> (0 = none)</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>program %1</translation>
+    </message>
+    <message>
+        <source>, output %1</source>
+        <translation>, output %1</translation>
+    </message>
+    <message>
+        <source>, cam %1</source>
+        <translation>, cam %1</translation>
+    </message>
+    <message>
+        <source>User %1 (%2)</source>
+        <translation>User %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 %2 is outside %3..%4</source>
+        <translation>%1 %2 is outside %3..%4</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 is empty.</translation>
+    </message>
+    <message>
+        <source>area (O, P, M or X)</source>
+        <translation>area (O, P, M or X)</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -4967,6 +5019,34 @@ Erase and restore now?</translation>
     <message>
         <source>line verified</source>
         <translation>line verified</translation>
+    </message>
+    <message>
+        <source>Setting %1: %2.</source>
+        <translation>Setting %1: %2.</translation>
+    </message>
+    <message>
+        <source>to delete</source>
+        <translation>to delete</translation>
+    </message>
+    <message>
+        <source>1 problem</source>
+        <translation>1 problem</translation>
+    </message>
+    <message>
+        <source>%1 problems</source>
+        <translation>%1 problems</translation>
+    </message>
+    <message>
+        <source> (before: %1)</source>
+        <translation> (before: %1)</translation>
+    </message>
+    <message>
+        <source>device %1</source>
+        <translation>device %1</translation>
+    </message>
+    <message>
+        <source>device %1: </source>
+        <translation>device %1: </translation>
     </message>
 </context>
 </TS>

@@ -3,6 +3,7 @@
 #include "device_reads.h"
 #include "device_session.h"
 #include "report_dialog.h"
+#include "sentence.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_diagram_widget.h"
@@ -95,7 +96,7 @@ void CamPage::writeProgram(int program, std::function<void(const WriteResult&)> 
     writeToDevice(this, m_session, m_workspace, items, [this, program, others, done](const WriteResult& result) {
         QString summary = tr("Program %1: %2").arg(program).arg(writeSummary(result));
         if (result && others > 0)
-            summary += QLatin1Char(' ') +
+            summary = asSentence(summary) + QLatin1Char(' ') +
                        tr("%n other output(s) were already as on the device and not sent.", nullptr, others);
         Q_EMIT statusMessage(summary);
         if (done) done(result);

@@ -25,7 +25,9 @@ namespace {
 
 // Outputs per diagram image: a taller image would not fit on one page.
 constexpr int kOutputsPerDiagram = 32;
-constexpr int kDiagramWidth = 2000;
+constexpr int kDiagramWidth = 1400;
+// Shown this wide on the page (150 dpi): about the width of A4 inside its margins.
+constexpr int kDiagramShownWidth = 900;
 
 QString cell(const QString& text) { return QStringLiteral("<td>%1</td>").arg(text.toHtmlEscaped()); }
 
@@ -199,7 +201,7 @@ private:
             const QString resource = QStringLiteral("diagram-%1-%2.png").arg(number).arg(first);
             m_document.addResource(QTextDocument::ImageResource, QUrl(resource),
                                    printDiagram(m_cams, number, first, last, kDiagramWidth));
-            html += QStringLiteral("<p><img src='%1' width='640'></p>").arg(resource);
+            html += QStringLiteral("<p><img src='%1' width='%2'></p>").arg(resource).arg(kDiagramShownWidth);
         }
         QString rows = headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Cams (on–off)")});
         for (int output = 1; output <= outputs; ++output) {

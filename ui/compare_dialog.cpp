@@ -184,7 +184,10 @@ void CompareDialog::showDifferences() {
         }
         section->setExpanded(true);
     }
-    if (count == 0) new QTreeWidgetItem(m_tree, {tr("No differences: the device holds what you see.")});
+    if (count == 0) {
+        auto* none = new QTreeWidgetItem(m_tree, {tr("No differences: the device holds what you see.")});
+        none->setFirstColumnSpanned(true);
+    }
 }
 
 int CompareDialog::differenceCount() const {

@@ -20,15 +20,6 @@ bool silent(DeviceSession* session) {
 }
 }  // namespace
 
-QString asSentence(const QString& text) {
-    const QString trimmed = text.trimmed();
-    if (trimmed.isEmpty()) return trimmed;
-    const QChar last = trimmed.back();
-    if (last == QLatin1Char('.') || last == QLatin1Char('!') || last == QLatin1Char('?') ||
-        last == QChar(0x2026))
-        return trimmed;
-    return trimmed + QLatin1Char('.');
-}
 
 ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : QFrame(parent),
@@ -39,7 +30,8 @@ ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, Q
     setObjectName(QStringLiteral("connectionStrip"));
     setFrameShape(QFrame::StyledPanel);
     setAutoFillBackground(true);
-    m_text->setWordWrap(true);
+    m_text->setWordWrap(false);
+    m_text->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(8, 4, 8, 4);
@@ -47,7 +39,7 @@ ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, Q
     layout->addWidget(m_reconnect);
     // Two lines of text and the button, whatever is shown: the pages below
     // never move when the line is lost or comes back.
-    const int lines = 2 * fontMetrics().lineSpacing() + 8;
+    const int lines = 2 * fontMetrics().lineSpacing() + 2 * frameWidth() + 12;
     setFixedHeight(std::max(lines, m_reconnect->sizeHint().height() + 8));
     m_reconnect->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     QSizePolicy keep = m_reconnect->sizePolicy();
@@ -60,8 +52,18 @@ ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, Q
     update();
 }
 
-QString ConnectionStrip::text() const {
-    return m_text->text();
+void ConnectionStrip::resizeEvent(QResizeEvent* event) {
+    QFrame::resizeEvent(event);
+    showLines();
+}
+
+void ConnectionStrip::showLines() {
+    const int width = std::max(50, m_text->width());
+    QStringList shown;
+    for (const QString& line : m_lines)
+        shown << m_text->fontMetrics().elidedText(line, Qt::ElideRight, width);
+    m_text->setText(shown.join(QLatin1Char('\n')));
+    m_text->setToolTip(text());
 }
 
 void ConnectionStrip::update() {
@@ -93,7 +95,8 @@ void ConnectionStrip::update() {
         text = tr("Offline. What you edit stays on this PC until you connect and write it.");
     }
     m_alarm = lost || silent(m_session);
-    m_text->setText(text);
+    m_lines = text.split(QLatin1Char('\n'));
+    showLines();
     m_reconnect->setVisible(lost);
     QPalette pal = palette();
     if (m_alarm) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "sentence.h"
+
 #include <QFrame>
 #include <QLabel>
 
@@ -19,12 +21,20 @@ class ConnectionStrip : public QFrame {
 public:
     ConnectionStrip(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
-    QString text() const;
+    // The whole text, also where the strip shows it shortened.
+    QString text() const { return m_lines.join(QLatin1Char('\n')); }
     bool isAlarm() const { return m_alarm; }
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void update();
+    // Each line on one line of the strip, shortened with "…" where needed:
+    // the strip keeps its height whatever the message.
+    void showLines();
 
+    QStringList m_lines;
     DeviceSession* m_session;
     Workspace* m_workspace;
     QLabel* m_text;
@@ -47,8 +57,5 @@ private:
     QString m_stateText;
 };
 
-// A message as one sentence: ends with a full stop unless it already ends
-// with punctuation (device and line messages come both ways).
-QString asSentence(const QString& text);
 
 }  // namespace cambench

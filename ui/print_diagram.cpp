@@ -10,8 +10,8 @@
 namespace cambench {
 
 namespace {
-constexpr int kRowHeight = 28;
-constexpr int kAxisHeight = 40;
+constexpr int kRowHeight = 30;
+constexpr int kAxisHeight = 50;
 constexpr int kMargin = 8;
 const QColor kCam(0x2f, 0x5f, 0x9e);
 const QColor kEdited(0xc0, 0x4a, 0x1e);
@@ -24,7 +24,7 @@ QImage printDiagram(const CamDocument& cams, int program, int first, int last, i
     QPainter painter(&image);
     painter.setRenderHint(QPainter::Antialiasing);
     QFont font = painter.font();
-    font.setPixelSize(14);
+    font.setPixelSize(20);
     painter.setFont(font);
     const QFontMetrics metrics(font);
     const int labelWidth = metrics.horizontalAdvance(QStringLiteral("000 ")) +
@@ -41,7 +41,7 @@ QImage printDiagram(const CamDocument& cams, int program, int first, int last, i
     // Axis with ticks, about 80 px apart.
     painter.setPen(Qt::black);
     painter.drawLine(plot.left(), plot.top(), plot.right(), plot.top());
-    const qint64 step = layout.tickStep(80);
+    const qint64 step = layout.tickStep(110);
     const Axis axis = cams.axis();
     for (qint64 tick = (axis.min / step) * step; tick <= axis.max; tick += step) {
         if (tick < axis.min) continue;
@@ -49,7 +49,7 @@ QImage printDiagram(const CamDocument& cams, int program, int first, int last, i
         painter.setPen(QColor(0xc8, 0xc8, 0xc8));
         painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
         painter.setPen(Qt::black);
-        painter.drawLine(QPointF(x, plot.top() - 6), QPointF(x, plot.top()));
+        painter.drawLine(QPointF(x, plot.top() - 8), QPointF(x, plot.top()));
         const QString label = QString::number(tick);
         painter.drawText(QPointF(x - metrics.horizontalAdvance(label) / 2.0, plot.top() - 10), label);
     }

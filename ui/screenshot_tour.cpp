@@ -78,7 +78,7 @@ void ScreenshotTour::buildSteps() {
          },
          [ws] { return ws->devicePlcNetworks().contains(Workspace::plcKey(PlcNetwork::O, 0)); }, {}},
         {QStringLiteral("07-monitor"), [w] { w->showSection(MainWindow::Monitor); },
-         [w] { return w->monitorPage()->trendSamples() >= 12; }, {}},
+         [w] { return w->monitorPage()->trendSamples() >= 48; }, {}},
         {QStringLiteral("08-compare"),
          [this, w, ws] {
              // An edit to compare: one cam moved, one dead time changed.

@@ -1,5 +1,7 @@
 #include "section_page.h"
 
+#include "sentence.h"
+
 namespace cambench {
 
 void SectionPage::writeDifferences(DeviceSession* session, Workspace* workspace,
@@ -16,7 +18,7 @@ void SectionPage::writeDifferences(DeviceSession* session, Workspace* workspace,
     writeToDevice(this, session, workspace, items, [this, title, others, done](const WriteResult& result) {
         QString summary = tr("%1: %2").arg(title, writeSummary(result));
         if (result && others > 0)
-            summary += QLatin1Char(' ') + tr("%n other item(s) of this section were already as on the device "
+            summary = asSentence(summary) + QLatin1Char(' ') + tr("%n other item(s) of this section were already as on the device "
                                              "and not sent.",
                                              nullptr, others);
         Q_EMIT statusMessage(summary);

@@ -24,6 +24,20 @@ Shell::~Shell() {
     delete m_window;
 }
 
+void Shell::showFitting(MainWindow& window, bool restored) {
+    // The first time: 1280 x 800, or the whole screen where that would put
+    // the status bar (and its connection indicator) below the screen's edge.
+    const QScreen* screen = window.screen();
+    constexpr int kFrameAllowance = 60;  // title bar and borders of the window manager
+    if (!restored && screen &&
+        (screen->availableGeometry().height() < window.height() + kFrameAllowance ||
+         screen->availableGeometry().width() < window.width())) {
+        window.showMaximized();
+        return;
+    }
+    window.show();
+}
+
 MainWindow* Shell::createWindow() {
     auto* window = new MainWindow(m_session, m_workspace);
     connect(window, &MainWindow::languageRequested, this, &Shell::switchLanguage,
@@ -36,7 +50,7 @@ void Shell::start(const QString& port) {
     const int section = guisettings::restoreWindow(*m_window);
     if (section >= 0 && section < MainWindow::COUNT)
         m_window->showSection(MainWindow::Section(section));
-    m_window->show();
+    showFitting(*m_window, section >= 0);
     if (port.isEmpty()) {
         // The last connection that worked, with its protocol and settings.
         const auto remembered = guisettings::loadConnection();

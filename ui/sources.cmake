@@ -6,6 +6,7 @@ target_sources(cambench_ui PRIVATE
   change_marker.h
   live_freshness.h
   live_freshness.cpp
+  sentence.h
   connection_status.h
   connection_status.cpp
   device_session.h

@@ -133,7 +133,8 @@ Result<LineManifest> backupLine(CamConDevice& connection, const LineBackupOption
     if (!devices) return devices.error();
     for (int i = 0; i < devices->size(); ++i) {
         const int device = devices->at(i);
-        progress.report(i, devices->size(), QStringLiteral("device %1").arg(device));
+        progress.report(i, devices->size(),
+                        QCoreApplication::translate("cambench::usecases", "device %1").arg(device));
         if (progress.cancelled()) {
             if (i == 0) return Error::cancelled();
             LineManifestEntry entry;
@@ -179,10 +180,13 @@ Result<QList<LineVerifyEntry>> verifyLine(CamConDevice& connection, const QStrin
     const int count = int(manifest->devices.size());
     for (int i = 0; i < count; ++i) {
         const LineManifestEntry& entry = manifest->devices.at(i);
-        progress.report(i, count, QStringLiteral("device %1").arg(entry.device));
+        progress.report(
+            i, count,
+            QCoreApplication::translate("cambench::usecases", "device %1").arg(entry.device));
         if (progress.cancelled()) return Error::cancelled();
         LineVerifyEntry result{entry.device, entry.file, false, {}};
-        const QString prefix = QStringLiteral("device %1: ").arg(entry.device);
+        const QString prefix =
+            QCoreApplication::translate("cambench::usecases", "device %1: ").arg(entry.device);
         if (entry.outcome != LineManifestEntry::Outcome::Saved) {
             result.text = prefix + QCoreApplication::translate(
                                        "cambench::usecases", "not verified: its backup failed (%1)")

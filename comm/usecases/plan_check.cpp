@@ -78,7 +78,9 @@ private:
                     continue;
                 }
                 const QString why = settingValueProblem(*spec, *it);
-                if (!why.isEmpty()) problem(QStringLiteral("Setting %1: %2.").arg(it.key(), why));
+                if (!why.isEmpty())
+                    problem(QCoreApplication::translate("cambench::usecases", "Setting %1: %2.")
+                                .arg(it.key(), why));
             }
         }
     }
@@ -181,8 +183,9 @@ private:
             return -1;
         };
         for (const UserWrite& write : m_plan.users) {
-            const QString label =
-                userLabel(write.wanted ? write.wanted->name : QStringLiteral("to delete"));
+            const QString label = userLabel(
+                write.wanted ? write.wanted->name
+                             : QCoreApplication::translate("cambench::usecases", "to delete"));
             const int index = write.deviceNumber.isEmpty() ? -1 : indexOf(write.deviceNumber);
             if (!write.deviceNumber.isEmpty() && index < 0) {
                 problem(QCoreApplication::translate(
@@ -280,8 +283,10 @@ Error PlanCheck::refusal(const DeviceInfo& device, int listed) const {
         QCoreApplication::translate("cambench::usecases",
                                     "The write was refused before anything was sent: %1 (%2):")
             .arg(reasons.join(QLatin1String("; ")),
-                 problems.size() == 1 ? QStringLiteral("1 problem")
-                                      : QStringLiteral("%1 problems").arg(problems.size()));
+                 problems.size() == 1
+                     ? QCoreApplication::translate("cambench::usecases", "1 problem")
+                     : QCoreApplication::translate("cambench::usecases", "%1 problems")
+                           .arg(problems.size()));
     for (int i = 0; i < problems.size() && i < listed; ++i)
         message += QStringLiteral("\n  ") + problems.at(i);
     if (problems.size() > listed)

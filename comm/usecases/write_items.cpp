@@ -193,7 +193,8 @@ private:
             outcome.error = Error();
         } else {
             outcome.state = WriteState::ChangedThoughFailed;
-            outcome.actualText += QStringLiteral(" (before: %1)").arg(ops.text(*before));
+            outcome.actualText += QCoreApplication::translate("cambench::usecases", " (before: %1)")
+                                      .arg(ops.text(*before));
         }
         return outcome;
     }

@@ -12,9 +12,10 @@ namespace cambench {
 namespace {
 
 QString where(int program, int output, int cam) {
-    QString text = QStringLiteral("program %1").arg(program);
-    if (output >= 0) text += QStringLiteral(", output %1").arg(output);
-    if (cam >= 0) text += QStringLiteral(", cam %1").arg(cam + 1);
+    QString text = QCoreApplication::translate("cambench::model", "program %1").arg(program);
+    if (output >= 0)
+        text += QCoreApplication::translate("cambench::model", ", output %1").arg(output);
+    if (cam >= 0) text += QCoreApplication::translate("cambench::model", ", cam %1").arg(cam + 1);
     return text;
 }
 

@@ -129,7 +129,7 @@ std::optional<qint64> parseInteger(const QString& field, const char* what, qint6
         return std::nullopt;
     }
     if (value < min || value > max) {
-        *why = QStringLiteral("%1 %2 is outside %3..%4")
+        *why = QCoreApplication::translate("cambench::model", "%1 %2 is outside %3..%4")
                    .arg(QLatin1String(what))
                    .arg(value)
                    .arg(min)

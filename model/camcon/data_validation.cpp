@@ -131,7 +131,9 @@ QStringList validateUsers(const QList<User>& users, UserNumbers numbers) {
     QHash<QString, int> firstWithNumber;
     for (int i = 0; i < users.size(); ++i) {
         const User& user = users.at(i);
-        const QString label = QStringLiteral("User %1 (%2)").arg(i + 1).arg(quoted(user.name));
+        const QString label = QCoreApplication::translate("cambench::model", "User %1 (%2)")
+                                  .arg(i + 1)
+                                  .arg(quoted(user.name));
         const QString problem = userProblem(user, numbers);
         if (!problem.isEmpty()) problems << QStringLiteral("%1: %2.").arg(label, problem);
         if (user.number.isEmpty()) continue;

@@ -111,7 +111,8 @@ Status checkImageBlocks(const QList<EepromBlock>& blocks) {
                     .arg(name));
         }
         if (block.data.isEmpty())
-            return Error::invalidData(QStringLiteral("%1 is empty.").arg(name));
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::model", "%1 is empty.").arg(name));
         const int nibble = uchar(block.data.at(0)) >> 4;
         if (nibble == 0) {
             return Error::invalidData(

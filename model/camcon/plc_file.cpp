@@ -38,8 +38,9 @@ int readArea(JsonReader& reader, const QJsonObject& object, const QString& path)
         reader.fail(path, QCoreApplication::translate("cambench::model", "\"area\" is missing"));
         return PlcNetwork::O;
     }
-    return int(reader.integerValue(value, where, QStringLiteral("area (O, P, M or X)"),
-                                   PlcNetwork::O, PlcNetwork::X));
+    return int(reader.integerValue(
+        value, where, QCoreApplication::translate("cambench::model", "area (O, P, M or X)"),
+        PlcNetwork::O, PlcNetwork::X));
 }
 
 PlcNetwork readNetwork(JsonReader& reader, const QJsonValue& value, const QString& path) {

@@ -108,7 +108,8 @@ QString numberProblem(const SettingSpec& spec, qint64 v) {
     if (v < spec.min || v > spec.max) {
         return QCoreApplication::translate("cambench::model",
                                            "%1 is outside the allowed range %2%3")
-            .arg(shown, rangeText(spec), isRef ? QStringLiteral(" (0 = none)") : QString());
+            .arg(shown, rangeText(spec),
+                 isRef ? QCoreApplication::translate("cambench::model", " (0 = none)") : QString());
     }
     if (spec.step > 1 && v % spec.step != 0) {
         return QCoreApplication::translate(

@@ -32,7 +32,10 @@ Result<Track> AsciiCamCon::readTrack(int program, int output) {
     const QString where = trackText(program, output);
     Result<Fields> reply = m_link.call(
         '?', "NF", Fields{{"program", qint64(program)}, {"output", wireOutput(output)}});
-    if (!reply) return inContext(QStringLiteral("reading %1 (?NF)").arg(where), reply.error());
+    if (!reply)
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading %1 (?NF)").arg(where),
+            reply.error());
     while (true) {
         const qint64 on = reply->num("on");
         const qint64 off = reply->num("off");
@@ -49,14 +52,19 @@ Result<Track> AsciiCamCon::readTrack(int program, int output) {
                     .arg(kMaxCamsPerTrack));
         }
         reply = m_link.call('?', "NN");
-        if (!reply) return inContext(QStringLiteral("reading %1 (?NN)").arg(where), reply.error());
+        if (!reply)
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "reading %1 (?NN)").arg(where),
+                reply.error());
         if (m_link.lastAttempts() > 1) {
             // A lost reply may hide an executed ?NN: the cursor could have
             // stepped twice. ?NS from just past the last cam read is
             // idempotent and lands on the right cam either way.
             reply = m_link.call('?', "NS", Fields{{"on", qint64(track.cams.last().on) + 1}});
             if (!reply) {
-                return inContext(QStringLiteral("reading %1 (?NS)").arg(where), reply.error());
+                return inContext(
+                    QCoreApplication::translate("cambench::comm", "reading %1 (?NS)").arg(where),
+                    reply.error());
             }
         }
     }

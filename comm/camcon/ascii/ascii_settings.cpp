@@ -84,9 +84,9 @@ Result<QVariant> AsciiCamCon::readSetting(const QString& key) {
             if (key != QLatin1String(field.key)) continue;
             const Result<Fields> reply = m_link.call('?', page.command);
             if (!reply) {
-                return inContext(
-                    QStringLiteral("reading %1 (?%2)").arg(key, QLatin1String(page.command)),
-                    reply.error());
+                return inContext(QCoreApplication::translate("cambench::comm", "reading %1 (?%2)")
+                                     .arg(key, QLatin1String(page.command)),
+                                 reply.error());
             }
             return isTextKey(key) ? QVariant(text(*reply, field.field))
                                   : QVariant(reply->num(field.field));
@@ -129,9 +129,9 @@ Status AsciiCamCon::writeSettings(const SystemSettings& settings, const SystemSe
         }
         const Result<Fields> reply = m_link.call('!', page.command, fields);
         if (!reply) {
-            return inContext(
-                QStringLiteral("writing %1 (!%2)").arg(pageKeys(page), QLatin1String(page.command)),
-                reply.error());
+            return inContext(QCoreApplication::translate("cambench::comm", "writing %1 (!%2)")
+                                 .arg(pageKeys(page), QLatin1String(page.command)),
+                             reply.error());
         }
     }
     return success();
