@@ -1,5 +1,6 @@
 #include "cam_page.h"
 
+#include "cam_text.h"
 #include "device_reads.h"
 #include "device_session.h"
 #include "report_dialog.h"
@@ -19,12 +20,6 @@ namespace cambench {
 
 namespace {
 
-QString camsText(const Track& track) {
-    if (track.cams.isEmpty()) return QCoreApplication::translate("cambench::CamPage", "no cams");
-    QStringList cams;
-    for (const Cam& cam : track.cams) cams << QStringLiteral("%1–%2").arg(cam.on).arg(cam.off);
-    return cams.join(QStringLiteral(", "));
-}
 
 }  // namespace
 

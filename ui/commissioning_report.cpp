@@ -1,5 +1,6 @@
 #include "commissioning_report.h"
 
+#include "cam_text.h"
 #include "change_marker.h"
 #include "plc_page.h"
 #include "plc_symbol.h"
@@ -62,11 +63,6 @@ QString marked(const QString& edited, bool changed, const QString& device) {
     return changedMarker() + CommissioningReport::tr("%1 (device: %2)").arg(edited, device);
 }
 
-QString camsText(const Track& track) {
-    QStringList cams;
-    for (const Cam& cam : track.cams) cams << QStringLiteral("%1–%2").arg(cam.on).arg(cam.off);
-    return cams.join(QStringLiteral(", "));
-}
 
 class Builder {
 public:
@@ -210,9 +206,7 @@ private:
             if (track.cams.isEmpty() && (!device || device->cams.isEmpty())) continue;
             const bool changed = known && device && device->cams != track.cams;
             rows += row({QString::number(output),
-                         marked(track.cams.isEmpty() ? CommissioningReport::tr("no cams") : camsText(track), changed,
-                                device && !device->cams.isEmpty() ? camsText(*device)
-                                                                  : CommissioningReport::tr("no cams"))});
+                         marked(camsText(track), changed, device ? camsText(*device) : QString())});
         }
         return html + table(rows);
     }

@@ -1,5 +1,6 @@
 #include "incoming_values.h"
 
+#include "cam_text.h"
 #include "plc_page.h"
 #include "replace_edits_dialog.h"
 #include "setting_field.h"
@@ -99,12 +100,6 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
 
 namespace {
 
-QString camsText(const Track& track) {
-    if (track.cams.isEmpty()) return QCoreApplication::translate("cambench::DeviceChanges", "no cams");
-    QStringList cams;
-    for (const Cam& cam : track.cams) cams << QStringLiteral("%1–%2").arg(cam.on).arg(cam.off);
-    return cams.join(QStringLiteral(", "));
-}
 
 QString change(const QString& item, const QString& before, const QString& after) {
     return QCoreApplication::translate("cambench::DeviceChanges", "%1: %2 → %3").arg(item, before, after);

@@ -82,6 +82,7 @@ target_sources(cambench_ui PRIVATE
   new_project_dialog.cpp
   print_diagram.h
   print_diagram.cpp
+  cam_text.h
   commissioning_report.h
   commissioning_report.cpp
   main_window.h

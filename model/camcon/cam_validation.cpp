@@ -44,20 +44,20 @@ QList<CamProblem> camProblems(const Cam& cam, int index, int program, int output
             problems << problem(
                 program, output, index,
                 QCoreApplication::translate("cambench::model", "%1 %2 is below the minimum %3")
-                    .arg(QLatin1String(name))
+                    .arg(QCoreApplication::translate("cambench::model", name))
                     .arg(point)
                     .arg(device.minPosition));
         } else if (point > device.maxPosition) {
             problems << problem(
                 program, output, index,
                 QCoreApplication::translate("cambench::model", "%1 %2 is above the maximum %3")
-                    .arg(QLatin1String(name))
+                    .arg(QCoreApplication::translate("cambench::model", name))
                     .arg(point)
                     .arg(device.maxPosition));
         }
     };
-    checkPoint(cam.on, "switch-on point");
-    checkPoint(cam.off, "switch-off point");
+    checkPoint(cam.on, QT_TRANSLATE_NOOP("cambench::model", "switch-on point"));
+    checkPoint(cam.off, QT_TRANSLATE_NOOP("cambench::model", "switch-off point"));
     if (cam.on == cam.off) {
         problems << problem(
             program, output, index,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "../shell/shell_fixture.h"
+
 #include "comm/sim/sim_demo.h"
 #include "comm/sim/sim_line.h"
 #include "comm/sim/sim_pacer.h"
@@ -52,5 +54,11 @@ private:
     bool m_open = false;
     QString m_path;
 };
+
+// The GUI started on `sim` through the real QSerialPort, identity and the
+// first reads done; null when the simulator or the start failed.
+inline std::unique_ptr<Shell> startOnPty(PtySimulator& sim) {
+    return sim.isOpen() ? startOnSimulator(sim.path()) : nullptr;
+}
 
 }  // namespace cambench::test

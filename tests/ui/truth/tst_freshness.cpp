@@ -4,7 +4,6 @@
 // live values, and a poll rate the line cannot carry is adjusted with a
 // word. Driven by poll cycles, never by the clock.
 #include "pty_simulator.h"
-#include "../shell/shell_fixture.h"
 
 #include "ui/cam_page.h"
 #include "ui/connection_status.h"
@@ -29,6 +28,14 @@ bool answeredCycle(MonitorPage* monitor, LiveFreshness* freshness) {
                            kDeviceTimeoutMs);
 }
 
+// The monitor in front, its poll cycles driven by the test.
+MonitorPage* monitorOnCycles(Shell& shell) {
+    MonitorPage* monitor = shell.window()->monitorPage();
+    monitor->setTimerDriven(false);
+    shell.window()->showSection(MainWindow::Monitor);
+    return monitor;
+}
+
 }  // namespace
 
 class FreshnessTest : public QObject {
@@ -48,14 +55,11 @@ private Q_SLOTS:
 
 void FreshnessTest::silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     MainWindow* window = shell->window();
-    MonitorPage* monitor = window->monitorPage();
+    MonitorPage* monitor = monitorOnCycles(*shell);
     LiveFreshness* freshness = shell->session()->freshness();
-    monitor->setTimerDriven(false);
-    window->showSection(MainWindow::Monitor);
     QVERIFY(answeredCycle(monitor, freshness));
     QVERIFY(answeredCycle(monitor, freshness));
     const QString lastAnswer = freshness->lastAnswerText();
@@ -92,14 +96,11 @@ void FreshnessTest::silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle(
 
 void FreshnessTest::stoppedSimulatorTurnsIndicatorAndMonitorStale() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     MainWindow* window = shell->window();
-    MonitorPage* monitor = window->monitorPage();
+    MonitorPage* monitor = monitorOnCycles(*shell);
     LiveFreshness* freshness = shell->session()->freshness();
-    monitor->setTimerDriven(false);
-    window->showSection(MainWindow::Monitor);
     QVERIFY(answeredCycle(monitor, freshness));
     const QString lastAnswer = freshness->lastAnswerText();
 
@@ -151,10 +152,7 @@ void FreshnessTest::pollRateTheLineCannotCarryIsAdjustedWithAWord() {
 void FreshnessTest::speedTrendPlotsTheValueTheReadoutShows() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    MainWindow* window = shell->window();
-    MonitorPage* monitor = window->monitorPage();
-    monitor->setTimerDriven(false);
-    window->showSection(MainWindow::Monitor);
+    MonitorPage* monitor = monitorOnCycles(*shell);
     std::optional<DeviceStatus> status;
     connect(monitor, &MonitorPage::statusUpdated, this, [&](const DeviceStatus& s) { status = s; });
     monitor->pollCycle();

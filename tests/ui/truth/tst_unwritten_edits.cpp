@@ -3,7 +3,6 @@
 // section), also when the edits were made while the read was running, and
 // the undo history survives a failed write.
 #include "pty_simulator.h"
-#include "../shell/shell_fixture.h"
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
@@ -38,8 +37,7 @@ private Q_SLOTS:
 
 void UnwrittenEditsTest::readProgramWithEditsAsksAndKeepsThem() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     cams->setCam(0, 1, 0, {15, 90});
@@ -60,8 +58,7 @@ void UnwrittenEditsTest::readProgramWithEditsAsksAndKeepsThem() {
 
 void UnwrittenEditsTest::readProgramTakingTheDevicesIsUndoable() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     cams->setCam(0, 1, 0, {15, 90});
@@ -79,8 +76,7 @@ void UnwrittenEditsTest::readProgramTakingTheDevicesIsUndoable() {
 
 void UnwrittenEditsTest::readEverythingWithEditsAsksPerSection() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
     Workspace* ws = shell->workspace();
@@ -141,8 +137,7 @@ void UnwrittenEditsTest::openProjectWithEditsAsksAndCancelChangesNothing() {
 void UnwrittenEditsTest::programReadFinishingWhileEditingAsks() {
     // A slow line: the read is still running when the user edits.
     PtySimulator sim(true, 9600);
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     QCOMPARE(shell->workspace()->changedCount(), 0);
@@ -169,8 +164,7 @@ void UnwrittenEditsTest::readWithoutEditsAsksNothing() {
 
 void UnwrittenEditsTest::undoHistorySurvivesFailedWrite() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     cams->setCam(0, 1, 0, {12, 90});

@@ -1,7 +1,6 @@
 // Issue 6, points 6 and 7: the project file is the whole device, and the
 // settings show exactly what the device holds.
 #include "pty_simulator.h"
-#include "../shell/shell_fixture.h"
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
@@ -119,8 +118,7 @@ void WholeDeviceTest::saveWhileLoadingIsRefused() {
 
 void WholeDeviceTest::writingAProgramNeverReadWritesItWhole() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     QVERIFY(!cams->hasDeviceCopy(3));

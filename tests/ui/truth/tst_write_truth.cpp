@@ -2,7 +2,6 @@
 // GUI on the real QSerialPort against the simulator on a pseudo-terminal;
 // the simulator's log of received commands is the witness.
 #include "pty_simulator.h"
-#include "../shell/shell_fixture.h"
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
@@ -63,8 +62,7 @@ private Q_SLOTS:
 
 void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     const QList<Cam> before = sim.track(0, 3);
@@ -125,8 +123,7 @@ void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
 
 void WriteTruthTest::editKnownInvalidIsRefusedBeforeAnyCommand() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     // Output 1 holds 10–90 and 180–270; the second cam now overlaps the first.
@@ -149,8 +146,7 @@ void WriteTruthTest::editKnownInvalidIsRefusedBeforeAnyCommand() {
 
 void WriteTruthTest::projectFor96OutputsIsRefusedBeforeAnyWriteCommand() {
     PtySimulator sim;
-    QVERIFY(sim.isOpen());
-    auto shell = startOnSimulator(sim.path());
+    auto shell = startOnPty(sim);
     QVERIFY(shell);
     const QList<Cam> program0Output1 = sim.track(0, 1);
 
