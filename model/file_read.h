@@ -17,4 +17,14 @@ Result<QByteArray> readFileBytes(const QString& path, qint64 maxBytes = kMaxRead
 // The same error with "<path>: " in front, for messages about a file's content.
 Error inFile(const QString& path, const Error& error);
 
+// Reads `path` and parses its bytes with `parse`; a parse error names the file.
+template <class T>
+Result<T> loadFileWith(const QString& path, Result<T> (*parse)(const QByteArray&)) {
+    const Result<QByteArray> bytes = readFileBytes(path);
+    if (!bytes) return bytes.error();
+    Result<T> value = parse(*bytes);
+    if (!value) return inFile(path, value.error());
+    return value;
+}
+
 }  // namespace cambench

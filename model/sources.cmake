@@ -34,4 +34,10 @@ target_sources(cambench_model PRIVATE
   camcon/eeprom_image_file.cpp
   camcon/csv_io.h
   camcon/csv_io.cpp
+  camcon/settings_file.h
+  camcon/settings_file.cpp
+  camcon/plc_file.h
+  camcon/plc_file.cpp
+  camcon/line_manifest.h
+  camcon/line_manifest.cpp
 )

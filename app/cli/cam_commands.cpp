@@ -2,8 +2,8 @@
 #include "cli_output.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "write_output.h"
 
-#include "model/camcon/cam_validation.h"
 #include "model/camcon/csv_io.h"
 
 namespace cambench::cli {
@@ -82,40 +82,13 @@ int writeCams(CliSession& session, CommandArgs& args) {
     // The file's format is checked before any device work.
     const Result<Tracks> tracks = loadCamsCsv(*path);
     if (!tracks) return reportError(tracks.error());
-
-    session.setShowProgress(true);
-    const int p = *program;
-    const QString file = *path;
-    const Tracks target = *tracks;
-    const Status written = session.run<Done>(
-        QStringLiteral("cams write"),
-        [p, file, target](CamConDevice& client, JobContext& job) -> Status {
-            // The device's limits decide whether the file fits; nothing is
-            // written unless every track does.
-            const Result<DeviceInfo> info = client.readInfo();
-            if (!info) return info.error();
-            if (const Status ok = checkProgram(p, *info); !ok) return ok.error();
-            const Result<QVariant> axisType = client.readSetting(QStringLiteral("axisType"));
-            if (!axisType) return axisType.error();
-            const bool rotary = axisType->toLongLong() == 0;
-            QStringList problems;
-            for (const Track& track : target) {
-                for (const CamProblem& problem : validateTrack(track, p, *info, rotary)) {
-                    problems.append(problem.message);
-                }
-            }
-            if (!problems.isEmpty()) return invalidFileError(file, problems);
-            qint64 done = 0;
-            for (const Track& track : target) {
-                job.progress(done++, target.size(), QStringLiteral("writing cams"));
-                if (const Status ok = client.writeTrack(p, track); !ok) return ok.error();
-            }
-            job.progress(done, target.size(), QStringLiteral("writing cams"));
-            return success();
-        });
-    if (!written) return reportError(written.error());
-    printOut(QStringLiteral("wrote %1 track(s) of program %2\n").arg(target.size()).arg(p));
-    return ExitOk;
+    // Exactly the tracks the file lists: each becomes what the file says.
+    // The write path checks them against the device before the first byte.
+    usecases::WritePlan plan;
+    for (const Track& track : *tracks) plan.tracks << usecases::TrackWrite{*program, track, {}};
+    return runWritePlan(
+        session, QStringLiteral("cams write"),
+        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
 }
 
 }  // namespace

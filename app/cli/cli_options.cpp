@@ -179,6 +179,20 @@ Status CommandArgs::finish() const {
     return usageError(QStringLiteral("%1 does not take \"%2\"").arg(m_command, m_args.join(u' ')));
 }
 
+Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what) {
+    QList<int> numbers;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const Result<int> number = parseIntArgument(part.trimmed(), what, 0, 63);
+        if (!number) return number.error();
+        if (numbers.contains(*number))
+            return usageError(QStringLiteral("%1 lists device %2 twice").arg(what).arg(*number));
+        numbers.append(*number);
+    }
+    if (numbers.isEmpty())
+        return usageError(QStringLiteral("%1 needs device numbers such as 0,5").arg(what));
+    return numbers;
+}
+
 QString usageText() {
     return QStringLiteral(
         "Usage: cambench-cli [--port PORT] [--protocol standard|multiuser] [--baud N]\n"
@@ -205,13 +219,29 @@ QString usageText() {
         "  settings read [-o FILE] | settings write FILE  JSON, system and encoder settings\n"
         "  users list                       names and rights, numbers masked\n"
         "  plc read [-o FILE] | plc write FILE            JSON\n"
+        "  project read [-o FILE] [--with-user-numbers]   everything on the device as a project\n"
+        "  project write FILE               makes the device hold the project's contents\n"
         "  backup -o FILE                   whole EEPROM image\n"
         "  restore FILE [--force] [--no-safety-backup]\n"
         "                                   checks FILE, matches it against the device, saves a\n"
-        "                                   safety backup next to FILE, then erases and writes\n"
+        "                                   safety backup FILE.safety-<UTC time>.json, then erases\n"
+        "                                   and writes\n"
         "  verify FILE                      compare device with image; exit 0 when equal,\n"
         "                                   1 when the device differs\n"
+        "  backup-line -o DIR [--devices LIST] [--resume]\n"
+        "                                   Multiuser: back up every device that answers (or\n"
+        "                                   LIST, e.g. 1,2,5) into DIR with manifest.json; goes on\n"
+        "                                   past a device that fails; --resume skips devices\n"
+        "                                   saved before whose files still check; exit 0 only when\n"
+        "                                   every device was saved, 3 otherwise\n"
+        "  verify-line DIR                  compare every device with its image in DIR; exit 0\n"
+        "                                   when all are equal, 1 otherwise\n"
         "  raw \"COMMAND\"                    one ASCII command, checksum added; prints the reply\n"
+        "\n"
+        "Writes are checked against the connected device before the first byte (nothing is\n"
+        "sent when anything does not fit); then every item is reported: written, unchanged,\n"
+        "failed (the device keeps its value), changed though the write failed (with what the\n"
+        "device now holds), or not sent. Exit 0 only when every item was written or unchanged.\n"
         "\n"
         "Outputs and inputs count from 1, programs from 0.\n"
         "Exit codes: 0 ok, 1 device error reply (verify: device differs), 2 usage,\n"

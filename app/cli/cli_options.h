@@ -12,7 +12,7 @@ namespace cambench::cli {
 struct GlobalOptions {
     QString port = QStringLiteral("sim");
     QString protocol = QStringLiteral("standard");  // a ProtocolRegistry id
-    int baud = 0;  // 0 = the protocol's default
+    int baud = 0;                                   // 0 = the protocol's default
     int device = 0;
     int pcNumber = 63;
     int timeoutMs = 0;  // 0 = derived from the line
@@ -57,6 +57,9 @@ private:
 
 // Parses a whole decimal number in [min,max] with a usage error naming `what`.
 Result<int> parseIntArgument(const QString& text, const QString& what, int min, int max);
+
+// Device numbers "0,5,7" (each 0..63, no duplicates) with a usage error naming `what`.
+Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what);
 
 QString usageText();
 

@@ -4,11 +4,22 @@ namespace cambench::cli {
 
 const CommandGroup* findCommandGroup(const QString& name) {
     static const CommandGroup kGroups[] = {
-        {"info", runInfo},     {"status", runStatus},     {"scan", runScan},
-        {"raw", runRaw},       {"cams", runCams},         {"deadtimes", runDeadTimes},
-        {"names", runNames},   {"settings", runSettings}, {"users", runUsers},
-        {"plc", runPlc},       {"backup", runBackup},     {"restore", runRestore},
+        {"info", runInfo},
+        {"status", runStatus},
+        {"scan", runScan},
+        {"raw", runRaw},
+        {"cams", runCams},
+        {"deadtimes", runDeadTimes},
+        {"names", runNames},
+        {"settings", runSettings},
+        {"users", runUsers},
+        {"plc", runPlc},
+        {"backup", runBackup},
+        {"restore", runRestore},
         {"verify", runVerify},
+        {"project", runProject},
+        {"backup-line", runBackupLine},
+        {"verify-line", runVerifyLine},
     };
     for (const CommandGroup& group : kGroups) {
         if (name == QLatin1String(group.name)) return &group;

@@ -27,6 +27,9 @@ int runPlc(CliSession& session, CommandArgs& args);
 int runBackup(CliSession& session, CommandArgs& args);
 int runRestore(CliSession& session, CommandArgs& args);
 int runVerify(CliSession& session, CommandArgs& args);
+int runProject(CliSession& session, CommandArgs& args);
+int runBackupLine(CliSession& session, CommandArgs& args);
+int runVerifyLine(CliSession& session, CommandArgs& args);
 
 const CommandGroup* findCommandGroup(const QString& name);
 

@@ -21,6 +21,10 @@ add_executable(cambench-cli
   cli/table_commands.cpp
   cli/config_commands.cpp
   cli/eeprom_commands.cpp
+  cli/project_commands.cpp
+  cli/line_commands.cpp
+  cli/write_output.h
+  cli/write_output.cpp
 )
-target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_comm cambench_model Qt6::Core)
+target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

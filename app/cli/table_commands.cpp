@@ -2,9 +2,9 @@
 #include "cli_output.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "write_output.h"
 
 #include "model/camcon/csv_io.h"
-#include "model/camcon/data_validation.h"
 
 namespace cambench::cli {
 
@@ -27,29 +27,21 @@ int readTable(CliSession& session, CommandArgs& args, const QString& title,
     return written ? ExitOk : reportError(written.error());
 }
 
-// `write FILE`: loads the file, then in one job checks it against the
-// device (`validate`) and writes it (`write`), or writes nothing.
+// `write FILE`: loads the file (its format is checked before any device
+// work) and writes it through the one write path, which checks it against
+// the device first and reports every item.
 template <class T>
 int writeTable(CliSession& session, CommandArgs& args, const QString& title,
-               Result<T> (*load)(const QString&),
-               QStringList (*validate)(const T&, const DeviceInfo&),
-               std::function<Status(CamConDevice&, const T&)> write) {
+               Result<T> (*load)(const QString&), usecases::WritePlan (*toPlan)(const T&)) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a CSV FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<T> table = load(*path);
     if (!table) return reportError(table.error());
-    const QString file = *path;
-    const T data = *table;
-    const Status written = session.run<Done>(
-        title, [file, data, validate, write](CamConDevice& client, JobContext&) -> Status {
-            const Result<DeviceInfo> info = client.readInfo();
-            if (!info) return info.error();
-            const QStringList problems = validate(data, *info);
-            if (!problems.isEmpty()) return invalidFileError(file, problems);
-            return write(client, data);
-        });
-    return written ? ExitOk : reportError(written.error());
+    const usecases::WritePlan plan = toPlan(*table);
+    return runWritePlan(
+        session, title,
+        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
 }
 
 Result<DeadTimes> readAllDeadTimes(CamConDevice& client, JobContext&) {
@@ -58,11 +50,11 @@ Result<DeadTimes> readAllDeadTimes(CamConDevice& client, JobContext&) {
     return client.readDeadTimes(info->deadTimeOutputs);
 }
 
-Status writeAllDeadTimes(CamConDevice& client, const DeadTimes& deadTimes) {
-    for (auto it = deadTimes.begin(); it != deadTimes.end(); ++it) {
-        if (const Status ok = client.writeDeadTime(it.key(), it.value()); !ok) return ok;
-    }
-    return success();
+usecases::WritePlan deadTimesPlan(const DeadTimes& deadTimes) {
+    usecases::WritePlan plan;
+    for (auto it = deadTimes.cbegin(); it != deadTimes.cend(); ++it)
+        plan.deadTimes << usecases::DeadTimeWrite{it.key(), *it, {}};
+    return plan;
 }
 
 Result<Names> readAllNames(CamConDevice& client, JobContext& job) {
@@ -85,14 +77,13 @@ Result<Names> readAllNames(CamConDevice& client, JobContext& job) {
     return names;
 }
 
-Status writeAllNames(CamConDevice& client, const Names& names) {
-    for (auto it = names.outputs.begin(); it != names.outputs.end(); ++it) {
-        if (const Status ok = client.writeOutputName(it.key(), it.value()); !ok) return ok;
-    }
-    for (auto it = names.programs.begin(); it != names.programs.end(); ++it) {
-        if (const Status ok = client.writeProgramName(it.key(), it.value()); !ok) return ok;
-    }
-    return success();
+usecases::WritePlan namesPlan(const Names& names) {
+    usecases::WritePlan plan;
+    for (auto it = names.outputs.cbegin(); it != names.outputs.cend(); ++it)
+        plan.outputNames << usecases::NameWrite{it.key(), *it, {}};
+    for (auto it = names.programs.cbegin(); it != names.programs.cend(); ++it)
+        plan.programNames << usecases::NameWrite{it.key(), *it, {}};
+    return plan;
 }
 
 }  // namespace
@@ -105,7 +96,7 @@ int runDeadTimes(CliSession& session, CommandArgs& args) {
                                     readAllDeadTimes, deadTimesToCsv);
     }
     return writeTable<DeadTimes>(session, args, QStringLiteral("deadtimes write"), loadDeadTimesCsv,
-                                 validateDeadTimes, writeAllDeadTimes);
+                                 deadTimesPlan);
 }
 
 int runNames(CliSession& session, CommandArgs& args) {
@@ -116,8 +107,7 @@ int runNames(CliSession& session, CommandArgs& args) {
         return readTable<Names>(session, args, QStringLiteral("names read"), readAllNames,
                                 namesToCsv);
     }
-    return writeTable<Names>(session, args, QStringLiteral("names write"), loadNamesCsv,
-                             validateNames, writeAllNames);
+    return writeTable<Names>(session, args, QStringLiteral("names write"), loadNamesCsv, namesPlan);
 }
 
 }  // namespace cambench::cli

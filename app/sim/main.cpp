@@ -106,6 +106,11 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
     }
     config.throttle = !parser.isSet(QStringLiteral("no-throttle"));
     config.faults.dead = parser.isSet(QStringLiteral("dead"));
+    if (parser.isSet(QStringLiteral("dead-devices"))) {
+        Result<QList<int>> dead = parseDeviceList(parser.value(QStringLiteral("dead-devices")));
+        if (!dead) return QStringLiteral("--dead-devices: %1").arg(dead.error().message);
+        config.deadDevices = *dead;
+    }
     options.verbose = parser.isSet(QStringLiteral("verbose"));
     return {};
 }
@@ -145,6 +150,9 @@ void addOptions(QCommandLineParser& parser) {
          QStringLiteral("Benchmark state: n cams on every output of every program."),
          QStringLiteral("n")},
         {QStringLiteral("dead"), QStringLiteral("Never answer.")},
+        {QStringLiteral("dead-devices"),
+         QStringLiteral("These devices of the line never answer, e.g. 5 (the others do)."),
+         QStringLiteral("list")},
         {QStringLiteral("verbose"), QStringLiteral("Log requests to stderr.")},
     });
 }

@@ -55,6 +55,12 @@ public:
                                            const ProgressFn& progress = {}) = 0;
     // Makes the device's track equal `track`.
     virtual Status writeTrack(int program, const Track& track) = 0;
+    // The same when the caller has just read the track (`onDevice`), so
+    // that it is not read twice. By default it is read again.
+    virtual Status writeTrackFrom(int program, const Track& track, const Track& onDevice) {
+        Q_UNUSED(onDevice);
+        return writeTrack(program, track);
+    }
     virtual Status deleteProgram(int program) = 0;
     virtual Status copyProgram(int from, int to) = 0;
     virtual Status copyTrack(int program, int fromOutput, int toOutput) = 0;

@@ -84,6 +84,7 @@ std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfi
         if (config.fill > 0) fillBenchmarkCams(device, config.fill);
     }
     line->setFaults(config.faults);
+    for (int number : config.deadDevices) line->injections().setDead(number, true);
     return line;
 }
 

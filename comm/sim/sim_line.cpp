@@ -3,6 +3,7 @@
 #include "sim_log.h"
 
 #include "comm/camcon/ascii/catalogue.h"
+#include "comm/camcon/ascii/command_codec.h"
 
 #include <algorithm>
 
@@ -50,7 +51,8 @@ QList<SimOutput> SimLine::feed(QByteArrayView bytesFromPc) {
 
 std::optional<SimOutput> SimLine::answer(const Frame& request) {
     if (m_framing == Framing::Standard || !request.address) {
-        if (m_devices.empty()) return std::nullopt;
+        if (m_devices.empty() || m_injections.isDead(m_devices.front()->number()))
+            return std::nullopt;
         return execute(*m_devices.front(), request);
     }
     const MultiuserAddress& address = *request.address;
@@ -59,6 +61,7 @@ std::optional<SimOutput> SimLine::answer(const Frame& request) {
         ++m_counters.unaddressed;
         return std::nullopt;
     }
+    if (m_injections.isDead(target->number())) return std::nullopt;
     LastAnswer& last = m_lastAnswers[target->number()][address.source];
     if (last.block == address.block) {
         ++m_counters.repeats;
@@ -77,7 +80,19 @@ std::optional<SimOutput> SimLine::execute(SimDevice& device, const Frame& reques
                                   << QString(QChar(request.lead))
                                   << (spec ? spec->name : "(unknown)") << request.body.size()
                                   << "bytes";
-    std::optional<SimDevice::Reply> reply = device.execute(request);
+    m_injections.record(device.number(), request.lead,
+                        spec ? QByteArray(spec->name) : QByteArrayLiteral("(unknown)"));
+    std::optional<SimDevice::Reply> reply;
+    if (const std::optional<qint32> refused =
+            spec ? m_injections.takeRefusal(device.number(), spec->kind, spec->name)
+                 : std::nullopt) {
+        reply = SimDevice::Reply{};
+        reply->frame.lead = kReply;
+        reply->frame.body = errorReplyBody(*spec, *refused);
+        reply->frame.hasChecksum = device.checksumsEnabled();
+    } else {
+        reply = device.execute(request);
+    }
     updateChecksumMode();
     if (!reply) return std::nullopt;
     if (request.address) {

@@ -2,6 +2,7 @@
 
 #include "sim_device.h"
 #include "sim_faults.h"
+#include "sim_injections.h"
 #include "sim_output.h"
 
 #include "comm/camcon/ascii/stream_decoder.h"
@@ -45,6 +46,8 @@ public:
     // on the bus is none of ours); unset = any.
     void setPcNumber(std::optional<int> number) { m_pcNumber = number; }
     const SimFaults& faults() const { return m_faults; }
+    // Command log, dead devices and refusals on purpose (tests).
+    SimInjections& injections() { return m_injections; }
     const Counters& counters() const { return m_counters; }
 
     QList<SimOutput> feed(QByteArrayView bytesFromPc);
@@ -64,6 +67,7 @@ private:
     std::vector<std::unique_ptr<SimDevice>> m_devices;
     QHash<int, QHash<int, LastAnswer>> m_lastAnswers;  // device -> PC number -> answer
     SimFaults m_faults;
+    SimInjections m_injections;
     std::optional<int> m_pcNumber;
     Counters m_counters;
 };

@@ -22,6 +22,7 @@ struct SimPortConfig {
     bool throttle = true;  // false: bytes arrive at once
     int fill = 0;          // > 0: benchmark cams per track instead of the demo cams
     SimFaultSettings faults;
+    QList<int> deadDevices;  // devices of the line that never answer (cambench-sim --dead-devices)
 
     Framing effectiveFraming() const {
         return framing ? *framing : (devices.size() > 1 ? Framing::Multiuser : Framing::Standard);

@@ -20,6 +20,8 @@ target_sources(cambench_sim PRIVATE
   sim_handler_util.h
   sim_handlers.h
   sim_info_handlers.cpp
+  sim_injections.cpp
+  sim_injections.h
   sim_line.cpp
   sim_line.h
   sim_log.cpp

@@ -1,6 +1,8 @@
 #include "cam_validation.h"
 
 #include <algorithm>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace cambench {
@@ -76,6 +78,30 @@ bool camCovers(const Cam& cam, qint32 position) {
 bool trackActiveAt(const Track& track, qint32 position) {
     return std::any_of(track.cams.cbegin(), track.cams.cend(),
                        [position](const Cam& cam) { return camCovers(cam, position); });
+}
+
+bool camsOverlap(const Cam& a, const Cam& b) {
+    // A wrapping cam covers [on, end of axis] and [start of axis, off): as
+    // spans without ends that is [on, +inf) and (-inf, off), which meet
+    // another cam's positions exactly where the axis-bound spans would.
+    const auto spans = [](const Cam& cam) {
+        constexpr qint64 kLow = std::numeric_limits<qint64>::min();
+        constexpr qint64 kHigh = std::numeric_limits<qint64>::max();
+        std::vector<std::pair<qint64, qint64>> result;
+        if (cam.on < cam.off) {
+            result.emplace_back(cam.on, cam.off);
+        } else if (cam.off < cam.on) {
+            result.emplace_back(cam.on, kHigh);
+            result.emplace_back(kLow, cam.off);
+        }
+        return result;
+    };
+    for (const auto& x : spans(a)) {
+        for (const auto& y : spans(b)) {
+            if (x.first < y.second && y.first < x.second) return true;
+        }
+    }
+    return false;
 }
 
 QList<CamProblem> validateTrack(const Track& track, int program, const DeviceInfo& device,

@@ -28,6 +28,9 @@ struct CamProblem {
 bool camCovers(const Cam& cam, qint32 position);
 // Whether the track's output is on at `position`.
 bool trackActiveAt(const Track& track, qint32 position);
+// Whether two cams cover a common position (wrapping cams included): a
+// device refuses to hold both on one track.
+bool camsOverlap(const Cam& a, const Cam& b);
 
 // Checks a track of program `program` against the device: both points in
 // minPosition..maxPosition, on != off, off < on only on a rotary axis, no

@@ -92,10 +92,11 @@ QStringList validateNames(const Names& names, const DeviceInfo& device) {
     return problems;
 }
 
-QString userProblem(const User& user) {
+QString userProblem(const User& user, UserNumbers numbers) {
     const QString name = nameProblem(user.name);
     if (!name.isEmpty()) return QStringLiteral("the name %1").arg(name);
-    if (user.number.isEmpty() || user.number.size() > kMaxUserNumberLength)
+    const bool mayLackNumber = numbers == UserNumbers::Optional && user.number.isEmpty();
+    if (!mayLackNumber && (user.number.isEmpty() || user.number.size() > kMaxUserNumberLength))
         return QStringLiteral("the user number must have 1 to %1 characters")
             .arg(kMaxUserNumberLength);
     if (!std::all_of(user.number.cbegin(), user.number.cend(), isPrintableAscii))
@@ -109,14 +110,15 @@ QString userProblem(const User& user) {
     return {};
 }
 
-QStringList validateUsers(const QList<User>& users) {
+QStringList validateUsers(const QList<User>& users, UserNumbers numbers) {
     QStringList problems;
     QHash<QString, int> firstWithNumber;
     for (int i = 0; i < users.size(); ++i) {
         const User& user = users.at(i);
         const QString label = QStringLiteral("User %1 (%2)").arg(i + 1).arg(quoted(user.name));
-        const QString problem = userProblem(user);
+        const QString problem = userProblem(user, numbers);
         if (!problem.isEmpty()) problems << QStringLiteral("%1: %2.").arg(label, problem);
+        if (user.number.isEmpty()) continue;
         const auto first = firstWithNumber.constFind(user.number);
         if (first != firstWithNumber.cend()) {
             problems << QStringLiteral(

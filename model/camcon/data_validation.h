@@ -33,12 +33,16 @@ QStringList validateDeadTimes(const DeadTimes& deadTimes, const DeviceInfo& devi
 // Output names for outputs 1..outputs, program names for 0..programs-1.
 QStringList validateNames(const Names& names, const DeviceInfo& device);
 
+// Whether a user must carry a number: a project saved without user
+// numbers holds users without one (they keep the device's number).
+enum class UserNumbers { Required, Optional };
+
 // One user: name, number of 1..5 printable ASCII characters other than
 // "DEL" (which means "delete" to the device), at most 256 access entries.
 // Never quotes the number: it is the user's access code.
-QString userProblem(const User& user);
+QString userProblem(const User& user, UserNumbers numbers = UserNumbers::Required);
 // Every user, and that no two users share a number.
-QStringList validateUsers(const QList<User>& users);
+QStringList validateUsers(const QList<User>& users, UserNumbers numbers = UserNumbers::Required);
 
 // Area O, P, M or X and a number 0..kMaxPlcNumber.
 QStringList validatePlcNetwork(const PlcNetwork& network);

@@ -1,12 +1,14 @@
 #include "project_file.h"
 
-#include "model/atomic_file.h"
 #include "cam_validation.h"
 #include "data_validation.h"
 #include "device_info_json.h"
+#include "model/atomic_file.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
+#include "plc_file.h"
+#include "settings_file.h"
 
 #include <QJsonArray>
 #include <QSet>
@@ -24,6 +26,21 @@ QString key(const char* text) {
     return QString::fromLatin1(text);
 }
 
+// The JSON names of the parts in "readAt".
+struct PartName {
+    ProjectPart part;
+    const char* name;
+};
+const PartName kPartNames[] = {
+    {ProjectPart::Device, "device"},       {ProjectPart::Settings, "settings"},
+    {ProjectPart::DeadTimes, "deadTimes"}, {ProjectPart::OutputNames, "outputNames"},
+    {ProjectPart::Users, "users"},         {ProjectPart::PlcNetworks, "plcNetworks"},
+};
+
+QString isoTime(const QDateTime& time) {
+    return time.toUTC().toString(Qt::ISODateWithMs);
+}
+
 // ---- writing ----
 
 QJsonObject trackToJson(const Track& track) {
@@ -38,18 +55,6 @@ QJsonObject programToJson(const CamProgram& program) {
     return {{key("number"), program.number}, {key("name"), program.name}, {key("tracks"), tracks}};
 }
 
-QJsonObject settingsToJson(const SystemSettings& settings) {
-    QJsonObject object;
-    for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
-        const SettingSpec* spec = findSetting(it.key());
-        if (spec && spec->kind == SettingKind::Text)
-            object.insert(it.key(), it->toString());
-        else
-            object.insert(it.key(), it->toLongLong());
-    }
-    return object;
-}
-
 template <class Map>
 QJsonArray numberedToJson(const Map& map, const char* numberKey, const char* valueKey) {
     QJsonArray array;
@@ -58,86 +63,62 @@ QJsonArray numberedToJson(const Map& map, const char* numberKey, const char* val
     return array;
 }
 
-QJsonObject userToJson(const User& user) {
+QJsonObject userToJson(const User& user, bool withNumber) {
     QJsonArray outputs;
     for (int i = 0; i < user.outputAccess.size(); ++i) {
         if (user.outputAccess.at(i)) outputs.append(i + 1);
     }
-    return {{key("name"), user.name},
-            {key("number"), user.number},
-            {key("allOutputs"), user.allOutputs},
-            {key("rights"), qint64(user.rights)},
-            {key("outputs"), outputs}};
+    QJsonObject object{{key("name"), user.name},
+                       {key("allOutputs"), user.allOutputs},
+                       {key("rights"), qint64(user.rights)},
+                       {key("outputs"), outputs}};
+    if (withNumber && !user.number.isEmpty()) object.insert(key("number"), user.number);
+    return object;
 }
 
-QJsonObject plcNetworkToJson(const PlcNetwork& network) {
-    QJsonArray symbols;
-    for (quint16 symbol : network.symbols) symbols.append(symbol);
-    return {{key("area"), network.area},
-            {key("number"), network.number},
-            {key("value"), network.value},
-            {key("reset"), network.reset},
-            {key("symbols"), symbols}};
+QJsonObject readTimesToJson(const ProjectReadTimes& readAt) {
+    QJsonObject object;
+    for (const PartName& part : kPartNames) {
+        const auto time = readAt.parts.constFind(part.part);
+        if (time != readAt.parts.cend()) object.insert(key(part.name), isoTime(*time));
+    }
+    QJsonArray programs;
+    for (auto it = readAt.programs.cbegin(); it != readAt.programs.cend(); ++it)
+        programs.append(QJsonObject{{key("program"), it.key()}, {key("time"), isoTime(*it)}});
+    object.insert(key("programs"), programs);
+    return object;
 }
 
 // ---- reading ----
 
 // Reads the top-level sections in an order that lets later ones be checked
-// against earlier ones (cams against the device and the axis type).
+// against earlier ones (outputs and programs against the device). Only the
+// structure is checked here: values a device could hold load as they are
+// and validateProject() warns about them.
 class ProjectReader {
 public:
     Result<Project> read(const QJsonObject& root) {
         Project project;
         project.device = readDeviceInfo(m_r, m_r.object(root, {}, key("device")), key("device"));
-        project.settings = readSettings(m_r.object(root, {}, key("settings")));
-        const bool rotary = isRotaryAxis(project.settings);
-        project.programs =
-            readPrograms(m_r.array(root, {}, key("programs")), project.device, rotary);
+        project.settings =
+            settingsFromJson(m_r, m_r.object(root, {}, key("settings")), key("settings"));
+        project.programs = readPrograms(m_r.array(root, {}, key("programs")), project.device);
         project.deadTimes = readDeadTimes(m_r.array(root, {}, key("deadTimes")), project.device);
         project.names.outputs = readNames(m_r.array(root, {}, key("outputNames")), "outputNames",
                                           "output", 1, project.device.outputs);
         project.names.programs = readNames(m_r.array(root, {}, key("programNames")), "programNames",
                                            "program", 0, project.device.programs - 1);
         project.users = readUsers(m_r.array(root, {}, key("users")));
-        project.plcNetworks = readPlcNetworks(m_r.array(root, {}, key("plcNetworks")));
+        project.plcNetworks =
+            plcNetworksFromJson(m_r, m_r.array(root, {}, key("plcNetworks")), key("plcNetworks"));
+        if (root.contains(key("readAt")))
+            project.readAt = readTimes(m_r.object(root, {}, key("readAt")));
         if (m_r.failed()) return Error::invalidData(m_r.problem() + QLatin1Char('.'));
-        // Whatever the per-value checks above cannot see (e.g. a program
-        // name that disagrees with programNames).
-        const QStringList problems = validateProject(project);
-        if (!problems.isEmpty()) return Error::invalidData(problems.first());
         return project;
     }
 
 private:
-    SystemSettings readSettings(const QJsonObject& object) {
-        SystemSettings settings;
-        for (auto it = object.constBegin(); it != object.constEnd() && !m_r.failed(); ++it) {
-            const QString path = JsonReader::member(key("settings"), it.key());
-            const SettingSpec* spec = findSetting(it.key());
-            if (!spec) {
-                m_r.fail(path, QStringLiteral("there is no such setting"));
-                break;
-            }
-            QVariant value;
-            if (spec->kind == SettingKind::Text) {
-                if (!it->isString()) {
-                    m_r.fail(path, QStringLiteral("the value is not a string"));
-                    break;
-                }
-                value = it->toString();
-            } else {
-                value = m_r.integerValue(*it, path, QStringLiteral("the value"),
-                                         std::numeric_limits<qint64>::min(),
-                                         std::numeric_limits<qint64>::max());
-            }
-            const QString problem = settingValueProblem(*spec, value);
-            if (!problem.isEmpty()) m_r.fail(path, problem);
-            settings.insert(it.key(), value);
-        }
-        return settings;
-    }
-
-    QList<CamProgram> readPrograms(const QJsonArray& array, const DeviceInfo& device, bool rotary) {
+    QList<CamProgram> readPrograms(const QJsonArray& array, const DeviceInfo& device) {
         QList<CamProgram> programs;
         QSet<int> seen;
         for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
@@ -153,7 +134,6 @@ private:
                          QStringLiteral("program %1 appears twice").arg(program.number));
             }
             seen.insert(program.number);
-            checkName(program.name, JsonReader::member(path, key("name")));
             const QJsonArray tracks = m_r.array(object, path, key("tracks"));
             for (int j = 0; j < tracks.size() && !m_r.failed(); ++j) {
                 const QString trackPath =
@@ -163,7 +143,6 @@ private:
                     m_r.fail(JsonReader::member(trackPath, key("output")),
                              QStringLiteral("output %1 appears twice").arg(track.output));
                 }
-                checkTrack(track, program.number, device, rotary, trackPath);
                 program.tracks.insert(track.output, track);
             }
             programs << program;
@@ -196,24 +175,6 @@ private:
         return track;
     }
 
-    void checkTrack(const Track& track, int program, const DeviceInfo& device, bool rotary,
-                    const QString& path) {
-        if (m_r.failed()) return;
-        const QList<CamProblem> problems = validateTrack(track, program, device, rotary);
-        if (problems.isEmpty()) return;
-        const CamProblem& first = problems.first();
-        m_r.fail(first.cam >= 0
-                     ? JsonReader::element(JsonReader::member(path, key("cams")), first.cam)
-                     : path,
-                 first.message);
-    }
-
-    void checkName(const QString& name, const QString& path) {
-        if (m_r.failed()) return;
-        const QString problem = nameProblem(name);
-        if (!problem.isEmpty()) m_r.fail(path, problem);
-    }
-
     DeadTimes readDeadTimes(const QJsonArray& array, const DeviceInfo& device) {
         DeadTimes deadTimes;
         for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
@@ -221,8 +182,8 @@ private:
             const QJsonObject object = m_r.objectValue(array.at(i), path);
             const int output = int(m_r.integer(
                 object, path, key("output"), QStringLiteral("output"), 1, device.deadTimeOutputs));
-            const qint32 value = qint32(m_r.integer(
-                object, path, key("deadTime"), QStringLiteral("dead time"), 0, device.maxDeadTime));
+            const qint32 value =
+                qint32(m_r.integer(object, path, key("deadTime"), QStringLiteral("dead time")));
             if (!m_r.failed() && deadTimes.contains(output)) {
                 m_r.fail(JsonReader::member(path, key("output")),
                          QStringLiteral("output %1 appears twice").arg(output));
@@ -241,7 +202,6 @@ private:
             const int number =
                 int(m_r.integer(object, path, key(numberKey), key(numberKey), min, max));
             const QString name = m_r.string(object, path, key("name"), QStringLiteral("name"));
-            checkName(name, JsonReader::member(path, key("name")));
             if (!m_r.failed() && names.contains(number)) {
                 m_r.fail(JsonReader::member(path, key(numberKey)),
                          QStringLiteral("%1 %2 appears twice").arg(key(numberKey)).arg(number));
@@ -253,13 +213,15 @@ private:
 
     QList<User> readUsers(const QJsonArray& array) {
         QList<User> users;
-        QHash<QString, int> numbers;
         for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
             const QString path = JsonReader::element(key("users"), i);
             const QJsonObject object = m_r.objectValue(array.at(i), path);
             User user;
             user.name = m_r.string(object, path, key("name"), QStringLiteral("user name"));
-            user.number = m_r.string(object, path, key("number"), QStringLiteral("user number"));
+            // Saved without numbers unless asked for (ProjectSaveOptions).
+            if (object.contains(key("number")))
+                user.number =
+                    m_r.string(object, path, key("number"), QStringLiteral("user number"));
             user.allOutputs =
                 m_r.boolean(object, path, key("allOutputs"), QStringLiteral("\"all outputs\""));
             user.rights = quint32(m_r.integer(object, path, key("rights"), QStringLiteral("rights"),
@@ -272,55 +234,36 @@ private:
                     QStringLiteral("output"), 1, kUserAccessOutputs));
                 if (output >= 1) user.outputAccess[output - 1] = true;
             }
-            if (m_r.failed()) break;
-            const QString problem = userProblem(user);
-            if (!problem.isEmpty())
-                m_r.fail(path, problem);
-            else if (numbers.contains(user.number))
-                m_r.fail(path, QStringLiteral("the user number is the same as that of users[%1]")
-                                   .arg(numbers.value(user.number)));
-            numbers.insert(user.number, i);
             users << user;
         }
         return users;
     }
 
-    QList<PlcNetwork> readPlcNetworks(const QJsonArray& array) {
-        QList<PlcNetwork> networks;
-        QSet<QPair<int, int>> seen;
-        for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
-            const QString path = JsonReader::element(key("plcNetworks"), i);
-            const QJsonObject object = m_r.objectValue(array.at(i), path);
-            PlcNetwork network;
-            network.area = int(m_r.integer(object, path, key("area"), QStringLiteral("area"),
-                                           PlcNetwork::O, PlcNetwork::X));
-            network.number = int(m_r.integer(object, path, key("number"),
-                                             QStringLiteral("network number"), 0, kMaxPlcNumber));
-            network.value =
-                qint32(m_r.integer(object, path, key("value"), QStringLiteral("value")));
-            network.reset = quint16(
-                m_r.integer(object, path, key("reset"), QStringLiteral("reset field"), 0, 0xFFFF));
-            const QJsonArray symbols = m_r.array(object, path, key("symbols"));
-            const QString symbolsPath = JsonReader::member(path, key("symbols"));
-            if (!m_r.failed() && symbols.size() != PlcNetwork::kSymbols) {
-                m_r.fail(symbolsPath, QStringLiteral("%1 symbols, expected %2 (%3 paths of %4)")
-                                          .arg(symbols.size())
-                                          .arg(PlcNetwork::kSymbols)
-                                          .arg(PlcNetwork::kPaths)
-                                          .arg(PlcNetwork::kSymbolsPerPath));
-            }
-            for (int k = 0; k < PlcNetwork::kSymbols && !m_r.failed(); ++k) {
-                network.symbols[std::size_t(k)] =
-                    quint16(m_r.integerValue(symbols.at(k), JsonReader::element(symbolsPath, k),
-                                             QStringLiteral("symbol"), 0, 0xFFFF));
-            }
-            const QPair<int, int> id(network.area, network.number);
-            if (!m_r.failed() && seen.contains(id))
-                m_r.fail(path, QStringLiteral("this network appears twice"));
-            seen.insert(id);
-            networks << network;
+    QDateTime readTime(const QJsonObject& object, const QString& path, const QString& name) {
+        const QString text = m_r.string(object, path, name, QStringLiteral("time"));
+        const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
+        if (!m_r.failed() && !time.isValid())
+            m_r.fail(JsonReader::member(path, name),
+                     QStringLiteral("\"%1\" is no ISO 8601 time").arg(text));
+        return time.toUTC();
+    }
+
+    ProjectReadTimes readTimes(const QJsonObject& object) {
+        ProjectReadTimes readAt;
+        const QString path = key("readAt");
+        for (const PartName& part : kPartNames) {
+            if (object.contains(key(part.name)))
+                readAt.parts.insert(part.part, readTime(object, path, key(part.name)));
         }
-        return networks;
+        const QJsonArray programs = object.value(key("programs")).toArray();
+        for (int i = 0; i < programs.size() && !m_r.failed(); ++i) {
+            const QString where = JsonReader::element(JsonReader::member(path, key("programs")), i);
+            const QJsonObject entry = m_r.objectValue(programs.at(i), where);
+            const int program = int(m_r.integer(entry, where, key("program"),
+                                                QStringLiteral("program number"), 0, 32767));
+            readAt.programs.insert(program, readTime(entry, where, key("time")));
+        }
+        return readAt;
     }
 
     JsonReader m_r;
@@ -353,7 +296,7 @@ QStringList validateProject(const Project& project) {
     problems << validateDeadTimes(project.deadTimes, project.device);
     problems << validateNames(project.names, project.device);
     problems << validateSettings(project.settings);
-    problems << validateUsers(project.users);
+    problems << validateUsers(project.users, UserNumbers::Optional);
     QSet<QPair<int, int>> networks;
     for (const PlcNetwork& network : project.plcNetworks) {
         problems << validatePlcNetwork(network);
@@ -368,9 +311,10 @@ QStringList validateProject(const Project& project) {
     return problems;
 }
 
-QByteArray projectToJson(const Project& project) {
+QByteArray projectToJson(const Project& project, const ProjectSaveOptions& options) {
     QJsonObject root = jsonFileHeader(kProjectFile);
     root.insert(key("device"), deviceInfoToJson(project.device));
+    root.insert(key("readAt"), readTimesToJson(project.readAt));
     root.insert(key("settings"), settingsToJson(project.settings));
     QJsonArray programs;
     for (const CamProgram& program : project.programs) programs.append(programToJson(program));
@@ -379,12 +323,10 @@ QByteArray projectToJson(const Project& project) {
     root.insert(key("outputNames"), numberedToJson(project.names.outputs, "output", "name"));
     root.insert(key("programNames"), numberedToJson(project.names.programs, "program", "name"));
     QJsonArray users;
-    for (const User& user : project.users) users.append(userToJson(user));
+    for (const User& user : project.users)
+        users.append(userToJson(user, options.includeUserNumbers));
     root.insert(key("users"), users);
-    QJsonArray networks;
-    for (const PlcNetwork& network : project.plcNetworks)
-        networks.append(plcNetworkToJson(network));
-    root.insert(key("plcNetworks"), networks);
+    root.insert(key("plcNetworks"), plcNetworksToJson(project.plcNetworks));
     return toIndentedJson(root);
 }
 
@@ -394,23 +336,12 @@ Result<Project> projectFromJson(const QByteArray& bytes) {
     return ProjectReader().read(*root);
 }
 
-Status saveProject(const QString& path, const Project& project) {
-    const QStringList problems = validateProject(project);
-    if (!problems.isEmpty()) {
-        QString message = QStringLiteral("%1 was not saved: %2").arg(path, problems.first());
-        if (problems.size() > 1)
-            message += QStringLiteral(" (and %1 more problems)").arg(problems.size() - 1);
-        return Error::invalidData(message);
-    }
-    return writeFileAtomically(path, projectToJson(project));
+Status saveProject(const QString& path, const Project& project, const ProjectSaveOptions& options) {
+    return writeFileAtomically(path, projectToJson(project, options));
 }
 
 Result<Project> loadProject(const QString& path) {
-    const Result<QByteArray> bytes = readFileBytes(path);
-    if (!bytes) return bytes.error();
-    Result<Project> project = projectFromJson(*bytes);
-    if (!project) return inFile(path, project.error());
-    return project;
+    return loadFileWith<Project>(path, projectFromJson);
 }
 
 }  // namespace cambench

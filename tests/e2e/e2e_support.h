@@ -18,6 +18,7 @@ public:
     // `simArgs` are added to "--baud 115200"; false when the sim did not start.
     bool start(const QStringList& simArgs = {});
     QString errorText() const { return m_sim.errorText(); }
+    QString ptyPath() const { return m_sim.ptyPath(); }
 
     // cambench-cli with --port <pty> --baud 115200 and then `args`.
     CliRun cli(const QStringList& args, int timeoutMs = 120000) const;

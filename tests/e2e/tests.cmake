@@ -1,7 +1,7 @@
 # CamConClient against the in-process simulator, and end-to-end runs of the
 # real cambench-cli against the real cambench-sim (paths relative to tests/).
 cambench_add_test(tst_operations_camcon_client
-  SOURCES e2e/tst_camcon_client.cpp
+  SOURCES e2e/tst_camcon_client.cpp usecases/sim_bench.h usecases/sim_bench.cpp
   LIBS cambench_sim)
 
 # The end-to-end tests start both executables as subprocesses.
@@ -18,3 +18,4 @@ endfunction()
 cambench_add_e2e_test(tst_e2e_cli e2e/tst_e2e_cli.cpp)
 cambench_add_e2e_test(tst_e2e_eeprom e2e/tst_e2e_eeprom.cpp)
 cambench_add_e2e_test(tst_e2e_faults e2e/tst_e2e_faults.cpp)
+cambench_add_e2e_test(tst_e2e_line e2e/tst_e2e_line.cpp)

@@ -3,6 +3,7 @@
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/camcon/ascii/settings_commands.h"
 #include "comm/sim/sim_transport.h"
+#include "tests/usecases/sim_bench.h"
 
 #include <QLoggingCategory>
 #include <QSet>
@@ -16,29 +17,7 @@ using namespace cambench::comm;
 namespace {
 
 // A simulator line with the client on top; bytes arrive at once.
-struct Bench {
-    explicit Bench(QList<int> devices = {0}, std::optional<Framing> framing = {}) {
-        SimPortConfig config;
-        config.devices = devices;
-        config.framing = framing;
-        config.throttle = false;
-        transport = std::make_unique<SimTransport>(config);
-        const Status opened = transport->open();
-        if (!opened) qFatal("%s", qPrintable(opened.error().message));
-        LinkSettings settings;
-        settings.framing = config.effectiveFraming();
-        settings.device = devices.first();
-        settings.timeoutMs = 500;
-        settings.longTimeoutMs = 5000;
-        link = std::make_unique<AsciiLink>(*transport, settings);
-        client = std::make_unique<AsciiCamCon>(*link);
-    }
-    SimDevice& device(int number = 0) { return *transport->line().device(number); }
-
-    std::unique_ptr<SimTransport> transport;
-    std::unique_ptr<AsciiLink> link;
-    std::unique_ptr<AsciiCamCon> client;
-};
+using Bench = cambench::tests::SimBench;
 
 Track track(int output, QList<Cam> cams) {
     Track t;

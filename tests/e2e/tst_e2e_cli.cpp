@@ -20,6 +20,9 @@ private Q_SLOTS:
     void infoJsonIsAnObject();
     void camsEditRoundTrip();
     void camsWriteRejectsOverlapAndLeavesDeviceUntouched();
+    void camsWriteForBiggerDeviceSendsNoWriteCommand();
+    void writeReportsEveryItem();
+    void projectReadThenWriteChangesNothing();
     void deadTimesRoundTrip();
     void namesRoundTrip();
     void settingsChangeOneValue();
@@ -102,9 +105,76 @@ void TestE2eCli::camsWriteRejectsOverlapAndLeavesDeviceUntouched() {
     const CliRun run = session.cli({"cams", "write", "--program", "0", bad});
     VERIFY_EXIT(run, 4);
     QVERIFY(run.err.startsWith(QLatin1String("cambench-cli: ")));
-    QVERIFY(run.err.contains(QLatin1String("not changed")));
+    QVERIFY2(run.err.contains(QLatin1String("refused before anything was sent")),
+             qPrintable(run.err));
+    QVERIFY(run.err.contains(QLatin1String("overlaps cam 1 (10..100)")));
     const CliRun after = session.cli({"cams", "read", "--program", "0"});
     QCOMPARE(after.out, before.out);
+}
+
+void TestE2eCli::camsWriteForBiggerDeviceSendsNoWriteCommand() {
+    // Issue 6, point 3: a file for a 96-output device to the simulator's
+    // 32-output device is refused before any write command.
+    SimSession session;
+    START_SIM(session, {"--verbose"});
+    QByteArray csv = "output,cam,on,off\n";
+    for (int output = 1; output <= 96; ++output)
+        csv += QByteArray::number(output) + ",1," + QByteArray::number(output * 100) + "," +
+               QByteArray::number(output * 100 + 90) + "\n";
+    const QString file = session.path(QStringLiteral("big.csv"));
+    QVERIFY(writeBytes(file, csv));
+    // A generous reply timeout: the logging simulator may be slow to start
+    // under a sanitizer (a bound, not a speed check).
+    const CliRun run = session.cli({"--timeout", "2000", "cams", "write", "--program", "0", file});
+    VERIFY_EXIT(run, 4);
+    QVERIFY2(run.err.contains(QLatin1String("outputs 33..96 do not exist on the device (it has "
+                                            "1..32)")),
+             qPrintable(run.err));
+    QVERIFY(run.err.contains(QLatin1String("and ")));  // the list is bounded
+    QVERIFY(run.err.count(u'\n') <= 12);
+    // The simulator's log of received frames: reads only.
+    const QList<QByteArray> log =
+        readBytes(session.path(QStringLiteral("sim-stderr.log"))).split('\n');
+    QVERIFY(log.size() > 5);
+    for (const QByteArray& line : log) QVERIFY2(!line.contains("<- !"), line.constData());
+}
+
+void TestE2eCli::writeReportsEveryItem() {
+    SimSession session;
+    START_SIM(session);
+    const QString file = session.path(QStringLiteral("cams.csv"));
+    QVERIFY(writeBytes(file, "output,cam,on,off\n1,1,10,90\n1,2,180,270\n2,1,5,6\n"));
+    const CliRun run = session.cli({"cams", "write", "--program", "0", file});
+    VERIFY_EXIT(run, 0);
+    QCOMPARE(run.out, QStringLiteral("program 0, output 1: unchanged\n"
+                                     "program 0, output 2: written\n"
+                                     "2 items: 1 written, 1 unchanged\n"));
+}
+
+void TestE2eCli::projectReadThenWriteChangesNothing() {
+    SimSession session;
+    START_SIM(session, {"--verbose"});
+    const QString file = session.path(QStringLiteral("device.cambench"));
+    const CliRun read = session.cli({"--timeout", "2000", "project", "read", "-o", file});
+    VERIFY_EXIT(read, 0);
+    // The demo device's own odd value is noted, and saved all the same.
+    QVERIFY2(read.err.contains(QLatin1String("specialEncoder.incremental.divider")),
+             qPrintable(read.err));
+    const QJsonObject project = QJsonDocument::fromJson(readBytes(file)).object();
+    QCOMPARE(project.value(QStringLiteral("programs")).toArray().size(), 16);
+    QCOMPARE(project.value(QStringLiteral("readAt"))
+                 .toObject()
+                 .value(QStringLiteral("programs"))
+                 .toArray()
+                 .size(),
+             16);
+    QVERIFY(!readBytes(file).contains("4711"));  // user numbers only when asked for
+    const qsizetype logBefore = readBytes(session.path(QStringLiteral("sim-stderr.log"))).size();
+    const CliRun write = session.cli({"--timeout", "2000", "project", "write", file});
+    VERIFY_EXIT(write, 0);
+    QVERIFY2(write.out.contains(QLatin1String(" 0 written, ")), qPrintable(write.out));
+    const QByteArray log = readBytes(session.path(QStringLiteral("sim-stderr.log"))).mid(logBefore);
+    QVERIFY2(!log.contains("<- !"), log.constData());
 }
 
 void TestE2eCli::deadTimesRoundTrip() {

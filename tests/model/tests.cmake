@@ -5,3 +5,5 @@ cambench_add_test(tst_project_file SOURCES model/tst_project_file.cpp LIBS cambe
 cambench_add_test(tst_eeprom_image_file SOURCES model/tst_eeprom_image_file.cpp LIBS cambench_model)
 cambench_add_test(tst_csv_io SOURCES model/tst_csv_io.cpp LIBS cambench_model)
 cambench_add_test(tst_atomic_file SOURCES model/tst_atomic_file.cpp LIBS cambench_model)
+cambench_add_test(tst_settings_plc_files SOURCES model/tst_settings_plc_files.cpp LIBS cambench_model)
+cambench_add_test(tst_line_manifest SOURCES model/tst_line_manifest.cpp LIBS cambench_model)

@@ -36,8 +36,14 @@ public:
     Result<Track> readTrack(int program, int output) override;
     Result<CamProgram> readProgram(int program, int outputs,
                                    const ProgressFn& progress = {}) override;
-    // Deletes, then inserts; unchanged cams are left alone.
+    // Sends only the cams that differ, ordered so that a refused step
+    // leaves the track as it was where the protocol allows: cams that
+    // overlap nothing on the track go in before any is deleted, the others
+    // after the deletes; when a step is refused, what was done is undone
+    // (inserted cams deleted, deleted ones inserted again). The error says
+    // whether the track could be put back.
     Status writeTrack(int program, const Track& track) override;
+    Status writeTrackFrom(int program, const Track& track, const Track& onDevice) override;
     Status deleteProgram(int program) override;
     Status copyProgram(int from, int to) override;
     Status copyTrack(int program, int fromOutput, int toOutput) override;

@@ -3,6 +3,9 @@
 
 #include "model/camcon/cam_validation.h"
 
+#include <algorithm>
+#include <optional>
+
 namespace cambench::comm {
 
 using namespace client;
@@ -76,43 +79,141 @@ Result<CamProgram> AsciiCamCon::readProgram(int program, int outputs, const Prog
 Status AsciiCamCon::writeTrack(int program, const Track& track) {
     const Result<Track> current = readTrack(program, track.output);
     if (!current) return current.error();
-    const QString where = trackText(program, track.output);
-    const auto repeatedAfterLostReply = [this](const Error& error) {
-        return error.kind == ErrorKind::DeviceError && m_link.lastAttempts() > 1;
-    };
-    bool needsReadBack = false;
-    // Deleting first means every intermediate track is a subset of the
-    // target plus cams that stay: nothing the device could reject as overlap.
-    for (const Cam& cam : current->cams) {
-        if (track.cams.contains(cam)) continue;
-        const Result<Fields> reply = m_link.call('!', "NDEL",
-                                                 Fields{{"program", qint64(program)},
-                                                        {"output", wireOutput(track.output)},
-                                                        {"on", qint64(cam.on)}});
-        if (!reply && !repeatedAfterLostReply(reply.error())) {
-            return inContext(
-                QStringLiteral("deleting the cam at %1 on %2 (!NDEL)").arg(cam.on).arg(where),
-                reply.error());
-        }
-        needsReadBack |= m_link.lastAttempts() > 1;
-    }
-    for (const Cam& cam : track.cams) {
-        if (current->cams.contains(cam)) continue;
+    return writeTrackFrom(program, track, *current);
+}
+
+namespace {
+
+// One track edit as a sequence of !NINS / !NDEL that can be undone.
+class TrackEdit {
+public:
+    TrackEdit(AsciiLink& link, int program, int output)
+        : m_link(link), m_program(program), m_output(output) {}
+
+    std::optional<Error> insert(const Cam& cam) {
         const Result<Fields> reply = m_link.call('!', "NINS",
-                                                 Fields{{"program", qint64(program)},
-                                                        {"output", wireOutput(track.output)},
+                                                 Fields{{"program", qint64(m_program)},
+                                                        {"output", wireOutput(m_output)},
                                                         {"on", qint64(cam.on)},
                                                         {"off", qint64(cam.off)}});
+        m_repeated |= m_link.lastAttempts() > 1;
         if (!reply && !repeatedAfterLostReply(reply.error())) {
-            return inContext(QStringLiteral("inserting the cam %1..%2 on %3 (!NINS)")
+            Error error = inContext(QStringLiteral("inserting the cam %1..%2 on %3 (!NINS)")
+                                        .arg(cam.on)
+                                        .arg(cam.off)
+                                        .arg(trackText(m_program, m_output)),
+                                    reply.error());
+            if (error.kind == ErrorKind::DeviceError && error.deviceCode == -1) {
+                error.message += QStringLiteral(
+                    " On an insert the usual cause is a cam that overlaps another cam of the track "
+                    "or lies outside the device's range.");
+            }
+            return error;
+        }
+        m_inserted.append(cam);
+        return std::nullopt;
+    }
+
+    std::optional<Error> remove(const Cam& cam) {
+        const Result<Fields> reply = m_link.call('!', "NDEL",
+                                                 Fields{{"program", qint64(m_program)},
+                                                        {"output", wireOutput(m_output)},
+                                                        {"on", qint64(cam.on)}});
+        m_repeated |= m_link.lastAttempts() > 1;
+        if (!reply && !repeatedAfterLostReply(reply.error())) {
+            return inContext(QStringLiteral("deleting the cam at %1 on %2 (!NDEL)")
                                  .arg(cam.on)
-                                 .arg(cam.off)
-                                 .arg(where),
+                                 .arg(trackText(m_program, m_output)),
                              reply.error());
         }
-        needsReadBack |= m_link.lastAttempts() > 1;
+        m_deleted.append(cam);
+        return std::nullopt;
     }
-    if (!needsReadBack) return success();
+
+    // Undoes what was done, latest first, and says how that went. A refused
+    // step is not undone: it did not happen.
+    Error undo(Error cause) {
+        bool back = true;
+        const QList<Cam> inserted = m_inserted;
+        const QList<Cam> deleted = m_deleted;
+        for (auto it = inserted.crbegin(); it != inserted.crend(); ++it) back &= !remove(*it);
+        for (auto it = deleted.crbegin(); it != deleted.crend(); ++it) back &= !insert(*it);
+        if (inserted.isEmpty() && deleted.isEmpty()) {
+            cause.message += QStringLiteral(" Nothing had been changed on the track yet.");
+        } else if (back) {
+            cause.message +=
+                QStringLiteral(" The cams already changed were put back: the track is as it was.");
+        } else {
+            cause.message += QStringLiteral(
+                " Putting the track back failed too: it may now hold other cams than before; "
+                "read it to see.");
+        }
+        return cause;
+    }
+
+    bool repeated() const { return m_repeated; }
+
+private:
+    // A retry of an edit whose reply was lost may be refused because the
+    // first attempt was executed: the read-back at the end decides.
+    bool repeatedAfterLostReply(const Error& error) const {
+        return error.kind == ErrorKind::DeviceError && m_link.lastAttempts() > 1;
+    }
+
+    AsciiLink& m_link;
+    int m_program;
+    int m_output;
+    QList<Cam> m_inserted;
+    QList<Cam> m_deleted;
+    bool m_repeated = false;
+};
+
+bool isEepromFull(const Error& error) {
+    return error.kind == ErrorKind::DeviceError && error.deviceCode <= -21 &&
+           error.deviceCode >= -39;
+}
+
+bool overlapsAny(const Cam& cam, const QList<Cam>& cams) {
+    return std::any_of(cams.cbegin(), cams.cend(),
+                       [&cam](const Cam& other) { return camsOverlap(cam, other); });
+}
+
+}  // namespace
+
+Status AsciiCamCon::writeTrackFrom(int program, const Track& track, const Track& onDevice) {
+    const QString where = trackText(program, track.output);
+    QList<Cam> toInsert;
+    for (const Cam& cam : track.cams) {
+        if (!onDevice.cams.contains(cam)) toInsert.append(cam);
+    }
+    QList<Cam> toDelete;
+    for (const Cam& cam : onDevice.cams) {
+        if (!track.cams.contains(cam)) toDelete.append(cam);
+    }
+    TrackEdit edit(m_link, program, track.output);
+    // Cams that overlap nothing on the track go in first: if the device
+    // refuses one, no old cam has been deleted yet. When the EEPROM is full
+    // the rest waits until the deletes have made room.
+    QList<Cam> later;
+    bool full = false;
+    for (const Cam& cam : toInsert) {
+        if (full || overlapsAny(cam, onDevice.cams)) {
+            later.append(cam);
+            continue;
+        }
+        if (const std::optional<Error> refused = edit.insert(cam)) {
+            if (!isEepromFull(*refused)) return edit.undo(*refused);
+            full = true;
+            later.append(cam);
+        }
+    }
+    for (const Cam& cam : toDelete) {
+        if (const std::optional<Error> refused = edit.remove(cam)) return edit.undo(*refused);
+    }
+    for (const Cam& cam : later) {
+        if (const std::optional<Error> refused = edit.insert(cam)) return edit.undo(*refused);
+    }
+    if (!edit.repeated()) return success();
     // An edit was sent more than once: make sure the device holds exactly
     // the target track rather than trusting the replies.
     const Result<Track> written = readTrack(program, track.output);

@@ -442,14 +442,22 @@ void TestCommandCodec::requestOfWrongCommandIsRejected() {
 
 void TestCommandCodec::deviceErrorTextsCoverManualList() {
     QVERIFY(deviceErrorText(-43).contains("block number order"));
-    QVERIFY(deviceErrorText(-21).contains("EEPROM full"));
-    QVERIFY(deviceErrorText(-39).contains("EEPROM full"));
-    for (qint32 code : {-1, -10, -12, -20, -30, -40, -41, -42, -43, -44, -45, -46}) {
-        QVERIFY2(!deviceErrorText(code).contains("Unknown device error"),
-                 qPrintable(QString::number(code)));
+    QVERIFY(deviceErrorText(-21).contains("EEPROM is full"));
+    QVERIFY(deviceErrorText(-39).contains("EEPROM is full"));
+    // Every number of manual 4.6.1 has its meaning; -1 is "unknown error"
+    // there, which is no meaning: the text says so.
+    for (qint32 code : {-10, -12, -20, -21, -30, -39, -40, -41, -42, -43, -44, -45, -46}) {
+        QVERIFY2(manualExplains(code), qPrintable(QString::number(code)));
+        QVERIFY2(!deviceErrorText(code).contains("no meaning"), qPrintable(QString::number(code)));
     }
-    QCOMPARE(deviceErrorText(5), QStringLiteral("Unknown device error 5."));
-    QCOMPARE(deviceErrorText(-47), QStringLiteral("Unknown device error -47."));
+    for (qint32 code : {-1, -2, -11, -47, 5}) QVERIFY(!manualExplains(code));
+    QVERIFY(deviceErrorText(-1).contains(
+        QLatin1String("The manual gives no meaning for error -1 (it lists it only as \"unknown "
+                      "error\")")));
+    QCOMPARE(deviceErrorText(-47),
+             QStringLiteral("The manual gives no meaning for error -47. Note the number and the "
+                            "command and ask the device's supplier."));
+    QVERIFY(deviceErrorText(5).contains(QLatin1String("error 5.")));
 }
 
 QTEST_GUILESS_MAIN(TestCommandCodec)

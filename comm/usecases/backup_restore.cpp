@@ -1,0 +1,168 @@
+#include "backup_restore.h"
+
+#include "model/camcon/eeprom_image_file.h"
+
+#include <QFileInfo>
+
+namespace cambench::usecases {
+
+namespace {
+
+using comm::CamConCapability;
+using comm::CamConDevice;
+
+// Blocks listed when an image and a device differ: enough to see where.
+constexpr int kListedBlocks = 10;
+
+QString hex4(int number) {
+    return QStringLiteral("%1").arg(number, 4, 16, QLatin1Char('0')).toUpper();
+}
+
+QStringList differingBlocks(const QList<EepromBlock>& device, const QList<EepromBlock>& image) {
+    QStringList differences;
+    const int count = int(qMax(device.size(), image.size()));
+    for (int i = 0; i < count && differences.size() < kListedBlocks; ++i) {
+        if (i < device.size() && i < image.size() && device.at(i) == image.at(i)) continue;
+        differences << hex4(i < image.size() ? image.at(i).number : device.at(i).number);
+    }
+    return differences;
+}
+
+Error withMessage(Error error, const QString& message) {
+    error.message = message;
+    return error;
+}
+
+}  // namespace
+
+QString safetyBackupPath(const QString& imagePath, const QDateTime& utc) {
+    const QString stem =
+        QStringLiteral("%1.safety-%2")
+            .arg(imagePath, utc.toUTC().toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'")));
+    QString path = stem + QStringLiteral(".json");
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = QStringLiteral("%1-%2.json").arg(stem).arg(n);
+    return path;
+}
+
+Result<EepromImage> backupDevice(CamConDevice& connection, const UseCaseProgress& progress) {
+    if (!connection.has(CamConCapability::EepromBackup))
+        return connection.missing(CamConCapability::EepromBackup);
+    return connection.backup(progress.forDevice(QStringLiteral("reading the EEPROM")));
+}
+
+Result<EepromImage> backupToFile(CamConDevice& connection, const QString& path,
+                                 const UseCaseProgress& progress) {
+    Result<EepromImage> image = backupDevice(connection, progress);
+    if (!image) return image.error();
+    const Status saved = saveEepromImage(path, *image);
+    if (!saved) return saved.error();
+    return image;
+}
+
+RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
+                           const QString& imagePath, const RestoreOptions& options,
+                           const UseCaseProgress& progress) {
+    RestoreReport report;
+    report.blocks = int(image.blocks.size());
+    if (!connection.has(CamConCapability::EepromBackup)) {
+        report.error = connection.missing(CamConCapability::EepromBackup);
+        return report;
+    }
+    const Result<DeviceInfo> device = connection.readInfo();
+    if (!device) {
+        report.error = withMessage(
+            device.error(),
+            QStringLiteral("%1 The device was not changed.").arg(device.error().message));
+        return report;
+    }
+    report.identityMismatch = identityMismatch(image.device, *device);
+    if (!report.identityMismatch.isEmpty() && !options.force) {
+        report.error = Error::invalidData(
+            QStringLiteral("%1 was taken from another kind of device: %2 It must be forced to be "
+                           "restored here. The device was not changed.")
+                .arg(imagePath, report.identityMismatch.join(QLatin1Char(' '))));
+        return report;
+    }
+
+    const qint64 steps = options.safetyBackup ? 2 : 1;
+    if (options.safetyBackup) {
+        const QString path = options.safetyBackupPath.isEmpty()
+                                 ? safetyBackupPath(imagePath, QDateTime::currentDateTimeUtc())
+                                 : options.safetyBackupPath;
+        const UseCaseProgress part = progress.slice(0, 1, steps);
+        const Result<EepromImage> safety = backupToFile(
+            connection, path,
+            UseCaseProgress(
+                [part](qint64 done, qint64 total, const QString&) {
+                    part.report(done, total, QStringLiteral("step 1 of 2: safety backup"));
+                },
+                [progress] { return progress.cancelled(); }));
+        if (!safety) {
+            report.error = withMessage(
+                safety.error(), QStringLiteral("Cannot take the safety backup before the restore: "
+                                               "%1 The device was not changed.")
+                                    .arg(safety.error().message));
+            return report;
+        }
+        report.safetyBackupPath = path;
+    }
+    if (progress.cancelled()) {
+        report.error = withMessage(
+            Error::cancelled(), QStringLiteral("Cancelled before the restore started. The device "
+                                               "was not changed."));
+        return report;
+    }
+    const UseCaseProgress part = progress.slice(steps - 1, 1, steps);
+    const QString text =
+        options.safetyBackup ? QStringLiteral("step 2 of 2: restore") : QStringLiteral("restore");
+    const Status restored = connection.restore(image, part.forDevice(text));
+    if (restored) {
+        report.state = RestoredState::Restored;
+        return report;
+    }
+    // The device layer checks the image before sending: InvalidData means
+    // nothing was sent.
+    report.state = restored.error().kind == ErrorKind::InvalidData ? RestoredState::Unchanged
+                                                                   : RestoredState::ErasedOrPartial;
+    QString message = restored.error().message;
+    if (report.state == RestoredState::ErasedOrPartial) {
+        message +=
+            report.safetyBackupPath.isEmpty()
+                ? QStringLiteral(" No safety backup was taken.")
+                : QStringLiteral(" The device's previous content is in the safety backup %1.")
+                      .arg(report.safetyBackupPath);
+    }
+    report.error = withMessage(restored.error(), message);
+    return report;
+}
+
+QString VerifyReport::text(const QString& imagePath) const {
+    if (equal)
+        return QStringLiteral("the device equals %1 (%2 blocks)").arg(imagePath).arg(imageBlocks);
+    QString text = QStringLiteral("the device differs from %1: device %2 blocks, image %3 blocks")
+                       .arg(imagePath)
+                       .arg(deviceBlocks)
+                       .arg(imageBlocks);
+    if (!differingBlocks.isEmpty())
+        text += QStringLiteral("; first differing blocks: %1")
+                    .arg(differingBlocks.join(QLatin1String(", ")));
+    if (!identityMismatch.isEmpty())
+        text += QStringLiteral("; %1").arg(identityMismatch.join(QLatin1Char(' ')));
+    return text;
+}
+
+Result<VerifyReport> verifyImage(CamConDevice& connection, const EepromImage& image,
+                                 const UseCaseProgress& progress) {
+    const Result<EepromImage> device = backupDevice(connection, progress);
+    if (!device) return device.error();
+    VerifyReport report;
+    report.deviceBlocks = int(device->blocks.size());
+    report.imageBlocks = int(image.blocks.size());
+    report.differingBlocks = differingBlocks(device->blocks, image.blocks);
+    report.identityMismatch = identityMismatch(image.device, device->device);
+    report.equal = report.differingBlocks.isEmpty();
+    return report;
+}
+
+}  // namespace cambench::usecases

@@ -1,0 +1,195 @@
+#include "read_everything.h"
+
+#include "model/camcon/data_validation.h"
+
+#include <QDateTime>
+
+namespace cambench::usecases {
+
+namespace {
+
+using comm::CamConCapability;
+using comm::CamConDevice;
+
+// PLC areas with the setting that says how many networks each has.
+struct PlcArea {
+    int area;
+    const char* countKey;
+};
+const PlcArea kPlcAreas[] = {
+    {PlcNetwork::O, "plcOutputs"},
+    {PlcNetwork::P, "inputCount"},
+    {PlcNetwork::M, "plcFlags"},
+    {PlcNetwork::X, "plcXFlags"},
+};
+
+QDateTime now() {
+    return QDateTime::currentDateTimeUtc();
+}
+
+// Reads the parts in turn, counting steps on one bar.
+class Reader {
+public:
+    Reader(CamConDevice& connection, const DeviceInfo& device, const UseCaseProgress& progress)
+        : m_connection(connection), m_device(device), m_progress(progress) {}
+
+    Result<ReadEverything> run() {
+        Project& project = m_result.project;
+        project.device = m_device;
+        project.readAt.parts.insert(ProjectPart::Device, now());
+        // Settings first: they say how many PLC networks there are.
+        if (const Status ok = readSettings(); !ok) return ok.error();
+        const QMap<int, int> plcCounts = m_connection.has(CamConCapability::PlcNetworks)
+                                             ? plcNetworkCounts(project.settings)
+                                             : QMap<int, int>();
+        qint64 plcTotal = 0;
+        for (const int count : plcCounts) plcTotal += count;
+        const bool names = m_connection.has(CamConCapability::OutputNames);
+        m_total = 1 + qint64(m_device.programs) * m_device.outputs + m_device.deadTimeOutputs +
+                  (names ? m_device.outputs : 0) + 1 + plcTotal;
+        m_done = 1;
+        for (int program = 0; program < m_device.programs; ++program) {
+            if (const Status ok = readProgram(program); !ok) return ok.error();
+        }
+        if (const Status ok = readDeadTimes(); !ok) return ok.error();
+        if (const Status ok = readOutputNames(names); !ok) return ok.error();
+        if (const Status ok = readUsers(); !ok) return ok.error();
+        if (const Status ok = readPlcNetworks(plcCounts); !ok) return ok.error();
+        m_progress.report(m_total, m_total, QStringLiteral("read everything"));
+        return m_result;
+    }
+
+private:
+    Status step(qint64 steps, const QString& text) {
+        if (m_progress.cancelled()) return Error::cancelled();
+        m_progress.report(m_done, m_total, text);
+        m_done += steps;
+        return success();
+    }
+
+    Status readSettings() {
+        m_progress.report(0, 1, QStringLiteral("reading the settings"));
+        QStringList unknown;
+        Result<SystemSettings> settings = m_connection.readSettings(&unknown);
+        if (!settings) return settings.error();
+        m_result.project.settings = *settings;
+        m_result.project.readAt.parts.insert(ProjectPart::Settings, now());
+        for (const QString& page : unknown) {
+            m_result.skipped << QStringLiteral(
+                                    "Settings: the device does not know %1; they are "
+                                    "not in the project.")
+                                    .arg(page);
+        }
+        return success();
+    }
+
+    Status readProgram(int program) {
+        if (m_progress.cancelled()) return Error::cancelled();
+        const QString text = QStringLiteral("reading program %1").arg(program);
+        const UseCaseProgress part = m_progress.slice(m_done, m_device.outputs, m_total);
+        Result<CamProgram> read =
+            m_connection.readProgram(program, m_device.outputs, part.forDevice(text));
+        if (!read) return read.error();
+        m_done += m_device.outputs;
+        m_result.project.programs << *read;
+        m_result.project.readAt.programs.insert(program, now());
+        return success();
+    }
+
+    Status readDeadTimes() {
+        if (const Status ok = step(m_device.deadTimeOutputs, QStringLiteral("reading dead times"));
+            !ok)
+            return ok;
+        Result<DeadTimes> deadTimes = m_connection.readDeadTimes(m_device.deadTimeOutputs);
+        if (!deadTimes) return deadTimes.error();
+        m_result.project.deadTimes = *deadTimes;
+        m_result.project.readAt.parts.insert(ProjectPart::DeadTimes, now());
+        return success();
+    }
+
+    Status readOutputNames(bool reachable) {
+        if (!reachable) {
+            skip(QStringLiteral("Output names"), CamConCapability::OutputNames);
+            return success();
+        }
+        QMap<int, QString> names;
+        for (int output = 1; output <= m_device.outputs; ++output) {
+            if (const Status ok = step(1, QStringLiteral("reading output names")); !ok) return ok;
+            const Result<QString> name = m_connection.readOutputName(output);
+            if (!name && name.error().kind == ErrorKind::NotUnderstood) {
+                m_result.skipped << QStringLiteral("Output names: %1").arg(name.error().message);
+                return success();
+            }
+            if (!name) return name.error();
+            if (!name->isEmpty()) names.insert(output, *name);
+        }
+        m_result.project.names.outputs = names;
+        m_result.project.readAt.parts.insert(ProjectPart::OutputNames, now());
+        return success();
+    }
+
+    Status readUsers() {
+        if (const Status ok = step(1, QStringLiteral("reading users")); !ok) return ok;
+        if (!m_connection.has(CamConCapability::Users)) {
+            skip(QStringLiteral("Users"), CamConCapability::Users);
+            return success();
+        }
+        Result<QList<User>> users = m_connection.readUsers();
+        if (!users) return users.error();
+        m_result.project.users = *users;
+        m_result.project.readAt.parts.insert(ProjectPart::Users, now());
+        return success();
+    }
+
+    Status readPlcNetworks(const QMap<int, int>& counts) {
+        if (!m_connection.has(CamConCapability::PlcNetworks)) {
+            skip(QStringLiteral("PLC networks"), CamConCapability::PlcNetworks);
+            return success();
+        }
+        QList<PlcNetwork> networks;
+        for (auto it = counts.cbegin(); it != counts.cend(); ++it) {
+            for (int number = 0; number < *it; ++number) {
+                if (const Status ok = step(1, QStringLiteral("reading PLC networks")); !ok)
+                    return ok;
+                const Result<PlcNetwork> network = m_connection.readPlcNetwork(it.key(), number);
+                if (!network) return network.error();
+                // Empty networks are the default: the project lists the used ones.
+                if (!network->isEmpty()) networks << *network;
+            }
+        }
+        m_result.project.plcNetworks = networks;
+        m_result.project.readAt.parts.insert(ProjectPart::PlcNetworks, now());
+        return success();
+    }
+
+    void skip(const QString& part, CamConCapability capability) {
+        m_result.skipped << QStringLiteral("%1: %2").arg(part, m_connection.lacks(capability));
+    }
+
+    CamConDevice& m_connection;
+    const DeviceInfo& m_device;
+    const UseCaseProgress& m_progress;
+    ReadEverything m_result;
+    qint64 m_done = 0;
+    qint64 m_total = 1;
+};
+
+}  // namespace
+
+Result<ReadEverything> readEverything(CamConDevice& connection, const DeviceInfo& device,
+                                      const UseCaseProgress& progress) {
+    return Reader(connection, device, progress).run();
+}
+
+QMap<int, int> plcNetworkCounts(const SystemSettings& settings) {
+    QMap<int, int> counts;
+    for (const PlcArea& area : kPlcAreas) {
+        const QString key = QLatin1String(area.countKey);
+        if (!settings.contains(key)) continue;
+        counts.insert(area.area, int(qBound(qint64(0), settings.value(key).toLongLong(),
+                                            qint64(kMaxPlcNumber + 1))));
+    }
+    return counts;
+}
+
+}  // namespace cambench::usecases

@@ -1,0 +1,86 @@
+#include "value_text.h"
+
+#include "model/camcon/plc_file.h"
+
+#include <QStringList>
+
+#include <algorithm>
+
+namespace cambench::usecases {
+
+QString camsText(const Track& track) {
+    if (track.cams.isEmpty()) return QStringLiteral("no cams");
+    QStringList cams;
+    for (const Cam& cam : track.cams) cams << QStringLiteral("%1..%2").arg(cam.on).arg(cam.off);
+    return cams.join(QLatin1String(", "));
+}
+
+QString deadTimeText(qint32 tenthsMs) {
+    return QStringLiteral("%1 ms").arg(QString::number(tenthsMs / 10.0, 'f', 1));
+}
+
+QString nameText(const QString& name) {
+    return name.isEmpty() ? QStringLiteral("no name") : QLatin1Char('"') + name + QLatin1Char('"');
+}
+
+QString settingsText(const SystemSettings& values) {
+    QStringList parts;
+    for (auto it = values.cbegin(); it != values.cend(); ++it) {
+        const SettingSpec* spec = findSetting(it.key());
+        const QString value = spec && spec->kind != SettingKind::Text
+                                  ? formatSettingValue(*spec, it->toLongLong())
+                                  : QLatin1Char('"') + it->toString() + QLatin1Char('"');
+        parts << QStringLiteral("%1=%2").arg(it.key(), value);
+    }
+    return parts.isEmpty() ? QStringLiteral("no values") : parts.join(QLatin1String(", "));
+}
+
+QString userText(const std::optional<User>& user) {
+    if (!user) return QStringLiteral("no such user");
+    const int outputs =
+        int(std::count(user->outputAccess.cbegin(), user->outputAccess.cend(), true));
+    return QStringLiteral("user %1 with rights 0x%2 and %3")
+        .arg(nameText(user->name))
+        .arg(user->rights, 2, 16, QLatin1Char('0'))
+        .arg(user->allOutputs ? QStringLiteral("all outputs")
+                              : QStringLiteral("%1 outputs").arg(outputs));
+}
+
+QString plcText(const PlcNetwork& network) {
+    const int used = int(std::count_if(network.symbols.cbegin(), network.symbols.cend(),
+                                       [](quint16 symbol) { return symbol != 0; }));
+    return QStringLiteral("value %1, reset 0x%2, %3 symbols set")
+        .arg(network.value)
+        .arg(network.reset, 4, 16, QLatin1Char('0'))
+        .arg(used);
+}
+
+QString trackLabel(int program, int output) {
+    return QStringLiteral("program %1, output %2").arg(program).arg(output);
+}
+
+QString deadTimeLabel(int output) {
+    return QStringLiteral("dead time of output %1").arg(output);
+}
+
+QString outputNameLabel(int output) {
+    return QStringLiteral("name of output %1").arg(output);
+}
+
+QString programNameLabel(int program) {
+    return QStringLiteral("name of program %1").arg(program);
+}
+
+QString settingsLabel(const QString& group, const SystemSettings& keys) {
+    return QStringLiteral("settings %1 (%2)").arg(group, keys.keys().join(QLatin1String(", ")));
+}
+
+QString userLabel(const QString& name) {
+    return QStringLiteral("user %1").arg(nameText(name));
+}
+
+QString plcLabel(const PlcNetwork& network) {
+    return QStringLiteral("PLC network %1%2").arg(plcAreaLetter(network.area)).arg(network.number);
+}
+
+}  // namespace cambench::usecases

@@ -1,0 +1,33 @@
+#pragma once
+
+// Device values as a person reads them in a write report (not part of the
+// layer's API).
+
+#include "model/camcon/cam_program.h"
+#include "model/camcon/plc_network.h"
+#include "model/camcon/system_settings.h"
+#include "model/camcon/user.h"
+
+#include <QString>
+
+#include <optional>
+
+namespace cambench::usecases {
+
+QString camsText(const Track& track);                // "10..90, 180..270" or "no cams"
+QString deadTimeText(qint32 tenthsMs);               // "32.1 ms"
+QString nameText(const QString& name);               // "\"Pusher\"" or "no name"
+QString settingsText(const SystemSettings& values);  // "cableLength=17, ..."
+QString userText(const std::optional<User>& user);   // never the number
+QString plcText(const PlcNetwork& network);          // "value 2500, reset 0, 2 symbols"
+
+// Labels of plan items.
+QString trackLabel(int program, int output);  // "program 0, output 1"
+QString deadTimeLabel(int output);            // "dead time of output 5"
+QString outputNameLabel(int output);          // "name of output 4"
+QString programNameLabel(int program);        // "name of program 3"
+QString settingsLabel(const QString& group, const SystemSettings& keys);
+QString userLabel(const QString& name);       // "user \"Supervisor\""
+QString plcLabel(const PlcNetwork& network);  // "PLC network M3"
+
+}  // namespace cambench::usecases

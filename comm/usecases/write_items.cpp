@@ -1,0 +1,423 @@
+#include "write_items.h"
+
+#include "plan_check.h"
+#include "read_everything.h"
+#include "value_text.h"
+
+#include "model/camcon/cam_validation.h"
+
+#include <functional>
+
+namespace cambench::usecases {
+
+namespace {
+
+using comm::CamConDevice;
+
+constexpr int kUserAccessOutputs = 256;
+
+// How to read, write and compare one kind of value.
+template <class T>
+struct ValueOps {
+    std::function<Result<T>()> read;
+    std::function<Status(const T& before)> write;
+    std::function<bool(const T&, const T&)> same;
+    std::function<QString(const T&)> text;
+};
+
+bool stopsTheRun(const Error& error) {
+    return error.kind == ErrorKind::Communication || error.kind == ErrorKind::Cancelled;
+}
+
+Track normalised(Track track) {
+    normaliseTrack(track);
+    return track;
+}
+
+bool sameCams(const Track& a, const Track& b) {
+    return normalised(a).cams == normalised(b).cams;
+}
+
+// Numbers as qint64, texts as QString: values read and values loaded from
+// files compare equal when they mean the same.
+QVariant canonical(const QString& key, const QVariant& value) {
+    const SettingSpec* spec = findSetting(key);
+    if (spec && spec->kind == SettingKind::Text) return value.toString();
+    return value.toLongLong();
+}
+
+// The values of `settings` for the keys of `keys` that it has.
+SystemSettings onlyKeys(const SystemSettings& settings, const SystemSettings& keys) {
+    SystemSettings result;
+    for (auto it = keys.cbegin(); it != keys.cend(); ++it) {
+        if (settings.contains(it.key()))
+            result.insert(it.key(), canonical(it.key(), settings.value(it.key())));
+    }
+    return result;
+}
+
+bool sameSettings(const SystemSettings& a, const SystemSettings& b) {
+    return onlyKeys(a, a) == onlyKeys(b, b);
+}
+
+User withFullAccess(User user) {
+    while (user.outputAccess.size() < kUserAccessOutputs) user.outputAccess.append(false);
+    return user;
+}
+
+bool sameUser(const std::optional<User>& a, const std::optional<User>& b) {
+    if (!a || !b) return !a && !b;
+    return withFullAccess(*a) == withFullAccess(*b);
+}
+
+const User* findUser(const QList<User>& users, const QString& number) {
+    if (number.isEmpty()) return nullptr;
+    for (const User& user : users) {
+        if (user.number == number) return &user;
+    }
+    return nullptr;
+}
+
+// Resolves users without a number (projects saved without them): they keep
+// the number of the device's user with the same name.
+void resolveUserNumbers(WritePlan& plan) {
+    const QList<User>& onDevice = *plan.usersOnDevice;
+    for (UserWrite& write : plan.users) {
+        if (!write.wanted || !write.wanted->number.isEmpty()) continue;
+        const User* named = nullptr;
+        if (const User* byNumber = findUser(onDevice, write.deviceNumber)) named = byNumber;
+        for (const User& user : onDevice) {
+            if (!named && user.name == write.wanted->name) named = &user;
+        }
+        if (!named) continue;  // the check refuses it
+        write.wanted->number = named->number;
+        if (write.deviceNumber.isEmpty()) write.deviceNumber = named->number;
+    }
+}
+
+class Writer {
+public:
+    Writer(CamConDevice& connection, const WritePlan& plan, const UseCaseProgress& progress)
+        : m_connection(connection),
+          m_plan(plan),
+          m_progress(progress),
+          m_settings(plan.settingsOnDevice.value_or(SystemSettings())),
+          m_users(plan.usersOnDevice.value_or(QList<User>())) {}
+
+    WriteReport run() {
+        WriteReport report;
+        m_total = m_plan.itemCount();
+        for (const SettingsWrite& group : m_plan.settings) report.settings << writeSettings(group);
+        for (const NameWrite& name : m_plan.programNames)
+            report.programNames << writeName(name, true);
+        for (const TrackWrite& track : m_plan.tracks) report.tracks << writeTrack(track);
+        fillDeadTimeBeliefs();
+        for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
+            report.deadTimes << writeDeadTime(deadTime);
+        for (const NameWrite& name : m_plan.outputNames)
+            report.outputNames << writeName(name, false);
+        for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
+        for (const PlcWrite& network : m_plan.plcNetworks)
+            report.plcNetworks << writePlcNetwork(network);
+        m_progress.report(m_total, m_total, QStringLiteral("written"));
+        return report;
+    }
+
+private:
+    // The common course of one item: belief or read, compare, write, and
+    // after a failure read back and tell the state as it is.
+    template <class T>
+    ItemOutcome<T> writeItem(const QString& label, const T& wanted, std::optional<T> before,
+                             const ValueOps<T>& ops) {
+        ItemOutcome<T> outcome;
+        outcome.label = label;
+        m_progress.report(m_done++, m_total, label);
+        if (m_progress.cancelled() && !m_stop) m_stop = Error::cancelled();
+        if (m_stop) {
+            outcome.error = *m_stop;
+            return outcome;  // NotSent
+        }
+        if (!before) {
+            const Result<T> read = ops.read();
+            if (!read) {
+                outcome.error =
+                    inContext(QStringLiteral("reading it before the write"), read.error());
+                if (stopsTheRun(read.error())) stopAfter(label, read.error());
+                return outcome;  // NotSent: nothing was written
+            }
+            before = *read;
+        }
+        if (ops.same(*before, wanted)) {
+            outcome.state = WriteState::Unchanged;
+            outcome.actual = wanted;
+            outcome.actualText = ops.text(wanted);
+            return outcome;
+        }
+        const Status written = ops.write(*before);
+        if (written) {
+            outcome.state = WriteState::Written;
+            outcome.actual = wanted;
+            outcome.actualText = ops.text(wanted);
+            return outcome;
+        }
+        outcome.error = written.error();
+        if (written.error().kind == ErrorKind::NotUnderstood) {
+            // ":Z": the device does not know the command, so it did nothing.
+            outcome.state = WriteState::Failed;
+            outcome.actual = *before;
+            outcome.actualText = ops.text(*before);
+            return outcome;
+        }
+        const Result<T> after = ops.read();
+        if (!after) {
+            outcome.state = WriteState::Unknown;
+            outcome.error.message +=
+                QStringLiteral(" Reading it back failed too: %1").arg(after.error().message);
+            if (stopsTheRun(after.error())) stopAfter(label, after.error());
+            return outcome;
+        }
+        outcome.actual = *after;
+        outcome.actualText = ops.text(*after);
+        if (ops.same(*after, *before)) {
+            outcome.state = WriteState::Failed;
+        } else if (ops.same(*after, wanted)) {
+            // The reply said no (or was lost), the device says yes.
+            outcome.state = WriteState::Written;
+            outcome.note =
+                QStringLiteral("read back after the error \"%1\"").arg(outcome.error.message);
+            outcome.error = Error();
+        } else {
+            outcome.state = WriteState::ChangedThoughFailed;
+            outcome.actualText += QStringLiteral(" (before: %1)").arg(ops.text(*before));
+        }
+        return outcome;
+    }
+
+    void stopAfter(const QString& label, const Error& error) {
+        if (error.kind == ErrorKind::Cancelled) {
+            m_stop = Error::cancelled();
+            return;
+        }
+        m_stop = Error{error.kind,
+                       QStringLiteral("not sent: the connection failed at %1; nothing after it was "
+                                      "sent")
+                           .arg(label),
+                       0};
+    }
+
+    static Error inContext(const QString& step, const Error& error) {
+        Error result = error;
+        result.message = QStringLiteral("%1: %2").arg(step, error.message);
+        return result;
+    }
+
+    ItemOutcome<SystemSettings> writeSettings(const SettingsWrite& group) {
+        ValueOps<SystemSettings> ops;
+        const SystemSettings keys = group.wanted;
+        ops.read = [this, keys]() -> Result<SystemSettings> {
+            Result<SystemSettings> read = m_connection.readSettings();
+            if (!read) return read.error();
+            m_settings = *read;
+            return onlyKeys(*read, keys);
+        };
+        ops.write = [this, &group](const SystemSettings&) -> Status {
+            const Status written = m_connection.writeSettings(group.wanted, m_settings);
+            if (written) {
+                for (auto it = group.wanted.cbegin(); it != group.wanted.cend(); ++it)
+                    m_settings.insert(it.key(), *it);
+            }
+            return written;
+        };
+        ops.same = sameSettings;
+        ops.text = settingsText;
+        return writeItem<SystemSettings>(settingsLabel(group.group, group.wanted), group.wanted,
+                                         onlyKeys(m_settings, keys), ops);
+    }
+
+    // Program names (0-based) and output names (1-based) take the same course.
+    ItemOutcome<QString> writeName(const NameWrite& name, bool program) {
+        ValueOps<QString> ops;
+        ops.read = [this, &name, program] {
+            return program ? m_connection.readProgramName(name.number)
+                           : m_connection.readOutputName(name.number);
+        };
+        ops.write = [this, &name, program](const QString&) {
+            return program ? m_connection.writeProgramName(name.number, name.wanted)
+                           : m_connection.writeOutputName(name.number, name.wanted);
+        };
+        ops.same = [](const QString& a, const QString& b) { return a == b; };
+        ops.text = nameText;
+        const QString label =
+            program ? programNameLabel(name.number) : outputNameLabel(name.number);
+        return writeItem<QString>(label, name.wanted, name.believed, ops);
+    }
+
+    ItemOutcome<Track> writeTrack(const TrackWrite& write) {
+        const int output = write.wanted.output;
+        std::optional<Track> found;  // the track as read before the write
+        ValueOps<Track> ops;
+        ops.read = [this, &write, output, &found]() -> Result<Track> {
+            Result<Track> read = m_connection.readTrack(write.program, output);
+            if (read && !found) found = *read;
+            return read;
+        };
+        ops.write = [this, &write](const Track& before) {
+            return m_connection.writeTrackFrom(write.program, write.wanted, before);
+        };
+        ops.same = sameCams;
+        ops.text = [](const Track& track) { return camsText(normalised(track)); };
+        // Always read first: the differing cams are what is sent.
+        ItemOutcome<Track> outcome =
+            writeItem<Track>(trackLabel(write.program, output), write.wanted, std::nullopt, ops);
+        if (write.believed && found && !sameCams(*write.believed, *found)) {
+            // Changed on the device since the caller read it: say so.
+            const QString note =
+                QStringLiteral("the device held %1, not %2 as last read")
+                    .arg(camsText(normalised(*found)), camsText(normalised(*write.believed)));
+            outcome.note =
+                outcome.note.isEmpty() ? note : outcome.note + QStringLiteral("; ") + note;
+        }
+        return outcome;
+    }
+
+    // Dead times are read for all outputs up to the highest one at once:
+    // the device has no cheaper way to read one of them.
+    void fillDeadTimeBeliefs() {
+        int highest = 0;
+        for (const DeadTimeWrite& write : m_plan.deadTimes) {
+            if (!write.believed) highest = std::max(highest, write.output);
+        }
+        if (highest == 0 || m_stop) return;
+        const Result<DeadTimes> read = m_connection.readDeadTimes(highest);
+        if (read) m_deadTimes = *read;
+    }
+
+    ItemOutcome<qint32> writeDeadTime(const DeadTimeWrite& write) {
+        ValueOps<qint32> ops;
+        ops.read = [this, &write]() -> Result<qint32> {
+            const Result<DeadTimes> read = m_connection.readDeadTimes(write.output);
+            if (!read) return read.error();
+            return read->value(write.output, 0);
+        };
+        ops.write = [this, &write](const qint32&) {
+            return m_connection.writeDeadTime(write.output, write.wanted);
+        };
+        ops.same = [](const qint32& a, const qint32& b) { return a == b; };
+        ops.text = deadTimeText;
+        std::optional<qint32> before = write.believed;
+        if (!before && m_deadTimes) before = m_deadTimes->value(write.output, 0);
+        return writeItem<qint32>(deadTimeLabel(write.output), write.wanted, before, ops);
+    }
+
+    ItemOutcome<std::optional<User>> writeUser(const UserWrite& write) {
+        using MaybeUser = std::optional<User>;
+        const User* current = findUser(m_users, write.deviceNumber);
+        const MaybeUser before = current ? MaybeUser(*current) : MaybeUser();
+        // Where to look for the user after the write: its new number, else the old one.
+        const QString number = write.wanted ? write.wanted->number : write.deviceNumber;
+        ValueOps<MaybeUser> ops;
+        ops.read = [this, number, &write]() -> Result<MaybeUser> {
+            const Result<QList<User>> users = m_connection.readUsers();
+            if (!users) return users.error();
+            m_users = *users;
+            if (const User* user = findUser(m_users, number)) return MaybeUser(*user);
+            if (const User* user = findUser(m_users, write.deviceNumber)) return MaybeUser(*user);
+            return MaybeUser();
+        };
+        ops.write = [this, &write](const MaybeUser&) -> Status {
+            const Status done = write.wanted
+                                    ? m_connection.writeUser(write.deviceNumber, *write.wanted)
+                                    : m_connection.deleteUser(write.deviceNumber);
+            if (done) applyToUsers(write);
+            return done;
+        };
+        ops.same = sameUser;
+        ops.text = userText;
+        const QString name = write.wanted ? write.wanted->name : before ? before->name : QString();
+        return writeItem<MaybeUser>(userLabel(name), write.wanted, before, ops);
+    }
+
+    void applyToUsers(const UserWrite& write) {
+        for (int i = 0; i < m_users.size(); ++i) {
+            if (m_users.at(i).number != write.deviceNumber || write.deviceNumber.isEmpty())
+                continue;
+            if (write.wanted)
+                m_users[i] = *write.wanted;
+            else
+                m_users.removeAt(i);
+            return;
+        }
+        if (write.wanted) m_users.append(*write.wanted);
+    }
+
+    ItemOutcome<PlcNetwork> writePlcNetwork(const PlcWrite& write) {
+        ValueOps<PlcNetwork> ops;
+        ops.read = [this, &write] {
+            return m_connection.readPlcNetwork(write.wanted.area, write.wanted.number);
+        };
+        ops.write = [this, &write](const PlcNetwork&) {
+            return m_connection.writePlcNetwork(write.wanted);
+        };
+        ops.same = [](const PlcNetwork& a, const PlcNetwork& b) { return a == b; };
+        ops.text = plcText;
+        return writeItem<PlcNetwork>(plcLabel(write.wanted), write.wanted, write.believed, ops);
+    }
+
+    CamConDevice& m_connection;
+    const WritePlan& m_plan;
+    const UseCaseProgress& m_progress;
+    SystemSettings m_settings;  // the device's settings as known now
+    QList<User> m_users;        // the device's users as known now
+    std::optional<DeadTimes> m_deadTimes;
+    std::optional<Error> m_stop;  // set: the remaining items are not sent
+    qint64 m_done = 0;
+    qint64 m_total = 0;
+};
+
+bool needsSettings(const WritePlan& plan) {
+    return !plan.settings.isEmpty() || !plan.tracks.isEmpty() || !plan.plcNetworks.isEmpty();
+}
+
+// The settings as they will be when the plan's settings are written
+// first: they decide the axis type and the PLC counts the rest is checked
+// against.
+SystemSettings settingsAfter(const WritePlan& plan) {
+    SystemSettings settings = plan.settingsOnDevice.value_or(SystemSettings());
+    for (const SettingsWrite& group : plan.settings) {
+        for (auto it = group.wanted.cbegin(); it != group.wanted.cend(); ++it)
+            settings.insert(it.key(), *it);
+    }
+    return settings;
+}
+
+}  // namespace
+
+Result<WriteReport> writeItems(CamConDevice& connection, const DeviceInfo& device,
+                               const WritePlan& plan, const UseCaseProgress& progress) {
+    WritePlan resolved = plan;
+    if (!resolved.settingsOnDevice && needsSettings(plan)) {
+        progress.report(0, plan.itemCount(), QStringLiteral("reading the settings"));
+        Result<SystemSettings> settings = connection.readSettings();
+        if (!settings) return settings.error();
+        resolved.settingsOnDevice = *settings;
+    }
+    if (!resolved.usersOnDevice && !plan.users.isEmpty()) {
+        progress.report(0, plan.itemCount(), QStringLiteral("reading the users"));
+        Result<QList<User>> users = connection.readUsers();
+        if (!users) return users.error();
+        resolved.usersOnDevice = *users;
+    }
+    if (resolved.usersOnDevice) resolveUserNumbers(resolved);
+
+    CheckContext context;
+    const SystemSettings after = settingsAfter(resolved);
+    context.rotary = isRotaryAxis(after);
+    context.plcNetworksPerArea = plcNetworkCounts(after);
+    context.usersOnDevice = resolved.usersOnDevice.value_or(QList<User>());
+    const PlanCheck check = checkPlan(resolved, device, context);
+    if (!check.fits()) return check.refusal(device);
+    if (progress.cancelled()) return Error::cancelled();
+    return Writer(connection, resolved, progress).run();
+}
+
+}  // namespace cambench::usecases

@@ -1,0 +1,108 @@
+#pragma once
+
+// What the one write path (write_items.h) is asked to write. Every item
+// carries the value wanted on the device and, when the caller knows it, the
+// value the caller believes the device holds (from its last read). GUI and
+// CLI build plans; writeItems() checks and writes them.
+
+#include "model/camcon/cam_program.h"
+#include "model/camcon/plc_network.h"
+#include "model/camcon/project_file.h"
+#include "model/camcon/system_settings.h"
+#include "model/camcon/user.h"
+
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+namespace cambench::usecases {
+
+// The cams of one output in one program; the device's track becomes
+// exactly `wanted` (an empty track deletes every cam of that output).
+// `believed` is informative only: the track is always read right before it
+// is written, so that only the cams that differ are sent.
+struct TrackWrite {
+    int program = 0;
+    Track wanted;
+    std::optional<Track> believed;
+};
+
+// Dead-time compensation of one output (1-based), in 0.1 ms steps.
+struct DeadTimeWrite {
+    int output = 1;
+    qint32 wanted = 0;
+    std::optional<qint32> believed;
+};
+
+// An output name (number = output, 1-based) or a program name (number =
+// program, 0-based).
+struct NameWrite {
+    int number = 0;
+    QString wanted;
+    std::optional<QString> believed;
+};
+
+// One group of settings (SettingSpec::group, e.g. "encoder"): `wanted`
+// holds the keys to set. Keys whose wanted value equals the device's are
+// left alone; read-only keys are refused by the check.
+struct SettingsWrite {
+    QString group;
+    SystemSettings wanted;
+};
+
+// A user: new (deviceNumber empty), changed, or deleted (wanted empty).
+// `deviceNumber` is the number the user has on the device now. A wanted
+// user without a number (a project saved without user numbers) keeps the
+// number of the device's user with the same name. What the device holds
+// before is WritePlan::usersOnDevice (read by writeItems when absent: the
+// check needs every user for duplicate numbers anyway).
+struct UserWrite {
+    QString deviceNumber;
+    std::optional<User> wanted;
+};
+
+// One PLC network; identified by its area and number.
+struct PlcWrite {
+    PlcNetwork wanted;
+    std::optional<PlcNetwork> believed;
+};
+
+// Everything one write is to do. Items are written in this order:
+// settings, program names, tracks, dead times, output names, users, PLC
+// networks (settings first: the axis type decides which cams are valid).
+struct WritePlan {
+    QList<SettingsWrite> settings;
+    QList<NameWrite> programNames;
+    QList<TrackWrite> tracks;
+    QList<DeadTimeWrite> deadTimes;
+    QList<NameWrite> outputNames;
+    QList<UserWrite> users;
+    QList<PlcWrite> plcNetworks;
+
+    // What the caller read from the device: the settings (passed on as the
+    // device's values, so nothing is read twice; also gives the axis type
+    // and the PLC counts for the check) and the users (for the check of
+    // duplicate numbers). Read by writeItems when absent and needed.
+    std::optional<SystemSettings> settingsOnDevice;
+    std::optional<QList<User>> usersOnDevice;
+
+    int itemCount() const;
+    bool isEmpty() const { return itemCount() == 0; }
+};
+
+// Splits `wanted` into one SettingsWrite per settings group, in the order
+// of settingSpecs(). Keys that are no setting go into a group "unknown"
+// (which the check refuses).
+QList<SettingsWrite> settingsGroups(const SystemSettings& wanted);
+
+// The plan that makes the device hold `wanted` (a project), with the
+// beliefs taken from `onDevice` (a project read from the device, e.g. by
+// readEverything; parts it lacks are unknown). A program in `wanted`
+// replaces the whole program: every output with cams in `wanted` gets its
+// track, and every other output 1..onDevice.device.outputs an empty one.
+// Users without a number in `wanted` keep the device's number of the user
+// with the same name; device users the project does not name are left.
+WritePlan planFromProject(const Project& wanted, const Project& onDevice);
+
+}  // namespace cambench::usecases
