@@ -81,8 +81,11 @@ int runRestore(CliSession& session, CommandArgs& args) {
     if (!image) return reportError(image.error());
 
     const Result<DeviceInfo> device = session.run<DeviceInfo>(
-        QStringLiteral("identify"),
-        [](CamConDevice& client, JobContext&) { return client.readInfo(); });
+        QStringLiteral("identify"), [](CamConDevice& client, JobContext&) -> Result<DeviceInfo> {
+            if (!client.has(comm::CamConCapability::EepromBackup))
+                return client.missing(comm::CamConCapability::EepromBackup);
+            return client.readInfo();
+        });
     if (!device) return reportError(device.error());
     const QStringList mismatch = identityMismatch(image->device, *device);
     if (!mismatch.isEmpty() && !force) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "sim_device.h"
 #include "sim_endpoint.h"
 #include "sim_pacer.h"
 #include "sim_port_config.h"

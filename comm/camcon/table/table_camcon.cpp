@@ -66,7 +66,10 @@ Result<QString> TableCamCon::readOutputName(int) {
     return missing(CamConCapability::OutputNames);
 }
 
-Status TableCamCon::writeOutputName(int, const QString&) {
+// A device without names holds the empty name: writing it changes nothing
+// and is no failure (a program is written with its name along).
+Status TableCamCon::writeOutputName(int, const QString& name) {
+    if (name.isEmpty()) return success();
     return missing(CamConCapability::OutputNames);
 }
 
@@ -74,7 +77,8 @@ Result<QString> TableCamCon::readProgramName(int) {
     return missing(CamConCapability::OutputNames);
 }
 
-Status TableCamCon::writeProgramName(int, const QString&) {
+Status TableCamCon::writeProgramName(int, const QString& name) {
+    if (name.isEmpty()) return success();
     return missing(CamConCapability::OutputNames);
 }
 

@@ -100,6 +100,10 @@ private:
     Result<int> trackArea(int output) const;
     // The highest cam (or base point) number the variant reaches.
     int reachablePairs() const;
+    // The most cams (or base points) written to one area: without the count
+    // word (e38) one reachable place stays empty, so that a read can tell
+    // the end of the track from places it cannot reach.
+    int writablePairs() const;
 
     std::unique_ptr<TableLink> m_ownLink;
     TableLink& m_link;

@@ -37,6 +37,11 @@ int TableCamCon::reachablePairs() const {
     return qMin(kMaxTrackCams, (m_link.reachableWords() - kFirstCamWord) / 2);
 }
 
+int TableCamCon::writablePairs() const {
+    const bool countReachable = m_link.reachableWords() > tableWord(u"track.cam_count");
+    return countReachable ? reachablePairs() : reachablePairs() - 1;
+}
+
 Status TableCamCon::selectProgrammingProgram(int program) {
     const Status selected =
         m_link.writeWord(kStatusArea, tableWord(u"status.programming_program"), program);
@@ -162,13 +167,14 @@ Status TableCamCon::writeTrack(int program, const Track& track) {
     const QString where = QStringLiteral("writing %1").arg(trackText(program, track.output));
     const Result<int> area = trackArea(track.output);
     if (!area) return inContext(where, area.error());
-    if (track.cams.size() > reachablePairs()) {
-        return Error::usage(QStringLiteral("%1: %2 cams, but %3 reaches cams 1..%4 only; use "
-                                           "3964R n96 (--protocol 3964r-n96)")
+    if (track.cams.size() > writablePairs() && writablePairs() < kMaxTrackCams) {
+        return Error::usage(QStringLiteral("%1: %2 cams, but over %3 a track can hold at most %4 "
+                                           "(the places it reaches); use 3964R n96 (--protocol "
+                                           "3964r-n96)")
                                 .arg(where)
                                 .arg(track.cams.size())
                                 .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name))
-                                .arg(reachablePairs()));
+                                .arg(writablePairs()));
     }
     Track sorted = track;
     normaliseTrack(sorted);

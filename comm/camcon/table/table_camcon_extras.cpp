@@ -37,12 +37,12 @@ Status TableCamCon::writeAnalogueCams(const AnalogueCamTrack& track) {
                                 .arg(what)
                                 .arg(kAnalogueOutputs));
     }
-    if (track.points.size() > reachablePairs()) {
-        return Error::usage(QStringLiteral("%1: %2 base points, but %3 reaches %4")
+    if (track.points.size() > writablePairs()) {
+        return Error::usage(QStringLiteral("%1: %2 base points, but over %3 at most %4 fit")
                                 .arg(what)
                                 .arg(track.points.size())
                                 .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name))
-                                .arg(reachablePairs()));
+                                .arg(writablePairs()));
     }
     // The cam rules of manual 3.1 read for base points too (provisional,
     // README): from place 1 with at least two pairs the whole set is replaced.
