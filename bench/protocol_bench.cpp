@@ -77,31 +77,31 @@ void benchProtocols(const QList<int>& bauds) {
     QList<Track> tracks;
     for (int output = 1; output <= kTracks; ++output) {
         Track track{output, {}};
-        for (int i = 0; i < kCamsPerTrack; ++i) track.cams.append({qint32(18 * i + 2), qint32(18 * i + 11)});
+        for (int i = 0; i < kCamsPerTrack; ++i)
+            track.cams.append({qint32(18 * i + 2), qint32(18 * i + 11)});
         tracks.append(track);
     }
     for (int baud : bauds) {
-        for (const char* protocol :
-             {"standard", "3964r-n96", "3964r-e38"}) {
+        for (const char* protocol : {"standard", "3964r-n96", "3964r-e38"}) {
             int bits = 10;
             int cams = 0;
-            const Run read = measure(protocol, baud,
-                                     [&](CamConDevice& device) {
-                                         Result<CamProgram> program = device.readProgram(0, kTracks);
-                                         if (!program) fail(program.error());
-                                         for (const Track& track : program->tracks)
-                                             cams += int(track.cams.size());
-                                     },
-                                     &bits);
+            const Run read = measure(
+                protocol, baud,
+                [&](CamConDevice& device) {
+                    Result<CamProgram> program = device.readProgram(0, kTracks);
+                    if (!program) fail(program.error());
+                    for (const Track& track : program->tracks) cams += int(track.cams.size());
+                },
+                &bits);
             printRow(QStringLiteral("read program 0 (%1 cams)").arg(cams), protocol, baud, bits,
                      read);
-            const Run write = measure(protocol, baud,
-                                      [&](CamConDevice& device) {
-                                          for (const Track& track : tracks)
-                                              if (Status done = device.writeTrack(1, track); !done)
-                                                  fail(done.error());
-                                      },
-                                      &bits);
+            const Run write = measure(
+                protocol, baud,
+                [&](CamConDevice& device) {
+                    for (const Track& track : tracks)
+                        if (Status done = device.writeTrack(1, track); !done) fail(done.error());
+                },
+                &bits);
             printRow(QStringLiteral("write program 1 (%1 cams)").arg(kTracks * kCamsPerTrack),
                      protocol, baud, bits, write);
         }

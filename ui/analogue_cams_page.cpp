@@ -38,9 +38,10 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_problems->setWordWrap(true);
-    auto* intro = new QLabel(tr("Between two base points the analogue output follows a straight "
-                                "line (with interpolation on). Positions must rise from point to "
-                                "point."));
+    auto* intro =
+        new QLabel(tr("Between two base points the analogue output follows a straight "
+                      "line (with interpolation on). Positions must rise from point to "
+                      "point."));
     intro->setWordWrap(true);
     auto* read = new QPushButton(tr("Read from device"));
     auto* write = new QPushButton(tr("Write"));
@@ -73,7 +74,8 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const WriteReport& report) {
             Q_EMIT statusMessage(tr("Analogue cams: %1").arg(report.summary()));
-            if (!report.complete()) QMessageBox::warning(this, tr("Analogue cams"), report.details());
+            if (!report.complete())
+                QMessageBox::warning(this, tr("Analogue cams"), report.details());
         });
     });
 }
@@ -87,7 +89,8 @@ void AnalogueCamsPage::readFromDevice() {
         },
         [this](Result<AnalogueCamTrack> track) {
             if (!track) {
-                Q_EMIT statusMessage(tr("Reading analogue cams failed: %1").arg(track.error().message));
+                Q_EMIT statusMessage(
+                    tr("Reading analogue cams failed: %1").arg(track.error().message));
                 return;
             }
             if (track->output != m_output->value()) return;  // another output chosen meanwhile

@@ -120,13 +120,13 @@ void CapabilityGate::setNavItem(QListWidgetItem* item) {
 void CapabilityGate::showAvailability(bool available, const QString& reason) {
     const bool changed = available != m_available;
     m_available = available;
-    m_reason->setText(available ? QString()
-                                : QCoreApplication::translate("CamConCapability",
-                                                              reason.toUtf8().constData()));
+    m_reason->setText(
+        available ? QString()
+                  : QCoreApplication::translate("CamConCapability", reason.toUtf8().constData()));
     m_stack->setCurrentIndex(available ? 0 : 1);
     if (m_item) {
-        m_item->setForeground(palette().brush(available ? QPalette::Active : QPalette::Disabled,
-                                              QPalette::Text));
+        m_item->setForeground(
+            palette().brush(available ? QPalette::Active : QPalette::Disabled, QPalette::Text));
         m_item->setToolTip(m_reason->text());
     }
     if (changed) Q_EMIT availabilityChanged(available);

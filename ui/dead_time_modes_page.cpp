@@ -105,17 +105,17 @@ void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
         m_table->setItem(row, OffColumn, msItem(0));
     }
     for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
-    m_note->setText(tr("Largest dead time: %1 ms").arg(m_workspace->info().maxDeadTime / kTenthsPerMs));
+    m_note->setText(
+        tr("Largest dead time: %1 ms").arg(m_workspace->info().maxDeadTime / kTenthsPerMs));
 }
 
 OutputDeadTime DeadTimeModesPage::edited(int output) const {
     const int row = rowOf(output);
     if (row < 0) return m_device.value(output);
     const auto* mode = qobject_cast<const QComboBox*>(m_table->cellWidget(row, ModeColumn));
-    return OutputDeadTime{DeadTimeMode(mode->currentData().toInt()),
-                          tenthsOf(m_table->item(row, NormalColumn)),
-                          tenthsOf(m_table->item(row, OnColumn)),
-                          tenthsOf(m_table->item(row, OffColumn))};
+    return OutputDeadTime{
+        DeadTimeMode(mode->currentData().toInt()), tenthsOf(m_table->item(row, NormalColumn)),
+        tenthsOf(m_table->item(row, OnColumn)), tenthsOf(m_table->item(row, OffColumn))};
 }
 
 void DeadTimeModesPage::setEdited(int output, const OutputDeadTime& deadTime) {

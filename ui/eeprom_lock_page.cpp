@@ -96,8 +96,9 @@ void EepromLockPage::showLock(std::optional<bool> locked) {
     } else {
         m_state->setText(tr("The EEPROM is not locked: changes are stored permanently."));
     }
-    m_warning->setText(tr("Changes written now are kept in RAM only. They are lost when the "
-                          "device is switched off. Unlock the EEPROM to keep them."));
+    m_warning->setText(
+        tr("Changes written now are kept in RAM only. They are lost when the "
+           "device is switched off. Unlock the EEPROM to keep them."));
     m_warning->setVisible(locked.value_or(false));
     m_lock->setEnabled(locked.has_value() && !*locked);
     m_unlock->setEnabled(locked.value_or(false));

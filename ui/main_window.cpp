@@ -117,8 +117,14 @@ void MainWindow::createPages() {
     const auto gate = [this](SectionPage* page, Cap capability) {
         return new CapabilityGate(m_session, page, capability);
     };
-    m_pages = {m_connection, m_cams, m_deadTimes, m_settings, gate(m_users, Cap::Users),
-               gate(m_plc, Cap::PlcNetworks), m_monitor, gate(backup, Cap::EepromBackup),
+    m_pages = {m_connection,
+               m_cams,
+               m_deadTimes,
+               m_settings,
+               gate(m_users, Cap::Users),
+               gate(m_plc, Cap::PlcNetworks),
+               m_monitor,
+               gate(backup, Cap::EepromBackup),
                gate(m_terminal, Cap::Terminal),
                gate(new DeadTimeModesPage(m_session, m_workspace), Cap::DeadTimeModes),
                gate(new AnalogueCamsPage(m_session, m_workspace), Cap::AnalogueCams),
@@ -127,7 +133,8 @@ void MainWindow::createPages() {
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
         m_nav->addItem(page->sectionTitle());
-        if (auto* gated = qobject_cast<CapabilityGate*>(page)) gated->setNavItem(m_nav->item(m_nav->count() - 1));
+        if (auto* gated = qobject_cast<CapabilityGate*>(page))
+            gated->setNavItem(m_nav->item(m_nav->count() - 1));
         connect(page, &SectionPage::statusMessage, this, &MainWindow::showMessage);
     }
     connect(backup, &BackupPage::wizardRequested, this, &MainWindow::openBackupWizard);

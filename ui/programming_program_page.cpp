@@ -30,8 +30,9 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     m_mode->addItem(tr("At the actual value"), 2);
     m_switchValue->setRange(std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
     m_problems->setWordWrap(true);
-    auto* intro = new QLabel(tr("The table interface reads and writes the cams of this program. "
-                                "It need not be the program that runs the machine."));
+    auto* intro =
+        new QLabel(tr("The table interface reads and writes the cams of this program. "
+                      "It need not be the program that runs the machine."));
     intro->setWordWrap(true);
     auto* form = new QFormLayout;
     form->addRow(tr("Program:"), m_program);
@@ -66,7 +67,9 @@ void ProgrammingProgramPage::setEdited(const ProgrammingProgram& programming) {
 void ProgrammingProgramPage::readFromDevice() {
     m_session->run<ProgrammingProgram>(
         this, tr("Read the programming program"),
-        [](comm::CamConDevice& device, comm::JobContext&) { return device.readProgrammingProgram(); },
+        [](comm::CamConDevice& device, comm::JobContext&) {
+            return device.readProgrammingProgram();
+        },
         [this](Result<ProgrammingProgram> programming) {
             if (!programming) {
                 Q_EMIT statusMessage(tr("Reading the programming program failed: %1")
@@ -84,16 +87,15 @@ void ProgrammingProgramPage::writeToDevice() {
     if (!problems.isEmpty()) return;
     m_session->run<ProgrammingProgram>(
         this, tr("Write the programming program"),
-        [programming](comm::CamConDevice& device,
-                      comm::JobContext&) -> Result<ProgrammingProgram> {
+        [programming](comm::CamConDevice& device, comm::JobContext&) -> Result<ProgrammingProgram> {
             const Status written = device.writeProgrammingProgram(programming);
             if (!written) return written.error();
             return device.readProgrammingProgram();
         },
         [this](Result<ProgrammingProgram> now) {
             if (!now) {
-                Q_EMIT statusMessage(tr("Writing the programming program failed: %1")
-                                         .arg(now.error().message));
+                Q_EMIT statusMessage(
+                    tr("Writing the programming program failed: %1").arg(now.error().message));
                 return;
             }
             setEdited(now.value());

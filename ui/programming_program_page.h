@@ -19,8 +19,7 @@ class Workspace;
 class ProgrammingProgramPage : public SectionPage {
     Q_OBJECT
 public:
-    ProgrammingProgramPage(DeviceSession* session, Workspace* workspace,
-                           QWidget* parent = nullptr);
+    ProgrammingProgramPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Programming program"); }
     void deviceConnected() override { readFromDevice(); }

@@ -22,15 +22,15 @@ namespace cambench::comm {
 // What a CamCon protocol may or may not offer. The GUI and the CLI ask
 // before they offer an action; a missing one comes with a reason.
 enum class CamConCapability {
-    Users,          // users and rights: ASCII only
-    EepromBackup,   // whole-EEPROM backup and restore (?EE/!EE): ASCII only
-    BusScan,        // device numbers on a bus: Multiuser
-    Terminal,       // free-form requests typed by the user: ASCII
-    OutputNames,    // output and program names: ASCII
-    PlcNetworks,    // PLC links (?GMXSPS / data area 216)
-    DeadTimeModes,  // dead-time modes and separate on/off dead times: table interface
-    AnalogueCams,   // analogue cams (data areas 241..254): table interface
-    EepromLock,     // EEPROM write lock, changes held in RAM: table interface
+    Users,               // users and rights: ASCII only
+    EepromBackup,        // whole-EEPROM backup and restore (?EE/!EE): ASCII only
+    BusScan,             // device numbers on a bus: Multiuser
+    Terminal,            // free-form requests typed by the user: ASCII
+    OutputNames,         // output and program names: ASCII
+    PlcNetworks,         // PLC links (?GMXSPS / data area 216)
+    DeadTimeModes,       // dead-time modes and separate on/off dead times: table interface
+    AnalogueCams,        // analogue cams (data areas 241..254): table interface
+    EepromLock,          // EEPROM write lock, changes held in RAM: table interface
     ProgrammingProgram,  // a program other than the active one edited (DW70..73): table interface
 };
 

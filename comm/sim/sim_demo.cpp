@@ -83,7 +83,9 @@ namespace {
 // The profile `config` asks for: protocol number and room for its cams.
 SimProfile sizedProfile(const SimPortConfig& config, const SimProfile& profile) {
     SimProfile sized = profile;
-    sized.protocol = config.tableVariant ? 4 : config.effectiveFraming() == Framing::Multiuser ? 2 : 1;
+    sized.protocol = config.tableVariant                               ? 4
+                     : config.effectiveFraming() == Framing::Multiuser ? 2
+                                                                       : 1;
     sized.camCapacity =
         std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
     return sized;

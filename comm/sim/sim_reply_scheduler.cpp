@@ -19,8 +19,7 @@ SimReplyScheduler::SimReplyScheduler(SimEndpoint& line, const SimPacer& pacer, W
 
 void SimReplyScheduler::received(const QByteArray& bytes) {
     const qint64 now = nowUs();
-    m_pending.append(
-        m_pacer.schedule(now, int(bytes.size()), m_line.receive(bytes, now / 1000)));
+    m_pending.append(m_pacer.schedule(now, int(bytes.size()), m_line.receive(bytes, now / 1000)));
     flush();
 }
 

@@ -40,14 +40,16 @@ std::optional<DeadTimeMode> deadTimeModeFromNumber(qint64 number) {
 QString outputDeadTimeProblem(int output, const OutputDeadTime& deadTime,
                               const DeviceInfo& device) {
     if (output < 1 || output > device.deadTimeOutputs) {
-        return QStringLiteral("Output %1 has no dead-time compensation on this device (outputs "
-                              "1..%2 have one).")
+        return QStringLiteral(
+                   "Output %1 has no dead-time compensation on this device (outputs "
+                   "1..%2 have one).")
             .arg(output)
             .arg(device.deadTimeOutputs);
     }
     if (!deadTimeModeFromNumber(qint64(deadTime.mode))) {
-        return QStringLiteral("Output %1: dead-time mode %2 is unknown (0 normal, 1 on/off, 2 "
-                              "path-time).")
+        return QStringLiteral(
+                   "Output %1: dead-time mode %2 is unknown (0 normal, 1 on/off, 2 "
+                   "path-time).")
             .arg(output)
             .arg(int(deadTime.mode));
     }
@@ -57,13 +59,14 @@ QString outputDeadTimeProblem(int output, const OutputDeadTime& deadTime,
     } values[] = {
         {deadTime.normal, "dead time"},
         {deadTime.on, "switch-on dead time"},
-        {deadTime.off, deadTime.mode == DeadTimeMode::PathTime ? "switching time"
-                                                                : "switch-off dead time"},
+        {deadTime.off,
+         deadTime.mode == DeadTimeMode::PathTime ? "switching time" : "switch-off dead time"},
     };
     for (const auto& item : values) {
         if (item.value >= 0 && item.value <= device.maxDeadTime) continue;
-        return QStringLiteral("Output %1: the %2 %3 is outside 0..%4 (0.1 ms), the device's "
-                              "range.")
+        return QStringLiteral(
+                   "Output %1: the %2 %3 is outside 0..%4 (0.1 ms), the device's "
+                   "range.")
             .arg(output)
             .arg(QLatin1String(item.what))
             .arg(item.value)

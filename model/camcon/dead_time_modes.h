@@ -45,8 +45,7 @@ std::optional<DeadTimeMode> deadTimeModeFromNumber(qint64 number);
 // Empty when `deadTime` fits the device; otherwise one sentence naming the
 // output: "Output 3: the switch-on dead time 12000 is above the largest dead
 // time 9999 (0.1 ms)."
-QString outputDeadTimeProblem(int output, const OutputDeadTime& deadTime,
-                              const DeviceInfo& device);
+QString outputDeadTimeProblem(int output, const OutputDeadTime& deadTime, const DeviceInfo& device);
 // Outputs 1..deadTimeOutputs and every value 0..maxDeadTime.
 QStringList validateDeadTimeModes(const DeadTimeModes& modes, const DeviceInfo& device);
 

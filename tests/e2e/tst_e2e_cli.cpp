@@ -301,8 +301,8 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol_data() {
     for (const char* protocol : {"3964r-n96", "3964r-e38"}) {
         const auto row = [protocol](const char* name, const QStringList& command,
                                     const char* capability) {
-            QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(QLatin1String(protocol),
-                                                                 QLatin1String(name))))
+            QTest::newRow(qPrintable(
+                QStringLiteral("%1 %2").arg(QLatin1String(protocol), QLatin1String(name))))
                 << QString::fromLatin1(protocol) << command << QString::fromLatin1(capability);
         };
         row("backup", {"backup", "-o", "@image"}, "EEPROM backup");
@@ -330,7 +330,8 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
     const CliRun run = session.cli(command);
     VERIFY_EXIT(run, 2);
     QVERIFY2(run.err.contains(capability), qPrintable(run.err));
-    QVERIFY2(run.err.contains(QLatin1String("--protocol standard or multiuser")), qPrintable(run.err));
+    QVERIFY2(run.err.contains(QLatin1String("--protocol standard or multiuser")),
+             qPrintable(run.err));
     QVERIFY(run.out.isEmpty());
 }
 

@@ -36,8 +36,8 @@ struct Bench {
     int stxSent = 0;  // STX the PC sent: more than requests when faults made it repeat
 
     bool start(const QString& protocol, const QStringList& simArgs = {}) {
-        if (!sim.start(QStringList{QStringLiteral("--protocol"), protocol,
-                                   QStringLiteral("--baud"), kBaud} +
+        if (!sim.start(QStringList{QStringLiteral("--protocol"), protocol, QStringLiteral("--baud"),
+                                   kBaud} +
                            simArgs,
                        dir.filePath(QStringLiteral("sim.log"))))
             return false;
@@ -53,8 +53,8 @@ struct Bench {
         TableSettings settings;
         settings.variant =
             protocol == QLatin1String("3964r-e38") ? Rk512Variant::E38 : Rk512Variant::N96;
-        device = std::make_unique<TableCamCon>(*transport, settings,
-                                               lineTimingFor(connection.serial));
+        device =
+            std::make_unique<TableCamCon>(*transport, settings, lineTimingFor(connection.serial));
         device->engine().setTrafficSink([this](const TrafficEntry& entry) {
             // An STX alone, or after the DLE that acknowledged a telegram.
             if (entry.outgoing && entry.bytes.size() <= 2 && entry.bytes.endsWith(kStx)) ++stxSent;
@@ -223,7 +223,8 @@ void TestTableCamCon::settingsAndSpecialEncoderRoundTrip() {
     QCOMPARE(before->value(QStringLiteral("outputCount")).toLongLong(), 32);
     QCOMPARE(before->value(QStringLiteral("speedFactor")).toLongLong(), 100000);
     QVERIFY(!before->contains(QStringLiteral("encoderText1")));
-    QVERIFY2(skipped.join(u' ').contains(QLatin1String("encoderText1")), qPrintable(skipped.join(u' ')));
+    QVERIFY2(skipped.join(u' ').contains(QLatin1String("encoderText1")),
+             qPrintable(skipped.join(u' ')));
 
     SystemSettings wanted{{QStringLiteral("cableLength"), 77},
                           {QStringLiteral("targetCycleTime"), 25},
@@ -302,8 +303,8 @@ void TestTableCamCon::shortCommandsAgreeWithTheTable() {
     START(bench, protocol);
     TableLink& link = bench.device->link();
     const auto call = [&](const Result<QByteArray>& request) {
-        return link.shortCommand(*request, QStringLiteral("short command"),
-                                 kMaxShortTelegramBytes, RetryPolicy::Idempotent);
+        return link.shortCommand(*request, QStringLiteral("short command"), kMaxShortTelegramBytes,
+                                 RetryPolicy::Idempotent);
     };
     // 0x04 reads what RK512 reads.
     Result<QByteArray> reply = call(encodeReadTrackRequest(0, 3));

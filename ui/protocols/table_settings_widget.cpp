@@ -20,9 +20,8 @@ TableSettingsWidget::TableSettingsWidget(const QString& protocolId, QWidget* par
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Variant:"), m_variant);
     form->addRow(m_explanation);
-    connect(m_variant, &QComboBox::currentIndexChanged, this, [this] {
-        Q_EMIT protocolRequested(m_variant->currentData().toString());
-    });
+    connect(m_variant, &QComboBox::currentIndexChanged, this,
+            [this] { Q_EMIT protocolRequested(m_variant->currentData().toString()); });
 }
 
 void TableSettingsWidget::load(const comm::ProtocolSettings& settings) {

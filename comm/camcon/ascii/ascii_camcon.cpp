@@ -28,7 +28,8 @@ bool AsciiCamCon::has(CamConCapability capability) const {
     case CamConCapability::DeadTimeModes:
     case CamConCapability::AnalogueCams:
     case CamConCapability::EepromLock:
-    case CamConCapability::ProgrammingProgram: return false;
+    case CamConCapability::ProgrammingProgram:
+        return false;
     }
     return false;
 }

@@ -9,8 +9,9 @@ Result<PlcNetwork> AsciiCamCon::readPlcNetwork(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(QStringLiteral("reading %1 (?GMXSPS)").arg(PlcNetwork::describe(area, number)),
-                         reply.error());
+        return inContext(
+            QStringLiteral("reading %1 (?GMXSPS)").arg(PlcNetwork::describe(area, number)),
+            reply.error());
     }
     PlcNetwork network;
     network.area = area;
@@ -34,9 +35,9 @@ Status AsciiCamCon::writePlcNetwork(const PlcNetwork& network) {
     fields.setWords("symbols", words);
     const Result<Fields> reply = m_link.call('!', "GMXSPS", fields);
     if (!reply) {
-        return inContext(
-            QStringLiteral("writing %1 (!GMXSPS)").arg(PlcNetwork::describe(network.area, network.number)),
-            reply.error());
+        return inContext(QStringLiteral("writing %1 (!GMXSPS)")
+                             .arg(PlcNetwork::describe(network.area, network.number)),
+                         reply.error());
     }
     return success();
 }
@@ -56,9 +57,9 @@ Result<qint32> AsciiCamCon::readPlcSetpoint(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "SPSSOLL", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(
-            QStringLiteral("reading the set value of %1 (?SPSSOLL)").arg(PlcNetwork::describe(area, number)),
-            reply.error());
+        return inContext(QStringLiteral("reading the set value of %1 (?SPSSOLL)")
+                             .arg(PlcNetwork::describe(area, number)),
+                         reply.error());
     }
     return qint32(reply->num("value"));
 }

@@ -262,8 +262,7 @@ void Link3964R::startAttempt(qint64 nowMs, Actions& actions) {
     enter(State::SendWaitDle, nowMs + m_timing.ackTimeoutMs);
 }
 
-void Link3964R::failAttempt(const QString& reason, qint64 nowMs, Actions& actions,
-                            bool maybeRead) {
+void Link3964R::failAttempt(const QString& reason, qint64 nowMs, Actions& actions, bool maybeRead) {
     actions.log.append(QStringLiteral("attempt %1 of %2 failed: %3")
                            .arg(m_attempt)
                            .arg(m_timing.attempts)

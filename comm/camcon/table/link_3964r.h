@@ -115,8 +115,7 @@ private:
 
     void startAttempt(qint64 nowMs, Actions& actions);
     // `maybeRead`: the partner may have taken the block (see Repeat).
-    void failAttempt(const QString& reason, qint64 nowMs, Actions& actions,
-                     bool maybeRead = false);
+    void failAttempt(const QString& reason, qint64 nowMs, Actions& actions, bool maybeRead = false);
     void startReceive(qint64 nowMs, Actions& actions);
     void startDrain(const QString& reason, qint64 nowMs, Actions& actions);
     void finishReceive(qint64 nowMs, Actions& actions);

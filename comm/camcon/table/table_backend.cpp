@@ -25,8 +25,9 @@ QString TableBackend::describe() const {
 
 QString TableBackend::checkHint() const {
     const Rk512VariantInfo& info = rk512VariantInfo(m_variant);
-    return QStringLiteral("check the cable, that the device's serial mode (menu \"Ser:\") is %1 "
-                          "and the line %2 8%3%4")
+    return QStringLiteral(
+               "check the cable, that the device's serial mode (menu \"Ser:\") is %1 "
+               "and the line %2 8%3%4")
         .arg(QLatin1String(info.name))
         .arg(info.baudRate)
         .arg(QChar::fromLatin1(info.parity))
@@ -48,8 +49,8 @@ BackendStep TableBackend::startAttempt(const Request& request, int attempt, qint
     if (m_link.sending()) {
         // Cannot happen while the engine waits for every transfer to end;
         // a stuck link must not block the line for good.
-        qCWarning(commTableLog) << "a telegram was still being sent at attempt" << attempt
-                                << "of" << request.label << "; link reset";
+        qCWarning(commTableLog) << "a telegram was still being sent at attempt" << attempt << "of"
+                                << request.label << "; link reset";
         m_link.reset();
     }
     m_awaitingReply = false;

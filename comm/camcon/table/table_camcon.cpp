@@ -28,25 +28,29 @@ QString TableCamCon::protocolId() const {
 
 bool TableCamCon::has(CamConCapability capability) const {
     switch (capability) {
-    case CamConCapability::Users:
-    case CamConCapability::EepromBackup:
-    case CamConCapability::BusScan:
-    case CamConCapability::Terminal:
-    case CamConCapability::OutputNames: return false;
-    case CamConCapability::DeadTimeModes: return reachesDeadTimeModes(m_link);
-    case CamConCapability::PlcNetworks:
-    case CamConCapability::AnalogueCams:
-    case CamConCapability::EepromLock:
-    case CamConCapability::ProgrammingProgram: return true;
+        case CamConCapability::Users:
+        case CamConCapability::EepromBackup:
+        case CamConCapability::BusScan:
+        case CamConCapability::Terminal:
+        case CamConCapability::OutputNames:
+            return false;
+        case CamConCapability::DeadTimeModes:
+            return reachesDeadTimeModes(m_link);
+        case CamConCapability::PlcNetworks:
+        case CamConCapability::AnalogueCams:
+        case CamConCapability::EepromLock:
+        case CamConCapability::ProgrammingProgram:
+            return true;
     }
     return false;
 }
 
 QString TableCamCon::lacks(CamConCapability capability) const {
     if (capability == CamConCapability::DeadTimeModes && !reachesDeadTimeModes(m_link)) {
-        return QStringLiteral("Dead-time modes are data words 251..253, which 3964R e38 cannot "
-                              "address (words 0..127); set the device to 3964R n96 "
-                              "(--protocol 3964r-n96) to reach them.");
+        return QStringLiteral(
+            "Dead-time modes are data words 251..253, which 3964R e38 cannot "
+            "address (words 0..127); set the device to 3964R n96 "
+            "(--protocol 3964r-n96) to reach them.");
     }
     return CamConDevice::lacks(capability);
 }

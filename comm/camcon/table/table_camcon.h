@@ -41,7 +41,7 @@ public:
     // Position and speed from area 201, program, device status and outputs
     // from the short status query 0x01, inputs from area 202.
     Result<DeviceStatus> readStatus(int outputs, int inputs) override;
-    Status resetError() override;          // short command 0x02
+    Status resetError() override;                // short command 0x02
     Status selectProgram(int program) override;  // short command 0x03
 
     Result<Track> readTrack(int program, int output) override;

@@ -115,15 +115,16 @@ Status TableCamCon::writePairWords(int area, const QList<qint32>& words, const Q
     if (done) return success();
     // The first telegram replaced the whole track; later ones added places.
     const QString state =
-        written == 0
-            ? QStringLiteral("the device may still hold the old %1 or already the first of the "
-                             "new ones; read it to see, or write it again")
-                  .arg(what)
-            : QStringLiteral("the device now holds only the first %1 of the %2 %3 written (the "
-                             "old ones are gone); write it again")
-                  .arg(qMin(written / 2, pairs))
-                  .arg(pairs)
-                  .arg(what);
+        written == 0 ? QStringLiteral(
+                           "the device may still hold the old %1 or already the first of the "
+                           "new ones; read it to see, or write it again")
+                           .arg(what)
+                     : QStringLiteral(
+                           "the device now holds only the first %1 of the %2 %3 written (the "
+                           "old ones are gone); write it again")
+                           .arg(qMin(written / 2, pairs))
+                           .arg(pairs)
+                           .arg(what);
     Error error = done.error();
     error.message = QStringLiteral("%1; %2").arg(error.message, state);
     return error;
@@ -132,7 +133,8 @@ Status TableCamCon::writePairWords(int area, const QList<qint32>& words, const Q
 Result<QList<Cam>> TableCamCon::readTrackCams(int output) {
     const Result<int> area = trackArea(output);
     if (!area) return area.error();
-    const Result<QList<qint32>> words = readPairWords(*area, u"track.cam_count", QStringLiteral("cams"));
+    const Result<QList<qint32>> words =
+        readPairWords(*area, u"track.cam_count", QStringLiteral("cams"));
     if (!words) return words.error();
     return camsFromTrackWords(*words);
 }
@@ -191,7 +193,8 @@ Status TableCamCon::writeTrack(int program, const Track& track) {
 Status TableCamCon::deleteProgram(int program) {
     const Status deleted = m_link.writeWord(kStatusArea, tableWord(u"status.copy_program"),
                                             qint32(kDeleteProgramBit | quint32(program)));
-    if (!deleted) return inContext(QStringLiteral("deleting program %1").arg(program), deleted.error());
+    if (!deleted)
+        return inContext(QStringLiteral("deleting program %1").arg(program), deleted.error());
     return success();
 }
 

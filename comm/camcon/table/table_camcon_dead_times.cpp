@@ -63,9 +63,8 @@ Status TableCamCon::writeDeadTimeMode(int output, const OutputDeadTime& deadTime
     const Status normal = m_link.writeWord(*area, tableWord(u"track.dead_time"), deadTime.normal);
     if (!normal) return inContext(what, normal.error());
     // Mode and both values in one telegram: never a new mode with old values.
-    const Status written =
-        m_link.writeWords(*area, tableWord(u"track.dead_time_mode"),
-                          {qint32(deadTime.mode), deadTime.on, deadTime.off});
+    const Status written = m_link.writeWords(*area, tableWord(u"track.dead_time_mode"),
+                                             {qint32(deadTime.mode), deadTime.on, deadTime.off});
     if (!written) return inContext(what, written.error());
     return success();
 }

@@ -10,15 +10,15 @@
 namespace cambench::comm::table {
 
 Result<AnalogueCamTrack> TableCamCon::readAnalogueCams(int analogueOutput) {
-    const QString what = QStringLiteral("reading the analogue cams of analogue output %1")
-                             .arg(analogueOutput);
+    const QString what =
+        QStringLiteral("reading the analogue cams of analogue output %1").arg(analogueOutput);
     if (analogueOutput < 1 || analogueOutput > kAnalogueOutputs) {
-        return Error::usage(QStringLiteral("%1: analogue outputs are 1..%2")
-                                .arg(what)
-                                .arg(kAnalogueOutputs));
+        return Error::usage(
+            QStringLiteral("%1: analogue outputs are 1..%2").arg(what).arg(kAnalogueOutputs));
     }
-    const Result<QList<qint32>> words = readPairWords(kFirstAnalogCamArea + analogueOutput - 1,
-                                                      u"analog_cam.count", QStringLiteral("base points"));
+    const Result<QList<qint32>> words =
+        readPairWords(kFirstAnalogCamArea + analogueOutput - 1, u"analog_cam.count",
+                      QStringLiteral("base points"));
     if (!words) return inContext(what, words.error());
     AnalogueCamTrack track;
     track.output = analogueOutput;
@@ -33,9 +33,8 @@ Status TableCamCon::writeAnalogueCams(const AnalogueCamTrack& track) {
     const QString what =
         QStringLiteral("writing the analogue cams of analogue output %1").arg(track.output);
     if (track.output < 1 || track.output > kAnalogueOutputs) {
-        return Error::usage(QStringLiteral("%1: analogue outputs are 1..%2")
-                                .arg(what)
-                                .arg(kAnalogueOutputs));
+        return Error::usage(
+            QStringLiteral("%1: analogue outputs are 1..%2").arg(what).arg(kAnalogueOutputs));
     }
     if (track.points.size() > writablePairs()) {
         return Error::usage(QStringLiteral("%1: %2 base points, but over %3 at most %4 fit")
@@ -56,8 +55,8 @@ Status TableCamCon::writeAnalogueCams(const AnalogueCamTrack& track) {
 }
 
 Result<ProgrammingProgram> TableCamCon::readProgrammingProgram() {
-    const Result<WordBlock> block = WordBlock::read(m_link, kStatusArea, u"status.programming_program",
-                                                    u"status.programming_switch_value");
+    const Result<WordBlock> block = WordBlock::read(
+        m_link, kStatusArea, u"status.programming_program", u"status.programming_switch_value");
     if (!block) return inContext(QStringLiteral("reading the programming program"), block.error());
     ProgrammingProgram programming;
     programming.program = block->at(u"status.programming_program");
@@ -87,9 +86,9 @@ Status TableCamCon::writeEepromLock(bool locked) {
     const Status written =
         m_link.writeWord(kConfigArea, tableWord(u"config.eeprom_lock"), locked ? 1 : 0);
     if (!written) {
-        return inContext(locked ? QStringLiteral("locking the EEPROM")
-                                : QStringLiteral("unlocking the EEPROM"),
-                         written.error());
+        return inContext(
+            locked ? QStringLiteral("locking the EEPROM") : QStringLiteral("unlocking the EEPROM"),
+            written.error());
     }
     return success();
 }

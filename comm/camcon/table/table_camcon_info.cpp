@@ -26,6 +26,31 @@ QString epromDateText(const WordBlock& block) {
     return QString::fromLatin1(text.trimmed());
 }
 
+// One number of DeviceInfo and the table word it is (area, map key).
+struct InfoWord {
+    int area;
+    const char16_t* key;
+    int DeviceInfo::*member;
+};
+const InfoWord kInfoWords[] = {
+    {kConfigArea, u"config.device_number", &DeviceInfo::deviceNumber},
+    {kSystemArea, u"system.hardware_outputs", &DeviceInfo::outputs},
+    {kSystemArea, u"system.hardware_inputs", &DeviceInfo::inputs},
+    {kSystemArea, u"system.dead_time_outputs", &DeviceInfo::deadTimeOutputs},
+    {kStatusArea, u"status.min_actual_value", &DeviceInfo::minPosition},
+    {kStatusArea, u"status.max_actual_value", &DeviceInfo::maxPosition},
+    {kStatusArea, u"status.max_dead_time", &DeviceInfo::maxDeadTime},
+    {kStatusArea, u"status.cpu_frequency", &DeviceInfo::cpuClock},
+    {kStatusArea, u"status.temperature", &DeviceInfo::temperature},
+    {kStatusArea, u"status.free_cams", &DeviceInfo::freeCams},
+    {kStatusArea, u"status.programmed_cams", &DeviceInfo::programmedCams},
+    {kStatusArea, u"status.programmed_dead_times", &DeviceInfo::programmedDeadTimes},
+    {kStatusArea, u"status.ram_size", &DeviceInfo::ramSize},
+    {kStatusArea, u"status.free_ram", &DeviceInfo::ramFree},
+    {kStatusArea, u"status.serial_eeprom_size", &DeviceInfo::serialEepromSize},
+    {kStatusArea, u"status.parallel_eeprom_size", &DeviceInfo::parallelEepromSize},
+};
+
 // `count` bits from words of 32, bit 0 of the first word = number 1.
 QList<bool> bitsOf(const QList<qint32>& words, int count) {
     QList<bool> bits(count, false);
@@ -41,8 +66,8 @@ Result<DeviceInfo> TableCamCon::readInfo() {
     const Result<WordBlock> status =
         WordBlock::read(m_link, kStatusArea, u"status.plc_boost", u"status.device_status");
     if (!status) return inContext(what.arg(kStatusArea), status.error());
-    const Result<WordBlock> system = WordBlock::read(m_link, kSystemArea, u"system.dead_time_outputs",
-                                                     u"system.hardware_outputs");
+    const Result<WordBlock> system = WordBlock::read(
+        m_link, kSystemArea, u"system.dead_time_outputs", u"system.hardware_outputs");
     if (!system) return inContext(what.arg(kSystemArea), system.error());
     const Result<WordBlock> config =
         WordBlock::read(m_link, kConfigArea, u"config.device_number", u"config.serial_mode");
@@ -50,25 +75,15 @@ Result<DeviceInfo> TableCamCon::readInfo() {
 
     DeviceInfo info;
     info.epromDate = epromDateText(*status);
-    info.deviceNumber = config->at(u"config.device_number");
     // ?GSIO has one "3964R" (4) for the table modes 4 (n96) and 5 (e38).
     info.protocol = qMin(config->at(u"config.serial_mode"), 4);
-    info.outputs = system->at(u"system.hardware_outputs");
-    info.inputs = system->at(u"system.hardware_inputs");
-    info.deadTimeOutputs = system->at(u"system.dead_time_outputs");
     info.programs = status->at(u"status.max_program") + 1;
-    info.minPosition = status->at(u"status.min_actual_value");
-    info.maxPosition = status->at(u"status.max_actual_value");
-    info.maxDeadTime = status->at(u"status.max_dead_time");
-    info.cpuClock = status->at(u"status.cpu_frequency");
-    info.temperature = status->at(u"status.temperature");
-    info.freeCams = status->at(u"status.free_cams");
-    info.programmedCams = status->at(u"status.programmed_cams");
-    info.programmedDeadTimes = status->at(u"status.programmed_dead_times");
-    info.ramSize = status->at(u"status.ram_size");
-    info.ramFree = status->at(u"status.free_ram");
-    info.serialEepromSize = status->at(u"status.serial_eeprom_size");
-    info.parallelEepromSize = status->at(u"status.parallel_eeprom_size");
+    for (const InfoWord& word : kInfoWords) {
+        const WordBlock& block = word.area == kStatusArea   ? *status
+                                 : word.area == kSystemArea ? *system
+                                                            : *config;
+        info.*word.member = block.at(QStringView(word.key));
+    }
     return info;
 }
 
@@ -86,9 +101,9 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
     // with its outputs, so even zeros would switch outputs off.
     const Result<QByteArray> request = encodeStatusRequest();
     if (!request) return request.error();
-    const Result<QByteArray> reply = m_link.shortCommand(
-        *request, QStringLiteral("status query 0x01"), kMaxShortTelegramBytes,
-        RetryPolicy::Idempotent);
+    const Result<QByteArray> reply =
+        m_link.shortCommand(*request, QStringLiteral("status query 0x01"), kMaxShortTelegramBytes,
+                            RetryPolicy::Idempotent);
     if (!reply) return inContext(QStringLiteral("reading the status (0x01)"), reply.error());
     const Result<ShortStatus> decoded = decodeStatusReply(*reply);
     if (!decoded) return inContext(QStringLiteral("reading the status (0x01)"), decoded.error());
@@ -100,8 +115,7 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
     const TableEntry* inputWords = findTableEntry(u"io.inputs");
     const int words = qMin(inputWords->count, (inputs + kBitsPerWord - 1) / kBitsPerWord);
     if (words > 0) {
-        const Result<QList<qint32>> bits =
-            m_link.readWords(kIoArea, inputWords->firstWord, words);
+        const Result<QList<qint32>> bits = m_link.readWords(kIoArea, inputWords->firstWord, words);
         if (!bits) return inContext(QStringLiteral("reading the inputs"), bits.error());
         status.inputs = bitsOf(*bits, inputs);
     }
@@ -114,7 +128,8 @@ Status TableCamCon::resetError() {
                             kMaxShortTelegramBytes, RetryPolicy::Idempotent);
     if (!reply) return inContext(QStringLiteral("resetting the error (0x02)"), reply.error());
     const Status acknowledged = decodeAcknowledgement(ShortCommand::ErrorReset, *reply);
-    if (!acknowledged) return inContext(QStringLiteral("resetting the error"), acknowledged.error());
+    if (!acknowledged)
+        return inContext(QStringLiteral("resetting the error"), acknowledged.error());
     return success();
 }
 
@@ -122,9 +137,9 @@ Status TableCamCon::selectProgram(int program) {
     const QString what = QStringLiteral("selecting program %1 (0x03)").arg(program);
     const Result<QByteArray> request = encodeProgramChangeRequest(program);
     if (!request) return inContext(what, request.error());
-    const Result<QByteArray> reply = m_link.shortCommand(
-        *request, QStringLiteral("program change 0x03"), kMaxShortTelegramBytes,
-        RetryPolicy::Idempotent);
+    const Result<QByteArray> reply =
+        m_link.shortCommand(*request, QStringLiteral("program change 0x03"), kMaxShortTelegramBytes,
+                            RetryPolicy::Idempotent);
     if (!reply) return inContext(what, reply.error());
     const Status acknowledged = decodeAcknowledgement(ShortCommand::ProgramChange, *reply);
     if (!acknowledged) return inContext(what, acknowledged.error());

@@ -15,7 +15,6 @@ namespace {
 constexpr int kNetworksPerArea = 256;
 constexpr int kHighNumberShift = 10;
 
-
 Result<int> areaIndex(int area, int number) {
     const int index = area - PlcNetwork::O;
     if (index < 0 || index > 3 || number < 0) {
@@ -41,9 +40,8 @@ Result<PlcNetwork> TableCamCon::readPlcNetwork(int area, int number) {
     if (!selected) return inContext(what, selected.error());
     const int first = tableWord(u"plc_link.block_type");
     const int symbols = tableWord(u"plc_link.symbol");
-    const Result<QList<qint32>> words =
-        m_link.readWords(kPlcLinkArea, first, tableWord(u"plc_link.symbol", PlcNetwork::kSymbols - 1) -
-                                                  first + 1);
+    const Result<QList<qint32>> words = m_link.readWords(
+        kPlcLinkArea, first, tableWord(u"plc_link.symbol", PlcNetwork::kSymbols - 1) - first + 1);
     if (!words) return inContext(what, words.error());
     const Result<qint32> setValue = m_link.readWord(kFirstPlcSetValueArea + *index, number);
     if (!setValue) return inContext(what, setValue.error());
@@ -58,7 +56,8 @@ Result<PlcNetwork> TableCamCon::readPlcNetwork(int area, int number) {
 }
 
 Status TableCamCon::writePlcNetwork(const PlcNetwork& network) {
-    const QString what = QStringLiteral("writing %1").arg(PlcNetwork::describe(network.area, network.number));
+    const QString what =
+        QStringLiteral("writing %1").arg(PlcNetwork::describe(network.area, network.number));
     const Result<int> index = areaIndex(network.area, network.number);
     if (!index) return index.error();
     const Status selected = m_link.writeWord(kPlcLinkArea, tableWord(u"plc_link.network"),
@@ -83,11 +82,10 @@ Result<qint32> TableCamCon::readPlcActual(int area, int number) {
     const Result<int> index = areaIndex(area, number);
     if (!index) return index.error();
     const Result<qint32> value = m_link.readWord(kFirstPlcActualValueArea + *index, number);
-    if (!value) {
-        return inContext(
-            QStringLiteral("reading the actual value of %1").arg(PlcNetwork::describe(area, number)),
-            value.error());
-    }
+    if (!value)
+        return inContext(QStringLiteral("reading the actual value of %1")
+                             .arg(PlcNetwork::describe(area, number)),
+                         value.error());
     return value;
 }
 
@@ -95,11 +93,10 @@ Result<qint32> TableCamCon::readPlcSetpoint(int area, int number) {
     const Result<int> index = areaIndex(area, number);
     if (!index) return index.error();
     const Result<qint32> value = m_link.readWord(kFirstPlcSetValueArea + *index, number);
-    if (!value) {
+    if (!value)
         return inContext(
             QStringLiteral("reading the set value of %1").arg(PlcNetwork::describe(area, number)),
             value.error());
-    }
     return value;
 }
 

@@ -68,8 +68,7 @@ Result<SystemSettings> TableCamCon::readSettings(QStringList* skipped) {
     for (const TableSetting& setting : tableSettings()) {
         for (const WordBlock* block : blocks) {
             if (block->area() != setting.area) continue;
-            const std::optional<qint64> value =
-                settingFromWord(setting, block->word(setting.word));
+            const std::optional<qint64> value = settingFromWord(setting, block->word(setting.word));
             if (value) {
                 settings.insert(QLatin1String(setting.key), *value);
             } else {
@@ -82,7 +81,8 @@ Result<SystemSettings> TableCamCon::readSettings(QStringList* skipped) {
     const int type = system->at(u"system.special_encoder_type");
     for (int index = 0; index < kSpecialEncoderParameters; ++index) {
         if (const char* key = specialEncoderParameterKey(type, index))
-            settings.insert(QLatin1String(key), system->at(u"system.special_encoder_parameter", index));
+            settings.insert(QLatin1String(key),
+                            system->at(u"system.special_encoder_parameter", index));
     }
     if (skipped) {
         QStringList wordless;
@@ -93,11 +93,11 @@ Result<SystemSettings> TableCamCon::readSettings(QStringList* skipped) {
                 wordless.append(key);
         }
         if (!wordless.isEmpty())
-            skipped->append(QStringLiteral("%1 (no data word in the table interface)")
-                                .arg(keyList(wordless)));
+            skipped->append(
+                QStringLiteral("%1 (no data word in the table interface)").arg(keyList(wordless)));
         if (!unshown.isEmpty())
-            skipped->append(QStringLiteral("%1 (a value the settings cannot show)")
-                                .arg(keyList(unshown)));
+            skipped->append(
+                QStringLiteral("%1 (a value the settings cannot show)").arg(keyList(unshown)));
         skipped->append(QStringLiteral("the parameters of special encoder types other than the "
                                        "selected type %1 (the device keeps only those of one type)")
                             .arg(type));

@@ -16,8 +16,7 @@ constexpr int kDeviceRetryPauseMs = Timing3964R{}.charTimeoutMs;
 QString requestLabel(const Rk512Request& request) {
     const int words = request.words16 / 2;
     return QStringLiteral("RK512 %1 of area %2, offset %3 (%4 word%5)")
-        .arg(request.order == Rk512Order::Read ? QStringLiteral("read")
-                                               : QStringLiteral("write"))
+        .arg(request.order == Rk512Order::Read ? QStringLiteral("read") : QStringLiteral("write"))
         .arg(request.area)
         .arg(request.offset)
         .arg(words)

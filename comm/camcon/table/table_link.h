@@ -41,8 +41,7 @@ public:
     // has taken.
     Status writeWords(int area, int firstWord, const QList<qint32>& values,
                       RetryPolicy retry = RetryPolicy::Idempotent, int* written = nullptr);
-    Status writeWord(int area, int word, qint32 value,
-                     RetryPolicy retry = RetryPolicy::Idempotent);
+    Status writeWord(int area, int word, qint32 value, RetryPolicy retry = RetryPolicy::Idempotent);
 
     // A short command telegram (short_commands.h); returns the reply
     // telegram, which the caller decodes. `longestReplyBytes` bounds the

@@ -36,8 +36,7 @@ ProtocolInfo tableProtocol(Rk512Variant variant) {
 }  // namespace
 
 QString tableProtocolId(Rk512Variant variant) {
-    return variant == Rk512Variant::E38 ? QStringLiteral("3964r-e38")
-                                        : QStringLiteral("3964r-n96");
+    return variant == Rk512Variant::E38 ? QStringLiteral("3964r-e38") : QStringLiteral("3964r-n96");
 }
 
 QString TableProtocolSettings::protocolId() const {

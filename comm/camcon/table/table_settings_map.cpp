@@ -163,8 +163,8 @@ const char* specialEncoderParameterKey(int type, int index) {
 
 std::optional<SpecialEncoderParameter> findSpecialEncoderParameter(QStringView key) {
     for (const SpecialKey& special : kSpecialKeys) {
-        if (key == QLatin1String(special.key)) return SpecialEncoderParameter{special.type,
-                                                                               special.index};
+        if (key == QLatin1String(special.key))
+            return SpecialEncoderParameter{special.type, special.index};
     }
     return std::nullopt;
 }

@@ -55,7 +55,7 @@ inline WordRead refuse(table::Rk512Error error, QString detail) {
     return {0, error, std::move(detail)};
 }
 
-bool isTrackArea(const SimDevice& device, int area);     // 1..outputs, 241..240+channels
+bool isTrackArea(const SimDevice& device, int area);  // 1..outputs, 241..240+channels
 WordRead readTrackWord(SimDevice& device, int area, int word);
 // Writes a run: the pairs of words 1..250 as one unit (whole-track rewrite).
 SimAreaReply writeTrackWords(SimDevice& device, int area, int firstWord,

@@ -31,8 +31,7 @@ std::optional<QByteArray> SimTableDevice::executeRk512(const QByteArray& telegra
     }
     const int firstWord = request.offset / offsetsPerWord;
     const int count = request.words16 / 2;
-    qCDebug(commSimLog) << "RK512"
-                        << (request.order == table::Rk512Order::Read ? "read" : "write")
+    qCDebug(commSimLog) << "RK512" << (request.order == table::Rk512Order::Read ? "read" : "write")
                         << "area" << request.area << "words" << firstWord << "+" << count;
     if (request.order == table::Rk512Order::Read) {
         const SimAreaReply reply = m_areas.read(request.area, firstWord, count);

@@ -84,9 +84,9 @@ WordRead readPlcWord(SimDevice& device, int area, int word) {
 SimAreaReply writePlcWord(SimDevice& device, int area, int word, qint32 value) {
     if (area != table::kPlcLinkArea) {
         const char* command = isSetValueArea(area) ? "SPSSOLL" : "SPSIST";
-        return refusedBy(device.call(kCommand, command,
-                                     address(asciiArea(area), word).set("value", value)),
-                         QStringLiteral("value of network %1 in area %2").arg(word).arg(area));
+        return refusedBy(
+            device.call(kCommand, command, address(asciiArea(area), word).set("value", value)),
+            QStringLiteral("value of network %1 in area %2").arg(word).arg(area));
     }
     if (word == table::tableWord(u"plc_link.network")) {
         device.tableState().plcLinkSelection = value;

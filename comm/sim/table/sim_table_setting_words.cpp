@@ -80,7 +80,8 @@ qint32 readSystemWord(SimDevice& device, int word) {
         if (setting.area != table::kSystemArea || setting.word != word) continue;
         const PageField where = pageOf(setting.key);
         if (!where.page) break;
-        return table::settingToWord(setting, fieldsOf(device, where.page->command).num(where.field));
+        return table::settingToWord(setting,
+                                    fieldsOf(device, where.page->command).num(where.field));
     }
     return device.tableState().words.value({table::kSystemArea, word});
 }
@@ -156,9 +157,11 @@ WordRead readSettingWord(SimDevice& device, int area, int word) {
 
 SimAreaReply writeSettingWord(SimDevice& device, int area, int word, qint32 value) {
     const std::optional<table::TableLocation> location = table::locateTableWord(area, word);
-    if (area != table::kAnalogOutputArea && (!location || !table::canWrite(location->entry->access))) {
-        return SimAreaReply::fail(Rk512Error::General,
-                                  QStringLiteral("word %1 of area %2 is read-only").arg(word).arg(area));
+    if (area != table::kAnalogOutputArea &&
+        (!location || !table::canWrite(location->entry->access))) {
+        return SimAreaReply::fail(
+            Rk512Error::General,
+            QStringLiteral("word %1 of area %2 is read-only").arg(word).arg(area));
     }
     if (area == table::kSystemArea) return writeSystemWord(device, word, value);
     if (area == table::kConfigArea) return writeConfigWord(device, word, value);

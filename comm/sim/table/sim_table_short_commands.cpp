@@ -35,9 +35,9 @@ QByteArray status(SimDevice& device, const QByteArray& telegram) {
     status.deviceStatus = device.runtime().errorState;
     status.outputCount = device.profile().outputs;
     for (int output = 0; output < status.outputCount; ++output) {
-        status.outputs.append(device.axis().running() &&
-                              device.state().cams.isOn(status.program, output,
-                                                       device.axis().position()));
+        status.outputs.append(
+            device.axis().running() &&
+            device.state().cams.isOn(status.program, output, device.axis().position()));
     }
     const Result<QByteArray> reply = table::encodeStatusReply(status);
     return reply ? *reply : table::encodeAcknowledgement(ShortCommand::Status, false);
@@ -120,19 +120,22 @@ QByteArray SimTableDevice::executeShort(const QByteArray& telegram) {
             }
             break;
         case ShortCommand::ProgramChange:
-            if (order) return table::encodeAcknowledgement(command, programChange(m_device, telegram));
+            if (order)
+                return table::encodeAcknowledgement(command, programChange(m_device, telegram));
             break;
         case ShortCommand::ReadTrack:
             if (query) return readTrack(m_device, telegram);
             break;
         case ShortCommand::WriteTracks:
-            if (order) return table::encodeAcknowledgement(command, writeTracks(m_device, telegram));
+            if (order)
+                return table::encodeAcknowledgement(command, writeTracks(m_device, telegram));
             break;
         case ShortCommand::ReadDeadTime:
             if (query) return readDeadTime(m_device, telegram);
             break;
         case ShortCommand::WriteDeadTime:
-            if (order) return table::encodeAcknowledgement(command, writeDeadTime(m_device, telegram));
+            if (order)
+                return table::encodeAcknowledgement(command, writeDeadTime(m_device, telegram));
             break;
     }
     return table::encodeUnknownCommandReply();

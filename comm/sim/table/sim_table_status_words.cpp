@@ -15,7 +15,7 @@ using table::Rk512Error;
 namespace {
 
 constexpr int kBitsPerWord = 32;
-constexpr int kEpromDateBytes = 12;          // 3 words; the date and its NUL fill 11
+constexpr int kEpromDateBytes = 12;            // 3 words; the date and its NUL fill 11
 constexpr qint32 kMicrosecondsPerTenth = 100;  // ?GZYKLIST counts 0.1 ms, the table µs
 constexpr qint32 kCpuColdfire = 1;
 constexpr quint32 kDeleteProgramBit = 0x80000000u;
@@ -111,8 +111,9 @@ WordRead readStatusWord(SimDevice& device, int area, int word) {
 SimAreaReply writeStatusWord(SimDevice& device, int area, int word, qint32 value) {
     const std::optional<table::TableLocation> location = table::locateTableWord(area, word);
     if (!location || !table::canWrite(location->entry->access)) {
-        return SimAreaReply::fail(Rk512Error::General,
-                                  QStringLiteral("word %1 of area %2 is read-only").arg(word).arg(area));
+        return SimAreaReply::fail(
+            Rk512Error::General,
+            QStringLiteral("word %1 of area %2 is read-only").arg(word).arg(area));
     }
     const QString key = QLatin1String(location->entry->key);
     SimTableState& table = device.tableState();
@@ -136,18 +137,18 @@ SimAreaReply writeStatusWord(SimDevice& device, int area, int word, qint32 value
         if (bits & kDeleteProgramBit)
             return refusedBy(device.call(kCommand, "PDEL", Fields().set("program", program)),
                              QStringLiteral("deleting program %1").arg(program));
-        return refusedBy(device.call(kCommand, "PCPY",
-                                     Fields()
-                                         .set("target", program)
-                                         .set("source", programmingProgram(device))),
-                         QStringLiteral("copying to program %1").arg(program));
+        return refusedBy(
+            device.call(kCommand, "PCPY",
+                        Fields().set("target", program).set("source", programmingProgram(device))),
+            QStringLiteral("copying to program %1").arg(program));
     }
     if (key == QLatin1String("status.programming_select_mode") && (value < 0 || value > 2))
         return SimAreaReply::fail(Rk512Error::General, QStringLiteral("select mode %1").arg(value));
     if (key == QLatin1String("io.virtual_inputs")) {
         QByteArray& bytes = device.runtime().vInputs;
         bytes.resize(qMax<qsizetype>(bytes.size(), (location->index + 1) * 4), '\0');
-        for (int i = 0; i < 4; ++i) bytes[location->index * 4 + i] = char((quint32(value) >> (8 * i)) & 0xFF);
+        for (int i = 0; i < 4; ++i)
+            bytes[location->index * 4 + i] = char((quint32(value) >> (8 * i)) & 0xFF);
         return {};
     }
     table.words.insert({area, word}, value);

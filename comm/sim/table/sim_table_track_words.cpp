@@ -53,7 +53,8 @@ SimAreaReply setAnaloguePoints(SimDevice& device, int area, QList<Pair> pairs) {
         if (pair.first < profile.minPosition || pair.first > profile.maxPosition ||
             pair.second < kMinAnalogueValue || pair.second > kMaxAnalogueValue ||
             (!points.isEmpty() && points.last().position == pair.first))
-            return refused(QStringLiteral("analogue base point %1/%2").arg(pair.first).arg(pair.second));
+            return refused(
+                QStringLiteral("analogue base point %1/%2").arg(pair.first).arg(pair.second));
         points.append({pair.first, pair.second});
     }
     const int channel = area - table::kFirstAnalogCamArea;
@@ -71,7 +72,8 @@ SimAreaReply setCams(SimDevice& device, int area, const QList<Pair>& pairs) {
     for (const Pair& pair : pairs) cams.append({pair.first, pair.second});
     const qint32 error =
         device.state().cams.replaceTrack(programmingProgram(device), area - 1, cams);
-    if (error != 0) return refused(QStringLiteral("cams of area %1: error %2").arg(area).arg(error));
+    if (error != 0)
+        return refused(QStringLiteral("cams of area %1: error %2").arg(area).arg(error));
     return {};
 }
 
@@ -116,7 +118,8 @@ SimAreaReply writeDeadTimeWord(SimDevice& device, int area, int word, qint32 val
     const int output = area - 1;
     const qint32 maxDeadTime = device.profile().maxDeadTime;
     if (word == table::tableWord(u"track.dead_time")) {
-        if (value < 0 || value > maxDeadTime) return refused(QStringLiteral("dead time %1").arg(value));
+        if (value < 0 || value > maxDeadTime)
+            return refused(QStringLiteral("dead time %1").arg(value));
         if (value == 0) {
             device.state().deadTimes.remove(output);
         } else {
@@ -146,7 +149,8 @@ int programmingProgram(const SimDevice& device) {
 bool isTrackArea(const SimDevice& device, int area) {
     if (area >= table::kFirstTrackArea && area <= table::kLastTrackArea)
         return area <= device.profile().outputs;
-    if (isAnalogueArea(area)) return area - table::kFirstAnalogCamArea < device.profile().analogChannels;
+    if (isAnalogueArea(area))
+        return area - table::kFirstAnalogCamArea < device.profile().analogChannels;
     return false;
 }
 
@@ -179,7 +183,8 @@ SimAreaReply writeTrackWords(SimDevice& device, int area, int firstWord,
     qsizetype at = 0;
     while (at < values.size()) {
         if (word >= table::kFirstCamWord && word <= kLastPairWord) {
-            const qsizetype pairWords = std::min<qsizetype>(values.size() - at, kLastPairWord + 1 - word);
+            const qsizetype pairWords =
+                std::min<qsizetype>(values.size() - at, kLastPairWord + 1 - word);
             const SimAreaReply reply = writePairs(device, area, word, values.mid(at, pairWords));
             if (reply.error != Rk512Error::None) return reply;
             word += int(pairWords);
@@ -188,7 +193,8 @@ SimAreaReply writeTrackWords(SimDevice& device, int area, int firstWord,
         }
         if (isAnalogueArea(area) || word == table::tableWord(u"track.cam_count") || word > 253) {
             // Word 254 shifts every cam: a relative change the simulator lacks.
-            return refused(QStringLiteral("word %1 of area %2 cannot be written").arg(word).arg(area));
+            return refused(
+                QStringLiteral("word %1 of area %2 cannot be written").arg(word).arg(area));
         }
         const SimAreaReply reply = writeDeadTimeWord(device, area, word, values.at(at));
         if (reply.error != Rk512Error::None) return reply;

@@ -238,7 +238,8 @@ void TestLink3964R::onlyUnreadRepeatsAfterNakButNotAfterALostAcknowledgement() {
         pc.feed(kDleByte, 1);
         const Actions actions = pc.poll(2001);
         QVERIFY(actions.sendFailed.has_value());
-        QVERIFY2(actions.sendFailed->contains("may have executed"), qPrintable(*actions.sendFailed));
+        QVERIFY2(actions.sendFailed->contains("may have executed"),
+                 qPrintable(*actions.sendFailed));
         QVERIFY(actions.write.isEmpty());
         QVERIFY(!pc.sending());
         QCOMPARE(pc.nextDeadlineMs(), -1);

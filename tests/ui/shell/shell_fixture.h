@@ -1,12 +1,12 @@
 #pragma once
 
+#include "ui/cameditor/cam_document.h"
 #include "ui/capability_gate.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
-#include "ui/users_page.h"
 #include "ui/shell.h"
+#include "ui/users_page.h"
 #include "ui/workspace.h"
-#include "ui/cameditor/cam_document.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -22,8 +22,9 @@ constexpr int kDeviceTimeoutMs = 60000;
 // CommWorker with `protocol` (the simulated device speaks it too), with
 // identity and program 0 read. Unthrottled: the tests need the behaviour,
 // not the baud rate.
-inline std::unique_ptr<Shell> startOnSimulator(const QString& port = QStringLiteral("sim:throttle=0"),
-                                               const QString& protocol = QStringLiteral("standard")) {
+inline std::unique_ptr<Shell> startOnSimulator(
+    const QString& port = QStringLiteral("sim:throttle=0"),
+    const QString& protocol = QStringLiteral("standard")) {
     auto shell = std::make_unique<Shell>();
     shell->start(QString());
     shell->window()->connectionPage()->setPort(port);
