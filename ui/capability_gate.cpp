@@ -79,6 +79,9 @@ CapabilityGate::CapabilityGate(DeviceSession* session, SectionPage* page,
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_stack);
     connect(m_page, &SectionPage::statusMessage, this, &SectionPage::statusMessage);
+    connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
+        if (state == comm::ConnectionState::Connected) checkAvailability(false);
+    });
 }
 
 QList<SectionDifference> CapabilityGate::differences() const {
@@ -95,16 +98,20 @@ void CapabilityGate::writeItems(const QStringList& keys,
 }
 
 void CapabilityGate::deviceConnected() {
+    checkAvailability(true);
+}
+
+void CapabilityGate::checkAvailability(bool thenRead) {
     const comm::CamConCapability capability = m_capability;
     m_session->run<Availability>(
         this, tr("Check what the protocol offers"),
         [capability](comm::CamConDevice& device, comm::JobContext&) -> Result<Availability> {
             return Availability{device.has(capability), device.lacks(capability)};
         },
-        [this](Result<Availability> availability) {
+        [this, thenRead](Result<Availability> availability) {
             if (!availability) return;
             showAvailability(availability->available, availability->reason);
-            if (availability->available) m_page->deviceConnected();
+            if (availability->available && thenRead) m_page->deviceConnected();
         });
 }
 

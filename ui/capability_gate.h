@@ -13,10 +13,12 @@ namespace cambench {
 class DeviceSession;
 
 // A section that needs a capability of the connected protocol (users,
-// EEPROM backup, dead-time modes, ...). When a device connects it asks the
-// device: with the capability it shows its page and lets it read, without
-// it a page that says why (the protocol's own reason, translated) and greys
-// its entry in the navigation. Offline, the page is shown for editing.
+// EEPROM backup, dead-time modes, ...). Whenever a connection is made it
+// asks the device: with the capability it shows its page (and, when the
+// window reads everything, lets the page read), without it a page that says
+// why (the protocol's own reason, translated) and greys its entry in the
+// navigation, so that nothing of another protocol's device stays on view.
+// Offline, the page is shown for editing.
 class CapabilityGate : public SectionPage {
     Q_OBJECT
 public:
@@ -39,6 +41,8 @@ Q_SIGNALS:
     void availabilityChanged(bool available);
 
 private:
+    // Asks the connected device; `thenRead`: the page reads when available.
+    void checkAvailability(bool thenRead);
     void showAvailability(bool available, const QString& reason);
 
     DeviceSession* m_session;

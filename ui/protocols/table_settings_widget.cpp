@@ -15,7 +15,7 @@ TableSettingsWidget::TableSettingsWidget(const QString& protocolId, QWidget* par
     m_explanation->setWordWrap(true);
     m_explanation->setText(
         tr("Point to point: no device number. 3964R e38 reaches only the data words 0–127 of "
-           "each area: cams 1–63 per track and no dead-time modes; n96 reaches all."));
+           "each area: 62 cams per track and no dead-time modes; n96 reaches all."));
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Variant:"), m_variant);
