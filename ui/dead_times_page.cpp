@@ -93,6 +93,8 @@ void DeadTimesPage::readFromDevice() {
             auto deadTimes = client.readDeadTimes(outputs);
             if (!deadTimes) return deadTimes.error();
             settings.deadTimes = deadTimes.value();
+            // The table interface has no output names: the dead times are all there is.
+            if (!client.has(comm::CamConCapability::OutputNames)) return settings;
             for (int output = 1; output <= outputs; ++output) {
                 if (job.cancelled()) return Error::cancelled();
                 job.progress(output, outputs);

@@ -9,4 +9,11 @@ bool PlcNetwork::isEmpty() const {
            std::all_of(symbols.begin(), symbols.end(), [](quint16 s) { return s == 0; });
 }
 
+QString PlcNetwork::describe(int area, int number) {
+    const char* names = "OPMX";
+    const int index = area - O;
+    const QChar letter = index >= 0 && index < 4 ? QChar::fromLatin1(names[index]) : QChar(u'?');
+    return QStringLiteral("PLC network %1%2").arg(letter).arg(number);
+}
+
 }  // namespace cambench

@@ -27,7 +27,9 @@ bool AsciiCamCon::has(CamConCapability capability) const {
     case CamConCapability::BusScan: return m_link.settings().framing == Framing::Multiuser;
     case CamConCapability::DeadTimeModes:
     case CamConCapability::AnalogueCams:
-    case CamConCapability::EepromLock: return false;
+    case CamConCapability::EepromLock:
+    case CamConCapability::ProgrammingProgram:
+        return false;
     }
     return false;
 }

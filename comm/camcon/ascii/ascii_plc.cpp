@@ -5,23 +5,13 @@ namespace cambench::comm {
 
 using namespace client;
 
-namespace {
-
-QString networkText(int area, int number) {
-    const char* names = "OPMX";
-    const int index = area - PlcNetwork::O;
-    const QChar letter = index >= 0 && index < 4 ? QChar::fromLatin1(names[index]) : QChar(u'?');
-    return QStringLiteral("PLC network %1%2").arg(letter).arg(number);
-}
-
-}  // namespace
-
 Result<PlcNetwork> AsciiCamCon::readPlcNetwork(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(QStringLiteral("reading %1 (?GMXSPS)").arg(networkText(area, number)),
-                         reply.error());
+        return inContext(
+            QStringLiteral("reading %1 (?GMXSPS)").arg(PlcNetwork::describe(area, number)),
+            reply.error());
     }
     PlcNetwork network;
     network.area = area;
@@ -45,9 +35,9 @@ Status AsciiCamCon::writePlcNetwork(const PlcNetwork& network) {
     fields.setWords("symbols", words);
     const Result<Fields> reply = m_link.call('!', "GMXSPS", fields);
     if (!reply) {
-        return inContext(
-            QStringLiteral("writing %1 (!GMXSPS)").arg(networkText(network.area, network.number)),
-            reply.error());
+        return inContext(QStringLiteral("writing %1 (!GMXSPS)")
+                             .arg(PlcNetwork::describe(network.area, network.number)),
+                         reply.error());
     }
     return success();
 }
@@ -57,7 +47,7 @@ Result<qint32> AsciiCamCon::readPlcActual(int area, int number) {
         m_link.call('?', "SPSIST", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
         return inContext(QStringLiteral("reading the actual value of %1 (?SPSIST)")
-                             .arg(networkText(area, number)),
+                             .arg(PlcNetwork::describe(area, number)),
                          reply.error());
     }
     return qint32(reply->num("value"));
@@ -67,9 +57,9 @@ Result<qint32> AsciiCamCon::readPlcSetpoint(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "SPSSOLL", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
-        return inContext(
-            QStringLiteral("reading the set value of %1 (?SPSSOLL)").arg(networkText(area, number)),
-            reply.error());
+        return inContext(QStringLiteral("reading the set value of %1 (?SPSSOLL)")
+                             .arg(PlcNetwork::describe(area, number)),
+                         reply.error());
     }
     return qint32(reply->num("value"));
 }
