@@ -105,6 +105,7 @@ std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfi
     auto line = std::make_unique<SimLine>(config.effectiveFraming());
     for (int number : config.devices) line->addDevice(makeDevice(config, profile, number));
     line->setFaults(config.faults);
+    for (int number : config.deadDevices) line->injections().setDead(number, true);
     return line;
 }
 
@@ -114,7 +115,6 @@ std::unique_ptr<SimEndpoint> makeSimEndpoint(const SimPortConfig& config,
     auto line = std::make_unique<SimTableLine>(
         *config.tableVariant, makeDevice(config, profile, config.devices.value(0)));
     line->setFaults(config.faults);
-    for (int number : config.deadDevices) line->injections().setDead(number, true);
     return line;
 }
 
