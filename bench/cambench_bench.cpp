@@ -3,6 +3,8 @@
 // simulator, and what retries cost under 1 % corrupted replies. Figures,
 // not assertions: docs/performance.md records a run.
 
+#include "protocol_bench.h"
+
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "app/registry/builtin_registry.h"
@@ -143,11 +145,20 @@ int main(int argc, char** argv) {
     QCommandLineOption quick(QStringLiteral("quick"),
                              QStringLiteral("Only 38400 baud (skips the slow 9600 runs)."));
     parser.addOption(quick);
+    QCommandLineOption protocols(
+        QStringLiteral("protocols"),
+        QStringLiteral("Only a program of 32 tracks x 20 cams read and written over CamCon "
+                       "ASCII and the table interface (3964R n96, e38) at the same baud rates."));
+    parser.addOption(protocols);
     parser.process(app);
     // The figures are the output; the link's warnings about each retry are not.
     QLoggingCategory::setFilterRules(QStringLiteral("cambench.*.warning=false"));
 
     const QList<int> bauds = parser.isSet(quick) ? QList<int>{38400} : QList<int>{9600, 38400};
+    if (parser.isSet(protocols)) {
+        bench::benchProtocols(bauds);
+        return 0;
+    }
     out() << "operation                          |   baud | payload |    wire | "
              "reqs |    time   | wire limit | ratio | retries\n";
     for (int baud : bauds) {

@@ -4,6 +4,12 @@ target_sources(cambench_model PRIVATE
   camcon/device_info.h
   camcon/device_info.cpp
   camcon/dead_times.h
+  camcon/dead_time_modes.h
+  camcon/dead_time_modes.cpp
+  camcon/analogue_cams.h
+  camcon/analogue_cams.cpp
+  camcon/programming_program.h
+  camcon/programming_program.cpp
   camcon/user.h
   camcon/plc_network.h
   camcon/plc_network.cpp

@@ -3,6 +3,8 @@
 #include "device_session.h"
 #include "workspace.h"
 
+#include "ui/protocols/protocol_settings_widget.h"
+
 #include "comm/device/protocol_registry.h"
 
 #include <QComboBox>
@@ -13,7 +15,6 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSerialPortInfo>
-#include <QSpinBox>
 #include <QToolButton>
 
 namespace cambench {
@@ -50,16 +51,8 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
         m_baud->addItem(QString::number(baud), baud);
     form->addRow(tr("Baud rate:"), m_baud);
 
-    m_device = new QSpinBox;
-    m_device->setRange(0, 63);
-    m_device->setToolTip(tr("Multiuser: the number of the CamCon to talk to (0–63)."));
-    form->addRow(tr("Device number:"), m_device);
-
-    m_pcNumber = new QSpinBox;
-    m_pcNumber->setRange(0, 63);
-    m_pcNumber->setValue(63);
-    m_pcNumber->setToolTip(tr("Multiuser: this PC's own number on the bus (0–63)."));
-    form->addRow(tr("PC number:"), m_pcNumber);
+    m_protocolBox = new QVBoxLayout;
+    form->addRow(m_protocolBox);
 
     m_connect = new QPushButton(tr("Connect"));
     m_disconnect = new QPushButton(tr("Disconnect"));
@@ -91,6 +84,7 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     layout->addWidget(identity, 2);
 
     fillPorts();
+    showProtocolWidget();
     // A rebuilt window (language switch) shows the line in use.
     if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying())
         showConnection(m_session->connection(), m_session->protocol());
@@ -98,6 +92,7 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
         if (const comm::ProtocolInfo* info = currentProtocol())
             m_baud->setCurrentText(QString::number(info->defaultSerial.baud));
+        showProtocolWidget();
         updateButtons();
     });
     connect(m_connect, &QPushButton::clicked, this,
@@ -106,7 +101,12 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     connect(m_scan, &QPushButton::clicked, this, &ConnectionPage::scanBus);
     connect(m_devices, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         const int device = item->data(Qt::UserRole).toInt();
-        m_device->setValue(device);
+        if (const comm::ProtocolInfo* info = currentProtocol(); info && m_protocolWidget) {
+            std::unique_ptr<comm::ProtocolSettings> settings = info->makeSettings();
+            m_protocolWidget->store(*settings);
+            settings->setDevice(device);
+            m_protocolWidget->load(*settings);
+        }
         m_session->setDevice(device);
         Q_EMIT deviceSelected(device);
     });
@@ -145,9 +145,10 @@ void ConnectionPage::showConnection(const comm::ConnectionSettings& connection,
     setPort(connection.port);
     setProtocol(protocol.protocolId());
     m_baud->setCurrentText(QString::number(connection.serial.baud));
-    const QVariantMap numbers = protocol.toMap();
-    m_device->setValue(numbers.value(QStringLiteral("device")).toInt());
-    m_pcNumber->setValue(numbers.value(QStringLiteral("pcNumber"), 63).toInt());
+    // Also called before the protocol box's signal is connected: put up
+    // this protocol's widget here, then let it show the numbers.
+    showProtocolWidget();
+    if (m_protocolWidget) m_protocolWidget->load(protocol);
 }
 
 void ConnectionPage::setProtocol(const QString& id) {
@@ -162,6 +163,8 @@ const comm::ProtocolInfo* ConnectionPage::currentProtocol() const {
 QString ConnectionPage::protocolTitle(const comm::ProtocolInfo& info) {
     if (info.id == QLatin1String("standard")) return tr("Standard (point to point)");
     if (info.id == QLatin1String("multiuser")) return tr("Multiuser (RS485 bus)");
+    if (info.id == QLatin1String("3964r-n96")) return tr("Table interface, 3964R n96 (9600 8N1)");
+    if (info.id == QLatin1String("3964r-e38")) return tr("Table interface, 3964R e38 (38400 8E1)");
     return info.title;
 }
 
@@ -184,9 +187,18 @@ comm::ProtocolSettingsPtr ConnectionPage::protocolSettings() const {
     const comm::ProtocolInfo* info = currentProtocol();
     if (!info) return m_session->protocolSettings();
     std::unique_ptr<comm::ProtocolSettings> settings = info->makeSettings();
-    settings->fromMap({{QStringLiteral("device"), m_device->value()},
-                       {QStringLiteral("pcNumber"), m_pcNumber->value()}});
+    if (m_protocolWidget) m_protocolWidget->store(*settings);
     return comm::ProtocolSettingsPtr(std::move(settings));
+}
+
+void ConnectionPage::showProtocolWidget() {
+    delete m_protocolWidget;
+    const comm::ProtocolInfo* info = currentProtocol();
+    m_protocolWidget = info ? ProtocolWidgetRegistry::instance().create(info->id) : nullptr;
+    if (!m_protocolWidget) return;
+    m_protocolBox->addWidget(m_protocolWidget);
+    connect(m_protocolWidget, &ProtocolSettingsWidget::protocolRequested, this,
+            &ConnectionPage::setProtocol, Qt::QueuedConnection);
 }
 
 void ConnectionPage::updateButtons() {

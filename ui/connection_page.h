@@ -9,7 +9,7 @@ class QComboBox;
 class QFormLayout;
 class QListWidget;
 class QPushButton;
-class QSpinBox;
+class QVBoxLayout;
 
 namespace cambench {
 namespace comm {
@@ -17,6 +17,7 @@ struct ProtocolInfo;
 }
 
 class DeviceSession;
+class ProtocolSettingsWidget;
 class Workspace;
 
 // Where the device is (serial port, tcp://, simulated), the protocol and
@@ -51,14 +52,16 @@ private:
     void updateButtons();
     void showInfo();
     void showScanResult(const Result<QList<int>>& devices);
+    // Puts the settings widget of the protocol chosen in place.
+    void showProtocolWidget();
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     QComboBox* m_port;
     QComboBox* m_protocol;
     QComboBox* m_baud;
-    QSpinBox* m_device;
-    QSpinBox* m_pcNumber;
+    QVBoxLayout* m_protocolBox;  // holds the chosen protocol's settings widget
+    ProtocolSettingsWidget* m_protocolWidget = nullptr;
     QPushButton* m_connect;
     QPushButton* m_disconnect;
     QPushButton* m_scan;

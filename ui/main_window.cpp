@@ -1,22 +1,27 @@
 #include "main_window.h"
 
+#include "analogue_cams_page.h"
 #include "backup_page.h"
 #include "backup_wizard.h"
 #include "cam_page.h"
+#include "capability_gate.h"
 #include "commissioning_report.h"
 #include "compare_dialog.h"
 #include "connection_page.h"
 #include "connection_status.h"
+#include "dead_time_modes_page.h"
 #include "dead_times_page.h"
 #include "device_reads.h"
 #include "device_session.h"
 #include "gui_settings.h"
 #include "incoming_values.h"
+#include "eeprom_lock_page.h"
 #include "language.h"
 #include "line_backup_dialog.h"
 #include "monitor_page.h"
 #include "new_project_dialog.h"
 #include "plc_page.h"
+#include "programming_program_page.h"
 #include "project_io.h"
 #include "report_dialog.h"
 #include "settings_page.h"
@@ -104,11 +109,30 @@ void MainWindow::createPages() {
     m_monitor = new MonitorPage(m_session, m_workspace);
     auto* backup = new BackupPage;
     m_terminal = new TerminalPage(m_session);
-    m_pages = {m_connection, m_cams,    m_deadTimes, m_settings, m_users,
-               m_plc,        m_monitor, backup,      m_terminal};
+    // Sections some protocols lack say so (CapabilityGate); those only the
+    // table interface has come last.
+    using Cap = comm::CamConCapability;
+    const auto gate = [this](SectionPage* page, Cap capability) {
+        return new CapabilityGate(m_session, page, capability);
+    };
+    m_pages = {m_connection,
+               m_cams,
+               m_deadTimes,
+               m_settings,
+               gate(m_users, Cap::Users),
+               gate(m_plc, Cap::PlcNetworks),
+               m_monitor,
+               gate(backup, Cap::EepromBackup),
+               gate(m_terminal, Cap::Terminal),
+               gate(new DeadTimeModesPage(m_session, m_workspace), Cap::DeadTimeModes),
+               gate(new AnalogueCamsPage(m_session, m_workspace), Cap::AnalogueCams),
+               gate(new ProgrammingProgramPage(m_session, m_workspace), Cap::ProgrammingProgram),
+               gate(new EepromLockPage(m_session), Cap::EepromLock)};
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
         m_nav->addItem(page->sectionTitle());
+        if (auto* gated = qobject_cast<CapabilityGate*>(page))
+            gated->setNavItem(m_nav->item(m_nav->count() - 1));
         connect(page, &SectionPage::statusMessage, this, &MainWindow::showMessage);
     }
     connect(backup, &BackupPage::wizardRequested, this, &MainWindow::openBackupWizard);
@@ -118,7 +142,8 @@ void MainWindow::createPages() {
 }
 
 QList<SectionPage*> MainWindow::dataPages() const {
-    return {m_cams, m_deadTimes, m_settings, m_users, m_plc};
+    // The gates of users and PLC: nothing to compare where the protocol lacks them.
+    return {m_cams, m_deadTimes, m_settings, m_pages.at(Users), m_pages.at(Plc)};
 }
 
 void MainWindow::createMenus() {
@@ -183,7 +208,7 @@ void MainWindow::createMenus() {
                 [this, lang] { Q_EMIT languageRequested(lang); });
     }
     view->addSeparator();
-    for (int i = 0; i < COUNT; ++i) {
+    for (int i = 0; i < m_pages.size(); ++i) {
         // "Encoder & system" would make "&s" a mnemonic: double the ampersand.
         QString title = m_pages[i]->sectionTitle();
         view->addAction(title.replace(QLatin1Char('&'), QLatin1String("&&")), this,

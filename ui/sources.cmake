@@ -26,6 +26,22 @@ target_sources(cambench_ui PRIVATE
   incoming_values.cpp
   device_reads.h
   device_reads.cpp
+  capability_gate.h
+  capability_gate.cpp
+  dead_time_modes_page.h
+  dead_time_modes_page.cpp
+  analogue_cams_page.h
+  analogue_cams_page.cpp
+  eeprom_lock_page.h
+  eeprom_lock_page.cpp
+  programming_program_page.h
+  programming_program_page.cpp
+  protocols/protocol_settings_widget.h
+  protocols/protocol_settings_widget.cpp
+  protocols/ascii_settings_widget.h
+  protocols/ascii_settings_widget.cpp
+  protocols/table_settings_widget.h
+  protocols/table_settings_widget.cpp
   connection_page.h
   connection_page.cpp
   dead_times_model.h

@@ -195,12 +195,14 @@ Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what) 
 
 QString usageText() {
     return QStringLiteral(
-        "Usage: cambench-cli [--port PORT] [--protocol standard|multiuser] [--baud N]\n"
+        "Usage: cambench-cli [--port PORT] [--protocol PROTOCOL] [--baud N]\n"
         "                    [--device N] [--pc-number N] [--timeout MS] [--log FILE] COMMAND\n"
         "\n"
         "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
         "default)\n"
-        "  --protocol    standard (default, 9600 baud) or multiuser (38400 baud)\n"
+        "  --protocol    standard (default, 9600 baud) or multiuser (38400 baud): CamCon ASCII;\n"
+        "                3964r-n96 (9600 8N1) or 3964r-e38 (38400 8E1): the table interface,\n"
+        "                which has no users, names, EEPROM backup or raw commands\n"
         "  --baud N      line speed; overrides the protocol's default\n"
         "  --device N    Multiuser device number 0..63 (default 0)\n"
         "  --pc-number N Multiuser number of this PC 0..63 (default 63)\n"

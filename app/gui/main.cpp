@@ -1,3 +1,4 @@
+#include "app/gui/gui_registry.h"
 #include "app/registry/builtin_registry.h"
 #include "cambench_version.h"
 #include "ui/gui_settings.h"
@@ -16,6 +17,7 @@
 
 int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
+    cambench::registerProtocolWidgets();
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("CamBench"));
     QApplication::setApplicationName(QStringLiteral("CamBench"));

@@ -1,6 +1,7 @@
 #include "builtin_registry.h"
 
 #include "comm/camcon/ascii/ascii_protocol.h"
+#include "comm/camcon/table/table_protocol.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/sim_transport.h"
 #include "comm/transport/transport_registry.h"
@@ -14,6 +15,7 @@ void registerBuiltins() {
 
     comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
     comm::registerCamConAscii(protocols);
+    comm::registerCamConTable(protocols);
 }
 
 }  // namespace cambench

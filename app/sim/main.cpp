@@ -5,6 +5,7 @@
 #include "cambench_version.h"
 #include "signal_quitter.h"
 
+#include "comm/camcon/table/rk512.h"
 #include "comm/sim/sim_demo.h"
 #include "comm/sim/sim_line.h"
 #include "comm/sim/sim_pacer.h"
@@ -53,12 +54,10 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
     SimPortConfig& config = options.config;
     if (parser.isSet(QStringLiteral("protocol"))) {
         const QString protocol = parser.value(QStringLiteral("protocol"));
-        if (protocol == QLatin1String("standard")) {
-            config.framing = Framing::Standard;
-        } else if (protocol == QLatin1String("multiuser")) {
-            config.framing = Framing::Multiuser;
-        } else {
-            return QStringLiteral("--protocol must be standard or multiuser, not \"%1\".")
+        if (!applySimProtocol(config, protocol)) {
+            return QStringLiteral(
+                       "--protocol must be standard, multiuser, 3964r-n96 or 3964r-e38, not "
+                       "\"%1\".")
                 .arg(protocol);
         }
     }
@@ -67,11 +66,15 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
         if (!devices) return QStringLiteral("--devices: %1").arg(devices.error().message);
         config.devices = *devices;
     }
-    if (config.effectiveFraming() == Framing::Standard && config.devices.size() > 1) {
+    if (config.tableVariant && config.devices.size() > 1)
+        return QStringLiteral("3964R is point to point: one device.");
+    if (!config.tableVariant && config.effectiveFraming() == Framing::Standard &&
+        config.devices.size() > 1) {
         return QStringLiteral("Standard framing has one device; add --protocol multiuser.");
     }
     bool ok = true;
     config.baud = config.effectiveFraming() == Framing::Multiuser ? kMultiuserBaud : kStandardBaud;
+    if (config.tableVariant) config.baud = table::rk512VariantInfo(*config.tableVariant).baudRate;
     if (parser.isSet(QStringLiteral("baud")))
         config.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
     if (!ok || config.baud < 300) return QStringLiteral("--baud needs a baud rate of 300 or more.");
@@ -85,12 +88,22 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
         if (!ok || port > 65535) return QStringLiteral("--tcp needs a port number 0..65535.");
         options.tcpPort = quint16(port);
     }
-    for (const char* name : {"corrupt", "drop"}) {
+    SimFaultSettings& faults = config.faults;
+    const QList<std::pair<const char*, QList<double*>>> probabilities{
+        {"corrupt", {&faults.corruptProbability}},
+        {"drop", {&faults.dropProbability}},
+        {"nak", {&faults.nakProbability}},
+        {"lost-dle", {&faults.lostDleProbability}},
+        {"collision", {&faults.collisionProbability}},
+        {"link-faults",
+         {&faults.corruptProbability, &faults.nakProbability, &faults.lostDleProbability,
+          &faults.collisionProbability}},
+    };
+    for (const auto& [name, targets] : probabilities) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const auto p = probability(parser.value(QLatin1String(name)));
         if (!p) return QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name));
-        (QByteArray(name) == "corrupt" ? config.faults.corruptProbability
-                                       : config.faults.dropProbability) = *p;
+        for (double* target : targets) *target = *p;
     }
     for (const char* name : {"delay", "fill"}) {
         if (!parser.isSet(QLatin1String(name))) continue;
@@ -123,12 +136,14 @@ void addOptions(QCommandLineParser& parser) {
     parser.addVersionOption();
     parser.addOptions({
         {QStringLiteral("protocol"),
-         QStringLiteral("standard or multiuser (default: multiuser for several devices)."),
-         QStringLiteral("framing")},
+         QStringLiteral("standard, multiuser, 3964r-n96 or 3964r-e38 (default: multiuser for "
+                        "several devices, else standard)."),
+         QStringLiteral("protocol")},
         {QStringLiteral("devices"), QStringLiteral("Device numbers 0..63, e.g. 0,5 (default 0)."),
          QStringLiteral("list")},
         {QStringLiteral("baud"),
-         QStringLiteral("Baud rate for the timing (default 9600, Multiuser 38400)."),
+         QStringLiteral("Baud rate for the timing (default 9600, Multiuser and 3964r-e38 "
+                        "38400)."),
          QStringLiteral("rate")},
         {QStringLiteral("pc-number"),
          QStringLiteral("Multiuser: answer only this PC number (default any)."),
@@ -139,6 +154,19 @@ void addOptions(QCommandLineParser& parser) {
         {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."),
          QStringLiteral("p")},
         {QStringLiteral("drop"), QStringLiteral("Probability of a lost reply."),
+         QStringLiteral("p")},
+        {QStringLiteral("nak"),
+         QStringLiteral("3964R: probability of a NAK to a good block (not executed)."),
+         QStringLiteral("p")},
+        {QStringLiteral("lost-dle"),
+         QStringLiteral("3964R: probability of a DLE of the device lost on the line."),
+         QStringLiteral("p")},
+        {QStringLiteral("collision"),
+         QStringLiteral("3964R: probability of the device's STX crossing the PC's."),
+         QStringLiteral("p")},
+        {QStringLiteral("link-faults"),
+         QStringLiteral("3964R: --corrupt (the reply's BCC), --nak, --lost-dle and --collision "
+                        "at once."),
          QStringLiteral("p")},
         {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."),
          QStringLiteral("ms")},
@@ -175,9 +203,10 @@ int main(int argc, char* argv[]) {
             ? QStringLiteral("cambench.comm.sim.debug=true")
             : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
 
-    std::unique_ptr<SimLine> line = makeSimLine(options.config);
-    line->setPcNumber(options.pcNumber);
-    const SimPacer pacer(options.config.baud, options.config.throttle);
+    std::unique_ptr<SimEndpoint> line = makeSimEndpoint(options.config);
+    if (auto* ascii = dynamic_cast<SimLine*>(line.get())) ascii->setPcNumber(options.pcNumber);
+    const SimPacer pacer(options.config.baud, options.config.throttle,
+                         options.config.bitsPerByte());
     SignalQuitter quitter;
     if (!quitter.isValid()) return fail(QStringLiteral("cannot watch for SIGTERM/SIGINT."));
 

@@ -43,12 +43,49 @@ QString CamConDevice::lacks(CamConCapability capability) const {
             return QCoreApplication::translate("cambench::comm",
                                                "The EEPROM lock exists only in %1.")
                 .arg(table);
+        case CamConCapability::ProgrammingProgram:
+            return QCoreApplication::translate(
+                       "cambench::comm",
+                       "Editing a program other than the active one exists only in %1.")
+                .arg(table);
     }
     return {};
 }
 
 Error CamConDevice::missing(CamConCapability capability) const {
     return Error::usage(lacks(capability));
+}
+
+Result<DeadTimeModes> CamConDevice::readDeadTimeModes(int) {
+    return missing(CamConCapability::DeadTimeModes);
+}
+
+Status CamConDevice::writeDeadTimeMode(int, const OutputDeadTime&) {
+    return missing(CamConCapability::DeadTimeModes);
+}
+
+Result<AnalogueCamTrack> CamConDevice::readAnalogueCams(int) {
+    return missing(CamConCapability::AnalogueCams);
+}
+
+Status CamConDevice::writeAnalogueCams(const AnalogueCamTrack&) {
+    return missing(CamConCapability::AnalogueCams);
+}
+
+Result<ProgrammingProgram> CamConDevice::readProgrammingProgram() {
+    return missing(CamConCapability::ProgrammingProgram);
+}
+
+Status CamConDevice::writeProgrammingProgram(const ProgrammingProgram&) {
+    return missing(CamConCapability::ProgrammingProgram);
+}
+
+Result<bool> CamConDevice::readEepromLock() {
+    return missing(CamConCapability::EepromLock);
+}
+
+Status CamConDevice::writeEepromLock(bool) {
+    return missing(CamConCapability::EepromLock);
 }
 
 }  // namespace cambench::comm

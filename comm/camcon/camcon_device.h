@@ -3,11 +3,14 @@
 #include "comm/device/device_connection.h"
 #include "comm/device/progress.h"
 
+#include "model/camcon/analogue_cams.h"
 #include "model/camcon/cam_program.h"
+#include "model/camcon/dead_time_modes.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
 #include "model/camcon/eeprom_image.h"
 #include "model/camcon/plc_network.h"
+#include "model/camcon/programming_program.h"
 #include "model/camcon/system_settings.h"
 #include "model/camcon/user.h"
 #include "model/result.h"
@@ -19,15 +22,16 @@ namespace cambench::comm {
 // What a CamCon protocol may or may not offer. The GUI and the CLI ask
 // before they offer an action; a missing one comes with a reason.
 enum class CamConCapability {
-    Users,          // users and rights: ASCII only
-    EepromBackup,   // whole-EEPROM backup and restore (?EE/!EE): ASCII only
-    BusScan,        // device numbers on a bus: Multiuser
-    Terminal,       // free-form requests typed by the user: ASCII
-    OutputNames,    // output and program names: ASCII
-    PlcNetworks,    // PLC links (?GMXSPS / data area 216)
-    DeadTimeModes,  // dead-time modes and separate on/off dead times: table interface
-    AnalogueCams,   // analogue cams (data areas 241..254): table interface
-    EepromLock,     // EEPROM write lock, changes held in RAM: table interface
+    Users,               // users and rights: ASCII only
+    EepromBackup,        // whole-EEPROM backup and restore (?EE/!EE): ASCII only
+    BusScan,             // device numbers on a bus: Multiuser
+    Terminal,            // free-form requests typed by the user: ASCII
+    OutputNames,         // output and program names: ASCII
+    PlcNetworks,         // PLC links (?GMXSPS / data area 216)
+    DeadTimeModes,       // dead-time modes and separate on/off dead times: table interface
+    AnalogueCams,        // analogue cams (data areas 241..254): table interface
+    EepromLock,          // EEPROM write lock, changes held in RAM: table interface
+    ProgrammingProgram,  // a program other than the active one edited (DW70..73): table interface
 };
 
 // Everything the GUI and the CLI ask of a CamCon, whatever the protocol.
@@ -100,6 +104,24 @@ public:
     virtual Result<QList<int>> scanBus(int first, int last, const ProgressFn& progress = {}) = 0;
     // A request typed by the user; returns the reply as text.
     virtual Result<QByteArray> raw(const QByteArray& request) = 0;
+
+    // What only some protocols offer. Each default refuses with missing()
+    // of its capability, so a protocol implements only what it has.
+
+    // DeadTimeModes: mode and values of outputs 1..outputs.
+    virtual Result<DeadTimeModes> readDeadTimeModes(int outputs);
+    virtual Status writeDeadTimeMode(int output, const OutputDeadTime& deadTime);
+    // AnalogueCams: the base points of analogue output 1..14.
+    virtual Result<AnalogueCamTrack> readAnalogueCams(int analogueOutput);
+    // Makes the device's base points of `track.output` equal `track.points`.
+    virtual Status writeAnalogueCams(const AnalogueCamTrack& track);
+    // ProgrammingProgram.
+    virtual Result<ProgrammingProgram> readProgrammingProgram();
+    virtual Status writeProgrammingProgram(const ProgrammingProgram& programming);
+    // EepromLock: true = locked, later changes are kept in RAM only and are
+    // lost when the device is switched off.
+    virtual Result<bool> readEepromLock();
+    virtual Status writeEepromLock(bool locked);
 };
 
 }  // namespace cambench::comm

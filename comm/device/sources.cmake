@@ -3,6 +3,7 @@
 target_sources(cambench_comm PRIVATE
   device/device_connection.h
   device/progress.h
+  device/error_context.h
   device/protocol_settings.h
   device/protocol_registry.h
   device/protocol_registry.cpp

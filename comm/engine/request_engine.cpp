@@ -154,7 +154,9 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
                 QCoreApplication::translate("cambench::comm", "the request could not be sent");
             return result;
         }
-        if (!m_sent || now() < deadline) continue;
+        // The request may have left during this pass (a link backend's
+        // handshake): its reply deadline starts on the next pass.
+        if (!m_sent || deadline < 0 || now() < deadline) continue;
 
         // The attempt's time is up.
         const bool probing = request.timeout == TimeoutClass::Long && request.probe &&

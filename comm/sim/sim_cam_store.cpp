@@ -65,6 +65,18 @@ qint32 SimCamStore::insert(int program, int output, Cam cam) {
     return 0;
 }
 
+qint32 SimCamStore::replaceTrack(int program, int output, const QList<Cam>& cams) {
+    QList<Cam> kept;
+    for (const Cam& cam : cams) {
+        if (const qint32 error = checkFits(kept, cam)) return error;
+        kept.append(cam);
+    }
+    if (camCount() - track(program, output).size() + kept.size() > m_capacity)
+        return sim_errors::kEepromFull;
+    setTrack(program, output, std::move(kept));
+    return 0;
+}
+
 qint32 SimCamStore::remove(int program, int output, qint32 on) {
     QList<Cam> cams = track(program, output);
     const auto it =

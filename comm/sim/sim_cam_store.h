@@ -36,6 +36,8 @@ public:
     qint32 insert(int program, int output, Cam cam);
     qint32 remove(int program, int output, qint32 on);
     qint32 change(int program, int output, qint32 oldOn, Cam cam);
+    // Replaces the whole track (table interface); nothing changes on an error.
+    qint32 replaceTrack(int program, int output, const QList<Cam>& cams);
     void removeProgram(int program);
     void copyProgram(int from, int to);
     void copyTrack(int program, int fromOutput, int toOutput);

@@ -3,6 +3,8 @@
 #include "sim_device.h"
 #include "sim_line.h"
 
+#include "comm/sim/table/sim_table_line.h"
+
 #include <algorithm>
 
 namespace cambench::comm {
@@ -40,6 +42,10 @@ void loadDemoState(SimDevice& device) {
     state.outputNames = {
         {0, "Glue valve"}, {1, "Knife"}, {2, "Stacker"}, {3, "Punch"}, {5, "Blower"}};
     state.deadTimes = {{0, 25}, {1, 120}, {3, 9999}};
+    // Only the table interface reaches these.
+    SimTableState& table = device.tableState();
+    table.deadTimeModes.insert(1, {DeadTimeMode::SeparateOnOff, 0, 80, 150});
+    table.analogueCams.insert(0, {{0, 0}, {max / 2, 16000}, {max, 0}});
     state.users = {demoUser("Supervisor", "4711", 0xEF, 256),
                    demoUser("Operator", "1234", 0x01, 8)};
     SimPlcNetwork andGate;  // O0 = I1 AND M2
@@ -72,19 +78,43 @@ void fillBenchmarkCams(SimDevice& device, int camsPerTrack) {
     }
 }
 
-std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile) {
-    auto line = std::make_unique<SimLine>(config.effectiveFraming());
+namespace {
+
+// The profile `config` asks for: protocol number and room for its cams.
+SimProfile sizedProfile(const SimPortConfig& config, const SimProfile& profile) {
     SimProfile sized = profile;
-    sized.protocol = config.effectiveFraming() == Framing::Multiuser ? 2 : 1;
+    sized.protocol = config.tableVariant                               ? 4
+                     : config.effectiveFraming() == Framing::Multiuser ? 2
+                                                                       : 1;
     sized.camCapacity =
         std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
-    for (int number : config.devices) {
-        SimDevice& device = line->addDevice(std::make_unique<SimDevice>(sized, number));
-        loadDemoState(device);
-        if (config.fill > 0) fillBenchmarkCams(device, config.fill);
-    }
+    return sized;
+}
+
+std::unique_ptr<SimDevice> makeDevice(const SimPortConfig& config, const SimProfile& profile,
+                                      int number) {
+    auto device = std::make_unique<SimDevice>(sizedProfile(config, profile), number);
+    loadDemoState(*device);
+    if (config.fill > 0) fillBenchmarkCams(*device, config.fill);
+    return device;
+}
+
+}  // namespace
+
+std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile) {
+    auto line = std::make_unique<SimLine>(config.effectiveFraming());
+    for (int number : config.devices) line->addDevice(makeDevice(config, profile, number));
     line->setFaults(config.faults);
     for (int number : config.deadDevices) line->injections().setDead(number, true);
+    return line;
+}
+
+std::unique_ptr<SimEndpoint> makeSimEndpoint(const SimPortConfig& config,
+                                             const SimProfile& profile) {
+    if (!config.tableVariant) return makeSimLine(config, profile);
+    auto line = std::make_unique<SimTableLine>(
+        *config.tableVariant, makeDevice(config, profile, config.devices.value(0)));
+    line->setFaults(config.faults);
     return line;
 }
 

@@ -8,6 +8,7 @@
 namespace cambench::comm {
 
 class SimDevice;
+class SimEndpoint;
 class SimLine;
 
 // A plausible machine to show and test with: a few programs with named
@@ -20,7 +21,11 @@ void loadDemoState(SimDevice& device);
 // backup of more than 32 KiB).
 void fillBenchmarkCams(SimDevice& device, int camsPerTrack);
 
-// A line with the configured devices (demo or benchmark state) and faults.
+// An ASCII line with the configured devices (demo or benchmark state) and faults.
 std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile = {});
+// The line `config` describes: ASCII (makeSimLine) or, with a table
+// variant, a 3964R line to one device in the same demo or benchmark state.
+std::unique_ptr<SimEndpoint> makeSimEndpoint(const SimPortConfig& config,
+                                             const SimProfile& profile = {});
 
 }  // namespace cambench::comm

@@ -41,10 +41,17 @@ bool SimDevice::hasHandler(char kind, const QByteArray& name) const {
     return m_handlers.contains(handlerKey(kind, name));
 }
 
+std::optional<SimResult> SimDevice::call(char kind, const QByteArray& name, const Fields& fields) {
+    const auto handler = m_handlers.constFind(handlerKey(kind, name));
+    if (handler == m_handlers.cend()) return std::nullopt;
+    return (*handler)(fields);
+}
+
 void SimDevice::clearAll() {
     m_state = defaultState(m_profile, m_number);
     m_cursor.reset();
     m_runtime = SimRuntime();
+    m_tableState = SimTableState();
 }
 
 void SimDevice::start(SimState state) {

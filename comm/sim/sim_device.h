@@ -7,6 +7,8 @@
 #include "sim_result.h"
 #include "sim_state.h"
 
+#include "comm/sim/table/sim_table_state.h"
+
 #include "comm/camcon/ascii/catalogue.h"
 #include "comm/camcon/ascii/frame.h"
 
@@ -54,6 +56,13 @@ public:
     SimAxis& axis() { return m_axis; }
     const SimAxis& axis() const { return m_axis; }
     SimRuntime& runtime() { return m_runtime; }
+    SimTableState& tableState() { return m_tableState; }
+    const SimTableState& tableState() const { return m_tableState; }
+
+    // Runs the handler of one catalogue command directly, without a frame:
+    // the table interface reaches the same state through it. nullopt when
+    // the device has no handler for the command.
+    std::optional<SimResult> call(char kind, const QByteArray& name, const Fields& fields = {});
 
     bool checksumsEnabled() const { return m_checksums; }
     void setChecksumsEnabled(bool enabled) { m_checksums = enabled; }
@@ -79,6 +88,7 @@ private:
     SimEeprom m_eeprom;
     SimAxis m_axis;
     SimRuntime m_runtime;
+    SimTableState m_tableState;
     bool m_checksums = true;
     qint64 m_executions = 0;
     QHash<QByteArray, SimHandler> m_handlers;  // key: kind + name, e.g. "?NF"

@@ -12,8 +12,12 @@ namespace cambench::comm {
 // choices come from one seeded generator, so a test sees the same faults
 // on every run.
 struct SimFaultSettings {
-    double corruptProbability = 0.0;  // one byte of a reply changed
+    double corruptProbability = 0.0;  // one byte of a reply changed (3964R: the BCC of its block)
     double dropProbability = 0.0;     // a reply never sent
+    // 3964R only (SimTableLine), each per chance:
+    double nakProbability = 0.0;        // a good block answered NAK, not executed
+    double lostDleProbability = 0.0;    // the device's DLE lost on the line
+    double collisionProbability = 0.0;  // the device's STX crosses the PC's; the device yields
     int extraDelayMs = 0;             // added to every reply
     bool dead = false;                // never answers
     quint32 seed = 1;

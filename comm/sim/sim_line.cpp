@@ -32,6 +32,11 @@ void SimLine::updateChecksumMode() {
                                              [](const auto& d) { return d->checksumsEnabled(); }));
 }
 
+QString SimLine::protocolName() const {
+    return m_framing == Framing::Multiuser ? QStringLiteral("Multiuser")
+                                           : QStringLiteral("Standard");
+}
+
 QList<SimOutput> SimLine::feed(QByteArrayView bytesFromPc) {
     QList<SimOutput> outputs;
     for (const DecodeEvent& event : m_decoder.feed(bytesFromPc)) {

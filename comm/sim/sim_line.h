@@ -1,6 +1,7 @@
 #pragma once
 
 #include "sim_device.h"
+#include "sim_endpoint.h"
 #include "sim_faults.h"
 #include "sim_injections.h"
 #include "sim_output.h"
@@ -23,7 +24,7 @@ namespace cambench::comm {
 // only the addressed device answers, and a repeated block number from the
 // same PC makes it repeat its last answer without executing again. A frame
 // with a bad checksum gets no answer, as on a real line.
-class SimLine {
+class SimLine : public SimEndpoint {
 public:
     struct Counters {
         int frames = 0;        // requests decoded with a good checksum
@@ -38,7 +39,7 @@ public:
 
     // Multiuser device numbers 0..63; the line owns the device.
     SimDevice& addDevice(std::unique_ptr<SimDevice> device);
-    SimDevice* device(int number) const;
+    SimDevice* device(int number) const override;
     const std::vector<std::unique_ptr<SimDevice>>& devices() const { return m_devices; }
 
     void setFaults(const SimFaultSettings& settings) { m_faults = SimFaults(settings); }
@@ -51,6 +52,9 @@ public:
     const Counters& counters() const { return m_counters; }
 
     QList<SimOutput> feed(QByteArrayView bytesFromPc);
+
+    QList<SimOutput> receive(QByteArrayView bytes, qint64) override { return feed(bytes); }
+    QString protocolName() const override;
 
 private:
     struct LastAnswer {

@@ -5,29 +5,29 @@
 namespace cambench::comm {
 
 namespace {
-constexpr qint64 kBitsPerByte = 10;
 constexpr qint64 kUsPerSecond = 1000000;
 }  // namespace
 
 int PacedReply::bytesDueAt(qint64 nowUs) const {
     if (nowUs < startUs) return 0;
     if (baud <= 0) return int(bytes.size());
-    const qint64 due = (nowUs - startUs) * baud / (kBitsPerByte * kUsPerSecond);
+    const qint64 due = (nowUs - startUs) * baud / (bitsPerByte * kUsPerSecond);
     return int(std::min<qint64>(due, bytes.size()));
 }
 
 qint64 PacedReply::dueUs(int count) const {
     if (baud <= 0) return startUs;
     // Round up so that bytesDueAt(dueUs(n)) >= n.
-    const qint64 bitsUs = qint64(count) * kBitsPerByte * kUsPerSecond;
+    const qint64 bitsUs = qint64(count) * bitsPerByte * kUsPerSecond;
     return startUs + (bitsUs + baud - 1) / baud;
 }
 
-SimPacer::SimPacer(int baud, bool throttle) : m_baud(std::max(baud, 1)), m_throttle(throttle) {}
+SimPacer::SimPacer(int baud, bool throttle, int bitsPerByte)
+    : m_baud(std::max(baud, 1)), m_throttle(throttle), m_bitsPerByte(std::max(bitsPerByte, 1)) {}
 
 qint64 SimPacer::transferUs(qint64 bytes) const {
     if (!m_throttle) return 0;
-    return (bytes * kBitsPerByte * kUsPerSecond + m_baud - 1) / m_baud;
+    return (bytes * m_bitsPerByte * kUsPerSecond + m_baud - 1) / m_baud;
 }
 
 QList<PacedReply> SimPacer::schedule(qint64 sentUs, int requestBytes,
@@ -39,6 +39,7 @@ QList<PacedReply> SimPacer::schedule(qint64 sentUs, int requestBytes,
         PacedReply reply;
         reply.bytes = output.bytes;
         reply.baud = m_throttle ? m_baud : 0;
+        reply.bitsPerByte = m_bitsPerByte;
         reply.startUs = std::max(arrivedUs + qint64(output.delayMs) * 1000, m_toPcFreeUs);
         m_toPcFreeUs = reply.endUs();
         replies.append(reply);

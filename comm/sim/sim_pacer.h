@@ -14,6 +14,7 @@ struct PacedReply {
     QByteArray bytes;
     qint64 startUs = 0;
     int baud = 0;  // 0 = all bytes at once (no throttle)
+    int bitsPerByte = 10;
 
     // Bytes completely received by `nowUs`.
     int bytesDueAt(qint64 nowUs) const;
@@ -23,14 +24,16 @@ struct PacedReply {
 };
 
 // Serial timing at a baud rate with 10 bits per byte (8N1: start, 8 data,
-// stop): a request of N bytes takes N*10/baud s to arrive, the device then
-// works for the reply's delay, and the reply's M bytes follow at 10/baud s
-// each. Each direction is one line: a reply waits for the one before it.
+// stop; 11 with a parity bit): a request of N bytes takes N*10/baud s to
+// arrive, the device then works for the reply's delay, and the reply's M
+// bytes follow at 10/baud s each. Each direction is one line: a reply waits
+// for the one before it.
 class SimPacer {
 public:
-    explicit SimPacer(int baud = 9600, bool throttle = true);
+    explicit SimPacer(int baud = 9600, bool throttle = true, int bitsPerByte = 10);
 
     int baud() const { return m_baud; }
+    int bitsPerByte() const { return m_bitsPerByte; }
     bool throttled() const { return m_throttle; }
 
     // Time on the line for `bytes` bytes; 0 without throttle.
@@ -44,6 +47,7 @@ public:
 private:
     int m_baud;
     bool m_throttle;
+    int m_bitsPerByte;
     qint64 m_toDeviceFreeUs = 0;
     qint64 m_toPcFreeUs = 0;
 };

@@ -7,8 +7,22 @@ namespace cambench::comm {
 namespace {
 
 const QString kPrefix = QStringLiteral("sim");
-const QString kKeys =
-    QStringLiteral("devices, framing, baud, corrupt, drop, delay, seed, throttle, fill, dead");
+const QString kKeys = QStringLiteral(
+    "devices, framing, protocol, baud, corrupt, drop, nak, lostdle, collision, linkfaults, "
+    "delay, seed, throttle, fill, dead");
+
+// The probabilities a key sets.
+QList<double*> probabilitiesOf(SimFaultSettings& faults, const QString& key) {
+    if (key == QLatin1String("corrupt")) return {&faults.corruptProbability};
+    if (key == QLatin1String("drop")) return {&faults.dropProbability};
+    if (key == QLatin1String("nak")) return {&faults.nakProbability};
+    if (key == QLatin1String("lostdle")) return {&faults.lostDleProbability};
+    if (key == QLatin1String("collision")) return {&faults.collisionProbability};
+    if (key == QLatin1String("linkfaults"))
+        return {&faults.corruptProbability, &faults.nakProbability, &faults.lostDleProbability,
+                &faults.collisionProbability};
+    return {};
+}
 
 Error badValue(const QString& port, const QString& key, const QString& value,
                const QString& expected) {
@@ -34,16 +48,21 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         } else {
             return badValue(port, key, value, QStringLiteral("standard or multiuser"));
         }
+    } else if (key == QLatin1String("protocol")) {
+        if (!applySimProtocol(config, value)) {
+            return badValue(port, key, value,
+                            QStringLiteral("standard, multiuser, 3964r-n96 or 3964r-e38"));
+        }
     } else if (key == QLatin1String("baud")) {
         config.baud = value.toInt(&ok);
         if (!ok || config.baud < 300)
             return badValue(port, key, value, QStringLiteral("a baud rate of 300 or more"));
-    } else if (key == QLatin1String("corrupt") || key == QLatin1String("drop")) {
+    } else if (const QList<double*> targets = probabilitiesOf(config.faults, key);
+               !targets.isEmpty()) {
         const double p = value.toDouble(&ok);
         if (!ok || p < 0.0 || p > 1.0)
             return badValue(port, key, value, QStringLiteral("a probability 0..1"));
-        (key == QLatin1String("corrupt") ? config.faults.corruptProbability
-                                         : config.faults.dropProbability) = p;
+        for (double* target : targets) *target = p;
     } else if (key == QLatin1String("delay") || key == QLatin1String("fill")) {
         const int n = value.toInt(&ok);
         if (!ok || n < 0)
@@ -67,6 +86,32 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
 }
 
 }  // namespace
+
+int SimPortConfig::bitsPerByte() const {
+    if (!tableVariant) return 10;
+    return table::rk512VariantInfo(*tableVariant).parity == 'N' ? 10 : 11;
+}
+
+QString SimPortConfig::protocolName() const {
+    if (tableVariant) return QLatin1String(table::rk512VariantInfo(*tableVariant).name);
+    return effectiveFraming() == Framing::Multiuser ? QStringLiteral("Multiuser")
+                                                    : QStringLiteral("Standard");
+}
+
+bool applySimProtocol(SimPortConfig& config, const QString& protocol) {
+    if (protocol == QLatin1String("standard") || protocol == QLatin1String("multiuser")) {
+        config.framing =
+            protocol == QLatin1String("multiuser") ? Framing::Multiuser : Framing::Standard;
+        config.tableVariant.reset();
+    } else if (protocol == QLatin1String("3964r-n96")) {
+        config.tableVariant = table::Rk512Variant::N96;
+    } else if (protocol == QLatin1String("3964r-e38")) {
+        config.tableVariant = table::Rk512Variant::E38;
+    } else {
+        return false;
+    }
+    return true;
+}
 
 bool isSimPort(const QString& port) {
     return port == kPrefix || port.startsWith(kPrefix + QLatin1Char(':'));
@@ -114,6 +159,11 @@ Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& se
         return Error::usage(
             QStringLiteral("Simulator port \"%1\": Standard framing has one device; "
                            "use framing=multiuser for several.")
+                .arg(port));
+    }
+    if (config.tableVariant && config.devices.size() > 1) {
+        return Error::usage(
+            QStringLiteral("Simulator port \"%1\": 3964R is point to point, one device.")
                 .arg(port));
     }
     return config;

@@ -3,6 +3,7 @@
 #include "sim_faults.h"
 
 #include "comm/camcon/ascii/frame.h"
+#include "comm/camcon/table/rk512.h"
 #include "comm/transport/transport.h"
 #include "model/result.h"
 
@@ -18,6 +19,8 @@ namespace cambench::comm {
 struct SimPortConfig {
     QList<int> devices{0};           // device numbers 0..63
     std::optional<Framing> framing;  // unset: Multiuser if more than one device
+    // Set: the device speaks the table interface (3964R/RK512) instead of ASCII.
+    std::optional<table::Rk512Variant> tableVariant;
     int baud = 9600;
     bool throttle = true;  // false: bytes arrive at once
     int fill = 0;          // > 0: benchmark cams per track instead of the demo cams
@@ -27,12 +30,22 @@ struct SimPortConfig {
     Framing effectiveFraming() const {
         return framing ? *framing : (devices.size() > 1 ? Framing::Multiuser : Framing::Standard);
     }
+    // 10 (8N1), 11 for 3964R e38 (8E1).
+    int bitsPerByte() const;
+    // "Standard", "Multiuser", "3964R n96", ...
+    QString protocolName() const;
 };
+
+// Sets the framing or table variant of a registry id ("standard",
+// "multiuser", "3964r-n96", "3964r-e38"); false for another id.
+bool applySimProtocol(SimPortConfig& config, const QString& protocol);
 
 bool isSimPort(const QString& port);
 
-// Keys: devices, framing (standard|multiuser), baud, corrupt, drop, delay,
-// seed, throttle (0|1), fill, dead (0|1). The baud rate defaults to
+// Keys: devices, framing (standard|multiuser), protocol (standard|multiuser|
+// 3964r-n96|3964r-e38), baud, corrupt, drop, nak, lostdle, collision,
+// linkfaults (corrupt, nak, lostdle and collision at once), delay, seed,
+// throttle (0|1), fill, dead (0|1). The baud rate defaults to
 // `serial.baud`. Fails with Usage on an unknown key or a bad value.
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);
 

@@ -27,7 +27,7 @@ QString systemError(const char* what) {
 
 }  // namespace
 
-SimPtyServer::SimPtyServer(SimLine& line, const SimPacer& pacer, QObject* parent)
+SimPtyServer::SimPtyServer(SimEndpoint& line, const SimPacer& pacer, QObject* parent)
     : QObject(parent),
       m_scheduler(line, pacer, [this](const QByteArray& bytes) { write(bytes); }) {}
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim_line.h"
+#include "sim_endpoint.h"
 #include "sim_pacer.h"
 #include "sim_reply_scheduler.h"
 
@@ -13,14 +13,14 @@
 
 namespace cambench::comm {
 
-// Serves a SimLine on a pseudo-terminal: a program opens slavePath() as if
+// Serves a SimEndpoint on a pseudo-terminal: a program opens slavePath() as if
 // it were a serial port. Both sides are raw: a cooked tty would eat 0x03,
 // 0x15 and XON/XOFF and rewrite CR/LF.
 class SimPtyServer : public QObject {
     Q_OBJECT
 
 public:
-    SimPtyServer(SimLine& line, const SimPacer& pacer, QObject* parent = nullptr);
+    SimPtyServer(SimEndpoint& line, const SimPacer& pacer, QObject* parent = nullptr);
     ~SimPtyServer() override;
 
     Status open();

@@ -5,17 +5,27 @@
 
 namespace cambench::comm {
 
-SimReplyScheduler::SimReplyScheduler(SimLine& line, const SimPacer& pacer, WriteFn write,
+SimReplyScheduler::SimReplyScheduler(SimEndpoint& line, const SimPacer& pacer, WriteFn write,
                                      QObject* parent)
     : QObject(parent), m_line(line), m_pacer(pacer), m_write(std::move(write)) {
     m_clock.start();
-    m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::PreciseTimer);
+    for (QTimer* timer : {&m_timer, &m_lineTimer}) {
+        timer->setSingleShot(true);
+        timer->setTimerType(Qt::PreciseTimer);
+    }
     connect(&m_timer, &QTimer::timeout, this, &SimReplyScheduler::flush);
+    connect(&m_lineTimer, &QTimer::timeout, this, &SimReplyScheduler::pollLine);
 }
 
 void SimReplyScheduler::received(const QByteArray& bytes) {
-    m_pending.append(m_pacer.schedule(nowUs(), int(bytes.size()), m_line.feed(bytes)));
+    const qint64 now = nowUs();
+    m_pending.append(m_pacer.schedule(now, int(bytes.size()), m_line.receive(bytes, now / 1000)));
+    flush();
+}
+
+void SimReplyScheduler::pollLine() {
+    const qint64 now = nowUs();
+    m_pending.append(m_pacer.schedule(now, 0, m_line.poll(now / 1000)));
     flush();
 }
 
@@ -32,6 +42,12 @@ void SimReplyScheduler::flush() {
 }
 
 void SimReplyScheduler::arm() {
+    if (const qint64 timer = m_line.nextTimerMs(); timer >= 0) {
+        // Round up, so that the line's deadline has passed when it runs.
+        m_lineTimer.start(int(std::clamp<qint64>(timer - nowUs() / 1000 + 1, 0, 60000)));
+    } else {
+        m_lineTimer.stop();
+    }
     const auto due = m_pending.nextDueUs();
     if (!due) return;
     const qint64 waitUs = *due - nowUs();

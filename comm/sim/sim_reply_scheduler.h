@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim_line.h"
+#include "sim_endpoint.h"
 #include "sim_pacer.h"
 
 #include <QElapsedTimer>
@@ -12,15 +12,15 @@
 namespace cambench::comm {
 
 // Event-loop side of the pacing for cambench-sim's endpoints: feeds what the
-// PC sent into the line and hands the reply bytes to `write` when the pacer
-// says they are on the wire.
+// PC sent into the line, runs the line's timers, and hands the reply bytes
+// to `write` when the pacer says they are on the wire.
 class SimReplyScheduler : public QObject {
     Q_OBJECT
 
 public:
     using WriteFn = std::function<void(const QByteArray&)>;
 
-    SimReplyScheduler(SimLine& line, const SimPacer& pacer, WriteFn write,
+    SimReplyScheduler(SimEndpoint& line, const SimPacer& pacer, WriteFn write,
                       QObject* parent = nullptr);
 
     void received(const QByteArray& bytes);
@@ -30,13 +30,15 @@ public:
 private:
     void flush();
     void arm();
+    void pollLine();
     qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
 
-    SimLine& m_line;
+    SimEndpoint& m_line;
     SimPacer m_pacer;
     WriteFn m_write;
     QElapsedTimer m_clock;
     QTimer m_timer;
+    QTimer m_lineTimer;  // the line's own timers (3964R)
     PacedQueue m_pending;
 };
 

@@ -6,7 +6,7 @@
 
 namespace cambench::comm {
 
-SimTcpServer::SimTcpServer(SimLine& line, const SimPacer& pacer, QObject* parent)
+SimTcpServer::SimTcpServer(SimEndpoint& line, const SimPacer& pacer, QObject* parent)
     : QObject(parent), m_scheduler(line, pacer, [this](const QByteArray& bytes) {
           if (m_client) m_client->write(bytes);
       }) {

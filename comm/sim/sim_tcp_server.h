@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim_line.h"
+#include "sim_endpoint.h"
 #include "sim_pacer.h"
 #include "sim_reply_scheduler.h"
 
@@ -13,13 +13,13 @@
 
 namespace cambench::comm {
 
-// Serves a SimLine on a TCP port, like a serial device server. One client
+// Serves a SimEndpoint on a TCP port, like a serial device server. One client
 // at a time; a second one is turned away until the first disconnects.
 class SimTcpServer : public QObject {
     Q_OBJECT
 
 public:
-    SimTcpServer(SimLine& line, const SimPacer& pacer, QObject* parent = nullptr);
+    SimTcpServer(SimEndpoint& line, const SimPacer& pacer, QObject* parent = nullptr);
     ~SimTcpServer() override;
 
     // Port 0 picks a free port; port() tells which.

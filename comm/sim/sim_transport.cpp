@@ -15,7 +15,9 @@ constexpr qint64 kSliceUs = 1000;
 }  // namespace
 
 SimTransport::SimTransport(const SimPortConfig& config)
-    : m_config(config), m_line(makeSimLine(config)), m_pacer(config.baud, config.throttle) {
+    : m_config(config),
+      m_line(makeSimEndpoint(config)),
+      m_pacer(config.baud, config.throttle, config.bitsPerByte()) {
     m_clock.start();
 }
 
@@ -32,19 +34,30 @@ void SimTransport::close() {
 Status SimTransport::write(const QByteArray& bytes) {
     if (!m_open) return Error::communication(QStringLiteral("%1 is not open.").arg(description()));
     const qint64 sentUs = nowUs();
-    m_pending.append(m_pacer.schedule(sentUs, int(bytes.size()), m_line->feed(bytes)));
+    m_pending.append(
+        m_pacer.schedule(sentUs, int(bytes.size()), m_line->receive(bytes, sentUs / 1000)));
     return success();
+}
+
+void SimTransport::pollLine() {
+    const qint64 timer = m_line->nextTimerMs();
+    const qint64 now = nowUs();
+    if (timer < 0 || now / 1000 < timer) return;
+    m_pending.append(m_pacer.schedule(now, 0, m_line->poll(now / 1000)));
 }
 
 Result<QByteArray> SimTransport::read(int timeoutMs) {
     if (!m_open) return Error::communication(QStringLiteral("%1 is not open.").arg(description()));
     const qint64 deadlineUs = nowUs() + qint64(std::max(timeoutMs, 0)) * 1000;
     for (;;) {
+        pollLine();
         const qint64 now = nowUs();
         QByteArray bytes = m_pending.takeDue(now);
         if (!bytes.isEmpty() || now >= deadlineUs) return bytes;
         qint64 wakeUs = deadlineUs;
         if (const auto due = m_pending.nextDueUs()) wakeUs = std::min(wakeUs, *due);
+        if (const qint64 timer = m_line->nextTimerMs(); timer >= 0)
+            wakeUs = std::min(wakeUs, timer * 1000);
         QThread::usleep(quint64(std::clamp<qint64>(wakeUs - now, 1, kSliceUs)));
     }
 }
@@ -56,10 +69,8 @@ void SimTransport::discardInput() {
 QString SimTransport::description() const {
     QStringList devices;
     for (int number : m_config.devices) devices << QString::number(number);
-    const bool multi = m_config.effectiveFraming() == Framing::Multiuser;
     return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
-        .arg(multi ? QStringLiteral("Multiuser") : QStringLiteral("Standard"),
-             devices.join(QLatin1Char(',')))
+        .arg(m_config.protocolName(), devices.join(QLatin1Char(',')))
         .arg(m_config.baud)
         .arg(m_config.throttle ? QString() : QStringLiteral(", unthrottled"));
 }
@@ -70,12 +81,11 @@ Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
     Result<SimPortConfig> parsed = parseSimPort(port, serial);
     if (!parsed) return parsed.error();
     SimPortConfig config = *parsed;
-    // Unless the port names a framing, the simulated device speaks the
-    // protocol the PC connects with.
-    if (!config.framing && protocol == QLatin1String("multiuser"))
-        config.framing = Framing::Multiuser;
-    if (!config.framing && protocol == QLatin1String("standard") && config.devices.size() == 1)
-        config.framing = Framing::Standard;
+    // Unless the port names a framing or protocol, the simulated device
+    // speaks the protocol the PC connects with.
+    const bool named = config.framing || config.tableVariant;
+    if (!named && (protocol != QLatin1String("standard") || config.devices.size() == 1))
+        applySimProtocol(config, protocol);
     return std::unique_ptr<Transport>(std::make_unique<SimTransport>(config));
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
-#include "sim_line.h"
+#include "sim_device.h"
+#include "sim_endpoint.h"
 #include "sim_pacer.h"
 #include "sim_port_config.h"
 
@@ -13,8 +14,9 @@
 namespace cambench::comm {
 
 // The in-process simulator behind the Transport interface ("--port sim"):
-// write() hands the request to a SimLine, and the replies become readable
-// as the pacer lets their bytes arrive at the configured baud rate.
+// write() hands the request to a SimEndpoint, and the replies become
+// readable as the pacer lets their bytes arrive at the configured baud
+// rate; read() also runs the endpoint's timers.
 class SimTransport : public Transport {
 public:
     explicit SimTransport(const SimPortConfig& config);
@@ -27,14 +29,16 @@ public:
     void discardInput() override;
     QString description() const override;
 
-    SimLine& line() { return *m_line; }
+    SimEndpoint& line() { return *m_line; }
     const SimPacer& pacer() const { return m_pacer; }
 
 private:
     qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
+    // Runs the endpoint's timer when it is due.
+    void pollLine();
 
     SimPortConfig m_config;
-    std::unique_ptr<SimLine> m_line;
+    std::unique_ptr<SimEndpoint> m_line;
     SimPacer m_pacer;
     QElapsedTimer m_clock;
     PacedQueue m_pending;

@@ -14,6 +14,7 @@ target_sources(cambench_sim PRIVATE
   sim_eeprom_format.cpp
   sim_eeprom_format.h
   sim_eeprom_handlers.cpp
+  sim_endpoint.h
   sim_faults.cpp
   sim_faults.h
   sim_handler_util.cpp
@@ -49,4 +50,16 @@ target_sources(cambench_sim PRIVATE
   sim_transport.cpp
   sim_transport.h
   sim_user_handlers.cpp
+  table/sim_table_areas.h
+  table/sim_table_areas.cpp
+  table/sim_table_device.h
+  table/sim_table_device.cpp
+  table/sim_table_line.h
+  table/sim_table_line.cpp
+  table/sim_table_plc_words.cpp
+  table/sim_table_setting_words.cpp
+  table/sim_table_short_commands.cpp
+  table/sim_table_state.h
+  table/sim_table_status_words.cpp
+  table/sim_table_track_words.cpp
 )

@@ -22,6 +22,8 @@ struct PlcNetwork {
     std::array<quint16, kSymbols> symbols{};  // path by path
 
     bool isEmpty() const;
+    // "PLC network M3", for messages.
+    static QString describe(int area, int number);
     friend bool operator==(const PlcNetwork& a, const PlcNetwork& b) {
         return a.area == b.area && a.number == b.number && a.value == b.value &&
                a.reset == b.reset && a.symbols == b.symbols;

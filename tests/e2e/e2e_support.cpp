@@ -4,16 +4,21 @@
 
 namespace cambench::e2e {
 
+QStringList SimSession::protocolArgs() const {
+    if (m_protocol.isEmpty()) return {};
+    return {QStringLiteral("--protocol"), m_protocol};
+}
+
 bool SimSession::start(const QStringList& simArgs) {
     return m_dir.isValid() &&
-           m_sim.start(QStringList{QStringLiteral("--baud"), kFastBaud} + simArgs,
+           m_sim.start(QStringList{QStringLiteral("--baud"), kFastBaud} + protocolArgs() + simArgs,
                        m_dir.filePath(QStringLiteral("sim-stderr.log")));
 }
 
 CliRun SimSession::cli(const QStringList& args, int timeoutMs) const {
     return runCli(QStringList{QStringLiteral("--port"), m_sim.ptyPath(), QStringLiteral("--baud"),
                               kFastBaud} +
-                      args,
+                      protocolArgs() + args,
                   timeoutMs);
 }
 

@@ -13,8 +13,12 @@ namespace cambench::e2e {
 inline const QString kFastBaud = QStringLiteral("115200");
 
 // One simulator on a pty and a scratch folder for the files of one test.
+// With a protocol ("3964r-n96"), both the simulator and every cli() run
+// speak it; without one, each side its default (Standard).
 class SimSession {
 public:
+    explicit SimSession(QString protocol = {}) : m_protocol(std::move(protocol)) {}
+
     // `simArgs` are added to "--baud 115200"; false when the sim did not start.
     bool start(const QStringList& simArgs = {});
     QString errorText() const { return m_sim.errorText(); }
@@ -28,6 +32,9 @@ public:
     QString path(const QString& name) const { return m_dir.filePath(name); }
 
 private:
+    QStringList protocolArgs() const;
+
+    QString m_protocol;
     QTemporaryDir m_dir;
     SimProcess m_sim;
 };

@@ -13,30 +13,53 @@ using namespace cambench::e2e;
     QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
 #define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
 
+namespace {
+
+// The rows of a test that runs once per CamCon protocol: the simulator and
+// the cli speak it (SimSession).
+void protocolRows() {
+    QTest::addColumn<QString>("protocol");
+    for (const char* protocol : {"standard", "3964r-n96", "3964r-e38"})
+        QTest::newRow(protocol) << QString::fromLatin1(protocol);
+}
+
+}  // namespace
+
 class TestE2eCli : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void infoPrintsIdentityAndCapacities_data() { protocolRows(); }
     void infoPrintsIdentityAndCapacities();
+    void infoJsonIsAnObject_data() { protocolRows(); }
     void infoJsonIsAnObject();
+    void camsEditRoundTrip_data() { protocolRows(); }
     void camsEditRoundTrip();
+    void camsWriteRejectsOverlapAndLeavesDeviceUntouched_data() { protocolRows(); }
     void camsWriteRejectsOverlapAndLeavesDeviceUntouched();
     void camsWriteForBiggerDeviceSendsNoWriteCommand();
     void writeReportsEveryItem();
     void projectReadThenWriteChangesNothing();
+    void deadTimesRoundTrip_data() { protocolRows(); }
     void deadTimesRoundTrip();
     void namesRoundTrip();
+    void settingsChangeOneValue_data() { protocolRows(); }
     void settingsChangeOneValue();
     void usersListNeverShowsNumbers();
+    void plcRoundTrip_data() { protocolRows(); }
     void plcRoundTrip();
     void multiuserScanListsExactlyTheDevices();
     void multiuserDeviceOptionReachesThatDevice();
+    void scanNeedsMultiuser_data() { protocolRows(); }
     void scanNeedsMultiuser();
     void usageErrorsExitTwoWithUsage();
     void rawPrintsReplyBody();
+    void asciiOnlyCommandsExitTwoNamingTheProtocol_data();
+    void asciiOnlyCommandsExitTwoNamingTheProtocol();
 };
 
 void TestE2eCli::infoPrintsIdentityAndCapacities() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const CliRun run = session.cli({QStringLiteral("info")});
     VERIFY_EXIT(run, 0);
@@ -47,7 +70,8 @@ void TestE2eCli::infoPrintsIdentityAndCapacities() {
 }
 
 void TestE2eCli::infoJsonIsAnObject() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const CliRun run = session.cli({QStringLiteral("info"), QStringLiteral("--json")});
     VERIFY_EXIT(run, 0);
@@ -57,7 +81,8 @@ void TestE2eCli::infoJsonIsAnObject() {
 }
 
 void TestE2eCli::camsEditRoundTrip() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const QString before = session.path(QStringLiteral("before.csv"));
     VERIFY_EXIT(session.cli({"cams", "read", "--program", "0", "-o", before}), 0);
@@ -95,7 +120,8 @@ void TestE2eCli::camsEditRoundTrip() {
 }
 
 void TestE2eCli::camsWriteRejectsOverlapAndLeavesDeviceUntouched() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const CliRun before = session.cli({"cams", "read", "--program", "0"});
     VERIFY_EXIT(before, 0);
@@ -178,7 +204,8 @@ void TestE2eCli::projectReadThenWriteChangesNothing() {
 }
 
 void TestE2eCli::deadTimesRoundTrip() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const QString file = session.path(QStringLiteral("dt.csv"));
     QVERIFY(writeBytes(file, "output,deadtime\n5,321\n6,0\n"));
@@ -206,7 +233,8 @@ void TestE2eCli::namesRoundTrip() {
 }
 
 void TestE2eCli::settingsChangeOneValue() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const QString file = session.path(QStringLiteral("settings.json"));
     VERIFY_EXIT(session.cli({"settings", "read", "-o", file}), 0);
@@ -254,7 +282,8 @@ void TestE2eCli::usersListNeverShowsNumbers() {
 }
 
 void TestE2eCli::plcRoundTrip() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const QString file = session.path(QStringLiteral("plc.json"));
     VERIFY_EXIT(session.cli({"plc", "read", "-o", file}), 0);
@@ -305,7 +334,8 @@ void TestE2eCli::multiuserDeviceOptionReachesThatDevice() {
 }
 
 void TestE2eCli::scanNeedsMultiuser() {
-    SimSession session;
+    QFETCH(QString, protocol);
+    SimSession session(protocol);
     START_SIM(session);
     const CliRun run = session.cli({"scan"});
     VERIFY_EXIT(run, 2);
@@ -332,6 +362,47 @@ void TestE2eCli::rawPrintsReplyBody() {
     const CliRun run = session.cli({"raw", "?GPRGMAX"});
     VERIFY_EXIT(run, 0);
     QCOMPARE(run.out, QStringLiteral("GPRGMAX0010\n"));
+}
+
+void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol_data() {
+    QTest::addColumn<QString>("protocol");
+    QTest::addColumn<QStringList>("command");
+    QTest::addColumn<QString>("capability");
+    for (const char* protocol : {"3964r-n96", "3964r-e38"}) {
+        const auto row = [protocol](const char* name, const QStringList& command,
+                                    const char* capability) {
+            QTest::newRow(qPrintable(
+                QStringLiteral("%1 %2").arg(QLatin1String(protocol), QLatin1String(name))))
+                << QString::fromLatin1(protocol) << command << QString::fromLatin1(capability);
+        };
+        row("backup", {"backup", "-o", "@image"}, "EEPROM backup");
+        row("restore", {"restore", "--no-safety-backup", "@image"}, "EEPROM backup");
+        row("verify", {"verify", "@image"}, "EEPROM backup");
+        row("users", {"users", "list"}, "Users");
+        row("names", {"names", "read"}, "names");
+        row("raw", {"raw", "?GPRGMAX"}, "Typed requests");
+    }
+}
+
+void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
+    QFETCH(QString, protocol);
+    QFETCH(QStringList, command);
+    QFETCH(QString, capability);
+    // A real image, taken from a device that has EEPROM backup.
+    SimSession ascii;
+    START_SIM(ascii);
+    const QString image = ascii.path(QStringLiteral("image.json"));
+    VERIFY_EXIT(ascii.cli({"backup", "-o", image}), 0);
+    command.replaceInStrings(QStringLiteral("@image"), image);
+
+    SimSession session(protocol);
+    START_SIM(session);
+    const CliRun run = session.cli(command);
+    VERIFY_EXIT(run, 2);
+    QVERIFY2(run.err.contains(capability), qPrintable(run.err));
+    QVERIFY2(run.err.contains(QLatin1String("--protocol standard or multiuser")),
+             qPrintable(run.err));
+    QVERIFY(run.out.isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TestE2eCli)

@@ -2,6 +2,7 @@
 
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/camcon/ascii/ascii_link.h"
+#include "comm/sim/sim_line.h"
 #include "comm/sim/sim_transport.h"
 
 #include <memory>
@@ -14,7 +15,8 @@ namespace cambench::tests {
 struct SimBench {
     explicit SimBench(QList<int> devices = {0}, std::optional<comm::Framing> framing = {});
 
-    comm::SimLine& line() { return transport->line(); }
+    // The bench always builds an ASCII line (see the constructor).
+    comm::SimLine& line() { return dynamic_cast<comm::SimLine&>(transport->line()); }
     comm::SimDevice& device(int number = 0) { return *line().device(number); }
     comm::SimInjections& injections() { return line().injections(); }
     DeviceInfo info();

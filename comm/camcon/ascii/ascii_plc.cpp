@@ -7,25 +7,12 @@ namespace cambench::comm {
 
 using namespace client;
 
-namespace {
-
-QString networkText(int area, int number) {
-    const char* names = "OPMX";
-    const int index = area - PlcNetwork::O;
-    const QChar letter = index >= 0 && index < 4 ? QChar::fromLatin1(names[index]) : QChar(u'?');
-    return QCoreApplication::translate("cambench::comm", "PLC network %1%2")
-        .arg(letter)
-        .arg(number);
-}
-
-}  // namespace
-
 Result<PlcNetwork> AsciiCamCon::readPlcNetwork(int area, int number) {
     const Result<Fields> reply =
         m_link.call('?', "GMXSPS", Fields{{"area", qint64(area)}, {"number", qint64(number)}});
     if (!reply) {
         return inContext(QCoreApplication::translate("cambench::comm", "reading %1 (?GMXSPS)")
-                             .arg(networkText(area, number)),
+                             .arg(PlcNetwork::describe(area, number)),
                          reply.error());
     }
     PlcNetwork network;
@@ -51,7 +38,7 @@ Status AsciiCamCon::writePlcNetwork(const PlcNetwork& network) {
     const Result<Fields> reply = m_link.call('!', "GMXSPS", fields);
     if (!reply) {
         return inContext(QCoreApplication::translate("cambench::comm", "writing %1 (!GMXSPS)")
-                             .arg(networkText(network.area, network.number)),
+                             .arg(PlcNetwork::describe(network.area, network.number)),
                          reply.error());
     }
     return success();
@@ -63,7 +50,7 @@ Result<qint32> AsciiCamCon::readPlcActual(int area, int number) {
     if (!reply) {
         return inContext(QCoreApplication::translate("cambench::comm",
                                                      "reading the actual value of %1 (?SPSIST)")
-                             .arg(networkText(area, number)),
+                             .arg(PlcNetwork::describe(area, number)),
                          reply.error());
     }
     return qint32(reply->num("value"));
@@ -75,7 +62,7 @@ Result<qint32> AsciiCamCon::readPlcSetpoint(int area, int number) {
     if (!reply) {
         return inContext(
             QCoreApplication::translate("cambench::comm", "reading the set value of %1 (?SPSSOLL)")
-                .arg(networkText(area, number)),
+                .arg(PlcNetwork::describe(area, number)),
             reply.error());
     }
     return qint32(reply->num("value"));

@@ -2,6 +2,7 @@
 
 #include "fields.h"
 
+#include "comm/device/error_context.h"
 #include "model/result.h"
 
 #include <QString>
@@ -37,12 +38,6 @@ inline bool isNotUnderstood(const Error& error) {
     return error.kind == ErrorKind::NotUnderstood;
 }
 
-// Prefixes a step to an error's message, keeping its kind and code:
-// "reading program 3, output 5: <link message>".
-inline Error inContext(const QString& step, const Error& error) {
-    Error result = error;
-    result.message = QStringLiteral("%1: %2").arg(step, error.message);
-    return result;
-}
+using comm::inContext;
 
 }  // namespace cambench::comm::client

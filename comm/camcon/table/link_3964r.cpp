@@ -34,7 +34,7 @@ Link3964R::Link3964R(Priority priority, Timing timing) : m_priority(priority), m
     m_timing.attempts = std::max(1, m_timing.attempts);
 }
 
-Actions Link3964R::send(const QByteArray& telegram, qint64 nowMs) {
+Actions Link3964R::send(const QByteArray& telegram, qint64 nowMs, Repeat repeat) {
     // No poll() here: an expiring transfer must not report its end in the
     // Actions of this call, which concern only `telegram`. A deadline already
     // past is handled by the next feed() or poll().
@@ -53,6 +53,7 @@ Actions Link3964R::send(const QByteArray& telegram, qint64 nowMs) {
     }
     m_telegram = telegram;
     m_attempt = 0;
+    m_repeat = repeat;
     if (m_state == State::Idle) {
         startAttempt(nowMs, actions);
     } else {
@@ -132,7 +133,7 @@ void Link3964R::handleTimeout(qint64 nowMs, Actions& actions) {
         case State::SendWaitAck:
             failAttempt(
                 QStringLiteral("no DLE within %1 ms after the block").arg(m_timing.ackTimeoutMs),
-                nowMs, actions);
+                nowMs, actions, true);
             break;
         case State::RetryPause:
             startAttempt(nowMs, actions);
@@ -200,12 +201,12 @@ void Link3964R::onSendWaitAck(char c, qint64 nowMs, Actions& actions) {
         // The partner took no notice of the block and starts its own
         // transfer: this attempt failed, but its telegram is taken first so
         // that neither side waits for the other.
-        failAttempt(QStringLiteral("STX instead of DLE after the block"), nowMs, actions);
+        failAttempt(QStringLiteral("STX instead of DLE after the block"), nowMs, actions, true);
         startReceive(nowMs, actions);
         return;
     }
     failAttempt(QStringLiteral("%1 instead of DLE after the block").arg(byteName(c)), nowMs,
-                actions);
+                actions, true);
 }
 
 void Link3964R::onReceive(char c, qint64 nowMs, Actions& actions) {
@@ -261,11 +262,22 @@ void Link3964R::startAttempt(qint64 nowMs, Actions& actions) {
     enter(State::SendWaitDle, nowMs + m_timing.ackTimeoutMs);
 }
 
-void Link3964R::failAttempt(const QString& reason, qint64 nowMs, Actions& actions) {
+void Link3964R::failAttempt(const QString& reason, qint64 nowMs, Actions& actions, bool maybeRead) {
     actions.log.append(QStringLiteral("attempt %1 of %2 failed: %3")
                            .arg(m_attempt)
                            .arg(m_timing.attempts)
                            .arg(reason));
+    if (maybeRead && m_repeat == Repeat::OnlyUnread) {
+        actions.sendFailed =
+            QStringLiteral(
+                "3964R: %1; the device may have executed the telegram, which must not be sent "
+                "twice. Read back what it changes before trying again.")
+                .arg(reason);
+        m_telegram.reset();
+        m_attempt = 0;
+        enter(State::Idle, -1);
+        return;
+    }
     if (m_attempt < m_timing.attempts) {
         enter(State::RetryPause, nowMs + m_timing.charTimeoutMs);
         return;

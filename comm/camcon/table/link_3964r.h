@@ -69,7 +69,15 @@ public:
     // time: while sending() a further call is refused (its Actions carry
     // sendFailed) and the running transfer goes on. The Actions of send()
     // concern only `telegram`; it handles no deadline.
-    Actions send(const QByteArray& telegram, qint64 nowMs);
+    //
+    // `repeat` says whether an attempt whose block may have reached the
+    // partner (no DLE, or another byte, after the block) may be repeated:
+    // the partner may have executed the telegram and only its DLE was lost.
+    // With Repeat::OnlyUnread such an attempt ends the transfer (sendFailed
+    // says the telegram may have been executed); failures before the block,
+    // and a NAK after it, are repeated as always.
+    enum class Repeat { Always, OnlyUnread };
+    Actions send(const QByteArray& telegram, qint64 nowMs, Repeat repeat = Repeat::Always);
     // Bytes read from the line. Handles an expired deadline first.
     Actions feed(QByteArrayView bytes, qint64 nowMs);
     // Handles an expired deadline; does nothing before nextDeadlineMs().
@@ -106,7 +114,8 @@ private:
     void onReceiveBcc(char c, qint64 nowMs, Actions& actions);
 
     void startAttempt(qint64 nowMs, Actions& actions);
-    void failAttempt(const QString& reason, qint64 nowMs, Actions& actions);
+    // `maybeRead`: the partner may have taken the block (see Repeat).
+    void failAttempt(const QString& reason, qint64 nowMs, Actions& actions, bool maybeRead = false);
     void startReceive(qint64 nowMs, Actions& actions);
     void startDrain(const QString& reason, qint64 nowMs, Actions& actions);
     void finishReceive(qint64 nowMs, Actions& actions);
@@ -119,6 +128,7 @@ private:
 
     std::optional<QByteArray> m_telegram;  // the telegram of send() until done or given up
     int m_attempt = 0;                     // attempts started for m_telegram
+    Repeat m_repeat = Repeat::Always;      // of m_telegram
 
     QByteArray m_buffer;        // undoubled data of the block being received
     quint8 m_bcc = 0;           // XOR of the block's bytes as read so far

@@ -20,5 +20,25 @@ target_sources(cambench_comm PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/cam_track_words.cpp
   ${CMAKE_CURRENT_LIST_DIR}/short_commands.h
   ${CMAKE_CURRENT_LIST_DIR}/short_commands.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_logging.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_logging.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_backend.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_backend.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_link.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_link.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_settings_map.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_settings_map.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_word_block.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_word_block.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon_info.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon_cams.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon_dead_times.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon_settings.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon_plc.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_camcon_extras.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/table_protocol.h
+  ${CMAKE_CURRENT_LIST_DIR}/table_protocol.cpp
   ${CAMBENCH_TABLE_LINK_SOURCES}
 )

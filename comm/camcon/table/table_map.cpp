@@ -447,6 +447,13 @@ QList<const TableEntry*> tableEntriesOfArea(int area) {
     return entries;
 }
 
+int tableWord(QStringView key, int index) {
+    const TableEntry* entry = findTableEntry(key);
+    Q_ASSERT_X(entry, "tableWord", "key not in the table map");
+    if (!entry || index < 0 || index >= entry->count) return -1;
+    return entry->wordOf(index);
+}
+
 const QList<SpecialEncoderLayout>& specialEncoderLayouts() {
     static const QList<SpecialEncoderLayout> layouts(std::begin(kSpecialEncoders),
                                                      std::end(kSpecialEncoders));

@@ -72,6 +72,10 @@ struct TableLocation {
 std::optional<TableLocation> locateTableWord(int area, int word);
 // The entries of one area, ordered by first word.
 QList<const TableEntry*> tableEntriesOfArea(int area);
+// The word of element `index` of the entry `key`: the client names words by
+// their key, so that the map stays their one description. -1 (which no
+// transfer accepts) for a key or index the map does not have.
+int tableWord(QStringView key, int index = 0);
 
 // Area 203 words 2..7 mean different things for each special encoder type
 // (word 1; manual 3.4.1.1 - 3.4.1.10).

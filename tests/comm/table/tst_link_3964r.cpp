@@ -52,6 +52,7 @@ private Q_SLOTS:
     void deviceReplyArrivesAsItsOwnTransfer();
     void retriesAfterNakUpToSixAttemptsThenFails();
     void succeedsOnALaterAttempt();
+    void onlyUnreadRepeatsAfterNakButNotAfterALostAcknowledgement();
     void ackTimeoutAfterStxRetriesAndFails();
     void ackTimeoutAfterBlockCountsAsFailedAttempt();
     void answerOtherThanDleFailsTheAttempt();
@@ -218,6 +219,31 @@ void TestLink3964R::succeedsOnALaterAttempt() {
     // The device received the telegram three times: 3964R has no sequence
     // numbers, so a lost acknowledgement means a repeat.
     QCOMPARE(pair.device.received.size(), 3);
+}
+
+void TestLink3964R::onlyUnreadRepeatsAfterNakButNotAfterALostAcknowledgement() {
+    // A NAK after the block: the device found it bad and did not act on it.
+    {
+        Link3964R pc(Link3964R::Priority::High);
+        pc.send(hex("0102"), 0, Link3964R::Repeat::OnlyUnread);
+        pc.feed(kDleByte, 1);
+        Actions actions = pc.feed(kNakByte, 2);
+        QVERIFY(!actions.sendFailed);
+        QCOMPARE(pc.poll(2 + 220).write, kStxByte);
+    }
+    // No DLE after the block: the device may have executed it.
+    {
+        Link3964R pc(Link3964R::Priority::High);
+        pc.send(hex("0102"), 0, Link3964R::Repeat::OnlyUnread);
+        pc.feed(kDleByte, 1);
+        const Actions actions = pc.poll(2001);
+        QVERIFY(actions.sendFailed.has_value());
+        QVERIFY2(actions.sendFailed->contains("may have executed"),
+                 qPrintable(*actions.sendFailed));
+        QVERIFY(actions.write.isEmpty());
+        QVERIFY(!pc.sending());
+        QCOMPARE(pc.nextDeadlineMs(), -1);
+    }
 }
 
 void TestLink3964R::ackTimeoutAfterStxRetriesAndFails() {

@@ -4,14 +4,18 @@
 #include "shell_fixture.h"
 
 #include "model/camcon/eeprom_image_file.h"
+#include "ui/analogue_cams_page.h"
 #include "ui/backup_wizard.h"
 #include "ui/cam_page.h"
 #include "ui/compare_dialog.h"
+#include "ui/dead_time_modes_page.h"
 #include "ui/dead_times_model.h"
 #include "ui/dead_times_page.h"
 #include "ui/device_session.h"
+#include "ui/eeprom_lock_page.h"
 #include "ui/language.h"
 #include "ui/progress_page.h"
+#include "ui/users_page.h"
 
 #include <QAbstractButton>
 #include <QFile>
@@ -31,10 +35,17 @@ private Q_SLOTS:
         useTestSettings();
         QVERIFY(setLanguage(QStringLiteral("en")));
     }
+    void startReadsIdentityAndProgramZero_data() { protocolRows(); }
     void startReadsIdentityAndProgramZero();
+    void editedCamWrittenAndReadBackEqualsEdit_data() { protocolRows(); }
     void editedCamWrittenAndReadBackEqualsEdit();
     void compareWritesOnlySelectedItems();
+    void deadTimeEditIsWrittenInTenthsOfMs_data() { protocolRows(); }
     void deadTimeEditIsWrittenInTenthsOfMs();
+    void sectionsFollowTheProtocolsCapabilities_data() { protocolRows(); }
+    void sectionsFollowTheProtocolsCapabilities();
+    void dataOnlyTheTableInterfaceHasIsEditedAndWritten();
+    void lockedEepromIsShownAsAPlainWarning();
     void backupAndRestoreThroughWizard();
     void restoreRefusesDamagedImage();
     void failedReadOnDeadLineKeepsEditsAndSaysWhy();
@@ -42,7 +53,8 @@ private Q_SLOTS:
 };
 
 void MainWindowTest::startReadsIdentityAndProgramZero() {
-    auto shell = startOnSimulator();
+    QFETCH(QString, protocol);
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
     QVERIFY(shell);
     QVERIFY(shell->workspace()->infoFromDevice());
     QCOMPARE(shell->workspace()->info().epromDate, QStringLiteral("11.10.1994"));
@@ -52,7 +64,8 @@ void MainWindowTest::startReadsIdentityAndProgramZero() {
 }
 
 void MainWindowTest::editedCamWrittenAndReadBackEqualsEdit() {
-    auto shell = startOnSimulator();
+    QFETCH(QString, protocol);
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
     QVERIFY(shell);
     CamDocument* cams = shell->workspace()->cams();
     const Track before = cams->track(0, 1);
@@ -115,7 +128,8 @@ void MainWindowTest::compareWritesOnlySelectedItems() {
 }
 
 void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {
-    auto shell = startOnSimulator();
+    QFETCH(QString, protocol);
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
     DeadTimesPage* page = shell->window()->deadTimesPage();
@@ -206,6 +220,8 @@ void MainWindowTest::restoreRefusesDamagedImage() {
 void MainWindowTest::failedReadOnDeadLineKeepsEditsAndSaysWhy() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
+    // The sections' reads of the start run on the old line first.
+    QVERIFY(waitForSections(*shell));
     CamDocument* cams = shell->workspace()->cams();
     Cam cam = cams->track(0, 1).cams.first();
     cam.off += 3;
@@ -251,6 +267,76 @@ void MainWindowTest::closingWithUnwrittenChangesCountsThem() {
         if (QWidget* box = QApplication::activeModalWidget()) box->close();
     });
     QVERIFY(!window->confirmClose());
+}
+
+void MainWindowTest::sectionsFollowTheProtocolsCapabilities() {
+    QFETCH(QString, protocol);
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    const bool ascii = protocol == QLatin1String("standard");
+    CapabilityGate* users = gateOf(window, window->usersPage());
+    CapabilityGate* modes = gateOf(window, window->findChild<DeadTimeModesPage*>());
+    CapabilityGate* lock = gateOf(window, window->findChild<EepromLockPage*>());
+    QVERIFY(users && modes && lock);
+    QTRY_COMPARE_WITH_TIMEOUT(users->isAvailable(), ascii, kDeviceTimeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(lock->isAvailable(), !ascii, kDeviceTimeoutMs);
+    // 3964R e38 cannot address the dead-time mode words.
+    QTRY_COMPARE_WITH_TIMEOUT(modes->isAvailable(), protocol == QLatin1String("3964r-n96"),
+                              kDeviceTimeoutMs);
+    // A section the protocol lacks says which protocol has it.
+    const QString why = ascii ? modes->reason() : users->reason();
+    QVERIFY2(why.contains(ascii ? QLatin1String("table interface") : QLatin1String("ASCII")),
+             qPrintable(why));
+    if (protocol == QLatin1String("3964r-e38"))
+        QVERIFY2(modes->reason().contains(QLatin1String("3964R n96")), qPrintable(modes->reason()));
+}
+
+void MainWindowTest::dataOnlyTheTableInterfaceHasIsEditedAndWritten() {
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("3964r-n96"));
+    QVERIFY(shell);
+    auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
+    QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
+    QCOMPARE(modes->edited(2).mode, DeadTimeMode::SeparateOnOff);
+    const OutputDeadTime wanted{DeadTimeMode::SeparateOnOff, 0, 35, 47};
+    modes->setEdited(5, wanted);
+    QCOMPARE(modes->differences().size(), 1);
+    std::optional<WriteReport> report;
+    modes->writeItems({}, [&](const WriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(report->complete(), qPrintable(report->details()));
+    QCOMPARE(report->written, 1);
+    modes->setEdited(5, {});
+    modes->readFromDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(modes->edited(5), wanted, kDeviceTimeoutMs);
+    QVERIFY(modes->differences().isEmpty());
+
+    auto* analogue = shell->window()->findChild<AnalogueCamsPage*>();
+    QTRY_COMPARE_WITH_TIMEOUT(analogue->onDevice().points.size(), 3, kDeviceTimeoutMs);
+    const AnalogueCamTrack curve{1, {{10, 100}, {20, 200}}};
+    analogue->setEdited(curve);
+    report.reset();
+    analogue->writeItems({}, [&](const WriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QCOMPARE(report->written, 1);
+    analogue->setEdited({1, {}});
+    analogue->readFromDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(analogue->edited(), curve, kDeviceTimeoutMs);
+}
+
+void MainWindowTest::lockedEepromIsShownAsAPlainWarning() {
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("3964r-e38"));
+    QVERIFY(shell);
+    auto* lock = shell->window()->findChild<EepromLockPage*>();
+    QTRY_VERIFY_WITH_TIMEOUT(lock->locked().has_value(), kDeviceTimeoutMs);
+    QVERIFY(!*lock->locked());
+    QVERIFY(!lock->warningShown());
+    lock->setLocked(true);
+    QTRY_VERIFY_WITH_TIMEOUT(lock->locked().value_or(false), kDeviceTimeoutMs);
+    QVERIFY(lock->warningShown());
+    QVERIFY(lock->warningText().contains(QStringLiteral("RAM only")));
+    QVERIFY2(shell->window()->lastMessage().contains(QStringLiteral("RAM only")),
+             qPrintable(shell->window()->lastMessage()));
 }
 
 QTEST_MAIN(MainWindowTest)

@@ -1,0 +1,142 @@
+#include "capability_gate.h"
+
+#include "device_session.h"
+
+#include <QCoreApplication>
+#include <QLabel>
+#include <QListWidgetItem>
+#include <QPalette>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+namespace cambench {
+
+namespace {
+
+struct Availability {
+    bool available = true;
+    QString reason;
+};
+
+// The reasons the protocols give (CamConDevice::lacks() and its
+// overrides), for the translators: the gate translates the device's text
+// in the context "CamConCapability".
+[[maybe_unused]] const char* const kReasons[] = {
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Users and rights exist only in the CamCon ASCII protocol (--protocol "
+                      "standard or multiuser)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "EEPROM backup and restore exist only in the CamCon ASCII protocol "
+                      "(--protocol standard or multiuser)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "A bus scan needs the Multiuser protocol (--protocol multiuser)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Typed requests exist only in the CamCon ASCII protocol (--protocol "
+                      "standard or multiuser)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Output and program names exist only in the CamCon ASCII protocol "
+                      "(--protocol standard or multiuser)."),
+    QT_TRANSLATE_NOOP("CamConCapability", "This protocol does not reach the PLC logic module."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Dead-time modes exist only in the CamCon table interface (--protocol "
+                      "3964r-n96 or 3964r-e38)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Analogue cams exist only in the CamCon table interface (--protocol "
+                      "3964r-n96 or 3964r-e38)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "The EEPROM lock exists only in the CamCon table interface (--protocol "
+                      "3964r-n96 or 3964r-e38)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Editing a program other than the active one exists only in the CamCon "
+                      "table interface (--protocol 3964r-n96 or 3964r-e38)."),
+    QT_TRANSLATE_NOOP("CamConCapability",
+                      "Dead-time modes are data words 251..253, which 3964R e38 cannot address "
+                      "(words 0..127); set the device to 3964R n96 (--protocol 3964r-n96) to "
+                      "reach them."),
+};
+
+}  // namespace
+
+CapabilityGate::CapabilityGate(DeviceSession* session, SectionPage* page,
+                               comm::CamConCapability capability, QWidget* parent)
+    : SectionPage(parent),
+      m_session(session),
+      m_page(page),
+      m_capability(capability),
+      m_stack(new QStackedWidget),
+      m_reason(new QLabel) {
+    auto* missing = new QWidget;
+    auto* missingLayout = new QVBoxLayout(missing);
+    auto* headline = new QLabel(tr("<b>Not available with the connected protocol</b>"));
+    m_reason->setWordWrap(true);
+    m_reason->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    missingLayout->addWidget(headline);
+    missingLayout->addWidget(m_reason);
+    missingLayout->addStretch();
+    m_stack->addWidget(m_page);
+    m_stack->addWidget(missing);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_stack);
+    connect(m_page, &SectionPage::statusMessage, this, &SectionPage::statusMessage);
+    connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
+        if (state == comm::ConnectionState::Connected) checkAvailability(false);
+    });
+}
+
+QList<SectionDifference> CapabilityGate::differences() const {
+    return m_available ? m_page->differences() : QList<SectionDifference>{};
+}
+
+void CapabilityGate::writeItems(const QStringList& keys,
+                                std::function<void(const WriteReport&)> done) {
+    if (m_available) {
+        m_page->writeItems(keys, std::move(done));
+    } else {
+        done({});
+    }
+}
+
+void CapabilityGate::deviceConnected() {
+    checkAvailability(true);
+}
+
+void CapabilityGate::checkAvailability(bool thenRead) {
+    const comm::CamConCapability capability = m_capability;
+    m_session->run<Availability>(
+        this, tr("Check what the protocol offers"),
+        [capability](comm::CamConDevice& device, comm::JobContext&) -> Result<Availability> {
+            return Availability{device.has(capability), device.lacks(capability)};
+        },
+        [this, thenRead](Result<Availability> availability) {
+            if (!availability) return;
+            showAvailability(availability->available, availability->reason);
+            if (availability->available && thenRead) m_page->deviceConnected();
+        });
+}
+
+QString CapabilityGate::reason() const {
+    return m_available ? QString() : m_reason->text();
+}
+
+void CapabilityGate::setNavItem(QListWidgetItem* item) {
+    m_item = item;
+    showAvailability(m_available, m_reason->text());
+}
+
+void CapabilityGate::showAvailability(bool available, const QString& reason) {
+    const bool changed = available != m_available;
+    m_available = available;
+    m_reason->setText(
+        available ? QString()
+                  : QCoreApplication::translate("CamConCapability", reason.toUtf8().constData()));
+    m_stack->setCurrentIndex(available ? 0 : 1);
+    if (m_item) {
+        m_item->setForeground(
+            palette().brush(available ? QPalette::Active : QPalette::Disabled, QPalette::Text));
+        m_item->setToolTip(m_reason->text());
+    }
+    if (changed) Q_EMIT availabilityChanged(available);
+}
+
+}  // namespace cambench

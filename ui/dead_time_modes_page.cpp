@@ -1,0 +1,208 @@
+#include "dead_time_modes_page.h"
+
+#include "device_session.h"
+#include "workspace.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace cambench {
+
+namespace {
+
+// Dead times are kept in 0.1 ms steps and shown in ms.
+constexpr double kTenthsPerMs = 10.0;
+
+QTableWidgetItem* msItem(qint32 tenths) {
+    auto* item = new QTableWidgetItem;
+    item->setData(Qt::EditRole, tenths / kTenthsPerMs);
+    return item;
+}
+
+qint32 tenthsOf(const QTableWidgetItem* item) {
+    return item ? qint32(qRound(item->data(Qt::EditRole).toDouble() * kTenthsPerMs)) : 0;
+}
+
+}  // namespace
+
+DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
+    : SectionPage(parent),
+      m_session(session),
+      m_workspace(workspace),
+      m_table(new QTableWidget(0, COUNT)),
+      m_note(new QLabel) {
+    m_table->setHorizontalHeaderLabels({tr("Output"), tr("Mode"), tr("Dead time (ms)"),
+                                        tr("Switch-on (ms)"), tr("Switch-off / time (ms)")});
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    auto* intro = new QLabel(
+        tr("Normal: one dead time moves both switching points. On/off: the switch-on and the "
+           "switch-off point each have their own. Path-time: the output switches on early by "
+           "the switch-on dead time and stays on for the switching time."));
+    intro->setWordWrap(true);
+    auto* read = new QPushButton(tr("Read from device"));
+    auto* write = new QPushButton(tr("Write changes"));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(read);
+    buttons->addWidget(write);
+    buttons->addStretch();
+    buttons->addWidget(m_note);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(intro);
+    layout->addLayout(buttons);
+    layout->addWidget(m_table);
+    connect(read, &QPushButton::clicked, this, &DeadTimeModesPage::readFromDevice);
+    connect(write, &QPushButton::clicked, this, [this] {
+        writeItems({}, [this](const WriteReport& report) {
+            Q_EMIT statusMessage(tr("Dead-time modes: %1").arg(report.summary()));
+            if (!report.complete())
+                QMessageBox::warning(this, tr("Dead-time modes"), report.details());
+        });
+    });
+}
+
+void DeadTimeModesPage::readFromDevice() {
+    const int outputs = m_workspace->info().deadTimeOutputs;
+    Q_EMIT statusMessage(tr("Reading dead-time modes…"));
+    m_session->run<DeadTimeModes>(
+        this, tr("Read dead-time modes"),
+        [outputs](comm::CamConDevice& device, comm::JobContext&) {
+            return device.readDeadTimeModes(outputs);
+        },
+        [this](Result<DeadTimeModes> modes) {
+            if (!modes) {
+                Q_EMIT statusMessage(
+                    tr("Reading dead-time modes failed: %1").arg(modes.error().message));
+                return;
+            }
+            m_device = modes.value();
+            showModes(m_device);
+            Q_EMIT statusMessage(tr("Dead-time modes read."));
+        });
+}
+
+void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
+    m_table->setRowCount(int(modes.size()));
+    int row = 0;
+    for (auto it = modes.begin(); it != modes.end(); ++it, ++row) {
+        auto* output = new QTableWidgetItem(QString::number(it.key()));
+        output->setFlags(Qt::ItemIsEnabled);
+        output->setData(Qt::UserRole, it.key());
+        m_table->setItem(row, OutputColumn, output);
+        auto* mode = new QComboBox;
+        mode->addItem(tr("Normal"), int(DeadTimeMode::Normal));
+        mode->addItem(tr("On/off"), int(DeadTimeMode::SeparateOnOff));
+        mode->addItem(tr("Path-time"), int(DeadTimeMode::PathTime));
+        m_table->setCellWidget(row, ModeColumn, mode);
+        m_table->setItem(row, NormalColumn, msItem(0));
+        m_table->setItem(row, OnColumn, msItem(0));
+        m_table->setItem(row, OffColumn, msItem(0));
+    }
+    for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
+    m_note->setText(
+        tr("Largest dead time: %1 ms").arg(m_workspace->info().maxDeadTime / kTenthsPerMs));
+}
+
+OutputDeadTime DeadTimeModesPage::edited(int output) const {
+    const int row = rowOf(output);
+    if (row < 0) return m_device.value(output);
+    const auto* mode = qobject_cast<const QComboBox*>(m_table->cellWidget(row, ModeColumn));
+    return OutputDeadTime{
+        DeadTimeMode(mode->currentData().toInt()), tenthsOf(m_table->item(row, NormalColumn)),
+        tenthsOf(m_table->item(row, OnColumn)), tenthsOf(m_table->item(row, OffColumn))};
+}
+
+void DeadTimeModesPage::setEdited(int output, const OutputDeadTime& deadTime) {
+    const int row = rowOf(output);
+    if (row < 0) return;
+    auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
+    mode->setCurrentIndex(mode->findData(int(deadTime.mode)));
+    m_table->item(row, NormalColumn)->setData(Qt::EditRole, deadTime.normal / kTenthsPerMs);
+    m_table->item(row, OnColumn)->setData(Qt::EditRole, deadTime.on / kTenthsPerMs);
+    m_table->item(row, OffColumn)->setData(Qt::EditRole, deadTime.off / kTenthsPerMs);
+}
+
+int DeadTimeModesPage::rowOf(int output) const {
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const QTableWidgetItem* item = m_table->item(row, OutputColumn);
+        if (item && item->data(Qt::UserRole).toInt() == output) return row;
+    }
+    return -1;
+}
+
+QList<SectionDifference> DeadTimeModesPage::differences() const {
+    QList<SectionDifference> list;
+    const auto text = [](const OutputDeadTime& d) {
+        return QStringLiteral("%1 %2/%3/%4 ms")
+            .arg(deadTimeModeKey(d.mode))
+            .arg(d.normal / kTenthsPerMs)
+            .arg(d.on / kTenthsPerMs)
+            .arg(d.off / kTenthsPerMs);
+    };
+    for (auto it = m_device.begin(); it != m_device.end(); ++it) {
+        const OutputDeadTime now = edited(it.key());
+        if (now == it.value()) continue;
+        list.append({QStringLiteral("tzkmode:%1").arg(it.key()),
+                     tr("Output %1 dead-time mode").arg(it.key()), text(it.value()), text(now)});
+    }
+    return list;
+}
+
+void DeadTimeModesPage::writeItems(const QStringList& keys,
+                                   std::function<void(const WriteReport&)> done) {
+    struct Item {
+        QString key;
+        QString label;
+        int output;
+        OutputDeadTime deadTime;
+    };
+    QList<Item> items;
+    WriteReport report;
+    for (const SectionDifference& difference : differences()) {
+        if (!keys.isEmpty() && !keys.contains(difference.key)) continue;
+        const int output = difference.key.section(QLatin1Char(':'), 1).toInt();
+        const OutputDeadTime deadTime = edited(output);
+        // Checked against the device before the first byte.
+        const QString problem = outputDeadTimeProblem(output, deadTime, m_workspace->info());
+        if (!problem.isEmpty()) {
+            report.addFailure(difference.item, Error::invalidData(problem));
+            continue;
+        }
+        items.append({difference.key, difference.item, output, deadTime});
+    }
+    m_session->run<ItemOutcomes>(
+        this, tr("Write dead-time modes"),
+        [items](comm::CamConDevice& device, comm::JobContext& job) -> Result<ItemOutcomes> {
+            ItemOutcomes outcomes;
+            int n = 0;
+            for (const Item& item : items) {
+                job.progress(n++, items.size());
+                const Status status = device.writeDeadTimeMode(item.output, item.deadTime);
+                outcomes.append({item.key, item.label, status ? Error{} : status.error()});
+            }
+            return outcomes;
+        },
+        [this, report, items, done](Result<ItemOutcomes> outcomes) {
+            WriteReport result = report;
+            if (!outcomes) {
+                for (const Item& item : items) result.addFailure(item.label, outcomes.error());
+                done(result);
+                return;
+            }
+            result.add(outcomes.value());
+            for (const ItemOutcome& outcome : outcomes.value()) {
+                if (outcome.error.kind != ErrorKind::None) continue;
+                for (const Item& item : items)
+                    if (item.key == outcome.key) m_device.insert(item.output, item.deadTime);
+            }
+            done(result);
+        });
+}
+
+}  // namespace cambench

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "section_page.h"
+
+#include "model/camcon/dead_time_modes.h"
+
+class QLabel;
+class QTableWidget;
+
+namespace cambench {
+
+class DeviceSession;
+class Workspace;
+
+// Dead-time modes and the separate switch-on and switch-off dead times of
+// each output (table interface, areas 1..200 words 251..253): read, edit,
+// write the outputs that differ from the device.
+class DeadTimeModesPage : public SectionPage {
+    Q_OBJECT
+public:
+    enum Column { OutputColumn, ModeColumn, NormalColumn, OnColumn, OffColumn, COUNT };
+
+    DeadTimeModesPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+
+    QString sectionTitle() const override { return tr("Dead-time modes"); }
+    QList<SectionDifference> differences() const override;
+    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
+    void deviceConnected() override { readFromDevice(); }
+
+    void readFromDevice();
+    QTableWidget* table() const { return m_table; }
+    // The values shown for `output` (1-based), as edited.
+    OutputDeadTime edited(int output) const;
+    void setEdited(int output, const OutputDeadTime& deadTime);
+    const DeadTimeModes& onDevice() const { return m_device; }
+
+private:
+    void showModes(const DeadTimeModes& modes);
+    int rowOf(int output) const;  // -1 when the output is not shown
+
+    DeviceSession* m_session;
+    Workspace* m_workspace;
+    QTableWidget* m_table;
+    QLabel* m_note;
+    DeadTimeModes m_device;  // as last read or written
+};
+
+}  // namespace cambench

@@ -1,0 +1,106 @@
+#include "programming_program_page.h"
+
+#include "device_session.h"
+#include "workspace.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <limits>
+
+namespace cambench {
+
+ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace* workspace,
+                                               QWidget* parent)
+    : SectionPage(parent),
+      m_session(session),
+      m_workspace(workspace),
+      m_program(new QSpinBox),
+      m_mode(new QComboBox),
+      m_switchValue(new QSpinBox),
+      m_problems(new QLabel) {
+    m_program->setRange(0, 32767);
+    m_mode->addItem(tr("Slow"), 0);
+    m_mode->addItem(tr("Direct (within one cycle)"), 1);
+    m_mode->addItem(tr("At the actual value"), 2);
+    m_switchValue->setRange(std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+    m_problems->setWordWrap(true);
+    auto* intro =
+        new QLabel(tr("The table interface reads and writes the cams of this program. "
+                      "It need not be the program that runs the machine."));
+    intro->setWordWrap(true);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Program:"), m_program);
+    form->addRow(tr("Program selection:"), m_mode);
+    form->addRow(tr("Selection actual value:"), m_switchValue);
+    auto* read = new QPushButton(tr("Read from device"));
+    auto* write = new QPushButton(tr("Write"));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(read);
+    buttons->addWidget(write);
+    buttons->addStretch();
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(intro);
+    layout->addLayout(form);
+    layout->addLayout(buttons);
+    layout->addWidget(m_problems);
+    layout->addStretch();
+    connect(read, &QPushButton::clicked, this, &ProgrammingProgramPage::readFromDevice);
+    connect(write, &QPushButton::clicked, this, &ProgrammingProgramPage::writeToDevice);
+}
+
+ProgrammingProgram ProgrammingProgramPage::edited() const {
+    return {m_program->value(), m_mode->currentData().toInt(), m_switchValue->value()};
+}
+
+void ProgrammingProgramPage::setEdited(const ProgrammingProgram& programming) {
+    m_program->setValue(programming.program);
+    m_mode->setCurrentIndex(qMax(0, m_mode->findData(programming.selectMode)));
+    m_switchValue->setValue(programming.switchValue);
+}
+
+void ProgrammingProgramPage::readFromDevice() {
+    m_session->run<ProgrammingProgram>(
+        this, tr("Read the programming program"),
+        [](comm::CamConDevice& device, comm::JobContext&) {
+            return device.readProgrammingProgram();
+        },
+        [this](Result<ProgrammingProgram> programming) {
+            if (!programming) {
+                Q_EMIT statusMessage(tr("Reading the programming program failed: %1")
+                                         .arg(programming.error().message));
+                return;
+            }
+            setEdited(programming.value());
+        });
+}
+
+void ProgrammingProgramPage::writeToDevice() {
+    const ProgrammingProgram programming = edited();
+    const QStringList problems = validateProgrammingProgram(programming, m_workspace->info());
+    m_problems->setText(problems.join(QLatin1Char('\n')));
+    if (!problems.isEmpty()) return;
+    m_session->run<ProgrammingProgram>(
+        this, tr("Write the programming program"),
+        [programming](comm::CamConDevice& device, comm::JobContext&) -> Result<ProgrammingProgram> {
+            const Status written = device.writeProgrammingProgram(programming);
+            if (!written) return written.error();
+            return device.readProgrammingProgram();
+        },
+        [this](Result<ProgrammingProgram> now) {
+            if (!now) {
+                Q_EMIT statusMessage(
+                    tr("Writing the programming program failed: %1").arg(now.error().message));
+                return;
+            }
+            setEdited(now.value());
+            Q_EMIT statusMessage(tr("Programming program %1 written.").arg(now->program));
+        });
+}
+
+}  // namespace cambench
