@@ -12,8 +12,10 @@ namespace cambench::comm {
 // choices come from one seeded generator, so a test sees the same faults
 // on every run.
 struct SimFaultSettings {
-    double corruptProbability = 0.0;  // one byte of a reply changed
-    double dropProbability = 0.0;     // a reply never sent
+    double corruptProbability = 0.0;  // one byte of a reply changed (a damaged reply)
+    double dropProbability = 0.0;     // a reply never sent, the request executed (a lost reply)
+    double ignoreProbability = 0.0;   // a request not executed, as if it arrived damaged
+    QByteArray dropFirstReplyTo;      // lead + body start: the first reply to it is lost
     int extraDelayMs = 0;             // added to every reply
     bool dead = false;                // never answers
     quint32 seed = 1;
@@ -23,6 +25,7 @@ struct SimFaultCounters {
     int replies = 0;  // replies offered to the injector
     int corrupted = 0;
     int dropped = 0;  // by chance or because the device is dead
+    int ignored = 0;  // requests not executed
 };
 
 class SimFaults {
@@ -32,13 +35,17 @@ public:
     const SimFaultSettings& settings() const { return m_settings; }
     const SimFaultCounters& counters() const { return m_counters; }
 
-    // The reply as it reaches the line; nullopt when it is lost.
-    std::optional<SimOutput> apply(SimOutput output);
+    // Whether the device misses this request (it arrived damaged).
+    bool ignoresRequest();
+    // The reply to `request` (lead + body) as it reaches the line; nullopt
+    // when it is lost.
+    std::optional<SimOutput> apply(SimOutput output, QByteArrayView request = {});
 
 private:
     SimFaultSettings m_settings;
     SimFaultCounters m_counters;
     QRandomGenerator m_random;
+    bool m_droppedFirst = false;
 };
 
 }  // namespace cambench::comm

@@ -7,8 +7,9 @@ namespace cambench::comm {
 namespace {
 
 const QString kPrefix = QStringLiteral("sim");
-const QString kKeys =
-    QStringLiteral("devices, framing, baud, corrupt, drop, delay, seed, throttle, fill, dead");
+const QString kKeys = QStringLiteral(
+    "devices, framing, baud, corrupt, drop, ignore, dropfirst, delay, seed, "
+    "throttle, fill, dead");
 
 Error badValue(const QString& port, const QString& key, const QString& value,
                const QString& expected) {
@@ -38,12 +39,18 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         config.baud = value.toInt(&ok);
         if (!ok || config.baud < 300)
             return badValue(port, key, value, QStringLiteral("a baud rate of 300 or more"));
-    } else if (key == QLatin1String("corrupt") || key == QLatin1String("drop")) {
+    } else if (key == QLatin1String("corrupt") || key == QLatin1String("drop") ||
+               key == QLatin1String("ignore")) {
         const double p = value.toDouble(&ok);
         if (!ok || p < 0.0 || p > 1.0)
             return badValue(port, key, value, QStringLiteral("a probability 0..1"));
         (key == QLatin1String("corrupt") ? config.faults.corruptProbability
-                                         : config.faults.dropProbability) = p;
+         : key == QLatin1String("drop")  ? config.faults.dropProbability
+                                         : config.faults.ignoreProbability) = p;
+    } else if (key == QLatin1String("dropfirst")) {
+        if (value.size() < 2 || (value.at(0) != u'?' && value.at(0) != u'!'))
+            return badValue(port, key, value, QStringLiteral("a request start such as !EE0000"));
+        config.faults.dropFirstReplyTo = value.toLatin1();
     } else if (key == QLatin1String("delay") || key == QLatin1String("fill")) {
         const int n = value.toInt(&ok);
         if (!ok || n < 0)

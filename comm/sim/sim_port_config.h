@@ -30,8 +30,10 @@ struct SimPortConfig {
 
 bool isSimPort(const QString& port);
 
-// Keys: devices, framing (standard|multiuser), baud, corrupt, drop, delay,
-// seed, throttle (0|1), fill, dead (0|1). The baud rate defaults to
+// Keys: devices, framing (standard|multiuser), baud, corrupt (damaged
+// replies), drop (lost replies), ignore (lost requests), dropfirst (the
+// first reply to a request starting so is lost, e.g. !EE0000), delay, seed,
+// throttle (0|1), fill, dead (0|1). The baud rate defaults to
 // `serial.baud`. Fails with Usage on an unknown key or a bad value.
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);
 
