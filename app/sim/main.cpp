@@ -85,13 +85,17 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
         if (!ok || port > 65535) return QStringLiteral("--tcp needs a port number 0..65535.");
         options.tcpPort = quint16(port);
     }
-    for (const char* name : {"corrupt", "drop"}) {
+    for (const char* name : {"corrupt", "drop", "ignore"}) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const auto p = probability(parser.value(QLatin1String(name)));
         if (!p) return QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name));
-        (QByteArray(name) == "corrupt" ? config.faults.corruptProbability
-                                       : config.faults.dropProbability) = *p;
+        const QByteArray key(name);
+        (key == "corrupt" ? config.faults.corruptProbability
+         : key == "drop"  ? config.faults.dropProbability
+                          : config.faults.ignoreProbability) = *p;
     }
+    if (parser.isSet(QStringLiteral("drop-first")))
+        config.faults.dropFirstReplyTo = parser.value(QStringLiteral("drop-first")).toLatin1();
     for (const char* name : {"delay", "fill"}) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const int n = parser.value(QLatin1String(name)).toInt(&ok);
@@ -133,8 +137,15 @@ void addOptions(QCommandLineParser& parser) {
          QStringLiteral("port")},
         {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."),
          QStringLiteral("p")},
-        {QStringLiteral("drop"), QStringLiteral("Probability of a lost reply."),
+        {QStringLiteral("drop"),
+         QStringLiteral("Probability of a lost reply (the request was executed)."),
          QStringLiteral("p")},
+        {QStringLiteral("ignore"),
+         QStringLiteral("Probability of a lost request (not executed, as if damaged)."),
+         QStringLiteral("p")},
+        {QStringLiteral("drop-first"),
+         QStringLiteral("Lose the first reply to a request that starts so, e.g. !EE0000."),
+         QStringLiteral("request")},
         {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."),
          QStringLiteral("ms")},
         {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator (default 1)."),
