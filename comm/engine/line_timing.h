@@ -42,10 +42,11 @@ struct LineTiming {
     int firstByteMs(qint64 requestBytes) const { return wireMs(requestBytes + 1) + turnaroundMs; }
     // Silence inside a frame after which the frame has broken off (its end
     // was damaged): a device sends a frame in one go, so only the path can
-    // pause it, by up to an adapter's latency timer (16 ms) or a scheduler
-    // tick. 30 ms plus four byte times covers both without waiting for the
-    // whole attempt.
-    int frameGapMs() const { return 30 + wireMs(4); }
+    // pause it - as long as it can delay a first byte (an adapter's latency
+    // timer, a scheduler tick, a device server whose Nagle algorithm waits
+    // for our delayed ACK: 40 ms on Linux). Rare (a hit CR), so the whole
+    // turnaround margin costs little, and less than the whole attempt.
+    int frameGapMs() const { return turnaroundMs + wireMs(4); }
 };
 
 }  // namespace cambench::comm
