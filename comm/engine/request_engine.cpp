@@ -108,12 +108,13 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
                     request.timeout == TimeoutClass::Normal) {
                     // Without sequence numbers a silent attempt may have been a
                     // slow one: its answer may be the one just accepted, and the
-                    // answer to this attempt may still come. Drop what arrives
-                    // for as long as the silent attempts lasted, so that the
-                    // next request of the same command cannot take it.
-                    const Status drained =
-                        drain(now() + (start - firstStart) + m_settings.line.frameGapMs(),
-                              silentAttempts);
+                    // answer to this attempt may still come, as late after this
+                    // attempt as that one was. Drop what arrives until then (and
+                    // for the time such an answer takes on the wire), so that
+                    // the next request of the same command cannot take it.
+                    const qint64 slowest = start - firstStart;
+                    const int whole = m_settings.line.wireMs(m_backend.replyWireBytes(request));
+                    const Status drained = drain(now() + slowest + whole, silentAttempts);
                     if (!drained) return drained.error();
                 }
                 return result->answer;
