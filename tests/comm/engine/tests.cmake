@@ -5,3 +5,7 @@ cambench_add_test(tst_engine_request_engine
           comm/engine/scripted_line.cpp
   LIBS cambench_comm)
 cambench_add_test(tst_engine_ascii_backend SOURCES comm/engine/tst_ascii_backend.cpp LIBS cambench_comm)
+cambench_add_test(tst_engine_line_timeouts
+  SOURCES comm/engine/tst_line_timeouts.cpp comm/engine/scripted_line.h
+          comm/engine/scripted_line.cpp
+  LIBS cambench_comm)
