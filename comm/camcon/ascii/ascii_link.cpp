@@ -26,7 +26,8 @@ QString rawLabel(char kind, const QByteArray& body) {
     QByteArray shown = body.left(12);
     for (char& c : shown)
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '.';
-    return commandLabel(kind, shown) + (body.size() > shown.size() ? QStringLiteral("...") : QString());
+    return commandLabel(kind, shown) +
+           (body.size() > shown.size() ? QStringLiteral("...") : QString());
 }
 
 QString eepromDateText(const QByteArray& eprom) {
@@ -38,15 +39,17 @@ QString eepromDateText(const QByteArray& eprom) {
 
 int fieldChars(const FieldSpec& field) {
     switch (field.type) {
-    case FieldType::Hex:
-    case FieldType::SignedHex:
-    case FieldType::Text: return field.width;
-    case FieldType::TextRest:
-    case FieldType::HexBytes: return kLongestRestChars;
-    case FieldType::Binary:  // every byte may need an ESC
-        return 2 * (field.width < 0 ? kLongestBinaryBytes : field.width);
-    case FieldType::HexWords:
-        return field.width * (field.count < 0 ? kLongestWordList : field.count);
+        case FieldType::Hex:
+        case FieldType::SignedHex:
+        case FieldType::Text:
+            return field.width;
+        case FieldType::TextRest:
+        case FieldType::HexBytes:
+            return kLongestRestChars;
+        case FieldType::Binary:  // every byte may need an ESC
+            return 2 * (field.width < 0 ? kLongestBinaryBytes : field.width);
+        case FieldType::HexWords:
+            return field.width * (field.count < 0 ? kLongestWordList : field.count);
     }
     return 0;
 }
@@ -60,11 +63,25 @@ int longestReplyChars(const CommandSpec& spec) {
     return 1 + std::max({name + data, name + kErrorReplyChars, kNotUnderstoodChars});
 }
 
-// !EE erases the EEPROM, and takes long, only for block 0000.
+// "EE" and a block number: an !EE without data, which ends a restore.
+constexpr int kEepromBlockHeader = 2 + 4;
+
+// !EE takes long only for block 0000, which erases the EEPROM, and for the
+// empty block that ends a restore and starts the device (notes 6).
 bool isLong(const CommandSpec* spec, const QByteArray& body) {
     if (!spec) return false;
     const bool eepromWrite = spec->kind == kCommand && qstrcmp(spec->name, "EE") == 0;
-    return eepromWrite ? body.startsWith("EE0000") : spec->timeout == TimeoutClass::Long;
+    if (!eepromWrite) return spec->timeout == TimeoutClass::Long;
+    return body.startsWith("EE0000") || body.size() == kEepromBlockHeader;
+}
+
+// A reply judged against `spec`: its answer, or a reply to something else -
+// in Multiuser framing under our block number, the device's repeated answer
+// to an earlier request, which it did not execute this one for.
+Verdict judgeUnrelated(bool multiuser, QString& problem) {
+    if (!multiuser) return Verdict::Ignore;
+    problem = QStringLiteral("the device repeated an answer to an earlier request");
+    return Verdict::Resend;
 }
 
 }  // namespace
@@ -106,8 +123,8 @@ void AsciiLink::setLineTiming(const LineTiming& line) {
     applySettings();
 }
 
-Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fields,
-                                       int timeoutMs, ReplyMatch* match) {
+Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fields, int timeoutMs,
+                                       ReplyMatch* match) {
     Result<QByteArray> body = encodeRequestBody(spec, fields);
     if (!body) return body.error();
     Request request;
@@ -125,19 +142,17 @@ Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fi
                               true};
             *match = matchReply(spec, frame);
             switch (match->kind) {
-            case ReplyMatch::Matches:
-            case ReplyMatch::DeviceError:
-            case ReplyMatch::NotUnderstood: return Verdict::Accept;
-            case ReplyMatch::Malformed:
-                problem = QStringLiteral("a malformed reply: %1").arg(match->detail);
-                return Verdict::Retry;
-            case ReplyMatch::Unrelated: break;
+                case ReplyMatch::Matches:
+                case ReplyMatch::DeviceError:
+                case ReplyMatch::NotUnderstood:
+                    return Verdict::Accept;
+                case ReplyMatch::Malformed:
+                    problem = QStringLiteral("a malformed reply: %1").arg(match->detail);
+                    return Verdict::Retry;
+                case ReplyMatch::Unrelated:
+                    break;
             }
-            if (!multiuser) return Verdict::Ignore;
-            // Our block number, another command's answer: the device repeated
-            // its last answer and did not execute this request.
-            problem = QStringLiteral("the device repeated an answer to an earlier request");
-            return Verdict::Resend;
+            return judgeUnrelated(multiuser, problem);
         };
     }
     if (request.timeout == TimeoutClass::Long && timeoutMs <= 0) {
@@ -183,6 +198,28 @@ Status AsciiLink::ensureBlockSync() {
     return success();
 }
 
+Result<bool> AsciiLink::ping(int device, int block, int turnaroundMs) {
+    setDevice(device);
+    m_backend.setNextBlock(device, block);
+    const CommandSpec* unit = findCommand(kQuery, "UNIT");
+    Result<Request> made = makeRequest(*unit, {}, m_settings.timeoutMs, nullptr);
+    if (!made) return made.error();
+    Request request = std::move(made).value();
+    request.maxAttempts = 1;
+    request.turnaroundMs = turnaroundMs;
+    request.silenceExpected = true;
+    // Any intact frame from the device to us under this block proves it,
+    // even its repeated answer to an older request.
+    request.judge = {};
+    const Result<QByteArray> reply = m_engine.send(request);
+    if (reply) {
+        m_synced[m_backend.device()] = true;
+        return true;
+    }
+    if (reply.error().kind == ErrorKind::Communication) return false;
+    return reply.error();
+}
+
 int AsciiLink::attemptTimeoutMs(const CommandSpec& spec, const Fields& fields) {
     Result<Request> request = makeRequest(spec, fields, 0, nullptr);
     return request ? m_engine.attemptTimeoutMs(*request) : 0;
@@ -191,8 +228,8 @@ int AsciiLink::attemptTimeoutMs(const CommandSpec& spec, const Fields& fields) {
 Result<Fields> AsciiLink::call(char kind, const char* name, const Fields& fields, int timeoutMs) {
     const CommandSpec* spec = findCommand(kind, name);
     if (!spec)
-        return Error::usage(QStringLiteral("%1 is not a command of the catalogue")
-                                .arg(commandLabel(kind, name)));
+        return Error::usage(
+            QStringLiteral("%1 is not a command of the catalogue").arg(commandLabel(kind, name)));
     return call(*spec, fields, timeoutMs);
 }
 
@@ -213,19 +250,20 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
 
     const QString label = request->label;
     switch (match.kind) {
-    case ReplyMatch::DeviceError:
-        return Error::device(match.errorCode,
-                             QStringLiteral("%1: the device reported error %2: %3")
-                                 .arg(label)
-                                 .arg(match.errorCode)
-                                 .arg(deviceErrorText(match.errorCode)));
-    case ReplyMatch::NotUnderstood:
-        return Error{ErrorKind::NotUnderstood,
-                     QStringLiteral("%1: the device does not know this command (firmware dated "
-                                    "%2); it needs a newer firmware for it")
-                         .arg(label, eepromDateText(match.eprom)),
-                     0};
-    default: return match.fields;
+        case ReplyMatch::DeviceError:
+            return Error::device(match.errorCode,
+                                 QStringLiteral("%1: the device reported error %2: %3")
+                                     .arg(label)
+                                     .arg(match.errorCode)
+                                     .arg(deviceErrorText(match.errorCode)));
+        case ReplyMatch::NotUnderstood:
+            return Error{ErrorKind::NotUnderstood,
+                         QStringLiteral("%1: the device does not know this command (firmware dated "
+                                        "%2); it needs a newer firmware for it")
+                             .arg(label, eepromDateText(match.eprom)),
+                         0};
+        default:
+            return match.fields;
     }
 }
 
@@ -234,8 +272,8 @@ Result<QByteArray> AsciiLink::raw(char kind, const QByteArray& body, int timeout
         return Error::usage(
             QStringLiteral("a request starts with '?' or '!', not '%1'").arg(QChar(kind)));
     if (body.isEmpty())
-        return Error::usage(QStringLiteral("an empty request: type the command letters after %1")
-                                .arg(QChar(kind)));
+        return Error::usage(
+            QStringLiteral("an empty request: type the command letters after %1").arg(QChar(kind)));
     const Status synced = ensureBlockSync();
     if (!synced) return synced.error();
     const CommandSpec* spec = matchRequest(kind, body);
@@ -251,6 +289,18 @@ Result<QByteArray> AsciiLink::raw(char kind, const QByteArray& body, int timeout
         request.retry = RetryPolicy::Never;
     request.expectReply = !spec || spec->replyKind != ReplyKind::None;
     request.fixedTimeoutMs = timeoutMs;
+    if (spec) {
+        // A reply to another command is never the answer; anything this
+        // command may get back (data, OK, an error, :Z, a malformed reply
+        // to a provisional format) is shown to the person who typed it.
+        const bool multiuser = m_settings.framing == Framing::Multiuser;
+        request.judge = [spec, multiuser](const QByteArray& reply, QString& problem) {
+            const Frame frame{reply.isEmpty() ? kReply : reply.at(0), reply.mid(1), std::nullopt,
+                              true};
+            if (matchReply(*spec, frame).kind != ReplyMatch::Unrelated) return Verdict::Accept;
+            return judgeUnrelated(multiuser, problem);
+        };
+    }
     const Result<QByteArray> reply = m_engine.send(request);
     if (!reply) return reply.error();
     return reply->mid(1);
