@@ -17,9 +17,18 @@ Error writeError(const QString& path, const QString& why) {
 
 }  // namespace
 
-Status writeFileAtomically(const QString& path, const QByteArray& bytes) {
+Status writeFileAtomically(const QString& path, const QByteArray& bytes, FileAccess access) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) return writeError(path, file.errorString());
+    // Set on the temporary file, which the commit renames into place: the
+    // secrets are never readable by others, not even for a moment.
+    if (access == FileAccess::OwnerOnly &&
+        !file.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner)) {
+        const QString why = file.errorString();
+        file.cancelWriting();
+        return writeError(
+            path, QStringLiteral("cannot make it readable by its owner only (%1)").arg(why));
+    }
     if (file.write(bytes) != bytes.size()) {
         const QString why = file.errorString();
         file.cancelWriting();

@@ -59,7 +59,8 @@ QWizardPage* BackupWizard::createChoosePage() {
     auto* page = new QWizardPage;
     page->setTitle(tr("Backup or restore"));
     page->setSubTitle(tr("A backup copies the device's whole EEPROM into a file. A restore erases "
-                         "the device and writes such a file back."));
+                         "the device and writes such a file back. The file holds the users' "
+                         "access codes: keep it where only you can read it."));
     m_backup = new QRadioButton(tr("Back up the device into a file"));
     m_restore = new QRadioButton(tr("Restore the device from a file"));
     m_backup->setChecked(true);

@@ -92,6 +92,7 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
     const QList<std::pair<const char*, QList<double*>>> probabilities{
         {"corrupt", {&faults.corruptProbability}},
         {"drop", {&faults.dropProbability}},
+        {"ignore", {&faults.ignoreProbability}},
         {"nak", {&faults.nakProbability}},
         {"lost-dle", {&faults.lostDleProbability}},
         {"collision", {&faults.collisionProbability}},
@@ -105,6 +106,8 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
         if (!p) return QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name));
         for (double* target : targets) *target = *p;
     }
+    if (parser.isSet(QStringLiteral("drop-first")))
+        config.faults.dropFirstReplyTo = parser.value(QStringLiteral("drop-first")).toLatin1();
     for (const char* name : {"delay", "fill"}) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const int n = parser.value(QLatin1String(name)).toInt(&ok);
@@ -153,7 +156,8 @@ void addOptions(QCommandLineParser& parser) {
          QStringLiteral("port")},
         {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."),
          QStringLiteral("p")},
-        {QStringLiteral("drop"), QStringLiteral("Probability of a lost reply."),
+        {QStringLiteral("drop"),
+         QStringLiteral("Probability of a lost reply (the request was executed)."),
          QStringLiteral("p")},
         {QStringLiteral("nak"),
          QStringLiteral("3964R: probability of a NAK to a good block (not executed)."),
@@ -168,6 +172,12 @@ void addOptions(QCommandLineParser& parser) {
          QStringLiteral("3964R: --corrupt (the reply's BCC), --nak, --lost-dle and --collision "
                         "at once."),
          QStringLiteral("p")},
+        {QStringLiteral("ignore"),
+         QStringLiteral("Probability of a lost request (not executed, as if damaged)."),
+         QStringLiteral("p")},
+        {QStringLiteral("drop-first"),
+         QStringLiteral("Lose the first reply to a request that starts so, e.g. !EE0000."),
+         QStringLiteral("request")},
         {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."),
          QStringLiteral("ms")},
         {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator (default 1)."),

@@ -21,6 +21,12 @@ struct Incoming {
     QByteArray message;  // Message: the protocol message, framing removed
     QByteArray wire;     // the wire bytes, for the traffic log
     QString detail;      // Damaged, Garbage: why
+    // Message, Foreign: the station that sent an intact frame to this PC and
+    // the sequence number it answers, where the framing names them (CamCon
+    // Multiuser: device number and block number); -1 otherwise. A frame for
+    // another PC, or a damaged one, names nobody: its header may be wrong.
+    int source = -1;
+    int sequence = -1;
 };
 
 // What the backend asks the engine to do after one of its calls.
@@ -52,6 +58,10 @@ class FramingBackend {
 public:
     virtual ~FramingBackend() = default;
 
+    // The line the engine derives its timing from (e.g. for a gap timer
+    // that ends a frame whose end was damaged); set before every request.
+    virtual void setLineTiming(const LineTiming& line) { Q_UNUSED(line); }
+
     // "Standard", "Multiuser device 5", "3964R (n96)": for messages.
     virtual QString describe() const = 0;
     // Where to look when the device stays silent, as a clause:
@@ -65,7 +75,8 @@ public:
     virtual BackendStep startAttempt(const Request& request, int attempt, qint64 nowMs) = 0;
     // Bytes from the line.
     virtual BackendStep feed(QByteArrayView bytes, qint64 nowMs) = 0;
-    // Time passed: link-level timers (acknowledgement, character delay).
+    // Time passed: link-level timers (acknowledgement, character delay, a
+    // frame that broke off).
     virtual BackendStep poll(qint64 nowMs) {
         Q_UNUSED(nowMs);
         return {};

@@ -10,7 +10,8 @@ namespace cambench::comm {
 // How long a device may work before it answers.
 enum class TimeoutClass {
     Normal,  // answers as soon as it has read the request
-    Long,    // works first: CamCon !CA (up to 2 min) and !EE0000 (erases the EEPROM)
+    Long,    // works first: CamCon !CA (up to 2 min), !EE0000 (erases the EEPROM) and
+             // the empty !EE block that ends a restore (starts the device)
 };
 
 // Whether a request may be sent again after its reply was lost. A protocol
@@ -19,11 +20,11 @@ enum class TimeoutClass {
 // answers a repeat without executing it, which makes every retry safe there
 // (FramingBackend::deduplicatesRetries).
 enum class RetryPolicy {
-    Idempotent,    // executing twice does no harm (queries, absolute writes)
-    CheckAfter,    // may act twice (a cursor step, an insert): retry, but the
-                   // caller must check the device when lastAttempts() > 1
-    Never,         // may act twice and cannot be checked (a relative move):
-                   // one attempt unless the protocol deduplicates
+    Idempotent,  // executing twice does no harm (queries, absolute writes)
+    CheckAfter,  // may act twice (a cursor step, an insert): retry, but the
+                 // caller must check the device when lastCallMayHaveActedTwice()
+    Never,       // may act twice and cannot be checked (a relative move):
+                 // one attempt unless the protocol deduplicates
 };
 
 // What a reply means to the request waiting for it.
@@ -38,14 +39,20 @@ enum class Verdict {
 // One request as the engine sends it: a protocol message the framing
 // backend wraps for the wire, and how to treat its reply.
 struct Request {
-    QString label;           // for messages and logs: "?NF", "RK512 read DB 5"
-    QByteArray message;      // the protocol message; the backend adds the framing
+    QString label;              // for messages and logs: "?NF", "RK512 read DB 5"
+    QByteArray message;         // the protocol message; the backend adds the framing
     int longestReplyBytes = 0;  // protocol message bytes, for the line-derived timeout
     TimeoutClass timeout = TimeoutClass::Normal;
     RetryPolicy retry = RetryPolicy::Idempotent;
     bool expectReply = true;
     int fixedTimeoutMs = 0;  // > 0: this per-attempt timeout instead of the derived one
     int maxAttempts = 0;     // > 0: at most this many attempts (a bus scan: 1)
+    // >= 0: the device's turnaround for this request instead of the line's
+    // (a bus scan's first look gives each number only a short moment).
+    int turnaroundMs = -1;
+    // Silence is an expected answer (a bus scan asking an empty address):
+    // no warning in the log when every attempt stays silent.
+    bool silenceExpected = false;
     // Judges each valid reply message; none = the first valid reply is the answer.
     std::function<Verdict(const QByteArray& reply, QString& problem)> judge;
     // Long requests: an idempotent request the engine sends when the device

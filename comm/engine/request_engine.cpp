@@ -19,26 +19,48 @@ constexpr int kSendLimitMs = 60000;
 // one instead (a Multiuser block number it had seen last).
 constexpr int kMaxResends = 2;
 
+bool couldBeAnswer(const Incoming& in) {
+    return in.kind == Incoming::Message || in.kind == Incoming::Damaged;
+}
+
 }  // namespace
 
 RequestEngine::RequestEngine(Transport& transport, FramingBackend& backend, EngineSettings settings)
     : m_transport(transport), m_backend(backend), m_settings(settings) {
     m_clock.start();
+    m_backend.setLineTiming(m_settings.line);
 }
 
-int RequestEngine::attemptTimeoutMs(const Request& request) const {
-    if (request.fixedTimeoutMs > 0) return request.fixedTimeoutMs;
-    const LineTiming& line = m_settings.line;
-    const int derived =
-        line.attemptMs(m_backend.requestWireBytes(request), m_backend.replyWireBytes(request));
+void RequestEngine::setSettings(const EngineSettings& settings) {
+    m_settings = settings;
+    m_backend.setLineTiming(m_settings.line);
+}
+
+RequestEngine::Window RequestEngine::windowFor(const Request& request) const {
+    if (request.fixedTimeoutMs > 0) return {request.fixedTimeoutMs, request.fixedTimeoutMs};
+    LineTiming line = m_settings.line;
+    if (request.turnaroundMs >= 0) line.turnaroundMs = request.turnaroundMs;
+    const qint64 requestBytes = m_backend.requestWireBytes(request);
+    const int full = line.attemptMs(requestBytes, m_backend.replyWireBytes(request));
     if (request.timeout == TimeoutClass::Long) {
         // A device that deduplicates is asked again every probeAfterMs; one
         // that does not is probed when a probe is known, else waited for.
-        if (m_backend.deduplicatesRetries() || request.probe) return line.probeAfterMs + derived;
-        return line.longWorkMs;
+        const int longMs = (m_backend.deduplicatesRetries() || request.probe)
+                               ? line.probeAfterMs + full
+                               : line.longWorkMs;
+        return {longMs, longMs};
     }
-    if (m_settings.fixedTimeoutMs > 0) return m_settings.fixedTimeoutMs;
-    return derived;
+    if (m_settings.fixedTimeoutMs > 0 && request.turnaroundMs < 0)
+        return {m_settings.fixedTimeoutMs, m_settings.fixedTimeoutMs};
+    return {std::min(full, line.firstByteMs(requestBytes)), full};
+}
+
+int RequestEngine::attemptTimeoutMs(const Request& request) const {
+    return windowFor(request).fullMs;
+}
+
+int RequestEngine::firstByteTimeoutMs(const Request& request) const {
+    return windowFor(request).firstByteMs;
 }
 
 int RequestEngine::attemptsFor(const Request& request) const {
@@ -65,6 +87,8 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
 
     const int attempts = attemptsFor(request);
     int resends = 0;
+    int silentAttempts = 0;
+    qint64 firstStart = -1;
     QString problem;
     for (int attempt = 1; attempt <= attempts; ++attempt) {
         if (cancelled()) return Error::cancelled();
@@ -76,13 +100,32 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
             report(m_backend.resetInput(), false);
             m_transport.discardInput();
         }
+        const qint64 start = now();
+        if (firstStart < 0) firstStart = start;
         Result<Attempt> result = runAttempt(request, attempt);
         if (!result) return result.error();
         switch (result->outcome) {
             case Outcome::Answer:
+                if (silentAttempts > 0 && !m_backend.deduplicatesRetries() &&
+                    request.timeout == TimeoutClass::Normal) {
+                    // Without sequence numbers a silent attempt may have been a
+                    // slow one: its answer may be the one just accepted, and the
+                    // answer to this attempt may still come, as late after this
+                    // attempt as that one was. Drop what arrives until then (and
+                    // for the time such an answer takes on the wire), so that
+                    // the next request of the same command cannot take it.
+                    const qint64 slowest = start - firstStart;
+                    const int whole = m_settings.line.wireMs(m_backend.replyWireBytes(request));
+                    const Status drained = drain(now() + slowest + whole, silentAttempts);
+                    if (!drained) return drained.error();
+                }
                 return result->answer;
             case Outcome::Failed:
                 problem = result->problem;
+                if (result->silent) {
+                    ++silentAttempts;
+                    ++m_stats.silentAttempts;
+                }
                 break;
             case Outcome::Resend:
                 problem = result->problem;
@@ -97,9 +140,20 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
                 break;
         }
     }
-    const QString message = failureMessage(request, attempts, attemptTimeoutMs(request), problem);
-    qCWarning(commLinkLog) << message;
+    const QString message = failureMessage(request, attempts, problem);
+    if (request.silenceExpected) {
+        qCDebug(commLinkLog) << message;
+    } else {
+        qCWarning(commLinkLog) << message;
+    }
     return Error::communication(message);
+}
+
+Status RequestEngine::listen(int ms) {
+    dropStaleInput();
+    const Status drained = drain(now() + std::max(0, ms), 0);
+    report(m_backend.resetInput(), false);
+    return drained;
 }
 
 Result<RequestEngine::Attempt> RequestEngine::runAttempt(const Request& request, int attempt) {
@@ -110,23 +164,26 @@ Result<RequestEngine::Attempt> RequestEngine::runAttempt(const Request& request,
         apply(m_backend.startAttempt(request, attempt, now()), request, result, decided);
     if (!applied) return applied.error();
     if (decided) return result;
-    return awaitAnswer(request, attemptTimeoutMs(request));
+    return awaitAnswer(request, windowFor(request));
 }
 
-Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request, int timeoutMs) {
+Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request,
+                                                          const Window& window) {
     Attempt result;
     bool decided = false;
     const qint64 sendLimit = now() + kSendLimitMs;
+    qint64 sentAt = -1;
     qint64 deadline = -1;  // set once the request has left
-    qint64 longLimit = now() + m_settings.line.longWorkMs;
+    const qint64 longLimit = now() + m_settings.line.longWorkMs;
     for (;;) {
         if (cancelled()) return Error::cancelled();
-        if (m_sent && deadline < 0) {
+        if (m_sent && sentAt < 0) {
             if (!request.expectReply) {
                 result.outcome = Outcome::Answer;
                 return result;
             }
-            deadline = now() + timeoutMs;
+            sentAt = now();
+            deadline = sentAt + window.firstByteMs;
         }
         qint64 until = m_sent ? deadline : sendLimit;
         const qint64 timer = m_backend.nextTimerMs();
@@ -140,6 +197,11 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
         if (!chunk->isEmpty()) {
             m_lastHeardDevice = true;
             m_stats.bytesReceived += chunk->size();
+            if (sentAt >= 0) {
+                // A reply is arriving: it gets the time its longest form needs.
+                result.silent = false;
+                deadline = std::max(deadline, sentAt + window.fullMs);
+            }
             const Status applied = apply(m_backend.feed(*chunk, now()), request, result, decided);
             if (!applied) return applied.error();
             if (decided) return result;
@@ -173,12 +235,12 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
                 result.answer = probed->answer;
                 return result;
             }
-            result.problem = QCoreApplication::translate("cambench::comm",
-                                                         "no reply, though the device answered %1")
+            result.silent = false;  // the device is there: it answered the probe
+            result.problem = QCoreApplication::translate("cambench::comm", "no reply, though the device answered %1")
                                  .arg(request.probe().label);
             return result;
         }
-        if (result.problem.isEmpty()) result.problem = QStringLiteral("no reply");
+        if (result.problem.isEmpty()) result.problem = QCoreApplication::translate("cambench::comm", "no reply");
         return result;
     }
 }
@@ -205,7 +267,7 @@ Result<RequestEngine::Probe> RequestEngine::probe(const Request& request) {
         }
         return probe.judge ? probe.judge(reply, problem) : Verdict::Accept;
     };
-    Result<Attempt> answer = awaitAnswer(both, attemptTimeoutMs(probe));
+    Result<Attempt> answer = awaitAnswer(both, windowFor(probe));
     if (!answer) return answer.error();
     if (answer->outcome != Outcome::Answer) return Probe{Probe::StillBusy, {}};
     if (late) return Probe{Probe::LateAnswer, answer->answer};
@@ -222,18 +284,15 @@ Status RequestEngine::apply(BackendStep&& step, const Request& request, Attempt&
     }
     if (step.sent) m_sent = true;
     for (Incoming& in : step.incoming) {
-        if (decided) {
-            report(in.wire, false);
-            continue;
-        }
         report(in.wire, false);
+        if (m_observer) m_observer(in);
+        if (decided) continue;
         switch (in.kind) {
             case Incoming::Garbage:
-                qCDebug(commLinkLog) << "skipped bytes outside a frame:" << in.wire.toHex(' ');
+                qCDebug(commLinkLog) << "skipped bytes outside a frame:" << in.detail;
                 break;
             case Incoming::Foreign:
-                qCDebug(commLinkLog)
-                    << "ignoring a frame for another device or block" << in.wire.toHex(' ');
+                qCDebug(commLinkLog) << "ignoring a frame for another device or block";
                 break;
             case Incoming::Damaged:
                 ++m_stats.badFrames;
@@ -277,13 +336,58 @@ Status RequestEngine::apply(BackendStep&& step, const Request& request, Attempt&
     return success();
 }
 
-QString RequestEngine::failureMessage(const Request& request, int attempts, int timeoutMs,
+Result<int> RequestEngine::consume(BackendStep&& step) {
+    if (!step.write.isEmpty()) {
+        report(step.write, true);
+        const Status written = m_transport.write(step.write);
+        if (!written) return written.error();
+        m_stats.bytesSent += step.write.size();
+    }
+    int answers = 0;
+    for (const Incoming& in : step.incoming) {
+        report(in.wire, false);
+        if (m_observer) m_observer(in);
+        if (couldBeAnswer(in)) ++answers;
+    }
+    return answers;
+}
+
+Status RequestEngine::drain(qint64 untilMs, int enough) {
+    int answers = 0;
+    while (now() < untilMs && (enough <= 0 || answers < enough) && !cancelled()) {
+        qint64 until = untilMs;
+        const qint64 timer = m_backend.nextTimerMs();
+        if (timer >= 0) until = std::min(until, timer);
+        const Result<QByteArray> chunk =
+            m_transport.read(int(std::clamp<qint64>(until - now(), 0, kSliceMs)));
+        if (!chunk) return chunk.error();
+        BackendStep step;
+        if (!chunk->isEmpty()) {
+            m_stats.bytesReceived += chunk->size();
+            step = m_backend.feed(*chunk, now());
+        }
+        if (m_backend.nextTimerMs() >= 0 && now() >= m_backend.nextTimerMs())
+            step.append(m_backend.poll(now()));
+        const Result<int> seen = consume(std::move(step));
+        if (!seen) return seen.error();
+        if (*seen > 0 && enough > 0) {
+            m_stats.lateReplies += *seen;
+            qCDebug(commLinkLog) << "dropped" << *seen << "late answer(s) to an earlier attempt";
+        }
+        answers += *seen;
+    }
+    return success();
+}
+
+QString RequestEngine::failureMessage(const Request& request, int attempts,
                                       const QString& problem) const {
+    const QString noReply = QCoreApplication::translate("cambench::comm", "no reply");
+    const bool silent = problem == noReply;
     const QString what =
-        problem == QLatin1String("no reply")
-            ? QCoreApplication::translate("cambench::comm", "no reply")
-            : QCoreApplication::translate("cambench::comm", "no valid reply (last: %1)")
-                  .arg(problem);
+        silent ? noReply
+               : QCoreApplication::translate("cambench::comm", "no valid reply (last: %1)")
+                     .arg(problem);
+    const int waitedMs = silent ? firstByteTimeoutMs(request) : attemptTimeoutMs(request);
     // Whole phrases, so that a translation can put its own plural.
     const QString tries =
         attempts == 1 ? QCoreApplication::translate("cambench::comm", "1 attempt")
@@ -291,7 +395,7 @@ QString RequestEngine::failureMessage(const Request& request, int attempts, int 
     return QCoreApplication::translate("cambench::comm",
                                        "%1 from %2 to %3 on %4 after %5 of %6 ms; %7")
         .arg(what, m_backend.describe(), request.label, m_transport.description(), tries)
-        .arg(timeoutMs)
+        .arg(waitedMs)
         .arg(m_backend.checkHint());
 }
 
@@ -303,12 +407,15 @@ void RequestEngine::report(const QByteArray& bytes, bool outgoing) {
 
 void RequestEngine::dropStaleInput() {
     report(m_backend.resetInput(), false);
-    // A late answer to an earlier request must not pass for the next one's.
+    // A late answer to an earlier request must not pass for the next one's;
+    // the observer still hears it (a bus scan learns who answered late).
     const Result<QByteArray> stale = m_transport.read(0);
     if (stale && !stale->isEmpty()) {
         m_stats.bytesReceived += stale->size();
         qCDebug(commLinkLog) << "dropping" << stale->size() << "stale bytes";
-        report(*stale, false);
+        const Result<int> seen = consume(m_backend.feed(*stale, now()));
+        Q_UNUSED(seen);
+        report(m_backend.resetInput(), false);
     }
 }
 

@@ -17,8 +17,8 @@ namespace cambench::comm {
 
 struct EngineSettings {
     LineTiming line;
-    int retries = 3;          // further attempts after the first, where a retry is safe
-    int fixedTimeoutMs = 0;   // > 0: every normal attempt waits this long (the user's --timeout)
+    int retries = 3;         // further attempts after the first, where a retry is safe
+    int fixedTimeoutMs = 0;  // > 0: every normal attempt waits this long (the user's --timeout)
 };
 
 // Sends requests over a Transport through one FramingBackend and waits for
@@ -27,30 +27,53 @@ struct EngineSettings {
 // (only where RetryPolicy and the backend make them safe), cancel, the
 // traffic sink and the counters. Lives in the worker thread; every call
 // blocks that thread only.
+//
+// An attempt ends early when it can: a silent line past the first reply
+// byte's time is a lost reply, a damaged frame fails at once, and a frame
+// that broke off is caught by the backend's gap timer. Only a reply that is
+// arriving gets the whole attempt time.
 class RequestEngine {
 public:
     RequestEngine(Transport& transport, FramingBackend& backend, EngineSettings settings = {});
 
     const EngineSettings& settings() const { return m_settings; }
-    void setSettings(const EngineSettings& settings) { m_settings = settings; }
+    void setSettings(const EngineSettings& settings);
     FramingBackend& backend() { return m_backend; }
     Transport& transport() { return m_transport; }
 
     // Set from any thread; an ongoing call returns Cancelled within ~20 ms.
     void setCancelFlag(const std::atomic_bool* flag) { m_cancel = flag; }
     void setTrafficSink(std::function<void(const TrafficEntry&)> sink) { m_sink = std::move(sink); }
+    // Sees every piece of input the backend makes of the line, judged or
+    // not, stale or late (a bus scan hears late answers by their source).
+    using IncomingObserver = std::function<void(const Incoming&)>;
+    void setIncomingObserver(IncomingObserver observer) { m_observer = std::move(observer); }
+    // Tests: a virtual clock (ms) instead of the wall clock; the transport
+    // must advance it while it "waits".
+    void setClock(std::function<qint64()> nowMs) { m_clockFn = std::move(nowMs); }
 
     // Sends `request` and returns the accepted reply message. Fails with a
     // Communication error naming the request, the line and what to check.
     Result<QByteArray> send(const Request& request);
 
-    // The per-attempt timeout `request` gets.
+    // Reads the line for `ms` without sending anything: what arrives goes to
+    // the observer and the traffic log only.
+    Status listen(int ms);
+
+    // The per-attempt timeout `request` gets: the whole reply at the latest.
     int attemptTimeoutMs(const Request& request) const;
+    // How long an attempt waits on a silent line before it counts as lost.
+    int firstByteTimeoutMs(const Request& request) const;
 
     // How many times the last call sent its request. Above 1 an earlier
     // attempt may have reached the device and been executed although its
     // reply was lost (see RetryPolicy::CheckAfter).
     int lastAttempts() const { return m_lastAttempts; }
+    // The last call's request may have been executed more than once: it went
+    // out again and the protocol does not answer repeats without executing.
+    bool lastCallMayHaveActedTwice() const {
+        return m_lastAttempts > 1 && !m_backend.deduplicatesRetries();
+    }
     // Whether bytes came back during the last call, valid or not: with
     // stale input dropped before each request, the device then received
     // the request and answered, so a failed call may still have acted.
@@ -63,6 +86,8 @@ public:
         int retries = 0;
         int badFrames = 0;
         int probes = 0;
+        int silentAttempts = 0;  // attempts that heard nothing at all
+        int lateReplies = 0;     // answers to an earlier attempt, dropped after a retry
     };
     const Stats& stats() const { return m_stats; }
     void resetStats() { m_stats = {}; }
@@ -74,24 +99,38 @@ private:
         Outcome outcome = Outcome::Failed;
         QByteArray answer;
         QString problem;
+        bool silent = true;  // no byte came back after the request had left
+    };
+    // From the moment the request has left: until the first reply byte, and
+    // until the last byte of the longest reply.
+    struct Window {
+        int firstByteMs = 0;
+        int fullMs = 0;
     };
 
+    Window windowFor(const Request& request) const;
     int attemptsFor(const Request& request) const;
     Result<Attempt> runAttempt(const Request& request, int attempt);
-    Result<Attempt> awaitAnswer(const Request& request, int timeoutMs);
+    Result<Attempt> awaitAnswer(const Request& request, const Window& window);
     // Handles one backend step: writes, logs, judges. Sets `decided` when
     // the attempt is over.
     Status apply(BackendStep&& step, const Request& request, Attempt& attempt, bool& decided);
+    // Handles a step outside any attempt: writes and logs it, tells the
+    // observer, judges nothing. Returns how many frames it held that could
+    // have been an answer (Message, Damaged).
+    Result<int> consume(BackendStep&& step);
+    // Reads until `untilMs`, or until `enough` answers (Message, Damaged)
+    // went by when `enough` > 0; nothing is judged.
+    Status drain(qint64 untilMs, int enough);
     // What asking a silent device with the request's probe showed.
     struct Probe {
         enum Kind { StillBusy, AnswerLost, LateAnswer } kind = StillBusy;
         QByteArray answer;  // LateAnswer: the long request's own answer
     };
     Result<Probe> probe(const Request& request);
-    QString failureMessage(const Request& request, int attempts, int timeoutMs,
-                           const QString& problem) const;
+    QString failureMessage(const Request& request, int attempts, const QString& problem) const;
     bool cancelled() const { return m_cancel && m_cancel->load(); }
-    qint64 now() const { return m_clock.elapsed(); }
+    qint64 now() const { return m_clockFn ? m_clockFn() : m_clock.elapsed(); }
     void report(const QByteArray& bytes, bool outgoing);
     void dropStaleInput();
 
@@ -100,6 +139,8 @@ private:
     EngineSettings m_settings;
     const std::atomic_bool* m_cancel = nullptr;
     std::function<void(const TrafficEntry&)> m_sink;
+    IncomingObserver m_observer;
+    std::function<qint64()> m_clockFn;
     QElapsedTimer m_clock;
     Stats m_stats;
     int m_lastAttempts = 0;

@@ -5,13 +5,25 @@ namespace cambench::comm {
 SimFaults::SimFaults(const SimFaultSettings& settings)
     : m_settings(settings), m_random(settings.seed) {}
 
-std::optional<SimOutput> SimFaults::apply(SimOutput output) {
+bool SimFaults::ignoresRequest() {
+    // Drawn only when asked for, so that the replies' faults of a seed stay
+    // the same without it.
+    if (m_settings.ignoreProbability <= 0.0) return false;
+    if (m_random.generateDouble() >= m_settings.ignoreProbability) return false;
+    ++m_counters.ignored;
+    return true;
+}
+
+std::optional<SimOutput> SimFaults::apply(SimOutput output, QByteArrayView request) {
     ++m_counters.replies;
     // Draw both numbers for every reply so that one setting does not shift
     // the random sequence of the other.
     const double dropDraw = m_random.generateDouble();
     const double corruptDraw = m_random.generateDouble();
-    if (m_settings.dead || dropDraw < m_settings.dropProbability) {
+    const bool dropFirst = !m_droppedFirst && !m_settings.dropFirstReplyTo.isEmpty() &&
+                           request.startsWith(m_settings.dropFirstReplyTo);
+    if (dropFirst) m_droppedFirst = true;
+    if (m_settings.dead || dropFirst || dropDraw < m_settings.dropProbability) {
         ++m_counters.dropped;
         return std::nullopt;
     }

@@ -47,8 +47,12 @@ QList<SimOutput> SimLine::feed(QByteArrayView bytesFromPc) {
         }
         if (event.kind != DecodeEvent::FrameOk) continue;
         ++m_counters.frames;
+        if (m_faults.ignoresRequest()) {
+            qCDebug(commSimLog) << "request missed (fault injection)";
+            continue;
+        }
         std::optional<SimOutput> output = answer(event.frame);
-        if (output) output = m_faults.apply(*output);
+        if (output) output = m_faults.apply(*output, event.frame.lead + event.frame.body);
         if (output) outputs.append(*output);
     }
     return outputs;

@@ -8,13 +8,14 @@ namespace {
 
 const QString kPrefix = QStringLiteral("sim");
 const QString kKeys = QStringLiteral(
-    "devices, framing, protocol, baud, corrupt, drop, nak, lostdle, collision, linkfaults, "
+    "devices, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, lostdle, collision, linkfaults, "
     "delay, seed, throttle, fill, dead");
 
 // The probabilities a key sets.
 QList<double*> probabilitiesOf(SimFaultSettings& faults, const QString& key) {
     if (key == QLatin1String("corrupt")) return {&faults.corruptProbability};
     if (key == QLatin1String("drop")) return {&faults.dropProbability};
+    if (key == QLatin1String("ignore")) return {&faults.ignoreProbability};
     if (key == QLatin1String("nak")) return {&faults.nakProbability};
     if (key == QLatin1String("lostdle")) return {&faults.lostDleProbability};
     if (key == QLatin1String("collision")) return {&faults.collisionProbability};
@@ -63,6 +64,10 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         if (!ok || p < 0.0 || p > 1.0)
             return badValue(port, key, value, QStringLiteral("a probability 0..1"));
         for (double* target : targets) *target = p;
+    } else if (key == QLatin1String("dropfirst")) {
+        if (value.size() < 2 || (value.at(0) != u'?' && value.at(0) != u'!'))
+            return badValue(port, key, value, QStringLiteral("a request start such as !EE0000"));
+        config.faults.dropFirstReplyTo = value.toLatin1();
     } else if (key == QLatin1String("delay") || key == QLatin1String("fill")) {
         const int n = value.toInt(&ok);
         if (!ok || n < 0)

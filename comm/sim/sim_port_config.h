@@ -43,8 +43,10 @@ bool applySimProtocol(SimPortConfig& config, const QString& protocol);
 bool isSimPort(const QString& port);
 
 // Keys: devices, framing (standard|multiuser), protocol (standard|multiuser|
-// 3964r-n96|3964r-e38), baud, corrupt, drop, nak, lostdle, collision,
-// linkfaults (corrupt, nak, lostdle and collision at once), delay, seed,
+// 3964r-n96|3964r-e38), baud, corrupt (damaged replies), drop (lost
+// replies), ignore (lost requests), dropfirst (the first reply to a request
+// starting so is lost, e.g. !EE0000), nak, lostdle, collision, linkfaults
+// (corrupt, nak, lostdle and collision at once), delay, seed,
 // throttle (0|1), fill, dead (0|1). The baud rate defaults to
 // `serial.baud`. Fails with Usage on an unknown key or a bad value.
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);

@@ -39,6 +39,10 @@ void SimTcpServer::onNewConnection() {
             continue;
         }
         m_client = socket;
+        // A serial device server sends what the line delivers at once;
+        // Nagle's algorithm would hold the rest of a reply back until the
+        // PC acknowledges its start (a delayed ACK: 40 ms and more).
+        socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         m_scheduler.reset();
         qCInfo(commSimLog) << "client connected from" << socket->peerAddress().toString();
         connect(socket, &QTcpSocket::readyRead, this,

@@ -216,7 +216,8 @@ Status saveEepromImage(const QString& path, const EepromImage& image) {
             QCoreApplication::translate("cambench::model", "%1 was not saved: %2")
                 .arg(path, blocks.error().message));
     }
-    return writeFileAtomically(path, eepromImageToJson(image));
+    // An image holds the users' access codes (notes 4 and 6).
+    return writeFileAtomically(path, eepromImageToJson(image), FileAccess::OwnerOnly);
 }
 
 Result<EepromImage> loadEepromImage(const QString& path) {

@@ -16,91 +16,157 @@ namespace {
 
 constexpr quint16 kEndBlock = 0xFFFF;
 constexpr qint32 kWrongBlockOrder = -43;  // manual 4.6.1
+constexpr qint32 kNoTransfer = -46;       // "data reception incomplete": no transfer is open
 
-// A restore that lost an acknowledgement starts over, a bounded number of times.
+// A restore that lost its place starts over, a bounded number of times.
 constexpr int kTransferAttempts = 5;
 
 QString hex4(int number) {
     return QStringLiteral("%1").arg(number, 4, 16, QChar(u'0')).toUpper();
 }
 
+// Standard framing has no block numbers, and a block that reached the device
+// must not be sent again: the order lock answers -43 and ends the transfer.
+// A damaged answer still proves that the device took the block (it answers
+// after storing it). A block that drew no answer at all may have been
+// stored (its reply was lost, or came late) or not (the request was hit and
+// ignored): the transfer guesses, and the device's order lock catches a
+// wrong guess at the next block (-43 or -46) - never a wrong image. The
+// next pass then takes the guess that would have been right.
+enum class SilenceMeans {
+    Stored,       // go on with the next block
+    NotReceived,  // send the block again
+};
+
+// Silent blocks in a row after which the line itself is in question: the
+// next one is sent again until it is answered or the link gives up.
+constexpr int kSilentRun = 3;
+
+// How one block's answer was known.
+enum class Fate {
+    Confirmed,         // :EEOK (or an error)
+    AssumedFromReply,  // a damaged answer: taken as stored
+    AssumedSilent,     // no answer, guessed stored
+    ResentSilent,      // no answer, guessed not received and sent again
+};
+
 struct TransferFailure {
     int index;   // position in the transfer, 0 = block 0000
     int number;  // block number sent
     Error error;
-    // The device answered "wrong order" (-43) because a block reached it
-    // twice or one assumed stored had not: it ended the transfer, and
-    // starting over from block 0000 (which erases first) is the way on.
-    bool duplicate;
+    // The device ended the transfer (-43, -46) right after a block whose
+    // fate was assumed: a new pass from block 0000 (which erases first) is
+    // the way on, with `rightGuess` when a silent block was guessed wrong.
+    bool placeLost;
+    std::optional<SilenceMeans> rightGuess;
 };
 
 // Sends one !EE block. In Multiuser framing the link's retries are safe: a
-// repeated block number makes the device repeat its answer. Standard framing
-// has no block numbers, and a block that reached the device must not be sent
-// again (it would answer -43 and end the transfer). So there a block is sent
-// without the link's retries: a reply that arrived damaged still proves the
-// device took the block (it answers after storing it), and only a block that
-// drew no answer at all is sent again.
-struct BlockSend {
-    bool assumedAccepted = false;  // a damaged answer was taken as "stored"
-    bool repeated = false;         // the block went out more than once
-};
-
-Result<Fields> sendBlock(ProtocolLink& link, const Fields& fields, int timeoutMs, BlockSend& send) {
-    send = {};
-    if (link.settings().framing == Framing::Multiuser) {
-        Result<Fields> reply = link.call('!', "EE", fields, timeoutMs);
-        send.repeated = link.lastAttempts() > 1;
+// repeated block number makes the device repeat its answer. In Standard
+// framing the catalogue sends !EE once (RetryPolicy::Never), and silence
+// means what `silence` says; without it (block 0000 and the end block,
+// which the link has already probed for their long working time) silence
+// is a failure.
+Result<Fields> sendBlock(AsciiLink& link, const Fields& fields, std::optional<SilenceMeans> silence,
+                         Fate& fate) {
+    fate = Fate::Confirmed;
+    Result<Fields> reply = link.call('!', "EE", fields);
+    if (reply || link.settings().framing == Framing::Multiuser ||
+        reply.error().kind != ErrorKind::Communication) {
         return reply;
     }
-    const int retries = link.settings().retries;
-    link.setRetries(0);
-    Result<Fields> reply = link.call('!', "EE", fields, timeoutMs);
-    for (int attempt = 0; !reply && attempt < retries; ++attempt) {
-        if (reply.error().kind != ErrorKind::Communication) break;
-        if (link.lastCallHeardDevice()) {
-            send.assumedAccepted = true;
-            reply = Fields{};
-            break;
-        }
-        send.repeated = true;
-        reply = link.call('!', "EE", fields, timeoutMs);
+    if (link.lastCallHeardDevice()) {
+        fate = Fate::AssumedFromReply;
+        return Fields{};
     }
-    link.setRetries(retries);
+    if (!silence) return reply;
+    if (*silence == SilenceMeans::Stored) {
+        fate = Fate::AssumedSilent;
+        return Fields{};
+    }
+    fate = Fate::ResentSilent;
+    for (int attempt = 0; attempt < link.settings().retries; ++attempt) {
+        reply = link.call('!', "EE", fields);
+        if (reply || reply.error().kind != ErrorKind::Communication) return reply;
+        if (link.lastCallHeardDevice()) return Fields{};
+    }
     return reply;
 }
 
 // One pass: !EE0000 (erases), every block in ascending order, then the
-// empty block that starts the device.
-std::optional<TransferFailure> transfer(ProtocolLink& link, const EepromImage& image,
-                                        const ProgressFn& progress) {
+// empty block that starts the device. `endFate` tells how the end block's
+// answer was known.
+std::optional<TransferFailure> transfer(AsciiLink& link, const EepromImage& image,
+                                        SilenceMeans guess, const ProgressFn& progress,
+                                        Fate& endFate) {
     const int total = int(image.blocks.size()) + 1;
-    bool previousAssumed = false;
+    Fate previous = Fate::Confirmed;
+    int silentRun = 0;
     for (int i = 0; i < total; ++i) {
         if (progress) progress(i, total);
         const bool endBlock = i == total - 1;
         const int number = endBlock ? image.blocks.last().number + 1 : image.blocks.at(i).number;
         Fields fields{{"block", qint64(number)}};
         fields.setBytes("data", endBlock ? QByteArray() : image.blocks.at(i).data);
-        // Block 0000 erases the EEPROM and the end block starts the device:
-        // both may take far longer than an ordinary reply.
-        const bool slow = i == 0 || endBlock;
-        BlockSend send;
-        const Result<Fields> reply =
-            sendBlock(link, fields, slow ? link.settings().longTimeoutMs : 0, send);
+        // Block 0000 (erases) and the end block (starts the device) take
+        // long: the link gives them the long timeout class and its probe.
+        std::optional<SilenceMeans> silence;
+        if (i > 0 && !endBlock)
+            silence = silentRun + 1 >= kSilentRun ? SilenceMeans::NotReceived : guess;
+        Fate fate = Fate::Confirmed;
+        const Result<Fields> reply = sendBlock(link, fields, silence, fate);
         if (reply) {
-            previousAssumed = send.assumedAccepted;
+            const bool silent = fate == Fate::AssumedSilent || fate == Fate::ResentSilent;
+            silentRun = silent ? silentRun + 1 : 0;
+            previous = fate;
+            endFate = fate;
             continue;
         }
-        // -43 after a repeated block (the first copy was stored) or after a
-        // block assumed stored that was not: the device ended the transfer,
-        // and only a new pass from block 0000 goes on.
-        const bool orderLost = i > 0 && reply.error().kind == ErrorKind::DeviceError &&
-                               reply.error().deviceCode == kWrongBlockOrder &&
-                               (send.repeated || previousAssumed);
-        return TransferFailure{i, number, reply.error(), orderLost};
+        const bool placeLost = i > 0 && reply.error().kind == ErrorKind::DeviceError &&
+                               (reply.error().deviceCode == kWrongBlockOrder ||
+                                reply.error().deviceCode == kNoTransfer) &&
+                               (fate == Fate::ResentSilent || previous != Fate::Confirmed);
+        std::optional<SilenceMeans> rightGuess;
+        if (placeLost && fate == Fate::ResentSilent) {
+            rightGuess = SilenceMeans::Stored;  // the first copy had been stored
+        } else if (placeLost && previous == Fate::AssumedSilent) {
+            rightGuess = SilenceMeans::NotReceived;  // the silent block had not arrived
+        }
+        return TransferFailure{i, number, reply.error(), placeLost, rightGuess};
     }
     return std::nullopt;
+}
+
+// A restore whose end block drew no clear answer: did the device start?
+Status confirmStarted(AsciiCamCon& device, AsciiLink& link, const EepromImage& image) {
+    // The end block's answer was lost or damaged. Sent again, it either
+    // starts a device that never got it, or draws "no transfer open" from
+    // one that closed the transfer with the first copy - by starting, or by
+    // failing to start. Reading the EEPROM back tells which.
+    const int number = image.blocks.last().number + 1;
+    Fields fields{{"block", qint64(number)}};
+    fields.setBytes("data", QByteArray());
+    const Result<Fields> again = link.call('!', "EE", fields);
+    if (again) return success();
+    const auto failed = [&](const QString& why, const Error& cause) {
+        return inContext(QCoreApplication::translate("cambench::comm", "restore: the device took every block but did not "
+                                        "confirm that it started (!EE%1): %2. Run the same "
+                                        "restore again. Cause")
+                             .arg(hex4(number), why),
+                         cause);
+    };
+    if (again.error().kind != ErrorKind::DeviceError || again.error().deviceCode != kNoTransfer)
+        return failed(QCoreApplication::translate("cambench::comm", "the end block, sent again, failed"), again.error());
+    const Result<EepromImage> readBack = device.backup();
+    if (!readBack)
+        return failed(QCoreApplication::translate("cambench::comm", "reading the EEPROM back failed"), readBack.error());
+    if (readBack->blocks != image.blocks) {
+        return failed(QCoreApplication::translate("cambench::comm", "its EEPROM differs from the image"),
+                      Error::communication(QCoreApplication::translate("cambench::comm", "%1 blocks read back, %2 in the image")
+                                               .arg(readBack->blocks.size())
+                                               .arg(image.blocks.size())));
+    }
+    return success();
 }
 
 }  // namespace
@@ -167,13 +233,19 @@ Status AsciiCamCon::restore(const EepromImage& image, const ProgressFn& progress
     }
     const int total = int(image.blocks.size()) + 1;  // + the empty end block
     std::optional<TransferFailure> failure;
+    SilenceMeans guess = SilenceMeans::Stored;
     for (int attempt = 1; attempt <= kTransferAttempts; ++attempt) {
-        failure = transfer(m_link, image, progress);
+        Fate endFate = Fate::Confirmed;
+        failure = transfer(m_link, image, guess, progress, endFate);
         if (!failure) {
+            const Status started =
+                endFate == Fate::Confirmed ? success() : confirmStarted(*this, m_link, image);
+            if (!started) return started;
             if (progress) progress(total, total);
             return success();
         }
-        if (!failure->duplicate) break;
+        if (!failure->placeLost) break;
+        if (failure->rightGuess) guess = *failure->rightGuess;
     }
     QString state;
     if (failure->index == 0) {

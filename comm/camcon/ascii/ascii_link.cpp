@@ -65,11 +65,25 @@ int longestReplyChars(const CommandSpec& spec) {
     return 1 + std::max({name + data, name + kErrorReplyChars, kNotUnderstoodChars});
 }
 
-// !EE erases the EEPROM, and takes long, only for block 0000.
+// "EE" and a block number: an !EE without data, which ends a restore.
+constexpr int kEepromBlockHeader = 2 + 4;
+
+// !EE takes long only for block 0000, which erases the EEPROM, and for the
+// empty block that ends a restore and starts the device (notes 6).
 bool isLong(const CommandSpec* spec, const QByteArray& body) {
     if (!spec) return false;
     const bool eepromWrite = spec->kind == kCommand && qstrcmp(spec->name, "EE") == 0;
-    return eepromWrite ? body.startsWith("EE0000") : spec->timeout == TimeoutClass::Long;
+    if (!eepromWrite) return spec->timeout == TimeoutClass::Long;
+    return body.startsWith("EE0000") || body.size() == kEepromBlockHeader;
+}
+
+// A reply judged against `spec`: its answer, or a reply to something else -
+// in Multiuser framing under our block number, the device's repeated answer
+// to an earlier request, which it did not execute this one for.
+Verdict judgeUnrelated(bool multiuser, QString& problem) {
+    if (!multiuser) return Verdict::Ignore;
+    problem = QCoreApplication::translate("cambench::comm", "the device repeated an answer to an earlier request");
+    return Verdict::Resend;
 }
 
 }  // namespace
@@ -135,18 +149,12 @@ Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fi
                 case ReplyMatch::NotUnderstood:
                     return Verdict::Accept;
                 case ReplyMatch::Malformed:
-                    problem = QCoreApplication::translate("cambench::comm", "a malformed reply: %1")
-                                  .arg(match->detail);
+                    problem = QCoreApplication::translate("cambench::comm", "a malformed reply: %1").arg(match->detail);
                     return Verdict::Retry;
                 case ReplyMatch::Unrelated:
                     break;
             }
-            if (!multiuser) return Verdict::Ignore;
-            // Our block number, another command's answer: the device repeated
-            // its last answer and did not execute this request.
-            problem = QCoreApplication::translate(
-                "cambench::comm", "the device repeated an answer to an earlier request");
-            return Verdict::Resend;
+            return judgeUnrelated(multiuser, problem);
         };
     }
     if (request.timeout == TimeoutClass::Long && timeoutMs <= 0) {
@@ -192,6 +200,28 @@ Status AsciiLink::ensureBlockSync() {
     return success();
 }
 
+Result<bool> AsciiLink::ping(int device, int block, int turnaroundMs) {
+    setDevice(device);
+    m_backend.setNextBlock(device, block);
+    const CommandSpec* unit = findCommand(kQuery, "UNIT");
+    Result<Request> made = makeRequest(*unit, {}, m_settings.timeoutMs, nullptr);
+    if (!made) return made.error();
+    Request request = std::move(made).value();
+    request.maxAttempts = 1;
+    request.turnaroundMs = turnaroundMs;
+    request.silenceExpected = true;
+    // Any intact frame from the device to us under this block proves it,
+    // even its repeated answer to an older request.
+    request.judge = {};
+    const Result<QByteArray> reply = m_engine.send(request);
+    if (reply) {
+        m_synced[m_backend.device()] = true;
+        return true;
+    }
+    if (reply.error().kind == ErrorKind::Communication) return false;
+    return reply.error();
+}
+
 int AsciiLink::attemptTimeoutMs(const CommandSpec& spec, const Fields& fields) {
     Result<Request> request = makeRequest(spec, fields, 0, nullptr);
     return request ? m_engine.attemptTimeoutMs(*request) : 0;
@@ -201,8 +231,7 @@ Result<Fields> AsciiLink::call(char kind, const char* name, const Fields& fields
     const CommandSpec* spec = findCommand(kind, name);
     if (!spec)
         return Error::usage(
-            QCoreApplication::translate("cambench::comm", "%1 is not a command of the catalogue")
-                .arg(commandLabel(kind, name)));
+            QCoreApplication::translate("cambench::comm", "%1 is not a command of the catalogue").arg(commandLabel(kind, name)));
     return call(*spec, fields, timeoutMs);
 }
 
@@ -225,17 +254,14 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
     switch (match.kind) {
         case ReplyMatch::DeviceError:
             return Error::device(match.errorCode,
-                                 QCoreApplication::translate("cambench::comm",
-                                                             "%1: the device reported error %2: %3")
+                                 QCoreApplication::translate("cambench::comm", "%1: the device reported error %2: %3")
                                      .arg(label)
                                      .arg(match.errorCode)
                                      .arg(deviceErrorText(match.errorCode)));
         case ReplyMatch::NotUnderstood:
             return Error{ErrorKind::NotUnderstood,
-                         QCoreApplication::translate(
-                             "cambench::comm",
-                             "%1: the device does not know this command (firmware dated "
-                             "%2); it needs a newer firmware for it")
+                         QCoreApplication::translate("cambench::comm", "%1: the device does not know this command (firmware dated "
+                                        "%2); it needs a newer firmware for it")
                              .arg(label, eepromDateText(match.eprom)),
                          0};
         default:
@@ -245,14 +271,11 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
 
 Result<QByteArray> AsciiLink::raw(char kind, const QByteArray& body, int timeoutMs) {
     if (kind != kQuery && kind != kCommand)
-        return Error::usage(QCoreApplication::translate(
-                                "cambench::comm", "a request starts with '?' or '!', not '%1'")
-                                .arg(QChar(kind)));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "a request starts with '?' or '!', not '%1'").arg(QChar(kind)));
     if (body.isEmpty())
         return Error::usage(
-            QCoreApplication::translate("cambench::comm",
-                                        "an empty request: type the command letters after %1")
-                .arg(QChar(kind)));
+            QCoreApplication::translate("cambench::comm", "an empty request: type the command letters after %1").arg(QChar(kind)));
     const Status synced = ensureBlockSync();
     if (!synced) return synced.error();
     const CommandSpec* spec = matchRequest(kind, body);
@@ -268,6 +291,18 @@ Result<QByteArray> AsciiLink::raw(char kind, const QByteArray& body, int timeout
         request.retry = RetryPolicy::Never;
     request.expectReply = !spec || spec->replyKind != ReplyKind::None;
     request.fixedTimeoutMs = timeoutMs;
+    if (spec) {
+        // A reply to another command is never the answer; anything this
+        // command may get back (data, OK, an error, :Z, a malformed reply
+        // to a provisional format) is shown to the person who typed it.
+        const bool multiuser = m_settings.framing == Framing::Multiuser;
+        request.judge = [spec, multiuser](const QByteArray& reply, QString& problem) {
+            const Frame frame{reply.isEmpty() ? kReply : reply.at(0), reply.mid(1), std::nullopt,
+                              true};
+            if (matchReply(*spec, frame).kind != ReplyMatch::Unrelated) return Verdict::Accept;
+            return judgeUnrelated(multiuser, problem);
+        };
+    }
     const Result<QByteArray> reply = m_engine.send(request);
     if (!reply) return reply.error();
     return reply->mid(1);

@@ -17,11 +17,11 @@ namespace cambench::comm {
 // and the link's patience. Line timing comes from the connection.
 struct AsciiSettings {
     Framing framing = Framing::Standard;
-    int device = 0;        // Multiuser destination 0..63
-    int pcNumber = 63;     // Multiuser own number
-    int timeoutMs = 0;     // per attempt, normal commands; 0 = derived from the line
+    int device = 0;              // Multiuser destination 0..63
+    int pcNumber = 63;           // Multiuser own number
+    int timeoutMs = 0;           // per attempt, normal commands; 0 = derived from the line
     int longTimeoutMs = 150000;  // !CA, !EE0000 (manual: up to 2 minutes)
-    int retries = 3;       // further attempts after the first, where safe
+    int retries = 3;             // further attempts after the first, where safe
     // Multiuser: make sure of the device's last block number before the
     // first request to it (see AsciiLink). Off only in tests that script
     // every frame a device receives.
@@ -62,8 +62,17 @@ public:
     // returns the reply frame's body. For the terminal and `raw`.
     Result<QByteArray> raw(char kind, const QByteArray& body, int timeoutMs = 0);
 
+    // Bus scan (Multiuser): one ?UNIT to `device` under block number
+    // `block`, a single attempt that gives the device `turnaroundMs` to
+    // start answering (a fixed timeout of the settings wins). True when the
+    // device answered anything under that block, which also serves as its
+    // block-number sync; false when it stayed silent or the answer came
+    // damaged. Leaves the link talking to `device`.
+    Result<bool> ping(int device, int block, int turnaroundMs);
+
     // See RequestEngine.
     int lastAttempts() const { return m_engine.lastAttempts(); }
+    bool lastCallMayHaveActedTwice() const { return m_engine.lastCallMayHaveActedTwice(); }
     bool lastCallHeardDevice() const { return m_engine.lastCallHeardDevice(); }
     using Stats = RequestEngine::Stats;
     const Stats& stats() const { return m_engine.stats(); }
