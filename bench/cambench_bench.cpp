@@ -67,6 +67,7 @@ struct Rig {
         config.faults.corruptProbability = faults.corrupt;
         config.faults.dropProbability = faults.drop;
         config.faults.seed = seed;
+        firstDevice = config.devices.first();
         transport = std::make_unique<SimTransport>(config);
         if (const Status opened = transport->open(); !opened)
             qFatal("%s", qPrintable(opened.error().message));
@@ -78,12 +79,13 @@ struct Rig {
         link = std::make_unique<AsciiLink>(*transport, settings, lineTimingFor(serial));
         client = std::make_unique<AsciiCamCon>(*link);
     }
-    SimDevice& device() { return *transport->line().devices().front(); }
+    SimDevice& device() { return *transport->line().device(firstDevice); }
     // The EEPROM blocks the simulated device holds now.
     QList<QByteArray> eeprom() {
         return sim_eeprom::serialize(device().state(), device().profile());
     }
 
+    int firstDevice = 0;
     std::unique_ptr<SimTransport> transport;
     std::unique_ptr<AsciiLink> link;
     std::unique_ptr<AsciiCamCon> client;

@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -61,7 +62,22 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     layout->addWidget(m_table);
     layout->addWidget(m_problems);
     connect(read, &QPushButton::clicked, this, &AnalogueCamsPage::readFromDevice);
-    connect(m_output, &QSpinBox::valueChanged, this, &AnalogueCamsPage::readFromDevice);
+    connect(m_output, &QSpinBox::valueChanged, this, [this](int output) {
+        // Another output replaces the table: unwritten points are not
+        // dropped without asking.
+        if (m_device.output != output && edited().points != m_device.points &&
+            QMessageBox::question(
+                this, tr("Analogue cams"),
+                tr("The base points of analogue output %1 are edited and not written. "
+                   "Discard them and show output %2?")
+                    .arg(m_device.output)
+                    .arg(output)) != QMessageBox::Yes) {
+            const QSignalBlocker blocker(m_output);
+            m_output->setValue(m_device.output);
+            return;
+        }
+        readFromDevice();
+    });
     connect(add, &QPushButton::clicked, this, [this] {
         const int row = m_table->rowCount();
         m_table->insertRow(row);
@@ -72,7 +88,7 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
         if (m_table->currentRow() >= 0) m_table->removeRow(m_table->currentRow());
     });
     connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const WriteReport& report) {
+        writeItems({}, [this](const PageWriteReport& report) {
             Q_EMIT statusMessage(tr("Analogue cams: %1").arg(report.summary()));
             if (!report.complete())
                 QMessageBox::warning(this, tr("Analogue cams"), report.details());
@@ -121,7 +137,7 @@ void AnalogueCamsPage::setEdited(const AnalogueCamTrack& track) {
     m_problems->clear();
 }
 
-QList<SectionDifference> AnalogueCamsPage::differences() const {
+QList<PageChange> AnalogueCamsPage::changes() const {
     const AnalogueCamTrack now = edited();
     if (now == m_device || now.output != m_device.output) return {};
     return {{QStringLiteral("analogue:%1").arg(now.output),
@@ -131,9 +147,9 @@ QList<SectionDifference> AnalogueCamsPage::differences() const {
 }
 
 void AnalogueCamsPage::writeItems(const QStringList& keys,
-                                  std::function<void(const WriteReport&)> done) {
-    const QList<SectionDifference> all = differences();
-    WriteReport report;
+                                  std::function<void(const PageWriteReport&)> done) {
+    const QList<PageChange> all = changes();
+    PageWriteReport report;
     if (all.isEmpty() || (!keys.isEmpty() && !keys.contains(all.first().key))) {
         report.addUnchanged();
         done(report);
@@ -156,7 +172,7 @@ void AnalogueCamsPage::writeItems(const QStringList& keys,
             return device.writeAnalogueCams(track);
         },
         [this, track, label, done](Status written) {
-            WriteReport result;
+            PageWriteReport result;
             if (written) {
                 result.addWritten();
                 m_device = track;

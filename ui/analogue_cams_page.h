@@ -1,5 +1,6 @@
 #pragma once
 
+#include "page_write_report.h"
 #include "section_page.h"
 
 #include "model/camcon/analogue_cams.h"
@@ -21,8 +22,9 @@ public:
     AnalogueCamsPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Analogue cams"); }
-    QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
+    // What is edited and differs from the device (not in Compare with device).
+    QList<PageChange> changes() const;
+    void writeItems(const QStringList& keys, std::function<void(const PageWriteReport&)> done);
     void deviceConnected() override { readFromDevice(); }
 
     void readFromDevice();

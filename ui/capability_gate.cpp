@@ -88,15 +88,6 @@ QList<SectionDifference> CapabilityGate::differences() const {
     return m_available ? m_page->differences() : QList<SectionDifference>{};
 }
 
-void CapabilityGate::writeItems(const QStringList& keys,
-                                std::function<void(const WriteReport&)> done) {
-    if (m_available) {
-        m_page->writeItems(keys, std::move(done));
-    } else {
-        done({});
-    }
-}
-
 void CapabilityGate::deviceConnected() {
     checkAvailability(true);
 }

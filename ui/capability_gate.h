@@ -27,7 +27,6 @@ public:
 
     QString sectionTitle() const override { return m_page->sectionTitle(); }
     QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
     void deviceConnected() override;
 
     SectionPage* page() const { return m_page; }

@@ -59,7 +59,7 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
     layout->addWidget(m_table);
     connect(read, &QPushButton::clicked, this, &DeadTimeModesPage::readFromDevice);
     connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const WriteReport& report) {
+        writeItems({}, [this](const PageWriteReport& report) {
             Q_EMIT statusMessage(tr("Dead-time modes: %1").arg(report.summary()));
             if (!report.complete())
                 QMessageBox::warning(this, tr("Dead-time modes"), report.details());
@@ -136,8 +136,8 @@ int DeadTimeModesPage::rowOf(int output) const {
     return -1;
 }
 
-QList<SectionDifference> DeadTimeModesPage::differences() const {
-    QList<SectionDifference> list;
+QList<PageChange> DeadTimeModesPage::changes() const {
+    QList<PageChange> list;
     const auto text = [](const OutputDeadTime& d) {
         return QStringLiteral("%1 %2/%3/%4 ms")
             .arg(deadTimeModeKey(d.mode))
@@ -155,7 +155,7 @@ QList<SectionDifference> DeadTimeModesPage::differences() const {
 }
 
 void DeadTimeModesPage::writeItems(const QStringList& keys,
-                                   std::function<void(const WriteReport&)> done) {
+                                   std::function<void(const PageWriteReport&)> done) {
     struct Item {
         QString key;
         QString label;
@@ -163,8 +163,8 @@ void DeadTimeModesPage::writeItems(const QStringList& keys,
         OutputDeadTime deadTime;
     };
     QList<Item> items;
-    WriteReport report;
-    for (const SectionDifference& difference : differences()) {
+    PageWriteReport report;
+    for (const PageChange& difference : changes()) {
         if (!keys.isEmpty() && !keys.contains(difference.key)) continue;
         const int output = difference.key.section(QLatin1Char(':'), 1).toInt();
         const OutputDeadTime deadTime = edited(output);
@@ -176,10 +176,10 @@ void DeadTimeModesPage::writeItems(const QStringList& keys,
         }
         items.append({difference.key, difference.item, output, deadTime});
     }
-    m_session->run<ItemOutcomes>(
+    m_session->run<PageItemOutcomes>(
         this, tr("Write dead-time modes"),
-        [items](comm::CamConDevice& device, comm::JobContext& job) -> Result<ItemOutcomes> {
-            ItemOutcomes outcomes;
+        [items](comm::CamConDevice& device, comm::JobContext& job) -> Result<PageItemOutcomes> {
+            PageItemOutcomes outcomes;
             int n = 0;
             for (const Item& item : items) {
                 job.progress(n++, items.size());
@@ -188,15 +188,15 @@ void DeadTimeModesPage::writeItems(const QStringList& keys,
             }
             return outcomes;
         },
-        [this, report, items, done](Result<ItemOutcomes> outcomes) {
-            WriteReport result = report;
+        [this, report, items, done](Result<PageItemOutcomes> outcomes) {
+            PageWriteReport result = report;
             if (!outcomes) {
                 for (const Item& item : items) result.addFailure(item.label, outcomes.error());
                 done(result);
                 return;
             }
             result.add(outcomes.value());
-            for (const ItemOutcome& outcome : outcomes.value()) {
+            for (const PageItemOutcome& outcome : outcomes.value()) {
                 if (outcome.error.kind != ErrorKind::None) continue;
                 for (const Item& item : items)
                     if (item.key == outcome.key) m_device.insert(item.output, item.deadTime);

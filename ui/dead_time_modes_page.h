@@ -1,5 +1,6 @@
 #pragma once
 
+#include "page_write_report.h"
 #include "section_page.h"
 
 #include "model/camcon/dead_time_modes.h"
@@ -23,8 +24,9 @@ public:
     DeadTimeModesPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Dead-time modes"); }
-    QList<SectionDifference> differences() const override;
-    void writeItems(const QStringList& keys, std::function<void(const WriteReport&)> done) override;
+    // What is edited and differs from the device (not in Compare with device).
+    QList<PageChange> changes() const;
+    void writeItems(const QStringList& keys, std::function<void(const PageWriteReport&)> done);
     void deviceConnected() override { readFromDevice(); }
 
     void readFromDevice();

@@ -341,8 +341,12 @@ void MainWindow::readAtStart(int program) {
             }
             const int shown = std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1));
             m_cams->editor()->setCurrentProgram(shown);
+            // The sections some protocols lack (and only those) read here; a
+            // section the protocol lacks says so on its page, not as a failure.
+            for (SectionPage* page : m_pages) page->deviceConnected();
             const auto finished = [this](const Status& status) {
-                if (!status && status.error().kind != ErrorKind::Cancelled)
+                if (!status && status.error().kind != ErrorKind::Cancelled &&
+                    status.error().kind != ErrorKind::Usage)
                     showMessage(tr("Reading the device: %1").arg(status.error().message));
                 if (--m_startReads > 0) return;
                 Q_EMIT loaded(true);

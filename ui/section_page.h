@@ -33,6 +33,9 @@ public:
     // How many items the section holds for the device: a write reports
     // the ones it did not send as already on the device.
     virtual int itemCount() const { return int(differences().size()); }
+    // The sections outside the whole-device read (those only some protocols
+    // have) read here once the device's identity is known.
+    virtual void deviceConnected() {}
 
 Q_SIGNALS:
     void statusMessage(const QString& text);

@@ -45,7 +45,7 @@ MainWindow* Shell::createWindow() {
     return window;
 }
 
-void Shell::start(const QString& port) {
+void Shell::start(const QString& port, const QString& protocol) {
     m_window = createWindow();
     const int section = guisettings::restoreWindow(*m_window);
     if (section >= 0 && section < MainWindow::COUNT)
@@ -58,6 +58,7 @@ void Shell::start(const QString& port) {
         m_window->connectionPage()->showConnection(remembered->connection, *remembered->protocol);
     } else {
         m_window->connectionPage()->setPort(port);
+        if (!protocol.isEmpty()) m_window->connectionPage()->setProtocol(protocol);
     }
     m_window->connectAndLoad(0);
 }

@@ -23,8 +23,9 @@ public:
     MainWindow* window() const { return m_window; }
 
     // Shows the window as it was left; connects to `port`, or without one
-    // to the last connection that worked, and reads identity and program 0.
-    void start(const QString& port);
+    // to the last connection that worked, and reads identity and program 0;
+    // `protocol` (a registry id such as "3964r-n96") chooses the protocol.
+    void start(const QString& port, const QString& protocol = {});
     void switchLanguage(const QString& language);
 
 Q_SIGNALS:

@@ -16,6 +16,8 @@ target_sources(cambench_ui PRIVATE
   workspace_item.h
   section_page.h
   section_page.cpp
+  page_write_report.h
+  page_write_report.cpp
   write_plan_builder.h
   write_plan_builder.cpp
   device_writer.h

@@ -43,12 +43,10 @@ inline std::unique_ptr<Shell> startOnSimulator(
     const QString& port = QStringLiteral("sim:throttle=0"),
     const QString& protocol = QStringLiteral("standard")) {
     auto shell = std::make_unique<Shell>();
-    shell->start(QString());
-    shell->window()->connectionPage()->setPort(port);
-    shell->window()->connectionPage()->setProtocol(protocol);
-    // The result of the start sequence arrives through the event loop.
+    // Spied before the start: the result of the start sequence arrives
+    // through the event loop, but the window is made by start().
+    shell->start(port, protocol);
     QSignalSpy loaded(shell->window(), &MainWindow::loaded);
-    shell->window()->connectAndLoad(0);
     if (!loaded.wait(kDeviceTimeoutMs) || !loaded.first().first().toBool()) return nullptr;
     return shell;
 }

@@ -300,23 +300,23 @@ void MainWindowTest::dataOnlyTheTableInterfaceHasIsEditedAndWritten() {
     QCOMPARE(modes->edited(2).mode, DeadTimeMode::SeparateOnOff);
     const OutputDeadTime wanted{DeadTimeMode::SeparateOnOff, 0, 35, 47};
     modes->setEdited(5, wanted);
-    QCOMPARE(modes->differences().size(), 1);
-    std::optional<WriteReport> report;
-    modes->writeItems({}, [&](const WriteReport& r) { report = r; });
+    QCOMPARE(modes->changes().size(), 1);
+    std::optional<PageWriteReport> report;
+    modes->writeItems({}, [&](const PageWriteReport& r) { report = r; });
     QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
     QVERIFY2(report->complete(), qPrintable(report->details()));
     QCOMPARE(report->written, 1);
     modes->setEdited(5, {});
     modes->readFromDevice();
     QTRY_COMPARE_WITH_TIMEOUT(modes->edited(5), wanted, kDeviceTimeoutMs);
-    QVERIFY(modes->differences().isEmpty());
+    QVERIFY(modes->changes().isEmpty());
 
     auto* analogue = shell->window()->findChild<AnalogueCamsPage*>();
     QTRY_COMPARE_WITH_TIMEOUT(analogue->onDevice().points.size(), 3, kDeviceTimeoutMs);
     const AnalogueCamTrack curve{1, {{10, 100}, {20, 200}}};
     analogue->setEdited(curve);
     report.reset();
-    analogue->writeItems({}, [&](const WriteReport& r) { report = r; });
+    analogue->writeItems({}, [&](const PageWriteReport& r) { report = r; });
     QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
     QCOMPARE(report->written, 1);
     analogue->setEdited({1, {}});

@@ -1,0 +1,42 @@
+#include "page_write_report.h"
+
+#include <QCoreApplication>
+
+namespace cambench {
+
+void PageWriteReport::addFailure(const QString& item, const Error& error) {
+    ++failed;
+    failures << QCoreApplication::translate("PageWriteReport", "%1: %2").arg(item, error.message);
+}
+
+void PageWriteReport::add(const PageItemOutcomes& outcomes) {
+    for (const PageItemOutcome& outcome : outcomes) {
+        if (outcome.error.kind == ErrorKind::None) {
+            ++written;
+        } else {
+            addFailure(outcome.item, outcome.error);
+        }
+    }
+}
+
+QString PageWriteReport::summary() const {
+    return QCoreApplication::translate("PageWriteReport", "%1 written, %2 unchanged, %3 failed")
+        .arg(written)
+        .arg(unchanged)
+        .arg(failed);
+}
+
+QString PageWriteReport::details() const {
+    QString text = summary();
+    if (!failures.isEmpty()) {
+        text += QLatin1Char('\n') +
+                QCoreApplication::translate(
+                    "PageWriteReport",
+                    "Not written, or not confirmed by the device (a reply may have been lost). Your "
+                    "edits stay on the page; Read from device shows what the device holds:") +
+                QLatin1Char('\n') + failures.join(QLatin1Char('\n'));
+    }
+    return text;
+}
+
+}  // namespace cambench
