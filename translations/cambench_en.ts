@@ -88,6 +88,21 @@
     </message>
 </context>
 <context>
+    <name>PageWriteReport</name>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 written, %2 unchanged, %3 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Settings</name>
     <message>
         <source>Encoder</source>
@@ -990,6 +1005,99 @@
     </message>
 </context>
 <context>
+    <name>cambench::AnalogueCamsPage</name>
+    <message>
+        <source>Analogue cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished">Position</translation>
+    </message>
+    <message>
+        <source>Analogue value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Between two base points the analogue output follows a straight line (with interpolation on). Positions must rise from point to point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from device</source>
+        <translation type="unfinished">Read from device</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The base points of analogue output %1 are edited and not written. Discard them and show output %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue cams: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read analogue cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading analogue cams failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue cams of output %1 read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1 base points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write analogue cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::AsciiSettingsWidget</name>
+    <message>
+        <source>Multiuser: the number of the CamCon to talk to (0–63).</source>
+        <translation type="unfinished">Multiuser: the number of the CamCon to talk to (0–63).</translation>
+    </message>
+    <message>
+        <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
+        <translation type="unfinished">Multiuser: this PC&apos;s own number on the bus (0–63).</translation>
+    </message>
+    <message>
+        <source>Device number:</source>
+        <translation type="unfinished">Device number:</translation>
+    </message>
+    <message>
+        <source>PC number:</source>
+        <translation type="unfinished">PC number:</translation>
+    </message>
+</context>
+<context>
     <name>cambench::BackupPage</name>
     <message>
         <source>&lt;h3&gt;Backup and restore&lt;/h3&gt;&lt;p&gt;A &lt;b&gt;backup&lt;/b&gt; copies the whole EEPROM of the device (cam programs, dead times, settings, users, PLC) block by block into a file.&lt;/p&gt;&lt;p&gt;A &lt;b&gt;restore&lt;/b&gt; erases the device and writes such a file back. CamBench checks the file first, asks for a confirmation when it comes from a different device, and saves what the device holds now into a safety backup before it erases anything.&lt;/p&gt;&lt;p&gt;If a restore is interrupted, the device stays erased and does not run until an image is restored completely: keep the safety backup.&lt;/p&gt;</source>
@@ -1017,10 +1125,6 @@
     <message>
         <source>Backup or restore</source>
         <translation>Backup or restore</translation>
-    </message>
-    <message>
-        <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back.</source>
-        <translation>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back.</translation>
     </message>
     <message>
         <source>Back up the device into a file</source>
@@ -1172,6 +1276,10 @@ Erase and restore now?</translation>
     <message>
         <source>Restore FAILED: %1</source>
         <translation>Restore FAILED: %1</translation>
+    </message>
+    <message>
+        <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back. The file holds the users&apos; access codes: keep it where only you can read it.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1502,10 +1610,6 @@ Erase and restore now?</translation>
 <context>
     <name>cambench::CamPage</name>
     <message>
-        <source>no cams</source>
-        <translation>no cams</translation>
-    </message>
-    <message>
         <source>Read program %1</source>
         <translation>Read program %1</translation>
     </message>
@@ -1582,6 +1686,24 @@ Erase and restore now?</translation>
     <message>
         <source>Length</source>
         <translation>Length</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamText</name>
+    <message>
+        <source>no cams</source>
+        <translation type="unfinished">no cams</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CapabilityGate</name>
+    <message>
+        <source>&lt;b&gt;Not available with the connected protocol&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check what the protocol offers</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1728,10 +1850,6 @@ Erase and restore now?</translation>
     <message>
         <source>Cams (on–off)</source>
         <translation>Cams (on–off)</translation>
-    </message>
-    <message>
-        <source>no cams</source>
-        <translation>no cams</translation>
     </message>
     <message>
         <source>Users</source>
@@ -1919,20 +2037,8 @@ Erase and restore now?</translation>
         <translation>Baud rate:</translation>
     </message>
     <message>
-        <source>Multiuser: the number of the CamCon to talk to (0–63).</source>
-        <translation>Multiuser: the number of the CamCon to talk to (0–63).</translation>
-    </message>
-    <message>
         <source>Device number:</source>
         <translation>Device number:</translation>
-    </message>
-    <message>
-        <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
-        <translation>Multiuser: this PC&apos;s own number on the bus (0–63).</translation>
-    </message>
-    <message>
-        <source>PC number:</source>
-        <translation>PC number:</translation>
     </message>
     <message>
         <source>Connect</source>
@@ -2080,6 +2186,14 @@ Erase and restore now?</translation>
         <source>Connection</source>
         <translation>Connection</translation>
     </message>
+    <message>
+        <source>Table interface, 3964R n96 (9600 8N1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table interface, 3964R e38 (38400 8E1)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -2114,6 +2228,89 @@ Erase and restore now?</translation>
     <message>
         <source>Offline. What you edit stays on this PC until you connect and write it.</source>
         <translation>Offline. What you edit stays on this PC until you connect and write it.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeadTimeModesPage</name>
+    <message>
+        <source>Dead-time modes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished">Output</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead time (ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch-on (ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch-off / time (ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Normal: one dead time moves both switching points. On/off: the switch-on and the switch-off point each have their own. Path-time: the output switches on early by the switch-on dead time and stays on for the switching time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from device</source>
+        <translation type="unfinished">Read from device</translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation type="unfinished">Write changes</translation>
+    </message>
+    <message>
+        <source>Dead-time modes: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading dead-time modes…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read dead-time modes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading dead-time modes failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead-time modes read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation type="unfinished">Normal</translation>
+    </message>
+    <message>
+        <source>On/off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Path-time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest dead time: %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 dead-time mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write dead-time modes</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2204,10 +2401,6 @@ Erase and restore now?</translation>
 </context>
 <context>
     <name>cambench::DeviceChanges</name>
-    <message>
-        <source>no cams</source>
-        <translation>no cams</translation>
-    </message>
     <message>
         <source>%1: %2 → %3</source>
         <translation>%1: %2 → %3</translation>
@@ -2300,6 +2493,57 @@ Erase and restore now?</translation>
     <message>
         <source>Write to the device</source>
         <translation>Write to the device</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::EepromLockPage</name>
+    <message>
+        <source>EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lock the EEPROM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unlock the EEPROM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the same values again and again (from a PLC, every cycle) wears the device&apos;s EEPROM out. Lock it first: changes then stay in RAM only. A complete deletion of the device unlocks it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from device</source>
+        <translation type="unfinished">Read from device</translation>
+    </message>
+    <message>
+        <source>Read the EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the EEPROM lock failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The EEPROM lock could not be changed: %1; its state is unknown, read it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State of the EEPROM lock: not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The EEPROM is locked.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The EEPROM is not locked: changes are stored permanently.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changes written now are kept in RAM only. They are lost when the device is switched off. Unlock the EEPROM to keep them.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2975,6 +3219,69 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::ProgrammingProgramPage</name>
+    <message>
+        <source>Programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slow</source>
+        <translation type="unfinished">Slow</translation>
+    </message>
+    <message>
+        <source>Direct (within one cycle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At the actual value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The table interface reads and writes the cams of this program. It need not be the program that runs the machine.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program selection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Selection actual value:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from device</source>
+        <translation type="unfinished">Read from device</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the programming program failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the programming program failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming program %1 written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::ProgressPage</name>
     <message>
         <source>about %1 min %2 s left</source>
@@ -3275,6 +3582,29 @@ Erase and restore now?</translation>
     <message>
         <source>Encoder &amp; system</source>
         <translation>Encoder &amp; system</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::TableSettingsWidget</name>
+    <message>
+        <source>3964R n96 (9600 baud, 8N1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3964R e38 (38400 baud, 8E1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The serial mode the device&apos;s menu &quot;Ser:&quot; shows.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point to point: no device number. 3964R e38 reaches only the data words 0–127 of each area: 62 cams per track and no dead-time modes; n96 reaches all.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variant:</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4054,10 +4384,6 @@ Erase and restore now?</translation>
         <translation>deleting a user (!USER)</translation>
     </message>
     <message>
-        <source>PLC network %1%2</source>
-        <translation>PLC network %1%2</translation>
-    </message>
-    <message>
         <source>reading %1 (?GMXSPS)</source>
         <translation>reading %1 (?GMXSPS)</translation>
     </message>
@@ -4156,6 +4482,50 @@ Erase and restore now?</translation>
     <message>
         <source>writing %1 (!%2)</source>
         <translation>writing %1 (!%2)</translation>
+    </message>
+    <message>
+        <source>Editing a program other than the active one exists only in %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a reply without a frame start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a reply that broke off before its end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the step to entry %1 was sent again after a lost reply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the users: %1 walks through the list lost their place (%2); the list may be incomplete, so none is shown; check the cable and try again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>restore: the device took every block but did not confirm that it started (!EE%1): %2. Run the same restore again. Cause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the end block, sent again, failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the EEPROM back failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its EEPROM differs from the image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 blocks read back, %2 in the image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead-time modes are data words 251..253, which 3964R e38 cannot address (words 0..127); set the device to 3964R n96 (--protocol 3964r-n96) to reach them.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4631,6 +5001,10 @@ Erase and restore now?</translation>
     <message>
         <source>area (O, P, M or X)</source>
         <translation>area (O, P, M or X)</translation>
+    </message>
+    <message>
+        <source>PLC network %1%2</source>
+        <translation type="unfinished">PLC network %1%2</translation>
     </message>
 </context>
 <context>

@@ -2,7 +2,6 @@
 
 #include "device_session.h"
 
-#include <QCoreApplication>
 #include <QLabel>
 #include <QListWidgetItem>
 #include <QPalette>
@@ -16,43 +15,6 @@ namespace {
 struct Availability {
     bool available = true;
     QString reason;
-};
-
-// The reasons the protocols give (CamConDevice::lacks() and its
-// overrides), for the translators: the gate translates the device's text
-// in the context "CamConCapability".
-[[maybe_unused]] const char* const kReasons[] = {
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Users and rights exist only in the CamCon ASCII protocol (--protocol "
-                      "standard or multiuser)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "EEPROM backup and restore exist only in the CamCon ASCII protocol "
-                      "(--protocol standard or multiuser)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "A bus scan needs the Multiuser protocol (--protocol multiuser)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Typed requests exist only in the CamCon ASCII protocol (--protocol "
-                      "standard or multiuser)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Output and program names exist only in the CamCon ASCII protocol "
-                      "(--protocol standard or multiuser)."),
-    QT_TRANSLATE_NOOP("CamConCapability", "This protocol does not reach the PLC logic module."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Dead-time modes exist only in the CamCon table interface (--protocol "
-                      "3964r-n96 or 3964r-e38)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Analogue cams exist only in the CamCon table interface (--protocol "
-                      "3964r-n96 or 3964r-e38)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "The EEPROM lock exists only in the CamCon table interface (--protocol "
-                      "3964r-n96 or 3964r-e38)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Editing a program other than the active one exists only in the CamCon "
-                      "table interface (--protocol 3964r-n96 or 3964r-e38)."),
-    QT_TRANSLATE_NOOP("CamConCapability",
-                      "Dead-time modes are data words 251..253, which 3964R e38 cannot address "
-                      "(words 0..127); set the device to 3964R n96 (--protocol 3964r-n96) to "
-                      "reach them."),
 };
 
 }  // namespace
@@ -118,9 +80,8 @@ void CapabilityGate::setNavItem(QListWidgetItem* item) {
 void CapabilityGate::showAvailability(bool available, const QString& reason) {
     const bool changed = available != m_available;
     m_available = available;
-    m_reason->setText(
-        available ? QString()
-                  : QCoreApplication::translate("CamConCapability", reason.toUtf8().constData()));
+    // The protocol's own reason, translated where it is made (CamConDevice::lacks()).
+    m_reason->setText(available ? QString() : reason);
     m_stack->setCurrentIndex(available ? 0 : 1);
     if (m_item) {
         m_item->setForeground(

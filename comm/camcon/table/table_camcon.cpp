@@ -3,6 +3,8 @@
 #include "table_map.h"
 #include "table_protocol.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
@@ -47,7 +49,8 @@ bool TableCamCon::has(CamConCapability capability) const {
 
 QString TableCamCon::lacks(CamConCapability capability) const {
     if (capability == CamConCapability::DeadTimeModes && !reachesDeadTimeModes(m_link)) {
-        return QStringLiteral(
+        return QCoreApplication::translate(
+            "cambench::comm",
             "Dead-time modes are data words 251..253, which 3964R e38 cannot "
             "address (words 0..127); set the device to 3964R n96 "
             "(--protocol 3964r-n96) to reach them.");
