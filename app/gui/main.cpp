@@ -1,6 +1,7 @@
 #include "app/gui/gui_registry.h"
 #include "app/registry/builtin_registry.h"
 #include "cambench_version.h"
+#include "comm/device/protocol_registry.h"
 #include "ui/gui_settings.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -37,12 +38,17 @@ int main(int argc, char* argv[]) {
         QStringLiteral("port"),
         QStringLiteral("Connect to this port at start (serial port, tcp://host:port, sim)."),
         QStringLiteral("port"));
+    const QCommandLineOption protocol(
+        QStringLiteral("protocol"),
+        QStringLiteral("With --port: standard, multiuser, 3964r-n96 or 3964r-e38 (default: the "
+                       "connection page's choice)."),
+        QStringLiteral("protocol"));
     const QCommandLineOption shots(
         QStringLiteral("screenshots"),
         QStringLiteral("Visit every screen on the simulated device, save one PNG "
                        "each into DIR, and exit."),
         QStringLiteral("DIR"));
-    parser.addOptions({lang, dark, port, shots});
+    parser.addOptions({lang, dark, port, protocol, shots});
     parser.process(app);
 
     // The screenshot tour shows the program as first started and must not
@@ -73,8 +79,16 @@ int main(int argc, char* argv[]) {
     } else if (startPort.isEmpty() && !cambench::guisettings::loadConnection()) {
         startPort = QStringLiteral("sim");
     }
+    const QString startProtocol = parser.value(protocol);
+    if (!startProtocol.isEmpty() && !cambench::comm::ProtocolRegistry::instance().find(startProtocol)) {
+        std::fprintf(stderr,
+                     "cambench: unknown protocol '%s'; use standard, multiuser, 3964r-n96 or "
+                     "3964r-e38.\n",
+                     qPrintable(startProtocol));
+        return 2;
+    }
     cambench::Shell shell;
-    shell.start(startPort);
+    shell.start(startPort, startProtocol);
 
     if (parser.isSet(shots)) {
         auto* tour = new cambench::ScreenshotTour(&shell, parser.value(shots), &shell);

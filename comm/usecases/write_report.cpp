@@ -125,9 +125,10 @@ QString WriteReport::summary() const {
         if (const int n = count(other.state))
             parts << QCoreApplication::translate("cambench::usecases", other.text).arg(n);
     }
-    return QCoreApplication::translate("cambench::usecases", "%1 items: %2")
-        .arg(total())
-        .arg(parts.join(QLatin1String(", ")));
+    // Whole phrases: the CLI prints English without a catalogue, so no "%n".
+    const QString joined = parts.join(QLatin1String(", "));
+    if (total() == 1) return QCoreApplication::translate("cambench::usecases", "1 item: %1").arg(joined);
+    return QCoreApplication::translate("cambench::usecases", "%1 items: %2").arg(total()).arg(joined);
 }
 
 }  // namespace cambench::usecases
