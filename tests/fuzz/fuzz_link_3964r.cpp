@@ -3,24 +3,13 @@
 // (fuzz_link_3964r_replay).
 #include "comm/camcon/table/frame_3964r.h"
 #include "comm/camcon/table/link_3964r.h"
+#include "fuzz_check.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 
 using namespace cambench::comm::table;
 
 namespace {
-
-// Fails loudly in every build type (assert() is gone in release builds).
-#define FUZZ_CHECK(condition)                                                           \
-    do {                                                                                \
-        if (!(condition)) {                                                             \
-            std::fprintf(stderr, "%s:%d: invariant violated: %s\n", __FILE__, __LINE__, \
-                         #condition);                                                   \
-            std::abort();                                                               \
-        }                                                                               \
-    } while (false)
 
 constexpr int kMax = Link3964R::kMaxTelegramBytes;
 

@@ -1,22 +1,17 @@
-// Runs the 3964R fuzz function without libFuzzer: over a fixed seed corpus
-// and pseudo-random inputs from a fixed seed, so every normal build
-// exercises it.
+// The replay of the 3964R link's fuzz function (fuzz_link_3964r_replay): its
+// seed corpus and parameters; fuzz_replay.cpp runs them.
 #include "comm/camcon/table/frame_3964r.h"
+#include "fuzz_replay.h"
 
 #include <QByteArray>
 #include <QList>
-
-#include <cstdint>
-#include <cstdio>
-#include <random>
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 namespace {
 
 using namespace cambench::comm::table;
 
-constexpr int kRandomInputs = 5000;
+// Random inputs are biased towards the control bytes.
+constexpr char kInteresting[] = {kStx, kEtx, kDle, kNak, '\0', '\xFF', 'E', 'A', 'D'};
 
 QByteArray transfer(const QByteArray& telegram) {
     return QByteArray(1, kStx) + encodeBlock3964r(telegram);
@@ -42,55 +37,11 @@ QList<QByteArray> seedCorpus() {
     };
 }
 
-QList<QByteArray> spliceBlocks() {
-    QList<QByteArray> blocks;
-    for (const QByteArray& seed : seedCorpus()) {
-        if (!seed.isEmpty() && seed.size() <= 64) blocks.append(seed);
-    }
-    return blocks;
-}
-
-// Random inputs biased towards the control bytes, spliced with whole
-// transfers; one in 32 is long enough to overflow the receive buffer.
-QByteArray randomInput(std::mt19937& random) {
-    static const char kInteresting[] = {kStx, kEtx, kDle, kNak, '\0', '\xFF', 'E', 'A', 'D'};
-    static const QList<QByteArray> blocks = spliceBlocks();
-    std::uniform_int_distribution<int> lengthOf(0, random() % 32 == 0 ? 2000 : 120);
-    const int length = lengthOf(random);
-    QByteArray input;
-    while (input.size() < length) {
-        switch (random() % 4) {
-            case 0:
-                input.append(char(random()));
-                break;
-            case 1:
-            case 2:
-                input.append(kInteresting[random() % sizeof kInteresting]);
-                break;
-            default:
-                input.append(blocks[random() % blocks.size()]);
-                break;
-        }
-    }
-    return input;
-}
-
 }  // namespace
 
 int main() {
-    int runs = 0;
-    for (const QByteArray& seed : seedCorpus()) {
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(seed.constData()),
-                               size_t(seed.size()));
-        ++runs;
-    }
-    std::mt19937 random(20240602u);
-    for (int i = 0; i < kRandomInputs; ++i) {
-        const QByteArray input = randomInput(random);
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(input.constData()),
-                               size_t(input.size()));
-        ++runs;
-    }
-    std::printf("fuzz_link_3964r_replay: %d inputs, all invariants held\n", runs);
-    return 0;
+    // 5000 random inputs, most up to 120 bytes, one in 32 up to 2000: past the receive buffer.
+    const cambench::fuzz::RandomInputs random{5000, 120, 2000, 20240602u};
+    return cambench::fuzz::runReplay("fuzz_link_3964r_replay", seedCorpus(),
+                                     QByteArray(kInteresting, sizeof kInteresting), random);
 }

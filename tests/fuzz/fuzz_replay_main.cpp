@@ -1,21 +1,18 @@
-// Runs the fuzz function without libFuzzer: over a fixed seed corpus and
-// pseudo-random inputs from a fixed seed, so every normal build exercises it.
+// The replay of the stream decoder's fuzz function (fuzz_stream_decoder_replay):
+// its seed corpus and parameters; fuzz_replay.cpp runs them.
 #include "comm/camcon/ascii/frame.h"
+#include "fuzz_replay.h"
 
 #include <QByteArray>
 #include <QList>
-
-#include <cstdint>
-#include <cstdio>
-#include <random>
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 namespace {
 
 using namespace cambench::comm;
 
-constexpr int kRandomInputs = 20000;
+// Random inputs are biased towards the bytes the decoder cares about.
+constexpr char kInteresting[] = {'?', '!',    ':',    '\r',   '\n',   '\x1b', '0',    'F',
+                                 'C', '\x40', '\x7F', '\x80', '\xBF', '\xC0', '\xFF', '\0'};
 
 QByteArray wire(char lead, const QByteArray& body, std::optional<MultiuserAddress> address = {},
                 bool hasChecksum = true) {
@@ -54,57 +51,11 @@ QList<QByteArray> seedCorpus() {
     };
 }
 
-// The short seeds, to splice into random inputs.
-QList<QByteArray> spliceFrames() {
-    QList<QByteArray> frames;
-    for (const QByteArray& seed : seedCorpus()) {
-        if (!seed.isEmpty() && seed.size() <= 64) frames.append(seed);
-    }
-    return frames;
-}
-
-// Random inputs biased towards the bytes the decoder cares about, spliced
-// with valid frames; one in 32 is long enough to overflow the frame cap.
-QByteArray randomInput(std::mt19937& random) {
-    static const char kInteresting[] = {'?', '!',    ':',    '\r',   '\n',   '\x1b', '0',    'F',
-                                        'C', '\x40', '\x7F', '\x80', '\xBF', '\xC0', '\xFF', '\0'};
-    static const QList<QByteArray> frames = spliceFrames();
-    std::uniform_int_distribution<int> lengthOf(0, random() % 32 == 0 ? 2500 : 200);
-    const int length = lengthOf(random);
-    QByteArray input;
-    while (input.size() < length) {
-        switch (random() % 4) {
-            case 0:
-                input.append(char(random()));
-                break;
-            case 1:
-            case 2:
-                input.append(kInteresting[random() % sizeof kInteresting]);
-                break;
-            default:
-                input.append(frames[random() % frames.size()]);
-                break;
-        }
-    }
-    return input;
-}
-
 }  // namespace
 
 int main() {
-    int runs = 0;
-    for (const QByteArray& seed : seedCorpus()) {
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(seed.constData()),
-                               size_t(seed.size()));
-        ++runs;
-    }
-    std::mt19937 random(20240601u);
-    for (int i = 0; i < kRandomInputs; ++i) {
-        const QByteArray input = randomInput(random);
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(input.constData()),
-                               size_t(input.size()));
-        ++runs;
-    }
-    std::printf("fuzz_stream_decoder_replay: %d inputs, all invariants held\n", runs);
-    return 0;
+    // 20000 random inputs, most up to 200 bytes, one in 32 up to 2500: past the frame cap.
+    const cambench::fuzz::RandomInputs random{20000, 200, 2500, 20240601u};
+    return cambench::fuzz::runReplay("fuzz_stream_decoder_replay", seedCorpus(),
+                                     QByteArray(kInteresting, sizeof kInteresting), random);
 }

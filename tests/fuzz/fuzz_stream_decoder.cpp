@@ -1,26 +1,15 @@
 // libFuzzer target for the frame decoder. The same function runs in normal
 // builds through fuzz_replay_main.cpp (fuzz_stream_decoder_replay).
 #include "comm/camcon/ascii/stream_decoder.h"
+#include "fuzz_check.h"
 
 #include <QLoggingCategory>
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 
 using namespace cambench::comm;
 
 namespace {
-
-// Fails loudly in every build type (assert() is gone in release builds).
-#define FUZZ_CHECK(condition)                                                           \
-    do {                                                                                \
-        if (!(condition)) {                                                             \
-            std::fprintf(stderr, "%s:%d: invariant violated: %s\n", __FILE__, __LINE__, \
-                         #condition);                                                   \
-            std::abort();                                                               \
-        }                                                                               \
-    } while (false)
 
 struct Setup {
     Framing framing;
