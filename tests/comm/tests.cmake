@@ -2,7 +2,7 @@ cambench_add_test(tst_protocol_frame SOURCES comm/camcon_ascii/tst_frame.cpp LIB
 cambench_add_test(tst_protocol_stream_decoder SOURCES comm/camcon_ascii/tst_stream_decoder.cpp LIBS cambench_sim)
 cambench_add_test(tst_protocol_catalogue SOURCES comm/camcon_ascii/tst_catalogue.cpp LIBS cambench_sim)
 cambench_add_test(tst_protocol_command_codec SOURCES comm/camcon_ascii/tst_command_codec.cpp LIBS cambench_sim)
-cambench_add_test(tst_link_protocol_link SOURCES comm/link/tst_protocol_link.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
+cambench_add_test(tst_link_ascii_link SOURCES comm/link/tst_ascii_link.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
 cambench_add_test(tst_link_serial_transport SOURCES comm/link/tst_serial_transport.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
 cambench_add_test(tst_link_tcp_transport SOURCES comm/link/tst_tcp_transport.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
 cambench_add_test(tst_link_transport_factory SOURCES comm/link/tst_transport_factory.cpp LIBS cambench_sim)

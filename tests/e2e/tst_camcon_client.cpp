@@ -240,7 +240,7 @@ void TestAsciiCamCon::scanBusFindsExactlyTheDevicesOnTheLine() {
 void TestAsciiCamCon::scanBusRestoresTheLinkSettings() {
     Bench bench({0, 5}, Framing::Multiuser);
     bench.link->setDevice(5);
-    const LinkSettings before = bench.link->settings();
+    const AsciiSettings before = bench.link->settings();
     QVERIFY(bench.client->scanBus(0, 7, 30).ok());
     QCOMPARE(bench.link->settings().device, before.device);
     QCOMPARE(bench.link->settings().timeoutMs, before.timeoutMs);

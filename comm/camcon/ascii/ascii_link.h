@@ -27,8 +27,6 @@ struct AsciiSettings {
     // every frame a device receives.
     bool syncBlockNumbers = true;
 };
-// Kept for the callers written before the engine split.
-using LinkSettings = AsciiSettings;
 
 // Speaks the CamCon ASCII protocol: turns a catalogue command into a
 // request for the RequestEngine (with its retry policy, timeout class and
@@ -95,8 +93,5 @@ private:
     RequestEngine m_engine;
     bool m_synced[64] = {};
 };
-
-// The name the rest of the code knew the ASCII link by.
-using ProtocolLink = AsciiLink;
 
 }  // namespace cambench::comm

@@ -103,7 +103,7 @@ void TestSerialTransport::portDisappearingDuringWaitGivesCommunicationError() {
     SerialTransport transport(device.slavePath(), SerialSettings{});
     QVERIFY(transport.open().ok());
     // Retries and timeout are large: only the vanished port can end this.
-    ProtocolLink link(transport, LinkSettings{Framing::Standard, 0, 63, 60000, 150000, 3});
+    AsciiLink link(transport, AsciiSettings{Framing::Standard, 0, 63, 60000, 150000, 3});
     const Result<Fields> reply = link.call('?', "UNIT");
     QVERIFY(device.hungUp());
     QVERIFY(!reply.ok());

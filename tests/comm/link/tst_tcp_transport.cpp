@@ -65,7 +65,7 @@ Result<Fields> callOnThread(quint16 port, const char* name, int timeoutMs) {
             result = opened.error();
             return;
         }
-        ProtocolLink link(transport, LinkSettings{Framing::Standard, 0, 63, timeoutMs, 150000, 2});
+        AsciiLink link(transport, AsciiSettings{Framing::Standard, 0, 63, timeoutMs, 150000, 2});
         result = link.call('?', name);
     }));
     thread->start();

@@ -1,4 +1,4 @@
-// ProtocolLink over a real pseudo-terminal: QSerialPort on the slave side,
+// AsciiLink over a real pseudo-terminal: QSerialPort on the slave side,
 // a scripted device on the master side.
 #include "pty_device.h"
 
@@ -45,8 +45,8 @@ struct Rig {
 
     // The script answers every frame itself, so the link sends no block
     // number synchronisation of its own (tested separately below).
-    static LinkSettings scriptedSettings(Framing framing, int timeoutMs, int retries) {
-        LinkSettings settings{framing, 5, 63, timeoutMs, 150000, retries};
+    static AsciiSettings scriptedSettings(Framing framing, int timeoutMs, int retries) {
+        AsciiSettings settings{framing, 5, 63, timeoutMs, 150000, retries};
         settings.syncBlockNumbers = false;
         return settings;
     }
@@ -55,7 +55,7 @@ struct Rig {
 
     PtyDevice device;
     SerialTransport transport;
-    ProtocolLink link;
+    AsciiLink link;
 };
 
 }  // namespace
@@ -395,4 +395,4 @@ void TestProtocolLink::statsCountBytesAndRetries() {
 }
 
 QTEST_GUILESS_MAIN(TestProtocolLink)
-#include "tst_protocol_link.moc"
+#include "tst_ascii_link.moc"
