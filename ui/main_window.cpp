@@ -13,9 +13,9 @@
 #include "dead_times_page.h"
 #include "device_reads.h"
 #include "device_session.h"
+#include "eeprom_lock_page.h"
 #include "gui_settings.h"
 #include "incoming_values.h"
-#include "eeprom_lock_page.h"
 #include "language.h"
 #include "line_backup_dialog.h"
 #include "monitor_page.h"
@@ -181,8 +181,22 @@ void MainWindow::createMenus() {
                       [this] { readEverything(m_cams->editor()->currentProgram()); });
     device->addSeparator();
     device->addAction(tr("Co&mpare with device…"), this, &MainWindow::openCompare);
-    device->addAction(tr("&Backup and restore…"), this, &MainWindow::openBackupWizard);
-    device->addAction(tr("Back up all devices on this &line…"), this, &MainWindow::openLineBackup);
+    QAction* backup =
+        device->addAction(tr("&Backup and restore…"), this, &MainWindow::openBackupWizard);
+    QAction* lineBackup = device->addAction(tr("Back up all devices on this &line…"), this,
+                                            &MainWindow::openLineBackup);
+    // Greyed with the Backup section where the protocol has no EEPROM backup
+    // (the table interface), with the reason as the tooltip.
+    if (auto* gate = qobject_cast<CapabilityGate*>(m_pages.at(Backup))) {
+        const auto follow = [gate, backup, lineBackup](bool available) {
+            for (QAction* action : {backup, lineBackup}) {
+                action->setEnabled(available);
+                action->setToolTip(gate->reason());
+            }
+        };
+        connect(gate, &CapabilityGate::availabilityChanged, this, follow);
+        follow(gate->isAvailable());
+    }
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* dark = view->addAction(tr("&Dark palette"));

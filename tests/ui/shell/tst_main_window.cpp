@@ -290,6 +290,12 @@ void MainWindowTest::sectionsFollowTheProtocolsCapabilities() {
              qPrintable(why));
     if (protocol == QLatin1String("3964r-e38"))
         QVERIFY2(modes->reason().contains(QLatin1String("3964R n96")), qPrintable(modes->reason()));
+    // The Device menu's backups follow the Backup section.
+    QAction* backup = nullptr;
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text() == QStringLiteral("&Backup and restore…")) backup = action;
+    QVERIFY(backup);
+    QTRY_COMPARE_WITH_TIMEOUT(backup->isEnabled(), ascii, kDeviceTimeoutMs);
 }
 
 void MainWindowTest::dataOnlyTheTableInterfaceHasIsEditedAndWritten() {
