@@ -21,7 +21,7 @@ enum class ErrorKind {
 
 struct Error {
     ErrorKind kind = ErrorKind::None;
-    QString message;      // complete sentence for a person: what, where, what to do
+    QString message;        // complete sentence for a person: what, where, what to do
     qint32 deviceCode = 0;  // the device's error number for DeviceError, else 0
 
     static Error device(qint32 code, QString message) {
@@ -42,7 +42,7 @@ struct Error {
 template <class T>
 class Result {
 public:
-    Result(T value) : m_value(std::move(value)) {}  // NOLINT: implicit by design
+    Result(T value) : m_value(std::move(value)) {}      // NOLINT: implicit by design
     Result(Error error) : m_error(std::move(error)) {}  // NOLINT: implicit by design
 
     bool ok() const { return m_value.has_value(); }
@@ -62,6 +62,8 @@ private:
 // For operations that return nothing but can fail.
 struct Done {};
 using Status = Result<Done>;
-inline Status success() { return Done{}; }
+inline Status success() {
+    return Done{};
+}
 
 }  // namespace cambench

@@ -40,7 +40,9 @@ int AccessGridModel::outputAt(const QModelIndex& index) const {
     return output <= m_outputs ? output : 0;
 }
 
-int AccessGridModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : m_rows; }
+int AccessGridModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : m_rows;
+}
 
 int AccessGridModel::columnCount(const QModelIndex& parent) const {
     return parent.isValid() || m_rows == 0 ? 0 : kColumns;
@@ -55,17 +57,20 @@ QVariant AccessGridModel::data(const QModelIndex& index, int role) const {
         case Qt::DisplayRole:
             return output;
         case Qt::CheckStateRole:
-            return (user.allOutputs || user.outputAccess.value(output - 1)) ? Qt::Checked : Qt::Unchecked;
+            return (user.allOutputs || user.outputAccess.value(output - 1)) ? Qt::Checked
+                                                                            : Qt::Unchecked;
         case Qt::ToolTipRole:
-            return user.allOutputs ? tr("Output %1: allowed (the user may change all outputs)").arg(output)
-                                   : tr("Output %1").arg(output);
+            return user.allOutputs
+                       ? tr("Output %1: allowed (the user may change all outputs)").arg(output)
+                       : tr("Output %1").arg(output);
         default:
             return {};
     }
 }
 
 bool AccessGridModel::setData(const QModelIndex& index, const QVariant& value, int role) {
-    if (role != Qt::CheckStateRole || !checkIndex(index, CheckIndexOption::IndexIsValid)) return false;
+    if (role != Qt::CheckStateRole || !checkIndex(index, CheckIndexOption::IndexIsValid))
+        return false;
     const int output = outputAt(index);
     if (output == 0) return false;
     User user = m_workspace->users().at(m_user).user;
@@ -78,7 +83,8 @@ bool AccessGridModel::setData(const QModelIndex& index, const QVariant& value, i
 Qt::ItemFlags AccessGridModel::flags(const QModelIndex& index) const {
     if (!index.isValid() || outputAt(index) == 0) return Qt::NoItemFlags;
     const bool all = m_workspace->users().at(m_user).user.allOutputs;
-    return Qt::ItemIsEnabled | Qt::ItemIsSelectable | (all ? Qt::NoItemFlags : Qt::ItemIsUserCheckable);
+    return Qt::ItemIsEnabled | Qt::ItemIsSelectable |
+           (all ? Qt::NoItemFlags : Qt::ItemIsUserCheckable);
 }
 
 }  // namespace cambench

@@ -14,7 +14,7 @@ public:
 
     explicit AccessGridModel(Workspace* workspace, QObject* parent = nullptr);
 
-    void setUser(int index);  // -1 = none
+    void setUser(int index);                       // -1 = none
     int outputAt(const QModelIndex& index) const;  // 1-based, 0 outside
 
     int rowCount(const QModelIndex& parent = {}) const override;

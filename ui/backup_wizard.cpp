@@ -26,7 +26,8 @@ namespace cambench {
 namespace {
 
 QString identityText(const DeviceInfo& info) {
-    return BackupWizard::tr("EPROM %1, device number %2, %3 outputs, %4 programs, positions %5 … %6")
+    return BackupWizard::tr(
+               "EPROM %1, device number %2, %3 outputs, %4 programs, positions %5 … %6")
         .arg(info.epromDate)
         .arg(info.deviceNumber)
         .arg(info.outputs)
@@ -35,7 +36,9 @@ QString identityText(const DeviceInfo& info) {
         .arg(info.maxPosition);
 }
 
-QString stamp() { return QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")); }
+QString stamp() {
+    return QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
+}
 
 }  // namespace
 
@@ -58,9 +61,10 @@ BackupWizard::BackupWizard(DeviceSession* session, Workspace* workspace, QWidget
 QWizardPage* BackupWizard::createChoosePage() {
     auto* page = new QWizardPage;
     page->setTitle(tr("Backup or restore"));
-    page->setSubTitle(tr("A backup copies the device's whole EEPROM into a file. A restore erases "
-                         "the device and writes such a file back. The file holds the users' "
-                         "access codes: keep it where only you can read it."));
+    page->setSubTitle(
+        tr("A backup copies the device's whole EEPROM into a file. A restore erases "
+           "the device and writes such a file back. The file holds the users' "
+           "access codes: keep it where only you can read it."));
     m_backup = new QRadioButton(tr("Back up the device into a file"));
     m_restore = new QRadioButton(tr("Restore the device from a file"));
     m_backup->setChecked(true);
@@ -79,9 +83,11 @@ QWizardPage* BackupWizard::createChoosePage() {
     layout->addStretch();
     connect(browse, &QPushButton::clicked, this, [this] {
         const QString filter = tr("EEPROM images (*.json)");
-        const QString path = mode() == Mode::Backup
-                                 ? QFileDialog::getSaveFileName(this, tr("Backup file"), m_path->text(), filter)
-                                 : QFileDialog::getOpenFileName(this, tr("Image to restore"), m_path->text(), filter);
+        const QString path =
+            mode() == Mode::Backup
+                ? QFileDialog::getSaveFileName(this, tr("Backup file"), m_path->text(), filter)
+                : QFileDialog::getOpenFileName(this, tr("Image to restore"), m_path->text(),
+                                               filter);
         if (!path.isEmpty()) m_path->setText(path);
     });
     return page;
@@ -90,8 +96,9 @@ QWizardPage* BackupWizard::createChoosePage() {
 QWizardPage* BackupWizard::createCheckPage() {
     auto* page = new QWizardPage;
     page->setTitle(tr("Check the image"));
-    page->setSubTitle(tr("The restore erases the device. Before that, CamBench saves what the device "
-                         "holds now into a safety backup."));
+    page->setSubTitle(
+        tr("The restore erases the device. Before that, CamBench saves what the device "
+           "holds now into a safety backup."));
     m_check = new QLabel;
     m_check->setWordWrap(true);
     m_check->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -107,12 +114,24 @@ QWizardPage* BackupWizard::createCheckPage() {
     return page;
 }
 
-void BackupWizard::setMode(Mode mode) { (mode == Mode::Backup ? m_backup : m_restore)->setChecked(true); }
-void BackupWizard::setPath(const QString& path) { m_path->setText(path); }
-void BackupWizard::setSafetyBackupPath(const QString& path) { m_safetyPath->setText(path); }
-void BackupWizard::setForceRestore(bool force) { m_force->setChecked(force); }
-BackupWizard::Mode BackupWizard::mode() const { return m_backup->isChecked() ? Mode::Backup : Mode::Restore; }
-QString BackupWizard::checkText() const { return m_check->text(); }
+void BackupWizard::setMode(Mode mode) {
+    (mode == Mode::Backup ? m_backup : m_restore)->setChecked(true);
+}
+void BackupWizard::setPath(const QString& path) {
+    m_path->setText(path);
+}
+void BackupWizard::setSafetyBackupPath(const QString& path) {
+    m_safetyPath->setText(path);
+}
+void BackupWizard::setForceRestore(bool force) {
+    m_force->setChecked(force);
+}
+BackupWizard::Mode BackupWizard::mode() const {
+    return m_backup->isChecked() ? Mode::Backup : Mode::Restore;
+}
+QString BackupWizard::checkText() const {
+    return m_check->text();
+}
 
 int BackupWizard::nextId() const {
     switch (currentId()) {
@@ -139,8 +158,9 @@ bool BackupWizard::validateCurrentPage() {
             // The model's loader checks format, hash and every block.
             Result<EepromImage> image = loadEepromImage(m_path->text());
             if (!image) {
-                QMessageBox::warning(this, windowTitle(),
-                                     tr("This file cannot be restored: %1").arg(image.error().message));
+                QMessageBox::warning(
+                    this, windowTitle(),
+                    tr("This file cannot be restored: %1").arg(image.error().message));
                 return false;
             }
             m_image = image.value();
@@ -148,9 +168,10 @@ bool BackupWizard::validateCurrentPage() {
     }
     if (currentId() == CheckPage) {
         if (!m_mismatch.isEmpty() && !m_force->isChecked()) {
-            QMessageBox::warning(this, windowTitle(),
-                                 tr("The image comes from a different device. Confirm that you want to "
-                                    "restore it anyway, or choose another file."));
+            QMessageBox::warning(
+                this, windowTitle(),
+                tr("The image comes from a different device. Confirm that you want to "
+                   "restore it anyway, or choose another file."));
             return false;
         }
         if (m_safetyPath->text().trimmed().isEmpty()) {
@@ -159,12 +180,14 @@ bool BackupWizard::validateCurrentPage() {
         }
         // Its own question, also for the device the image came from: the
         // next step erases it.
-        QMessageBox confirm(QMessageBox::Warning, windowTitle(),
-                            tr("This erases the device (%1) and writes the image %2 into it. Outputs "
-                               "may switch while the device restarts.\n\nErase and restore now?")
-                                .arg(identityText(m_workspace->info()), m_path->text()),
-                            QMessageBox::NoButton, this);
-        QPushButton* erase = confirm.addButton(tr("Erase and restore"), QMessageBox::DestructiveRole);
+        QMessageBox confirm(
+            QMessageBox::Warning, windowTitle(),
+            tr("This erases the device (%1) and writes the image %2 into it. Outputs "
+               "may switch while the device restarts.\n\nErase and restore now?")
+                .arg(identityText(m_workspace->info()), m_path->text()),
+            QMessageBox::NoButton, this);
+        QPushButton* erase =
+            confirm.addButton(tr("Erase and restore"), QMessageBox::DestructiveRole);
         QPushButton* cancel = confirm.addButton(QMessageBox::Cancel);
         confirm.setDefaultButton(cancel);
         confirm.exec();
@@ -177,23 +200,26 @@ void BackupWizard::initializePage(int id) {
     if (id == CheckPage && m_image) {
         const DeviceInfo& device = m_workspace->info();
         m_mismatch = identityMismatch(m_image->device, device);
-        QString text = tr("Image: %1\nTaken %2 with %3, %n block(s), %4 bytes.", nullptr, int(m_image->blocks.size()))
-                           .arg(identityText(m_image->device),
-                                QLocale().toString(m_image->taken.toLocalTime(), QLocale::ShortFormat),
-                                m_image->toolVersion)
-                           .arg(m_image->totalBytes());
+        QString text =
+            tr("Image: %1\nTaken %2 with %3, %n block(s), %4 bytes.", nullptr,
+               int(m_image->blocks.size()))
+                .arg(identityText(m_image->device),
+                     QLocale().toString(m_image->taken.toLocalTime(), QLocale::ShortFormat),
+                     m_image->toolVersion)
+                .arg(m_image->totalBytes());
         text += QLatin1Char('\n') + tr("Device: %1").arg(identityText(device));
         if (m_mismatch.isEmpty()) {
             text += QLatin1String("\n\n") + tr("The image matches this device.");
         } else {
-            text += QLatin1String("\n\n") + tr("The image does NOT match this device:") + QLatin1Char('\n') +
-                    m_mismatch.join(QLatin1Char('\n'));
+            text += QLatin1String("\n\n") + tr("The image does NOT match this device:") +
+                    QLatin1Char('\n') + m_mismatch.join(QLatin1Char('\n'));
         }
         m_check->setText(text);
         m_force->setVisible(!m_mismatch.isEmpty());
         if (m_safetyPath->text().isEmpty()) {
             // The same name the command line gives it: next to the image, with the time.
-            m_safetyPath->setText(usecases::safetyBackupPath(m_path->text(), QDateTime::currentDateTimeUtc()));
+            m_safetyPath->setText(
+                usecases::safetyBackupPath(m_path->text(), QDateTime::currentDateTimeUtc()));
         }
     }
     if (id == RunPage) {
@@ -216,7 +242,8 @@ void BackupWizard::runBackup() {
     const QString path = m_path->text();
     // The device does not say how much its EEPROM holds: bytes and the
     // measured rate, no time left that would be a guess.
-    m_progress->start(tr("Reading the EEPROM of the device into %1…").arg(path), ProgressPage::Total::UpperBound);
+    m_progress->start(tr("Reading the EEPROM of the device into %1…").arg(path),
+                      ProgressPage::Total::UpperBound);
     track(m_session->run<EepromImage>(
         this, tr("Backup"),
         [path](comm::CamConDevice& device, comm::JobContext& job) {
@@ -224,13 +251,15 @@ void BackupWizard::runBackup() {
         },
         [this, path](Result<EepromImage> image) {
             if (!image) {
-                finishWork(false, tr("Backup failed, no file was written: %1").arg(image.error().message));
+                finishWork(false,
+                           tr("Backup failed, no file was written: %1").arg(image.error().message));
                 return;
             }
-            finishWork(true, tr("Backup complete: %n block(s), %1 bytes written to %2. Nothing failed.", nullptr,
-                                int(image->blocks.size()))
-                                 .arg(image->totalBytes())
-                                 .arg(path));
+            finishWork(true,
+                       tr("Backup complete: %n block(s), %1 bytes written to %2. Nothing failed.",
+                          nullptr, int(image->blocks.size()))
+                           .arg(image->totalBytes())
+                           .arg(path));
         }));
 }
 
@@ -241,28 +270,34 @@ void BackupWizard::runRestore() {
     options.force = m_force->isChecked();
     options.safetyBackupPath = m_safetyPath->text();
     // Step 1 (the safety backup) has no known size: no time left is given.
-    m_progress->start(tr("Step 1 of 2: saving what the device holds now into %1; step 2: erasing the "
-                         "device and writing %n block(s).",
-                         nullptr, int(image.blocks.size()))
-                          .arg(options.safetyBackupPath),
-                      ProgressPage::Total::UpperBound);
+    m_progress->start(
+        tr("Step 1 of 2: saving what the device holds now into %1; step 2: erasing the "
+           "device and writing %n block(s).",
+           nullptr, int(image.blocks.size()))
+            .arg(options.safetyBackupPath),
+        ProgressPage::Total::UpperBound);
     track(m_session->run<usecases::RestoreReport>(
         this, tr("Restore"),
-        [image, imagePath, options](comm::CamConDevice& device, comm::JobContext& job) -> Result<usecases::RestoreReport> {
-            return usecases::restoreImage(device, image, imagePath, options, usecases::UseCaseProgress::of(job));
+        [image, imagePath, options](comm::CamConDevice& device,
+                                    comm::JobContext& job) -> Result<usecases::RestoreReport> {
+            return usecases::restoreImage(device, image, imagePath, options,
+                                          usecases::UseCaseProgress::of(job));
         },
         [this](Result<usecases::RestoreReport> result) {
             const usecases::RestoreReport& report = result.value();
             switch (report.state) {
                 case usecases::RestoredState::Restored:
                     Q_EMIT restored();
-                    finishWork(true, tr("Restore complete: %n block(s) written, 0 failed. The safety backup of "
-                                        "the previous content is %1.",
-                                        nullptr, report.blocks)
-                                         .arg(report.safetyBackupPath));
+                    finishWork(
+                        true,
+                        tr("Restore complete: %n block(s) written, 0 failed. The safety backup of "
+                           "the previous content is %1.",
+                           nullptr, report.blocks)
+                            .arg(report.safetyBackupPath));
                     return;
                 case usecases::RestoredState::Unchanged:
-                    finishWork(false, tr("Restore NOT done, the device is unchanged: %1").arg(report.error.message));
+                    finishWork(false, tr("Restore NOT done, the device is unchanged: %1")
+                                          .arg(report.error.message));
                     return;
                 case usecases::RestoredState::ErasedOrPartial:
                     // Whatever the device holds now, the workspace's copy is not it.
@@ -284,9 +319,10 @@ void BackupWizard::reject() {
         const bool restoring = mode() == Mode::Restore;
         const auto answer = QMessageBox::question(
             this, windowTitle(),
-            restoring ? tr("Cancel the restore? If the device is already being written, it stays ERASED "
-                           "until you restore an image.")
-                      : tr("Cancel the backup? No file will be written."));
+            restoring
+                ? tr("Cancel the restore? If the device is already being written, it stays ERASED "
+                     "until you restore an image.")
+                : tr("Cancel the backup? No file will be written."));
         if (answer != QMessageBox::Yes) return;
         m_session->worker().cancel(m_job);
         return;  // the job ends with Cancelled and the report says what happened

@@ -13,15 +13,12 @@
 
 #include <QCoreApplication>
 
-#include <algorithm>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace cambench {
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : SectionPage(parent),
@@ -34,9 +31,10 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     connect(m_editor, &CamEditorWidget::readProgramRequested, this, [this](int program) {
         readProgram(program, [this, program](const Status& status) {
             if (!status && status.error().kind != ErrorKind::Cancelled)
-                ReportDialog::present(this, QMessageBox::Warning, tr("Read program %1").arg(program),
-                                      tr("Program %1 was not read. Your edits are kept.").arg(program),
-                                      status.error().message);
+                ReportDialog::present(
+                    this, QMessageBox::Warning, tr("Read program %1").arg(program),
+                    tr("Program %1 was not read. Your edits are kept.").arg(program),
+                    status.error().message);
         });
     });
     connect(m_editor, &CamEditorWidget::writeProgramRequested, this, [this](int program) {
@@ -54,21 +52,26 @@ void CamPage::showStatus(const DeviceStatus& status) {
     m_editor->diagram()->setOutputStates(status.outputs);
 }
 
-void CamPage::clearLive() { m_editor->diagram()->clearLive(); }
+void CamPage::clearLive() {
+    m_editor->diagram()->clearLive();
+}
 
 void CamPage::readProgram(int program, std::function<void(const Status&)> done) {
     Q_EMIT statusMessage(tr("Reading program %1…").arg(program));
-    devicereads::readProgram(this, m_session, m_workspace, program, [this, program, done](const Status& status) {
-        if (status) {
-            Q_EMIT statusMessage(tr("Program %1 read.").arg(program));
-        } else if (status.error().kind == ErrorKind::Cancelled) {
-            Q_EMIT statusMessage(tr("Program %1 read, not taken: your edits are unchanged.").arg(program));
-        } else {
-            Q_EMIT statusMessage(
-                tr("Program %1 not read: %2 Your edits are kept.").arg(program).arg(status.error().message));
-        }
-        if (done) done(status);
-    });
+    devicereads::readProgram(
+        this, m_session, m_workspace, program, [this, program, done](const Status& status) {
+            if (status) {
+                Q_EMIT statusMessage(tr("Program %1 read.").arg(program));
+            } else if (status.error().kind == ErrorKind::Cancelled) {
+                Q_EMIT statusMessage(
+                    tr("Program %1 read, not taken: your edits are unchanged.").arg(program));
+            } else {
+                Q_EMIT statusMessage(tr("Program %1 not read: %2 Your edits are kept.")
+                                         .arg(program)
+                                         .arg(status.error().message));
+            }
+            if (done) done(status);
+        });
 }
 
 void CamPage::writeProgram(int program, std::function<void(const WriteResult&)> done) {
@@ -79,23 +82,29 @@ void CamPage::writeProgram(int program, std::function<void(const WriteResult&)> 
     // A program never read is written whole (and its name with it).
     if (!m_workspace->cams()->hasDeviceCopy(program)) items = {WorkspaceItem::programName(program)};
     if (items.isEmpty()) {
-        Q_EMIT statusMessage(tr("Program %1: nothing to write, the device holds what you see.").arg(program));
+        Q_EMIT statusMessage(
+            tr("Program %1: nothing to write, the device holds what you see.").arg(program));
         return;
     }
     Q_EMIT statusMessage(tr("Writing program %1…").arg(program));
     // Outputs not sent were already as on the device: counted, not hidden.
-    const int tracksSent = int(std::count_if(items.cbegin(), items.cend(), [](const WorkspaceItem& item) {
-        return item.kind == WorkspaceItem::Kind::Track;
-    }));
-    const int others = m_workspace->cams()->hasDeviceCopy(program) ? m_workspace->info().outputs - tracksSent : 0;
-    writeToDevice(this, m_session, m_workspace, items, [this, program, others, done](const WriteResult& result) {
-        QString summary = tr("Program %1: %2").arg(program).arg(writeSummary(result));
-        if (result && others > 0)
-            summary = asSentence(summary) + QLatin1Char(' ') +
-                       tr("%n other output(s) were already as on the device and not sent.", nullptr, others);
-        Q_EMIT statusMessage(summary);
-        if (done) done(result);
-    });
+    const int tracksSent =
+        int(std::count_if(items.cbegin(), items.cend(), [](const WorkspaceItem& item) {
+            return item.kind == WorkspaceItem::Kind::Track;
+        }));
+    const int others =
+        m_workspace->cams()->hasDeviceCopy(program) ? m_workspace->info().outputs - tracksSent : 0;
+    writeToDevice(this, m_session, m_workspace, items,
+                  [this, program, others, done](const WriteResult& result) {
+                      QString summary = tr("Program %1: %2").arg(program).arg(writeSummary(result));
+                      if (result && others > 0)
+                          summary =
+                              asSentence(summary) + QLatin1Char(' ') +
+                              tr("%n other output(s) were already as on the device and not sent.",
+                                 nullptr, others);
+                      Q_EMIT statusMessage(summary);
+                      if (done) done(result);
+                  });
 }
 
 QList<SectionDifference> CamPage::differences() const {
@@ -112,7 +121,8 @@ QList<SectionDifference> CamPage::differences() const {
     for (const TrackDifference& d : cams->differences()) {
         list.append({WorkspaceItem::track(d.program, d.output),
                      tr("Program %1, output %2").arg(d.program).arg(d.output),
-                     d.deviceKnown ? camsText(d.deviceTrack) : tr("not read"), camsText(d.editedTrack)});
+                     d.deviceKnown ? camsText(d.deviceTrack) : tr("not read"),
+                     camsText(d.editedTrack)});
     }
     return list;
 }

@@ -30,11 +30,14 @@ constexpr int kDiagramWidth = 1400;
 // Shown this wide on the page (150 dpi): about the width of A4 inside its margins.
 constexpr int kDiagramShownWidth = 900;
 
-QString cell(const QString& text) { return QStringLiteral("<td>%1</td>").arg(text.toHtmlEscaped()); }
+QString cell(const QString& text) {
+    return QStringLiteral("<td>%1</td>").arg(text.toHtmlEscaped());
+}
 
 QString headerRow(const QStringList& titles) {
     QString row;
-    for (const QString& title : titles) row += QStringLiteral("<th>%1</th>").arg(title.toHtmlEscaped());
+    for (const QString& title : titles)
+        row += QStringLiteral("<th>%1</th>").arg(title.toHtmlEscaped());
     return QStringLiteral("<tr>%1</tr>").arg(row);
 }
 
@@ -48,9 +51,13 @@ QString table(const QString& rows) {
     return QStringLiteral("<table border='1' cellspacing='0' cellpadding='3'>%1</table>").arg(rows);
 }
 
-QString paragraph(const QString& text) { return QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped()); }
+QString paragraph(const QString& text) {
+    return QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped());
+}
 
-QString heading(const QString& text) { return QStringLiteral("<h2>%1</h2>").arg(text.toHtmlEscaped()); }
+QString heading(const QString& text) {
+    return QStringLiteral("<h2>%1</h2>").arg(text.toHtmlEscaped());
+}
 
 // "12.3 ms" in the report's locale.
 QString milliseconds(qint32 tenths) {
@@ -63,7 +70,6 @@ QString marked(const QString& edited, bool changed, const QString& device) {
     return changedMarker() + CommissioningReport::tr("%1 (device: %2)").arg(edited, device);
 }
 
-
 class Builder {
 public:
     Builder(QTextDocument& document, const Workspace& workspace)
@@ -74,7 +80,8 @@ public:
         html += device();
         html += settings();
         html += outputs();
-        for (int program = 0; program < m_workspace.info().programs; ++program) html += programSection(program);
+        for (int program = 0; program < m_workspace.info().programs; ++program)
+            html += programSection(program);
         html += users();
         html += plc();
         return html;
@@ -83,34 +90,42 @@ public:
 private:
     QString readTime(ProjectPart part) const {
         const QDateTime time = m_workspace.readTimes().parts.value(part);
-        return time.isValid() ? QLocale().toString(time.toLocalTime(), QLocale::ShortFormat) : QString();
+        return time.isValid() ? QLocale().toString(time.toLocalTime(), QLocale::ShortFormat)
+                              : QString();
     }
 
     // "Read from the device at …" or why not, for a section.
     QString source(ProjectPart part) const {
         const QString time = readTime(part);
-        if (!time.isEmpty()) return paragraph(CommissioningReport::tr("Read from the device at %1.").arg(time));
-        return paragraph(m_workspace.infoFromDevice()
-                             ? CommissioningReport::tr("Not read from the device: the values are this PC's.")
-                             : CommissioningReport::tr("Offline project: the values are this PC's."));
+        if (!time.isEmpty())
+            return paragraph(CommissioningReport::tr("Read from the device at %1.").arg(time));
+        return paragraph(
+            m_workspace.infoFromDevice()
+                ? CommissioningReport::tr("Not read from the device: the values are this PC's.")
+                : CommissioningReport::tr("Offline project: the values are this PC's."));
     }
 
     QString title() const {
         const QLocale locale;
-        QString html = QStringLiteral("<h1>%1</h1>").arg(CommissioningReport::tr("Commissioning report"));
-        html += paragraph(CommissioningReport::tr("Created %1 with CamBench %2")
-                              .arg(locale.toString(QDateTime::currentDateTime(), QLocale::LongFormat),
-                                   QStringLiteral(CAMBENCH_VERSION)));
+        QString html =
+            QStringLiteral("<h1>%1</h1>").arg(CommissioningReport::tr("Commissioning report"));
+        html +=
+            paragraph(CommissioningReport::tr("Created %1 with CamBench %2")
+                          .arg(locale.toString(QDateTime::currentDateTime(), QLocale::LongFormat),
+                               QStringLiteral(CAMBENCH_VERSION)));
         const int changes = m_workspace.changedCount();
         html += paragraph(
             changes > 0
-                ? CommissioningReport::tr("%n value(s) in this report are edited on this PC and NOT written to the "
-                                          "device; they are marked %1 and show the device's value beside them.",
-                                          nullptr, changes)
+                ? CommissioningReport::tr(
+                      "%n value(s) in this report are edited on this PC and NOT written to the "
+                      "device; they are marked %1 and show the device's value beside them.",
+                      nullptr, changes)
                       .arg(changedMarker().trimmed())
-                : m_workspace.infoFromDevice()
-                      ? CommissioningReport::tr("Every value in this report is what the device held when it was read.")
-                      : CommissioningReport::tr("Offline project: nothing in this report was read from a device."));
+            : m_workspace.infoFromDevice()
+                ? CommissioningReport::tr(
+                      "Every value in this report is what the device held when it was read.")
+                : CommissioningReport::tr(
+                      "Offline project: nothing in this report was read from a device."));
         return html;
     }
 
@@ -119,15 +134,20 @@ private:
         QString rows;
         if (m_workspace.infoFromDevice()) {
             rows += row({CommissioningReport::tr("Firmware (EPROM date)"), info.epromDate});
-            rows += row({CommissioningReport::tr("Device number"), QString::number(info.deviceNumber)});
-            rows += row({CommissioningReport::tr("Identity read at"), readTime(ProjectPart::Device)});
+            rows +=
+                row({CommissioningReport::tr("Device number"), QString::number(info.deviceNumber)});
+            rows +=
+                row({CommissioningReport::tr("Identity read at"), readTime(ProjectPart::Device)});
         } else {
-            rows += row({CommissioningReport::tr("Source"), CommissioningReport::tr("offline project")});
+            rows += row(
+                {CommissioningReport::tr("Source"), CommissioningReport::tr("offline project")});
             if (!m_workspace.projectPath().isEmpty())
                 rows += row({CommissioningReport::tr("Project file"), m_workspace.projectPath()});
         }
-        rows += row({CommissioningReport::tr("Outputs / inputs"), QStringLiteral("%1 / %2").arg(info.outputs).arg(info.inputs)});
-        rows += row({CommissioningReport::tr("Programs"), CommissioningReport::tr("0 … %1").arg(info.programs - 1)});
+        rows += row({CommissioningReport::tr("Outputs / inputs"),
+                     QStringLiteral("%1 / %2").arg(info.outputs).arg(info.inputs)});
+        rows += row({CommissioningReport::tr("Programs"),
+                     CommissioningReport::tr("0 … %1").arg(info.programs - 1)});
         rows += row({CommissioningReport::tr("Position range"),
                      QStringLiteral("%1 … %2").arg(info.minPosition).arg(info.maxPosition)});
         return heading(CommissioningReport::tr("Device")) + table(rows);
@@ -142,21 +162,25 @@ private:
             if (!edited.contains(key)) continue;
             const auto text = [&spec](const QVariant& value) {
                 QString shown = SettingField::displayText(spec, value);
-                if (*spec.unit) shown += QLatin1Char(' ') + QCoreApplication::translate("Settings", spec.unit);
+                if (*spec.unit)
+                    shown += QLatin1Char(' ') + QCoreApplication::translate("Settings", spec.unit);
                 return shown;
             };
             const bool changed = !device.contains(key) || device.value(key) != edited.value(key);
             rows += row({SettingField::labelText(spec),
                          marked(text(edited.value(key)), changed && m_workspace.settingsKnown(),
-                                device.contains(key) ? text(device.value(key)) : CommissioningReport::tr("not read"))});
+                                device.contains(key) ? text(device.value(key))
+                                                     : CommissioningReport::tr("not read"))});
         }
         QString html = heading(CommissioningReport::tr("Settings")) + source(ProjectPart::Settings);
-        return html + (rows.isEmpty() ? paragraph(CommissioningReport::tr("Settings not read.")) : table(rows));
+        return html + (rows.isEmpty() ? paragraph(CommissioningReport::tr("Settings not read."))
+                                      : table(rows));
     }
 
     QString outputs() const {
-        QString rows = headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Name"),
-                                  CommissioningReport::tr("Dead time")});
+        QString rows =
+            headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Name"),
+                       CommissioningReport::tr("Dead time")});
         const DeviceInfo& info = m_workspace.info();
         // Over the device's outputs; dead times where it has them.
         for (int output = 1; output <= info.outputs; ++output) {
@@ -169,26 +193,35 @@ private:
                                   device && *device != m_cams.deadTime(output),
                                   device ? milliseconds(*device) : QString());
             }
-            rows += row({QString::number(output),
-                         marked(name, deviceName && *deviceName != name, deviceName.value_or(QString())), deadTime});
+            rows += row(
+                {QString::number(output),
+                 marked(name, deviceName && *deviceName != name, deviceName.value_or(QString())),
+                 deadTime});
         }
-        return heading(CommissioningReport::tr("Outputs and dead times")) + source(ProjectPart::DeadTimes) + table(rows);
+        return heading(CommissioningReport::tr("Outputs and dead times")) +
+               source(ProjectPart::DeadTimes) + table(rows);
     }
 
     QString programSection(int number) {
         const CamProgram program = m_cams.program(number);
         const bool known = m_cams.hasDeviceCopy(number);
         const bool present = m_cams.editedPrograms().contains(number);
-        QString title = program.name.isEmpty() ? CommissioningReport::tr("Program %1").arg(number)
-                                               : CommissioningReport::tr("Program %1: %2").arg(number).arg(program.name);
+        QString title =
+            program.name.isEmpty()
+                ? CommissioningReport::tr("Program %1").arg(number)
+                : CommissioningReport::tr("Program %1: %2").arg(number).arg(program.name);
         QString html = heading(title);
-        if (!present) return html + paragraph(CommissioningReport::tr("Not read from the device: its content is unknown."));
+        if (!present)
+            return html + paragraph(CommissioningReport::tr(
+                              "Not read from the device: its content is unknown."));
         const QDateTime read = m_workspace.readTimes().programs.value(number);
         if (!known) {
-            html += paragraph(CommissioningReport::tr("Not read from the device: these cams exist on this PC only."));
+            html += paragraph(CommissioningReport::tr(
+                "Not read from the device: these cams exist on this PC only."));
         } else if (read.isValid()) {
-            html += paragraph(CommissioningReport::tr("Read from the device at %1.")
-                                  .arg(QLocale().toString(read.toLocalTime(), QLocale::ShortFormat)));
+            html +=
+                paragraph(CommissioningReport::tr("Read from the device at %1.")
+                              .arg(QLocale().toString(read.toLocalTime(), QLocale::ShortFormat)));
         }
         if (program.tracks.isEmpty()) return html + paragraph(CommissioningReport::tr("No cams."));
         const int outputs = m_workspace.info().outputs;
@@ -197,9 +230,12 @@ private:
             const QString resource = QStringLiteral("diagram-%1-%2.png").arg(number).arg(first);
             m_document.addResource(QTextDocument::ImageResource, QUrl(resource),
                                    printDiagram(m_cams, number, first, last, kDiagramWidth));
-            html += QStringLiteral("<p><img src='%1' width='%2'></p>").arg(resource).arg(kDiagramShownWidth);
+            html += QStringLiteral("<p><img src='%1' width='%2'></p>")
+                        .arg(resource)
+                        .arg(kDiagramShownWidth);
         }
-        QString rows = headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Cams (on–off)")});
+        QString rows = headerRow(
+            {CommissioningReport::tr("Output"), CommissioningReport::tr("Cams (on–off)")});
         for (int output = 1; output <= outputs; ++output) {
             const Track track = m_cams.track(number, output);
             const std::optional<Track> device = m_cams.deviceTrack(number, output);
@@ -215,12 +251,15 @@ private:
         QString html = heading(CommissioningReport::tr("Users")) + source(ProjectPart::Users);
         if (m_workspace.users().isEmpty() && m_workspace.deletedUserNumbers().isEmpty())
             return html + paragraph(CommissioningReport::tr("No users."));
-        html += paragraph(CommissioningReport::tr("User numbers are access codes: they are not printed."));
-        QString rows = headerRow({CommissioningReport::tr("Name"), CommissioningReport::tr("Number"),
-                                  CommissioningReport::tr("Rights")});
+        html += paragraph(
+            CommissioningReport::tr("User numbers are access codes: they are not printed."));
+        QString rows =
+            headerRow({CommissioningReport::tr("Name"), CommissioningReport::tr("Number"),
+                       CommissioningReport::tr("Rights")});
         for (int i = 0; i < m_workspace.users().size(); ++i) {
             const User& user = m_workspace.users().at(i).user;
-            const QString name = m_workspace.userChanged(i) ? changedMarker() + user.name : user.name;
+            const QString name =
+                m_workspace.userChanged(i) ? changedMarker() + user.name : user.name;
             rows += row({name, user.maskedNumber(), UsersModel::rightsText(user.rights)});
         }
         for (const QString& number : m_workspace.deletedUserNumbers()) {
@@ -232,24 +271,29 @@ private:
     }
 
     QString plc() const {
-        QString html = heading(CommissioningReport::tr("PLC networks")) + source(ProjectPart::PlcNetworks);
+        QString html =
+            heading(CommissioningReport::tr("PLC networks")) + source(ProjectPart::PlcNetworks);
         const auto& networks = m_workspace.plcNetworks();
-        if (networks.isEmpty()) return html + paragraph(CommissioningReport::tr("No PLC networks read or edited."));
-        QString rows = headerRow({CommissioningReport::tr("Network"), CommissioningReport::tr("Value"),
-                                  CommissioningReport::tr("Reset"), CommissioningReport::tr("Symbols by path")});
+        if (networks.isEmpty())
+            return html + paragraph(CommissioningReport::tr("No PLC networks read or edited."));
+        QString rows = headerRow(
+            {CommissioningReport::tr("Network"), CommissioningReport::tr("Value"),
+             CommissioningReport::tr("Reset"), CommissioningReport::tr("Symbols by path")});
         for (auto it = networks.cbegin(); it != networks.cend(); ++it) {
             QStringList paths;
             for (int path = 0; path < PlcNetwork::kPaths; ++path) {
                 QStringList symbols;
                 for (int i = 0; i < PlcNetwork::kSymbolsPerPath; ++i) {
-                    const QString symbol = plcsymbol::display(it->symbols[path * PlcNetwork::kSymbolsPerPath + i]);
+                    const QString symbol =
+                        plcsymbol::display(it->symbols[path * PlcNetwork::kSymbolsPerPath + i]);
                     symbols << (symbol.isEmpty() ? QStringLiteral("·") : symbol);
                 }
                 paths << symbols.join(QLatin1Char(' '));
             }
             const QString name = PlcPage::networkName(it->area, it->number);
             rows += row({m_workspace.isPlcNetworkChanged(it.key()) ? changedMarker() + name : name,
-                         QString::number(it->value), plcsymbol::editText(it->reset), paths.join(QStringLiteral(" | "))});
+                         QString::number(it->value), plcsymbol::editText(it->reset),
+                         paths.join(QStringLiteral(" | "))});
         }
         return html + table(rows);
     }
@@ -271,7 +315,8 @@ Status CommissioningReport::write(const QString& path, const Workspace& workspac
     // QPdfWriter writes straight into its target: render into a QSaveFile.
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return Error::invalidData(tr("Cannot write the report to %1: %2").arg(path, file.errorString()));
+        return Error::invalidData(
+            tr("Cannot write the report to %1: %2").arg(path, file.errorString()));
     {
         QPdfWriter writer(&file);
         writer.setPageSize(QPageSize(QPageSize::A4));
@@ -282,7 +327,8 @@ Status CommissioningReport::write(const QString& path, const Workspace& workspac
         document.print(&writer);
     }
     if (!file.commit())
-        return Error::invalidData(tr("Cannot write the report to %1: %2").arg(path, file.errorString()));
+        return Error::invalidData(
+            tr("Cannot write the report to %1: %2").arg(path, file.errorString()));
     return success();
 }
 

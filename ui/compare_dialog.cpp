@@ -29,8 +29,8 @@ QString timeText(const QDateTime& utc) {
 }
 }  // namespace
 
-CompareDialog::CompareDialog(DeviceSession* session, Workspace* workspace, const QList<SectionPage*>& pages,
-                             QWidget* parent)
+CompareDialog::CompareDialog(DeviceSession* session, Workspace* workspace,
+                             const QList<SectionPage*>& pages, QWidget* parent)
     : QDialog(parent),
       m_session(session),
       m_workspace(workspace),
@@ -98,12 +98,12 @@ void CompareDialog::refresh() {
     if (m_readJob != 0) return;
     if (!m_session->isOnline()) {
         const QDateTime read = m_workspace->lastReadTime();
-        m_source->setText(read.isValid()
-                              ? tr("Not connected: compared with the device values read at %1. The "
-                                   "device may have changed since.")
-                                    .arg(timeText(read))
-                              : tr("Not connected, and nothing was read from a device: every edited "
-                                   "item is listed as \"not read\"."));
+        m_source->setText(
+            read.isValid() ? tr("Not connected: compared with the device values read at %1. The "
+                                "device may have changed since.")
+                                 .arg(timeText(read))
+                           : tr("Not connected, and nothing was read from a device: every edited "
+                                "item is listed as \"not read\"."));
         showDifferences();
         setBusy(false);
         Q_EMIT compared();
@@ -121,7 +121,8 @@ void CompareDialog::refresh() {
         [](comm::CamConDevice& device, comm::JobContext& job) -> Result<usecases::ReadEverything> {
             const Result<DeviceInfo> identity = device.readInfo();
             if (!identity) return identity.error();
-            return usecases::readEverything(device, identity.value(), usecases::UseCaseProgress::of(job));
+            return usecases::readEverything(device, identity.value(),
+                                            usecases::UseCaseProgress::of(job));
         },
         [this, workspace](Result<usecases::ReadEverything> result) {
             m_readJob = 0;
@@ -133,16 +134,20 @@ void CompareDialog::refresh() {
                          : tr("The device could not be read: %1").arg(result.error().message)) +
                     QLatin1Char(' ') +
                     (read.isValid() ? tr("Shown: the device values read at %1.").arg(timeText(read))
-                                    : tr("Nothing was read from the device: edited items are listed as \"not read\".")));
+                                    : tr("Nothing was read from the device: edited items are "
+                                         "listed as \"not read\".")));
             } else {
                 // Compare never replaces an edit: edited items keep theirs,
                 // the rest follows the device.
                 m_deviceChanges = deviceChanges(*workspace, result->project);
                 mergeIncoming(*workspace, result->project, ValueSource::Device,
-                              {EditSection::Cams, EditSection::OutputSettings, EditSection::Settings,
-                               EditSection::Users, EditSection::Plc});
-                QString text = tr("Device values read at %1.").arg(timeText(QDateTime::currentDateTimeUtc()));
-                if (!result->skipped.isEmpty()) text += QLatin1Char(' ') + tr("Not read: %1").arg(result->skipped.join(QLatin1Char(' ')));
+                              {EditSection::Cams, EditSection::OutputSettings,
+                               EditSection::Settings, EditSection::Users, EditSection::Plc});
+                QString text =
+                    tr("Device values read at %1.").arg(timeText(QDateTime::currentDateTimeUtc()));
+                if (!result->skipped.isEmpty())
+                    text += QLatin1Char(' ') +
+                            tr("Not read: %1").arg(result->skipped.join(QLatin1Char(' ')));
                 m_source->setText(text);
             }
             showDifferences();
@@ -159,7 +164,8 @@ void CompareDialog::showDifferences() {
     m_tree->clear();
     if (!m_deviceChanges.isEmpty()) {
         auto* section = new QTreeWidgetItem(
-            m_tree, {tr("Changed on the device since it was last read (%1)").arg(m_deviceChanges.size())});
+            m_tree,
+            {tr("Changed on the device since it was last read (%1)").arg(m_deviceChanges.size())});
         for (const QString& line : m_deviceChanges) {
             auto* item = new QTreeWidgetItem(section, {line});
             item->setFirstColumnSpanned(true);
@@ -171,8 +177,8 @@ void CompareDialog::showDifferences() {
         const QList<SectionDifference> differences = page->differences();
         if (differences.isEmpty()) continue;
         count += int(differences.size());
-        auto* section =
-            new QTreeWidgetItem(m_tree, {tr("%1 (%2)").arg(page->sectionTitle()).arg(differences.size())});
+        auto* section = new QTreeWidgetItem(
+            m_tree, {tr("%1 (%2)").arg(page->sectionTitle()).arg(differences.size())});
         section->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsAutoTristate);
         section->setCheckState(0, Qt::Checked);
         for (const SectionDifference& d : differences) {
@@ -185,7 +191,8 @@ void CompareDialog::showDifferences() {
         section->setExpanded(true);
     }
     if (count == 0) {
-        auto* none = new QTreeWidgetItem(m_tree, {tr("No differences: the device holds what you see.")});
+        auto* none =
+            new QTreeWidgetItem(m_tree, {tr("No differences: the device holds what you see.")});
         none->setFirstColumnSpanned(true);
     }
 }
@@ -213,13 +220,21 @@ void CompareDialog::checkOnly(const QList<WorkspaceItem>& items) {
     }
 }
 
-void CompareDialog::writeChecked() { write(true); }
+void CompareDialog::writeChecked() {
+    write(true);
+}
 
-void CompareDialog::writeAll() { write(false); }
+void CompareDialog::writeAll() {
+    write(false);
+}
 
-QString CompareDialog::reportText() const { return m_report->toPlainText(); }
+QString CompareDialog::reportText() const {
+    return m_report->toPlainText();
+}
 
-QString CompareDialog::sourceText() const { return m_source->text(); }
+QString CompareDialog::sourceText() const {
+    return m_source->text();
+}
 
 void CompareDialog::write(bool onlyChecked) {
     QList<WorkspaceItem> items;
@@ -242,7 +257,8 @@ void CompareDialog::write(bool onlyChecked) {
     m_report->setPlainText(tr("Writing…"));
     writeToDevice(this, m_session, m_workspace, items, [this](const WriteResult& result) {
         const QString details = writeDetails(result);
-        m_report->setPlainText(writeSummary(result) + (details.isEmpty() ? QString() : QLatin1Char('\n') + details));
+        m_report->setPlainText(writeSummary(result) +
+                               (details.isEmpty() ? QString() : QLatin1Char('\n') + details));
         m_deviceChanges.clear();
         showDifferences();
         setBusy(false);

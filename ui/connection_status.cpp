@@ -20,7 +20,6 @@ bool silent(DeviceSession* session) {
 }
 }  // namespace
 
-
 ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : QFrame(parent),
       m_session(session),

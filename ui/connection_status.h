@@ -57,5 +57,4 @@ private:
     QString m_stateText;
 };
 
-
 }  // namespace cambench

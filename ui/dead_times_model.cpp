@@ -11,7 +11,9 @@
 namespace cambench {
 
 namespace {
-QString milliseconds(qint32 tenths) { return QLocale().toString(tenths / 10.0, 'f', 1); }
+QString milliseconds(qint32 tenths) {
+    return QLocale().toString(tenths / 10.0, 'f', 1);
+}
 }  // namespace
 
 DeadTimesModel::DeadTimesModel(Workspace* workspace, QObject* parent)

@@ -85,7 +85,9 @@ void DeadTimesPage::readFromDevice() {
     });
 }
 
-int DeadTimesPage::itemCount() const { return m_workspace->info().deadTimeOutputs + m_workspace->info().outputs; }
+int DeadTimesPage::itemCount() const {
+    return m_workspace->info().deadTimeOutputs + m_workspace->info().outputs;
+}
 
 QList<SectionDifference> DeadTimesPage::differences() const {
     QList<SectionDifference> list;

@@ -63,7 +63,8 @@ QString DeviceSession::stateText() const {
         case comm::ConnectionState::Connecting:
             return tr("Connecting to %1…").arg(m_connection.port);
         case comm::ConnectionState::Connected:
-            return (m_connection.port == QLatin1String("sim") || m_connection.port.startsWith(QLatin1String("sim:")))
+            return (m_connection.port == QLatin1String("sim") ||
+                    m_connection.port.startsWith(QLatin1String("sim:")))
                        ? tr("Connected to the simulated device")
                        : tr("Connected to %1").arg(m_connection.port);
         case comm::ConnectionState::Lost:

@@ -18,7 +18,8 @@ bool knownAfter(usecases::WriteState state) {
     return state != usecases::WriteState::Unknown && state != usecases::WriteState::NotSent;
 }
 
-void applyTracks(CamDocument& cams, const PlannedWrite& planned, const usecases::WriteReport& report) {
+void applyTracks(CamDocument& cams, const PlannedWrite& planned,
+                 const usecases::WriteReport& report) {
     // Programs never read are written whole; their device copy is known
     // afterwards only when every one of their items is.
     QMap<int, CamProgram> assembled;
@@ -43,11 +44,13 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned, const usecases:
                 cams.setDeviceTrack(program, *outcome.actual);
             } else if (!knownAfter(outcome.state)) {
                 // What the device holds is not known any more: say so.
-                if (outcome.state == usecases::WriteState::Unknown) cams.forgetDeviceProgram(program);
+                if (outcome.state == usecases::WriteState::Unknown)
+                    cams.forgetDeviceProgram(program);
             }
         } else if (outcome.actual) {
             assembled[program].number = program;
-            if (!outcome.actual->cams.isEmpty()) assembled[program].tracks.insert(outcome.actual->output, *outcome.actual);
+            if (!outcome.actual->cams.isEmpty())
+                assembled[program].tracks.insert(outcome.actual->output, *outcome.actual);
         } else {
             incomplete.insert(program);
         }
@@ -59,7 +62,8 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned, const usecases:
 
 }  // namespace
 
-void applyWriteReport(Workspace& workspace, const PlannedWrite& planned, const usecases::WriteReport& report) {
+void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
+                      const usecases::WriteReport& report) {
     const usecases::WritePlan& plan = planned.plan;
     CamDocument& cams = *workspace.cams();
     for (const auto& outcome : report.settings) {
@@ -67,25 +71,30 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned, const u
     }
     applyTracks(cams, planned, report);
     for (int i = 0; i < plan.deadTimes.size() && i < report.deadTimes.size(); ++i) {
-        if (report.deadTimes.at(i).actual) cams.setDeviceDeadTime(plan.deadTimes.at(i).output, *report.deadTimes.at(i).actual);
+        if (report.deadTimes.at(i).actual)
+            cams.setDeviceDeadTime(plan.deadTimes.at(i).output, *report.deadTimes.at(i).actual);
     }
     for (int i = 0; i < plan.outputNames.size() && i < report.outputNames.size(); ++i) {
         if (report.outputNames.at(i).actual)
-            cams.setDeviceOutputName(plan.outputNames.at(i).number, *report.outputNames.at(i).actual);
+            cams.setDeviceOutputName(plan.outputNames.at(i).number,
+                                     *report.outputNames.at(i).actual);
     }
     // Users last but one: each changes the numbers the following ones are found by.
     for (int i = 0; i < plan.users.size() && i < report.users.size(); ++i) {
         const auto& outcome = report.users.at(i);
         if (!knownAfter(outcome.state) || !outcome.actual) continue;
-        workspace.setDeviceUser(planned.userIndex.value(i, -1), plan.users.at(i).deviceNumber, *outcome.actual);
+        workspace.setDeviceUser(planned.userIndex.value(i, -1), plan.users.at(i).deviceNumber,
+                                *outcome.actual);
     }
     for (int i = 0; i < plan.plcNetworks.size() && i < report.plcNetworks.size(); ++i) {
-        if (report.plcNetworks.at(i).actual) workspace.setDevicePlcNetwork(*report.plcNetworks.at(i).actual);
+        if (report.plcNetworks.at(i).actual)
+            workspace.setDevicePlcNetwork(*report.plcNetworks.at(i).actual);
     }
 }
 
 quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* workspace,
-                      const QList<WorkspaceItem>& items, std::function<void(const WriteResult&)> done) {
+                      const QList<WorkspaceItem>& items,
+                      std::function<void(const WriteResult&)> done) {
     const PlannedWrite planned = planForItems(*workspace, items);
     const usecases::WritePlan plan = planned.plan;
     return session->run<usecases::WriteReport>(
@@ -94,7 +103,8 @@ quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* works
             // The device on the line now, not the one the edits were made for.
             const Result<DeviceInfo> identity = device.readInfo();
             if (!identity) return identity.error();
-            return usecases::writeItems(device, identity.value(), plan, usecases::UseCaseProgress::of(job));
+            return usecases::writeItems(device, identity.value(), plan,
+                                        usecases::UseCaseProgress::of(job));
         },
         [workspace, planned, done](WriteResult result) {
             if (result) applyWriteReport(*workspace, planned, result.value());
@@ -112,7 +122,8 @@ QString writeDetails(const WriteResult& result) {
     QStringList notWritten;
     QStringList written;
     for (const usecases::OutcomeLine& line : result->lines()) {
-        const bool ok = line.state == usecases::WriteState::Written || line.state == usecases::WriteState::Unchanged;
+        const bool ok = line.state == usecases::WriteState::Written ||
+                        line.state == usecases::WriteState::Unchanged;
         (ok ? written : notWritten) << line.text;
     }
     QString text = notWritten.join(QLatin1Char('\n'));
@@ -125,7 +136,8 @@ QString writeDetails(const WriteResult& result) {
 
 void presentWriteResult(QWidget* parent, const QString& title, const WriteResult& result) {
     if (result && result->complete()) return;
-    ReportDialog::present(parent, QMessageBox::Warning, title, writeSummary(result), writeDetails(result));
+    ReportDialog::present(parent, QMessageBox::Warning, title, writeSummary(result),
+                          writeDetails(result));
 }
 
 }  // namespace cambench

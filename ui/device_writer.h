@@ -34,7 +34,8 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
 // when it does not fit. The report is applied to the workspace before
 // `done` gets it.
 quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* workspace,
-                      const QList<WorkspaceItem>& items, std::function<void(const WriteResult&)> done);
+                      const QList<WorkspaceItem>& items,
+                      std::function<void(const WriteResult&)> done);
 
 // For a person: one line for the status bar ...
 QString writeSummary(const WriteResult& result);

@@ -17,7 +17,8 @@ IncomingParts partsOf(const Project& incoming, ValueSource source) {
     IncomingParts parts;
     const ProjectReadTimes& read = incoming.readAt;
     for (const CamProgram& program : incoming.programs) {
-        if (source == ValueSource::File || read.programs.contains(program.number)) parts.programs << program.number;
+        if (source == ValueSource::File || read.programs.contains(program.number))
+            parts.programs << program.number;
     }
     if (source == ValueSource::File) {
         parts.outputSettings = true;
@@ -26,8 +27,8 @@ IncomingParts partsOf(const Project& incoming, ValueSource source) {
         parts.plc = !incoming.plcNetworks.isEmpty();
         return parts;
     }
-    parts.outputSettings =
-        read.parts.contains(ProjectPart::DeadTimes) || read.parts.contains(ProjectPart::OutputNames);
+    parts.outputSettings = read.parts.contains(ProjectPart::DeadTimes) ||
+                           read.parts.contains(ProjectPart::OutputNames);
     parts.settings = read.parts.contains(ProjectPart::Settings);
     parts.users = read.parts.contains(ProjectPart::Users);
     parts.plc = read.parts.contains(ProjectPart::PlcNetworks);
@@ -38,10 +39,12 @@ QMap<EditSection, int> editsReplacedBy(const Workspace& workspace, const Incomin
     QMap<EditSection, int> edits;
     const CamDocument* cams = workspace.cams();
     int camEdits = 0;
-    for (const TrackDifference& d : cams->differences()) camEdits += parts.programs.contains(d.program) ? 1 : 0;
+    for (const TrackDifference& d : cams->differences())
+        camEdits += parts.programs.contains(d.program) ? 1 : 0;
     for (int program : parts.programs) {
         const std::optional<CamProgram> device = cams->deviceProgram(program);
-        if (cams->programEdited(program) && cams->programName(program) != (device ? device->name : QString()))
+        if (cams->programEdited(program) &&
+            cams->programName(program) != (device ? device->name : QString()))
             ++camEdits;
     }
     if (camEdits > 0) edits.insert(EditSection::Cams, camEdits);
@@ -49,7 +52,8 @@ QMap<EditSection, int> editsReplacedBy(const Workspace& workspace, const Incomin
         edits.insert(EditSection::OutputSettings, workspace.outputSettingsEditCount());
     if (parts.settings && !workspace.changedSettings().isEmpty())
         edits.insert(EditSection::Settings, int(workspace.changedSettings().size()));
-    if (parts.users && workspace.userEditCount() > 0) edits.insert(EditSection::Users, workspace.userEditCount());
+    if (parts.users && workspace.userEditCount() > 0)
+        edits.insert(EditSection::Users, workspace.userEditCount());
     if (parts.plc && !workspace.changedPlcNetworks().isEmpty())
         edits.insert(EditSection::Plc, int(workspace.changedPlcNetworks().size()));
     return edits;
@@ -72,7 +76,8 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
         stamp(workspace, read, ProjectPart::Device);
     }
     if (parts.settings) {
-        workspace.mergeSettings(incoming.settings, source, keepEdits.contains(EditSection::Settings));
+        workspace.mergeSettings(incoming.settings, source,
+                                keepEdits.contains(EditSection::Settings));
         if (fromDevice) stamp(workspace, read, ProjectPart::Settings);
     }
     for (const CamProgram& program : incoming.programs) {
@@ -93,16 +98,17 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
         if (fromDevice) stamp(workspace, read, ProjectPart::Users);
     }
     if (parts.plc) {
-        workspace.mergePlcNetworks(incoming.plcNetworks, source, keepEdits.contains(EditSection::Plc));
+        workspace.mergePlcNetworks(incoming.plcNetworks, source,
+                                   keepEdits.contains(EditSection::Plc));
         if (fromDevice) stamp(workspace, read, ProjectPart::PlcNetworks);
     }
 }
 
 namespace {
 
-
 QString change(const QString& item, const QString& before, const QString& after) {
-    return QCoreApplication::translate("cambench::DeviceChanges", "%1: %2 → %3").arg(item, before, after);
+    return QCoreApplication::translate("cambench::DeviceChanges", "%1: %2 → %3")
+        .arg(item, before, after);
 }
 
 }  // namespace
@@ -121,25 +127,34 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
             const Track old = before->tracks.value(output);
             const Track now = program.tracks.value(output);
             if (old.cams != now.cams)
-                changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Program %1, output %2")
-                                      .arg(program.number)
-                                      .arg(output),
-                                  camsText(old), camsText(now));
+                changes << change(
+                    QCoreApplication::translate("cambench::DeviceChanges", "Program %1, output %2")
+                        .arg(program.number)
+                        .arg(output),
+                    camsText(old), camsText(now));
         }
         if (before->name != program.name)
-            changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Program %1 name").arg(program.number),
-                              before->name, program.name);
+            changes << change(
+                QCoreApplication::translate("cambench::DeviceChanges", "Program %1 name")
+                    .arg(program.number),
+                before->name, program.name);
     }
     if (parts.outputSettings && workspace.outputSettingsKnown()) {
         for (int output = 1; output <= workspace.info().outputs; ++output) {
             const qint32 oldTime = workspace.deviceDeadTime(output);
             if (incoming.deadTimes.contains(output) && incoming.deadTimes.value(output) != oldTime)
-                changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Output %1 dead time").arg(output),
-                                  QString::number(oldTime / 10.0, 'f', 1), QString::number(incoming.deadTimes.value(output) / 10.0, 'f', 1));
+                changes << change(
+                    QCoreApplication::translate("cambench::DeviceChanges", "Output %1 dead time")
+                        .arg(output),
+                    QString::number(oldTime / 10.0, 'f', 1),
+                    QString::number(incoming.deadTimes.value(output) / 10.0, 'f', 1));
             const QString oldName = workspace.deviceOutputName(output);
-            if (incoming.names.outputs.contains(output) && incoming.names.outputs.value(output) != oldName)
-                changes << change(QCoreApplication::translate("cambench::DeviceChanges", "Output %1 name").arg(output), oldName,
-                                  incoming.names.outputs.value(output));
+            if (incoming.names.outputs.contains(output) &&
+                incoming.names.outputs.value(output) != oldName)
+                changes << change(
+                    QCoreApplication::translate("cambench::DeviceChanges", "Output %1 name")
+                        .arg(output),
+                    oldName, incoming.names.outputs.value(output));
         }
     }
     if (parts.settings && workspace.settingsKnown()) {
@@ -147,24 +162,29 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
             const QVariant old = workspace.deviceSettings().value(it.key());
             const SettingSpec* spec = findSetting(it.key());
             if (spec && old.isValid() && old != it.value())
-                changes << change(SettingField::labelText(*spec), SettingField::displayText(*spec, old),
+                changes << change(SettingField::labelText(*spec),
+                                  SettingField::displayText(*spec, old),
                                   SettingField::displayText(*spec, it.value()));
         }
     }
     if (parts.users && workspace.usersKnown() && !(workspace.deviceUsers() == incoming.users))
-        changes << QCoreApplication::translate("cambench::DeviceChanges", "Users: the device's list of users changed.");
+        changes << QCoreApplication::translate("cambench::DeviceChanges",
+                                               "Users: the device's list of users changed.");
     if (parts.plc) {
         for (const PlcNetwork& network : incoming.plcNetworks) {
             const int key = Workspace::plcKey(network.area, network.number);
-            if (workspace.devicePlcNetworks().contains(key) && !(workspace.devicePlcNetworks().value(key) == network))
-                changes << QCoreApplication::translate("cambench::DeviceChanges", "PLC network %1 changed.")
+            if (workspace.devicePlcNetworks().contains(key) &&
+                !(workspace.devicePlcNetworks().value(key) == network))
+                changes << QCoreApplication::translate("cambench::DeviceChanges",
+                                                       "PLC network %1 changed.")
                                .arg(PlcPage::networkName(network.area, network.number));
         }
     }
     return changes;
 }
 
-bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming, ValueSource source) {
+bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming,
+                  ValueSource source) {
     const QMap<EditSection, int> edits = editsReplacedBy(workspace, partsOf(incoming, source));
     QSet<EditSection> keep;
     if (!edits.isEmpty()) {

@@ -44,6 +44,7 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming);
 
 // mergeIncoming, after asking (ReplaceEditsDialog) when edits would be
 // replaced. False: the user cancelled, and nothing changed.
-bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming, ValueSource source);
+bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming,
+                  ValueSource source);
 
 }  // namespace cambench

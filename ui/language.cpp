@@ -26,7 +26,8 @@ QTranslator& qtTranslator() {
 }  // namespace
 
 QString systemLanguage() {
-    return QLocale::system().language() == QLocale::German ? QStringLiteral("de") : QStringLiteral("en");
+    return QLocale::system().language() == QLocale::German ? QStringLiteral("de")
+                                                           : QStringLiteral("en");
 }
 
 bool setLanguage(const QString& language) {
@@ -45,11 +46,14 @@ bool setLanguage(const QString& language) {
                             QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(&qtTranslator());
     g_language = name;
-    QLocale::setDefault(name == QLatin1String("de") ? QLocale(QLocale::German, QLocale::Germany)
-                                                    : QLocale(QLocale::English, QLocale::UnitedStates));
+    QLocale::setDefault(name == QLatin1String("de")
+                            ? QLocale(QLocale::German, QLocale::Germany)
+                            : QLocale(QLocale::English, QLocale::UnitedStates));
     return true;
 }
 
-QString currentLanguage() { return g_language; }
+QString currentLanguage() {
+    return g_language;
+}
 
 }  // namespace cambench

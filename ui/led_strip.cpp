@@ -25,9 +25,13 @@ void LedStrip::setCount(int count) {
     setStates(states);
 }
 
-int LedStrip::columns(int width) const { return std::max(1, std::min(16, width / kCell)); }
+int LedStrip::columns(int width) const {
+    return std::max(1, std::min(16, width / kCell));
+}
 
-QSize LedStrip::sizeHint() const { return {16 * kCell, heightForWidth(16 * kCell)}; }
+QSize LedStrip::sizeHint() const {
+    return {16 * kCell, heightForWidth(16 * kCell)};
+}
 
 int LedStrip::heightForWidth(int width) const {
     const int cols = columns(width);

@@ -36,7 +36,8 @@ LineBackupDialog::LineBackupDialog(DeviceSession* session, QWidget* parent)
       m_report(new QPlainTextEdit) {
     setWindowTitle(tr("Back up all devices on this line"));
     m_directory->setText(QDir::home().filePath(
-        QStringLiteral("line-backup-%1").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")))));
+        QStringLiteral("line-backup-%1")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")))));
     m_devices->setPlaceholderText(tr("empty: scan the line for devices 0 … 63"));
     auto* browse = new QPushButton(tr("Browse…"));
     auto* folderRow = new QHBoxLayout;
@@ -57,9 +58,10 @@ LineBackupDialog::LineBackupDialog(DeviceSession* session, QWidget* parent)
     m_report->setReadOnly(true);
     m_report->setMaximumHeight(fontMetrics().lineSpacing() * 8);
 
-    auto* intro = new QLabel(tr("Each device of the line is backed up into its own image in the folder, "
-                                "with a manifest of what was saved. A device that fails is noted and "
-                                "the others are still backed up."));
+    auto* intro =
+        new QLabel(tr("Each device of the line is backed up into its own image in the folder, "
+                      "with a manifest of what was saved. A device that fails is noted and "
+                      "the others are still backed up."));
     intro->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     buttons->addButton(m_start, QDialogButtonBox::ActionRole);
@@ -74,7 +76,8 @@ LineBackupDialog::LineBackupDialog(DeviceSession* session, QWidget* parent)
     layout->addWidget(buttons);
 
     connect(browse, &QPushButton::clicked, this, [this] {
-        const QString directory = QFileDialog::getExistingDirectory(this, windowTitle(), m_directory->text());
+        const QString directory =
+            QFileDialog::getExistingDirectory(this, windowTitle(), m_directory->text());
         if (!directory.isEmpty()) m_directory->setText(directory);
     });
     connect(m_start, &QPushButton::clicked, this, &LineBackupDialog::start);
@@ -87,10 +90,18 @@ LineBackupDialog::LineBackupDialog(DeviceSession* session, QWidget* parent)
     resize(640, 520);
 }
 
-void LineBackupDialog::setDirectory(const QString& directory) { m_directory->setText(directory); }
-void LineBackupDialog::setDevices(const QString& devices) { m_devices->setText(devices); }
-void LineBackupDialog::setResume(bool resume) { m_resume->setChecked(resume); }
-QString LineBackupDialog::reportText() const { return m_report->toPlainText(); }
+void LineBackupDialog::setDirectory(const QString& directory) {
+    m_directory->setText(directory);
+}
+void LineBackupDialog::setDevices(const QString& devices) {
+    m_devices->setText(devices);
+}
+void LineBackupDialog::setResume(bool resume) {
+    m_resume->setChecked(resume);
+}
+QString LineBackupDialog::reportText() const {
+    return m_report->toPlainText();
+}
 
 void LineBackupDialog::start() {
     if (m_job != 0) return;
@@ -101,16 +112,18 @@ void LineBackupDialog::start() {
         bool ok = false;
         const int device = part.trimmed().toInt(&ok);
         if (!ok || device < 0 || device > 63 || options.devices.contains(device)) {
-            m_report->setPlainText(tr("\"%1\" is not a device number 0 … 63 (or given twice); write the "
-                                      "numbers with commas, e.g. 0, 5, 7.")
-                                       .arg(part.trimmed()));
+            m_report->setPlainText(
+                tr("\"%1\" is not a device number 0 … 63 (or given twice); write the "
+                   "numbers with commas, e.g. 0, 5, 7.")
+                    .arg(part.trimmed()));
             return;
         }
         options.devices << device;
     }
-    options.lineDescription = tr("%1, %2, %3 baud")
-                                  .arg(m_session->connection().port, m_session->protocol().protocolId())
-                                  .arg(m_session->connection().serial.baud);
+    options.lineDescription =
+        tr("%1, %2, %3 baud")
+            .arg(m_session->connection().port, m_session->protocol().protocolId())
+            .arg(m_session->connection().serial.baud);
     while (QLayoutItem* item = m_barGrid->takeAt(0)) {
         delete item->widget();
         delete item;
@@ -118,7 +131,8 @@ void LineBackupDialog::start() {
     m_bars.clear();
     // Known devices get their bar now; scanned ones as the scan finds them.
     for (int device : options.devices) showDeviceProgress(device, 0, 1, tr("waiting"));
-    m_report->setPlainText(options.devices.isEmpty() ? tr("Scanning the line…") : tr("Backing up…"));
+    m_report->setPlainText(options.devices.isEmpty() ? tr("Scanning the line…")
+                                                     : tr("Backing up…"));
     m_start->setEnabled(false);
     m_cancel->setEnabled(true);
     const int addressed = m_session->protocol().device();
@@ -127,8 +141,8 @@ void LineBackupDialog::start() {
         this, tr("Back up the line"),
         [options, self](comm::CamConDevice& device, comm::JobContext& job) {
             // Per device, on the worker thread: hand it to the dialog's thread.
-            const usecases::DeviceProgressFn perDevice = [self](int number, qint64 done, qint64 total,
-                                                                const QString& text) {
+            const usecases::DeviceProgressFn perDevice = [self](int number, qint64 done,
+                                                                qint64 total, const QString& text) {
                 QMetaObject::invokeMethod(
                     self,
                     [self, number, done, total, text] {
@@ -136,7 +150,8 @@ void LineBackupDialog::start() {
                     },
                     Qt::QueuedConnection);
             };
-            return usecases::backupLine(device, options, usecases::UseCaseProgress::of(job), perDevice);
+            return usecases::backupLine(device, options, usecases::UseCaseProgress::of(job),
+                                        perDevice);
         },
         [this, addressed](Result<LineManifest> manifest) {
             m_job = 0;
@@ -146,7 +161,8 @@ void LineBackupDialog::start() {
         });
 }
 
-void LineBackupDialog::showDeviceProgress(int device, qint64 done, qint64 total, const QString& text) {
+void LineBackupDialog::showDeviceProgress(int device, qint64 done, qint64 total,
+                                          const QString& text) {
     QProgressBar* bar = m_bars.value(device);
     if (!bar) {
         bar = new QProgressBar;
@@ -184,13 +200,14 @@ void LineBackupDialog::showManifest(const Result<LineManifest>& manifest) {
                      : tr("Device %1: NOT saved: %2").arg(entry.device).arg(entry.message));
     }
     const int failed = int(manifest->devices.size()) - saved;
-    lines.prepend(failed == 0 ? tr("All %n device(s) saved into %1.", nullptr, saved).arg(m_directory->text())
-                              : tr("%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 "
-                                   "says the same.")
-                                    .arg(saved)
-                                    .arg(manifest->devices.size())
-                                    .arg(failed)
-                                    .arg(m_directory->text()));
+    lines.prepend(
+        failed == 0 ? tr("All %n device(s) saved into %1.", nullptr, saved).arg(m_directory->text())
+                    : tr("%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 "
+                         "says the same.")
+                          .arg(saved)
+                          .arg(manifest->devices.size())
+                          .arg(failed)
+                          .arg(m_directory->text()));
     m_report->setPlainText(lines.join(QLatin1Char('\n')));
     Q_EMIT finished(failed == 0 && saved > 0);
 }

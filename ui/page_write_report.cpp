@@ -29,12 +29,13 @@ QString PageWriteReport::summary() const {
 QString PageWriteReport::details() const {
     QString text = summary();
     if (!failures.isEmpty()) {
-        text += QLatin1Char('\n') +
-                QCoreApplication::translate(
-                    "PageWriteReport",
-                    "Not written, or not confirmed by the device (a reply may have been lost). Your "
-                    "edits stay on the page; Read from device shows what the device holds:") +
-                QLatin1Char('\n') + failures.join(QLatin1Char('\n'));
+        text +=
+            QLatin1Char('\n') +
+            QCoreApplication::translate(
+                "PageWriteReport",
+                "Not written, or not confirmed by the device (a reply may have been lost). Your "
+                "edits stay on the page; Read from device shows what the device holds:") +
+            QLatin1Char('\n') + failures.join(QLatin1Char('\n'));
     }
     return text;
 }

@@ -71,7 +71,8 @@ bool PlcMatrixModel::setData(const QModelIndex& index, const QVariant& value, in
 }
 
 Qt::ItemFlags PlcMatrixModel::flags(const QModelIndex& index) const {
-    return QAbstractTableModel::flags(index) | (index.isValid() ? Qt::ItemIsEditable : Qt::NoItemFlags);
+    return QAbstractTableModel::flags(index) |
+           (index.isValid() ? Qt::ItemIsEditable : Qt::NoItemFlags);
 }
 
 QVariant PlcMatrixModel::headerData(int section, Qt::Orientation orientation, int role) const {

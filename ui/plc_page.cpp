@@ -138,7 +138,9 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     showNetwork(PlcNetwork::O, 0);
 }
 
-QString PlcPage::refusalText() const { return m_refusal->isHidden() ? QString() : m_refusal->text(); }
+QString PlcPage::refusalText() const {
+    return m_refusal->isHidden() ? QString() : m_refusal->text();
+}
 
 void PlcPage::showNetwork(int area, int number) {
     m_updating = true;
@@ -183,21 +185,22 @@ void PlcPage::fillList() {
 void PlcPage::readNetwork() {
     const int area = m_model->area();
     const int number = m_model->number();
-    devicereads::readPlcNetwork(this, m_session, m_workspace, area, number,
-                                [this, area, number](const Status& status) {
-                                    if (status) {
-                                        Q_EMIT statusMessage(tr("%1 read.").arg(networkName(area, number)));
-                                    } else if (status.error().kind == ErrorKind::Cancelled) {
-                                        Q_EMIT statusMessage(status.error().message);
-                                    } else {
-                                        Q_EMIT statusMessage(tr("Reading %1 failed: %2")
-                                                                 .arg(networkName(area, number),
-                                                                      status.error().message));
-                                    }
-                                });
+    devicereads::readPlcNetwork(
+        this, m_session, m_workspace, area, number, [this, area, number](const Status& status) {
+            if (status) {
+                Q_EMIT statusMessage(tr("%1 read.").arg(networkName(area, number)));
+            } else if (status.error().kind == ErrorKind::Cancelled) {
+                Q_EMIT statusMessage(status.error().message);
+            } else {
+                Q_EMIT statusMessage(tr("Reading %1 failed: %2")
+                                         .arg(networkName(area, number), status.error().message));
+            }
+        });
 }
 
-int PlcPage::itemCount() const { return int(m_workspace->plcNetworks().size()); }
+int PlcPage::itemCount() const {
+    return int(m_workspace->plcNetworks().size());
+}
 
 QList<SectionDifference> PlcPage::differences() const {
     QList<SectionDifference> list;

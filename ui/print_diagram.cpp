@@ -27,8 +27,8 @@ QImage printDiagram(const CamDocument& cams, int program, int first, int last, i
     font.setPixelSize(20);
     painter.setFont(font);
     const QFontMetrics metrics(font);
-    const int labelWidth = metrics.horizontalAdvance(QStringLiteral("000 ")) +
-                           metrics.averageCharWidth() * 16;
+    const int labelWidth =
+        metrics.horizontalAdvance(QStringLiteral("000 ")) + metrics.averageCharWidth() * 16;
 
     DiagramLayout layout;
     layout.setAxis(cams.axis());
@@ -51,7 +51,8 @@ QImage printDiagram(const CamDocument& cams, int program, int first, int last, i
         painter.setPen(Qt::black);
         painter.drawLine(QPointF(x, plot.top() - 8), QPointF(x, plot.top()));
         const QString label = QString::number(tick);
-        painter.drawText(QPointF(x - metrics.horizontalAdvance(label) / 2.0, plot.top() - 10), label);
+        painter.drawText(QPointF(x - metrics.horizontalAdvance(label) / 2.0, plot.top() - 10),
+                         label);
     }
 
     for (int output = first; output <= last; ++output) {

@@ -7,7 +7,11 @@
 namespace cambench {
 
 ProgressPage::ProgressPage(QWidget* parent)
-    : QWizardPage(parent), m_what(new QLabel), m_bar(new QProgressBar), m_eta(new QLabel), m_report(new QLabel) {
+    : QWizardPage(parent),
+      m_what(new QLabel),
+      m_bar(new QProgressBar),
+      m_eta(new QLabel),
+      m_report(new QLabel) {
     m_report->setWordWrap(true);
     m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_what->setWordWrap(true);
@@ -36,13 +40,16 @@ void ProgressPage::setProgress(qint64 done, qint64 total) {
     if (m_total == Total::Exact) {
         m_eta->setText(etaText(m_clock.elapsed(), done, total));
     } else {
-        m_eta->setText(tr("%1 s so far. No time left is given: how much the device holds is not known "
-                          "before it is read.")
-                           .arg(m_clock.elapsed() / 1000));
+        m_eta->setText(
+            tr("%1 s so far. No time left is given: how much the device holds is not known "
+               "before it is read.")
+                .arg(m_clock.elapsed() / 1000));
     }
 }
 
-QString ProgressPage::etaLabelText() const { return m_eta->text(); }
+QString ProgressPage::etaLabelText() const {
+    return m_eta->text();
+}
 
 QString ProgressPage::etaText(qint64 elapsedMs, qint64 done, qint64 total) {
     if (done <= 0 || total <= done) return {};
@@ -63,6 +70,8 @@ void ProgressPage::finish(bool ok, const QString& report) {
     Q_EMIT completeChanged();
 }
 
-QString ProgressPage::reportText() const { return m_report->text(); }
+QString ProgressPage::reportText() const {
+    return m_report->text();
+}
 
 }  // namespace cambench

@@ -24,7 +24,8 @@ Project projectFromWorkspace(const Workspace& workspace) {
     project.names.outputs = cams->names().outputs;
     if (workspace.outputSettingsEditCount() == 0) {
         for (ProjectPart part : {ProjectPart::DeadTimes, ProjectPart::OutputNames}) {
-            if (read.parts.contains(part)) project.readAt.parts.insert(part, read.parts.value(part));
+            if (read.parts.contains(part))
+                project.readAt.parts.insert(part, read.parts.value(part));
         }
     }
     project.settings = workspace.settings();
@@ -35,7 +36,8 @@ Project projectFromWorkspace(const Workspace& workspace) {
         project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
     project.plcNetworks = workspace.plcNetworks().values();
     if (workspace.changedPlcNetworks().isEmpty() && read.parts.contains(ProjectPart::PlcNetworks))
-        project.readAt.parts.insert(ProjectPart::PlcNetworks, read.parts.value(ProjectPart::PlcNetworks));
+        project.readAt.parts.insert(ProjectPart::PlcNetworks,
+                                    read.parts.value(ProjectPart::PlcNetworks));
     return project;
 }
 

@@ -32,17 +32,20 @@ ReplaceEditsDialog::ReplaceEditsDialog(const QMap<EditSection, int>& edits, Valu
     setObjectName(QStringLiteral("replaceEditsDialog"));
     const bool device = source == ValueSource::Device;
     setWindowTitle(device ? tr("Values read from the device") : tr("Values from the project file"));
-    auto* intro = new QLabel(device ? tr("The device's values would replace edits that are not written yet. "
-                                         "For each section: keep your edits, or take the device's values?")
-                                    : tr("The project's values would replace edits that are not written yet. "
-                                         "For each section: keep your edits, or take the project's values?"));
+    auto* intro =
+        new QLabel(device ? tr("The device's values would replace edits that are not written yet. "
+                               "For each section: keep your edits, or take the device's values?")
+                          : tr("The project's values would replace edits that are not written yet. "
+                               "For each section: keep your edits, or take the project's values?"));
     intro->setWordWrap(true);
     auto* grid = new QGridLayout;
     int row = 0;
     for (auto it = edits.cbegin(); it != edits.cend(); ++it, ++row) {
-        auto* label = new QLabel(tr("%1: %n edit(s)", nullptr, it.value()).arg(sectionName(it.key())));
+        auto* label =
+            new QLabel(tr("%1: %n edit(s)", nullptr, it.value()).arg(sectionName(it.key())));
         auto* keep = new QRadioButton(tr("Keep my edits"));
-        auto* take = new QRadioButton(device ? tr("Take the device's values") : tr("Take the project's values"));
+        auto* take = new QRadioButton(device ? tr("Take the device's values")
+                                             : tr("Take the project's values"));
         keep->setChecked(true);
         auto* group = new QButtonGroup(this);
         group->addButton(keep);
@@ -53,9 +56,10 @@ ReplaceEditsDialog::ReplaceEditsDialog(const QMap<EditSection, int>& edits, Valu
         m_keep.insert(it.key(), keep);
         m_take.insert(it.key(), take);
     }
-    auto* note = new QLabel(device ? tr("Items you did not edit take the device's values either way. "
-                                        "Taking the device's cam programs can be undone (Edit → Undo).")
-                                   : tr("Items you did not edit take the project's values either way."));
+    auto* note =
+        new QLabel(device ? tr("Items you did not edit take the device's values either way. "
+                               "Taking the device's cam programs can be undone (Edit → Undo).")
+                          : tr("Items you did not edit take the project's values either way."));
     note->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Apply"));
@@ -78,7 +82,8 @@ QSet<EditSection> ReplaceEditsDialog::keptSections() const {
 }
 
 void ReplaceEditsDialog::choose(EditSection section, bool keepEdits) {
-    if (QRadioButton* button = (keepEdits ? m_keep : m_take).value(section)) button->setChecked(true);
+    if (QRadioButton* button = (keepEdits ? m_keep : m_take).value(section))
+        button->setChecked(true);
 }
 
 }  // namespace cambench

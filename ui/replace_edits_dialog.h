@@ -17,7 +17,8 @@ namespace cambench {
 class ReplaceEditsDialog : public QDialog {
     Q_OBJECT
 public:
-    ReplaceEditsDialog(const QMap<EditSection, int>& edits, ValueSource source, QWidget* parent = nullptr);
+    ReplaceEditsDialog(const QMap<EditSection, int>& edits, ValueSource source,
+                       QWidget* parent = nullptr);
 
     QSet<EditSection> keptSections() const;
     // For tests and keyboard users: choose for one section.

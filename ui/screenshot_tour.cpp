@@ -58,10 +58,14 @@ void ScreenshotTour::buildSteps() {
          [loaded, devices] { return loaded() && devices && devices->count() > 0; },
          {}},
         {QStringLiteral("02-cam-editor"), [w] { w->showSection(MainWindow::Cams); }, loaded, {}},
-        {QStringLiteral("03-dead-times"), [w] { w->showSection(MainWindow::DeadTimes); },
-         [ws] { return ws->outputSettingsKnown(); }, {}},
-        {QStringLiteral("04-settings"), [w] { w->showSection(MainWindow::Settings); },
-         [ws] { return ws->settingsKnown(); }, {}},
+        {QStringLiteral("03-dead-times"),
+         [w] { w->showSection(MainWindow::DeadTimes); },
+         [ws] { return ws->outputSettingsKnown(); },
+         {}},
+        {QStringLiteral("04-settings"),
+         [w] { w->showSection(MainWindow::Settings); },
+         [ws] { return ws->settingsKnown(); },
+         {}},
         {QStringLiteral("05-users"),
          [w] { w->showSection(MainWindow::Users); },
          [w, ws] {
@@ -76,9 +80,12 @@ void ScreenshotTour::buildSteps() {
              w->plcPage()->showNetwork(PlcNetwork::O, 0);
              w->plcPage()->readNetwork();
          },
-         [ws] { return ws->devicePlcNetworks().contains(Workspace::plcKey(PlcNetwork::O, 0)); }, {}},
-        {QStringLiteral("07-monitor"), [w] { w->showSection(MainWindow::Monitor); },
-         [w] { return w->monitorPage()->trendSamples() >= 48; }, {}},
+         [ws] { return ws->devicePlcNetworks().contains(Workspace::plcKey(PlcNetwork::O, 0)); },
+         {}},
+        {QStringLiteral("07-monitor"),
+         [w] { w->showSection(MainWindow::Monitor); },
+         [w] { return w->monitorPage()->trendSamples() >= 48; },
+         {}},
         {QStringLiteral("08-compare"),
          [this, w, ws] {
              // An edit to compare: one cam moved, one dead time changed.
@@ -120,7 +127,8 @@ void ScreenshotTour::buildSteps() {
              w->terminalPage()->send(QStringLiteral("?IFGWG"));
              w->terminalPage()->send(QStringLiteral("?AMAX"));
          },
-         [w] { return w->terminalPage()->logText().count(QLatin1Char('\n')) >= 6; }, {}},
+         [w] { return w->terminalPage()->logText().count(QLatin1Char('\n')) >= 6; },
+         {}},
     };
 }
 
@@ -136,7 +144,8 @@ void ScreenshotTour::runStep(int index) {
 void ScreenshotTour::waitFor(int index, int waitedMs) {
     const Step& step = m_steps[index];
     if (!step.ready() && waitedMs < kStepTimeoutMs) {
-        QTimer::singleShot(kPollMs, this, [this, index, waitedMs] { waitFor(index, waitedMs + kPollMs); });
+        QTimer::singleShot(kPollMs, this,
+                           [this, index, waitedMs] { waitFor(index, waitedMs + kPollMs); });
         return;
     }
     if (waitedMs >= kStepTimeoutMs) {
@@ -166,7 +175,8 @@ void ScreenshotTour::capture(int index) {
         painter.drawRect(QRect(at, top.size()).adjusted(-1, -1, 0, 0));
     }
     const QString path = QDir(m_directory).filePath(m_steps[index].name + QStringLiteral(".png"));
-    if (!shot.save(path)) m_failures << QStringLiteral("%1: cannot write %2").arg(m_steps[index].name, path);
+    if (!shot.save(path))
+        m_failures << QStringLiteral("%1: cannot write %2").arg(m_steps[index].name, path);
     qCInfo(shellLog) << "screenshot" << path;
 }
 

@@ -172,7 +172,9 @@ void SettingsPage::readFromDevice() {
     });
 }
 
-int SettingsPage::itemCount() const { return int(m_workspace->settings().size()); }
+int SettingsPage::itemCount() const {
+    return int(m_workspace->settings().size());
+}
 
 QList<SectionDifference> SettingsPage::differences() const {
     QList<SectionDifference> list;

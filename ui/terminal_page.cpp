@@ -90,8 +90,9 @@ TerminalPage::TerminalPage(DeviceSession* session, QWidget* parent)
 void TerminalPage::send(const QString& command) {
     const QString text = command.trimmed();
     if (text.size() < 2 || (text.front() != QLatin1Char('?') && text.front() != QLatin1Char('!'))) {
-        m_replies->appendPlainText(tr("A command starts with ? (query) or ! (command), then its "
-                                      "letters and data, e.g. ?IFGWG."));
+        m_replies->appendPlainText(
+            tr("A command starts with ? (query) or ! (command), then its "
+               "letters and data, e.g. ?IFGWG."));
         return;
     }
     const QByteArray request = text.toLatin1();
@@ -111,7 +112,8 @@ void TerminalPage::send(const QString& command) {
             // The device has masked the user numbers already.
             QByteArray shown = ':' + reply.value();
             for (char& c : shown) {
-                if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E) c = '.';
+                if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E)
+                    c = '.';
             }
             m_replies->appendPlainText(QStringLiteral("< %1").arg(QString::fromLatin1(shown)));
         });
@@ -129,7 +131,9 @@ void TerminalPage::appendTraffic(const comm::TrafficEntry& entry) {
     }
 }
 
-QString TerminalPage::logText() const { return m_log->toPlainText(); }
+QString TerminalPage::logText() const {
+    return m_log->toPlainText();
+}
 
 Status TerminalPage::saveLog(const QString& path) const {
     QSaveFile file(path);

@@ -53,6 +53,8 @@ void applyTheme(bool dark) {
     QApplication::setPalette(dark ? darkPalette() : QApplication::style()->standardPalette());
 }
 
-bool isDarkTheme() { return g_dark; }
+bool isDarkTheme() {
+    return g_dark;
+}
 
 }  // namespace cambench

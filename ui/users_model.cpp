@@ -26,9 +26,13 @@ void UsersModel::revealNumbers(bool reveal) {
     if (m_rows > 0) Q_EMIT dataChanged(index(0, NumberColumn), index(m_rows - 1, NumberColumn));
 }
 
-int UsersModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : m_rows; }
+int UsersModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : m_rows;
+}
 
-int UsersModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : COUNT; }
+int UsersModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : COUNT;
+}
 
 QString UsersModel::rightsText(quint32 rights) {
     QStringList names;

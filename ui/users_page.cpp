@@ -179,7 +179,8 @@ void UsersPage::readFromDevice() {
     Q_EMIT statusMessage(tr("Reading users…"));
     devicereads::readUsers(this, m_session, m_workspace, [this](const Status& status) {
         if (status) {
-            Q_EMIT statusMessage(tr("%n user(s) read.", nullptr, int(m_workspace->deviceUsers().size())));
+            Q_EMIT statusMessage(
+                tr("%n user(s) read.", nullptr, int(m_workspace->deviceUsers().size())));
         } else if (status.error().kind == ErrorKind::Cancelled) {
             Q_EMIT statusMessage(status.error().message);
         } else {
@@ -188,7 +189,9 @@ void UsersPage::readFromDevice() {
     });
 }
 
-int UsersPage::itemCount() const { return int(m_workspace->users().size() + m_workspace->deletedUserNumbers().size()); }
+int UsersPage::itemCount() const {
+    return int(m_workspace->users().size() + m_workspace->deletedUserNumbers().size());
+}
 
 QList<SectionDifference> UsersPage::differences() const {
     QList<SectionDifference> list;
@@ -205,8 +208,8 @@ QList<SectionDifference> UsersPage::differences() const {
             if (!users[i].deviceNumber.isEmpty() && d.number == users[i].deviceNumber)
                 device = described(d);
         }
-        list.append({WorkspaceItem::user(i), tr("User \"%1\"").arg(users[i].user.name),
-                     device, described(users[i].user)});
+        list.append({WorkspaceItem::user(i), tr("User \"%1\"").arg(users[i].user.name), device,
+                     described(users[i].user)});
     }
     for (const QString& number : m_workspace->deletedUserNumbers()) {
         for (const User& d : m_workspace->deviceUsers()) {

@@ -84,9 +84,13 @@ QDateTime Workspace::lastReadTime() const {
 
 // --- output names and dead times
 
-bool Workspace::outputSettingsKnown() const { return m_cams->outputSettingsKnown(); }
+bool Workspace::outputSettingsKnown() const {
+    return m_cams->outputSettingsKnown();
+}
 
-qint32 Workspace::deviceDeadTime(int output) const { return m_cams->deviceDeadTime(output).value_or(0); }
+qint32 Workspace::deviceDeadTime(int output) const {
+    return m_cams->deviceDeadTime(output).value_or(0);
+}
 
 QString Workspace::deviceOutputName(int output) const {
     return m_cams->deviceOutputName(output).value_or(QString());
@@ -102,11 +106,14 @@ void Workspace::mergeOutputSettings(const QMap<int, QString>& names, const DeadT
     QMap<int, QString> allNames = m_cams->names().outputs;
     DeadTimes allDeadTimes = m_cams->deadTimes();
     for (auto it = names.cbegin(); it != names.cend(); ++it) allNames.insert(it.key(), it.value());
-    for (auto it = deadTimes.cbegin(); it != deadTimes.cend(); ++it) allDeadTimes.insert(it.key(), it.value());
+    for (auto it = deadTimes.cbegin(); it != deadTimes.cend(); ++it)
+        allDeadTimes.insert(it.key(), it.value());
     m_cams->mergeOutputSettings(allNames, allDeadTimes, false, keepEdits);
 }
 
-int Workspace::outputSettingsEditCount() const { return m_cams->outputSettingsEditCount(); }
+int Workspace::outputSettingsEditCount() const {
+    return m_cams->outputSettingsEditCount();
+}
 
 // --- settings
 
@@ -132,7 +139,8 @@ void Workspace::setSetting(const QString& key, const QVariant& value) {
 }
 
 void Workspace::setDeviceSettings(const SystemSettings& values) {
-    for (auto it = values.cbegin(); it != values.cend(); ++it) m_deviceSettings.insert(it.key(), it.value());
+    for (auto it = values.cbegin(); it != values.cend(); ++it)
+        m_deviceSettings.insert(it.key(), it.value());
     Q_EMIT settingsChanged();
     notifyChanged();
 }
@@ -177,8 +185,9 @@ void Workspace::mergeUsers(const QList<User>& users, ValueSource source, bool ke
     QList<EditedUser> result;
     for (const User& user : users) {
         if (deleted.contains(user.number)) continue;
-        const auto mine = std::find_if(kept.begin(), kept.end(),
-                                       [&](const EditedUser& e) { return e.deviceNumber == user.number; });
+        const auto mine = std::find_if(kept.begin(), kept.end(), [&](const EditedUser& e) {
+            return e.deviceNumber == user.number;
+        });
         if (mine != kept.end()) {
             result << *mine;
             kept.erase(mine);
@@ -202,7 +211,8 @@ void Workspace::mergeUsersFromFile(const QList<User>& users, bool keepEdits) {
     for (User user : users) {
         if (user.number.isEmpty()) {
             // Saved without numbers: the device's user of the same name is meant.
-            if (const User* device = findByName(m_deviceUsers, user.name)) user.number = device->number;
+            if (const User* device = findByName(m_deviceUsers, user.name))
+                user.number = device->number;
         }
         const QString deviceNumber = deviceNumberFor(user);
         const auto same = std::find_if(m_users.begin(), m_users.end(), [&](const EditedUser& e) {
@@ -240,7 +250,9 @@ void Workspace::removeUser(int index) {
     notifyChanged();
 }
 
-const User* Workspace::deviceUser(const QString& number) const { return findByNumber(m_deviceUsers, number); }
+const User* Workspace::deviceUser(const QString& number) const {
+    return findByNumber(m_deviceUsers, number);
+}
 
 bool Workspace::userChanged(int index) const {
     const EditedUser& edited = m_users.at(index);
@@ -266,12 +278,16 @@ int Workspace::userEditCount() const {
     return count;
 }
 
-void Workspace::setDeviceUser(int index, const QString& deviceNumber, const std::optional<User>& actual) {
-    m_deviceUsers.erase(std::remove_if(m_deviceUsers.begin(), m_deviceUsers.end(),
-                                       [&](const User& u) { return !deviceNumber.isEmpty() && u.number == deviceNumber; }),
-                        m_deviceUsers.end());
+void Workspace::setDeviceUser(int index, const QString& deviceNumber,
+                              const std::optional<User>& actual) {
+    m_deviceUsers.erase(
+        std::remove_if(
+            m_deviceUsers.begin(), m_deviceUsers.end(),
+            [&](const User& u) { return !deviceNumber.isEmpty() && u.number == deviceNumber; }),
+        m_deviceUsers.end());
     if (actual) m_deviceUsers.append(*actual);
-    if (index >= 0 && index < m_users.size()) m_users[index].deviceNumber = actual ? actual->number : QString();
+    if (index >= 0 && index < m_users.size())
+        m_users[index].deviceNumber = actual ? actual->number : QString();
     Q_EMIT usersChanged();
     notifyChanged();
 }
@@ -285,7 +301,8 @@ PlcNetwork Workspace::plcNetwork(int area, int number) const {
     return m_plc.value(plcKey(area, number), empty);
 }
 
-void Workspace::mergePlcNetworks(const QList<PlcNetwork>& networks, ValueSource source, bool keepEdits) {
+void Workspace::mergePlcNetworks(const QList<PlcNetwork>& networks, ValueSource source,
+                                 bool keepEdits) {
     const QList<int> edited = changedPlcNetworks();
     for (const PlcNetwork& network : networks) {
         const int key = plcKey(network.area, network.number);

@@ -23,13 +23,17 @@ struct WorkspaceItem {
     int number = 0;
     QString key;
 
-    static WorkspaceItem track(int program, int output) { return {Kind::Track, program, output, {}}; }
+    static WorkspaceItem track(int program, int output) {
+        return {Kind::Track, program, output, {}};
+    }
     static WorkspaceItem programName(int program) { return {Kind::ProgramName, program, 0, {}}; }
     static WorkspaceItem deadTime(int output) { return {Kind::DeadTime, 0, output, {}}; }
     static WorkspaceItem outputName(int output) { return {Kind::OutputName, 0, output, {}}; }
     static WorkspaceItem setting(const QString& key) { return {Kind::Setting, 0, 0, key}; }
     static WorkspaceItem user(int index) { return {Kind::User, 0, index, {}}; }
-    static WorkspaceItem deletedUser(const QString& number) { return {Kind::DeletedUser, 0, 0, number}; }
+    static WorkspaceItem deletedUser(const QString& number) {
+        return {Kind::DeletedUser, 0, 0, number};
+    }
     static WorkspaceItem plcNetwork(int key) { return {Kind::PlcNetwork, 0, key, {}}; }
 
     friend bool operator==(const WorkspaceItem& a, const WorkspaceItem& b) {

@@ -117,8 +117,8 @@ int runScan(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
     if (!session.options().isBus()) {
-        return reportError(Error::usage(
-            QStringLiteral("scan needs a bus protocol; add --protocol multiuser")));
+        return reportError(
+            Error::usage(QStringLiteral("scan needs a bus protocol; add --protocol multiuser")));
     }
     session.setShowProgress(true);
     const Result<QList<int>> found = session.run<QList<int>>(

@@ -80,7 +80,8 @@ int main(int argc, char* argv[]) {
         startPort = QStringLiteral("sim");
     }
     const QString startProtocol = parser.value(protocol);
-    if (!startProtocol.isEmpty() && !cambench::comm::ProtocolRegistry::instance().find(startProtocol)) {
+    if (!startProtocol.isEmpty() &&
+        !cambench::comm::ProtocolRegistry::instance().find(startProtocol)) {
         std::fprintf(stderr,
                      "cambench: unknown protocol '%s'; use standard, multiuser, 3964r-n96 or "
                      "3964r-e38.\n",

@@ -236,11 +236,13 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
                 return result;
             }
             result.silent = false;  // the device is there: it answered the probe
-            result.problem = QCoreApplication::translate("cambench::comm", "no reply, though the device answered %1")
+            result.problem = QCoreApplication::translate("cambench::comm",
+                                                         "no reply, though the device answered %1")
                                  .arg(request.probe().label);
             return result;
         }
-        if (result.problem.isEmpty()) result.problem = QCoreApplication::translate("cambench::comm", "no reply");
+        if (result.problem.isEmpty())
+            result.problem = QCoreApplication::translate("cambench::comm", "no reply");
         return result;
     }
 }

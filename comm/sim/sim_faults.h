@@ -20,8 +20,8 @@ struct SimFaultSettings {
     double nakProbability = 0.0;        // a good block answered NAK, not executed
     double lostDleProbability = 0.0;    // the device's DLE lost on the line
     double collisionProbability = 0.0;  // the device's STX crosses the PC's; the device yields
-    int extraDelayMs = 0;             // added to every reply
-    bool dead = false;                // never answers
+    int extraDelayMs = 0;               // added to every reply
+    bool dead = false;                  // never answers
     quint32 seed = 1;
 };
 

@@ -8,7 +8,8 @@ namespace {
 
 const QString kPrefix = QStringLiteral("sim");
 const QString kKeys = QStringLiteral(
-    "devices, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, lostdle, collision, linkfaults, "
+    "devices, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, lostdle, collision, "
+    "linkfaults, "
     "delay, seed, throttle, fill, dead");
 
 // The probabilities a key sets.

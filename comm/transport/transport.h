@@ -13,10 +13,10 @@ namespace cambench::comm {
 struct SerialSettings {
     int baud = 9600;
     int dataBits = 8;
-    char parity = 'N';   // 'N', 'E', 'O', 'S', 'M'
-    int stopBits = 1;    // 1 or 2 (3 = one and a half)
+    char parity = 'N';       // 'N', 'E', 'O', 'S', 'M'
+    int stopBits = 1;        // 1 or 2 (3 = one and a half)
     char flowControl = 'N';  // 'N' none, 'H' RTS/CTS, 'S' XON/XOFF
-    bool dtr = true;      // failing to set DTR/RTS (pty) must not abort a connection
+    bool dtr = true;         // failing to set DTR/RTS (pty) must not abort a connection
     bool rts = true;
 };
 

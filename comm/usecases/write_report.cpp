@@ -127,8 +127,11 @@ QString WriteReport::summary() const {
     }
     // Whole phrases: the CLI prints English without a catalogue, so no "%n".
     const QString joined = parts.join(QLatin1String(", "));
-    if (total() == 1) return QCoreApplication::translate("cambench::usecases", "1 item: %1").arg(joined);
-    return QCoreApplication::translate("cambench::usecases", "%1 items: %2").arg(total()).arg(joined);
+    if (total() == 1)
+        return QCoreApplication::translate("cambench::usecases", "1 item: %1").arg(joined);
+    return QCoreApplication::translate("cambench::usecases", "%1 items: %2")
+        .arg(total())
+        .arg(joined);
 }
 
 }  // namespace cambench::usecases

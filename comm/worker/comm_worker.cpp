@@ -32,12 +32,13 @@ CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Im
     connect(d->thread, &QThread::finished, d->core, &QObject::deleteLater);
 
     // The core emits on the worker thread; the front re-emits on its own.
-    connect(d->core, &WorkerCore::stateChanged, this,
-            [this](ConnectionState state, const QString& message) {
-                m_state = state;
-                Q_EMIT connectionStateChanged(state, message);
-            },
-            Qt::QueuedConnection);
+    connect(
+        d->core, &WorkerCore::stateChanged, this,
+        [this](ConnectionState state, const QString& message) {
+            m_state = state;
+            Q_EMIT connectionStateChanged(state, message);
+        },
+        Qt::QueuedConnection);
     connect(d->core, &WorkerCore::jobStarted, this, &CommWorker::jobStarted, Qt::QueuedConnection);
     connect(d->core, &WorkerCore::jobProgress, this, &CommWorker::jobProgress,
             Qt::QueuedConnection);

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "job.h"
 #include "comm/device/protocol_settings.h"
 #include "comm/engine/traffic_entry.h"
 #include "comm/transport/transport.h"
+#include "job.h"
 
 #include <QObject>
 #include <QPointer>
@@ -46,7 +46,7 @@ public:
     // its calls fail with a Communication error.
     quint64 submit(JobPriority priority, const QString& title, JobFn fn,
                    const QString& pollKey = {});
-    void cancel(quint64 id);     // running or queued
+    void cancel(quint64 id);  // running or queued
     void cancelAll();
 
     // Convenience: runs `work` on the worker thread and `done` with its

@@ -4,8 +4,7 @@
 
 namespace cambench::comm {
 
-JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn,
-                                QString pollKey) {
+JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, QString pollKey) {
     std::lock_guard lock(m_mutex);
     QueuedJob job;
     job.id = m_nextId++;

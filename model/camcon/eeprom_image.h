@@ -21,8 +21,8 @@ struct EepromBlock {
 // blocks read by ?EE 0000, 0001, ... until FFFF.
 struct EepromImage {
     DeviceInfo device;
-    QDateTime taken;       // UTC
-    QString toolVersion;   // CamBench version that took it
+    QDateTime taken;      // UTC
+    QString toolVersion;  // CamBench version that took it
     QList<EepromBlock> blocks;
 
     int totalBytes() const;

@@ -15,7 +15,9 @@ QString PlcNetwork::describe(int area, int number) {
     const char* names = "OPMX";
     const int index = area - O;
     const QChar letter = index >= 0 && index < 4 ? QChar::fromLatin1(names[index]) : QChar(u'?');
-    return QCoreApplication::translate("cambench::model", "PLC network %1%2").arg(letter).arg(number);
+    return QCoreApplication::translate("cambench::model", "PLC network %1%2")
+        .arg(letter)
+        .arg(number);
 }
 
 }  // namespace cambench

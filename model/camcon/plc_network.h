@@ -16,7 +16,7 @@ struct PlcNetwork {
     static constexpr int kSymbols = kPaths * kSymbolsPerPath;
 
     int area = O;
-    int number = 0;     // 0-based, as the ASCII protocol numbers it
+    int number = 0;  // 0-based, as the ASCII protocol numbers it
     qint32 value = 0;
     quint16 reset = 0;
     std::array<quint16, kSymbols> symbols{};  // path by path

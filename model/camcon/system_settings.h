@@ -25,22 +25,22 @@ struct SettingChoice {
 };
 
 struct SettingSpec {
-    const char* key;      // stable JSON key, e.g. "actualValueHysteresis"
-    const char* group;    // "encoder", "adaptation", "speed", "cycle",
-                          // "specialOutputs", "configuration", "configurationPlc", ...
+    const char* key;    // stable JSON key, e.g. "actualValueHysteresis"
+    const char* group;  // "encoder", "adaptation", "speed", "cycle",
+                        // "specialOutputs", "configuration", "configurationPlc", ...
     SettingKind kind;
     qint64 min = 0;
     qint64 max = 0;
-    int step = 1;         // value must be a multiple of step (counts of 8)
-    int decimals = 0;     // Fixed only
-    int maxLength = 0;    // Text only (visible characters)
+    int step = 1;       // value must be a multiple of step (counts of 8)
+    int decimals = 0;   // Fixed only
+    int maxLength = 0;  // Text only (visible characters)
     const char* unit = "";
     const char* label = "";
-    const char* tooltip = "";   // what it does, from the manual
-    const char* section = "";   // manual section
+    const char* tooltip = "";  // what it does, from the manual
+    const char* section = "";  // manual section
     QList<SettingChoice> choices{};
     bool readOnly = false;
-    bool excludeZero = false;   // [min,max] without 0 (gear multiplier)
+    bool excludeZero = false;  // [min,max] without 0 (gear multiplier)
 };
 
 // Every setting of manual 5.3 and 5.4 that is a single value.

@@ -18,8 +18,8 @@ struct User {
         UserMenu = 1u << 7,
     };
 
-    QString name;            // up to 21 characters
-    QString number;          // up to 5 characters
+    QString name;              // up to 21 characters
+    QString number;            // up to 5 characters
     QList<bool> outputAccess;  // 256 entries, index 0 = output 1
     bool allOutputs = false;
     quint32 rights = 0;

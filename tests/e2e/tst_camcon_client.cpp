@@ -1,6 +1,6 @@
 // The ASCII CamCon against the in-process simulator: no subprocess, no worker.
-#include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/ascii_camcon.h"
+#include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/settings_commands.h"
 #include "comm/sim/sim_transport.h"
 #include "tests/usecases/sim_bench.h"

@@ -18,16 +18,22 @@ ReplaceTrackCommand::ReplaceTrackCommand(CamDocument* document, int program, Tra
     setText(text);
 }
 
-void ReplaceTrackCommand::undo() { m_document->applyTrack(m_program, m_before); }
+void ReplaceTrackCommand::undo() {
+    m_document->applyTrack(m_program, m_before);
+}
 
-void ReplaceTrackCommand::redo() { m_document->applyTrack(m_program, m_after); }
+void ReplaceTrackCommand::redo() {
+    m_document->applyTrack(m_program, m_after);
+}
 
 SetCamCommand::SetCamCommand(CamDocument* document, int program, Track before, Track after,
                              const QString& text, quint64 mergeKey)
     : ReplaceTrackCommand(document, program, std::move(before), std::move(after), text),
       m_mergeKey(mergeKey) {}
 
-int SetCamCommand::id() const { return m_mergeKey != 0 ? kSetCamCommandId : -1; }
+int SetCamCommand::id() const {
+    return m_mergeKey != 0 ? kSetCamCommandId : -1;
+}
 
 bool SetCamCommand::mergeWith(const QUndoCommand* other) {
     const auto* next = static_cast<const SetCamCommand*>(other);
@@ -52,8 +58,12 @@ ReplaceProgramCommand::ReplaceProgramCommand(CamDocument* document, CamProgram b
     setText(text);
 }
 
-void ReplaceProgramCommand::undo() { m_document->applyProgram(m_before); }
+void ReplaceProgramCommand::undo() {
+    m_document->applyProgram(m_before);
+}
 
-void ReplaceProgramCommand::redo() { m_document->applyProgram(m_after); }
+void ReplaceProgramCommand::redo() {
+    m_document->applyProgram(m_after);
+}
 
 }  // namespace cambench

@@ -81,9 +81,13 @@ int CamDiagramWidget::labelWidth() const {
     return fontMetrics().horizontalAdvance(QLatin1Char('M')) * 14 + rowHeight();
 }
 
-int CamDiagramWidget::rowHeight() const { return fontMetrics().height() + 10; }
+int CamDiagramWidget::rowHeight() const {
+    return fontMetrics().height() + 10;
+}
 
-int CamDiagramWidget::scaleHeight() const { return fontMetrics().height() + 12; }
+int CamDiagramWidget::scaleHeight() const {
+    return fontMetrics().height() + 12;
+}
 
 void CamDiagramWidget::updateLayout() {
     const int scrollBarHeight = m_horizontal->sizeHint().height();
@@ -392,7 +396,9 @@ void CamDiagramWidget::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
 }
 
-void CamDiagramWidget::resizeEvent(QResizeEvent*) { updateLayout(); }
+void CamDiagramWidget::resizeEvent(QResizeEvent*) {
+    updateLayout();
+}
 
 QString CamDiagramWidget::camToolTip(int output, int cam) const {
     const Track track = m_document->track(m_program, output);
@@ -434,7 +440,8 @@ void CamDiagramWidget::paintRows(QPainter& painter) const {
             continue;
         }
         const QRectF plotBand(plot.left(), band.top(), plot.width(), band.height());
-        painter.fillRect(plotBand, pal.color(output % 2 ? QPalette::Base : QPalette::AlternateBase));
+        painter.fillRect(plotBand,
+                         pal.color(output % 2 ? QPalette::Base : QPalette::AlternateBase));
         if (output == m_selectedOutput) {
             painter.fillRect(plotBand, withAlpha(pal.color(QPalette::Highlight), 40));
         }
@@ -463,8 +470,8 @@ void CamDiagramWidget::paintLabel(QPainter& painter, int output) const {
     const QPalette& pal = palette();
     const QRectF band = m_layout.rowBand(output);
     const QRectF label(0, band.top(), m_layout.plotArea().left(), band.height());
-    painter.fillRect(label, pal.color(output == m_selectedOutput ? QPalette::Highlight
-                                                                  : QPalette::Button));
+    painter.fillRect(
+        label, pal.color(output == m_selectedOutput ? QPalette::Highlight : QPalette::Button));
     const double led = band.height() * 0.45;
     const QRectF ledRect(4, band.center().y() - led / 2, led, led);
     if (m_live) {
@@ -477,14 +484,15 @@ void CamDiagramWidget::paintLabel(QPainter& painter, int output) const {
     }
     const QRectF textRect = label.adjusted(ledRect.right() + 6, 0, -4, 0);
     const QString name = m_document->outputName(output);
-    const QString text = name.isEmpty() ? QString::number(output)
-                                        : tr("%1  %2").arg(output).arg(name);
-    painter.setPen(pal.color(output == m_selectedOutput ? QPalette::HighlightedText
-                                                        : QPalette::ButtonText));
+    const QString text =
+        name.isEmpty() ? QString::number(output) : tr("%1  %2").arg(output).arg(name);
+    painter.setPen(
+        pal.color(output == m_selectedOutput ? QPalette::HighlightedText : QPalette::ButtonText));
     painter.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
                      fontMetrics().elidedText(text, Qt::ElideRight, int(textRect.width())));
     painter.setPen(pal.color(QPalette::Mid));
-    painter.drawLine(QPointF(0, band.bottom()), QPointF(m_layout.plotArea().right(), band.bottom()));
+    painter.drawLine(QPointF(0, band.bottom()),
+                     QPointF(m_layout.plotArea().right(), band.bottom()));
 }
 
 void CamDiagramWidget::paintCams(QPainter& painter, int output) const {
@@ -495,12 +503,11 @@ void CamDiagramWidget::paintCams(QPainter& painter, int output) const {
         invalid.insert(problem.cam);
     }
     for (int index = 0; index < track.cams.size(); ++index) {
-        const bool edited =
-            m_document->camState(m_program, output, index) == ChangeState::Edited;
+        const bool edited = m_document->camState(m_program, output, index) == ChangeState::Edited;
         const bool selected = output == m_selectedOutput && index == m_selectedCam;
         const QColor fill = invalid.contains(index) ? errorColor() : pal.color(QPalette::Highlight);
-        const QColor text = invalid.contains(index) ? QColor(Qt::white)
-                                                    : pal.color(QPalette::HighlightedText);
+        const QColor text =
+            invalid.contains(index) ? QColor(Qt::white) : pal.color(QPalette::HighlightedText);
         for (const QRectF& rect : m_layout.camRects(track.cams.at(index), output)) {
             painter.fillRect(rect, fill);
             if (edited) {
@@ -540,8 +547,7 @@ void CamDiagramWidget::paintScale(QPainter& painter) const {
     const double end = m_layout.viewStart() + m_layout.viewSpan();
     const int base = plot.top() - 1;
     painter.drawLine(plot.left(), base, plot.right(), base);
-    for (double tick = std::ceil(m_layout.viewStart() / minor) * minor; tick < end;
-         tick += minor) {
+    for (double tick = std::ceil(m_layout.viewStart() / minor) * minor; tick < end; tick += minor) {
         const double x = m_layout.xForPosition(tick);
         const bool major = std::fmod(tick, double(step)) == 0.0;
         painter.drawLine(QPointF(x, base), QPointF(x, base - (major ? 6 : 3)));
@@ -569,7 +575,8 @@ void CamDiagramWidget::paintLiveCursor(QPainter& painter) const {
     }
     const double rowsBottom = m_layout.rowBand(m_document->outputCount()).bottom();
     painter.setPen(QPen(kLiveColor, 2));
-    painter.drawLine(QPointF(x, plot.top() - 8), QPointF(x, std::min(rowsBottom, double(plot.bottom()))));
+    painter.drawLine(QPointF(x, plot.top() - 8),
+                     QPointF(x, std::min(rowsBottom, double(plot.bottom()))));
 }
 
 }  // namespace cambench

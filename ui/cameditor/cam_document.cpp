@@ -45,11 +45,17 @@ Track CamDocument::track(int program, int output) const {
     return trackOf(m_edited.value(program), output);
 }
 
-QString CamDocument::programName(int program) const { return m_edited.value(program).name; }
+QString CamDocument::programName(int program) const {
+    return m_edited.value(program).name;
+}
 
-QString CamDocument::outputName(int output) const { return m_names.outputs.value(output); }
+QString CamDocument::outputName(int output) const {
+    return m_names.outputs.value(output);
+}
 
-qint32 CamDocument::deadTime(int output) const { return m_deadTimes.value(output); }
+qint32 CamDocument::deadTime(int output) const {
+    return m_deadTimes.value(output);
+}
 
 void CamDocument::mergeProgram(const CamProgram& incoming, bool fromDevice, bool keepEdits) {
     const int number = incoming.number;
@@ -109,11 +115,12 @@ bool CamDocument::programEdited(int program) const {
     if (!m_edited.contains(program)) return false;
     const CamProgram edited = this->program(program);
     if (!m_device.contains(program)) return !edited.tracks.isEmpty() || !edited.name.isEmpty();
-    return edited.tracks != m_device.value(program).tracks || edited.name != m_device.value(program).name;
+    return edited.tracks != m_device.value(program).tracks ||
+           edited.name != m_device.value(program).name;
 }
 
-void CamDocument::mergeOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes,
-                                      bool fromDevice, bool keepEdits) {
+void CamDocument::mergeOutputSettings(const QMap<int, QString>& outputNames,
+                                      const DeadTimes& deadTimes, bool fromDevice, bool keepEdits) {
     QMap<int, QString> names = outputNames;
     DeadTimes times = deadTimes;
     const bool edited = outputSettingsEditCount() > 0;
@@ -134,8 +141,10 @@ void CamDocument::mergeOutputSettings(const QMap<int, QString>& outputNames, con
             setOutputName(output, names.value(output));
             setDeadTime(output, times.value(output));
         } else {
-            if (m_names.outputs.value(output) != names.value(output)) applyOutputName(output, names.value(output));
-            if (m_deadTimes.value(output) != times.value(output)) applyDeadTime(output, times.value(output));
+            if (m_names.outputs.value(output) != names.value(output))
+                applyOutputName(output, names.value(output));
+            if (m_deadTimes.value(output) != times.value(output))
+                applyDeadTime(output, times.value(output));
         }
     }
     if (edited && !keepEdits) m_undoStack->endMacro();
@@ -155,7 +164,8 @@ int CamDocument::outputSettingsEditCount() const {
 void CamDocument::setDeviceProgram(const CamProgram& program) {
     m_device.insert(program.number, normalized(program));
     // A program only read, never edited, is shown as the device has it.
-    if (!m_edited.contains(program.number)) m_edited.insert(program.number, m_device.value(program.number));
+    if (!m_edited.contains(program.number))
+        m_edited.insert(program.number, m_device.value(program.number));
     Q_EMIT programChanged(program.number);
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
@@ -281,7 +291,9 @@ int CamDocument::changedCount() const {
     return count;
 }
 
-quint64 CamDocument::newDragKey() { return ++m_lastDragKey; }
+quint64 CamDocument::newDragKey() {
+    return ++m_lastDragKey;
+}
 
 void CamDocument::setCam(int program, int output, int index, const Cam& cam, quint64 mergeKey) {
     const Track before = track(program, output);
@@ -326,9 +338,11 @@ void CamDocument::copyTrack(int program, int fromOutput, int toProgram, int toOu
     copy.output = toOutput;
     const Track before = track(toProgram, toOutput);
     if (before != copy) {
-        m_undoStack->push(new ReplaceTrackCommand(
-            this, toProgram, before, copy,
-            tr("Copy output %1 to output %2 of program %3").arg(fromOutput).arg(toOutput).arg(toProgram)));
+        m_undoStack->push(new ReplaceTrackCommand(this, toProgram, before, copy,
+                                                  tr("Copy output %1 to output %2 of program %3")
+                                                      .arg(fromOutput)
+                                                      .arg(toOutput)
+                                                      .arg(toProgram)));
     }
 }
 
@@ -346,8 +360,7 @@ void CamDocument::generateCams(int program, const Track& track) {
     replaceTrack(program, track, tr("Generate cams on output %1").arg(track.output));
 }
 
-void CamDocument::replaceTracks(int program, const QMap<int, Track>& tracks,
-                                const QString& text) {
+void CamDocument::replaceTracks(int program, const QMap<int, Track>& tracks, const QString& text) {
     CamProgram after = this->program(program);
     after.tracks = tracks;
     after = normalized(after);

@@ -98,8 +98,10 @@ CamEditorWidget::CamEditorWidget(CamDocument* document, QWidget* parent)
             m_programName->setText(m_document->programName(program));
         }
     });
-    connect(document, &CamDocument::outputNameChanged, this, [this] { setCurrentOutput(currentOutput()); });
-    connect(document, &CamDocument::deviceStateChanged, this, &CamEditorWidget::refreshProgramChooser);
+    connect(document, &CamDocument::outputNameChanged, this,
+            [this] { setCurrentOutput(currentOutput()); });
+    connect(document, &CamDocument::deviceStateChanged, this,
+            &CamEditorWidget::refreshProgramChooser);
     refreshProgramChooser();
     setCurrentProgram(0);
     setCurrentOutput(1);
@@ -120,31 +122,31 @@ QAction* CamEditorWidget::makeAction(const QString& text, const QString& tip,
 }
 
 QToolBar* CamEditorWidget::createToolBar() {
-    m_read = makeAction(tr("&Read Program"), tr("Read the current program from the device"),
-                        nullptr);
-    m_write = makeAction(tr("&Write Program"), tr("Write the current program to the device"),
-                         nullptr);
+    m_read =
+        makeAction(tr("&Read Program"), tr("Read the current program from the device"), nullptr);
+    m_write =
+        makeAction(tr("&Write Program"), tr("Write the current program to the device"), nullptr);
     m_addCam = makeAction(tr("&Add Cam"), tr("Add a cam to the selected output"),
                           &CamEditorWidget::addCam);
     m_addCam->setShortcut(Qt::CTRL | Qt::Key_N);
-    m_deleteCam = makeAction(tr("&Delete Cam"), tr("Delete the selected cam"),
-                             &CamEditorWidget::deleteCam);
+    m_deleteCam =
+        makeAction(tr("&Delete Cam"), tr("Delete the selected cam"), &CamEditorWidget::deleteCam);
     m_deleteCam->setShortcut(QKeySequence::Delete);
     m_copyTrack = makeAction(tr("Copy &Output To…"),
                              tr("Copy the cams of the selected output to another output"),
                              &CamEditorWidget::copyTrack);
-    m_copyProgram = makeAction(tr("Copy &Program To…"),
-                               tr("Copy the whole program to another program number"),
-                               &CamEditorWidget::copyProgram);
+    m_copyProgram =
+        makeAction(tr("Copy &Program To…"), tr("Copy the whole program to another program number"),
+                   &CamEditorWidget::copyProgram);
     m_generate = makeAction(tr("&Generate Cams…"),
                             tr("Replace the cams of the selected output by evenly spaced cams"),
                             &CamEditorWidget::generateCams);
-    m_import = makeAction(tr("&Import CSV…"), tr("Replace the cams of this program from a CSV file"),
-                          &CamEditorWidget::importCsvInteractive);
+    m_import =
+        makeAction(tr("&Import CSV…"), tr("Replace the cams of this program from a CSV file"),
+                   &CamEditorWidget::importCsvInteractive);
     m_export = makeAction(tr("&Export CSV…"), tr("Save the cams of this program as a CSV file"),
                           &CamEditorWidget::exportCsvInteractive);
-    m_zoomIn = makeAction(tr("Zoom &In"), tr("Show a smaller part of the axis"),
-                          nullptr);
+    m_zoomIn = makeAction(tr("Zoom &In"), tr("Show a smaller part of the axis"), nullptr);
     m_zoomIn->setShortcut(QKeySequence::ZoomIn);
     m_zoomOut = makeAction(tr("Zoom &Out"), tr("Show a larger part of the axis"), nullptr);
     m_zoomOut->setShortcut(QKeySequence::ZoomOut);
@@ -190,8 +192,7 @@ QWidget* CamEditorWidget::createProgramBar() {
         layout->addWidget(button);
     }
     connect(m_programChooser, &QComboBox::activated, this, &CamEditorWidget::setCurrentProgram);
-    connect(m_programName, &QLineEdit::editingFinished, this,
-            &CamEditorWidget::commitProgramName);
+    connect(m_programName, &QLineEdit::editingFinished, this, &CamEditorWidget::commitProgramName);
     return bar;
 }
 
@@ -236,11 +237,13 @@ void CamEditorWidget::createTables() {
 }
 
 QList<QAction*> CamEditorWidget::editorActions() const {
-    return {m_read,        m_write,    m_addCam, m_deleteCam, m_generate, m_copyTrack,
-            m_copyProgram, m_import,   m_export, m_zoomIn,    m_zoomOut,  m_zoomFit};
+    return {m_read,        m_write,  m_addCam, m_deleteCam, m_generate, m_copyTrack,
+            m_copyProgram, m_import, m_export, m_zoomIn,    m_zoomOut,  m_zoomFit};
 }
 
-int CamEditorWidget::currentOutput() const { return m_camModel->output(); }
+int CamEditorWidget::currentOutput() const {
+    return m_camModel->output();
+}
 
 void CamEditorWidget::setCurrentProgram(int program) {
     const bool changed = program != m_program;
@@ -301,7 +304,8 @@ void CamEditorWidget::refreshProgramChooser() {
     }
     for (int program = 0; program < count; ++program) {
         const QString name = m_document->programName(program);
-        QString text = name.isEmpty() ? QString::number(program) : tr("%1: %2").arg(program).arg(name);
+        QString text =
+            name.isEmpty() ? QString::number(program) : tr("%1: %2").arg(program).arg(name);
         // What the device holds there is unknown until it is read.
         if (!m_document->hasDeviceCopy(program)) text = tr("%1 (not read)").arg(text);
         if (program < m_programChooser->count()) {
@@ -407,9 +411,8 @@ void CamEditorWidget::importCsvInteractive() {
         showError(tr("Import Cams"), status.error().message);
         return;
     }
-    const QList<CamProblem> problems =
-        validateProgram(m_document->program(m_program), m_document->deviceInfo(),
-                        m_document->isRotary());
+    const QList<CamProblem> problems = validateProgram(
+        m_document->program(m_program), m_document->deviceInfo(), m_document->isRotary());
     if (!problems.isEmpty()) {
         QStringList lines;
         for (const CamProblem& problem : problems.mid(0, kProblemsListed)) {
@@ -425,9 +428,9 @@ void CamEditorWidget::importCsvInteractive() {
 }
 
 void CamEditorWidget::exportCsvInteractive() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Cams"), tr("program-%1.csv").arg(m_program),
-        tr("CSV files (*.csv);;All files (*)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export Cams"), tr("program-%1.csv").arg(m_program),
+                                     tr("CSV files (*.csv);;All files (*)"));
     if (path.isEmpty()) {
         return;
     }

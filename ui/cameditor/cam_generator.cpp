@@ -16,8 +16,8 @@ qint32 wrapped(qint64 position, qint32 minPosition, qint64 span) {
 
 }  // namespace
 
-Result<QList<Cam>> CamGenerator::generate(const CamGeneratorSettings& settings,
-                                          qint32 minPosition, qint32 maxPosition, bool rotary) {
+Result<QList<Cam>> CamGenerator::generate(const CamGeneratorSettings& settings, qint32 minPosition,
+                                          qint32 maxPosition, bool rotary) {
     if (settings.start < minPosition || settings.start > maxPosition) {
         return Error::invalidData(tr("The start position %1 is outside the range %2..%3. "
                                      "Enter a start inside the range.")

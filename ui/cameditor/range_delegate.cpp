@@ -80,7 +80,9 @@ QString RangeDelegate::refusal(QWidget* editor) const {
     const double minimum = editor->property(kMinimum).toDouble();
     const double maximum = editor->property(kMaximum).toDouble();
     if (value >= minimum && value <= maximum) return {};
-    const int decimals = qobject_cast<QDoubleSpinBox*>(editor) ? qobject_cast<QDoubleSpinBox*>(editor)->decimals() : 0;
+    const int decimals = qobject_cast<QDoubleSpinBox*>(editor)
+                             ? qobject_cast<QDoubleSpinBox*>(editor)->decimals()
+                             : 0;
     const QString suffix = qobject_cast<QAbstractSpinBox*>(editor)->property("suffix").toString();
     QLocale locale;
     locale.setNumberOptions(QLocale::OmitGroupSeparator);  // as typed

@@ -1,9 +1,9 @@
 #include "ui/cameditor/track_table_model.h"
 
+#include "model/camcon/data_validation.h"
 #include "ui/cameditor/cam_document.h"
 #include "ui/cameditor/editor_colors.h"
 #include "ui/cameditor/editor_roles.h"
-#include "model/camcon/data_validation.h"
 
 #include <QBrush>
 #include <QFont>

@@ -39,10 +39,12 @@ QString AsciiBackend::describe() const {
 
 QString AsciiBackend::checkHint() const {
     if (m_framing == Framing::Multiuser)
-        return QCoreApplication::translate("cambench::comm", 
+        return QCoreApplication::translate(
+            "cambench::comm",
             "check the cable, the baud rate, that the device speaks the "
             "Multiuser protocol and the device number");
-    return QCoreApplication::translate("cambench::comm", 
+    return QCoreApplication::translate(
+        "cambench::comm",
         "check the cable, the baud rate and that the device speaks the "
         "Standard protocol");
 }
@@ -132,7 +134,8 @@ Incoming AsciiBackend::classify(const DecodeEvent& event) {
         }
         case DecodeEvent::BadChecksum:
             in.kind = isOurs(event.frame) ? Incoming::Damaged : Incoming::Foreign;
-            in.detail = QCoreApplication::translate("cambench::comm", "a reply with a wrong checksum");
+            in.detail =
+                QCoreApplication::translate("cambench::comm", "a reply with a wrong checksum");
             return in;
         case DecodeEvent::Oversized:
             in.kind = Incoming::Damaged;
@@ -198,7 +201,8 @@ BackendStep AsciiBackend::poll(qint64 nowMs) {
                                               : headerMatches(in.wire) >= kHeaderBytes - 1;
     }
     in.kind = ours ? Incoming::Damaged : Incoming::Garbage;
-    in.detail = QCoreApplication::translate("cambench::comm", "a reply that broke off before its end");
+    in.detail =
+        QCoreApplication::translate("cambench::comm", "a reply that broke off before its end");
     // The garbage was logged when it came; only the partial frame is new.
     step.incoming.append(in);
     return step;

@@ -21,17 +21,19 @@ QString AsciiCamCon::protocolId() const {
 
 bool AsciiCamCon::has(CamConCapability capability) const {
     switch (capability) {
-    case CamConCapability::Users:
-    case CamConCapability::EepromBackup:
-    case CamConCapability::Terminal:
-    case CamConCapability::OutputNames:
-    case CamConCapability::PlcNetworks: return true;
-    case CamConCapability::BusScan: return m_link.settings().framing == Framing::Multiuser;
-    case CamConCapability::DeadTimeModes:
-    case CamConCapability::AnalogueCams:
-    case CamConCapability::EepromLock:
-    case CamConCapability::ProgrammingProgram:
-        return false;
+        case CamConCapability::Users:
+        case CamConCapability::EepromBackup:
+        case CamConCapability::Terminal:
+        case CamConCapability::OutputNames:
+        case CamConCapability::PlcNetworks:
+            return true;
+        case CamConCapability::BusScan:
+            return m_link.settings().framing == Framing::Multiuser;
+        case CamConCapability::DeadTimeModes:
+        case CamConCapability::AnalogueCams:
+        case CamConCapability::EepromLock:
+        case CamConCapability::ProgrammingProgram:
+            return false;
     }
     return false;
 }

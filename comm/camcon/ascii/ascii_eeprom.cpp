@@ -149,22 +149,30 @@ Status confirmStarted(AsciiCamCon& device, AsciiLink& link, const EepromImage& i
     const Result<Fields> again = link.call('!', "EE", fields);
     if (again) return success();
     const auto failed = [&](const QString& why, const Error& cause) {
-        return inContext(QCoreApplication::translate("cambench::comm", "restore: the device took every block but did not "
+        return inContext(
+            QCoreApplication::translate("cambench::comm",
+                                        "restore: the device took every block but did not "
                                         "confirm that it started (!EE%1): %2. Run the same "
                                         "restore again. Cause")
-                             .arg(hex4(number), why),
-                         cause);
+                .arg(hex4(number), why),
+            cause);
     };
     if (again.error().kind != ErrorKind::DeviceError || again.error().deviceCode != kNoTransfer)
-        return failed(QCoreApplication::translate("cambench::comm", "the end block, sent again, failed"), again.error());
+        return failed(
+            QCoreApplication::translate("cambench::comm", "the end block, sent again, failed"),
+            again.error());
     const Result<EepromImage> readBack = device.backup();
     if (!readBack)
-        return failed(QCoreApplication::translate("cambench::comm", "reading the EEPROM back failed"), readBack.error());
+        return failed(
+            QCoreApplication::translate("cambench::comm", "reading the EEPROM back failed"),
+            readBack.error());
     if (readBack->blocks != image.blocks) {
-        return failed(QCoreApplication::translate("cambench::comm", "its EEPROM differs from the image"),
-                      Error::communication(QCoreApplication::translate("cambench::comm", "%1 blocks read back, %2 in the image")
-                                               .arg(readBack->blocks.size())
-                                               .arg(image.blocks.size())));
+        return failed(
+            QCoreApplication::translate("cambench::comm", "its EEPROM differs from the image"),
+            Error::communication(QCoreApplication::translate("cambench::comm",
+                                                             "%1 blocks read back, %2 in the image")
+                                     .arg(readBack->blocks.size())
+                                     .arg(image.blocks.size())));
     }
     return success();
 }

@@ -82,7 +82,8 @@ bool isLong(const CommandSpec* spec, const QByteArray& body) {
 // to an earlier request, which it did not execute this one for.
 Verdict judgeUnrelated(bool multiuser, QString& problem) {
     if (!multiuser) return Verdict::Ignore;
-    problem = QCoreApplication::translate("cambench::comm", "the device repeated an answer to an earlier request");
+    problem = QCoreApplication::translate("cambench::comm",
+                                          "the device repeated an answer to an earlier request");
     return Verdict::Resend;
 }
 
@@ -149,7 +150,8 @@ Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fi
                 case ReplyMatch::NotUnderstood:
                     return Verdict::Accept;
                 case ReplyMatch::Malformed:
-                    problem = QCoreApplication::translate("cambench::comm", "a malformed reply: %1").arg(match->detail);
+                    problem = QCoreApplication::translate("cambench::comm", "a malformed reply: %1")
+                                  .arg(match->detail);
                     return Verdict::Retry;
                 case ReplyMatch::Unrelated:
                     break;
@@ -231,7 +233,8 @@ Result<Fields> AsciiLink::call(char kind, const char* name, const Fields& fields
     const CommandSpec* spec = findCommand(kind, name);
     if (!spec)
         return Error::usage(
-            QCoreApplication::translate("cambench::comm", "%1 is not a command of the catalogue").arg(commandLabel(kind, name)));
+            QCoreApplication::translate("cambench::comm", "%1 is not a command of the catalogue")
+                .arg(commandLabel(kind, name)));
     return call(*spec, fields, timeoutMs);
 }
 
@@ -254,14 +257,17 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
     switch (match.kind) {
         case ReplyMatch::DeviceError:
             return Error::device(match.errorCode,
-                                 QCoreApplication::translate("cambench::comm", "%1: the device reported error %2: %3")
+                                 QCoreApplication::translate("cambench::comm",
+                                                             "%1: the device reported error %2: %3")
                                      .arg(label)
                                      .arg(match.errorCode)
                                      .arg(deviceErrorText(match.errorCode)));
         case ReplyMatch::NotUnderstood:
             return Error{ErrorKind::NotUnderstood,
-                         QCoreApplication::translate("cambench::comm", "%1: the device does not know this command (firmware dated "
-                                        "%2); it needs a newer firmware for it")
+                         QCoreApplication::translate(
+                             "cambench::comm",
+                             "%1: the device does not know this command (firmware dated "
+                             "%2); it needs a newer firmware for it")
                              .arg(label, eepromDateText(match.eprom)),
                          0};
         default:
@@ -271,11 +277,14 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
 
 Result<QByteArray> AsciiLink::raw(char kind, const QByteArray& body, int timeoutMs) {
     if (kind != kQuery && kind != kCommand)
-        return Error::usage(
-            QCoreApplication::translate("cambench::comm", "a request starts with '?' or '!', not '%1'").arg(QChar(kind)));
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::comm", "a request starts with '?' or '!', not '%1'")
+                                .arg(QChar(kind)));
     if (body.isEmpty())
         return Error::usage(
-            QCoreApplication::translate("cambench::comm", "an empty request: type the command letters after %1").arg(QChar(kind)));
+            QCoreApplication::translate("cambench::comm",
+                                        "an empty request: type the command letters after %1")
+                .arg(QChar(kind)));
     const Status synced = ensureBlockSync();
     if (!synced) return synced.error();
     const CommandSpec* spec = matchRequest(kind, body);

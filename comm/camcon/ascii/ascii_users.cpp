@@ -47,12 +47,16 @@ Result<Walk> walkUsers(AsciiLink& link) {
         const Result<Fields> reply =
             link.call('?', "USER", Fields{{"index", qint64(i == 0 ? 0 : 1)}});
         if (!reply) {
-            return inContext(QCoreApplication::translate("cambench::comm", "reading user entry %1 (?USER)").arg(i + 1),
-                             reply.error());
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "reading user entry %1 (?USER)")
+                    .arg(i + 1),
+                reply.error());
         }
         if (i > 0 && link.lastCallMayHaveActedTwice()) {
             walk.lostPlace =
-                QCoreApplication::translate("cambench::comm", "the step to entry %1 was sent again after a lost reply").arg(i + 1);
+                QCoreApplication::translate(
+                    "cambench::comm", "the step to entry %1 was sent again after a lost reply")
+                    .arg(i + 1);
             return walk;
         }
         if (reply->bytes("name").isEmpty() && reply->bytes("number").isEmpty()) return walk;
@@ -60,8 +64,10 @@ Result<Walk> walkUsers(AsciiLink& link) {
         walk.users.append(userFrom(*reply));
     }
     return Error::communication(
-        QCoreApplication::translate("cambench::comm", "reading the users: the device lists more than %1 entries and no end; "
-                       "check the device")
+        QCoreApplication::translate(
+            "cambench::comm",
+            "reading the users: the device lists more than %1 entries and no end; "
+            "check the device")
             .arg(kMaxUsers));
 }
 
@@ -88,8 +94,10 @@ Result<QList<User>> AsciiCamCon::readUsers() {
         lastProblem = walk->lostPlace;
     }
     return Error::communication(
-        QCoreApplication::translate("cambench::comm", "reading the users: %1 walks through the list lost their place (%2); the "
-                       "list may be incomplete, so none is shown; check the cable and try again")
+        QCoreApplication::translate(
+            "cambench::comm",
+            "reading the users: %1 walks through the list lost their place (%2); the "
+            "list may be incomplete, so none is shown; check the cable and try again")
             .arg(kMaxWalks)
             .arg(lastProblem));
 }

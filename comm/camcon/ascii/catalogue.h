@@ -29,9 +29,9 @@ struct FieldSpec {
 };
 
 enum class ReplyKind {
-    Data,   // ':' + name + reply fields
-    Ok,     // ':' + name + "OK"
-    None,   // no reply at all (!GRESET)
+    Data,  // ':' + name + reply fields
+    Ok,    // ':' + name + "OK"
+    None,  // no reply at all (!GRESET)
 };
 
 // One command of manual section 5, from which encoding and decoding follow.
@@ -45,7 +45,7 @@ struct CommandSpec {
     bool provisional = false;  // format guessed (notes 3), one line to correct
     TimeoutClass timeout = TimeoutClass::Normal;
     QList<QByteArray> replyAliases{};  // other names the reply may carry (?MEES -> :MSE)
-    bool okOptional = false;   // the reply may lack "OK" (!GTZKANZ, notes 10)
+    bool okOptional = false;           // the reply may lack "OK" (!GTZKANZ, notes 10)
     // Whether a retry after a lost reply is safe in Standard framing, where
     // the device executes a repeated request again (Multiuser answers it).
     RetryPolicy retry = RetryPolicy::Idempotent;

@@ -42,7 +42,7 @@ ReplyMatch matchReply(const CommandSpec& spec, const Frame& reply);
 // Device side (simulator): decode a request body, encode a reply body.
 Result<Fields> decodeRequestFields(const CommandSpec& spec, QByteArrayView body);
 Result<QByteArray> encodeReplyBody(const CommandSpec& spec, const Fields& fields);  // Data kind
-QByteArray okReplyBody(const CommandSpec& spec);                  // name + "OK"
+QByteArray okReplyBody(const CommandSpec& spec);                                    // name + "OK"
 QByteArray errorReplyBody(const CommandSpec& spec, qint32 code);  // name + "ERR" + 8 hex
 QByteArray notUnderstoodBody(QByteArrayView epromDate);           // "Z" + date + NUL
 

@@ -20,9 +20,9 @@ constexpr char kLf = 0x0A;
 // The three Multiuser header bytes: 0x40+source, 0x80+destination,
 // 0xC0+block. Not part of the checksum.
 struct MultiuserAddress {
-    int source = 63;       // 0..63
-    int destination = 0;   // 0..63
-    int block = 0;         // 0..63
+    int source = 63;      // 0..63
+    int destination = 0;  // 0..63
+    int block = 0;        // 0..63
     friend bool operator==(const MultiuserAddress& a, const MultiuserAddress& b) {
         return a.source == b.source && a.destination == b.destination && a.block == b.block;
     }

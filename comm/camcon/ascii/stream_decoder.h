@@ -10,15 +10,15 @@ namespace cambench::comm {
 // What one completed (or abandoned) piece of the stream turned out to be.
 struct DecodeEvent {
     enum Kind {
-        FrameOk,       // a complete frame with a correct checksum
-        BadChecksum,   // complete frame, checksum wrong or missing
-        Oversized,     // no CR within kMaxFrameBytes: dropped, decoder resynchronised
-        Garbage,       // bytes outside any frame that were skipped
+        FrameOk,      // a complete frame with a correct checksum
+        BadChecksum,  // complete frame, checksum wrong or missing
+        Oversized,    // no CR within kMaxFrameBytes: dropped, decoder resynchronised
+        Garbage,      // bytes outside any frame that were skipped
     };
     Kind kind = FrameOk;
-    Frame frame;       // valid for FrameOk and BadChecksum
-    QByteArray raw;    // the wire bytes this event consumed
-    QString detail;    // for logs and error messages
+    Frame frame;     // valid for FrameOk and BadChecksum
+    QByteArray raw;  // the wire bytes this event consumed
+    QString detail;  // for logs and error messages
 };
 
 // Incremental, pure frame decoder: feed() any piece of the byte stream and
@@ -64,10 +64,10 @@ private:
     bool m_checksumEnabled = true;
     QByteArray m_buffer;
     State m_state = State::Hunt;
-    QByteArray m_body;         // unescaped bytes after the lead
-    bool m_escaped = false;    // an ESC was read: the next byte is literal
-    bool m_crSeen = false;     // an unescaped CR waits for its LF
-    QByteArray m_garbage;      // skipped bytes not yet reported
+    QByteArray m_body;       // unescaped bytes after the lead
+    bool m_escaped = false;  // an ESC was read: the next byte is literal
+    bool m_crSeen = false;   // an unescaped CR waits for its LF
+    QByteArray m_garbage;    // skipped bytes not yet reported
     QString m_garbageReason;
 };
 

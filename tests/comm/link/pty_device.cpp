@@ -87,8 +87,7 @@ void PtyDevice::run() {
 
 QByteArray replyFrom(const Frame& request, const QByteArray& body, int device, int block) {
     Frame reply{kReply, body, std::nullopt, true};
-    if (request.address)
-        reply.address = MultiuserAddress{device, request.address->source, block};
+    if (request.address) reply.address = MultiuserAddress{device, request.address->source, block};
     return encodeFrame(reply);
 }
 

@@ -25,8 +25,8 @@ const CommandSpec& spec(char kind, const char* name) {
 
 // ?NF reply for a track with one cam 100..200 and no more cams.
 QByteArray nfReplyBody() {
-    return encodeReplyBody(spec('?', "NF"), Fields{{"on", qint64(100)}, {"off", qint64(200)},
-                                                  {"more", qint64(0)}})
+    return encodeReplyBody(spec('?', "NF"),
+                           Fields{{"on", qint64(100)}, {"off", qint64(200)}, {"more", qint64(0)}})
         .value();
 }
 
@@ -34,7 +34,9 @@ DeviceAction answer(const Frame& request, const QByteArray& body) {
     return {{replyTo(request, body)}};
 }
 
-DeviceAction silence() { return {}; }
+DeviceAction silence() {
+    return {};
+}
 
 // The device, the port and the link of one test.
 struct Rig {
@@ -89,9 +91,11 @@ private Q_SLOTS:
 };
 
 void TestProtocolLink::callDecodesReplyFields() {
-    Rig rig(Framing::Standard, [](const Frame& request, int) { return answer(request, nfReplyBody()); });
+    Rig rig(Framing::Standard,
+            [](const Frame& request, int) { return answer(request, nfReplyBody()); });
     QVERIFY(rig.open());
-    const Result<Fields> reply = rig.link.call('?', "NF", Fields{{"program", qint64(3)}, {"output", qint64(1)}});
+    const Result<Fields> reply =
+        rig.link.call('?', "NF", Fields{{"program", qint64(3)}, {"output", qint64(1)}});
     QVERIFY2(reply.ok(), qPrintable(reply.error().message));
     QCOMPARE(reply->num("on"), 100);
     QCOMPARE(reply->num("off"), 200);
@@ -99,7 +103,8 @@ void TestProtocolLink::callDecodesReplyFields() {
 }
 
 void TestProtocolLink::callSendsEncodedRequest() {
-    Rig rig(Framing::Standard, [](const Frame& request, int) { return answer(request, nfReplyBody()); });
+    Rig rig(Framing::Standard,
+            [](const Frame& request, int) { return answer(request, nfReplyBody()); });
     QVERIFY(rig.open());
     QVERIFY(rig.link.call('?', "NF", Fields{{"program", qint64(3)}, {"output", qint64(10)}}).ok());
     const QList<Frame> requests = rig.device.requests();
@@ -136,7 +141,8 @@ void TestProtocolLink::retryReusesBlockNumber() {
 }
 
 void TestProtocolLink::newRequestTakesNextBlockNumber() {
-    Rig rig(Framing::Multiuser, [](const Frame& request, int) { return answer(request, nfReplyBody()); });
+    Rig rig(Framing::Multiuser,
+            [](const Frame& request, int) { return answer(request, nfReplyBody()); });
     QVERIFY(rig.open());
     QVERIFY(rig.link.call('?', "NF").ok());
     QVERIFY(rig.link.call('?', "NF").ok());
@@ -146,7 +152,8 @@ void TestProtocolLink::newRequestTakesNextBlockNumber() {
 }
 
 void TestProtocolLink::blockNumbersCountPerDestination() {
-    Rig rig(Framing::Multiuser, [](const Frame& request, int) { return answer(request, nfReplyBody()); });
+    Rig rig(Framing::Multiuser,
+            [](const Frame& request, int) { return answer(request, nfReplyBody()); });
     QVERIFY(rig.open());
     QVERIFY(rig.link.call('?', "NF").ok());  // device 5, block 0
     QVERIFY(rig.link.call('?', "NF").ok());  // device 5, block 1
@@ -163,7 +170,8 @@ void TestProtocolLink::blockNumbersCountPerDestination() {
 }
 
 void TestProtocolLink::blockNumberWrapsAfter63() {
-    Rig rig(Framing::Multiuser, [](const Frame& request, int) { return answer(request, QByteArray("UNIT")); });
+    Rig rig(Framing::Multiuser,
+            [](const Frame& request, int) { return answer(request, QByteArray("UNIT")); });
     QVERIFY(rig.open());
     for (int i = 0; i < 65; ++i) QVERIFY(rig.link.call('?', "UNIT").ok());
     const QList<Frame> requests = rig.device.requests();
@@ -207,7 +215,8 @@ void TestProtocolLink::garbageBeforeReplyIsSkipped() {
 void TestProtocolLink::replySplitIntoSingleBytesIsDecoded() {
     Rig rig(Framing::Multiuser, [](const Frame& request, int) {
         DeviceAction action;
-        for (const char byte : replyTo(request, nfReplyBody())) action.chunks.append(QByteArray(1, byte));
+        for (const char byte : replyTo(request, nfReplyBody()))
+            action.chunks.append(QByteArray(1, byte));
         action.chunkDelayMs = 2;
         return action;
     });
@@ -227,9 +236,11 @@ void TestProtocolLink::deviceErrorReturnsCodeAndTextWithoutRetry() {
     QVERIFY(!reply.ok());
     QCOMPARE(reply.error().kind, ErrorKind::DeviceError);
     QCOMPARE(reply.error().deviceCode, -43);
-    QVERIFY2(reply.error().message.startsWith(QLatin1String("?NF: the device reported error -43: ")),
-             qPrintable(reply.error().message));
-    QVERIFY(reply.error().message.size() > QStringLiteral("?NF: the device reported error -43: ").size());
+    QVERIFY2(
+        reply.error().message.startsWith(QLatin1String("?NF: the device reported error -43: ")),
+        qPrintable(reply.error().message));
+    QVERIFY(reply.error().message.size() >
+            QStringLiteral("?NF: the device reported error -43: ").size());
     QCOMPARE(rig.device.requestCount(), 1);
 }
 
@@ -241,17 +252,20 @@ void TestProtocolLink::notUnderstoodNamesCommandAndEpromDate() {
     const Result<Fields> reply = rig.link.call('?', "NF");
     QVERIFY(!reply.ok());
     QCOMPARE(reply.error().kind, ErrorKind::NotUnderstood);
-    QVERIFY2(reply.error().message.contains(QLatin1String("?NF")), qPrintable(reply.error().message));
-    QVERIFY2(reply.error().message.contains(QLatin1String("12.03.2004")), qPrintable(reply.error().message));
+    QVERIFY2(reply.error().message.contains(QLatin1String("?NF")),
+             qPrintable(reply.error().message));
+    QVERIFY2(reply.error().message.contains(QLatin1String("12.03.2004")),
+             qPrintable(reply.error().message));
     QCOMPARE(rig.device.requestCount(), 1);
 }
 
 void TestProtocolLink::replyFromOtherDeviceOrBlockIsIgnored() {
     Rig rig(Framing::Multiuser, [](const Frame& request, int) {
         const int block = request.address->block;
-        const QByteArray otherBody = encodeReplyBody(spec('?', "NF"), Fields{{"on", qint64(1)}}).value();
-        return DeviceAction{{replyFrom(request, otherBody, 6, block),                   // other device
-                             replyFrom(request, otherBody, 5, (block + 1) % 64),        // other block
+        const QByteArray otherBody =
+            encodeReplyBody(spec('?', "NF"), Fields{{"on", qint64(1)}}).value();
+        return DeviceAction{{replyFrom(request, otherBody, 6, block),             // other device
+                             replyFrom(request, otherBody, 5, (block + 1) % 64),  // other block
                              replyTo(request, nfReplyBody())}};
     });
     QVERIFY(rig.open());
@@ -262,7 +276,8 @@ void TestProtocolLink::replyFromOtherDeviceOrBlockIsIgnored() {
 }
 
 void TestProtocolLink::allRepliesDroppedGivesCommunicationErrorAfterAllAttempts() {
-    Rig rig(Framing::Multiuser, [](const Frame&, int) { return silence(); }, 3, 100);
+    Rig rig(
+        Framing::Multiuser, [](const Frame&, int) { return silence(); }, 3, 100);
     QVERIFY(rig.open());
     const Result<Fields> reply = rig.link.call('?', "NF");
     QVERIFY(!reply.ok());
@@ -280,10 +295,13 @@ void TestProtocolLink::cancelDuringLongWaitReturnsCancelled() {
     std::atomic_bool cancel{false};
     // The device cancels once it holds the request, so the link is waiting;
     // the timeout is long enough that only cancelling can end the call.
-    Rig rig(Framing::Standard, [&cancel](const Frame&, int) {
-        cancel = true;
-        return silence();
-    }, 0, 120000);
+    Rig rig(
+        Framing::Standard,
+        [&cancel](const Frame&, int) {
+            cancel = true;
+            return silence();
+        },
+        0, 120000);
     QVERIFY(rig.open());
     rig.link.setCancelFlag(&cancel);
     const Result<Fields> reply = rig.link.call('?', "NF");
@@ -292,7 +310,8 @@ void TestProtocolLink::cancelDuringLongWaitReturnsCancelled() {
 }
 
 void TestProtocolLink::commandWithoutReplyReturnsAfterWriting() {
-    Rig rig(Framing::Standard, [](const Frame&, int) { return silence(); }, 3, 120000);
+    Rig rig(
+        Framing::Standard, [](const Frame&, int) { return silence(); }, 3, 120000);
     QVERIFY(rig.open());
     const Result<Fields> reply = rig.link.call('!', "GRESET");
     QVERIFY2(reply.ok(), qPrintable(reply.error().message));
@@ -303,9 +322,12 @@ void TestProtocolLink::commandWithoutReplyReturnsAfterWriting() {
 void TestProtocolLink::longCommandsUseLongTimeout() {
     // The normal timeout is too short for the device's delay, the long one
     // is not: !CA succeeds only if it waits with the long timeout.
-    Rig rig(Framing::Standard, [](const Frame& request, int) {
-        return DeviceAction{{replyTo(request, okReplyBody(spec('!', "CA")))}, 400};
-    }, 0, 50);
+    Rig rig(
+        Framing::Standard,
+        [](const Frame& request, int) {
+            return DeviceAction{{replyTo(request, okReplyBody(spec('!', "CA")))}, 400};
+        },
+        0, 50);
     QVERIFY(rig.open());
     const Result<Fields> reply = rig.link.call('!', "CA");
     QVERIFY2(reply.ok(), qPrintable(reply.error().message));
@@ -313,7 +335,9 @@ void TestProtocolLink::longCommandsUseLongTimeout() {
 }
 
 void TestProtocolLink::rawReturnsReplyBody() {
-    Rig rig(Framing::Multiuser, [](const Frame& request, int) { return answer(request, QByteArray("IFGWG   12.345")); });
+    Rig rig(Framing::Multiuser, [](const Frame& request, int) {
+        return answer(request, QByteArray("IFGWG   12.345"));
+    });
     QVERIFY(rig.open());
     const Result<QByteArray> reply = rig.link.raw('?', "IFGWG");
     QVERIFY2(reply.ok(), qPrintable(reply.error().message));
@@ -331,7 +355,8 @@ void TestProtocolLink::rawRejectsBadLead() {
 }
 
 void TestProtocolLink::trafficSinkSeesBothDirections() {
-    Rig rig(Framing::Standard, [](const Frame& request, int) { return answer(request, QByteArray("UNIT")); });
+    Rig rig(Framing::Standard,
+            [](const Frame& request, int) { return answer(request, QByteArray("UNIT")); });
     QVERIFY(rig.open());
     QList<TrafficEntry> entries;
     rig.link.setTrafficSink([&entries](const TrafficEntry& entry) { entries.append(entry); });
@@ -346,11 +371,12 @@ void TestProtocolLink::trafficSinkSeesBothDirections() {
 
 void TestProtocolLink::trafficSinkMasksUserNumbers() {
     const CommandSpec& query = spec('?', "USER");
-    const QByteArray userReply =
-        encodeReplyBody(query, Fields{{"name", QByteArray("Meier")}, {"number", QByteArray("4711")},
-                                      {"access", QByteArray(32, '\x01')}, {"all", qint64(1)},
-                                      {"rights", qint64(3)}})
-            .value();
+    const QByteArray userReply = encodeReplyBody(query, Fields{{"name", QByteArray("Meier")},
+                                                               {"number", QByteArray("4711")},
+                                                               {"access", QByteArray(32, '\x01')},
+                                                               {"all", qint64(1)},
+                                                               {"rights", qint64(3)}})
+                                     .value();
     Rig rig(Framing::Multiuser, [&](const Frame& request, int) {
         return answer(request, request.lead == '?' ? userReply : okReplyBody(spec('!', "USER")));
     });
@@ -361,10 +387,11 @@ void TestProtocolLink::trafficSinkMasksUserNumbers() {
     const Result<Fields> user = rig.link.call('?', "USER", Fields{{"index", qint64(0)}});
     QVERIFY2(user.ok(), qPrintable(user.error().message));
     QCOMPARE(user->bytes("number"), QByteArray("4711"));  // the caller gets the real number
-    const Result<Fields> written = rig.link.call('!', "USER", Fields{{"oldNumber", QByteArray("4711")},
-                                                                   {"name", QByteArray("Meier")},
-                                                                   {"number", QByteArray("0815")},
-                                                                   {"access", QByteArray(32, '\0')}});
+    const Result<Fields> written = rig.link.call('!', "USER",
+                                                 Fields{{"oldNumber", QByteArray("4711")},
+                                                        {"name", QByteArray("Meier")},
+                                                        {"number", QByteArray("0815")},
+                                                        {"access", QByteArray(32, '\0')}});
     QVERIFY2(written.ok(), qPrintable(written.error().message));
     // The device saw the real numbers, the sink only stars.
     QVERIFY(rig.device.requests()[1].body.contains("4711"));
@@ -380,16 +407,20 @@ void TestProtocolLink::trafficSinkMasksUserNumbers() {
 }
 
 void TestProtocolLink::statsCountBytesAndRetries() {
-    Rig rig(Framing::Standard, [](const Frame& request, int index) {
-        return index == 0 ? silence() : answer(request, QByteArray("UNIT"));
-    }, 3, 100);
+    Rig rig(
+        Framing::Standard,
+        [](const Frame& request, int index) {
+            return index == 0 ? silence() : answer(request, QByteArray("UNIT"));
+        },
+        3, 100);
     QVERIFY(rig.open());
     QVERIFY(rig.link.call('?', "UNIT").ok());
     const qint64 requestBytes = encodeFrame(Frame{'?', "UNIT", std::nullopt, true}).size();
     QCOMPARE(rig.link.stats().requests, 1);
     QCOMPARE(rig.link.stats().retries, 1);
     QCOMPARE(rig.link.stats().bytesSent, 2 * requestBytes);
-    QCOMPARE(rig.link.stats().bytesReceived, encodeFrame(Frame{':', "UNIT", std::nullopt, true}).size());
+    QCOMPARE(rig.link.stats().bytesReceived,
+             encodeFrame(Frame{':', "UNIT", std::nullopt, true}).size());
     rig.link.resetStats();
     QCOMPARE(rig.link.stats().requests, 0);
 }

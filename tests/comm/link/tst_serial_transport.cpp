@@ -32,7 +32,8 @@ void TestSerialTransport::openAppliesSettingsToTheLine() {
     // it forces 8 data bits without parity, so those cannot be checked here.
     PtyDevice device(Framing::Standard, [](const Frame&, int) { return DeviceAction{}; });
     QVERIFY(device.isValid());
-    SerialTransport transport(device.slavePath(), SerialSettings{19200, 8, 'N', 2, 'H', true, true});
+    SerialTransport transport(device.slavePath(),
+                              SerialSettings{19200, 8, 'N', 2, 'H', true, true});
     const Status opened = transport.open();
     QVERIFY2(opened.ok(), qPrintable(opened.error().message));
 
@@ -66,7 +67,8 @@ void TestSerialTransport::openMissingPortNamesPortAndWhatToCheck() {
     QCOMPARE(opened.error().kind, ErrorKind::Communication);
     QVERIFY2(opened.error().message.contains(QLatin1String("/dev/cambench-no-such-port")),
              qPrintable(opened.error().message));
-    QVERIFY2(opened.error().message.contains(QLatin1String("check")), qPrintable(opened.error().message));
+    QVERIFY2(opened.error().message.contains(QLatin1String("check")),
+             qPrintable(opened.error().message));
     QVERIFY(!transport.isOpen());
 }
 
@@ -76,7 +78,8 @@ void TestSerialTransport::invalidSettingsAreRefused() {
     const Status opened = transport.open();
     QVERIFY(!opened.ok());
     QCOMPARE(opened.error().kind, ErrorKind::Usage);
-    QVERIFY2(opened.error().message.contains(QLatin1String("data bits")), qPrintable(opened.error().message));
+    QVERIFY2(opened.error().message.contains(QLatin1String("data bits")),
+             qPrintable(opened.error().message));
 }
 
 void TestSerialTransport::readReturnsEmptyOnQuietLine() {
@@ -99,7 +102,9 @@ void TestSerialTransport::writeReachesTheDevice() {
 }
 
 void TestSerialTransport::portDisappearingDuringWaitGivesCommunicationError() {
-    PtyDevice device(Framing::Standard, [](const Frame&, int) { return DeviceAction{{}, 0, true}; });
+    PtyDevice device(Framing::Standard, [](const Frame&, int) {
+        return DeviceAction{{}, 0, true};
+    });
     SerialTransport transport(device.slavePath(), SerialSettings{});
     QVERIFY(transport.open().ok());
     // Retries and timeout are large: only the vanished port can end this.
@@ -109,12 +114,15 @@ void TestSerialTransport::portDisappearingDuringWaitGivesCommunicationError() {
     QVERIFY(!reply.ok());
     QCOMPARE(reply.error().kind, ErrorKind::Communication);
     QVERIFY2(reply.error().message.contains(device.slavePath()), qPrintable(reply.error().message));
-    QVERIFY2(reply.error().message.contains(QLatin1String("disappeared")), qPrintable(reply.error().message));
+    QVERIFY2(reply.error().message.contains(QLatin1String("disappeared")),
+             qPrintable(reply.error().message));
     QVERIFY(!transport.isOpen());
 }
 
 void TestSerialTransport::callsAfterDisappearanceFailFast() {
-    PtyDevice device(Framing::Standard, [](const Frame&, int) { return DeviceAction{{}, 0, true}; });
+    PtyDevice device(Framing::Standard, [](const Frame&, int) {
+        return DeviceAction{{}, 0, true};
+    });
     SerialTransport transport(device.slavePath(), SerialSettings{});
     QVERIFY(transport.open().ok());
     QVERIFY(transport.write(encodeFrame(Frame{'?', "UNIT", std::nullopt, true})).ok());
@@ -122,12 +130,14 @@ void TestSerialTransport::callsAfterDisappearanceFailFast() {
     QVERIFY(!transport.read(60000).ok());
     const Status written = transport.write("?UNIT");
     QVERIFY(!written.ok());
-    QVERIFY2(written.error().message.contains(QLatin1String("disappeared")), qPrintable(written.error().message));
+    QVERIFY2(written.error().message.contains(QLatin1String("disappeared")),
+             qPrintable(written.error().message));
     QVERIFY(!transport.read(60000).ok());
 }
 
 void TestSerialTransport::descriptionNamesPortAndFrame() {
-    SerialTransport transport(QStringLiteral("/dev/ttyUSB0"), SerialSettings{38400, 8, 'E', 1, 'N', true, true});
+    SerialTransport transport(QStringLiteral("/dev/ttyUSB0"),
+                              SerialSettings{38400, 8, 'E', 1, 'N', true, true});
     QCOMPARE(transport.description(), QStringLiteral("/dev/ttyUSB0 at 38400 8E1"));
 }
 

@@ -89,7 +89,8 @@ private Q_SLOTS:
 };
 
 void TestTcpTransport::callOverTcpDecodesReply() {
-    ScriptedServer server([](const Frame& request, int) { return DeviceAction{{replyTo(request, "UNIT")}}; });
+    ScriptedServer server(
+        [](const Frame& request, int) { return DeviceAction{{replyTo(request, "UNIT")}}; });
     QVERIFY(server.port() != 0);
     const Result<Fields> reply = callOnThread(server.port(), "UNIT", 5000);
     QVERIFY2(reply.ok(), qPrintable(reply.error().message));
@@ -107,8 +108,9 @@ void TestTcpTransport::peerClosingMidTransferGivesCommunicationError() {
     QCOMPARE(reply.error().kind, ErrorKind::Communication);
     QVERIFY2(reply.error().message.contains(QLatin1String("closed the connection")),
              qPrintable(reply.error().message));
-    QVERIFY2(reply.error().message.contains(QStringLiteral("tcp://127.0.0.1:%1").arg(server.port())),
-             qPrintable(reply.error().message));
+    QVERIFY2(
+        reply.error().message.contains(QStringLiteral("tcp://127.0.0.1:%1").arg(server.port())),
+        qPrintable(reply.error().message));
     QCOMPARE(server.requestCount(), 1);
 }
 

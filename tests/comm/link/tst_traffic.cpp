@@ -1,7 +1,7 @@
 // The traffic log line and the masking of user numbers, on wire bytes.
-#include "comm/engine/traffic_log.h"
-#include "comm/camcon/ascii/traffic_mask.h"
 #include "comm/camcon/ascii/command_codec.h"
+#include "comm/camcon/ascii/traffic_mask.h"
+#include "comm/engine/traffic_log.h"
 
 #include <QtTest>
 
@@ -11,8 +11,9 @@ using namespace cambench::comm;
 namespace {
 
 QByteArray userReplyBody(const QByteArray& name, const QByteArray& number) {
-    return encodeReplyBody(*findCommand('?', "USER"),
-                           Fields{{"name", name}, {"number", number}, {"access", QByteArray(32, '\0')}})
+    return encodeReplyBody(
+               *findCommand('?', "USER"),
+               Fields{{"name", name}, {"number", number}, {"access", QByteArray(32, '\0')}})
         .value();
 }
 
@@ -34,17 +35,21 @@ private Q_SLOTS:
 void TestTraffic::lineShowsTimeDirectionHexAndAscii() {
     const TrafficEntry entry{QDateTime(QDate(2026, 11, 21), QTime(22, 41, 53, 123)), true,
                              QByteArray("?IFGWG4C\r\n")};
-    QCOMPARE(formatTrafficEntry(entry),
-             QStringLiteral("2026-11-21T22:41:53.123 > 3F 49 46 47 57 47 34 43 0D 0A  |?IFGWG4C..|"));
+    QCOMPARE(
+        formatTrafficEntry(entry),
+        QStringLiteral("2026-11-21T22:41:53.123 > 3F 49 46 47 57 47 34 43 0D 0A  |?IFGWG4C..|"));
 }
 
 void TestTraffic::incomingLineUsesLessThan() {
-    const TrafficEntry entry{QDateTime(QDate(2026, 1, 2), QTime(3, 4, 5, 6)), false, QByteArray("\xC1:\x7F", 3)};
-    QCOMPARE(formatTrafficEntry(entry), QStringLiteral("2026-01-02T03:04:05.006 < C1 3A 7F  |.:.|"));
+    const TrafficEntry entry{QDateTime(QDate(2026, 1, 2), QTime(3, 4, 5, 6)), false,
+                             QByteArray("\xC1:\x7F", 3)};
+    QCOMPARE(formatTrafficEntry(entry),
+             QStringLiteral("2026-01-02T03:04:05.006 < C1 3A 7F  |.:.|"));
 }
 
 void TestTraffic::userReplyNumberIsMasked() {
-    const QByteArray wire = encodeFrame(Frame{':', userReplyBody("Meier", "4711"), std::nullopt, true});
+    const QByteArray wire =
+        encodeFrame(Frame{':', userReplyBody("Meier", "4711"), std::nullopt, true});
     const QByteArray masked = maskSecrets(wire, false);
     QCOMPARE(masked.size(), wire.size());
     QVERIFY(!masked.contains("4711"));
@@ -58,10 +63,11 @@ void TestTraffic::userReplyNumberIsMasked() {
 }
 
 void TestTraffic::userRequestNumbersAreMasked() {
-    const QByteArray body = encodeRequestBody(*findCommand('!', "USER"),
-                                              Fields{{"oldNumber", QByteArray("1234")}, {"name", QByteArray("X")},
-                                                     {"number", QByteArray("DEL")}})
-                                .value();
+    const QByteArray body =
+        encodeRequestBody(*findCommand('!', "USER"), Fields{{"oldNumber", QByteArray("1234")},
+                                                            {"name", QByteArray("X")},
+                                                            {"number", QByteArray("DEL")}})
+            .value();
     const QByteArray wire = encodeFrame(Frame{'!', body, std::nullopt, true});
     const QByteArray masked = maskSecrets(wire, true);
     QCOMPARE(masked.mid(1 + 4, 6), QByteArray("******"));
@@ -72,7 +78,8 @@ void TestTraffic::userRequestNumbersAreMasked() {
 }
 
 void TestTraffic::escapedByteInNumberIsMaskedWithItsEsc() {
-    const QByteArray wire = encodeFrame(Frame{':', userReplyBody("A", QByteArray("1\r2")), std::nullopt, true});
+    const QByteArray wire =
+        encodeFrame(Frame{':', userReplyBody("A", QByteArray("1\r2")), std::nullopt, true});
     QVERIFY(wire.contains(QByteArray("1\x1b\r2")));
     const QByteArray masked = maskSecrets(wire, false);
     QCOMPARE(masked.size(), wire.size());

@@ -24,7 +24,8 @@ private Q_SLOTS:
 };
 
 void TestTransportFactory::serialPathMakesSerialTransport() {
-    const auto transport = make(QStringLiteral("/dev/ttyUSB0"), SerialSettings{38400, 8, 'N', 1, 'N', true, true});
+    const auto transport =
+        make(QStringLiteral("/dev/ttyUSB0"), SerialSettings{38400, 8, 'N', 1, 'N', true, true});
     QVERIFY2(transport.ok(), qPrintable(transport.error().message));
     QCOMPARE((*transport)->description(), QStringLiteral("/dev/ttyUSB0 at 38400 8N1"));
     QVERIFY(!(*transport)->isOpen());
@@ -47,11 +48,16 @@ void TestTransportFactory::invalidNamesAreUsageErrors_data() {
     QTest::addColumn<QString>("port");
     QTest::addColumn<QString>("mentions");
     QTest::newRow("empty") << QString() << QStringLiteral("no port");
-    QTest::newRow("tcp without port") << QStringLiteral("tcp://10.0.0.5") << QStringLiteral("tcp://host:port");
-    QTest::newRow("tcp without host") << QStringLiteral("tcp://:4001") << QStringLiteral("tcp://host:port");
-    QTest::newRow("tcp with path") << QStringLiteral("tcp://10.0.0.5:4001/x") << QStringLiteral("tcp://host:port");
-    QTest::newRow("unknown scheme") << QStringLiteral("udp://10.0.0.5:4001") << QStringLiteral("unknown scheme");
-    QTest::newRow("bad sim option") << QStringLiteral("sim:nonsense=1") << QStringLiteral("nonsense");
+    QTest::newRow("tcp without port")
+        << QStringLiteral("tcp://10.0.0.5") << QStringLiteral("tcp://host:port");
+    QTest::newRow("tcp without host")
+        << QStringLiteral("tcp://:4001") << QStringLiteral("tcp://host:port");
+    QTest::newRow("tcp with path")
+        << QStringLiteral("tcp://10.0.0.5:4001/x") << QStringLiteral("tcp://host:port");
+    QTest::newRow("unknown scheme")
+        << QStringLiteral("udp://10.0.0.5:4001") << QStringLiteral("unknown scheme");
+    QTest::newRow("bad sim option")
+        << QStringLiteral("sim:nonsense=1") << QStringLiteral("nonsense");
 }
 
 void TestTransportFactory::invalidNamesAreUsageErrors() {

@@ -44,9 +44,9 @@ void TestSimTableLine::eachLinkFaultHappensAndResultsStayRight() {
     QFETCH(QString, fault);
     QFETCH(Counter, counter);
     const SerialSettings serial;
-    Result<std::unique_ptr<Transport>> made = makeSimTransport(
-        QStringLiteral("sim:throttle=0;seed=5;%1=0.1").arg(fault), serial,
-        QStringLiteral("3964r-n96"));
+    Result<std::unique_ptr<Transport>> made =
+        makeSimTransport(QStringLiteral("sim:throttle=0;seed=5;%1=0.1").arg(fault), serial,
+                         QStringLiteral("3964r-n96"));
     QVERIFY(made);
     std::unique_ptr<Transport> transport = std::move(made).value();
     QVERIFY(transport->open());
@@ -66,9 +66,8 @@ void TestSimTableLine::eachLinkFaultHappensAndResultsStayRight() {
 
 void TestSimTableLine::deadDeviceEndsInOneClearFailure() {
     const SerialSettings serial;
-    Result<std::unique_ptr<Transport>> made =
-        makeSimTransport(QStringLiteral("sim:throttle=0;dead=1"), serial,
-                         QStringLiteral("3964r-e38"));
+    Result<std::unique_ptr<Transport>> made = makeSimTransport(
+        QStringLiteral("sim:throttle=0;dead=1"), serial, QStringLiteral("3964r-e38"));
     QVERIFY(made);
     std::unique_ptr<Transport> transport = std::move(made).value();
     QVERIFY(transport->open());

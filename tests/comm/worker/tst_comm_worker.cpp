@@ -109,12 +109,12 @@ void TestCommWorker::jobRunsOnWorkerThread() {
     CommWorker worker;
     std::optional<QThread*> jobThread;
     QThread* doneThread = nullptr;
-    worker.run<QThread*>(this, JobPriority::User, "where",
-                         [](JobContext&) { return QThread::currentThread(); },
-                         [&](QThread* thread) {
-                             jobThread = thread;
-                             doneThread = QThread::currentThread();
-                         });
+    worker.run<QThread*>(
+        this, JobPriority::User, "where", [](JobContext&) { return QThread::currentThread(); },
+        [&](QThread* thread) {
+            jobThread = thread;
+            doneThread = QThread::currentThread();
+        });
     QTRY_VERIFY_WITH_TIMEOUT(jobThread.has_value(), kHangBoundMs);
     QVERIFY(*jobThread != QThread::currentThread());
     QCOMPARE(doneThread, QThread::currentThread());  // results come back to the context
@@ -124,9 +124,9 @@ void TestCommWorker::jobCallsReachTheDevice() {
     CommWorker worker;
     worker.connectTo(portSettings("sim:throttle=0"), linkSettings(1000, 2));
     std::optional<Result<Fields>> reply;
-    worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return askUnit(ctx); },
-                               [&](Result<Fields> result) { reply = std::move(result); });
+    worker.run<Result<Fields>>(
+        this, JobPriority::User, "unit", [](JobContext& ctx) { return askUnit(ctx); },
+        [&](Result<Fields> result) { reply = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), kHangBoundMs);
     QVERIFY2(reply->ok(), qPrintable(reply->error().message));
 }
@@ -134,9 +134,9 @@ void TestCommWorker::jobCallsReachTheDevice() {
 void TestCommWorker::jobWithoutConnectionFailsWithNotConnected() {
     CommWorker worker;
     std::optional<Result<Fields>> reply;
-    worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return askUnit(ctx); },
-                               [&](Result<Fields> result) { reply = std::move(result); });
+    worker.run<Result<Fields>>(
+        this, JobPriority::User, "unit", [](JobContext& ctx) { return askUnit(ctx); },
+        [&](Result<Fields> result) { reply = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), kHangBoundMs);
     QVERIFY(!reply->ok());
     QCOMPARE(reply->error().kind, ErrorKind::Communication);
@@ -151,7 +151,8 @@ void TestCommWorker::userJobsRunBeforePollJobs() {
     submitBlocker(worker, gate, log);
     QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 1, kHangBoundMs);
     for (const char* title : {"poll 1", "user 1", "poll 2", "user 2"}) {
-        const JobPriority priority = QByteArray(title).startsWith("user") ? JobPriority::User : JobPriority::Poll;
+        const JobPriority priority =
+            QByteArray(title).startsWith("user") ? JobPriority::User : JobPriority::Poll;
         worker.submit(priority, title, [&log, title](JobContext&) { log.add(title); });
     }
     gate.release();
@@ -168,7 +169,8 @@ void TestCommWorker::pollWithSameKeyReplacesQueuedPoll() {
     QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 1, kHangBoundMs);
     QList<quint64> ids;
     for (const char* title : {"status 1", "status 2", "status 3"})
-        ids.append(worker.submit(JobPriority::Poll, title, [&log, title](JobContext&) { log.add(title); }, "status"));
+        ids.append(worker.submit(
+            JobPriority::Poll, title, [&log, title](JobContext&) { log.add(title); }, "status"));
     gate.release();
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 4, kHangBoundMs);
     QCOMPARE(log.get(), QStringList({"blocker", "status 3"}));
@@ -185,7 +187,8 @@ void TestCommWorker::cancelQueuedJobRemovesIt() {
     QSignalSpy finished(&worker, &CommWorker::jobFinished);
     submitBlocker(worker, gate, log);
     QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 1, kHangBoundMs);
-    const quint64 victim = worker.submit(JobPriority::User, "victim", [&log](JobContext&) { log.add("victim"); });
+    const quint64 victim =
+        worker.submit(JobPriority::User, "victim", [&log](JobContext&) { log.add("victim"); });
     worker.submit(JobPriority::User, "after", [&log](JobContext&) { log.add("after"); });
     worker.cancel(victim);
     gate.release();
@@ -221,11 +224,11 @@ void TestCommWorker::cancelAllStopsEverything() {
     RunLog log;
     QSignalSpy finished(&worker, &CommWorker::jobFinished);
     std::optional<ErrorKind> kind;
-    worker.submit(JobPriority::User, "silent", [&kind](JobContext& ctx) {
-        kind = askUnit(ctx).error().kind;
-    });
+    worker.submit(JobPriority::User, "silent",
+                  [&kind](JobContext& ctx) { kind = askUnit(ctx).error().kind; });
     worker.submit(JobPriority::User, "queued", [&log](JobContext&) { log.add("queued"); });
-    worker.submit(JobPriority::Poll, "poll", [&log](JobContext&) { log.add("poll"); }, "p");
+    worker.submit(
+        JobPriority::Poll, "poll", [&log](JobContext&) { log.add("poll"); }, "p");
     QTRY_COMPARE_WITH_TIMEOUT(device.requestCount(), 1, kHangBoundMs);
     worker.cancelAll();
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, kHangBoundMs);
@@ -260,38 +263,45 @@ void TestCommWorker::jobProgressAndTrafficReachTheFront() {
 }
 
 void TestCommWorker::vanishingPortMakesStateLostAndLaterJobsFailFast() {
-    PtyDevice device(Framing::Standard, [](const Frame&, int) { return DeviceAction{{}, 0, true}; });
+    PtyDevice device(Framing::Standard, [](const Frame&, int) {
+        return DeviceAction{{}, 0, true};
+    });
     CommWorker worker;
     QSignalSpy states(&worker, &CommWorker::connectionStateChanged);
     worker.connectTo(portSettings(device.slavePath()), linkSettings(60000, 3));
     QTRY_COMPARE_WITH_TIMEOUT(worker.state(), ConnectionState::Connected, kHangBoundMs);
 
     std::optional<Result<Fields>> first;
-    worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return askUnit(ctx); },
-                               [&](Result<Fields> result) { first = std::move(result); });
+    worker.run<Result<Fields>>(
+        this, JobPriority::User, "unit", [](JobContext& ctx) { return askUnit(ctx); },
+        [&](Result<Fields> result) { first = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(first.has_value(), kHangBoundMs);
     QVERIFY(!first->ok());
     QCOMPARE(first->error().kind, ErrorKind::Communication);
-    QVERIFY2(first->error().message.contains(device.slavePath()), qPrintable(first->error().message));
+    QVERIFY2(first->error().message.contains(device.slavePath()),
+             qPrintable(first->error().message));
 
     QTRY_COMPARE_WITH_TIMEOUT(worker.state(), ConnectionState::Lost, kHangBoundMs);
     QCOMPARE(states.last()[0].value<ConnectionState>(), ConnectionState::Lost);
-    QVERIFY2(states.last()[1].toString().contains("disappeared"), qPrintable(states.last()[1].toString()));
+    QVERIFY2(states.last()[1].toString().contains("disappeared"),
+             qPrintable(states.last()[1].toString()));
 
     std::optional<Result<Fields>> second;
-    worker.run<Result<Fields>>(this, JobPriority::User, "unit again",
-                               [](JobContext& ctx) { return askUnit(ctx); },
-                               [&](Result<Fields> result) { second = std::move(result); });
+    worker.run<Result<Fields>>(
+        this, JobPriority::User, "unit again", [](JobContext& ctx) { return askUnit(ctx); },
+        [&](Result<Fields> result) { second = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(second.has_value(), kHangBoundMs);
     QVERIFY(!second->ok());
     QCOMPARE(second->error().kind, ErrorKind::Communication);
-    QVERIFY2(second->error().message.contains("not connected"), qPrintable(second->error().message));
+    QVERIFY2(second->error().message.contains("not connected"),
+             qPrintable(second->error().message));
     QCOMPARE(device.requestCount(), 1);
 }
 
 void TestCommWorker::reconnectAfterLostWorks() {
-    PtyDevice vanishing(Framing::Standard, [](const Frame&, int) { return DeviceAction{{}, 0, true}; });
+    PtyDevice vanishing(Framing::Standard, [](const Frame&, int) {
+        return DeviceAction{{}, 0, true};
+    });
     PtyDevice healthy(Framing::Standard, [](const Frame& request, int) {
         return DeviceAction{{replyTo(request, "UNIT")}};
     });
@@ -303,9 +313,9 @@ void TestCommWorker::reconnectAfterLostWorks() {
     worker.connectTo(portSettings(healthy.slavePath()), linkSettings(5000));
     QTRY_COMPARE_WITH_TIMEOUT(worker.state(), ConnectionState::Connected, kHangBoundMs);
     std::optional<Result<Fields>> reply;
-    worker.run<Result<Fields>>(this, JobPriority::User, "unit",
-                               [](JobContext& ctx) { return askUnit(ctx); },
-                               [&](Result<Fields> result) { reply = std::move(result); });
+    worker.run<Result<Fields>>(
+        this, JobPriority::User, "unit", [](JobContext& ctx) { return askUnit(ctx); },
+        [&](Result<Fields> result) { reply = std::move(result); });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), kHangBoundMs);
     QVERIFY2(reply->ok(), qPrintable(reply->error().message));
 }

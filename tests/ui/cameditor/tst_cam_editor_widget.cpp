@@ -4,9 +4,9 @@
 
 #include "ui/cameditor/cam_diagram_widget.h"
 #include "ui/cameditor/cam_editor_widget.h"
-#include "ui/cameditor/range_delegate.h"
 #include "ui/cameditor/cam_generator_dialog.h"
 #include "ui/cameditor/cam_table_model.h"
+#include "ui/cameditor/range_delegate.h"
 #include "ui/cameditor/track_table_model.h"
 
 #include <QAbstractItemModelTester>
@@ -131,7 +131,8 @@ void CamEditorWidgetTest::delegateEditUpdatesDocumentAndDiagram() {
     QTest::keyClick(editor, Qt::Key_Return);
     auto* delegate = qobject_cast<RangeDelegate*>(table->itemDelegate());
     QVERIFY(delegate);
-    QVERIFY2(delegate->lastRefusal().contains(QStringLiteral("3600")), qPrintable(delegate->lastRefusal()));
+    QVERIFY2(delegate->lastRefusal().contains(QStringLiteral("3600")),
+             qPrintable(delegate->lastRefusal()));
     QCOMPARE(QApplication::focusWidget(), editor);
     QCOMPARE(m_document->track(0, 1).cams.at(1), (Cam{90, 150}));
     QTest::keyClick(editor, Qt::Key_Escape);
@@ -323,10 +324,10 @@ void CamEditorWidgetTest::csvExportAndImportRoundTrip() {
 
 void CamEditorWidgetTest::screenshotsInLightAndDarkPalette() {
     // A busier demo: names, dead times, an edited cam, an overlap and live data.
-    m_document->loadOutputSettingsFromDevice(
-        {{1, QStringLiteral("Glue valve")}, {2, QStringLiteral("Knife")},
-         {3, QStringLiteral("Wrap sensor")}},
-        {{1, 25}, {2, 123}});
+    m_document->loadOutputSettingsFromDevice({{1, QStringLiteral("Glue valve")},
+                                              {2, QStringLiteral("Knife")},
+                                              {3, QStringLiteral("Wrap sensor")}},
+                                             {{1, 25}, {2, 123}});
     m_document->insertCam(0, 2, {200, 260});
     m_document->insertCam(0, 5, {40, 90});
     m_document->insertCam(0, 5, {80, 120});  // overlaps the one before
@@ -334,13 +335,12 @@ void CamEditorWidgetTest::screenshotsInLightAndDarkPalette() {
     m_editor->diagram()->setLivePosition(140);
     m_editor->diagram()->setOutputStates({true, false, true, false, false, false, false, false});
     m_editor->setCurrentOutput(1);
-    m_editor->camTable()->setCurrentIndex(
-        m_editor->camModel()->index(1, CamTableModel::OnColumn));
+    m_editor->camTable()->setCurrentIndex(m_editor->camModel()->index(1, CamTableModel::OnColumn));
 
     const QByteArray directory = qgetenv("CAMBENCH_SCREENSHOT_DIR");
     const QPalette light = QApplication::style()->standardPalette();
-    for (const auto& [name, palette] :
-         {std::pair{QStringLiteral("light"), light}, std::pair{QStringLiteral("dark"), darkPalette()}}) {
+    for (const auto& [name, palette] : {std::pair{QStringLiteral("light"), light},
+                                        std::pair{QStringLiteral("dark"), darkPalette()}}) {
         m_editor->setPalette(palette);
         const QImage image = m_editor->grab().toImage();
         QVERIFY(!image.isNull());

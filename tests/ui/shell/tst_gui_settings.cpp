@@ -58,7 +58,8 @@ void GuiSettingsTest::everythingRememberedSurvivesARestart() {
         map.insert(QStringLiteral("pcNumber"), 12);
         multiuser.fromMap(map);
         comm::ConnectionSettings connection = page->connectionSettings();
-        first.session()->connectTo(connection, std::make_shared<comm::AsciiProtocolSettings>(multiuser));
+        first.session()->connectTo(connection,
+                                   std::make_shared<comm::AsciiProtocolSettings>(multiuser));
         QTRY_VERIFY_WITH_TIMEOUT(first.session()->isOnline(), kDeviceTimeoutMs);
         QVERIFY(first.window()->saveProjectTo(project).ok());
         first.window()->resize(1100, 700);
@@ -112,7 +113,8 @@ void GuiSettingsTest::recentFilesMenuOpensAndForgetsMissingFiles() {
     Q_EMIT recent->aboutToShow();
     QStringList texts;
     for (QAction* action : recent->actions()) texts << action->text();
-    QVERIFY2(texts.value(0) == QStringLiteral("&1 kept.json") && texts.value(1) == QStringLiteral("&2 gone.json"),
+    QVERIFY2(texts.value(0) == QStringLiteral("&1 kept.json") &&
+                 texts.value(1) == QStringLiteral("&2 gone.json"),
              qPrintable(texts.join(QLatin1Char('|'))));
     // A file that is gone says so and leaves the list.
     NextDialog<ReportDialog> close([](ReportDialog* dialog) { dialog->accept(); });

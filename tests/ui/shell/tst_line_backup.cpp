@@ -53,7 +53,8 @@ void LineBackupTest::everyDeviceGetsItsBarAndAFailureIsSaid() {
     const QString report = dialog->reportText();
     QVERIFY2(report.startsWith(QStringLiteral("2 of 3 devices saved")), qPrintable(report));
     QVERIFY(report.contains(QStringLiteral("Device 9: NOT saved")));
-    const Result<LineManifest> manifest = loadLineManifest(QDir(dir.path()).filePath(QLatin1String(kLineManifestName)));
+    const Result<LineManifest> manifest =
+        loadLineManifest(QDir(dir.path()).filePath(QLatin1String(kLineManifestName)));
     QVERIFY(manifest.ok());
     QCOMPARE(manifest->devices.size(), 3);
     // The line is addressed to the device the window works with again.

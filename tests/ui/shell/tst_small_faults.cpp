@@ -5,6 +5,8 @@
 #include "shell_fixture.h"
 
 #include "ui/cam_page.h"
+#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/cameditor/range_delegate.h"
 #include "ui/connection_status.h"
 #include "ui/dead_times_model.h"
 #include "ui/dead_times_page.h"
@@ -13,8 +15,6 @@
 #include "ui/plc_matrix_model.h"
 #include "ui/plc_page.h"
 #include "ui/report_dialog.h"
-#include "ui/cameditor/cam_editor_widget.h"
-#include "ui/cameditor/range_delegate.h"
 
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -23,9 +23,9 @@
 #include <QScreen>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QToolBar>
 #include <QToolButton>
-#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace cambench;
@@ -61,7 +61,8 @@ void SmallFaultsTest::viewMenuShowsEncoderAndSystemWithItsAmpersand() {
     QStringList texts;
     for (QAction* action : view->actions()) texts << action->text();
     // "&&" shows as "&": the menu reads "Encoder & system", not "Encoder _system".
-    QVERIFY2(texts.contains(QStringLiteral("Encoder && system")), qPrintable(texts.join(QLatin1Char('|'))));
+    QVERIFY2(texts.contains(QStringLiteral("Encoder && system")),
+             qPrintable(texts.join(QLatin1Char('|'))));
 }
 
 void SmallFaultsTest::ctrlYRedoes() {
@@ -79,7 +80,8 @@ void SmallFaultsTest::deadTimeCellRefuses1500InsteadOfMaking150() {
     MainWindow* window = shell->window();
     window->showSection(MainWindow::DeadTimes);
     QTableView* view = window->deadTimesPage()->view();
-    const QModelIndex cell = window->deadTimesPage()->model()->index(2, DeadTimesModel::DeadTimeColumn);
+    const QModelIndex cell =
+        window->deadTimesPage()->model()->index(2, DeadTimesModel::DeadTimeColumn);
     const qint32 before = shell->workspace()->cams()->deadTime(3);
     view->setCurrentIndex(cell);
     view->edit(cell);
@@ -87,11 +89,13 @@ void SmallFaultsTest::deadTimeCellRefuses1500InsteadOfMaking150() {
     QVERIFY(editor);
     editor->selectAll();
     QTest::keyClicks(editor, QStringLiteral("1500"));
-    QVERIFY2(editor->cleanText().startsWith(QStringLiteral("1500")), qPrintable(editor->cleanText()));
+    QVERIFY2(editor->cleanText().startsWith(QStringLiteral("1500")),
+             qPrintable(editor->cleanText()));
     QTest::keyClick(editor, Qt::Key_Return);
     auto* delegate = qobject_cast<RangeDelegate*>(view->itemDelegate());
     QVERIFY(delegate);
-    QVERIFY2(delegate->lastRefusal().contains(QStringLiteral("1500")), qPrintable(delegate->lastRefusal()));
+    QVERIFY2(delegate->lastRefusal().contains(QStringLiteral("1500")),
+             qPrintable(delegate->lastRefusal()));
     QCOMPARE(shell->workspace()->cams()->deadTime(3), before);  // not 150.0 ms
     editor->selectAll();
     QTest::keyClicks(editor, QStringLiteral("150"));
@@ -110,13 +114,16 @@ void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
     comm::ConnectionSettings gone;
     gone.port = QStringLiteral("/dev/cambench-no-such-port");
     session->connectTo(gone, session->protocolSettings());
-    QTRY_VERIFY_WITH_TIMEOUT(session->state() == comm::ConnectionState::Disconnected, kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(session->state() == comm::ConnectionState::Disconnected,
+                             kDeviceTimeoutMs);
     QCOMPARE(strip->height(), height);
     shell->window()->showSection(MainWindow::Connection);
     QCOMPARE(strip->height(), height);
     const QString text = strip->text();
-    QVERIFY2(!text.contains(QRegularExpression(QStringLiteral("[a-z] [A-Z][a-z]+ retries"))), qPrintable(text));
-    QVERIFY2(asSentence(QStringLiteral("no reply")) == QStringLiteral("no reply."), "a sentence ends with a stop");
+    QVERIFY2(!text.contains(QRegularExpression(QStringLiteral("[a-z] [A-Z][a-z]+ retries"))),
+             qPrintable(text));
+    QVERIFY2(asSentence(QStringLiteral("no reply")) == QStringLiteral("no reply."),
+             "a sentence ends with a stop");
     QCOMPARE(asSentence(QStringLiteral("Done.")), QStringLiteral("Done."));
 }
 
@@ -127,7 +134,8 @@ void SmallFaultsTest::plcOperandsI5AndE5AreRefusedWithAReason() {
     PlcMatrixModel* model = page->model();
     for (const QString& typed : {QStringLiteral("I5"), QStringLiteral("E5")}) {
         QVERIFY(!model->setData(model->index(0, 0), typed));
-        QVERIFY2(page->refusalText().contains(typed) && page->refusalText().contains(QStringLiteral("P5")),
+        QVERIFY2(page->refusalText().contains(typed) &&
+                     page->refusalText().contains(QStringLiteral("P5")),
                  qPrintable(page->refusalText()));
     }
     QVERIFY(model->setData(model->index(0, 0), QStringLiteral("P5")));
@@ -171,7 +179,8 @@ void SmallFaultsTest::toolBarsShowEveryActionAt1280Pixels() {
         QVERIFY(QTest::qWaitForWindowExposed(window));
         for (QToolBar* bar : window->camPage()->editor()->findChildren<QToolBar*>()) {
             // The overflow button shows only when actions do not fit.
-            for (QToolButton* button : bar->findChildren<QToolButton*>(QStringLiteral("qt_toolbar_ext_button")))
+            for (QToolButton* button :
+                 bar->findChildren<QToolButton*>(QStringLiteral("qt_toolbar_ext_button")))
                 QVERIFY2(!button->isVisible(), qPrintable(language));
         }
         const QList<QAction*> actions = window->camPage()->editor()->editorActions();
@@ -189,14 +198,17 @@ void SmallFaultsTest::toolBarsShowEveryActionAt1280Pixels() {
 void SmallFaultsTest::errorDialogIsNeverTallerThanTheScreen() {
     QStringList lines;
     for (int output = 1; output <= 96; ++output)
-        lines << QStringLiteral("program 0, output %1: failed: the device reported error -1; the device keeps no cams")
+        lines << QStringLiteral(
+                     "program 0, output %1: failed: the device reported error -1; the device keeps "
+                     "no cams")
                      .arg(output);
-    ReportDialog dialog(QMessageBox::Warning, QStringLiteral("Write program 0"), QStringLiteral("96 failed"),
-                        lines.join(QLatin1Char('\n')));
+    ReportDialog dialog(QMessageBox::Warning, QStringLiteral("Write program 0"),
+                        QStringLiteral("96 failed"), lines.join(QLatin1Char('\n')));
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));
     const QRect screen = dialog.screen()->availableGeometry();
-    QVERIFY2(dialog.frameGeometry().height() <= screen.height(), qPrintable(QString::number(dialog.height())));
+    QVERIFY2(dialog.frameGeometry().height() <= screen.height(),
+             qPrintable(QString::number(dialog.height())));
     QPushButton* ok = dialog.buttons()->button(QDialogButtonBox::Ok);
     QVERIFY(ok->isVisible());
     QVERIFY(dialog.rect().contains(QRect(ok->mapTo(&dialog, QPoint(0, 0)), ok->size())));

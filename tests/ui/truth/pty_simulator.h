@@ -40,7 +40,9 @@ public:
     // Commands ('!') the device received since the log was last cleared.
     int commandsReceived() const { return m_line->injections().commands(); }
     // The device's cams of `output` (1-based) in `program`.
-    QList<Cam> track(int program, int output) { return device().state().cams.track(program, output - 1); }
+    QList<Cam> track(int program, int output) {
+        return device().state().cams.track(program, output - 1);
+    }
 
     // The device stops answering (a cable pulled at the device's end).
     void fallSilent(bool silent = true) { injections().setDead(0, silent); }

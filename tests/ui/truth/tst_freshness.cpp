@@ -6,13 +6,13 @@
 #include "pty_simulator.h"
 
 #include "ui/cam_page.h"
+#include "ui/cameditor/cam_diagram_widget.h"
+#include "ui/cameditor/cam_editor_widget.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
 #include "ui/monitor_page.h"
 #include "ui/trend_chart.h"
-#include "ui/cameditor/cam_diagram_widget.h"
-#include "ui/cameditor/cam_editor_widget.h"
 
 #include <QtTest>
 
@@ -24,8 +24,9 @@ namespace {
 // One answered cycle: the poll went out and its answer came back.
 bool answeredCycle(MonitorPage* monitor, LiveFreshness* freshness) {
     monitor->pollCycle();
-    return QTest::qWaitFor([monitor, freshness] { return !monitor->isPollOnLine() && freshness->isLive(); },
-                           kDeviceTimeoutMs);
+    return QTest::qWaitFor(
+        [monitor, freshness] { return !monitor->isPollOnLine() && freshness->isLive(); },
+        kDeviceTimeoutMs);
 }
 
 // The monitor in front, its poll cycles driven by the test.
@@ -78,10 +79,12 @@ void FreshnessTest::silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle(
     QVERIFY2(window->connectionIndicator()->stateText().startsWith(since),
              qPrintable(window->connectionIndicator()->stateText()));
     QVERIFY2(monitor->freshnessText().startsWith(since), qPrintable(monitor->freshnessText()));
-    QVERIFY2(window->connectionStrip()->text().contains(lastAnswer), qPrintable(window->connectionStrip()->text()));
+    QVERIFY2(window->connectionStrip()->text().contains(lastAnswer),
+             qPrintable(window->connectionStrip()->text()));
     QVERIFY(window->connectionStrip()->isAlarm());
     // "OK" is not claimed for now.
-    QVERIFY2(monitor->stateText().startsWith(QStringLiteral("unknown now")), qPrintable(monitor->stateText()));
+    QVERIFY2(monitor->stateText().startsWith(QStringLiteral("unknown now")),
+             qPrintable(monitor->stateText()));
     // The cam diagram shows no live position any more.
     QVERIFY(!window->camPage()->editor()->diagram()->isLive());
 
@@ -108,10 +111,12 @@ void FreshnessTest::stoppedSimulatorTurnsIndicatorAndMonitorStale() {
     // The adapter is gone: this cycle's poll fails, and that is a missed cycle.
     monitor->pollCycle();
     QTRY_VERIFY_WITH_TIMEOUT(freshness->isStale(), kDeviceTimeoutMs);
-    QVERIFY2(monitor->freshnessText().startsWith(QStringLiteral("No answer since %1").arg(lastAnswer)),
-             qPrintable(monitor->freshnessText()));
+    QVERIFY2(
+        monitor->freshnessText().startsWith(QStringLiteral("No answer since %1").arg(lastAnswer)),
+        qPrintable(monitor->freshnessText()));
     const QString indicator = window->connectionIndicator()->stateText();
-    QVERIFY2(indicator.contains(QStringLiteral("No answer since")) || indicator.contains(QStringLiteral("lost")),
+    QVERIFY2(indicator.contains(QStringLiteral("No answer since")) ||
+                 indicator.contains(QStringLiteral("lost")),
              qPrintable(indicator));
     QVERIFY(window->connectionStrip()->isAlarm());
 }
@@ -125,8 +130,9 @@ void FreshnessTest::pollingStopsBehindPagesWithoutLiveValues() {
     QVERIFY(monitor->isPolling());
     window->showSection(MainWindow::Cams);  // the diagram shows the live position
     QVERIFY(monitor->isPolling());
-    for (MainWindow::Section quiet : {MainWindow::Connection, MainWindow::DeadTimes, MainWindow::Settings,
-                                      MainWindow::Users, MainWindow::Plc, MainWindow::Backup, MainWindow::Terminal}) {
+    for (MainWindow::Section quiet :
+         {MainWindow::Connection, MainWindow::DeadTimes, MainWindow::Settings, MainWindow::Users,
+          MainWindow::Plc, MainWindow::Backup, MainWindow::Terminal}) {
         window->showSection(quiet);
         QVERIFY2(!monitor->isPolling(), qPrintable(QString::number(int(quiet))));
     }
@@ -146,7 +152,8 @@ void FreshnessTest::pollRateTheLineCannotCarryIsAdjustedWithAWord() {
     window->showSection(MainWindow::Monitor);
     QTRY_VERIFY_WITH_TIMEOUT(!monitor->rateNote().isEmpty(), kDeviceTimeoutMs);
     QVERIFY(monitor->pollInterval() > 100);
-    QVERIFY2(monitor->rateNote().contains(QStringLiteral("instead of 100 ms")), qPrintable(monitor->rateNote()));
+    QVERIFY2(monitor->rateNote().contains(QStringLiteral("instead of 100 ms")),
+             qPrintable(monitor->rateNote()));
 }
 
 void FreshnessTest::speedTrendPlotsTheValueTheReadoutShows() {

@@ -67,7 +67,8 @@ void ReportAndCountsTest::reportHoldsEverySectionOfTheDevice() {
     const Workspace& ws = *shell->workspace();
     const QString text = reportText(ws);
     for (int program = 0; program < ws.info().programs; ++program)
-        QVERIFY2(text.contains(QStringLiteral("Program %1").arg(program)), qPrintable(QString::number(program)));
+        QVERIFY2(text.contains(QStringLiteral("Program %1").arg(program)),
+                 qPrintable(QString::number(program)));
     QVERIFY(text.contains(QStringLiteral("Format A4")));  // program 1's name
     for (const Workspace::EditedUser& user : ws.users()) {
         QVERIFY(text.contains(user.user.name));
@@ -101,7 +102,8 @@ void ReportAndCountsTest::reportMarksUnwrittenValues() {
     cams->setDeadTime(2, device + 15);
     cams->setCam(0, 1, 0, {12, 90});
     const QString text = reportText(*shell->workspace());
-    QVERIFY2(text.contains(QStringLiteral("2 value")) && text.contains(QStringLiteral("edited on this PC and NOT written")),
+    QVERIFY2(text.contains(QStringLiteral("2 value")) &&
+                 text.contains(QStringLiteral("edited on this PC and NOT written")),
              qPrintable(text.left(400)));
     QVERIFY2(text.contains(QStringLiteral("● %1 ms (device: %2 ms)")
                                .arg(QLocale().toString((device + 15) / 10.0, 'f', 1),
@@ -137,7 +139,8 @@ void ReportAndCountsTest::reportDiagramIsDrawnForPrintWithAllOutputs() {
     QVERIFY(outputs1to32.height() > outputs1to8.height());
     QCOMPARE((outputs1to32.height() - outputs1to8.height()) % 24, 0);
     QCOMPARE(outputs1to32.pixelColor(0, 0), QColor(Qt::white));
-    QCOMPARE(outputs1to32.pixelColor(outputs1to32.width() - 1, outputs1to32.height() - 1), QColor(Qt::white));
+    QCOMPARE(outputs1to32.pixelColor(outputs1to32.width() - 1, outputs1to32.height() - 1),
+             QColor(Qt::white));
 }
 
 void ReportAndCountsTest::deadTimeWriteCountsOverTheDevicesOutputs() {
@@ -158,7 +161,8 @@ void ReportAndCountsTest::deadTimeWriteCountsOverTheDevicesOutputs() {
     QCOMPARE(result->value().total(), 1);
     QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
     const QString message = shell->window()->lastMessage();
-    QVERIFY2(message.contains(QStringLiteral("%1 other item").arg(info.deadTimeOutputs + info.outputs - 1)),
+    QVERIFY2(message.contains(
+                 QStringLiteral("%1 other item").arg(info.deadTimeOutputs + info.outputs - 1)),
              qPrintable(message));
 }
 
@@ -196,7 +200,10 @@ void ReportAndCountsTest::backupGivesNoGuessedTimeLeft() {
     wizard->next();
     QTRY_VERIFY_WITH_TIMEOUT(wizard->progressPage()->isComplete(), kDeviceTimeoutMs);
     QVERIFY(!seen.isEmpty());
-    for (const QString& text : seen) QVERIFY2(!text.contains(QStringLiteral("left")) || text.contains(QStringLiteral("No time left")), qPrintable(text));
+    for (const QString& text : seen)
+        QVERIFY2(
+            !text.contains(QStringLiteral("left")) || text.contains(QStringLiteral("No time left")),
+            qPrintable(text));
     QVERIFY(wizard->progressPage()->reportText().contains(QStringLiteral("Backup complete")));
     // With a known total, the time left comes from the measured rate.
     QCOMPARE(ProgressPage::etaText(2000, 50, 100), QStringLiteral("about 2 s left"));

@@ -50,9 +50,9 @@ void UnwrittenEditsTest::readProgramWithEditsAsksAndKeepsThem() {
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QCOMPARE(answer->answered(), 1);
     QVERIFY(read->ok());
-    QCOMPARE(cams->track(0, 1).cams.first(), (Cam{15, 90}));      // my edit
+    QCOMPARE(cams->track(0, 1).cams.first(), (Cam{15, 90}));  // my edit
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
-    QCOMPARE(cams->track(0, 2).cams, sim.track(0, 2));              // not edited: the device's
+    QCOMPARE(cams->track(0, 2).cams, sim.track(0, 2));  // not edited: the device's
     QCOMPARE(cams->deviceTrack(0, 1)->cams, sim.track(0, 1));
 }
 
@@ -99,7 +99,8 @@ void UnwrittenEditsTest::readEverythingWithEditsAsksPerSection() {
     QCOMPARE(cams->track(0, 1).cams.first(), (Cam{15, 90}));
     QCOMPARE(cams->deadTime(2), ws->deviceDeadTime(2));
     // Every program is known now.
-    for (int program = 0; program < ws->info().programs; ++program) QVERIFY(cams->hasDeviceCopy(program));
+    for (int program = 0; program < ws->info().programs; ++program)
+        QVERIFY(cams->hasDeviceCopy(program));
 }
 
 void UnwrittenEditsTest::openProjectWithEditsAsksAndCancelChangesNothing() {

@@ -4,13 +4,13 @@
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
+#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/cameditor/track_table_model.h"
 #include "ui/device_writer.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
 #include "ui/setting_field.h"
 #include "ui/settings_page.h"
-#include "ui/cameditor/cam_editor_widget.h"
-#include "ui/cameditor/track_table_model.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -56,13 +56,14 @@ void WholeDeviceTest::savedProjectAfterReadEverythingHoldsAllPrograms() {
     QCOMPARE(saved->readAt.programs.size(), programs);  // each read, with its time
     // The demo device's programs 1 and 2 hold cams.
     for (int number : {1, 2}) {
-        const auto program = std::find_if(saved->programs.cbegin(), saved->programs.cend(),
-                                          [number](const CamProgram& p) { return p.number == number; });
+        const auto program =
+            std::find_if(saved->programs.cbegin(), saved->programs.cend(),
+                         [number](const CamProgram& p) { return p.number == number; });
         QVERIFY(program != saved->programs.cend());
         QVERIFY(!program->tracks.isEmpty());
     }
-    for (ProjectPart part : {ProjectPart::Device, ProjectPart::Settings, ProjectPart::DeadTimes, ProjectPart::Users,
-                             ProjectPart::PlcNetworks})
+    for (ProjectPart part : {ProjectPart::Device, ProjectPart::Settings, ProjectPart::DeadTimes,
+                             ProjectPart::Users, ProjectPart::PlcNetworks})
         QVERIFY2(saved->readAt.parts.contains(part), qPrintable(QString::number(int(part))));
     QVERIFY(!saved->users.isEmpty());
     QVERIFY(!saved->plcNetworks.isEmpty());
@@ -80,7 +81,8 @@ void WholeDeviceTest::programNotReadShowsNotRead() {
     QCOMPARE(state.data().toString(), QStringLiteral("not read"));
     auto* chooser = editor->findChild<QComboBox*>();
     QVERIFY(chooser);
-    QVERIFY2(chooser->itemText(1).contains(QStringLiteral("not read")), qPrintable(chooser->itemText(1)));
+    QVERIFY2(chooser->itemText(1).contains(QStringLiteral("not read")),
+             qPrintable(chooser->itemText(1)));
     QVERIFY(!chooser->itemText(0).contains(QStringLiteral("not read")));
 }
 
@@ -130,8 +132,9 @@ void WholeDeviceTest::writingAProgramNeverReadWritesItWhole() {
     const usecases::WriteReport& report = result->value();
     // Every output of the program was looked at; the counts add up to them.
     QCOMPARE(report.tracks.size(), shell->workspace()->info().outputs);
-    QCOMPARE(report.count(usecases::WriteState::Written) + report.count(usecases::WriteState::Unchanged),
-             report.total());
+    QCOMPARE(
+        report.count(usecases::WriteState::Written) + report.count(usecases::WriteState::Unchanged),
+        report.total());
     QCOMPARE(sim.track(3, 4), (QList<Cam>{{10, 20}}));
     // The program is known now: what is on the device is what is shown.
     QVERIFY(cams->hasDeviceCopy(3));
@@ -147,8 +150,9 @@ void WholeDeviceTest::deviceValueOutsideTheRangeIsShownAsItIs() {
     QString key;
     for (const SettingSpec& spec : settingSpecs()) {
         const QString candidate = QString::fromLatin1(spec.key);
-        if ((spec.kind == SettingKind::Integer || spec.kind == SettingKind::Fixed) && !spec.readOnly &&
-            ws->deviceSettings().contains(candidate) && ws->deviceSettings().value(candidate).toLongLong() < spec.min) {
+        if ((spec.kind == SettingKind::Integer || spec.kind == SettingKind::Fixed) &&
+            !spec.readOnly && ws->deviceSettings().contains(candidate) &&
+            ws->deviceSettings().value(candidate).toLongLong() < spec.min) {
             key = candidate;
             break;
         }
@@ -156,9 +160,9 @@ void WholeDeviceTest::deviceValueOutsideTheRangeIsShownAsItIs() {
     QVERIFY2(!key.isEmpty(), "the demo device holds a setting below its minimum");
     SettingField* field = shell->window()->settingsPage()->field(key);
     QCOMPARE(field->value(), ws->deviceSettings().value(key));  // not clamped
-    QVERIFY(!field->problem().isEmpty());                        // flagged
+    QVERIFY(!field->problem().isEmpty());                       // flagged
     QVERIFY(field->label()->text().contains(QStringLiteral("⚠")));
-    QVERIFY(!field->isMarkedChanged());                          // not an edit
+    QVERIFY(!field->isMarkedChanged());  // not an edit
     QVERIFY(!field->label()->text().startsWith(QStringLiteral("● ")));
     QVERIFY(!ws->changedSettings().contains(key));
     QCOMPARE(ws->changedCount(), 0);
@@ -184,8 +188,8 @@ void WholeDeviceTest::wheelOverAnUnfocusedFieldDoesNotChangeIt() {
     spin->clearFocus();
     const int before = spin->value();
     const QPoint centre = spin->rect().center();
-    QWheelEvent wheel(centre, spin->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                      Qt::NoScrollPhase, false);
+    QWheelEvent wheel(centre, spin->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(spin, &wheel);
     QCOMPARE(spin->value(), before);
     QCOMPARE(shell->workspace()->changedCount(), 0);

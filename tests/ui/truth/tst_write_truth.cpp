@@ -5,17 +5,17 @@
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
+#include "ui/cameditor/cam_editor_widget.h"
 #include "ui/compare_dialog.h"
 #include "ui/device_writer.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
-#include "ui/cameditor/cam_editor_widget.h"
 
 #include <QDialogButtonBox>
 #include <QPushButton>
-#include <QUndoStack>
 #include <QScreen>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace cambench;
@@ -43,7 +43,9 @@ std::unique_ptr<NextDialog<ReportDialog>> recordReport(SeenReport& seen) {
     });
 }
 
-void triggerWriteProgram(Shell& shell) { shell.window()->camPage()->editor()->editorActions().at(1)->trigger(); }
+void triggerWriteProgram(Shell& shell) {
+    shell.window()->camPage()->editor()->editorActions().at(1)->trigger();
+}
 
 }  // namespace
 
@@ -116,7 +118,8 @@ void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
     // Compare asks the device, and shows what it holds now.
     CompareDialog* compare = shell->window()->openCompare();
     QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
-    QVERIFY2(compare->sourceText().contains(QStringLiteral("read at")), qPrintable(compare->sourceText()));
+    QVERIFY2(compare->sourceText().contains(QStringLiteral("read at")),
+             qPrintable(compare->sourceText()));
     QCOMPARE(cams->deviceTrack(0, 3)->cams, sim.track(0, 3));
     compare->close();
 }
