@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QCoreApplication>
 #include <QString>
 
 #include <optional>
@@ -21,7 +22,7 @@ enum class ErrorKind {
 
 struct Error {
     ErrorKind kind = ErrorKind::None;
-    QString message;      // complete sentence for a person: what, where, what to do
+    QString message;        // complete sentence for a person: what, where, what to do
     qint32 deviceCode = 0;  // the device's error number for DeviceError, else 0
 
     static Error device(qint32 code, QString message) {
@@ -33,7 +34,10 @@ struct Error {
     static Error invalidData(QString message) {
         return {ErrorKind::InvalidData, std::move(message), 0};
     }
-    static Error cancelled() { return {ErrorKind::Cancelled, QStringLiteral("Cancelled."), 0}; }
+    static Error cancelled() {
+        return {ErrorKind::Cancelled, QCoreApplication::translate("cambench::model", "Cancelled."),
+                0};
+    }
     static Error usage(QString message) { return {ErrorKind::Usage, std::move(message), 0}; }
 };
 
@@ -42,7 +46,7 @@ struct Error {
 template <class T>
 class Result {
 public:
-    Result(T value) : m_value(std::move(value)) {}  // NOLINT: implicit by design
+    Result(T value) : m_value(std::move(value)) {}      // NOLINT: implicit by design
     Result(Error error) : m_error(std::move(error)) {}  // NOLINT: implicit by design
 
     bool ok() const { return m_value.has_value(); }
@@ -62,6 +66,8 @@ private:
 // For operations that return nothing but can fail.
 struct Done {};
 using Status = Result<Done>;
-inline Status success() { return Done{}; }
+inline Status success() {
+    return Done{};
+}
 
 }  // namespace cambench
