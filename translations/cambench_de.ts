@@ -99,7 +99,7 @@
     </message>
     <message>
         <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
-        <translation>Nicht geschrieben oder vom Gerät nicht bestätigt (eine Antwort kann verloren gegangen sein). Ihre Änderungen bleiben auf der Seite; „Vom Gerät lesen“ zeigt, was das Gerät enthält:</translation>
+        <translation>Nicht geschrieben oder vom Gerät nicht bestätigt (eine Antwort kann verloren gegangen sein). Ihre Änderungen bleiben auf der Seite; „Aus Gerät lesen“ zeigt, was das Gerät enthält:</translation>
     </message>
 </context>
 <context>
@@ -1024,7 +1024,7 @@
     </message>
     <message>
         <source>Read from device</source>
-        <translation>Vom Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Write</source>
@@ -2262,7 +2262,7 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation>Vom Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Write changes</source>
@@ -2515,7 +2515,7 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation>Vom Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Read the EEPROM lock</source>
@@ -3254,7 +3254,7 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation>Vom Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Write</source>
