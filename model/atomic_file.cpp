@@ -27,7 +27,9 @@ Status writeFileAtomically(const QString& path, const QByteArray& bytes, FileAcc
         const QString why = file.errorString();
         file.cancelWriting();
         return writeError(
-            path, QStringLiteral("cannot make it readable by its owner only (%1)").arg(why));
+            path, QCoreApplication::translate("cambench::model",
+                                              "cannot make it readable by its owner only (%1)")
+                      .arg(why));
     }
     if (file.write(bytes) != bytes.size()) {
         const QString why = file.errorString();

@@ -46,7 +46,7 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
                 "This is not a CamBench %1: its \"format\" is %2, expected \"%3\".")
                 .arg(noun,
                      format.isString() ? QLatin1Char('"') + format.toString() + QLatin1Char('"')
-                                       : QStringLiteral("missing"),
+                                       : QCoreApplication::translate("cambench::model", "missing"),
                      expected));
     }
     JsonReader reader;

@@ -29,7 +29,7 @@ QString JsonReader::element(const QString& path, int index) {
 bool JsonReader::has(const QJsonObject& object, const QString& path, const QString& key) {
     if (failed()) return false;
     if (!object.contains(key)) {
-        fail(path, QStringLiteral("\"%1\" is missing").arg(key));
+        fail(path, QCoreApplication::translate("cambench::model", "\"%1\" is missing").arg(key));
         return false;
     }
     return true;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QCoreApplication>
 #include <QString>
 
 #include <optional>
@@ -33,7 +34,10 @@ struct Error {
     static Error invalidData(QString message) {
         return {ErrorKind::InvalidData, std::move(message), 0};
     }
-    static Error cancelled() { return {ErrorKind::Cancelled, QStringLiteral("Cancelled."), 0}; }
+    static Error cancelled() {
+        return {ErrorKind::Cancelled, QCoreApplication::translate("cambench::model", "Cancelled."),
+                0};
+    }
     static Error usage(QString message) { return {ErrorKind::Usage, std::move(message), 0}; }
 };
 

@@ -91,15 +91,15 @@
     <name>PageWriteReport</name>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1: %2</translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>%1 written, %2 unchanged, %3 failed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 geschrieben, %2 unverändert, %3 fehlgeschlagen</translation>
     </message>
     <message>
         <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht geschrieben oder vom Gerät nicht bestätigt (eine Antwort kann verloren gegangen sein). Ihre Änderungen bleiben auf der Seite; „Aus Gerät lesen“ zeigt, was das Gerät enthält:</translation>
     </message>
 </context>
 <context>
@@ -1008,93 +1008,93 @@
     <name>cambench::AnalogueCamsPage</name>
     <message>
         <source>Analogue cams</source>
-        <translation type="unfinished"></translation>
+        <translation>Analognocken</translation>
     </message>
     <message>
         <source>Position</source>
-        <translation type="unfinished">Position</translation>
+        <translation>Position</translation>
     </message>
     <message>
         <source>Analogue value</source>
-        <translation type="unfinished"></translation>
+        <translation>Analogwert</translation>
     </message>
     <message>
         <source>Between two base points the analogue output follows a straight line (with interpolation on). Positions must rise from point to point.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zwischen zwei Stützpunkten folgt der Analogausgang einer Geraden (bei eingeschalteter Interpolation). Die Positionen müssen von Punkt zu Punkt steigen.</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation type="unfinished">Aus Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Write</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreiben</translation>
     </message>
     <message>
         <source>Add point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt hinzufügen</translation>
     </message>
     <message>
         <source>Remove point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt entfernen</translation>
     </message>
     <message>
         <source>Analogue output:</source>
-        <translation type="unfinished"></translation>
+        <translation>Analogausgang:</translation>
     </message>
     <message>
         <source>The base points of analogue output %1 are edited and not written. Discard them and show output %2?</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Stützpunkte von Analogausgang %1 sind geändert und nicht geschrieben. Verwerfen und Ausgang %2 anzeigen?</translation>
     </message>
     <message>
         <source>Analogue cams: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Analognocken: %1</translation>
     </message>
     <message>
         <source>Read analogue cams</source>
-        <translation type="unfinished"></translation>
+        <translation>Analognocken lesen</translation>
     </message>
     <message>
         <source>Reading analogue cams failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesen der Analognocken fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>Analogue cams of output %1 read.</source>
-        <translation type="unfinished"></translation>
+        <translation>Analognocken von Ausgang %1 gelesen.</translation>
     </message>
     <message>
         <source>Analogue output %1 base points</source>
-        <translation type="unfinished"></translation>
+        <translation>Stützpunkte von Analogausgang %1</translation>
     </message>
     <message numerus="yes">
         <source>%n point(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Punkt</numerusform>
+            <numerusform>%n Punkte</numerusform>
         </translation>
     </message>
     <message>
         <source>Write analogue cams</source>
-        <translation type="unfinished"></translation>
+        <translation>Analognocken schreiben</translation>
     </message>
 </context>
 <context>
     <name>cambench::AsciiSettingsWidget</name>
     <message>
         <source>Multiuser: the number of the CamCon to talk to (0–63).</source>
-        <translation type="unfinished">Multiuser: die Nummer der CamCon, mit der gesprochen wird (0–63).</translation>
+        <translation>Multiuser: die Nummer der CamCon, mit der gesprochen wird (0–63).</translation>
     </message>
     <message>
         <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
-        <translation type="unfinished">Multiuser: die eigene Nummer dieses PCs auf dem Bus (0–63).</translation>
+        <translation>Multiuser: die eigene Nummer dieses PCs am Bus (0–63).</translation>
     </message>
     <message>
         <source>Device number:</source>
-        <translation type="unfinished">Gerätenummer:</translation>
+        <translation>Gerätenummer:</translation>
     </message>
     <message>
         <source>PC number:</source>
-        <translation type="unfinished">PC-Nummer:</translation>
+        <translation>PC-Nummer:</translation>
     </message>
 </context>
 <context>
@@ -1279,7 +1279,7 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back. The file holds the users&apos; access codes: keep it where only you can read it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Sicherung kopiert das ganze EEPROM des Geräts in eine Datei. Eine Wiederherstellung löscht das Gerät und schreibt eine solche Datei zurück. Die Datei enthält die Zugangscodes der Benutzer: bewahren Sie sie so auf, dass nur Sie sie lesen können.</translation>
     </message>
 </context>
 <context>
@@ -1692,18 +1692,18 @@ Jetzt löschen und wiederherstellen?</translation>
     <name>cambench::CamText</name>
     <message>
         <source>no cams</source>
-        <translation type="unfinished">keine Nocken</translation>
+        <translation>keine Nocken</translation>
     </message>
 </context>
 <context>
     <name>cambench::CapabilityGate</name>
     <message>
         <source>&lt;b&gt;Not available with the connected protocol&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Mit dem verbundenen Protokoll nicht verfügbar&lt;/b&gt;</translation>
     </message>
     <message>
         <source>Check what the protocol offers</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfen, was das Protokoll bietet</translation>
     </message>
 </context>
 <context>
@@ -2188,11 +2188,11 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>Table interface, 3964R n96 (9600 8N1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tabellenschnittstelle, 3964R n96 (9600 8N1)</translation>
     </message>
     <message>
         <source>Table interface, 3964R e38 (38400 8E1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tabellenschnittstelle, 3964R e38 (38400 8E1)</translation>
     </message>
 </context>
 <context>
@@ -2234,83 +2234,83 @@ Jetzt löschen und wiederherstellen?</translation>
     <name>cambench::DeadTimeModesPage</name>
     <message>
         <source>Dead-time modes</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi</translation>
     </message>
     <message>
         <source>Output</source>
-        <translation type="unfinished">Ausgang</translation>
+        <translation>Ausgang</translation>
     </message>
     <message>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus</translation>
     </message>
     <message>
         <source>Dead time (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit (ms)</translation>
     </message>
     <message>
         <source>Switch-on (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Einschalten (ms)</translation>
     </message>
     <message>
         <source>Switch-off / time (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausschalten / Zeit (ms)</translation>
     </message>
     <message>
         <source>Normal: one dead time moves both switching points. On/off: the switch-on and the switch-off point each have their own. Path-time: the output switches on early by the switch-on dead time and stays on for the switching time.</source>
-        <translation type="unfinished"></translation>
+        <translation>Normal: eine Totzeit verschiebt beide Schaltpunkte. Ein/Aus: Einschalt- und Ausschaltpunkt haben je eine eigene. Weg-Zeit: der Ausgang schaltet um die Einschalttotzeit früher ein und bleibt für die Schaltzeit eingeschaltet.</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation type="unfinished">Aus Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Write changes</source>
-        <translation type="unfinished">Änderungen schreiben</translation>
+        <translation>Änderungen schreiben</translation>
     </message>
     <message>
         <source>Dead-time modes: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi: %1</translation>
     </message>
     <message>
         <source>Reading dead-time modes…</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi werden gelesen…</translation>
     </message>
     <message>
         <source>Read dead-time modes</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi lesen</translation>
     </message>
     <message>
         <source>Reading dead-time modes failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesen der Totzeit-Modi fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>Dead-time modes read.</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi gelesen.</translation>
     </message>
     <message>
         <source>Normal</source>
-        <translation type="unfinished">Normal</translation>
+        <translation>Normal</translation>
     </message>
     <message>
         <source>On/off</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein/Aus</translation>
     </message>
     <message>
         <source>Path-time</source>
-        <translation type="unfinished"></translation>
+        <translation>Weg-Zeit</translation>
     </message>
     <message>
         <source>Largest dead time: %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Größte Totzeit: %1 ms</translation>
     </message>
     <message>
         <source>Output %1 dead-time mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modus von Ausgang %1</translation>
     </message>
     <message>
         <source>Write dead-time modes</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi schreiben</translation>
     </message>
 </context>
 <context>
@@ -2499,51 +2499,51 @@ Jetzt löschen und wiederherstellen?</translation>
     <name>cambench::EepromLockPage</name>
     <message>
         <source>EEPROM lock</source>
-        <translation type="unfinished"></translation>
+        <translation>EEPROM-Sperre</translation>
     </message>
     <message>
         <source>Lock the EEPROM</source>
-        <translation type="unfinished"></translation>
+        <translation>EEPROM sperren</translation>
     </message>
     <message>
         <source>Unlock the EEPROM</source>
-        <translation type="unfinished"></translation>
+        <translation>EEPROM entsperren</translation>
     </message>
     <message>
         <source>Writing the same values again and again (from a PLC, every cycle) wears the device&apos;s EEPROM out. Lock it first: changes then stay in RAM only. A complete deletion of the device unlocks it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Werden dieselben Werte immer wieder geschrieben (von einer SPS, in jedem Zyklus), nutzt sich das EEPROM des Geräts ab. Sperren Sie es vorher: Änderungen bleiben dann nur im RAM. Ein vollständiges Löschen des Geräts hebt die Sperre auf.</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation type="unfinished">Aus Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Read the EEPROM lock</source>
-        <translation type="unfinished"></translation>
+        <translation>EEPROM-Sperre lesen</translation>
     </message>
     <message>
         <source>Reading the EEPROM lock failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesen der EEPROM-Sperre fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>The EEPROM lock could not be changed: %1; its state is unknown, read it again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die EEPROM-Sperre konnte nicht geändert werden: %1; ihr Zustand ist unbekannt, lesen Sie sie erneut.</translation>
     </message>
     <message>
         <source>State of the EEPROM lock: not read</source>
-        <translation type="unfinished"></translation>
+        <translation>Zustand der EEPROM-Sperre: nicht gelesen</translation>
     </message>
     <message>
         <source>The EEPROM is locked.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das EEPROM ist gesperrt.</translation>
     </message>
     <message>
         <source>The EEPROM is not locked: changes are stored permanently.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das EEPROM ist nicht gesperrt: Änderungen werden dauerhaft gespeichert.</translation>
     </message>
     <message>
         <source>Changes written now are kept in RAM only. They are lost when the device is switched off. Unlock the EEPROM to keep them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Jetzt geschriebene Änderungen bleiben nur im RAM. Sie gehen verloren, wenn das Gerät ausgeschaltet wird. Entsperren Sie das EEPROM, um sie zu behalten.</translation>
     </message>
 </context>
 <context>
@@ -3222,63 +3222,63 @@ Jetzt löschen und wiederherstellen?</translation>
     <name>cambench::ProgrammingProgramPage</name>
     <message>
         <source>Programming program</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmierprogramm</translation>
     </message>
     <message>
         <source>Slow</source>
-        <translation type="unfinished">Langsam</translation>
+        <translation>Langsam</translation>
     </message>
     <message>
         <source>Direct (within one cycle)</source>
-        <translation type="unfinished"></translation>
+        <translation>Direkt (innerhalb eines Zyklus)</translation>
     </message>
     <message>
         <source>At the actual value</source>
-        <translation type="unfinished"></translation>
+        <translation>Am Istwert</translation>
     </message>
     <message>
         <source>The table interface reads and writes the cams of this program. It need not be the program that runs the machine.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Tabellenschnittstelle liest und schreibt die Nocken dieses Programms. Es muss nicht das Programm sein, mit dem die Maschine läuft.</translation>
     </message>
     <message>
         <source>Program:</source>
-        <translation type="unfinished"></translation>
+        <translation>Programm:</translation>
     </message>
     <message>
         <source>Program selection:</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmanwahl:</translation>
     </message>
     <message>
         <source>Selection actual value:</source>
-        <translation type="unfinished"></translation>
+        <translation>Istwert für die Anwahl:</translation>
     </message>
     <message>
         <source>Read from device</source>
-        <translation type="unfinished">Aus Gerät lesen</translation>
+        <translation>Aus Gerät lesen</translation>
     </message>
     <message>
         <source>Write</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreiben</translation>
     </message>
     <message>
         <source>Read the programming program</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmierprogramm lesen</translation>
     </message>
     <message>
         <source>Reading the programming program failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesen des Programmierprogramms fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>Write the programming program</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmierprogramm schreiben</translation>
     </message>
     <message>
         <source>Writing the programming program failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreiben des Programmierprogramms fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>Programming program %1 written.</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmierprogramm %1 geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -3588,23 +3588,23 @@ Jetzt löschen und wiederherstellen?</translation>
     <name>cambench::TableSettingsWidget</name>
     <message>
         <source>3964R n96 (9600 baud, 8N1)</source>
-        <translation type="unfinished"></translation>
+        <translation>3964R n96 (9600 Baud, 8N1)</translation>
     </message>
     <message>
         <source>3964R e38 (38400 baud, 8E1)</source>
-        <translation type="unfinished"></translation>
+        <translation>3964R e38 (38400 Baud, 8E1)</translation>
     </message>
     <message>
         <source>The serial mode the device&apos;s menu &quot;Ser:&quot; shows.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die serielle Betriebsart, die das Menü „Ser:“ des Geräts zeigt.</translation>
     </message>
     <message>
         <source>Point to point: no device number. 3964R e38 reaches only the data words 0–127 of each area: 62 cams per track and no dead-time modes; n96 reaches all.</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt zu Punkt: keine Gerätenummer. 3964R e38 erreicht nur die Datenwörter 0–127 jedes Bereichs: 62 Nocken je Spur und keine Totzeit-Modi; n96 erreicht alle.</translation>
     </message>
     <message>
         <source>Variant:</source>
-        <translation type="unfinished"></translation>
+        <translation>Variante:</translation>
     </message>
 </context>
 <context>
@@ -4485,47 +4485,639 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>Editing a program other than the active one exists only in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Bearbeiten eines anderen als des aktiven Programms gibt es nur in %1.</translation>
     </message>
     <message>
         <source>a reply without a frame start</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Antwort ohne Rahmenanfang</translation>
     </message>
     <message>
         <source>a reply that broke off before its end</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Antwort, die vor ihrem Ende abbrach</translation>
     </message>
     <message>
         <source>the step to entry %1 was sent again after a lost reply</source>
-        <translation type="unfinished"></translation>
+        <translation>der Schritt zu Eintrag %1 wurde nach einer verlorenen Antwort erneut gesendet</translation>
     </message>
     <message>
         <source>reading the users: %1 walks through the list lost their place (%2); the list may be incomplete, so none is shown; check the cable and try again</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesen der Benutzer: %1 Durchläufe der Liste haben ihre Stelle verloren (%2); die Liste kann unvollständig sein, daher wird keine angezeigt; prüfen Sie das Kabel und versuchen Sie es erneut</translation>
     </message>
     <message>
         <source>restore: the device took every block but did not confirm that it started (!EE%1): %2. Run the same restore again. Cause</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiederherstellung: das Gerät hat jeden Block angenommen, aber den Start nicht bestätigt (!EE%1): %2. Führen Sie dieselbe Wiederherstellung erneut aus. Ursache</translation>
     </message>
     <message>
         <source>the end block, sent again, failed</source>
-        <translation type="unfinished"></translation>
+        <translation>der erneut gesendete Endblock ist fehlgeschlagen</translation>
     </message>
     <message>
         <source>reading the EEPROM back failed</source>
-        <translation type="unfinished"></translation>
+        <translation>das Zurücklesen des EEPROMs ist fehlgeschlagen</translation>
     </message>
     <message>
         <source>its EEPROM differs from the image</source>
-        <translation type="unfinished"></translation>
+        <translation>sein EEPROM weicht vom Abbild ab</translation>
     </message>
     <message>
         <source>%1 blocks read back, %2 in the image</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Blöcke zurückgelesen, %2 im Abbild</translation>
     </message>
     <message>
         <source>Dead-time modes are data words 251..253, which 3964R e38 cannot address (words 0..127); set the device to 3964R n96 (--protocol 3964r-n96) to reach them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Totzeit-Modi sind die Datenwörter 251..253, die 3964R e38 nicht adressieren kann (Wörter 0..127); stellen Sie das Gerät auf 3964R n96 (--protocol 3964r-n96), um sie zu erreichen.</translation>
+    </message>
+    <message>
+        <source>writing to</source>
+        <translation>Schreiben auf</translation>
+    </message>
+    <message>
+        <source>the connection speaks %1, which does not reach this kind of device; connect with a protocol of its family</source>
+        <translation>die Verbindung spricht %1, das diese Geräteart nicht erreicht; verbinden Sie mit einem Protokoll ihrer Familie</translation>
+    </message>
+    <message>
+        <source>no connection</source>
+        <translation>keine Verbindung</translation>
+    </message>
+    <message>
+        <source>RK512 read of data area %1 at offset %2 (%3 16-bit words)</source>
+        <translation>RK512-Lesen aus Datenbereich %1 ab Offset %2 (%3 16-Bit-Wörter)</translation>
+    </message>
+    <message>
+        <source>RK512 write of data area %1 at offset %2 (%3 16-bit words)</source>
+        <translation>RK512-Schreiben in Datenbereich %1 ab Offset %2 (%3 16-Bit-Wörter)</translation>
+    </message>
+    <message>
+        <source>No error.</source>
+        <translation>Kein Fehler.</translation>
+    </message>
+    <message>
+        <source>Error 16, command unknown: the device serves only data blocks (&apos;D&apos;). The tool sent another block type; report this as a bug.</source>
+        <translation>Fehler 16, Befehl unbekannt: das Gerät bedient nur Datenbausteine (&apos;D&apos;). Das Programm hat einen anderen Bausteintyp gesendet; melden Sie dies als Fehler.</translation>
+    </message>
+    <message>
+        <source>Error 20, beyond the data block: the words asked for reach past the end of the data area, or the area does not exist on this device or firmware. Check the area and word numbers against the device&apos;s manual.</source>
+        <translation>Fehler 20, außerhalb des Datenbausteins: die angefragten Wörter reichen über das Ende des Datenbereichs hinaus, oder der Bereich existiert auf diesem Gerät oder dieser Firmware nicht. Prüfen Sie Bereichs- und Wortnummern anhand des Gerätehandbuchs.</translation>
+    </message>
+    <message>
+        <source>Error 22, command unknown: the device knows only read (&apos;E&apos;) and write (&apos;A&apos;). The tool sent another order; report this as a bug.</source>
+        <translation>Fehler 22, Befehl unbekannt: das Gerät kennt nur Lesen (&apos;E&apos;) und Schreiben (&apos;A&apos;). Das Programm hat einen anderen Auftrag gesendet; melden Sie dies als Fehler.</translation>
+    </message>
+    <message>
+        <source>Error 52, too many data: more than 128 bytes (64 16-bit words) in one telegram. Split the transfer into smaller telegrams.</source>
+        <translation>Fehler 52, zu viele Daten: mehr als 128 Bytes (64 16-Bit-Wörter) in einem Telegramm. Teilen Sie die Übertragung in kleinere Telegramme auf.</translation>
+    </message>
+    <message>
+        <source>Error 54, general error: the device refused the request, e.g. a write to a read-only word, a value out of range, or the EEPROM busy. Check the value and whether the word may be written, then try again.</source>
+        <translation>Fehler 54, allgemeiner Fehler: das Gerät hat die Anfrage abgelehnt, z. B. Schreiben auf ein nur lesbares Wort, ein Wert außerhalb des Bereichs oder ein belegtes EEPROM. Prüfen Sie den Wert und ob das Wort geschrieben werden darf, und versuchen Sie es dann erneut.</translation>
+    </message>
+    <message>
+        <source>Error %1, not listed in the manual: the device refused the request for a reason the tool does not know. Check the request and the device&apos;s display.</source>
+        <translation>Fehler %1, nicht im Handbuch aufgeführt: das Gerät hat die Anfrage aus einem Grund abgelehnt, den das Programm nicht kennt. Prüfen Sie die Anfrage und die Anzeige des Geräts.</translation>
+    </message>
+    <message>
+        <source>RK512: data area %1 does not exist (1..255).</source>
+        <translation>RK512: Datenbereich %1 existiert nicht (1..255).</translation>
+    </message>
+    <message>
+        <source>RK512: offset %1 does not fit in the offset byte (0..255); split the transfer or use 3964R n96.</source>
+        <translation>RK512: Offset %1 passt nicht in das Offset-Byte (0..255); teilen Sie die Übertragung auf oder verwenden Sie 3964R n96.</translation>
+    </message>
+    <message>
+        <source>RK512: %1 16-bit words in one telegram (%2..%3 allowed); split the transfer.</source>
+        <translation>RK512: %1 16-Bit-Wörter in einem Telegramm (%2..%3 erlaubt); teilen Sie die Übertragung auf.</translation>
+    </message>
+    <message>
+        <source>%1 carries %2 data bytes, %3 expected.</source>
+        <translation>%1 enthält %2 Datenbytes, %3 erwartet.</translation>
+    </message>
+    <message>
+        <source>%1: the reply is no RK512 reply (it must start with 00 00 00, got %2). Check that the device&apos;s serial mode is 3964R n96 or e38.</source>
+        <translation>%1: die Antwort ist keine RK512-Antwort (sie muss mit 00 00 00 beginnen, erhalten: %2). Prüfen Sie, ob die serielle Betriebsart des Geräts 3964R n96 oder e38 ist.</translation>
+    </message>
+    <message>
+        <source>%1: the reply carries %2 data bytes, %3 expected.</source>
+        <translation>%1: die Antwort enthält %2 Datenbytes, %3 erwartet.</translation>
+    </message>
+    <message>
+        <source>RK512: %1 data bytes do not make whole 32-bit table words.</source>
+        <translation>RK512: %1 Datenbytes ergeben keine ganzen 32-Bit-Tabellenwörter.</translation>
+    </message>
+    <message>
+        <source>Table transfer: data area %1 does not exist (1..255).</source>
+        <translation>Tabellenübertragung: Datenbereich %1 existiert nicht (1..255).</translation>
+    </message>
+    <message>
+        <source>Table transfer of %1 words from data area %2: nothing to transfer.</source>
+        <translation>Tabellenübertragung von %1 Wörtern aus Datenbereich %2: nichts zu übertragen.</translation>
+    </message>
+    <message>
+        <source>Table transfer: %1 words per telegram (1..%2 allowed).</source>
+        <translation>Tabellenübertragung: %1 Wörter je Telegramm (1..%2 erlaubt).</translation>
+    </message>
+    <message>
+        <source>Table transfer: words %1..%2 of data area %3 are outside the words 0..%4 that %5 can address.%6</source>
+        <translation>Tabellenübertragung: die Wörter %1..%2 von Datenbereich %3 liegen außerhalb der Wörter 0..%4, die %5 adressieren kann.%6</translation>
+    </message>
+    <message>
+        <source> Switch the device to 3964R n96 to reach them.</source>
+        <translation> Stellen Sie das Gerät auf 3964R n96, um sie zu erreichen.</translation>
+    </message>
+    <message>
+        <source>Cam %1 (%2..%3): 0x80000000 marks an empty cam on the device and cannot be a switch point; move the point by one.</source>
+        <translation>Nocken %1 (%2..%3): 0x80000000 kennzeichnet auf dem Gerät einen leeren Nocken und kann kein Schaltpunkt sein; verschieben Sie den Punkt um eins.</translation>
+    </message>
+    <message>
+        <source>Cam %1 switches on and off at %2: the device would delete it. Give it a length or remove it.</source>
+        <translation>Nocken %1 schaltet bei %2 ein und aus: das Gerät würde ihn löschen. Geben Sie ihm eine Länge oder entfernen Sie ihn.</translation>
+    </message>
+    <message>
+        <source>Cam %1 does not exist (1..%2).</source>
+        <translation>Nocken %1 existiert nicht (1..%2).</translation>
+    </message>
+    <message>
+        <source>A track holds at most %1 cams; this one has %2. Remove %3 cams.</source>
+        <translation>Eine Spur fasst höchstens %1 Nocken; diese hat %2. Entfernen Sie %3 Nocken.</translation>
+    </message>
+    <message>
+        <source>Track words must come in on/off pairs, at most %1; got %2 words.</source>
+        <translation>Spurwörter müssen als Ein/Aus-Paare kommen, höchstens %1; erhalten: %2 Wörter.</translation>
+    </message>
+    <message>
+        <source>Cam %1 reads %2..%3, which is no cam: the device&apos;s track data are inconsistent. Read the track again.</source>
+        <translation>Nocken %1 lautet %2..%3, was kein Nocken ist: die Spurdaten des Geräts sind widersprüchlich. Lesen Sie die Spur erneut.</translation>
+    </message>
+    <message>
+        <source>status query 0x01</source>
+        <translation>Statusabfrage 0x01</translation>
+    </message>
+    <message>
+        <source>error reset 0x02</source>
+        <translation>Fehlerrücksetzung 0x02</translation>
+    </message>
+    <message>
+        <source>program change 0x03</source>
+        <translation>Programmwechsel 0x03</translation>
+    </message>
+    <message>
+        <source>track read 0x04</source>
+        <translation>Spur lesen 0x04</translation>
+    </message>
+    <message>
+        <source>track write 0x05</source>
+        <translation>Spur schreiben 0x05</translation>
+    </message>
+    <message>
+        <source>dead-time read 0x06</source>
+        <translation>Totzeit lesen 0x06</translation>
+    </message>
+    <message>
+        <source>dead-time write 0x07</source>
+        <translation>Totzeit schreiben 0x07</translation>
+    </message>
+    <message>
+        <source>short command 0x%1</source>
+        <translation>Kurzbefehl 0x%1</translation>
+    </message>
+    <message>
+        <source>The cause of the error is still present; check the encoder and the outputs, then reset again.</source>
+        <translation>Die Fehlerursache besteht weiter; prüfen Sie Geber und Ausgänge und setzen Sie dann erneut zurück.</translation>
+    </message>
+    <message>
+        <source>Check that the program number is within the device&apos;s range.</source>
+        <translation>Prüfen Sie, ob die Programmnummer im Bereich des Geräts liegt.</translation>
+    </message>
+    <message>
+        <source>Check the program and output numbers, that the cams lie between the smallest and largest actual value, and that the device has room for them.</source>
+        <translation>Prüfen Sie Programm- und Ausgangsnummern, ob die Nocken zwischen kleinstem und größtem Istwert liegen und ob das Gerät Platz für sie hat.</translation>
+    </message>
+    <message>
+        <source>Check the output number and that the dead time does not exceed the device&apos;s largest dead time.</source>
+        <translation>Prüfen Sie die Ausgangsnummer und ob die Totzeit die größte Totzeit des Geräts nicht überschreitet.</translation>
+    </message>
+    <message>
+        <source>%1 %2 does not fit the byte of the short command (%3..255).</source>
+        <translation>%1 %2 passt nicht in das Byte des Kurzbefehls (%3..255).</translation>
+    </message>
+    <message>
+        <source>%1 %2 does not fit the 16-bit word of the short command (0..65535).</source>
+        <translation>%1 %2 passt nicht in das 16-Bit-Wort des Kurzbefehls (0..65535).</translation>
+    </message>
+    <message>
+        <source>The device does not know the %1 (it answered &quot;:Z&quot;); its firmware may not have it. Use the table interface (RK512) instead.</source>
+        <translation>Das Gerät kennt den Befehl %1 nicht (es antwortete „:Z“); seine Firmware hat ihn möglicherweise nicht. Verwenden Sie stattdessen die Tabellenschnittstelle (RK512).</translation>
+    </message>
+    <message>
+        <source>The reply to the %1 does not start with &apos;:&apos; and its number (got %2). Check that the device&apos;s serial mode is 3964R.</source>
+        <translation>Die Antwort auf den Befehl %1 beginnt nicht mit &apos;:&apos; und seiner Nummer (erhalten: %2). Prüfen Sie, ob die serielle Betriebsart des Geräts 3964R ist.</translation>
+    </message>
+    <message>
+        <source>The reply to the %1 has %2 bytes, %3 expected.</source>
+        <translation>Die Antwort auf den Befehl %1 hat %2 Bytes, %3 erwartet.</translation>
+    </message>
+    <message>
+        <source>%1 %2 does not fit the 16-bit word of the short commands (%3..%4); use the table interface (RK512).</source>
+        <translation>%1 %2 passt nicht in das 16-Bit-Wort der Kurzbefehle (%3..%4); verwenden Sie die Tabellenschnittstelle (RK512).</translation>
+    </message>
+    <message>
+        <source>Virtual inputs go in whole 16-bit words; give a multiple of 16 (got %1). Choose the extra bits with care: without the PLC logic module a 0 switches its output off.</source>
+        <translation>Virtuelle Eingänge werden in ganzen 16-Bit-Wörtern übertragen; geben Sie ein Vielfaches von 16 an (erhalten: %1). Wählen Sie die zusätzlichen Bits mit Bedacht: ohne das SPS-Logikmodul schaltet eine 0 ihren Ausgang ab.</translation>
+    </message>
+    <message>
+        <source>%1 virtual inputs do not fit one status query (at most %2).</source>
+        <translation>%1 virtuelle Eingänge passen nicht in eine Statusabfrage (höchstens %2).</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>Cam count</source>
+        <translation>Nockenanzahl</translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2: switch-on point</source>
+        <translation>Ausgang %1, Nocken %2: Einschaltpunkt</translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2: switch-off point</source>
+        <translation>Ausgang %1, Nocken %2: Ausschaltpunkt</translation>
+    </message>
+    <message>
+        <source>The track write needs %1 bytes; a short command holds %2 (about 14 cams in all). Write fewer tracks per command, or use the table interface (RK512) for longer tracks.</source>
+        <translation>Das Schreiben der Spuren braucht %1 Bytes; ein Kurzbefehl fasst %2 (insgesamt etwa 14 Nocken). Schreiben Sie weniger Spuren je Befehl oder verwenden Sie für längere Spuren die Tabellenschnittstelle (RK512).</translation>
+    </message>
+    <message>
+        <source>Dead time (0.1 ms)</source>
+        <translation>Totzeit (0,1 ms)</translation>
+    </message>
+    <message>
+        <source>actual-value error %1</source>
+        <translation>Istwertfehler %1</translation>
+    </message>
+    <message>
+        <source>output error</source>
+        <translation>Ausgangsfehler</translation>
+    </message>
+    <message>
+        <source>unknown status %1</source>
+        <translation>unbekannter Status %1</translation>
+    </message>
+    <message>
+        <source>at least %1</source>
+        <translation>mindestens %1</translation>
+    </message>
+    <message>
+        <source>%1 for %2 outputs</source>
+        <translation>%1 für %2 Ausgänge</translation>
+    </message>
+    <message>
+        <source>The device refused the %1 (it answered &quot;ER&quot;). %2</source>
+        <translation>Das Gerät hat den Befehl %1 abgelehnt (es antwortete „ER“). %2</translation>
+    </message>
+    <message>
+        <source>The reply to the %1 is neither &quot;OK&quot; nor &quot;ER&quot; (got %2).</source>
+        <translation>Die Antwort auf den Befehl %1 ist weder „OK“ noch „ER“ (erhalten: %2).</translation>
+    </message>
+    <message>
+        <source>Asked for program %1, output %2; the reply is for program %3, output %4. Read the track again.</source>
+        <translation>Angefragt: Programm %1, Ausgang %2; die Antwort gilt für Programm %3, Ausgang %4. Lesen Sie die Spur erneut.</translation>
+    </message>
+    <message>
+        <source>%1 for %2 cams</source>
+        <translation>%1 für %2 Nocken</translation>
+    </message>
+    <message>
+        <source>Asked for the dead time of output %1; the reply is for output %2. Read it again.</source>
+        <translation>Angefragt: Totzeit von Ausgang %1; die Antwort gilt für Ausgang %2. Lesen Sie sie erneut.</translation>
+    </message>
+    <message>
+        <source>Actual value</source>
+        <translation>Istwert</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Output count</source>
+        <translation>Ausgangsanzahl</translation>
+    </message>
+    <message>
+        <source>%1 outputs do not fit one status reply.</source>
+        <translation>%1 Ausgänge passen nicht in eine Statusantwort.</translation>
+    </message>
+    <message>
+        <source>Switch-on point</source>
+        <translation>Einschaltpunkt</translation>
+    </message>
+    <message>
+        <source>Switch-off point</source>
+        <translation>Ausschaltpunkt</translation>
+    </message>
+    <message>
+        <source>%1 cams do not fit one track reply (at most 14).</source>
+        <translation>%1 Nocken passen nicht in eine Spurantwort (höchstens 14).</translation>
+    </message>
+    <message>
+        <source>the device (%1)</source>
+        <translation>das Gerät (%1)</translation>
+    </message>
+    <message>
+        <source>check the cable, that the device&apos;s serial mode (menu &quot;Ser:&quot;) is %1 and the line %2 8%3%4</source>
+        <translation>prüfen Sie das Kabel, ob die serielle Betriebsart des Geräts (Menü „Ser:“) %1 ist und die Leitung %2 8%3%4</translation>
+    </message>
+    <message>
+        <source>a telegram before the device took the request</source>
+        <translation>ein Telegramm, bevor das Gerät die Anfrage angenommen hat</translation>
+    </message>
+    <message>
+        <source>3964R handshake, or a block answered with NAK</source>
+        <translation>3964R-Quittierung oder ein mit NAK beantworteter Block</translation>
+    </message>
+    <message>
+        <source>RK512 read of area %1, offset %2 (1 word)</source>
+        <translation>RK512-Lesen aus Bereich %1, Offset %2 (1 Wort)</translation>
+    </message>
+    <message>
+        <source>RK512 write of area %1, offset %2 (1 word)</source>
+        <translation>RK512-Schreiben in Bereich %1, Offset %2 (1 Wort)</translation>
+    </message>
+    <message>
+        <source>RK512 read of area %1, offset %2 (%3 words)</source>
+        <translation>RK512-Lesen aus Bereich %1, Offset %2 (%3 Wörter)</translation>
+    </message>
+    <message>
+        <source>RK512 write of area %1, offset %2 (%3 words)</source>
+        <translation>RK512-Schreiben in Bereich %1, Offset %2 (%3 Wörter)</translation>
+    </message>
+    <message>
+        <source>a telegram that is no RK512 reply</source>
+        <translation>ein Telegramm, das keine RK512-Antwort ist</translation>
+    </message>
+    <message>
+        <source>an RK512 reply of %1 bytes</source>
+        <translation>eine RK512-Antwort mit %1 Bytes</translation>
+    </message>
+    <message>
+        <source>%1: empty telegram</source>
+        <translation>%1: leeres Telegramm</translation>
+    </message>
+    <message>
+        <source>a telegram that answers another command</source>
+        <translation>ein Telegramm, das einen anderen Befehl beantwortet</translation>
+    </message>
+    <message>
+        <source>output %1 does not exist in the table interface (outputs %2..%3)</source>
+        <translation>Ausgang %1 existiert in der Tabellenschnittstelle nicht (Ausgänge %2..%3)</translation>
+    </message>
+    <message>
+        <source>reading the device identity (data area %1)</source>
+        <translation>Lesen der Gerätekennung (Datenbereich %1)</translation>
+    </message>
+    <message>
+        <source>reading the actual value</source>
+        <translation>Lesen des Istwerts</translation>
+    </message>
+    <message>
+        <source>reading the status (0x01)</source>
+        <translation>Lesen des Zustands (0x01)</translation>
+    </message>
+    <message>
+        <source>reading the inputs</source>
+        <translation>Lesen der Eingänge</translation>
+    </message>
+    <message>
+        <source>resetting the error (0x02)</source>
+        <translation>Rücksetzen des Fehlers (0x02)</translation>
+    </message>
+    <message>
+        <source>resetting the error</source>
+        <translation>Rücksetzen des Fehlers</translation>
+    </message>
+    <message>
+        <source>selecting program %1 (0x03)</source>
+        <translation>Anwählen von Programm %1 (0x03)</translation>
+    </message>
+    <message>
+        <source>selecting program %1 for programming (data area %2)</source>
+        <translation>Anwählen von Programm %1 zum Programmieren (Datenbereich %2)</translation>
+    </message>
+    <message>
+        <source>the device reports %1 %2, which no track holds (0..%3); check the device</source>
+        <translation>das Gerät meldet %1 %2, was keine Spur fasst (0..%3); prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <source>the device reports %1 %2 but its places hold %3; read again, and check the device if this persists</source>
+        <translation>das Gerät meldet %1 %2, aber seine Plätze enthalten %3; lesen Sie erneut und prüfen Sie das Gerät, falls dies bleibt</translation>
+    </message>
+    <message>
+        <source>all %1 places that %2 reaches hold %3, so there may be more; read them over 3964R n96 (--protocol 3964r-n96)</source>
+        <translation>alle %1 Plätze, die %2 erreicht, enthalten %3, es kann also mehr geben; lesen Sie sie über 3964R n96 (--protocol 3964r-n96)</translation>
+    </message>
+    <message>
+        <source>the device may still hold the old %1 or already the first of the new ones; read it to see, or write it again</source>
+        <translation>das Gerät kann noch die alten %1 oder schon die ersten der neuen enthalten; lesen Sie nach oder schreiben Sie erneut</translation>
+    </message>
+    <message>
+        <source>the device now holds only the first %1 of the %2 %3 written (the old ones are gone); write it again</source>
+        <translation>das Gerät enthält jetzt nur die ersten %1 der %2 geschriebenen %3 (die alten sind weg); schreiben Sie erneut</translation>
+    </message>
+    <message>
+        <source>cams</source>
+        <translation>Nocken</translation>
+    </message>
+    <message>
+        <source>reading %1</source>
+        <translation>Lesen von %1</translation>
+    </message>
+    <message>
+        <source>reading program %1</source>
+        <translation>Lesen von Programm %1</translation>
+    </message>
+    <message>
+        <source>writing %1</source>
+        <translation>Schreiben von %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 cams, but over %3 a track can hold at most %4 (the places it reaches); use 3964R n96 (--protocol 3964r-n96)</source>
+        <translation>%1: %2 Nocken, aber über %3 fasst eine Spur höchstens %4 (die Plätze, die es erreicht); verwenden Sie 3964R n96 (--protocol 3964r-n96)</translation>
+    </message>
+    <message>
+        <source>deleting program %1</source>
+        <translation>Löschen von Programm %1</translation>
+    </message>
+    <message>
+        <source>copying program %1 to program %2</source>
+        <translation>Kopieren von Programm %1 nach Programm %2</translation>
+    </message>
+    <message>
+        <source>reading the dead time of output %1</source>
+        <translation>Lesen der Totzeit von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>writing the dead time of output %1</source>
+        <translation>Schreiben der Totzeit von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>reading the dead-time mode of output %1</source>
+        <translation>Lesen des Totzeit-Modus von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>%1: the device reports mode %2, which the manual does not list (0, 1, 2); check the device</source>
+        <translation>%1: das Gerät meldet Modus %2, den das Handbuch nicht aufführt (0, 1, 2); prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <source>writing the dead-time mode of output %1</source>
+        <translation>Schreiben des Totzeit-Modus von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>reading the settings (data area %1)</source>
+        <translation>Lesen der Einstellungen (Datenbereich %1)</translation>
+    </message>
+    <message>
+        <source>%1 (device value %2)</source>
+        <translation>%1 (Gerätewert %2)</translation>
+    </message>
+    <message>
+        <source>%1 (no data word in the table interface)</source>
+        <translation>%1 (kein Datenwort in der Tabellenschnittstelle)</translation>
+    </message>
+    <message>
+        <source>%1 (a value the settings cannot show)</source>
+        <translation>%1 (ein Wert, den die Einstellungen nicht anzeigen können)</translation>
+    </message>
+    <message>
+        <source>the parameters of special encoder types other than the selected type %1 (the device keeps only those of one type)</source>
+        <translation>die Parameter anderer Sondergeber-Typen als des gewählten Typs %1 (das Gerät behält nur die eines Typs)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written over the table interface (no data word); leave them out. Nothing was written.</source>
+        <translation>%1 kann über die Tabellenschnittstelle nicht geschrieben werden (kein Datenwort); lassen Sie sie weg. Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>writing the special encoder of type %1</source>
+        <translation>Schreiben des Sondergebers vom Typ %1</translation>
+    </message>
+    <message>
+        <source>writing the settings (data area %1)</source>
+        <translation>Schreiben der Einstellungen (Datenbereich %1)</translation>
+    </message>
+    <message>
+        <source>%1: the device holds %2, which the settings cannot show</source>
+        <translation>%1: das Gerät enthält %2, was die Einstellungen nicht anzeigen können</translation>
+    </message>
+    <message>
+        <source>%1: the device&apos;s special encoder is of type %2, and it keeps the parameters of that type only</source>
+        <translation>%1: der Sondergeber des Geräts ist vom Typ %2, und es behält nur die Parameter dieses Typs</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no setting the table interface has a data word for</source>
+        <translation>„%1“ ist keine Einstellung, für die die Tabellenschnittstelle ein Datenwort hat</translation>
+    </message>
+    <message>
+        <source>%1 does not exist (areas O, P, M, X; numbers from 0)</source>
+        <translation>%1 existiert nicht (Bereiche O, P, M, X; Nummern ab 0)</translation>
+    </message>
+    <message>
+        <source>reading the actual value of %1</source>
+        <translation>Lesen des Istwerts von %1</translation>
+    </message>
+    <message>
+        <source>reading the set value of %1</source>
+        <translation>Lesen des Sollwerts von %1</translation>
+    </message>
+    <message>
+        <source>reading the analogue cams of analogue output %1</source>
+        <translation>Lesen der Analognocken von Analogausgang %1</translation>
+    </message>
+    <message>
+        <source>%1: analogue outputs are 1..%2</source>
+        <translation>%1: Analogausgänge sind 1..%2</translation>
+    </message>
+    <message>
+        <source>base points</source>
+        <translation>Stützpunkte</translation>
+    </message>
+    <message>
+        <source>writing the analogue cams of analogue output %1</source>
+        <translation>Schreiben der Analognocken von Analogausgang %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 base points, but over %3 at most %4 fit</source>
+        <translation>%1: %2 Stützpunkte, aber über %3 passen höchstens %4</translation>
+    </message>
+    <message>
+        <source>reading the programming program</source>
+        <translation>Lesen des Programmierprogramms</translation>
+    </message>
+    <message>
+        <source>writing the programming program</source>
+        <translation>Schreiben des Programmierprogramms</translation>
+    </message>
+    <message>
+        <source>reading the EEPROM lock</source>
+        <translation>Lesen der EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>locking the EEPROM</source>
+        <translation>Sperren des EEPROMs</translation>
+    </message>
+    <message>
+        <source>unlocking the EEPROM</source>
+        <translation>Entsperren des EEPROMs</translation>
+    </message>
+    <message>
+        <source>CamCon table interface, %1 (%2 8%3%4)</source>
+        <translation>CamCon-Tabellenschnittstelle, %1 (%2 8%3%4)</translation>
+    </message>
+    <message>
+        <source>the %1 protocol got settings of another protocol</source>
+        <translation>das Protokoll %1 hat Einstellungen eines anderen Protokolls erhalten</translation>
+    </message>
+    <message>
+        <source>3964R: a telegram is still being sent; wait for its end before sending the next one.</source>
+        <translation>3964R: ein Telegramm wird noch gesendet; warten Sie sein Ende ab, bevor Sie das nächste senden.</translation>
+    </message>
+    <message>
+        <source>3964R: a telegram of %1 bytes cannot be sent (1..%2 bytes allowed).</source>
+        <translation>3964R: ein Telegramm mit %1 Bytes kann nicht gesendet werden (1..%2 Bytes erlaubt).</translation>
+    </message>
+    <message>
+        <source>no DLE within %1 ms after STX</source>
+        <translation>kein DLE innerhalb von %1 ms nach STX</translation>
+    </message>
+    <message>
+        <source>no DLE within %1 ms after the block</source>
+        <translation>kein DLE innerhalb von %1 ms nach dem Block</translation>
+    </message>
+    <message>
+        <source>%1 instead of DLE after STX</source>
+        <translation>%1 statt DLE nach STX</translation>
+    </message>
+    <message>
+        <source>NAK after the block (the partner found it bad)</source>
+        <translation>NAK nach dem Block (der Partner hat ihn als fehlerhaft erkannt)</translation>
+    </message>
+    <message>
+        <source>STX instead of DLE after the block</source>
+        <translation>STX statt DLE nach dem Block</translation>
+    </message>
+    <message>
+        <source>%1 instead of DLE after the block</source>
+        <translation>%1 statt DLE nach dem Block</translation>
+    </message>
+    <message>
+        <source>3964R: %1; the device may have executed the telegram, which must not be sent twice. Read back what it changes before trying again.</source>
+        <translation>3964R: %1; das Gerät hat das Telegramm möglicherweise ausgeführt, und es darf nicht zweimal gesendet werden. Lesen Sie zurück, was es ändert, bevor Sie es erneut versuchen.</translation>
+    </message>
+    <message>
+        <source>3964R: the partner did not acknowledge the telegram in %1 attempts (last: %2). Check the cable and that the device&apos;s serial mode is 3964R with the same baud rate and parity (n96: 9600 8N1, e38: 38400 8E1).</source>
+        <translation>3964R: der Partner hat das Telegramm in %1 Versuchen nicht quittiert (zuletzt: %2). Prüfen Sie das Kabel und ob die serielle Betriebsart des Geräts 3964R mit derselben Baudrate und Parität ist (n96: 9600 8N1, e38: 38400 8E1).</translation>
     </message>
 </context>
 <context>
@@ -5004,7 +5596,115 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
     <message>
         <source>PLC network %1%2</source>
-        <translation type="unfinished">SPS-Netzwerk %1%2</translation>
+        <translation>SPS-Netzwerk %1%2</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Output %1 has no dead-time compensation on this device (outputs 1..%2 have one).</source>
+        <translation>Ausgang %1 hat auf diesem Gerät keine Totzeitkompensation (die Ausgänge 1..%2 haben eine).</translation>
+    </message>
+    <message>
+        <source>Output %1: dead-time mode %2 is unknown (0 normal, 1 on/off, 2 path-time).</source>
+        <translation>Ausgang %1: Totzeit-Modus %2 ist unbekannt (0 normal, 1 ein/aus, 2 Weg-Zeit).</translation>
+    </message>
+    <message>
+        <source>Output %1: the dead time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation>Ausgang %1: die Totzeit %2 liegt außerhalb von 0..%3 (0,1 ms), dem Bereich des Geräts.</translation>
+    </message>
+    <message>
+        <source>Output %1: the switch-on dead time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation>Ausgang %1: die Einschalttotzeit %2 liegt außerhalb von 0..%3 (0,1 ms), dem Bereich des Geräts.</translation>
+    </message>
+    <message>
+        <source>Output %1: the switching time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation>Ausgang %1: die Schaltzeit %2 liegt außerhalb von 0..%3 (0,1 ms), dem Bereich des Geräts.</translation>
+    </message>
+    <message>
+        <source>Output %1: the switch-off dead time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation>Ausgang %1: die Ausschalttotzeit %2 liegt außerhalb von 0..%3 (0,1 ms), dem Bereich des Geräts.</translation>
+    </message>
+    <message>
+        <source>Analogue output %1 does not exist (1..%2).</source>
+        <translation>Analogausgang %1 existiert nicht (1..%2).</translation>
+    </message>
+    <message>
+        <source>Analogue output %1 has %2 base points; at most %3 fit.</source>
+        <translation>Analogausgang %1 hat %2 Stützpunkte; höchstens %3 passen.</translation>
+    </message>
+    <message>
+        <source>Analogue output %1, base point %2</source>
+        <translation>Analogausgang %1, Stützpunkt %2</translation>
+    </message>
+    <message>
+        <source>%1: position %2 is outside %3..%4.</source>
+        <translation>%1: Position %2 liegt außerhalb von %3..%4.</translation>
+    </message>
+    <message>
+        <source>%1: position %2 does not come after the previous point&apos;s %3; order the points by position.</source>
+        <translation>%1: Position %2 folgt nicht auf %3 des vorigen Punkts; ordnen Sie die Punkte nach Position.</translation>
+    </message>
+    <message>
+        <source>%1: value %2 is outside %3..%4.</source>
+        <translation>%1: Wert %2 liegt außerhalb von %3..%4.</translation>
+    </message>
+    <message>
+        <source>Programming program %1 does not exist (programs 0..%2).</source>
+        <translation>Programmierprogramm %1 existiert nicht (Programme 0..%2).</translation>
+    </message>
+    <message>
+        <source>Programming program select mode %1 is unknown (0 slow, 1 direct, 2 at the actual value).</source>
+        <translation>Anwahlmodus %1 des Programmierprogramms ist unbekannt (0 langsam, 1 direkt, 2 am Istwert).</translation>
+    </message>
+    <message>
+        <source>Programming program switch value %1 is outside %2..%3.</source>
+        <translation>Umschaltwert %1 des Programmierprogramms liegt außerhalb von %2..%3.</translation>
+    </message>
+    <message>
+        <source>cannot make it readable by its owner only (%1)</source>
+        <translation>kann sie nicht nur für ihren Eigentümer lesbar machen (%1)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is missing</source>
+        <translation>„%1“ fehlt</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>rights</source>
+        <translation>Rechte</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>checksum</source>
+        <translation>Prüfsumme</translation>
+    </message>
+    <message>
+        <source>tool</source>
+        <translation>Erstellerprogramm</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>symbol</source>
+        <translation>Symbol</translation>
     </message>
 </context>
 <context>
@@ -5421,6 +6121,14 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>device %1: </source>
         <translation>Gerät %1: </translation>
+    </message>
+    <message>
+        <source>Users</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>restore</source>
+        <translation>Wiederherstellen</translation>
     </message>
 </context>
 </TS>

@@ -1068,9 +1068,9 @@
     </message>
     <message numerus="yes">
         <source>%n point(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n point</numerusform>
+            <numerusform>%n points</numerusform>
         </translation>
     </message>
     <message>
@@ -4527,6 +4527,598 @@ Erase and restore now?</translation>
         <source>Dead-time modes are data words 251..253, which 3964R e38 cannot address (words 0..127); set the device to 3964R n96 (--protocol 3964r-n96) to reach them.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>writing to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the connection speaks %1, which does not reach this kind of device; connect with a protocol of its family</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512 read of data area %1 at offset %2 (%3 16-bit words)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512 write of data area %1 at offset %2 (%3 16-bit words)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No error.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error 16, command unknown: the device serves only data blocks (&apos;D&apos;). The tool sent another block type; report this as a bug.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error 20, beyond the data block: the words asked for reach past the end of the data area, or the area does not exist on this device or firmware. Check the area and word numbers against the device&apos;s manual.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error 22, command unknown: the device knows only read (&apos;E&apos;) and write (&apos;A&apos;). The tool sent another order; report this as a bug.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error 52, too many data: more than 128 bytes (64 16-bit words) in one telegram. Split the transfer into smaller telegrams.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error 54, general error: the device refused the request, e.g. a write to a read-only word, a value out of range, or the EEPROM busy. Check the value and whether the word may be written, then try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error %1, not listed in the manual: the device refused the request for a reason the tool does not know. Check the request and the device&apos;s display.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512: data area %1 does not exist (1..255).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512: offset %1 does not fit in the offset byte (0..255); split the transfer or use 3964R n96.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512: %1 16-bit words in one telegram (%2..%3 allowed); split the transfer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 carries %2 data bytes, %3 expected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the reply is no RK512 reply (it must start with 00 00 00, got %2). Check that the device&apos;s serial mode is 3964R n96 or e38.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the reply carries %2 data bytes, %3 expected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512: %1 data bytes do not make whole 32-bit table words.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table transfer: data area %1 does not exist (1..255).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table transfer of %1 words from data area %2: nothing to transfer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table transfer: %1 words per telegram (1..%2 allowed).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table transfer: words %1..%2 of data area %3 are outside the words 0..%4 that %5 can address.%6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> Switch the device to 3964R n96 to reach them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam %1 (%2..%3): 0x80000000 marks an empty cam on the device and cannot be a switch point; move the point by one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam %1 switches on and off at %2: the device would delete it. Give it a length or remove it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam %1 does not exist (1..%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A track holds at most %1 cams; this one has %2. Remove %3 cams.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track words must come in on/off pairs, at most %1; got %2 words.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam %1 reads %2..%3, which is no cam: the device&apos;s track data are inconsistent. Read the track again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>status query 0x01</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error reset 0x02</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program change 0x03</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>track read 0x04</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>track write 0x05</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dead-time read 0x06</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dead-time write 0x07</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>short command 0x%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The cause of the error is still present; check the encoder and the outputs, then reset again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check that the program number is within the device&apos;s range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the program and output numbers, that the cams lie between the smallest and largest actual value, and that the device has room for them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the output number and that the dead time does not exceed the device&apos;s largest dead time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 does not fit the byte of the short command (%3..255).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 does not fit the 16-bit word of the short command (0..65535).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device does not know the %1 (it answered &quot;:Z&quot;); its firmware may not have it. Use the table interface (RK512) instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reply to the %1 does not start with &apos;:&apos; and its number (got %2). Check that the device&apos;s serial mode is 3964R.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reply to the %1 has %2 bytes, %3 expected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 does not fit the 16-bit word of the short commands (%3..%4); use the table interface (RK512).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Virtual inputs go in whole 16-bit words; give a multiple of 16 (got %1). Choose the extra bits with care: without the PLC logic module a 0 switches its output off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 virtual inputs do not fit one status query (at most %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished">Output</translation>
+    </message>
+    <message>
+        <source>Cam count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2: switch-on point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2: switch-off point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The track write needs %1 bytes; a short command holds %2 (about 14 cams in all). Write fewer tracks per command, or use the table interface (RK512) for longer tracks.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead time (0.1 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>actual-value error %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown status %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at least %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 for %2 outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device refused the %1 (it answered &quot;ER&quot;). %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reply to the %1 is neither &quot;OK&quot; nor &quot;ER&quot; (got %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Asked for program %1, output %2; the reply is for program %3, output %4. Read the track again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 for %2 cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Asked for the dead time of output %1; the reply is for output %2. Read it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Actual value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished">Speed</translation>
+    </message>
+    <message>
+        <source>Output count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 outputs do not fit one status reply.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch-on point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch-off point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cams do not fit one track reply (at most 14).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check the cable, that the device&apos;s serial mode (menu &quot;Ser:&quot;) is %1 and the line %2 8%3%4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a telegram before the device took the request</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3964R handshake, or a block answered with NAK</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512 read of area %1, offset %2 (1 word)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512 write of area %1, offset %2 (1 word)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512 read of area %1, offset %2 (%3 words)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RK512 write of area %1, offset %2 (%3 words)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a telegram that is no RK512 reply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an RK512 reply of %1 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: empty telegram</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a telegram that answers another command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output %1 does not exist in the table interface (outputs %2..%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the device identity (data area %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the actual value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the status (0x01)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>resetting the error (0x02)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>resetting the error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>selecting program %1 (0x03)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>selecting program %1 for programming (data area %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device reports %1 %2, which no track holds (0..%3); check the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device reports %1 %2 but its places hold %3; read again, and check the device if this persists</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all %1 places that %2 reaches hold %3, so there may be more; read them over 3964R n96 (--protocol 3964r-n96)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device may still hold the old %1 or already the first of the new ones; read it to see, or write it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device now holds only the first %1 of the %2 %3 written (the old ones are gone); write it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading program %1</source>
+        <translation type="unfinished">reading program %1</translation>
+    </message>
+    <message>
+        <source>writing %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 cams, but over %3 a track can hold at most %4 (the places it reaches); use 3964R n96 (--protocol 3964r-n96)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deleting program %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>copying program %1 to program %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the dead time of output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the dead time of output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the dead-time mode of output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the device reports mode %2, which the manual does not list (0, 1, 2); check the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the dead-time mode of output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the settings (data area %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (device value %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (no data word in the table interface)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (a value the settings cannot show)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the parameters of special encoder types other than the selected type %1 (the device keeps only those of one type)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be written over the table interface (no data word); leave them out. Nothing was written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the special encoder of type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the settings (data area %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the device holds %2, which the settings cannot show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the device&apos;s special encoder is of type %2, and it keeps the parameters of that type only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no setting the table interface has a data word for</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 does not exist (areas O, P, M, X; numbers from 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the actual value of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the set value of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the analogue cams of analogue output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: analogue outputs are 1..%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>base points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the analogue cams of analogue output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 base points, but over %3 at most %4 fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>locking the EEPROM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unlocking the EEPROM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamCon table interface, %1 (%2 8%3%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 protocol got settings of another protocol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3964R: a telegram is still being sent; wait for its end before sending the next one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3964R: a telegram of %1 bytes cannot be sent (1..%2 bytes allowed).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no DLE within %1 ms after STX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no DLE within %1 ms after the block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 instead of DLE after STX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NAK after the block (the partner found it bad)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STX instead of DLE after the block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 instead of DLE after the block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3964R: %1; the device may have executed the telegram, which must not be sent twice. Read back what it changes before trying again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3964R: the partner did not acknowledge the telegram in %1 attempts (last: %2). Check the cable and that the device&apos;s serial mode is 3964R with the same baud rate and parity (n96: 9600 8N1, e38: 38400 8E1).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -5006,6 +5598,114 @@ Erase and restore now?</translation>
         <source>PLC network %1%2</source>
         <translation type="unfinished">PLC network %1%2</translation>
     </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 has no dead-time compensation on this device (outputs 1..%2 have one).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: dead-time mode %2 is unknown (0 normal, 1 on/off, 2 path-time).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the dead time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the switch-on dead time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the switching time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the switch-off dead time %2 is outside 0..%3 (0.1 ms), the device&apos;s range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1 does not exist (1..%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1 has %2 base points; at most %3 fit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1, base point %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: position %2 is outside %3..%4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: position %2 does not come after the previous point&apos;s %3; order the points by position.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: value %2 is outside %3..%4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming program %1 does not exist (programs 0..%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming program select mode %1 is unknown (0 slow, 1 direct, 2 at the actual value).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming program switch value %1 is outside %2..%3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot make it readable by its owner only (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>checksum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>symbol</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -5421,6 +6121,14 @@ Erase and restore now?</translation>
     <message>
         <source>device %1: </source>
         <translation>device %1: </translation>
+    </message>
+    <message>
+        <source>Users</source>
+        <translation type="unfinished">Users</translation>
+    </message>
+    <message>
+        <source>restore</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

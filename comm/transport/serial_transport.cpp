@@ -192,7 +192,8 @@ int SerialTransport::writeTimeoutMs(qint64 bytes) const {
 
 Status SerialTransport::write(const QByteArray& bytes) {
     if (!isOpen()) return notOpenError();
-    if (m_port->write(bytes) != bytes.size()) return lose(QStringLiteral("writing to"));
+    if (m_port->write(bytes) != bytes.size())
+        return lose(QCoreApplication::translate("cambench::comm", "writing to"));
     const int timeoutMs = writeTimeoutMs(bytes.size());
     QDeadlineTimer deadline(timeoutMs);
     while (m_port->bytesToWrite() > 0) {
@@ -209,7 +210,8 @@ Status SerialTransport::write(const QByteArray& bytes) {
         }
         const int slice = int(std::min<qint64>(kSliceMs, deadline.remainingTime()));
         if (!m_port->waitForBytesWritten(slice)) {
-            if (isLineGone(m_port->error())) return lose(QStringLiteral("writing to"));
+            if (isLineGone(m_port->error()))
+                return lose(QCoreApplication::translate("cambench::comm", "writing to"));
             m_port->clearError();
         }
     }

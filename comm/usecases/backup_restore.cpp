@@ -125,9 +125,10 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
         return report;
     }
     const UseCaseProgress part = progress.slice(steps - 1, 1, steps);
-    const QString text = options.safetyBackup ? QCoreApplication::translate("cambench::usecases",
-                                                                            "step 2 of 2: restore")
-                                              : QStringLiteral("restore");
+    const QString text =
+        options.safetyBackup
+            ? QCoreApplication::translate("cambench::usecases", "step 2 of 2: restore")
+            : QCoreApplication::translate("cambench::usecases", "restore");
     const Status restored = connection.restore(image, part.forDevice(text));
     if (restored) {
         report.state = RestoredState::Restored;

@@ -147,7 +147,8 @@ private:
             !ok)
             return ok;
         if (!m_connection.has(CamConCapability::Users)) {
-            skip(QStringLiteral("Users"), CamConCapability::Users);
+            skip(QCoreApplication::translate("cambench::usecases", "Users"),
+                 CamConCapability::Users);
             return success();
         }
         Result<QList<User>> users = m_connection.readUsers();

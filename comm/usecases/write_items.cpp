@@ -121,7 +121,8 @@ public:
         for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
         for (const PlcWrite& network : m_plan.plcNetworks)
             report.plcNetworks << writePlcNetwork(network);
-        m_progress.report(m_total, m_total, QStringLiteral("written"));
+        m_progress.report(m_total, m_total,
+                          QCoreApplication::translate("cambench::usecases", "written"));
         return report;
     }
 

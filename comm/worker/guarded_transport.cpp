@@ -67,7 +67,8 @@ void GuardedTransport::discardInput() {
 }
 
 QString GuardedTransport::description() const {
-    return m_inner ? m_inner->description() : QStringLiteral("no connection");
+    return m_inner ? m_inner->description()
+                   : QCoreApplication::translate("cambench::comm", "no connection");
 }
 
 }  // namespace cambench::comm

@@ -3,6 +3,7 @@
 #include "comm/device/device_connection.h"
 #include "model/result.h"
 
+#include <QCoreApplication>
 #include <QString>
 
 #include <atomic>
@@ -31,9 +32,11 @@ public:
     Result<Family*> family() {
         if (!m_device) return Error::communication(m_notConnected);
         if (auto* device = dynamic_cast<Family*>(m_device)) return device;
-        return Error::usage(QStringLiteral("the connection speaks %1, which does not reach this "
-                                           "kind of device; connect with a protocol of its family")
-                                .arg(m_device->protocolId()));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "the connection speaks %1, which does not reach this "
+                                        "kind of device; connect with a protocol of its family")
+                .arg(m_device->protocolId()));
     }
 
     bool cancelled() const { return m_cancel.load(); }

@@ -1,5 +1,7 @@
 #include "dead_time_modes.h"
 
+#include <QCoreApplication>
+
 namespace cambench {
 
 namespace {
@@ -40,35 +42,46 @@ std::optional<DeadTimeMode> deadTimeModeFromNumber(qint64 number) {
 QString outputDeadTimeProblem(int output, const OutputDeadTime& deadTime,
                               const DeviceInfo& device) {
     if (output < 1 || output > device.deadTimeOutputs) {
-        return QStringLiteral(
+        return QCoreApplication::translate(
+                   "cambench::model",
                    "Output %1 has no dead-time compensation on this device (outputs "
                    "1..%2 have one).")
             .arg(output)
             .arg(device.deadTimeOutputs);
     }
     if (!deadTimeModeFromNumber(qint64(deadTime.mode))) {
-        return QStringLiteral(
+        return QCoreApplication::translate(
+                   "cambench::model",
                    "Output %1: dead-time mode %2 is unknown (0 normal, 1 on/off, 2 "
                    "path-time).")
             .arg(output)
             .arg(int(deadTime.mode));
     }
+    // Whole sentences per value: a translation words each differently.
     const struct {
         qint32 value;
-        const char* what;
+        const char* sentence;
     } values[] = {
-        {deadTime.normal, "dead time"},
-        {deadTime.on, "switch-on dead time"},
+        {deadTime.normal,
+         QT_TRANSLATE_NOOP("cambench::model",
+                           "Output %1: the dead time %2 is outside 0..%3 (0.1 ms), the device's "
+                           "range.")},
+        {deadTime.on, QT_TRANSLATE_NOOP("cambench::model",
+                                        "Output %1: the switch-on dead time %2 is outside 0..%3 "
+                                        "(0.1 ms), the device's range.")},
         {deadTime.off,
-         deadTime.mode == DeadTimeMode::PathTime ? "switching time" : "switch-off dead time"},
+         deadTime.mode == DeadTimeMode::PathTime
+             ? QT_TRANSLATE_NOOP("cambench::model",
+                                 "Output %1: the switching time %2 is outside 0..%3 (0.1 ms), the "
+                                 "device's range.")
+             : QT_TRANSLATE_NOOP("cambench::model",
+                                 "Output %1: the switch-off dead time %2 is outside 0..%3 (0.1 "
+                                 "ms), the device's range.")},
     };
     for (const auto& item : values) {
         if (item.value >= 0 && item.value <= device.maxDeadTime) continue;
-        return QStringLiteral(
-                   "Output %1: the %2 %3 is outside 0..%4 (0.1 ms), the device's "
-                   "range.")
+        return QCoreApplication::translate("cambench::model", item.sentence)
             .arg(output)
-            .arg(QLatin1String(item.what))
             .arg(item.value)
             .arg(device.maxDeadTime);
     }

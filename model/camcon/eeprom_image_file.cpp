@@ -179,7 +179,8 @@ Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
     if (!parsed) return parsed.error();
     QJsonObject root = *parsed;
     JsonReader reader;
-    const QString storedHash = reader.string(root, {}, key("sha256"), QStringLiteral("checksum"));
+    const QString storedHash = reader.string(
+        root, {}, key("sha256"), QCoreApplication::translate("cambench::model", "checksum"));
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     root.remove(key("sha256"));
     if (storedHash.toLatin1().toLower() != hashOf(root)) {
@@ -200,7 +201,8 @@ Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
                                       "cambench::model", "\"%1\" is not an ISO 8601 date and time")
                                       .arg(taken));
     }
-    const QString tool = reader.string(root, {}, key("tool"), QStringLiteral("tool"));
+    const QString tool = reader.string(root, {}, key("tool"),
+                                       QCoreApplication::translate("cambench::model", "tool"));
     image.toolVersion = tool.startsWith(kToolPrefix) ? tool.mid(kToolPrefix.size()) : tool;
     image.blocks = readBlocks(reader, reader.array(root, {}, key("blocks")));
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));

@@ -51,7 +51,8 @@ PlcNetwork readNetwork(JsonReader& reader, const QJsonValue& value, const QStrin
     network.number = int(reader.integer(
         object, path, key("number"),
         QCoreApplication::translate("cambench::model", "network number"), 0, kMaxPlcNumber));
-    network.value = qint32(reader.integer(object, path, key("value"), QStringLiteral("value")));
+    network.value = qint32(reader.integer(object, path, key("value"),
+                                          QCoreApplication::translate("cambench::model", "value")));
     network.reset = quint16(
         reader.integer(object, path, key("reset"),
                        QCoreApplication::translate("cambench::model", "reset field"), 0, 0xFFFF));
@@ -66,9 +67,9 @@ PlcNetwork readNetwork(JsonReader& reader, const QJsonValue& value, const QStrin
                                      .arg(PlcNetwork::kSymbolsPerPath));
     }
     for (int k = 0; k < PlcNetwork::kSymbols && !reader.failed(); ++k) {
-        network.symbols[std::size_t(k)] =
-            quint16(reader.integerValue(symbols.at(k), JsonReader::element(symbolsPath, k),
-                                        QStringLiteral("symbol"), 0, 0xFFFF));
+        network.symbols[std::size_t(k)] = quint16(reader.integerValue(
+            symbols.at(k), JsonReader::element(symbolsPath, k),
+            QCoreApplication::translate("cambench::model", "symbol"), 0, 0xFFFF));
     }
     return network;
 }

@@ -1,26 +1,34 @@
 #include "programming_program.h"
 
+#include <QCoreApplication>
+
 namespace cambench {
 
 QStringList validateProgrammingProgram(const ProgrammingProgram& programming,
                                        const DeviceInfo& device) {
     QStringList problems;
     if (programming.program < 0 || programming.program >= device.programs) {
-        problems.append(QStringLiteral("Programming program %1 does not exist (programs 0..%2).")
-                            .arg(programming.program)
-                            .arg(device.programs - 1));
+        problems.append(
+            QCoreApplication::translate("cambench::model",
+                                        "Programming program %1 does not exist (programs 0..%2).")
+                .arg(programming.program)
+                .arg(device.programs - 1));
     }
     if (programming.selectMode < 0 || programming.selectMode > 2) {
-        problems.append(QStringLiteral("Programming program select mode %1 is unknown (0 slow, 1 "
-                                       "direct, 2 at the actual value).")
-                            .arg(programming.selectMode));
+        problems.append(
+            QCoreApplication::translate("cambench::model",
+                                        "Programming program select mode %1 is unknown (0 slow, 1 "
+                                        "direct, 2 at the actual value).")
+                .arg(programming.selectMode));
     }
     if (programming.selectMode == 2 && (programming.switchValue < device.minPosition ||
                                         programming.switchValue > device.maxPosition)) {
-        problems.append(QStringLiteral("Programming program switch value %1 is outside %2..%3.")
-                            .arg(programming.switchValue)
-                            .arg(device.minPosition)
-                            .arg(device.maxPosition));
+        problems.append(
+            QCoreApplication::translate("cambench::model",
+                                        "Programming program switch value %1 is outside %2..%3.")
+                .arg(programming.switchValue)
+                .arg(device.minPosition)
+                .arg(device.maxPosition));
     }
     return problems;
 }

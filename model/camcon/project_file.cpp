@@ -160,8 +160,9 @@ private:
     Track readTrack(const QJsonValue& value, const QString& path, const DeviceInfo& device) {
         const QJsonObject object = m_r.objectValue(value, path);
         Track track;
-        track.output = int(
-            m_r.integer(object, path, key("output"), QStringLiteral("output"), 1, device.outputs));
+        track.output = int(m_r.integer(object, path, key("output"),
+                                       QCoreApplication::translate("cambench::model", "output"), 1,
+                                       device.outputs));
         const QJsonArray cams = m_r.array(object, path, key("cams"));
         const QString camsPath = JsonReader::member(path, key("cams"));
         for (int k = 0; k < cams.size() && !m_r.failed(); ++k) {
@@ -191,8 +192,10 @@ private:
         for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
             const QString path = JsonReader::element(key("deadTimes"), i);
             const QJsonObject object = m_r.objectValue(array.at(i), path);
-            const int output = int(m_r.integer(
-                object, path, key("output"), QStringLiteral("output"), 1, device.deadTimeOutputs));
+            const int output =
+                int(m_r.integer(object, path, key("output"),
+                                QCoreApplication::translate("cambench::model", "output"), 1,
+                                device.deadTimeOutputs));
             const qint32 value =
                 qint32(m_r.integer(object, path, key("deadTime"),
                                    QCoreApplication::translate("cambench::model", "dead time")));
@@ -214,7 +217,8 @@ private:
             const QJsonObject object = m_r.objectValue(array.at(i), path);
             const int number =
                 int(m_r.integer(object, path, key(numberKey), key(numberKey), min, max));
-            const QString name = m_r.string(object, path, key("name"), QStringLiteral("name"));
+            const QString name = m_r.string(object, path, key("name"),
+                                            QCoreApplication::translate("cambench::model", "name"));
             if (!m_r.failed() && names.contains(number)) {
                 m_r.fail(JsonReader::member(path, key(numberKey)),
                          QCoreApplication::translate("cambench::model", "%1 %2 appears twice")
@@ -242,14 +246,16 @@ private:
             user.allOutputs =
                 m_r.boolean(object, path, key("allOutputs"),
                             QCoreApplication::translate("cambench::model", "\"all outputs\""));
-            user.rights = quint32(m_r.integer(object, path, key("rights"), QStringLiteral("rights"),
-                                              0, 0xFFFFFFFFLL));
+            user.rights = quint32(m_r.integer(
+                object, path, key("rights"),
+                QCoreApplication::translate("cambench::model", "rights"), 0, 0xFFFFFFFFLL));
             user.outputAccess = QList<bool>(kUserAccessOutputs, false);
             const QJsonArray outputs = m_r.array(object, path, key("outputs"));
             for (int k = 0; k < outputs.size() && !m_r.failed(); ++k) {
                 const int output = int(m_r.integerValue(
                     outputs.at(k), JsonReader::element(JsonReader::member(path, key("outputs")), k),
-                    QStringLiteral("output"), 1, kUserAccessOutputs));
+                    QCoreApplication::translate("cambench::model", "output"), 1,
+                    kUserAccessOutputs));
                 if (output >= 1) user.outputAccess[output - 1] = true;
             }
             users << user;
@@ -258,7 +264,8 @@ private:
     }
 
     QDateTime readTime(const QJsonObject& object, const QString& path, const QString& name) {
-        const QString text = m_r.string(object, path, name, QStringLiteral("time"));
+        const QString text =
+            m_r.string(object, path, name, QCoreApplication::translate("cambench::model", "time"));
         const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
         if (!m_r.failed() && !time.isValid())
             m_r.fail(JsonReader::member(path, name),

@@ -1,5 +1,7 @@
 #include "cam_track_words.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
@@ -8,16 +10,20 @@ namespace {
 std::optional<Error> checkCam(int camNumber, const Cam& cam) {
     if (cam.on == kEmptyCamWord || cam.off == kEmptyCamWord) {
         return Error::invalidData(
-            QStringLiteral("Cam %1 (%2..%3): 0x80000000 marks an empty cam on the device and "
-                           "cannot be a switch point; move the point by one.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "Cam %1 (%2..%3): 0x80000000 marks an empty cam on the device and "
+                "cannot be a switch point; move the point by one.")
                 .arg(camNumber)
                 .arg(cam.on)
                 .arg(cam.off));
     }
     if (cam.on == cam.off) {
         return Error::invalidData(
-            QStringLiteral("Cam %1 switches on and off at %2: the device would delete it. Give it "
-                           "a length or remove it.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "Cam %1 switches on and off at %2: the device would delete it. Give it "
+                "a length or remove it.")
                 .arg(camNumber)
                 .arg(cam.on));
     }
@@ -27,7 +33,9 @@ std::optional<Error> checkCam(int camNumber, const Cam& cam) {
 std::optional<Error> checkCamNumber(int camNumber) {
     if (camNumber >= 1 && camNumber <= kMaxTrackCams) return std::nullopt;
     return Error::usage(
-        QStringLiteral("Cam %1 does not exist (1..%2).").arg(camNumber).arg(kMaxTrackCams));
+        QCoreApplication::translate("cambench::comm", "Cam %1 does not exist (1..%2).")
+            .arg(camNumber)
+            .arg(kMaxTrackCams));
 }
 
 }  // namespace
@@ -35,7 +43,8 @@ std::optional<Error> checkCamNumber(int camNumber) {
 Result<TrackWrite> wholeTrackWrite(const QList<Cam>& cams) {
     if (cams.size() > kMaxTrackCams) {
         return Error::invalidData(
-            QStringLiteral("A track holds at most %1 cams; this one has %2. Remove %3 cams.")
+            QCoreApplication::translate(
+                "cambench::comm", "A track holds at most %1 cams; this one has %2. Remove %3 cams.")
                 .arg(kMaxTrackCams)
                 .arg(cams.size())
                 .arg(cams.size() - kMaxTrackCams));
@@ -64,10 +73,12 @@ Result<TrackWrite> camDeleteWrite(int camNumber) {
 
 Result<QList<Cam>> camsFromTrackWords(const QList<qint32>& words) {
     if (words.size() % 2 != 0 || words.size() > 2 * kMaxTrackCams) {
-        return Error::usage(QStringLiteral("Track words must come in on/off pairs, at most %1; "
-                                           "got %2 words.")
-                                .arg(2 * kMaxTrackCams)
-                                .arg(words.size()));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "Track words must come in on/off pairs, at most %1; "
+                                        "got %2 words.")
+                .arg(2 * kMaxTrackCams)
+                .arg(words.size()));
     }
     QList<Cam> cams;
     for (qsizetype i = 0; i < words.size(); i += 2) {
@@ -78,8 +89,10 @@ Result<QList<Cam>> camsFromTrackWords(const QList<qint32>& words) {
         if (onEmpty && offEmpty) continue;
         if (onEmpty || offEmpty || cam.on == cam.off) {
             return Error::invalidData(
-                QStringLiteral("Cam %1 reads %2..%3, which is no cam: the device's track data are "
-                               "inconsistent. Read the track again.")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "Cam %1 reads %2..%3, which is no cam: the device's track data are "
+                    "inconsistent. Read the track again.")
                     .arg(camNumber)
                     .arg(cam.on)
                     .arg(cam.off));

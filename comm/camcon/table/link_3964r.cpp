@@ -2,6 +2,8 @@
 
 #include "frame_3964r.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 namespace cambench::comm::table {
@@ -40,13 +42,16 @@ Actions Link3964R::send(const QByteArray& telegram, qint64 nowMs, Repeat repeat)
     // past is handled by the next feed() or poll().
     Actions actions;
     if (m_telegram) {
-        actions.sendFailed = QStringLiteral(
+        actions.sendFailed = QCoreApplication::translate(
+            "cambench::comm",
             "3964R: a telegram is still being sent; wait for its end before sending the next one.");
         return actions;
     }
     if (telegram.isEmpty() || telegram.size() > kMaxTelegramBytes) {
         actions.sendFailed =
-            QStringLiteral("3964R: a telegram of %1 bytes cannot be sent (1..%2 bytes allowed).")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "3964R: a telegram of %1 bytes cannot be sent (1..%2 bytes allowed).")
                 .arg(telegram.size())
                 .arg(kMaxTelegramBytes);
         return actions;
@@ -127,12 +132,15 @@ void Link3964R::handleTimeout(qint64 nowMs, Actions& actions) {
             m_deadlineMs = -1;
             break;
         case State::SendWaitDle:
-            failAttempt(QStringLiteral("no DLE within %1 ms after STX").arg(m_timing.ackTimeoutMs),
-                        nowMs, actions);
+            failAttempt(
+                QCoreApplication::translate("cambench::comm", "no DLE within %1 ms after STX")
+                    .arg(m_timing.ackTimeoutMs),
+                nowMs, actions);
             break;
         case State::SendWaitAck:
             failAttempt(
-                QStringLiteral("no DLE within %1 ms after the block").arg(m_timing.ackTimeoutMs),
+                QCoreApplication::translate("cambench::comm", "no DLE within %1 ms after the block")
+                    .arg(m_timing.ackTimeoutMs),
                 nowMs, actions, true);
             break;
         case State::RetryPause:
@@ -178,7 +186,9 @@ void Link3964R::onSendWaitDle(char c, qint64 nowMs, Actions& actions) {
         startReceive(nowMs, actions);
         return;
     }
-    failAttempt(QStringLiteral("%1 instead of DLE after STX").arg(byteName(c)), nowMs, actions);
+    failAttempt(QCoreApplication::translate("cambench::comm", "%1 instead of DLE after STX")
+                    .arg(byteName(c)),
+                nowMs, actions);
 }
 
 void Link3964R::onSendWaitAck(char c, qint64 nowMs, Actions& actions) {
@@ -193,20 +203,24 @@ void Link3964R::onSendWaitAck(char c, qint64 nowMs, Actions& actions) {
         return;
     }
     if (c == kNak) {
-        failAttempt(QStringLiteral("NAK after the block (the partner found it bad)"), nowMs,
-                    actions);
+        failAttempt(QCoreApplication::translate("cambench::comm",
+                                                "NAK after the block (the partner found it bad)"),
+                    nowMs, actions);
         return;
     }
     if (c == kStx) {
         // The partner took no notice of the block and starts its own
         // transfer: this attempt failed, but its telegram is taken first so
         // that neither side waits for the other.
-        failAttempt(QStringLiteral("STX instead of DLE after the block"), nowMs, actions, true);
+        failAttempt(
+            QCoreApplication::translate("cambench::comm", "STX instead of DLE after the block"),
+            nowMs, actions, true);
         startReceive(nowMs, actions);
         return;
     }
-    failAttempt(QStringLiteral("%1 instead of DLE after the block").arg(byteName(c)), nowMs,
-                actions, true);
+    failAttempt(QCoreApplication::translate("cambench::comm", "%1 instead of DLE after the block")
+                    .arg(byteName(c)),
+                nowMs, actions, true);
 }
 
 void Link3964R::onReceive(char c, qint64 nowMs, Actions& actions) {
@@ -269,7 +283,8 @@ void Link3964R::failAttempt(const QString& reason, qint64 nowMs, Actions& action
                            .arg(reason));
     if (maybeRead && m_repeat == Repeat::OnlyUnread) {
         actions.sendFailed =
-            QStringLiteral(
+            QCoreApplication::translate(
+                "cambench::comm",
                 "3964R: %1; the device may have executed the telegram, which must not be sent "
                 "twice. Read back what it changes before trying again.")
                 .arg(reason);
@@ -283,7 +298,8 @@ void Link3964R::failAttempt(const QString& reason, qint64 nowMs, Actions& action
         return;
     }
     actions.sendFailed =
-        QStringLiteral(
+        QCoreApplication::translate(
+            "cambench::comm",
             "3964R: the partner did not acknowledge the telegram in %1 attempts (last: %2). Check "
             "the cable and that the device's serial mode is 3964R with the same baud rate and "
             "parity (n96: 9600 8N1, e38: 38400 8E1).")

@@ -1,5 +1,6 @@
 #include "rk512.h"
 
+#include <QCoreApplication>
 #include <QtEndian>
 
 namespace cambench::comm::table {
@@ -23,11 +24,14 @@ constexpr Rk512Error kOddCountErrorN96 = Rk512Error::General;
 constexpr quint8 kCoordinationOff = 0xFF;
 
 QString describe(const Rk512Request& request) {
-    return QStringLiteral("RK512 %1 of data area %2 at offset %3 (%4 16-bit words)")
-        .arg(request.order == Rk512Order::Read ? QStringLiteral("read") : QStringLiteral("write"))
-        .arg(request.area)
-        .arg(request.offset)
-        .arg(request.words16);
+    // Whole phrases per order: a translation may need to word them differently.
+    const QString text =
+        request.order == Rk512Order::Read
+            ? QCoreApplication::translate(
+                  "cambench::comm", "RK512 read of data area %1 at offset %2 (%3 16-bit words)")
+            : QCoreApplication::translate(
+                  "cambench::comm", "RK512 write of data area %1 at offset %2 (%3 16-bit words)");
+    return text.arg(request.area).arg(request.offset).arg(request.words16);
 }
 
 Rk512ParsedRequest refuse(Rk512Error error, QString detail) {
@@ -49,31 +53,37 @@ const Rk512VariantInfo& rk512VariantInfo(Rk512Variant variant) {
 QString rk512ErrorText(quint8 number) {
     switch (Rk512Error(number)) {
         case Rk512Error::None:
-            return QStringLiteral("No error.");
+            return QCoreApplication::translate("cambench::comm", "No error.");
         case Rk512Error::UnknownBlockType:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Error 16, command unknown: the device serves only data blocks ('D'). The tool "
                 "sent another block type; report this as a bug.");
         case Rk512Error::BeyondBlock:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Error 20, beyond the data block: the words asked for reach past the end of the "
                 "data area, or the area does not exist on this device or firmware. Check the area "
                 "and word numbers against the device's manual.");
         case Rk512Error::UnknownOrder:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Error 22, command unknown: the device knows only read ('E') and write ('A'). The "
                 "tool sent another order; report this as a bug.");
         case Rk512Error::TooMuchData:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Error 52, too many data: more than 128 bytes (64 16-bit words) in one telegram. "
                 "Split the transfer into smaller telegrams.");
         case Rk512Error::General:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Error 54, general error: the device refused the request, e.g. a write to a "
                 "read-only word, a value out of range, or the EEPROM busy. Check the value and "
                 "whether the word may be written, then try again.");
     }
-    return QStringLiteral(
+    return QCoreApplication::translate(
+               "cambench::comm",
                "Error %1, not listed in the manual: the device refused the request for a reason "
                "the tool does not know. Check the request and the device's display.")
         .arg(number);
@@ -81,27 +91,33 @@ QString rk512ErrorText(quint8 number) {
 
 Result<QByteArray> encodeRk512Request(const Rk512Request& request) {
     if (request.area < 1 || request.area > 255) {
-        return Error::usage(
-            QStringLiteral("RK512: data area %1 does not exist (1..255).").arg(request.area));
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::comm", "RK512: data area %1 does not exist (1..255).")
+                                .arg(request.area));
     }
     if (request.offset < 0 || request.offset > 255) {
-        return Error::usage(QStringLiteral("RK512: offset %1 does not fit in the offset byte "
-                                           "(0..255); split the transfer or use 3964R n96.")
-                                .arg(request.offset));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "RK512: offset %1 does not fit in the offset byte "
+                                        "(0..255); split the transfer or use 3964R n96.")
+                .arg(request.offset));
     }
     if (request.words16 < kRk512MinWords16 || request.words16 > kRk512MaxWords16) {
-        return Error::usage(QStringLiteral("RK512: %1 16-bit words in one telegram (%2..%3 "
-                                           "allowed); split the transfer.")
-                                .arg(request.words16)
-                                .arg(kRk512MinWords16)
-                                .arg(kRk512MaxWords16));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "RK512: %1 16-bit words in one telegram (%2..%3 "
+                                        "allowed); split the transfer.")
+                .arg(request.words16)
+                .arg(kRk512MinWords16)
+                .arg(kRk512MaxWords16));
     }
     const qsizetype expectedData = request.order == Rk512Order::Write ? request.words16 * 2 : 0;
     if (request.data.size() != expectedData) {
-        return Error::usage(QStringLiteral("%1 carries %2 data bytes, %3 expected.")
-                                .arg(describe(request))
-                                .arg(request.data.size())
-                                .arg(expectedData));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "%1 carries %2 data bytes, %3 expected.")
+                .arg(describe(request))
+                .arg(request.data.size())
+                .arg(expectedData));
     }
     QByteArray telegram;
     telegram.reserve(kRk512RequestHeaderBytes + request.data.size());
@@ -123,8 +139,10 @@ Result<QByteArray> decodeRk512Reply(QByteArrayView telegram, const Rk512Request&
     if (telegram.size() < kRk512ReplyHeaderBytes || telegram[0] != '\0' || telegram[1] != '\0' ||
         telegram[2] != '\0') {
         return Error::communication(
-            QStringLiteral("%1: the reply is no RK512 reply (it must start with 00 00 00, got "
-                           "%2). Check that the device's serial mode is 3964R n96 or e38.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "%1: the reply is no RK512 reply (it must start with 00 00 00, got "
+                "%2). Check that the device's serial mode is 3964R n96 or e38.")
                 .arg(describe(request),
                      QString::fromLatin1(telegram.first(qMin<qsizetype>(telegram.size(), 8))
                                              .toByteArray()
@@ -139,7 +157,8 @@ Result<QByteArray> decodeRk512Reply(QByteArrayView telegram, const Rk512Request&
     const qsizetype expected = request.order == Rk512Order::Read ? request.words16 * 2 : 0;
     if (data.size() != expected) {
         return Error::communication(
-            QStringLiteral("%1: the reply carries %2 data bytes, %3 expected.")
+            QCoreApplication::translate("cambench::comm",
+                                        "%1: the reply carries %2 data bytes, %3 expected.")
                 .arg(describe(request))
                 .arg(data.size())
                 .arg(expected));
@@ -229,7 +248,8 @@ QByteArray tableWordsToBytes(const QList<qint32>& words) {
 Result<QList<qint32>> bytesToTableWords(QByteArrayView bytes) {
     if (bytes.size() % 4 != 0) {
         return Error::communication(
-            QStringLiteral("RK512: %1 data bytes do not make whole 32-bit table words.")
+            QCoreApplication::translate(
+                "cambench::comm", "RK512: %1 data bytes do not make whole 32-bit table words.")
                 .arg(bytes.size()));
     }
     QList<qint32> words;

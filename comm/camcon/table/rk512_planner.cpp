@@ -1,5 +1,7 @@
 #include "rk512_planner.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 Result<QList<TableChunk>> planTableTransfer(Rk512Variant variant, int area, int firstWord,
@@ -7,30 +9,39 @@ Result<QList<TableChunk>> planTableTransfer(Rk512Variant variant, int area, int 
     const Rk512VariantInfo& info = rk512VariantInfo(variant);
     if (area < 1 || area > 255) {
         return Error::usage(
-            QStringLiteral("Table transfer: data area %1 does not exist (1..255).").arg(area));
+            QCoreApplication::translate("cambench::comm",
+                                        "Table transfer: data area %1 does not exist (1..255).")
+                .arg(area));
     }
     if (wordCount < 1) {
         return Error::usage(
-            QStringLiteral("Table transfer of %1 words from data area %2: nothing to transfer.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "Table transfer of %1 words from data area %2: nothing to transfer.")
                 .arg(wordCount)
                 .arg(area));
     }
     if (maxWordsPerTelegram < 1 || maxWordsPerTelegram > kMaxTableWordsPerTelegram) {
-        return Error::usage(QStringLiteral("Table transfer: %1 words per telegram (1..%2 allowed).")
-                                .arg(maxWordsPerTelegram)
-                                .arg(kMaxTableWordsPerTelegram));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "Table transfer: %1 words per telegram (1..%2 allowed).")
+                .arg(maxWordsPerTelegram)
+                .arg(kMaxTableWordsPerTelegram));
     }
     if (firstWord < 0 || qint64(firstWord) + wordCount > info.reachableWords) {
         return Error::usage(
-            QStringLiteral("Table transfer: words %1..%2 of data area %3 are outside the words "
-                           "0..%4 that %5 can address.%6")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "Table transfer: words %1..%2 of data area %3 are outside the words "
+                "0..%4 that %5 can address.%6")
                 .arg(firstWord)
                 .arg(qint64(firstWord) + wordCount - 1)
                 .arg(area)
                 .arg(info.reachableWords - 1)
                 .arg(QLatin1String(info.name))
                 .arg(variant == Rk512Variant::E38
-                         ? QStringLiteral(" Switch the device to 3964R n96 to reach them.")
+                         ? QCoreApplication::translate(
+                               "cambench::comm", " Switch the device to 3964R n96 to reach them.")
                          : QString()));
     }
     QList<TableChunk> chunks;

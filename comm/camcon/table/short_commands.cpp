@@ -1,5 +1,7 @@
 #include "short_commands.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
@@ -25,39 +27,44 @@ QByteArray start(char lead, ShortCommand command) {
 QString commandName(ShortCommand command) {
     switch (command) {
         case ShortCommand::Status:
-            return QStringLiteral("status query 0x01");
+            return QCoreApplication::translate("cambench::comm", "status query 0x01");
         case ShortCommand::ErrorReset:
-            return QStringLiteral("error reset 0x02");
+            return QCoreApplication::translate("cambench::comm", "error reset 0x02");
         case ShortCommand::ProgramChange:
-            return QStringLiteral("program change 0x03");
+            return QCoreApplication::translate("cambench::comm", "program change 0x03");
         case ShortCommand::ReadTrack:
-            return QStringLiteral("track read 0x04");
+            return QCoreApplication::translate("cambench::comm", "track read 0x04");
         case ShortCommand::WriteTracks:
-            return QStringLiteral("track write 0x05");
+            return QCoreApplication::translate("cambench::comm", "track write 0x05");
         case ShortCommand::ReadDeadTime:
-            return QStringLiteral("dead-time read 0x06");
+            return QCoreApplication::translate("cambench::comm", "dead-time read 0x06");
         case ShortCommand::WriteDeadTime:
-            return QStringLiteral("dead-time write 0x07");
+            return QCoreApplication::translate("cambench::comm", "dead-time write 0x07");
     }
-    return QStringLiteral("short command 0x%1").arg(quint8(command), 2, 16, QLatin1Char('0'));
+    return QCoreApplication::translate("cambench::comm", "short command 0x%1")
+        .arg(quint8(command), 2, 16, QLatin1Char('0'));
 }
 
 // What to check when the device answers "ER".
 QString refusalAdvice(ShortCommand command) {
     switch (command) {
         case ShortCommand::ErrorReset:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "The cause of the error is still present; check the encoder and "
                 "the outputs, then reset again.");
         case ShortCommand::ProgramChange:
-            return QStringLiteral("Check that the program number is within the device's range.");
+            return QCoreApplication::translate(
+                "cambench::comm", "Check that the program number is within the device's range.");
         case ShortCommand::WriteTracks:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Check the program and output numbers, that the cams lie "
                 "between the smallest and largest actual value, and that the "
                 "device has room for them.");
         case ShortCommand::WriteDeadTime:
-            return QStringLiteral(
+            return QCoreApplication::translate(
+                "cambench::comm",
                 "Check the output number and that the dead time does not exceed "
                 "the device's largest dead time.");
         default:
@@ -68,7 +75,8 @@ QString refusalAdvice(ShortCommand command) {
 Result<int> checkedByte(int value, int low, const QString& what) {
     if (value < low || value > 255) {
         return Error::usage(
-            QStringLiteral("%1 %2 does not fit the byte of the short command (%3..255).")
+            QCoreApplication::translate(
+                "cambench::comm", "%1 %2 does not fit the byte of the short command (%3..255).")
                 .arg(what)
                 .arg(value)
                 .arg(low));
@@ -79,7 +87,9 @@ Result<int> checkedByte(int value, int low, const QString& what) {
 Result<quint16> checkedUnsignedWord(int value, const QString& what) {
     if (value < 0 || value > 0xFFFF) {
         return Error::usage(
-            QStringLiteral("%1 %2 does not fit the 16-bit word of the short command (0..65535).")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "%1 %2 does not fit the 16-bit word of the short command (0..65535).")
                 .arg(what)
                 .arg(value));
     }
@@ -90,20 +100,24 @@ Result<quint16> checkedUnsignedWord(int value, const QString& what) {
 std::optional<Error> checkReplyHead(QByteArrayView reply, ShortCommand command,
                                     std::optional<ShortCommand> alsoAccepted = std::nullopt) {
     if (reply.size() >= 2 && reply[0] == kShortReplyLead && reply[1] == kShortUnknownMark) {
-        return Error{ErrorKind::NotUnderstood,
-                     QStringLiteral("The device does not know the %1 (it answered \":Z\"); its "
-                                    "firmware may not have it. Use the table interface (RK512) "
-                                    "instead.")
-                         .arg(commandName(command)),
-                     0};
+        return Error{
+            ErrorKind::NotUnderstood,
+            QCoreApplication::translate("cambench::comm",
+                                        "The device does not know the %1 (it answered \":Z\"); its "
+                                        "firmware may not have it. Use the table interface (RK512) "
+                                        "instead.")
+                .arg(commandName(command)),
+            0};
     }
     const bool numberFits =
         reply.size() >= 2 && (quint8(reply[1]) == quint8(command) ||
                               (alsoAccepted && quint8(reply[1]) == quint8(*alsoAccepted)));
     if (reply.size() < kReplyHeaderBytes || reply[0] != kShortReplyLead || !numberFits) {
         return Error::communication(
-            QStringLiteral("The reply to the %1 does not start with ':' and its number (got %2). "
-                           "Check that the device's serial mode is 3964R.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "The reply to the %1 does not start with ':' and its number (got %2). "
+                "Check that the device's serial mode is 3964R.")
                 .arg(commandName(command),
                      QString::fromLatin1(
                          reply.first(qMin<qsizetype>(reply.size(), 8)).toByteArray().toHex(' '))));
@@ -112,10 +126,12 @@ std::optional<Error> checkReplyHead(QByteArrayView reply, ShortCommand command,
 }
 
 Error wrongLength(ShortCommand command, qsizetype got, const QString& expected) {
-    return Error::communication(QStringLiteral("The reply to the %1 has %2 bytes, %3 expected.")
-                                    .arg(commandName(command))
-                                    .arg(got)
-                                    .arg(expected));
+    return Error::communication(
+        QCoreApplication::translate("cambench::comm",
+                                    "The reply to the %1 has %2 bytes, %3 expected.")
+            .arg(commandName(command))
+            .arg(got)
+            .arg(expected));
 }
 
 }  // namespace
@@ -129,12 +145,14 @@ Result<quint16> shortPositionWord(qint32 value, const QString& what) {
     const qint32 low = kShortPositionsSigned ? -32768 : 0;
     const qint32 high = kShortPositionsSigned ? 32767 : 65535;
     if (value < low || value > high) {
-        return Error::usage(QStringLiteral("%1 %2 does not fit the 16-bit word of the short "
-                                           "commands (%3..%4); use the table interface (RK512).")
-                                .arg(what)
-                                .arg(value)
-                                .arg(low)
-                                .arg(high));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "%1 %2 does not fit the 16-bit word of the short "
+                                        "commands (%3..%4); use the table interface (RK512).")
+                .arg(what)
+                .arg(value)
+                .arg(low)
+                .arg(high));
     }
     return quint16(value);
 }
@@ -148,7 +166,8 @@ bool isShortCommandTelegram(QByteArrayView telegram) {
 Result<QByteArray> encodeStatusRequest(const QList<bool>& virtualInputs) {
     if (virtualInputs.size() % 16 != 0) {
         return Error::usage(
-            QStringLiteral(
+            QCoreApplication::translate(
+                "cambench::comm",
                 "Virtual inputs go in whole 16-bit words; give a multiple of 16 (got %1). Choose "
                 "the "
                 "extra bits with care: without the PLC logic module a 0 switches its output off.")
@@ -162,7 +181,8 @@ Result<QByteArray> encodeStatusRequest(const QList<bool>& virtualInputs) {
     telegram.append(bits);
     if (telegram.size() > kMaxShortTelegramBytes) {
         return Error::usage(
-            QStringLiteral("%1 virtual inputs do not fit one status query (at most %2).")
+            QCoreApplication::translate(
+                "cambench::comm", "%1 virtual inputs do not fit one status query (at most %2).")
                 .arg(virtualInputs.size())
                 .arg((kMaxShortTelegramBytes - 2) * 8));
     }
@@ -174,7 +194,8 @@ QByteArray encodeErrorResetRequest() {
 }
 
 Result<QByteArray> encodeProgramChangeRequest(int program) {
-    const Result<quint16> word = checkedUnsignedWord(program, QStringLiteral("Program"));
+    const Result<quint16> word =
+        checkedUnsignedWord(program, QCoreApplication::translate("cambench::comm", "Program"));
     if (!word) return word.error();
     QByteArray telegram = start(kShortCommandLead, ShortCommand::ProgramChange);
     appendWord(telegram, *word);
@@ -182,9 +203,11 @@ Result<QByteArray> encodeProgramChangeRequest(int program) {
 }
 
 Result<QByteArray> encodeReadTrackRequest(int program, int output) {
-    const Result<quint16> programWord = checkedUnsignedWord(program, QStringLiteral("Program"));
+    const Result<quint16> programWord =
+        checkedUnsignedWord(program, QCoreApplication::translate("cambench::comm", "Program"));
     if (!programWord) return programWord.error();
-    const Result<int> outputByte = checkedByte(output, 1, QStringLiteral("Output"));
+    const Result<int> outputByte =
+        checkedByte(output, 1, QCoreApplication::translate("cambench::comm", "Output"));
     if (!outputByte) return outputByte.error();
     QByteArray telegram = start(kShortQueryLead, ShortCommand::ReadTrack);
     appendWord(telegram, *programWord);
@@ -194,25 +217,32 @@ Result<QByteArray> encodeReadTrackRequest(int program, int output) {
 }
 
 Result<QByteArray> encodeWriteTracksRequest(int program, const QList<Track>& tracks) {
-    const Result<quint16> programWord = checkedUnsignedWord(program, QStringLiteral("Program"));
+    const Result<quint16> programWord =
+        checkedUnsignedWord(program, QCoreApplication::translate("cambench::comm", "Program"));
     if (!programWord) return programWord.error();
     QByteArray telegram = start(kShortCommandLead, ShortCommand::WriteTracks);
     appendWord(telegram, *programWord);
     for (const Track& track : tracks) {
-        const Result<int> outputByte = checkedByte(track.output, 1, QStringLiteral("Output"));
+        const Result<int> outputByte =
+            checkedByte(track.output, 1, QCoreApplication::translate("cambench::comm", "Output"));
         if (!outputByte) return outputByte.error();
-        const Result<int> countByte =
-            checkedByte(int(track.cams.size()), 0, QStringLiteral("Cam count"));
+        const Result<int> countByte = checkedByte(
+            int(track.cams.size()), 0, QCoreApplication::translate("cambench::comm", "Cam count"));
         if (!countByte) return countByte.error();
         telegram.append(char(*outputByte));
         telegram.append(char(*countByte));
         for (qsizetype i = 0; i < track.cams.size(); ++i) {
-            const QString where = QStringLiteral("Output %1, cam %2:").arg(track.output).arg(i + 1);
-            const Result<quint16> on =
-                shortPositionWord(track.cams[i].on, where + QStringLiteral(" switch-on point"));
+            const Result<quint16> on = shortPositionWord(
+                track.cams[i].on,
+                QCoreApplication::translate("cambench::comm", "Output %1, cam %2: switch-on point")
+                    .arg(track.output)
+                    .arg(i + 1));
             if (!on) return on.error();
-            const Result<quint16> off =
-                shortPositionWord(track.cams[i].off, where + QStringLiteral(" switch-off point"));
+            const Result<quint16> off = shortPositionWord(
+                track.cams[i].off,
+                QCoreApplication::translate("cambench::comm", "Output %1, cam %2: switch-off point")
+                    .arg(track.output)
+                    .arg(i + 1));
             if (!off) return off.error();
             appendWord(telegram, *on);
             appendWord(telegram, *off);
@@ -221,9 +251,11 @@ Result<QByteArray> encodeWriteTracksRequest(int program, const QList<Track>& tra
     appendWord(telegram, 0xFFFF);  // end mark
     if (telegram.size() > kMaxShortTelegramBytes) {
         return Error::usage(
-            QStringLiteral("The track write needs %1 bytes; a short command holds %2 (about 14 "
-                           "cams in all). Write fewer tracks per command, or use the table "
-                           "interface (RK512) for longer tracks.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "The track write needs %1 bytes; a short command holds %2 (about 14 "
+                "cams in all). Write fewer tracks per command, or use the table "
+                "interface (RK512) for longer tracks.")
                 .arg(telegram.size())
                 .arg(kMaxShortTelegramBytes));
     }
@@ -231,7 +263,8 @@ Result<QByteArray> encodeWriteTracksRequest(int program, const QList<Track>& tra
 }
 
 Result<QByteArray> encodeReadDeadTimeRequest(int output) {
-    const Result<int> outputByte = checkedByte(output, 1, QStringLiteral("Output"));
+    const Result<int> outputByte =
+        checkedByte(output, 1, QCoreApplication::translate("cambench::comm", "Output"));
     if (!outputByte) return outputByte.error();
     QByteArray telegram = start(kShortQueryLead, ShortCommand::ReadDeadTime);
     telegram.append(char(*outputByte));
@@ -240,10 +273,11 @@ Result<QByteArray> encodeReadDeadTimeRequest(int output) {
 }
 
 Result<QByteArray> encodeWriteDeadTimeRequest(int output, int deadTime) {
-    const Result<int> outputByte = checkedByte(output, 1, QStringLiteral("Output"));
+    const Result<int> outputByte =
+        checkedByte(output, 1, QCoreApplication::translate("cambench::comm", "Output"));
     if (!outputByte) return outputByte.error();
-    const Result<quint16> deadTimeWord =
-        checkedUnsignedWord(deadTime, QStringLiteral("Dead time (0.1 ms)"));
+    const Result<quint16> deadTimeWord = checkedUnsignedWord(
+        deadTime, QCoreApplication::translate("cambench::comm", "Dead time (0.1 ms)"));
     if (!deadTimeWord) return deadTimeWord.error();
     QByteArray telegram = start(kShortCommandLead, ShortCommand::WriteDeadTime);
     telegram.append(char(*outputByte));
@@ -259,11 +293,13 @@ QString shortDeviceStatusText(int deviceStatus) {
         case 1:
         case 2:
         case 3:
-            return QStringLiteral("actual-value error %1").arg(deviceStatus);
+            return QCoreApplication::translate("cambench::comm", "actual-value error %1")
+                .arg(deviceStatus);
         case 4:
-            return QStringLiteral("output error");
+            return QCoreApplication::translate("cambench::comm", "output error");
         default:
-            return QStringLiteral("unknown status %1").arg(deviceStatus);
+            return QCoreApplication::translate("cambench::comm", "unknown status %1")
+                .arg(deviceStatus);
     }
 }
 
@@ -273,7 +309,9 @@ Result<ShortStatus> decodeStatusReply(QByteArrayView reply) {
     // actual value, speed, program (words), status, output count (bytes)
     constexpr int kFixedBytes = kReplyHeaderBytes + 8;
     if (reply.size() < kFixedBytes) {
-        return wrongLength(command, reply.size(), QStringLiteral("at least %1").arg(kFixedBytes));
+        return wrongLength(
+            command, reply.size(),
+            QCoreApplication::translate("cambench::comm", "at least %1").arg(kFixedBytes));
     }
     ShortStatus status;
     status.actualValue = shortPositionValue(wordAt(reply, 2));
@@ -284,7 +322,7 @@ Result<ShortStatus> decodeStatusReply(QByteArrayView reply) {
     const QByteArrayView bits = reply.sliced(kFixedBytes);
     if (bits.size() * 8 < status.outputCount) {
         return wrongLength(command, reply.size(),
-                           QStringLiteral("%1 for %2 outputs")
+                           QCoreApplication::translate("cambench::comm", "%1 for %2 outputs")
                                .arg(kFixedBytes + (status.outputCount + 7) / 8)
                                .arg(status.outputCount));
     }
@@ -303,11 +341,14 @@ Status decodeAcknowledgement(ShortCommand command, QByteArrayView reply) {
     const QByteArrayView answer = reply.sliced(kReplyHeaderBytes);
     if (answer == QByteArrayView("OK")) return success();
     if (answer == QByteArrayView("ER")) {
-        return Error::device(0, QStringLiteral("The device refused the %1 (it answered \"ER\"). %2")
-                                    .arg(commandName(command), refusalAdvice(command)));
+        return Error::device(
+            0, QCoreApplication::translate("cambench::comm",
+                                           "The device refused the %1 (it answered \"ER\"). %2")
+                   .arg(commandName(command), refusalAdvice(command)));
     }
     return Error::communication(
-        QStringLiteral("The reply to the %1 is neither \"OK\" nor \"ER\" (got %2).")
+        QCoreApplication::translate("cambench::comm",
+                                    "The reply to the %1 is neither \"OK\" nor \"ER\" (got %2).")
             .arg(commandName(command), QString::fromLatin1(answer.toByteArray().toHex(' '))));
 }
 
@@ -316,24 +357,29 @@ Result<Track> decodeReadTrackReply(QByteArrayView reply, int program, int output
     if (std::optional<Error> error = checkReplyHead(reply, command)) return *error;
     constexpr int kFixedBytes = kReplyHeaderBytes + 4;  // program word, output, cam count
     if (reply.size() < kFixedBytes) {
-        return wrongLength(command, reply.size(), QStringLiteral("at least %1").arg(kFixedBytes));
+        return wrongLength(
+            command, reply.size(),
+            QCoreApplication::translate("cambench::comm", "at least %1").arg(kFixedBytes));
     }
     const int echoedProgram = wordAt(reply, 2);
     const int echoedOutput = quint8(reply[4]);
     const int count = quint8(reply[5]);
     if (echoedProgram != program || echoedOutput != output) {
         return Error::communication(
-            QStringLiteral("Asked for program %1, output %2; the reply is for program %3, output "
-                           "%4. Read the track again.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "Asked for program %1, output %2; the reply is for program %3, output "
+                "%4. Read the track again.")
                 .arg(program)
                 .arg(output)
                 .arg(echoedProgram)
                 .arg(echoedOutput));
     }
     if (reply.size() != kFixedBytes + 4 * count) {
-        return wrongLength(
-            command, reply.size(),
-            QStringLiteral("%1 for %2 cams").arg(kFixedBytes + 4 * count).arg(count));
+        return wrongLength(command, reply.size(),
+                           QCoreApplication::translate("cambench::comm", "%1 for %2 cams")
+                               .arg(kFixedBytes + 4 * count)
+                               .arg(count));
     }
     Track track;
     track.output = output;
@@ -355,8 +401,10 @@ Result<ShortDeadTime> decodeReadDeadTimeReply(QByteArrayView reply, int output) 
     const int echoedOutput = quint8(reply[2]);
     if (echoedOutput != output) {
         return Error::communication(
-            QStringLiteral("Asked for the dead time of output %1; the reply is for output %2. "
-                           "Read it again.")
+            QCoreApplication::translate(
+                "cambench::comm",
+                "Asked for the dead time of output %1; the reply is for output %2. "
+                "Read it again.")
                 .arg(output)
                 .arg(echoedOutput));
     }
@@ -378,14 +426,17 @@ QByteArray encodeUnknownCommandReply() {
 
 Result<QByteArray> encodeStatusReply(const ShortStatus& status) {
     QByteArray telegram = start(kShortReplyLead, ShortCommand::Status);
-    const Result<quint16> actual =
-        shortPositionWord(status.actualValue, QStringLiteral("Actual value"));
+    const Result<quint16> actual = shortPositionWord(
+        status.actualValue, QCoreApplication::translate("cambench::comm", "Actual value"));
     if (!actual) return actual.error();
-    const Result<quint16> speed = shortPositionWord(status.speed, QStringLiteral("Speed"));
+    const Result<quint16> speed =
+        shortPositionWord(status.speed, QCoreApplication::translate("cambench::comm", "Speed"));
     if (!speed) return speed.error();
-    const Result<quint16> program = checkedUnsignedWord(status.program, QStringLiteral("Program"));
+    const Result<quint16> program = checkedUnsignedWord(
+        status.program, QCoreApplication::translate("cambench::comm", "Program"));
     if (!program) return program.error();
-    const Result<int> count = checkedByte(status.outputCount, 0, QStringLiteral("Output count"));
+    const Result<int> count = checkedByte(
+        status.outputCount, 0, QCoreApplication::translate("cambench::comm", "Output count"));
     if (!count) return count.error();
     appendWord(telegram, *actual);
     appendWord(telegram, *speed);
@@ -399,34 +450,42 @@ Result<QByteArray> encodeStatusReply(const ShortStatus& status) {
     }
     telegram.append(bits);
     if (telegram.size() > kMaxShortTelegramBytes) {
-        return Error::usage(QStringLiteral("%1 outputs do not fit one status reply.").arg(*count));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "%1 outputs do not fit one status reply.")
+                .arg(*count));
     }
     return telegram;
 }
 
 Result<QByteArray> encodeReadTrackReply(int program, const Track& track) {
-    const Result<quint16> programWord = checkedUnsignedWord(program, QStringLiteral("Program"));
+    const Result<quint16> programWord =
+        checkedUnsignedWord(program, QCoreApplication::translate("cambench::comm", "Program"));
     if (!programWord) return programWord.error();
-    const Result<int> outputByte = checkedByte(track.output, 1, QStringLiteral("Output"));
+    const Result<int> outputByte =
+        checkedByte(track.output, 1, QCoreApplication::translate("cambench::comm", "Output"));
     if (!outputByte) return outputByte.error();
-    const Result<int> countByte =
-        checkedByte(int(track.cams.size()), 0, QStringLiteral("Cam count"));
+    const Result<int> countByte = checkedByte(
+        int(track.cams.size()), 0, QCoreApplication::translate("cambench::comm", "Cam count"));
     if (!countByte) return countByte.error();
     QByteArray telegram = start(kShortReplyLead, ShortCommand::ReadTrack);
     appendWord(telegram, *programWord);
     telegram.append(char(*outputByte));
     telegram.append(char(*countByte));
     for (const Cam& cam : track.cams) {
-        const Result<quint16> on = shortPositionWord(cam.on, QStringLiteral("Switch-on point"));
+        const Result<quint16> on = shortPositionWord(
+            cam.on, QCoreApplication::translate("cambench::comm", "Switch-on point"));
         if (!on) return on.error();
-        const Result<quint16> off = shortPositionWord(cam.off, QStringLiteral("Switch-off point"));
+        const Result<quint16> off = shortPositionWord(
+            cam.off, QCoreApplication::translate("cambench::comm", "Switch-off point"));
         if (!off) return off.error();
         appendWord(telegram, *on);
         appendWord(telegram, *off);
     }
     if (telegram.size() > kMaxShortTelegramBytes) {
-        return Error::usage(QStringLiteral("%1 cams do not fit one track reply (at most 14).")
-                                .arg(track.cams.size()));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "%1 cams do not fit one track reply (at most 14).")
+                .arg(track.cams.size()));
     }
     return telegram;
 }

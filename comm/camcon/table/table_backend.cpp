@@ -3,6 +3,8 @@
 #include "frame_3964r.h"
 #include "table_logging.h"
 
+#include <QCoreApplication>
+
 #include <utility>
 
 namespace cambench::comm::table {
@@ -20,12 +22,14 @@ TableBackend::TableBackend(Rk512Variant variant, Timing3964R timing)
     : m_variant(variant), m_timing(timing), m_link(Link3964R::Priority::High, timing) {}
 
 QString TableBackend::describe() const {
-    return QStringLiteral("the device (%1)").arg(QLatin1String(rk512VariantInfo(m_variant).name));
+    return QCoreApplication::translate("cambench::comm", "the device (%1)")
+        .arg(QLatin1String(rk512VariantInfo(m_variant).name));
 }
 
 QString TableBackend::checkHint() const {
     const Rk512VariantInfo& info = rk512VariantInfo(m_variant);
-    return QStringLiteral(
+    return QCoreApplication::translate(
+               "cambench::comm",
                "check the cable, that the device's serial mode (menu \"Ser:\") is %1 "
                "and the line %2 8%3%4")
         .arg(QLatin1String(info.name))
@@ -91,7 +95,8 @@ BackendStep TableBackend::translate(Actions&& actions) {
             in.message = std::move(telegram);
         } else {
             in.kind = Incoming::Foreign;
-            in.detail = QStringLiteral("a telegram before the device took the request");
+            in.detail = QCoreApplication::translate(
+                "cambench::comm", "a telegram before the device took the request");
             qCDebug(commTableLog) << "ignoring a telegram received before the request was "
                                      "acknowledged:"
                                   << telegram.toHex(' ');
@@ -104,7 +109,8 @@ BackendStep TableBackend::translate(Actions&& actions) {
         Incoming control;
         control.kind = Incoming::Garbage;
         control.wire = std::exchange(m_unlogged, {});
-        control.detail = QStringLiteral("3964R handshake, or a block answered with NAK");
+        control.detail = QCoreApplication::translate(
+            "cambench::comm", "3964R handshake, or a block answered with NAK");
         step.incoming.append(std::move(control));
     }
     return step;

@@ -60,11 +60,13 @@ QString TableCamCon::lacks(CamConCapability capability) const {
 
 Result<int> TableCamCon::trackArea(int output) const {
     if (output < kFirstTrackArea || output > kLastTrackArea) {
-        return Error::usage(QStringLiteral("output %1 does not exist in the table interface "
-                                           "(outputs %2..%3)")
-                                .arg(output)
-                                .arg(kFirstTrackArea)
-                                .arg(kLastTrackArea));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "output %1 does not exist in the table interface "
+                                        "(outputs %2..%3)")
+                .arg(output)
+                .arg(kFirstTrackArea)
+                .arg(kLastTrackArea));
     }
     return output;
 }

@@ -7,12 +7,16 @@
 #include "comm/device/error_context.h"
 #include "model/camcon/cam_validation.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
 
 QString trackText(int program, int output) {
-    return QStringLiteral("program %1, output %2").arg(program).arg(output);
+    return QCoreApplication::translate("cambench::comm", "program %1, output %2")
+        .arg(program)
+        .arg(output);
 }
 
 bool isEmptyPlace(const QList<qint32>& words, qsizetype pair) {
@@ -46,10 +50,12 @@ Status TableCamCon::selectProgrammingProgram(int program) {
     const Status selected =
         m_link.writeWord(kStatusArea, tableWord(u"status.programming_program"), program);
     if (!selected) {
-        return inContext(QStringLiteral("selecting program %1 for programming (data area %2)")
-                             .arg(program)
-                             .arg(kStatusArea),
-                         selected.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm",
+                                        "selecting program %1 for programming (data area %2)")
+                .arg(program)
+                .arg(kStatusArea),
+            selected.error());
     }
     return success();
 }
@@ -70,11 +76,13 @@ Result<QList<qint32>> TableCamCon::readPairWords(int area, QStringView countKey,
         const Result<qint32> count = m_link.readWord(area, countWord);
         if (!count) return count.error();
         if (*count < 0 || *count > maxPairs) {
-            return Error::communication(QStringLiteral("the device reports %1 %2, which no track "
-                                                       "holds (0..%3); check the device")
-                                            .arg(*count)
-                                            .arg(what)
-                                            .arg(maxPairs));
+            return Error::communication(
+                QCoreApplication::translate("cambench::comm",
+                                            "the device reports %1 %2, which no track "
+                                            "holds (0..%3); check the device")
+                    .arg(*count)
+                    .arg(what)
+                    .arg(maxPairs));
         }
         if (*count == 0) return words;
         if (const Status read = readMore(2 * *count); !read) return read.error();
@@ -85,8 +93,10 @@ Result<QList<qint32>> TableCamCon::readPairWords(int area, QStringView countKey,
         }
         if (filledPlaces(words) != *count) {
             return Error::communication(
-                QStringLiteral("the device reports %1 %2 but its places hold %3; read again, "
-                               "and check the device if this persists")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "the device reports %1 %2 but its places hold %3; read again, "
+                    "and check the device if this persists")
                     .arg(*count)
                     .arg(what)
                     .arg(filledPlaces(words)));
@@ -101,10 +111,12 @@ Result<QList<qint32>> TableCamCon::readPairWords(int area, QStringView countKey,
         if (const Status read = readMore(next); !read) return read.error();
         if (filledPlaces(words.mid(before)) < next / 2) return words;
     }
-    return Error::usage(QStringLiteral("all %1 places that %2 reaches hold %3, so there may be "
-                                       "more; read them over 3964R n96 (--protocol 3964r-n96)")
-                            .arg(maxPairs)
-                            .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name), what));
+    return Error::usage(
+        QCoreApplication::translate("cambench::comm",
+                                    "all %1 places that %2 reaches hold %3, so there may be "
+                                    "more; read them over 3964R n96 (--protocol 3964r-n96)")
+            .arg(maxPairs)
+            .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name), what));
 }
 
 Status TableCamCon::writePairWords(int area, const QList<qint32>& words, const QString& what,
@@ -115,11 +127,13 @@ Status TableCamCon::writePairWords(int area, const QList<qint32>& words, const Q
     if (done) return success();
     // The first telegram replaced the whole track; later ones added places.
     const QString state =
-        written == 0 ? QStringLiteral(
+        written == 0 ? QCoreApplication::translate(
+                           "cambench::comm",
                            "the device may still hold the old %1 or already the first of the "
                            "new ones; read it to see, or write it again")
                            .arg(what)
-                     : QStringLiteral(
+                     : QCoreApplication::translate(
+                           "cambench::comm",
                            "the device now holds only the first %1 of the %2 %3 written (the "
                            "old ones are gone); write it again")
                            .arg(qMin(written / 2, pairs))
@@ -133,14 +147,15 @@ Status TableCamCon::writePairWords(int area, const QList<qint32>& words, const Q
 Result<QList<Cam>> TableCamCon::readTrackCams(int output) {
     const Result<int> area = trackArea(output);
     if (!area) return area.error();
-    const Result<QList<qint32>> words =
-        readPairWords(*area, u"track.cam_count", QStringLiteral("cams"));
+    const Result<QList<qint32>> words = readPairWords(
+        *area, u"track.cam_count", QCoreApplication::translate("cambench::comm", "cams"));
     if (!words) return words.error();
     return camsFromTrackWords(*words);
 }
 
 Result<Track> TableCamCon::readTrack(int program, int output) {
-    const QString where = QStringLiteral("reading %1").arg(trackText(program, output));
+    const QString where =
+        QCoreApplication::translate("cambench::comm", "reading %1").arg(trackText(program, output));
     if (const Status selected = selectProgrammingProgram(program); !selected)
         return inContext(where, selected.error());
     Result<QList<Cam>> cams = readTrackCams(output);
@@ -152,12 +167,15 @@ Result<CamProgram> TableCamCon::readProgram(int program, int outputs, const Prog
     CamProgram result;
     result.number = program;  // no program names in the table interface
     if (const Status selected = selectProgrammingProgram(program); !selected)
-        return inContext(QStringLiteral("reading program %1").arg(program), selected.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading program %1").arg(program),
+            selected.error());
     for (int output = 1; output <= outputs; ++output) {
         if (progress) progress(output - 1, outputs);
         Result<QList<Cam>> cams = readTrackCams(output);
         if (!cams)
-            return inContext(QStringLiteral("reading %1").arg(trackText(program, output)),
+            return inContext(QCoreApplication::translate("cambench::comm", "reading %1")
+                                 .arg(trackText(program, output)),
                              cams.error());
         if (!cams->isEmpty()) result.tracks.insert(output, Track{output, std::move(cams).value()});
     }
@@ -166,17 +184,20 @@ Result<CamProgram> TableCamCon::readProgram(int program, int outputs, const Prog
 }
 
 Status TableCamCon::writeTrack(int program, const Track& track) {
-    const QString where = QStringLiteral("writing %1").arg(trackText(program, track.output));
+    const QString where = QCoreApplication::translate("cambench::comm", "writing %1")
+                              .arg(trackText(program, track.output));
     const Result<int> area = trackArea(track.output);
     if (!area) return inContext(where, area.error());
     if (track.cams.size() > writablePairs() && writablePairs() < kMaxTrackCams) {
-        return Error::usage(QStringLiteral("%1: %2 cams, but over %3 a track can hold at most %4 "
-                                           "(the places it reaches); use 3964R n96 (--protocol "
-                                           "3964r-n96)")
-                                .arg(where)
-                                .arg(track.cams.size())
-                                .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name))
-                                .arg(writablePairs()));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "%1: %2 cams, but over %3 a track can hold at most %4 "
+                                        "(the places it reaches); use 3964R n96 (--protocol "
+                                        "3964r-n96)")
+                .arg(where)
+                .arg(track.cams.size())
+                .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name))
+                .arg(writablePairs()));
     }
     Track sorted = track;
     normaliseTrack(sorted);
@@ -185,7 +206,8 @@ Status TableCamCon::writeTrack(int program, const Track& track) {
     if (const Status selected = selectProgrammingProgram(program); !selected)
         return inContext(where, selected.error());
     const Status written =
-        writePairWords(*area, write->words, QStringLiteral("cams"), int(sorted.cams.size()));
+        writePairWords(*area, write->words, QCoreApplication::translate("cambench::comm", "cams"),
+                       int(sorted.cams.size()));
     if (!written) return inContext(where, written.error());
     return success();
 }
@@ -194,12 +216,17 @@ Status TableCamCon::deleteProgram(int program) {
     const Status deleted = m_link.writeWord(kStatusArea, tableWord(u"status.copy_program"),
                                             qint32(kDeleteProgramBit | quint32(program)));
     if (!deleted)
-        return inContext(QStringLiteral("deleting program %1").arg(program), deleted.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "deleting program %1").arg(program),
+            deleted.error());
     return success();
 }
 
 Status TableCamCon::copyProgram(int from, int to) {
-    const QString what = QStringLiteral("copying program %1 to program %2").arg(from).arg(to);
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "copying program %1 to program %2")
+            .arg(from)
+            .arg(to);
     if (const Status selected = selectProgrammingProgram(from); !selected)
         return inContext(what, selected.error());
     const Status copied = m_link.writeWord(kStatusArea, tableWord(u"status.copy_program"), to);

@@ -4,6 +4,8 @@
 
 #include "comm/device/error_context.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 Result<DeadTimes> TableCamCon::readDeadTimes(int outputs) {
@@ -13,15 +15,19 @@ Result<DeadTimes> TableCamCon::readDeadTimes(int outputs) {
         if (!area) return area.error();
         const Result<qint32> value = m_link.readWord(*area, tableWord(u"track.dead_time"));
         if (!value)
-            return inContext(QStringLiteral("reading the dead time of output %1").arg(output),
-                             value.error());
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "reading the dead time of output %1")
+                    .arg(output),
+                value.error());
         deadTimes.insert(output, *value);
     }
     return deadTimes;
 }
 
 Status TableCamCon::writeDeadTime(int output, qint32 tenthsMs) {
-    const QString what = QStringLiteral("writing the dead time of output %1").arg(output);
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "writing the dead time of output %1")
+            .arg(output);
     const Result<int> area = trackArea(output);
     if (!area) return inContext(what, area.error());
     const Status written = m_link.writeWord(*area, tableWord(u"track.dead_time"), tenthsMs);
@@ -33,7 +39,9 @@ Result<DeadTimeModes> TableCamCon::readDeadTimeModes(int outputs) {
     if (!has(CamConCapability::DeadTimeModes)) return missing(CamConCapability::DeadTimeModes);
     DeadTimeModes modes;
     for (int output = 1; output <= outputs; ++output) {
-        const QString what = QStringLiteral("reading the dead-time mode of output %1").arg(output);
+        const QString what =
+            QCoreApplication::translate("cambench::comm", "reading the dead-time mode of output %1")
+                .arg(output);
         const Result<int> area = trackArea(output);
         if (!area) return area.error();
         const Result<qint32> normal = m_link.readWord(*area, tableWord(u"track.dead_time"));
@@ -45,8 +53,10 @@ Result<DeadTimeModes> TableCamCon::readDeadTimeModes(int outputs) {
         const std::optional<DeadTimeMode> mode = deadTimeModeFromNumber(words->at(0));
         if (!mode) {
             return Error::communication(
-                QStringLiteral("%1: the device reports mode %2, which the manual does not list "
-                               "(0, 1, 2); check the device")
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "%1: the device reports mode %2, which the manual does not list "
+                    "(0, 1, 2); check the device")
                     .arg(what)
                     .arg(words->at(0)));
         }
@@ -57,7 +67,9 @@ Result<DeadTimeModes> TableCamCon::readDeadTimeModes(int outputs) {
 
 Status TableCamCon::writeDeadTimeMode(int output, const OutputDeadTime& deadTime) {
     if (!has(CamConCapability::DeadTimeModes)) return missing(CamConCapability::DeadTimeModes);
-    const QString what = QStringLiteral("writing the dead-time mode of output %1").arg(output);
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "writing the dead-time mode of output %1")
+            .arg(output);
     const Result<int> area = trackArea(output);
     if (!area) return inContext(what, area.error());
     const Status normal = m_link.writeWord(*area, tableWord(u"track.dead_time"), deadTime.normal);

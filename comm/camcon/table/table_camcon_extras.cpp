@@ -7,18 +7,23 @@
 
 #include "comm/device/error_context.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 Result<AnalogueCamTrack> TableCamCon::readAnalogueCams(int analogueOutput) {
-    const QString what =
-        QStringLiteral("reading the analogue cams of analogue output %1").arg(analogueOutput);
+    const QString what = QCoreApplication::translate(
+                             "cambench::comm", "reading the analogue cams of analogue output %1")
+                             .arg(analogueOutput);
     if (analogueOutput < 1 || analogueOutput > kAnalogueOutputs) {
         return Error::usage(
-            QStringLiteral("%1: analogue outputs are 1..%2").arg(what).arg(kAnalogueOutputs));
+            QCoreApplication::translate("cambench::comm", "%1: analogue outputs are 1..%2")
+                .arg(what)
+                .arg(kAnalogueOutputs));
     }
     const Result<QList<qint32>> words =
         readPairWords(kFirstAnalogCamArea + analogueOutput - 1, u"analog_cam.count",
-                      QStringLiteral("base points"));
+                      QCoreApplication::translate("cambench::comm", "base points"));
     if (!words) return inContext(what, words.error());
     AnalogueCamTrack track;
     track.output = analogueOutput;
@@ -30,14 +35,18 @@ Result<AnalogueCamTrack> TableCamCon::readAnalogueCams(int analogueOutput) {
 }
 
 Status TableCamCon::writeAnalogueCams(const AnalogueCamTrack& track) {
-    const QString what =
-        QStringLiteral("writing the analogue cams of analogue output %1").arg(track.output);
+    const QString what = QCoreApplication::translate(
+                             "cambench::comm", "writing the analogue cams of analogue output %1")
+                             .arg(track.output);
     if (track.output < 1 || track.output > kAnalogueOutputs) {
         return Error::usage(
-            QStringLiteral("%1: analogue outputs are 1..%2").arg(what).arg(kAnalogueOutputs));
+            QCoreApplication::translate("cambench::comm", "%1: analogue outputs are 1..%2")
+                .arg(what)
+                .arg(kAnalogueOutputs));
     }
     if (track.points.size() > writablePairs()) {
-        return Error::usage(QStringLiteral("%1: %2 base points, but over %3 at most %4 fit")
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::comm", "%1: %2 base points, but over %3 at most %4 fit")
                                 .arg(what)
                                 .arg(track.points.size())
                                 .arg(QLatin1String(rk512VariantInfo(m_link.variant()).name))
@@ -48,8 +57,9 @@ Status TableCamCon::writeAnalogueCams(const AnalogueCamTrack& track) {
     QList<qint32> words;
     for (const AnaloguePoint& point : track.points) words << point.position << point.value;
     while (words.size() < 4) words.append(kRewritePaddingWord);
-    const Status written = writePairWords(kFirstAnalogCamArea + track.output - 1, words,
-                                          QStringLiteral("base points"), int(track.points.size()));
+    const Status written = writePairWords(
+        kFirstAnalogCamArea + track.output - 1, words,
+        QCoreApplication::translate("cambench::comm", "base points"), int(track.points.size()));
     if (!written) return inContext(what, written.error());
     return success();
 }
@@ -57,7 +67,10 @@ Status TableCamCon::writeAnalogueCams(const AnalogueCamTrack& track) {
 Result<ProgrammingProgram> TableCamCon::readProgrammingProgram() {
     const Result<WordBlock> block = WordBlock::read(
         m_link, kStatusArea, u"status.programming_program", u"status.programming_switch_value");
-    if (!block) return inContext(QStringLiteral("reading the programming program"), block.error());
+    if (!block)
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the programming program"),
+            block.error());
     ProgrammingProgram programming;
     programming.program = block->at(u"status.programming_program");
     programming.selectMode = block->at(u"status.programming_select_mode");
@@ -66,7 +79,8 @@ Result<ProgrammingProgram> TableCamCon::readProgrammingProgram() {
 }
 
 Status TableCamCon::writeProgrammingProgram(const ProgrammingProgram& programming) {
-    const QString what = QStringLiteral("writing the programming program");
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "writing the programming program");
     if (const Status selected = selectProgrammingProgram(programming.program); !selected)
         return inContext(what, selected.error());
     const Status written =
@@ -78,7 +92,9 @@ Status TableCamCon::writeProgrammingProgram(const ProgrammingProgram& programmin
 
 Result<bool> TableCamCon::readEepromLock() {
     const Result<qint32> lock = m_link.readWord(kConfigArea, tableWord(u"config.eeprom_lock"));
-    if (!lock) return inContext(QStringLiteral("reading the EEPROM lock"), lock.error());
+    if (!lock)
+        return inContext(QCoreApplication::translate("cambench::comm", "reading the EEPROM lock"),
+                         lock.error());
     return *lock != 0;
 }
 
@@ -87,7 +103,8 @@ Status TableCamCon::writeEepromLock(bool locked) {
         m_link.writeWord(kConfigArea, tableWord(u"config.eeprom_lock"), locked ? 1 : 0);
     if (!written) {
         return inContext(
-            locked ? QStringLiteral("locking the EEPROM") : QStringLiteral("unlocking the EEPROM"),
+            locked ? QCoreApplication::translate("cambench::comm", "locking the EEPROM")
+                   : QCoreApplication::translate("cambench::comm", "unlocking the EEPROM"),
             written.error());
     }
     return success();

@@ -6,6 +6,8 @@
 
 #include "comm/device/error_context.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
@@ -62,7 +64,8 @@ QList<bool> bitsOf(const QList<qint32>& words, int count) {
 }  // namespace
 
 Result<DeviceInfo> TableCamCon::readInfo() {
-    const QString what = QStringLiteral("reading the device identity (data area %1)");
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "reading the device identity (data area %1)");
     const Result<WordBlock> status =
         WordBlock::read(m_link, kStatusArea, u"status.plc_boost", u"status.device_status");
     if (!status) return inContext(what.arg(kStatusArea), status.error());
@@ -93,7 +96,9 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
     // the position so that the two shown together belong together.
     const Result<WordBlock> axis =
         WordBlock::read(m_link, kStatusArea, u"status.actual_value", u"status.speed");
-    if (!axis) return inContext(QStringLiteral("reading the actual value"), axis.error());
+    if (!axis)
+        return inContext(QCoreApplication::translate("cambench::comm", "reading the actual value"),
+                         axis.error());
     status.position = axis->at(u"status.actual_value");
     status.speed = axis->at(u"status.speed");
 
@@ -101,12 +106,16 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
     // with its outputs, so even zeros would switch outputs off.
     const Result<QByteArray> request = encodeStatusRequest();
     if (!request) return request.error();
-    const Result<QByteArray> reply =
-        m_link.shortCommand(*request, QStringLiteral("status query 0x01"), kMaxShortTelegramBytes,
-                            RetryPolicy::Idempotent);
-    if (!reply) return inContext(QStringLiteral("reading the status (0x01)"), reply.error());
+    const Result<QByteArray> reply = m_link.shortCommand(
+        *request, QCoreApplication::translate("cambench::comm", "status query 0x01"),
+        kMaxShortTelegramBytes, RetryPolicy::Idempotent);
+    if (!reply)
+        return inContext(QCoreApplication::translate("cambench::comm", "reading the status (0x01)"),
+                         reply.error());
     const Result<ShortStatus> decoded = decodeStatusReply(*reply);
-    if (!decoded) return inContext(QStringLiteral("reading the status (0x01)"), decoded.error());
+    if (!decoded)
+        return inContext(QCoreApplication::translate("cambench::comm", "reading the status (0x01)"),
+                         decoded.error());
     status.activeProgram = decoded->program;
     status.errorState = decoded->deviceStatus;
     status.outputs = decoded->outputs.mid(0, outputs);
@@ -116,7 +125,9 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
     const int words = qMin(inputWords->count, (inputs + kBitsPerWord - 1) / kBitsPerWord);
     if (words > 0) {
         const Result<QList<qint32>> bits = m_link.readWords(kIoArea, inputWords->firstWord, words);
-        if (!bits) return inContext(QStringLiteral("reading the inputs"), bits.error());
+        if (!bits)
+            return inContext(QCoreApplication::translate("cambench::comm", "reading the inputs"),
+                             bits.error());
         status.inputs = bitsOf(*bits, inputs);
     }
     return status;
@@ -124,22 +135,28 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
 
 Status TableCamCon::resetError() {
     const Result<QByteArray> reply =
-        m_link.shortCommand(encodeErrorResetRequest(), QStringLiteral("error reset 0x02"),
+        m_link.shortCommand(encodeErrorResetRequest(),
+                            QCoreApplication::translate("cambench::comm", "error reset 0x02"),
                             kMaxShortTelegramBytes, RetryPolicy::Idempotent);
-    if (!reply) return inContext(QStringLiteral("resetting the error (0x02)"), reply.error());
+    if (!reply)
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "resetting the error (0x02)"),
+            reply.error());
     const Status acknowledged = decodeAcknowledgement(ShortCommand::ErrorReset, *reply);
     if (!acknowledged)
-        return inContext(QStringLiteral("resetting the error"), acknowledged.error());
+        return inContext(QCoreApplication::translate("cambench::comm", "resetting the error"),
+                         acknowledged.error());
     return success();
 }
 
 Status TableCamCon::selectProgram(int program) {
-    const QString what = QStringLiteral("selecting program %1 (0x03)").arg(program);
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "selecting program %1 (0x03)").arg(program);
     const Result<QByteArray> request = encodeProgramChangeRequest(program);
     if (!request) return inContext(what, request.error());
-    const Result<QByteArray> reply =
-        m_link.shortCommand(*request, QStringLiteral("program change 0x03"), kMaxShortTelegramBytes,
-                            RetryPolicy::Idempotent);
+    const Result<QByteArray> reply = m_link.shortCommand(
+        *request, QCoreApplication::translate("cambench::comm", "program change 0x03"),
+        kMaxShortTelegramBytes, RetryPolicy::Idempotent);
     if (!reply) return inContext(what, reply.error());
     const Status acknowledged = decodeAcknowledgement(ShortCommand::ProgramChange, *reply);
     if (!acknowledged) return inContext(what, acknowledged.error());

@@ -6,6 +6,8 @@
 
 #include "comm/device/error_context.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
@@ -18,8 +20,10 @@ constexpr int kHighNumberShift = 10;
 Result<int> areaIndex(int area, int number) {
     const int index = area - PlcNetwork::O;
     if (index < 0 || index > 3 || number < 0) {
-        return Error::usage(QStringLiteral("%1 does not exist (areas O, P, M, X; numbers from 0)")
-                                .arg(PlcNetwork::describe(area, number)));
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "%1 does not exist (areas O, P, M, X; numbers from 0)")
+                .arg(PlcNetwork::describe(area, number)));
     }
     return index;
 }
@@ -32,7 +36,8 @@ qint32 networkSelector(int index, int number) {
 }  // namespace
 
 Result<PlcNetwork> TableCamCon::readPlcNetwork(int area, int number) {
-    const QString what = QStringLiteral("reading %1").arg(PlcNetwork::describe(area, number));
+    const QString what = QCoreApplication::translate("cambench::comm", "reading %1")
+                             .arg(PlcNetwork::describe(area, number));
     const Result<int> index = areaIndex(area, number);
     if (!index) return index.error();
     const Status selected = m_link.writeWord(kPlcLinkArea, tableWord(u"plc_link.network"),
@@ -56,8 +61,8 @@ Result<PlcNetwork> TableCamCon::readPlcNetwork(int area, int number) {
 }
 
 Status TableCamCon::writePlcNetwork(const PlcNetwork& network) {
-    const QString what =
-        QStringLiteral("writing %1").arg(PlcNetwork::describe(network.area, network.number));
+    const QString what = QCoreApplication::translate("cambench::comm", "writing %1")
+                             .arg(PlcNetwork::describe(network.area, network.number));
     const Result<int> index = areaIndex(network.area, network.number);
     if (!index) return index.error();
     const Status selected = m_link.writeWord(kPlcLinkArea, tableWord(u"plc_link.network"),
@@ -83,9 +88,10 @@ Result<qint32> TableCamCon::readPlcActual(int area, int number) {
     if (!index) return index.error();
     const Result<qint32> value = m_link.readWord(kFirstPlcActualValueArea + *index, number);
     if (!value)
-        return inContext(QStringLiteral("reading the actual value of %1")
-                             .arg(PlcNetwork::describe(area, number)),
-                         value.error());
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the actual value of %1")
+                .arg(PlcNetwork::describe(area, number)),
+            value.error());
     return value;
 }
 
@@ -95,7 +101,8 @@ Result<qint32> TableCamCon::readPlcSetpoint(int area, int number) {
     const Result<qint32> value = m_link.readWord(kFirstPlcSetValueArea + *index, number);
     if (!value)
         return inContext(
-            QStringLiteral("reading the set value of %1").arg(PlcNetwork::describe(area, number)),
+            QCoreApplication::translate("cambench::comm", "reading the set value of %1")
+                .arg(PlcNetwork::describe(area, number)),
             value.error());
     return value;
 }

@@ -8,6 +8,7 @@
 #include "comm/device/error_context.h"
 #include "model/camcon/system_settings.h"
 
+#include <QCoreApplication>
 #include <QSet>
 
 namespace cambench::comm::table {
@@ -51,7 +52,8 @@ QString keyList(const QStringList& keys) {
 }  // namespace
 
 Result<SystemSettings> TableCamCon::readSettings(QStringList* skipped) {
-    const QString what = QStringLiteral("reading the settings (data area %1)");
+    const QString what =
+        QCoreApplication::translate("cambench::comm", "reading the settings (data area %1)");
     const Result<WordBlock> system = WordBlock::read(m_link, kSystemArea, u"system.encoder_type",
                                                      u"system.standstill_hysteresis");
     if (!system) return inContext(what.arg(kSystemArea), system.error());
@@ -72,7 +74,7 @@ Result<SystemSettings> TableCamCon::readSettings(QStringList* skipped) {
             if (value) {
                 settings.insert(QLatin1String(setting.key), *value);
             } else {
-                unshown.append(QStringLiteral("%1 (device value %2)")
+                unshown.append(QCoreApplication::translate("cambench::comm", "%1 (device value %2)")
                                    .arg(QLatin1String(setting.key))
                                    .arg(block->word(setting.word)));
             }
@@ -93,13 +95,17 @@ Result<SystemSettings> TableCamCon::readSettings(QStringList* skipped) {
                 wordless.append(key);
         }
         if (!wordless.isEmpty())
-            skipped->append(
-                QStringLiteral("%1 (no data word in the table interface)").arg(keyList(wordless)));
+            skipped->append(QCoreApplication::translate("cambench::comm",
+                                                        "%1 (no data word in the table interface)")
+                                .arg(keyList(wordless)));
         if (!unshown.isEmpty())
-            skipped->append(
-                QStringLiteral("%1 (a value the settings cannot show)").arg(keyList(unshown)));
-        skipped->append(QStringLiteral("the parameters of special encoder types other than the "
-                                       "selected type %1 (the device keeps only those of one type)")
+            skipped->append(QCoreApplication::translate("cambench::comm",
+                                                        "%1 (a value the settings cannot show)")
+                                .arg(keyList(unshown)));
+        skipped->append(QCoreApplication::translate(
+                            "cambench::comm",
+                            "the parameters of special encoder types other than the "
+                            "selected type %1 (the device keeps only those of one type)")
                             .arg(type));
     }
     return settings;
@@ -124,10 +130,12 @@ Status TableCamCon::writeSettings(const SystemSettings& settings, const SystemSe
     }
     if (!unwritable.isEmpty()) {
         // Nothing is written: a partial write would pass for a complete one.
-        return Error::invalidData(QStringLiteral("%1 cannot be written over the table interface "
-                                                 "(no data word); leave them out. Nothing was "
-                                                 "written.")
-                                      .arg(keyList(unwritable)));
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::comm",
+                                        "%1 cannot be written over the table interface "
+                                        "(no data word); leave them out. Nothing was "
+                                        "written.")
+                .arg(keyList(unwritable)));
     }
     // A special encoder is written as one block of words 0..7, which also
     // selects it (manual 3.4.1); several types: the last one stays selected.
@@ -144,28 +152,33 @@ Status TableCamCon::writeSettings(const SystemSettings& settings, const SystemSe
         words[kSystemArea].remove(kSpecialEncoderFirstWord);
         words[kSystemArea].remove(kSpecialEncoderFirstWord + 1);
         if (const Status written = writeRuns(m_link, kSystemArea, block); !written) {
-            return inContext(QStringLiteral("writing the special encoder of type %1").arg(type),
+            return inContext(QCoreApplication::translate("cambench::comm",
+                                                         "writing the special encoder of type %1")
+                                 .arg(type),
                              written.error());
         }
     }
     for (auto area = words.begin(); area != words.end(); ++area) {
         if (const Status written = writeRuns(m_link, area.key(), *area); !written) {
-            return inContext(QStringLiteral("writing the settings (data area %1)").arg(area.key()),
-                             written.error());
+            return inContext(
+                QCoreApplication::translate("cambench::comm", "writing the settings (data area %1)")
+                    .arg(area.key()),
+                written.error());
         }
     }
     return success();
 }
 
 Result<QVariant> TableCamCon::readSetting(const QString& key) {
-    const QString what = QStringLiteral("reading %1").arg(key);
+    const QString what = QCoreApplication::translate("cambench::comm", "reading %1").arg(key);
     if (const TableSetting* setting = findTableSetting(key)) {
         const Result<qint32> word = m_link.readWord(setting->area, setting->word);
         if (!word) return inContext(what, word.error());
         const std::optional<qint64> value = settingFromWord(*setting, *word);
         if (!value) {
             return Error::invalidData(
-                QStringLiteral("%1: the device holds %2, which the settings cannot show")
+                QCoreApplication::translate(
+                    "cambench::comm", "%1: the device holds %2, which the settings cannot show")
                     .arg(what)
                     .arg(*word));
         }
@@ -178,15 +191,19 @@ Result<QVariant> TableCamCon::readSetting(const QString& key) {
         if (!block) return inContext(what, block.error());
         const int type = block->at(u"system.special_encoder_type");
         if (type != special->type) {
-            return Error::usage(QStringLiteral("%1: the device's special encoder is of type %2, "
-                                               "and it keeps the parameters of that type only")
-                                    .arg(what)
-                                    .arg(type));
+            return Error::usage(
+                QCoreApplication::translate("cambench::comm",
+                                            "%1: the device's special encoder is of type %2, "
+                                            "and it keeps the parameters of that type only")
+                    .arg(what)
+                    .arg(type));
         }
         return QVariant(qint64(block->at(u"system.special_encoder_parameter", special->index)));
     }
     return Error::usage(
-        QStringLiteral("\"%1\" is no setting the table interface has a data word for").arg(key));
+        QCoreApplication::translate("cambench::comm",
+                                    "\"%1\" is no setting the table interface has a data word for")
+            .arg(key));
 }
 
 }  // namespace cambench::comm::table

@@ -3,6 +3,8 @@
 #include "rk512_planner.h"
 #include "short_commands.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm::table {
 
 namespace {
@@ -15,12 +17,22 @@ constexpr int kDeviceRetryPauseMs = Timing3964R{}.charTimeoutMs;
 
 QString requestLabel(const Rk512Request& request) {
     const int words = request.words16 / 2;
-    return QStringLiteral("RK512 %1 of area %2, offset %3 (%4 word%5)")
-        .arg(request.order == Rk512Order::Read ? QStringLiteral("read") : QStringLiteral("write"))
-        .arg(request.area)
-        .arg(request.offset)
-        .arg(words)
-        .arg(words == 1 ? QString() : QStringLiteral("s"));
+    // Whole phrases per order and number: a translation may need to word
+    // them differently.
+    const bool read = request.order == Rk512Order::Read;
+    QString text;
+    if (words == 1) {
+        text = read ? QCoreApplication::translate("cambench::comm",
+                                                  "RK512 read of area %1, offset %2 (1 word)")
+                    : QCoreApplication::translate("cambench::comm",
+                                                  "RK512 write of area %1, offset %2 (1 word)");
+        return text.arg(request.area).arg(request.offset);
+    }
+    text = read ? QCoreApplication::translate("cambench::comm",
+                                              "RK512 read of area %1, offset %2 (%3 words)")
+                : QCoreApplication::translate("cambench::comm",
+                                              "RK512 write of area %1, offset %2 (%3 words)");
+    return text.arg(request.area).arg(request.offset).arg(words);
 }
 
 bool isRk512Reply(const QByteArray& reply) {
@@ -57,13 +69,15 @@ Result<QByteArray> TableLink::transfer(const Rk512Request& rk512, RetryPolicy re
     // request (a short command's reply, a left-over reply to another read).
     request.judge = [dataBytes](const QByteArray& reply, QString& problem) {
         if (!isRk512Reply(reply)) {
-            problem = QStringLiteral("a telegram that is no RK512 reply");
+            problem =
+                QCoreApplication::translate("cambench::comm", "a telegram that is no RK512 reply");
             return Verdict::Ignore;
         }
         const bool error = reply.at(3) != 0;
         if (reply.size() == kRk512ReplyHeaderBytes + (error ? 0 : dataBytes))
             return Verdict::Accept;
-        problem = QStringLiteral("an RK512 reply of %1 bytes").arg(reply.size());
+        problem = QCoreApplication::translate("cambench::comm", "an RK512 reply of %1 bytes")
+                      .arg(reply.size());
         return Verdict::Ignore;
     };
     const Result<QByteArray> reply = m_engine.send(request);
@@ -113,7 +127,9 @@ Status TableLink::writeWord(int area, int word, qint32 value, RetryPolicy retry)
 
 Result<QByteArray> TableLink::shortCommand(const QByteArray& telegram, const QString& label,
                                            int longestReplyBytes, RetryPolicy retry) {
-    if (telegram.size() < 2) return Error::usage(QStringLiteral("%1: empty telegram").arg(label));
+    if (telegram.size() < 2)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "%1: empty telegram").arg(label));
     const quint8 number = quint8(telegram.at(1));
     Request request;
     request.label = label;
@@ -130,7 +146,8 @@ Result<QByteArray> TableLink::shortCommand(const QByteArray& telegram, const QSt
             if (answered == number || answered == quint8(kShortUnknownMark) || typo)
                 return Verdict::Accept;
         }
-        problem = QStringLiteral("a telegram that answers another command");
+        problem = QCoreApplication::translate("cambench::comm",
+                                              "a telegram that answers another command");
         return Verdict::Ignore;
     };
     return m_engine.send(request);

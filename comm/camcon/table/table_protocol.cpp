@@ -2,6 +2,8 @@
 
 #include "table_camcon.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm {
 
 namespace {
@@ -13,11 +15,12 @@ ProtocolInfo tableProtocol(Rk512Variant variant) {
     ProtocolInfo info;
     info.id = tableProtocolId(variant);
     info.familyId = QStringLiteral("camcon");
-    info.title = QStringLiteral("CamCon table interface, %1 (%2 8%3%4)")
-                     .arg(QLatin1String(variantInfo.name))
-                     .arg(variantInfo.baudRate)
-                     .arg(QChar::fromLatin1(variantInfo.parity))
-                     .arg(1);
+    info.title =
+        QCoreApplication::translate("cambench::comm", "CamCon table interface, %1 (%2 8%3%4)")
+            .arg(QLatin1String(variantInfo.name))
+            .arg(variantInfo.baudRate)
+            .arg(QChar::fromLatin1(variantInfo.parity))
+            .arg(1);
     info.defaultSerial.baud = variantInfo.baudRate;
     info.defaultSerial.parity = variantInfo.parity;
     info.makeSettings = [variant] { return std::make_unique<TableProtocolSettings>(variant); };
@@ -25,8 +28,10 @@ ProtocolInfo tableProtocol(Rk512Variant variant) {
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {
         const auto* table = dynamic_cast<const TableProtocolSettings*>(&settings);
         if (!table)
-            return Error::usage(QStringLiteral("the %1 protocol got settings of another protocol")
-                                    .arg(settings.protocolId()));
+            return Error::usage(
+                QCoreApplication::translate("cambench::comm",
+                                            "the %1 protocol got settings of another protocol")
+                    .arg(settings.protocolId()));
         return std::unique_ptr<DeviceConnection>(
             std::make_unique<table::TableCamCon>(transport, table->table, line));
     };
