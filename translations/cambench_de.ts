@@ -6130,5 +6130,9 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>restore</source>
         <translation>Wiederherstellen</translation>
     </message>
+    <message>
+        <source>1 item: %1</source>
+        <translation>1 Element: %1</translation>
+    </message>
 </context>
 </TS>

@@ -6130,5 +6130,9 @@ Erase and restore now?</translation>
         <source>restore</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>1 item: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 </TS>
