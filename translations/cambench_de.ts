@@ -101,6 +101,13 @@
         <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
         <translation>Nicht geschrieben oder vom Gerät nicht bestätigt (eine Antwort kann verloren gegangen sein). Ihre Änderungen bleiben auf der Seite; „Aus Gerät lesen“ zeigt, was das Gerät enthält:</translation>
     </message>
+    <message numerus="yes">
+        <source>%n edited value(s) on this page are not written. Replace them with what the device holds?</source>
+        <translation>
+            <numerusform>%n geänderter Wert auf dieser Seite ist nicht geschrieben. Durch die Werte im Gerät ersetzen?</numerusform>
+            <numerusform>%n geänderte Werte auf dieser Seite sind nicht geschrieben. Durch die Werte im Gerät ersetzen?</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>Settings</name>

@@ -101,6 +101,13 @@
         <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>%n edited value(s) on this page are not written. Replace them with what the device holds?</source>
+        <translation>
+            <numerusform>%n edited value on this page is not written. Replace it with what the device holds?</numerusform>
+            <numerusform>%n edited values on this page are not written. Replace them with what the device holds?</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>Settings</name>

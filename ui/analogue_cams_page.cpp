@@ -61,7 +61,9 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     layout->addLayout(top);
     layout->addWidget(m_table);
     layout->addWidget(m_problems);
-    connect(read, &QPushButton::clicked, this, &AnalogueCamsPage::readFromDevice);
+    connect(read, &QPushButton::clicked, this, [this] {
+        if (mayReplaceEdits(this, tr("Analogue cams"), int(changes().size()))) readFromDevice();
+    });
     connect(m_output, &QSpinBox::valueChanged, this, [this](int output) {
         // Another output replaces the table: unwritten points are not
         // dropped without asking.

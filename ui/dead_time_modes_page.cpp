@@ -57,7 +57,9 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
     layout->addWidget(intro);
     layout->addLayout(buttons);
     layout->addWidget(m_table);
-    connect(read, &QPushButton::clicked, this, &DeadTimeModesPage::readFromDevice);
+    connect(read, &QPushButton::clicked, this, [this] {
+        if (mayReplaceEdits(this, tr("Dead-time modes"), int(changes().size()))) readFromDevice();
+    });
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const PageWriteReport& report) {
             Q_EMIT statusMessage(tr("Dead-time modes: %1").arg(report.summary()));

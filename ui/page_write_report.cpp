@@ -1,6 +1,7 @@
 #include "page_write_report.h"
 
 #include <QCoreApplication>
+#include <QMessageBox>
 
 namespace cambench {
 
@@ -38,6 +39,16 @@ QString PageWriteReport::details() const {
             QLatin1Char('\n') + failures.join(QLatin1Char('\n'));
     }
     return text;
+}
+
+bool mayReplaceEdits(QWidget* page, const QString& title, int changes) {
+    if (changes == 0) return true;
+    return QMessageBox::question(
+               page, title,
+               QCoreApplication::translate("PageWriteReport",
+                                           "%n edited value(s) on this page are not written. "
+                                           "Replace them with what the device holds?",
+                                           nullptr, changes)) == QMessageBox::Yes;
 }
 
 }  // namespace cambench

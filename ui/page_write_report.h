@@ -6,6 +6,8 @@
 #include <QString>
 #include <QStringList>
 
+class QWidget;
+
 namespace cambench {
 
 // The sections only the table interface has (dead-time modes, analogue
@@ -49,6 +51,10 @@ struct PageWriteReport {
     // The summary plus every failure, for a message box.
     QString details() const;
 };
+
+// "Read from device" on such a page with `changes` unwritten edits: asks
+// before the device's values replace them; true = go ahead.
+bool mayReplaceEdits(QWidget* page, const QString& title, int changes);
 
 }  // namespace cambench
 

@@ -20,6 +20,7 @@
 #include <QAbstractButton>
 #include <QFile>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -45,6 +46,7 @@ private Q_SLOTS:
     void sectionsFollowTheProtocolsCapabilities_data() { protocolRows(); }
     void sectionsFollowTheProtocolsCapabilities();
     void dataOnlyTheTableInterfaceHasIsEditedAndWritten();
+    void tablePageAsksBeforeAReadReplacesEdits();
     void lockedEepromIsShownAsAPlainWarning();
     void backupAndRestoreThroughWizard();
     void restoreRefusesDamagedImage();
@@ -328,6 +330,36 @@ void MainWindowTest::dataOnlyTheTableInterfaceHasIsEditedAndWritten() {
     analogue->setEdited({1, {}});
     analogue->readFromDevice();
     QTRY_COMPARE_WITH_TIMEOUT(analogue->edited(), curve, kDeviceTimeoutMs);
+}
+
+void MainWindowTest::tablePageAsksBeforeAReadReplacesEdits() {
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("3964r-n96"));
+    QVERIFY(shell);
+    auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
+    QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
+    const OutputDeadTime edited{DeadTimeMode::SeparateOnOff, 0, 35, 47};
+    modes->setEdited(5, edited);
+    QPushButton* read = nullptr;
+    for (QPushButton* button : modes->findChildren<QPushButton*>())
+        if (button->text() == QLatin1String("Read from device")) read = button;
+    QVERIFY(read);
+    const auto answer = [](QMessageBox::StandardButton choice) {
+        return NextDialog<QMessageBox>(
+            [choice](QMessageBox* box) { box->button(choice)->click(); });
+    };
+    {
+        auto no = answer(QMessageBox::No);
+        read->click();
+        QTRY_COMPARE_WITH_TIMEOUT(no.answered(), 1, kDeviceTimeoutMs);
+    }
+    QCOMPARE(modes->edited(5), edited);
+    {
+        auto yes = answer(QMessageBox::Yes);
+        read->click();
+        QTRY_COMPARE_WITH_TIMEOUT(yes.answered(), 1, kDeviceTimeoutMs);
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(modes->edited(5), modes->onDevice().value(5), kDeviceTimeoutMs);
+    QVERIFY(modes->changes().isEmpty());
 }
 
 void MainWindowTest::lockedEepromIsShownAsAPlainWarning() {
