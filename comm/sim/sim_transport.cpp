@@ -14,10 +14,25 @@ namespace {
 constexpr qint64 kSliceUs = 1000;
 }  // namespace
 
+namespace {
+QString describe(const SimPortConfig& config) {
+    QStringList devices;
+    for (int number : config.devices) devices << QString::number(number);
+    return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
+        .arg(config.protocolName(), devices.join(QLatin1Char(',')))
+        .arg(config.baud)
+        .arg(config.throttle ? QString() : QStringLiteral(", unthrottled"));
+}
+}  // namespace
+
 SimTransport::SimTransport(const SimPortConfig& config)
-    : m_config(config),
-      m_line(makeSimEndpoint(config)),
-      m_pacer(config.baud, config.throttle, config.bitsPerByte()) {
+    : SimTransport(makeSimEndpoint(config),
+                   SimPacer(config.baud, config.throttle, config.bitsPerByte()), describe(config)) {
+}
+
+SimTransport::SimTransport(std::unique_ptr<SimEndpoint> line, const SimPacer& pacer,
+                           QString description)
+    : m_description(std::move(description)), m_line(std::move(line)), m_pacer(pacer) {
     m_clock.start();
 }
 
@@ -67,12 +82,7 @@ void SimTransport::discardInput() {
 }
 
 QString SimTransport::description() const {
-    QStringList devices;
-    for (int number : m_config.devices) devices << QString::number(number);
-    return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
-        .arg(m_config.protocolName(), devices.join(QLatin1Char(',')))
-        .arg(m_config.baud)
-        .arg(m_config.throttle ? QString() : QStringLiteral(", unthrottled"));
+    return m_description;
 }
 
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,

@@ -20,6 +20,9 @@ namespace cambench::comm {
 class SimTransport : public Transport {
 public:
     explicit SimTransport(const SimPortConfig& config);
+    // Any simulated line, of any device family: `line` behind the
+    // transport, its replies paced by `pacer`; `description` for messages.
+    SimTransport(std::unique_ptr<SimEndpoint> line, const SimPacer& pacer, QString description);
 
     Status open() override;
     void close() override;
@@ -37,7 +40,7 @@ private:
     // Runs the endpoint's timer when it is due.
     void pollLine();
 
-    SimPortConfig m_config;
+    QString m_description;
     std::unique_ptr<SimEndpoint> m_line;
     SimPacer m_pacer;
     QElapsedTimer m_clock;
