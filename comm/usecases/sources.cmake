@@ -3,6 +3,8 @@ target_sources(cambench_usecases PRIVATE
   use_case_progress.cpp
   write_plan.h
   write_plan.cpp
+  item_outcome.h
+  item_outcome.cpp
   write_report.h
   write_report.cpp
   value_text.h
