@@ -1679,6 +1679,10 @@ Jetzt löschen und wiederherstellen?</translation>
             <numerusform>%n weitere Ausgänge waren bereits wie im Gerät und wurden nicht gesendet.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Output names and dead times not read: %1 Your edits are kept.</source>
+        <translation>Ausgangsnamen und Totzeiten nicht gelesen: %1 Ihre Änderungen bleiben erhalten.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamTableModel</name>
@@ -1905,6 +1909,10 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Symbols by path</source>
         <translation>Symbole je Strompfad</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
     </message>
 </context>
 <context>
@@ -2201,6 +2209,24 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Table interface, 3964R e38 (38400 8E1)</source>
         <translation>Tabellenschnittstelle, 3964R e38 (38400 8E1)</translation>
     </message>
+    <message>
+        <source>You are working on the simulated demo device: no machine is attached, and nothing you write here reaches a real CamCon. To work on a machine, choose its port below (or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, then press Connect.</source>
+        <translation>Sie arbeiten mit dem simulierten Demo-Gerät: Es ist keine Maschine angeschlossen, und nichts, was Sie hier schreiben, erreicht eine echte CamCon. Um an einer Maschine zu arbeiten, wählen Sie unten ihre Schnittstelle (oder tippen Sie sie ein: /dev/ttyUSB0, COM3, tcp://Host:Port), das Protokoll und die Baudrate und drücken Sie dann „Verbinden“.</translation>
+    </message>
+    <message>
+        <source>Not connected to %1: %2
+Check the port name (a serial port, tcp://host:port for a device server), the protocol and baud rate, the cable and the device&apos;s power, then press Connect again.</source>
+        <translation>Nicht verbunden mit %1: %2
+Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Port für einen Geräteserver), Protokoll und Baudrate, das Kabel und die Stromversorgung des Geräts und drücken Sie dann erneut „Verbinden“.</translation>
+    </message>
+    <message>
+        <source>(no port given)</source>
+        <translation>(keine Schnittstelle angegeben)</translation>
+    </message>
+    <message>
+        <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
+        <translation>Zuletzt verbunden: CamCon %1, Gerätenummer %2, um %3. Nicht unbedingt das Gerät an der jetzt gewählten Schnittstelle.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -2235,6 +2261,22 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Offline. What you edit stays on this PC until you connect and write it.</source>
         <translation>Offline. Was Sie bearbeiten, bleibt auf diesem PC, bis Sie sich verbinden und es schreiben.</translation>
+    </message>
+    <message>
+        <source>%1; checking which device answers…</source>
+        <translation>%1; es wird geprüft, welches Gerät antwortet…</translation>
+    </message>
+    <message>
+        <source>Not connected to %1: %2</source>
+        <translation>Nicht verbunden mit %1: %2</translation>
+    </message>
+    <message>
+        <source>(no port given)</source>
+        <translation>(keine Schnittstelle angegeben)</translation>
+    </message>
+    <message>
+        <source>Check the port, the cable and the device&apos;s power, then connect again; your edits are kept.</source>
+        <translation>Prüfen Sie Schnittstelle, Kabel und Stromversorgung des Geräts und verbinden Sie dann erneut; Ihre Änderungen bleiben erhalten.</translation>
     </message>
 </context>
 <context>
@@ -2378,10 +2420,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Totzeiten</translation>
     </message>
     <message>
-        <source>0.1 ms steps, at most %1 (?GTZKMAX)</source>
-        <translation>Schritte von 0,1 ms, höchstens %1 (?GTZKMAX)</translation>
-    </message>
-    <message>
         <source>Reading dead times…</source>
         <translation>Totzeiten werden gelesen…</translation>
     </message>
@@ -2404,6 +2442,10 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Output %1 name</source>
         <translation>Name von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>0.1 ms steps, at most %1 (the device&apos;s maximum)</source>
+        <translation>Schritte von 0,1 ms, höchstens %1 (das Maximum des Geräts)</translation>
     </message>
 </context>
 <context>
@@ -2435,6 +2477,21 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>PLC network %1 changed.</source>
         <translation>SPS-Netzwerk %1 hat sich geändert.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeviceCheck</name>
+    <message>
+        <source>CamCon %1, device number %2, %3 cams programmed</source>
+        <translation>CamCon %1, Gerätenummer %2, %3 Nocken programmiert</translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation>Prüfen, welches Gerät antwortet</translation>
+    </message>
+    <message>
+        <source>Another device answers (%1) than the one the values shown as on the device were read from (%2). Nothing read from that one is shown as this device&apos;s any more: the start pages are read again, the rest says &quot;not read&quot; until Read everything or Compare. Your edits are kept and count as not written.</source>
+        <translation>Es antwortet ein anderes Gerät (%1) als das, von dem die als „auf dem Gerät“ gezeigten Werte gelesen wurden (%2). Nichts davon wird mehr als Wert dieses Geräts gezeigt: Die Startseiten werden neu gelesen, der Rest zeigt „nicht gelesen“ bis „Alles lesen“ oder „Mit Gerät vergleichen“. Ihre Änderungen bleiben erhalten und gelten als nicht geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -2500,6 +2557,39 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Write to the device</source>
         <translation>Ins Gerät schreiben</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the device on the line (CamCon %1, device number %2, %3 cams programmed) is not the one the values shown as on the device were read from (CamCon %4, device number %5, %6 cams programmed).
+Read the device again or use Compare with device; your edits are kept.</source>
+        <translation>Nichts wurde geschrieben: Das Gerät an der Leitung (CamCon %1, Gerätenummer %2, %3 Nocken programmiert) ist nicht das, von dem die als „auf dem Gerät“ gezeigten Werte gelesen wurden (CamCon %4, Gerätenummer %5, %6 Nocken programmiert).
+Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::EditsReplaced</name>
+    <message>
+        <source>Program %1, output %2: yours %3; the device now holds %4</source>
+        <translation>Programm %1, Ausgang %2: Ihre %3; das Gerät enthält jetzt %4</translation>
+    </message>
+    <message>
+        <source>Program %1, output %2: yours %3; the project holds %4</source>
+        <translation>Programm %1, Ausgang %2: Ihre %3; das Projekt enthält %4</translation>
+    </message>
+    <message>
+        <source>Output %1 dead time: yours %2 ms; the device now holds %3 ms</source>
+        <translation>Totzeit Ausgang %1: Ihre %2 ms; das Gerät enthält jetzt %3 ms</translation>
+    </message>
+    <message>
+        <source>Output %1 dead time: yours %2 ms; the project holds %3 ms</source>
+        <translation>Totzeit Ausgang %1: Ihre %2 ms; das Projekt enthält %3 ms</translation>
+    </message>
+    <message>
+        <source>Output %1 name: yours &quot;%2&quot;; the device now holds &quot;%3&quot;</source>
+        <translation>Name Ausgang %1: Ihrer „%2“; das Gerät enthält jetzt „%3“</translation>
+    </message>
+    <message>
+        <source>Output %1 name: yours &quot;%2&quot;; the project holds &quot;%3&quot;</source>
+        <translation>Name Ausgang %1: Ihrer „%2“; das Projekt enthält „%3“</translation>
     </message>
 </context>
 <context>
@@ -2792,10 +2882,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Gerät wird gelesen…</translation>
     </message>
     <message>
-        <source>The device did not identify itself: %1</source>
-        <translation>Das Gerät hat sich nicht gemeldet: %1</translation>
-    </message>
-    <message>
         <source>Write: %1</source>
         <translation>Schreiben: %1</translation>
     </message>
@@ -2935,6 +3021,30 @@ Jetzt löschen und wiederherstellen?</translation>
             <numerusform>Projekt in %1 gespeichert. %n Wert liegt außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
             <numerusform>Projekt in %1 gespeichert. %n Werte liegen außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Last write report…</source>
+        <translation>&amp;Letzter Schreibbericht…</translation>
+    </message>
+    <message>
+        <source>Last write (%1): complete</source>
+        <translation>Letztes Schreiben (%1): vollständig</translation>
+    </message>
+    <message>
+        <source>Last write (%1): NOT complete</source>
+        <translation>Letztes Schreiben (%1): NICHT vollständig</translation>
+    </message>
+    <message>
+        <source>Show the report of the last write: %1</source>
+        <translation>Bericht des letzten Schreibens zeigen: %1</translation>
+    </message>
+    <message>
+        <source>%1 (written at %2)</source>
+        <translation>%1 (geschrieben um %2)</translation>
+    </message>
+    <message>
+        <source>The device did not identify itself: %1 Your edits are kept.</source>
+        <translation>Das Gerät hat sich nicht identifiziert: %1 Ihre Änderungen bleiben erhalten.</translation>
     </message>
 </context>
 <context>
@@ -3387,6 +3497,13 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Cancel: change nothing</source>
         <translation>Abbrechen: nichts ändern</translation>
     </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… und %n weiterer</numerusform>
+            <numerusform>… und %n weitere</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::SectionPage</name>
@@ -3474,6 +3591,10 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>The device holds a value outside the allowed range: %1. It is shown as the device has it, not changed.</source>
         <translation>Das Gerät enthält einen Wert außerhalb des erlaubten Bereichs: %1. Er wird gezeigt, wie das Gerät ihn hat, nicht verändert.</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
     </message>
 </context>
 <context>
@@ -3941,10 +4062,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>check the port name and that no other program uses it</source>
         <translation>prüfen Sie den Namen der Schnittstelle und dass kein anderes Programm sie benutzt</translation>
-    </message>
-    <message>
-        <source>check that no other program uses it and that you may use serial ports (on Linux: member of the group dialout)</source>
-        <translation>prüfen Sie, dass kein anderes Programm sie benutzt und dass Sie serielle Schnittstellen benutzen dürfen (unter Linux: Mitglied der Gruppe dialout)</translation>
     </message>
     <message>
         <source>check the port name and that the adapter is plugged in</source>
@@ -5125,6 +5242,10 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>3964R: the partner did not acknowledge the telegram in %1 attempts (last: %2). Check the cable and that the device&apos;s serial mode is 3964R with the same baud rate and parity (n96: 9600 8N1, e38: 38400 8E1).</source>
         <translation>3964R: der Partner hat das Telegramm in %1 Versuchen nicht quittiert (zuletzt: %2). Prüfen Sie das Kabel und ob die serielle Betriebsart des Geräts 3964R mit derselben Baudrate und Parität ist (n96: 9600 8N1, e38: 38400 8E1).</translation>
+    </message>
+    <message>
+        <source>permission denied on %1 (%2): this user may not open the serial port, or another program holds it. On Linux, add the user to the group dialout (sudo usermod -aG dialout $USER), then log out and in again; close any other program that uses the port.</source>
+        <translation>Zugriff verweigert auf %1 (%2): Dieser Benutzer darf die serielle Schnittstelle nicht öffnen, oder ein anderes Programm belegt sie. Unter Linux nehmen Sie den Benutzer in die Gruppe dialout auf (sudo usermod -aG dialout $USER) und melden sich dann ab und wieder an; schließen Sie jedes andere Programm, das die Schnittstelle benutzt.</translation>
     </message>
 </context>
 <context>

@@ -1679,6 +1679,10 @@ Erase and restore now?</translation>
             <numerusform>%n other outputs were already as on the device and not sent.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Output names and dead times not read: %1 Your edits are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamTableModel</name>
@@ -1905,6 +1909,10 @@ Erase and restore now?</translation>
     <message>
         <source>Symbols by path</source>
         <translation>Symbols by path</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2201,6 +2209,23 @@ Erase and restore now?</translation>
         <source>Table interface, 3964R e38 (38400 8E1)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>You are working on the simulated demo device: no machine is attached, and nothing you write here reaches a real CamCon. To work on a machine, choose its port below (or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, then press Connect.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected to %1: %2
+Check the port name (a serial port, tcp://host:port for a device server), the protocol and baud rate, the cable and the device&apos;s power, then press Connect again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(no port given)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -2235,6 +2260,22 @@ Erase and restore now?</translation>
     <message>
         <source>Offline. What you edit stays on this PC until you connect and write it.</source>
         <translation>Offline. What you edit stays on this PC until you connect and write it.</translation>
+    </message>
+    <message>
+        <source>%1; checking which device answers…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(no port given)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the port, the cable and the device&apos;s power, then connect again; your edits are kept.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2378,10 +2419,6 @@ Erase and restore now?</translation>
         <translation>Dead times</translation>
     </message>
     <message>
-        <source>0.1 ms steps, at most %1 (?GTZKMAX)</source>
-        <translation>0.1 ms steps, at most %1 (?GTZKMAX)</translation>
-    </message>
-    <message>
         <source>Reading dead times…</source>
         <translation>Reading dead times…</translation>
     </message>
@@ -2404,6 +2441,10 @@ Erase and restore now?</translation>
     <message>
         <source>Output %1 name</source>
         <translation>Output %1 name</translation>
+    </message>
+    <message>
+        <source>0.1 ms steps, at most %1 (the device&apos;s maximum)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2435,6 +2476,21 @@ Erase and restore now?</translation>
     <message>
         <source>PLC network %1 changed.</source>
         <translation>PLC network %1 changed.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeviceCheck</name>
+    <message>
+        <source>CamCon %1, device number %2, %3 cams programmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another device answers (%1) than the one the values shown as on the device were read from (%2). Nothing read from that one is shown as this device&apos;s any more: the start pages are read again, the rest says &quot;not read&quot; until Read everything or Compare. Your edits are kept and count as not written.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2500,6 +2556,38 @@ Erase and restore now?</translation>
     <message>
         <source>Write to the device</source>
         <translation>Write to the device</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the device on the line (CamCon %1, device number %2, %3 cams programmed) is not the one the values shown as on the device were read from (CamCon %4, device number %5, %6 cams programmed).
+Read the device again or use Compare with device; your edits are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::EditsReplaced</name>
+    <message>
+        <source>Program %1, output %2: yours %3; the device now holds %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program %1, output %2: yours %3; the project holds %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 dead time: yours %2 ms; the device now holds %3 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 dead time: yours %2 ms; the project holds %3 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 name: yours &quot;%2&quot;; the device now holds &quot;%3&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 name: yours &quot;%2&quot;; the project holds &quot;%3&quot;</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2792,10 +2880,6 @@ Erase and restore now?</translation>
         <translation>Reading the device…</translation>
     </message>
     <message>
-        <source>The device did not identify itself: %1</source>
-        <translation>The device did not identify itself: %1</translation>
-    </message>
-    <message>
         <source>Write: %1</source>
         <translation>Write: %1</translation>
     </message>
@@ -2935,6 +3019,30 @@ Erase and restore now?</translation>
             <numerusform>Project saved to %1. %n value is outside what a write accepts (%2).</numerusform>
             <numerusform>Project saved to %1. %n values are outside what a write accepts (%2).</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Last write report…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last write (%1): complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last write (%1): NOT complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the report of the last write: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (written at %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device did not identify itself: %1 Your edits are kept.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3387,6 +3495,13 @@ Erase and restore now?</translation>
         <source>Cancel: change nothing</source>
         <translation>Cancel: change nothing</translation>
     </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… and %n more</numerusform>
+            <numerusform>… and %n more</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::SectionPage</name>
@@ -3474,6 +3589,10 @@ Erase and restore now?</translation>
     <message>
         <source>The device holds a value outside the allowed range: %1. It is shown as the device has it, not changed.</source>
         <translation>The device holds a value outside the allowed range: %1. It is shown as the device has it, not changed.</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
     </message>
 </context>
 <context>
@@ -3941,10 +4060,6 @@ Erase and restore now?</translation>
     <message>
         <source>check the port name and that no other program uses it</source>
         <translation>check the port name and that no other program uses it</translation>
-    </message>
-    <message>
-        <source>check that no other program uses it and that you may use serial ports (on Linux: member of the group dialout)</source>
-        <translation>check that no other program uses it and that you may use serial ports (on Linux: member of the group dialout)</translation>
     </message>
     <message>
         <source>check the port name and that the adapter is plugged in</source>
@@ -5124,6 +5239,10 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>3964R: the partner did not acknowledge the telegram in %1 attempts (last: %2). Check the cable and that the device&apos;s serial mode is 3964R with the same baud rate and parity (n96: 9600 8N1, e38: 38400 8E1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>permission denied on %1 (%2): this user may not open the serial port, or another program holds it. On Linux, add the user to the group dialout (sudo usermod -aG dialout $USER), then log out and in again; close any other program that uses the port.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

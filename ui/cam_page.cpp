@@ -36,6 +36,14 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
                     tr("Program %1 was not read. Your edits are kept.").arg(program),
                     status.error().message);
         });
+        // The page's Name and Dead time columns are the device's too: read
+        // with the program, never left from an earlier read.
+        devicereads::readOutputSettings(this, m_session, m_workspace, [this](const Status& status) {
+            if (!status && status.error().kind != ErrorKind::Cancelled)
+                Q_EMIT statusMessage(
+                    tr("Output names and dead times not read: %1 Your edits are kept.")
+                        .arg(asSentence(status.error().message)));
+        });
     });
     connect(m_editor, &CamEditorWidget::writeProgramRequested, this, [this](int program) {
         writeProgram(program, [this, program](const WriteResult& result) {

@@ -5,6 +5,7 @@
 #include "plc_page.h"
 #include "plc_symbol.h"
 #include "print_diagram.h"
+#include "report_pages.h"
 #include "setting_field.h"
 #include "users_model.h"
 #include "workspace.h"
@@ -161,10 +162,7 @@ private:
             const QString key = QString::fromLatin1(spec.key);
             if (!edited.contains(key)) continue;
             const auto text = [&spec](const QVariant& value) {
-                QString shown = SettingField::displayText(spec, value);
-                if (*spec.unit)
-                    shown += QLatin1Char(' ') + QCoreApplication::translate("Settings", spec.unit);
-                return shown;
+                return SettingField::textWithUnit(spec, value);
             };
             const bool changed = !device.contains(key) || device.value(key) != edited.value(key);
             rows += row({SettingField::labelText(spec),
@@ -323,8 +321,7 @@ Status CommissioningReport::write(const QString& path, const Workspace& workspac
         writer.setTitle(tr("Commissioning report"));
         writer.setCreator(QStringLiteral("CamBench"));
         writer.setResolution(150);
-        document.setPageSize(QSizeF(writer.width(), writer.height()));
-        document.print(&writer);
+        printWithPageNumbers(document, writer, tr("Page %1 of %2"));
     }
     if (!file.commit())
         return Error::invalidData(

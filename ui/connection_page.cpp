@@ -1,11 +1,13 @@
 #include "connection_page.h"
 
 #include "device_session.h"
+#include "sentence.h"
 #include "workspace.h"
 
 #include "ui/protocols/protocol_settings_widget.h"
 
 #include "comm/device/protocol_registry.h"
+#include "comm/transport/serial_port_list.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -13,8 +15,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
-#include <QSerialPortInfo>
 #include <QToolButton>
 
 namespace cambench {
@@ -27,9 +29,21 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     : SectionPage(parent), m_session(session), m_workspace(workspace) {
     auto* line = new QGroupBox(tr("Line"));
     auto* form = new QFormLayout(line);
+    m_simNote = new QLabel(
+        tr("You are working on the simulated demo device: no machine is attached, and nothing "
+           "you write here reaches a real CamCon. To work on a machine, choose its port below "
+           "(or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, "
+           "then press Connect."));
+    m_simNote->setWordWrap(true);
+    m_simNote->setObjectName(QStringLiteral("simulatedNote"));
+    m_simNote->hide();
+    form->addRow(m_simNote);
 
     m_port = new QComboBox;
     m_port->setEditable(true);
+    // Typed text is the port (a pty, tcp://host:port, a port the list lacks):
+    // Enter must not turn it into an entry without port data.
+    m_port->setInsertPolicy(QComboBox::NoInsert);
     m_port->setToolTip(
         tr("A serial port, tcp://host:port for a serial device server, or the "
            "simulated device."));
@@ -61,6 +75,12 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     buttons->addWidget(m_disconnect);
     buttons->addStretch();
     form->addRow(buttons);
+    m_failure = new QLabel;
+    m_failure->setWordWrap(true);
+    m_failure->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_failure->setObjectName(QStringLiteral("connectFailure"));
+    m_failure->hide();
+    form->addRow(m_failure);
 
     auto* bus = new QGroupBox(tr("Devices on the line"));
     auto* busLayout = new QVBoxLayout(bus);
@@ -74,6 +94,7 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     busLayout->addWidget(m_devices);
 
     auto* identity = new QGroupBox(tr("Device"));
+    m_identity = identity;
     m_info = new QFormLayout(identity);
 
     auto* left = new QVBoxLayout;
@@ -111,22 +132,25 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
         Q_EMIT deviceSelected(device);
     });
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::updateButtons);
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showInfo);
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showConnectFailure);
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showSimulatedNote);
+    connect(m_session, &DeviceSession::deviceCheckedChanged, this, &ConnectionPage::showInfo);
     connect(m_workspace, &Workspace::infoChanged, this, &ConnectionPage::showInfo);
     updateButtons();
     showInfo();
+    showSimulatedNote();
 }
 
 void ConnectionPage::fillPorts() {
     const QString current = connectionSettings().port;
     m_port->clear();
     m_port->addItem(tr("Simulated device"), kSimPort);
-    const auto ports = QSerialPortInfo::availablePorts();
-    for (const QSerialPortInfo& info : ports) {
-        const QString text =
-            info.description().isEmpty()
-                ? info.systemLocation()
-                : QStringLiteral("%1 (%2)").arg(info.systemLocation(), info.description());
-        m_port->addItem(text, info.systemLocation());
+    // With the adapter's description, maker, serial number and USB ids: the
+    // right one of several adapters is easy to pick.
+    for (const comm::SerialPortEntry& port : comm::availableSerialPorts()) {
+        m_port->addItem(port.label(), port.location);
+        m_port->setItemData(m_port->count() - 1, port.label(), Qt::ToolTipRole);
     }
     setPort(current.isEmpty() ? kSimPort : current);
 }
@@ -172,9 +196,9 @@ comm::ConnectionSettings ConnectionPage::connectionSettings() const {
     comm::ConnectionSettings settings;
     const int index = m_port->currentIndex();
     // An entry from the list carries its port in the data; typed text is the port.
-    settings.port = (index >= 0 && m_port->itemText(index) == m_port->currentText())
-                        ? m_port->itemData(index).toString()
-                        : m_port->currentText().trimmed();
+    const bool listed = index >= 0 && m_port->itemText(index) == m_port->currentText() &&
+                        !m_port->itemData(index).toString().isEmpty();
+    settings.port = listed ? m_port->itemData(index).toString() : m_port->currentText().trimmed();
     if (const comm::ProtocolInfo* info = currentProtocol()) {
         settings.serial = info->defaultSerial;
         settings.protocol = info->id;
@@ -253,11 +277,52 @@ void ConnectionPage::showScanResult(const Result<QList<int>>& devices) {
     Q_EMIT statusMessage(tr("%n device(s) found", nullptr, int(devices->size())));
 }
 
+void ConnectionPage::showSimulatedNote() {
+    const QString port = m_session->connection().port;
+    const bool simulated = port == kSimPort || port.startsWith(kSimPort + QLatin1Char(':'));
+    m_simNote->setVisible(simulated && m_session->state() != comm::ConnectionState::Disconnected);
+}
+
+void ConnectionPage::showConnectFailure() {
+    const comm::ConnectionState state = m_session->state();
+    if (state == comm::ConnectionState::Connecting || state == comm::ConnectionState::Connected) {
+        m_failure->hide();
+        return;
+    }
+    if (state != comm::ConnectionState::Disconnected || m_session->lastMessage().isEmpty()) return;
+    const QString port = m_session->connection().port;
+    m_failure->setText(withoutCommandNames(
+        tr("Not connected to %1: %2\nCheck the port name (a serial port, tcp://host:port for a "
+           "device server), the protocol and baud rate, the cable and the device's power, then "
+           "press Connect again.")
+            .arg(port.isEmpty() ? tr("(no port given)") : port,
+                 asSentence(m_session->lastMessage()))));
+    QPalette alarm = m_failure->palette();
+    alarm.setColor(QPalette::WindowText, QColor(0xd0, 0x30, 0x20));
+    m_failure->setPalette(alarm);
+    m_failure->show();
+}
+
 void ConnectionPage::showInfo() {
     while (m_info->rowCount() > 0) m_info->removeRow(0);
     const DeviceInfo& info = m_workspace->info();
+    const bool checked = m_session->isOnline() && m_session->deviceChecked();
+    // Offline (or not yet identified), the identity is the last device's,
+    // not necessarily the one on the port chosen now: greyed, and said.
+    m_identity->setEnabled(checked || !m_workspace->infoFromDevice());
     if (!m_workspace->infoFromDevice()) {
         m_info->addRow(new QLabel(tr("Not read from a device (offline project).")));
+    } else if (!checked) {
+        const QDateTime at =
+            m_workspace->readTimes().parts.value(ProjectPart::Device).toLocalTime();
+        auto* last = new QLabel(
+            tr("Last connected: CamCon %1, device number %2, at %3. Not necessarily the device "
+               "on the port chosen now.")
+                .arg(info.epromDate)
+                .arg(info.deviceNumber)
+                .arg(QLocale().toString(at.time(), QLocale::ShortFormat)));
+        last->setWordWrap(true);
+        m_info->addRow(last);
     }
     const QString units = tr("%1 … %2");
     const auto row = [this](const QString& label, const QString& value) {

@@ -7,6 +7,8 @@
 
 class QComboBox;
 class QFormLayout;
+class QGroupBox;
+class QLabel;
 class QListWidget;
 class QPushButton;
 class QVBoxLayout;
@@ -51,6 +53,8 @@ private:
     static QString protocolTitle(const comm::ProtocolInfo& info);
     void updateButtons();
     void showInfo();
+    void showConnectFailure();
+    void showSimulatedNote();
     void showScanResult(const Result<QList<int>>& devices);
     // Puts the settings widget of the protocol chosen in place.
     void showProtocolWidget();
@@ -67,6 +71,10 @@ private:
     QPushButton* m_scan;
     QListWidget* m_devices;
     QFormLayout* m_info;
+    QGroupBox* m_identity;
+    QLabel* m_failure;
+    QLabel* m_simNote;  // on the simulated device: says so, and the way to a real one  // the last
+                        // connect that failed: where, what, what to do
 };
 
 }  // namespace cambench

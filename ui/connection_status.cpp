@@ -48,6 +48,8 @@ ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, Q
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionStrip::update);
     connect(m_session->freshness(), &LiveFreshness::changed, this, &ConnectionStrip::update);
     connect(m_workspace, &Workspace::infoChanged, this, &ConnectionStrip::update);
+    connect(m_workspace, &Workspace::otherDeviceNoteChanged, this, &ConnectionStrip::update);
+    connect(m_session, &DeviceSession::deviceCheckedChanged, this, &ConnectionStrip::update);
     update();
 }
 
@@ -59,8 +61,16 @@ void ConnectionStrip::resizeEvent(QResizeEvent* event) {
 void ConnectionStrip::showLines() {
     const int width = std::max(50, m_text->width());
     QStringList shown;
-    for (const QString& line : m_lines)
-        shown << m_text->fontMetrics().elidedText(line, Qt::ElideRight, width);
+    for (const QString& line : m_lines) {
+        QString fitted = m_text->fontMetrics().elidedText(line, Qt::ElideRight, width);
+        if (fitted != line) {
+            // Shortened at a word's end, never in the middle of one (the
+            // whole text is in the tooltip).
+            const int space = int(line.left(fitted.size() - 1).lastIndexOf(QLatin1Char(' ')));
+            if (space > 0) fitted = line.left(space) + QChar(0x2026);
+        }
+        shown << fitted;
+    }
     m_text->setText(shown.join(QLatin1Char('\n')));
     m_text->setToolTip(text());
 }
@@ -69,6 +79,7 @@ void ConnectionStrip::update() {
     const comm::ConnectionState state = m_session->state();
     const QString port = m_session->connection().port;
     const bool lost = state == comm::ConnectionState::Lost || m_session->isRetrying();
+    bool failed = false;
     QString text;
     if (lost) {
         text = tr("The connection to %1 is lost.").arg(port);
@@ -81,6 +92,10 @@ void ConnectionStrip::update() {
                QLatin1Char('\n') +
                tr("Live values are from then. Check the cable and the device's power; your edits "
                   "are kept.");
+    } else if (state == comm::ConnectionState::Connected && !m_session->deviceChecked()) {
+        // Until the device on the line has identified itself, no identity
+        // from an earlier connect is shown as if it were this one's.
+        text = tr("%1; checking which device answers…").arg(m_session->stateText());
     } else if (state == comm::ConnectionState::Connected) {
         const DeviceInfo& info = m_workspace->info();
         text = m_workspace->infoFromDevice()
@@ -88,13 +103,24 @@ void ConnectionStrip::update() {
                          .arg(m_session->stateText(), info.epromDate)
                          .arg(info.deviceNumber)
                    : tr("%1; identity not read yet.").arg(m_session->stateText());
+        if (!m_workspace->otherDeviceNote().isEmpty())
+            text += QLatin1Char('\n') + m_workspace->otherDeviceNote();
     } else if (state == comm::ConnectionState::Connecting) {
         text = m_session->stateText();
+    } else if (!m_session->lastMessage().isEmpty()) {
+        // The last connect failed: said where the user looks, with what to do.
+        failed = true;
+        text = tr("Not connected to %1: %2")
+                   .arg(port.isEmpty() ? tr("(no port given)") : port,
+                        asSentence(m_session->lastMessage())) +
+               QLatin1Char('\n') +
+               tr("Check the port, the cable and the device's power, then connect again; your "
+                  "edits are kept.");
     } else {
         text = tr("Offline. What you edit stays on this PC until you connect and write it.");
     }
-    m_alarm = lost || silent(m_session);
-    m_lines = text.split(QLatin1Char('\n'));
+    m_alarm = lost || failed || silent(m_session);
+    m_lines = withoutCommandNames(text).split(QLatin1Char('\n'));
     showLines();
     m_reconnect->setVisible(lost);
     QPalette pal = palette();

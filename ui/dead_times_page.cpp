@@ -68,8 +68,8 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
 }
 
 void DeadTimesPage::showLimits() {
-    m_limits->setText(
-        tr("0.1 ms steps, at most %1 (?GTZKMAX)").arg(ms(m_workspace->info().maxDeadTime)));
+    m_limits->setText(tr("0.1 ms steps, at most %1 (the device's maximum)")
+                          .arg(ms(m_workspace->info().maxDeadTime)));
 }
 
 void DeadTimesPage::readFromDevice() {

@@ -37,6 +37,10 @@ void DeviceSession::reconnect() {
     m_wantConnected = true;
     m_worker.cancelAll();
     m_worker.connectTo(m_connection, m_protocol);
+    // From now on the line may reach another device: nothing may show the
+    // last one's identity as this port's until the worker has connected
+    // and the device has identified itself.
+    onStateChanged(comm::ConnectionState::Connecting, m_connection.port);
 }
 
 void DeviceSession::disconnectFromDevice() {
@@ -49,10 +53,20 @@ void DeviceSession::disconnectFromDevice() {
 }
 
 void DeviceSession::setDevice(int device) {
+    const bool another = m_protocol->device() != device;
     std::unique_ptr<comm::ProtocolSettings> changed = m_protocol->clone();
     changed->setDevice(device);
     m_protocol = std::move(changed);
     m_worker.setLinkDevice(device);
+    if (!another) return;  // the same device addressed again (after a line backup)
+    setDeviceChecked(false);
+    Q_EMIT targetChanged();
+}
+
+void DeviceSession::setDeviceChecked(bool checked) {
+    if (m_deviceChecked == checked) return;
+    m_deviceChecked = checked;
+    Q_EMIT deviceCheckedChanged(checked);
 }
 
 QString DeviceSession::stateText() const {
@@ -77,6 +91,8 @@ void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& m
     m_state = state;
     m_message = message;
     qCInfo(shellLog) << "connection state" << int(state) << message;
+    // Every connect may reach another device: it is identified again.
+    setDeviceChecked(false);
     switch (state) {
         case comm::ConnectionState::Lost:
             m_wasLost = true;

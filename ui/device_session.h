@@ -43,6 +43,12 @@ public:
 
     void setRetryInterval(int ms) { m_retry.setInterval(ms); }
 
+    // Whether the device on the line has been identified since the last
+    // connect (checkConnectedDevice): until then nothing is written, and the
+    // banner does not name a device.
+    bool deviceChecked() const { return m_deviceChecked; }
+    void setDeviceChecked(bool checked);
+
     // How old the live values are; fed by the monitor's poll cycles, made
     // stale by a lost line, reset by a connect to another device.
     LiveFreshness* freshness() { return &m_freshness; }
@@ -70,6 +76,9 @@ Q_SIGNALS:
     void stateChanged(cambench::comm::ConnectionState state, const QString& message);
     // Connected after having been Lost: the window re-reads the identity.
     void reconnected();
+    // Another device number on the same line (Multiuser): another device.
+    void targetChanged();
+    void deviceCheckedChanged(bool checked);
 
 private:
     void onStateChanged(comm::ConnectionState state, const QString& message);
@@ -83,6 +92,7 @@ private:
     LiveFreshness m_freshness;
     bool m_wasLost = false;
     bool m_wantConnected = false;
+    bool m_deviceChecked = false;
 };
 
 }  // namespace cambench

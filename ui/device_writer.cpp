@@ -1,5 +1,7 @@
 #include "device_writer.h"
 
+#include "last_write_report.h"
+
 #include "device_session.h"
 #include "report_dialog.h"
 #include "workspace.h"
@@ -13,6 +15,21 @@
 namespace cambench {
 
 namespace {
+
+QString otherDeviceRefusal(const DeviceInfo& copiesFrom, const DeviceInfo& now) {
+    return QCoreApplication::translate(
+               "cambench::DeviceWriter",
+               "Nothing was written: the device on the line (CamCon %1, device number %2, %3 "
+               "cams programmed) is not the one the values shown as on the device were read "
+               "from (CamCon %4, device number %5, %6 cams programmed).\nRead the device again "
+               "or use Compare with device; your edits are kept.")
+        .arg(now.epromDate)
+        .arg(now.deviceNumber)
+        .arg(now.programmedCams)
+        .arg(copiesFrom.epromDate)
+        .arg(copiesFrom.deviceNumber)
+        .arg(copiesFrom.programmedCams);
+}
 
 bool knownAfter(usecases::WriteState state) {
     return state != usecases::WriteState::Unknown && state != usecases::WriteState::NotSent;
@@ -43,9 +60,11 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned,
             if (outcome.actual) {
                 cams.setDeviceTrack(program, *outcome.actual);
             } else if (!knownAfter(outcome.state)) {
-                // What the device holds is not known any more: say so.
+                // What the device holds on this output is not known any
+                // more: say so there; the other outputs keep what the report
+                // established.
                 if (outcome.state == usecases::WriteState::Unknown)
-                    cams.forgetDeviceProgram(program);
+                    cams.forgetDeviceTrack(program, planned.plan.tracks.at(i).wanted.output);
             }
         } else if (outcome.actual) {
             assembled[program].number = program;
@@ -97,17 +116,28 @@ quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* works
                       std::function<void(const WriteResult&)> done) {
     const PlannedWrite planned = planForItems(*workspace, items);
     const usecases::WritePlan plan = planned.plan;
+    // The plan leaves out what the device copies say the device already
+    // holds: it may only go to the device those copies were read from.
+    const std::optional<DeviceInfo> copiesFrom = workspace->copiesFrom();
+    const bool fingerprintKnown = workspace->copiesFingerprintKnown();
     return session->run<usecases::WriteReport>(
         context, QCoreApplication::translate("cambench::DeviceWriter", "Write to the device"),
-        [plan](comm::CamConDevice& device, comm::JobContext& job) -> WriteResult {
+        [plan, copiesFrom, fingerprintKnown](comm::CamConDevice& device,
+                                             comm::JobContext& job) -> WriteResult {
             // The device on the line now, not the one the edits were made for.
             const Result<DeviceInfo> identity = device.readInfo();
             if (!identity) return identity.error();
+            if (copiesFrom && !sameDevice(*copiesFrom, identity.value(), fingerprintKnown))
+                return Error{ErrorKind::InvalidData, otherDeviceRefusal(*copiesFrom, *identity), 0};
             return usecases::writeItems(device, identity.value(), plan,
                                         usecases::UseCaseProgress::of(job));
         },
         [workspace, planned, done](WriteResult result) {
-            if (result) applyWriteReport(*workspace, planned, result.value());
+            if (result) {
+                // Our write changed the device's counts of cams and dead times.
+                workspace->fingerprintChangedByWrite();
+                applyWriteReport(*workspace, planned, result.value());
+            }
             if (done) done(result);
         });
 }
@@ -135,7 +165,9 @@ QString writeDetails(const WriteResult& result) {
 }
 
 void presentWriteResult(QWidget* parent, const QString& title, const WriteResult& result) {
-    if (result && result->complete()) return;
+    const bool complete = result && result->complete();
+    LastWriteReport::instance().record(title, writeSummary(result), writeDetails(result), complete);
+    if (complete) return;
     ReportDialog::present(parent, QMessageBox::Warning, title, writeSummary(result),
                           writeDetails(result));
 }

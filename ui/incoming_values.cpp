@@ -8,6 +8,7 @@
 #include "ui/cameditor/cam_document.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 
@@ -73,8 +74,14 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
     const ProjectReadTimes& read = incoming.readAt;
     if (fromDevice && read.parts.contains(ProjectPart::Device)) {
         workspace.setInfo(incoming.device, true);
+        workspace.setCopiesFrom(incoming.device);
         stamp(workspace, read, ProjectPart::Device);
     }
+    // The whole device read again (Read everything, Compare): nothing from
+    // the other device is left to warn about.
+    if (fromDevice && parts.settings && parts.outputSettings &&
+        parts.programs.size() >= workspace.info().programs)
+        workspace.clearOtherDeviceNote();
     if (parts.settings) {
         workspace.mergeSettings(incoming.settings, source,
                                 keepEdits.contains(EditSection::Settings));
@@ -183,12 +190,69 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
     return changes;
 }
 
+QMap<EditSection, QStringList> editedItemsReplacedBy(const Workspace& workspace,
+                                                     const Project& incoming, ValueSource source) {
+    const bool device = source == ValueSource::Device;
+    const IncomingParts parts = partsOf(incoming, source);
+    QMap<EditSection, QStringList> items;
+    const CamDocument* cams = workspace.cams();
+    for (const TrackDifference& d : cams->differences()) {
+        if (!parts.programs.contains(d.program)) continue;
+        Track arriving;
+        for (const CamProgram& program : incoming.programs) {
+            if (program.number == d.program) arriving = program.tracks.value(d.output);
+        }
+        items[EditSection::Cams]
+            << (device ? QCoreApplication::translate(
+                             "cambench::EditsReplaced",
+                             "Program %1, output %2: yours %3; the device now holds %4")
+                       : QCoreApplication::translate(
+                             "cambench::EditsReplaced",
+                             "Program %1, output %2: yours %3; the project holds %4"))
+                   .arg(d.program)
+                   .arg(d.output)
+                   .arg(camsText(d.editedTrack), camsText(arriving));
+    }
+    if (parts.outputSettings) {
+        const CamDocument* doc = workspace.cams();
+        for (int output = 1; output <= workspace.info().outputs; ++output) {
+            const qint32 mine = doc->deadTime(output);
+            if (mine != workspace.deviceDeadTime(output) && incoming.deadTimes.contains(output))
+                items[EditSection::OutputSettings]
+                    << (device ? QCoreApplication::translate(
+                                     "cambench::EditsReplaced",
+                                     "Output %1 dead time: yours %2 ms; the device now holds %3 ms")
+                               : QCoreApplication::translate(
+                                     "cambench::EditsReplaced",
+                                     "Output %1 dead time: yours %2 ms; the project holds %3 ms"))
+                           .arg(output)
+                           .arg(
+                               QLocale().toString(mine / 10.0, 'f', 1),
+                               QLocale().toString(incoming.deadTimes.value(output) / 10.0, 'f', 1));
+            const QString name = doc->outputName(output);
+            if (name != workspace.deviceOutputName(output) &&
+                incoming.names.outputs.contains(output))
+                items[EditSection::OutputSettings]
+                    << (device ? QCoreApplication::translate(
+                                     "cambench::EditsReplaced",
+                                     "Output %1 name: yours \"%2\"; the device now holds \"%3\"")
+                               : QCoreApplication::translate(
+                                     "cambench::EditsReplaced",
+                                     "Output %1 name: yours \"%2\"; the project holds \"%3\""))
+                           .arg(output)
+                           .arg(name, incoming.names.outputs.value(output));
+        }
+    }
+    return items;
+}
+
 bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming,
                   ValueSource source) {
     const QMap<EditSection, int> edits = editsReplacedBy(workspace, partsOf(incoming, source));
     QSet<EditSection> keep;
     if (!edits.isEmpty()) {
         ReplaceEditsDialog dialog(edits, source, parent);
+        dialog.setDetails(editedItemsReplacedBy(workspace, incoming, source));
         if (dialog.exec() != QDialog::Accepted) return false;
         keep = dialog.keptSections();
     }

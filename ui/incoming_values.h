@@ -31,6 +31,13 @@ IncomingParts partsOf(const Project& incoming, ValueSource source);
 // without edits, or not carried, are absent).
 QMap<EditSection, int> editsReplacedBy(const Workspace& workspace, const IncomingParts& parts);
 
+// The edits the incoming values would replace, one line per item, naming
+// the item, the edit and what arrives ("Program 0, output 3: yours 10–90;
+// the device now 10–80, 200–260"), for the sections where items can be
+// told: cam programs and output names and dead times.
+QMap<EditSection, QStringList> editedItemsReplacedBy(const Workspace& workspace,
+                                                     const Project& incoming, ValueSource source);
+
 // Puts the incoming values into the workspace: sections in `keepEdits`
 // keep the user's edits, the others take the incoming values (see
 // Workspace). From the device, the device copy and its read times follow.

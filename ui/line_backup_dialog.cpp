@@ -195,7 +195,12 @@ void LineBackupDialog::showManifest(const Result<LineManifest>& manifest) {
         if (!m_bars.contains(entry.device)) showDeviceProgress(entry.device, 0, 1, {});
         QProgressBar* bar = m_bars.value(entry.device);
         bar->setFormat(ok ? tr("saved") : tr("FAILED"));
-        if (ok) bar->setValue(bar->maximum());
+        bar->setValue(bar->maximum());
+        // A failed device must stand out among the saved ones: a red bar.
+        if (!ok)
+            bar->setStyleSheet(
+                QStringLiteral("QProgressBar { color: white; text-align: center; }"
+                               " QProgressBar::chunk { background-color: #b03a2e; }"));
         lines << (ok ? tr("Device %1: saved to %2.").arg(entry.device).arg(entry.file)
                      : tr("Device %1: NOT saved: %2").arg(entry.device).arg(entry.message));
     }

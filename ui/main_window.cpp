@@ -11,12 +11,14 @@
 #include "connection_status.h"
 #include "dead_time_modes_page.h"
 #include "dead_times_page.h"
+#include "device_check.h"
 #include "device_reads.h"
 #include "device_session.h"
 #include "eeprom_lock_page.h"
 #include "gui_settings.h"
 #include "incoming_values.h"
 #include "language.h"
+#include "last_write_report.h"
 #include "line_backup_dialog.h"
 #include "monitor_page.h"
 #include "new_project_dialog.h"
@@ -42,12 +44,14 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolButton>
 
 namespace cambench {
@@ -62,7 +66,8 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
       m_indicator(new ConnectionIndicator(session)),
       m_jobLabel(new QLabel),
       m_jobProgress(new QProgressBar),
-      m_jobCancel(new QToolButton) {
+      m_jobCancel(new QToolButton),
+      m_lastWrite(new QToolButton) {
     createPages();
     createMenus();
     createStatusBar();
@@ -82,6 +87,9 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_nav, &QListWidget::currentRowChanged, this, &MainWindow::updateLivePolling);
     connect(m_session, &DeviceSession::stateChanged, this, &MainWindow::updateConnection);
+    connect(m_session, &DeviceSession::targetChanged, this, [this] {
+        if (m_session->isOnline()) checkDevice();
+    });
     connect(m_session, &DeviceSession::reconnected, this, [this] {
         showMessage(
             tr("Connection re-established. Your edits are unchanged; Compare with "
@@ -181,6 +189,11 @@ void MainWindow::createMenus() {
                       [this] { readEverything(m_cams->editor()->currentProgram()); });
     device->addSeparator();
     device->addAction(tr("Co&mpare with device…"), this, &MainWindow::openCompare);
+    QAction* lastWrite =
+        device->addAction(tr("&Last write report…"), this, &MainWindow::showLastWriteReport);
+    lastWrite->setEnabled(!LastWriteReport::instance().isEmpty());
+    connect(&LastWriteReport::instance(), &LastWriteReport::changed, lastWrite,
+            [lastWrite] { lastWrite->setEnabled(true); });
     QAction* backup =
         device->addAction(tr("&Backup and restore…"), this, &MainWindow::openBackupWizard);
     QAction* lineBackup = device->addAction(tr("Back up all devices on this &line…"), this,
@@ -246,6 +259,15 @@ void MainWindow::createStatusBar() {
     statusBar()->addPermanentWidget(m_jobLabel);
     statusBar()->addPermanentWidget(m_jobProgress);
     statusBar()->addPermanentWidget(m_indicator);
+    // The last write's report stays one click away after its status line is
+    // gone (10 s) and its dialog closed.
+    m_lastWrite->setObjectName(QStringLiteral("lastWriteReport"));
+    m_lastWrite->setAutoRaise(true);
+    statusBar()->insertPermanentWidget(0, m_lastWrite);
+    connect(m_lastWrite, &QToolButton::clicked, this, &MainWindow::showLastWriteReport);
+    connect(&LastWriteReport::instance(), &LastWriteReport::changed, this,
+            &MainWindow::updateLastWriteButton);
+    updateLastWriteButton();
     comm::CommWorker& worker = m_session->worker();
     m_jobCancel->setText(tr("Cancel"));
     m_jobCancel->setToolTip(tr("Cancel what the device is doing for you now."));
@@ -294,7 +316,31 @@ MainWindow::Section MainWindow::currentSection() const {
     return Section(m_stack->currentIndex());
 }
 
-void MainWindow::showMessage(const QString& text) {
+void MainWindow::updateLastWriteButton() {
+    const LastWriteReport& report = LastWriteReport::instance();
+    m_lastWrite->setVisible(!report.isEmpty());
+    if (report.isEmpty()) return;
+    m_lastWrite->setText(
+        report.complete()
+            ? tr("Last write (%1): complete")
+                  .arg(QLocale().toString(report.when().time(), QLocale::ShortFormat))
+            : tr("Last write (%1): NOT complete")
+                  .arg(QLocale().toString(report.when().time(), QLocale::ShortFormat)));
+    m_lastWrite->setToolTip(tr("Show the report of the last write: %1").arg(report.summary()));
+}
+
+void MainWindow::showLastWriteReport() {
+    const LastWriteReport& report = LastWriteReport::instance();
+    if (report.isEmpty()) return;
+    ReportDialog::present(
+        this, report.complete() ? QMessageBox::Information : QMessageBox::Warning, report.title(),
+        tr("%1 (written at %2)")
+            .arg(report.summary(), QLocale().toString(report.when(), QLocale::ShortFormat)),
+        report.details());
+}
+
+void MainWindow::showMessage(const QString& message) {
+    const QString text = withoutCommandNames(message);
     m_lastMessage = text;
     // Long enough to read twice, short enough not to describe a past state.
     constexpr int kMessageMs = 10000;
@@ -321,16 +367,16 @@ void MainWindow::updateConnection() {
     const comm::ConnectionState state = m_session->state();
     if (state == comm::ConnectionState::Lost)
         showMessage(tr("Connection lost: %1").arg(asSentence(m_session->lastMessage())));
-    if (state == comm::ConnectionState::Connected && m_pendingProgram >= 0) {
-        const int program = m_pendingProgram;
-        m_pendingProgram = -1;
-        readAtStart(program);
-    }
-    if (state == comm::ConnectionState::Disconnected && m_pendingProgram >= 0 &&
-        !m_session->lastMessage().isEmpty()) {
-        m_pendingProgram = -1;
+    // Every connect and reconnect may reach another device.
+    if (state == comm::ConnectionState::Connected) checkDevice();
+    // A connect that failed (a user's disconnect carries no message).
+    if (state == comm::ConnectionState::Disconnected && !m_session->lastMessage().isEmpty() &&
+        !m_session->isRetrying()) {
         showMessage(tr("Not connected: %1").arg(m_session->lastMessage()));
-        Q_EMIT loaded(false);
+        if (m_pendingProgram >= 0) {
+            m_pendingProgram = -1;
+            Q_EMIT loaded(false);
+        }
     }
 }
 
@@ -340,37 +386,62 @@ void MainWindow::connectAndLoad(int program) {
 }
 
 void MainWindow::readAtStart(int program) {
+    m_pendingProgram = program;
+    if (m_session->isOnline()) checkDevice();
+}
+
+void MainWindow::checkDevice() {
+    ++m_startReads;
+    checkConnectedDevice(this, m_session, m_workspace, [this](const Status& status, bool other) {
+        --m_startReads;
+        const int pending = m_pendingProgram;
+        m_pendingProgram = -1;
+        if (!status) {
+            if (status.error().kind != ErrorKind::Cancelled) {
+                showMessage(tr("The device did not identify itself: %1 Your edits are kept.")
+                                .arg(asSentence(status.error().message)));
+                if (pending >= 0) Q_EMIT loaded(false);
+            }
+            // Still on the line: asked again shortly (an identity read has no
+            // side effect); until it answers, nothing is written.
+            if (m_session->isOnline()) {
+                m_pendingProgram = pending;
+                constexpr int kRecheckMs = 2000;
+                QTimer::singleShot(kRecheckMs, this, [this] {
+                    if (m_session->isOnline() && !m_session->deviceChecked()) checkDevice();
+                });
+            }
+            return;
+        }
+        if (other) showMessage(m_workspace->otherDeviceNote());
+        // Another device: what a technician looks at first is read from it
+        // (asking where that would replace edits).
+        if (pending >= 0 || other)
+            readStartSections(pending >= 0 ? pending : m_cams->editor()->currentProgram());
+    });
+}
+
+void MainWindow::readStartSections(int program) {
     // What a technician looks at first; the other programs stay "not read"
     // until Device → Read everything (that takes long on a slow line).
     showMessage(tr("Reading the device…"));
-    m_startReads = 1;
-    devicereads::readIdentity(
-        this, m_session, m_workspace, [this, program](const Status& identity) {
-            if (!identity) {
-                m_startReads = 0;
-                showMessage(
-                    tr("The device did not identify itself: %1").arg(identity.error().message));
-                Q_EMIT loaded(false);
-                return;
-            }
-            const int shown = std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1));
-            m_cams->editor()->setCurrentProgram(shown);
-            // The sections some protocols lack (and only those) read here; a
-            // section the protocol lacks says so on its page, not as a failure.
-            for (SectionPage* page : m_pages) page->deviceConnected();
-            const auto finished = [this](const Status& status) {
-                if (!status && status.error().kind != ErrorKind::Cancelled &&
-                    status.error().kind != ErrorKind::Usage)
-                    showMessage(tr("Reading the device: %1").arg(status.error().message));
-                if (--m_startReads > 0) return;
-                Q_EMIT loaded(true);
-            };
-            m_startReads = 4;
-            devicereads::readSettings(this, m_session, m_workspace, finished);
-            devicereads::readOutputSettings(this, m_session, m_workspace, finished);
-            devicereads::readUsers(this, m_session, m_workspace, finished);
-            m_cams->readProgram(shown, finished);
-        });
+    const int shown = std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1));
+    m_cams->editor()->setCurrentProgram(shown);
+    // The sections some protocols lack (and only those) read here; a
+    // section the protocol lacks says so on its page, not as a failure.
+    for (SectionPage* page : m_pages) page->deviceConnected();
+    const auto finished = [this](const Status& status) {
+        if (!status && status.error().kind != ErrorKind::Cancelled &&
+            status.error().kind != ErrorKind::Usage)
+            showMessage(tr("Reading the device: %1").arg(status.error().message));
+        if (--m_startReads > 0) return;
+        Q_EMIT loaded(true);
+    };
+    m_startReads += 4;
+    devicereads::readSettings(this, m_session, m_workspace, finished);
+    devicereads::readOutputSettings(this, m_session, m_workspace, finished);
+    devicereads::readUsers(this, m_session, m_workspace, finished);
+    m_cams->readProgram(shown, finished);
 }
 
 void MainWindow::readEverything(int program) {

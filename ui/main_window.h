@@ -76,6 +76,8 @@ public:
     void readEverything(int program = 0);
 
     CompareDialog* openCompare();
+    // Device → Last write report: the report of the last write, again.
+    void showLastWriteReport();
     BackupWizard* openBackupWizard();
     LineBackupDialog* openLineBackup();
     QString lastMessage() const { return m_lastMessage; }
@@ -112,6 +114,11 @@ private:
     void updateLivePolling();
     void updateTitle();
     void updateConnection();
+    // Identifies the device on the line (checkConnectedDevice), then reads
+    // the start sections when a load is pending or another device answers.
+    void checkDevice();
+    void readStartSections(int program);
+    void updateLastWriteButton();
     void newProject();
     void openProject();
     void saveProject();
@@ -128,6 +135,7 @@ private:
     QLabel* m_jobLabel;
     QProgressBar* m_jobProgress;
     QToolButton* m_jobCancel;
+    QToolButton* m_lastWrite;
     quint64 m_runningJob = 0;  // the user job the status bar shows
     ConnectionPage* m_connection = nullptr;
     CamPage* m_cams = nullptr;

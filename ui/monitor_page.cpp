@@ -12,6 +12,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -27,6 +28,9 @@ constexpr int kIntervalStepMs = 50;
 // Head room over the measured line time, so that a normal answer always
 // arrives before the next cycle and only a missing one counts as missed.
 constexpr double kLineMargin = 1.5;
+// Behind pages without live values the poll goes on this slowly: the link's
+// health (the banner, the indicator) must not depend on the page shown.
+constexpr int kHeartbeatMs = 2000;
 
 QLabel* bigValue() {
     auto* label = new QLabel(QStringLiteral("—"));
@@ -47,7 +51,16 @@ double plotted(const QString& text, qint32 raw) {
 }
 
 QString readout(const QString& text, qint32 raw) {
-    return text.trimmed().isEmpty() ? QString::number(raw) : text.trimmed();
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty()) return QLocale().toString(raw);
+    // The device formats with a decimal point; shown in the user's language
+    // ("6,0" in German) with as many decimals as the device gave.
+    bool number = false;
+    const double value = trimmed.toDouble(&number);
+    if (!number) return trimmed;
+    const int point = int(trimmed.indexOf(QLatin1Char('.')));
+    const int decimals = point < 0 ? 0 : int(trimmed.size()) - point - 1;
+    return QLocale().toString(value, 'f', decimals);
 }
 }  // namespace
 
@@ -125,9 +138,9 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     m_clock.start();
     connect(&m_timer, &QTimer::timeout, this, &MonitorPage::pollCycle);
     connect(m_rate, &QSpinBox::valueChanged, this, [this](int ms) {
-        if (ms == m_timer.interval()) return;  // our own adjustment
+        if (ms == m_liveInterval) return;  // our own adjustment
         m_requestedInterval = ms;
-        m_timer.setInterval(ms);
+        setLiveInterval(ms);
         m_rateNote->clear();
     });
     connect(m_session, &DeviceSession::stateChanged, this, &MonitorPage::updateRunning);
@@ -178,9 +191,14 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
 
 void MonitorPage::setPollInterval(int ms) {
     m_requestedInterval = ms;
-    m_timer.setInterval(ms);
-    m_rate->setValue(ms);
+    setLiveInterval(ms);
     m_rateNote->clear();
+}
+
+void MonitorPage::setLiveInterval(int ms) {
+    m_liveInterval = ms;
+    m_rate->setValue(ms);
+    m_timer.setInterval(m_liveWanted ? ms : std::max(ms, kHeartbeatMs));
 }
 
 QString MonitorPage::rateNote() const {
@@ -207,18 +225,20 @@ void MonitorPage::setLiveWanted(bool wanted) {
 }
 
 void MonitorPage::updateRunning() {
-    const bool polling = m_session->isOnline() && m_liveWanted;
-    if (polling) {
-        if (m_timerDriven && !m_timer.isActive()) {
-            m_timer.start();
-            pollCycle();  // the first values now, not one interval later
-        }
-        if (!m_timerDriven) m_timer.stop();
+    if (!m_session->isOnline()) {
+        m_timer.stop();
+        Q_EMIT liveEnded();
         return;
     }
-    m_timer.stop();
-    if (m_session->isOnline()) m_session->freshness()->paused();
-    Q_EMIT liveEnded();
+    // Live pages poll at the chosen rate; every other page keeps a slow
+    // heartbeat, so that a silent line turns stale wherever the user is.
+    setLiveInterval(m_liveInterval);
+    if (m_timerDriven && !m_timer.isActive()) {
+        m_timer.start();
+        pollCycle();  // the first values now, not one interval later
+    }
+    if (!m_timerDriven) m_timer.stop();
+    if (!m_liveWanted) Q_EMIT liveEnded();
 }
 
 void MonitorPage::pollCycle() {
@@ -255,10 +275,18 @@ void MonitorPage::onPollDone(const Result<DeviceStatus>& status) {
 }
 
 void MonitorPage::adaptInterval(qint64 lineMs) {
-    if (!m_timerDriven || lineMs * kLineMargin <= m_timer.interval()) return;
+    if (!m_timerDriven) return;
+    if (lineMs * kLineMargin <= m_requestedInterval) {
+        // The line carries the chosen rate again (after a stall): back to it.
+        if (m_liveInterval != m_requestedInterval) {
+            setLiveInterval(m_requestedInterval);
+            m_rateNote->clear();
+        }
+        return;
+    }
+    if (lineMs * kLineMargin <= m_liveInterval) return;
     const int needed = int(std::ceil(lineMs * kLineMargin / kIntervalStepMs)) * kIntervalStepMs;
-    m_timer.setInterval(needed);
-    m_rate->setValue(needed);
+    setLiveInterval(needed);
     m_rateNote->setText(
         tr("The line needs about %1 ms per poll: polling every %2 ms instead of %3 ms.")
             .arg(lineMs)

@@ -65,6 +65,7 @@ private:
     void showFreshness();
     void updateRunning();
     void adaptInterval(qint64 lineMs);
+    void setLiveInterval(int ms);
 
     DeviceSession* m_session;
     Workspace* m_workspace;
@@ -75,6 +76,7 @@ private:
     quint64 m_pollJob = 0;      // the poll in flight, 0 = none
     QElapsedTimer m_lineClock;  // started when the poll job reaches the line
     int m_requestedInterval = 250;
+    int m_liveInterval = 250;  // the requested one, or slower where the line needs it
     QLabel* m_freshness;
     QLabel* m_position;
     QLabel* m_speed;

@@ -53,6 +53,13 @@ ReplaceEditsDialog::ReplaceEditsDialog(const QMap<EditSection, int>& edits, Valu
         grid->addWidget(label, row, 0);
         grid->addWidget(keep, row, 1);
         grid->addWidget(take, row, 2);
+        auto* details = new QLabel;
+        details->setWordWrap(true);
+        details->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        details->setContentsMargins(16, 0, 0, 6);
+        details->hide();
+        grid->addWidget(details, ++row, 0, 1, 3);
+        m_details.insert(it.key(), details);
         m_keep.insert(it.key(), keep);
         m_take.insert(it.key(), take);
     }
@@ -71,6 +78,24 @@ ReplaceEditsDialog::ReplaceEditsDialog(const QMap<EditSection, int>& edits, Valu
     layout->addWidget(buttons);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+}
+
+void ReplaceEditsDialog::setDetails(const QMap<EditSection, QStringList>& items) {
+    constexpr int kShown = 8;
+    for (auto it = items.cbegin(); it != items.cend(); ++it) {
+        QLabel* label = m_details.value(it.key());
+        if (!label || it.value().isEmpty()) continue;
+        QStringList lines = it.value().mid(0, kShown);
+        if (it.value().size() > kShown)
+            lines << tr("… and %n more", nullptr, int(it.value().size()) - kShown);
+        label->setText(lines.join(QLatin1Char('\n')));
+        label->show();
+    }
+}
+
+QString ReplaceEditsDialog::detailsText(EditSection section) const {
+    const QLabel* label = m_details.value(section);
+    return label ? label->text() : QString();
 }
 
 QSet<EditSection> ReplaceEditsDialog::keptSections() const {

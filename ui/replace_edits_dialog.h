@@ -6,6 +6,7 @@
 #include <QMap>
 #include <QSet>
 
+class QLabel;
 class QRadioButton;
 
 namespace cambench {
@@ -21,6 +22,10 @@ public:
                        QWidget* parent = nullptr);
 
     QSet<EditSection> keptSections() const;
+    // Names the edited items of each section, with what arrives in their
+    // place, below the section (the first few; the rest counted).
+    void setDetails(const QMap<EditSection, QStringList>& items);
+    QString detailsText(EditSection section) const;
     // For tests and keyboard users: choose for one section.
     void choose(EditSection section, bool keepEdits);
     QList<EditSection> sections() const { return m_keep.keys(); }
@@ -30,6 +35,7 @@ public:
 private:
     QMap<EditSection, QRadioButton*> m_keep;
     QMap<EditSection, QRadioButton*> m_take;
+    QMap<EditSection, QLabel*> m_details;
 };
 
 }  // namespace cambench

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QRegularExpression>
 #include <QString>
 
 namespace cambench {
@@ -15,6 +16,18 @@ inline QString asSentence(const QString& text) {
         last == QChar(0x2026))
         return trimmed;
     return trimmed + QLatin1Char('.');
+}
+
+// A message from comm/ for a person at the machine: the protocol's command
+// names the CLI prints for diagnosis ("reading the identity (?EPROM)", "no
+// reply from the device to ?EPROM on …") are left out; the words say it.
+inline QString withoutCommandNames(const QString& text) {
+    static const QRegularExpression inParentheses(QStringLiteral(R"( ?\([?!][A-Z][A-Z0-9]*\))"));
+    static const QRegularExpression afterTo(QStringLiteral(R"( to [?!][A-Z][A-Z0-9]*\b)"));
+    QString cleaned = text;
+    cleaned.remove(inParentheses);
+    cleaned.remove(afterTo);
+    return cleaned;
 }
 
 }  // namespace cambench

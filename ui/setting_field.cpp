@@ -52,6 +52,16 @@ SettingField::SettingField(const SettingSpec& spec, QObject* parent)
     guardWheel(m_editor);
 }
 
+QString SettingField::textWithUnit(const SettingSpec& spec, const QVariant& value) {
+    if (spec.kind == SettingKind::Integer && qstrcmp(spec.unit, "0.1 ms") == 0) {
+        bool number = false;
+        const double tenths = value.toDouble(&number);
+        if (number) return tr("%1 ms").arg(QLocale().toString(tenths / 10.0, 'f', 1));
+    }
+    const QString shown = displayText(spec, value);
+    return *spec.unit ? shown + QLatin1Char(' ') + settingsText(spec.unit) : shown;
+}
+
 QString SettingField::labelText(const SettingSpec& spec) {
     return settingsText(spec.label);
 }

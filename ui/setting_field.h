@@ -35,6 +35,9 @@ public:
 
     // Texts of a value for comparisons and the report.
     static QString displayText(const SettingSpec& spec, const QVariant& value);
+    // displayText() with the unit, as a report prints it; a count of
+    // "0.1 ms" steps is shown in milliseconds ("12.5 ms", not "125 0.1 ms").
+    static QString textWithUnit(const SettingSpec& spec, const QVariant& value);
     static QString labelText(const SettingSpec& spec);
     static QString rangeText(const SettingSpec& spec);
     static QString toolTipText(const SettingSpec& spec);

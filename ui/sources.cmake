@@ -26,6 +26,10 @@ target_sources(cambench_ui PRIVATE
   replace_edits_dialog.cpp
   incoming_values.h
   incoming_values.cpp
+  device_check.h
+  device_check.cpp
+  last_write_report.h
+  last_write_report.cpp
   device_reads.h
   device_reads.cpp
   capability_gate.h
@@ -103,6 +107,8 @@ target_sources(cambench_ui PRIVATE
   cam_text.h
   commissioning_report.h
   commissioning_report.cpp
+  report_pages.h
+  report_pages.cpp
   main_window.h
   main_window.cpp
   shell.h

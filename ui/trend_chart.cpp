@@ -4,6 +4,7 @@
 #include <QEvent>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QLocale>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -32,6 +33,9 @@ TrendChart::TrendChart(QWidget* parent)
       m_positionAxis(new QValueAxis),
       m_speedAxis(new QValueAxis) {
     auto* chart = new QChart;
+    // Axis labels in the user's language: "6,0" in German, not "6.0".
+    chart->setLocalizeNumbers(true);
+    chart->setLocale(QLocale());
     chart->legend()->setAlignment(Qt::AlignBottom);
     m_time->setTitleText(tr("Time (s)"));
     m_time->setLabelFormat(QStringLiteral("%.0f"));

@@ -55,6 +55,9 @@ void Workspace::clear(const DeviceInfo& info) {
     m_usersKnown = false;
     m_plc.clear();
     m_devicePlc.clear();
+    m_copiesFrom.reset();
+    m_fingerprintKnown = false;
+    clearOtherDeviceNote();
     setInfo(info, false);
     Q_EMIT settingsChanged();
     Q_EMIT usersChanged();
@@ -344,6 +347,73 @@ void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
 int Workspace::changedCount() const {
     return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
            int(changedPlcNetworks().size());
+}
+
+// --- which device the copies are from
+
+void Workspace::setCopiesFrom(const DeviceInfo& identity) {
+    m_copiesFrom = identity;
+    m_fingerprintKnown = true;
+}
+
+bool Workspace::copiesAreFrom(const DeviceInfo& now) const {
+    return !m_copiesFrom || sameDevice(*m_copiesFrom, now, m_fingerprintKnown);
+}
+
+void Workspace::forgetDeviceCopies(const QString& note) {
+    m_cams->forgetDeviceCopies();
+    m_readAt = {};
+    forgetDeviceSettings();
+    forgetDeviceUsers();
+    forgetDevicePlcNetworks();
+    m_copiesFrom.reset();
+    m_fingerprintKnown = false;
+    m_otherDeviceNote = note;
+    Q_EMIT readTimesChanged();
+    Q_EMIT otherDeviceNoteChanged();
+}
+
+void Workspace::forgetDeviceSettings() {
+    const QStringList edited = changedSettings();
+    for (const QString& key : m_settings.keys()) {
+        if (!edited.contains(key)) m_settings.remove(key);
+    }
+    m_deviceSettings.clear();
+    m_settingsKnown = false;
+    m_readAt.parts.remove(ProjectPart::Settings);
+    Q_EMIT settingsChanged();
+    notifyChanged();
+}
+
+void Workspace::forgetDeviceUsers() {
+    QList<EditedUser> kept;
+    for (int i = 0; i < m_users.size(); ++i) {
+        // A user's place on the old device means nothing on this one.
+        if (userChanged(i)) kept << EditedUser{m_users.at(i).user, QString()};
+    }
+    m_users = kept;
+    m_deviceUsers.clear();
+    m_usersKnown = false;
+    m_readAt.parts.remove(ProjectPart::Users);
+    Q_EMIT usersChanged();
+    notifyChanged();
+}
+
+void Workspace::forgetDevicePlcNetworks() {
+    const QList<int> edited = changedPlcNetworks();
+    for (const int key : m_plc.keys()) {
+        if (!edited.contains(key)) m_plc.remove(key);
+    }
+    m_devicePlc.clear();
+    m_readAt.parts.remove(ProjectPart::PlcNetworks);
+    Q_EMIT plcChanged();
+    notifyChanged();
+}
+
+void Workspace::clearOtherDeviceNote() {
+    if (m_otherDeviceNote.isEmpty()) return;
+    m_otherDeviceNote.clear();
+    Q_EMIT otherDeviceNoteChanged();
 }
 
 void Workspace::notifyChanged() {

@@ -111,6 +111,29 @@ public:
     // Every item that differs from the device, across all sections.
     int changedCount() const;
 
+    // --- Which device the device copies are from: the identity and
+    // fingerprint read last (on a connect, or with a read of everything).
+    const std::optional<DeviceInfo>& copiesFrom() const { return m_copiesFrom; }
+    // Whether the fingerprint in copiesFrom() is still the device's: a
+    // write of ours changes the counts of programmed cams and dead times.
+    bool copiesFingerprintKnown() const { return m_fingerprintKnown; }
+    void setCopiesFrom(const DeviceInfo& identity);
+    void fingerprintChangedByWrite() { m_fingerprintKnown = false; }
+    // Whether a device that identified itself as `now` is the one the device
+    // copies were read from (true when there are none to compare with).
+    bool copiesAreFrom(const DeviceInfo& now) const;
+    // Another device answers: every device copy and read time is forgotten
+    // (see CamDocument::forgetDeviceCopies); edits stay and count as not on
+    // the device. `note` says so until the next read from the device.
+    void forgetDeviceCopies(const QString& note);
+    // A section the connected protocol lacks: its device copy is not this
+    // device's state and is forgotten, edits stay.
+    void forgetDeviceUsers();
+    void forgetDeviceSettings();
+    void forgetDevicePlcNetworks();
+    QString otherDeviceNote() const { return m_otherDeviceNote; }
+    void clearOtherDeviceNote();
+
 Q_SIGNALS:
     void infoChanged();
     void projectPathChanged();
@@ -119,6 +142,7 @@ Q_SIGNALS:
     void plcChanged();
     void readTimesChanged();
     void changedCountChanged(int count);
+    void otherDeviceNoteChanged();
 
 private:
     void notifyChanged();
@@ -139,6 +163,9 @@ private:
     QMap<int, PlcNetwork> m_plc;
     QMap<int, PlcNetwork> m_devicePlc;
     int m_lastCount = 0;
+    std::optional<DeviceInfo> m_copiesFrom;
+    bool m_fingerprintKnown = false;
+    QString m_otherDeviceNote;
 };
 
 }  // namespace cambench

@@ -213,6 +213,8 @@ QString usageText() {
         "  info [--json]                    identity and capacities, \"key: value\" lines\n"
         "  status [--json]                  position, speed, program, error state, outputs\n"
         "  scan [--json]                    Multiuser: device numbers that answer, one a line\n"
+        "  ports [--json]                   serial ports of this PC with their USB adapter\n"
+        "                                   (description, manufacturer, S/N, VID:PID)\n"
         "  cams read --program P [--output O] [-o FILE]   CSV, header \"output,cam,on,off\"\n"
         "  cams write --program P FILE      replaces exactly the tracks that FILE lists\n"
         "  deadtimes read [-o FILE] | deadtimes write FILE     CSV \"output,deadtime\" (0.1 ms)\n"

@@ -7,6 +7,7 @@ const CommandGroup* findCommandGroup(const QString& name) {
         {"info", runInfo},
         {"status", runStatus},
         {"scan", runScan},
+        {"ports", runPorts},
         {"raw", runRaw},
         {"cams", runCams},
         {"deadtimes", runDeadTimes},

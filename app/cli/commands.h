@@ -17,6 +17,7 @@ struct CommandGroup {
 int runInfo(CliSession& session, CommandArgs& args);
 int runStatus(CliSession& session, CommandArgs& args);
 int runScan(CliSession& session, CommandArgs& args);
+int runPorts(CliSession& session, CommandArgs& args);
 int runRaw(CliSession& session, CommandArgs& args);
 int runCams(CliSession& session, CommandArgs& args);
 int runDeadTimes(CliSession& session, CommandArgs& args);

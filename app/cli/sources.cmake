@@ -23,6 +23,7 @@ add_executable(cambench-cli
   cli/eeprom_commands.cpp
   cli/project_commands.cpp
   cli/line_commands.cpp
+  cli/port_commands.cpp
   cli/write_output.h
   cli/write_output.cpp
 )

@@ -16,39 +16,80 @@
 
 #include <cstdio>
 
-int main(int argc, char* argv[]) {
-    cambench::registerBuiltins();
-    cambench::registerProtocolWidgets();
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("CamBench"));
-    QApplication::setApplicationName(QStringLiteral("CamBench"));
-    QApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
+namespace {
 
+// The command line of cambench; the same for the text-only run (--help,
+// --version) and the real one.
+struct CommandLine {
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Programming and monitoring of CamCon cam controllers.\n"
-                       "Version " CAMBENCH_VERSION_TEXT "."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption lang(QStringLiteral("lang"),
+    const QCommandLineOption lang{QStringLiteral("lang"),
                                   QStringLiteral("User interface language: de or en."),
-                                  QStringLiteral("language"));
-    const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
-    const QCommandLineOption port(
+                                  QStringLiteral("language")};
+    const QCommandLineOption dark{QStringLiteral("dark"), QStringLiteral("Use the dark palette.")};
+    const QCommandLineOption port{
         QStringLiteral("port"),
         QStringLiteral("Connect to this port at start (serial port, tcp://host:port, sim)."),
-        QStringLiteral("port"));
-    const QCommandLineOption protocol(
+        QStringLiteral("port")};
+    const QCommandLineOption protocol{
         QStringLiteral("protocol"),
         QStringLiteral("With --port: standard, multiuser, 3964r-n96 or 3964r-e38 (default: the "
                        "connection page's choice)."),
-        QStringLiteral("protocol"));
-    const QCommandLineOption shots(
-        QStringLiteral("screenshots"),
-        QStringLiteral("Visit every screen on the simulated device, save one PNG "
-                       "each into DIR, and exit."),
-        QStringLiteral("DIR"));
-    parser.addOptions({lang, dark, port, protocol, shots});
+        QStringLiteral("protocol")};
+    const QCommandLineOption shots{QStringLiteral("screenshots"),
+                                   QStringLiteral("Visit every screen on the simulated device, "
+                                                  "save one PNG each into DIR, and exit."),
+                                   QStringLiteral("DIR")};
+
+    CommandLine() {
+        parser.setApplicationDescription(
+            QStringLiteral("Programming and monitoring of CamCon cam controllers.\n"
+                           "Version " CAMBENCH_VERSION_TEXT "."));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addOptions({lang, dark, port, protocol, shots});
+    }
+};
+
+// --help and --version print text: no display is needed for that (a
+// technician on ssh, a packaging check), so no QApplication is made.
+bool onlyText(int argc, char* argv[]) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "--help" || arg == "-h" || arg == "-?" || arg == "--help-all" ||
+            arg == "--version" || arg == "-v")
+            return true;
+    }
+    return false;
+}
+
+void nameApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("CamBench"));
+    QCoreApplication::setApplicationName(QStringLiteral("CamBench"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    cambench::registerBuiltins();
+    if (onlyText(argc, argv)) {
+        QCoreApplication text(argc, argv);
+        nameApplication();
+        CommandLine commandLine;
+        commandLine.parser.process(text);  // prints and exits
+        return 0;
+    }
+    cambench::registerProtocolWidgets();
+    QApplication app(argc, argv);
+    nameApplication();
+
+    CommandLine commandLine;
+    QCommandLineParser& parser = commandLine.parser;
+    const QCommandLineOption& lang = commandLine.lang;
+    const QCommandLineOption& dark = commandLine.dark;
+    const QCommandLineOption& port = commandLine.port;
+    const QCommandLineOption& protocol = commandLine.protocol;
+    const QCommandLineOption& shots = commandLine.shots;
     parser.process(app);
 
     // The screenshot tour shows the program as first started and must not

@@ -109,14 +109,21 @@ Status SerialTransport::open() {
         const QString reason = m_port->errorString();
         const auto error = m_port->error();
         m_port.reset();
+        if (error == QSerialPort::PermissionError) {
+            // Linux says "Permission denied" both for a user outside the
+            // group that owns the port and for a port another program holds.
+            return Error::communication(
+                QCoreApplication::translate(
+                    "cambench::comm",
+                    "permission denied on %1 (%2): this user may not open the serial port, or "
+                    "another program holds it. On Linux, add the user to the group dialout "
+                    "(sudo usermod -aG dialout $USER), then log out and in again; close any "
+                    "other program that uses the port.")
+                    .arg(m_portName, reason));
+        }
         QString hint = QCoreApplication::translate(
             "cambench::comm", "check the port name and that no other program uses it");
-        if (error == QSerialPort::PermissionError)
-            hint = QCoreApplication::translate(
-                "cambench::comm",
-                "check that no other program uses it and that you may use "
-                "serial ports (on Linux: member of the group dialout)");
-        else if (error == QSerialPort::DeviceNotFoundError)
+        if (error == QSerialPort::DeviceNotFoundError)
             hint = QCoreApplication::translate(
                 "cambench::comm", "check the port name and that the adapter is plugged in");
         return Error::communication(

@@ -32,6 +32,15 @@ struct DeviceInfo {
     friend bool operator==(const DeviceInfo& a, const DeviceInfo& b);
 };
 
+// Whether `now` (read on a connect) is the device `before` was read from.
+// The identity (EPROM date, device number, capacities, memory sizes) must
+// agree; with `compareContents`, also the cheap fingerprint of what it holds
+// (programmed cams, free cams, programmed dead times), which tells apart two
+// devices of the same kind and a device changed by someone else. Callers
+// skip the fingerprint after their own writes changed it. Temperature and
+// free RAM change by themselves and are not compared.
+bool sameDevice(const DeviceInfo& before, const DeviceInfo& now, bool compareContents);
+
 // What `status` shows (manual 5.1 and the provisional 5.1.6..5.1.8).
 struct DeviceStatus {
     int errorState = 0;     // ?ERR: 0 ok, 1..3 actual-value error, 4 output error, 0xFF EEPROM

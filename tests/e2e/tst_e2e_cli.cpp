@@ -4,6 +4,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QSet>
 #include <QTest>
 
@@ -53,6 +54,8 @@ private Q_SLOTS:
     void scanNeedsMultiuser();
     void usageErrorsExitTwoWithUsage();
     void rawPrintsReplyBody();
+    void portsListsSerialPortsWithoutADevice();
+    void guiHelpNeedsNoDisplay();
     void asciiOnlyCommandsExitTwoNamingTheProtocol_data();
     void asciiOnlyCommandsExitTwoNamingTheProtocol();
 };
@@ -403,6 +406,41 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
     QVERIFY2(run.err.contains(QLatin1String("--protocol standard or multiuser")),
              qPrintable(run.err));
     QVERIFY(run.out.isEmpty());
+}
+
+void TestE2eCli::portsListsSerialPortsWithoutADevice() {
+    // No port given and none opened: the list comes from the system alone.
+    const CliRun json = runCli({QStringLiteral("ports"), QStringLiteral("--json")});
+    QVERIFY(json.finished);
+    QCOMPARE(json.exitCode, 0);
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(json.out.toUtf8(), &error);
+    QVERIFY2(error.error == QJsonParseError::NoError && document.isArray(), qPrintable(json.out));
+    for (const QJsonValue& port : document.array())
+        QVERIFY(!port.toObject().value(QStringLiteral("port")).toString().isEmpty());
+    const CliRun text = runCli({QStringLiteral("ports")});
+    QCOMPARE(text.exitCode, 0);
+    QVERIFY(!text.out.isEmpty());
+}
+
+void TestE2eCli::guiHelpNeedsNoDisplay() {
+    // On ssh or a headless machine, `cambench --help` printed nothing and
+    // aborted for want of a display (issue 12, point 8).
+    QProcess gui;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        env.remove(QString::fromLatin1(name));
+    gui.setProcessEnvironment(env);
+    for (const QString& option : {QStringLiteral("--help"), QStringLiteral("--version")}) {
+        gui.start(QStringLiteral(CAMBENCH_GUI_EXE), {option});
+        QVERIFY(gui.waitForFinished(30000));
+        QCOMPARE(gui.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(gui.exitCode(), 0);
+        const QString out = QString::fromUtf8(gui.readAllStandardOutput());
+        QVERIFY2(out.contains(option == QLatin1String("--help") ? QLatin1String("--port")
+                                                                : QLatin1String("CamBench")),
+                 qPrintable(out));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestE2eCli)

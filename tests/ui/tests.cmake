@@ -14,6 +14,8 @@ cambench_add_truth_test(ui_truth_unwritten_edits_test ui/truth/tst_unwritten_edi
 cambench_add_truth_test(ui_truth_freshness_test ui/truth/tst_freshness.cpp)
 cambench_add_truth_test(ui_truth_whole_device_test ui/truth/tst_whole_device.cpp)
 cambench_add_truth_test(ui_truth_report_and_counts_test ui/truth/tst_report_and_counts.cpp)
+cambench_add_truth_test(ui_truth_other_device_test ui/truth/tst_other_device.cpp)
 cambench_add_test(ui_shell_small_faults_test SOURCES ui/register_widgets.cpp ui/shell/tst_small_faults.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
+cambench_add_truth_test(ui_shell_typed_port_test ui/shell/tst_typed_port.cpp)
 cambench_add_test(ui_shell_gui_settings_test SOURCES ui/register_widgets.cpp ui/shell/tst_gui_settings.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_line_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_line_backup.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)

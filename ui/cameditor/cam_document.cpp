@@ -79,7 +79,10 @@ void CamDocument::mergeProgram(const CamProgram& incoming, bool fromDevice, bool
         }
         if (!oldDevice || before.name != oldDevice->name) after.name = before.name;
     }
-    if (fromDevice) m_device.insert(number, clean);
+    if (fromDevice) {
+        m_device.insert(number, clean);
+        forgetUnknownTracks(number);
+    }
     if (after != before && hadEdits && !keepEdits) {
         // The edits are replaced as one undo step: the history stays whole.
         m_undoStack->push(new ReplaceProgramCommand(
@@ -97,6 +100,7 @@ void CamDocument::clear() {
     m_undoStack->clear();
     m_edited.clear();
     m_device.clear();
+    m_unknownTracks.clear();
     m_names = {};
     m_deadTimes.clear();
     m_deviceOutputNames.clear();
@@ -163,6 +167,7 @@ int CamDocument::outputSettingsEditCount() const {
 
 void CamDocument::setDeviceProgram(const CamProgram& program) {
     m_device.insert(program.number, normalized(program));
+    forgetUnknownTracks(program.number);
     // A program only read, never edited, is shown as the device has it.
     if (!m_edited.contains(program.number))
         m_edited.insert(program.number, m_device.value(program.number));
@@ -183,6 +188,7 @@ void CamDocument::setDeviceOutputSettings(const QMap<int, QString>& outputNames,
 void CamDocument::setDeviceTrack(int program, const Track& track) {
     if (!m_device.contains(program)) return;
     Track clean = normalized(track);
+    m_unknownTracks.remove(trackKey(program, clean.output));
     if (clean.cams.isEmpty()) {
         m_device[program].tracks.remove(clean.output);
     } else {
@@ -211,8 +217,50 @@ void CamDocument::setDeviceOutputName(int output, const QString& name) {
     notifyChangedCount();
 }
 
+void CamDocument::forgetDeviceTrack(int program, int output) {
+    if (!m_device.contains(program)) return;
+    m_unknownTracks.insert(trackKey(program, output));
+    Q_EMIT programChanged(program);
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+void CamDocument::forgetUnknownTracks(int program) {
+    for (auto it = m_unknownTracks.begin(); it != m_unknownTracks.end();) {
+        it = (int(*it >> 16) == program) ? m_unknownTracks.erase(it) : std::next(it);
+    }
+}
+
+bool CamDocument::deviceTrackKnown(int program, int output) const {
+    return m_device.contains(program) && !m_unknownTracks.contains(trackKey(program, output));
+}
+
 void CamDocument::forgetDeviceProgram(int program) {
+    forgetUnknownTracks(program);
     if (m_device.remove(program) == 0) return;
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
+void CamDocument::forgetDeviceCopies() {
+    const QList<int> programs = m_device.keys();
+    for (int program : programs) {
+        if (!programEdited(program)) m_edited.remove(program);
+    }
+    m_device.clear();
+    m_unknownTracks.clear();
+    if (outputSettingsEditCount() == 0) {
+        m_names.outputs.clear();
+        m_deadTimes.clear();
+    }
+    m_deviceOutputNames.clear();
+    m_deviceDeadTimes.clear();
+    m_outputSettingsKnown = false;
+    for (int program : programs) Q_EMIT programChanged(program);
+    for (int output = 1; output <= m_info.outputs; ++output) {
+        Q_EMIT outputNameChanged(output);
+        Q_EMIT deadTimeChanged(output);
+    }
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
 }
@@ -225,7 +273,7 @@ std::optional<CamProgram> CamDocument::deviceProgram(int program) const {
 }
 
 std::optional<Track> CamDocument::deviceTrack(int program, int output) const {
-    if (!m_device.contains(program)) return std::nullopt;
+    if (!deviceTrackKnown(program, output)) return std::nullopt;
     return trackOf(m_device.value(program), output);
 }
 
@@ -244,7 +292,7 @@ ChangeState CamDocument::programState(int program) const {
 }
 
 ChangeState CamDocument::trackState(int program, int output) const {
-    return compare(m_device.contains(program),
+    return compare(deviceTrackKnown(program, output),
                    track(program, output).cams == trackOf(m_device.value(program), output).cams);
 }
 
@@ -252,7 +300,7 @@ ChangeState CamDocument::camState(int program, int output, int index) const {
     const QList<Cam> cams = track(program, output).cams;
     const bool onDevice = index >= 0 && index < cams.size() &&
                           trackOf(m_device.value(program), output).cams.contains(cams.at(index));
-    return compare(m_device.contains(program), onDevice);
+    return compare(deviceTrackKnown(program, output), onDevice);
 }
 
 QList<TrackDifference> CamDocument::differences() const {
@@ -267,9 +315,15 @@ QList<TrackDifference> CamDocument::differences() const {
         std::sort(outputs.begin(), outputs.end());
         outputs.erase(std::unique(outputs.begin(), outputs.end()), outputs.end());
         for (int output : outputs) {
-            TrackDifference difference{number, output, m_device.contains(number),
-                                       trackOf(device, output), trackOf(edited, output)};
-            if (difference.deviceTrack != difference.editedTrack) {
+            const bool known = deviceTrackKnown(number, output);
+            TrackDifference difference{number, output, known,
+                                       known ? trackOf(device, output) : Track{},
+                                       trackOf(edited, output)};
+            // A track whose state on the device is unknown (a write cut off)
+            // differs until it is read or written again.
+            if (!known && m_device.contains(number)) {
+                result.append(difference);
+            } else if (difference.deviceTrack != difference.editedTrack) {
                 result.append(difference);
             }
         }

@@ -9,6 +9,7 @@
 #include <QList>
 #include <QMap>
 #include <QObject>
+#include <QSet>
 #include <QString>
 
 #include <optional>
@@ -95,6 +96,16 @@ public:
     // The device copy of a program is no longer known (a write whose
     // outcome could not be read back).
     void forgetDeviceProgram(int program);
+    // One track's state on the device is no longer known (its write was cut
+    // off): that output shows "not read" and is written again; the rest of
+    // the program keeps what the device was seen to hold.
+    void forgetDeviceTrack(int program, int output);
+    bool deviceTrackKnown(int program, int output) const;
+    // Another device is on the line: no device copy is the device's state
+    // any more. What the user edited stays (and now counts as not on the
+    // device); what was only shown as read from the old device goes, so
+    // that it is neither shown nor written as this device's values.
+    void forgetDeviceCopies();
     std::optional<CamProgram> deviceProgram(int program) const;
     std::optional<Track> deviceTrack(int program, int output) const;
     bool outputSettingsKnown() const { return m_outputSettingsKnown; }
@@ -168,6 +179,13 @@ private:
     DeadTimes m_deadTimes;
     QMap<int, QString> m_deviceOutputNames;
     DeadTimes m_deviceDeadTimes;
+    // Tracks of read programs whose state on the device is unknown (key
+    // trackKey()).
+    QSet<quint32> m_unknownTracks;
+    static quint32 trackKey(int program, int output) {
+        return (quint32(program) << 16) | quint32(output);
+    }
+    void forgetUnknownTracks(int program);
     bool m_outputSettingsKnown = false;
     QUndoStack* m_undoStack = nullptr;
     quint64 m_lastDragKey = 0;

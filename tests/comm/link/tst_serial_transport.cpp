@@ -7,7 +7,10 @@
 
 #include <QtTest>
 
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <termios.h>
+#include <unistd.h>
 
 using namespace cambench;
 using namespace cambench::comm;
@@ -19,6 +22,7 @@ private Q_SLOTS:
     void openAppliesSettingsToTheLine();
     void openSucceedsThoughPtyRefusesDtrAndRts();
     void openMissingPortNamesPortAndWhatToCheck();
+    void permissionDeniedSaysSoAndWhatToDo();
     void invalidSettingsAreRefused();
     void readReturnsEmptyOnQuietLine();
     void writeReachesTheDevice();
@@ -70,6 +74,41 @@ void TestSerialTransport::openMissingPortNamesPortAndWhatToCheck() {
     QVERIFY2(opened.error().message.contains(QLatin1String("check")),
              qPrintable(opened.error().message));
     QVERIFY(!transport.isOpen());
+}
+
+void TestSerialTransport::permissionDeniedSaysSoAndWhatToDo() {
+    // A port this user may not open: a pty with mode 000, opened by an
+    // unprivileged user (root ignores file modes, so a child process drops
+    // to "nobody" first when the test runs as root, as in CI).
+    PtyDevice device(Framing::Standard, [](const Frame&, int) { return DeviceAction{}; });
+    QVERIFY(device.isValid());
+    const QByteArray path = device.slavePath().toLocal8Bit();
+    QCOMPARE(::chmod(path.constData(), 0), 0);
+    int pipeFds[2];
+    QCOMPARE(::pipe(pipeFds), 0);
+    const pid_t child = ::fork();
+    QVERIFY(child >= 0);
+    if (child == 0) {
+        ::close(pipeFds[0]);
+        if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(2);
+        SerialTransport transport(device.slavePath(), SerialSettings{});
+        const Status opened = transport.open();
+        const QByteArray message = opened ? QByteArray("opened") : opened.error().message.toUtf8();
+        const ssize_t written = ::write(pipeFds[1], message.constData(), size_t(message.size()));
+        ::_exit(written == message.size() ? 0 : 3);
+    }
+    ::close(pipeFds[1]);
+    QByteArray message;
+    char buffer[512];
+    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) message.append(buffer, n);
+    ::close(pipeFds[0]);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    QVERIFY2(WIFEXITED(status) && WEXITSTATUS(status) == 0, "the unprivileged child failed");
+    const QString text = QString::fromUtf8(message);
+    QVERIFY2(text.startsWith(QStringLiteral("permission denied on %1").arg(device.slavePath())),
+             qPrintable(text));
+    QVERIFY2(text.contains(QLatin1String("dialout")), qPrintable(text));
 }
 
 void TestSerialTransport::invalidSettingsAreRefused() {

@@ -28,6 +28,8 @@ private Q_SLOTS:
     void compareListsChangedTrackAndMarkWrittenClearsIt();
     void neverReadProgramIsNotRead();
     void deviceTrackAfterWriteKeepsOtherEditsAndUndo();
+    void trackCutOffByAPulledCableAloneTurnsUnknown();
+    void anotherDeviceForgetsCopiesAndKeepsOnlyEdits();
     void takingTheDevicesProgramIsOneUndoStep();
     void keepingMineUpdatesOnlyTheDeviceCopy();
     void copyProgramIsOneUndoStep();
@@ -147,6 +149,45 @@ void CamDocumentTest::deviceTrackAfterWriteKeepsOtherEditsAndUndo() {
     document.setDeviceProgramName(0, document.programName(0));
     QCOMPARE(document.changedCount(), 1);
     QCOMPARE(document.undoStack()->count(), 3);
+}
+
+void CamDocumentTest::trackCutOffByAPulledCableAloneTurnsUnknown() {
+    // Issue 12, point 8: after a cable pull mid-write only the output whose
+    // write was cut off is unknown; the others keep what the report said.
+    CamDocument document;
+    test::loadDemo(document);
+    document.setCam(0, 1, 0, {25, 60});
+    document.setCam(0, 3, 0, {300, 20});
+    QCOMPARE(document.changedCount(), 2);
+    document.setDeviceTrack(0, document.track(0, 1));  // written
+    document.forgetDeviceTrack(0, 3);                  // cut off: state unknown
+    QCOMPARE(document.trackState(0, 1), ChangeState::Unchanged);
+    QCOMPARE(document.trackState(0, 3), ChangeState::NotRead);
+    QCOMPARE(document.trackState(0, 2), ChangeState::Unchanged);
+    QVERIFY(document.hasDeviceCopy(0));
+    QVERIFY(!document.deviceTrack(0, 3).has_value());
+    QCOMPARE(document.changedCount(), 1);
+    QCOMPARE(document.track(0, 3).cams.first(), (Cam{300, 20}));  // the edit stays
+    // Read or written again: known again.
+    document.setDeviceTrack(0, document.track(0, 3));
+    QCOMPARE(document.trackState(0, 3), ChangeState::Unchanged);
+    QCOMPARE(document.changedCount(), 0);
+}
+
+void CamDocumentTest::anotherDeviceForgetsCopiesAndKeepsOnlyEdits() {
+    // Issue 12, point 3: nothing read from the old device stays as if it
+    // were on the new one; what the user edited stays.
+    CamDocument document;
+    test::loadDemo(document);
+    document.setCam(0, 1, 0, {25, 60});
+    const Track edited = document.track(0, 1);
+    const Track unedited = document.track(0, 3);
+    QVERIFY(!unedited.cams.isEmpty());
+    document.forgetDeviceCopies();
+    QVERIFY(!document.hasDeviceCopy(0));
+    QCOMPARE(document.track(0, 1).cams, edited.cams);
+    QCOMPARE(document.trackState(0, 1), ChangeState::NotRead);
+    QVERIFY(!document.deviceTrack(0, 3).has_value());
 }
 
 void CamDocumentTest::takingTheDevicesProgramIsOneUndoStep() {

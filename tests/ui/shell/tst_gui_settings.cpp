@@ -61,6 +61,10 @@ void GuiSettingsTest::everythingRememberedSurvivesARestart() {
         first.session()->connectTo(connection,
                                    std::make_shared<comm::AsciiProtocolSettings>(multiuser));
         QTRY_VERIFY_WITH_TIMEOUT(first.session()->isOnline(), kDeviceTimeoutMs);
+        // Another device than the demo: it is identified and read first.
+        QTRY_VERIFY_WITH_TIMEOUT(
+            first.session()->deviceChecked() && !first.window()->isReadingDevice(),
+            kDeviceTimeoutMs);
         QVERIFY(first.window()->saveProjectTo(project).ok());
         first.window()->resize(1100, 700);
         first.window()->move(30, 40);

@@ -50,6 +50,10 @@ void LineBackupTest::everyDeviceGetsItsBarAndAFailureIsSaid() {
     QCOMPARE(dialog->deviceBar(0)->value(), dialog->deviceBar(0)->maximum());
     QCOMPARE(dialog->deviceBar(5)->value(), dialog->deviceBar(5)->maximum());
     QCOMPARE(dialog->deviceBar(9)->format(), QStringLiteral("FAILED"));
+    // Red, and full: it stands out beside the saved ones (issue 12, point 8).
+    QVERIFY(dialog->deviceBar(9)->styleSheet().contains(QLatin1String("#b03a2e")));
+    QCOMPARE(dialog->deviceBar(9)->value(), dialog->deviceBar(9)->maximum());
+    QVERIFY(dialog->deviceBar(0)->styleSheet().isEmpty());
     const QString report = dialog->reportText();
     QVERIFY2(report.startsWith(QStringLiteral("2 of 3 devices saved")), qPrintable(report));
     QVERIFY(report.contains(QStringLiteral("Device 9: NOT saved")));

@@ -27,6 +27,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
+#include "ui/sentence.h"
 
 using namespace cambench;
 using namespace cambench::test;
@@ -48,6 +49,7 @@ private Q_SLOTS:
     void projectNameSurvivesLanguageSwitch();
     void toolBarsShowEveryActionAt1280Pixels();
     void errorDialogIsNeverTallerThanTheScreen();
+    void commandNamesStayOutOfMessagesForPeople();
 };
 
 void SmallFaultsTest::viewMenuShowsEncoderAndSystemWithItsAmpersand() {
@@ -213,6 +215,17 @@ void SmallFaultsTest::errorDialogIsNeverTallerThanTheScreen() {
     QVERIFY(ok->isVisible());
     QVERIFY(dialog.rect().contains(QRect(ok->mapTo(&dialog, QPoint(0, 0)), ok->size())));
     QCOMPARE(dialog.details().count(QLatin1Char('\n')), 95);  // every line, in a scrolling box
+}
+
+void SmallFaultsTest::commandNamesStayOutOfMessagesForPeople() {
+    // Issue 12, point 8: the words say it; "?EPROM" is for the CLI's log.
+    QCOMPARE(withoutCommandNames(QStringLiteral(
+                 "reading the device identity (?EPROM): no reply from the device to ?EPROM on "
+                 "/dev/ttyUSB0 after 2 attempts")),
+             QStringLiteral("reading the device identity: no reply from the device on "
+                            "/dev/ttyUSB0 after 2 attempts"));
+    QCOMPARE(withoutCommandNames(QStringLiteral("Is it on? Yes (really).")),
+             QStringLiteral("Is it on? Yes (really)."));
 }
 
 QTEST_MAIN(SmallFaultsTest)

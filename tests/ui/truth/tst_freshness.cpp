@@ -49,7 +49,9 @@ private Q_SLOTS:
     }
     void silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle();
     void stoppedSimulatorTurnsIndicatorAndMonitorStale();
-    void pollingStopsBehindPagesWithoutLiveValues();
+    void pagesWithoutLiveValuesOnlyWatchTheLink();
+    void killedSimulatorTurnsTheConnectionPageStale();
+    void pollRateReturnsOnceTheLineCarriesItAgain();
     void pollRateTheLineCannotCarryIsAdjustedWithAWord();
     void speedTrendPlotsTheValueTheReadoutShows();
 };
@@ -121,7 +123,7 @@ void FreshnessTest::stoppedSimulatorTurnsIndicatorAndMonitorStale() {
     QVERIFY(window->connectionStrip()->isAlarm());
 }
 
-void FreshnessTest::pollingStopsBehindPagesWithoutLiveValues() {
+void FreshnessTest::pagesWithoutLiveValuesOnlyWatchTheLink() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     MainWindow* window = shell->window();
@@ -134,11 +136,48 @@ void FreshnessTest::pollingStopsBehindPagesWithoutLiveValues() {
          {MainWindow::Connection, MainWindow::DeadTimes, MainWindow::Settings, MainWindow::Users,
           MainWindow::Plc, MainWindow::Backup, MainWindow::Terminal}) {
         window->showSection(quiet);
-        QVERIFY2(!monitor->isPolling(), qPrintable(QString::number(int(quiet))));
+        // Only a slow heartbeat watches the link there (issue 12, point 4).
+        QVERIFY2(monitor->isPolling(), qPrintable(QString::number(int(quiet))));
+        QVERIFY(monitor->pollInterval() >= 2000);
     }
-    QVERIFY(!shell->session()->freshness()->isLive());
     window->showSection(MainWindow::Monitor);
     QVERIFY(monitor->isPolling());
+    QCOMPARE(monitor->pollInterval(), 250);
+}
+
+void FreshnessTest::killedSimulatorTurnsTheConnectionPageStale() {
+    // Issue 12, point 4: nothing but the heartbeat polls on the Connection
+    // page; the killed simulator must still show there, by itself.
+    PtySimulator sim;
+    auto shell = startOnPty(sim);
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    window->showSection(MainWindow::Connection);
+    LiveFreshness* freshness = shell->session()->freshness();
+    QTRY_VERIFY_WITH_TIMEOUT(freshness->isLive(), kDeviceTimeoutMs);
+    QVERIFY(!window->connectionStrip()->isAlarm());
+    sim.stop();
+    QTRY_VERIFY_WITH_TIMEOUT(window->connectionStrip()->isAlarm(), kDeviceTimeoutMs);
+    QVERIFY(!window->connectionIndicator()->stateText().startsWith(QStringLiteral("Connected")));
+}
+
+void FreshnessTest::pollRateReturnsOnceTheLineCarriesItAgain() {
+    // Issue 12, point 8: one stall slowed the poll for good.
+    PtySimulator sim;
+    auto shell = startOnPty(sim);
+    QVERIFY(shell);
+    MainWindow* window = shell->window();
+    MonitorPage* monitor = window->monitorPage();
+    window->showSection(MainWindow::Monitor);
+    QTRY_VERIFY_WITH_TIMEOUT(shell->session()->freshness()->isLive(), kDeviceTimeoutMs);
+    // A stall: answers come late (a retry), and the poll slows down.
+    sim.fallSilent(true);
+    QTest::qWait(400);
+    sim.fallSilent(false);
+    QTRY_VERIFY_WITH_TIMEOUT(shell->session()->freshness()->isLive(), kDeviceTimeoutMs);
+    // Answered in time again: the chosen rate and no note.
+    QTRY_COMPARE_WITH_TIMEOUT(monitor->pollInterval(), 250, kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(monitor->rateNote().isEmpty(), kDeviceTimeoutMs);
 }
 
 void FreshnessTest::pollRateTheLineCannotCarryIsAdjustedWithAWord() {

@@ -12,12 +12,16 @@
 #include "ui/language.h"
 #include "ui/print_diagram.h"
 #include "ui/progress_page.h"
+#include "ui/report_pages.h"
+#include "ui/setting_field.h"
 #include "ui/theme.h"
 #include "ui/users_page.h"
 
 #include <QAbstractButton>
+#include <QAbstractTextDocumentLayout>
 #include <QMessageBox>
 #include <QTemporaryDir>
+#include <QTextBlock>
 #include <QTextDocument>
 #include <QtTest>
 
@@ -55,6 +59,8 @@ private Q_SLOTS:
     void reportMarksUnwrittenValues();
     void reportSaysOfflineOnlyWhenOffline();
     void reportDiagramIsDrawnForPrintWithAllOutputs();
+    void noHeadingStandsAloneAtAPageFoot();
+    void reportMinimumCycleTimeIsInMilliseconds();
     void deadTimeWriteCountsOverTheDevicesOutputs();
     void userWriteCountsTheUnchangedUsers();
     void backupGivesNoGuessedTimeLeft();
@@ -259,6 +265,38 @@ void ReportAndCountsTest::restoreToTheSameDeviceAsksItsOwnConfirmation() {
                  qPrintable(restore->progressPage()->reportText()));
     }
     restore->close();
+}
+
+void ReportAndCountsTest::noHeadingStandsAloneAtAPageFoot() {
+    // Issue 12, point 8: a heading at a page's end, its table on the next.
+    QString html;
+    for (int section = 0; section < 12; ++section) {
+        html += QStringLiteral("<h2>Section %1</h2>").arg(section);
+        for (int line = 0; line < 3 + section % 5; ++line)
+            html += QStringLiteral("<p>Line %1 of section %2</p>").arg(line).arg(section);
+    }
+    QTextDocument document;
+    document.setHtml(html);
+    const qreal pageHeight = 300;
+    document.setPageSize(QSizeF(400, pageHeight));
+    QVERIFY(keepHeadingsWithText(document) > 0);
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() == 0) continue;
+        const qreal top = document.documentLayout()->blockBoundingRect(block).top();
+        const qreal onPage = top - std::floor(top / pageHeight) * pageHeight;
+        QVERIFY2(onPage < pageHeight * 0.8, qPrintable(block.text()));
+    }
+}
+
+void ReportAndCountsTest::reportMinimumCycleTimeIsInMilliseconds() {
+    // "Minimum cycle time 0 0.1 ms" was printed; the value is in 0.1 ms steps.
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (qstrcmp(spec.key, "targetCycleTime") != 0) continue;
+        QCOMPARE(SettingField::textWithUnit(spec, 125), QStringLiteral("12.5 ms"));
+        QCOMPARE(SettingField::textWithUnit(spec, 0), QStringLiteral("0.0 ms"));
+        return;
+    }
+    QFAIL("no setting targetCycleTime");
 }
 
 QTEST_MAIN(ReportAndCountsTest)

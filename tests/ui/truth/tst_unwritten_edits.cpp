@@ -84,9 +84,13 @@ void UnwrittenEditsTest::readEverythingWithEditsAsksPerSection() {
     cams->setCam(0, 1, 0, {15, 90});
     cams->setDeadTime(2, cams->deadTime(2) + 10);
     QList<EditSection> asked;
+    QString camDetails;
+    QString deadTimeDetails;
     // Keep the cam edit, take the device's dead times.
-    NextDialog<ReplaceEditsDialog> answer([&asked](ReplaceEditsDialog* dialog) {
+    NextDialog<ReplaceEditsDialog> answer([&](ReplaceEditsDialog* dialog) {
         asked = dialog->sections();
+        camDetails = dialog->detailsText(EditSection::Cams);
+        deadTimeDetails = dialog->detailsText(EditSection::OutputSettings);
         dialog->choose(EditSection::Cams, true);
         dialog->choose(EditSection::OutputSettings, false);
         dialog->accept();
@@ -96,6 +100,13 @@ void UnwrittenEditsTest::readEverythingWithEditsAsksPerSection() {
     QVERIFY(done.wait(kDeviceTimeoutMs));
     QVERIFY(done.first().first().toBool());
     QCOMPARE(asked, (QList<EditSection>{EditSection::Cams, EditSection::OutputSettings}));
+    // The question names the outputs, the edit and what the device holds (point 8).
+    QVERIFY2(camDetails.startsWith(QStringLiteral("Program 0, output 1: yours 15–90")),
+             qPrintable(camDetails));
+    QVERIFY2(camDetails.contains(QStringLiteral("the device now holds 10–90")),
+             qPrintable(camDetails));
+    QVERIFY2(deadTimeDetails.startsWith(QStringLiteral("Output 2 dead time: yours")),
+             qPrintable(deadTimeDetails));
     QCOMPARE(cams->track(0, 1).cams.first(), (Cam{15, 90}));
     QCOMPARE(cams->deadTime(2), ws->deviceDeadTime(2));
     // Every program is known now.

@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -114,6 +115,16 @@ void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
     QVERIFY2(seen.fitsScreen, "the report dialog must fit the screen with its OK button");
     QVERIFY2(seen.details.contains(QStringLiteral("output 3")), qPrintable(seen.details));
     QCOMPARE(cams->deviceTrack(0, 3)->cams, sim.track(0, 3));
+    // The report can be opened again from the status bar (point 8).
+    auto* lastWrite = shell->window()->findChild<QToolButton*>(QStringLiteral("lastWriteReport"));
+    QVERIFY(lastWrite);
+    QVERIFY2(lastWrite->text().contains(QStringLiteral("NOT complete")),
+             qPrintable(lastWrite->text()));
+    seen = {};
+    const auto again = recordReport(seen);
+    lastWrite->click();
+    QTRY_COMPARE_WITH_TIMEOUT(again->answered(), 1, kDeviceTimeoutMs);
+    QVERIFY2(seen.details.contains(QStringLiteral("output 3")), qPrintable(seen.details));
 
     // Compare asks the device, and shows what it holds now.
     CompareDialog* compare = shell->window()->openCompare();

@@ -1,0 +1,60 @@
+#include "report_pages.h"
+
+#include <QAbstractTextDocumentLayout>
+#include <QPagedPaintDevice>
+#include <QPainter>
+#include <QTextBlock>
+#include <QTextCursor>
+#include <QTextDocument>
+#include <cmath>
+
+namespace cambench {
+
+namespace {
+// A heading that starts below this part of its page moves to the next page.
+constexpr double kHeadingFoot = 0.8;
+}  // namespace
+
+int keepHeadingsWithText(QTextDocument& document) {
+    const qreal pageHeight = document.pageSize().height();
+    if (pageHeight <= 0) return 0;
+    int moved = 0;
+    for (QTextBlock block = document.begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() == 0) continue;
+        // Positions follow each page break already inserted above.
+        const qreal top = document.documentLayout()->blockBoundingRect(block).top();
+        const qreal onPage = top - std::floor(top / pageHeight) * pageHeight;
+        if (onPage < pageHeight * kHeadingFoot) continue;
+        QTextBlockFormat format;
+        format.setPageBreakPolicy(QTextFormat::PageBreak_AlwaysBefore);
+        QTextCursor(block).mergeBlockFormat(format);
+        ++moved;
+    }
+    return moved;
+}
+
+void printWithPageNumbers(QTextDocument& document, QPagedPaintDevice& device,
+                          const QString& pageText) {
+    QPainter painter(&device);
+    const qreal width = device.width();
+    const qreal footer = painter.fontMetrics().height() * 2.5;
+    const qreal pageHeight = device.height() - footer;
+    document.setPageSize(QSizeF(width, pageHeight));
+    keepHeadingsWithText(document);
+    const int pages = document.pageCount();
+    for (int page = 0; page < pages; ++page) {
+        if (page > 0) device.newPage();
+        const QRectF shown(0, page * pageHeight, width, pageHeight);
+        painter.save();
+        painter.translate(0, -shown.top());
+        painter.setClipRect(shown);
+        QAbstractTextDocumentLayout::PaintContext context;
+        context.clip = shown;
+        document.documentLayout()->draw(&painter, context);
+        painter.restore();
+        painter.drawText(QRectF(0, pageHeight, width, footer), Qt::AlignCenter,
+                         pageText.arg(page + 1).arg(pages));
+    }
+}
+
+}  // namespace cambench
