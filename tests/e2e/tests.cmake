@@ -16,9 +16,12 @@ function(cambench_add_e2e_test name)
 endfunction()
 
 cambench_add_e2e_test(tst_e2e_cli e2e/tst_e2e_cli.cpp)
-# `cambench --help` is run there too: it must not need a display.
-target_compile_definitions(tst_e2e_cli PRIVATE CAMBENCH_GUI_EXE="$<TARGET_FILE:cambench>")
-add_dependencies(tst_e2e_cli cambench)
+# `cambench --help` is run there too (it must not need a display) when the
+# desktop application is built; the fuzz build leaves it out.
+if(TARGET cambench)
+  target_compile_definitions(tst_e2e_cli PRIVATE CAMBENCH_GUI_EXE="$<TARGET_FILE:cambench>")
+  add_dependencies(tst_e2e_cli cambench)
+endif()
 cambench_add_e2e_test(tst_e2e_eeprom e2e/tst_e2e_eeprom.cpp)
 cambench_add_e2e_test(tst_e2e_faults e2e/tst_e2e_faults.cpp)
 cambench_add_e2e_test(tst_e2e_line e2e/tst_e2e_line.cpp)
