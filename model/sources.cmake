@@ -1,5 +1,7 @@
 target_sources(cambench_model PRIVATE
   result.h
+  walked_list.h
+  walked_list.cpp
   camcon/cam_program.h
   camcon/device_info.h
   camcon/device_info.cpp

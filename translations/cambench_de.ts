@@ -108,6 +108,10 @@
             <numerusform>%n geänderte Werte auf dieser Seite sind nicht geschrieben. Durch die Werte im Gerät ersetzen?</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Not sent, as the device would refuse it (the device is untouched; correct the marked values):</source>
+        <translation>Nicht gesendet, weil das Gerät es ablehnen würde (das Gerät ist unverändert; korrigieren Sie die markierten Werte):</translation>
+    </message>
 </context>
 <context>
     <name>Settings</name>
@@ -1001,6 +1005,13 @@
     </message>
 </context>
 <context>
+    <name>cambench</name>
+    <message>
+        <source>On the device: %1</source>
+        <translation>Im Gerät: %1</translation>
+    </message>
+</context>
+<context>
     <name>cambench::AccessGridModel</name>
     <message>
         <source>Output %1: allowed (the user may change all outputs)</source>
@@ -1083,6 +1094,14 @@
     <message>
         <source>Write analogue cams</source>
         <translation>Analognocken schreiben</translation>
+    </message>
+    <message>
+        <source>Not read from the device yet.</source>
+        <translation>Noch nicht aus dem Gerät gelesen.</translation>
+    </message>
+    <message>
+        <source>no such point</source>
+        <translation>kein solcher Punkt</translation>
     </message>
 </context>
 <context>
@@ -2361,6 +2380,22 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Write dead-time modes</source>
         <translation>Totzeit-Modi schreiben</translation>
     </message>
+    <message>
+        <source>Not read from the device yet.</source>
+        <translation>Noch nicht aus dem Gerät gelesen.</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>On the device: %1</source>
+        <translation>Im Gerät: %1</translation>
+    </message>
+    <message>
+        <source>Edited, not written to the device</source>
+        <translation>Geändert, nicht ins Gerät geschrieben</translation>
+    </message>
 </context>
 <context>
     <name>cambench::DeadTimesModel</name>
@@ -3046,6 +3081,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>The device did not identify itself: %1 Your edits are kept.</source>
         <translation>Das Gerät hat sich nicht identifiziert: %1 Ihre Änderungen bleiben erhalten.</translation>
     </message>
+    <message>
+        <source>Edited on their own pages (write them there): %1</source>
+        <translation>Auf ihren eigenen Seiten geändert (dort schreiben): %1</translation>
+    </message>
 </context>
 <context>
     <name>cambench::MonitorPage</name>
@@ -3238,6 +3277,181 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
+    <name>cambench::PlcCouplingPage</name>
+    <message>
+        <source>PLC coupling</source>
+        <translation>SPS-Kopplung</translation>
+    </message>
+    <message>
+        <source>none on</source>
+        <translation>keiner ein</translation>
+    </message>
+    <message>
+        <source>on: %1</source>
+        <translation>ein: %1</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>An S7 with a CP340 drives the CamCon with the short commands 0x01 to 0x07. This page sends the same telegrams as the function block and shows the answers as the data block holds them. When the CamCon answers here as expected, look for the fault in the PLC program or the CP340&apos;s settings.</source>
+        <translation>Eine S7 mit CP340 steuert das CamCon mit den Kurzbefehlen 0x01 bis 0x07. Diese Seite sendet dieselben Telegramme wie der Funktionsbaustein und zeigt die Antworten so, wie der Datenbaustein sie enthält. Antwortet das CamCon hier wie erwartet, liegt der Fehler im SPS-Programm oder in den Einstellungen des CP340.</translation>
+    </message>
+    <message>
+        <source>Read status (0x01)</source>
+        <translation>Status lesen (0x01)</translation>
+    </message>
+    <message>
+        <source>Reset errors (0x02)</source>
+        <translation>Fehler quittieren (0x02)</translation>
+    </message>
+    <message>
+        <source>Change program (0x03)</source>
+        <translation>Programm wechseln (0x03)</translation>
+    </message>
+    <message>
+        <source>Program:</source>
+        <translation>Programm:</translation>
+    </message>
+    <message>
+        <source>Area 1: status</source>
+        <translation>Bereich 1: Status</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>Read cams (0x04)</source>
+        <translation>Nocken lesen (0x04)</translation>
+    </message>
+    <message>
+        <source>Write cams (0x05)…</source>
+        <translation>Nocken schreiben (0x05)…</translation>
+    </message>
+    <message>
+        <source>Add cam</source>
+        <translation>Nocke hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove cam</source>
+        <translation>Nocke entfernen</translation>
+    </message>
+    <message>
+        <source>Output:</source>
+        <translation>Ausgang:</translation>
+    </message>
+    <message>
+        <source>Area 2: cam table</source>
+        <translation>Bereich 2: Nockentabelle</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Read dead time (0x06)</source>
+        <translation>Totzeit lesen (0x06)</translation>
+    </message>
+    <message>
+        <source>Write dead time (0x07)…</source>
+        <translation>Totzeit schreiben (0x07)…</translation>
+    </message>
+    <message>
+        <source>Area 3: dead times (of the output above)</source>
+        <translation>Bereich 3: Totzeiten (des Ausgangs oben)</translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation>Noch nicht gelesen.</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>outputs %1–%2: %3</source>
+        <translation>Ausgänge %1–%2: %3</translation>
+    </message>
+    <message>
+        <source>A PLC program reading the status sees: actual value %1, speed %2, program %3 active, device status %4, %5 outputs, %6. To change the program it writes the wanted number into DW 34; the function block sends 0x03 while DW 14 and DW 34 differ.</source>
+        <translation>Ein SPS-Programm, das den Status liest, sieht: Istwert %1, Geschwindigkeit %2, Programm %3 aktiv, Gerätestatus %4, %5 Ausgänge, %6. Zum Programmwechsel schreibt es die gewünschte Nummer in DW 34; der Funktionsbaustein sendet 0x03, solange DW 14 und DW 34 verschieden sind.</translation>
+    </message>
+    <message>
+        <source>none of them on</source>
+        <translation>keiner davon ein</translation>
+    </message>
+    <message>
+        <source>Read the status (0x01)</source>
+        <translation>Status lesen (0x01)</translation>
+    </message>
+    <message>
+        <source>Not read: the status is unknown.</source>
+        <translation>Nicht gelesen: der Status ist unbekannt.</translation>
+    </message>
+    <message>
+        <source>Reading the status</source>
+        <translation>Lesen des Status</translation>
+    </message>
+    <message>
+        <source>Reset the errors (0x02)</source>
+        <translation>Fehler quittieren (0x02)</translation>
+    </message>
+    <message>
+        <source>Switch the CamCon to program %1 (0x03)? Its outputs follow the cams of program %1 at once.</source>
+        <translation>Das CamCon auf Programm %1 umschalten (0x03)? Seine Ausgänge folgen sofort den Nocken von Programm %1.</translation>
+    </message>
+    <message>
+        <source>Change the program (0x03)</source>
+        <translation>Programm wechseln (0x03)</translation>
+    </message>
+    <message>
+        <source>Read the cams (0x04)</source>
+        <translation>Nocken lesen (0x04)</translation>
+    </message>
+    <message>
+        <source>Reading the cams</source>
+        <translation>Lesen der Nocken</translation>
+    </message>
+    <message>
+        <source>Program %1, output %2: %3 cams as a PLC reads them (DB+0 AUSG_NR %2, DB+1 ANZ_NOCKEN %3).</source>
+        <translation>Programm %1, Ausgang %2: %3 Nocken, wie eine SPS sie liest (DB+0 AUSG_NR %2, DB+1 ANZ_NOCKEN %3).</translation>
+    </message>
+    <message>
+        <source>Replace the cams of output %1 in program %2 by the %3 cams shown (0x05)? If program %2 runs, output %1 switches by them at once.</source>
+        <translation>Die Nocken von Ausgang %1 in Programm %2 durch die %3 gezeigten Nocken ersetzen (0x05)? Läuft Programm %2, schaltet Ausgang %1 sofort danach.</translation>
+    </message>
+    <message>
+        <source>Write the cams (0x05)</source>
+        <translation>Nocken schreiben (0x05)</translation>
+    </message>
+    <message>
+        <source>Read the dead time (0x06)</source>
+        <translation>Totzeit lesen (0x06)</translation>
+    </message>
+    <message>
+        <source>Not read: the dead time is unknown.</source>
+        <translation>Nicht gelesen: die Totzeit ist unbekannt.</translation>
+    </message>
+    <message>
+        <source>Reading the dead time</source>
+        <translation>Lesen der Totzeit</translation>
+    </message>
+    <message>
+        <source>Set the dead time of output %1 to %2 (0x07)? The output switches that much earlier from now on.</source>
+        <translation>Die Totzeit von Ausgang %1 auf %2 setzen (0x07)? Der Ausgang schaltet ab sofort um so viel früher.</translation>
+    </message>
+    <message>
+        <source>Write the dead time (0x07)</source>
+        <translation>Totzeit schreiben (0x07)</translation>
+    </message>
+</context>
+<context>
     <name>cambench::PlcMatrixModel</name>
     <message>
         <source>Path %1, symbol %2: word %3 (provisional decoding: high byte operand kind, low byte number; enter 4 hex digits or e.g. M11)</source>
@@ -3396,6 +3610,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Programming program %1 written.</source>
         <translation>Programmierprogramm %1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>On the device: %1</source>
+        <translation>Im Gerät: %1</translation>
+    </message>
+    <message>
+        <source>Not read from the device yet: the values shown are not the device&apos;s.</source>
+        <translation>Noch nicht aus dem Gerät gelesen: die gezeigten Werte sind nicht die des Geräts.</translation>
+    </message>
+    <message>
+        <source>Edited, not written to the device.</source>
+        <translation>Geändert, nicht ins Gerät geschrieben.</translation>
+    </message>
+    <message>
+        <source>As on the device.</source>
+        <translation>Wie im Gerät.</translation>
     </message>
 </context>
 <context>
@@ -4620,14 +4850,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>eine Antwort, die vor ihrem Ende abbrach</translation>
     </message>
     <message>
-        <source>the step to entry %1 was sent again after a lost reply</source>
-        <translation>der Schritt zu Eintrag %1 wurde nach einer verlorenen Antwort erneut gesendet</translation>
-    </message>
-    <message>
-        <source>reading the users: %1 walks through the list lost their place (%2); the list may be incomplete, so none is shown; check the cable and try again</source>
-        <translation>Lesen der Benutzer: %1 Durchläufe der Liste haben ihre Stelle verloren (%2); die Liste kann unvollständig sein, daher wird keine angezeigt; prüfen Sie das Kabel und versuchen Sie es erneut</translation>
-    </message>
-    <message>
         <source>restore: the device took every block but did not confirm that it started (!EE%1): %2. Run the same restore again. Cause</source>
         <translation>Wiederherstellung: das Gerät hat jeden Block angenommen, aber den Start nicht bestätigt (!EE%1): %2. Führen Sie dieselbe Wiederherstellung erneut aus. Ursache</translation>
     </message>
@@ -5020,10 +5242,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Rücksetzen des Fehlers (0x02)</translation>
     </message>
     <message>
-        <source>resetting the error</source>
-        <translation>Rücksetzen des Fehlers</translation>
-    </message>
-    <message>
         <source>selecting program %1 (0x03)</source>
         <translation>Anwählen von Programm %1 (0x03)</translation>
     </message>
@@ -5246,6 +5464,54 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>permission denied on %1 (%2): this user may not open the serial port, or another program holds it. On Linux, add the user to the group dialout (sudo usermod -aG dialout $USER), then log out and in again; close any other program that uses the port.</source>
         <translation>Zugriff verweigert auf %1 (%2): Dieser Benutzer darf die serielle Schnittstelle nicht öffnen, oder ein anderes Programm belegt sie. Unter Linux nehmen Sie den Benutzer in die Gruppe dialout auf (sudo usermod -aG dialout $USER) und melden sich dann ab und wieder an; schließen Sie jedes andere Programm, das die Schnittstelle benutzt.</translation>
+    </message>
+    <message>
+        <source>The short commands of the S7-CP340 coupling exist only in %1.</source>
+        <translation>Die Kurzbefehle der S7-CP340-Kopplung gibt es nur in %1.</translation>
+    </message>
+    <message>
+        <source>the end of the list</source>
+        <translation>dem Ende der Liste</translation>
+    </message>
+    <message>
+        <source>the start of the list</source>
+        <translation>dem Anfang der Liste</translation>
+    </message>
+    <message>
+        <source>user &quot;%1&quot;</source>
+        <translation>Benutzer „%1“</translation>
+    </message>
+    <message>
+        <source>between %1 and %2</source>
+        <translation>zwischen %1 und %2</translation>
+    </message>
+    <message>
+        <source>and %1 more places</source>
+        <translation>und %1 weiteren Stellen</translation>
+    </message>
+    <message>
+        <source>reading the users: the list changed while it was read (near %1); nothing is shown; read it again</source>
+        <translation>Lesen der Benutzer: die Liste hat sich beim Lesen geändert (bei %1); nichts wird gezeigt; lesen Sie erneut</translation>
+    </message>
+    <message>
+        <source>reading the users: after %1 walks through the list, %2 users were seen but one may still be missing %3; the list may be incomplete, so none is shown; check the cable and try again</source>
+        <translation>Lesen der Benutzer: nach %1 Durchläufen durch die Liste wurden %2 Benutzer gesehen, aber es kann noch einer fehlen %3; die Liste kann unvollständig sein, darum wird keiner gezeigt; prüfen Sie das Kabel und versuchen Sie es erneut</translation>
+    </message>
+    <message>
+        <source>reading output %1 of program %2 (0x04)</source>
+        <translation>Lesen von Ausgang %1 in Programm %2 (0x04)</translation>
+    </message>
+    <message>
+        <source>writing output %1 of program %2 (0x05)</source>
+        <translation>Schreiben von Ausgang %1 in Programm %2 (0x05)</translation>
+    </message>
+    <message>
+        <source>reading the dead time of output %1 (0x06)</source>
+        <translation>Lesen der Totzeit von Ausgang %1 (0x06)</translation>
+    </message>
+    <message>
+        <source>writing the dead time of output %1 (0x07)</source>
+        <translation>Schreiben der Totzeit von Ausgang %1 (0x07)</translation>
     </message>
 </context>
 <context>
@@ -6261,6 +6527,46 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>1 item: %1</source>
         <translation>1 Element: %1</translation>
+    </message>
+    <message>
+        <source>acknowledged; reading it back failed: %1</source>
+        <translation>quittiert; Zurücklesen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>the device acknowledged the write, but reads back another value</source>
+        <translation>das Gerät hat das Schreiben quittiert, liest aber einen anderen Wert zurück</translation>
+    </message>
+    <message>
+        <source>error reset (0x02)</source>
+        <translation>Fehlerquittierung (0x02)</translation>
+    </message>
+    <message>
+        <source>device status now: %1</source>
+        <translation>Gerätestatus jetzt: %1</translation>
+    </message>
+    <message>
+        <source>reading the device status failed: %1</source>
+        <translation>Lesen des Gerätestatus fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>; the cause is still there: check the encoder and the outputs</source>
+        <translation>; die Ursache besteht noch: prüfen Sie Geber und Ausgänge</translation>
+    </message>
+    <message>
+        <source>active program (0x03)</source>
+        <translation>aktives Programm (0x03)</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>Programm %1</translation>
+    </message>
+    <message>
+        <source>program %1, output %2 (0x05)</source>
+        <translation>Programm %1, Ausgang %2 (0x05)</translation>
+    </message>
+    <message>
+        <source>dead time of output %1 (0x07)</source>
+        <translation>Totzeit von Ausgang %1 (0x07)</translation>
     </message>
 </context>
 </TS>

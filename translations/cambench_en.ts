@@ -108,6 +108,10 @@
             <numerusform>%n edited values on this page are not written. Replace them with what the device holds?</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Not sent, as the device would refuse it (the device is untouched; correct the marked values):</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>Settings</name>
@@ -1001,6 +1005,13 @@
     </message>
 </context>
 <context>
+    <name>cambench</name>
+    <message>
+        <source>On the device: %1</source>
+        <translation type="unfinished">On the device: %1</translation>
+    </message>
+</context>
+<context>
     <name>cambench::AccessGridModel</name>
     <message>
         <source>Output %1: allowed (the user may change all outputs)</source>
@@ -1082,6 +1093,14 @@
     </message>
     <message>
         <source>Write analogue cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read from the device yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no such point</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2360,6 +2379,22 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Write dead-time modes</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Not read from the device yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <source>On the device: %1</source>
+        <translation type="unfinished">On the device: %1</translation>
+    </message>
+    <message>
+        <source>Edited, not written to the device</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::DeadTimesModel</name>
@@ -3044,6 +3079,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>The device did not identify itself: %1 Your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Edited on their own pages (write them there): %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::MonitorPage</name>
@@ -3236,6 +3275,181 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
+    <name>cambench::PlcCouplingPage</name>
+    <message>
+        <source>PLC coupling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <source>An S7 with a CP340 drives the CamCon with the short commands 0x01 to 0x07. This page sends the same telegrams as the function block and shows the answers as the data block holds them. When the CamCon answers here as expected, look for the fault in the PLC program or the CP340&apos;s settings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read status (0x01)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset errors (0x02)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change program (0x03)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Area 1: status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation type="unfinished">On</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished">Off</translation>
+    </message>
+    <message>
+        <source>Read cams (0x04)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write cams (0x05)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add cam</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove cam</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Area 2: cam table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"> ms</translation>
+    </message>
+    <message>
+        <source>Read dead time (0x06)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write dead time (0x07)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Area 3: dead times (of the output above)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>outputs %1–%2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A PLC program reading the status sees: actual value %1, speed %2, program %3 active, device status %4, %5 outputs, %6. To change the program it writes the wanted number into DW 34; the function block sends 0x03 while DW 14 and DW 34 differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none of them on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the status (0x01)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read: the status is unknown.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset the errors (0x02)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch the CamCon to program %1 (0x03)? Its outputs follow the cams of program %1 at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change the program (0x03)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the cams (0x04)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program %1, output %2: %3 cams as a PLC reads them (DB+0 AUSG_NR %2, DB+1 ANZ_NOCKEN %3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replace the cams of output %1 in program %2 by the %3 cams shown (0x05)? If program %2 runs, output %1 switches by them at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the cams (0x05)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the dead time (0x06)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read: the dead time is unknown.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the dead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the dead time of output %1 to %2 (0x07)? The output switches that much earlier from now on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the dead time (0x07)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::PlcMatrixModel</name>
     <message>
         <source>Path %1, symbol %2: word %3 (provisional decoding: high byte operand kind, low byte number; enter 4 hex digits or e.g. M11)</source>
@@ -3393,6 +3607,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Programming program %1 written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On the device: %1</source>
+        <translation type="unfinished">On the device: %1</translation>
+    </message>
+    <message>
+        <source>Not read from the device yet: the values shown are not the device&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edited, not written to the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As on the device.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4618,14 +4848,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>the step to entry %1 was sent again after a lost reply</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reading the users: %1 walks through the list lost their place (%2); the list may be incomplete, so none is shown; check the cable and try again</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>restore: the device took every block but did not confirm that it started (!EE%1): %2. Run the same restore again. Cause</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5018,10 +5240,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>resetting the error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>selecting program %1 (0x03)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5243,6 +5461,54 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>permission denied on %1 (%2): this user may not open the serial port, or another program holds it. On Linux, add the user to the group dialout (sudo usermod -aG dialout $USER), then log out and in again; close any other program that uses the port.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The short commands of the S7-CP340 coupling exist only in %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the end of the list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the start of the list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>user &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>between %1 and %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>and %1 more places</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the users: the list changed while it was read (near %1); nothing is shown; read it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the users: after %1 walks through the list, %2 users were seen but one may still be missing %3; the list may be incomplete, so none is shown; check the cable and try again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading output %1 of program %2 (0x04)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing output %1 of program %2 (0x05)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the dead time of output %1 (0x06)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing the dead time of output %1 (0x07)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -6258,6 +6524,46 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>1 item: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acknowledged; reading it back failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device acknowledged the write, but reads back another value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error reset (0x02)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>device status now: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the device status failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; the cause is still there: check the encoder and the outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>active program (0x03)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation type="unfinished">program %1</translation>
+    </message>
+    <message>
+        <source>program %1, output %2 (0x05)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dead time of output %1 (0x07)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1,5 +1,6 @@
 #include "analogue_cams_page.h"
 
+#include "change_marker.h"
 #include "device_session.h"
 #include "workspace.h"
 
@@ -85,10 +86,14 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
         m_table->insertRow(row);
         m_table->setItem(row, 0, numberItem(m_workspace->info().minPosition));
         m_table->setItem(row, 1, numberItem(0));
+        refreshEdits();
     });
     connect(remove, &QPushButton::clicked, this, [this] {
         if (m_table->currentRow() >= 0) m_table->removeRow(m_table->currentRow());
+        refreshEdits();
     });
+    connect(m_table, &QTableWidget::itemChanged, this, &AnalogueCamsPage::refreshEdits);
+    m_problems->setText(tr("Not read from the device yet."));
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const PageWriteReport& report) {
             Q_EMIT statusMessage(tr("Analogue cams: %1").arg(report.summary()));
@@ -137,6 +142,24 @@ void AnalogueCamsPage::setEdited(const AnalogueCamTrack& track) {
         m_table->setItem(row, 1, numberItem(track.points.at(row).value));
     }
     m_problems->clear();
+    refreshEdits();
+}
+
+void AnalogueCamsPage::refreshEdits() {
+    const QSignalBlocker blocker(m_table);
+    const AnalogueCamTrack now = edited();
+    const bool sameOutput = now.output == m_device.output;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const bool onDevice = sameOutput && row < m_device.points.size();
+        const AnaloguePoint device = onDevice ? m_device.points.at(row) : AnaloguePoint{};
+        const QString none = tr("no such point");
+        markEdited(m_table->item(row, 0),
+                   !onDevice || now.points.at(row).position != device.position,
+                   onDevice ? QString::number(device.position) : none);
+        markEdited(m_table->item(row, 1), !onDevice || now.points.at(row).value != device.value,
+                   onDevice ? QString::number(device.value) : none);
+    }
+    m_workspace->setPageEdits(sectionTitle(), int(changes().size()));
 }
 
 QList<PageChange> AnalogueCamsPage::changes() const {
@@ -162,7 +185,7 @@ void AnalogueCamsPage::writeItems(const QStringList& keys,
     if (!problems.isEmpty()) {
         // Nothing goes to the device that it would refuse.
         m_problems->setText(problems.join(QLatin1Char('\n')));
-        report.addFailure(all.first().item, Error::invalidData(problems.join(QLatin1Char(' '))));
+        report.addRefusal(all.first().item, problems.join(QLatin1Char(' ')));
         done(report);
         return;
     }
@@ -178,6 +201,7 @@ void AnalogueCamsPage::writeItems(const QStringList& keys,
             if (written) {
                 result.addWritten();
                 m_device = track;
+                refreshEdits();
             } else {
                 result.addFailure(label, written.error());
             }

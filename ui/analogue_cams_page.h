@@ -36,6 +36,10 @@ public:
     const AnalogueCamTrack& onDevice() const { return m_device; }
 
 private:
+    // Marks the edited points and tells the workspace whether the output
+    // shown differs from the device.
+    void refreshEdits();
+
     DeviceSession* m_session;
     Workspace* m_workspace;
     QSpinBox* m_output;

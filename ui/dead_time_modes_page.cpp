@@ -1,5 +1,6 @@
 #include "dead_time_modes_page.h"
 
+#include "change_marker.h"
 #include "device_session.h"
 #include "workspace.h"
 
@@ -9,6 +10,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -60,6 +62,8 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
     connect(read, &QPushButton::clicked, this, [this] {
         if (mayReplaceEdits(this, tr("Dead-time modes"), int(changes().size()))) readFromDevice();
     });
+    connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
+    m_note->setText(tr("Not read from the device yet."));
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const PageWriteReport& report) {
             Q_EMIT statusMessage(tr("Dead-time modes: %1").arg(report.summary()));
@@ -90,31 +94,69 @@ void DeadTimeModesPage::readFromDevice() {
 }
 
 void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
-    m_table->setRowCount(int(modes.size()));
-    int row = 0;
-    for (auto it = modes.begin(); it != modes.end(); ++it, ++row) {
-        auto* output = new QTableWidgetItem(QString::number(it.key()));
-        output->setFlags(Qt::ItemIsEnabled);
-        output->setData(Qt::UserRole, it.key());
-        m_table->setItem(row, OutputColumn, output);
-        auto* mode = new QComboBox;
-        mode->addItem(tr("Normal"), int(DeadTimeMode::Normal));
-        mode->addItem(tr("On/off"), int(DeadTimeMode::SeparateOnOff));
-        mode->addItem(tr("Path-time"), int(DeadTimeMode::PathTime));
-        m_table->setCellWidget(row, ModeColumn, mode);
-        m_table->setItem(row, NormalColumn, msItem(0));
-        m_table->setItem(row, OnColumn, msItem(0));
-        m_table->setItem(row, OffColumn, msItem(0));
+    {
+        // Filled row by row: the edits are looked at once all rows are there.
+        const QSignalBlocker blocker(m_table);
+        m_table->setRowCount(int(modes.size()));
+        int row = 0;
+        for (auto it = modes.begin(); it != modes.end(); ++it, ++row) {
+            auto* output = new QTableWidgetItem(QString::number(it.key()));
+            output->setFlags(Qt::ItemIsEnabled);
+            output->setData(Qt::UserRole, it.key());
+            m_table->setItem(row, OutputColumn, output);
+            auto* mode = new QComboBox;
+            mode->addItem(tr("Normal"), int(DeadTimeMode::Normal));
+            mode->addItem(tr("On/off"), int(DeadTimeMode::SeparateOnOff));
+            mode->addItem(tr("Path-time"), int(DeadTimeMode::PathTime));
+            connect(mode, &QComboBox::currentIndexChanged, this, &DeadTimeModesPage::refreshEdits);
+            m_table->setCellWidget(row, ModeColumn, mode);
+            m_table->setItem(row, NormalColumn, msItem(0));
+            m_table->setItem(row, OnColumn, msItem(0));
+            m_table->setItem(row, OffColumn, msItem(0));
+        }
+        for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
     }
-    for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
     m_note->setText(
         tr("Largest dead time: %1 ms").arg(m_workspace->info().maxDeadTime / kTenthsPerMs));
+    refreshEdits();
+}
+
+void DeadTimeModesPage::refreshEdits() {
+    // Setting a font changes the item: no recursion through itemChanged.
+    const QSignalBlocker blocker(m_table);
+    const auto ms = [](qint32 tenths) { return tr("%1 ms").arg(tenths / kTenthsPerMs); };
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
+        if (!outputItem) continue;
+        const int output = outputItem->data(Qt::UserRole).toInt();
+        const OutputDeadTime device = m_device.value(output);
+        const OutputDeadTime now = edited(output);
+        auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
+        if (!mode) continue;  // the row is being filled
+        QFont modeFont = mode->font();
+        modeFont.setBold(now.mode != device.mode);
+        mode->setFont(modeFont);
+        mode->setToolTip(
+            now.mode != device.mode
+                ? tr("On the device: %1").arg(mode->itemText(mode->findData(int(device.mode))))
+                : QString());
+        bool any = now.mode != device.mode;
+        any |= markEdited(m_table->item(row, NormalColumn), now.normal != device.normal,
+                          ms(device.normal));
+        any |= markEdited(m_table->item(row, OnColumn), now.on != device.on, ms(device.on));
+        any |= markEdited(m_table->item(row, OffColumn), now.off != device.off, ms(device.off));
+        outputItem->setText((any ? changedMarker() : QString()) + QString::number(output));
+        markEdited(outputItem, any, QString());
+        outputItem->setToolTip(any ? tr("Edited, not written to the device") : QString());
+    }
+    m_workspace->setPageEdits(sectionTitle(), int(changes().size()));
 }
 
 OutputDeadTime DeadTimeModesPage::edited(int output) const {
     const int row = rowOf(output);
     if (row < 0) return m_device.value(output);
     const auto* mode = qobject_cast<const QComboBox*>(m_table->cellWidget(row, ModeColumn));
+    if (!mode) return m_device.value(output);  // the row is being filled
     return OutputDeadTime{
         DeadTimeMode(mode->currentData().toInt()), tenthsOf(m_table->item(row, NormalColumn)),
         tenthsOf(m_table->item(row, OnColumn)), tenthsOf(m_table->item(row, OffColumn))};
@@ -173,7 +215,7 @@ void DeadTimeModesPage::writeItems(const QStringList& keys,
         // Checked against the device before the first byte.
         const QString problem = outputDeadTimeProblem(output, deadTime, m_workspace->info());
         if (!problem.isEmpty()) {
-            report.addFailure(difference.item, Error::invalidData(problem));
+            report.addRefusal(difference.item, problem);
             continue;
         }
         items.append({difference.key, difference.item, output, deadTime});
@@ -203,6 +245,7 @@ void DeadTimeModesPage::writeItems(const QStringList& keys,
                 for (const Item& item : items)
                     if (item.key == outcome.key) m_device.insert(item.output, item.deadTime);
             }
+            refreshEdits();
             done(result);
         });
 }

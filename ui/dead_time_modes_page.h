@@ -38,6 +38,9 @@ public:
 
 private:
     void showModes(const DeadTimeModes& modes);
+    // Marks every edited cell and output and tells the workspace how many
+    // outputs differ from the device.
+    void refreshEdits();
     int rowOf(int output) const;  // -1 when the output is not shown
 
     DeviceSession* m_session;

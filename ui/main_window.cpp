@@ -22,6 +22,7 @@
 #include "line_backup_dialog.h"
 #include "monitor_page.h"
 #include "new_project_dialog.h"
+#include "plc_coupling_page.h"
 #include "plc_page.h"
 #include "programming_program_page.h"
 #include "project_io.h"
@@ -135,7 +136,8 @@ void MainWindow::createPages() {
                gate(new DeadTimeModesPage(m_session, m_workspace), Cap::DeadTimeModes),
                gate(new AnalogueCamsPage(m_session, m_workspace), Cap::AnalogueCams),
                gate(new ProgrammingProgramPage(m_session, m_workspace), Cap::ProgrammingProgram),
-               gate(new EepromLockPage(m_session), Cap::EepromLock)};
+               gate(new EepromLockPage(m_session), Cap::EepromLock),
+               gate(new PlcCouplingPage(m_session), Cap::ShortCommands)};
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
         m_nav->addItem(page->sectionTitle());
@@ -499,6 +501,12 @@ bool MainWindow::confirmClose() {
         QMessageBox::Warning, tr("Unwritten changes"),
         tr("%n change(s) are not written to the device. Close anyway?", nullptr, changes),
         QMessageBox::NoButton, this);
+    // Edits of the table interface's own pages are not in Compare: name them.
+    const QStringList onPages = m_workspace->pageEditSections();
+    if (!onPages.isEmpty()) {
+        box.setInformativeText(tr("Edited on their own pages (write them there): %1")
+                                   .arg(onPages.join(QStringLiteral(", "))));
+    }
     QPushButton* compare = box.addButton(tr("Compare with device…"), QMessageBox::AcceptRole);
     QPushButton* save = box.addButton(tr("Save project…"), QMessageBox::ActionRole);
     box.addButton(tr("Close without writing"), QMessageBox::DestructiveRole);

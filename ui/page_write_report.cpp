@@ -10,6 +10,11 @@ void PageWriteReport::addFailure(const QString& item, const Error& error) {
     failures << QCoreApplication::translate("PageWriteReport", "%1: %2").arg(item, error.message);
 }
 
+void PageWriteReport::addRefusal(const QString& item, const QString& reason) {
+    ++failed;
+    refusals << QCoreApplication::translate("PageWriteReport", "%1: %2").arg(item, reason);
+}
+
 void PageWriteReport::add(const PageItemOutcomes& outcomes) {
     for (const PageItemOutcome& outcome : outcomes) {
         if (outcome.error.kind == ErrorKind::None) {
@@ -29,6 +34,13 @@ QString PageWriteReport::summary() const {
 
 QString PageWriteReport::details() const {
     QString text = summary();
+    if (!refusals.isEmpty()) {
+        text += QLatin1Char('\n') +
+                QCoreApplication::translate("PageWriteReport",
+                                            "Not sent, as the device would refuse it (the "
+                                            "device is untouched; correct the marked values):") +
+                QLatin1Char('\n') + refusals.join(QLatin1Char('\n'));
+    }
     if (!failures.isEmpty()) {
         text +=
             QLatin1Char('\n') +

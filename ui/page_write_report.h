@@ -39,10 +39,14 @@ struct PageWriteReport {
     int unchanged = 0;
     int failed = 0;
     QStringList failures;  // one sentence per failed item: which and why
+    // Items refused on the PC before anything was sent (they would not fit
+    // the device): counted as failed, listed apart, as the device is untouched.
+    QStringList refusals;
 
     void addWritten() { ++written; }
     void addUnchanged() { ++unchanged; }
     void addFailure(const QString& item, const Error& error);
+    void addRefusal(const QString& item, const QString& reason);
     void add(const PageItemOutcomes& outcomes);
 
     bool complete() const { return failed == 0; }

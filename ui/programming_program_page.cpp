@@ -1,6 +1,8 @@
 #include "programming_program_page.h"
 
+#include "change_marker.h"
 #include "device_session.h"
+#include "page_write_report.h"
 #include "workspace.h"
 
 #include <QComboBox>
@@ -23,7 +25,8 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
       m_program(new QSpinBox),
       m_mode(new QComboBox),
       m_switchValue(new QSpinBox),
-      m_problems(new QLabel) {
+      m_problems(new QLabel),
+      m_state(new QLabel) {
     m_program->setRange(0, 32767);
     m_mode->addItem(tr("Slow"), 0);
     m_mode->addItem(tr("Direct (within one cycle)"), 1);
@@ -47,11 +50,47 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(form);
+    layout->addWidget(m_state);
     layout->addLayout(buttons);
     layout->addWidget(m_problems);
     layout->addStretch();
-    connect(read, &QPushButton::clicked, this, &ProgrammingProgramPage::readFromDevice);
+    connect(read, &QPushButton::clicked, this, [this] {
+        const bool changed = m_device && !(edited() == *m_device);
+        if (mayReplaceEdits(this, sectionTitle(), changed ? 1 : 0)) readFromDevice();
+    });
     connect(write, &QPushButton::clicked, this, &ProgrammingProgramPage::writeToDevice);
+    connect(m_program, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::refreshEdits);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &ProgrammingProgramPage::refreshEdits);
+    connect(m_switchValue, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::refreshEdits);
+    refreshEdits();
+}
+
+void ProgrammingProgramPage::refreshEdits() {
+    const ProgrammingProgram now = edited();
+    const auto mark = [](QWidget* field, bool changed, const QString& onDevice) {
+        QFont font = field->font();
+        font.setBold(changed);
+        field->setFont(font);
+        field->setToolTip(changed ? tr("On the device: %1").arg(onDevice) : QString());
+    };
+    if (!m_device) {
+        // Values never read are not the device's: say so instead of
+        // showing the fields' zeros as if they were.
+        m_state->setText(
+            tr("Not read from the device yet: the values shown are not the "
+               "device's."));
+        m_workspace->setPageEdits(sectionTitle(), 0);
+        return;
+    }
+    mark(m_program, now.program != m_device->program, QString::number(m_device->program));
+    mark(m_mode, now.selectMode != m_device->selectMode,
+         m_mode->itemText(qMax(0, m_mode->findData(m_device->selectMode))));
+    mark(m_switchValue, now.switchValue != m_device->switchValue,
+         QString::number(m_device->switchValue));
+    const bool changed = !(now == *m_device);
+    m_state->setText(changed ? changedMarker() + tr("Edited, not written to the device.")
+                             : tr("As on the device."));
+    m_workspace->setPageEdits(sectionTitle(), changed ? 1 : 0);
 }
 
 ProgrammingProgram ProgrammingProgramPage::edited() const {
@@ -76,7 +115,9 @@ void ProgrammingProgramPage::readFromDevice() {
                                          .arg(programming.error().message));
                 return;
             }
+            m_device = programming.value();
             setEdited(programming.value());
+            refreshEdits();
         });
 }
 
@@ -98,7 +139,9 @@ void ProgrammingProgramPage::writeToDevice() {
                     tr("Writing the programming program failed: %1").arg(now.error().message));
                 return;
             }
+            m_device = now.value();
             setEdited(now.value());
+            refreshEdits();
             Q_EMIT statusMessage(tr("Programming program %1 written.").arg(now->program));
         });
 }

@@ -8,6 +8,8 @@ class QComboBox;
 class QLabel;
 class QSpinBox;
 
+#include <optional>
+
 namespace cambench {
 
 class DeviceSession;
@@ -30,12 +32,18 @@ public:
     void setEdited(const ProgrammingProgram& programming);
 
 private:
+    // Marks the fields that differ from the device, says whether the values
+    // are read, and tells the workspace whether there is an edit.
+    void refreshEdits();
+
     DeviceSession* m_session;
     Workspace* m_workspace;
     QSpinBox* m_program;
     QComboBox* m_mode;
     QSpinBox* m_switchValue;
     QLabel* m_problems;
+    QLabel* m_state;
+    std::optional<ProgrammingProgram> m_device;  // as last read or written
 };
 
 }  // namespace cambench

@@ -40,6 +40,8 @@ target_sources(cambench_ui PRIVATE
   analogue_cams_page.cpp
   eeprom_lock_page.h
   eeprom_lock_page.cpp
+  plc_coupling_page.h
+  plc_coupling_page.cpp
   programming_program_page.h
   programming_program_page.cpp
   protocols/protocol_settings_widget.h

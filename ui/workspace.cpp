@@ -345,8 +345,26 @@ void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
 // --- totals
 
 int Workspace::changedCount() const {
+    int onPages = 0;
+    for (int count : m_pageEdits) onPages += count;
     return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
-           int(changedPlcNetworks().size());
+           int(changedPlcNetworks().size()) + onPages;
+}
+
+void Workspace::setPageEdits(const QString& section, int count) {
+    if (count > 0) {
+        m_pageEdits.insert(section, count);
+    } else {
+        m_pageEdits.remove(section);
+    }
+    notifyChanged();
+}
+
+QStringList Workspace::pageEditSections() const {
+    QStringList sections;
+    for (auto it = m_pageEdits.cbegin(); it != m_pageEdits.cend(); ++it)
+        sections.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(it.value()));
+    return sections;
 }
 
 // --- which device the copies are from

@@ -110,6 +110,13 @@ public:
 
     // Every item that differs from the device, across all sections.
     int changedCount() const;
+    // Sections whose edits live on their own page (the table interface's
+    // dead-time modes, analogue cams, programming program) report how many
+    // items differ from the device: counted in the title and asked about
+    // before quitting like every other edit (issue 12, point 7).
+    void setPageEdits(const QString& section, int count);
+    // "Dead-time modes (2)", ... for each such section with edits.
+    QStringList pageEditSections() const;
 
     // --- Which device the device copies are from: the identity and
     // fingerprint read last (on a connect, or with a read of everything).
@@ -146,6 +153,7 @@ Q_SIGNALS:
 
 private:
     void notifyChanged();
+    QMap<QString, int> m_pageEdits;  // section title -> items edited on its page
     QString deviceNumberFor(const User& user) const;
     void mergeUsersFromFile(const QList<User>& users, bool keepEdits);
 

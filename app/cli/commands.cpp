@@ -21,6 +21,7 @@ const CommandGroup* findCommandGroup(const QString& name) {
         {"project", runProject},
         {"backup-line", runBackupLine},
         {"verify-line", runVerifyLine},
+        {"short", runShortCommands},
     };
     for (const CommandGroup& group : kGroups) {
         if (name == QLatin1String(group.name)) return &group;

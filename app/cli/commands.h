@@ -31,6 +31,7 @@ int runVerify(CliSession& session, CommandArgs& args);
 int runProject(CliSession& session, CommandArgs& args);
 int runBackupLine(CliSession& session, CommandArgs& args);
 int runVerifyLine(CliSession& session, CommandArgs& args);
+int runShortCommands(CliSession& session, CommandArgs& args);
 
 const CommandGroup* findCommandGroup(const QString& name);
 

@@ -24,6 +24,7 @@ add_executable(cambench-cli
   cli/project_commands.cpp
   cli/line_commands.cpp
   cli/port_commands.cpp
+  cli/coupling_commands.cpp
   cli/write_output.h
   cli/write_output.cpp
 )

@@ -108,13 +108,15 @@ QString readOptions(const QCommandLineParser& parser, Options& options) {
     }
     if (parser.isSet(QStringLiteral("drop-first")))
         config.faults.dropFirstReplyTo = parser.value(QStringLiteral("drop-first")).toLatin1();
-    for (const char* name : {"delay", "fill"}) {
+    for (const char* name : {"delay", "fill", "users"}) {
         if (!parser.isSet(QLatin1String(name))) continue;
         const int n = parser.value(QLatin1String(name)).toInt(&ok);
         if (!ok || n < 0)
             return QStringLiteral("--%1 needs a whole number of 0 or more.")
                 .arg(QLatin1String(name));
-        (QByteArray(name) == "delay" ? config.faults.extraDelayMs : config.fill) = n;
+        (QByteArray(name) == "delay"  ? config.faults.extraDelayMs
+         : QByteArray(name) == "fill" ? config.fill
+                                      : config.users) = n;
     }
     if (parser.isSet(QStringLiteral("seed"))) {
         config.faults.seed = parser.value(QStringLiteral("seed")).toUInt(&ok);
@@ -186,6 +188,10 @@ void addOptions(QCommandLineParser& parser) {
          QStringLiteral("Send replies at once instead of at the baud rate.")},
         {QStringLiteral("fill"),
          QStringLiteral("Benchmark state: n cams on every output of every program."),
+         QStringLiteral("n")},
+        {QStringLiteral("users"),
+         QStringLiteral("n users \"User 01\", \"User 02\", ... instead of the demo's two "
+                        "(at most 32)."),
          QStringLiteral("n")},
         {QStringLiteral("dead"), QStringLiteral("Never answer.")},
         {QStringLiteral("dead-devices"),

@@ -43,6 +43,11 @@ QString CamConDevice::lacks(CamConCapability capability) const {
             return QCoreApplication::translate("cambench::comm",
                                                "The EEPROM lock exists only in %1.")
                 .arg(table);
+        case CamConCapability::ShortCommands:
+            return QCoreApplication::translate(
+                       "cambench::comm",
+                       "The short commands of the S7-CP340 coupling exist only in %1.")
+                .arg(table);
         case CamConCapability::ProgrammingProgram:
             return QCoreApplication::translate(
                        "cambench::comm",

@@ -19,6 +19,10 @@
 
 namespace cambench::comm {
 
+namespace table {
+class ShortClient;
+}
+
 // What a CamCon protocol may or may not offer. The GUI and the CLI ask
 // before they offer an action; a missing one comes with a reason.
 enum class CamConCapability {
@@ -32,6 +36,7 @@ enum class CamConCapability {
     AnalogueCams,        // analogue cams (data areas 241..254): table interface
     EepromLock,          // EEPROM write lock, changes held in RAM: table interface
     ProgrammingProgram,  // a program other than the active one edited (DW70..73): table interface
+    ShortCommands,       // the S7-CP340 coupling's short commands 0x01..0x07: table interface
 };
 
 // Everything the GUI and the CLI ask of a CamCon, whatever the protocol.
@@ -122,6 +127,9 @@ public:
     // lost when the device is switched off.
     virtual Result<bool> readEepromLock();
     virtual Status writeEepromLock(bool locked);
+    // The S7-CP340 short commands 0x01..0x07, as a PLC sends them: on the
+    // table interface only, nullptr on the others.
+    virtual table::ShortClient* shortCommands() { return nullptr; }
 };
 
 }  // namespace cambench::comm

@@ -78,6 +78,16 @@ void fillBenchmarkCams(SimDevice& device, int camsPerTrack) {
     }
 }
 
+void fillUsers(SimDevice& device, int count) {
+    QList<SimUser>& users = device.state().users;
+    users.clear();
+    for (int i = 1; i <= std::min(count, device.profile().maxUsers); ++i) {
+        const QByteArray name = QByteArray("User ") + QByteArray::number(i).rightJustified(2, '0');
+        users.append(
+            demoUser(name.constData(), QByteArray::number(1000 + i).constData(), 0x01, i % 32));
+    }
+}
+
 namespace {
 
 // The profile `config` asks for: protocol number and room for its cams.
@@ -96,6 +106,7 @@ std::unique_ptr<SimDevice> makeDevice(const SimPortConfig& config, const SimProf
     auto device = std::make_unique<SimDevice>(sizedProfile(config, profile), number);
     loadDemoState(*device);
     if (config.fill > 0) fillBenchmarkCams(*device, config.fill);
+    if (config.users >= 0) fillUsers(*device, config.users);
     return device;
 }
 

@@ -21,6 +21,10 @@ void loadDemoState(SimDevice& device);
 // backup of more than 32 KiB).
 void fillBenchmarkCams(SimDevice& device, int camsPerTrack);
 
+// Replaces the users by `count` users "User 01" (number 1001), "User 02", ...
+// (at most the profile's maxUsers), for lists long enough to walk.
+void fillUsers(SimDevice& device, int count);
+
 // An ASCII line with the configured devices (demo or benchmark state) and faults.
 std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile = {});
 // The line `config` describes: ASCII (makeSimLine) or, with a table

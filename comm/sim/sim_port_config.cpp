@@ -10,7 +10,7 @@ const QString kPrefix = QStringLiteral("sim");
 const QString kKeys = QStringLiteral(
     "devices, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, lostdle, collision, "
     "linkfaults, "
-    "delay, seed, throttle, fill, dead");
+    "delay, seed, throttle, fill, users, dead");
 
 // The probabilities a key sets.
 QList<double*> probabilitiesOf(SimFaultSettings& faults, const QString& key) {
@@ -69,11 +69,14 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         if (value.size() < 2 || (value.at(0) != u'?' && value.at(0) != u'!'))
             return badValue(port, key, value, QStringLiteral("a request start such as !EE0000"));
         config.faults.dropFirstReplyTo = value.toLatin1();
-    } else if (key == QLatin1String("delay") || key == QLatin1String("fill")) {
+    } else if (key == QLatin1String("delay") || key == QLatin1String("fill") ||
+               key == QLatin1String("users")) {
         const int n = value.toInt(&ok);
         if (!ok || n < 0)
             return badValue(port, key, value, QStringLiteral("a whole number of 0 or more"));
-        (key == QLatin1String("delay") ? config.faults.extraDelayMs : config.fill) = n;
+        (key == QLatin1String("delay")  ? config.faults.extraDelayMs
+         : key == QLatin1String("fill") ? config.fill
+                                        : config.users) = n;
     } else if (key == QLatin1String("seed")) {
         config.faults.seed = value.toUInt(&ok);
         if (!ok) return badValue(port, key, value, QStringLiteral("a whole number"));

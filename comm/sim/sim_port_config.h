@@ -24,6 +24,7 @@ struct SimPortConfig {
     int baud = 9600;
     bool throttle = true;  // false: bytes arrive at once
     int fill = 0;          // > 0: benchmark cams per track instead of the demo cams
+    int users = -1;        // >= 0: this many users instead of the demo's two
     SimFaultSettings faults;
     QList<int> deadDevices;  // devices of the line that never answer (cambench-sim --dead-devices)
 

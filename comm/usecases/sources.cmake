@@ -19,4 +19,6 @@ target_sources(cambench_usecases PRIVATE
   backup_restore.cpp
   line_backup.h
   line_backup.cpp
+  short_coupling.h
+  short_coupling.cpp
 )

@@ -19,3 +19,5 @@ cambench_add_test(ui_shell_small_faults_test SOURCES ui/register_widgets.cpp ui/
 cambench_add_truth_test(ui_shell_typed_port_test ui/shell/tst_typed_port.cpp)
 cambench_add_test(ui_shell_gui_settings_test SOURCES ui/register_widgets.cpp ui/shell/tst_gui_settings.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_line_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_line_backup.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
+cambench_add_test(ui_shell_plc_coupling_test SOURCES ui/register_widgets.cpp ui/shell/tst_plc_coupling.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
+cambench_add_test(ui_shell_table_page_edits_test SOURCES ui/register_widgets.cpp ui/shell/tst_table_page_edits.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)

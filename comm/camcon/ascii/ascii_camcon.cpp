@@ -33,6 +33,7 @@ bool AsciiCamCon::has(CamConCapability capability) const {
         case CamConCapability::AnalogueCams:
         case CamConCapability::EepromLock:
         case CamConCapability::ProgrammingProgram:
+        case CamConCapability::ShortCommands:
             return false;
     }
     return false;

@@ -20,6 +20,8 @@ target_sources(cambench_comm PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/cam_track_words.cpp
   ${CMAKE_CURRENT_LIST_DIR}/short_commands.h
   ${CMAKE_CURRENT_LIST_DIR}/short_commands.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/short_client.h
+  ${CMAKE_CURRENT_LIST_DIR}/short_client.cpp
   ${CMAKE_CURRENT_LIST_DIR}/table_logging.h
   ${CMAKE_CURRENT_LIST_DIR}/table_logging.cpp
   ${CMAKE_CURRENT_LIST_DIR}/table_backend.h

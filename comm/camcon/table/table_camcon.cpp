@@ -42,6 +42,7 @@ bool TableCamCon::has(CamConCapability capability) const {
         case CamConCapability::AnalogueCams:
         case CamConCapability::EepromLock:
         case CamConCapability::ProgrammingProgram:
+        case CamConCapability::ShortCommands:
             return true;
     }
     return false;

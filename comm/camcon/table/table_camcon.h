@@ -1,5 +1,6 @@
 #pragma once
 
+#include "short_client.h"
 #include "table_link.h"
 
 #include "comm/camcon/camcon_device.h"
@@ -87,6 +88,7 @@ public:
     Status writeProgrammingProgram(const ProgrammingProgram& programming) override;
     Result<bool> readEepromLock() override;
     Status writeEepromLock(bool locked) override;
+    ShortClient* shortCommands() override { return &m_short; }
 
 private:
     // Area 201 word 70: the program areas 1..200 read and write.
@@ -107,6 +109,7 @@ private:
 
     std::unique_ptr<TableLink> m_ownLink;
     TableLink& m_link;
+    ShortClient m_short{m_link};
 };
 
 }  // namespace cambench::comm::table

@@ -1,5 +1,5 @@
 // Identity, status, error reset and program change of the table interface.
-#include "short_commands.h"
+#include "short_client.h"
 #include "table_camcon.h"
 #include "table_map.h"
 #include "table_word_block.h"
@@ -104,18 +104,8 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
 
     // No virtual inputs: without the PLC logic module the device ANDs them
     // with its outputs, so even zeros would switch outputs off.
-    const Result<QByteArray> request = encodeStatusRequest();
-    if (!request) return request.error();
-    const Result<QByteArray> reply = m_link.shortCommand(
-        *request, QCoreApplication::translate("cambench::comm", "status query 0x01"),
-        kMaxShortTelegramBytes, RetryPolicy::Idempotent);
-    if (!reply)
-        return inContext(QCoreApplication::translate("cambench::comm", "reading the status (0x01)"),
-                         reply.error());
-    const Result<ShortStatus> decoded = decodeStatusReply(*reply);
-    if (!decoded)
-        return inContext(QCoreApplication::translate("cambench::comm", "reading the status (0x01)"),
-                         decoded.error());
+    const Result<ShortStatus> decoded = m_short.status();
+    if (!decoded) return decoded.error();
     status.activeProgram = decoded->program;
     status.errorState = decoded->deviceStatus;
     status.outputs = decoded->outputs.mid(0, outputs);
@@ -134,33 +124,11 @@ Result<DeviceStatus> TableCamCon::readStatus(int outputs, int inputs) {
 }
 
 Status TableCamCon::resetError() {
-    const Result<QByteArray> reply =
-        m_link.shortCommand(encodeErrorResetRequest(),
-                            QCoreApplication::translate("cambench::comm", "error reset 0x02"),
-                            kMaxShortTelegramBytes, RetryPolicy::Idempotent);
-    if (!reply)
-        return inContext(
-            QCoreApplication::translate("cambench::comm", "resetting the error (0x02)"),
-            reply.error());
-    const Status acknowledged = decodeAcknowledgement(ShortCommand::ErrorReset, *reply);
-    if (!acknowledged)
-        return inContext(QCoreApplication::translate("cambench::comm", "resetting the error"),
-                         acknowledged.error());
-    return success();
+    return m_short.resetErrors();
 }
 
 Status TableCamCon::selectProgram(int program) {
-    const QString what =
-        QCoreApplication::translate("cambench::comm", "selecting program %1 (0x03)").arg(program);
-    const Result<QByteArray> request = encodeProgramChangeRequest(program);
-    if (!request) return inContext(what, request.error());
-    const Result<QByteArray> reply = m_link.shortCommand(
-        *request, QCoreApplication::translate("cambench::comm", "program change 0x03"),
-        kMaxShortTelegramBytes, RetryPolicy::Idempotent);
-    if (!reply) return inContext(what, reply.error());
-    const Status acknowledged = decodeAcknowledgement(ShortCommand::ProgramChange, *reply);
-    if (!acknowledged) return inContext(what, acknowledged.error());
-    return success();
+    return m_short.changeProgram(program);
 }
 
 }  // namespace cambench::comm::table

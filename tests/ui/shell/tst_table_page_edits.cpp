@@ -1,0 +1,139 @@
+// Issue 12, point 7: edits on the table interface's own pages (dead-time
+// modes, analogue cams, programming program) are marked as edited, counted
+// in the title and asked about before quitting; a value the device would
+// refuse is reported as not sent, saying what and where; values never read
+// say so.
+#include "shell_fixture.h"
+
+#include "ui/analogue_cams_page.h"
+#include "ui/change_marker.h"
+#include "ui/dead_time_modes_page.h"
+#include "ui/language.h"
+#include "ui/programming_program_page.h"
+
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QtTest>
+
+using namespace cambench;
+using namespace cambench::test;
+
+namespace {
+
+std::unique_ptr<Shell> startOnTable() {
+    return startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("3964r-n96"));
+}
+
+// Quits, reads the question's texts and cancels it; true when it asked.
+bool quitAsks(MainWindow* window, QString* question) {
+    NextDialog<QMessageBox> cancel([question](QMessageBox* box) {
+        *question = box->text() + QLatin1Char('\n') + box->informativeText();
+        box->button(QMessageBox::Cancel)->click();
+    });
+    const bool closed = window->confirmClose();
+    return !closed && cancel.answered() == 1;
+}
+
+}  // namespace
+
+class TablePageEditsTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() {
+        useTestSettings();
+        QVERIFY(setLanguage(QStringLiteral("en")));
+    }
+    void deadTimeModeEditIsMarkedCountedAndAskedAbout();
+    void analogueEditIsCountedAndARefusalSaysWhere();
+    void programmingProgramEditIsMarkedAndCounted();
+};
+
+void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
+    QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
+    const int before = shell->workspace()->changedCount();
+
+    // Output 5's switch-on dead time typed as 3.5 ms, as the delegate commits it.
+    QTableWidget* table = modes->table();
+    QTableWidgetItem* on = table->item(4, DeadTimeModesPage::OnColumn);
+    on->setData(Qt::EditRole, 3.5);
+    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QVERIFY(on->font().bold());
+    QVERIFY2(on->toolTip().startsWith(QLatin1String("On the device: ")), qPrintable(on->toolTip()));
+    QVERIFY(table->item(4, DeadTimeModesPage::OutputColumn)->text().startsWith(changedMarker()));
+    QVERIFY(!table->item(3, DeadTimeModesPage::OnColumn)->font().bold());
+    QVERIFY2(shell->window()->windowTitle().contains(QLatin1String("not written")),
+             qPrintable(shell->window()->windowTitle()));
+
+    QString question;
+    QVERIFY(quitAsks(shell->window(), &question));
+    QVERIFY2(question.contains(QLatin1String("Dead-time modes (1)")), qPrintable(question));
+
+    // Written: the mark and the count go.
+    std::optional<PageWriteReport> report;
+    modes->writeItems({}, [&](const PageWriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(report->complete(), qPrintable(report->details()));
+    QCOMPARE(shell->workspace()->changedCount(), before);
+    QVERIFY(!table->item(4, DeadTimeModesPage::OnColumn)->font().bold());
+}
+
+void TablePageEditsTest::analogueEditIsCountedAndARefusalSaysWhere() {
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* analogue = shell->window()->findChild<AnalogueCamsPage*>();
+    QTRY_COMPARE_WITH_TIMEOUT(analogue->onDevice().points.size(), 3, kDeviceTimeoutMs);
+    const int before = shell->workspace()->changedCount();
+    // The second point's position set below the first's: out of order.
+    QTableWidgetItem* position = analogue->table()->item(1, 0);
+    position->setData(Qt::EditRole, -5);
+    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QVERIFY(position->font().bold());
+
+    std::optional<PageWriteReport> report;
+    analogue->writeItems({}, [&](const PageWriteReport& r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
+    QVERIFY(!report->complete());
+    QCOMPARE(report->refusals.size(), 1);
+    QVERIFY(report->failures.isEmpty());
+    QVERIFY2(report->details().contains(QLatin1String("Not sent")), qPrintable(report->details()));
+    QVERIFY2(report->details().contains(QLatin1String("base point 2")),
+             qPrintable(report->details()));
+    QVERIFY2(!report->details().contains(QLatin1String("reply may have been lost")),
+             qPrintable(report->details()));
+    // The edit stays, counted.
+    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QString question;
+    QVERIFY(quitAsks(shell->window(), &question));
+    QVERIFY2(question.contains(QLatin1String("Analogue cams (1)")), qPrintable(question));
+}
+
+void TablePageEditsTest::programmingProgramEditIsMarkedAndCounted() {
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* page = shell->window()->findChild<ProgrammingProgramPage*>();
+    QLabel* state = nullptr;
+    for (QLabel* label : page->findChildren<QLabel*>())
+        if (label->text().startsWith(QLatin1String("As on the device")) ||
+            label->text().startsWith(QLatin1String("Not read")))
+            state = label;
+    QVERIFY(state);
+    QTRY_COMPARE_WITH_TIMEOUT(state->text(), QStringLiteral("As on the device."), kDeviceTimeoutMs);
+    const int before = shell->workspace()->changedCount();
+    auto* program = page->findChildren<QSpinBox*>().first();
+    program->setValue(program->value() + 1);
+    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QVERIFY(program->font().bold());
+    QVERIFY2(state->text().contains(QLatin1String("Edited, not written")),
+             qPrintable(state->text()));
+}
+
+QTEST_MAIN(TablePageEditsTest)
+#include "tst_table_page_edits.moc"
