@@ -3085,6 +3085,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>Edited on their own pages (write them there): %1</source>
         <translation>Auf ihren eigenen Seiten geändert (dort schreiben): %1</translation>
     </message>
+    <message>
+        <source>The project file does not hold the edits on %1: write them there, or close without writing.</source>
+        <translation>Die Projektdatei enthält die Änderungen auf %1 nicht: schreiben Sie sie dort oder schließen Sie ohne zu schreiben.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::MonitorPage</name>
@@ -3449,6 +3453,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Write the dead time (0x07)</source>
         <translation>Totzeit schreiben (0x07)</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Read at %1.</source>
+        <translation>Gelesen um %1.</translation>
+    </message>
+    <message>
+        <source>read at %1</source>
+        <translation>gelesen um %1</translation>
+    </message>
+    <message>
+        <source>Enter the dead time to write first (or read it from the device).</source>
+        <translation>Geben Sie zuerst die zu schreibende Totzeit ein (oder lesen Sie sie aus dem Gerät).</translation>
     </message>
 </context>
 <context>

@@ -3083,6 +3083,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>Edited on their own pages (write them there): %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The project file does not hold the edits on %1: write them there, or close without writing.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::MonitorPage</name>
@@ -3446,6 +3450,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Write the dead time (0x07)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
+    </message>
+    <message>
+        <source>Read at %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter the dead time to write first (or read it from the device).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

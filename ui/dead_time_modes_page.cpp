@@ -4,10 +4,13 @@
 #include "device_session.h"
 #include "workspace.h"
 
+#include "ui/cameditor/cam_document.h"
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -117,14 +120,17 @@ void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
         for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
     }
     m_note->setText(
-        tr("Largest dead time: %1 ms").arg(m_workspace->info().maxDeadTime / kTenthsPerMs));
+        tr("Largest dead time: %1 ms")
+            .arg(QLocale().toString(m_workspace->info().maxDeadTime / kTenthsPerMs, 'f', 1)));
     refreshEdits();
 }
 
 void DeadTimeModesPage::refreshEdits() {
     // Setting a font changes the item: no recursion through itemChanged.
     const QSignalBlocker blocker(m_table);
-    const auto ms = [](qint32 tenths) { return tr("%1 ms").arg(tenths / kTenthsPerMs); };
+    const auto ms = [](qint32 tenths) {
+        return tr("%1 ms").arg(QLocale().toString(tenths / kTenthsPerMs, 'f', 1));
+    };
     for (int row = 0; row < m_table->rowCount(); ++row) {
         QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
         if (!outputItem) continue;
@@ -242,8 +248,13 @@ void DeadTimeModesPage::writeItems(const QStringList& keys,
             result.add(outcomes.value());
             for (const PageItemOutcome& outcome : outcomes.value()) {
                 if (outcome.error.kind != ErrorKind::None) continue;
-                for (const Item& item : items)
-                    if (item.key == outcome.key) m_device.insert(item.output, item.deadTime);
+                for (const Item& item : items) {
+                    if (item.key != outcome.key) continue;
+                    m_device.insert(item.output, item.deadTime);
+                    // Word 0 is the dead time of mode Normal, the one the
+                    // Dead times page shows: its device copy follows.
+                    m_workspace->cams()->setDeviceDeadTime(item.output, item.deadTime.normal);
+                }
             }
             refreshEdits();
             done(result);

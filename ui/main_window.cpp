@@ -137,7 +137,7 @@ void MainWindow::createPages() {
                gate(new AnalogueCamsPage(m_session, m_workspace), Cap::AnalogueCams),
                gate(new ProgrammingProgramPage(m_session, m_workspace), Cap::ProgrammingProgram),
                gate(new EepromLockPage(m_session), Cap::EepromLock),
-               gate(new PlcCouplingPage(m_session), Cap::ShortCommands)};
+               gate(new PlcCouplingPage(m_session, m_workspace), Cap::ShortCommands)};
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
         m_nav->addItem(page->sectionTitle());
@@ -519,6 +519,14 @@ bool MainWindow::confirmClose() {
     }
     if (box.clickedButton() == save) {
         saveProject();
+        // The project file does not hold the edits of those pages: saving
+        // it does not keep them, so the window stays.
+        if (!onPages.isEmpty()) {
+            showMessage(tr("The project file does not hold the edits on %1: write them there, "
+                           "or close without writing.")
+                            .arg(onPages.join(QStringLiteral(", "))));
+            return false;
+        }
         return m_workspace->changedCount() == 0 || !m_workspace->projectPath().isEmpty();
     }
     return box.clickedButton() != cancel;

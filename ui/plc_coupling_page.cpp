@@ -2,6 +2,9 @@
 
 #include "device_session.h"
 #include "sentence.h"
+#include "workspace.h"
+
+#include "ui/cameditor/cam_document.h"
 
 #include "comm/camcon/table/short_client.h"
 #include "comm/usecases/short_coupling.h"
@@ -18,6 +21,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QTime>
 #include <QVBoxLayout>
 
 namespace cambench {
@@ -58,9 +62,10 @@ QString tenthsText(int tenths) {
 
 }  // namespace
 
-PlcCouplingPage::PlcCouplingPage(DeviceSession* session, QWidget* parent)
+PlcCouplingPage::PlcCouplingPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : SectionPage(parent),
       m_session(session),
+      m_workspace(workspace),
       m_statusArea(monospaceLabel()),
       m_statusWords(new QLabel),
       m_program(new QSpinBox),
@@ -76,6 +81,9 @@ PlcCouplingPage::PlcCouplingPage(DeviceSession* session, QWidget* parent)
            "fault in the PLC program or the CP340's settings."));
     intro->setWordWrap(true);
     m_statusWords->setWordWrap(true);
+    // Room for the whole area before the first read: the page does not jump.
+    m_statusArea->setMinimumHeight(m_statusArea->fontMetrics().lineSpacing() * 8);
+    m_statusArea->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_outcome->setWordWrap(true);
     m_outcome->setObjectName(QStringLiteral("couplingOutcome"));
     m_statusWords->setObjectName(QStringLiteral("couplingStatusWords"));
@@ -128,7 +136,10 @@ PlcCouplingPage::PlcCouplingPage(DeviceSession* session, QWidget* parent)
 
     // Area 3: the dead time of the same output (0x06, 0x07).
     m_deadTime->setDecimals(1);
-    m_deadTime->setRange(0.0, 6553.5);
+    // Below the range: "not read", until a value comes from the device.
+    m_deadTime->setRange(-0.1, 6553.5);
+    m_deadTime->setSpecialValueText(tr("not read"));
+    m_deadTime->setValue(-0.1);
     m_deadTime->setSingleStep(0.1);
     m_deadTime->setSuffix(tr(" ms"));
     auto* readDeadTimeButton = new QPushButton(tr("Read dead time (0x06)"));
@@ -227,7 +238,10 @@ void PlcCouplingPage::showStatus(const ShortStatus& status) {
     QStringList on;
     for (int i = 0; i < status.outputs.size(); ++i)
         if (status.outputs.at(i)) on.append(QString::number(i + 1));
+    // A snapshot, not a live value: when it was read is part of it.
     m_statusWords->setText(
+        tr("Read at %1.").arg(QLocale().toString(QTime::currentTime(), QLocale::ShortFormat)) +
+        QLatin1Char(' ') +
         tr("A PLC program reading the status sees: actual value %1, speed %2, program %3 "
            "active, device status %4, %5 outputs, %6. To change the program it writes the "
            "wanted number into DW 34; the function block sends 0x03 while DW 14 and DW 34 "
@@ -258,26 +272,37 @@ void PlcCouplingPage::readStatus() {
 
 bool PlcCouplingPage::confirmed(const QString& question) {
     if (!m_ask) return true;
-    return QMessageBox::question(this, tr("PLC coupling"), question) == QMessageBox::Yes;
+    // No is the default: Enter alone must not switch a machine's outputs.
+    return QMessageBox::question(this, tr("PLC coupling"), question,
+                                 QMessageBox::Yes | QMessageBox::No,
+                                 QMessageBox::No) == QMessageBox::Yes;
 }
 
 void PlcCouplingPage::runCheckedWrite(const QString& title,
-                                      std::function<usecases::OutcomeLine(ShortClient&)> write) {
+                                      std::function<usecases::OutcomeLine(ShortClient&)> write,
+                                      std::function<void()> readBack) {
     m_session->run<usecases::OutcomeLine>(
         this, title,
         withShortCommands<usecases::OutcomeLine>(
             [write = std::move(write)](ShortClient& client) -> Result<usecases::OutcomeLine> {
                 return write(client);
             }),
-        [this, title](Result<usecases::OutcomeLine> line) {
-            if (!line) return showFailure(title, line.error());
-            showOutcome(*line);
+        [this, title, readBack](Result<usecases::OutcomeLine> line) {
+            if (!line) {
+                showFailure(title, line.error());
+            } else {
+                showOutcome(*line);
+            }
+            // Written, refused or cut off: show what the device holds now.
+            readBack();
         });
 }
 
 void PlcCouplingPage::resetErrors() {
-    runCheckedWrite(tr("Reset the errors (0x02)"),
-                    [](ShortClient& client) { return usecases::shortResetErrors(client); });
+    runCheckedWrite(
+        tr("Reset the errors (0x02)"),
+        [](ShortClient& client) { return usecases::shortResetErrors(client); },
+        [this] { readStatus(); });
 }
 
 void PlcCouplingPage::changeProgram(int program) {
@@ -285,9 +310,10 @@ void PlcCouplingPage::changeProgram(int program) {
                       "program %1 at once.")
                        .arg(program)))
         return;
-    runCheckedWrite(tr("Change the program (0x03)"), [program](ShortClient& client) {
-        return usecases::shortChangeProgram(client, program);
-    });
+    runCheckedWrite(
+        tr("Change the program (0x03)"),
+        [program](ShortClient& client) { return usecases::shortChangeProgram(client, program); },
+        [this] { readStatus(); });
 }
 
 Track PlcCouplingPage::trackInTable() const {
@@ -326,22 +352,27 @@ void PlcCouplingPage::showTrack(const Track& track) {
 }
 
 void PlcCouplingPage::readTrack() {
-    const int program = m_program->value();
-    const int output = m_output->value();
+    readTrackOf(m_program->value(), m_output->value(), true);
+}
+
+void PlcCouplingPage::readTrackOf(int program, int output, bool sayWhatWasRead) {
     m_session->run<Track>(
         this, tr("Read the cams (0x04)"),
         withShortCommands<Track>(
             [program, output](ShortClient& client) { return client.readTrack(program, output); }),
-        [this](Result<Track> track) {
+        [this, program, sayWhatWasRead](Result<Track> track) {
             if (!track) {
                 m_cams->setRowCount(0);
                 return showFailure(tr("Reading the cams"), track.error());
             }
             showTrack(*track);
+            // What the device holds: the cam editor's copy of it learns it too.
+            m_workspace->cams()->setDeviceTrack(program, *track);
+            if (!sayWhatWasRead) return;
             m_outcome->setStyleSheet(QString());
             m_outcome->setText(tr("Program %1, output %2: %3 cams as a PLC reads them (DB+0 "
                                   "AUSG_NR %2, DB+1 ANZ_NOCKEN %3).")
-                                   .arg(m_program->value())
+                                   .arg(program)
                                    .arg(track->output)
                                    .arg(track->cams.size()));
         });
@@ -356,43 +387,61 @@ void PlcCouplingPage::writeTrack() {
                        .arg(program)
                        .arg(track.cams.size())))
         return;
-    runCheckedWrite(tr("Write the cams (0x05)"), [program, track](ShortClient& client) {
-        return usecases::shortWriteTrack(client, program, track);
-    });
+    runCheckedWrite(
+        tr("Write the cams (0x05)"),
+        [program, track](ShortClient& client) {
+            return usecases::shortWriteTrack(client, program, track);
+        },
+        [this, program, output = track.output] { readTrackOf(program, output, false); });
 }
 
 void PlcCouplingPage::readDeadTime() {
-    const int output = m_output->value();
-    m_session->run<int>(this, tr("Read the dead time (0x06)"),
-                        withShortCommands<int>(
-                            [output](ShortClient& client) { return client.readDeadTime(output); }),
-                        [this, output](Result<int> tenths) {
-                            if (!tenths) {
-                                m_deadTimeArea->setText(tr("Not read: the dead time is unknown."));
-                                return showFailure(tr("Reading the dead time"), tenths.error());
-                            }
-                            m_deadTime->setValue(*tenths / 10.0);
-                            // Dead-time table (3.3.8.3): one word per output from the offset in
-                            // DW 2.
-                            m_deadTimeArea->setText(QStringLiteral("DW+%1  TZK%2  %3  (%4)")
-                                                        .arg(2 * (output - 1))
-                                                        .arg(output)
-                                                        .arg(*tenths)
-                                                        .arg(tenthsText(*tenths)));
-                        });
+    readDeadTimeOf(m_output->value());
+}
+
+void PlcCouplingPage::readDeadTimeOf(int output) {
+    m_session->run<int>(
+        this, tr("Read the dead time (0x06)"),
+        withShortCommands<int>(
+            [output](ShortClient& client) { return client.readDeadTime(output); }),
+        [this, output](Result<int> tenths) {
+            if (!tenths) {
+                m_deadTimeArea->setText(tr("Not read: the dead time is unknown."));
+                return showFailure(tr("Reading the dead time"), tenths.error());
+            }
+            m_deadTime->setValue(*tenths / 10.0);
+            m_workspace->cams()->setDeviceDeadTime(output, *tenths);
+            // Dead-time table (3.3.8.3): one word per output from the offset in
+            // DW 2.
+            m_deadTimeArea->setText(
+                QStringLiteral("DW+%1  TZK%2  %3  (%4)  ")
+                    .arg(2 * (output - 1))
+                    .arg(output)
+                    .arg(*tenths)
+                    .arg(tenthsText(*tenths)) +
+                tr("read at %1")
+                    .arg(QLocale().toString(QTime::currentTime(), QLocale::ShortFormat)));
+        });
 }
 
 void PlcCouplingPage::writeDeadTime() {
     const int output = m_output->value();
     const int tenths = qRound(m_deadTime->value() * 10.0);
+    if (tenths < 0) {
+        m_outcome->setText(tr("Enter the dead time to write first (or read it from the device)."));
+        return;
+    }
     if (!confirmed(tr("Set the dead time of output %1 to %2 (0x07)? The output switches that "
                       "much earlier from now on.")
                        .arg(output)
                        .arg(tenthsText(tenths))))
         return;
-    runCheckedWrite(tr("Write the dead time (0x07)"), [output, tenths](ShortClient& client) {
-        return usecases::shortWriteDeadTime(client, output, tenths);
-    });
+    runCheckedWrite(
+        tr("Write the dead time (0x07)"),
+        [output, tenths](ShortClient& client) {
+            return usecases::shortWriteDeadTime(client, output, tenths);
+        },
+        [this, output] { readDeadTimeOf(output); });
 }
 
 }  // namespace cambench

@@ -19,6 +19,7 @@ namespace comm::table {
 class ShortClient;
 }
 class DeviceSession;
+class Workspace;
 
 // The S7-CP340 coupling (issue 12, point 5): sends the telegrams the PLC's
 // function block sends (short commands 0x01..0x07 on the table interface),
@@ -31,7 +32,7 @@ class DeviceSession;
 class PlcCouplingPage : public SectionPage {
     Q_OBJECT
 public:
-    explicit PlcCouplingPage(DeviceSession* session, QWidget* parent = nullptr);
+    PlcCouplingPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("PLC coupling"); }
 
@@ -56,16 +57,23 @@ public:
 
 private:
     void showStatus(const comm::table::ShortStatus& status);
+    // `sayWhatWasRead`: a read of its own, not the check after a write.
+    void readTrackOf(int program, int output, bool sayWhatWasRead);
+    void readDeadTimeOf(int output);
     void showTrack(const Track& track);
     void showOutcome(const usecases::OutcomeLine& line);
     void showFailure(const QString& what, const Error& error);
     bool confirmed(const QString& question);
-    // Runs one checked short write on the worker and shows its outcome.
+    // Runs one checked short write on the worker, shows its outcome and
+    // then `readBack` (the matching query), so that what the page shows is
+    // what the device holds.
     void runCheckedWrite(const QString& title,
-                         std::function<usecases::OutcomeLine(comm::table::ShortClient&)> write);
+                         std::function<usecases::OutcomeLine(comm::table::ShortClient&)> write,
+                         std::function<void()> readBack);
     Track trackInTable() const;
 
     DeviceSession* m_session;
+    Workspace* m_workspace;  // its device copies learn what these telegrams read
     QLabel* m_statusArea;
     QLabel* m_statusWords;
     QSpinBox* m_program;

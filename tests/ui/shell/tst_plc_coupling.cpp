@@ -10,6 +10,7 @@
 #include "comm/sim/sim_device.h"
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_pty_server.h"
+#include "ui/cameditor/cam_document.h"
 #include "ui/language.h"
 #include "ui/plc_coupling_page.h"
 
@@ -119,6 +120,11 @@ void PlcCouplingTest::deadTimeIsWrittenOnlyAfterYes() {
                                                               "written")),
              qPrintable(bench.page->lastOutcome()));
     QCOMPARE(bench.sim.device().state().deadTimes.value(4), 125);
+    // Read back after the write: the page and the Dead times section's
+    // device copy show what the device holds, not the value before.
+    QTRY_COMPARE_WITH_TIMEOUT(
+        bench.shell->workspace()->cams()->deviceDeadTime(5).value_or(-1), 125, kDeviceTimeoutMs);
+    QCOMPARE(bench.page->deadTimeBox()->value(), 12.5);
 }
 
 void PlcCouplingTest::camsWrittenReachTheDevice() {
