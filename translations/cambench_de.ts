@@ -1933,6 +1933,34 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Page %1 of %2</source>
         <translation>Seite %1 von %2</translation>
     </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Switch-on</source>
+        <translation>Einschalten</translation>
+    </message>
+    <message>
+        <source>Switch-off / time</source>
+        <translation>Ausschalten / Zeit</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>Normal</translation>
+    </message>
+    <message>
+        <source>On/off</source>
+        <translation>Ein/Aus</translation>
+    </message>
+    <message>
+        <source>Path-time</source>
+        <translation>Weg-Zeit</translation>
+    </message>
+    <message>
+        <source>Dead-time modes</source>
+        <translation>Totzeit-Modi</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -6120,6 +6148,26 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>symbol</source>
         <translation>Symbol</translation>
     </message>
+    <message>
+        <source>dead-time mode</source>
+        <translation>Totzeit-Modus</translation>
+    </message>
+    <message>
+        <source>unknown mode &quot;%1&quot;; use normal, on/off or path-time</source>
+        <translation>unbekannter Modus „%1“; verwenden Sie normal, on/off oder path-time</translation>
+    </message>
+    <message>
+        <source>switch-on dead time</source>
+        <translation>Einschalttotzeit</translation>
+    </message>
+    <message>
+        <source>switch-off dead time</source>
+        <translation>Ausschalttotzeit</translation>
+    </message>
+    <message>
+        <source>Output %1: the dead time %2 and the dead time of its dead-time mode %3 (0.1 ms) differ, but the device holds one value for both.</source>
+        <translation>Ausgang %1: die Totzeit %2 und die Totzeit seines Totzeit-Modus %3 (0,1 ms) unterscheiden sich, das Gerät hält aber einen Wert für beide.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -6587,6 +6635,30 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>dead time of output %1 (0x07)</source>
         <translation>Totzeit von Ausgang %1 (0x07)</translation>
+    </message>
+    <message>
+        <source>normal, %1</source>
+        <translation>normal, %1</translation>
+    </message>
+    <message>
+        <source>on/off, switch-on %1, switch-off %2</source>
+        <translation>Ein/Aus, Einschalten %1, Ausschalten %2</translation>
+    </message>
+    <message>
+        <source>path-time, switch-on %1, switching time %2</source>
+        <translation>Weg-Zeit, Einschalten %1, Schaltzeit %2</translation>
+    </message>
+    <message>
+        <source>dead-time mode of output %1</source>
+        <translation>Totzeit-Modus von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>Output %1: the dead time %2 and the dead time of its dead-time mode %3 differ, but the device holds one value for both.</source>
+        <translation>Ausgang %1: die Totzeit %2 und die Totzeit seines Totzeit-Modus %3 unterscheiden sich, das Gerät hält aber einen Wert für beide.</translation>
+    </message>
+    <message>
+        <source>reading dead-time modes</source>
+        <translation>Lesen der Totzeit-Modi</translation>
     </message>
 </context>
 </TS>

@@ -1933,6 +1933,34 @@ Erase and restore now?</translation>
         <source>Page %1 of %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch-on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch-off / time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation type="unfinished">Normal</translation>
+    </message>
+    <message>
+        <source>On/off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Path-time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead-time modes</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -6118,6 +6146,26 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>symbol</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>dead-time mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown mode &quot;%1&quot;; use normal, on/off or path-time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch-on dead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch-off dead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the dead time %2 and the dead time of its dead-time mode %3 (0.1 ms) differ, but the device holds one value for both.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -6584,6 +6632,30 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>dead time of output %1 (0x07)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>normal, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on/off, switch-on %1, switch-off %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>path-time, switch-on %1, switching time %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dead-time mode of output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the dead time %2 and the dead time of its dead-time mode %3 differ, but the device holds one value for both.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading dead-time modes</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

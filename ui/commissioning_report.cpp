@@ -81,6 +81,7 @@ public:
         html += device();
         html += settings();
         html += outputs();
+        html += deadTimeModes();
         for (int program = 0; program < m_workspace.info().programs; ++program)
             html += programSection(program);
         html += users();
@@ -198,6 +199,45 @@ private:
         }
         return heading(CommissioningReport::tr("Outputs and dead times")) +
                source(ProjectPart::DeadTimes) + table(rows);
+    }
+
+    // Table interface only: absent when neither read nor in the project.
+    QString deadTimeModes() const {
+        const DeadTimeModes& modes = m_workspace.deadTimeModes();
+        if (modes.isEmpty()) return {};
+        const DeadTimeModes& onDevice = m_workspace.deviceDeadTimeModes();
+        QString rows =
+            headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Mode"),
+                       CommissioningReport::tr("Dead time"), CommissioningReport::tr("Switch-on"),
+                       CommissioningReport::tr("Switch-off / time")});
+        const auto modeName = [](DeadTimeMode mode) {
+            switch (mode) {
+                case DeadTimeMode::Normal:
+                    return CommissioningReport::tr("Normal");
+                case DeadTimeMode::SeparateOnOff:
+                    return CommissioningReport::tr("On/off");
+                case DeadTimeMode::PathTime:
+                    return CommissioningReport::tr("Path-time");
+            }
+            return QString();
+        };
+        for (auto it = modes.cbegin(); it != modes.cend(); ++it) {
+            const bool known = onDevice.contains(it.key());
+            const OutputDeadTime device = onDevice.value(it.key());
+            const auto cell = [&](const QString& edited, bool differs, const QString& was) {
+                return marked(edited, !known || differs,
+                              known ? was : CommissioningReport::tr("not read"));
+            };
+            rows +=
+                row({QString::number(it.key()),
+                     cell(modeName(it->mode), it->mode != device.mode, modeName(device.mode)),
+                     cell(milliseconds(it->normal), it->normal != device.normal,
+                          milliseconds(device.normal)),
+                     cell(milliseconds(it->on), it->on != device.on, milliseconds(device.on)),
+                     cell(milliseconds(it->off), it->off != device.off, milliseconds(device.off))});
+        }
+        return heading(CommissioningReport::tr("Dead-time modes")) +
+               source(ProjectPart::DeadTimeModes) + table(rows);
     }
 
     QString programSection(int number) {

@@ -7,6 +7,7 @@
 #include "ui/cameditor/cam_document.h"
 
 #include <QComboBox>
+#include <QDateTime>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -66,6 +67,7 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
         if (mayReplaceEdits(this, tr("Dead-time modes"), int(changes().size()))) readFromDevice();
     });
     connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
+    connect(m_workspace, &Workspace::deadTimeModesIncoming, this, &DeadTimeModesPage::takeIncoming);
     m_note->setText(tr("Not read from the device yet."));
     connect(write, &QPushButton::clicked, this, [this] {
         writeItems({}, [this](const PageWriteReport& report) {
@@ -91,6 +93,7 @@ void DeadTimeModesPage::readFromDevice() {
                 return;
             }
             m_device = modes.value();
+            m_workspace->setReadTime(ProjectPart::DeadTimeModes, QDateTime::currentDateTimeUtc());
             showModes(m_device);
             Q_EMIT statusMessage(tr("Dead-time modes read."));
         });
@@ -118,10 +121,39 @@ void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
             m_table->setItem(row, OffColumn, msItem(0));
         }
         for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
+        // A project opened before the device was read: its modes are edits.
+        for (auto it = m_pending.cbegin(); it != m_pending.cend(); ++it)
+            if (modes.contains(it.key())) setEdited(it.key(), *it);
+        m_pending.clear();
     }
     m_note->setText(
         tr("Largest dead time: %1 ms")
             .arg(QLocale().toString(m_workspace->info().maxDeadTime / kTenthsPerMs, 'f', 1)));
+    refreshEdits();
+}
+
+void DeadTimeModesPage::takeIncoming(const DeadTimeModes& modes, bool fromDevice) {
+    if (fromDevice) {
+        // The device's values as read with everything else; edits stay.
+        const DeadTimeModes edits = [this] {
+            DeadTimeModes edited;
+            for (const PageChange& change : changes()) {
+                const int output = change.key.section(QLatin1Char(':'), 1).toInt();
+                edited.insert(output, this->edited(output));
+            }
+            return edited;
+        }();
+        m_device = modes;
+        showModes(m_device);
+        for (auto it = edits.cbegin(); it != edits.cend(); ++it) setEdited(it.key(), *it);
+        refreshEdits();
+        return;
+    }
+    if (m_table->rowCount() == 0) {
+        m_pending = modes;
+        return;
+    }
+    for (auto it = modes.cbegin(); it != modes.cend(); ++it) setEdited(it.key(), *it);
     refreshEdits();
 }
 
@@ -155,7 +187,13 @@ void DeadTimeModesPage::refreshEdits() {
         markEdited(outputItem, any, QString());
         outputItem->setToolTip(any ? tr("Edited, not written to the device") : QString());
     }
-    m_workspace->setPageEdits(sectionTitle(), int(changes().size()));
+    const int edits = int(changes().size());
+    m_workspace->setPageEdits(sectionTitle(), edits, true);
+    // The values as edited go into a project saved now.
+    DeadTimeModes shown;
+    for (auto it = m_device.cbegin(); it != m_device.cend(); ++it)
+        shown.insert(it.key(), edited(it.key()));
+    if (!shown.isEmpty() || m_pending.isEmpty()) m_workspace->noteDeadTimeModes(shown, m_device);
 }
 
 OutputDeadTime DeadTimeModesPage::edited(int output) const {

@@ -41,13 +41,17 @@ private:
     // Marks every edited cell and output and tells the workspace how many
     // outputs differ from the device.
     void refreshEdits();
+    // Modes from a project file become edits of the rows shown (or of the
+    // rows once the device is read); a device's become the page's copy.
+    void takeIncoming(const DeadTimeModes& modes, bool fromDevice);
     int rowOf(int output) const;  // -1 when the output is not shown
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     QTableWidget* m_table;
     QLabel* m_note;
-    DeadTimeModes m_device;  // as last read or written
+    DeadTimeModes m_device;   // as last read or written
+    DeadTimeModes m_pending;  // from a project file, waiting for the device's rows
 };
 
 }  // namespace cambench

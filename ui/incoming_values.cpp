@@ -109,6 +109,12 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
                                    keepEdits.contains(EditSection::Plc));
         if (fromDevice) stamp(workspace, read, ProjectPart::PlcNetworks);
     }
+    // Table interface only: the Dead-time modes page takes them (a file's
+    // as edits, which it marks and counts, a device's as its copy).
+    if (!incoming.deadTimeModes.isEmpty()) {
+        workspace.takeDeadTimeModes(incoming.deadTimeModes, fromDevice);
+        if (fromDevice) stamp(workspace, read, ProjectPart::DeadTimeModes);
+    }
 }
 
 namespace {

@@ -521,10 +521,11 @@ bool MainWindow::confirmClose() {
         saveProject();
         // The project file does not hold the edits of those pages: saving
         // it does not keep them, so the window stays.
-        if (!onPages.isEmpty()) {
+        const QStringList notSaved = m_workspace->pageEditSections(true);
+        if (!notSaved.isEmpty()) {
             showMessage(tr("The project file does not hold the edits on %1: write them there, "
                            "or close without writing.")
-                            .arg(onPages.join(QStringLiteral(", "))));
+                            .arg(notSaved.join(QStringLiteral(", "))));
             return false;
         }
         return m_workspace->changedCount() == 0 || !m_workspace->projectPath().isEmpty();

@@ -35,6 +35,11 @@ Project projectFromWorkspace(const Workspace& workspace) {
     if (workspace.userEditCount() == 0 && read.parts.contains(ProjectPart::Users))
         project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
     project.plcNetworks = workspace.plcNetworks().values();
+    // As the Dead-time modes page has them, edits included.
+    project.deadTimeModes = workspace.deadTimeModes();
+    if (!workspace.deadTimeModesEdited() && read.parts.contains(ProjectPart::DeadTimeModes))
+        project.readAt.parts.insert(ProjectPart::DeadTimeModes,
+                                    read.parts.value(ProjectPart::DeadTimeModes));
     if (workspace.changedPlcNetworks().isEmpty() && read.parts.contains(ProjectPart::PlcNetworks))
         project.readAt.parts.insert(ProjectPart::PlcNetworks,
                                     read.parts.value(ProjectPart::PlcNetworks));

@@ -46,6 +46,8 @@ void Workspace::setProjectPath(const QString& path) {
 
 void Workspace::clear(const DeviceInfo& info) {
     m_cams->clear();
+    m_deadTimeModes.clear();
+    m_deviceDeadTimeModes.clear();
     m_readAt = {};
     m_settings.clear();
     m_deviceSettings.clear();
@@ -346,24 +348,31 @@ void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
 
 int Workspace::changedCount() const {
     int onPages = 0;
-    for (int count : m_pageEdits) onPages += count;
+    for (const PageEdits& edits : m_pageEdits) onPages += edits.count;
     return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
            int(changedPlcNetworks().size()) + onPages;
 }
 
-void Workspace::setPageEdits(const QString& section, int count) {
+void Workspace::takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice) {
+    if (!fromDevice) m_deadTimeModes = modes;
+    Q_EMIT deadTimeModesIncoming(modes, fromDevice);
+}
+
+void Workspace::setPageEdits(const QString& section, int count, bool inProjects) {
     if (count > 0) {
-        m_pageEdits.insert(section, count);
+        m_pageEdits.insert(section, {count, inProjects});
     } else {
         m_pageEdits.remove(section);
     }
     notifyChanged();
 }
 
-QStringList Workspace::pageEditSections() const {
+QStringList Workspace::pageEditSections(bool notInProjects) const {
     QStringList sections;
-    for (auto it = m_pageEdits.cbegin(); it != m_pageEdits.cend(); ++it)
-        sections.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(it.value()));
+    for (auto it = m_pageEdits.cbegin(); it != m_pageEdits.cend(); ++it) {
+        if (notInProjects && it->inProjects) continue;
+        sections.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(it->count));
+    }
     return sections;
 }
 

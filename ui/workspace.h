@@ -9,7 +9,9 @@
 
 #include <QList>
 #include <QMap>
+
 #include <QObject>
+#include "model/camcon/dead_time_modes.h"
 
 #include <optional>
 
@@ -108,15 +110,31 @@ public:
     QList<int> changedPlcNetworks() const;
     void setDevicePlcNetwork(const PlcNetwork& network);
 
+    // --- Dead-time modes (table interface). The Dead-time modes page holds
+    // the device's copy and the edits; the workspace holds the values as
+    // edited, so that a project saves them, and passes modes that arrive
+    // from a project file (or a read of everything) to the page.
+    const DeadTimeModes& deadTimeModes() const { return m_deadTimeModes; }
+    void takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice);
+    // The page's values as edited and its copy of the device's.
+    void noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice) {
+        m_deadTimeModes = edited;
+        m_deviceDeadTimeModes = onDevice;
+    }
+    const DeadTimeModes& deviceDeadTimeModes() const { return m_deviceDeadTimeModes; }
+    bool deadTimeModesEdited() const { return m_deadTimeModes != m_deviceDeadTimeModes; }
+
     // Every item that differs from the device, across all sections.
     int changedCount() const;
     // Sections whose edits live on their own page (the table interface's
     // dead-time modes, analogue cams, programming program) report how many
     // items differ from the device: counted in the title and asked about
     // before quitting like every other edit (issue 12, point 7).
-    void setPageEdits(const QString& section, int count);
-    // "Dead-time modes (2)", ... for each such section with edits.
-    QStringList pageEditSections() const;
+    // `inProjects`: a saved project holds these edits (dead-time modes do).
+    void setPageEdits(const QString& section, int count, bool inProjects = false);
+    // "Dead-time modes (2)", ... for each such section with edits; with
+    // `notInProjects`, only those a saved project does not hold.
+    QStringList pageEditSections(bool notInProjects = false) const;
 
     // --- Which device the device copies are from: the identity and
     // fingerprint read last (on a connect, or with a read of everything).
@@ -150,10 +168,18 @@ Q_SIGNALS:
     void readTimesChanged();
     void changedCountChanged(int count);
     void otherDeviceNoteChanged();
+    // Modes from a project file (edits for the page) or from the device.
+    void deadTimeModesIncoming(const DeadTimeModes& modes, bool fromDevice);
 
 private:
     void notifyChanged();
-    QMap<QString, int> m_pageEdits;  // section title -> items edited on its page
+    struct PageEdits {
+        int count = 0;
+        bool inProjects = false;
+    };
+    QMap<QString, PageEdits> m_pageEdits;  // section title -> items edited on its page
+    DeadTimeModes m_deadTimeModes;
+    DeadTimeModes m_deviceDeadTimeModes;
     QString deviceNumberFor(const User& user) const;
     void mergeUsersFromFile(const QList<User>& users, bool keepEdits);
 

@@ -44,16 +44,35 @@ int writeTable(CliSession& session, CommandArgs& args, const QString& title,
         [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
 }
 
-Result<DeadTimes> readAllDeadTimes(CamConDevice& client, JobContext&) {
+// On the table interface with its mode columns (which hold the plain
+// dead time as the mode normal's), elsewhere the plain dead times.
+Result<DeadTimeTable> readAllDeadTimes(CamConDevice& client, JobContext&) {
     const Result<DeviceInfo> info = client.readInfo();
     if (!info) return info.error();
-    return client.readDeadTimes(info->deadTimeOutputs);
+    DeadTimeTable table;
+    if (client.has(comm::CamConCapability::DeadTimeModes)) {
+        Result<DeadTimeModes> modes = client.readDeadTimeModes(info->deadTimeOutputs);
+        if (!modes) return modes.error();
+        table.modes = *modes;
+        return table;
+    }
+    Result<DeadTimes> deadTimes = client.readDeadTimes(info->deadTimeOutputs);
+    if (!deadTimes) return deadTimes.error();
+    table.deadTimes = *deadTimes;
+    return table;
 }
 
-usecases::WritePlan deadTimesPlan(const DeadTimes& deadTimes) {
+QByteArray deadTimeTableToCsv(const DeadTimeTable& table) {
+    return table.modes.isEmpty() ? deadTimesToCsv(table.deadTimes)
+                                 : deadTimeModesToCsv(table.modes);
+}
+
+usecases::WritePlan deadTimesPlan(const DeadTimeTable& table) {
     usecases::WritePlan plan;
-    for (auto it = deadTimes.cbegin(); it != deadTimes.cend(); ++it)
+    for (auto it = table.deadTimes.cbegin(); it != table.deadTimes.cend(); ++it)
         plan.deadTimes << usecases::DeadTimeWrite{it.key(), *it, {}};
+    for (auto it = table.modes.cbegin(); it != table.modes.cend(); ++it)
+        plan.deadTimeModes << usecases::DeadTimeModeWrite{it.key(), *it, {}};
     return plan;
 }
 
@@ -92,11 +111,11 @@ int runDeadTimes(CliSession& session, CommandArgs& args) {
     const Result<QString> verb = takeVerb(args, {QStringLiteral("read"), QStringLiteral("write")});
     if (!verb) return reportError(verb.error());
     if (*verb == QLatin1String("read")) {
-        return readTable<DeadTimes>(session, args, QStringLiteral("deadtimes read"),
-                                    readAllDeadTimes, deadTimesToCsv);
+        return readTable<DeadTimeTable>(session, args, QStringLiteral("deadtimes read"),
+                                        readAllDeadTimes, deadTimeTableToCsv);
     }
-    return writeTable<DeadTimes>(session, args, QStringLiteral("deadtimes write"), loadDeadTimesCsv,
-                                 deadTimesPlan);
+    return writeTable<DeadTimeTable>(session, args, QStringLiteral("deadtimes write"),
+                                     loadDeadTimeTableCsv, deadTimesPlan);
 }
 
 int runNames(CliSession& session, CommandArgs& args) {

@@ -26,6 +26,7 @@ public:
         for (const NameWrite& name : m_plan.programNames) checkProgramName(name);
         checkTracks();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes) checkDeadTime(deadTime);
+        checkDeadTimeModes();
         for (const NameWrite& name : m_plan.outputNames) checkOutputName(name);
         checkUsers();
         for (const PlcWrite& network : m_plan.plcNetworks) checkPlcNetwork(network.wanted);
@@ -155,6 +156,24 @@ private:
                         .arg(write.output)
                         .arg(write.wanted)
                         .arg(m_device.maxDeadTime));
+        }
+    }
+
+    void checkDeadTimeModes() {
+        for (const DeadTimeModeWrite& write : m_plan.deadTimeModes) {
+            const QString why = outputDeadTimeProblem(write.output, write.wanted, m_device);
+            if (!why.isEmpty()) problem(why);
+            // Word 0 of the output twice in one plan, with two values.
+            for (const DeadTimeWrite& deadTime : m_plan.deadTimes) {
+                if (deadTime.output != write.output || deadTime.wanted == write.wanted.normal)
+                    continue;
+                problem(QCoreApplication::translate(
+                            "cambench::usecases",
+                            "Output %1: the dead time %2 and the dead time of its dead-time mode "
+                            "%3 differ, but the device holds one value for both.")
+                            .arg(write.output)
+                            .arg(deadTimeText(deadTime.wanted), deadTimeText(write.wanted.normal)));
+            }
         }
     }
 

@@ -47,12 +47,13 @@ public:
         for (const int count : plcCounts) plcTotal += count;
         const bool names = m_connection.has(CamConCapability::OutputNames);
         m_total = 1 + qint64(m_device.programs) * m_device.outputs + m_device.deadTimeOutputs +
-                  (names ? m_device.outputs : 0) + 1 + plcTotal;
+                  (names ? m_device.outputs : 0) + 1 + plcTotal + 1;
         m_done = 1;
         for (int program = 0; program < m_device.programs; ++program) {
             if (const Status ok = readProgram(program); !ok) return ok.error();
         }
         if (const Status ok = readDeadTimes(); !ok) return ok.error();
+        if (const Status ok = readDeadTimeModes(); !ok) return ok.error();
         if (const Status ok = readOutputNames(names); !ok) return ok.error();
         if (const Status ok = readUsers(); !ok) return ok.error();
         if (const Status ok = readPlcNetworks(plcCounts); !ok) return ok.error();
@@ -111,6 +112,23 @@ private:
         if (!deadTimes) return deadTimes.error();
         m_result.project.deadTimes = *deadTimes;
         m_result.project.readAt.parts.insert(ProjectPart::DeadTimes, now());
+        return success();
+    }
+
+    // Table interface only: a project read there carries them to another
+    // device (issue 12, point 2).
+    Status readDeadTimeModes() {
+        if (const Status ok = step(
+                1, QCoreApplication::translate("cambench::usecases", "reading dead-time modes"));
+            !ok)
+            return ok;
+        // The ASCII protocol has only the plain dead time of every output
+        // (read above); no note, as on every ASCII read it would say the same.
+        if (!m_connection.has(CamConCapability::DeadTimeModes)) return success();
+        Result<DeadTimeModes> modes = m_connection.readDeadTimeModes(m_device.deadTimeOutputs);
+        if (!modes) return modes.error();
+        m_result.project.deadTimeModes = *modes;
+        m_result.project.readAt.parts.insert(ProjectPart::DeadTimeModes, now());
         return success();
     }
 

@@ -20,6 +20,23 @@ QString deadTimeText(qint32 tenthsMs) {
     return QStringLiteral("%1 ms").arg(QString::number(tenthsMs / 10.0, 'f', 1));
 }
 
+QString deadTimeModeText(const OutputDeadTime& deadTime) {
+    switch (deadTime.mode) {
+        case DeadTimeMode::Normal:
+            return QCoreApplication::translate("cambench::usecases", "normal, %1")
+                .arg(deadTimeText(deadTime.normal));
+        case DeadTimeMode::SeparateOnOff:
+            return QCoreApplication::translate("cambench::usecases",
+                                               "on/off, switch-on %1, switch-off %2")
+                .arg(deadTimeText(deadTime.on), deadTimeText(deadTime.off));
+        case DeadTimeMode::PathTime:
+            return QCoreApplication::translate("cambench::usecases",
+                                               "path-time, switch-on %1, switching time %2")
+                .arg(deadTimeText(deadTime.on), deadTimeText(deadTime.off));
+    }
+    return deadTimeModeKey(deadTime.mode);
+}
+
 QString nameText(const QString& name) {
     return name.isEmpty() ? QCoreApplication::translate("cambench::usecases", "no name")
                           : QLatin1Char('"') + name + QLatin1Char('"');
@@ -67,6 +84,11 @@ QString trackLabel(int program, int output) {
 
 QString deadTimeLabel(int output) {
     return QCoreApplication::translate("cambench::usecases", "dead time of output %1").arg(output);
+}
+
+QString deadTimeModeLabel(int output) {
+    return QCoreApplication::translate("cambench::usecases", "dead-time mode of output %1")
+        .arg(output);
 }
 
 QString outputNameLabel(int output) {

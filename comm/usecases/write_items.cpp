@@ -14,6 +14,7 @@ namespace cambench::usecases {
 
 namespace {
 
+using comm::CamConCapability;
 using comm::CamConDevice;
 
 constexpr int kUserAccessOutputs = 256;
@@ -116,6 +117,9 @@ public:
         fillDeadTimeBeliefs();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
             report.deadTimes << writeDeadTime(deadTime);
+        fillDeadTimeModeBeliefs();
+        for (const DeadTimeModeWrite& mode : m_plan.deadTimeModes)
+            report.deadTimeModes << writeDeadTimeMode(mode);
         for (const NameWrite& name : m_plan.outputNames)
             report.outputNames << writeName(name, false);
         for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
@@ -319,6 +323,44 @@ private:
         return writeItem<qint32>(deadTimeLabel(write.output), write.wanted, before, ops);
     }
 
+    // One read of every output's mode before the first mode write, instead
+    // of one read per item.
+    void fillDeadTimeModeBeliefs() {
+        int highest = 0;
+        for (const DeadTimeModeWrite& write : m_plan.deadTimeModes) {
+            if (!write.believed) highest = std::max(highest, write.output);
+        }
+        if (highest == 0 || m_stop || !m_connection.has(CamConCapability::DeadTimeModes)) return;
+        const Result<DeadTimeModes> read = m_connection.readDeadTimeModes(highest);
+        if (read) m_deadTimeModes = *read;
+    }
+
+    ItemOutcome<OutputDeadTime> writeDeadTimeMode(const DeadTimeModeWrite& write) {
+        if (!m_connection.has(CamConCapability::DeadTimeModes)) {
+            // Not reachable over this protocol: not sent, and said so.
+            ItemOutcome<OutputDeadTime> outcome;
+            outcome.label = deadTimeModeLabel(write.output);
+            outcome.error = m_connection.missing(CamConCapability::DeadTimeModes);
+            m_progress.report(m_done++, m_total, outcome.label);
+            return outcome;
+        }
+        ValueOps<OutputDeadTime> ops;
+        ops.read = [this, &write]() -> Result<OutputDeadTime> {
+            const Result<DeadTimeModes> read = m_connection.readDeadTimeModes(write.output);
+            if (!read) return read.error();
+            return read->value(write.output);
+        };
+        ops.write = [this, &write](const OutputDeadTime&) {
+            return m_connection.writeDeadTimeMode(write.output, write.wanted);
+        };
+        ops.same = [](const OutputDeadTime& a, const OutputDeadTime& b) { return a == b; };
+        ops.text = deadTimeModeText;
+        std::optional<OutputDeadTime> before = write.believed;
+        if (!before && m_deadTimeModes) before = m_deadTimeModes->value(write.output);
+        return writeItem<OutputDeadTime>(deadTimeModeLabel(write.output), write.wanted, before,
+                                         ops);
+    }
+
     ItemOutcome<std::optional<User>> writeUser(const UserWrite& write) {
         using MaybeUser = std::optional<User>;
         const User* current = findUser(m_users, write.deviceNumber);
@@ -379,6 +421,7 @@ private:
     SystemSettings m_settings;  // the device's settings as known now
     QList<User> m_users;        // the device's users as known now
     std::optional<DeadTimes> m_deadTimes;
+    std::optional<DeadTimeModes> m_deadTimeModes;
     std::optional<Error> m_stop;  // set: the remaining items are not sent
     qint64 m_done = 0;
     qint64 m_total = 0;

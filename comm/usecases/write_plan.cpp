@@ -112,7 +112,7 @@ void addPlcNetworks(WritePlan& plan, const Project& wanted, const Project& onDev
 
 int WritePlan::itemCount() const {
     return int(settings.size() + programNames.size() + tracks.size() + deadTimes.size() +
-               outputNames.size() + users.size() + plcNetworks.size());
+               deadTimeModes.size() + outputNames.size() + users.size() + plcNetworks.size());
 }
 
 QList<SettingsWrite> settingsGroups(const SystemSettings& wanted) {
@@ -167,6 +167,12 @@ WritePlan planFromProject(const Project& wanted, const Project& onDevice) {
         DeadTimeWrite write{it.key(), *it, {}};
         if (deadTimesRead) write.believed = onDevice.deadTimes.value(it.key(), 0);
         plan.deadTimes << write;
+    }
+    const bool modesRead = wasRead(onDevice, ProjectPart::DeadTimeModes);
+    for (auto it = wanted.deadTimeModes.cbegin(); it != wanted.deadTimeModes.cend(); ++it) {
+        DeadTimeModeWrite write{it.key(), *it, {}};
+        if (modesRead) write.believed = onDevice.deadTimeModes.value(it.key());
+        plan.deadTimeModes << write;
     }
     const bool namesRead = wasRead(onDevice, ProjectPart::OutputNames);
     for (auto it = wanted.names.outputs.cbegin(); it != wanted.names.outputs.cend(); ++it) {

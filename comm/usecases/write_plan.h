@@ -35,6 +35,15 @@ struct DeadTimeWrite {
     std::optional<qint32> believed;
 };
 
+// The dead-time mode and its dead times of one output (1-based), which only
+// the table interface reaches. `wanted.normal` is the same device word as
+// the output's DeadTimeWrite: a plan holds one value for it.
+struct DeadTimeModeWrite {
+    int output = 1;
+    OutputDeadTime wanted;
+    std::optional<OutputDeadTime> believed;
+};
+
 // An output name (number = output, 1-based) or a program name (number =
 // program, 0-based).
 struct NameWrite {
@@ -69,13 +78,15 @@ struct PlcWrite {
 };
 
 // Everything one write is to do. Items are written in this order:
-// settings, program names, tracks, dead times, output names, users, PLC
-// networks (settings first: the axis type decides which cams are valid).
+// settings, program names, tracks, dead times, dead-time modes, output
+// names, users, PLC networks (settings first: the axis type decides which
+// cams are valid).
 struct WritePlan {
     QList<SettingsWrite> settings;
     QList<NameWrite> programNames;
     QList<TrackWrite> tracks;
     QList<DeadTimeWrite> deadTimes;
+    QList<DeadTimeModeWrite> deadTimeModes;
     QList<NameWrite> outputNames;
     QList<UserWrite> users;
     QList<PlcWrite> plcNetworks;

@@ -11,6 +11,7 @@ QList<OutcomeLine> WriteReport::lines() const {
     add(programNames);
     add(tracks);
     add(deadTimes);
+    add(deadTimeModes);
     add(outputNames);
     add(users);
     add(plcNetworks);

@@ -22,6 +22,7 @@ struct WriteReport {
     QList<ItemOutcome<QString>> programNames;
     QList<ItemOutcome<Track>> tracks;
     QList<ItemOutcome<qint32>> deadTimes;
+    QList<ItemOutcome<OutputDeadTime>> deadTimeModes;
     QList<ItemOutcome<QString>> outputNames;
     // `actual`: the user as on the device after the write, empty when the
     // device has no such user (deleted, or never created).

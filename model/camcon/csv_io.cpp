@@ -18,6 +18,7 @@ namespace {
 
 const QString kCamsHeader = QStringLiteral("output,cam,on,off");
 const QString kDeadTimesHeader = QStringLiteral("output,deadtime");
+const QString kDeadTimeModesHeader = QStringLiteral("output,deadtime,mode,on,off");
 const QString kNamesHeader = QStringLiteral("kind,number,name");
 const QString kOutputKind = QStringLiteral("output");
 const QString kProgramKind = QStringLiteral("program");
@@ -278,6 +279,58 @@ Result<DeadTimes> deadTimesFromCsv(const QByteArray& content) {
     return deadTimes;
 }
 
+QByteArray deadTimeModesToCsv(const DeadTimeModes& modes) {
+    QStringList rows;
+    for (auto it = modes.cbegin(); it != modes.cend(); ++it) {
+        rows << QStringLiteral("%1,%2,%3,%4,%5")
+                    .arg(it.key())
+                    .arg(it->normal)
+                    .arg(deadTimeModeKey(it->mode))
+                    .arg(it->on)
+                    .arg(it->off);
+    }
+    return joinLines(kDeadTimeModesHeader, rows);
+}
+
+Result<DeadTimeTable> deadTimeTableFromCsv(const QByteArray& content) {
+    DeadTimeTable table;
+    // The header says which form: the plain one is checked by deadTimesFromCsv.
+    QString first = QString::fromUtf8(content.left(content.indexOf('\n'))).trimmed();
+    if (first.startsWith(QChar(0xFEFF))) first.remove(0, 1);
+    if (first != kDeadTimeModesHeader) {
+        Result<DeadTimes> plain = deadTimesFromCsv(content);
+        if (!plain) return plain.error();
+        table.deadTimes = *plain;
+        return table;
+    }
+    const Result<QList<CsvRow>> rows = readRows(content, kDeadTimeModesHeader);
+    if (!rows) return rows.error();
+    for (const CsvRow& row : *rows) {
+        FieldReader r(row);
+        const int output = int(r.integer(0, "output", 1, kInt32Max));
+        OutputDeadTime deadTime;
+        deadTime.normal = qint32(r.integer(1, "dead time", 0, kInt32Max));
+        deadTime.on = qint32(r.integer(3, "switch-on dead time", 0, kInt32Max));
+        deadTime.off = qint32(r.integer(4, "switch-off dead time", 0, kInt32Max));
+        if (!r.ok()) return lineError(row.line, r.why());
+        const std::optional<DeadTimeMode> mode = deadTimeModeFromKey(row.fields.at(2).trimmed());
+        if (!mode) {
+            return lineError(row.line, QCoreApplication::translate(
+                                           "cambench::model",
+                                           "unknown mode \"%1\"; use normal, on/off or path-time")
+                                           .arg(row.fields.at(2).trimmed()));
+        }
+        deadTime.mode = *mode;
+        if (table.modes.contains(output)) {
+            return lineError(
+                row.line, QCoreApplication::translate("cambench::model", "output %1 appears twice")
+                              .arg(output));
+        }
+        table.modes.insert(output, deadTime);
+    }
+    return table;
+}
+
 QByteArray namesToCsv(const Names& names) {
     QStringList rows;
     for (auto it = names.outputs.cbegin(); it != names.outputs.cend(); ++it)
@@ -340,6 +393,10 @@ Status saveDeadTimesCsv(const QString& path, const DeadTimes& deadTimes) {
 
 Result<DeadTimes> loadDeadTimesCsv(const QString& path) {
     return loadCsv(path, &deadTimesFromCsv);
+}
+
+Result<DeadTimeTable> loadDeadTimeTableCsv(const QString& path) {
+    return loadCsv(path, &deadTimeTableFromCsv);
 }
 
 Status saveNamesCsv(const QString& path, const Names& names) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cam_program.h"
+#include "dead_time_modes.h"
 #include "dead_times.h"
 #include "model/result.h"
 
@@ -30,6 +31,18 @@ Result<Tracks> camsFromCsv(const QByteArray& content);
 QByteArray deadTimesToCsv(const DeadTimes& deadTimes);
 Result<DeadTimes> deadTimesFromCsv(const QByteArray& content);
 
+// Dead times with their modes, as the table interface has them:
+//   "output,deadtime,mode,on,off" (0.1 ms; mode normal|on/off|path-time;
+//   deadtime is the mode normal's, on and off the other modes')
+// A file in either form reads as a DeadTimeTable: plain dead times leave
+// `modes` empty, a file with modes leaves `deadTimes` empty.
+struct DeadTimeTable {
+    DeadTimes deadTimes;
+    DeadTimeModes modes;
+};
+QByteArray deadTimeModesToCsv(const DeadTimeModes& modes);
+Result<DeadTimeTable> deadTimeTableFromCsv(const QByteArray& content);
+
 QByteArray namesToCsv(const Names& names);
 Result<Names> namesFromCsv(const QByteArray& content);
 
@@ -38,6 +51,7 @@ Status saveCamsCsv(const QString& path, const Tracks& tracks);
 Result<Tracks> loadCamsCsv(const QString& path);
 Status saveDeadTimesCsv(const QString& path, const DeadTimes& deadTimes);
 Result<DeadTimes> loadDeadTimesCsv(const QString& path);
+Result<DeadTimeTable> loadDeadTimeTableCsv(const QString& path);
 Status saveNamesCsv(const QString& path, const Names& names);
 Result<Names> loadNamesCsv(const QString& path);
 

@@ -33,9 +33,13 @@ struct PartName {
     const char* name;
 };
 const PartName kPartNames[] = {
-    {ProjectPart::Device, "device"},       {ProjectPart::Settings, "settings"},
-    {ProjectPart::DeadTimes, "deadTimes"}, {ProjectPart::OutputNames, "outputNames"},
-    {ProjectPart::Users, "users"},         {ProjectPart::PlcNetworks, "plcNetworks"},
+    {ProjectPart::Device, "device"},
+    {ProjectPart::Settings, "settings"},
+    {ProjectPart::DeadTimes, "deadTimes"},
+    {ProjectPart::OutputNames, "outputNames"},
+    {ProjectPart::Users, "users"},
+    {ProjectPart::PlcNetworks, "plcNetworks"},
+    {ProjectPart::DeadTimeModes, "deadTimeModes"},
 };
 
 QString isoTime(const QDateTime& time) {
@@ -112,6 +116,11 @@ public:
         project.users = readUsers(m_r.array(root, {}, key("users")));
         project.plcNetworks =
             plcNetworksFromJson(m_r, m_r.array(root, {}, key("plcNetworks")), key("plcNetworks"));
+        // Files from before dead-time modes were carried have none.
+        if (root.contains(key("deadTimeModes"))) {
+            project.deadTimeModes =
+                readDeadTimeModes(m_r.array(root, {}, key("deadTimeModes")), project.device);
+        }
         if (root.contains(key("readAt")))
             project.readAt = readTimes(m_r.object(root, {}, key("readAt")));
         if (m_r.failed()) return Error::invalidData(m_r.problem() + QLatin1Char('.'));
@@ -207,6 +216,47 @@ private:
             deadTimes.insert(output, value);
         }
         return deadTimes;
+    }
+
+    DeadTimeModes readDeadTimeModes(const QJsonArray& array, const DeviceInfo& device) {
+        DeadTimeModes modes;
+        for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
+            const QString path = JsonReader::element(key("deadTimeModes"), i);
+            const QJsonObject object = m_r.objectValue(array.at(i), path);
+            const int output =
+                int(m_r.integer(object, path, key("output"),
+                                QCoreApplication::translate("cambench::model", "output"), 1,
+                                device.deadTimeOutputs));
+            const QString modeKey =
+                m_r.string(object, path, key("mode"),
+                           QCoreApplication::translate("cambench::model", "dead-time mode"));
+            OutputDeadTime deadTime;
+            const std::optional<DeadTimeMode> mode = deadTimeModeFromKey(modeKey);
+            if (!m_r.failed() && !mode) {
+                m_r.fail(
+                    JsonReader::member(path, key("mode")),
+                    QCoreApplication::translate(
+                        "cambench::model", "unknown mode \"%1\"; use normal, on/off or path-time")
+                        .arg(modeKey));
+            }
+            deadTime.mode = mode.value_or(DeadTimeMode::Normal);
+            deadTime.normal =
+                qint32(m_r.integer(object, path, key("deadTime"),
+                                   QCoreApplication::translate("cambench::model", "dead time")));
+            deadTime.on = qint32(
+                m_r.integer(object, path, key("on"),
+                            QCoreApplication::translate("cambench::model", "switch-on dead time")));
+            deadTime.off = qint32(m_r.integer(
+                object, path, key("off"),
+                QCoreApplication::translate("cambench::model", "switch-off dead time")));
+            if (!m_r.failed() && modes.contains(output)) {
+                m_r.fail(JsonReader::member(path, key("output")),
+                         QCoreApplication::translate("cambench::model", "output %1 appears twice")
+                             .arg(output));
+            }
+            modes.insert(output, deadTime);
+        }
+        return modes;
     }
 
     QMap<int, QString> readNames(const QJsonArray& array, const char* section,
@@ -325,6 +375,20 @@ QStringList validateProject(const Project& project) {
         }
     }
     problems << validateDeadTimes(project.deadTimes, project.device);
+    problems << validateDeadTimeModes(project.deadTimeModes, project.device);
+    // One device word: a project cannot want two values for it.
+    for (auto it = project.deadTimeModes.cbegin(); it != project.deadTimeModes.cend(); ++it) {
+        if (project.deadTimes.contains(it.key()) &&
+            project.deadTimes.value(it.key()) != it->normal) {
+            problems << QCoreApplication::translate(
+                            "cambench::model",
+                            "Output %1: the dead time %2 and the dead time of its dead-time mode "
+                            "%3 (0.1 ms) differ, but the device holds one value for both.")
+                            .arg(it.key())
+                            .arg(project.deadTimes.value(it.key()))
+                            .arg(it->normal);
+        }
+    }
     problems << validateNames(project.names, project.device);
     problems << validateSettings(project.settings);
     problems << validateUsers(project.users, UserNumbers::Optional);
@@ -359,6 +423,17 @@ QByteArray projectToJson(const Project& project, const ProjectSaveOptions& optio
         users.append(userToJson(user, options.includeUserNumbers));
     root.insert(key("users"), users);
     root.insert(key("plcNetworks"), plcNetworksToJson(project.plcNetworks));
+    if (!project.deadTimeModes.isEmpty()) {
+        QJsonArray modes;
+        for (auto it = project.deadTimeModes.cbegin(); it != project.deadTimeModes.cend(); ++it) {
+            modes.append(QJsonObject{{key("output"), it.key()},
+                                     {key("mode"), deadTimeModeKey(it->mode)},
+                                     {key("deadTime"), it->normal},
+                                     {key("on"), it->on},
+                                     {key("off"), it->off}});
+        }
+        root.insert(key("deadTimeModes"), modes);
+    }
     return toIndentedJson(root);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cam_program.h"
+#include "dead_time_modes.h"
 #include "dead_times.h"
 #include "device_info.h"
 #include "model/result.h"
@@ -25,6 +26,7 @@ enum class ProjectPart {
     OutputNames,
     Users,
     PlcNetworks,
+    DeadTimeModes,  // table interface only
 };
 
 // Which parts of a project were read from a device, and when (UTC). A part
@@ -58,12 +60,18 @@ struct Project {
     // user without a number keeps the device's number when written.
     QList<User> users;
     QList<PlcNetwork> plcNetworks;
+    // Dead-time modes and separate switch-on/switch-off dead times, which
+    // only the table interface reaches. Empty: the project has none (read
+    // over another protocol, or made on the PC). Each output's `normal` is
+    // the same device word as its entry in `deadTimes` (validateProject).
+    DeadTimeModes deadTimeModes;
     ProjectReadTimes readAt;
 
     friend bool operator==(const Project& a, const Project& b) {
         return a.device == b.device && a.programs == b.programs && a.deadTimes == b.deadTimes &&
                a.names == b.names && a.settings == b.settings && a.users == b.users &&
-               a.plcNetworks == b.plcNetworks && a.readAt == b.readAt;
+               a.plcNetworks == b.plcNetworks && a.deadTimeModes == b.deadTimeModes &&
+               a.readAt == b.readAt;
     }
 };
 

@@ -7,6 +7,12 @@
 #include <QStringList>
 #include <QTemporaryDir>
 
+// Test steps of every end-to-end test: start a simulator, check an exit code
+// (the run's output in the message when it differs).
+#define START_SIM(session, ...) \
+    QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
+#define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
+
 namespace cambench::e2e {
 
 // Fast lines keep the suite short; both ends must agree on the rate.

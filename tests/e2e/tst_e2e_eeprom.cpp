@@ -10,10 +10,6 @@
 using namespace cambench;
 using namespace cambench::e2e;
 
-#define START_SIM(session, ...) \
-    QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
-#define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
-
 namespace {
 
 // Makes the device differ from its backup: one more cam on output 9.

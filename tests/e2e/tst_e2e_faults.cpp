@@ -6,10 +6,6 @@
 
 using namespace cambench::e2e;
 
-#define START_SIM(session, ...) \
-    QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
-#define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
-
 class TestE2eFaults : public QObject {
     Q_OBJECT
 private Q_SLOTS:

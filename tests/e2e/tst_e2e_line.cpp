@@ -14,10 +14,6 @@
 
 using namespace cambench::e2e;
 
-#define START_SIM(session, ...) \
-    QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
-#define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
-
 namespace {
 
 const QStringList kLineOfThree{"--verbose", "--protocol", "multiuser", "--devices", "1,2,3"};

@@ -118,6 +118,42 @@ private Q_SLOTS:
         QVERIFY(*loaded == project);
     }
 
+    // Issue 12, point 2: dead-time modes ride in the project; files from
+    // before them load without; one device word cannot hold two values.
+    void deadTimeModesRoundTrip() {
+        Project project = sampleProject();
+        project.device.deadTimeOutputs = 32;
+        project.device.maxDeadTime = 9999;
+        project.deadTimeModes = {{1, {DeadTimeMode::Normal, 12, 0, 0}},
+                                 {2, {DeadTimeMode::SeparateOnOff, 9999, 80, 150}},
+                                 {3, {DeadTimeMode::PathTime, 0, 20, 300}}};
+        project.readAt.parts.insert(ProjectPart::DeadTimeModes,
+                                    QDateTime(QDate(2026, 3, 1), QTime(8, 31, 9), Qt::UTC));
+        QCOMPARE(validateProject(project), QStringList());
+        const QByteArray json = projectToJson(project, kWithNumbers);
+        const Result<Project> loaded = projectFromJson(json);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
+        QCOMPARE(loaded->deadTimeModes, project.deadTimeModes);
+        QVERIFY(*loaded == project);
+
+        // Without modes, the file has no such key and loads with none.
+        QVERIFY(!projectToJson(sampleProject()).contains("deadTimeModes"));
+        QVERIFY(projectFromJson(projectToJson(sampleProject()))->deadTimeModes.isEmpty());
+
+        project.deadTimeModes[1].normal = 13;  // deadTimes says 12
+        const QStringList problems = validateProject(project);
+        QCOMPARE(problems.size(), 1);
+        QVERIFY2(problems.first().contains(QLatin1String("Output 1")),
+                 qPrintable(problems.first()));
+
+        QByteArray bad = json;
+        bad.replace("\"on/off\"", "\"sideways\"");
+        const Result<Project> refused = projectFromJson(bad);
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.contains(QLatin1String("deadTimeModes[1].mode")),
+                 qPrintable(refused.error().message));
+    }
+
     void userNumbersAreSavedOnlyWhenAskedFor() {
         const QByteArray without = projectToJson(sampleProject());
         QVERIFY(!without.contains("4711"));

@@ -5,8 +5,10 @@
 // say so.
 #include "shell_fixture.h"
 
+#include "model/camcon/project_file.h"
 #include "ui/analogue_cams_page.h"
 #include "ui/change_marker.h"
+#include "ui/commissioning_report.h"
 #include "ui/dead_time_modes_page.h"
 #include "ui/language.h"
 #include "ui/programming_program_page.h"
@@ -17,6 +19,8 @@
 #include <QMessageBox>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTextDocument>
 #include <QtTest>
 
 using namespace cambench;
@@ -51,6 +55,7 @@ private Q_SLOTS:
     void deadTimeModeEditIsMarkedCountedAndAskedAbout();
     void analogueEditIsCountedAndARefusalSaysWhere();
     void programmingProgramEditIsMarkedAndCounted();
+    void projectFileCarriesDeadTimeModesThroughThePage();
 };
 
 void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
@@ -133,6 +138,54 @@ void TablePageEditsTest::programmingProgramEditIsMarkedAndCounted() {
     QVERIFY(program->font().bold());
     QVERIFY2(state->text().contains(QLatin1String("Edited, not written")),
              qPrintable(state->text()));
+}
+
+void TablePageEditsTest::projectFileCarriesDeadTimeModesThroughThePage() {
+    // Issue 12, point 2: a project's dead-time modes are edits on the page
+    // (marked, counted, written there) and a project saved again keeps them.
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
+    QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!shell->window()->isReadingDevice(), kDeviceTimeoutMs);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("p.json"));
+    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    Result<Project> saved = loadProject(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error().message));
+    QCOMPARE(saved->deadTimeModes, modes->onDevice());
+    QVERIFY(saved->readAt.parts.contains(ProjectPart::DeadTimeModes) ||
+            saved->deadTimeModes == modes->onDevice());
+
+    Project edited = *saved;
+    const OutputDeadTime wanted{DeadTimeMode::PathTime, 0, 20, 300};
+    edited.deadTimeModes.insert(6, wanted);
+    edited.readAt = {};
+    QVERIFY(saveProject(path, edited).ok());
+    const int before = shell->workspace()->changedCount();
+    const auto keep = answerReplaceEdits(false);
+    shell->window()->openProjectFile(path);
+    QCOMPARE(modes->edited(6), wanted);
+    QVERIFY(modes->table()
+                ->item(5, DeadTimeModesPage::OutputColumn)
+                ->text()
+                .startsWith(changedMarker()));
+    QVERIFY(shell->workspace()->changedCount() >= before + 1);
+
+    // The report prints them, the edited one marked with the device's value.
+    QTextDocument report;
+    CommissioningReport::build(report, *shell->workspace());
+    const QString text = report.toPlainText();
+    QVERIFY2(text.contains(QLatin1String("Dead-time modes")), qPrintable(text));
+    QVERIFY2(text.contains(changedMarker() + QLatin1String("Path-time (device: Normal)")),
+             qPrintable(text));
+
+    const QString again = dir.filePath(QStringLiteral("again.json"));
+    QVERIFY(shell->window()->saveProjectTo(again).ok());
+    const Result<Project> reloaded = loadProject(again);
+    QVERIFY2(reloaded.ok(), qPrintable(reloaded.error().message));
+    QCOMPARE(reloaded->deadTimeModes.value(6), wanted);
+    QVERIFY(!reloaded->readAt.parts.contains(ProjectPart::DeadTimeModes));
 }
 
 QTEST_MAIN(TablePageEditsTest)
