@@ -1010,6 +1010,10 @@
         <source>On the device: %1</source>
         <translation>Im Gerät: %1</translation>
     </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
 </context>
 <context>
     <name>cambench::AccessGridModel</name>
@@ -1811,10 +1815,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Das Protokoll kann nicht nach %1 geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
         <source>%1 (device: %2)</source>
         <translation>%1 (Gerät: %2)</translation>
     </message>
@@ -2397,10 +2397,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Weg-Zeit</translation>
     </message>
     <message>
-        <source>Largest dead time: %1 ms</source>
-        <translation>Größte Totzeit: %1 ms</translation>
-    </message>
-    <message>
         <source>Output %1 dead-time mode</source>
         <translation>Totzeit-Modus von Ausgang %1</translation>
     </message>
@@ -2413,16 +2409,16 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Noch nicht aus dem Gerät gelesen.</translation>
     </message>
     <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
         <source>On the device: %1</source>
         <translation>Im Gerät: %1</translation>
     </message>
     <message>
         <source>Edited, not written to the device</source>
         <translation>Geändert, nicht ins Gerät geschrieben</translation>
+    </message>
+    <message>
+        <source>Largest dead time: %1</source>
+        <translation>Größte Totzeit: %1</translation>
     </message>
 </context>
 <context>
@@ -3321,10 +3317,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>on: %1</source>
         <translation>ein: %1</translation>
-    </message>
-    <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
     </message>
     <message>
         <source>An S7 with a CP340 drives the CamCon with the short commands 0x01 to 0x07. This page sends the same telegrams as the function block and shows the answers as the data block holds them. When the CamCon answers here as expected, look for the fault in the PLC program or the CP340&apos;s settings.</source>

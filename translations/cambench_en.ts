@@ -1010,6 +1010,10 @@
         <source>On the device: %1</source>
         <translation type="unfinished">On the device: %1</translation>
     </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
 </context>
 <context>
     <name>cambench::AccessGridModel</name>
@@ -1811,10 +1815,6 @@ Erase and restore now?</translation>
         <translation>Cannot write the report to %1: %2</translation>
     </message>
     <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
         <source>%1 (device: %2)</source>
         <translation>%1 (device: %2)</translation>
     </message>
@@ -2396,10 +2396,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Largest dead time: %1 ms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Output %1 dead-time mode</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2412,15 +2408,15 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 ms</source>
-        <translation type="unfinished">%1 ms</translation>
-    </message>
-    <message>
         <source>On the device: %1</source>
         <translation type="unfinished">On the device: %1</translation>
     </message>
     <message>
         <source>Edited, not written to the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest dead time: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3319,10 +3315,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>on: %1</source>
         <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 ms</source>
-        <translation type="unfinished">%1 ms</translation>
     </message>
     <message>
         <source>An S7 with a CP340 drives the CamCon with the short commands 0x01 to 0x07. This page sends the same telegrams as the function block and shows the answers as the data block holds them. When the CamCon answers here as expected, look for the fault in the PLC program or the CP340&apos;s settings.</source>

@@ -2,6 +2,7 @@
 
 #include "cam_text.h"
 #include "change_marker.h"
+#include "milliseconds_text.h"
 #include "plc_page.h"
 #include "plc_symbol.h"
 #include "print_diagram.h"
@@ -58,11 +59,6 @@ QString paragraph(const QString& text) {
 
 QString heading(const QString& text) {
     return QStringLiteral("<h2>%1</h2>").arg(text.toHtmlEscaped());
-}
-
-// "12.3 ms" in the report's locale.
-QString milliseconds(qint32 tenths) {
-    return CommissioningReport::tr("%1 ms").arg(QLocale().toString(tenths / 10.0, 'f', 1));
 }
 
 // A value that differs from the device: marked, with the device's beside it.
@@ -188,9 +184,9 @@ private:
             QString deadTime = QStringLiteral("—");
             if (output <= info.deadTimeOutputs) {
                 const std::optional<qint32> device = m_cams.deviceDeadTime(output);
-                deadTime = marked(milliseconds(m_cams.deadTime(output)),
+                deadTime = marked(millisecondsText(m_cams.deadTime(output)),
                                   device && *device != m_cams.deadTime(output),
-                                  device ? milliseconds(*device) : QString());
+                                  device ? millisecondsText(*device) : QString());
             }
             rows += row(
                 {QString::number(output),
@@ -228,13 +224,14 @@ private:
                 return marked(edited, !known || differs,
                               known ? was : CommissioningReport::tr("not read"));
             };
-            rows +=
-                row({QString::number(it.key()),
-                     cell(modeName(it->mode), it->mode != device.mode, modeName(device.mode)),
-                     cell(milliseconds(it->normal), it->normal != device.normal,
-                          milliseconds(device.normal)),
-                     cell(milliseconds(it->on), it->on != device.on, milliseconds(device.on)),
-                     cell(milliseconds(it->off), it->off != device.off, milliseconds(device.off))});
+            rows += row(
+                {QString::number(it.key()),
+                 cell(modeName(it->mode), it->mode != device.mode, modeName(device.mode)),
+                 cell(millisecondsText(it->normal), it->normal != device.normal,
+                      millisecondsText(device.normal)),
+                 cell(millisecondsText(it->on), it->on != device.on, millisecondsText(device.on)),
+                 cell(millisecondsText(it->off), it->off != device.off,
+                      millisecondsText(device.off))});
         }
         return heading(CommissioningReport::tr("Dead-time modes")) +
                source(ProjectPart::DeadTimeModes) + table(rows);

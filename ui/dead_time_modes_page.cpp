@@ -2,6 +2,7 @@
 
 #include "change_marker.h"
 #include "device_session.h"
+#include "milliseconds_text.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_document.h"
@@ -11,7 +12,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -127,8 +127,7 @@ void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
         m_pending.clear();
     }
     m_note->setText(
-        tr("Largest dead time: %1 ms")
-            .arg(QLocale().toString(m_workspace->info().maxDeadTime / kTenthsPerMs, 'f', 1)));
+        tr("Largest dead time: %1").arg(millisecondsText(m_workspace->info().maxDeadTime)));
     refreshEdits();
 }
 
@@ -160,9 +159,6 @@ void DeadTimeModesPage::takeIncoming(const DeadTimeModes& modes, bool fromDevice
 void DeadTimeModesPage::refreshEdits() {
     // Setting a font changes the item: no recursion through itemChanged.
     const QSignalBlocker blocker(m_table);
-    const auto ms = [](qint32 tenths) {
-        return tr("%1 ms").arg(QLocale().toString(tenths / kTenthsPerMs, 'f', 1));
-    };
     for (int row = 0; row < m_table->rowCount(); ++row) {
         QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
         if (!outputItem) continue;
@@ -180,9 +176,11 @@ void DeadTimeModesPage::refreshEdits() {
                 : QString());
         bool any = now.mode != device.mode;
         any |= markEdited(m_table->item(row, NormalColumn), now.normal != device.normal,
-                          ms(device.normal));
-        any |= markEdited(m_table->item(row, OnColumn), now.on != device.on, ms(device.on));
-        any |= markEdited(m_table->item(row, OffColumn), now.off != device.off, ms(device.off));
+                          millisecondsText(device.normal));
+        any |= markEdited(m_table->item(row, OnColumn), now.on != device.on,
+                          millisecondsText(device.on));
+        any |= markEdited(m_table->item(row, OffColumn), now.off != device.off,
+                          millisecondsText(device.off));
         outputItem->setText((any ? changedMarker() : QString()) + QString::number(output));
         markEdited(outputItem, any, QString());
         outputItem->setToolTip(any ? tr("Edited, not written to the device") : QString());

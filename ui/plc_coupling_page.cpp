@@ -1,6 +1,7 @@
 #include "plc_coupling_page.h"
 
 #include "device_session.h"
+#include "milliseconds_text.h"
 #include "sentence.h"
 #include "workspace.h"
 
@@ -53,11 +54,6 @@ QString outputList(const QList<bool>& bits, int first, int last) {
     return on.isEmpty() ? QCoreApplication::translate("cambench::PlcCouplingPage", "none on")
                         : QCoreApplication::translate("cambench::PlcCouplingPage", "on: %1")
                               .arg(on.join(QStringLiteral(", ")));
-}
-
-QString tenthsText(int tenths) {
-    return QCoreApplication::translate("cambench::PlcCouplingPage", "%1 ms")
-        .arg(QLocale().toString(tenths / 10.0, 'f', 1));
 }
 
 }  // namespace
@@ -418,7 +414,7 @@ void PlcCouplingPage::readDeadTimeOf(int output) {
                     .arg(2 * (output - 1))
                     .arg(output)
                     .arg(*tenths)
-                    .arg(tenthsText(*tenths)) +
+                    .arg(millisecondsText(*tenths)) +
                 tr("read at %1")
                     .arg(QLocale().toString(QTime::currentTime(), QLocale::ShortFormat)));
         });
@@ -434,7 +430,7 @@ void PlcCouplingPage::writeDeadTime() {
     if (!confirmed(tr("Set the dead time of output %1 to %2 (0x07)? The output switches that "
                       "much earlier from now on.")
                        .arg(output)
-                       .arg(tenthsText(tenths))))
+                       .arg(millisecondsText(tenths))))
         return;
     runCheckedWrite(
         tr("Write the dead time (0x07)"),

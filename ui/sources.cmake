@@ -40,6 +40,7 @@ target_sources(cambench_ui PRIVATE
   analogue_cams_page.cpp
   eeprom_lock_page.h
   eeprom_lock_page.cpp
+  milliseconds_text.h
   plc_coupling_page.h
   plc_coupling_page.cpp
   programming_program_page.h

@@ -73,4 +73,24 @@ QString keyValueLines(const QList<QPair<QString, QVariant>>& entries) {
     return text;
 }
 
+QList<int> onNumbers(const QList<bool>& bits) {
+    QList<int> numbers;
+    for (int i = 0; i < bits.size(); ++i) {
+        if (bits.at(i)) numbers.append(i + 1);
+    }
+    return numbers;
+}
+
+QString numberList(const QList<int>& numbers) {
+    QStringList texts;
+    for (int n : numbers) texts.append(QString::number(n));
+    return texts.isEmpty() ? QStringLiteral("none") : texts.join(u',');
+}
+
+QJsonArray jsonNumbers(const QList<int>& numbers) {
+    QJsonArray array;
+    for (int n : numbers) array.append(n);
+    return array;
+}
+
 }  // namespace cambench::cli

@@ -30,6 +30,11 @@ void printOut(const QString& text) {
     std::fflush(stdout);
 }
 
+int printJson(const QJsonDocument& document) {
+    printOut(QString::fromUtf8(document.toJson(QJsonDocument::Indented)));
+    return ExitOk;
+}
+
 Status writeOutput(const QString& path, const QByteArray& data) {
     if (path.isEmpty() || path == QLatin1String("-")) {
         std::fwrite(data.constData(), 1, size_t(data.size()), stdout);

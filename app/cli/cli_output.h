@@ -3,6 +3,7 @@
 #include "model/result.h"
 
 #include <QByteArray>
+#include <QJsonDocument>
 #include <QString>
 #include <QStringList>
 
@@ -14,6 +15,8 @@ void printError(const QString& message);
 int reportError(const Error& error);
 
 void printOut(const QString& text);  // stdout, as UTF-8
+// Prints `document` indented on stdout; returns ExitOk.
+int printJson(const QJsonDocument& document);
 
 // Writes `data` to `path` atomically, or to stdout when `path` is empty or "-".
 Status writeOutput(const QString& path, const QByteArray& data);

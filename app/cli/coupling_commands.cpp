@@ -34,16 +34,7 @@ Result<T> runShort(CliSession& session, const QString& title,
     return session.run<T>(title, comm::table::withShortCommands<T>(std::move(work)));
 }
 
-QList<int> onOutputs(const QList<bool>& bits) {
-    QList<int> numbers;
-    for (int i = 0; i < bits.size(); ++i)
-        if (bits.at(i)) numbers.append(i + 1);
-    return numbers;
-}
-
 QString statusText(const ShortStatus& status) {
-    QStringList on;
-    for (int output : onOutputs(status.outputs)) on.append(QString::number(output));
     return keyValueLines({
         {QStringLiteral("actualValue"), status.actualValue},
         {QStringLiteral("speed"), status.speed},
@@ -52,13 +43,11 @@ QString statusText(const ShortStatus& status) {
         {QStringLiteral("deviceStatusText"),
          comm::table::shortDeviceStatusText(status.deviceStatus)},
         {QStringLiteral("outputCount"), status.outputCount},
-        {QStringLiteral("outputsOn"), on.isEmpty() ? QStringLiteral("none") : on.join(u',')},
+        {QStringLiteral("outputsOn"), numberList(onNumbers(status.outputs))},
     });
 }
 
 QJsonObject statusJson(const ShortStatus& status) {
-    QJsonArray on;
-    for (int output : onOutputs(status.outputs)) on.append(output);
     return {{QStringLiteral("actualValue"), status.actualValue},
             {QStringLiteral("speed"), status.speed},
             {QStringLiteral("program"), status.program},
@@ -66,7 +55,7 @@ QJsonObject statusJson(const ShortStatus& status) {
             {QStringLiteral("deviceStatusText"),
              comm::table::shortDeviceStatusText(status.deviceStatus)},
             {QStringLiteral("outputCount"), status.outputCount},
-            {QStringLiteral("outputsOn"), on}};
+            {QStringLiteral("outputsOn"), jsonNumbers(onNumbers(status.outputs))}};
 }
 
 int runStatusQuery(CliSession& session, CommandArgs& args) {
@@ -76,11 +65,8 @@ int runStatusQuery(CliSession& session, CommandArgs& args) {
         runShort<ShortStatus>(session, QStringLiteral("short status"),
                               [](ShortClient& client, CamConDevice&) { return client.status(); });
     if (!status) return reportError(status.error());
-    if (json) {
-        printOut(QString::fromUtf8(QJsonDocument(statusJson(*status)).toJson()));
-    } else {
-        printOut(statusText(*status));
-    }
+    if (json) return printJson(QJsonDocument(statusJson(*status)));
+    printOut(statusText(*status));
     return ExitOk;
 }
 
@@ -103,6 +89,28 @@ int runResetErrors(CliSession& session, CommandArgs& args) {
         }));
 }
 
+Status checkOutput(int output, const DeviceInfo& info) {
+    if (output <= info.outputs) return success();
+    return Error::usage(QStringLiteral("output %1 does not exist: this device has outputs 1..%2")
+                            .arg(output)
+                            .arg(info.outputs));
+}
+
+Status checkProgram(int program, const DeviceInfo& info) {
+    if (program >= 0 && program < info.programs) return success();
+    return Error::usage(QStringLiteral("program %1 does not exist: this device has programs 0..%2")
+                            .arg(program)
+                            .arg(info.programs - 1));
+}
+
+// The device's identity, once `output` is known to exist on it.
+Result<DeviceInfo> infoWithOutput(CamConDevice& device, int output) {
+    Result<DeviceInfo> info = device.readInfo();
+    if (!info) return info.error();
+    if (const Status fits = checkOutput(output, *info); !fits) return fits.error();
+    return info;
+}
+
 int runProgramChange(CliSession& session, CommandArgs& args) {
     const Result<QString> text = args.takeRequiredPositional(QStringLiteral("a program number"));
     if (!text) return reportError(text.error());
@@ -118,12 +126,7 @@ int runProgramChange(CliSession& session, CommandArgs& args) {
         [program](ShortClient& client, CamConDevice& device) -> Result<usecases::OutcomeLine> {
             const Result<DeviceInfo> info = device.readInfo();
             if (!info) return info.error();
-            if (program >= info->programs) {
-                return Error::usage(
-                    QStringLiteral("program %1 does not exist: this device has programs 0..%2")
-                        .arg(program)
-                        .arg(info->programs - 1));
-            }
+            if (const Status fits = checkProgram(program, *info); !fits) return fits.error();
             return usecases::shortChangeProgram(client, program);
         }));
 }
@@ -139,20 +142,6 @@ Result<int> takeOutput(CommandArgs& args) {
     return output;
 }
 
-Status checkOutput(int output, const DeviceInfo& info) {
-    if (output <= info.outputs) return success();
-    return Error::usage(QStringLiteral("output %1 does not exist: this device has outputs 1..%2")
-                            .arg(output)
-                            .arg(info.outputs));
-}
-
-Status checkProgram(int program, const DeviceInfo& info) {
-    if (program >= 0 && program < info.programs) return success();
-    return Error::usage(QStringLiteral("program %1 does not exist: this device has programs 0..%2")
-                            .arg(program)
-                            .arg(info.programs - 1));
-}
-
 int runTrackRead(CliSession& session, CommandArgs& args) {
     const Result<int> output = takeOutput(args);
     if (!output) return reportError(output.error());
@@ -164,10 +153,8 @@ int runTrackRead(CliSession& session, CommandArgs& args) {
         runShort<Track>(session, QStringLiteral("short track read"),
                         [output = *output, program = *program](
                             ShortClient& client, CamConDevice& device) -> Result<Track> {
-                            const Result<DeviceInfo> info = device.readInfo();
+                            const Result<DeviceInfo> info = infoWithOutput(device, output);
                             if (!info) return info.error();
-                            if (const Status fits = checkOutput(output, *info); !fits)
-                                return fits.error();
                             int chosen = program;
                             if (chosen < 0) {
                                 const Result<ShortStatus> status = client.status();
@@ -217,9 +204,8 @@ int runTrackWrite(CliSession& session, CommandArgs& args) {
         session, QStringLiteral("short track write"),
         [wanted, program = *program](ShortClient& client,
                                      CamConDevice& device) -> Result<usecases::OutcomeLine> {
-            const Result<DeviceInfo> info = device.readInfo();
+            const Result<DeviceInfo> info = infoWithOutput(device, wanted.output);
             if (!info) return info.error();
-            if (const Status fits = checkOutput(wanted.output, *info); !fits) return fits.error();
             if (const Status fits = checkProgram(program, *info); !fits) return fits.error();
             const Result<QVariant> axisType = device.readSetting(QStringLiteral("axisType"));
             if (!axisType) return axisType.error();
@@ -240,10 +226,8 @@ int runDeadTimeRead(CliSession& session, CommandArgs& args) {
     const Result<int> deadTime =
         runShort<int>(session, QStringLiteral("short deadtime read"),
                       [output = *output](ShortClient& client, CamConDevice& device) -> Result<int> {
-                          const Result<DeviceInfo> info = device.readInfo();
+                          const Result<DeviceInfo> info = infoWithOutput(device, output);
                           if (!info) return info.error();
-                          if (const Status fits = checkOutput(output, *info); !fits)
-                              return fits.error();
                           return client.readDeadTime(output);
                       });
     if (!deadTime) return reportError(deadTime.error());

@@ -22,31 +22,6 @@ using comm::JobContext;
 // ones that are on are printed.
 constexpr int kMaxPoints = 256;
 
-int printJson(const QJsonDocument& document) {
-    printOut(QString::fromUtf8(document.toJson(QJsonDocument::Indented)));
-    return ExitOk;
-}
-
-QList<int> onNumbers(const QList<bool>& bits) {
-    QList<int> numbers;
-    for (int i = 0; i < bits.size(); ++i) {
-        if (bits.at(i)) numbers.append(i + 1);
-    }
-    return numbers;
-}
-
-QString numberList(const QList<int>& numbers) {
-    QStringList texts;
-    for (int n : numbers) texts.append(QString::number(n));
-    return texts.isEmpty() ? QStringLiteral("none") : texts.join(u',');
-}
-
-QJsonArray jsonNumbers(const QList<int>& numbers) {
-    QJsonArray array;
-    for (int n : numbers) array.append(n);
-    return array;
-}
-
 QString errorStateText(int state) {
     switch (state) {
         case 0:
