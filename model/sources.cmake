@@ -46,6 +46,8 @@ target_sources(cambench_model PRIVATE
   camcon/settings_file.cpp
   camcon/plc_file.h
   camcon/plc_file.cpp
+  camcon/table_sections_json.h
+  camcon/table_sections_json.cpp
   camcon/line_manifest.h
   camcon/line_manifest.cpp
 )

@@ -22,6 +22,9 @@ const CommandGroup* findCommandGroup(const QString& name) {
         {"backup-line", runBackupLine},
         {"verify-line", runVerifyLine},
         {"short", runShortCommands},
+        {"analogue", runAnalogue},
+        {"programming", runProgramming},
+        {"eeprom-lock", runEepromLock},
     };
     for (const CommandGroup& group : kGroups) {
         if (name == QLatin1String(group.name)) return &group;

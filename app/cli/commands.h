@@ -32,6 +32,9 @@ int runProject(CliSession& session, CommandArgs& args);
 int runBackupLine(CliSession& session, CommandArgs& args);
 int runVerifyLine(CliSession& session, CommandArgs& args);
 int runShortCommands(CliSession& session, CommandArgs& args);
+int runAnalogue(CliSession& session, CommandArgs& args);
+int runProgramming(CliSession& session, CommandArgs& args);
+int runEepromLock(CliSession& session, CommandArgs& args);
 
 const CommandGroup* findCommandGroup(const QString& name);
 

@@ -25,6 +25,7 @@ add_executable(cambench-cli
   cli/line_commands.cpp
   cli/port_commands.cpp
   cli/coupling_commands.cpp
+  cli/table_section_commands.cpp
   cli/write_output.h
   cli/write_output.cpp
 )

@@ -7,6 +7,7 @@
 #include "model/camcon/plc_file.h"
 
 #include <QCoreApplication>
+#include <QSet>
 #include <QHash>
 
 #include <algorithm>
@@ -30,6 +31,7 @@ public:
         for (const NameWrite& name : m_plan.outputNames) checkOutputName(name);
         checkUsers();
         for (const PlcWrite& network : m_plan.plcNetworks) checkPlcNetwork(network.wanted);
+        checkTableSections();
         return m_check;
     }
 
@@ -174,6 +176,24 @@ private:
                             .arg(write.output)
                             .arg(deadTimeText(deadTime.wanted), deadTimeText(write.wanted.normal)));
             }
+        }
+    }
+
+    void checkTableSections() {
+        QSet<int> analogueOutputs;
+        for (const AnalogueCamWrite& write : m_plan.analogueCams) {
+            for (const QString& why : validateAnalogueCamTrack(write.wanted, m_device)) problem(why);
+            if (analogueOutputs.contains(write.wanted.output)) {
+                problem(QCoreApplication::translate("cambench::usecases",
+                                                    "Analogue output %1 is to be written twice.")
+                            .arg(write.wanted.output));
+            }
+            analogueOutputs.insert(write.wanted.output);
+        }
+        if (m_plan.programmingProgram) {
+            for (const QString& why :
+                 validateProgrammingProgram(m_plan.programmingProgram->wanted, m_device))
+                problem(why);
         }
     }
 

@@ -47,13 +47,19 @@ public:
         for (const int count : plcCounts) plcTotal += count;
         const bool names = m_connection.has(CamConCapability::OutputNames);
         m_total = 1 + qint64(m_device.programs) * m_device.outputs + m_device.deadTimeOutputs +
-                  (names ? m_device.outputs : 0) + 1 + plcTotal + 1;
+                  (names ? m_device.outputs : 0) + 1 + plcTotal + 1 + 1 + kAnalogueOutputs + 1;
         m_done = 1;
+        // Before the programs: reading cams over the table interface selects
+        // their program as the programming program.
+        if (const Status ok = readProgrammingProgram(); !ok) return ok.error();
         for (int program = 0; program < m_device.programs; ++program) {
             if (const Status ok = readProgram(program); !ok) return ok.error();
         }
+        if (const Status ok = restoreProgrammingProgram(); !ok) return ok.error();
         if (const Status ok = readDeadTimes(); !ok) return ok.error();
         if (const Status ok = readDeadTimeModes(); !ok) return ok.error();
+        if (const Status ok = readAnalogueCams(); !ok) return ok.error();
+        if (const Status ok = readEepromLock(); !ok) return ok.error();
         if (const Status ok = readOutputNames(names); !ok) return ok.error();
         if (const Status ok = readUsers(); !ok) return ok.error();
         if (const Status ok = readPlcNetworks(plcCounts); !ok) return ok.error();
@@ -129,6 +135,74 @@ private:
         if (!modes) return modes.error();
         m_result.project.deadTimeModes = *modes;
         m_result.project.readAt.parts.insert(ProjectPart::DeadTimeModes, now());
+        return success();
+    }
+
+    // The table interface's other sections: absent elsewhere, never carried over.
+    Status readProgrammingProgram() {
+        if (const Status ok = step(1, QCoreApplication::translate(
+                                          "cambench::usecases", "reading the programming program"));
+            !ok)
+            return ok;
+        if (!m_connection.has(CamConCapability::ProgrammingProgram)) return success();
+        Result<ProgrammingProgram> programming = m_connection.readProgrammingProgram();
+        if (!programming) return programming.error();
+        m_result.project.programmingProgram = *programming;
+        m_result.project.readAt.parts.insert(ProjectPart::ProgrammingProgram, now());
+        return success();
+    }
+
+    // A read leaves the device as it found it: the programming program the
+    // cam reads selected is set back to the one read before them (a PLC
+    // may edit that program).
+    Status restoreProgrammingProgram() {
+        const std::optional<ProgrammingProgram>& before = m_result.project.programmingProgram;
+        if (!before) return success();
+        Result<ProgrammingProgram> current = m_connection.readProgrammingProgram();
+        if (!current) return current.error();
+        if (*current == *before) return success();
+        const Status restored = m_connection.writeProgrammingProgram(*before);
+        if (!restored) {
+            Error error = restored.error();
+            error.message = QCoreApplication::translate(
+                                "cambench::usecases",
+                                "Reading the programs selected program %1 as the programming "
+                                "program; setting it back to program %2 failed: %3")
+                                .arg(current->program)
+                                .arg(before->program)
+                                .arg(error.message);
+            return error;
+        }
+        return success();
+    }
+
+    Status readAnalogueCams() {
+        const bool reachable = m_connection.has(CamConCapability::AnalogueCams);
+        for (int output = 1; output <= kAnalogueOutputs; ++output) {
+            if (const Status ok = step(1, QCoreApplication::translate(
+                                              "cambench::usecases", "reading analogue output %1")
+                                              .arg(output));
+                !ok)
+                return ok;
+            if (!reachable) continue;
+            Result<AnalogueCamTrack> track = m_connection.readAnalogueCams(output);
+            if (!track) return track.error();
+            m_result.project.analogueCams << *track;
+        }
+        if (reachable) m_result.project.readAt.parts.insert(ProjectPart::AnalogueCams, now());
+        return success();
+    }
+
+    Status readEepromLock() {
+        if (const Status ok = step(1, QCoreApplication::translate("cambench::usecases",
+                                                                  "reading the EEPROM lock"));
+            !ok)
+            return ok;
+        if (!m_connection.has(CamConCapability::EepromLock)) return success();
+        Result<bool> locked = m_connection.readEepromLock();
+        if (!locked) return locked.error();
+        m_result.project.eepromLock = *locked;
+        m_result.project.readAt.parts.insert(ProjectPart::EepromLock, now());
         return success();
     }
 

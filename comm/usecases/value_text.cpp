@@ -76,6 +76,44 @@ QString plcText(const PlcNetwork& network) {
         .arg(used);
 }
 
+QString analogueCamsText(const AnalogueCamTrack& track) {
+    if (track.points.isEmpty())
+        return QCoreApplication::translate("cambench::usecases", "no base points");
+    // Every point: a changed one in the middle must be visible.
+    QStringList points;
+    for (const AnaloguePoint& point : track.points)
+        points << QStringLiteral("%1 \u2192 %2").arg(point.position).arg(point.value);
+    return QCoreApplication::translate("cambench::usecases", "%n base point(s): %1", "",
+                                       int(track.points.size()))
+        .arg(points.join(QStringLiteral(", ")));
+}
+
+QString programmingProgramText(const ProgrammingProgram& programming) {
+    switch (programming.selectMode) {
+        case 0:
+            return QCoreApplication::translate("cambench::usecases", "program %1, changed slowly")
+                .arg(programming.program);
+        case 1:
+            return QCoreApplication::translate("cambench::usecases",
+                                               "program %1, changed directly (within one cycle)")
+                .arg(programming.program);
+        case 2:
+            return QCoreApplication::translate("cambench::usecases",
+                                               "program %1, changed at the actual value %2")
+                .arg(programming.program)
+                .arg(programming.switchValue);
+    }
+    return QCoreApplication::translate("cambench::usecases", "program %1, select mode %2")
+        .arg(programming.program)
+        .arg(programming.selectMode);
+}
+
+QString eepromLockText(bool locked) {
+    return locked ? QCoreApplication::translate("cambench::usecases",
+                                                "locked (changes stay in RAM only)")
+                  : QCoreApplication::translate("cambench::usecases", "unlocked");
+}
+
 QString trackLabel(int program, int output) {
     return QCoreApplication::translate("cambench::usecases", "program %1, output %2")
         .arg(program)
@@ -112,6 +150,19 @@ QString plcLabel(const PlcNetwork& network) {
     return QCoreApplication::translate("cambench::usecases", "PLC network %1%2")
         .arg(plcAreaLetter(network.area))
         .arg(network.number);
+}
+
+QString analogueCamsLabel(int analogueOutput) {
+    return QCoreApplication::translate("cambench::usecases", "analogue output %1")
+        .arg(analogueOutput);
+}
+
+QString programmingProgramLabel() {
+    return QCoreApplication::translate("cambench::usecases", "programming program");
+}
+
+QString eepromLockLabel() {
+    return QCoreApplication::translate("cambench::usecases", "EEPROM lock");
 }
 
 }  // namespace cambench::usecases

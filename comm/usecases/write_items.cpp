@@ -110,6 +110,10 @@ public:
     WriteReport run() {
         WriteReport report;
         m_total = m_plan.itemCount();
+        readEepromLockFirst();
+        // An unlock first, so that everything after it is stored.
+        report.eepromLockFirst = m_plan.eepromLock && !m_plan.eepromLock->wanted;
+        if (report.eepromLockFirst) report.eepromLock = writeEepromLock(*m_plan.eepromLock);
         for (const SettingsWrite& group : m_plan.settings) report.settings << writeSettings(group);
         for (const NameWrite& name : m_plan.programNames)
             report.programNames << writeName(name, true);
@@ -125,6 +129,14 @@ public:
         for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
         for (const PlcWrite& network : m_plan.plcNetworks)
             report.plcNetworks << writePlcNetwork(network);
+        for (const AnalogueCamWrite& track : m_plan.analogueCams)
+            report.analogueCams << writeAnalogueCams(track);
+        if (m_plan.programmingProgram)
+            report.programmingProgram = writeProgrammingProgram(*m_plan.programmingProgram);
+        // A lock last, so that everything before it is stored first.
+        if (m_plan.eepromLock && !report.eepromLockFirst)
+            report.eepromLock = writeEepromLock(*m_plan.eepromLock);
+        if (const QString note = eepromNote(report); !note.isEmpty()) report.notes << note;
         m_progress.report(m_total, m_total,
                           QCoreApplication::translate("cambench::usecases", "written"));
         return report;
@@ -335,15 +347,22 @@ private:
         if (read) m_deadTimeModes = *read;
     }
 
+    // An item of a section this protocol does not reach: not sent, and
+    // said so (empty when the protocol has it).
+    template <class T>
+    std::optional<ItemOutcome<T>> unreachable(CamConCapability capability, const QString& label) {
+        if (m_connection.has(capability)) return std::nullopt;
+        ItemOutcome<T> outcome;
+        outcome.label = label;
+        outcome.error = m_connection.missing(capability);
+        m_progress.report(m_done++, m_total, outcome.label);
+        return outcome;
+    }
+
     ItemOutcome<OutputDeadTime> writeDeadTimeMode(const DeadTimeModeWrite& write) {
-        if (!m_connection.has(CamConCapability::DeadTimeModes)) {
-            // Not reachable over this protocol: not sent, and said so.
-            ItemOutcome<OutputDeadTime> outcome;
-            outcome.label = deadTimeModeLabel(write.output);
-            outcome.error = m_connection.missing(CamConCapability::DeadTimeModes);
-            m_progress.report(m_done++, m_total, outcome.label);
-            return outcome;
-        }
+        if (auto no = unreachable<OutputDeadTime>(CamConCapability::DeadTimeModes,
+                                                  deadTimeModeLabel(write.output)))
+            return *no;
         ValueOps<OutputDeadTime> ops;
         ops.read = [this, &write]() -> Result<OutputDeadTime> {
             const Result<DeadTimeModes> read = m_connection.readDeadTimeModes(write.output);
@@ -359,6 +378,95 @@ private:
         if (!before && m_deadTimeModes) before = m_deadTimeModes->value(write.output);
         return writeItem<OutputDeadTime>(deadTimeModeLabel(write.output), write.wanted, before,
                                          ops);
+    }
+
+    ItemOutcome<AnalogueCamTrack> writeAnalogueCams(const AnalogueCamWrite& write) {
+        const QString label = analogueCamsLabel(write.wanted.output);
+        if (auto no = unreachable<AnalogueCamTrack>(CamConCapability::AnalogueCams, label))
+            return *no;
+        ValueOps<AnalogueCamTrack> ops;
+        ops.read = [this, &write] { return m_connection.readAnalogueCams(write.wanted.output); };
+        ops.write = [this, &write](const AnalogueCamTrack&) {
+            return m_connection.writeAnalogueCams(write.wanted);
+        };
+        ops.same = [](const AnalogueCamTrack& a, const AnalogueCamTrack& b) {
+            return a.points == b.points;
+        };
+        ops.text = analogueCamsText;
+        return writeItem<AnalogueCamTrack>(label, write.wanted, write.believed, ops);
+    }
+
+    ItemOutcome<ProgrammingProgram> writeProgrammingProgram(const ProgrammingProgramWrite& write) {
+        if (auto no = unreachable<ProgrammingProgram>(CamConCapability::ProgrammingProgram,
+                                                      programmingProgramLabel()))
+            return *no;
+        ValueOps<ProgrammingProgram> ops;
+        ops.read = [this] { return m_connection.readProgrammingProgram(); };
+        ops.write = [this, &write](const ProgrammingProgram&) {
+            return m_connection.writeProgrammingProgram(write.wanted);
+        };
+        ops.same = [](const ProgrammingProgram& a, const ProgrammingProgram& b) { return a == b; };
+        ops.text = programmingProgramText;
+        // Writing cams selected their program: what the caller believed
+        // before is no longer the device's state.
+        const std::optional<ProgrammingProgram> before =
+            m_plan.tracks.isEmpty() ? write.believed : std::nullopt;
+        return writeItem<ProgrammingProgram>(programmingProgramLabel(), write.wanted, before, ops);
+    }
+
+    ItemOutcome<bool> writeEepromLock(const EepromLockWrite& write) {
+        if (auto no = unreachable<bool>(CamConCapability::EepromLock, eepromLockLabel())) return *no;
+        ValueOps<bool> ops;
+        ops.read = [this] { return m_connection.readEepromLock(); };
+        ops.write = [this, &write](const bool&) {
+            return m_connection.writeEepromLock(write.wanted);
+        };
+        ops.same = [](const bool& a, const bool& b) { return a == b; };
+        ops.text = eepromLockText;
+        // Nothing else changes the lock: as read at the start it still is.
+        return writeItem<bool>(eepromLockLabel(), write.wanted,
+                               m_lockedAtStart ? m_lockedAtStart : write.believed, ops);
+    }
+
+    // Where the EEPROM can be locked, whether it is: with the lock on, what
+    // is written lives in RAM only, and the report must say so.
+    void readEepromLockFirst() {
+        m_lockQuestion = m_connection.has(CamConCapability::EepromLock) &&
+                         m_plan.itemCount() > (m_plan.eepromLock ? 1 : 0);
+        if (!m_lockQuestion) return;
+        const Result<bool> locked = m_connection.readEepromLock();
+        if (locked)
+            m_lockedAtStart = *locked;
+        else
+            m_lockError = locked.error().message;
+    }
+
+    // The note on the EEPROM lock, empty when there is nothing to say.
+    QString eepromNote(const WriteReport& report) const {
+        if (!m_lockQuestion) return {};
+        int written = 0;
+        for (const OutcomeLine& line : report.lines())
+            written += line.state == WriteState::Written ? 1 : 0;
+        if (report.eepromLock && report.eepromLock->state == WriteState::Written) --written;
+        if (written == 0) return {};
+        // After an unlock first the lock state is the unlock's outcome.
+        const bool lockedWhileWriting =
+            report.eepromLockFirst
+                ? !(report.eepromLock && report.eepromLock->actual == std::optional<bool>(false))
+                : m_lockedAtStart.value_or(false);
+        if (!m_lockError.isEmpty() && !report.eepromLockFirst) {
+            return QCoreApplication::translate(
+                       "cambench::usecases",
+                       "Whether the device's EEPROM is locked could not be read (%1): if it is, "
+                       "what was written is held in RAM only and is lost when the device is "
+                       "switched off.")
+                .arg(m_lockError);
+        }
+        if (!lockedWhileWriting) return {};
+        return QCoreApplication::translate(
+            "cambench::usecases",
+            "The device's EEPROM is locked: what was written is held in RAM only and is lost "
+            "when the device is switched off. Unlock the EEPROM to keep it.");
     }
 
     ItemOutcome<std::optional<User>> writeUser(const UserWrite& write) {
@@ -422,6 +530,9 @@ private:
     QList<User> m_users;        // the device's users as known now
     std::optional<DeadTimes> m_deadTimes;
     std::optional<DeadTimeModes> m_deadTimeModes;
+    bool m_lockQuestion = false;          // the protocol has the lock and items are written
+    std::optional<bool> m_lockedAtStart;  // the EEPROM lock before the first item
+    QString m_lockError;  // why the lock could not be read
     std::optional<Error> m_stop;  // set: the remaining items are not sent
     qint64 m_done = 0;
     qint64 m_total = 0;

@@ -108,11 +108,34 @@ void addPlcNetworks(WritePlan& plan, const Project& wanted, const Project& onDev
     }
 }
 
+// Analogue cams, programming program and EEPROM lock (table interface).
+void addTableSections(WritePlan& plan, const Project& wanted, const Project& onDevice) {
+    const bool analogueRead = wasRead(onDevice, ProjectPart::AnalogueCams);
+    for (const AnalogueCamTrack& track : wanted.analogueCams) {
+        AnalogueCamWrite write{track, {}};
+        for (const AnalogueCamTrack& device : onDevice.analogueCams) {
+            if (analogueRead && device.output == track.output) write.believed = device;
+        }
+        plan.analogueCams << write;
+    }
+    if (wanted.programmingProgram) {
+        plan.programmingProgram = ProgrammingProgramWrite{*wanted.programmingProgram, {}};
+        if (wasRead(onDevice, ProjectPart::ProgrammingProgram))
+            plan.programmingProgram->believed = onDevice.programmingProgram;
+    }
+    if (wanted.eepromLock) {
+        plan.eepromLock = EepromLockWrite{*wanted.eepromLock, {}};
+        if (wasRead(onDevice, ProjectPart::EepromLock))
+            plan.eepromLock->believed = onDevice.eepromLock;
+    }
+}
+
 }  // namespace
 
 int WritePlan::itemCount() const {
     return int(settings.size() + programNames.size() + tracks.size() + deadTimes.size() +
-               deadTimeModes.size() + outputNames.size() + users.size() + plcNetworks.size());
+               deadTimeModes.size() + outputNames.size() + users.size() + plcNetworks.size() +
+               analogueCams.size() + (programmingProgram ? 1 : 0) + (eepromLock ? 1 : 0));
 }
 
 QList<SettingsWrite> settingsGroups(const SystemSettings& wanted) {
@@ -182,6 +205,7 @@ WritePlan planFromProject(const Project& wanted, const Project& onDevice) {
     }
     addUsers(plan, wanted, onDevice);
     addPlcNetworks(plan, wanted, onDevice);
+    addTableSections(plan, wanted, onDevice);
     return plan;
 }
 

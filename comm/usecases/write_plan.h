@@ -44,6 +44,25 @@ struct DeadTimeModeWrite {
     std::optional<OutputDeadTime> believed;
 };
 
+// The base points of one analogue output (table interface); the device's
+// points become exactly `wanted.points`.
+struct AnalogueCamWrite {
+    AnalogueCamTrack wanted;
+    std::optional<AnalogueCamTrack> believed;
+};
+
+// The table interface's programming program and select mode.
+struct ProgrammingProgramWrite {
+    ProgrammingProgram wanted;
+    std::optional<ProgrammingProgram> believed;
+};
+
+// The table interface's EEPROM write lock (true: later changes stay in RAM).
+struct EepromLockWrite {
+    bool wanted = false;
+    std::optional<bool> believed;
+};
+
 // An output name (number = output, 1-based) or a program name (number =
 // program, 0-based).
 struct NameWrite {
@@ -78,9 +97,12 @@ struct PlcWrite {
 };
 
 // Everything one write is to do. Items are written in this order:
-// settings, program names, tracks, dead times, dead-time modes, output
-// names, users, PLC networks (settings first: the axis type decides which
-// cams are valid).
+// settings, program names, tracks, dead times, dead-time modes, analogue
+// cams, output names, users, PLC networks, the programming program
+// (settings first: the axis type decides which cams are valid; the
+// programming program last: writing cams over the table interface selects
+// their program). An EEPROM unlock comes before everything, so that what
+// follows is stored; a lock after everything, so that it is stored first.
 struct WritePlan {
     QList<SettingsWrite> settings;
     QList<NameWrite> programNames;
@@ -90,6 +112,9 @@ struct WritePlan {
     QList<NameWrite> outputNames;
     QList<UserWrite> users;
     QList<PlcWrite> plcNetworks;
+    QList<AnalogueCamWrite> analogueCams;
+    std::optional<ProgrammingProgramWrite> programmingProgram;
+    std::optional<EepromLockWrite> eepromLock;
 
     // What the caller read from the device: the settings (passed on as the
     // device's values, so nothing is read twice; also gives the axis type

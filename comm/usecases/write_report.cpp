@@ -7,6 +7,12 @@ QList<OutcomeLine> WriteReport::lines() const {
     const auto add = [&lines](const auto& outcomes) {
         for (const auto& outcome : outcomes) lines.append(outcomeLine(outcome));
     };
+    const auto addOne = [&lines](const auto& outcome) {
+        if (outcome) lines.append(outcomeLine(*outcome));
+    };
+    // An unlock is written first, a lock last (WritePlan).
+    const bool unlockFirst = eepromLockFirst;
+    if (unlockFirst) addOne(eepromLock);
     add(settings);
     add(programNames);
     add(tracks);
@@ -15,7 +21,16 @@ QList<OutcomeLine> WriteReport::lines() const {
     add(outputNames);
     add(users);
     add(plcNetworks);
+    add(analogueCams);
+    addOne(programmingProgram);
+    if (!unlockFirst) addOne(eepromLock);
     return lines;
+}
+
+QString WriteReport::summary() const {
+    QString text = tally().summary();
+    for (const QString& note : notes) text += QLatin1Char('\n') + note;
+    return text;
 }
 
 }  // namespace cambench::usecases

@@ -28,6 +28,13 @@ struct WriteReport {
     // device has no such user (deleted, or never created).
     QList<ItemOutcome<std::optional<User>>> users;
     QList<ItemOutcome<PlcNetwork>> plcNetworks;
+    QList<ItemOutcome<AnalogueCamTrack>> analogueCams;
+    std::optional<ItemOutcome<ProgrammingProgram>> programmingProgram;
+    std::optional<ItemOutcome<bool>> eepromLock;
+    bool eepromLockFirst = false;  // an unlock, written before every other item
+    // Things a person must know about the whole write, e.g. that the
+    // device's EEPROM is locked and what was written lives in RAM only.
+    QStringList notes;
 
     // Every item, in plan order, counted and summed up.
     OutcomeTally tally() const { return OutcomeTally(lines()); }
@@ -43,7 +50,8 @@ struct WriteReport {
     QList<OutcomeLine> lines() const;
     // "32 items: 3 written, 28 unchanged, 1 failed (the device keeps its old values)";
     // categories other than written and unchanged only when they occur.
-    QString summary() const { return tally().summary(); }
+    // Followed by the notes, each on a line of its own.
+    QString summary() const;
 };
 
 }  // namespace cambench::usecases

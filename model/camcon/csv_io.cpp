@@ -6,6 +6,7 @@
 #include "model/file_read.h"
 
 #include <QCoreApplication>
+#include <QSet>
 #include <QStringDecoder>
 #include <QStringList>
 
@@ -19,6 +20,7 @@ namespace {
 const QString kCamsHeader = QStringLiteral("output,cam,on,off");
 const QString kDeadTimesHeader = QStringLiteral("output,deadtime");
 const QString kDeadTimeModesHeader = QStringLiteral("output,deadtime,mode,on,off");
+const QString kAnalogueHeader = QStringLiteral("output,position,value");
 const QString kNamesHeader = QStringLiteral("kind,number,name");
 const QString kOutputKind = QStringLiteral("output");
 const QString kProgramKind = QStringLiteral("program");
@@ -331,6 +333,50 @@ Result<DeadTimeTable> deadTimeTableFromCsv(const QByteArray& content) {
     return table;
 }
 
+QByteArray analogueCamsToCsv(const QList<AnalogueCamTrack>& tracks) {
+    QStringList rows;
+    for (const AnalogueCamTrack& track : tracks) {
+        if (track.points.isEmpty()) rows << QStringLiteral("%1,,").arg(track.output);
+        for (const AnaloguePoint& point : track.points)
+            rows << QStringLiteral("%1,%2,%3").arg(track.output).arg(point.position).arg(point.value);
+    }
+    return joinLines(kAnalogueHeader, rows);
+}
+
+Result<QList<AnalogueCamTrack>> analogueCamsFromCsv(const QByteArray& content) {
+    const Result<QList<CsvRow>> rows = readRows(content, kAnalogueHeader);
+    if (!rows) return rows.error();
+    QMap<int, AnalogueCamTrack> tracks;
+    QSet<int> cleared;  // outputs with a "no points" row
+    for (const CsvRow& row : *rows) {
+        FieldReader r(row);
+        const int output = int(r.integer(0, "analogue output", 1, kAnalogueOutputs));
+        if (!r.ok()) return lineError(row.line, r.why());
+        AnalogueCamTrack& track = tracks[output];
+        track.output = output;
+        const bool none =
+            row.fields.at(1).trimmed().isEmpty() && row.fields.at(2).trimmed().isEmpty();
+        if (none ? !track.points.isEmpty() : cleared.contains(output)) {
+            return lineError(row.line,
+                             QCoreApplication::translate(
+                                 "cambench::model",
+                                 "analogue output %1 has base points and a row without any; "
+                                 "use \"%1,,\" only for an output without points")
+                                 .arg(output));
+        }
+        if (none) {
+            cleared.insert(output);
+            continue;
+        }
+        AnaloguePoint point;
+        point.position = qint32(r.integer(1, "position", kInt32Min, kInt32Max));
+        point.value = qint32(r.integer(2, "value", kInt32Min, kInt32Max));
+        if (!r.ok()) return lineError(row.line, r.why());
+        track.points << point;
+    }
+    return QList<AnalogueCamTrack>(tracks.cbegin(), tracks.cend());
+}
+
 QByteArray namesToCsv(const Names& names) {
     QStringList rows;
     for (auto it = names.outputs.cbegin(); it != names.outputs.cend(); ++it)
@@ -397,6 +443,10 @@ Result<DeadTimes> loadDeadTimesCsv(const QString& path) {
 
 Result<DeadTimeTable> loadDeadTimeTableCsv(const QString& path) {
     return loadCsv(path, &deadTimeTableFromCsv);
+}
+
+Result<QList<AnalogueCamTrack>> loadAnalogueCamsCsv(const QString& path) {
+    return loadCsv(path, &analogueCamsFromCsv);
 }
 
 Status saveNamesCsv(const QString& path, const Names& names) {

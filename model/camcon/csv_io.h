@@ -1,5 +1,6 @@
 #pragma once
 
+#include "analogue_cams.h"
 #include "cam_program.h"
 #include "dead_time_modes.h"
 #include "dead_times.h"
@@ -43,6 +44,12 @@ struct DeadTimeTable {
 QByteArray deadTimeModesToCsv(const DeadTimeModes& modes);
 Result<DeadTimeTable> deadTimeTableFromCsv(const QByteArray& content);
 
+// Analogue cams (table interface): "output,position,value", one row per
+// base point in position order; a row "3,," says analogue output 3 has no
+// points (the file then clears them). Outputs in ascending order.
+QByteArray analogueCamsToCsv(const QList<AnalogueCamTrack>& tracks);
+Result<QList<AnalogueCamTrack>> analogueCamsFromCsv(const QByteArray& content);
+
 QByteArray namesToCsv(const Names& names);
 Result<Names> namesFromCsv(const QByteArray& content);
 
@@ -52,6 +59,7 @@ Result<Tracks> loadCamsCsv(const QString& path);
 Status saveDeadTimesCsv(const QString& path, const DeadTimes& deadTimes);
 Result<DeadTimes> loadDeadTimesCsv(const QString& path);
 Result<DeadTimeTable> loadDeadTimeTableCsv(const QString& path);
+Result<QList<AnalogueCamTrack>> loadAnalogueCamsCsv(const QString& path);
 Status saveNamesCsv(const QString& path, const Names& names);
 Result<Names> loadNamesCsv(const QString& path);
 

@@ -4,6 +4,22 @@
 
 namespace cambench {
 
+namespace {
+const char* const kSelectModeKeys[] = {"slow", "direct", "at-value"};
+}  // namespace
+
+QString programmingSelectModeKey(int selectMode) {
+    if (selectMode < 0 || selectMode > 2) return QStringLiteral("?");
+    return QString::fromLatin1(kSelectModeKeys[selectMode]);
+}
+
+int programmingSelectModeFromKey(const QString& key) {
+    for (int mode = 0; mode <= 2; ++mode) {
+        if (key == QLatin1String(kSelectModeKeys[mode])) return mode;
+    }
+    return -1;
+}
+
 QStringList validateProgrammingProgram(const ProgrammingProgram& programming,
                                        const DeviceInfo& device) {
     QStringList problems;

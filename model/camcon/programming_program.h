@@ -2,6 +2,7 @@
 
 #include "device_info.h"
 
+#include <QString>
 #include <QStringList>
 
 namespace cambench {
@@ -18,6 +19,12 @@ struct ProgrammingProgram {
                a.switchValue == b.switchValue;
     }
 };
+
+// "slow", "direct", "at-value": the names files and the command line use
+// for select modes 0..2 ("?" for another number).
+QString programmingSelectModeKey(int selectMode);
+// The select mode with this name, or -1.
+int programmingSelectModeFromKey(const QString& key);
 
 // Program 0..programs-1, mode 0..2, switch value within the position range
 // (mode 2 only). One sentence per problem.

@@ -9,6 +9,7 @@
 #include "model/json_reader.h"
 #include "plc_file.h"
 #include "settings_file.h"
+#include "table_sections_json.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -40,6 +41,9 @@ const PartName kPartNames[] = {
     {ProjectPart::Users, "users"},
     {ProjectPart::PlcNetworks, "plcNetworks"},
     {ProjectPart::DeadTimeModes, "deadTimeModes"},
+    {ProjectPart::AnalogueCams, "analogueCams"},
+    {ProjectPart::ProgrammingProgram, "programmingProgram"},
+    {ProjectPart::EepromLock, "eepromLock"},
 };
 
 QString isoTime(const QDateTime& time) {
@@ -120,6 +124,20 @@ public:
         if (root.contains(key("deadTimeModes"))) {
             project.deadTimeModes =
                 readDeadTimeModes(m_r.array(root, {}, key("deadTimeModes")), project.device);
+        }
+        // The other table-interface sections, equally optional.
+        if (root.contains(key("analogueCams"))) {
+            project.analogueCams = analogueCamsFromJson(
+                m_r, m_r.array(root, {}, key("analogueCams")), key("analogueCams"));
+        }
+        if (root.contains(key("programmingProgram"))) {
+            project.programmingProgram = programmingProgramFromJson(
+                m_r, m_r.object(root, {}, key("programmingProgram")), key("programmingProgram"));
+        }
+        if (root.contains(key("eepromLock"))) {
+            project.eepromLock = m_r.boolean(
+                root, {}, key("eepromLock"),
+                QCoreApplication::translate("cambench::model", "EEPROM lock"));
         }
         if (root.contains(key("readAt")))
             project.readAt = readTimes(m_r.object(root, {}, key("readAt")));
@@ -389,6 +407,10 @@ QStringList validateProject(const Project& project) {
                             .arg(it->normal);
         }
     }
+    for (const AnalogueCamTrack& track : project.analogueCams)
+        problems << validateAnalogueCamTrack(track, project.device);
+    if (project.programmingProgram)
+        problems << validateProgrammingProgram(*project.programmingProgram, project.device);
     problems << validateNames(project.names, project.device);
     problems << validateSettings(project.settings);
     problems << validateUsers(project.users, UserNumbers::Optional);
@@ -434,6 +456,13 @@ QByteArray projectToJson(const Project& project, const ProjectSaveOptions& optio
         }
         root.insert(key("deadTimeModes"), modes);
     }
+    if (!project.analogueCams.isEmpty())
+        root.insert(key("analogueCams"), analogueCamsToJson(project.analogueCams));
+    if (project.programmingProgram) {
+        root.insert(key("programmingProgram"),
+                    programmingProgramToJson(*project.programmingProgram));
+    }
+    if (project.eepromLock) root.insert(key("eepromLock"), *project.eepromLock);
     return toIndentedJson(root);
 }
 

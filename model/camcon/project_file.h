@@ -1,11 +1,13 @@
 #pragma once
 
+#include "analogue_cams.h"
 #include "cam_program.h"
 #include "dead_time_modes.h"
 #include "dead_times.h"
 #include "device_info.h"
 #include "model/result.h"
 #include "plc_network.h"
+#include "programming_program.h"
 #include "system_settings.h"
 #include "user.h"
 
@@ -15,6 +17,8 @@
 #include <QMap>
 #include <QString>
 #include <QStringList>
+
+#include <optional>
 
 namespace cambench {
 
@@ -26,7 +30,10 @@ enum class ProjectPart {
     OutputNames,
     Users,
     PlcNetworks,
-    DeadTimeModes,  // table interface only
+    DeadTimeModes,       // table interface only
+    AnalogueCams,        // table interface only
+    ProgrammingProgram,  // table interface only
+    EepromLock,          // table interface only
 };
 
 // Which parts of a project were read from a device, and when (UTC). A part
@@ -65,13 +72,23 @@ struct Project {
     // over another protocol, or made on the PC). Each output's `normal` is
     // the same device word as its entry in `deadTimes` (validateProject).
     DeadTimeModes deadTimeModes;
+    // Analogue cams (table interface), ordered by analogue output; an
+    // output listed is written whole (no points: none on the device).
+    QList<AnalogueCamTrack> analogueCams;
+    // The table interface's programming program and how the device changes
+    // to it; empty: the project says nothing about it.
+    std::optional<ProgrammingProgram> programmingProgram;
+    // The table interface's EEPROM write lock (true: changes stay in RAM);
+    // empty: the project says nothing about it.
+    std::optional<bool> eepromLock;
     ProjectReadTimes readAt;
 
     friend bool operator==(const Project& a, const Project& b) {
         return a.device == b.device && a.programs == b.programs && a.deadTimes == b.deadTimes &&
                a.names == b.names && a.settings == b.settings && a.users == b.users &&
                a.plcNetworks == b.plcNetworks && a.deadTimeModes == b.deadTimeModes &&
-               a.readAt == b.readAt;
+               a.analogueCams == b.analogueCams && a.programmingProgram == b.programmingProgram &&
+               a.eepromLock == b.eepromLock && a.readAt == b.readAt;
     }
 };
 
