@@ -89,28 +89,12 @@
 </context>
 <context>
     <name>PageWriteReport</name>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 written, %2 unchanged, %3 failed</source>
-        <translation>%1 geschrieben, %2 unverändert, %3 fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
-        <translation>Nicht geschrieben oder vom Gerät nicht bestätigt (eine Antwort kann verloren gegangen sein). Ihre Änderungen bleiben auf der Seite; „Aus Gerät lesen“ zeigt, was das Gerät enthält:</translation>
-    </message>
     <message numerus="yes">
         <source>%n edited value(s) on this page are not written. Replace them with what the device holds?</source>
         <translation>
             <numerusform>%n geänderter Wert auf dieser Seite ist nicht geschrieben. Durch die Werte im Gerät ersetzen?</numerusform>
             <numerusform>%n geänderte Werte auf dieser Seite sind nicht geschrieben. Durch die Werte im Gerät ersetzen?</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Not sent, as the device would refuse it (the device is untouched; correct the marked values):</source>
-        <translation>Nicht gesendet, weil das Gerät es ablehnen würde (das Gerät ist unverändert; korrigieren Sie die markierten Werte):</translation>
     </message>
 </context>
 <context>
@@ -1049,10 +1033,6 @@
         <translation>Aus Gerät lesen</translation>
     </message>
     <message>
-        <source>Write</source>
-        <translation>Schreiben</translation>
-    </message>
-    <message>
         <source>Add point</source>
         <translation>Punkt hinzufügen</translation>
     </message>
@@ -1063,14 +1043,6 @@
     <message>
         <source>Analogue output:</source>
         <translation>Analogausgang:</translation>
-    </message>
-    <message>
-        <source>The base points of analogue output %1 are edited and not written. Discard them and show output %2?</source>
-        <translation>Die Stützpunkte von Analogausgang %1 sind geändert und nicht geschrieben. Verwerfen und Ausgang %2 anzeigen?</translation>
-    </message>
-    <message>
-        <source>Analogue cams: %1</source>
-        <translation>Analognocken: %1</translation>
     </message>
     <message>
         <source>Read analogue cams</source>
@@ -1085,27 +1057,32 @@
         <translation>Analognocken von Ausgang %1 gelesen.</translation>
     </message>
     <message>
-        <source>Analogue output %1 base points</source>
-        <translation>Stützpunkte von Analogausgang %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n point(s)</source>
-        <translation>
-            <numerusform>%n Punkt</numerusform>
-            <numerusform>%n Punkte</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Write analogue cams</source>
-        <translation>Analognocken schreiben</translation>
-    </message>
-    <message>
-        <source>Not read from the device yet.</source>
-        <translation>Noch nicht aus dem Gerät gelesen.</translation>
-    </message>
-    <message>
         <source>no such point</source>
         <translation>kein solcher Punkt</translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation>Änderungen schreiben</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Analogue output %1: not read from the device.</source>
+        <translation>Analogausgang %1: nicht vom Gerät gelesen.</translation>
+    </message>
+    <message>
+        <source>Analogue output %1: edited, not written. On the device: %2</source>
+        <translation>Analogausgang %1: bearbeitet, nicht geschrieben. Auf dem Gerät: %2</translation>
+    </message>
+    <message>
+        <source>Analogue output %1: as on the device.</source>
+        <translation>Analogausgang %1: wie auf dem Gerät.</translation>
+    </message>
+    <message>
+        <source>Analogue output %1</source>
+        <translation>Analogausgang %1</translation>
     </message>
 </context>
 <context>
@@ -1961,6 +1938,30 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Dead-time modes</source>
         <translation>Totzeit-Modi</translation>
     </message>
+    <message>
+        <source>Programming program</source>
+        <translation>Programmierprogramm</translation>
+    </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation>EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>Programming program and EEPROM lock</source>
+        <translation>Programmierprogramm und EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>Analogue output</source>
+        <translation>Analogausgang</translation>
+    </message>
+    <message>
+        <source>Base points</source>
+        <translation>Stützpunkte</translation>
+    </message>
+    <message>
+        <source>Analogue cams</source>
+        <translation>Analognocken</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -2365,10 +2366,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Änderungen schreiben</translation>
     </message>
     <message>
-        <source>Dead-time modes: %1</source>
-        <translation>Totzeit-Modi: %1</translation>
-    </message>
-    <message>
         <source>Reading dead-time modes…</source>
         <translation>Totzeit-Modi werden gelesen…</translation>
     </message>
@@ -2399,10 +2396,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>Output %1 dead-time mode</source>
         <translation>Totzeit-Modus von Ausgang %1</translation>
-    </message>
-    <message>
-        <source>Write dead-time modes</source>
-        <translation>Totzeit-Modi schreiben</translation>
     </message>
     <message>
         <source>Not read from the device yet.</source>
@@ -2682,10 +2675,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Lesen der EEPROM-Sperre fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <source>The EEPROM lock could not be changed: %1; its state is unknown, read it again.</source>
-        <translation>Die EEPROM-Sperre konnte nicht geändert werden: %1; ihr Zustand ist unbekannt, lesen Sie sie erneut.</translation>
-    </message>
-    <message>
         <source>State of the EEPROM lock: not read</source>
         <translation>Zustand der EEPROM-Sperre: nicht gelesen</translation>
     </message>
@@ -2700,6 +2689,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Changes written now are kept in RAM only. They are lost when the device is switched off. Unlock the EEPROM to keep them.</source>
         <translation>Jetzt geschriebene Änderungen bleiben nur im RAM. Sie gehen verloren, wenn das Gerät ausgeschaltet wird. Entsperren Sie das EEPROM, um sie zu behalten.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>The project wants the EEPROM locked; not written yet.</source>
+        <translation>Das Projekt will das EEPROM gesperrt; noch nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>The project wants the EEPROM unlocked; not written yet.</source>
+        <translation>Das Projekt will das EEPROM entsperrt; noch nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -3104,14 +3109,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>The device did not identify itself: %1 Your edits are kept.</source>
         <translation>Das Gerät hat sich nicht identifiziert: %1 Ihre Änderungen bleiben erhalten.</translation>
-    </message>
-    <message>
-        <source>Edited on their own pages (write them there): %1</source>
-        <translation>Auf ihren eigenen Seiten geändert (dort schreiben): %1</translation>
-    </message>
-    <message>
-        <source>The project file does not hold the edits on %1: write them there, or close without writing.</source>
-        <translation>Die Projektdatei enthält die Änderungen auf %1 nicht: schreiben Sie sie dort oder schließen Sie ohne zu schreiben.</translation>
     </message>
 </context>
 <context>
@@ -3628,28 +3625,12 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Aus Gerät lesen</translation>
     </message>
     <message>
-        <source>Write</source>
-        <translation>Schreiben</translation>
-    </message>
-    <message>
         <source>Read the programming program</source>
         <translation>Programmierprogramm lesen</translation>
     </message>
     <message>
         <source>Reading the programming program failed: %1</source>
         <translation>Lesen des Programmierprogramms fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>Write the programming program</source>
-        <translation>Programmierprogramm schreiben</translation>
-    </message>
-    <message>
-        <source>Writing the programming program failed: %1</source>
-        <translation>Schreiben des Programmierprogramms fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>Programming program %1 written.</source>
-        <translation>Programmierprogramm %1 geschrieben.</translation>
     </message>
     <message>
         <source>On the device: %1</source>
@@ -3666,6 +3647,18 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>As on the device.</source>
         <translation>Wie im Gerät.</translation>
+    </message>
+    <message>
+        <source>From the project, not read from the device: write it or read the device.</source>
+        <translation>Aus dem Projekt, nicht vom Gerät gelesen: schreiben Sie es oder lesen Sie das Gerät.</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation>Änderungen schreiben</translation>
     </message>
 </context>
 <context>
@@ -4446,24 +4439,12 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>nicht verbunden: %1</translation>
     </message>
     <message>
-        <source>the CamCon ASCII protocol (--protocol standard or multiuser)</source>
-        <translation>dem CamCon-ASCII-Protokoll (--protocol standard oder multiuser)</translation>
-    </message>
-    <message>
-        <source>the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)</source>
-        <translation>der CamCon-Tabellenschnittstelle (--protocol 3964r-n96 oder 3964r-e38)</translation>
-    </message>
-    <message>
         <source>Users and rights exist only in %1.</source>
         <translation>Benutzer und Rechte gibt es nur in %1.</translation>
     </message>
     <message>
         <source>EEPROM backup and restore exist only in %1.</source>
         <translation>Sichern und Wiederherstellen des EEPROMs gibt es nur in %1.</translation>
-    </message>
-    <message>
-        <source>A bus scan needs the Multiuser protocol (--protocol multiuser).</source>
-        <translation>Eine Bussuche braucht das Multiuser-Protokoll (--protocol multiuser).</translation>
     </message>
     <message>
         <source>Typed requests exist only in %1.</source>
@@ -5553,6 +5534,18 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>writing the dead time of output %1 (0x07)</source>
         <translation>Schreiben der Totzeit von Ausgang %1 (0x07)</translation>
     </message>
+    <message>
+        <source>the CamCon ASCII protocol (Standard or Multiuser)</source>
+        <translation>dem CamCon-ASCII-Protokoll (Standard oder Multiuser)</translation>
+    </message>
+    <message>
+        <source>the CamCon table interface (3964R n96 or e38)</source>
+        <translation>der CamCon-Tabellenschnittstelle (3964R n96 oder e38)</translation>
+    </message>
+    <message>
+        <source>A bus scan needs the Multiuser protocol.</source>
+        <translation>Eine Bus-Suche braucht das Multiuser-Protokoll.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -6160,6 +6153,46 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>Output %1: the dead time %2 and the dead time of its dead-time mode %3 (0.1 ms) differ, but the device holds one value for both.</source>
         <translation>Ausgang %1: die Totzeit %2 und die Totzeit seines Totzeit-Modus %3 (0,1 ms) unterscheiden sich, das Gerät hält aber einen Wert für beide.</translation>
     </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation>EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>analogue output %1 has base points and a row without any; use &quot;%1,,&quot; only for an output without points</source>
+        <translation>Analogausgang %1 hat Stützpunkte und eine Zeile ohne; &quot;%1,,&quot; nur für einen Ausgang ohne Punkte verwenden</translation>
+    </message>
+    <message>
+        <source>analogue output</source>
+        <translation>Analogausgang</translation>
+    </message>
+    <message>
+        <source>a base point is [position, value], two numbers</source>
+        <translation>ein Stützpunkt ist [Position, Wert], zwei Zahlen</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>analogue output %1 appears twice</source>
+        <translation>Analogausgang %1 kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>programming program</source>
+        <translation>Programmierprogramm</translation>
+    </message>
+    <message>
+        <source>select mode</source>
+        <translation>Umschaltart</translation>
+    </message>
+    <message>
+        <source>unknown select mode &quot;%1&quot;; use slow, direct or at-value</source>
+        <translation>unbekannte Umschaltart &quot;%1&quot;; slow, direct oder at-value verwenden</translation>
+    </message>
+    <message>
+        <source>switch value</source>
+        <translation>Umschalt-Istwert</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -6651,6 +6684,85 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>reading dead-time modes</source>
         <translation>Lesen der Totzeit-Modi</translation>
+    </message>
+    <message>
+        <source>no base points</source>
+        <translation>keine Stützpunkte</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n base point(s): %1</source>
+        <translation>
+            <numerusform>%n Stützpunkt: %1</numerusform>
+            <numerusform>%n Stützpunkte: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>program %1, changed slowly</source>
+        <translation>Programm %1, langsam umgeschaltet</translation>
+    </message>
+    <message>
+        <source>program %1, changed directly (within one cycle)</source>
+        <translation>Programm %1, direkt umgeschaltet (innerhalb eines Zyklus)</translation>
+    </message>
+    <message>
+        <source>program %1, changed at the actual value %2</source>
+        <translation>Programm %1, am Istwert %2 umgeschaltet</translation>
+    </message>
+    <message>
+        <source>program %1, select mode %2</source>
+        <translation>Programm %1, Umschaltart %2</translation>
+    </message>
+    <message>
+        <source>locked (changes stay in RAM only)</source>
+        <translation>gesperrt (Änderungen nur im RAM)</translation>
+    </message>
+    <message>
+        <source>unlocked</source>
+        <translation>entsperrt</translation>
+    </message>
+    <message>
+        <source>analogue output %1</source>
+        <translation>Analogausgang %1</translation>
+    </message>
+    <message>
+        <source>programming program</source>
+        <translation>Programmierprogramm</translation>
+    </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation>EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>Analogue output %1 is to be written twice.</source>
+        <translation>Analogausgang %1 soll zweimal geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Writing the cams changed the programming program; setting it back to %1 failed (%2): check it on the Programming program page.</source>
+        <translation>Das Schreiben der Nocken hat das Programmierprogramm geändert; das Zurücksetzen auf %1 ist fehlgeschlagen (%2): prüfen Sie es auf der Seite Programmierprogramm.</translation>
+    </message>
+    <message>
+        <source>Whether the device&apos;s EEPROM is locked could not be read (%1): if it is, what was written is held in RAM only and is lost when the device is switched off.</source>
+        <translation>Ob das EEPROM des Geräts gesperrt ist, konnte nicht gelesen werden (%1): wenn ja, steht das Geschriebene nur im RAM und geht beim Ausschalten des Geräts verloren.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s EEPROM is locked: what was written is held in RAM only and is lost when the device is switched off. Unlock the EEPROM to keep it.</source>
+        <translation>Das EEPROM des Geräts ist gesperrt: das Geschriebene steht nur im RAM und geht beim Ausschalten des Geräts verloren. Entsperren Sie das EEPROM, um es zu behalten.</translation>
+    </message>
+    <message>
+        <source>reading the programming program</source>
+        <translation>lese das Programmierprogramm</translation>
+    </message>
+    <message>
+        <source>Reading the programs selected program %1 as the programming program; setting it back to program %2 failed: %3</source>
+        <translation>Das Lesen der Programme hat Programm %1 als Programmierprogramm gewählt; das Zurücksetzen auf Programm %2 ist fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>reading analogue output %1</source>
+        <translation>lese Analogausgang %1</translation>
+    </message>
+    <message>
+        <source>reading the EEPROM lock</source>
+        <translation>lese die EEPROM-Sperre</translation>
     </message>
 </context>
 </TS>

@@ -89,28 +89,12 @@
 </context>
 <context>
     <name>PageWriteReport</name>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished">%1: %2</translation>
-    </message>
-    <message>
-        <source>%1 written, %2 unchanged, %3 failed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not written, or not confirmed by the device (a reply may have been lost). Your edits stay on the page; Read from device shows what the device holds:</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%n edited value(s) on this page are not written. Replace them with what the device holds?</source>
         <translation>
             <numerusform>%n edited value on this page is not written. Replace it with what the device holds?</numerusform>
             <numerusform>%n edited values on this page are not written. Replace them with what the device holds?</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Not sent, as the device would refuse it (the device is untouched; correct the marked values):</source>
-        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1049,10 +1033,6 @@
         <translation type="unfinished">Read from device</translation>
     </message>
     <message>
-        <source>Write</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Add point</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1062,14 +1042,6 @@
     </message>
     <message>
         <source>Analogue output:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The base points of analogue output %1 are edited and not written. Discard them and show output %2?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Analogue cams: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1085,26 +1057,31 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Analogue output %1 base points</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%n point(s)</source>
-        <translation>
-            <numerusform>%n point</numerusform>
-            <numerusform>%n points</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Write analogue cams</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not read from the device yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>no such point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation type="unfinished">Write changes</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
+    </message>
+    <message>
+        <source>Analogue output %1: not read from the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1: edited, not written. On the device: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1: as on the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1961,6 +1938,30 @@ Erase and restore now?</translation>
         <source>Dead-time modes</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming program and EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Base points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue cams</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -2364,10 +2365,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation type="unfinished">Write changes</translation>
     </message>
     <message>
-        <source>Dead-time modes: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Reading dead-time modes…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2397,10 +2394,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     </message>
     <message>
         <source>Output %1 dead-time mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write dead-time modes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2680,10 +2673,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The EEPROM lock could not be changed: %1; its state is unknown, read it again.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>State of the EEPROM lock: not read</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2698,6 +2687,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>Changes written now are kept in RAM only. They are lost when the device is switched off. Unlock the EEPROM to keep them.</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message>
+        <source>The project wants the EEPROM locked; not written yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project wants the EEPROM unlocked; not written yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
     </message>
 </context>
 <context>
@@ -3101,14 +3106,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>The device did not identify itself: %1 Your edits are kept.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Edited on their own pages (write them there): %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The project file does not hold the edits on %1: write them there, or close without writing.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3626,27 +3623,11 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished">Read from device</translation>
     </message>
     <message>
-        <source>Write</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Read the programming program</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Reading the programming program failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write the programming program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Writing the programming program failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Programming program %1 written.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3664,6 +3645,18 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>As on the device.</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From the project, not read from the device: write it or read the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation type="unfinished">Write changes</translation>
     </message>
 </context>
 <context>
@@ -4444,24 +4437,12 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation>not connected: %1</translation>
     </message>
     <message>
-        <source>the CamCon ASCII protocol (--protocol standard or multiuser)</source>
-        <translation>the CamCon ASCII protocol (--protocol standard or multiuser)</translation>
-    </message>
-    <message>
-        <source>the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)</source>
-        <translation>the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)</translation>
-    </message>
-    <message>
         <source>Users and rights exist only in %1.</source>
         <translation>Users and rights exist only in %1.</translation>
     </message>
     <message>
         <source>EEPROM backup and restore exist only in %1.</source>
         <translation>EEPROM backup and restore exist only in %1.</translation>
-    </message>
-    <message>
-        <source>A bus scan needs the Multiuser protocol (--protocol multiuser).</source>
-        <translation>A bus scan needs the Multiuser protocol (--protocol multiuser).</translation>
     </message>
     <message>
         <source>Typed requests exist only in %1.</source>
@@ -5551,6 +5532,18 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>writing the dead time of output %1 (0x07)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>the CamCon ASCII protocol (Standard or Multiuser)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the CamCon table interface (3964R n96 or e38)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A bus scan needs the Multiuser protocol.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -6158,6 +6151,46 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>Output %1: the dead time %2 and the dead time of its dead-time mode %3 (0.1 ms) differ, but the device holds one value for both.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>analogue output %1 has base points and a row without any; use &quot;%1,,&quot; only for an output without points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>analogue output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a base point is [position, value], two numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>analogue output %1 appears twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>select mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown select mode &quot;%1&quot;; use slow, direct or at-value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch value</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -6648,6 +6681,85 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>reading dead-time modes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no base points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n base point(s): %1</source>
+        <translation>
+            <numerusform>%n base point: %1</numerusform>
+            <numerusform>%n base points: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>program %1, changed slowly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1, changed directly (within one cycle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1, changed at the actual value %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1, select mode %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>locked (changes stay in RAM only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unlocked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>analogue output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1 is to be written twice.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the cams changed the programming program; setting it back to %1 failed (%2): check it on the Programming program page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whether the device&apos;s EEPROM is locked could not be read (%1): if it is, what was written is held in RAM only and is lost when the device is switched off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device&apos;s EEPROM is locked: what was written is held in RAM only and is lost when the device is switched off. Unlock the EEPROM to keep it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the programs selected program %1 as the programming program; setting it back to program %2 failed: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading analogue output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the EEPROM lock</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

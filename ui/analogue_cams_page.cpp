@@ -2,19 +2,21 @@
 
 #include "change_marker.h"
 #include "device_session.h"
+#include "replace_edits_question.h"
+#include "table_section_copies.h"
 #include "workspace.h"
 
+#include "comm/usecases/value_text.h"
+
+#include <QDateTime>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
-
-#include <algorithm>
 
 namespace cambench {
 
@@ -34,19 +36,21 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
       m_workspace(workspace),
       m_output(new QSpinBox),
       m_table(new QTableWidget(0, 2)),
+      m_state(new QLabel),
       m_problems(new QLabel) {
     m_output->setRange(1, kAnalogueOutputs);
     m_table->setHorizontalHeaderLabels({tr("Position"), tr("Analogue value")});
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_problems->setWordWrap(true);
+    m_problems->setStyleSheet(QStringLiteral("QLabel { color: #b03a2e; }"));
     auto* intro =
         new QLabel(tr("Between two base points the analogue output follows a straight "
                       "line (with interpolation on). Positions must rise from point to "
                       "point."));
     intro->setWordWrap(true);
     auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write"));
+    auto* write = new QPushButton(tr("Write changes"));
     auto* add = new QPushButton(tr("Add point"));
     auto* remove = new QPushButton(tr("Remove point"));
     auto* top = new QHBoxLayout;
@@ -60,47 +64,44 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(top);
+    layout->addWidget(m_state);
     layout->addWidget(m_table);
     layout->addWidget(m_problems);
     connect(read, &QPushButton::clicked, this, [this] {
-        if (mayReplaceEdits(this, tr("Analogue cams"), int(changes().size()))) readFromDevice();
+        const bool edited =
+            m_workspace->tableSections()->changedAnalogueOutputs().contains(m_output->value());
+        if (mayReplaceEdits(this, tr("Analogue cams"), edited ? 1 : 0)) readFromDevice();
     });
+    // Another output: the edits of this one stay in the workspace.
     connect(m_output, &QSpinBox::valueChanged, this, [this](int output) {
-        // Another output replaces the table: unwritten points are not
-        // dropped without asking.
-        if (m_device.output != output && edited().points != m_device.points &&
-            QMessageBox::question(
-                this, tr("Analogue cams"),
-                tr("The base points of analogue output %1 are edited and not written. "
-                   "Discard them and show output %2?")
-                    .arg(m_device.output)
-                    .arg(output)) != QMessageBox::Yes) {
-            const QSignalBlocker blocker(m_output);
-            m_output->setValue(m_device.output);
-            return;
-        }
-        readFromDevice();
+        if (!m_workspace->tableSections()->analogueCams(output) && m_session->isOnline())
+            readFromDevice();
+        else
+            showOutput();
     });
     connect(add, &QPushButton::clicked, this, [this] {
         const int row = m_table->rowCount();
         m_table->insertRow(row);
         m_table->setItem(row, 0, numberItem(m_workspace->info().minPosition));
         m_table->setItem(row, 1, numberItem(0));
-        refreshEdits();
+        takeTable();
     });
     connect(remove, &QPushButton::clicked, this, [this] {
         if (m_table->currentRow() >= 0) m_table->removeRow(m_table->currentRow());
-        refreshEdits();
+        takeTable();
     });
-    connect(m_table, &QTableWidget::itemChanged, this, &AnalogueCamsPage::refreshEdits);
-    m_problems->setText(tr("Not read from the device yet."));
-    connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const PageWriteReport& report) {
-            Q_EMIT statusMessage(tr("Analogue cams: %1").arg(report.summary()));
-            if (!report.complete())
-                QMessageBox::warning(this, tr("Analogue cams"), report.details());
-        });
+    connect(m_table, &QTableWidget::itemChanged, this, &AnalogueCamsPage::takeTable);
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
+    // A project opened, a write's outcome, another device: shown at once.
+    connect(m_workspace->tableSections(), &TableSectionCopies::changed, this, [this] {
+        const std::optional<AnalogueCamTrack> track =
+            m_workspace->tableSections()->analogueCams(m_output->value());
+        if (!track || *track != edited())
+            showOutput();
+        else
+            refreshMarks();
     });
+    showOutput();
 }
 
 void AnalogueCamsPage::readFromDevice() {
@@ -116,11 +117,31 @@ void AnalogueCamsPage::readFromDevice() {
                     tr("Reading analogue cams failed: %1").arg(track.error().message));
                 return;
             }
-            if (track->output != m_output->value()) return;  // another output chosen meanwhile
-            m_device = track.value();
-            setEdited(m_device);
-            Q_EMIT statusMessage(tr("Analogue cams of output %1 read.").arg(m_device.output));
+            TableSectionCopies* copies = m_workspace->tableSections();
+            copies->dropAnalogueEdit(track->output);
+            copies->setDeviceAnalogueCams(*track);
+            m_workspace->setReadTime(ProjectPart::AnalogueCams, QDateTime::currentDateTimeUtc());
+            Q_EMIT statusMessage(tr("Analogue cams of output %1 read.").arg(track->output));
         });
+}
+
+void AnalogueCamsPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    writeDifferences(m_session, m_workspace, std::move(done));
+}
+
+void AnalogueCamsPage::showOutput() {
+    const std::optional<AnalogueCamTrack> track =
+        m_workspace->tableSections()->analogueCams(m_output->value());
+    {
+        const QSignalBlocker blocker(m_table);
+        const QList<AnaloguePoint> points = track ? track->points : QList<AnaloguePoint>();
+        m_table->setRowCount(int(points.size()));
+        for (int row = 0; row < points.size(); ++row) {
+            m_table->setItem(row, 0, numberItem(points.at(row).position));
+            m_table->setItem(row, 1, numberItem(points.at(row).value));
+        }
+    }
+    refreshMarks();
 }
 
 AnalogueCamTrack AnalogueCamsPage::edited() const {
@@ -136,77 +157,63 @@ AnalogueCamTrack AnalogueCamsPage::edited() const {
 }
 
 void AnalogueCamsPage::setEdited(const AnalogueCamTrack& track) {
-    m_table->setRowCount(int(track.points.size()));
-    for (int row = 0; row < track.points.size(); ++row) {
-        m_table->setItem(row, 0, numberItem(track.points.at(row).position));
-        m_table->setItem(row, 1, numberItem(track.points.at(row).value));
+    if (track.output != m_output->value()) {
+        const QSignalBlocker blocker(m_output);
+        m_output->setValue(track.output);
     }
-    m_problems->clear();
-    refreshEdits();
+    m_workspace->tableSections()->editAnalogueCams(track);
+    showOutput();
 }
 
-void AnalogueCamsPage::refreshEdits() {
+AnalogueCamTrack AnalogueCamsPage::onDevice() const {
+    return m_workspace->tableSections()
+        ->deviceAnalogueCams(m_output->value())
+        .value_or(AnalogueCamTrack{m_output->value(), {}});
+}
+
+void AnalogueCamsPage::takeTable() {
+    m_workspace->tableSections()->editAnalogueCams(edited());
+    refreshMarks();
+}
+
+void AnalogueCamsPage::refreshMarks() {
     const QSignalBlocker blocker(m_table);
     const AnalogueCamTrack now = edited();
-    const bool sameOutput = now.output == m_device.output;
+    const std::optional<AnalogueCamTrack> device =
+        m_workspace->tableSections()->deviceAnalogueCams(now.output);
     for (int row = 0; row < m_table->rowCount(); ++row) {
-        const bool onDevice = sameOutput && row < m_device.points.size();
-        const AnaloguePoint device = onDevice ? m_device.points.at(row) : AnaloguePoint{};
-        const QString none = tr("no such point");
+        const bool onDevice = device && row < device->points.size();
+        const AnaloguePoint point = onDevice ? device->points.at(row) : AnaloguePoint{};
+        const QString none = device ? tr("no such point") : tr("not read");
         markEdited(m_table->item(row, 0),
-                   !onDevice || now.points.at(row).position != device.position,
-                   onDevice ? QString::number(device.position) : none);
-        markEdited(m_table->item(row, 1), !onDevice || now.points.at(row).value != device.value,
-                   onDevice ? QString::number(device.value) : none);
+                   !onDevice || now.points.at(row).position != point.position,
+                   onDevice ? QString::number(point.position) : none);
+        markEdited(m_table->item(row, 1), !onDevice || now.points.at(row).value != point.value,
+                   onDevice ? QString::number(point.value) : none);
     }
-    m_workspace->setPageEdits(sectionTitle(), int(changes().size()));
+    if (!device) {
+        m_state->setText(tr("Analogue output %1: not read from the device.").arg(now.output));
+    } else if (*device != now) {
+        m_state->setText(tr("Analogue output %1: edited, not written. On the device: %2")
+                             .arg(now.output)
+                             .arg(usecases::analogueCamsText(*device)));
+    } else {
+        m_state->setText(tr("Analogue output %1: as on the device.").arg(now.output));
+    }
+    // Said where it is wrong before anything is sent.
+    m_problems->setText(validateAnalogueCamTrack(now, m_workspace->info()).join(QLatin1Char('\n')));
 }
 
-QList<PageChange> AnalogueCamsPage::changes() const {
-    const AnalogueCamTrack now = edited();
-    if (now == m_device || now.output != m_device.output) return {};
-    return {{QStringLiteral("analogue:%1").arg(now.output),
-             tr("Analogue output %1 base points").arg(now.output),
-             tr("%n point(s)", nullptr, int(m_device.points.size())),
-             tr("%n point(s)", nullptr, int(now.points.size()))}};
-}
-
-void AnalogueCamsPage::writeItems(const QStringList& keys,
-                                  std::function<void(const PageWriteReport&)> done) {
-    const QList<PageChange> all = changes();
-    PageWriteReport report;
-    if (all.isEmpty() || (!keys.isEmpty() && !keys.contains(all.first().key))) {
-        report.addUnchanged();
-        done(report);
-        return;
+QList<SectionDifference> AnalogueCamsPage::differences() const {
+    QList<SectionDifference> list;
+    const TableSectionCopies& copies = *m_workspace->tableSections();
+    for (int output : copies.changedAnalogueOutputs()) {
+        const std::optional<AnalogueCamTrack> device = copies.deviceAnalogueCams(output);
+        list.append({WorkspaceItem::analogueCams(output), tr("Analogue output %1").arg(output),
+                     device ? usecases::analogueCamsText(*device) : tr("not read"),
+                     usecases::analogueCamsText(*copies.analogueCams(output))});
     }
-    const AnalogueCamTrack track = edited();
-    const QStringList problems = validateAnalogueCamTrack(track, m_workspace->info());
-    if (!problems.isEmpty()) {
-        // Nothing goes to the device that it would refuse.
-        m_problems->setText(problems.join(QLatin1Char('\n')));
-        report.addRefusal(all.first().item, problems.join(QLatin1Char(' ')));
-        done(report);
-        return;
-    }
-    m_problems->clear();
-    const QString label = all.first().item;
-    m_session->run<Done>(
-        this, tr("Write analogue cams"),
-        [track](comm::CamConDevice& device, comm::JobContext&) {
-            return device.writeAnalogueCams(track);
-        },
-        [this, track, label, done](Status written) {
-            PageWriteReport result;
-            if (written) {
-                result.addWritten();
-                m_device = track;
-                refreshEdits();
-            } else {
-                result.addFailure(label, written.error());
-            }
-            done(result);
-        });
+    return list;
 }
 
 }  // namespace cambench

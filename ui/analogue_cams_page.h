@@ -1,6 +1,5 @@
 #pragma once
 
-#include "page_write_report.h"
 #include "section_page.h"
 
 #include "model/camcon/analogue_cams.h"
@@ -15,37 +14,46 @@ class DeviceSession;
 class Workspace;
 
 // Analogue cams (table interface, areas 241..254): the base points of one
-// analogue output, a value at each position. Read, edit, write.
+// analogue output at a time, a value at each position. The values live in
+// the workspace (TableSectionCopies): edits of every output stay when
+// another one is shown, are saved with the project, listed in Compare with
+// device and written through the one write path.
 class AnalogueCamsPage : public SectionPage {
     Q_OBJECT
 public:
     AnalogueCamsPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Analogue cams"); }
-    // What is edited and differs from the device (not in Compare with device).
-    QList<PageChange> changes() const;
-    void writeItems(const QStringList& keys, std::function<void(const PageWriteReport&)> done);
+    QList<SectionDifference> differences() const override;
+    int itemCount() const override { return kAnalogueOutputs; }
     void deviceConnected() override { readFromDevice(); }
 
+    // Reads the output shown; the device's points replace its edit.
     void readFromDevice();
+    // Every edited output through the one write path.
+    void writeChanges(std::function<void(const WriteResult&)> done = {});
     QSpinBox* outputChooser() const { return m_output; }
     QTableWidget* table() const { return m_table; }
     // The points shown, as edited.
     AnalogueCamTrack edited() const;
     void setEdited(const AnalogueCamTrack& track);
-    const AnalogueCamTrack& onDevice() const { return m_device; }
+    // The device's points of the output shown (empty track when not read).
+    AnalogueCamTrack onDevice() const;
 
 private:
-    // Marks the edited points and tells the workspace whether the output
-    // shown differs from the device.
-    void refreshEdits();
+    // Shows the workspace's points of the output chosen.
+    void showOutput();
+    // The table changed: its points become the output's edit.
+    void takeTable();
+    // Marks the points that differ from the device and says what is wrong.
+    void refreshMarks();
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     QSpinBox* m_output;
     QTableWidget* m_table;
+    QLabel* m_state;
     QLabel* m_problems;
-    AnalogueCamTrack m_device;  // of the output shown, as last read or written
 };
 
 }  // namespace cambench

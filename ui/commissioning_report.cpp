@@ -8,9 +8,11 @@
 #include "print_diagram.h"
 #include "report_pages.h"
 #include "setting_field.h"
+#include "table_section_copies.h"
 #include "users_model.h"
 #include "workspace.h"
 
+#include "comm/usecases/value_text.h"
 #include "ui/cameditor/cam_document.h"
 
 #include <QCoreApplication>
@@ -78,6 +80,8 @@ public:
         html += settings();
         html += outputs();
         html += deadTimeModes();
+        html += tableSettings();
+        html += analogueCams();
         for (int program = 0; program < m_workspace.info().programs; ++program)
             html += programSection(program);
         html += users();
@@ -235,6 +239,52 @@ private:
         }
         return heading(CommissioningReport::tr("Dead-time modes")) +
                source(ProjectPart::DeadTimeModes) + table(rows);
+    }
+
+    // The programming program and the EEPROM lock (table interface only):
+    // absent when neither read nor in the project.
+    QString tableSettings() const {
+        const TableSectionCopies& copies = *m_workspace.tableSections();
+        const std::optional<ProgrammingProgram> programming = copies.programmingProgram();
+        const std::optional<bool> lock = copies.eepromLock();
+        if (!programming && !lock) return {};
+        QString rows;
+        const QString notRead = CommissioningReport::tr("not read");
+        if (programming) {
+            const std::optional<ProgrammingProgram>& device = copies.deviceProgrammingProgram();
+            rows += row({CommissioningReport::tr("Programming program"),
+                         marked(usecases::programmingProgramText(*programming),
+                                copies.programmingProgramChanged(),
+                                device ? usecases::programmingProgramText(*device) : notRead)});
+        }
+        if (lock) {
+            const std::optional<bool>& device = copies.deviceEepromLock();
+            rows += row({CommissioningReport::tr("EEPROM lock"),
+                         marked(usecases::eepromLockText(*lock), copies.eepromLockChanged(),
+                                device ? usecases::eepromLockText(*device) : notRead)});
+        }
+        return heading(CommissioningReport::tr("Programming program and EEPROM lock")) +
+               source(ProjectPart::ProgrammingProgram) + table(rows);
+    }
+
+    QString analogueCams() const {
+        const TableSectionCopies& copies = *m_workspace.tableSections();
+        QString rows = headerRow(
+            {CommissioningReport::tr("Analogue output"), CommissioningReport::tr("Base points")});
+        bool any = false;
+        for (int output = 1; output <= kAnalogueOutputs; ++output) {
+            const std::optional<AnalogueCamTrack> track = copies.analogueCams(output);
+            if (!track) continue;
+            any = true;
+            const std::optional<AnalogueCamTrack> device = copies.deviceAnalogueCams(output);
+            rows += row({QString::number(output),
+                         marked(usecases::analogueCamsText(*track), !device || *device != *track,
+                                device ? usecases::analogueCamsText(*device)
+                                       : CommissioningReport::tr("not read"))});
+        }
+        if (!any) return {};
+        return heading(CommissioningReport::tr("Analogue cams")) +
+               source(ProjectPart::AnalogueCams) + table(rows);
     }
 
     QString programSection(int number) {

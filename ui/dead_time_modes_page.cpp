@@ -3,7 +3,10 @@
 #include "change_marker.h"
 #include "device_session.h"
 #include "milliseconds_text.h"
+#include "replace_edits_question.h"
 #include "workspace.h"
+
+#include "comm/usecases/value_text.h"
 
 #include "ui/cameditor/cam_document.h"
 
@@ -64,18 +67,13 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
     layout->addLayout(buttons);
     layout->addWidget(m_table);
     connect(read, &QPushButton::clicked, this, [this] {
-        if (mayReplaceEdits(this, tr("Dead-time modes"), int(changes().size()))) readFromDevice();
+        if (mayReplaceEdits(this, tr("Dead-time modes"), int(differences().size())))
+            readFromDevice();
     });
     connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
     connect(m_workspace, &Workspace::deadTimeModesIncoming, this, &DeadTimeModesPage::takeIncoming);
     m_note->setText(tr("Not read from the device yet."));
-    connect(write, &QPushButton::clicked, this, [this] {
-        writeItems({}, [this](const PageWriteReport& report) {
-            Q_EMIT statusMessage(tr("Dead-time modes: %1").arg(report.summary()));
-            if (!report.complete())
-                QMessageBox::warning(this, tr("Dead-time modes"), report.details());
-        });
-    });
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
 }
 
 void DeadTimeModesPage::readFromDevice() {
@@ -136,10 +134,8 @@ void DeadTimeModesPage::takeIncoming(const DeadTimeModes& modes, bool fromDevice
         // The device's values as read with everything else; edits stay.
         const DeadTimeModes edits = [this] {
             DeadTimeModes edited;
-            for (const PageChange& change : changes()) {
-                const int output = change.key.section(QLatin1Char(':'), 1).toInt();
-                edited.insert(output, this->edited(output));
-            }
+            for (const SectionDifference& difference : differences())
+                edited.insert(difference.item.number, this->edited(difference.item.number));
             return edited;
         }();
         m_device = modes;
@@ -185,8 +181,6 @@ void DeadTimeModesPage::refreshEdits() {
         markEdited(outputItem, any, QString());
         outputItem->setToolTip(any ? tr("Edited, not written to the device") : QString());
     }
-    const int edits = int(changes().size());
-    m_workspace->setPageEdits(sectionTitle(), edits, true);
     // The values as edited go into a project saved now.
     DeadTimeModes shown;
     for (auto it = m_device.cbegin(); it != m_device.cend(); ++it)
@@ -222,79 +216,23 @@ int DeadTimeModesPage::rowOf(int output) const {
     return -1;
 }
 
-QList<PageChange> DeadTimeModesPage::changes() const {
-    QList<PageChange> list;
-    const auto text = [](const OutputDeadTime& d) {
-        return QStringLiteral("%1 %2/%3/%4 ms")
-            .arg(deadTimeModeKey(d.mode))
-            .arg(d.normal / kTenthsPerMs)
-            .arg(d.on / kTenthsPerMs)
-            .arg(d.off / kTenthsPerMs);
-    };
+QList<SectionDifference> DeadTimeModesPage::differences() const {
+    QList<SectionDifference> list;
     for (auto it = m_device.begin(); it != m_device.end(); ++it) {
         const OutputDeadTime now = edited(it.key());
         if (now == it.value()) continue;
-        list.append({QStringLiteral("tzkmode:%1").arg(it.key()),
-                     tr("Output %1 dead-time mode").arg(it.key()), text(it.value()), text(now)});
+        list.append({WorkspaceItem::deadTimeMode(it.key()),
+                     tr("Output %1 dead-time mode").arg(it.key()),
+                     usecases::deadTimeModeText(it.value()), usecases::deadTimeModeText(now)});
     }
     return list;
 }
 
-void DeadTimeModesPage::writeItems(const QStringList& keys,
-                                   std::function<void(const PageWriteReport&)> done) {
-    struct Item {
-        QString key;
-        QString label;
-        int output;
-        OutputDeadTime deadTime;
-    };
-    QList<Item> items;
-    PageWriteReport report;
-    for (const PageChange& difference : changes()) {
-        if (!keys.isEmpty() && !keys.contains(difference.key)) continue;
-        const int output = difference.key.section(QLatin1Char(':'), 1).toInt();
-        const OutputDeadTime deadTime = edited(output);
-        // Checked against the device before the first byte.
-        const QString problem = outputDeadTimeProblem(output, deadTime, m_workspace->info());
-        if (!problem.isEmpty()) {
-            report.addRefusal(difference.item, problem);
-            continue;
-        }
-        items.append({difference.key, difference.item, output, deadTime});
-    }
-    m_session->run<PageItemOutcomes>(
-        this, tr("Write dead-time modes"),
-        [items](comm::CamConDevice& device, comm::JobContext& job) -> Result<PageItemOutcomes> {
-            PageItemOutcomes outcomes;
-            int n = 0;
-            for (const Item& item : items) {
-                job.progress(n++, items.size());
-                const Status status = device.writeDeadTimeMode(item.output, item.deadTime);
-                outcomes.append({item.key, item.label, status ? Error{} : status.error()});
-            }
-            return outcomes;
-        },
-        [this, report, items, done](Result<PageItemOutcomes> outcomes) {
-            PageWriteReport result = report;
-            if (!outcomes) {
-                for (const Item& item : items) result.addFailure(item.label, outcomes.error());
-                done(result);
-                return;
-            }
-            result.add(outcomes.value());
-            for (const PageItemOutcome& outcome : outcomes.value()) {
-                if (outcome.error.kind != ErrorKind::None) continue;
-                for (const Item& item : items) {
-                    if (item.key != outcome.key) continue;
-                    m_device.insert(item.output, item.deadTime);
-                    // Word 0 is the dead time of mode Normal, the one the
-                    // Dead times page shows: its device copy follows.
-                    m_workspace->cams()->setDeviceDeadTime(item.output, item.deadTime.normal);
-                }
-            }
-            refreshEdits();
-            done(result);
-        });
+void DeadTimeModesPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    // Checked against the connected device before the first byte, written
+    // and read back item by item; the device copy follows the report
+    // (Workspace::setDeviceDeadTimeMode).
+    writeDifferences(m_session, m_workspace, std::move(done));
 }
 
 }  // namespace cambench

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "page_write_report.h"
 #include "section_page.h"
 
 #include "model/camcon/dead_time_modes.h"
@@ -24,9 +23,11 @@ public:
     DeadTimeModesPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Dead-time modes"); }
-    // What is edited and differs from the device (not in Compare with device).
-    QList<PageChange> changes() const;
-    void writeItems(const QStringList& keys, std::function<void(const PageWriteReport&)> done);
+    // What is edited and differs from the device, for Compare with device;
+    // written through the one write path like every section.
+    QList<SectionDifference> differences() const override;
+    int itemCount() const override { return int(m_device.size()); }
+    void writeChanges(std::function<void(const WriteResult&)> done = {});
     void deviceConnected() override { readFromDevice(); }
 
     void readFromDevice();

@@ -1,6 +1,7 @@
 #include "device_writer.h"
 
 #include "last_write_report.h"
+#include "table_section_copies.h"
 
 #include "device_session.h"
 #include "report_dialog.h"
@@ -79,6 +80,26 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned,
     }
 }
 
+// The table interface's own sections: their device copies follow.
+void applyTableSections(Workspace& workspace, const usecases::WritePlan& plan,
+                        const usecases::WriteReport& report) {
+    for (int i = 0; i < plan.deadTimeModes.size() && i < report.deadTimeModes.size(); ++i) {
+        const auto& actual = report.deadTimeModes.at(i).actual;
+        if (!actual) continue;
+        workspace.setDeviceDeadTimeMode(plan.deadTimeModes.at(i).output, *actual);
+        // Word 0 is the dead time of mode Normal, the one Dead times shows.
+        workspace.cams()->setDeviceDeadTime(plan.deadTimeModes.at(i).output, actual->normal);
+    }
+    TableSectionCopies& table = *workspace.tableSections();
+    for (const auto& outcome : report.analogueCams) {
+        if (outcome.actual) table.setDeviceAnalogueCams(*outcome.actual);
+    }
+    if (report.programmingProgram && report.programmingProgram->actual)
+        table.setDeviceProgrammingProgram(*report.programmingProgram->actual);
+    if (report.eepromLock && report.eepromLock->actual)
+        table.setDeviceEepromLock(*report.eepromLock->actual);
+}
+
 }  // namespace
 
 void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
@@ -109,6 +130,7 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
         if (report.plcNetworks.at(i).actual)
             workspace.setDevicePlcNetwork(*report.plcNetworks.at(i).actual);
     }
+    applyTableSections(workspace, plan, report);
 }
 
 quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* workspace,
@@ -167,9 +189,12 @@ QString writeDetails(const WriteResult& result) {
 void presentWriteResult(QWidget* parent, const QString& title, const WriteResult& result) {
     const bool complete = result && result->complete();
     LastWriteReport::instance().record(title, writeSummary(result), writeDetails(result), complete);
-    if (complete) return;
-    ReportDialog::present(parent, QMessageBox::Warning, title, writeSummary(result),
-                          writeDetails(result));
+    // Complete, yet with something to know (written to RAM only, ...): said
+    // where it cannot be missed, not only in the status bar.
+    const bool notes = result && !result->notes.isEmpty();
+    if (complete && !notes) return;
+    ReportDialog::present(parent, complete ? QMessageBox::Information : QMessageBox::Warning, title,
+                          writeSummary(result), writeDetails(result));
 }
 
 }  // namespace cambench

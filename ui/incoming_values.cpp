@@ -4,6 +4,7 @@
 #include "plc_page.h"
 #include "replace_edits_dialog.h"
 #include "setting_field.h"
+#include "table_section_copies.h"
 
 #include "ui/cameditor/cam_document.h"
 
@@ -114,6 +115,14 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
     if (!incoming.deadTimeModes.isEmpty()) {
         workspace.takeDeadTimeModes(incoming.deadTimeModes, fromDevice);
         if (fromDevice) stamp(workspace, read, ProjectPart::DeadTimeModes);
+    }
+    // Analogue cams, programming program, EEPROM lock: a file's are edits,
+    // a device's the copies (edits stay).
+    workspace.tableSections()->take(incoming, fromDevice);
+    if (fromDevice) {
+        for (ProjectPart part :
+             {ProjectPart::AnalogueCams, ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
+            stamp(workspace, read, part);
     }
 }
 

@@ -136,7 +136,7 @@ void MainWindow::createPages() {
                gate(new DeadTimeModesPage(m_session, m_workspace), Cap::DeadTimeModes),
                gate(new AnalogueCamsPage(m_session, m_workspace), Cap::AnalogueCams),
                gate(new ProgrammingProgramPage(m_session, m_workspace), Cap::ProgrammingProgram),
-               gate(new EepromLockPage(m_session), Cap::EepromLock),
+               gate(new EepromLockPage(m_session, m_workspace), Cap::EepromLock),
                gate(new PlcCouplingPage(m_session, m_workspace), Cap::ShortCommands)};
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
@@ -152,8 +152,16 @@ void MainWindow::createPages() {
 }
 
 QList<SectionPage*> MainWindow::dataPages() const {
-    // The gates of users and PLC: nothing to compare where the protocol lacks them.
-    return {m_cams, m_deadTimes, m_settings, m_pages.at(Users), m_pages.at(Plc)};
+    // The gates: nothing to compare where the protocol lacks the section.
+    return {m_cams,
+            m_deadTimes,
+            m_settings,
+            m_pages.at(Users),
+            m_pages.at(Plc),
+            m_pages.at(DeadTimeModes),
+            m_pages.at(AnalogueCams),
+            m_pages.at(ProgrammingProgram),
+            m_pages.at(EepromLock)};
 }
 
 void MainWindow::createMenus() {
@@ -501,12 +509,6 @@ bool MainWindow::confirmClose() {
         QMessageBox::Warning, tr("Unwritten changes"),
         tr("%n change(s) are not written to the device. Close anyway?", nullptr, changes),
         QMessageBox::NoButton, this);
-    // Edits of the table interface's own pages are not in Compare: name them.
-    const QStringList onPages = m_workspace->pageEditSections();
-    if (!onPages.isEmpty()) {
-        box.setInformativeText(tr("Edited on their own pages (write them there): %1")
-                                   .arg(onPages.join(QStringLiteral(", "))));
-    }
     QPushButton* compare = box.addButton(tr("Compare with device…"), QMessageBox::AcceptRole);
     QPushButton* save = box.addButton(tr("Save project…"), QMessageBox::ActionRole);
     box.addButton(tr("Close without writing"), QMessageBox::DestructiveRole);
@@ -519,15 +521,6 @@ bool MainWindow::confirmClose() {
     }
     if (box.clickedButton() == save) {
         saveProject();
-        // The project file does not hold the edits of those pages: saving
-        // it does not keep them, so the window stays.
-        const QStringList notSaved = m_workspace->pageEditSections(true);
-        if (!notSaved.isEmpty()) {
-            showMessage(tr("The project file does not hold the edits on %1: write them there, "
-                           "or close without writing.")
-                            .arg(notSaved.join(QStringLiteral(", "))));
-            return false;
-        }
         return m_workspace->changedCount() == 0 || !m_workspace->projectPath().isEmpty();
     }
     return box.clickedButton() != cancel;

@@ -48,6 +48,11 @@ public:
         Monitor,
         Backup,
         Terminal,
+        DeadTimeModes,  // the table interface's own sections
+        AnalogueCams,
+        ProgrammingProgram,
+        EepromLock,
+        PlcCoupling,
         COUNT
     };
 

@@ -2,14 +2,19 @@
 
 #include "change_marker.h"
 #include "device_session.h"
-#include "page_write_report.h"
+#include "replace_edits_question.h"
+#include "table_section_copies.h"
 #include "workspace.h"
 
+#include "comm/usecases/value_text.h"
+
 #include <QComboBox>
+#include <QDateTime>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -42,7 +47,7 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     form->addRow(tr("Program selection:"), m_mode);
     form->addRow(tr("Selection actual value:"), m_switchValue);
     auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write"));
+    auto* write = new QPushButton(tr("Write changes"));
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(read);
     buttons->addWidget(write);
@@ -55,42 +60,68 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     layout->addWidget(m_problems);
     layout->addStretch();
     connect(read, &QPushButton::clicked, this, [this] {
-        const bool changed = m_device && !(edited() == *m_device);
+        const bool changed = m_workspace->tableSections()->programmingProgramChanged();
         if (mayReplaceEdits(this, sectionTitle(), changed ? 1 : 0)) readFromDevice();
     });
-    connect(write, &QPushButton::clicked, this, &ProgrammingProgramPage::writeToDevice);
-    connect(m_program, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::refreshEdits);
-    connect(m_mode, &QComboBox::currentIndexChanged, this, &ProgrammingProgramPage::refreshEdits);
-    connect(m_switchValue, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::refreshEdits);
-    refreshEdits();
+    connect(write, &QPushButton::clicked, this, [this] { writeToDevice(); });
+    connect(m_program, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::takeFields);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &ProgrammingProgramPage::takeFields);
+    connect(m_switchValue, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::takeFields);
+    connect(m_workspace->tableSections(), &TableSectionCopies::changed, this,
+            &ProgrammingProgramPage::showCopies);
+    showCopies();
 }
 
-void ProgrammingProgramPage::refreshEdits() {
+void ProgrammingProgramPage::takeFields() {
+    // Fields never read or loaded are not a value anybody wants.
+    if (m_workspace->tableSections()->programmingProgram())
+        m_workspace->tableSections()->editProgrammingProgram(edited());
+    else
+        refreshMarks();
+}
+
+void ProgrammingProgramPage::showCopies() {
+    const std::optional<ProgrammingProgram> shown =
+        m_workspace->tableSections()->programmingProgram();
+    if (shown && !(*shown == edited())) {
+        const QSignalBlocker program(m_program);
+        const QSignalBlocker mode(m_mode);
+        const QSignalBlocker value(m_switchValue);
+        setEdited(*shown);
+    }
+    refreshMarks();
+}
+
+void ProgrammingProgramPage::refreshMarks() {
     const ProgrammingProgram now = edited();
+    const std::optional<ProgrammingProgram>& device =
+        m_workspace->tableSections()->deviceProgrammingProgram();
     const auto mark = [](QWidget* field, bool changed, const QString& onDevice) {
         QFont font = field->font();
         font.setBold(changed);
         field->setFont(font);
         field->setToolTip(changed ? tr("On the device: %1").arg(onDevice) : QString());
     };
-    if (!m_device) {
+    m_problems->setText(
+        validateProgrammingProgram(now, m_workspace->info()).join(QLatin1Char('\n')));
+    if (!device) {
         // Values never read are not the device's: say so instead of
         // showing the fields' zeros as if they were.
-        m_state->setText(
-            tr("Not read from the device yet: the values shown are not the "
-               "device's."));
-        m_workspace->setPageEdits(sectionTitle(), 0);
+        m_state->setText(m_workspace->tableSections()->programmingProgramChanged()
+                             ? changedMarker() + tr("From the project, not read from the "
+                                                    "device: write it or read the device.")
+                             : tr("Not read from the device yet: the values shown are not the "
+                                  "device's."));
         return;
     }
-    mark(m_program, now.program != m_device->program, QString::number(m_device->program));
-    mark(m_mode, now.selectMode != m_device->selectMode,
-         m_mode->itemText(qMax(0, m_mode->findData(m_device->selectMode))));
-    mark(m_switchValue, now.switchValue != m_device->switchValue,
-         QString::number(m_device->switchValue));
-    const bool changed = !(now == *m_device);
+    mark(m_program, now.program != device->program, QString::number(device->program));
+    mark(m_mode, now.selectMode != device->selectMode,
+         m_mode->itemText(qMax(0, m_mode->findData(device->selectMode))));
+    mark(m_switchValue, now.switchValue != device->switchValue,
+         QString::number(device->switchValue));
+    const bool changed = !(now == *device);
     m_state->setText(changed ? changedMarker() + tr("Edited, not written to the device.")
                              : tr("As on the device."));
-    m_workspace->setPageEdits(sectionTitle(), changed ? 1 : 0);
 }
 
 ProgrammingProgram ProgrammingProgramPage::edited() const {
@@ -115,35 +146,25 @@ void ProgrammingProgramPage::readFromDevice() {
                                          .arg(programming.error().message));
                 return;
             }
-            m_device = programming.value();
-            setEdited(programming.value());
-            refreshEdits();
+            TableSectionCopies* copies = m_workspace->tableSections();
+            copies->dropProgrammingEdit();
+            copies->setDeviceProgrammingProgram(*programming);
+            m_workspace->setReadTime(ProjectPart::ProgrammingProgram,
+                                     QDateTime::currentDateTimeUtc());
         });
 }
 
-void ProgrammingProgramPage::writeToDevice() {
-    const ProgrammingProgram programming = edited();
-    const QStringList problems = validateProgrammingProgram(programming, m_workspace->info());
-    m_problems->setText(problems.join(QLatin1Char('\n')));
-    if (!problems.isEmpty()) return;
-    m_session->run<ProgrammingProgram>(
-        this, tr("Write the programming program"),
-        [programming](comm::CamConDevice& device, comm::JobContext&) -> Result<ProgrammingProgram> {
-            const Status written = device.writeProgrammingProgram(programming);
-            if (!written) return written.error();
-            return device.readProgrammingProgram();
-        },
-        [this](Result<ProgrammingProgram> now) {
-            if (!now) {
-                Q_EMIT statusMessage(
-                    tr("Writing the programming program failed: %1").arg(now.error().message));
-                return;
-            }
-            m_device = now.value();
-            setEdited(now.value());
-            refreshEdits();
-            Q_EMIT statusMessage(tr("Programming program %1 written.").arg(now->program));
-        });
+void ProgrammingProgramPage::writeToDevice(std::function<void(const WriteResult&)> done) {
+    writeDifferences(m_session, m_workspace, std::move(done));
+}
+
+QList<SectionDifference> ProgrammingProgramPage::differences() const {
+    const TableSectionCopies& copies = *m_workspace->tableSections();
+    if (!copies.programmingProgramChanged()) return {};
+    const std::optional<ProgrammingProgram>& device = copies.deviceProgrammingProgram();
+    return {{WorkspaceItem::programmingProgram(), sectionTitle(),
+             device ? usecases::programmingProgramText(*device) : tr("not read"),
+             usecases::programmingProgramText(*copies.programmingProgram())}};
 }
 
 }  // namespace cambench

@@ -1,5 +1,6 @@
 #include "project_io.h"
 
+#include "table_section_copies.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_document.h"
@@ -40,6 +41,18 @@ Project projectFromWorkspace(const Workspace& workspace) {
     if (!workspace.deadTimeModesEdited() && read.parts.contains(ProjectPart::DeadTimeModes))
         project.readAt.parts.insert(ProjectPart::DeadTimeModes,
                                     read.parts.value(ProjectPart::DeadTimeModes));
+    // The other table-interface sections, as their pages show them.
+    const TableSectionCopies& table = *workspace.tableSections();
+    project.analogueCams = table.shownAnalogueCams();
+    project.programmingProgram = table.programmingProgram();
+    project.eepromLock = table.eepromLock();
+    const auto stampIf = [&](ProjectPart part, bool edited) {
+        if (!edited && read.parts.contains(part))
+            project.readAt.parts.insert(part, read.parts.value(part));
+    };
+    stampIf(ProjectPart::AnalogueCams, !table.changedAnalogueOutputs().isEmpty());
+    stampIf(ProjectPart::ProgrammingProgram, table.programmingProgramChanged());
+    stampIf(ProjectPart::EepromLock, table.eepromLockChanged());
     if (workspace.changedPlcNetworks().isEmpty() && read.parts.contains(ProjectPart::PlcNetworks))
         project.readAt.parts.insert(ProjectPart::PlcNetworks,
                                     read.parts.value(ProjectPart::PlcNetworks));

@@ -13,11 +13,13 @@ target_sources(cambench_ui PRIVATE
   device_session.cpp
   workspace.h
   workspace.cpp
+  table_section_copies.h
+  table_section_copies.cpp
   workspace_item.h
   section_page.h
   section_page.cpp
-  page_write_report.h
-  page_write_report.cpp
+  replace_edits_question.h
+  replace_edits_question.cpp
   write_plan_builder.h
   write_plan_builder.cpp
   device_writer.h

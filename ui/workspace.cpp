@@ -1,5 +1,7 @@
 #include "workspace.h"
 
+#include "table_section_copies.h"
+
 #include "ui/cameditor/cam_document.h"
 
 #include <algorithm>
@@ -24,9 +26,13 @@ const User* findByName(const QList<User>& users, const QString& name) {
 
 }  // namespace
 
-Workspace::Workspace(QObject* parent) : QObject(parent), m_cams(new CamDocument(this)) {
+Workspace::Workspace(QObject* parent)
+    : QObject(parent),
+      m_cams(new CamDocument(this)),
+      m_tableSections(new TableSectionCopies(this)) {
     m_cams->setLimits(m_info, true);
     connect(m_cams, &CamDocument::changedCountChanged, this, &Workspace::notifyChanged);
+    connect(m_tableSections, &TableSectionCopies::changed, this, &Workspace::notifyChanged);
 }
 
 Workspace::~Workspace() = default;
@@ -46,6 +52,7 @@ void Workspace::setProjectPath(const QString& path) {
 
 void Workspace::clear(const DeviceInfo& info) {
     m_cams->clear();
+    m_tableSections->clear();
     m_deadTimeModes.clear();
     m_deviceDeadTimeModes.clear();
     m_readAt = {};
@@ -347,10 +354,9 @@ void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
 // --- totals
 
 int Workspace::changedCount() const {
-    int onPages = 0;
-    for (const PageEdits& edits : m_pageEdits) onPages += edits.count;
     return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
-           int(changedPlcNetworks().size()) + onPages;
+           int(changedPlcNetworks().size()) + deadTimeModeEditCount() +
+           m_tableSections->changedCount();
 }
 
 void Workspace::takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice) {
@@ -358,22 +364,25 @@ void Workspace::takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice) {
     Q_EMIT deadTimeModesIncoming(modes, fromDevice);
 }
 
-void Workspace::setPageEdits(const QString& section, int count, bool inProjects) {
-    if (count > 0) {
-        m_pageEdits.insert(section, {count, inProjects});
-    } else {
-        m_pageEdits.remove(section);
-    }
+void Workspace::setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime) {
+    m_deviceDeadTimeModes.insert(output, deadTime);
+    // The page keeps the device's copy and its edits: it takes it from here.
+    Q_EMIT deadTimeModesIncoming(m_deviceDeadTimeModes, true);
+}
+
+void Workspace::noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice) {
+    m_deadTimeModes = edited;
+    m_deviceDeadTimeModes = onDevice;
     notifyChanged();
 }
 
-QStringList Workspace::pageEditSections(bool notInProjects) const {
-    QStringList sections;
-    for (auto it = m_pageEdits.cbegin(); it != m_pageEdits.cend(); ++it) {
-        if (notInProjects && it->inProjects) continue;
-        sections.append(QStringLiteral("%1 (%2)").arg(it.key()).arg(it->count));
+int Workspace::deadTimeModeEditCount() const {
+    int count = 0;
+    for (auto it = m_deadTimeModes.cbegin(); it != m_deadTimeModes.cend(); ++it) {
+        const auto device = m_deviceDeadTimeModes.constFind(it.key());
+        count += device == m_deviceDeadTimeModes.cend() || *device != *it ? 1 : 0;
     }
-    return sections;
+    return count;
 }
 
 // --- which device the copies are from
@@ -389,6 +398,7 @@ bool Workspace::copiesAreFrom(const DeviceInfo& now) const {
 
 void Workspace::forgetDeviceCopies(const QString& note) {
     m_cams->forgetDeviceCopies();
+    m_tableSections->forgetDeviceCopies();
     m_readAt = {};
     forgetDeviceSettings();
     forgetDeviceUsers();

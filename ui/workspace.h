@@ -18,6 +18,7 @@
 namespace cambench {
 
 class CamDocument;
+class TableSectionCopies;
 
 // Where values that replace the workspace's come from. A device read also
 // replaces the device copy; a file (a project) only the edited state.
@@ -117,24 +118,19 @@ public:
     const DeadTimeModes& deadTimeModes() const { return m_deadTimeModes; }
     void takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice);
     // The page's values as edited and its copy of the device's.
-    void noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice) {
-        m_deadTimeModes = edited;
-        m_deviceDeadTimeModes = onDevice;
-    }
+    void noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice);
     const DeadTimeModes& deviceDeadTimeModes() const { return m_deviceDeadTimeModes; }
     bool deadTimeModesEdited() const { return m_deadTimeModes != m_deviceDeadTimeModes; }
+    // Outputs whose mode as edited differs from the device's copy.
+    int deadTimeModeEditCount() const;
+    // After a write: the device holds `deadTime` for `output` now.
+    void setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime);
+
+    // --- Analogue cams, programming program, EEPROM lock (table interface).
+    TableSectionCopies* tableSections() const { return m_tableSections; }
 
     // Every item that differs from the device, across all sections.
     int changedCount() const;
-    // Sections whose edits live on their own page (the table interface's
-    // dead-time modes, analogue cams, programming program) report how many
-    // items differ from the device: counted in the title and asked about
-    // before quitting like every other edit (issue 12, point 7).
-    // `inProjects`: a saved project holds these edits (dead-time modes do).
-    void setPageEdits(const QString& section, int count, bool inProjects = false);
-    // "Dead-time modes (2)", ... for each such section with edits; with
-    // `notInProjects`, only those a saved project does not hold.
-    QStringList pageEditSections(bool notInProjects = false) const;
 
     // --- Which device the device copies are from: the identity and
     // fingerprint read last (on a connect, or with a read of everything).
@@ -173,11 +169,6 @@ Q_SIGNALS:
 
 private:
     void notifyChanged();
-    struct PageEdits {
-        int count = 0;
-        bool inProjects = false;
-    };
-    QMap<QString, PageEdits> m_pageEdits;  // section title -> items edited on its page
     DeadTimeModes m_deadTimeModes;
     DeadTimeModes m_deviceDeadTimeModes;
     QString deviceNumberFor(const User& user) const;
@@ -187,6 +178,7 @@ private:
     QString m_projectPath;
     bool m_infoFromDevice = false;
     CamDocument* m_cams;
+    TableSectionCopies* m_tableSections;
     ProjectReadTimes m_readAt;
     SystemSettings m_settings;
     SystemSettings m_deviceSettings;

@@ -17,6 +17,11 @@ struct WorkspaceItem {
         User,         // number = index into Workspace::users()
         DeletedUser,  // key = the user's number on the device
         PlcNetwork,   // number = Workspace::plcKey(area, number)
+        // The table interface's own sections.
+        DeadTimeMode,        // number = output
+        AnalogueCams,        // number = analogue output 1..14
+        ProgrammingProgram,  // the programming program and its select mode
+        EepromLock,
     };
     Kind kind = Kind::Track;
     int program = 0;
@@ -35,6 +40,10 @@ struct WorkspaceItem {
         return {Kind::DeletedUser, 0, 0, number};
     }
     static WorkspaceItem plcNetwork(int key) { return {Kind::PlcNetwork, 0, key, {}}; }
+    static WorkspaceItem deadTimeMode(int output) { return {Kind::DeadTimeMode, 0, output, {}}; }
+    static WorkspaceItem analogueCams(int output) { return {Kind::AnalogueCams, 0, output, {}}; }
+    static WorkspaceItem programmingProgram() { return {Kind::ProgrammingProgram, 0, 0, {}}; }
+    static WorkspaceItem eepromLock() { return {Kind::EepromLock, 0, 0, {}}; }
 
     friend bool operator==(const WorkspaceItem& a, const WorkspaceItem& b) {
         return a.kind == b.kind && a.program == b.program && a.number == b.number && a.key == b.key;

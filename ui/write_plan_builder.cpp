@@ -1,5 +1,6 @@
 #include "write_plan_builder.h"
 
+#include "table_section_copies.h"
 #include "workspace.h"
 
 #include "ui/cameditor/cam_document.h"
@@ -65,11 +66,22 @@ QList<WorkspaceItem> changedItems(const Workspace& workspace) {
     for (const QString& number : workspace.deletedUserNumbers())
         items << WorkspaceItem::deletedUser(number);
     for (int key : workspace.changedPlcNetworks()) items << WorkspaceItem::plcNetwork(key);
+    const DeadTimeModes& modes = workspace.deadTimeModes();
+    for (auto it = modes.cbegin(); it != modes.cend(); ++it) {
+        const DeadTimeModes& device = workspace.deviceDeadTimeModes();
+        if (!device.contains(it.key()) || device.value(it.key()) != *it)
+            items << WorkspaceItem::deadTimeMode(it.key());
+    }
+    const TableSectionCopies& table = *workspace.tableSections();
+    for (int output : table.changedAnalogueOutputs()) items << WorkspaceItem::analogueCams(output);
+    if (table.programmingProgramChanged()) items << WorkspaceItem::programmingProgram();
+    if (table.eepromLockChanged()) items << WorkspaceItem::eepromLock();
     return items;
 }
 
 PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>& chosen) {
     const CamDocument* cams = workspace.cams();
+    const TableSectionCopies& table = *workspace.tableSections();
     PlannedWrite planned;
     usecases::WritePlan& plan = planned.plan;
     SystemSettings settings;
@@ -110,6 +122,29 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
             case WorkspaceItem::Kind::DeletedUser:
                 plan.users << usecases::UserWrite{item.key, std::nullopt};
                 planned.userIndex << -1;
+                break;
+            case WorkspaceItem::Kind::DeadTimeMode: {
+                const DeadTimeModes& device = workspace.deviceDeadTimeModes();
+                plan.deadTimeModes << usecases::DeadTimeModeWrite{
+                    item.number, workspace.deadTimeModes().value(item.number),
+                    device.contains(item.number)
+                        ? std::optional<OutputDeadTime>(device.value(item.number))
+                        : std::nullopt};
+                break;
+            }
+            case WorkspaceItem::Kind::AnalogueCams:
+                if (const auto wanted = table.analogueCams(item.number))
+                    plan.analogueCams << usecases::AnalogueCamWrite{
+                        *wanted, table.deviceAnalogueCams(item.number)};
+                break;
+            case WorkspaceItem::Kind::ProgrammingProgram:
+                if (const auto wanted = table.programmingProgram())
+                    plan.programmingProgram = usecases::ProgrammingProgramWrite{
+                        *wanted, table.deviceProgrammingProgram()};
+                break;
+            case WorkspaceItem::Kind::EepromLock:
+                if (const auto wanted = table.eepromLock())
+                    plan.eepromLock = usecases::EepromLockWrite{*wanted, table.deviceEepromLock()};
                 break;
             case WorkspaceItem::Kind::PlcNetwork: {
                 const PlcNetwork wanted = workspace.plcNetworks().value(item.number);

@@ -86,9 +86,7 @@ int writeCams(CliSession& session, CommandArgs& args) {
     // The write path checks them against the device before the first byte.
     usecases::WritePlan plan;
     for (const Track& track : *tracks) plan.tracks << usecases::TrackWrite{*program, track, {}};
-    return runWritePlan(
-        session, QStringLiteral("cams write"),
-        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
+    return runWritePlan(session, QStringLiteral("cams write"), plan);
 }
 
 }  // namespace

@@ -118,9 +118,7 @@ int writePlc(CliSession& session, CommandArgs& args) {
     if (!networks) return reportError(fileError(networks.error()));
     usecases::WritePlan plan;
     for (const PlcNetwork& network : *networks) plan.plcNetworks << usecases::PlcWrite{network, {}};
-    return runWritePlan(
-        session, QStringLiteral("plc write"),
-        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
+    return runWritePlan(session, QStringLiteral("plc write"), plan);
 }
 
 }  // namespace

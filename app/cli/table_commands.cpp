@@ -13,20 +13,6 @@ namespace {
 using comm::CamConDevice;
 using comm::JobContext;
 
-// `read [-o FILE]`: runs `read` and writes what `toCsv` makes of it.
-template <class T>
-int readTable(CliSession& session, CommandArgs& args, const QString& title,
-              CliSession::Work<T> read, QByteArray (*toCsv)(const T&)) {
-    const Result<QString> path =
-        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
-    if (!path) return reportError(path.error());
-    if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<T> table = session.run<T>(title, std::move(read));
-    if (!table) return reportError(table.error());
-    const Status written = writeOutput(*path, toCsv(*table));
-    return written ? ExitOk : reportError(written.error());
-}
-
 // `write FILE`: loads the file (its format is checked before any device
 // work) and writes it through the one write path, which checks it against
 // the device first and reports every item.
@@ -39,9 +25,7 @@ int writeTable(CliSession& session, CommandArgs& args, const QString& title,
     const Result<T> table = load(*path);
     if (!table) return reportError(table.error());
     const usecases::WritePlan plan = toPlan(*table);
-    return runWritePlan(
-        session, title,
-        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
+    return runWritePlan(session, title, plan);
 }
 
 // On the table interface with its mode columns (which hold the plain
@@ -111,8 +95,8 @@ int runDeadTimes(CliSession& session, CommandArgs& args) {
     const Result<QString> verb = takeVerb(args, {QStringLiteral("read"), QStringLiteral("write")});
     if (!verb) return reportError(verb.error());
     if (*verb == QLatin1String("read")) {
-        return readTable<DeadTimeTable>(session, args, QStringLiteral("deadtimes read"),
-                                        readAllDeadTimes, deadTimeTableToCsv);
+        return readToOutput<DeadTimeTable>(session, args, QStringLiteral("deadtimes read"),
+                                           readAllDeadTimes, deadTimeTableToCsv);
     }
     return writeTable<DeadTimeTable>(session, args, QStringLiteral("deadtimes write"),
                                      loadDeadTimeTableCsv, deadTimesPlan);
@@ -123,8 +107,8 @@ int runNames(CliSession& session, CommandArgs& args) {
     if (!verb) return reportError(verb.error());
     if (*verb == QLatin1String("read")) {
         session.setShowProgress(true);
-        return readTable<Names>(session, args, QStringLiteral("names read"), readAllNames,
-                                namesToCsv);
+        return readToOutput<Names>(session, args, QStringLiteral("names read"), readAllNames,
+                                   namesToCsv);
     }
     return writeTable<Names>(session, args, QStringLiteral("names write"), loadNamesCsv, namesPlan);
 }

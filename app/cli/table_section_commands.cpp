@@ -19,26 +19,12 @@ namespace {
 using comm::CamConDevice;
 using comm::JobContext;
 
-// Runs `read` and prints `toText` of its result (to FILE with -o).
-template <class T>
-int readAndPrint(CliSession& session, CommandArgs& args, const QString& title,
-                 CliSession::Work<T> read, std::function<QByteArray(const T&)> toText) {
-    const Result<QString> path =
-        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
-    if (!path) return reportError(path.error());
-    if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<T> value = session.run<T>(title, std::move(read));
-    if (!value) return reportError(value.error());
-    const Status written = writeOutput(*path, toText(*value));
-    return written ? ExitOk : reportError(written.error());
-}
-
 int runAnalogueRead(CliSession& session, CommandArgs& args) {
     const Result<int> only = args.takeIntOption(QStringLiteral("--output"), 0, 1, kAnalogueOutputs);
     if (!only) return reportError(only.error());
     const int first = *only == 0 ? 1 : *only;
     const int last = *only == 0 ? kAnalogueOutputs : *only;
-    return readAndPrint<QList<AnalogueCamTrack>>(
+    return readToOutput<QList<AnalogueCamTrack>>(
         session, args, QStringLiteral("analogue read"),
         [first, last](CamConDevice& device, JobContext& job) -> Result<QList<AnalogueCamTrack>> {
             QList<AnalogueCamTrack> tracks;
@@ -61,21 +47,19 @@ int runAnalogueWrite(CliSession& session, CommandArgs& args) {
     const Result<QList<AnalogueCamTrack>> tracks = loadAnalogueCamsCsv(*path);
     if (!tracks) return reportError(tracks.error());
     usecases::WritePlan plan;
-    for (const AnalogueCamTrack& track : *tracks) plan.analogueCams << usecases::AnalogueCamWrite{track, {}};
-    return runWritePlan(
-        session, QStringLiteral("analogue write"),
-        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
+    for (const AnalogueCamTrack& track : *tracks)
+        plan.analogueCams << usecases::AnalogueCamWrite{track, {}};
+    return runWritePlan(session, QStringLiteral("analogue write"), plan);
 }
 
 QByteArray programmingText(const ProgrammingProgram& programming) {
-    return keyValueLines({
-                             {QStringLiteral("program"), programming.program},
-                             {QStringLiteral("selectMode"),
-                              programmingSelectModeKey(programming.selectMode)},
-                             {QStringLiteral("switchValue"), programming.switchValue},
-                             {QStringLiteral("text"),
-                              usecases::programmingProgramText(programming)},
-                         })
+    return keyValueLines(
+               {
+                   {QStringLiteral("program"), programming.program},
+                   {QStringLiteral("selectMode"), programmingSelectModeKey(programming.selectMode)},
+                   {QStringLiteral("switchValue"), programming.switchValue},
+                   {QStringLiteral("text"), usecases::programmingProgramText(programming)},
+               })
         .toUtf8();
 }
 
@@ -100,16 +84,16 @@ int runProgrammingWrite(CliSession& session, CommandArgs& args) {
     }
     std::optional<qint32> switchValue;
     if (!switchText->isEmpty()) {
-        const Result<int> value = parseIntArgument(*switchText, QStringLiteral("--switch-value"),
-                                                   std::numeric_limits<int>::min(),
-                                                   std::numeric_limits<int>::max());
+        const Result<int> value =
+            parseIntArgument(*switchText, QStringLiteral("--switch-value"),
+                             std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
         if (!value) return reportError(value.error());
         switchValue = *value;
     }
     return runWritePlan(
         session, QStringLiteral("programming write"),
-        [program = *program, mode, switchValue](
-            CamConDevice& device, const DeviceInfo&) -> Result<usecases::WritePlan> {
+        [program = *program, mode, switchValue](CamConDevice& device,
+                                                const DeviceInfo&) -> Result<usecases::WritePlan> {
             ProgrammingProgram wanted;
             std::optional<ProgrammingProgram> current;
             if (mode < 0 || !switchValue) {
@@ -135,7 +119,7 @@ int runEepromLockWrite(CliSession& session, bool locked) {
     plan.eepromLock = usecases::EepromLockWrite{locked, {}};
     return runWritePlan(
         session, locked ? QStringLiteral("eeprom-lock lock") : QStringLiteral("eeprom-lock unlock"),
-        [plan](CamConDevice&, const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
+        plan);
 }
 
 }  // namespace
@@ -151,21 +135,21 @@ int runProgramming(CliSession& session, CommandArgs& args) {
     const Result<QString> verb = takeVerb(args, {QStringLiteral("read"), QStringLiteral("write")});
     if (!verb) return reportError(verb.error());
     if (*verb == QLatin1String("write")) return runProgrammingWrite(session, args);
-    return readAndPrint<ProgrammingProgram>(
+    return readToOutput<ProgrammingProgram>(
         session, args, QStringLiteral("programming read"),
         [](CamConDevice& device, JobContext&) { return device.readProgrammingProgram(); },
         programmingText);
 }
 
 int runEepromLock(CliSession& session, CommandArgs& args) {
-    const Result<QString> verb = takeVerb(
-        args, {QStringLiteral("read"), QStringLiteral("lock"), QStringLiteral("unlock")});
+    const Result<QString> verb =
+        takeVerb(args, {QStringLiteral("read"), QStringLiteral("lock"), QStringLiteral("unlock")});
     if (!verb) return reportError(verb.error());
     if (*verb != QLatin1String("read")) {
         if (const Status done = args.finish(); !done) return reportError(done.error());
         return runEepromLockWrite(session, *verb == QLatin1String("lock"));
     }
-    return readAndPrint<bool>(
+    return readToOutput<bool>(
         session, args, QStringLiteral("eeprom-lock read"),
         [](CamConDevice& device, JobContext&) { return device.readEepromLock(); },
         [](const bool& locked) {

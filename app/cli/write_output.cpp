@@ -10,6 +10,12 @@ using comm::JobContext;
 using usecases::WritePlan;
 using usecases::WriteReport;
 
+int runWritePlan(CliSession& session, const QString& title, const usecases::WritePlan& plan) {
+    return runWritePlan(session, title,
+                        [plan](comm::CamConDevice&,
+                               const DeviceInfo&) -> Result<usecases::WritePlan> { return plan; });
+}
+
 int runWritePlan(CliSession& session, const QString& title,
                  std::function<Result<WritePlan>(CamConDevice&, const DeviceInfo&)> makePlan) {
     session.setShowProgress(true);

@@ -1,6 +1,9 @@
 #pragma once
 
+#include "cli_options.h"
+#include "cli_output.h"
 #include "cli_session.h"
+#include "exit_codes.h"
 
 #include "comm/usecases/write_items.h"
 
@@ -13,6 +16,24 @@ namespace cambench::cli {
 int runWritePlan(
     CliSession& session, const QString& title,
     std::function<Result<usecases::WritePlan>(comm::CamConDevice&, const DeviceInfo&)> makePlan);
+
+// The same for a plan made before any device work (from a file).
+int runWritePlan(CliSession& session, const QString& title, const usecases::WritePlan& plan);
+
+// `read [-o FILE]` of a section: runs `read` and writes `toText` of what it
+// returns to FILE or stdout.
+template <class T>
+int readToOutput(CliSession& session, CommandArgs& args, const QString& title,
+                 CliSession::Work<T> read, std::function<QByteArray(const T&)> toText) {
+    const Result<QString> path =
+        args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
+    if (!path) return reportError(path.error());
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    const Result<T> value = session.run<T>(title, std::move(read));
+    if (!value) return reportError(value.error());
+    const Status written = writeOutput(*path, toText(*value));
+    return written ? ExitOk : reportError(written.error());
+}
 
 // Prints the report: one line per item on stdout, the summary last; when
 // not everything was written the summary also goes to stderr. Returns the

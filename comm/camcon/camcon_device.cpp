@@ -6,9 +6,9 @@ namespace cambench::comm {
 
 QString CamConDevice::lacks(CamConCapability capability) const {
     const QString ascii = QCoreApplication::translate(
-        "cambench::comm", "the CamCon ASCII protocol (--protocol standard or multiuser)");
+        "cambench::comm", "the CamCon ASCII protocol (Standard or Multiuser)");
     const QString table = QCoreApplication::translate(
-        "cambench::comm", "the CamCon table interface (--protocol 3964r-n96 or 3964r-e38)");
+        "cambench::comm", "the CamCon table interface (3964R n96 or e38)");
     switch (capability) {
         case CamConCapability::Users:
             return QCoreApplication::translate("cambench::comm",
@@ -19,9 +19,8 @@ QString CamConDevice::lacks(CamConCapability capability) const {
                                                "EEPROM backup and restore exist only in %1.")
                 .arg(ascii);
         case CamConCapability::BusScan:
-            return QCoreApplication::translate(
-                "cambench::comm",
-                "A bus scan needs the Multiuser protocol (--protocol multiuser).");
+            return QCoreApplication::translate("cambench::comm",
+                                               "A bus scan needs the Multiuser protocol.");
         case CamConCapability::Terminal:
             return QCoreApplication::translate("cambench::comm", "Typed requests exist only in %1.")
                 .arg(ascii);

@@ -7,8 +7,8 @@
 #include "model/camcon/plc_file.h"
 
 #include <QCoreApplication>
-#include <QSet>
 #include <QHash>
+#include <QSet>
 
 #include <algorithm>
 
@@ -182,7 +182,8 @@ private:
     void checkTableSections() {
         QSet<int> analogueOutputs;
         for (const AnalogueCamWrite& write : m_plan.analogueCams) {
-            for (const QString& why : validateAnalogueCamTrack(write.wanted, m_device)) problem(why);
+            for (const QString& why : validateAnalogueCamTrack(write.wanted, m_device))
+                problem(why);
             if (analogueOutputs.contains(write.wanted.output)) {
                 problem(QCoreApplication::translate("cambench::usecases",
                                                     "Analogue output %1 is to be written twice.")

@@ -179,8 +179,8 @@ private:
     Status readAnalogueCams() {
         const bool reachable = m_connection.has(CamConCapability::AnalogueCams);
         for (int output = 1; output <= kAnalogueOutputs; ++output) {
-            if (const Status ok = step(1, QCoreApplication::translate(
-                                              "cambench::usecases", "reading analogue output %1")
+            if (const Status ok = step(1, QCoreApplication::translate("cambench::usecases",
+                                                                      "reading analogue output %1")
                                               .arg(output));
                 !ok)
                 return ok;
@@ -194,8 +194,8 @@ private:
     }
 
     Status readEepromLock() {
-        if (const Status ok = step(1, QCoreApplication::translate("cambench::usecases",
-                                                                  "reading the EEPROM lock"));
+        if (const Status ok = step(
+                1, QCoreApplication::translate("cambench::usecases", "reading the EEPROM lock"));
             !ok)
             return ok;
         if (!m_connection.has(CamConCapability::EepromLock)) return success();

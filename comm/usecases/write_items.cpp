@@ -117,7 +117,9 @@ public:
         for (const SettingsWrite& group : m_plan.settings) report.settings << writeSettings(group);
         for (const NameWrite& name : m_plan.programNames)
             report.programNames << writeName(name, true);
+        const std::optional<ProgrammingProgram> programming = programmingBeforeTracks();
         for (const TrackWrite& track : m_plan.tracks) report.tracks << writeTrack(track);
+        if (programming) setProgrammingProgramBack(*programming, report);
         fillDeadTimeBeliefs();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
             report.deadTimes << writeDeadTime(deadTime);
@@ -415,7 +417,8 @@ private:
     }
 
     ItemOutcome<bool> writeEepromLock(const EepromLockWrite& write) {
-        if (auto no = unreachable<bool>(CamConCapability::EepromLock, eepromLockLabel())) return *no;
+        if (auto no = unreachable<bool>(CamConCapability::EepromLock, eepromLockLabel()))
+            return *no;
         ValueOps<bool> ops;
         ops.read = [this] { return m_connection.readEepromLock(); };
         ops.write = [this, &write](const bool&) {
@@ -426,6 +429,30 @@ private:
         // Nothing else changes the lock: as read at the start it still is.
         return writeItem<bool>(eepromLockLabel(), write.wanted,
                                m_lockedAtStart ? m_lockedAtStart : write.believed, ops);
+    }
+
+    // Writing cams over the table interface selects their program as the
+    // programming program, which a PLC may be editing: unless the plan sets
+    // it, the write leaves it as it found it.
+    std::optional<ProgrammingProgram> programmingBeforeTracks() {
+        if (m_plan.tracks.isEmpty() || m_plan.programmingProgram ||
+            !m_connection.has(CamConCapability::ProgrammingProgram))
+            return std::nullopt;
+        const Result<ProgrammingProgram> read = m_connection.readProgrammingProgram();
+        return read ? std::optional<ProgrammingProgram>(*read) : std::nullopt;
+    }
+
+    void setProgrammingProgramBack(const ProgrammingProgram& before, WriteReport& report) {
+        if (m_stop) return;
+        const Result<ProgrammingProgram> now = m_connection.readProgrammingProgram();
+        if (now && *now == before) return;
+        const Status restored = m_connection.writeProgrammingProgram(before);
+        if (restored) return;
+        report.notes << QCoreApplication::translate(
+                            "cambench::usecases",
+                            "Writing the cams changed the programming program; setting it back "
+                            "to %1 failed (%2): check it on the Programming program page.")
+                            .arg(programmingProgramText(before), restored.error().message);
     }
 
     // Where the EEPROM can be locked, whether it is: with the lock on, what
@@ -532,8 +559,8 @@ private:
     std::optional<DeadTimeModes> m_deadTimeModes;
     bool m_lockQuestion = false;          // the protocol has the lock and items are written
     std::optional<bool> m_lockedAtStart;  // the EEPROM lock before the first item
-    QString m_lockError;  // why the lock could not be read
-    std::optional<Error> m_stop;  // set: the remaining items are not sent
+    QString m_lockError;                  // why the lock could not be read
+    std::optional<Error> m_stop;          // set: the remaining items are not sent
     qint64 m_done = 0;
     qint64 m_total = 0;
 };

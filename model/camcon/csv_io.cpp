@@ -338,7 +338,10 @@ QByteArray analogueCamsToCsv(const QList<AnalogueCamTrack>& tracks) {
     for (const AnalogueCamTrack& track : tracks) {
         if (track.points.isEmpty()) rows << QStringLiteral("%1,,").arg(track.output);
         for (const AnaloguePoint& point : track.points)
-            rows << QStringLiteral("%1,%2,%3").arg(track.output).arg(point.position).arg(point.value);
+            rows << QStringLiteral("%1,%2,%3")
+                        .arg(track.output)
+                        .arg(point.position)
+                        .arg(point.value);
     }
     return joinLines(kAnalogueHeader, rows);
 }

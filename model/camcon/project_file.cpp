@@ -135,9 +135,9 @@ public:
                 m_r, m_r.object(root, {}, key("programmingProgram")), key("programmingProgram"));
         }
         if (root.contains(key("eepromLock"))) {
-            project.eepromLock = m_r.boolean(
-                root, {}, key("eepromLock"),
-                QCoreApplication::translate("cambench::model", "EEPROM lock"));
+            project.eepromLock =
+                m_r.boolean(root, {}, key("eepromLock"),
+                            QCoreApplication::translate("cambench::model", "EEPROM lock"));
         }
         if (root.contains(key("readAt")))
             project.readAt = readTimes(m_r.object(root, {}, key("readAt")));

@@ -30,9 +30,10 @@ QList<AnalogueCamTrack> analogueCamsFromJson(JsonReader& reader, const QJsonArra
         const QString trackPath = JsonReader::element(path, i);
         const QJsonObject object = reader.objectValue(array.at(i), trackPath);
         AnalogueCamTrack track;
-        track.output = int(reader.integer(
-            object, trackPath, key("output"),
-            QCoreApplication::translate("cambench::model", "analogue output"), 1, kAnalogueOutputs));
+        track.output =
+            int(reader.integer(object, trackPath, key("output"),
+                               QCoreApplication::translate("cambench::model", "analogue output"), 1,
+                               kAnalogueOutputs));
         const QString pointsPath = JsonReader::member(trackPath, key("points"));
         const QJsonArray points = reader.array(object, trackPath, key("points"));
         for (int p = 0; p < points.size() && !reader.failed(); ++p) {
@@ -45,19 +46,19 @@ QList<AnalogueCamTrack> analogueCamsFromJson(JsonReader& reader, const QJsonArra
                 break;
             }
             AnaloguePoint point;
-            point.position = qint32(reader.integerValue(
-                pair.at(0), JsonReader::element(pointPath, 0),
-                QCoreApplication::translate("cambench::model", "position")));
+            point.position = qint32(
+                reader.integerValue(pair.at(0), JsonReader::element(pointPath, 0),
+                                    QCoreApplication::translate("cambench::model", "position")));
             point.value = qint32(
                 reader.integerValue(pair.at(1), JsonReader::element(pointPath, 1),
                                     QCoreApplication::translate("cambench::model", "value")));
             track.points << point;
         }
         if (!reader.failed() && seen.contains(track.output)) {
-            reader.fail(JsonReader::member(trackPath, key("output")),
-                        QCoreApplication::translate("cambench::model",
-                                                    "analogue output %1 appears twice")
-                            .arg(track.output));
+            reader.fail(
+                JsonReader::member(trackPath, key("output")),
+                QCoreApplication::translate("cambench::model", "analogue output %1 appears twice")
+                    .arg(track.output));
         }
         seen.insert(track.output);
         tracks << track;
@@ -83,9 +84,9 @@ ProgrammingProgram programmingProgramFromJson(JsonReader& reader, const QJsonObj
     programming.selectMode = programmingSelectModeFromKey(mode);
     if (!reader.failed() && programming.selectMode < 0) {
         reader.fail(JsonReader::member(path, key("selectMode")),
-                    QCoreApplication::translate(
-                        "cambench::model", "unknown select mode \"%1\"; use slow, direct or "
-                                           "at-value")
+                    QCoreApplication::translate("cambench::model",
+                                                "unknown select mode \"%1\"; use slow, direct or "
+                                                "at-value")
                         .arg(mode));
     }
     programming.switchValue =

@@ -404,7 +404,7 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
     const CliRun run = session.cli(command);
     VERIFY_EXIT(run, 2);
     QVERIFY2(run.err.contains(capability), qPrintable(run.err));
-    QVERIFY2(run.err.contains(QLatin1String("--protocol standard or multiuser")),
+    QVERIFY2(run.err.contains(QLatin1String("ASCII protocol (Standard or Multiuser)")),
              qPrintable(run.err));
     QVERIFY(run.out.isEmpty());
 }

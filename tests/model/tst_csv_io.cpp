@@ -102,6 +102,26 @@ private Q_SLOTS:
         QVERIFY(!imported.ok());
     }
 
+    void analogueCamsRoundTripAndErrors() {
+        const QList<AnalogueCamTrack> tracks{AnalogueCamTrack{2, {{0, 100}, {90, -5}}},
+                                             AnalogueCamTrack{3, {}}};
+        const QByteArray csv = analogueCamsToCsv(tracks);
+        QCOMPARE(csv, QByteArray("output,position,value\n2,0,100\n2,90,-5\n3,,\n"));
+        const Result<QList<AnalogueCamTrack>> back = analogueCamsFromCsv(csv);
+        QVERIFY2(back.ok(), qPrintable(back.error().message));
+        QCOMPARE(*back, tracks);
+        const Result<QList<AnalogueCamTrack>> mixed =
+            analogueCamsFromCsv("output,position,value\n3,1,2\n3,,\n");
+        QVERIFY(!mixed.ok());
+        QVERIFY2(mixed.error().message.contains(QLatin1String("Line 3")),
+                 qPrintable(mixed.error().message));
+        const Result<QList<AnalogueCamTrack>> noOutput =
+            analogueCamsFromCsv("output,position,value\n15,1,2\n");
+        QVERIFY(!noOutput.ok());
+        QVERIFY2(noOutput.error().message.contains(QLatin1String("Line 2")),
+                 qPrintable(noOutput.error().message));
+    }
+
     void namesRoundTripWithQuotes() {
         Names names;
         names.outputs = {{1, QStringLiteral("Glue, hot")},

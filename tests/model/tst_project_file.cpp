@@ -154,6 +154,50 @@ private Q_SLOTS:
                  qPrintable(refused.error().message));
     }
 
+    void otherTableSectionsRoundTrip() {
+        Project project = sampleProject();
+        project.analogueCams = {AnalogueCamTrack{2, {{0, 100}, {90, -2000}}},
+                                AnalogueCamTrack{3, {}}};
+        project.programmingProgram = ProgrammingProgram{1, 2, 45};
+        project.eepromLock = true;
+        for (ProjectPart part :
+             {ProjectPart::AnalogueCams, ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
+            project.readAt.parts.insert(part, QDateTime(QDate(2026, 3, 1), QTime(8, 0), Qt::UTC));
+        QCOMPARE(validateProject(project), QStringList());
+        const QByteArray json = projectToJson(project, kWithNumbers);
+        QVERIFY2(json.contains("\"selectMode\": \"at-value\""), json.constData());
+        const Result<Project> loaded = projectFromJson(json);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
+        QVERIFY(*loaded == project);
+
+        // Files without them say nothing about them.
+        const Result<Project> plain = projectFromJson(projectToJson(sampleProject()));
+        QVERIFY(plain->analogueCams.isEmpty());
+        QVERIFY(!plain->programmingProgram.has_value());
+        QVERIFY(!plain->eepromLock.has_value());
+
+        // Values the device would refuse are warned about, naming the place.
+        project.analogueCams[0].points = {{90, 1}, {10, 2}};
+        project.programmingProgram->program = 99;
+        const QString problems = validateProject(project).join(QLatin1Char('\n'));
+        QVERIFY2(problems.contains(QLatin1String("Analogue output 2, base point 2")),
+                 qPrintable(problems));
+        QVERIFY2(problems.contains(QLatin1String("Programming program 99")), qPrintable(problems));
+
+        QByteArray bad = json;
+        bad.replace("\"at-value\"", "\"sometimes\"");
+        Result<Project> refused = projectFromJson(bad);
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.contains(QLatin1String("programmingProgram.selectMode")),
+                 qPrintable(refused.error().message));
+        Project twice = sampleProject();
+        twice.analogueCams = {AnalogueCamTrack{2, {}}, AnalogueCamTrack{2, {{0, 1}}}};
+        refused = projectFromJson(projectToJson(twice));
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.contains(QLatin1String("analogue output 2 appears twice")),
+                 qPrintable(refused.error().message));
+    }
+
     void userNumbersAreSavedOnlyWhenAskedFor() {
         const QByteArray without = projectToJson(sampleProject());
         QVERIFY(!without.contains("4711"));

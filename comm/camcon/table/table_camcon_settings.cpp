@@ -45,8 +45,16 @@ Status writeRuns(TableLink& link, int area, const QMap<int, qint32>& words) {
     return success();
 }
 
+// The settings as a person knows them: their labels (translated in the
+// context "Settings", as on the settings page), not their JSON keys.
 QString keyList(const QStringList& keys) {
-    return keys.join(QLatin1String(", "));
+    QStringList labels;
+    for (const QString& key : keys) {
+        const SettingSpec* spec = findSetting(key);
+        labels << (spec && *spec->label ? QCoreApplication::translate("Settings", spec->label)
+                                        : key);
+    }
+    return labels.join(QLatin1String(", "));
 }
 
 }  // namespace

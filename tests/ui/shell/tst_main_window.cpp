@@ -308,25 +308,26 @@ void MainWindowTest::dataOnlyTheTableInterfaceHasIsEditedAndWritten() {
     QCOMPARE(modes->edited(2).mode, DeadTimeMode::SeparateOnOff);
     const OutputDeadTime wanted{DeadTimeMode::SeparateOnOff, 0, 35, 47};
     modes->setEdited(5, wanted);
-    QCOMPARE(modes->changes().size(), 1);
-    std::optional<PageWriteReport> report;
-    modes->writeItems({}, [&](const PageWriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QVERIFY2(report->complete(), qPrintable(report->details()));
-    QCOMPARE(report->written, 1);
+    QCOMPARE(modes->differences().size(), 1);
+    std::optional<WriteResult> result;
+    modes->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(result->ok() && (*result)->complete(), qPrintable(writeDetails(*result)));
+    QCOMPARE((*result)->count(usecases::WriteState::Written), 1);
     modes->setEdited(5, {});
     modes->readFromDevice();
     QTRY_COMPARE_WITH_TIMEOUT(modes->edited(5), wanted, kDeviceTimeoutMs);
-    QVERIFY(modes->changes().isEmpty());
+    QVERIFY(modes->differences().isEmpty());
 
     auto* analogue = shell->window()->findChild<AnalogueCamsPage*>();
     QTRY_COMPARE_WITH_TIMEOUT(analogue->onDevice().points.size(), 3, kDeviceTimeoutMs);
     const AnalogueCamTrack curve{1, {{10, 100}, {20, 200}}};
     analogue->setEdited(curve);
-    report.reset();
-    analogue->writeItems({}, [&](const PageWriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QCOMPARE(report->written, 1);
+    result.reset();
+    analogue->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(result->ok() && (*result)->complete(), qPrintable(writeDetails(*result)));
+    QCOMPARE((*result)->count(usecases::WriteState::Written), 1);
     analogue->setEdited({1, {}});
     analogue->readFromDevice();
     QTRY_COMPARE_WITH_TIMEOUT(analogue->edited(), curve, kDeviceTimeoutMs);
@@ -359,7 +360,7 @@ void MainWindowTest::tablePageAsksBeforeAReadReplacesEdits() {
         QTRY_COMPARE_WITH_TIMEOUT(yes.answered(), 1, kDeviceTimeoutMs);
     }
     QTRY_COMPARE_WITH_TIMEOUT(modes->edited(5), modes->onDevice().value(5), kDeviceTimeoutMs);
-    QVERIFY(modes->changes().isEmpty());
+    QVERIFY(modes->differences().isEmpty());
 }
 
 void MainWindowTest::lockedEepromIsShownAsAPlainWarning() {

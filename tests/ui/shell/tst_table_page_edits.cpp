@@ -1,17 +1,23 @@
-// Issue 12, point 7: edits on the table interface's own pages (dead-time
-// modes, analogue cams, programming program) are marked as edited, counted
-// in the title and asked about before quitting; a value the device would
-// refuse is reported as not sent, saying what and where; values never read
-// say so.
+// Issue 12, points 2 and 7: edits on the table interface's own pages
+// (dead-time modes, analogue cams, programming program, EEPROM lock) are
+// marked as edited, counted in the title and asked about before quitting,
+// listed in Compare with device and written through the one write path; a
+// value the device would refuse is refused before anything is sent, saying
+// what and where; values never read say so; a project carries them.
 #include "shell_fixture.h"
 
 #include "model/camcon/project_file.h"
 #include "ui/analogue_cams_page.h"
 #include "ui/change_marker.h"
 #include "ui/commissioning_report.h"
+#include "ui/compare_dialog.h"
 #include "ui/dead_time_modes_page.h"
+#include "ui/eeprom_lock_page.h"
 #include "ui/language.h"
 #include "ui/programming_program_page.h"
+#include "ui/report_dialog.h"
+#include "ui/table_section_copies.h"
+#include "ui/workspace.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
@@ -21,6 +27,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextDocument>
+#include <QTreeWidget>
 #include <QtTest>
 
 using namespace cambench;
@@ -56,6 +63,7 @@ private Q_SLOTS:
     void analogueEditIsCountedAndARefusalSaysWhere();
     void programmingProgramEditIsMarkedAndCounted();
     void projectFileCarriesDeadTimeModesThroughThePage();
+    void compareListsAndWritesTheTableSections();
 };
 
 void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
@@ -79,13 +87,16 @@ void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
 
     QString question;
     QVERIFY(quitAsks(shell->window(), &question));
-    QVERIFY2(question.contains(QLatin1String("Dead-time modes (1)")), qPrintable(question));
+    QVERIFY2(question.contains(QString::number(before + 1)), qPrintable(question));
+    QCOMPARE(modes->differences().size(), 1);
+    QCOMPARE(modes->differences().first().item, WorkspaceItem::deadTimeMode(5));
 
-    // Written: the mark and the count go.
-    std::optional<PageWriteReport> report;
-    modes->writeItems({}, [&](const PageWriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QVERIFY2(report->complete(), qPrintable(report->details()));
+    // Written through the one write path: the mark and the count go.
+    std::optional<WriteResult> result;
+    modes->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(result->ok() && (*result)->complete(), qPrintable(writeDetails(*result)));
+    QCOMPARE((*result)->deadTimeModes.size(), 1);
     QCOMPARE(shell->workspace()->changedCount(), before);
     QVERIFY(!table->item(4, DeadTimeModesPage::OnColumn)->font().bold());
 }
@@ -102,22 +113,31 @@ void TablePageEditsTest::analogueEditIsCountedAndARefusalSaysWhere() {
     QCOMPARE(shell->workspace()->changedCount(), before + 1);
     QVERIFY(position->font().bold());
 
-    std::optional<PageWriteReport> report;
-    analogue->writeItems({}, [&](const PageWriteReport& r) { report = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), kDeviceTimeoutMs);
-    QVERIFY(!report->complete());
-    QCOMPARE(report->refusals.size(), 1);
-    QVERIFY(report->failures.isEmpty());
-    QVERIFY2(report->details().contains(QLatin1String("Not sent")), qPrintable(report->details()));
-    QVERIFY2(report->details().contains(QLatin1String("base point 2")),
-             qPrintable(report->details()));
-    QVERIFY2(!report->details().contains(QLatin1String("reply may have been lost")),
-             qPrintable(report->details()));
+    // Said on the page before anything is written, naming the point.
+    bool problemShown = false;
+    for (QLabel* label : analogue->findChildren<QLabel*>())
+        problemShown |= label->text().contains(QLatin1String("base point 2"));
+    QVERIFY(problemShown);
+
+    // The write is refused before anything is sent, saying what and where.
+    QString seen;
+    NextDialog<ReportDialog> close([&seen](ReportDialog* dialog) {
+        seen = dialog->summary() + QLatin1Char('\n') + dialog->details();
+        dialog->accept();
+    });
+    std::optional<WriteResult> result;
+    analogue->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY(!result->ok());
+    QVERIFY2(result->error().message.contains(QLatin1String("Analogue output 1, base point 2")),
+             qPrintable(result->error().message));
+    QVERIFY2(seen.contains(QLatin1String("base point 2")), qPrintable(seen));
+    QVERIFY2(!seen.contains(QLatin1String("reply may have been lost")), qPrintable(seen));
     // The edit stays, counted.
     QCOMPARE(shell->workspace()->changedCount(), before + 1);
     QString question;
     QVERIFY(quitAsks(shell->window(), &question));
-    QVERIFY2(question.contains(QLatin1String("Analogue cams (1)")), qPrintable(question));
+    QVERIFY2(question.contains(QString::number(before + 1)), qPrintable(question));
 }
 
 void TablePageEditsTest::programmingProgramEditIsMarkedAndCounted() {
@@ -186,6 +206,76 @@ void TablePageEditsTest::projectFileCarriesDeadTimeModesThroughThePage() {
     QVERIFY2(reloaded.ok(), qPrintable(reloaded.error().message));
     QCOMPARE(reloaded->deadTimeModes.value(6), wanted);
     QVERIFY(!reloaded->readAt.parts.contains(ProjectPart::DeadTimeModes));
+}
+
+void TablePageEditsTest::compareListsAndWritesTheTableSections() {
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* lock = shell->window()->findChild<EepromLockPage*>();
+    QTRY_VERIFY_WITH_TIMEOUT(lock->locked().has_value(), kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!shell->window()->isReadingDevice(), kDeviceTimeoutMs);
+    TableSectionCopies* copies = shell->workspace()->tableSections();
+    QTRY_VERIFY_WITH_TIMEOUT(copies->deviceProgrammingProgram().has_value(), kDeviceTimeoutMs);
+
+    // A project that wants other analogue points, programming program and lock.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("p.json"));
+    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    Result<Project> saved = loadProject(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error().message));
+    QVERIFY(saved->programmingProgram.has_value());
+    QCOMPARE(saved->eepromLock, std::optional<bool>(false));
+    Project wanted = *saved;
+    wanted.analogueCams = {AnalogueCamTrack{7, {{0, 10}, {90, 20}}}};
+    wanted.programmingProgram = ProgrammingProgram{2, 1, 0};
+    wanted.eepromLock = true;
+    wanted.readAt = {};
+    QVERIFY(saveProject(path, wanted).ok());
+    const auto keep = answerReplaceEdits(false);
+    shell->window()->openProjectFile(path);
+    QVERIFY(copies->changedAnalogueOutputs().contains(7));
+    QVERIFY(copies->programmingProgramChanged());
+    QVERIFY(copies->eepromLockChanged());
+
+    CompareDialog* compare = shell->window()->openCompare();
+    QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
+    QStringList listed;
+    for (int i = 0; i < compare->tree()->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* section = compare->tree()->topLevelItem(i);
+        for (int j = 0; j < section->childCount(); ++j)
+            listed << section->child(j)->text(0) + QLatin1String(" | ") +
+                          section->child(j)->text(1) + QLatin1String(" | ") +
+                          section->child(j)->text(2);
+    }
+    const QString all = listed.join(QLatin1Char('\n'));
+    QVERIFY2(all.contains(QLatin1String("Analogue output 7 | ")), qPrintable(all));
+    QVERIFY2(all.contains(QLatin1String("Programming program | ")), qPrintable(all));
+    QVERIFY2(all.contains(QLatin1String("EEPROM lock | unlocked | locked")), qPrintable(all));
+
+    bool finished = false;
+    connect(compare, &CompareDialog::writeFinished, this, [&finished] { finished = true; });
+    compare->writeAll();
+    QTRY_VERIFY_WITH_TIMEOUT(finished, kDeviceTimeoutMs);
+    QVERIFY2(compare->reportText().contains(QLatin1String("EEPROM lock: written")),
+             qPrintable(compare->reportText()));
+    // The lock came last: nothing before it was kept in RAM only.
+    QVERIFY2(!compare->reportText().contains(QLatin1String("RAM only")),
+             qPrintable(compare->reportText()));
+    QVERIFY(copies->changedAnalogueOutputs().isEmpty());
+    QVERIFY(!copies->programmingProgramChanged());
+    QVERIFY(!copies->eepromLockChanged());
+    QCOMPARE(lock->locked(), std::optional<bool>(true));
+    QCOMPARE(copies->deviceAnalogueCams(7),
+             std::optional<AnalogueCamTrack>(wanted.analogueCams.first()));
+
+    // The report prints what the device holds now.
+    QTextDocument report;
+    CommissioningReport::build(report, *shell->workspace());
+    const QString text = report.toPlainText();
+    QVERIFY2(text.contains(QLatin1String("Analogue cams")), qPrintable(text));
+    QVERIFY2(text.contains(QLatin1String("Programming program")), qPrintable(text));
+    QVERIFY2(text.contains(QLatin1String("EEPROM lock")), qPrintable(text));
+    compare->close();
 }
 
 QTEST_MAIN(TablePageEditsTest)
