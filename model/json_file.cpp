@@ -65,6 +65,16 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
                 .arg(version)
                 .arg(type.version));
     }
+    const QJsonValue family = root.value(QStringLiteral("family"));
+    if (type.family && !family.isUndefined() && family.toString() != QLatin1String(type.family)) {
+        return Error::invalidData(
+            QCoreApplication::translate(
+                "cambench::model",
+                "This %1 is for devices of the family \"%2\", not \"%3\": nothing was loaded. "
+                "Open it where a device of that family is connected.")
+                .arg(noun, family.isString() ? family.toString() : family.toVariant().toString(),
+                     QString::fromLatin1(type.family)));
+    }
     return root;
 }
 
@@ -72,6 +82,7 @@ QJsonObject jsonFileHeader(const JsonFileType& type) {
     QJsonObject header;
     header.insert(QStringLiteral("format"), QString::fromLatin1(type.format));
     header.insert(QStringLiteral("version"), type.version);
+    if (type.family) header.insert(QStringLiteral("family"), QString::fromLatin1(type.family));
     return header;
 }
 

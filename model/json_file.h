@@ -13,11 +13,16 @@ struct JsonFileType {
     const char* format;  // "cambench-project"
     int version;         // the version this build writes and reads
     const char* noun;    // "project", for messages
+    // The device family the file is for ("camcon"), recorded in "family".
+    // A file without it is from before families were recorded: the
+    // CamCon's, the only family there was.
+    const char* family = nullptr;
 };
 
 // The top-level object, once the bytes are JSON, the format matches and the
-// version is one this build reads. A newer version gets its own message
-// asking for a newer CamBench.
+// version is one this build reads, and the family is the type's. A newer
+// version gets its own message asking for a newer CamBench; a file of
+// another device family says which.
 Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& type);
 
 // The envelope of a new file.

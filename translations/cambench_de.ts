@@ -6193,6 +6193,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>switch value</source>
         <translation>Umschalt-Istwert</translation>
     </message>
+    <message>
+        <source>This %1 is for devices of the family &quot;%2&quot;, not &quot;%3&quot;: nothing was loaded. Open it where a device of that family is connected.</source>
+        <translation>Diese Datei (%1) ist für Geräte der Familie "%2", nicht "%3": nichts wurde geladen. Öffnen Sie sie, wo ein Gerät dieser Familie angeschlossen ist.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>

@@ -6191,6 +6191,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>switch value</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>This %1 is for devices of the family &quot;%2&quot;, not &quot;%3&quot;: nothing was loaded. Open it where a device of that family is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>

@@ -1,5 +1,7 @@
 #include "cli_options.h"
 
+#include "comm/device/family_registry.h"
+
 namespace cambench::cli {
 
 namespace {
@@ -63,6 +65,7 @@ Result<int> parseIntArgument(const QString& text, const QString& what, int min, 
 
 Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
     GlobalOptions options;
+    bool protocolGiven = false;
     int i = 0;
     // Takes the value of the option at args[i] (inline or the next word).
     auto valueOf = [&](const QString& name, const QString& inlineValue,
@@ -76,12 +79,12 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         if (!arg.startsWith(QLatin1Char('-'))) {
             options.command = arg;
             options.commandArgs = args.mid(i + 1);
-            return options;
+            break;
         }
         static const QStringList kNames = {
-            QStringLiteral("--port"),   QStringLiteral("--protocol"),  QStringLiteral("--baud"),
-            QStringLiteral("--device"), QStringLiteral("--pc-number"), QStringLiteral("--timeout"),
-            QStringLiteral("--log")};
+            QStringLiteral("--port"),    QStringLiteral("--family"), QStringLiteral("--protocol"),
+            QStringLiteral("--baud"),    QStringLiteral("--device"), QStringLiteral("--pc-number"),
+            QStringLiteral("--timeout"), QStringLiteral("--log")};
         QString name;
         QString inlineValue;
         for (const QString& candidate : kNames) {
@@ -96,7 +99,13 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         if (!value) return value.error();
         if (name == QLatin1String("--port")) {
             options.port = *value;
+        } else if (name == QLatin1String("--family")) {
+            const Result<const comm::FamilyInfo*> family =
+                comm::FamilyRegistry::instance().usable(*value);
+            if (!family) return usageError(family.error().message);
+            options.family = (*family)->id;
         } else if (name == QLatin1String("--protocol")) {
+            protocolGiven = true;
             const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(*value);
             if (!info) {
                 return usageError(QStringLiteral("--protocol must be one of %1, not \"%2\"")
@@ -125,7 +134,16 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
             }
         }
     }
-    return usageError(QStringLiteral("no COMMAND given"));
+    if (options.command.isEmpty()) return usageError(QStringLiteral("no COMMAND given"));
+    // The protocol follows the family: its default, or one of its own.
+    const comm::FamilyInfo* family = comm::FamilyRegistry::instance().find(options.family);
+    if (!protocolGiven) {
+        options.protocol = family->defaultProtocol;
+    } else if (options.protocolInfo().familyId != family->id) {
+        return usageError(QStringLiteral("--protocol %1 is a protocol of the %2 family, not of %3")
+                              .arg(options.protocol, options.protocolInfo().familyId, family->id));
+    }
+    return options;
 }
 
 bool CommandArgs::takeFlag(const QString& name) {
@@ -195,11 +213,14 @@ Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what) 
 
 QString usageText() {
     return QStringLiteral(
-        "Usage: cambench-cli [--port PORT] [--protocol PROTOCOL] [--baud N]\n"
+        "Usage: cambench-cli [--port PORT] [--family FAMILY] [--protocol PROTOCOL] [--baud N]\n"
         "                    [--device N] [--pc-number N] [--timeout MS] [--log FILE] COMMAND\n"
         "\n"
         "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
         "default)\n"
+        "  --family      camcon (default): Digitronic CamCon cam controllers; mc1 (MICRO\n"
+        "                DESIGN MC100/MC200) and compax3 (Parker Compax3) are announced,\n"
+        "                not built yet; the protocol follows the family\n"
         "  --protocol    standard (default, 9600 baud) or multiuser (38400 baud): CamCon ASCII;\n"
         "                3964r-n96 (9600 8N1) or 3964r-e38 (38400 8E1): the table interface,\n"
         "                which has no users, names, EEPROM backup or raw commands\n"

@@ -11,7 +11,8 @@ namespace cambench::cli {
 // The options before COMMAND (see usageText()).
 struct GlobalOptions {
     QString port = QStringLiteral("sim");
-    QString protocol = QStringLiteral("standard");  // a ProtocolRegistry id
+    QString family = QStringLiteral("camcon");      // a FamilyRegistry id
+    QString protocol = QStringLiteral("standard");  // a ProtocolRegistry id of `family`
     int baud = 0;                                   // 0 = the protocol's default
     int device = 0;
     int pcNumber = 63;
@@ -29,7 +30,8 @@ struct GlobalOptions {
     comm::ProtocolSettingsPtr protocolSettings() const;
 };
 
-// Parses argv (without the program name). Fails with ErrorKind::Usage.
+// Parses argv (without the program name). Fails with ErrorKind::Usage, also
+// for a family not built yet and a protocol of another family.
 Result<GlobalOptions> parseGlobalOptions(const QStringList& args);
 
 // The arguments of one command: options and positionals, consumed one by one;

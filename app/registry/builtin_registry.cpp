@@ -1,8 +1,12 @@
 #include "builtin_registry.h"
 
 #include "comm/camcon/ascii/ascii_protocol.h"
+#include "comm/camcon/camcon_family.h"
 #include "comm/camcon/table/table_protocol.h"
+#include "comm/compax3/compax3_family.h"
+#include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
+#include "comm/mc1/mc1_family.h"
 #include "comm/sim/sim_transport.h"
 #include "comm/transport/transport_registry.h"
 
@@ -12,6 +16,11 @@ void registerBuiltins() {
     comm::TransportRegistry& transports = comm::TransportRegistry::instance();
     comm::registerSimTransport(transports);
     comm::registerLineTransports(transports);  // serial is the catch-all: last
+
+    comm::FamilyRegistry& families = comm::FamilyRegistry::instance();
+    comm::registerCamConFamily(families);
+    comm::registerMc1Family(families);
+    comm::registerCompax3Family(families);
 
     comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
     comm::registerCamConAscii(protocols);

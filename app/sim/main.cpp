@@ -6,6 +6,7 @@
 #include "signal_quitter.h"
 
 #include "comm/camcon/table/rk512.h"
+#include "comm/device/family_registry.h"
 #include "comm/sim/sim_demo.h"
 #include "comm/sim/sim_line.h"
 #include "comm/sim/sim_pacer.h"
@@ -52,6 +53,12 @@ std::optional<double> probability(const QString& text) {
 // Empty on success, else what is wrong.
 QString readOptions(const QCommandLineParser& parser, Options& options) {
     SimPortConfig& config = options.config;
+    // Only the CamCon is simulated so far; another family is named and refused.
+    if (parser.isSet(QStringLiteral("family"))) {
+        const Result<const FamilyInfo*> family =
+            FamilyRegistry::instance().usable(parser.value(QStringLiteral("family")));
+        if (!family) return family.error().message + QLatin1Char('.');
+    }
     if (parser.isSet(QStringLiteral("protocol"))) {
         const QString protocol = parser.value(QStringLiteral("protocol"));
         if (!applySimProtocol(config, protocol)) {
@@ -140,6 +147,9 @@ void addOptions(QCommandLineParser& parser) {
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOptions({
+        {QStringLiteral("family"),
+         QStringLiteral("camcon (default); mc1 and compax3 are announced, not built yet."),
+         QStringLiteral("family")},
         {QStringLiteral("protocol"),
          QStringLiteral("standard, multiuser, 3964r-n96 or 3964r-e38 (default: multiuser for "
                         "several devices, else standard)."),

@@ -2,4 +2,6 @@
 target_sources(cambench_comm PRIVATE
   camcon/camcon_device.h
   camcon/camcon_device.cpp
+  camcon/camcon_family.h
+  camcon/camcon_family.cpp
 )

@@ -1,5 +1,5 @@
 # The protocol-neutral device seam: protocol settings, device connections,
-# the protocol registry.
+# the protocol and family registries.
 target_sources(cambench_comm PRIVATE
   device/device_connection.h
   device/progress.h
@@ -7,4 +7,6 @@ target_sources(cambench_comm PRIVATE
   device/protocol_settings.h
   device/protocol_registry.h
   device/protocol_registry.cpp
+  device/family_registry.h
+  device/family_registry.cpp
 )

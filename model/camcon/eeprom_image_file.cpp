@@ -18,7 +18,8 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kImageFile{"cambench-eeprom-image", kEepromImageFormatVersion, "EEPROM image"};
+const JsonFileType kImageFile{"cambench-eeprom-image", kEepromImageFormatVersion, "EEPROM image",
+                              "camcon"};
 const QLatin1String kToolPrefix("CamBench ");
 constexpr int kEndBlockNumber = 0xFFFF;
 

@@ -17,7 +17,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kManifestFile{"cambench-line-backup", kLineManifestFormatVersion,
-                                 "line backup manifest"};
+                                 "line backup manifest", "camcon"};
 
 QString key(const char* text) {
     return QString::fromLatin1(text);

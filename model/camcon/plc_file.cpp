@@ -12,7 +12,7 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kPlcFile{"cambench-plc", kPlcFileFormatVersion, "PLC file"};
+const JsonFileType kPlcFile{"cambench-plc", kPlcFileFormatVersion, "PLC file", "camcon"};
 
 constexpr char kLetters[] = "OPMX";
 

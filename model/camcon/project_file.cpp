@@ -19,7 +19,7 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kProjectFile{"cambench-project", kProjectFormatVersion, "project"};
+const JsonFileType kProjectFile{"cambench-project", kProjectFormatVersion, "project", "camcon"};
 
 // Outputs the user access table can address (32 bytes of bits).
 constexpr int kUserAccessOutputs = 256;

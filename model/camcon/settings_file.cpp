@@ -12,7 +12,8 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kSettingsFile{"cambench-settings", kSettingsFileFormatVersion, "settings file"};
+const JsonFileType kSettingsFile{"cambench-settings", kSettingsFileFormatVersion, "settings file",
+                                 "camcon"};
 
 }  // namespace
 

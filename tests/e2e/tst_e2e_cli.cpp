@@ -49,6 +49,7 @@ private Q_SLOTS:
     void scanNeedsMultiuser_data() { protocolRows(); }
     void scanNeedsMultiuser();
     void usageErrorsExitTwoWithUsage();
+    void familyOptionNamesTheFamilies();
     void rawPrintsReplyBody();
     void portsListsSerialPortsWithoutADevice();
     void guiHelpNeedsNoDisplay();
@@ -358,6 +359,27 @@ void TestE2eCli::usageErrorsExitTwoWithUsage() {
     const CliRun help = runCli({"--help"}, 30000);
     VERIFY_EXIT(help, 0);
     QVERIFY(help.out.contains(QLatin1String("exit 0 when equal")));
+}
+
+// Issue 13, point 4: --family picks the device family (camcon by default,
+// so every existing command line works); an unknown one is named with the
+// families there are, an announced one is refused as not built yet.
+void TestE2eCli::familyOptionNamesTheFamilies() {
+    const CliRun camcon = runCli({"--family", "camcon", "info"}, 30000);
+    VERIFY_EXIT(camcon, 0);
+    QVERIFY2(camcon.out.contains(QLatin1String("eprom: ")), qPrintable(camcon.out));
+    const CliRun unknown = runCli({"--family", "s7", "info"}, 30000);
+    VERIFY_EXIT(unknown, 2);
+    QVERIFY2(unknown.err.contains(QLatin1String("one of camcon, mc1, compax3, not \"s7\"")),
+             qPrintable(unknown.err));
+    for (const char* family : {"mc1", "compax3"}) {
+        const CliRun announced = runCli({"--family", family, "info"}, 30000);
+        VERIFY_EXIT(announced, 2);
+        QVERIFY2(announced.err.contains(QLatin1String("not built into this CamBench yet")),
+                 qPrintable(announced.err));
+    }
+    const CliRun help = runCli({"--help"}, 30000);
+    QVERIFY2(help.out.contains(QLatin1String("--family")), qPrintable(help.out));
 }
 
 void TestE2eCli::rawPrintsReplyBody() {

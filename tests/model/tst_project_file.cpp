@@ -198,6 +198,22 @@ private Q_SLOTS:
                  qPrintable(refused.error().message));
     }
 
+    void fileRecordsItsFamilyAndRefusesAnother() {
+        const QByteArray json = projectToJson(sampleProject());
+        QVERIFY2(json.contains("\"family\": \"camcon\""), json.constData());
+        QByteArray other = json;
+        other.replace("\"family\": \"camcon\"", "\"family\": \"mc1\"");
+        const Result<Project> refused = projectFromJson(other);
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.contains(QLatin1String("family \"mc1\", not \"camcon\"")),
+                 qPrintable(refused.error().message));
+        // Files from before families were recorded are the CamCon's.
+        QByteArray old = json;
+        old.replace("\"family\": \"camcon\",", "");
+        QVERIFY(!old.contains("family"));
+        QVERIFY2(projectFromJson(old).ok(), old.constData());
+    }
+
     void userNumbersAreSavedOnlyWhenAskedFor() {
         const QByteArray without = projectToJson(sampleProject());
         QVERIFY(!without.contains("4711"));

@@ -101,6 +101,12 @@ void TestSimExecutable::rejectsBadOptions() {
     QVERIFY(process.waitForFinished(10000));
     QCOMPARE(process.exitCode(), 2);
     QVERIFY(process.readAllStandardError().contains("0..63"));
+    // A family announced but not simulated yet is refused by name.
+    process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
+                  {QStringLiteral("--family"), QStringLiteral("mc1")});
+    QVERIFY(process.waitForFinished(10000));
+    QCOMPARE(process.exitCode(), 2);
+    QVERIFY(process.readAllStandardError().contains("not built into this CamBench yet"));
 }
 
 QTEST_GUILESS_MAIN(TestSimExecutable)
