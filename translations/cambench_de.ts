@@ -6195,7 +6195,7 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
     <message>
         <source>This %1 is for devices of the family &quot;%2&quot;, not &quot;%3&quot;: nothing was loaded. Open it where a device of that family is connected.</source>
-        <translation>Diese Datei (%1) ist für Geräte der Familie "%2", nicht "%3": nichts wurde geladen. Öffnen Sie sie, wo ein Gerät dieser Familie angeschlossen ist.</translation>
+        <translation>Diese Datei (%1) ist für Geräte der Familie &quot;%2&quot;, nicht &quot;%3&quot;: nichts wurde geladen. Öffnen Sie sie, wo ein Gerät dieser Familie angeschlossen ist.</translation>
     </message>
 </context>
 <context>

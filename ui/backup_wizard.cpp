@@ -4,7 +4,7 @@
 #include "progress_page.h"
 #include "workspace.h"
 
-#include "comm/usecases/backup_restore.h"
+#include "comm/camcon/usecases/backup_restore.h"
 #include "model/camcon/eeprom_image_file.h"
 
 #include <QCheckBox>

@@ -7,9 +7,9 @@
 #include "sentence.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_diagram_widget.h"
-#include "ui/cameditor/cam_document.h"
-#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/cam_diagram_widget.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 
 #include <QCoreApplication>
 

@@ -12,8 +12,8 @@
 #include "users_model.h"
 #include "workspace.h"
 
-#include "comm/usecases/value_text.h"
-#include "ui/cameditor/cam_document.h"
+#include "comm/camcon/usecases/value_text.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -5,7 +5,7 @@
 #include "section_page.h"
 #include "workspace.h"
 
-#include "comm/usecases/read_everything.h"
+#include "comm/camcon/usecases/read_everything.h"
 
 #include <QDialogButtonBox>
 #include <QHBoxLayout>

@@ -6,9 +6,9 @@
 #include "replace_edits_question.h"
 #include "workspace.h"
 
-#include "comm/usecases/value_text.h"
+#include "comm/camcon/usecases/value_text.h"
 
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include <QComboBox>
 #include <QDateTime>

@@ -3,8 +3,8 @@
 #include "change_marker.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_document.h"
-#include "ui/cameditor/editor_roles.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/editor_roles.h"
 
 #include <QLocale>
 

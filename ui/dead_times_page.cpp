@@ -5,8 +5,8 @@
 #include "device_session.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_document.h"
-#include "ui/cameditor/range_delegate.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/range_delegate.h"
 
 #include <QCoreApplication>
 #include <QHBoxLayout>

@@ -4,7 +4,7 @@
 #include "incoming_values.h"
 #include "workspace.h"
 
-#include "comm/usecases/read_everything.h"
+#include "comm/camcon/usecases/read_everything.h"
 
 #include <QCoreApplication>
 #include <QPointer>

@@ -7,8 +7,8 @@
 #include "report_dialog.h"
 #include "workspace.h"
 
-#include "comm/usecases/write_items.h"
-#include "ui/cameditor/cam_document.h"
+#include "comm/camcon/usecases/write_items.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include <QCoreApplication>
 #include <QSet>

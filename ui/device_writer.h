@@ -3,7 +3,7 @@
 #include "workspace_item.h"
 #include "write_plan_builder.h"
 
-#include "comm/usecases/write_report.h"
+#include "comm/camcon/usecases/write_report.h"
 #include "model/result.h"
 
 #include <QList>

@@ -5,7 +5,7 @@
 #include "table_section_copies.h"
 #include "workspace.h"
 
-#include "comm/usecases/value_text.h"
+#include "comm/camcon/usecases/value_text.h"
 
 #include <QDateTime>
 

@@ -6,7 +6,7 @@
 #include "setting_field.h"
 #include "table_section_copies.h"
 
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include <QCoreApplication>
 #include <QLocale>

@@ -2,8 +2,8 @@
 
 #include "device_session.h"
 
+#include "comm/camcon/usecases/line_backup.h"
 #include "comm/device/protocol_registry.h"
-#include "comm/usecases/line_backup.h"
 
 #include <QCheckBox>
 #include <QDateTime>

@@ -33,7 +33,7 @@
 #include "users_page.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 
 #include <QAction>
 #include <QActionGroup>

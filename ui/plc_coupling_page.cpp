@@ -5,10 +5,10 @@
 #include "sentence.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include "comm/camcon/table/short_client.h"
-#include "comm/usecases/short_coupling.h"
+#include "comm/camcon/usecases/short_coupling.h"
 
 #include <QDoubleSpinBox>
 #include <QFontDatabase>

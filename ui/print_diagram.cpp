@@ -1,7 +1,7 @@
 #include "print_diagram.h"
 
-#include "ui/cameditor/cam_document.h"
-#include "ui/cameditor/diagram_layout.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/diagram_layout.h"
 
 #include <QCoreApplication>
 #include <QFontMetrics>

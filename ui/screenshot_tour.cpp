@@ -16,8 +16,8 @@
 #include "users_page.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_document.h"
-#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 
 #include <QDir>
 #include <QListWidget>

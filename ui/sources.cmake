@@ -49,10 +49,10 @@ target_sources(cambench_ui PRIVATE
   programming_program_page.cpp
   protocols/protocol_settings_widget.h
   protocols/protocol_settings_widget.cpp
-  protocols/ascii_settings_widget.h
-  protocols/ascii_settings_widget.cpp
-  protocols/table_settings_widget.h
-  protocols/table_settings_widget.cpp
+  camcon/protocols/ascii_settings_widget.h
+  camcon/protocols/ascii_settings_widget.cpp
+  camcon/protocols/table_settings_widget.h
+  camcon/protocols/table_settings_widget.cpp
   connection_page.h
   connection_page.cpp
   dead_times_model.h

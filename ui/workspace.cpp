@@ -2,7 +2,7 @@
 
 #include "table_section_copies.h"
 
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include <algorithm>
 

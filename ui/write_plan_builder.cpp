@@ -3,7 +3,7 @@
 #include "table_section_copies.h"
 #include "workspace.h"
 
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 #include <QSet>
 

@@ -2,7 +2,7 @@
 
 #include "workspace_item.h"
 
-#include "comm/usecases/write_plan.h"
+#include "comm/camcon/usecases/write_plan.h"
 
 #include <QList>
 

@@ -6,8 +6,6 @@ add_executable(cambench-cli
   cli/cli_options.cpp
   cli/cli_output.h
   cli/cli_output.cpp
-  cli/cli_format.h
-  cli/cli_format.cpp
   cli/progress_bar.h
   cli/progress_bar.cpp
   cli/traffic_log_file.h
@@ -16,18 +14,9 @@ add_executable(cambench-cli
   cli/cli_session.cpp
   cli/commands.h
   cli/commands.cpp
-  cli/device_commands.cpp
-  cli/cam_commands.cpp
-  cli/table_commands.cpp
-  cli/config_commands.cpp
-  cli/eeprom_commands.cpp
-  cli/project_commands.cpp
-  cli/line_commands.cpp
   cli/port_commands.cpp
-  cli/coupling_commands.cpp
-  cli/table_section_commands.cpp
-  cli/write_output.h
-  cli/write_output.cpp
 )
+# The CamCon's command groups.
+include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)
 target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

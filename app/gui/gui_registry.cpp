@@ -1,7 +1,7 @@
 #include "gui_registry.h"
 
-#include "ui/protocols/ascii_settings_widget.h"
-#include "ui/protocols/table_settings_widget.h"
+#include "ui/camcon/protocols/ascii_settings_widget.h"
+#include "ui/camcon/protocols/table_settings_widget.h"
 
 namespace cambench {
 

@@ -5,15 +5,8 @@
 namespace cambench::comm {
 
 void registerCompax3Family(FamilyRegistry& registry) {
-    FamilyInfo info;
-    info.id = QStringLiteral("compax3");
-    info.title = QStringLiteral("Parker Compax3");
-    info.defaultProtocol = QStringLiteral("compax3-ascii");
-    info.built = false;
-    info.notBuilt = QStringLiteral(
-        "The Parker Compax3 family is not built into this CamBench yet: no protocol, simulator or "
-        "page of it exists here");
-    registry.add(info);
+    registry.add(FamilyInfo::announced(QStringLiteral("compax3"), QStringLiteral("Parker Compax3"),
+                                       QStringLiteral("compax3-ascii")));
 }
 
 }  // namespace cambench::comm

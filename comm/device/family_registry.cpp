@@ -4,6 +4,19 @@
 
 namespace cambench::comm {
 
+FamilyInfo FamilyInfo::announced(const QString& id, const QString& title,
+                                 const QString& defaultProtocol) {
+    FamilyInfo info;
+    info.id = id;
+    info.title = title;
+    info.defaultProtocol = defaultProtocol;
+    info.notBuilt = QStringLiteral(
+                        "The %1 family is not built into this CamBench yet: no protocol, "
+                        "simulator or page of it exists here")
+                        .arg(title);
+    return info;
+}
+
 FamilyRegistry& FamilyRegistry::instance() {
     static FamilyRegistry registry;
     return registry;

@@ -22,6 +22,11 @@ struct FamilyInfo {
     QString defaultProtocol;  // a ProtocolInfo::id of this family
     bool built = false;
     QString notBuilt;  // why it cannot be used yet (when !built)
+
+    // A family known by name whose protocol, simulator and pages are not
+    // built yet.
+    static FamilyInfo announced(const QString& id, const QString& title,
+                                const QString& defaultProtocol);
 };
 
 class FamilyRegistry {

@@ -5,16 +5,9 @@
 namespace cambench::comm {
 
 void registerMc1Family(FamilyRegistry& registry) {
-    FamilyInfo info;
-    info.id = QStringLiteral("mc1");
-    info.title = QStringLiteral("MICRO DESIGN MC100/MC200 (MC-1)");
-    info.defaultProtocol = QStringLiteral("mc1");
-    info.built = false;
-    info.notBuilt = QStringLiteral(
-        "The MICRO DESIGN MC100/MC200 (MC-1) family is not built into this CamBench yet: no "
-        "protocol, simulator or "
-        "page of it exists here");
-    registry.add(info);
+    registry.add(FamilyInfo::announced(QStringLiteral("mc1"),
+                                       QStringLiteral("MICRO DESIGN MC100/MC200 (MC-1)"),
+                                       QStringLiteral("mc1")));
 }
 
 }  // namespace cambench::comm

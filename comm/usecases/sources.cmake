@@ -1,24 +1,8 @@
+# The use-case frame every family shares: progress and cancel, the outcome
+# of one written item and the tally of a write.
 target_sources(cambench_usecases PRIVATE
   use_case_progress.h
   use_case_progress.cpp
-  write_plan.h
-  write_plan.cpp
   item_outcome.h
   item_outcome.cpp
-  write_report.h
-  write_report.cpp
-  value_text.h
-  value_text.cpp
-  plan_check.h
-  plan_check.cpp
-  write_items.h
-  write_items.cpp
-  read_everything.h
-  read_everything.cpp
-  backup_restore.h
-  backup_restore.cpp
-  line_backup.h
-  line_backup.cpp
-  short_coupling.h
-  short_coupling.cpp
 )

@@ -175,6 +175,13 @@ void TestE2eTableSections::analogueProgrammingAndLockFromTheCli() {
     const CliRun programming = session.cli({"programming", "read"});
     QVERIFY2(programming.out.contains(QLatin1String("selectMode: at-value\nswitchValue: 200\n")),
              qPrintable(programming.out));
+    // Writing cams of program 3 selects it on the table interface; the write
+    // sets the programming program back to what it found.
+    const QString cams = session.path(QStringLiteral("cams.csv"));
+    QVERIFY(writeBytes(cams, "output,cam,on,off\n4,1,10,20\n"));
+    VERIFY_EXIT(session.cli({"cams", "write", "--program", "3", cams}), 0);
+    const CliRun after = session.cli({"programming", "read"});
+    QVERIFY2(after.out.startsWith(QLatin1String("program: 0\n")), qPrintable(after.out));
 }
 
 void TestE2eTableSections::tableSectionsOverAsciiAreNotSent() {

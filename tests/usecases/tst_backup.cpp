@@ -2,8 +2,8 @@
 // Multiuser line, against the in-process simulator.
 #include "sim_bench.h"
 
-#include "comm/usecases/backup_restore.h"
-#include "comm/usecases/line_backup.h"
+#include "comm/camcon/usecases/backup_restore.h"
+#include "comm/camcon/usecases/line_backup.h"
 #include "model/camcon/eeprom_image_file.h"
 #include "model/file_read.h"
 

@@ -2,8 +2,8 @@
 // a project back through the one write path.
 #include "sim_bench.h"
 
-#include "comm/usecases/read_everything.h"
-#include "comm/usecases/write_items.h"
+#include "comm/camcon/usecases/read_everything.h"
+#include "comm/camcon/usecases/write_items.h"
 #include "model/camcon/project_file.h"
 
 #include <QLoggingCategory>

@@ -3,8 +3,8 @@
 // edits, and the honest report after failures.
 #include "sim_bench.h"
 
-#include "comm/usecases/plan_check.h"
-#include "comm/usecases/write_items.h"
+#include "comm/camcon/usecases/plan_check.h"
+#include "comm/camcon/usecases/write_items.h"
 
 #include <QLoggingCategory>
 #include <QTest>

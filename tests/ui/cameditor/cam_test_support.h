@@ -2,7 +2,7 @@
 
 #include "model/camcon/cam_program.h"
 #include "model/camcon/device_info.h"
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 
 namespace cambench::test {
 

@@ -2,12 +2,12 @@
 // compare with device, the multi-cam generator and the table models.
 #include "cam_test_support.h"
 
-#include "ui/cameditor/cam_commands.h"
-#include "ui/cameditor/cam_generator.h"
-#include "ui/cameditor/cam_geometry.h"
-#include "ui/cameditor/cam_table_model.h"
-#include "ui/cameditor/editor_colors.h"
-#include "ui/cameditor/track_table_model.h"
+#include "ui/camcon/cameditor/cam_commands.h"
+#include "ui/camcon/cameditor/cam_generator.h"
+#include "ui/camcon/cameditor/cam_geometry.h"
+#include "ui/camcon/cameditor/cam_table_model.h"
+#include "ui/camcon/cameditor/editor_colors.h"
+#include "ui/camcon/cameditor/track_table_model.h"
 
 #include <QAbstractItemModelTester>
 #include <QBrush>

@@ -2,12 +2,12 @@
 // the diagram's geometry and dragging, CSV import and screenshots.
 #include "cam_test_support.h"
 
-#include "ui/cameditor/cam_diagram_widget.h"
-#include "ui/cameditor/cam_editor_widget.h"
-#include "ui/cameditor/cam_generator_dialog.h"
-#include "ui/cameditor/cam_table_model.h"
-#include "ui/cameditor/range_delegate.h"
-#include "ui/cameditor/track_table_model.h"
+#include "ui/camcon/cameditor/cam_diagram_widget.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/cam_generator_dialog.h"
+#include "ui/camcon/cameditor/cam_table_model.h"
+#include "ui/camcon/cameditor/range_delegate.h"
+#include "ui/camcon/cameditor/track_table_model.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>

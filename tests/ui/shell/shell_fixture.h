@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 #include "ui/capability_gate.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"

@@ -10,7 +10,7 @@
 #include "comm/sim/sim_device.h"
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_pty_server.h"
-#include "ui/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_document.h"
 #include "ui/language.h"
 #include "ui/plc_coupling_page.h"
 

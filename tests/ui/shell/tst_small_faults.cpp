@@ -5,8 +5,8 @@
 #include "shell_fixture.h"
 
 #include "ui/cam_page.h"
-#include "ui/cameditor/cam_editor_widget.h"
-#include "ui/cameditor/range_delegate.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/range_delegate.h"
 #include "ui/connection_status.h"
 #include "ui/dead_times_model.h"
 #include "ui/dead_times_page.h"

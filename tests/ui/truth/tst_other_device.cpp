@@ -6,8 +6,8 @@
 
 #include "comm/sim/sim_demo.h"
 #include "ui/cam_page.h"
-#include "ui/cameditor/cam_document.h"
-#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/device_writer.h"

@@ -4,8 +4,8 @@
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
-#include "ui/cameditor/cam_editor_widget.h"
-#include "ui/cameditor/track_table_model.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/track_table_model.h"
 #include "ui/device_writer.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"

@@ -5,7 +5,7 @@
 
 #include "model/camcon/project_file.h"
 #include "ui/cam_page.h"
-#include "ui/cameditor/cam_editor_widget.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/compare_dialog.h"
 #include "ui/device_writer.h"
 #include "ui/language.h"

@@ -1,0 +1,57 @@
+#pragma once
+
+// What writeItems() did, item by item, and the device's real state after a
+// failure. Parallel to the plan: report.tracks[i] is the outcome of
+// plan.tracks[i], and so on.
+
+#include "comm/usecases/item_outcome.h"
+#include "write_plan.h"
+
+#include "model/result.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace cambench::usecases {
+
+struct WriteReport {
+    QList<ItemOutcome<SystemSettings>> settings;
+    QList<ItemOutcome<QString>> programNames;
+    QList<ItemOutcome<Track>> tracks;
+    QList<ItemOutcome<qint32>> deadTimes;
+    QList<ItemOutcome<OutputDeadTime>> deadTimeModes;
+    QList<ItemOutcome<QString>> outputNames;
+    // `actual`: the user as on the device after the write, empty when the
+    // device has no such user (deleted, or never created).
+    QList<ItemOutcome<std::optional<User>>> users;
+    QList<ItemOutcome<PlcNetwork>> plcNetworks;
+    QList<ItemOutcome<AnalogueCamTrack>> analogueCams;
+    std::optional<ItemOutcome<ProgrammingProgram>> programmingProgram;
+    std::optional<ItemOutcome<bool>> eepromLock;
+    bool eepromLockFirst = false;  // an unlock, written before every other item
+    // Things a person must know about the whole write, e.g. that the
+    // device's EEPROM is locked and what was written lives in RAM only.
+    QStringList notes;
+
+    // Every item, in plan order, counted and summed up.
+    OutcomeTally tally() const { return OutcomeTally(lines()); }
+    int count(WriteState state) const { return tally().count(state); }
+    int total() const { return tally().total(); }
+    // Every item written or unchanged.
+    bool complete() const { return tally().complete(); }
+    // The first error of an item that is not ok (kind None when complete):
+    // decides the CLI's exit code.
+    Error firstError() const { return tally().firstError(); }
+
+    // Every item, in plan order.
+    QList<OutcomeLine> lines() const;
+    // "32 items: 3 written, 28 unchanged, 1 failed (the device keeps its old values)";
+    // categories other than written and unchanged only when they occur.
+    // Followed by the notes, each on a line of its own.
+    QString summary() const;
+};
+
+}  // namespace cambench::usecases

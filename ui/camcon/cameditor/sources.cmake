@@ -1,0 +1,26 @@
+target_sources(cambench_ui PRIVATE
+  camcon/cameditor/cam_commands.cpp
+  camcon/cameditor/cam_commands.h
+  camcon/cameditor/cam_diagram_widget.cpp
+  camcon/cameditor/cam_diagram_widget.h
+  camcon/cameditor/cam_document.cpp
+  camcon/cameditor/cam_document.h
+  camcon/cameditor/cam_editor_widget.cpp
+  camcon/cameditor/cam_editor_widget.h
+  camcon/cameditor/cam_generator.cpp
+  camcon/cameditor/cam_generator.h
+  camcon/cameditor/cam_generator_dialog.cpp
+  camcon/cameditor/cam_generator_dialog.h
+  camcon/cameditor/cam_geometry.cpp
+  camcon/cameditor/cam_geometry.h
+  camcon/cameditor/cam_table_model.cpp
+  camcon/cameditor/cam_table_model.h
+  camcon/cameditor/diagram_layout.cpp
+  camcon/cameditor/diagram_layout.h
+  camcon/cameditor/editor_colors.h
+  camcon/cameditor/editor_roles.h
+  camcon/cameditor/range_delegate.cpp
+  camcon/cameditor/range_delegate.h
+  camcon/cameditor/track_table_model.cpp
+  camcon/cameditor/track_table_model.h
+)

@@ -1,0 +1,226 @@
+#include "ui/camcon/cameditor/track_table_model.h"
+
+#include "model/camcon/data_validation.h"
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/editor_colors.h"
+#include "ui/camcon/cameditor/editor_roles.h"
+
+#include <QBrush>
+#include <QFont>
+#include <QLocale>
+
+namespace cambench {
+
+TrackTableModel::TrackTableModel(CamDocument* document, QObject* parent)
+    : QAbstractTableModel(parent), m_document(document), m_rows(document->outputCount()) {
+    connect(document, &CamDocument::limitsChanged, this, &TrackTableModel::resetRows);
+    connect(document, &CamDocument::trackChanged, this, [this](int program, int output) {
+        if (program == m_program) {
+            outputChanged(output, CamCountColumn, StateColumn);
+        }
+    });
+    connect(document, &CamDocument::programChanged, this, [this](int program) {
+        if (program == m_program && m_rows > 0) {
+            Q_EMIT dataChanged(index(0, CamCountColumn), index(m_rows - 1, StateColumn));
+        }
+    });
+    connect(document, &CamDocument::deviceStateChanged, this, [this] {
+        if (m_rows > 0) {
+            Q_EMIT dataChanged(index(0, 0), index(m_rows - 1, COUNT - 1));
+        }
+    });
+    connect(document, &CamDocument::outputNameChanged, this,
+            [this](int output) { outputChanged(output, NameColumn, NameColumn); });
+    connect(document, &CamDocument::deadTimeChanged, this,
+            [this](int output) { outputChanged(output, DeadTimeColumn, DeadTimeColumn); });
+}
+
+void TrackTableModel::setProgram(int program) {
+    if (program == m_program) {
+        return;
+    }
+    m_program = program;
+    if (m_rows > 0) {
+        Q_EMIT dataChanged(index(0, 0), index(m_rows - 1, COUNT - 1));
+    }
+}
+
+void TrackTableModel::resetRows() {
+    beginResetModel();
+    m_rows = m_document->outputCount();
+    endResetModel();
+}
+
+void TrackTableModel::outputChanged(int output, Column first, Column last) {
+    const int row = rowForOutput(output);
+    if (row >= 0 && row < m_rows) {
+        Q_EMIT dataChanged(index(row, first), index(row, last));
+    }
+}
+
+int TrackTableModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : m_rows;
+}
+
+int TrackTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : COUNT;
+}
+
+QVariant TrackTableModel::data(const QModelIndex& index, int role) const {
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid)) {
+        return {};
+    }
+    const int output = outputForRow(index.row());
+    switch (index.column()) {
+        case OutputColumn:
+            return role == Qt::DisplayRole ? QVariant(output) : QVariant();
+        case NameColumn:
+            if (role == Qt::DisplayRole || role == Qt::EditRole) {
+                return m_document->outputName(output);
+            }
+            return {};
+        case DeadTimeColumn:
+            return deadTimeData(output, role);
+        case CamCountColumn:
+            return camCountData(output, role);
+        case StateColumn:
+            return stateData(output, role);
+        default:
+            return {};
+    }
+}
+
+QVariant TrackTableModel::deadTimeData(int output, int role) const {
+    const qint32 steps = m_document->deadTime(output);
+    switch (role) {
+        case Qt::DisplayRole:
+            return tr("%1 ms").arg(QLocale().toString(steps / 10.0, 'f', 1));
+        case Qt::EditRole:
+            return steps / 10.0;
+        case Qt::TextAlignmentRole:
+            return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+        case MinimumRole:
+            return 0.0;
+        case MaximumRole:
+            return m_document->deviceInfo().maxDeadTime / 10.0;
+        case DecimalsRole:
+            return 1;
+        case SuffixRole:
+            return tr(" ms");
+        default:
+            return {};
+    }
+}
+
+QVariant TrackTableModel::camCountData(int output, int role) const {
+    const QList<CamProblem> problems = m_document->problems(m_program, output);
+    switch (role) {
+        case Qt::DisplayRole:
+            return int(m_document->track(m_program, output).cams.size());
+        case Qt::TextAlignmentRole:
+            return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+        case Qt::BackgroundRole:
+            return problems.isEmpty() ? QVariant() : QVariant(QBrush(errorColor()));
+        case Qt::ForegroundRole:
+            return problems.isEmpty() ? QVariant() : QVariant(QBrush(Qt::white));
+        case Qt::ToolTipRole:
+        case Qt::StatusTipRole:
+            return problems.isEmpty() ? QVariant() : QVariant(problems.constFirst().message);
+        default:
+            return {};
+    }
+}
+
+QVariant TrackTableModel::stateData(int output, int role) const {
+    const ChangeState state = m_document->trackState(m_program, output);
+    switch (role) {
+        case Qt::DisplayRole:
+            switch (state) {
+                case ChangeState::Unchanged:
+                    return tr("unchanged");
+                case ChangeState::Edited:
+                    return tr("edited");
+                case ChangeState::NotRead:
+                    return tr("not read");
+            }
+            return {};
+        case Qt::ToolTipRole:
+        case Qt::StatusTipRole:
+            switch (state) {
+                case ChangeState::Unchanged:
+                    return tr("Output %1 is the same as on the device.").arg(output);
+                case ChangeState::Edited:
+                    return tr("Output %1 was changed and is not yet written to the device.")
+                        .arg(output);
+                case ChangeState::NotRead:
+                    return tr("Program %1 was not read from the device: what the device holds is "
+                              "unknown. The cams shown exist on this PC.")
+                        .arg(m_program);
+            }
+            return {};
+        case Qt::FontRole:
+            if (state == ChangeState::Edited) {
+                QFont font;
+                font.setBold(true);
+                return font;
+            }
+            return {};
+        default:
+            return {};
+    }
+}
+
+bool TrackTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (role != Qt::EditRole || !checkIndex(index, CheckIndexOption::IndexIsValid)) {
+        return false;
+    }
+    const int output = outputForRow(index.row());
+    if (index.column() == NameColumn) {
+        const QString name = value.toString();
+        if (!nameProblem(name).isEmpty()) {
+            return false;
+        }
+        m_document->setOutputName(output, name);
+        return true;
+    }
+    if (index.column() == DeadTimeColumn) {
+        bool ok = false;
+        const qint64 steps = qRound64(value.toDouble(&ok) * 10.0);
+        if (!ok || steps < 0 || steps > m_document->deviceInfo().maxDeadTime) {
+            return false;
+        }
+        m_document->setDeadTime(output, qint32(steps));
+        return true;
+    }
+    return false;
+}
+
+Qt::ItemFlags TrackTableModel::flags(const QModelIndex& index) const {
+    Qt::ItemFlags flags = QAbstractTableModel::flags(index);
+    if (index.isValid() && (index.column() == NameColumn || index.column() == DeadTimeColumn)) {
+        flags |= Qt::ItemIsEditable;
+    }
+    return flags;
+}
+
+QVariant TrackTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) {
+        return QAbstractTableModel::headerData(section, orientation, role);
+    }
+    switch (section) {
+        case OutputColumn:
+            return tr("Output");
+        case NameColumn:
+            return tr("Name");
+        case DeadTimeColumn:
+            return tr("Dead time");
+        case CamCountColumn:
+            return tr("Cams");
+        case StateColumn:
+            return tr("State");
+        default:
+            return {};
+    }
+}
+
+}  // namespace cambench
