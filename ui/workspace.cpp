@@ -132,6 +132,13 @@ int Workspace::outputSettingsEditCount() const {
 void Workspace::mergeSettings(const SystemSettings& settings, ValueSource source, bool keepEdits) {
     const QStringList edited = changedSettings();
     if (source == ValueSource::Device) {
+        // A key this device did not give (another protocol's, such as the
+        // encoder texts only the ASCII protocol reaches) that only copied an
+        // earlier read is no edit and not this device's state: it goes.
+        // An edit stays, counted, for the write to refuse or send.
+        for (const QString& key : m_settings.keys()) {
+            if (!settings.contains(key) && !edited.contains(key)) m_settings.remove(key);
+        }
         m_deviceSettings = settings;
         m_settingsKnown = true;
     }

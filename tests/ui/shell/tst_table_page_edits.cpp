@@ -64,6 +64,7 @@ private Q_SLOTS:
     void programmingProgramEditIsMarkedAndCounted();
     void projectFileCarriesDeadTimeModesThroughThePage();
     void compareListsAndWritesTheTableSections();
+    void settingsOfAnotherProtocolAreNoEdits();
 };
 
 void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
@@ -276,6 +277,22 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
     QVERIFY2(text.contains(QLatin1String("Programming program")), qPrintable(text));
     QVERIFY2(text.contains(QLatin1String("EEPROM lock")), qPrintable(text));
     compare->close();
+}
+
+// Issue 12, point 3: settings read over the ASCII protocol that the table
+// interface does not reach are not offered as edits after a read there.
+void TablePageEditsTest::settingsOfAnotherProtocolAreNoEdits() {
+    Workspace workspace;
+    const SystemSettings ascii{{QStringLiteral("encoderText1"), QStringLiteral("Main axis")},
+                               {QStringLiteral("speedFactor"), 100000},
+                               {QStringLiteral("actualValueFormat"), 1}};
+    workspace.mergeSettings(ascii, ValueSource::Device, true);
+    workspace.setSetting(QStringLiteral("actualValueFormat"), 2);  // edited by hand
+    QCOMPARE(workspace.changedSettings(), QStringList{QStringLiteral("actualValueFormat")});
+    // The table interface has neither encoder texts nor the value format.
+    workspace.mergeSettings({{QStringLiteral("speedFactor"), 100000}}, ValueSource::Device, true);
+    QCOMPARE(workspace.changedSettings(), QStringList{QStringLiteral("actualValueFormat")});
+    QVERIFY(!workspace.settings().contains(QStringLiteral("encoderText1")));
 }
 
 QTEST_MAIN(TablePageEditsTest)
