@@ -21,6 +21,17 @@ void setDevice(std::optional<T>& device, std::optional<T>& edit, const T& value)
     if (edit && *edit == value) edit.reset();
 }
 
+// A project's value of one section: the device's copy or an edit.
+template <class T>
+void takeIncoming(const std::optional<T>& incoming, std::optional<T>& device,
+                  std::optional<T>& edit, bool fromDevice) {
+    if (!incoming) return;
+    if (fromDevice)
+        setDevice(device, edit, *incoming);
+    else
+        setEdit(edit, device, *incoming);
+}
+
 }  // namespace
 
 std::optional<AnalogueCamTrack> TableSectionCopies::analogueCams(int output) const {
@@ -33,18 +44,26 @@ std::optional<AnalogueCamTrack> TableSectionCopies::deviceAnalogueCams(int outpu
     return m_deviceAnalogue.value(output);
 }
 
-void TableSectionCopies::editAnalogueCams(const AnalogueCamTrack& track) {
+void TableSectionCopies::putAnalogueEdit(const AnalogueCamTrack& track) {
     const std::optional<AnalogueCamTrack> device = deviceAnalogueCams(track.output);
     if (device && *device == track)
         m_analogueEdits.remove(track.output);
     else
         m_analogueEdits.insert(track.output, track);
+}
+
+void TableSectionCopies::putDeviceAnalogue(const AnalogueCamTrack& track) {
+    m_deviceAnalogue.insert(track.output, track);
+    if (m_analogueEdits.value(track.output) == track) m_analogueEdits.remove(track.output);
+}
+
+void TableSectionCopies::editAnalogueCams(const AnalogueCamTrack& track) {
+    putAnalogueEdit(track);
     Q_EMIT changed();
 }
 
 void TableSectionCopies::setDeviceAnalogueCams(const AnalogueCamTrack& track) {
-    m_deviceAnalogue.insert(track.output, track);
-    if (m_analogueEdits.value(track.output) == track) m_analogueEdits.remove(track.output);
+    putDeviceAnalogue(track);
     Q_EMIT changed();
 }
 
@@ -89,28 +108,13 @@ int TableSectionCopies::changedCount() const {
 
 void TableSectionCopies::take(const Project& project, bool fromDevice) {
     for (const AnalogueCamTrack& track : project.analogueCams) {
-        if (fromDevice) {
-            m_deviceAnalogue.insert(track.output, track);
-            if (m_analogueEdits.value(track.output) == track) m_analogueEdits.remove(track.output);
-        } else if (const std::optional<AnalogueCamTrack> device = deviceAnalogueCams(track.output);
-                   device && *device == track) {
-            m_analogueEdits.remove(track.output);
-        } else {
-            m_analogueEdits.insert(track.output, track);
-        }
-    }
-    if (project.programmingProgram) {
         if (fromDevice)
-            setDevice(m_deviceProgramming, m_programmingEdit, *project.programmingProgram);
+            putDeviceAnalogue(track);
         else
-            setEdit(m_programmingEdit, m_deviceProgramming, *project.programmingProgram);
+            putAnalogueEdit(track);
     }
-    if (project.eepromLock) {
-        if (fromDevice)
-            setDevice(m_deviceLock, m_lockEdit, *project.eepromLock);
-        else
-            setEdit(m_lockEdit, m_deviceLock, *project.eepromLock);
-    }
+    takeIncoming(project.programmingProgram, m_deviceProgramming, m_programmingEdit, fromDevice);
+    takeIncoming(project.eepromLock, m_deviceLock, m_lockEdit, fromDevice);
     Q_EMIT changed();
 }
 

@@ -68,6 +68,10 @@ Q_SIGNALS:
     void changed();
 
 private:
+    // The rules of editAnalogueCams / setDeviceAnalogueCams, without the signal.
+    void putAnalogueEdit(const AnalogueCamTrack& track);
+    void putDeviceAnalogue(const AnalogueCamTrack& track);
+
     QMap<int, AnalogueCamTrack> m_deviceAnalogue;
     QMap<int, AnalogueCamTrack> m_analogueEdits;
     std::optional<ProgrammingProgram> m_deviceProgramming;

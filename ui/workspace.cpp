@@ -362,7 +362,7 @@ void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
 
 int Workspace::changedCount() const {
     return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
-           int(changedPlcNetworks().size()) + deadTimeModeEditCount() +
+           int(changedPlcNetworks().size()) + int(changedDeadTimeModes().size()) +
            m_tableSections->changedCount();
 }
 
@@ -383,13 +383,13 @@ void Workspace::noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeMod
     notifyChanged();
 }
 
-int Workspace::deadTimeModeEditCount() const {
-    int count = 0;
+QList<int> Workspace::changedDeadTimeModes() const {
+    QList<int> outputs;
     for (auto it = m_deadTimeModes.cbegin(); it != m_deadTimeModes.cend(); ++it) {
         const auto device = m_deviceDeadTimeModes.constFind(it.key());
-        count += device == m_deviceDeadTimeModes.cend() || *device != *it ? 1 : 0;
+        if (device == m_deviceDeadTimeModes.cend() || *device != *it) outputs << it.key();
     }
-    return count;
+    return outputs;
 }
 
 // --- which device the copies are from

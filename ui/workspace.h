@@ -121,8 +121,9 @@ public:
     void noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice);
     const DeadTimeModes& deviceDeadTimeModes() const { return m_deviceDeadTimeModes; }
     bool deadTimeModesEdited() const { return m_deadTimeModes != m_deviceDeadTimeModes; }
-    // Outputs whose mode as edited differs from the device's copy.
-    int deadTimeModeEditCount() const;
+    // Outputs whose mode as edited differs from the device's copy (or whose
+    // device value is not known).
+    QList<int> changedDeadTimeModes() const;
     // After a write: the device holds `deadTime` for `output` now.
     void setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime);
 

@@ -66,12 +66,8 @@ QList<WorkspaceItem> changedItems(const Workspace& workspace) {
     for (const QString& number : workspace.deletedUserNumbers())
         items << WorkspaceItem::deletedUser(number);
     for (int key : workspace.changedPlcNetworks()) items << WorkspaceItem::plcNetwork(key);
-    const DeadTimeModes& modes = workspace.deadTimeModes();
-    for (auto it = modes.cbegin(); it != modes.cend(); ++it) {
-        const DeadTimeModes& device = workspace.deviceDeadTimeModes();
-        if (!device.contains(it.key()) || device.value(it.key()) != *it)
-            items << WorkspaceItem::deadTimeMode(it.key());
-    }
+    for (int output : workspace.changedDeadTimeModes())
+        items << WorkspaceItem::deadTimeMode(output);
     const TableSectionCopies& table = *workspace.tableSections();
     for (int output : table.changedAnalogueOutputs()) items << WorkspaceItem::analogueCams(output);
     if (table.programmingProgramChanged()) items << WorkspaceItem::programmingProgram();
