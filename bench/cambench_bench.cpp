@@ -9,7 +9,8 @@
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/device/protocol_registry.h"
-#include "comm/sim/sim_eeprom_format.h"
+#include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/camcon/sim_eeprom_format.h"
 #include "comm/sim/sim_transport.h"
 
 #include "app/registry/builtin_registry.h"
@@ -68,7 +69,7 @@ struct Rig {
         config.faults.dropProbability = faults.drop;
         config.faults.seed = seed;
         firstDevice = config.devices.first();
-        transport = std::make_unique<SimTransport>(config);
+        transport = std::make_unique<SimTransport>(camConSimulatedLine(config));
         if (const Status opened = transport->open(); !opened)
             qFatal("%s", qPrintable(opened.error().message));
         AsciiSettings settings;  // timeouts derived from the line, as by default

@@ -7,6 +7,7 @@
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/mc1/mc1_family.h"
+#include "comm/sim/camcon/camcon_simulator.h"
 #include "comm/sim/sim_transport.h"
 #include "comm/transport/transport_registry.h"
 
@@ -25,6 +26,9 @@ void registerBuiltins() {
     comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
     comm::registerCamConAscii(protocols);
     comm::registerCamConTable(protocols);
+
+    comm::SimulatorRegistry& simulators = comm::SimulatorRegistry::instance();
+    comm::registerCamConSimulator(simulators);
 }
 
 }  // namespace cambench

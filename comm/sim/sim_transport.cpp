@@ -1,6 +1,6 @@
 #include "sim_transport.h"
 
-#include "sim_demo.h"
+#include "comm/sim/camcon/sim_demo.h"
 
 #include <QThread>
 
@@ -14,21 +14,8 @@ namespace {
 constexpr qint64 kSliceUs = 1000;
 }  // namespace
 
-namespace {
-QString describe(const SimPortConfig& config) {
-    QStringList devices;
-    for (int number : config.devices) devices << QString::number(number);
-    return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
-        .arg(config.protocolName(), devices.join(QLatin1Char(',')))
-        .arg(config.baud)
-        .arg(config.throttle ? QString() : QStringLiteral(", unthrottled"));
-}
-}  // namespace
-
-SimTransport::SimTransport(const SimPortConfig& config)
-    : SimTransport(makeSimEndpoint(config),
-                   SimPacer(config.baud, config.throttle, config.bitsPerByte()), describe(config)) {
-}
+SimTransport::SimTransport(SimulatedLine line)
+    : SimTransport(std::move(line.endpoint), line.pacer, std::move(line.description)) {}
 
 SimTransport::SimTransport(std::unique_ptr<SimEndpoint> line, const SimPacer& pacer,
                            QString description)
@@ -88,15 +75,16 @@ QString SimTransport::description() const {
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
                                                     const SerialSettings& serial,
                                                     const QString& protocol) {
-    Result<SimPortConfig> parsed = parseSimPort(port, serial);
-    if (!parsed) return parsed.error();
-    SimPortConfig config = *parsed;
-    // Unless the port names a framing or protocol, the simulated device
-    // speaks the protocol the PC connects with.
-    const bool named = config.framing || config.tableVariant;
-    if (!named && (protocol != QLatin1String("standard") || config.devices.size() == 1))
-        applySimProtocol(config, protocol);
-    return std::unique_ptr<Transport>(std::make_unique<SimTransport>(config));
+    const SimulatorInfo* simulator = SimulatorRegistry::instance().forProtocol(protocol);
+    if (!simulator) return Error::usage(QStringLiteral("no simulator is built into this CamBench"));
+    Result<SimulatedLine> line = simulator->fromPort(port, serial, protocol);
+    if (!line) return line.error();
+    return std::unique_ptr<Transport>(std::make_unique<SimTransport>(std::move(line).value()));
+}
+
+bool isSimPort(const QString& port) {
+    static const QString kPrefix = QStringLiteral("sim");
+    return port == kPrefix || port.startsWith(kPrefix + QLatin1Char(':'));
 }
 
 void registerSimTransport(TransportRegistry& registry) {

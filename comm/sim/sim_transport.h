@@ -1,9 +1,9 @@
 #pragma once
 
-#include "sim_device.h"
+#include "comm/sim/camcon/sim_device.h"
+#include "comm/sim/camcon/sim_port_config.h"
 #include "sim_endpoint.h"
 #include "sim_pacer.h"
-#include "sim_port_config.h"
 
 #include "comm/transport/transport_registry.h"
 
@@ -19,10 +19,10 @@ namespace cambench::comm {
 // rate; read() also runs the endpoint's timers.
 class SimTransport : public Transport {
 public:
-    explicit SimTransport(const SimPortConfig& config);
     // Any simulated line, of any device family: `line` behind the
     // transport, its replies paced by `pacer`; `description` for messages.
     SimTransport(std::unique_ptr<SimEndpoint> line, const SimPacer& pacer, QString description);
+    explicit SimTransport(SimulatedLine line);
 
     Status open() override;
     void close() override;
@@ -48,8 +48,8 @@ private:
     bool m_open = false;
 };
 
-// "sim" or "sim:key=value;..." (see parseSimPort) as a Transport. The
-// device speaks `protocol` (a registry id) unless the port names a framing.
+// "sim" or "sim:key=value;..." as a Transport: the simulator of the family
+// `protocol` (a registry id) belongs to builds the line; the keys are its own.
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
                                                     const SerialSettings& serial,
                                                     const QString& protocol = {});

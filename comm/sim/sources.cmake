@@ -1,65 +1,71 @@
-# The simulated CamCon (device side of the protocol) and its endpoints.
+# The simulator host (in-process port, pseudo-terminal and TCP servers,
+# pacing, shared faults, the registry of family simulators) and, in
+# camcon/, the simulated CamCon.
 target_sources(cambench_sim PRIVATE
-  sim_axis.cpp
-  sim_axis.h
-  sim_cam_handlers.cpp
-  sim_cam_store.cpp
-  sim_cam_store.h
-  sim_demo.cpp
-  sim_demo.h
-  sim_device.cpp
-  sim_device.h
-  sim_eeprom.cpp
-  sim_eeprom.h
-  sim_eeprom_format.cpp
-  sim_eeprom_format.h
-  sim_eeprom_handlers.cpp
+  camcon/sim_axis.cpp
+  camcon/sim_axis.h
+  camcon/sim_cam_handlers.cpp
+  camcon/sim_cam_store.cpp
+  camcon/sim_cam_store.h
+  camcon/sim_demo.cpp
+  camcon/sim_demo.h
+  camcon/sim_device.cpp
+  camcon/sim_device.h
+  camcon/sim_eeprom.cpp
+  camcon/sim_eeprom.h
+  camcon/sim_eeprom_format.cpp
+  camcon/sim_eeprom_format.h
+  camcon/sim_eeprom_handlers.cpp
   sim_endpoint.h
   sim_faults.cpp
   sim_faults.h
-  sim_handler_util.cpp
-  sim_handler_util.h
-  sim_handlers.h
-  sim_info_handlers.cpp
+  camcon/sim_handler_util.cpp
+  camcon/sim_handler_util.h
+  camcon/sim_handlers.h
+  camcon/sim_info_handlers.cpp
   sim_injections.cpp
   sim_injections.h
-  sim_line.cpp
-  sim_line.h
+  camcon/sim_line.cpp
+  camcon/sim_line.h
   sim_log.cpp
   sim_log.h
-  sim_name_handlers.cpp
+  camcon/sim_name_handlers.cpp
   sim_output.h
   sim_pacer.cpp
   sim_pacer.h
-  sim_plc_handlers.cpp
-  sim_port_config.cpp
-  sim_port_config.h
-  sim_profile.h
+  camcon/sim_plc_handlers.cpp
+  camcon/sim_port_config.cpp
+  camcon/sim_port_config.h
+  camcon/sim_profile.h
   sim_pty_server.cpp
   sim_pty_server.h
   sim_reply_scheduler.cpp
   sim_reply_scheduler.h
-  sim_result.h
-  sim_settings_defaults.cpp
-  sim_settings_handlers.cpp
-  sim_state.cpp
-  sim_state.h
-  sim_status_handlers.cpp
+  camcon/sim_result.h
+  camcon/sim_settings_defaults.cpp
+  camcon/sim_settings_handlers.cpp
+  camcon/sim_state.cpp
+  camcon/sim_state.h
+  camcon/sim_status_handlers.cpp
   sim_tcp_server.cpp
   sim_tcp_server.h
   sim_transport.cpp
   sim_transport.h
-  sim_user_handlers.cpp
-  table/sim_table_areas.h
-  table/sim_table_areas.cpp
-  table/sim_table_device.h
-  table/sim_table_device.cpp
-  table/sim_table_line.h
-  table/sim_table_line.cpp
-  table/sim_table_plc_words.cpp
-  table/sim_table_setting_words.cpp
-  table/sim_table_short_commands.cpp
-  table/sim_table_state.h
-  table/sim_table_status_words.cpp
-  table/sim_table_track_words.cpp
+  simulator_registry.cpp
+  simulator_registry.h
+  camcon/camcon_simulator.cpp
+  camcon/camcon_simulator.h
+  camcon/sim_user_handlers.cpp
+  camcon/table/sim_table_areas.h
+  camcon/table/sim_table_areas.cpp
+  camcon/table/sim_table_device.h
+  camcon/table/sim_table_device.cpp
+  camcon/table/sim_table_line.h
+  camcon/table/sim_table_line.cpp
+  camcon/table/sim_table_plc_words.cpp
+  camcon/table/sim_table_setting_words.cpp
+  camcon/table/sim_table_short_commands.cpp
+  camcon/table/sim_table_state.h
+  camcon/table/sim_table_status_words.cpp
+  camcon/table/sim_table_track_words.cpp
 )

@@ -11,7 +11,7 @@ SimBench::SimBench(QList<int> devices, std::optional<Framing> framing) {
     config.devices = devices;
     config.framing = framing;
     config.throttle = false;
-    transport = std::make_unique<SimTransport>(config);
+    transport = std::make_unique<SimTransport>(camConSimulatedLine(config));
     const Status opened = transport->open();
     if (!opened) qFatal("%s", qPrintable(opened.error().message));
     AsciiSettings settings;

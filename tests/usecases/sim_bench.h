@@ -2,7 +2,8 @@
 
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/camcon/ascii/ascii_link.h"
-#include "comm/sim/sim_line.h"
+#include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/camcon/sim_line.h"
 #include "comm/sim/sim_transport.h"
 
 #include <memory>

@@ -2,7 +2,7 @@
 
 #include "comm/camcon/ascii/command_codec.h"
 #include "comm/camcon/ascii/stream_decoder.h"
-#include "comm/sim/sim_line.h"
+#include "comm/sim/camcon/sim_line.h"
 
 #include <QList>
 

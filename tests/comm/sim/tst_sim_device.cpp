@@ -3,10 +3,10 @@
 
 #include "sim_test_client.h"
 
-#include "comm/sim/sim_demo.h"
-#include "comm/sim/sim_device.h"
-#include "comm/sim/sim_eeprom_format.h"
-#include "comm/sim/sim_handlers.h"
+#include "comm/sim/camcon/sim_demo.h"
+#include "comm/sim/camcon/sim_device.h"
+#include "comm/sim/camcon/sim_eeprom_format.h"
+#include "comm/sim/camcon/sim_handlers.h"
 
 #include <QtTest>
 

@@ -3,9 +3,10 @@
 
 #include "sim_test_client.h"
 
-#include "comm/sim/sim_demo.h"
+#include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/camcon/sim_demo.h"
+#include "comm/sim/camcon/sim_port_config.h"
 #include "comm/sim/sim_pacer.h"
-#include "comm/sim/sim_port_config.h"
 #include "comm/sim/sim_transport.h"
 
 #include <QtTest>
@@ -258,12 +259,12 @@ void TestSimLine::portStringErrors() {
     QVERIFY(!config.ok());
     QCOMPARE(config.error().kind, ErrorKind::Usage);
     QVERIFY2(config.error().message.contains(mentions), qPrintable(config.error().message));
-    QVERIFY(!makeSimTransport(port, {}).ok());
+    QVERIFY(!makeCamConSimTransport(port, {}).ok());
 }
 
 void TestSimLine::transportDeliversReplies() {
     Result<std::unique_ptr<Transport>> made =
-        makeSimTransport(QStringLiteral("sim:baud=115200"), {});
+        makeCamConSimTransport(QStringLiteral("sim:baud=115200"), {});
     QVERIFY(made.ok());
     Transport& transport = *made.value();
     QVERIFY(!transport.write("?EPROM4F\r\n").ok());  // not open yet

@@ -2,8 +2,9 @@
 // every kind happens, and the table interface still gets the right data.
 #include "comm/camcon/table/table_camcon.h"
 #include "comm/device/protocol_registry.h"
+#include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/camcon/table/sim_table_line.h"
 #include "comm/sim/sim_transport.h"
-#include "comm/sim/table/sim_table_line.h"
 
 #include <QLoggingCategory>
 #include <QTest>
@@ -45,8 +46,8 @@ void TestSimTableLine::eachLinkFaultHappensAndResultsStayRight() {
     QFETCH(Counter, counter);
     const SerialSettings serial;
     Result<std::unique_ptr<Transport>> made =
-        makeSimTransport(QStringLiteral("sim:throttle=0;seed=5;%1=0.1").arg(fault), serial,
-                         QStringLiteral("3964r-n96"));
+        makeCamConSimTransport(QStringLiteral("sim:throttle=0;seed=5;%1=0.1").arg(fault), serial,
+                               QStringLiteral("3964r-n96"));
     QVERIFY(made);
     std::unique_ptr<Transport> transport = std::move(made).value();
     QVERIFY(transport->open());
@@ -66,7 +67,7 @@ void TestSimTableLine::eachLinkFaultHappensAndResultsStayRight() {
 
 void TestSimTableLine::deadDeviceEndsInOneClearFailure() {
     const SerialSettings serial;
-    Result<std::unique_ptr<Transport>> made = makeSimTransport(
+    Result<std::unique_ptr<Transport>> made = makeCamConSimTransport(
         QStringLiteral("sim:throttle=0;dead=1"), serial, QStringLiteral("3964r-e38"));
     QVERIFY(made);
     std::unique_ptr<Transport> transport = std::move(made).value();

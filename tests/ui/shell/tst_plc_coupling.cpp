@@ -6,8 +6,8 @@
 // state is the witness.
 #include "shell_fixture.h"
 
-#include "comm/sim/sim_demo.h"
-#include "comm/sim/sim_device.h"
+#include "comm/sim/camcon/sim_demo.h"
+#include "comm/sim/camcon/sim_device.h"
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_pty_server.h"
 #include "ui/camcon/cameditor/cam_document.h"

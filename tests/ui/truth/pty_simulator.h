@@ -2,8 +2,8 @@
 
 #include "../shell/shell_fixture.h"
 
-#include "comm/sim/sim_demo.h"
-#include "comm/sim/sim_line.h"
+#include "comm/sim/camcon/sim_demo.h"
+#include "comm/sim/camcon/sim_line.h"
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_pty_server.h"
 

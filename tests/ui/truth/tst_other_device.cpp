@@ -4,7 +4,7 @@
 // witness of what was written.
 #include "pty_simulator.h"
 
-#include "comm/sim/sim_demo.h"
+#include "comm/sim/camcon/sim_demo.h"
 #include "ui/cam_page.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"

@@ -1,7 +1,7 @@
 #include "sim_table_areas.h"
 
 #include "comm/camcon/table/table_map.h"
-#include "comm/sim/sim_device.h"
+#include "comm/sim/camcon/sim_device.h"
 
 namespace cambench::comm {
 

@@ -8,7 +8,7 @@
 #include "comm/camcon/ascii/settings_commands.h"
 #include "comm/camcon/table/table_map.h"
 #include "comm/camcon/table/table_settings_map.h"
-#include "comm/sim/sim_device.h"
+#include "comm/sim/camcon/sim_device.h"
 
 namespace cambench::comm::sim_table {
 

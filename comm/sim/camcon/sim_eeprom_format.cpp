@@ -1,6 +1,6 @@
 #include "sim_eeprom_format.h"
 
-#include "sim_log.h"
+#include "comm/sim/sim_log.h"
 
 #include "comm/camcon/ascii/catalogue.h"
 #include "comm/camcon/ascii/command_codec.h"

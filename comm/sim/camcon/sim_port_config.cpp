@@ -122,10 +122,6 @@ bool applySimProtocol(SimPortConfig& config, const QString& protocol) {
     return true;
 }
 
-bool isSimPort(const QString& port) {
-    return port == kPrefix || port.startsWith(kPrefix + QLatin1Char(':'));
-}
-
 Result<QList<int>> parseDeviceList(const QString& text) {
     QList<int> devices;
     for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {

@@ -1,7 +1,7 @@
 #include "sim_table_device.h"
 
 #include "comm/camcon/table/short_commands.h"
-#include "comm/sim/sim_device.h"
+#include "comm/sim/camcon/sim_device.h"
 #include "comm/sim/sim_log.h"
 
 namespace cambench::comm {

@@ -1,7 +1,7 @@
 #include "sim_device.h"
 
+#include "comm/sim/sim_log.h"
 #include "sim_handlers.h"
-#include "sim_log.h"
 
 #include "comm/camcon/ascii/command_codec.h"
 

@@ -1,8 +1,8 @@
 #include "sim_eeprom.h"
 
+#include "comm/sim/sim_log.h"
 #include "sim_cam_store.h"
 #include "sim_eeprom_format.h"
-#include "sim_log.h"
 
 namespace cambench::comm {
 

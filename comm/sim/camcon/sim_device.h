@@ -7,7 +7,7 @@
 #include "sim_result.h"
 #include "sim_state.h"
 
-#include "comm/sim/table/sim_table_state.h"
+#include "comm/sim/camcon/table/sim_table_state.h"
 
 #include "comm/camcon/ascii/catalogue.h"
 #include "comm/camcon/ascii/frame.h"

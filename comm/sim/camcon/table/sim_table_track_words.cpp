@@ -4,7 +4,7 @@
 
 #include "comm/camcon/table/cam_track_words.h"
 #include "comm/camcon/table/table_map.h"
-#include "comm/sim/sim_device.h"
+#include "comm/sim/camcon/sim_device.h"
 #include "comm/sim/sim_log.h"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 #pragma once
 
-#include "sim_faults.h"
+#include "comm/sim/sim_faults.h"
+#include "comm/sim/simulator_registry.h"
 
 #include "comm/camcon/ascii/frame.h"
 #include "comm/camcon/table/rk512.h"
@@ -40,8 +41,6 @@ struct SimPortConfig {
 // Sets the framing or table variant of a registry id ("standard",
 // "multiuser", "3964r-n96", "3964r-e38"); false for another id.
 bool applySimProtocol(SimPortConfig& config, const QString& protocol);
-
-bool isSimPort(const QString& port);
 
 // Keys: devices, framing (standard|multiuser), protocol (standard|multiuser|
 // 3964r-n96|3964r-e38), baud, corrupt (damaged replies), drop (lost

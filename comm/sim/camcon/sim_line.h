@@ -1,10 +1,10 @@
 #pragma once
 
+#include "comm/sim/sim_endpoint.h"
+#include "comm/sim/sim_faults.h"
+#include "comm/sim/sim_injections.h"
+#include "comm/sim/sim_output.h"
 #include "sim_device.h"
-#include "sim_endpoint.h"
-#include "sim_faults.h"
-#include "sim_injections.h"
-#include "sim_output.h"
 
 #include "comm/camcon/ascii/stream_decoder.h"
 

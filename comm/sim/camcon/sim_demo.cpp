@@ -3,7 +3,7 @@
 #include "sim_device.h"
 #include "sim_line.h"
 
-#include "comm/sim/table/sim_table_line.h"
+#include "comm/sim/camcon/table/sim_table_line.h"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 
 #include "comm/camcon/table/frame_3964r.h"
 #include "comm/camcon/table/table_map.h"
-#include "comm/sim/sim_device.h"
+#include "comm/sim/camcon/sim_device.h"
 #include "comm/sim/sim_log.h"
 
 namespace cambench::comm {

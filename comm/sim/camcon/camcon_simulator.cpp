@@ -1,0 +1,177 @@
+#include "camcon_simulator.h"
+
+#include "sim_demo.h"
+#include "sim_line.h"
+
+#include "comm/sim/sim_transport.h"
+
+namespace cambench::comm {
+
+namespace {
+
+constexpr int kStandardBaud = 9600;
+constexpr int kMultiuserBaud = 38400;
+
+QString describe(const SimPortConfig& config) {
+    QStringList devices;
+    for (int number : config.devices) devices << QString::number(number);
+    return QStringLiteral("simulator (%1, device %2, %3 baud%4)")
+        .arg(config.protocolName(), devices.join(QLatin1Char(',')))
+        .arg(config.baud)
+        .arg(config.throttle ? QString() : QStringLiteral(", unthrottled"));
+}
+
+Result<SimPortConfig> configForPort(const QString& port, const SerialSettings& serial,
+                                    const QString& protocol) {
+    Result<SimPortConfig> parsed = parseSimPort(port, serial);
+    if (!parsed) return parsed.error();
+    SimPortConfig config = *parsed;
+    // Unless the port names a framing or protocol, the simulated device
+    // speaks the protocol the PC connects with.
+    const bool named = config.framing || config.tableVariant;
+    if (!named && (protocol != QLatin1String("standard") || config.devices.size() == 1))
+        applySimProtocol(config, protocol);
+    return config;
+}
+
+QList<QCommandLineOption> camConOptions() {
+    return {
+        {QStringLiteral("devices"), QStringLiteral("Device numbers 0..63, e.g. 0,5 (default 0)."),
+         QStringLiteral("list")},
+        {QStringLiteral("baud"),
+         QStringLiteral("Baud rate for the timing (default 9600, Multiuser and 3964r-e38 "
+                        "38400)."),
+         QStringLiteral("rate")},
+        {QStringLiteral("pc-number"),
+         QStringLiteral("Multiuser: answer only this PC number (default any)."),
+         QStringLiteral("n")},
+        {QStringLiteral("nak"),
+         QStringLiteral("3964R: probability of a NAK to a good block (not executed)."),
+         QStringLiteral("p")},
+        {QStringLiteral("lost-dle"),
+         QStringLiteral("3964R: probability of a DLE of the device lost on the line."),
+         QStringLiteral("p")},
+        {QStringLiteral("collision"),
+         QStringLiteral("3964R: probability of the device's STX crossing the PC's."),
+         QStringLiteral("p")},
+        {QStringLiteral("link-faults"),
+         QStringLiteral("3964R: --corrupt (the reply's BCC), --nak, --lost-dle and --collision "
+                        "at once."),
+         QStringLiteral("p")},
+        {QStringLiteral("fill"),
+         QStringLiteral("Benchmark state: n cams on every output of every program."),
+         QStringLiteral("n")},
+        {QStringLiteral("users"),
+         QStringLiteral("n users \"User 01\", \"User 02\", ... instead of the demo's two "
+                        "(at most 32)."),
+         QStringLiteral("n")},
+        {QStringLiteral("dead-devices"),
+         QStringLiteral("These devices of the line never answer, e.g. 5 (the others do)."),
+         QStringLiteral("list")},
+    };
+}
+
+Error optionError(const QString& text) {
+    return Error::usage(text);
+}
+
+// The CamCon's own options of cambench-sim on top of the shared ones.
+Result<SimulatedLine> fromOptions(const QCommandLineParser& parser, const SimHostOptions& shared) {
+    SimPortConfig config;
+    config.faults = shared.faults;
+    config.throttle = shared.throttle;
+    if (!shared.protocol.isEmpty() && !applySimProtocol(config, shared.protocol)) {
+        return optionError(QStringLiteral("--protocol must be standard, multiuser, 3964r-n96 or "
+                                          "3964r-e38, not \"%1\".")
+                               .arg(shared.protocol));
+    }
+    if (parser.isSet(QStringLiteral("devices"))) {
+        Result<QList<int>> devices = parseDeviceList(parser.value(QStringLiteral("devices")));
+        if (!devices)
+            return optionError(QStringLiteral("--devices: %1").arg(devices.error().message));
+        config.devices = *devices;
+    }
+    if (config.tableVariant && config.devices.size() > 1)
+        return optionError(QStringLiteral("3964R is point to point: one device."));
+    if (!config.tableVariant && config.effectiveFraming() == Framing::Standard &&
+        config.devices.size() > 1) {
+        return optionError(
+            QStringLiteral("Standard framing has one device; add --protocol multiuser."));
+    }
+    bool ok = true;
+    config.baud = config.effectiveFraming() == Framing::Multiuser ? kMultiuserBaud : kStandardBaud;
+    if (config.tableVariant) config.baud = table::rk512VariantInfo(*config.tableVariant).baudRate;
+    if (parser.isSet(QStringLiteral("baud")))
+        config.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
+    if (!ok || config.baud < 300)
+        return optionError(QStringLiteral("--baud needs a baud rate of 300 or more."));
+    std::optional<int> pcNumber;
+    if (parser.isSet(QStringLiteral("pc-number"))) {
+        const int pc = parser.value(QStringLiteral("pc-number")).toInt(&ok);
+        if (!ok || pc < 0 || pc > 63)
+            return optionError(QStringLiteral("--pc-number needs a number 0..63."));
+        pcNumber = pc;
+    }
+    SimFaultSettings& faults = config.faults;
+    const QList<std::pair<const char*, QList<double*>>> probabilities{
+        {"nak", {&faults.nakProbability}},
+        {"lost-dle", {&faults.lostDleProbability}},
+        {"collision", {&faults.collisionProbability}},
+        {"link-faults",
+         {&faults.corruptProbability, &faults.nakProbability, &faults.lostDleProbability,
+          &faults.collisionProbability}},
+    };
+    for (const auto& [name, targets] : probabilities) {
+        if (!parser.isSet(QLatin1String(name))) continue;
+        const auto p = parseProbability(parser.value(QLatin1String(name)));
+        if (!p)
+            return optionError(
+                QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name)));
+        for (double* target : targets) *target = *p;
+    }
+    for (const char* name : {"fill", "users"}) {
+        if (!parser.isSet(QLatin1String(name))) continue;
+        const int n = parser.value(QLatin1String(name)).toInt(&ok);
+        if (!ok || n < 0)
+            return optionError(
+                QStringLiteral("--%1 needs a whole number of 0 or more.").arg(QLatin1String(name)));
+        (QByteArray(name) == "fill" ? config.fill : config.users) = n;
+    }
+    if (parser.isSet(QStringLiteral("dead-devices"))) {
+        Result<QList<int>> dead = parseDeviceList(parser.value(QStringLiteral("dead-devices")));
+        if (!dead)
+            return optionError(QStringLiteral("--dead-devices: %1").arg(dead.error().message));
+        config.deadDevices = *dead;
+    }
+    SimulatedLine line = camConSimulatedLine(config);
+    if (auto* ascii = dynamic_cast<SimLine*>(line.endpoint.get())) ascii->setPcNumber(pcNumber);
+    return line;
+}
+
+}  // namespace
+
+SimulatedLine camConSimulatedLine(const SimPortConfig& config) {
+    return {makeSimEndpoint(config), SimPacer(config.baud, config.throttle, config.bitsPerByte()),
+            describe(config)};
+}
+
+Result<std::unique_ptr<Transport>> makeCamConSimTransport(const QString& port,
+                                                          const SerialSettings& serial,
+                                                          const QString& protocol) {
+    Result<SimPortConfig> config = configForPort(port, serial, protocol);
+    if (!config) return config.error();
+    return std::unique_ptr<Transport>(std::make_unique<SimTransport>(camConSimulatedLine(*config)));
+}
+
+void registerCamConSimulator(SimulatorRegistry& registry) {
+    registry.add({QStringLiteral("camcon"),
+                  [](const QString& port, const SerialSettings& serial,
+                     const QString& protocol) -> Result<SimulatedLine> {
+                      Result<SimPortConfig> config = configForPort(port, serial, protocol);
+                      if (!config) return config.error();
+                      return camConSimulatedLine(*config);
+                  },
+                  camConOptions, fromOptions});
+}
+
+}  // namespace cambench::comm
