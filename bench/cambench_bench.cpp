@@ -10,6 +10,7 @@
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/camcon/sim_camcon_endpoint.h"
 #include "comm/sim/camcon/sim_eeprom_format.h"
 #include "comm/sim/sim_transport.h"
 
@@ -80,7 +81,9 @@ struct Rig {
         link = std::make_unique<AsciiLink>(*transport, settings, lineTimingFor(serial));
         client = std::make_unique<AsciiCamCon>(*link);
     }
-    SimDevice& device() { return *transport->line().device(firstDevice); }
+    SimDevice& device() {
+        return *dynamic_cast<SimCamConEndpoint&>(transport->line()).device(firstDevice);
+    }
     // The EEPROM blocks the simulated device holds now.
     QList<QByteArray> eeprom() {
         return sim_eeprom::serialize(device().state(), device().profile());

@@ -6,8 +6,10 @@
 
 #include "ui/protocols/protocol_settings_widget.h"
 
+#include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/transport/serial_port_list.h"
+#include "comm/usecases/detect_device.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -16,7 +18,9 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPushButton>
+#include <QStandardItemModel>
 #include <QToolButton>
 
 namespace cambench {
@@ -50,14 +54,21 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     auto* refresh = new QToolButton;
     refresh->setText(tr("Refresh"));
     refresh->setToolTip(tr("Look for serial ports again"));
+    m_detect = new QPushButton(tr("Detect"));
+    m_detect->setObjectName(QStringLiteral("detectButton"));
+    m_detect->setToolTip(
+        tr("Find out what is on this port: each device family's protocols are tried at their "
+           "usual line settings, with identification queries only."));
     auto* portRow = new QHBoxLayout;
     portRow->addWidget(m_port, 1);
     portRow->addWidget(refresh);
+    portRow->addWidget(m_detect);
     form->addRow(tr("Port:"), portRow);
 
+    m_family = new QComboBox;
+    m_family->setObjectName(QStringLiteral("familyBox"));
+    form->addRow(tr("Device family:"), m_family);
     m_protocol = new QComboBox;
-    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
-        m_protocol->addItem(protocolTitle(*info), info->id);
     form->addRow(tr("Protocol:"), m_protocol);
 
     m_baud = new QComboBox;
@@ -81,6 +92,12 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     m_failure->setObjectName(QStringLiteral("connectFailure"));
     m_failure->hide();
     form->addRow(m_failure);
+    m_detectResult = new QLabel;
+    m_detectResult->setObjectName(QStringLiteral("detectResult"));
+    m_detectResult->setWordWrap(true);
+    m_detectResult->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_detectResult->hide();
+    form->addRow(m_detectResult);
 
     auto* bus = new QGroupBox(tr("Devices on the line"));
     auto* busLayout = new QVBoxLayout(bus);
@@ -105,17 +122,16 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     layout->addWidget(identity, 2);
 
     fillPorts();
+    fillFamilies();
+    fillProtocols();
     showProtocolWidget();
     // A rebuilt window (language switch) shows the line in use.
     if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying())
         showConnection(m_session->connection(), m_session->protocol());
     connect(refresh, &QToolButton::clicked, this, &ConnectionPage::fillPorts);
-    connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
-        if (const comm::ProtocolInfo* info = currentProtocol())
-            m_baud->setCurrentText(QString::number(info->defaultSerial.baud));
-        showProtocolWidget();
-        updateButtons();
-    });
+    connect(m_detect, &QPushButton::clicked, this, &ConnectionPage::detect);
+    connect(m_family, &QComboBox::currentIndexChanged, this, &ConnectionPage::fillProtocols);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, &ConnectionPage::protocolChanged);
     connect(m_connect, &QPushButton::clicked, this,
             [this] { m_session->connectTo(connectionSettings(), protocolSettings()); });
     connect(m_disconnect, &QPushButton::clicked, m_session, &DeviceSession::disconnectFromDevice);
@@ -176,8 +192,134 @@ void ConnectionPage::showConnection(const comm::ConnectionSettings& connection,
 }
 
 void ConnectionPage::setProtocol(const QString& id) {
+    if (const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(id))
+        setFamily(info->familyId);
     const int index = m_protocol->findData(id);
     if (index >= 0) m_protocol->setCurrentIndex(index);
+}
+
+void ConnectionPage::setFamily(const QString& id) {
+    const int index = m_family->findData(id);
+    if (index >= 0) m_family->setCurrentIndex(index);
+}
+
+QString ConnectionPage::family() const {
+    return m_family->currentData().toString();
+}
+
+void ConnectionPage::fillFamilies() {
+    auto* model = new QStandardItemModel(m_family);
+    for (const comm::FamilyInfo* info : comm::FamilyRegistry::instance().all()) {
+        // A family not built yet is shown, greyed, with the reason: a
+        // technician looking for it learns that it is coming, not that it
+        // does not exist.
+        auto* item = new QStandardItem(
+            info->built ? info->title
+                        : tr("%1 (not built into this CamBench yet)").arg(info->title));
+        item->setData(info->id, Qt::UserRole);
+        if (!info->built) {
+            item->setFlags(item->flags() & ~Qt::ItemIsEnabled);
+            item->setToolTip(tr("Its protocol, simulator and pages are not built yet."));
+        }
+        model->appendRow(item);
+    }
+    m_family->setModel(model);
+}
+
+void ConnectionPage::fillProtocols() {
+    const QString chosen = m_protocol->currentData().toString();
+    const QSignalBlocker quiet(m_protocol);
+    m_protocol->clear();
+    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all()) {
+        if (info->familyId == family()) m_protocol->addItem(protocolTitle(*info), info->id);
+    }
+    const int index = m_protocol->findData(chosen);
+    m_protocol->setCurrentIndex(index >= 0 ? index : 0);
+    if (index < 0) protocolChanged();  // another family: its first protocol
+}
+
+void ConnectionPage::protocolChanged() {
+    if (const comm::ProtocolInfo* info = currentProtocol())
+        m_baud->setCurrentText(QString::number(info->defaultSerial.baud));
+    showProtocolWidget();
+    updateButtons();
+}
+
+void ConnectionPage::detect() {
+    const comm::ConnectionSettings where = connectionSettings();
+    if (where.port.isEmpty()) {
+        showDetectResult(Error::usage(tr("Choose or type a port first.")));
+        return;
+    }
+    if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying()) {
+        // Detect needs the port to itself.
+        const auto answer = QMessageBox::question(
+            this, tr("Detect"),
+            tr("Detect closes the connection to %1 and then tries each device family on %2. "
+               "Nothing is written to a device; your edits stay. Go on?")
+                .arg(m_session->connection().port, where.port),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+        if (answer != QMessageBox::Yes) return;
+        m_session->disconnectFromDevice();
+    }
+    m_detect->setEnabled(false);
+    m_detectResult->setText(tr("Detecting on %1…").arg(where.port));
+    m_detectResult->setPalette(QPalette());
+    m_detectResult->show();
+    // The device and PC numbers in the form are tried for the protocol
+    // shown; the others are tried with their defaults.
+    const comm::ProtocolSettingsPtr shown = protocolSettings();
+    const usecases::DetectSettings settings = [shown](const comm::ProtocolInfo& protocol) {
+        return protocol.id == shown->protocolId()
+                   ? shown
+                   : comm::ProtocolSettingsPtr(protocol.makeSettings());
+    };
+    const QString port = where.port;
+    m_session->worker().run<Result<usecases::DetectResult>>(
+        this, comm::JobPriority::User, tr("Detect device on %1").arg(port),
+        [port, settings](comm::JobContext& job) {
+            return usecases::detectDevice(port, job, settings);
+        },
+        [this](Result<usecases::DetectResult> result) { showDetectResult(result); });
+}
+
+QString ConnectionPage::detectText() const {
+    return m_detectResult->isVisible() ? m_detectResult->text() : QString();
+}
+
+void ConnectionPage::showDetectResult(const Result<usecases::DetectResult>& result) {
+    m_detect->setEnabled(true);
+    QPalette alarm = m_detectResult->palette();
+    alarm.setColor(QPalette::WindowText, QColor(0xd0, 0x30, 0x20));
+    if (!result) {
+        m_detectResult->setText(
+            tr("Detect could not use the port: %1").arg(asSentence(result.error().message)));
+        m_detectResult->setPalette(alarm);
+        Q_EMIT statusMessage(m_detectResult->text());
+        return;
+    }
+    if (const usecases::DetectAttempt* found = result->found()) {
+        setProtocol(found->protocolId);
+        m_baud->setCurrentText(QString::number(found->serial.baud));
+        m_detectResult->setPalette(QPalette());
+        m_detectResult->setText(tr("Found on %1: %2. The protocol and baud rate are filled in; "
+                                   "press Connect to work with it.")
+                                    .arg(result->port, usecases::attemptLine(*found)));
+        Q_EMIT statusMessage(tr("Detect: %1").arg(usecases::attemptLine(*found)));
+        return;
+    }
+    QStringList tried;
+    for (const usecases::DetectAttempt& attempt : result->attempts)
+        tried << QStringLiteral("• %1").arg(usecases::attemptLine(attempt));
+    m_detectResult->setText(
+        (result->cancelled ? tr("Detect was cancelled; nothing answered on %1 so far. Tried:")
+                           : tr("Nothing answered on %1. Tried:"))
+            .arg(result->port) +
+        QLatin1Char('\n') + tried.join(QLatin1Char('\n')) + QLatin1Char('\n') +
+        tr("Check the cable, the device's power and its interface settings (for an RS485 bus "
+           "also the device number), then Detect again."));
+    m_detectResult->setPalette(alarm);
+    Q_EMIT statusMessage(tr("Detect: nothing answered on %1").arg(result->port));
 }
 
 const comm::ProtocolInfo* ConnectionPage::currentProtocol() const {

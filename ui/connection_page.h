@@ -17,6 +17,9 @@ namespace cambench {
 namespace comm {
 struct ProtocolInfo;
 }
+namespace usecases {
+struct DetectResult;
+}
 
 class DeviceSession;
 class ProtocolSettingsWidget;
@@ -40,8 +43,15 @@ public:
                         const comm::ProtocolSettings& protocol);
     // A ProtocolRegistry id: "standard", "multiuser", ...
     void setProtocol(const QString& id);
+    // A FamilyRegistry id: the protocol list shows that family's protocols.
+    void setFamily(const QString& id);
+    QString family() const;
 
     void scanBus();
+    // Tries each family's protocols on the chosen port (closing the
+    // connection first) and fills in what answered.
+    void detect();
+    QString detectText() const;
 
 Q_SIGNALS:
     // The user picked another device of the bus: read its identity.
@@ -58,10 +68,17 @@ private:
     void showScanResult(const Result<QList<int>>& devices);
     // Puts the settings widget of the protocol chosen in place.
     void showProtocolWidget();
+    void fillFamilies();
+    // The chosen family's protocols, keeping the chosen one when it is one.
+    void fillProtocols();
+    // Another protocol chosen: its baud rate and its settings widget.
+    void protocolChanged();
+    void showDetectResult(const Result<usecases::DetectResult>& result);
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     QComboBox* m_port;
+    QComboBox* m_family;
     QComboBox* m_protocol;
     QComboBox* m_baud;
     QVBoxLayout* m_protocolBox;  // holds the chosen protocol's settings widget
@@ -69,6 +86,8 @@ private:
     QPushButton* m_connect;
     QPushButton* m_disconnect;
     QPushButton* m_scan;
+    QPushButton* m_detect;
+    QLabel* m_detectResult;  // what Detect found, or everything it tried
     QListWidget* m_devices;
     QFormLayout* m_info;
     QGroupBox* m_identity;

@@ -4,7 +4,6 @@
 #include "progress_bar.h"
 #include "traffic_log_file.h"
 
-#include "comm/camcon/camcon_device.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QEventLoop>
@@ -29,12 +28,20 @@ public:
     // Draw a progress bar for the following jobs (only on a terminal).
     void setShowProgress(bool show) { m_showProgress = show; }
 
-    template <class T>
-    using Work = std::function<Result<T>(comm::CamConDevice&, comm::JobContext&)>;
+    // A job written for one family's device interface (CamConDevice, ...).
+    template <class Device, class T>
+    using Work = std::function<Result<T>(Device&, comm::JobContext&)>;
 
-    // Connects on first use, runs `work` as one job and returns its result.
+    // Connects on first use, runs `work` as one job and returns its result;
+    // a Usage error when the connection reaches another family.
+    template <class Device, class T>
+    Result<T> run(const QString& title, Work<Device, T> work);
+
+    // Runs `work` as one job without connecting first: for work that opens
+    // the port itself (detect).
     template <class T>
-    Result<T> run(const QString& title, Work<T> work);
+    Result<T> runUnconnected(const QString& title,
+                             std::function<Result<T>(comm::JobContext&)> work);
 
     // Where the device is, for messages: "sim", "/dev/ttyUSB0 (device 5)".
     QString where() const;
@@ -51,23 +58,27 @@ private:
     std::optional<Status> m_connection;
 };
 
-template <class T>
-Result<T> CliSession::run(const QString& title, Work<T> work) {
+template <class Device, class T>
+Result<T> CliSession::run(const QString& title, Work<Device, T> work) {
     const Status connected = ensureConnected();
     if (!connected) return connected.error();
+    return runUnconnected<T>(title, [work = std::move(work)](comm::JobContext& job) -> Result<T> {
+        Result<Device*> device = job.family<Device>();
+        if (!device) return device.error();
+        return work(**device, job);
+    });
+}
+
+template <class T>
+Result<T> CliSession::runUnconnected(const QString& title,
+                                     std::function<Result<T>(comm::JobContext&)> work) {
     QEventLoop loop;
     std::optional<Result<T>> result;
-    m_worker.run<Result<T>>(
-        &m_context, comm::JobPriority::User, title,
-        [work = std::move(work)](comm::JobContext& job) -> Result<T> {
-            Result<comm::CamConDevice*> device = job.family<comm::CamConDevice>();
-            if (!device) return device.error();
-            return work(**device, job);
-        },
-        [&](Result<T> value) {
-            result.emplace(std::move(value));
-            loop.quit();
-        });
+    m_worker.run<Result<T>>(&m_context, comm::JobPriority::User, title, std::move(work),
+                            [&](Result<T> value) {
+                                result.emplace(std::move(value));
+                                loop.quit();
+                            });
     loop.exec();
     m_progress.finish();
     return std::move(*result);

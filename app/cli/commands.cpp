@@ -1,35 +1,55 @@
 #include "commands.h"
 
+#include "comm/device/family_registry.h"
+
 namespace cambench::cli {
 
-const CommandGroup* findCommandGroup(const QString& name) {
-    static const CommandGroup kGroups[] = {
-        {"info", runInfo},
-        {"status", runStatus},
-        {"scan", runScan},
-        {"ports", runPorts},
-        {"raw", runRaw},
-        {"cams", runCams},
-        {"deadtimes", runDeadTimes},
-        {"names", runNames},
-        {"settings", runSettings},
-        {"users", runUsers},
-        {"plc", runPlc},
-        {"backup", runBackup},
-        {"restore", runRestore},
-        {"verify", runVerify},
-        {"project", runProject},
-        {"backup-line", runBackupLine},
-        {"verify-line", runVerifyLine},
-        {"short", runShortCommands},
-        {"analogue", runAnalogue},
-        {"programming", runProgramming},
-        {"eeprom-lock", runEepromLock},
-    };
-    for (const CommandGroup& group : kGroups) {
-        if (name == QLatin1String(group.name)) return &group;
+int runPorts(CliSession& session, CommandArgs& args);   // port_commands.cpp
+int runDetect(CliSession& session, CommandArgs& args);  // detect_command.cpp
+
+CommandRegistry& CommandRegistry::instance() {
+    static CommandRegistry registry;
+    return registry;
+}
+
+void CommandRegistry::add(CommandGroup group) {
+    m_groups.append(std::move(group));
+}
+
+void CommandRegistry::addHelp(const QString& familyId, const QString& text) {
+    m_help.append({familyId, text});
+}
+
+const CommandGroup* CommandRegistry::find(const QString& familyId, const QString& name) const {
+    for (const CommandGroup& group : m_groups) {
+        if (group.name == name && (group.familyId.isEmpty() || group.familyId == familyId))
+            return &group;
     }
     return nullptr;
+}
+
+QStringList CommandRegistry::familiesWith(const QString& name) const {
+    QStringList families;
+    for (const CommandGroup& group : m_groups) {
+        if (group.name == name && !group.familyId.isEmpty()) families << group.familyId;
+    }
+    return families;
+}
+
+QString CommandRegistry::help() const {
+    QString text;
+    for (const auto& [familyId, lines] : m_help) {
+        const comm::FamilyInfo* family = comm::FamilyRegistry::instance().find(familyId);
+        text += QStringLiteral("\n%1 (--family %2):\n")
+                    .arg(family ? family->title : familyId, familyId) +
+                lines;
+    }
+    return text;
+}
+
+void registerShellCommands(CommandRegistry& registry) {
+    registry.add({{}, QStringLiteral("ports"), runPorts});
+    registry.add({{}, QStringLiteral("detect"), runDetect});
 }
 
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs) {

@@ -3,40 +3,47 @@
 #include "cli_options.h"
 #include "cli_session.h"
 
+#include <QList>
+#include <QString>
+
 namespace cambench::cli {
 
 // One command group. `run` parses its own arguments (usage errors before
 // any device work), does its work through the session and returns the
 // exit code.
 struct CommandGroup {
-    const char* name;
-    int (*run)(CliSession& session, CommandArgs& args);
+    QString familyId;  // the family whose device it works on; empty: any family
+    QString name;
+    int (*run)(CliSession& session, CommandArgs& args) = nullptr;
 };
 
-// Defined in one file per group.
-int runInfo(CliSession& session, CommandArgs& args);
-int runStatus(CliSession& session, CommandArgs& args);
-int runScan(CliSession& session, CommandArgs& args);
-int runPorts(CliSession& session, CommandArgs& args);
-int runRaw(CliSession& session, CommandArgs& args);
-int runCams(CliSession& session, CommandArgs& args);
-int runDeadTimes(CliSession& session, CommandArgs& args);
-int runNames(CliSession& session, CommandArgs& args);
-int runSettings(CliSession& session, CommandArgs& args);
-int runUsers(CliSession& session, CommandArgs& args);
-int runPlc(CliSession& session, CommandArgs& args);
-int runBackup(CliSession& session, CommandArgs& args);
-int runRestore(CliSession& session, CommandArgs& args);
-int runVerify(CliSession& session, CommandArgs& args);
-int runProject(CliSession& session, CommandArgs& args);
-int runBackupLine(CliSession& session, CommandArgs& args);
-int runVerifyLine(CliSession& session, CommandArgs& args);
-int runShortCommands(CliSession& session, CommandArgs& args);
-int runAnalogue(CliSession& session, CommandArgs& args);
-int runProgramming(CliSession& session, CommandArgs& args);
-int runEepromLock(CliSession& session, CommandArgs& args);
+// The command groups of cambench-cli: the shell's own (ports, detect) and
+// each family's, registered from app/cli/cli_families.cpp (one line per
+// family), with the family's part of --help. Nothing else lists them.
+class CommandRegistry {
+public:
+    static CommandRegistry& instance();
 
-const CommandGroup* findCommandGroup(const QString& name);
+    void add(CommandGroup group);
+    // The family's lines of --help (its commands and what they print).
+    void addHelp(const QString& familyId, const QString& text);
+
+    // The group `name` for a device of `familyId` (its own, or one of any
+    // family); null when there is none.
+    const CommandGroup* find(const QString& familyId, const QString& name) const;
+    // The families that have a group `name` ("mc1" for `mc1 ...`).
+    QStringList familiesWith(const QString& name) const;
+    QString help() const;
+
+private:
+    QList<CommandGroup> m_groups;
+    QList<std::pair<QString, QString>> m_help;
+};
+
+// The shell's own groups: ports, detect.
+void registerShellCommands(CommandRegistry& registry);
+// Registers the shell's groups and each built family's (cli_families.cpp).
+void registerCliCommands();
 
 // "read" or "write" after a group name; a usage error for anything else.
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs);

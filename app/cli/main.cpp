@@ -16,6 +16,7 @@ using namespace cambench::cli;
 
 int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
+    registerCliCommands();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
@@ -35,8 +36,15 @@ int main(int argc, char* argv[]) {
     }
     const Result<GlobalOptions> options = parseGlobalOptions(args);
     if (!options) return reportError(options.error());
-    const CommandGroup* group = findCommandGroup(options->command);
+    const CommandRegistry& commands = CommandRegistry::instance();
+    const CommandGroup* group = commands.find(options->family, options->command);
     if (!group) {
+        const QStringList families = commands.familiesWith(options->command);
+        if (!families.isEmpty()) {
+            return reportError(Error::usage(
+                QStringLiteral("\"%1\" is a command of the %2 family, not of %3; add --family %2")
+                    .arg(options->command, families.first(), options->family)));
+        }
         return reportError(
             Error::usage(QStringLiteral("unknown command \"%1\"; see `cambench-cli --help`")
                              .arg(options->command)));

@@ -15,6 +15,8 @@ add_executable(cambench-cli
   cli/commands.h
   cli/commands.cpp
   cli/port_commands.cpp
+  cli/detect_command.cpp
+  cli/cli_families.cpp
 )
 # The CamCon's command groups.
 include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)

@@ -92,4 +92,14 @@ Status CamConDevice::writeEepromLock(bool) {
     return missing(CamConCapability::EepromLock);
 }
 
+Result<QString> CamConDevice::identify() {
+    const Result<DeviceInfo> info = readInfo();
+    if (!info) return info.error();
+    return QStringLiteral("CamCon, EPROM %1, device %2, %3 outputs, %4 programs")
+        .arg(info->epromDate)
+        .arg(info->deviceNumber)
+        .arg(info->outputs)
+        .arg(info->programs);
+}
+
 }  // namespace cambench::comm

@@ -55,6 +55,8 @@ public:
     Error missing(CamConCapability capability) const;
 
     virtual Result<DeviceInfo> readInfo() = 0;
+    // The identity readInfo() gives, in one line.
+    Result<QString> identify() override;
     virtual Result<DeviceStatus> readStatus(int outputs, int inputs) = 0;
     virtual Status resetError() = 0;
     virtual Status selectProgram(int program) = 0;

@@ -20,6 +20,20 @@ public:
     virtual QString protocolId() const = 0;
     // The engine under it: cancel flag, traffic sink, counters.
     virtual RequestEngine& engine() = 0;
+    // What answers on the line, in one line for a person ("CamCon, EPROM
+    // 11.10.1994, device 0, 32 outputs"), read with queries only: Detect
+    // sends it to a device it does not know yet. Fails when nothing of this
+    // family answers.
+    virtual Result<QString> identify() = 0;
+    // identify() as a quick probe of a line that may hold anything: no
+    // retries, the shortest waits the protocol allows. The connection is
+    // used for nothing else afterwards.
+    virtual Result<QString> probe() {
+        EngineSettings quick = engine().settings();
+        quick.retries = 0;
+        engine().setSettings(quick);
+        return identify();
+    }
     // A bus protocol addresses later requests to `device`; others ignore it.
     virtual void setDevice(int device) { Q_UNUSED(device); }
 };

@@ -8,11 +8,9 @@
 
 namespace cambench::comm {
 
-class SimDevice;
-
 // The far end of a simulated line: what the simulated devices make of the
 // bytes the PC sends, as replies with the time each waits before it leaves.
-// One per protocol: SimLine (CamCon ASCII), SimTableLine (3964R/RK512).
+// One per protocol and family (the CamCon's: SimLine, SimTableLine).
 // The transports (in-process, pty, TCP) pace the replies at the baud rate
 // and call poll() for the devices' own timers.
 class SimEndpoint {
@@ -28,10 +26,6 @@ public:
     }
     // When poll() wants to run next; -1 = no timer.
     virtual qint64 nextTimerMs() const { return -1; }
-
-    // The device with this number (a point-to-point line: its one device),
-    // or nullptr.
-    virtual SimDevice* device(int number) const = 0;
     // "Standard", "Multiuser", "3964R n96": for descriptions.
     virtual QString protocolName() const = 0;
 };

@@ -55,6 +55,7 @@ target_sources(cambench_sim PRIVATE
   simulator_registry.h
   camcon/camcon_simulator.cpp
   camcon/camcon_simulator.h
+  camcon/sim_camcon_endpoint.h
   camcon/sim_user_handlers.cpp
   camcon/table/sim_table_areas.h
   camcon/table/sim_table_areas.cpp

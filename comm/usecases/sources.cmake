@@ -1,8 +1,11 @@
 # The use-case frame every family shares: progress and cancel, the outcome
-# of one written item and the tally of a write.
+# of one written item and the tally of a write, and Detect (which family
+# answers on a port).
 target_sources(cambench_usecases PRIVATE
   use_case_progress.h
   use_case_progress.cpp
   item_outcome.h
   item_outcome.cpp
+  detect_device.h
+  detect_device.cpp
 )

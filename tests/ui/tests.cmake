@@ -21,3 +21,5 @@ cambench_add_test(ui_shell_gui_settings_test SOURCES ui/register_widgets.cpp ui/
 cambench_add_test(ui_shell_line_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_line_backup.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_plc_coupling_test SOURCES ui/register_widgets.cpp ui/shell/tst_plc_coupling.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
 cambench_add_test(ui_shell_table_page_edits_test SOURCES ui/register_widgets.cpp ui/shell/tst_table_page_edits.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
+# Issue 13: the connection page's family choice and Detect on a pty.
+cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)

@@ -1,6 +1,6 @@
 // cams read / cams write
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 
@@ -39,8 +39,8 @@ int readCams(CliSession& session, CommandArgs& args) {
     session.setShowProgress(true);
     const int p = *program;
     const int o = *output;
-    const Result<Tracks> tracks = session.run<Tracks>(
-        QStringLiteral("cams read"),
+    const Result<Tracks> tracks = runOnCamCon<Tracks>(
+        session, QStringLiteral("cams read"),
         [p, o](CamConDevice& client, JobContext& job) -> Result<Tracks> {
             const Result<DeviceInfo> info = client.readInfo();
             if (!info) return info.error();

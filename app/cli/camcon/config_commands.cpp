@@ -1,7 +1,7 @@
 // settings read/write and plc read/write: JSON files (model/camcon/settings_file.h,
 // plc_file.h), written through the one write path.
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 
@@ -34,8 +34,9 @@ int readSettings(CliSession& session, CommandArgs& args) {
         SystemSettings settings;
         QStringList skipped;
     };
-    const Result<Read> read = session.run<Read>(
-        QStringLiteral("settings read"), [](CamConDevice& client, JobContext&) -> Result<Read> {
+    const Result<Read> read = runOnCamCon<Read>(
+        session, QStringLiteral("settings read"),
+        [](CamConDevice& client, JobContext&) -> Result<Read> {
             Read result;
             Result<SystemSettings> settings = client.readSettings(&result.skipped);
             if (!settings) return settings.error();
@@ -77,8 +78,8 @@ int readPlc(CliSession& session, CommandArgs& args) {
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     session.setShowProgress(true);
-    const Result<QList<PlcNetwork>> networks = session.run<QList<PlcNetwork>>(
-        QStringLiteral("plc read"),
+    const Result<QList<PlcNetwork>> networks = runOnCamCon<QList<PlcNetwork>>(
+        session, QStringLiteral("plc read"),
         [](CamConDevice& client, JobContext& job) -> Result<QList<PlcNetwork>> {
             if (!client.has(comm::CamConCapability::PlcNetworks))
                 return client.missing(comm::CamConCapability::PlcNetworks);

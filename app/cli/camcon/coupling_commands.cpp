@@ -4,9 +4,9 @@
 // is at fault. Outputs count from 1 as everywhere; programs from 0 as on the
 // device. Every write is checked with its query before and after
 // (comm/usecases/short_coupling.h) and reported as one item.
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/camcon/cli_format.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 
@@ -31,7 +31,7 @@ using comm::table::ShortStatus;
 template <class T>
 Result<T> runShort(CliSession& session, const QString& title,
                    std::function<Result<T>(ShortClient&, CamConDevice&)> work) {
-    return session.run<T>(title, comm::table::withShortCommands<T>(std::move(work)));
+    return runOnCamCon<T>(session, title, comm::table::withShortCommands<T>(std::move(work)));
 }
 
 QString statusText(const ShortStatus& status) {

@@ -1,7 +1,7 @@
 // info, status, scan, raw, users: commands that only read and print.
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/camcon/cli_format.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 
 #include <QJsonArray>
@@ -44,8 +44,8 @@ QString errorStateText(int state) {
 int runInfo(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<DeviceInfo> info = session.run<DeviceInfo>(
-        QStringLiteral("info"),
+    const Result<DeviceInfo> info = runOnCamCon<DeviceInfo>(
+        session, QStringLiteral("info"),
         [](CamConDevice& client, JobContext&) { return client.readInfo(); });
     if (!info) return reportError(info.error());
     if (json) return printJson(QJsonDocument(deviceInfoJson(*info)));
@@ -56,8 +56,8 @@ int runInfo(CliSession& session, CommandArgs& args) {
 int runStatus(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<DeviceStatus> status =
-        session.run<DeviceStatus>(QStringLiteral("status"), [](CamConDevice& client, JobContext&) {
+    const Result<DeviceStatus> status = runOnCamCon<DeviceStatus>(
+        session, QStringLiteral("status"), [](CamConDevice& client, JobContext&) {
             return client.readStatus(kMaxPoints, kMaxPoints);
         });
     if (!status) return reportError(status.error());
@@ -96,14 +96,15 @@ int runScan(CliSession& session, CommandArgs& args) {
             Error::usage(QStringLiteral("scan needs a bus protocol; add --protocol multiuser")));
     }
     session.setShowProgress(true);
-    const Result<QList<int>> found = session.run<QList<int>>(
-        QStringLiteral("scan"), [](CamConDevice& device, JobContext& job) -> Result<QList<int>> {
-            if (!device.has(comm::CamConCapability::BusScan))
-                return device.missing(comm::CamConCapability::BusScan);
-            return device.scanBus(0, 63, [&job](qint64 done, qint64 total) {
-                job.progress(done, total, QStringLiteral("scanning"));
-            });
-        });
+    const Result<QList<int>> found =
+        runOnCamCon<QList<int>>(session, QStringLiteral("scan"),
+                                [](CamConDevice& device, JobContext& job) -> Result<QList<int>> {
+                                    if (!device.has(comm::CamConCapability::BusScan))
+                                        return device.missing(comm::CamConCapability::BusScan);
+                                    return device.scanBus(0, 63, [&job](qint64 done, qint64 total) {
+                                        job.progress(done, total, QStringLiteral("scanning"));
+                                    });
+                                });
     if (!found) return reportError(found.error());
     if (json) return printJson(QJsonDocument(jsonNumbers(*found)));
     QString text;
@@ -123,12 +124,13 @@ int runRaw(CliSession& session, CommandArgs& args) {
             QStringLiteral("raw needs a command that starts with '?' or '!', such as \"?IFGWG\"; "
                            "the checksum is added")));
     }
-    const Result<QByteArray> reply = session.run<QByteArray>(
-        QStringLiteral("raw"), [bytes](CamConDevice& device, JobContext&) -> Result<QByteArray> {
-            if (!device.has(comm::CamConCapability::Terminal))
-                return device.missing(comm::CamConCapability::Terminal);
-            return device.raw(bytes);
-        });
+    const Result<QByteArray> reply =
+        runOnCamCon<QByteArray>(session, QStringLiteral("raw"),
+                                [bytes](CamConDevice& device, JobContext&) -> Result<QByteArray> {
+                                    if (!device.has(comm::CamConCapability::Terminal))
+                                        return device.missing(comm::CamConCapability::Terminal);
+                                    return device.raw(bytes);
+                                });
     if (!reply) return reportError(reply.error());
     printOut(printableBytes(*reply) + u'\n');
     return ExitOk;
@@ -138,8 +140,8 @@ int runUsers(CliSession& session, CommandArgs& args) {
     const Result<QString> verb = takeVerb(args, {QStringLiteral("list")});
     if (!verb) return reportError(verb.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<QList<User>> users = session.run<QList<User>>(
-        QStringLiteral("users"),
+    const Result<QList<User>> users = runOnCamCon<QList<User>>(
+        session, QStringLiteral("users"),
         [](CamConDevice& client, JobContext&) { return client.readUsers(); });
     if (!users) return reportError(users.error());
     QString text;

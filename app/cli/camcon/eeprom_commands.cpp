@@ -1,7 +1,7 @@
 // backup, restore, verify: the whole EEPROM as an image file, on the
 // backup/restore use case (comm/usecases/backup_restore.h).
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 
 #include "comm/camcon/usecases/backup_restore.h"
@@ -21,8 +21,8 @@ int runBackup(CliSession& session, CommandArgs& args) {
     if (path->isEmpty()) return reportError(Error::usage(QStringLiteral("backup needs -o FILE")));
     session.setShowProgress(true);
     const QString file = *path;
-    const Result<EepromImage> image = session.run<EepromImage>(
-        QStringLiteral("backup"), [file](CamConDevice& device, JobContext& job) {
+    const Result<EepromImage> image = runOnCamCon<EepromImage>(
+        session, QStringLiteral("backup"), [file](CamConDevice& device, JobContext& job) {
             return usecases::backupToFile(device, file, UseCaseProgress::of(job));
         });
     if (!image) return reportError(image.error());
@@ -49,8 +49,9 @@ int runRestore(CliSession& session, CommandArgs& args) {
     session.setShowProgress(true);
     const QString file = *path;
     const EepromImage blocks = *image;
-    const Result<usecases::RestoreReport> report = session.run<usecases::RestoreReport>(
-        QStringLiteral("restore"), [file, blocks, options](CamConDevice& device, JobContext& job) {
+    const Result<usecases::RestoreReport> report = runOnCamCon<usecases::RestoreReport>(
+        session, QStringLiteral("restore"),
+        [file, blocks, options](CamConDevice& device, JobContext& job) {
             return usecases::restoreImage(device, blocks, file, options, UseCaseProgress::of(job));
         });
     if (!report) return reportError(report.error());
@@ -78,8 +79,8 @@ int runVerify(CliSession& session, CommandArgs& args) {
     if (!image) return reportError(image.error());
     session.setShowProgress(true);
     const EepromImage blocks = *image;
-    const Result<usecases::VerifyReport> report = session.run<usecases::VerifyReport>(
-        QStringLiteral("verify"), [blocks](CamConDevice& device, JobContext& job) {
+    const Result<usecases::VerifyReport> report = runOnCamCon<usecases::VerifyReport>(
+        session, QStringLiteral("verify"), [blocks](CamConDevice& device, JobContext& job) {
             return usecases::verifyImage(device, blocks, UseCaseProgress::of(job));
         });
     if (!report) return reportError(report.error());

@@ -1,7 +1,7 @@
 // backup-line / verify-line: every device of a Multiuser line into one
 // folder with a manifest, on the line-backup use case.
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 
 #include "comm/camcon/usecases/line_backup.h"
@@ -67,8 +67,8 @@ int runBackupLine(CliSession& session, CommandArgs& args) {
 
     session.setShowProgress(true);
     const QDateTime started = QDateTime::currentDateTimeUtc();
-    const Result<LineManifest> manifest = session.run<LineManifest>(
-        QStringLiteral("backup-line"), [options](CamConDevice& device, JobContext& job) {
+    const Result<LineManifest> manifest = runOnCamCon<LineManifest>(
+        session, QStringLiteral("backup-line"), [options](CamConDevice& device, JobContext& job) {
             return usecases::backupLine(device, options, cancelOnly(job), barFor(job));
         });
     if (!manifest) return reportError(manifest.error());
@@ -113,8 +113,9 @@ int runVerifyLine(CliSession& session, CommandArgs& args) {
     session.setShowProgress(true);
     const QString folder = *directory;
     const Result<QList<usecases::LineVerifyEntry>> entries =
-        session.run<QList<usecases::LineVerifyEntry>>(
-            QStringLiteral("verify-line"), [folder](CamConDevice& device, JobContext& job) {
+        runOnCamCon<QList<usecases::LineVerifyEntry>>(
+            session, QStringLiteral("verify-line"),
+            [folder](CamConDevice& device, JobContext& job) {
                 return usecases::verifyLine(device, folder, cancelOnly(job), barFor(job));
             });
     if (!entries) return reportError(entries.error());

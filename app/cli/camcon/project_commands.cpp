@@ -1,7 +1,7 @@
 // project read / project write: the whole device as one project file, on
 // the read-everything use case and the one write path.
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 
@@ -27,8 +27,8 @@ int readProject(CliSession& session, CommandArgs& args) {
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     session.setShowProgress(true);
-    const Result<usecases::ReadEverything> read = session.run<usecases::ReadEverything>(
-        QStringLiteral("project read"),
+    const Result<usecases::ReadEverything> read = runOnCamCon<usecases::ReadEverything>(
+        session, QStringLiteral("project read"),
         [](CamConDevice& device, JobContext& job) -> Result<usecases::ReadEverything> {
             const Result<DeviceInfo> info = device.readInfo();
             if (!info) return info.error();

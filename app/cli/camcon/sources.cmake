@@ -1,5 +1,7 @@
 # The CamCon's commands of cambench-cli (paths relative to app/).
 target_sources(cambench-cli PRIVATE
+  cli/camcon/camcon_commands.h
+  cli/camcon/camcon_commands.cpp
   cli/camcon/device_commands.cpp
   cli/camcon/cam_commands.cpp
   cli/camcon/table_commands.cpp

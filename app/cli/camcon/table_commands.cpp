@@ -1,6 +1,6 @@
 // deadtimes read/write, names read/write: per-output (and per-program) tables as CSV.
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 

@@ -3,9 +3,9 @@
 // device holds; writes go through the one write path, checked against the
 // device first and reported per item. Over a protocol without the section
 // the read fails with the reason and a write reports the item "not sent".
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/camcon/cli_format.h"
 #include "app/cli/cli_output.h"
-#include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 

@@ -19,8 +19,8 @@ int runWritePlan(CliSession& session, const QString& title, const usecases::Writ
 int runWritePlan(CliSession& session, const QString& title,
                  std::function<Result<WritePlan>(CamConDevice&, const DeviceInfo&)> makePlan) {
     session.setShowProgress(true);
-    const Result<WriteReport> report = session.run<WriteReport>(
-        title, [makePlan](CamConDevice& device, JobContext& job) -> Result<WriteReport> {
+    const Result<WriteReport> report = runOnCamCon<WriteReport>(
+        session, title, [makePlan](CamConDevice& device, JobContext& job) -> Result<WriteReport> {
             const Result<DeviceInfo> info = device.readInfo();
             if (!info) return info.error();
             const Result<WritePlan> plan = makePlan(device, *info);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_options.h"
 #include "app/cli/cli_output.h"
 #include "app/cli/cli_session.h"
@@ -23,13 +24,13 @@ int runWritePlan(CliSession& session, const QString& title, const usecases::Writ
 // `read [-o FILE]` of a section: runs `read` and writes `toText` of what it
 // returns to FILE or stdout.
 template <class T>
-int readToOutput(CliSession& session, CommandArgs& args, const QString& title,
-                 CliSession::Work<T> read, std::function<QByteArray(const T&)> toText) {
+int readToOutput(CliSession& session, CommandArgs& args, const QString& title, CamConWork<T> read,
+                 std::function<QByteArray(const T&)> toText) {
     const Result<QString> path =
         args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<T> value = session.run<T>(title, std::move(read));
+    const Result<T> value = runOnCamCon<T>(session, title, std::move(read));
     if (!value) return reportError(value.error());
     const Status written = writeOutput(*path, toText(*value));
     return written ? ExitOk : reportError(written.error());

@@ -21,6 +21,11 @@ constexpr int kBlockTrailerBytes = 3;
 TableBackend::TableBackend(Rk512Variant variant, Timing3964R timing)
     : m_variant(variant), m_timing(timing), m_link(Link3964R::Priority::High, timing) {}
 
+void TableBackend::setAttempts(int attempts) {
+    m_timing.attempts = attempts;
+    m_link = Link3964R(Link3964R::Priority::High, m_timing);
+}
+
 QString TableBackend::describe() const {
     return QCoreApplication::translate("cambench::comm", "the device (%1)")
         .arg(QLatin1String(rk512VariantInfo(m_variant).name));

@@ -34,6 +34,8 @@ public:
     Rk512Variant variant() const { return m_variant; }
     const Link3964R& link() const { return m_link; }
     const Timing3964R& timing() const { return m_timing; }
+    // Attempts per telegram from now on (Detect's probe: one).
+    void setAttempts(int attempts);
 
     QString describe() const override;
     QString checkHint() const override;

@@ -35,6 +35,10 @@ public:
 
     QString protocolId() const override;
     RequestEngine& engine() override { return m_link.engine(); }
+    Result<QString> probe() override {
+        m_link.setProbing();
+        return identify();
+    }
     bool has(CamConCapability capability) const override;
     QString lacks(CamConCapability capability) const override;
 

@@ -42,6 +42,13 @@ bool isRk512Reply(const QByteArray& reply) {
 
 }  // namespace
 
+void TableLink::setProbing() {
+    m_backend.setAttempts(1);
+    EngineSettings quick = m_engine.settings();
+    quick.retries = 0;
+    m_engine.setSettings(quick);
+}
+
 TableLink::TableLink(Transport& transport, TableSettings settings, LineTiming line)
     : m_settings(settings), m_backend(settings.variant), m_engine(transport, m_backend) {
     EngineSettings engine;

@@ -32,6 +32,8 @@ public:
     int reachableWords() const;
     RequestEngine& engine() { return m_engine; }
     const TableBackend& backend() const { return m_backend; }
+    // One engine attempt of one 3964R attempt per telegram (Detect's probe).
+    void setProbing();
 
     // `count` words from `firstWord` of `area`.
     Result<QList<qint32>> readWords(int area, int firstWord, int count);

@@ -120,8 +120,8 @@ std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfi
     return line;
 }
 
-std::unique_ptr<SimEndpoint> makeSimEndpoint(const SimPortConfig& config,
-                                             const SimProfile& profile) {
+std::unique_ptr<SimCamConEndpoint> makeSimEndpoint(const SimPortConfig& config,
+                                                   const SimProfile& profile) {
     if (!config.tableVariant) return makeSimLine(config, profile);
     auto line = std::make_unique<SimTableLine>(
         *config.tableVariant, makeDevice(config, profile, config.devices.value(0)));

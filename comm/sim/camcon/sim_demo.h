@@ -1,5 +1,6 @@
 #pragma once
 
+#include "sim_camcon_endpoint.h"
 #include "sim_port_config.h"
 #include "sim_profile.h"
 
@@ -29,7 +30,7 @@ void fillUsers(SimDevice& device, int count);
 std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfile& profile = {});
 // The line `config` describes: ASCII (makeSimLine) or, with a table
 // variant, a 3964R line to one device in the same demo or benchmark state.
-std::unique_ptr<SimEndpoint> makeSimEndpoint(const SimPortConfig& config,
-                                             const SimProfile& profile = {});
+std::unique_ptr<SimCamConEndpoint> makeSimEndpoint(const SimPortConfig& config,
+                                                   const SimProfile& profile = {});
 
 }  // namespace cambench::comm

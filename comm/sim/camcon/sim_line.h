@@ -1,9 +1,9 @@
 #pragma once
 
-#include "comm/sim/sim_endpoint.h"
 #include "comm/sim/sim_faults.h"
 #include "comm/sim/sim_injections.h"
 #include "comm/sim/sim_output.h"
+#include "sim_camcon_endpoint.h"
 #include "sim_device.h"
 
 #include "comm/camcon/ascii/stream_decoder.h"
@@ -24,7 +24,7 @@ namespace cambench::comm {
 // only the addressed device answers, and a repeated block number from the
 // same PC makes it repeat its last answer without executing again. A frame
 // with a bad checksum gets no answer, as on a real line.
-class SimLine : public SimEndpoint {
+class SimLine : public SimCamConEndpoint {
 public:
     struct Counters {
         int frames = 0;        // requests decoded with a good checksum

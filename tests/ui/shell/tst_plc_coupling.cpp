@@ -39,7 +39,7 @@ struct TableSimulator {
     }
     comm::SimDevice& device() { return *endpoint->device(0); }
 
-    std::unique_ptr<comm::SimEndpoint> endpoint;
+    std::unique_ptr<comm::SimCamConEndpoint> endpoint;
     std::unique_ptr<comm::SimPacer> pacer;
     std::unique_ptr<comm::SimPtyServer> server;
     bool open = false;

@@ -3,7 +3,7 @@
 #include "sim_table_device.h"
 
 #include "comm/camcon/table/link_3964r.h"
-#include "comm/sim/sim_endpoint.h"
+#include "comm/sim/camcon/sim_camcon_endpoint.h"
 #include "comm/sim/sim_faults.h"
 
 #include <QRandomGenerator>
@@ -30,7 +30,7 @@ class SimDevice;
 // reply to the one before supersedes that reply (the PC gave up on it): the
 // device drops it and answers the new one. Provisional: the manuals do not
 // say what a CamCon does then.
-class SimTableLine : public SimEndpoint {
+class SimTableLine : public SimCamConEndpoint {
 public:
     struct Counters {
         int telegrams = 0;  // executed

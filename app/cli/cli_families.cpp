@@ -1,0 +1,14 @@
+// Which families' commands cambench-cli has: one line per family.
+#include "commands.h"
+
+#include "app/cli/camcon/camcon_commands.h"
+
+namespace cambench::cli {
+
+void registerCliCommands() {
+    CommandRegistry& registry = CommandRegistry::instance();
+    registerShellCommands(registry);
+    registerCamConCommands(registry);
+}
+
+}  // namespace cambench::cli

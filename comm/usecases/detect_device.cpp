@@ -1,0 +1,77 @@
+#include "detect_device.h"
+
+#include "comm/device/family_registry.h"
+#include "comm/transport/transport_registry.h"
+#include "comm/worker/job.h"
+
+namespace cambench::usecases {
+
+namespace {
+
+QString lineText(const comm::SerialSettings& serial) {
+    return QStringLiteral("%1 baud %2%3%4")
+        .arg(serial.baud)
+        .arg(serial.dataBits)
+        .arg(QLatin1Char(serial.parity))
+        .arg(serial.stopBits);
+}
+
+QList<const comm::ProtocolInfo*> protocolsToTry() {
+    QList<const comm::ProtocolInfo*> protocols;
+    for (const comm::FamilyInfo* family : comm::FamilyRegistry::instance().all()) {
+        if (!family->built) continue;
+        for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all()) {
+            if (protocol->familyId == family->id) protocols << protocol;
+        }
+    }
+    return protocols;
+}
+
+}  // namespace
+
+QString attemptLine(const DetectAttempt& attempt) {
+    const QString how = QStringLiteral("%1, %2").arg(attempt.protocolId, lineText(attempt.serial));
+    if (!attempt.found.isEmpty()) return QStringLiteral("%1 (%2)").arg(attempt.found, how);
+    return QStringLiteral("%1: %2").arg(how, attempt.failure);
+}
+
+Result<DetectResult> detectDevice(const QString& port, comm::JobContext& job,
+                                  const DetectSettings& settingsFor) {
+    DetectResult result;
+    result.port = port;
+    const QList<const comm::ProtocolInfo*> protocols = protocolsToTry();
+    for (const comm::ProtocolInfo* protocol : protocols) {
+        if (job.cancelled()) {
+            result.cancelled = true;
+            break;
+        }
+        job.progress(result.attempts.size(), protocols.size(), protocol->title);
+        DetectAttempt attempt{protocol->familyId, protocol->id, protocol->defaultSerial, {}, {}};
+        Result<std::unique_ptr<comm::Transport>> transport =
+            comm::makeTransport({port, protocol->defaultSerial, protocol->id});
+        if (!transport) return transport.error();
+        if (const Status opened = (*transport)->open(); !opened) return opened.error();
+        const comm::ProtocolSettingsPtr settings =
+            settingsFor ? settingsFor(*protocol)
+                        : comm::ProtocolSettingsPtr(protocol->makeSettings());
+        Result<std::unique_ptr<comm::DeviceConnection>> device =
+            protocol->connect(**transport, *settings, comm::lineTimingFor(protocol->defaultSerial));
+        if (device) {
+            const Result<QString> identity = (*device)->probe();
+            if (identity)
+                attempt.found = *identity;
+            else
+                attempt.failure = identity.error().message;
+        } else {
+            attempt.failure = device.error().message;
+        }
+        device = Error::communication(QString());  // the connection before its transport
+        (*transport)->close();
+        result.attempts << attempt;
+        if (!attempt.found.isEmpty()) break;
+    }
+    job.progress(protocols.size(), protocols.size());
+    return result;
+}
+
+}  // namespace cambench::usecases

@@ -1,0 +1,132 @@
+// The connection page's family choice and Detect (issue 13, point 3): the
+// real GUI, the real QSerialPort, a simulated CamCon on a pseudo-terminal
+// that speaks the table interface (or nothing at all).
+#include "shell_fixture.h"
+
+#include "ui/device_session.h"
+
+#include "comm/sim/camcon/sim_demo.h"
+#include "comm/sim/sim_pacer.h"
+#include "comm/sim/sim_pty_server.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QStandardItemModel>
+
+using namespace cambench;
+using namespace cambench::test;
+
+namespace {
+
+// A simulated CamCon on a pty speaking `protocol`; `dead`: never answers.
+class PtyDevice {
+public:
+    PtyDevice(const QString& protocol, bool dead = false) {
+        comm::SimPortConfig config;
+        config.throttle = false;
+        config.faults.dead = dead;
+        comm::applySimProtocol(config, protocol);
+        m_line = comm::makeSimEndpoint(config);
+        m_server = std::make_unique<comm::SimPtyServer>(*m_line, m_pacer);
+        m_open = m_server->open().ok();
+    }
+    bool isOpen() const { return m_open; }
+    QString path() const { return m_server->slavePath(); }
+
+private:
+    std::unique_ptr<comm::SimEndpoint> m_line;
+    comm::SimPacer m_pacer{9600, false};
+    std::unique_ptr<comm::SimPtyServer> m_server;
+    bool m_open = false;
+};
+
+QString waitForDetect(ConnectionPage* page) {
+    auto* result = page->findChild<QLabel*>(QStringLiteral("detectResult"));
+    (void)QTest::qWaitFor(
+        [result] {
+            return result->isVisible() && !result->text().startsWith(QLatin1String("Detecting"));
+        },
+        kDeviceTimeoutMs);
+    return result->text();
+}
+
+}  // namespace
+
+class TestDetect : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { useTestSettings(); }
+
+    // Families are offered; one not built yet is shown, greyed, never hidden;
+    // the protocol list is the family's.
+    void familiesAndTheirProtocols() {
+        Shell shell;
+        shell.start(QStringLiteral("sim:throttle=0"), QStringLiteral("3964r-n96"));
+        ConnectionPage* page = shell.window()->connectionPage();
+        auto* families = page->findChild<QComboBox*>(QStringLiteral("familyBox"));
+        QVERIFY(families);
+        QCOMPARE(page->family(), QStringLiteral("camcon"));
+        const int mc1 = families->findData(QStringLiteral("mc1"));
+        QVERIFY(mc1 >= 0);
+        const auto* model = qobject_cast<QStandardItemModel*>(families->model());
+        QVERIFY(!(model->item(mc1)->flags() & Qt::ItemIsEnabled));
+        QVERIFY(families->itemText(mc1).contains(QLatin1String("not built")));
+        QCOMPARE(page->protocolSettings()->protocolId(), QStringLiteral("3964r-n96"));
+    }
+
+    // A table-interface CamCon on a pty: Detect closes the connection (after
+    // asking), finds it, fills in protocol and baud rate; Connect then reads it.
+    void detectFindsTheTableInterface() {
+        PtyDevice device(QStringLiteral("3964r-n96"));
+        QVERIFY(device.isOpen());
+        std::unique_ptr<Shell> shell = startOnSimulator();
+        QVERIFY(shell);
+        ConnectionPage* page = shell->window()->connectionPage();
+        page->setPort(device.path());
+        NextDialog<QMessageBox> yes(
+            [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+        page->findChild<QPushButton*>(QStringLiteral("detectButton"))->click();
+        const QString text = waitForDetect(page);
+        QVERIFY2(text.contains(QLatin1String("Found on")), qPrintable(text));
+        QVERIFY2(text.contains(QLatin1String("3964r-n96")), qPrintable(text));
+        QCOMPARE(yes.answered(), 1);
+        QCOMPARE(shell->session()->state(), comm::ConnectionState::Disconnected);
+        QCOMPARE(page->protocolSettings()->protocolId(), QStringLiteral("3964r-n96"));
+        QCOMPARE(page->connectionSettings().serial.baud, 9600);
+        QCOMPARE(page->connectionSettings().port, device.path());
+
+        QSignalSpy loaded(shell->window(), &MainWindow::loaded);
+        shell->window()->connectAndLoad();
+        QVERIFY(loaded.wait(kDeviceTimeoutMs));
+        QVERIFY(loaded.first().first().toBool());
+        QCOMPARE(shell->session()->protocol().protocolId(), QStringLiteral("3964r-n96"));
+    }
+
+    // Nothing answers: every protocol tried is named, and what to check.
+    void nothingAnswersNamesEveryTry() {
+        PtyDevice device(QStringLiteral("standard"), true);
+        QVERIFY(device.isOpen());
+        Shell shell;
+        shell.start(device.path(), QStringLiteral("standard"));
+        ConnectionPage* page = shell.window()->connectionPage();
+        QVERIFY(QTest::qWaitFor(
+            [&] { return shell.session()->state() != comm::ConnectionState::Connecting; },
+            kDeviceTimeoutMs));
+        // Whether or not the first connect counts as connected, a question
+        // may come: answer it.
+        NextDialog<QMessageBox> yes(
+            [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+        page->detect();
+        const QString text = waitForDetect(page);
+        QVERIFY2(text.contains(QLatin1String("Nothing answered on ") + device.path()),
+                 qPrintable(text));
+        for (const char* protocol : {"standard", "multiuser", "3964r-n96", "3964r-e38"})
+            QVERIFY2(text.contains(QLatin1String(protocol)), qPrintable(text));
+        QVERIFY(text.contains(QLatin1String("Check the cable")));
+    }
+};
+
+QTEST_MAIN(TestDetect)
+#include "tst_detect.moc"
