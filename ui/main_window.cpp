@@ -15,6 +15,7 @@
 #include "device_reads.h"
 #include "device_session.h"
 #include "eeprom_lock_page.h"
+#include "family_pages.h"
 #include "gui_settings.h"
 #include "incoming_values.h"
 #include "language.h"
@@ -138,6 +139,14 @@ void MainWindow::createPages() {
                gate(new ProgrammingProgramPage(m_session, m_workspace), Cap::ProgrammingProgram),
                gate(new EepromLockPage(m_session, m_workspace), Cap::EepromLock),
                gate(new PlcCouplingPage(m_session, m_workspace), Cap::ShortCommands)};
+    // The sections above are the CamCon's (the connection page the shell's);
+    // other families' pages come from their registration.
+    m_pageFamilies.fill(QStringLiteral("camcon"), m_pages.size());
+    m_pageFamilies[Connection] = QString();
+    for (const FamilyPage& registered : FamilyPageRegistry::instance().all()) {
+        m_pages << registered.create(m_session);
+        m_pageFamilies << registered.familyId;
+    }
     for (SectionPage* page : m_pages) {
         m_stack->addWidget(page);
         m_nav->addItem(page->sectionTitle());
@@ -149,6 +158,33 @@ void MainWindow::createPages() {
     connect(m_monitor, &MonitorPage::statusUpdated, m_cams, &CamPage::showStatus);
     connect(m_monitor, &MonitorPage::liveEnded, m_cams, &CamPage::clearLive);
     connect(m_connection, &ConnectionPage::deviceSelected, this, [this] { readAtStart(0); });
+    showFamilyPages();
+}
+
+void MainWindow::showFamilyPages() {
+    const QString family = sessionFamily(*m_session);
+    for (int row = 0; row < m_pages.size(); ++row) {
+        const QString& pageFamily = m_pageFamilies.at(row);
+        m_nav->item(row)->setHidden(!pageFamily.isEmpty() && pageFamily != family);
+    }
+    if (m_nav->currentItem() && m_nav->currentItem()->isHidden()) showSection(Connection);
+}
+
+void MainWindow::identifyOtherFamily() {
+    m_session->worker().run<Result<QString>>(
+        this, comm::JobPriority::User, tr("Identify device"),
+        [](comm::JobContext& job) -> Result<QString> {
+            if (!job.device()) return Error::communication(tr("not connected"));
+            return job.device()->identify();
+        },
+        [this](Result<QString> identity) {
+            const int pending = m_pendingProgram;
+            m_pendingProgram = -1;
+            showMessage(identity ? tr("Connected: %1").arg(*identity)
+                                 : tr("The device did not identify itself: %1")
+                                       .arg(asSentence(identity.error().message)));
+            if (pending >= 0) Q_EMIT loaded(identity.ok());
+        });
 }
 
 QList<SectionPage*> MainWindow::dataPages() const {
@@ -377,6 +413,7 @@ void MainWindow::updateConnection() {
     const comm::ConnectionState state = m_session->state();
     if (state == comm::ConnectionState::Lost)
         showMessage(tr("Connection lost: %1").arg(asSentence(m_session->lastMessage())));
+    showFamilyPages();
     // Every connect and reconnect may reach another device.
     if (state == comm::ConnectionState::Connected) checkDevice();
     // A connect that failed (a user's disconnect carries no message).
@@ -401,6 +438,11 @@ void MainWindow::readAtStart(int program) {
 }
 
 void MainWindow::checkDevice() {
+    // The CamCon's pages read its sections; another family's read their own.
+    if (sessionFamily(*m_session) != QLatin1String("camcon")) {
+        identifyOtherFamily();
+        return;
+    }
     ++m_startReads;
     checkConnectedDevice(this, m_session, m_workspace, [this](const Status& status, bool other) {
         --m_startReads;

@@ -119,6 +119,12 @@ private:
     void updateLivePolling();
     void updateTitle();
     void updateConnection();
+    // Shows the pages of the family the session's protocol belongs to and
+    // hides the others'.
+    void showFamilyPages();
+    // Connected to a device of another family than the CamCon: its identity,
+    // for the status bar and `loaded`.
+    void identifyOtherFamily();
     // Identifies the device on the line (checkConnectedDevice), then reads
     // the start sections when a load is pending or another device answers.
     void checkDevice();
@@ -151,6 +157,7 @@ private:
     MonitorPage* m_monitor = nullptr;
     TerminalPage* m_terminal = nullptr;
     QList<SectionPage*> m_pages;
+    QList<QString> m_pageFamilies;  // per page: its family, empty for the shell's
     QString m_lastMessage;
     int m_pendingProgram = -1;
     quint64 m_readJob = 0;  // the whole-device read running, 0 = none

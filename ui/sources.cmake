@@ -18,6 +18,8 @@ target_sources(cambench_ui PRIVATE
   workspace_item.h
   section_page.h
   section_page.cpp
+  family_pages.h
+  family_pages.cpp
   replace_edits_question.h
   replace_edits_question.cpp
   write_plan_builder.h

@@ -1,6 +1,8 @@
 # cambench-cli: the command-line tool (paths relative to app/).
-add_executable(cambench-cli
-  cli/main.cpp
+# The front every family shares - options, exit codes, output, the session,
+# the command registry, the shell's own commands - is a library, so that a
+# test can host a family of its own in it.
+add_library(cambench_cli_front STATIC
   cli/exit_codes.h
   cli/cli_options.h
   cli/cli_options.cpp
@@ -14,11 +16,19 @@ add_executable(cambench-cli
   cli/cli_session.cpp
   cli/commands.h
   cli/commands.cpp
+  cli/command_line.h
+  cli/command_line.cpp
   cli/port_commands.cpp
   cli/detect_command.cpp
+)
+target_include_directories(cambench_cli_front PUBLIC ${PROJECT_SOURCE_DIR})
+target_link_libraries(cambench_cli_front PUBLIC cambench_usecases cambench_comm cambench_model Qt6::Core)
+
+add_executable(cambench-cli
+  cli/main.cpp
   cli/cli_families.cpp
 )
 # The CamCon's command groups.
 include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)
-target_link_libraries(cambench-cli PRIVATE cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
+target_link_libraries(cambench-cli PRIVATE cambench_cli_front cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

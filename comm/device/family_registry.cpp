@@ -22,34 +22,6 @@ FamilyRegistry& FamilyRegistry::instance() {
     return registry;
 }
 
-void FamilyRegistry::add(FamilyInfo info) {
-    for (auto& existing : m_families) {
-        if (existing->id == info.id) {
-            *existing = std::move(info);  // registering again replaces
-            return;
-        }
-    }
-    m_families.append(std::make_shared<FamilyInfo>(std::move(info)));
-}
-
-const FamilyInfo* FamilyRegistry::find(const QString& id) const {
-    for (const auto& info : m_families)
-        if (info->id.compare(id, Qt::CaseInsensitive) == 0) return info.get();
-    return nullptr;
-}
-
-QList<const FamilyInfo*> FamilyRegistry::all() const {
-    QList<const FamilyInfo*> list;
-    for (const auto& info : m_families) list.append(info.get());
-    return list;
-}
-
-QString FamilyRegistry::idList() const {
-    QStringList ids;
-    for (const auto& info : m_families) ids.append(info->id);
-    return ids.join(QStringLiteral(", "));
-}
-
 Result<const FamilyInfo*> FamilyRegistry::usable(const QString& id) const {
     const FamilyInfo* family = find(id);
     if (!family) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "id_registry.h"
+
 #include "model/result.h"
 
 #include <QList>
@@ -29,21 +31,13 @@ struct FamilyInfo {
                                 const QString& defaultProtocol);
 };
 
-class FamilyRegistry {
+class FamilyRegistry : public IdRegistry<FamilyInfo, &FamilyInfo::id> {
 public:
     static FamilyRegistry& instance();
 
-    void add(FamilyInfo info);
-    const FamilyInfo* find(const QString& id) const;
-    QList<const FamilyInfo*> all() const;
-    // "camcon, mc1, compax3" for usage messages.
-    QString idList() const;
     // The family `id` names when this build can talk to it; otherwise a
     // usage error naming the families there are, or saying it is not built.
     Result<const FamilyInfo*> usable(const QString& id) const;
-
-private:
-    QList<std::shared_ptr<FamilyInfo>> m_families;
 };
 
 }  // namespace cambench::comm

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "device_connection.h"
+#include "id_registry.h"
 #include "protocol_settings.h"
 
 #include "comm/engine/line_timing.h"
@@ -33,18 +34,9 @@ struct ProtocolInfo {
         connect;
 };
 
-class ProtocolRegistry {
+class ProtocolRegistry : public IdRegistry<ProtocolInfo, &ProtocolInfo::id> {
 public:
     static ProtocolRegistry& instance();
-
-    void add(ProtocolInfo info);
-    const ProtocolInfo* find(const QString& id) const;
-    QList<const ProtocolInfo*> all() const;
-    // "standard, multiuser, 3964r-n96" for usage messages.
-    QString idList() const;
-
-private:
-    QList<std::shared_ptr<ProtocolInfo>> m_protocols;
 };
 
 // The line timing a serial setting gives: bits per byte from data bits,

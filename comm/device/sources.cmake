@@ -8,5 +8,6 @@ target_sources(cambench_comm PRIVATE
   device/protocol_registry.h
   device/protocol_registry.cpp
   device/family_registry.h
+  device/id_registry.h
   device/family_registry.cpp
 )

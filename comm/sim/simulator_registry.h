@@ -4,6 +4,7 @@
 #include "sim_faults.h"
 #include "sim_pacer.h"
 
+#include "comm/device/id_registry.h"
 #include "comm/transport/transport.h"
 #include "model/result.h"
 
@@ -58,19 +59,13 @@ std::optional<double> parseProbability(const QString& text);
 // "sim" or "sim:key=value;...": a port of the in-process simulator.
 bool isSimPort(const QString& port);
 
-class SimulatorRegistry {
+class SimulatorRegistry : public IdRegistry<SimulatorInfo, &SimulatorInfo::familyId> {
 public:
     static SimulatorRegistry& instance();
 
-    void add(SimulatorInfo info);
-    const SimulatorInfo* find(const QString& familyId) const;
     // The simulator of the family `protocol` belongs to; the first one
     // registered when the protocol is empty or unknown.
     const SimulatorInfo* forProtocol(const QString& protocol) const;
-    QList<const SimulatorInfo*> all() const;
-
-private:
-    QList<std::shared_ptr<SimulatorInfo>> m_simulators;
 };
 
 }  // namespace cambench::comm

@@ -1,0 +1,41 @@
+#pragma once
+
+// A minimal device family that exists only in the tests (issue 13, point 6):
+// one protocol ("fake-line": a text line per request and reply), its
+// device interface, a simulator, one GUI page and one CLI command group.
+// It is registered into the same registries the built-in families use,
+// from the test alone: the shell must host it without an edit outside.
+
+#include "comm/device/device_connection.h"
+#include "comm/engine/framing_backend.h"
+
+#include <QAtomicInt>
+
+namespace cambench::fake {
+
+// The device interface of the family: what its page and command use.
+class FakeDevice : public comm::DeviceConnection {
+public:
+    FakeDevice(comm::Transport& transport, const comm::LineTiming& line);
+    ~FakeDevice() override;
+
+    QString familyId() const override { return QStringLiteral("fake"); }
+    QString protocolId() const override { return QStringLiteral("fake-line"); }
+    comm::RequestEngine& engine() override;
+    Result<QString> identify() override;
+    // "PING n" -> "PONG n".
+    Result<QString> ping(int n);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+};
+
+// The requests the simulated fake devices have received (all of them).
+int requestsReceived();
+
+// Registers family, protocol and simulator (comm), page (GUI) and command
+// group (CLI). Safe to call more than once.
+void registerFakeFamily();
+
+}  // namespace cambench::fake

@@ -1,0 +1,109 @@
+// Issue 13, point 6: a device family that exists only in this test -
+// protocol, device interface, simulator, one page, one CLI command (see
+// fake_family.h) - registered from here alone, is hosted by the shell: the
+// GUI connects to it on the in-process simulator, shows its page and hides
+// the CamCon's, and cambench-cli's front runs its command.
+#include "fake_family.h"
+
+#include "app/cli/command_line.h"
+#include "ui/connection_page.h"
+#include "ui/device_session.h"
+#include "ui/main_window.h"
+#include "ui/shell.h"
+
+#include <QCoreApplication>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+
+using namespace cambench;
+
+namespace {
+
+constexpr int kTimeoutMs = 60000;  // bounds a wait; never a pass/fail threshold
+
+QListWidgetItem* navItem(MainWindow* window, const QString& title) {
+    auto* nav = window->findChild<QListWidget*>();
+    const QList<QListWidgetItem*> items = nav->findItems(title, Qt::MatchExactly);
+    return items.isEmpty() ? nullptr : items.first();
+}
+
+bool connectVia(Shell& shell, const QString& protocol) {
+    ConnectionPage* page = shell.window()->connectionPage();
+    page->setPort(QStringLiteral("sim:throttle=0"));
+    page->setProtocol(protocol);
+    QSignalSpy loaded(shell.window(), &MainWindow::loaded);
+    shell.window()->connectAndLoad(0);
+    return loaded.wait(kTimeoutMs) && loaded.first().first().toBool();
+}
+
+}  // namespace
+
+class TestFakeFamily : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName(QStringLiteral("CamBench"));
+        QCoreApplication::setApplicationName(QStringLiteral("CamBench-tests"));
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        fake::registerFakeFamily();
+    }
+
+    void guiHostsTheFamily() {
+        Shell shell;
+        shell.start(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
+        MainWindow* window = shell.window();
+        QSignalSpy loaded(window, &MainWindow::loaded);
+        QVERIFY(loaded.wait(kTimeoutMs));
+        QVERIFY(loaded.first().first().toBool());
+        QVERIFY2(window->lastMessage().contains(QLatin1String("FAKE-1 simulated")),
+                 qPrintable(window->lastMessage()));
+        QCOMPARE(window->connectionPage()->family(), QStringLiteral("fake"));
+
+        // Its page shows; the CamCon's hide.
+        QListWidgetItem* fakeItem = navItem(window, QStringLiteral("Fake device"));
+        QVERIFY(fakeItem);
+        QVERIFY(!fakeItem->isHidden());
+        QListWidgetItem* cams = window->findChild<QListWidget*>()->item(MainWindow::Cams);
+        QVERIFY(cams->isHidden());
+        QVERIFY(!window->findChild<QListWidget*>()->item(MainWindow::Connection)->isHidden());
+
+        // The page works with its device through the worker.
+        const int before = fake::requestsReceived();
+        window->findChild<QListWidget*>()->setCurrentItem(fakeItem);
+        auto* page = window->findChild<QWidget*>(QStringLiteral("fakePage"));
+        QVERIFY(page && page->isVisible());
+        page->findChild<QPushButton*>(QStringLiteral("fakePing"))->click();
+        auto* answer = page->findChild<QLabel*>(QStringLiteral("fakeAnswer"));
+        QTRY_COMPARE_WITH_TIMEOUT(answer->text(), QStringLiteral("PONG 7"), kTimeoutMs);
+        QVERIFY(fake::requestsReceived() > before);
+
+        // Back to a CamCon: its pages return, the fake page hides.
+        QVERIFY(connectVia(shell, QStringLiteral("standard")));
+        QVERIFY(fakeItem->isHidden());
+        QVERIFY(!cams->isHidden());
+        QCOMPARE(window->connectionPage()->family(), QStringLiteral("camcon"));
+    }
+
+    void cliHostsTheFamily() {
+        const int before = fake::requestsReceived();
+        QCOMPARE(cli::runCommandLine({QStringLiteral("--family"), QStringLiteral("fake"),
+                                      QStringLiteral("ping"), QStringLiteral("5")}),
+                 0);
+        QVERIFY(fake::requestsReceived() > before);
+        // Its command belongs to its family: refused for the CamCon (usage).
+        QCOMPARE(cli::runCommandLine({QStringLiteral("ping"), QStringLiteral("5")}), 2);
+        // And the CamCon's commands are not the fake's.
+        QCOMPARE(cli::runCommandLine(
+                     {QStringLiteral("--family"), QStringLiteral("fake"), QStringLiteral("info")}),
+                 2);
+    }
+};
+
+QTEST_MAIN(TestFakeFamily)
+#include "tst_fake_family.moc"
