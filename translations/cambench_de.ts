@@ -2275,6 +2275,70 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
         <translation>Zuletzt verbunden: CamCon %1, Gerätenummer %2, um %3. Nicht unbedingt das Gerät an der jetzt gewählten Schnittstelle.</translation>
     </message>
+    <message>
+        <source>Detect</source>
+        <translation>Gerät suchen</translation>
+    </message>
+    <message>
+        <source>Find out what is on this port: each device family&apos;s protocols are tried at their usual line settings, with identification queries only.</source>
+        <translation>Herausfinden, was an dieser Schnittstelle hängt: Die Protokolle jeder Gerätefamilie werden mit ihren üblichen Leitungseinstellungen versucht, nur mit Abfragen zur Kennung.</translation>
+    </message>
+    <message>
+        <source>Device family:</source>
+        <translation>Gerätefamilie:</translation>
+    </message>
+    <message>
+        <source>%1 (not built into this CamBench yet)</source>
+        <translation>%1 (in dieses CamBench noch nicht eingebaut)</translation>
+    </message>
+    <message>
+        <source>Its protocol, simulator and pages are not built yet.</source>
+        <translation>Ihr Protokoll, Simulator und ihre Seiten sind noch nicht gebaut.</translation>
+    </message>
+    <message>
+        <source>Choose or type a port first.</source>
+        <translation>Wählen oder tippen Sie zuerst eine Schnittstelle.</translation>
+    </message>
+    <message>
+        <source>Detect closes the connection to %1 and then tries each device family on %2. Nothing is written to a device; your edits stay. Go on?</source>
+        <translation>Die Suche trennt die Verbindung zu %1 und versucht dann jede Gerätefamilie an %2. Auf kein Gerät wird geschrieben; Ihre Änderungen bleiben. Fortfahren?</translation>
+    </message>
+    <message>
+        <source>Detecting on %1…</source>
+        <translation>Suche an %1…</translation>
+    </message>
+    <message>
+        <source>Detect device on %1</source>
+        <translation>Gerät an %1 suchen</translation>
+    </message>
+    <message>
+        <source>Detect could not use the port: %1</source>
+        <translation>Die Suche konnte die Schnittstelle nicht nutzen: %1</translation>
+    </message>
+    <message>
+        <source>Found on %1: %2. The protocol and baud rate are filled in; press Connect to work with it.</source>
+        <translation>Gefunden an %1: %2. Protokoll und Baudrate sind eingetragen; drücken Sie Verbinden, um damit zu arbeiten.</translation>
+    </message>
+    <message>
+        <source>Detect: %1</source>
+        <translation>Suche: %1</translation>
+    </message>
+    <message>
+        <source>Detect was cancelled; nothing answered on %1 so far. Tried:</source>
+        <translation>Die Suche wurde abgebrochen; bis dahin hat an %1 nichts geantwortet. Versucht:</translation>
+    </message>
+    <message>
+        <source>Nothing answered on %1. Tried:</source>
+        <translation>An %1 hat nichts geantwortet. Versucht:</translation>
+    </message>
+    <message>
+        <source>Check the cable, the device&apos;s power and its interface settings (for an RS485 bus also the device number), then Detect again.</source>
+        <translation>Prüfen Sie Kabel, Stromversorgung des Geräts und seine Schnittstelleneinstellungen (bei einem RS485-Bus auch die Gerätenummer) und suchen Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>Detect: nothing answered on %1</source>
+        <translation>Suche: an %1 hat nichts geantwortet</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -3109,6 +3173,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>The device did not identify itself: %1 Your edits are kept.</source>
         <translation>Das Gerät hat sich nicht identifiziert: %1 Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Identify device</source>
+        <translation>Gerät erkennen</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Verbunden: %1</translation>
+    </message>
+    <message>
+        <source>The device did not identify itself: %1</source>
+        <translation>Das Gerät hat sich nicht identifiziert: %1</translation>
     </message>
 </context>
 <context>

@@ -2274,6 +2274,70 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Detect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find out what is on this port: each device family&apos;s protocols are tried at their usual line settings, with identification queries only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device family:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (not built into this CamBench yet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its protocol, simulator and pages are not built yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose or type a port first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect closes the connection to %1 and then tries each device family on %2. Nothing is written to a device; your edits stay. Go on?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detecting on %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect device on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect could not use the port: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Found on %1: %2. The protocol and baud rate are filled in; press Connect to work with it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect was cancelled; nothing answered on %1 so far. Tried:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing answered on %1. Tried:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the cable, the device&apos;s power and its interface settings (for an RS485 bus also the device number), then Detect again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect: nothing answered on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -3106,6 +3170,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>The device did not identify itself: %1 Your edits are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identify device</source>
+        <translation type="unfinished">Identify device</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device did not identify itself: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1,8 +1,9 @@
 #include "connection_page.h"
+#include "ui/camcon/camcon_jobs.h"
 
 #include "device_session.h"
 #include "sentence.h"
-#include "workspace.h"
+#include "ui/camcon/workspace.h"
 
 #include "ui/protocols/protocol_settings_widget.h"
 
@@ -384,8 +385,8 @@ void ConnectionPage::scanBus() {
         comm::ProtocolRegistry::instance().find(m_session->protocol().protocolId());
     if (!info || !info->isBus) {
         // A point-to-point line has exactly one device: identify it.
-        m_session->run<QList<int>>(
-            this, tr("Identify device"),
+        runOnCamCon<QList<int>>(
+            m_session, this, tr("Identify device"),
             [](comm::CamConDevice& client, comm::JobContext&) -> Result<QList<int>> {
                 const auto info = client.readInfo();
                 if (!info) return info.error();
@@ -394,8 +395,8 @@ void ConnectionPage::scanBus() {
             [this](Result<QList<int>> devices) { showScanResult(devices); });
         return;
     }
-    m_session->run<QList<int>>(
-        this, tr("Scan bus"),
+    runOnCamCon<QList<int>>(
+        m_session, this, tr("Scan bus"),
         [](comm::CamConDevice& device, comm::JobContext& job) -> Result<QList<int>> {
             if (!device.has(comm::CamConCapability::BusScan))
                 return device.missing(comm::CamConCapability::BusScan);

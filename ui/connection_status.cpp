@@ -2,7 +2,7 @@
 
 #include "device_session.h"
 #include "live_freshness.h"
-#include "workspace.h"
+#include "ui/camcon/workspace.h"
 
 #include <QHBoxLayout>
 #include <QPushButton>

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "comm/camcon/camcon_device.h"
 #include "comm/device/protocol_settings.h"
 #include "comm/worker/comm_worker.h"
 #include "live_freshness.h"
@@ -53,19 +52,21 @@ public:
     // stale by a lost line, reset by a connect to another device.
     LiveFreshness* freshness() { return &m_freshness; }
 
-    template <class T>
-    using Work = std::function<Result<T>(comm::CamConDevice&, comm::JobContext&)>;
+    // A job written for one family's device interface (CamConDevice, ...).
+    template <class Device, class T>
+    using Work = std::function<Result<T>(Device&, comm::JobContext&)>;
 
-    // Runs `work` with the connected CamCon on the worker thread; `done`
-    // gets the result on `context`'s thread. The GUI never waits.
-    template <class T>
-    quint64 run(QObject* context, const QString& title, Work<T> work,
+    // Runs `work` with the connected device on the worker thread; `done`
+    // gets the result on `context`'s thread. The GUI never waits. A Usage
+    // error when the connection reaches another family.
+    template <class Device, class T>
+    quint64 run(QObject* context, const QString& title, Work<Device, T> work,
                 std::function<void(Result<T>)> done,
                 comm::JobPriority priority = comm::JobPriority::User, const QString& pollKey = {}) {
         return m_worker.run<Result<T>>(
             context, priority, title,
             [work = std::move(work)](comm::JobContext& job) -> Result<T> {
-                Result<comm::CamConDevice*> device = job.family<comm::CamConDevice>();
+                Result<Device*> device = job.family<Device>();
                 if (!device) return device.error();
                 return work(**device, job);
             },

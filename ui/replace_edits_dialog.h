@@ -1,6 +1,6 @@
 #pragma once
 
-#include "incoming_values.h"
+#include "ui/camcon/incoming_values.h"
 
 #include <QDialog>
 #include <QMap>

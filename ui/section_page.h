@@ -1,7 +1,7 @@
 #pragma once
 
-#include "device_writer.h"
-#include "workspace_item.h"
+#include "ui/camcon/device_writer.h"
+#include "ui/camcon/workspace_item.h"
 
 #include <QWidget>
 

@@ -5,7 +5,7 @@
 #include "gui_settings.h"
 #include "language.h"
 #include "main_window.h"
-#include "workspace.h"
+#include "ui/camcon/workspace.h"
 
 #include <QScreen>
 

@@ -11,44 +11,45 @@ target_sources(cambench_ui PRIVATE
   connection_status.cpp
   device_session.h
   device_session.cpp
-  workspace.h
-  workspace.cpp
-  table_section_copies.h
-  table_section_copies.cpp
-  workspace_item.h
+  camcon/workspace.h
+  camcon/workspace.cpp
+  camcon/table_section_copies.h
+  camcon/table_section_copies.cpp
+  camcon/workspace_item.h
   section_page.h
   section_page.cpp
   family_pages.h
   family_pages.cpp
   replace_edits_question.h
   replace_edits_question.cpp
-  write_plan_builder.h
-  write_plan_builder.cpp
-  device_writer.h
-  device_writer.cpp
+  camcon/write_plan_builder.h
+  camcon/write_plan_builder.cpp
+  camcon/device_writer.h
+  camcon/device_writer.cpp
   replace_edits_dialog.h
   replace_edits_dialog.cpp
-  incoming_values.h
-  incoming_values.cpp
-  device_check.h
-  device_check.cpp
+  camcon/incoming_values.h
+  camcon/incoming_values.cpp
+  camcon/device_check.h
+  camcon/device_check.cpp
   last_write_report.h
   last_write_report.cpp
-  device_reads.h
-  device_reads.cpp
-  capability_gate.h
-  capability_gate.cpp
-  dead_time_modes_page.h
-  dead_time_modes_page.cpp
-  analogue_cams_page.h
-  analogue_cams_page.cpp
-  eeprom_lock_page.h
-  eeprom_lock_page.cpp
-  milliseconds_text.h
-  plc_coupling_page.h
-  plc_coupling_page.cpp
-  programming_program_page.h
-  programming_program_page.cpp
+  camcon/device_reads.h
+  camcon/device_reads.cpp
+  camcon/camcon_jobs.h
+  camcon/capability_gate.h
+  camcon/capability_gate.cpp
+  camcon/dead_time_modes_page.h
+  camcon/dead_time_modes_page.cpp
+  camcon/analogue_cams_page.h
+  camcon/analogue_cams_page.cpp
+  camcon/eeprom_lock_page.h
+  camcon/eeprom_lock_page.cpp
+  camcon/milliseconds_text.h
+  camcon/plc_coupling_page.h
+  camcon/plc_coupling_page.cpp
+  camcon/programming_program_page.h
+  camcon/programming_program_page.cpp
   protocols/protocol_settings_widget.h
   protocols/protocol_settings_widget.cpp
   camcon/protocols/ascii_settings_widget.h
@@ -57,63 +58,63 @@ target_sources(cambench_ui PRIVATE
   camcon/protocols/table_settings_widget.cpp
   connection_page.h
   connection_page.cpp
-  dead_times_model.h
-  dead_times_model.cpp
-  dead_times_page.h
-  dead_times_page.cpp
+  camcon/dead_times_model.h
+  camcon/dead_times_model.cpp
+  camcon/dead_times_page.h
+  camcon/dead_times_page.cpp
   wheel_guard.h
   wheel_guard.cpp
-  setting_field.h
-  setting_field.cpp
-  settings_page.h
-  settings_page.cpp
+  camcon/setting_field.h
+  camcon/setting_field.cpp
+  camcon/settings_page.h
+  camcon/settings_page.cpp
   led_strip.h
   led_strip.cpp
   trend_chart.h
   trend_chart.cpp
-  monitor_page.h
-  monitor_page.cpp
-  terminal_page.h
-  terminal_page.cpp
-  users_model.h
-  users_model.cpp
-  access_grid_model.h
-  access_grid_model.cpp
-  users_page.h
-  users_page.cpp
-  plc_symbol.h
-  plc_symbol.cpp
-  plc_matrix_model.h
-  plc_matrix_model.cpp
-  plc_page.h
-  plc_page.cpp
-  cam_page.h
-  cam_page.cpp
-  compare_dialog.h
-  compare_dialog.cpp
+  camcon/monitor_page.h
+  camcon/monitor_page.cpp
+  camcon/terminal_page.h
+  camcon/terminal_page.cpp
+  camcon/users_model.h
+  camcon/users_model.cpp
+  camcon/access_grid_model.h
+  camcon/access_grid_model.cpp
+  camcon/users_page.h
+  camcon/users_page.cpp
+  camcon/plc_symbol.h
+  camcon/plc_symbol.cpp
+  camcon/plc_matrix_model.h
+  camcon/plc_matrix_model.cpp
+  camcon/plc_page.h
+  camcon/plc_page.cpp
+  camcon/cam_page.h
+  camcon/cam_page.cpp
+  camcon/compare_dialog.h
+  camcon/compare_dialog.cpp
   progress_page.h
   progress_page.cpp
-  backup_wizard.h
-  backup_wizard.cpp
-  line_backup_dialog.h
-  line_backup_dialog.cpp
-  backup_page.h
-  backup_page.cpp
+  camcon/backup_wizard.h
+  camcon/backup_wizard.cpp
+  camcon/line_backup_dialog.h
+  camcon/line_backup_dialog.cpp
+  camcon/backup_page.h
+  camcon/backup_page.cpp
   gui_settings.h
   gui_settings.cpp
   theme.h
   theme.cpp
   language.h
   language.cpp
-  project_io.h
-  project_io.cpp
-  new_project_dialog.h
-  new_project_dialog.cpp
-  print_diagram.h
-  print_diagram.cpp
-  cam_text.h
-  commissioning_report.h
-  commissioning_report.cpp
+  camcon/project_io.h
+  camcon/project_io.cpp
+  camcon/new_project_dialog.h
+  camcon/new_project_dialog.cpp
+  camcon/print_diagram.h
+  camcon/print_diagram.cpp
+  camcon/cam_text.h
+  camcon/commissioning_report.h
+  camcon/commissioning_report.cpp
   report_pages.h
   report_pages.cpp
   main_window.h

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/camcon/ascii/ascii_link.h"
+#include "comm/engine/traffic_entry.h"
 
 #include <QSaveFile>
 #include <QString>

@@ -1,13 +1,13 @@
 #pragma once
 
 #include "ui/camcon/cameditor/cam_document.h"
-#include "ui/capability_gate.h"
+#include "ui/camcon/capability_gate.h"
+#include "ui/camcon/users_page.h"
+#include "ui/camcon/workspace.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
 #include "ui/replace_edits_dialog.h"
 #include "ui/shell.h"
-#include "ui/users_page.h"
-#include "ui/workspace.h"
 
 #include <QApplication>
 #include <QCoreApplication>

@@ -4,9 +4,9 @@
 
 #include "comm/camcon/ascii/ascii_protocol.h"
 #include "model/camcon/line_manifest.h"
+#include "ui/camcon/line_backup_dialog.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
-#include "ui/line_backup_dialog.h"
 
 #include <QDir>
 #include <QProgressBar>

@@ -4,18 +4,18 @@
 #include "shell_fixture.h"
 
 #include "model/camcon/eeprom_image_file.h"
-#include "ui/analogue_cams_page.h"
-#include "ui/backup_wizard.h"
-#include "ui/cam_page.h"
-#include "ui/compare_dialog.h"
-#include "ui/dead_time_modes_page.h"
-#include "ui/dead_times_model.h"
-#include "ui/dead_times_page.h"
+#include "ui/camcon/analogue_cams_page.h"
+#include "ui/camcon/backup_wizard.h"
+#include "ui/camcon/cam_page.h"
+#include "ui/camcon/compare_dialog.h"
+#include "ui/camcon/dead_time_modes_page.h"
+#include "ui/camcon/dead_times_model.h"
+#include "ui/camcon/dead_times_page.h"
+#include "ui/camcon/eeprom_lock_page.h"
+#include "ui/camcon/users_page.h"
 #include "ui/device_session.h"
-#include "ui/eeprom_lock_page.h"
 #include "ui/language.h"
 #include "ui/progress_page.h"
-#include "ui/users_page.h"
 
 #include <QAbstractButton>
 #include <QFile>

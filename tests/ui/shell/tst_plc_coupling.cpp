@@ -11,8 +11,8 @@
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_pty_server.h"
 #include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/plc_coupling_page.h"
 #include "ui/language.h"
-#include "ui/plc_coupling_page.h"
 
 #include <QAbstractButton>
 #include <QDoubleSpinBox>

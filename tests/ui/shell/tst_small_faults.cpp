@@ -4,16 +4,16 @@
 // switch, the tool bars at 1280 px, and the error dialog's height.
 #include "shell_fixture.h"
 
-#include "ui/cam_page.h"
+#include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/camcon/cameditor/range_delegate.h"
+#include "ui/camcon/dead_times_model.h"
+#include "ui/camcon/dead_times_page.h"
+#include "ui/camcon/plc_matrix_model.h"
+#include "ui/camcon/plc_page.h"
 #include "ui/connection_status.h"
-#include "ui/dead_times_model.h"
-#include "ui/dead_times_page.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
-#include "ui/plc_matrix_model.h"
-#include "ui/plc_page.h"
 #include "ui/report_dialog.h"
 
 #include <QDialogButtonBox>

@@ -7,17 +7,17 @@
 #include "shell_fixture.h"
 
 #include "model/camcon/project_file.h"
-#include "ui/analogue_cams_page.h"
+#include "ui/camcon/analogue_cams_page.h"
+#include "ui/camcon/commissioning_report.h"
+#include "ui/camcon/compare_dialog.h"
+#include "ui/camcon/dead_time_modes_page.h"
+#include "ui/camcon/eeprom_lock_page.h"
+#include "ui/camcon/programming_program_page.h"
+#include "ui/camcon/table_section_copies.h"
+#include "ui/camcon/workspace.h"
 #include "ui/change_marker.h"
-#include "ui/commissioning_report.h"
-#include "ui/compare_dialog.h"
-#include "ui/dead_time_modes_page.h"
-#include "ui/eeprom_lock_page.h"
 #include "ui/language.h"
-#include "ui/programming_program_page.h"
 #include "ui/report_dialog.h"
-#include "ui/table_section_copies.h"
-#include "ui/workspace.h"
 
 #include <QAbstractButton>
 #include <QComboBox>

@@ -5,13 +5,13 @@
 // word. Driven by poll cycles, never by the clock.
 #include "pty_simulator.h"
 
-#include "ui/cam_page.h"
+#include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_diagram_widget.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/monitor_page.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
-#include "ui/monitor_page.h"
 #include "ui/trend_chart.h"
 
 #include <QtTest>

@@ -5,12 +5,12 @@
 #include "pty_simulator.h"
 
 #include "comm/sim/camcon/sim_demo.h"
-#include "ui/cam_page.h"
+#include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/device_writer.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
-#include "ui/device_writer.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
 

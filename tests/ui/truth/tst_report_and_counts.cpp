@@ -4,18 +4,18 @@
 #include "../shell/shell_fixture.h"
 
 #include "model/camcon/eeprom_image_file.h"
-#include "ui/backup_wizard.h"
-#include "ui/commissioning_report.h"
-#include "ui/dead_times_page.h"
+#include "ui/camcon/backup_wizard.h"
+#include "ui/camcon/commissioning_report.h"
+#include "ui/camcon/dead_times_page.h"
+#include "ui/camcon/device_writer.h"
+#include "ui/camcon/print_diagram.h"
+#include "ui/camcon/setting_field.h"
+#include "ui/camcon/users_page.h"
 #include "ui/device_session.h"
-#include "ui/device_writer.h"
 #include "ui/language.h"
-#include "ui/print_diagram.h"
 #include "ui/progress_page.h"
 #include "ui/report_pages.h"
-#include "ui/setting_field.h"
 #include "ui/theme.h"
-#include "ui/users_page.h"
 
 #include <QAbstractButton>
 #include <QAbstractTextDocumentLayout>

@@ -5,11 +5,11 @@
 #include "pty_simulator.h"
 
 #include "model/camcon/project_file.h"
-#include "ui/cam_page.h"
-#include "ui/device_writer.h"
+#include "ui/camcon/cam_page.h"
+#include "ui/camcon/device_writer.h"
+#include "ui/camcon/project_io.h"
+#include "ui/camcon/settings_page.h"
 #include "ui/language.h"
-#include "ui/project_io.h"
-#include "ui/settings_page.h"
 
 #include <QTemporaryDir>
 #include <QUndoStack>

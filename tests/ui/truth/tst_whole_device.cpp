@@ -3,14 +3,14 @@
 #include "pty_simulator.h"
 
 #include "model/camcon/project_file.h"
-#include "ui/cam_page.h"
+#include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/camcon/cameditor/track_table_model.h"
-#include "ui/device_writer.h"
+#include "ui/camcon/device_writer.h"
+#include "ui/camcon/setting_field.h"
+#include "ui/camcon/settings_page.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
-#include "ui/setting_field.h"
-#include "ui/settings_page.h"
 
 #include <QComboBox>
 #include <QLabel>

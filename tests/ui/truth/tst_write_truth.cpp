@@ -4,10 +4,10 @@
 #include "pty_simulator.h"
 
 #include "model/camcon/project_file.h"
-#include "ui/cam_page.h"
+#include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
-#include "ui/compare_dialog.h"
-#include "ui/device_writer.h"
+#include "ui/camcon/compare_dialog.h"
+#include "ui/camcon/device_writer.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
 

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "ui/section_page.h"
+
+namespace cambench {
+
+// The Backup section: what backup and restore do, and the way into the wizard.
+class BackupPage : public SectionPage {
+    Q_OBJECT
+public:
+    explicit BackupPage(QWidget* parent = nullptr);
+
+    QString sectionTitle() const override { return tr("Backup"); }
+
+Q_SIGNALS:
+    void wizardRequested();
+};
+
+}  // namespace cambench

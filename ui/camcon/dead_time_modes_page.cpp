@@ -1,0 +1,239 @@
+#include "dead_time_modes_page.h"
+#include "ui/camcon/camcon_jobs.h"
+
+#include "milliseconds_text.h"
+#include "ui/change_marker.h"
+#include "ui/device_session.h"
+#include "ui/replace_edits_question.h"
+#include "workspace.h"
+
+#include "comm/camcon/usecases/value_text.h"
+
+#include "ui/camcon/cameditor/cam_document.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace cambench {
+
+namespace {
+
+// Dead times are kept in 0.1 ms steps and shown in ms.
+constexpr double kTenthsPerMs = 10.0;
+
+QTableWidgetItem* msItem(qint32 tenths) {
+    auto* item = new QTableWidgetItem;
+    item->setData(Qt::EditRole, tenths / kTenthsPerMs);
+    return item;
+}
+
+qint32 tenthsOf(const QTableWidgetItem* item) {
+    return item ? qint32(qRound(item->data(Qt::EditRole).toDouble() * kTenthsPerMs)) : 0;
+}
+
+}  // namespace
+
+DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
+    : SectionPage(parent),
+      m_session(session),
+      m_workspace(workspace),
+      m_table(new QTableWidget(0, COUNT)),
+      m_note(new QLabel) {
+    m_table->setHorizontalHeaderLabels({tr("Output"), tr("Mode"), tr("Dead time (ms)"),
+                                        tr("Switch-on (ms)"), tr("Switch-off / time (ms)")});
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    auto* intro = new QLabel(
+        tr("Normal: one dead time moves both switching points. On/off: the switch-on and the "
+           "switch-off point each have their own. Path-time: the output switches on early by "
+           "the switch-on dead time and stays on for the switching time."));
+    intro->setWordWrap(true);
+    auto* read = new QPushButton(tr("Read from device"));
+    auto* write = new QPushButton(tr("Write changes"));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(read);
+    buttons->addWidget(write);
+    buttons->addStretch();
+    buttons->addWidget(m_note);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(intro);
+    layout->addLayout(buttons);
+    layout->addWidget(m_table);
+    connect(read, &QPushButton::clicked, this, [this] {
+        if (mayReplaceEdits(this, tr("Dead-time modes"), int(differences().size())))
+            readFromDevice();
+    });
+    connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
+    connect(m_workspace, &Workspace::deadTimeModesIncoming, this, &DeadTimeModesPage::takeIncoming);
+    m_note->setText(tr("Not read from the device yet."));
+    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
+}
+
+void DeadTimeModesPage::readFromDevice() {
+    const int outputs = m_workspace->info().deadTimeOutputs;
+    Q_EMIT statusMessage(tr("Reading dead-time modes…"));
+    runOnCamCon<DeadTimeModes>(
+        m_session, this, tr("Read dead-time modes"),
+        [outputs](comm::CamConDevice& device, comm::JobContext&) {
+            return device.readDeadTimeModes(outputs);
+        },
+        [this](Result<DeadTimeModes> modes) {
+            if (!modes) {
+                Q_EMIT statusMessage(
+                    tr("Reading dead-time modes failed: %1").arg(modes.error().message));
+                return;
+            }
+            m_device = modes.value();
+            m_workspace->setReadTime(ProjectPart::DeadTimeModes, QDateTime::currentDateTimeUtc());
+            showModes(m_device);
+            Q_EMIT statusMessage(tr("Dead-time modes read."));
+        });
+}
+
+void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
+    {
+        // Filled row by row: the edits are looked at once all rows are there.
+        const QSignalBlocker blocker(m_table);
+        m_table->setRowCount(int(modes.size()));
+        int row = 0;
+        for (auto it = modes.begin(); it != modes.end(); ++it, ++row) {
+            auto* output = new QTableWidgetItem(QString::number(it.key()));
+            output->setFlags(Qt::ItemIsEnabled);
+            output->setData(Qt::UserRole, it.key());
+            m_table->setItem(row, OutputColumn, output);
+            auto* mode = new QComboBox;
+            mode->addItem(tr("Normal"), int(DeadTimeMode::Normal));
+            mode->addItem(tr("On/off"), int(DeadTimeMode::SeparateOnOff));
+            mode->addItem(tr("Path-time"), int(DeadTimeMode::PathTime));
+            connect(mode, &QComboBox::currentIndexChanged, this, &DeadTimeModesPage::refreshEdits);
+            m_table->setCellWidget(row, ModeColumn, mode);
+            m_table->setItem(row, NormalColumn, msItem(0));
+            m_table->setItem(row, OnColumn, msItem(0));
+            m_table->setItem(row, OffColumn, msItem(0));
+        }
+        for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
+        // A project opened before the device was read: its modes are edits.
+        for (auto it = m_pending.cbegin(); it != m_pending.cend(); ++it)
+            if (modes.contains(it.key())) setEdited(it.key(), *it);
+        m_pending.clear();
+    }
+    m_note->setText(
+        tr("Largest dead time: %1").arg(millisecondsText(m_workspace->info().maxDeadTime)));
+    refreshEdits();
+}
+
+void DeadTimeModesPage::takeIncoming(const DeadTimeModes& modes, bool fromDevice) {
+    if (fromDevice) {
+        // The device's values as read with everything else; edits stay.
+        const DeadTimeModes edits = [this] {
+            DeadTimeModes edited;
+            for (const SectionDifference& difference : differences())
+                edited.insert(difference.item.number, this->edited(difference.item.number));
+            return edited;
+        }();
+        m_device = modes;
+        showModes(m_device);
+        for (auto it = edits.cbegin(); it != edits.cend(); ++it) setEdited(it.key(), *it);
+        refreshEdits();
+        return;
+    }
+    if (m_table->rowCount() == 0) {
+        m_pending = modes;
+        return;
+    }
+    for (auto it = modes.cbegin(); it != modes.cend(); ++it) setEdited(it.key(), *it);
+    refreshEdits();
+}
+
+void DeadTimeModesPage::refreshEdits() {
+    // Setting a font changes the item: no recursion through itemChanged.
+    const QSignalBlocker blocker(m_table);
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
+        if (!outputItem) continue;
+        const int output = outputItem->data(Qt::UserRole).toInt();
+        const OutputDeadTime device = m_device.value(output);
+        const OutputDeadTime now = edited(output);
+        auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
+        if (!mode) continue;  // the row is being filled
+        QFont modeFont = mode->font();
+        modeFont.setBold(now.mode != device.mode);
+        mode->setFont(modeFont);
+        mode->setToolTip(
+            now.mode != device.mode
+                ? tr("On the device: %1").arg(mode->itemText(mode->findData(int(device.mode))))
+                : QString());
+        bool any = now.mode != device.mode;
+        any |= markEdited(m_table->item(row, NormalColumn), now.normal != device.normal,
+                          millisecondsText(device.normal));
+        any |= markEdited(m_table->item(row, OnColumn), now.on != device.on,
+                          millisecondsText(device.on));
+        any |= markEdited(m_table->item(row, OffColumn), now.off != device.off,
+                          millisecondsText(device.off));
+        outputItem->setText((any ? changedMarker() : QString()) + QString::number(output));
+        markEdited(outputItem, any, QString());
+        outputItem->setToolTip(any ? tr("Edited, not written to the device") : QString());
+    }
+    // The values as edited go into a project saved now.
+    DeadTimeModes shown;
+    for (auto it = m_device.cbegin(); it != m_device.cend(); ++it)
+        shown.insert(it.key(), edited(it.key()));
+    if (!shown.isEmpty() || m_pending.isEmpty()) m_workspace->noteDeadTimeModes(shown, m_device);
+}
+
+OutputDeadTime DeadTimeModesPage::edited(int output) const {
+    const int row = rowOf(output);
+    if (row < 0) return m_device.value(output);
+    const auto* mode = qobject_cast<const QComboBox*>(m_table->cellWidget(row, ModeColumn));
+    if (!mode) return m_device.value(output);  // the row is being filled
+    return OutputDeadTime{
+        DeadTimeMode(mode->currentData().toInt()), tenthsOf(m_table->item(row, NormalColumn)),
+        tenthsOf(m_table->item(row, OnColumn)), tenthsOf(m_table->item(row, OffColumn))};
+}
+
+void DeadTimeModesPage::setEdited(int output, const OutputDeadTime& deadTime) {
+    const int row = rowOf(output);
+    if (row < 0) return;
+    auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
+    mode->setCurrentIndex(mode->findData(int(deadTime.mode)));
+    m_table->item(row, NormalColumn)->setData(Qt::EditRole, deadTime.normal / kTenthsPerMs);
+    m_table->item(row, OnColumn)->setData(Qt::EditRole, deadTime.on / kTenthsPerMs);
+    m_table->item(row, OffColumn)->setData(Qt::EditRole, deadTime.off / kTenthsPerMs);
+}
+
+int DeadTimeModesPage::rowOf(int output) const {
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const QTableWidgetItem* item = m_table->item(row, OutputColumn);
+        if (item && item->data(Qt::UserRole).toInt() == output) return row;
+    }
+    return -1;
+}
+
+QList<SectionDifference> DeadTimeModesPage::differences() const {
+    QList<SectionDifference> list;
+    for (auto it = m_device.begin(); it != m_device.end(); ++it) {
+        const OutputDeadTime now = edited(it.key());
+        if (now == it.value()) continue;
+        list.append({WorkspaceItem::deadTimeMode(it.key()),
+                     tr("Output %1 dead-time mode").arg(it.key()),
+                     usecases::deadTimeModeText(it.value()), usecases::deadTimeModeText(now)});
+    }
+    return list;
+}
+
+void DeadTimeModesPage::writeChanges(std::function<void(const WriteResult&)> done) {
+    // Checked against the connected device before the first byte, written
+    // and read back item by item; the device copy follows the report
+    // (Workspace::setDeviceDeadTimeMode).
+    writeDifferences(m_session, m_workspace, std::move(done));
+}
+
+}  // namespace cambench

@@ -1,0 +1,202 @@
+#include "device_writer.h"
+#include "ui/camcon/camcon_jobs.h"
+
+#include "table_section_copies.h"
+#include "ui/last_write_report.h"
+
+#include "ui/device_session.h"
+#include "ui/report_dialog.h"
+#include "workspace.h"
+
+#include "comm/camcon/usecases/write_items.h"
+#include "ui/camcon/cameditor/cam_document.h"
+
+#include <QCoreApplication>
+#include <QSet>
+
+namespace cambench {
+
+namespace {
+
+QString otherDeviceRefusal(const DeviceInfo& copiesFrom, const DeviceInfo& now) {
+    return QCoreApplication::translate(
+               "cambench::DeviceWriter",
+               "Nothing was written: the device on the line (CamCon %1, device number %2, %3 "
+               "cams programmed) is not the one the values shown as on the device were read "
+               "from (CamCon %4, device number %5, %6 cams programmed).\nRead the device again "
+               "or use Compare with device; your edits are kept.")
+        .arg(now.epromDate)
+        .arg(now.deviceNumber)
+        .arg(now.programmedCams)
+        .arg(copiesFrom.epromDate)
+        .arg(copiesFrom.deviceNumber)
+        .arg(copiesFrom.programmedCams);
+}
+
+bool knownAfter(usecases::WriteState state) {
+    return state != usecases::WriteState::Unknown && state != usecases::WriteState::NotSent;
+}
+
+void applyTracks(CamDocument& cams, const PlannedWrite& planned,
+                 const usecases::WriteReport& report) {
+    // Programs never read are written whole; their device copy is known
+    // afterwards only when every one of their items is.
+    QMap<int, CamProgram> assembled;
+    QSet<int> incomplete;
+    for (int i = 0; i < planned.plan.programNames.size() && i < report.programNames.size(); ++i) {
+        const int program = planned.plan.programNames.at(i).number;
+        const auto& outcome = report.programNames.at(i);
+        if (cams.hasDeviceCopy(program)) {
+            if (outcome.actual) cams.setDeviceProgramName(program, *outcome.actual);
+        } else if (outcome.actual) {
+            assembled[program].number = program;
+            assembled[program].name = *outcome.actual;
+        } else {
+            incomplete.insert(program);
+        }
+    }
+    for (int i = 0; i < planned.plan.tracks.size() && i < report.tracks.size(); ++i) {
+        const int program = planned.plan.tracks.at(i).program;
+        const auto& outcome = report.tracks.at(i);
+        if (cams.hasDeviceCopy(program)) {
+            if (outcome.actual) {
+                cams.setDeviceTrack(program, *outcome.actual);
+            } else if (!knownAfter(outcome.state)) {
+                // What the device holds on this output is not known any
+                // more: say so there; the other outputs keep what the report
+                // established.
+                if (outcome.state == usecases::WriteState::Unknown)
+                    cams.forgetDeviceTrack(program, planned.plan.tracks.at(i).wanted.output);
+            }
+        } else if (outcome.actual) {
+            assembled[program].number = program;
+            if (!outcome.actual->cams.isEmpty())
+                assembled[program].tracks.insert(outcome.actual->output, *outcome.actual);
+        } else {
+            incomplete.insert(program);
+        }
+    }
+    for (auto it = assembled.cbegin(); it != assembled.cend(); ++it) {
+        if (!incomplete.contains(it.key())) cams.setDeviceProgram(it.value());
+    }
+}
+
+// The table interface's own sections: their device copies follow.
+void applyTableSections(Workspace& workspace, const usecases::WritePlan& plan,
+                        const usecases::WriteReport& report) {
+    for (int i = 0; i < plan.deadTimeModes.size() && i < report.deadTimeModes.size(); ++i) {
+        const auto& actual = report.deadTimeModes.at(i).actual;
+        if (!actual) continue;
+        workspace.setDeviceDeadTimeMode(plan.deadTimeModes.at(i).output, *actual);
+        // Word 0 is the dead time of mode Normal, the one Dead times shows.
+        workspace.cams()->setDeviceDeadTime(plan.deadTimeModes.at(i).output, actual->normal);
+    }
+    TableSectionCopies& table = *workspace.tableSections();
+    for (const auto& outcome : report.analogueCams) {
+        if (outcome.actual) table.setDeviceAnalogueCams(*outcome.actual);
+    }
+    if (report.programmingProgram && report.programmingProgram->actual)
+        table.setDeviceProgrammingProgram(*report.programmingProgram->actual);
+    if (report.eepromLock && report.eepromLock->actual)
+        table.setDeviceEepromLock(*report.eepromLock->actual);
+}
+
+}  // namespace
+
+void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
+                      const usecases::WriteReport& report) {
+    const usecases::WritePlan& plan = planned.plan;
+    CamDocument& cams = *workspace.cams();
+    for (const auto& outcome : report.settings) {
+        if (outcome.actual) workspace.setDeviceSettings(*outcome.actual);
+    }
+    applyTracks(cams, planned, report);
+    for (int i = 0; i < plan.deadTimes.size() && i < report.deadTimes.size(); ++i) {
+        if (report.deadTimes.at(i).actual)
+            cams.setDeviceDeadTime(plan.deadTimes.at(i).output, *report.deadTimes.at(i).actual);
+    }
+    for (int i = 0; i < plan.outputNames.size() && i < report.outputNames.size(); ++i) {
+        if (report.outputNames.at(i).actual)
+            cams.setDeviceOutputName(plan.outputNames.at(i).number,
+                                     *report.outputNames.at(i).actual);
+    }
+    // Users last but one: each changes the numbers the following ones are found by.
+    for (int i = 0; i < plan.users.size() && i < report.users.size(); ++i) {
+        const auto& outcome = report.users.at(i);
+        if (!knownAfter(outcome.state) || !outcome.actual) continue;
+        workspace.setDeviceUser(planned.userIndex.value(i, -1), plan.users.at(i).deviceNumber,
+                                *outcome.actual);
+    }
+    for (int i = 0; i < plan.plcNetworks.size() && i < report.plcNetworks.size(); ++i) {
+        if (report.plcNetworks.at(i).actual)
+            workspace.setDevicePlcNetwork(*report.plcNetworks.at(i).actual);
+    }
+    applyTableSections(workspace, plan, report);
+}
+
+quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* workspace,
+                      const QList<WorkspaceItem>& items,
+                      std::function<void(const WriteResult&)> done) {
+    const PlannedWrite planned = planForItems(*workspace, items);
+    const usecases::WritePlan plan = planned.plan;
+    // The plan leaves out what the device copies say the device already
+    // holds: it may only go to the device those copies were read from.
+    const std::optional<DeviceInfo> copiesFrom = workspace->copiesFrom();
+    const bool fingerprintKnown = workspace->copiesFingerprintKnown();
+    return runOnCamCon<usecases::WriteReport>(
+        session, context,
+        QCoreApplication::translate("cambench::DeviceWriter", "Write to the device"),
+        [plan, copiesFrom, fingerprintKnown](comm::CamConDevice& device,
+                                             comm::JobContext& job) -> WriteResult {
+            // The device on the line now, not the one the edits were made for.
+            const Result<DeviceInfo> identity = device.readInfo();
+            if (!identity) return identity.error();
+            if (copiesFrom && !sameDevice(*copiesFrom, identity.value(), fingerprintKnown))
+                return Error{ErrorKind::InvalidData, otherDeviceRefusal(*copiesFrom, *identity), 0};
+            return usecases::writeItems(device, identity.value(), plan,
+                                        usecases::UseCaseProgress::of(job));
+        },
+        [workspace, planned, done](WriteResult result) {
+            if (result) {
+                // Our write changed the device's counts of cams and dead times.
+                workspace->fingerprintChangedByWrite();
+                applyWriteReport(*workspace, planned, result.value());
+            }
+            if (done) done(result);
+        });
+}
+
+QString writeSummary(const WriteResult& result) {
+    if (!result) return result.error().message.section(QLatin1Char('\n'), 0, 0);
+    return result->summary();
+}
+
+QString writeDetails(const WriteResult& result) {
+    if (!result) return result.error().message.section(QLatin1Char('\n'), 1);
+    QStringList notWritten;
+    QStringList written;
+    for (const usecases::OutcomeLine& line : result->lines()) {
+        const bool ok = line.state == usecases::WriteState::Written ||
+                        line.state == usecases::WriteState::Unchanged;
+        (ok ? written : notWritten) << line.text;
+    }
+    QString text = notWritten.join(QLatin1Char('\n'));
+    if (!written.isEmpty()) {
+        if (!text.isEmpty()) text += QLatin1String("\n\n");
+        text += written.join(QLatin1Char('\n'));
+    }
+    return text;
+}
+
+void presentWriteResult(QWidget* parent, const QString& title, const WriteResult& result) {
+    const bool complete = result && result->complete();
+    LastWriteReport::instance().record(title, writeSummary(result), writeDetails(result), complete);
+    // Complete, yet with something to know (written to RAM only, ...): said
+    // where it cannot be missed, not only in the status bar.
+    const bool notes = result && !result->notes.isEmpty();
+    if (complete && !notes) return;
+    ReportDialog::present(parent, complete ? QMessageBox::Information : QMessageBox::Warning, title,
+                          writeSummary(result), writeDetails(result));
+}
+
+}  // namespace cambench
