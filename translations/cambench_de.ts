@@ -2339,6 +2339,14 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Detect: nothing answered on %1</source>
         <translation>Suche: an %1 hat nichts geantwortet</translation>
     </message>
+    <message>
+        <source>the simulated device</source>
+        <translation>dem simulierten Gerät</translation>
+    </message>
+    <message>
+        <source>• %1, %2: no answer</source>
+        <translation>• %1, %2: keine Antwort</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>

@@ -2338,6 +2338,14 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Detect: nothing answered on %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>the simulated device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>• %1, %2: no answer</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>

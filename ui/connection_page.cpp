@@ -28,7 +28,11 @@ namespace cambench {
 
 namespace {
 const QString kSimPort = QStringLiteral("sim");
+
+bool isSimulated(const QString& port) {
+    return port == kSimPort || port.startsWith(kSimPort + QLatin1Char(':'));
 }
+}  // namespace
 
 ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : SectionPage(parent), m_session(session), m_workspace(workspace) {
@@ -252,17 +256,20 @@ void ConnectionPage::detect() {
         showDetectResult(Error::usage(tr("Choose or type a port first.")));
         return;
     }
-    if (m_session->state() != comm::ConnectionState::Disconnected || m_session->isRetrying()) {
+    if (m_session->state() != comm::ConnectionState::Disconnected || m_session->wantsConnection()) {
         // Detect needs the port to itself.
         const auto answer = QMessageBox::question(
             this, tr("Detect"),
             tr("Detect closes the connection to %1 and then tries each device family on %2. "
                "Nothing is written to a device; your edits stay. Go on?")
-                .arg(m_session->connection().port, where.port),
+                .arg(isSimulated(m_session->connection().port) ? tr("the simulated device")
+                                                               : m_session->connection().port,
+                     where.port),
             QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
         if (answer != QMessageBox::Yes) return;
-        m_session->disconnectFromDevice();
     }
+    // Also a connect on its way to the worker lets go of the port first.
+    m_session->disconnectFromDevice();
     m_detect->setEnabled(false);
     m_detectResult->setText(tr("Detecting on %1…").arg(where.port));
     m_detectResult->setPalette(QPalette());
@@ -299,6 +306,7 @@ void ConnectionPage::showDetectResult(const Result<usecases::DetectResult>& resu
         Q_EMIT statusMessage(m_detectResult->text());
         return;
     }
+    m_detectResult->setToolTip({});
     if (const usecases::DetectAttempt* found = result->found()) {
         setProtocol(found->protocolId);
         m_baud->setCurrentText(QString::number(found->serial.baud));
@@ -309,9 +317,18 @@ void ConnectionPage::showDetectResult(const Result<usecases::DetectResult>& resu
         Q_EMIT statusMessage(tr("Detect: %1").arg(usecases::attemptLine(*found)));
         return;
     }
+    // One short line per try; what each failure said in full in the tooltip.
     QStringList tried;
-    for (const usecases::DetectAttempt& attempt : result->attempts)
-        tried << QStringLiteral("• %1").arg(usecases::attemptLine(attempt));
+    QStringList details;
+    for (const usecases::DetectAttempt& attempt : result->attempts) {
+        const comm::ProtocolInfo* protocol =
+            comm::ProtocolRegistry::instance().find(attempt.protocolId);
+        tried << tr("• %1, %2: no answer")
+                     .arg(protocol ? protocolTitle(*protocol) : attempt.protocolId,
+                          usecases::lineText(attempt.serial));
+        details << usecases::attemptLine(attempt);
+    }
+    m_detectResult->setToolTip(details.join(QLatin1Char('\n')));
     m_detectResult->setText(
         (result->cancelled ? tr("Detect was cancelled; nothing answered on %1 so far. Tried:")
                            : tr("Nothing answered on %1. Tried:"))
@@ -421,8 +438,7 @@ void ConnectionPage::showScanResult(const Result<QList<int>>& devices) {
 }
 
 void ConnectionPage::showSimulatedNote() {
-    const QString port = m_session->connection().port;
-    const bool simulated = port == kSimPort || port.startsWith(kSimPort + QLatin1Char(':'));
+    const bool simulated = isSimulated(m_session->connection().port);
     m_simNote->setVisible(simulated && m_session->state() != comm::ConnectionState::Disconnected);
 }
 

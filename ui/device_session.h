@@ -32,6 +32,9 @@ public:
     comm::ConnectionState state() const { return m_state; }
     // Lost and trying to get the line back by itself.
     bool isRetrying() const { return m_retry.isActive(); }
+    // A connect was asked for and not given up (it may not have reached
+    // the worker yet, or be retrying).
+    bool wantsConnection() const { return m_wantConnected; }
     bool isOnline() const { return m_state == comm::ConnectionState::Connected; }
     QString stateText() const;  // translated, for the status bar
     QString lastMessage() const { return m_message; }

@@ -6,8 +6,6 @@
 
 namespace cambench::usecases {
 
-namespace {
-
 QString lineText(const comm::SerialSettings& serial) {
     return QStringLiteral("%1 baud %2%3%4")
         .arg(serial.baud)
@@ -15,6 +13,8 @@ QString lineText(const comm::SerialSettings& serial) {
         .arg(QLatin1Char(serial.parity))
         .arg(serial.stopBits);
 }
+
+namespace {
 
 QList<const comm::ProtocolInfo*> protocolsToTry() {
     QList<const comm::ProtocolInfo*> protocols;

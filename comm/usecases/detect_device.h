@@ -48,6 +48,9 @@ using DetectSettings = std::function<comm::ProtocolSettingsPtr(const comm::Proto
 Result<DetectResult> detectDevice(const QString& port, comm::JobContext& job,
                                   const DetectSettings& settingsFor = {});
 
+// "9600 baud 8N1"
+QString lineText(const comm::SerialSettings& serial);
+
 // "CamCon, EPROM …, device 0 (standard, 9600 baud 8N1)" or "nothing answered
 // (tried: …)": one line for the CLI and the status bar.
 QString attemptLine(const DetectAttempt& attempt);

@@ -67,16 +67,19 @@ CommWorker::~CommWorker() {
 void CommWorker::connectTo(const ConnectionSettings& connection,
                            const ProtocolSettingsPtr& protocol) {
     WorkerCore* core = d->core;
+    d->queue->lineChangePosted();
     d->post([core, connection, protocol] { core->connectTo(connection, protocol); });
 }
 
 void CommWorker::disconnectFromDevice() {
     WorkerCore* core = d->core;
+    d->queue->lineChangePosted();
     d->post([core] { core->disconnectFromDevice(); });
 }
 
 void CommWorker::setLinkDevice(int device) {
     WorkerCore* core = d->core;
+    d->queue->lineChangePosted();
     d->post([core, device] { core->setLinkDevice(device); });
 }
 
@@ -87,7 +90,8 @@ quint64 CommWorker::submit(JobPriority priority, const QString& title, JobFn fn,
         // The replaced poll never runs; it still finishes, like every job.
         QMetaObject::invokeMethod(
             this, [this, id = pushed.replaced] { Q_EMIT jobFinished(id); }, Qt::QueuedConnection);
-        return pushed.id;
+        // The poll keeps the old one's place but not its line epoch: its
+        // own call comes after the line changes it waits for.
     }
     WorkerCore* core = d->core;
     d->post([core] { core->runNextJob(); });

@@ -12,6 +12,7 @@ JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, Q
     job.title = std::move(title);
     job.fn = std::move(fn);
     job.pollKey = priority == JobPriority::Poll ? std::move(pollKey) : QString();
+    job.lineEpoch = m_lineChanges;
 
     auto& queue = m_queues[int(priority)];
     if (!job.pollKey.isEmpty()) {
@@ -28,10 +29,15 @@ JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, Q
     return {queue.back().id, 0};
 }
 
-std::optional<QueuedJob> JobQueue::takeNext() {
+void JobQueue::lineChangePosted() {
+    std::lock_guard lock(m_mutex);
+    ++m_lineChanges;
+}
+
+std::optional<QueuedJob> JobQueue::takeNext(quint64 lineChangesDone) {
     std::lock_guard lock(m_mutex);
     for (auto& queue : m_queues) {
-        if (queue.empty()) continue;
+        if (queue.empty() || queue.front().lineEpoch > lineChangesDone) continue;
         QueuedJob job = std::move(queue.front());
         queue.pop_front();
         m_runningId = job.id;

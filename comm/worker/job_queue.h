@@ -8,6 +8,7 @@
 #include <atomic>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -22,6 +23,9 @@ struct QueuedJob {
     QString title;
     JobFn fn;
     QString pollKey;
+    // How many line changes (connect, disconnect, device number) had been
+    // posted when the job was submitted: it runs only after all of them.
+    quint64 lineEpoch = 0;
     std::shared_ptr<std::atomic_bool> cancel = std::make_shared<std::atomic_bool>(false);
 };
 
@@ -37,8 +41,16 @@ public:
     };
     Pushed push(JobPriority priority, QString title, JobFn fn, QString pollKey = {});
 
-    // The next job, now the running one; nothing when the queue is empty.
-    std::optional<QueuedJob> takeNext();
+    // A connect, disconnect or device change is posted to the worker: jobs
+    // pushed from now on wait until it has been carried out.
+    void lineChangePosted();
+    // The next job submitted before the `lineChangesDone`-th line change
+    // was posted, now the running one; nothing when there is none. (A job
+    // whose line change is not done yet waits for its own turn: a call
+    // posted for a job cancelled earlier must not run it before the
+    // disconnect or connect the caller asked for first.)
+    std::optional<QueuedJob> takeNext(
+        quint64 lineChangesDone = std::numeric_limits<quint64>::max());
     void finishRunning();
 
     enum class Cancelled { Removed, Signalled, Unknown };
@@ -53,6 +65,7 @@ private:
     mutable std::mutex m_mutex;
     std::deque<QueuedJob> m_queues[2];  // by JobPriority
     quint64 m_nextId = 1;
+    quint64 m_lineChanges = 0;
     quint64 m_runningId = 0;
     std::shared_ptr<std::atomic_bool> m_runningCancel;
 };

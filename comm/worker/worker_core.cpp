@@ -20,6 +20,7 @@ void WorkerCore::setState(ConnectionState state, const QString& message) {
 
 void WorkerCore::connectTo(const ConnectionSettings& connection,
                            const ProtocolSettingsPtr& protocol) {
+    ++m_lineChangesDone;
     m_device.reset();
     m_line.detach(QCoreApplication::translate("cambench::comm", "not connected: connecting to %1")
                       .arg(connection.port));
@@ -62,6 +63,7 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
 }
 
 void WorkerCore::disconnectFromDevice() {
+    ++m_lineChangesDone;
     m_line.detach(
         QCoreApplication::translate("cambench::comm", "not connected to a device; connect first"));
     if (m_state != ConnectionState::Disconnected)
@@ -69,6 +71,7 @@ void WorkerCore::disconnectFromDevice() {
 }
 
 void WorkerCore::setLinkDevice(int device) {
+    ++m_lineChangesDone;
     if (m_device) m_device->setDevice(device);
 }
 
@@ -81,7 +84,7 @@ void WorkerCore::checkLine() {
 }
 
 void WorkerCore::runNextJob() {
-    std::optional<QueuedJob> job = m_queue->takeNext();
+    std::optional<QueuedJob> job = m_queue->takeNext(m_lineChangesDone);
     if (!job) return;
     const quint64 id = job->id;
     qCDebug(commWorkerLog) << "job" << id << "started:" << job->title;

@@ -39,6 +39,7 @@ private:
     std::shared_ptr<JobQueue> m_queue;
     GuardedTransport m_line;
     std::unique_ptr<DeviceConnection> m_device;
+    quint64 m_lineChangesDone = 0;  // connect, disconnect and device changes carried out
     ConnectionState m_state = ConnectionState::Disconnected;
 };
 

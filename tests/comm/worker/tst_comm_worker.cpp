@@ -68,6 +68,7 @@ private Q_SLOTS:
     void cancelQueuedJobRemovesIt();
     void cancelRunningJobReturnsCancelled();
     void cancelAllStopsEverything();
+    void jobAfterDisconnectRunsAfterIt();
     void jobProgressAndTrafficReachTheFront();
     void vanishingPortMakesStateLostAndLaterJobsFailFast();
     void reconnectAfterLostWorks();
@@ -234,6 +235,30 @@ void TestCommWorker::cancelAllStopsEverything() {
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, kHangBoundMs);
     QCOMPARE(kind, ErrorKind::Cancelled);
     QVERIFY(log.get().isEmpty());
+}
+
+// Jobs cancelled while queued leave their calls behind in the worker's
+// event queue; none of those may run a job submitted after a disconnect
+// before the disconnect itself (Detect opens the port itself right after).
+void TestCommWorker::jobAfterDisconnectRunsAfterIt() {
+    CommWorker worker;
+    worker.connectTo(portSettings("sim"), linkSettings(1000));
+    QTRY_COMPARE_WITH_TIMEOUT(worker.state(), ConnectionState::Connected, kHangBoundMs);
+    QSemaphore gate;
+    RunLog log;
+    submitBlocker(worker, gate, log);
+    for (int i = 0; i < 5; ++i)
+        worker.submit(JobPriority::User, "queued", [&log](JobContext&) { log.add("queued"); });
+    QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 1, kHangBoundMs);  // the blocker runs
+    worker.cancelAll();
+    worker.disconnectFromDevice();
+    std::optional<bool> answered;
+    worker.submit(JobPriority::User, "after", [&answered](JobContext& ctx) {
+        answered = askUnit(ctx).ok();  // the line must be gone by now
+    });
+    gate.release();
+    QTRY_VERIFY_WITH_TIMEOUT(answered.has_value(), kHangBoundMs);
+    QCOMPARE(*answered, false);
 }
 
 void TestCommWorker::jobProgressAndTrafficReachTheFront() {

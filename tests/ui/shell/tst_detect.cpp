@@ -122,8 +122,13 @@ private Q_SLOTS:
         const QString text = waitForDetect(page);
         QVERIFY2(text.contains(QLatin1String("Nothing answered on ") + device.path()),
                  qPrintable(text));
+        // One short line per try on the page, what each said in full in the tooltip.
+        QCOMPARE(text.count(QLatin1String(": no answer")), 4);
+        for (const char* title : {"Standard", "Multiuser", "3964R n96", "3964R e38"})
+            QVERIFY2(text.contains(QLatin1String(title)), qPrintable(text));
+        const QString details = page->findChild<QLabel*>(QStringLiteral("detectResult"))->toolTip();
         for (const char* protocol : {"standard", "multiuser", "3964r-n96", "3964r-e38"})
-            QVERIFY2(text.contains(QLatin1String(protocol)), qPrintable(text));
+            QVERIFY2(details.contains(QLatin1String(protocol)), qPrintable(details));
         QVERIFY(text.contains(QLatin1String("Check the cable")));
     }
 };
