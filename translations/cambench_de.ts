@@ -5634,6 +5634,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>A bus scan needs the Multiuser protocol.</source>
         <translation>Eine Bus-Suche braucht das Multiuser-Protokoll.</translation>
     </message>
+    <message>
+        <source>CamCon, EPROM %1, device %2, %3 outputs, %4 programs</source>
+        <translation>CamCon, EPROM %1, Gerät %2, %3 Ausgänge, %4 Programme</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>

@@ -5632,6 +5632,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>A bus scan needs the Multiuser protocol.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>CamCon, EPROM %1, device %2, %3 outputs, %4 programs</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>

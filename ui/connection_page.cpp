@@ -444,6 +444,8 @@ void ConnectionPage::showSimulatedNote() {
 
 void ConnectionPage::showConnectFailure() {
     const comm::ConnectionState state = m_session->state();
+    // What Detect found has been acted on (or another line chosen).
+    if (state == comm::ConnectionState::Connected) m_detectResult->hide();
     if (state == comm::ConnectionState::Connecting || state == comm::ConnectionState::Connected) {
         m_failure->hide();
         return;

@@ -95,7 +95,8 @@ Status CamConDevice::writeEepromLock(bool) {
 Result<QString> CamConDevice::identify() {
     const Result<DeviceInfo> info = readInfo();
     if (!info) return info.error();
-    return QStringLiteral("CamCon, EPROM %1, device %2, %3 outputs, %4 programs")
+    return QCoreApplication::translate("cambench::comm",
+                                       "CamCon, EPROM %1, device %2, %3 outputs, %4 programs")
         .arg(info->epromDate)
         .arg(info->deviceNumber)
         .arg(info->outputs)
