@@ -27,6 +27,16 @@ QList<const comm::ProtocolInfo*> protocolsToTry() {
     return protocols;
 }
 
+// What answers `protocol` over the open `transport`; the connection made for
+// it ends here, before its transport is closed.
+Result<QString> probeOnce(const comm::ProtocolInfo& protocol, comm::Transport& transport,
+                          const comm::ProtocolSettings& settings) {
+    Result<std::unique_ptr<comm::DeviceConnection>> device =
+        protocol.connect(transport, settings, comm::lineTimingFor(protocol.defaultSerial));
+    if (!device) return device.error();
+    return device.value()->probe();
+}
+
 }  // namespace
 
 QString attemptLine(const DetectAttempt& attempt) {
@@ -54,18 +64,11 @@ Result<DetectResult> detectDevice(const QString& port, comm::JobContext& job,
         const comm::ProtocolSettingsPtr settings =
             settingsFor ? settingsFor(*protocol)
                         : comm::ProtocolSettingsPtr(protocol->makeSettings());
-        Result<std::unique_ptr<comm::DeviceConnection>> device =
-            protocol->connect(**transport, *settings, comm::lineTimingFor(protocol->defaultSerial));
-        if (device) {
-            const Result<QString> identity = (*device)->probe();
-            if (identity)
-                attempt.found = *identity;
-            else
-                attempt.failure = identity.error().message;
-        } else {
-            attempt.failure = device.error().message;
-        }
-        device = Error::communication(QString());  // the connection before its transport
+        const Result<QString> identity = probeOnce(*protocol, **transport, *settings);
+        if (identity)
+            attempt.found = *identity;
+        else
+            attempt.failure = identity.error().message;
         (*transport)->close();
         result.attempts << attempt;
         if (!attempt.found.isEmpty()) break;

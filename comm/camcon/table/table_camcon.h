@@ -37,7 +37,7 @@ public:
     RequestEngine& engine() override { return m_link.engine(); }
     Result<QString> probe() override {
         m_link.setProbing();
-        return identify();
+        return CamConDevice::probe();
     }
     bool has(CamConCapability capability) const override;
     QString lacks(CamConCapability capability) const override;

@@ -44,9 +44,6 @@ bool isRk512Reply(const QByteArray& reply) {
 
 void TableLink::setProbing() {
     m_backend.setAttempts(1);
-    EngineSettings quick = m_engine.settings();
-    quick.retries = 0;
-    m_engine.setSettings(quick);
 }
 
 TableLink::TableLink(Transport& transport, TableSettings settings, LineTiming line)

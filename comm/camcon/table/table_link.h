@@ -32,7 +32,8 @@ public:
     int reachableWords() const;
     RequestEngine& engine() { return m_engine; }
     const TableBackend& backend() const { return m_backend; }
-    // One engine attempt of one 3964R attempt per telegram (Detect's probe).
+    // One 3964R attempt per telegram (Detect's probe; the engine's retries
+    // are DeviceConnection::probe()'s).
     void setProbing();
 
     // `count` words from `firstWord` of `area`.
