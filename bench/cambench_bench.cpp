@@ -11,6 +11,7 @@
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/camcon/camcon_simulator.h"
 #include "comm/sim/camcon/sim_camcon_endpoint.h"
+#include "comm/sim/camcon/sim_device.h"
 #include "comm/sim/camcon/sim_eeprom_format.h"
 #include "comm/sim/sim_transport.h"
 

@@ -1290,6 +1290,309 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::CamConGui</name>
+    <message>
+        <source>CamCon %1, device number %2.</source>
+        <translation>CamCon %1, Gerätenummer %2.</translation>
+    </message>
+    <message>
+        <source>CamCon %1 (device %2)</source>
+        <translation>CamCon %1 (Gerät %2)</translation>
+    </message>
+    <message>
+        <source>offline project</source>
+        <translation>Offline-Projekt</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamConIdentityPanel</name>
+    <message>
+        <source>Not read from a device (offline project).</source>
+        <translation>Nicht aus einem Gerät gelesen (Offline-Projekt).</translation>
+    </message>
+    <message>
+        <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
+        <translation>Zuletzt verbunden: CamCon %1, Gerätenummer %2, um %3. Nicht unbedingt das Gerät an der jetzt gewählten Schnittstelle.</translation>
+    </message>
+    <message>
+        <source>%1 … %2</source>
+        <translation>%1 … %2</translation>
+    </message>
+    <message>
+        <source>Firmware (EPROM date):</source>
+        <translation>Firmware (EPROM-Datum):</translation>
+    </message>
+    <message>
+        <source>Device number:</source>
+        <translation>Gerätenummer:</translation>
+    </message>
+    <message>
+        <source>Outputs:</source>
+        <translation>Ausgänge:</translation>
+    </message>
+    <message>
+        <source>Inputs:</source>
+        <translation>Eingänge:</translation>
+    </message>
+    <message>
+        <source>Programs:</source>
+        <translation>Programme:</translation>
+    </message>
+    <message>
+        <source>0 … %1</source>
+        <translation>0 … %1</translation>
+    </message>
+    <message>
+        <source>Position range:</source>
+        <translation>Positionsbereich:</translation>
+    </message>
+    <message>
+        <source>Outputs with dead time:</source>
+        <translation>Ausgänge mit Totzeit:</translation>
+    </message>
+    <message>
+        <source>Maximum dead time:</source>
+        <translation>Größte Totzeit:</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Programmed cams:</source>
+        <translation>Programmierte Nocken:</translation>
+    </message>
+    <message>
+        <source>Free cam memory:</source>
+        <translation>Freier Nockenspeicher:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cam(s)</source>
+        <translation>
+            <numerusform>%n Nocken</numerusform>
+            <numerusform>%n Nocken</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CPU clock:</source>
+        <translation>CPU-Takt:</translation>
+    </message>
+    <message>
+        <source>25.2 MHz</source>
+        <translation>25,2 MHz</translation>
+    </message>
+    <message>
+        <source>16.7 MHz</source>
+        <translation>16,7 MHz</translation>
+    </message>
+    <message>
+        <source>Temperature:</source>
+        <translation>Temperatur:</translation>
+    </message>
+    <message>
+        <source>no sensor</source>
+        <translation>kein Sensor</translation>
+    </message>
+    <message>
+        <source>%1 °C</source>
+        <translation>%1 °C</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamConSectionPage</name>
+    <message>
+        <source>%1: nothing to write, the device holds what you see.</source>
+        <translation>%1: nichts zu schreiben, das Gerät enthält, was Sie sehen.</translation>
+    </message>
+    <message>
+        <source>%1: writing…</source>
+        <translation>%1: wird geschrieben…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other item(s) of this section were already as on the device and not sent.</source>
+        <translation>
+            <numerusform>%n weiteres Element dieses Bereichs war bereits wie im Gerät und wurde nicht gesendet.</numerusform>
+            <numerusform>%n weitere Elemente dieses Bereichs waren bereits wie im Gerät und wurden nicht gesendet.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamConWindow</name>
+    <message>
+        <source>&amp;Read everything</source>
+        <translation>&amp;Alles lesen</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare with device…</source>
+        <translation>Mit Gerät &amp;vergleichen…</translation>
+    </message>
+    <message>
+        <source>&amp;Backup and restore…</source>
+        <translation>&amp;Sichern und Wiederherstellen…</translation>
+    </message>
+    <message>
+        <source>Back up all devices on this &amp;line…</source>
+        <translation>Alle Geräte dieser &amp;Leitung sichern…</translation>
+    </message>
+    <message>
+        <source>The device did not identify itself: %1 Your edits are kept.</source>
+        <translation>Das Gerät hat sich nicht identifiziert: %1 Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Reading the device…</source>
+        <translation>Gerät wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Reading the device: %1</source>
+        <translation>Gerät lesen: %1</translation>
+    </message>
+    <message>
+        <source>Reading everything the device holds…</source>
+        <translation>Der gesamte Inhalt des Geräts wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Everything read from the device.</source>
+        <translation>Alles aus dem Gerät gelesen.</translation>
+    </message>
+    <message>
+        <source>Read from the device, except: %1</source>
+        <translation>Aus dem Gerät gelesen, außer: %1</translation>
+    </message>
+    <message>
+        <source>Reading the device failed: %1 Your edits are kept.</source>
+        <translation>Lesen des Geräts fehlgeschlagen: %1 Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Write: %1</source>
+        <translation>Schreiben: %1</translation>
+    </message>
+    <message>
+        <source>Unwritten changes</source>
+        <translation>Nicht geschriebene Änderungen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) are not written to the device. Close anyway?</source>
+        <translation>
+            <numerusform>%n Änderung ist nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform>
+            <numerusform>%n Änderungen sind nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Compare with device…</source>
+        <translation>Mit Gerät vergleichen…</translation>
+    </message>
+    <message>
+        <source>Save project…</source>
+        <translation>Projekt speichern…</translation>
+    </message>
+    <message>
+        <source>Close without writing</source>
+        <translation>Schließen ohne zu schreiben</translation>
+    </message>
+    <message>
+        <source>&amp;New project…</source>
+        <translation>&amp;Neues Projekt…</translation>
+    </message>
+    <message>
+        <source>&amp;Open project…</source>
+        <translation>Projekt ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Recent &amp;files</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>Projekt &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation>Projekt speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Commissioning &amp;report (PDF)…</source>
+        <translation>Inbetriebnahme&amp;protokoll (PDF)…</translation>
+    </message>
+    <message>
+        <source>New project</source>
+        <translation>Neues Projekt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) are not written or saved. Discard them for a new, empty project?</source>
+        <translation>
+            <numerusform>%n Änderung ist weder geschrieben noch gespeichert. Für ein neues, leeres Projekt verwerfen?</numerusform>
+            <numerusform>%n Änderungen sind weder geschrieben noch gespeichert. Für ein neues, leeres Projekt verwerfen?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>CamBench projects (*.json)</source>
+        <translation>CamBench-Projekte (*.json)</translation>
+    </message>
+    <message>
+        <source>The project %1 was not opened.</source>
+        <translation>Das Projekt %1 wurde nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>Project %1 not opened: your edits are unchanged.</source>
+        <translation>Projekt %1 nicht geöffnet: Ihre Änderungen sind unverändert.</translation>
+    </message>
+    <message>
+        <source>Project %1 opened. Its content is not on the device until you write it.</source>
+        <translation>Projekt %1 geöffnet. Sein Inhalt ist erst im Gerät, wenn Sie ihn schreiben.</translation>
+    </message>
+    <message>
+        <source>No recent projects</source>
+        <translation>Keine zuletzt geöffneten Projekte</translation>
+    </message>
+    <message>
+        <source>&amp;Clear list</source>
+        <translation>Liste &amp;leeren</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>The device is still being read; the project was not saved. Save again when the reading is done.</source>
+        <translation>Das Gerät wird noch gelesen; das Projekt wurde nicht gespeichert. Speichern Sie erneut, wenn das Lesen fertig ist.</translation>
+    </message>
+    <message>
+        <source>The project was not saved.</source>
+        <translation>Das Projekt wurde nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>Project saved to %1.</source>
+        <translation>Projekt nach %1 gespeichert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Project saved to %1. %n value(s) are outside what a write accepts (%2).</source>
+        <translation>
+            <numerusform>Projekt in %1 gespeichert. %n Wert liegt außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
+            <numerusform>Projekt in %1 gespeichert. %n Werte liegen außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>Inbetriebnahmeprotokoll</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Report written to %1.</source>
+        <translation>Protokoll nach %1 geschrieben.</translation>
+    </message>
+</context>
+<context>
     <name>cambench::CamDiagramWidget</name>
     <message>
         <source>Output %1, cam %2: on %3, off %4, length %5</source>
@@ -2100,10 +2403,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Baudrate:</translation>
     </message>
     <message>
-        <source>Device number:</source>
-        <translation>Gerätenummer:</translation>
-    </message>
-    <message>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
@@ -2118,10 +2417,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Scan bus</source>
         <translation>Bus absuchen</translation>
-    </message>
-    <message>
-        <source>Ask every device number 0–63 for an answer (Multiuser), or identify the one device of a point-to-point line.</source>
-        <translation>Jede Gerätenummer 0–63 nach einer Antwort fragen (Multiuser) oder das eine Gerät einer Punkt-zu-Punkt-Leitung erkennen.</translation>
     </message>
     <message>
         <source>Double-click a device to work with it.</source>
@@ -2151,99 +2446,12 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Bus scan failed: %1</source>
         <translation>Bussuche fehlgeschlagen: %1</translation>
     </message>
-    <message>
-        <source>CamCon, device number %1</source>
-        <translation>CamCon, Gerätenummer %1</translation>
-    </message>
     <message numerus="yes">
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n Gerät gefunden</numerusform>
             <numerusform>%n Geräte gefunden</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Not read from a device (offline project).</source>
-        <translation>Nicht aus einem Gerät gelesen (Offline-Projekt).</translation>
-    </message>
-    <message>
-        <source>%1 … %2</source>
-        <translation>%1 … %2</translation>
-    </message>
-    <message>
-        <source>Firmware (EPROM date):</source>
-        <translation>Firmware (EPROM-Datum):</translation>
-    </message>
-    <message>
-        <source>Outputs:</source>
-        <translation>Ausgänge:</translation>
-    </message>
-    <message>
-        <source>Inputs:</source>
-        <translation>Eingänge:</translation>
-    </message>
-    <message>
-        <source>Programs:</source>
-        <translation>Programme:</translation>
-    </message>
-    <message>
-        <source>0 … %1</source>
-        <translation>0 … %1</translation>
-    </message>
-    <message>
-        <source>Position range:</source>
-        <translation>Positionsbereich:</translation>
-    </message>
-    <message>
-        <source>Outputs with dead time:</source>
-        <translation>Ausgänge mit Totzeit:</translation>
-    </message>
-    <message>
-        <source>Maximum dead time:</source>
-        <translation>Größte Totzeit:</translation>
-    </message>
-    <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
-        <source>Programmed cams:</source>
-        <translation>Programmierte Nocken:</translation>
-    </message>
-    <message>
-        <source>Free cam memory:</source>
-        <translation>Freier Nockenspeicher:</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n cam(s)</source>
-        <translation>
-            <numerusform>%n Nocken</numerusform>
-            <numerusform>%n Nocken</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>CPU clock:</source>
-        <translation>CPU-Takt:</translation>
-    </message>
-    <message>
-        <source>25.2 MHz</source>
-        <translation>25,2 MHz</translation>
-    </message>
-    <message>
-        <source>16.7 MHz</source>
-        <translation>16,7 MHz</translation>
-    </message>
-    <message>
-        <source>Temperature:</source>
-        <translation>Temperatur:</translation>
-    </message>
-    <message>
-        <source>no sensor</source>
-        <translation>kein Sensor</translation>
-    </message>
-    <message>
-        <source>%1 °C</source>
-        <translation>%1 °C</translation>
     </message>
     <message>
         <source>Connection</source>
@@ -2258,10 +2466,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Tabellenschnittstelle, 3964R e38 (38400 8E1)</translation>
     </message>
     <message>
-        <source>You are working on the simulated demo device: no machine is attached, and nothing you write here reaches a real CamCon. To work on a machine, choose its port below (or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, then press Connect.</source>
-        <translation>Sie arbeiten mit dem simulierten Demo-Gerät: Es ist keine Maschine angeschlossen, und nichts, was Sie hier schreiben, erreicht eine echte CamCon. Um an einer Maschine zu arbeiten, wählen Sie unten ihre Schnittstelle (oder tippen Sie sie ein: /dev/ttyUSB0, COM3, tcp://Host:Port), das Protokoll und die Baudrate und drücken Sie dann „Verbinden“.</translation>
-    </message>
-    <message>
         <source>Not connected to %1: %2
 Check the port name (a serial port, tcp://host:port for a device server), the protocol and baud rate, the cable and the device&apos;s power, then press Connect again.</source>
         <translation>Nicht verbunden mit %1: %2
@@ -2270,10 +2474,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>(no port given)</source>
         <translation>(keine Schnittstelle angegeben)</translation>
-    </message>
-    <message>
-        <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
-        <translation>Zuletzt verbunden: CamCon %1, Gerätenummer %2, um %3. Nicht unbedingt das Gerät an der jetzt gewählten Schnittstelle.</translation>
     </message>
     <message>
         <source>Detect</source>
@@ -2347,6 +2547,26 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>• %1, %2: no answer</source>
         <translation>• %1, %2: keine Antwort</translation>
     </message>
+    <message>
+        <source>You are working on the simulated demo device: no machine is attached, and nothing you write here reaches a real device. To work on a machine, choose its port below (or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, then press Connect.</source>
+        <translation>Sie arbeiten mit dem simulierten Demo-Gerät: Es ist keine Maschine angeschlossen, und nichts, was Sie hier schreiben, erreicht ein echtes Gerät. Um an einer Maschine zu arbeiten, wählen Sie unten ihre Schnittstelle (oder tippen Sie sie ein: /dev/ttyUSB0, COM3, tcp://Host:Port), das Protokoll und die Baudrate und drücken Sie dann „Verbinden“.</translation>
+    </message>
+    <message>
+        <source>Ask every device number of a bus for an answer, or identify the one device of a point-to-point line.</source>
+        <translation>Jede Gerätenummer eines Busses nach einer Antwort fragen oder das eine Gerät einer Punkt-zu-Punkt-Leitung erkennen.</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Identifying the device failed: %1</source>
+        <translation>Das Gerät wurde nicht erkannt: %1</translation>
+    </message>
+    <message>
+        <source>%1, device number %2</source>
+        <translation>%1, Gerätenummer %2</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -2371,10 +2591,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Die Live-Werte sind von diesem Zeitpunkt. Prüfen Sie Kabel und Stromversorgung des Geräts; Ihre Änderungen bleiben erhalten.</translation>
     </message>
     <message>
-        <source>%1: CamCon %2, device number %3.</source>
-        <translation>%1: CamCon %2, Gerätenummer %3.</translation>
-    </message>
-    <message>
         <source>%1; identity not read yet.</source>
         <translation>%1; Kennung noch nicht gelesen.</translation>
     </message>
@@ -2397,6 +2613,10 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>Check the port, the cable and the device&apos;s power, then connect again; your edits are kept.</source>
         <translation>Prüfen Sie Schnittstelle, Kabel und Stromversorgung des Geräts und verbinden Sie dann erneut; Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2907,26 +3127,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <source>&amp;New project…</source>
-        <translation>&amp;Neues Projekt…</translation>
-    </message>
-    <message>
-        <source>&amp;Open project…</source>
-        <translation>Projekt ö&amp;ffnen…</translation>
-    </message>
-    <message>
-        <source>&amp;Save project</source>
-        <translation>Projekt &amp;speichern</translation>
-    </message>
-    <message>
-        <source>Save project &amp;as…</source>
-        <translation>Projekt speichern &amp;unter…</translation>
-    </message>
-    <message>
-        <source>Commissioning &amp;report (PDF)…</source>
-        <translation>Inbetriebnahme&amp;protokoll (PDF)…</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2945,18 +3145,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>&amp;Disconnect</source>
         <translation>&amp;Trennen</translation>
-    </message>
-    <message>
-        <source>&amp;Read everything</source>
-        <translation>&amp;Alles lesen</translation>
-    </message>
-    <message>
-        <source>Co&amp;mpare with device…</source>
-        <translation>Mit Gerät &amp;vergleichen…</translation>
-    </message>
-    <message>
-        <source>&amp;Backup and restore…</source>
-        <translation>&amp;Sichern und Wiederherstellen…</translation>
     </message>
     <message>
         <source>&amp;View</source>
@@ -2983,18 +3171,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Über CamBench</translation>
     </message>
     <message>
-        <source>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programming, monitoring and backup of Digitronic CamCon electronic cam controllers.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programmieren, Beobachten und Sichern von elektronischen Nockenschaltwerken Digitronic CamCon.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>CamCon %1 (device %2)</source>
-        <translation>CamCon %1 (Gerät %2)</translation>
-    </message>
-    <message>
-        <source>offline project</source>
-        <translation>Offline-Projekt</translation>
-    </message>
-    <message>
         <source>CamBench – %1</source>
         <translation>CamBench – %1</translation>
     </message>
@@ -3014,83 +3190,8 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Nicht verbunden: %1</translation>
     </message>
     <message>
-        <source>Reading the device…</source>
-        <translation>Gerät wird gelesen…</translation>
-    </message>
-    <message>
-        <source>Write: %1</source>
-        <translation>Schreiben: %1</translation>
-    </message>
-    <message>
-        <source>Unwritten changes</source>
-        <translation>Nicht geschriebene Änderungen</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n change(s) are not written to the device. Close anyway?</source>
-        <translation>
-            <numerusform>%n Änderung ist nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform>
-            <numerusform>%n Änderungen sind nicht ins Gerät geschrieben. Trotzdem schließen?</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Compare with device…</source>
-        <translation>Mit Gerät vergleichen…</translation>
-    </message>
-    <message>
-        <source>Save project…</source>
-        <translation>Projekt speichern…</translation>
-    </message>
-    <message>
-        <source>Close without writing</source>
-        <translation>Schließen ohne zu schreiben</translation>
-    </message>
-    <message>
-        <source>New project</source>
-        <translation>Neues Projekt</translation>
-    </message>
-    <message>
-        <source>Open project</source>
-        <translation>Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>CamBench projects (*.json)</source>
-        <translation>CamBench-Projekte (*.json)</translation>
-    </message>
-    <message>
-        <source>Project %1 opened. Its content is not on the device until you write it.</source>
-        <translation>Projekt %1 geöffnet. Sein Inhalt ist erst im Gerät, wenn Sie ihn schreiben.</translation>
-    </message>
-    <message>
-        <source>Save project</source>
-        <translation>Projekt speichern</translation>
-    </message>
-    <message>
-        <source>Project saved to %1.</source>
-        <translation>Projekt nach %1 gespeichert.</translation>
-    </message>
-    <message>
-        <source>Commissioning report</source>
-        <translation>Inbetriebnahmeprotokoll</translation>
-    </message>
-    <message>
-        <source>PDF files (*.pdf)</source>
-        <translation>PDF-Dateien (*.pdf)</translation>
-    </message>
-    <message>
-        <source>Report written to %1.</source>
-        <translation>Protokoll nach %1 geschrieben.</translation>
-    </message>
-    <message>
         <source>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</source>
         <translation>Verbindung wiederhergestellt. Ihre Änderungen sind unverändert; „Mit Gerät vergleichen“ liest den jetzigen Inhalt des Geräts.</translation>
-    </message>
-    <message>
-        <source>Recent &amp;files</source>
-        <translation>&amp;Zuletzt geöffnet</translation>
-    </message>
-    <message>
-        <source>Back up all devices on this &amp;line…</source>
-        <translation>Alle Geräte dieser &amp;Leitung sichern…</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -3099,64 +3200,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Cancel what the device is doing for you now.</source>
         <translation>Abbrechen, was das Gerät gerade für Sie tut.</translation>
-    </message>
-    <message>
-        <source>Reading the device: %1</source>
-        <translation>Gerät lesen: %1</translation>
-    </message>
-    <message>
-        <source>Reading everything the device holds…</source>
-        <translation>Der gesamte Inhalt des Geräts wird gelesen…</translation>
-    </message>
-    <message>
-        <source>Everything read from the device.</source>
-        <translation>Alles aus dem Gerät gelesen.</translation>
-    </message>
-    <message>
-        <source>Read from the device, except: %1</source>
-        <translation>Aus dem Gerät gelesen, außer: %1</translation>
-    </message>
-    <message>
-        <source>Reading the device failed: %1 Your edits are kept.</source>
-        <translation>Lesen des Geräts fehlgeschlagen: %1 Ihre Änderungen bleiben erhalten.</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n change(s) are not written or saved. Discard them for a new, empty project?</source>
-        <translation>
-            <numerusform>%n Änderung ist weder geschrieben noch gespeichert. Für ein neues, leeres Projekt verwerfen?</numerusform>
-            <numerusform>%n Änderungen sind weder geschrieben noch gespeichert. Für ein neues, leeres Projekt verwerfen?</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The project %1 was not opened.</source>
-        <translation>Das Projekt %1 wurde nicht geöffnet.</translation>
-    </message>
-    <message>
-        <source>Project %1 not opened: your edits are unchanged.</source>
-        <translation>Projekt %1 nicht geöffnet: Ihre Änderungen sind unverändert.</translation>
-    </message>
-    <message>
-        <source>No recent projects</source>
-        <translation>Keine zuletzt geöffneten Projekte</translation>
-    </message>
-    <message>
-        <source>&amp;Clear list</source>
-        <translation>Liste &amp;leeren</translation>
-    </message>
-    <message>
-        <source>The device is still being read; the project was not saved. Save again when the reading is done.</source>
-        <translation>Das Gerät wird noch gelesen; das Projekt wurde nicht gespeichert. Speichern Sie erneut, wenn das Lesen fertig ist.</translation>
-    </message>
-    <message>
-        <source>The project was not saved.</source>
-        <translation>Das Projekt wurde nicht gespeichert.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Project saved to %1. %n value(s) are outside what a write accepts (%2).</source>
-        <translation>
-            <numerusform>Projekt in %1 gespeichert. %n Wert liegt außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
-            <numerusform>Projekt in %1 gespeichert. %n Werte liegen außerhalb dessen, was ein Schreiben annimmt (%2).</numerusform>
-        </translation>
     </message>
     <message>
         <source>&amp;Last write report…</source>
@@ -3179,10 +3222,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>%1 (geschrieben um %2)</translation>
     </message>
     <message>
-        <source>The device did not identify itself: %1 Your edits are kept.</source>
-        <translation>Das Gerät hat sich nicht identifiziert: %1 Ihre Änderungen bleiben erhalten.</translation>
-    </message>
-    <message>
         <source>Identify device</source>
         <translation>Gerät erkennen</translation>
     </message>
@@ -3197,6 +3236,18 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>The device did not identify itself: %1</source>
         <translation>Das Gerät hat sich nicht identifiziert: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programming, monitoring and backup of machine controllers: %2.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programmieren, Beobachten und Sichern von Maschinensteuerungen: %2.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>CamBench</source>
+        <translation>CamBench</translation>
+    </message>
+    <message>
+        <source>No page of CamBench knows the devices of this protocol.</source>
+        <translation>Keine Seite von CamBench kennt die Geräte dieses Protokolls.</translation>
     </message>
 </context>
 <context>
@@ -3853,28 +3904,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>
             <numerusform>… und %n weiterer</numerusform>
             <numerusform>… und %n weitere</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>cambench::SectionPage</name>
-    <message>
-        <source>%1: nothing to write, the device holds what you see.</source>
-        <translation>%1: nichts zu schreiben, das Gerät enthält, was Sie sehen.</translation>
-    </message>
-    <message>
-        <source>%1: writing…</source>
-        <translation>%1: wird geschrieben…</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n other item(s) of this section were already as on the device and not sent.</source>
-        <translation>
-            <numerusform>%n weiteres Element dieses Bereichs war bereits wie im Gerät und wurde nicht gesendet.</numerusform>
-            <numerusform>%n weitere Elemente dieses Bereichs waren bereits wie im Gerät und wurden nicht gesendet.</numerusform>
         </translation>
     </message>
 </context>
@@ -5637,6 +5666,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>CamCon, EPROM %1, device %2, %3 outputs, %4 programs</source>
         <translation>CamCon, EPROM %1, Gerät %2, %3 Ausgänge, %4 Programme</translation>
+    </message>
+    <message>
+        <source>this protocol has no bus to scan</source>
+        <translation>dieses Protokoll hat keinen Bus zum Absuchen</translation>
     </message>
 </context>
 <context>

@@ -1290,6 +1290,309 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::CamConGui</name>
+    <message>
+        <source>CamCon %1, device number %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamCon %1 (device %2)</source>
+        <translation type="unfinished">CamCon %1 (device %2)</translation>
+    </message>
+    <message>
+        <source>offline project</source>
+        <translation type="unfinished">offline project</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamConIdentityPanel</name>
+    <message>
+        <source>Not read from a device (offline project).</source>
+        <translation type="unfinished">Not read from a device (offline project).</translation>
+    </message>
+    <message>
+        <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 … %2</source>
+        <translation type="unfinished">%1 … %2</translation>
+    </message>
+    <message>
+        <source>Firmware (EPROM date):</source>
+        <translation type="unfinished">Firmware (EPROM date):</translation>
+    </message>
+    <message>
+        <source>Device number:</source>
+        <translation type="unfinished">Device number:</translation>
+    </message>
+    <message>
+        <source>Outputs:</source>
+        <translation type="unfinished">Outputs:</translation>
+    </message>
+    <message>
+        <source>Inputs:</source>
+        <translation type="unfinished">Inputs:</translation>
+    </message>
+    <message>
+        <source>Programs:</source>
+        <translation type="unfinished">Programs:</translation>
+    </message>
+    <message>
+        <source>0 … %1</source>
+        <translation type="unfinished">0 … %1</translation>
+    </message>
+    <message>
+        <source>Position range:</source>
+        <translation type="unfinished">Position range:</translation>
+    </message>
+    <message>
+        <source>Outputs with dead time:</source>
+        <translation type="unfinished">Outputs with dead time:</translation>
+    </message>
+    <message>
+        <source>Maximum dead time:</source>
+        <translation type="unfinished">Maximum dead time:</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <source>Programmed cams:</source>
+        <translation type="unfinished">Programmed cams:</translation>
+    </message>
+    <message>
+        <source>Free cam memory:</source>
+        <translation type="unfinished">Free cam memory:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cam(s)</source>
+        <translation>
+            <numerusform>%n cam</numerusform>
+            <numerusform>%n cams</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CPU clock:</source>
+        <translation type="unfinished">CPU clock:</translation>
+    </message>
+    <message>
+        <source>25.2 MHz</source>
+        <translation type="unfinished">25.2 MHz</translation>
+    </message>
+    <message>
+        <source>16.7 MHz</source>
+        <translation type="unfinished">16.7 MHz</translation>
+    </message>
+    <message>
+        <source>Temperature:</source>
+        <translation type="unfinished">Temperature:</translation>
+    </message>
+    <message>
+        <source>no sensor</source>
+        <translation type="unfinished">no sensor</translation>
+    </message>
+    <message>
+        <source>%1 °C</source>
+        <translation type="unfinished">%1 °C</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamConSectionPage</name>
+    <message>
+        <source>%1: nothing to write, the device holds what you see.</source>
+        <translation type="unfinished">%1: nothing to write, the device holds what you see.</translation>
+    </message>
+    <message>
+        <source>%1: writing…</source>
+        <translation type="unfinished">%1: writing…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other item(s) of this section were already as on the device and not sent.</source>
+        <translation>
+            <numerusform>%n other item of this section was already as on the device and not sent.</numerusform>
+            <numerusform>%n other items of this section were already as on the device and not sent.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamConWindow</name>
+    <message>
+        <source>&amp;Read everything</source>
+        <translation type="unfinished">&amp;Read everything</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare with device…</source>
+        <translation type="unfinished">Co&amp;mpare with device…</translation>
+    </message>
+    <message>
+        <source>&amp;Backup and restore…</source>
+        <translation type="unfinished">&amp;Backup and restore…</translation>
+    </message>
+    <message>
+        <source>Back up all devices on this &amp;line…</source>
+        <translation type="unfinished">Back up all devices on this &amp;line…</translation>
+    </message>
+    <message>
+        <source>The device did not identify itself: %1 Your edits are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the device…</source>
+        <translation type="unfinished">Reading the device…</translation>
+    </message>
+    <message>
+        <source>Reading the device: %1</source>
+        <translation type="unfinished">Reading the device: %1</translation>
+    </message>
+    <message>
+        <source>Reading everything the device holds…</source>
+        <translation type="unfinished">Reading everything the device holds…</translation>
+    </message>
+    <message>
+        <source>Everything read from the device.</source>
+        <translation type="unfinished">Everything read from the device.</translation>
+    </message>
+    <message>
+        <source>Read from the device, except: %1</source>
+        <translation type="unfinished">Read from the device, except: %1</translation>
+    </message>
+    <message>
+        <source>Reading the device failed: %1 Your edits are kept.</source>
+        <translation type="unfinished">Reading the device failed: %1 Your edits are kept.</translation>
+    </message>
+    <message>
+        <source>Write: %1</source>
+        <translation type="unfinished">Write: %1</translation>
+    </message>
+    <message>
+        <source>Unwritten changes</source>
+        <translation type="unfinished">Unwritten changes</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) are not written to the device. Close anyway?</source>
+        <translation>
+            <numerusform>%n change are not written to the device. Close anyway?</numerusform>
+            <numerusform>%n changes are not written to the device. Close anyway?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Compare with device…</source>
+        <translation type="unfinished">Compare with device…</translation>
+    </message>
+    <message>
+        <source>Save project…</source>
+        <translation type="unfinished">Save project…</translation>
+    </message>
+    <message>
+        <source>Close without writing</source>
+        <translation type="unfinished">Close without writing</translation>
+    </message>
+    <message>
+        <source>&amp;New project…</source>
+        <translation type="unfinished">&amp;New project…</translation>
+    </message>
+    <message>
+        <source>&amp;Open project…</source>
+        <translation type="unfinished">&amp;Open project…</translation>
+    </message>
+    <message>
+        <source>Recent &amp;files</source>
+        <translation type="unfinished">Recent &amp;files</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation type="unfinished">&amp;Save project</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation type="unfinished">Save project &amp;as…</translation>
+    </message>
+    <message>
+        <source>Commissioning &amp;report (PDF)…</source>
+        <translation type="unfinished">Commissioning &amp;report (PDF)…</translation>
+    </message>
+    <message>
+        <source>New project</source>
+        <translation type="unfinished">New project</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) are not written or saved. Discard them for a new, empty project?</source>
+        <translation>
+            <numerusform>%n change is not written or saved. Discard it for a new, empty project?</numerusform>
+            <numerusform>%n changes are not written or saved. Discard them for a new, empty project?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation type="unfinished">Open project</translation>
+    </message>
+    <message>
+        <source>CamBench projects (*.json)</source>
+        <translation type="unfinished">CamBench projects (*.json)</translation>
+    </message>
+    <message>
+        <source>The project %1 was not opened.</source>
+        <translation type="unfinished">The project %1 was not opened.</translation>
+    </message>
+    <message>
+        <source>Project %1 not opened: your edits are unchanged.</source>
+        <translation type="unfinished">Project %1 not opened: your edits are unchanged.</translation>
+    </message>
+    <message>
+        <source>Project %1 opened. Its content is not on the device until you write it.</source>
+        <translation type="unfinished">Project %1 opened. Its content is not on the device until you write it.</translation>
+    </message>
+    <message>
+        <source>No recent projects</source>
+        <translation type="unfinished">No recent projects</translation>
+    </message>
+    <message>
+        <source>&amp;Clear list</source>
+        <translation type="unfinished">&amp;Clear list</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation type="unfinished">Save project</translation>
+    </message>
+    <message>
+        <source>The device is still being read; the project was not saved. Save again when the reading is done.</source>
+        <translation type="unfinished">The device is still being read; the project was not saved. Save again when the reading is done.</translation>
+    </message>
+    <message>
+        <source>The project was not saved.</source>
+        <translation type="unfinished">The project was not saved.</translation>
+    </message>
+    <message>
+        <source>Project saved to %1.</source>
+        <translation type="unfinished">Project saved to %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Project saved to %1. %n value(s) are outside what a write accepts (%2).</source>
+        <translation>
+            <numerusform>Project saved to %1. %n value is outside what a write accepts (%2).</numerusform>
+            <numerusform>Project saved to %1. %n values are outside what a write accepts (%2).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation type="unfinished">Commissioning report</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation type="unfinished">PDF files (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Report written to %1.</source>
+        <translation type="unfinished">Report written to %1.</translation>
+    </message>
+</context>
+<context>
     <name>cambench::CamDiagramWidget</name>
     <message>
         <source>Output %1, cam %2: on %3, off %4, length %5</source>
@@ -2100,10 +2403,6 @@ Erase and restore now?</translation>
         <translation>Baud rate:</translation>
     </message>
     <message>
-        <source>Device number:</source>
-        <translation>Device number:</translation>
-    </message>
-    <message>
         <source>Connect</source>
         <translation>Connect</translation>
     </message>
@@ -2118,10 +2417,6 @@ Erase and restore now?</translation>
     <message>
         <source>Scan bus</source>
         <translation>Scan bus</translation>
-    </message>
-    <message>
-        <source>Ask every device number 0–63 for an answer (Multiuser), or identify the one device of a point-to-point line.</source>
-        <translation>Ask every device number 0–63 for an answer (Multiuser), or identify the one device of a point-to-point line.</translation>
     </message>
     <message>
         <source>Double-click a device to work with it.</source>
@@ -2151,99 +2446,12 @@ Erase and restore now?</translation>
         <source>Bus scan failed: %1</source>
         <translation>Bus scan failed: %1</translation>
     </message>
-    <message>
-        <source>CamCon, device number %1</source>
-        <translation>CamCon, device number %1</translation>
-    </message>
     <message numerus="yes">
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n device found</numerusform>
             <numerusform>%n devices found</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Not read from a device (offline project).</source>
-        <translation>Not read from a device (offline project).</translation>
-    </message>
-    <message>
-        <source>%1 … %2</source>
-        <translation>%1 … %2</translation>
-    </message>
-    <message>
-        <source>Firmware (EPROM date):</source>
-        <translation>Firmware (EPROM date):</translation>
-    </message>
-    <message>
-        <source>Outputs:</source>
-        <translation>Outputs:</translation>
-    </message>
-    <message>
-        <source>Inputs:</source>
-        <translation>Inputs:</translation>
-    </message>
-    <message>
-        <source>Programs:</source>
-        <translation>Programs:</translation>
-    </message>
-    <message>
-        <source>0 … %1</source>
-        <translation>0 … %1</translation>
-    </message>
-    <message>
-        <source>Position range:</source>
-        <translation>Position range:</translation>
-    </message>
-    <message>
-        <source>Outputs with dead time:</source>
-        <translation>Outputs with dead time:</translation>
-    </message>
-    <message>
-        <source>Maximum dead time:</source>
-        <translation>Maximum dead time:</translation>
-    </message>
-    <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
-        <source>Programmed cams:</source>
-        <translation>Programmed cams:</translation>
-    </message>
-    <message>
-        <source>Free cam memory:</source>
-        <translation>Free cam memory:</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n cam(s)</source>
-        <translation>
-            <numerusform>%n cam</numerusform>
-            <numerusform>%n cams</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>CPU clock:</source>
-        <translation>CPU clock:</translation>
-    </message>
-    <message>
-        <source>25.2 MHz</source>
-        <translation>25.2 MHz</translation>
-    </message>
-    <message>
-        <source>16.7 MHz</source>
-        <translation>16.7 MHz</translation>
-    </message>
-    <message>
-        <source>Temperature:</source>
-        <translation>Temperature:</translation>
-    </message>
-    <message>
-        <source>no sensor</source>
-        <translation>no sensor</translation>
-    </message>
-    <message>
-        <source>%1 °C</source>
-        <translation>%1 °C</translation>
     </message>
     <message>
         <source>Connection</source>
@@ -2258,20 +2466,12 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>You are working on the simulated demo device: no machine is attached, and nothing you write here reaches a real CamCon. To work on a machine, choose its port below (or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, then press Connect.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Not connected to %1: %2
 Check the port name (a serial port, tcp://host:port for a device server), the protocol and baud rate, the cable and the device&apos;s power, then press Connect again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>(no port given)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Last connected: CamCon %1, device number %2, at %3. Not necessarily the device on the port chosen now.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2346,6 +2546,26 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>• %1, %2: no answer</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>You are working on the simulated demo device: no machine is attached, and nothing you write here reaches a real device. To work on a machine, choose its port below (or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, then press Connect.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ask every device number of a bus for an answer, or identify the one device of a point-to-point line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identifying the device failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, device number %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -2370,10 +2590,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation>Live values are from then. Check the cable and the device&apos;s power; your edits are kept.</translation>
     </message>
     <message>
-        <source>%1: CamCon %2, device number %3.</source>
-        <translation>%1: CamCon %2, device number %3.</translation>
-    </message>
-    <message>
         <source>%1; identity not read yet.</source>
         <translation>%1; identity not read yet.</translation>
     </message>
@@ -2396,6 +2612,10 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     <message>
         <source>Check the port, the cable and the device&apos;s power, then connect again; your edits are kept.</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2905,26 +3125,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <source>&amp;New project…</source>
-        <translation>&amp;New project…</translation>
-    </message>
-    <message>
-        <source>&amp;Open project…</source>
-        <translation>&amp;Open project…</translation>
-    </message>
-    <message>
-        <source>&amp;Save project</source>
-        <translation>&amp;Save project</translation>
-    </message>
-    <message>
-        <source>Save project &amp;as…</source>
-        <translation>Save project &amp;as…</translation>
-    </message>
-    <message>
-        <source>Commissioning &amp;report (PDF)…</source>
-        <translation>Commissioning &amp;report (PDF)…</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
@@ -2943,18 +3143,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>&amp;Disconnect</source>
         <translation>&amp;Disconnect</translation>
-    </message>
-    <message>
-        <source>&amp;Read everything</source>
-        <translation>&amp;Read everything</translation>
-    </message>
-    <message>
-        <source>Co&amp;mpare with device…</source>
-        <translation>Co&amp;mpare with device…</translation>
-    </message>
-    <message>
-        <source>&amp;Backup and restore…</source>
-        <translation>&amp;Backup and restore…</translation>
     </message>
     <message>
         <source>&amp;View</source>
@@ -2981,18 +3169,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation>About CamBench</translation>
     </message>
     <message>
-        <source>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programming, monitoring and backup of Digitronic CamCon electronic cam controllers.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programming, monitoring and backup of Digitronic CamCon electronic cam controllers.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>CamCon %1 (device %2)</source>
-        <translation>CamCon %1 (device %2)</translation>
-    </message>
-    <message>
-        <source>offline project</source>
-        <translation>offline project</translation>
-    </message>
-    <message>
         <source>CamBench – %1</source>
         <translation>CamBench – %1</translation>
     </message>
@@ -3012,83 +3188,8 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation>Not connected: %1</translation>
     </message>
     <message>
-        <source>Reading the device…</source>
-        <translation>Reading the device…</translation>
-    </message>
-    <message>
-        <source>Write: %1</source>
-        <translation>Write: %1</translation>
-    </message>
-    <message>
-        <source>Unwritten changes</source>
-        <translation>Unwritten changes</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n change(s) are not written to the device. Close anyway?</source>
-        <translation>
-            <numerusform>%n change are not written to the device. Close anyway?</numerusform>
-            <numerusform>%n changes are not written to the device. Close anyway?</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Compare with device…</source>
-        <translation>Compare with device…</translation>
-    </message>
-    <message>
-        <source>Save project…</source>
-        <translation>Save project…</translation>
-    </message>
-    <message>
-        <source>Close without writing</source>
-        <translation>Close without writing</translation>
-    </message>
-    <message>
-        <source>New project</source>
-        <translation>New project</translation>
-    </message>
-    <message>
-        <source>Open project</source>
-        <translation>Open project</translation>
-    </message>
-    <message>
-        <source>CamBench projects (*.json)</source>
-        <translation>CamBench projects (*.json)</translation>
-    </message>
-    <message>
-        <source>Project %1 opened. Its content is not on the device until you write it.</source>
-        <translation>Project %1 opened. Its content is not on the device until you write it.</translation>
-    </message>
-    <message>
-        <source>Save project</source>
-        <translation>Save project</translation>
-    </message>
-    <message>
-        <source>Project saved to %1.</source>
-        <translation>Project saved to %1.</translation>
-    </message>
-    <message>
-        <source>Commissioning report</source>
-        <translation>Commissioning report</translation>
-    </message>
-    <message>
-        <source>PDF files (*.pdf)</source>
-        <translation>PDF files (*.pdf)</translation>
-    </message>
-    <message>
-        <source>Report written to %1.</source>
-        <translation>Report written to %1.</translation>
-    </message>
-    <message>
         <source>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</source>
         <translation>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</translation>
-    </message>
-    <message>
-        <source>Recent &amp;files</source>
-        <translation>Recent &amp;files</translation>
-    </message>
-    <message>
-        <source>Back up all devices on this &amp;line…</source>
-        <translation>Back up all devices on this &amp;line…</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -3097,64 +3198,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>Cancel what the device is doing for you now.</source>
         <translation>Cancel what the device is doing for you now.</translation>
-    </message>
-    <message>
-        <source>Reading the device: %1</source>
-        <translation>Reading the device: %1</translation>
-    </message>
-    <message>
-        <source>Reading everything the device holds…</source>
-        <translation>Reading everything the device holds…</translation>
-    </message>
-    <message>
-        <source>Everything read from the device.</source>
-        <translation>Everything read from the device.</translation>
-    </message>
-    <message>
-        <source>Read from the device, except: %1</source>
-        <translation>Read from the device, except: %1</translation>
-    </message>
-    <message>
-        <source>Reading the device failed: %1 Your edits are kept.</source>
-        <translation>Reading the device failed: %1 Your edits are kept.</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n change(s) are not written or saved. Discard them for a new, empty project?</source>
-        <translation>
-            <numerusform>%n change is not written or saved. Discard it for a new, empty project?</numerusform>
-            <numerusform>%n changes are not written or saved. Discard them for a new, empty project?</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The project %1 was not opened.</source>
-        <translation>The project %1 was not opened.</translation>
-    </message>
-    <message>
-        <source>Project %1 not opened: your edits are unchanged.</source>
-        <translation>Project %1 not opened: your edits are unchanged.</translation>
-    </message>
-    <message>
-        <source>No recent projects</source>
-        <translation>No recent projects</translation>
-    </message>
-    <message>
-        <source>&amp;Clear list</source>
-        <translation>&amp;Clear list</translation>
-    </message>
-    <message>
-        <source>The device is still being read; the project was not saved. Save again when the reading is done.</source>
-        <translation>The device is still being read; the project was not saved. Save again when the reading is done.</translation>
-    </message>
-    <message>
-        <source>The project was not saved.</source>
-        <translation>The project was not saved.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Project saved to %1. %n value(s) are outside what a write accepts (%2).</source>
-        <translation>
-            <numerusform>Project saved to %1. %n value is outside what a write accepts (%2).</numerusform>
-            <numerusform>Project saved to %1. %n values are outside what a write accepts (%2).</numerusform>
-        </translation>
     </message>
     <message>
         <source>&amp;Last write report…</source>
@@ -3177,10 +3220,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The device did not identify itself: %1 Your edits are kept.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Identify device</source>
         <translation type="unfinished">Identify device</translation>
     </message>
@@ -3194,6 +3233,18 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>The device did not identify itself: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;CamBench %1&lt;/b&gt;&lt;p&gt;Programming, monitoring and backup of machine controllers: %2.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamBench</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No page of CamBench knows the devices of this protocol.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3851,28 +3902,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation>
             <numerusform>… and %n more</numerusform>
             <numerusform>… and %n more</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>cambench::SectionPage</name>
-    <message>
-        <source>%1: nothing to write, the device holds what you see.</source>
-        <translation>%1: nothing to write, the device holds what you see.</translation>
-    </message>
-    <message>
-        <source>%1: writing…</source>
-        <translation>%1: writing…</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n other item(s) of this section were already as on the device and not sent.</source>
-        <translation>
-            <numerusform>%n other item of this section was already as on the device and not sent.</numerusform>
-            <numerusform>%n other items of this section were already as on the device and not sent.</numerusform>
         </translation>
     </message>
 </context>
@@ -5634,6 +5663,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>CamCon, EPROM %1, device %2, %3 outputs, %4 programs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this protocol has no bus to scan</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

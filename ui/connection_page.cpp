@@ -1,15 +1,14 @@
 #include "connection_page.h"
-#include "ui/camcon/camcon_jobs.h"
 
 #include "device_session.h"
+#include "family_gui.h"
 #include "sentence.h"
-#include "ui/camcon/workspace.h"
 
 #include "ui/protocols/protocol_settings_widget.h"
 
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
-#include "comm/transport/serial_port_list.h"
+#include "comm/ports/serial_port_list.h"
 #include "comm/usecases/detect_device.h"
 
 #include <QComboBox>
@@ -34,13 +33,13 @@ bool isSimulated(const QString& port) {
 }
 }  // namespace
 
-ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent), m_session(session), m_workspace(workspace) {
+ConnectionPage::ConnectionPage(DeviceSession* session, QWidget* parent)
+    : SectionPage(parent), m_session(session) {
     auto* line = new QGroupBox(tr("Line"));
     auto* form = new QFormLayout(line);
     m_simNote = new QLabel(
         tr("You are working on the simulated demo device: no machine is attached, and nothing "
-           "you write here reaches a real CamCon. To work on a machine, choose its port below "
+           "you write here reaches a real device. To work on a machine, choose its port below "
            "(or type it: /dev/ttyUSB0, COM3, tcp://host:port), the protocol and the baud rate, "
            "then press Connect."));
     m_simNote->setWordWrap(true);
@@ -108,8 +107,8 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
     auto* busLayout = new QVBoxLayout(bus);
     m_scan = new QPushButton(tr("Scan bus"));
     m_scan->setToolTip(
-        tr("Ask every device number 0–63 for an answer (Multiuser), or identify "
-           "the one device of a point-to-point line."));
+        tr("Ask every device number of a bus for an answer, or identify the one device of a "
+           "point-to-point line."));
     m_devices = new QListWidget;
     m_devices->setToolTip(tr("Double-click a device to work with it."));
     busLayout->addWidget(m_scan, 0, Qt::AlignLeft);
@@ -117,7 +116,7 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
 
     auto* identity = new QGroupBox(tr("Device"));
     m_identity = identity;
-    m_info = new QFormLayout(identity);
+    m_identityPanels = new QVBoxLayout(identity);
 
     auto* left = new QVBoxLayout;
     left->addWidget(line);
@@ -153,13 +152,11 @@ ConnectionPage::ConnectionPage(DeviceSession* session, Workspace* workspace, QWi
         Q_EMIT deviceSelected(device);
     });
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::updateButtons);
-    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showInfo);
+    connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showIdentityPanel);
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showConnectFailure);
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showSimulatedNote);
-    connect(m_session, &DeviceSession::deviceCheckedChanged, this, &ConnectionPage::showInfo);
-    connect(m_workspace, &Workspace::infoChanged, this, &ConnectionPage::showInfo);
     updateButtons();
-    showInfo();
+    showIdentityPanel();
     showSimulatedNote();
 }
 
@@ -402,23 +399,33 @@ void ConnectionPage::scanBus() {
         comm::ProtocolRegistry::instance().find(m_session->protocol().protocolId());
     if (!info || !info->isBus) {
         // A point-to-point line has exactly one device: identify it.
-        runOnCamCon<QList<int>>(
-            m_session, this, tr("Identify device"),
-            [](comm::CamConDevice& client, comm::JobContext&) -> Result<QList<int>> {
-                const auto info = client.readInfo();
-                if (!info) return info.error();
-                return QList<int>{info->deviceNumber};
+        m_session->worker().run<Result<QString>>(
+            this, comm::JobPriority::User, tr("Identify device"),
+            [](comm::JobContext& job) -> Result<QString> {
+                if (!job.device()) return Error::communication(tr("not connected"));
+                return job.device()->identify();
             },
-            [this](Result<QList<int>> devices) { showScanResult(devices); });
+            [this](Result<QString> identity) {
+                updateButtons();
+                if (!identity) {
+                    Q_EMIT statusMessage(
+                        tr("Identifying the device failed: %1").arg(identity.error().message));
+                    return;
+                }
+                auto* item = new QListWidgetItem(*identity);
+                item->setData(Qt::UserRole, m_session->protocol().device());
+                m_devices->addItem(item);
+                Q_EMIT statusMessage(tr("%n device(s) found", nullptr, 1));
+            });
         return;
     }
-    runOnCamCon<QList<int>>(
-        m_session, this, tr("Scan bus"),
-        [](comm::CamConDevice& device, comm::JobContext& job) -> Result<QList<int>> {
-            if (!device.has(comm::CamConCapability::BusScan))
-                return device.missing(comm::CamConCapability::BusScan);
-            return device.scanBus(0, 63,
-                                  [&job](qint64 done, qint64 total) { job.progress(done, total); });
+    const int last = info->lastDevice;
+    m_session->worker().run<Result<QList<int>>>(
+        this, comm::JobPriority::User, tr("Scan bus"),
+        [last](comm::JobContext& job) -> Result<QList<int>> {
+            if (!job.device()) return Error::communication(tr("not connected"));
+            return job.device()->scanBus(
+                0, last, [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
         [this](Result<QList<int>> devices) { showScanResult(devices); });
 }
@@ -429,8 +436,11 @@ void ConnectionPage::showScanResult(const Result<QList<int>>& devices) {
         Q_EMIT statusMessage(tr("Bus scan failed: %1").arg(devices.error().message));
         return;
     }
+    const comm::FamilyInfo* family =
+        comm::FamilyRegistry::instance().find(sessionFamily(*m_session));
+    const QString title = family ? family->title : QString();
     for (int device : devices.value()) {
-        auto* item = new QListWidgetItem(tr("CamCon, device number %1").arg(device));
+        auto* item = new QListWidgetItem(tr("%1, device number %2").arg(title).arg(device));
         item->setData(Qt::UserRole, device);
         m_devices->addItem(item);
     }
@@ -464,51 +474,19 @@ void ConnectionPage::showConnectFailure() {
     m_failure->show();
 }
 
-void ConnectionPage::showInfo() {
-    while (m_info->rowCount() > 0) m_info->removeRow(0);
-    const DeviceInfo& info = m_workspace->info();
-    const bool checked = m_session->isOnline() && m_session->deviceChecked();
-    // Offline (or not yet identified), the identity is the last device's,
-    // not necessarily the one on the port chosen now: greyed, and said.
-    m_identity->setEnabled(checked || !m_workspace->infoFromDevice());
-    if (!m_workspace->infoFromDevice()) {
-        m_info->addRow(new QLabel(tr("Not read from a device (offline project).")));
-    } else if (!checked) {
-        const QDateTime at =
-            m_workspace->readTimes().parts.value(ProjectPart::Device).toLocalTime();
-        auto* last = new QLabel(
-            tr("Last connected: CamCon %1, device number %2, at %3. Not necessarily the device "
-               "on the port chosen now.")
-                .arg(info.epromDate)
-                .arg(info.deviceNumber)
-                .arg(QLocale().toString(at.time(), QLocale::ShortFormat)));
-        last->setWordWrap(true);
-        m_info->addRow(last);
-    }
-    const QString units = tr("%1 … %2");
-    const auto row = [this](const QString& label, const QString& value) {
-        auto* text = new QLabel(value);
-        text->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        m_info->addRow(label, text);
-    };
-    if (m_workspace->infoFromDevice()) {
-        row(tr("Firmware (EPROM date):"), info.epromDate);
-        row(tr("Device number:"), QString::number(info.deviceNumber));
-    }
-    row(tr("Outputs:"), QString::number(info.outputs));
-    row(tr("Inputs:"), QString::number(info.inputs));
-    row(tr("Programs:"), tr("0 … %1").arg(info.programs - 1));
-    row(tr("Position range:"), units.arg(info.minPosition).arg(info.maxPosition));
-    row(tr("Outputs with dead time:"), QString::number(info.deadTimeOutputs));
-    row(tr("Maximum dead time:"),
-        tr("%1 ms").arg(QLocale().toString(info.maxDeadTime / 10.0, 'f', 1)));
-    if (m_workspace->infoFromDevice()) {
-        row(tr("Programmed cams:"), QString::number(info.programmedCams));
-        row(tr("Free cam memory:"), tr("%n cam(s)", nullptr, int(info.freeCams)));
-        row(tr("CPU clock:"), info.cpuClock == 1 ? tr("25.2 MHz") : tr("16.7 MHz"));
-        row(tr("Temperature:"),
-            info.temperature == 255 ? tr("no sensor") : tr("%1 °C").arg(info.temperature));
-    }
+void ConnectionPage::addIdentityPanel(const QString& familyId, QWidget* panel) {
+    if (!panel) return;
+    m_identityPanels->addWidget(panel);
+    m_panels.insert(familyId, panel);
+    showIdentityPanel();
+}
+
+void ConnectionPage::showIdentityPanel() {
+    // The family of the chosen protocol tells what it knows of its device.
+    const QString family = sessionFamily(*m_session);
+    for (auto it = m_panels.cbegin(); it != m_panels.cend(); ++it)
+        it.value()->setVisible(it.key() == family);
+    m_identity->setVisible(m_panels.contains(family));
 }
 
 }  // namespace cambench

@@ -2,8 +2,11 @@
 
 #include "section_page.h"
 
+#include "comm/device/connection_settings.h"
 #include "comm/device/protocol_settings.h"
-#include "comm/transport/transport.h"
+#include "model/result.h"
+
+#include <QMap>
 
 class QComboBox;
 class QFormLayout;
@@ -23,7 +26,6 @@ struct DetectResult;
 
 class DeviceSession;
 class ProtocolSettingsWidget;
-class Workspace;
 
 // Where the device is (serial port, tcp://, simulated), the protocol and
 // its numbers; a bus scan that lists the devices on an RS485 line; and the
@@ -31,7 +33,7 @@ class Workspace;
 class ConnectionPage : public SectionPage {
     Q_OBJECT
 public:
-    ConnectionPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+    explicit ConnectionPage(DeviceSession* session, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Connection"); }
 
@@ -46,6 +48,10 @@ public:
     // A FamilyRegistry id: the protocol list shows that family's protocols.
     void setFamily(const QString& id);
     QString family() const;
+
+    // What a family shows of the connected (or last) device, in the
+    // "Device" box while its protocol is chosen.
+    void addIdentityPanel(const QString& familyId, QWidget* panel);
 
     void scanBus();
     // Tries each family's protocols on the chosen port (closing the
@@ -62,7 +68,7 @@ private:
     const comm::ProtocolInfo* currentProtocol() const;
     static QString protocolTitle(const comm::ProtocolInfo& info);
     void updateButtons();
-    void showInfo();
+    void showIdentityPanel();
     void showConnectFailure();
     void showSimulatedNote();
     void showScanResult(const Result<QList<int>>& devices);
@@ -76,7 +82,6 @@ private:
     void showDetectResult(const Result<usecases::DetectResult>& result);
 
     DeviceSession* m_session;
-    Workspace* m_workspace;
     QComboBox* m_port;
     QComboBox* m_family;
     QComboBox* m_protocol;
@@ -89,11 +94,11 @@ private:
     QPushButton* m_detect;
     QLabel* m_detectResult;  // what Detect found, or everything it tried
     QListWidget* m_devices;
-    QFormLayout* m_info;
+    QVBoxLayout* m_identityPanels;
+    QMap<QString, QWidget*> m_panels;  // per family
     QGroupBox* m_identity;
-    QLabel* m_failure;
-    QLabel* m_simNote;  // on the simulated device: says so, and the way to a real one  // the last
-                        // connect that failed: where, what, what to do
+    QLabel* m_failure;  // the last connect that failed: where, what, what to do
+    QLabel* m_simNote;  // on the simulated device: says so, and the way to a real one
 };
 
 }  // namespace cambench

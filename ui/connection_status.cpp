@@ -2,7 +2,6 @@
 
 #include "device_session.h"
 #include "live_freshness.h"
-#include "ui/camcon/workspace.h"
 
 #include <QHBoxLayout>
 #include <QPushButton>
@@ -20,10 +19,9 @@ bool silent(DeviceSession* session) {
 }
 }  // namespace
 
-ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, QWidget* parent)
+ConnectionStrip::ConnectionStrip(DeviceSession* session, QWidget* parent)
     : QFrame(parent),
       m_session(session),
-      m_workspace(workspace),
       m_text(new QLabel),
       m_reconnect(new QPushButton(tr("Reconnect now"))) {
     setObjectName(QStringLiteral("connectionStrip"));
@@ -47,9 +45,12 @@ ConnectionStrip::ConnectionStrip(DeviceSession* session, Workspace* workspace, Q
     connect(m_reconnect, &QPushButton::clicked, m_session, &DeviceSession::reconnect);
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionStrip::update);
     connect(m_session->freshness(), &LiveFreshness::changed, this, &ConnectionStrip::update);
-    connect(m_workspace, &Workspace::infoChanged, this, &ConnectionStrip::update);
-    connect(m_workspace, &Workspace::otherDeviceNoteChanged, this, &ConnectionStrip::update);
     connect(m_session, &DeviceSession::deviceCheckedChanged, this, &ConnectionStrip::update);
+    update();
+}
+
+void ConnectionStrip::setIdentity(std::function<QString()> identity) {
+    m_identity = std::move(identity);
     update();
 }
 
@@ -97,14 +98,9 @@ void ConnectionStrip::update() {
         // from an earlier connect is shown as if it were this one's.
         text = tr("%1; checking which device answers…").arg(m_session->stateText());
     } else if (state == comm::ConnectionState::Connected) {
-        const DeviceInfo& info = m_workspace->info();
-        text = m_workspace->infoFromDevice()
-                   ? tr("%1: CamCon %2, device number %3.")
-                         .arg(m_session->stateText(), info.epromDate)
-                         .arg(info.deviceNumber)
-                   : tr("%1; identity not read yet.").arg(m_session->stateText());
-        if (!m_workspace->otherDeviceNote().isEmpty())
-            text += QLatin1Char('\n') + m_workspace->otherDeviceNote();
+        const QString identity = m_identity ? m_identity() : QString();
+        text = identity.isEmpty() ? tr("%1; identity not read yet.").arg(m_session->stateText())
+                                  : tr("%1: %2").arg(m_session->stateText(), identity);
     } else if (state == comm::ConnectionState::Connecting) {
         text = m_session->stateText();
     } else if (!m_session->lastMessage().isEmpty()) {

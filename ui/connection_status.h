@@ -5,12 +5,13 @@
 #include <QFrame>
 #include <QLabel>
 
+#include <functional>
+
 class QPushButton;
 
 namespace cambench {
 
 class DeviceSession;
-class Workspace;
 
 // The connection as the user sees it, in two places: a strip above the
 // pages (always there, so nothing jumps when the line is lost) and a dot in
@@ -19,7 +20,13 @@ class Workspace;
 class ConnectionStrip : public QFrame {
     Q_OBJECT
 public:
-    ConnectionStrip(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
+    explicit ConnectionStrip(DeviceSession* session, QWidget* parent = nullptr);
+
+    // The connected device as its family names it ("CamCon 11.10.1994,
+    // device number 0."); empty until it has identified itself.
+    void setIdentity(std::function<QString()> identity);
+    // Shows the state again (the window calls it when the identity changed).
+    void update();
 
     // The whole text, also where the strip shows it shortened.
     QString text() const { return m_lines.join(QLatin1Char('\n')); }
@@ -29,14 +36,13 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
-    void update();
     // Each line on one line of the strip, shortened with "…" where needed:
     // the strip keeps its height whatever the message.
     void showLines();
 
     QStringList m_lines;
     DeviceSession* m_session;
-    Workspace* m_workspace;
+    std::function<QString()> m_identity;
     QLabel* m_text;
     QPushButton* m_reconnect;
     bool m_alarm = false;

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "comm/device/connection_settings.h"
 #include "comm/device/protocol_settings.h"
-#include "comm/transport/transport.h"
 
 #include <QByteArray>
 #include <QStringList>

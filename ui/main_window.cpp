@@ -3,46 +3,21 @@
 #include "connection_page.h"
 #include "connection_status.h"
 #include "device_session.h"
-#include "family_pages.h"
+#include "family_gui.h"
 #include "gui_settings.h"
 #include "language.h"
 #include "last_write_report.h"
 #include "report_dialog.h"
+#include "sentence.h"
 #include "theme.h"
-#include "ui/camcon/analogue_cams_page.h"
-#include "ui/camcon/backup_page.h"
-#include "ui/camcon/backup_wizard.h"
-#include "ui/camcon/cam_page.h"
-#include "ui/camcon/capability_gate.h"
-#include "ui/camcon/commissioning_report.h"
-#include "ui/camcon/compare_dialog.h"
-#include "ui/camcon/dead_time_modes_page.h"
-#include "ui/camcon/dead_times_page.h"
-#include "ui/camcon/device_check.h"
-#include "ui/camcon/device_reads.h"
-#include "ui/camcon/eeprom_lock_page.h"
-#include "ui/camcon/incoming_values.h"
-#include "ui/camcon/line_backup_dialog.h"
-#include "ui/camcon/monitor_page.h"
-#include "ui/camcon/new_project_dialog.h"
-#include "ui/camcon/plc_coupling_page.h"
-#include "ui/camcon/plc_page.h"
-#include "ui/camcon/programming_program_page.h"
-#include "ui/camcon/project_io.h"
-#include "ui/camcon/settings_page.h"
-#include "ui/camcon/terminal_page.h"
-#include "ui/camcon/users_page.h"
-#include "ui/camcon/workspace.h"
 
-#include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "comm/device/family_registry.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QFrame>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -50,27 +25,24 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
-#include <QPushButton>
 #include <QStackedWidget>
 #include <QStatusBar>
-#include <QTimer>
 #include <QToolButton>
 
 namespace cambench {
 
-MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* parent)
+MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families, QWidget* parent)
     : QMainWindow(parent),
       m_session(session),
-      m_workspace(workspace),
       m_nav(new QListWidget),
       m_stack(new QStackedWidget),
-      m_strip(new ConnectionStrip(session, workspace)),
+      m_strip(new ConnectionStrip(session)),
       m_indicator(new ConnectionIndicator(session)),
       m_jobLabel(new QLabel),
       m_jobProgress(new QProgressBar),
       m_jobCancel(new QToolButton),
       m_lastWrite(new QToolButton) {
-    createPages();
+    createPages(families);
     createMenus();
     createStatusBar();
 
@@ -86,6 +58,15 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
     layout->addLayout(body, 1);
     setCentralWidget(central);
 
+    // The strip names the connected device as its family knows it.
+    m_strip->setIdentity([this]() -> QString {
+        const FamilyWindow* family = sessionWindow();
+        return family ? family->gui()->identityLine() : QString();
+    });
+    for (FamilyGui* family : families) {
+        connect(family, &FamilyGui::identityChanged, m_strip, &ConnectionStrip::update);
+        connect(family, &FamilyGui::titleChanged, this, &MainWindow::updateTitle);
+    }
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_nav, &QListWidget::currentRowChanged, this, &MainWindow::updateLivePolling);
     connect(m_session, &DeviceSession::stateChanged, this, &MainWindow::updateConnection);
@@ -97,9 +78,6 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
             tr("Connection re-established. Your edits are unchanged; Compare with "
                "device reads what the device holds now."));
     });
-    connect(m_workspace, &Workspace::changedCountChanged, this, &MainWindow::updateTitle);
-    connect(m_workspace, &Workspace::infoChanged, this, &MainWindow::updateTitle);
-    connect(m_workspace, &Workspace::projectPathChanged, this, &MainWindow::updateTitle);
     m_nav->setCurrentRow(Connection);
     updateConnection();
     updateTitle();
@@ -109,153 +87,77 @@ MainWindow::MainWindow(DeviceSession* session, Workspace* workspace, QWidget* pa
 
 MainWindow::~MainWindow() = default;
 
-void MainWindow::createPages() {
-    m_connection = new ConnectionPage(m_session, m_workspace);
-    m_cams = new CamPage(m_session, m_workspace);
-    m_deadTimes = new DeadTimesPage(m_session, m_workspace);
-    m_settings = new SettingsPage(m_session, m_workspace);
-    m_users = new UsersPage(m_session, m_workspace);
-    m_plc = new PlcPage(m_session, m_workspace);
-    m_monitor = new MonitorPage(m_session, m_workspace);
-    auto* backup = new BackupPage;
-    m_terminal = new TerminalPage(m_session);
-    // Sections some protocols lack say so (CapabilityGate); those only the
-    // table interface has come last.
-    using Cap = comm::CamConCapability;
-    const auto gate = [this](SectionPage* page, Cap capability) {
-        return new CapabilityGate(m_session, page, capability);
-    };
-    m_pages = {m_connection,
-               m_cams,
-               m_deadTimes,
-               m_settings,
-               gate(m_users, Cap::Users),
-               gate(m_plc, Cap::PlcNetworks),
-               m_monitor,
-               gate(backup, Cap::EepromBackup),
-               gate(m_terminal, Cap::Terminal),
-               gate(new DeadTimeModesPage(m_session, m_workspace), Cap::DeadTimeModes),
-               gate(new AnalogueCamsPage(m_session, m_workspace), Cap::AnalogueCams),
-               gate(new ProgrammingProgramPage(m_session, m_workspace), Cap::ProgrammingProgram),
-               gate(new EepromLockPage(m_session, m_workspace), Cap::EepromLock),
-               gate(new PlcCouplingPage(m_session, m_workspace), Cap::ShortCommands)};
-    // The sections above are the CamCon's (the connection page the shell's);
-    // other families' pages come from their registration.
-    m_pageFamilies.fill(QStringLiteral("camcon"), m_pages.size());
-    m_pageFamilies[Connection] = QString();
-    for (const FamilyPage& registered : FamilyPageRegistry::instance().all()) {
-        m_pages << registered.create(m_session);
-        m_pageFamilies << registered.familyId;
+void MainWindow::createPages(const QList<FamilyGui*>& families) {
+    m_connection = new ConnectionPage(m_session);
+    addPage(m_connection, {});
+    for (FamilyGui* family : families) {
+        FamilyWindow* part = family->createWindow(this);
+        m_families << part;
+        for (SectionPage* page : part->pages()) addPage(page, family->familyId());
+        m_connection->addIdentityPanel(family->familyId(), part->identityPanel());
     }
-    for (SectionPage* page : m_pages) {
-        m_stack->addWidget(page);
-        m_nav->addItem(page->sectionTitle());
-        if (auto* gated = qobject_cast<CapabilityGate*>(page))
-            gated->setNavItem(m_nav->item(m_nav->count() - 1));
-        connect(page, &SectionPage::statusMessage, this, &MainWindow::showMessage);
-    }
-    connect(backup, &BackupPage::wizardRequested, this, &MainWindow::openBackupWizard);
-    connect(m_monitor, &MonitorPage::statusUpdated, m_cams, &CamPage::showStatus);
-    connect(m_monitor, &MonitorPage::liveEnded, m_cams, &CamPage::clearLive);
-    connect(m_connection, &ConnectionPage::deviceSelected, this, [this] { readAtStart(0); });
+    connect(m_connection, &ConnectionPage::deviceSelected, this, [this] { readAtStart(); });
     showFamilyPages();
+}
+
+void MainWindow::addPage(SectionPage* page, const QString& familyId) {
+    m_pages << page;
+    m_pageFamilies << familyId;
+    m_stack->addWidget(page);
+    m_nav->addItem(page->sectionTitle());
+    page->setNavItem(m_nav->item(m_nav->count() - 1));
+    connect(page, &SectionPage::statusMessage, this, &MainWindow::showMessage);
+}
+
+FamilyWindow* MainWindow::familyWindow(const QString& familyId) const {
+    for (FamilyWindow* family : m_families)
+        if (family->gui()->familyId() == familyId) return family;
+    return nullptr;
+}
+
+FamilyWindow* MainWindow::sessionWindow() const {
+    return familyWindow(sessionFamily(*m_session));
 }
 
 void MainWindow::showFamilyPages() {
     const QString family = sessionFamily(*m_session);
-    for (int row = 0; row < m_pages.size(); ++row) {
-        const QString& pageFamily = m_pageFamilies.at(row);
-        m_nav->item(row)->setHidden(!pageFamily.isEmpty() && pageFamily != family);
-    }
+    const auto foreign = [&family](const QString& owner) {
+        return !owner.isEmpty() && owner != family;
+    };
+    for (int row = 0; row < m_pages.size(); ++row)
+        m_nav->item(row)->setHidden(foreign(m_pageFamilies.at(row)));
+    for (const auto& [action, owner] : m_familyActions) action->setVisible(!foreign(owner));
     if (m_nav->currentItem() && m_nav->currentItem()->isHidden()) showSection(Connection);
 }
 
-void MainWindow::identifyOtherFamily() {
-    m_session->worker().run<Result<QString>>(
-        this, comm::JobPriority::User, tr("Identify device"),
-        [](comm::JobContext& job) -> Result<QString> {
-            if (!job.device()) return Error::communication(tr("not connected"));
-            return job.device()->identify();
-        },
-        [this](Result<QString> identity) {
-            const int pending = m_pendingProgram;
-            m_pendingProgram = -1;
-            showMessage(identity ? tr("Connected: %1").arg(*identity)
-                                 : tr("The device did not identify itself: %1")
-                                       .arg(asSentence(identity.error().message)));
-            if (pending >= 0) Q_EMIT loaded(identity.ok());
-        });
-}
-
-QList<SectionPage*> MainWindow::dataPages() const {
-    // The gates: nothing to compare where the protocol lacks the section.
-    return {m_cams,
-            m_deadTimes,
-            m_settings,
-            m_pages.at(Users),
-            m_pages.at(Plc),
-            m_pages.at(DeadTimeModes),
-            m_pages.at(AnalogueCams),
-            m_pages.at(ProgrammingProgram),
-            m_pages.at(EepromLock)};
-}
-
 void MainWindow::createMenus() {
+    // Each family adds its entries between the shell's; the entries a menu
+    // gained from a family are that family's.
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New project…"), this, &MainWindow::newProject);
-    file->addAction(tr("&Open project…"), QKeySequence::Open, this, &MainWindow::openProject);
-    m_recentMenu = file->addMenu(tr("Recent &files"));
-    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentFiles);
-    fillRecentFiles();
-    file->addAction(tr("&Save project"), QKeySequence::Save, this, &MainWindow::saveProject);
-    file->addAction(tr("Save project &as…"), QKeySequence::SaveAs, this,
-                    &MainWindow::saveProjectAs);
-    file->addSeparator();
-    file->addAction(tr("Commissioning &report (PDF)…"), this, &MainWindow::exportReportInteractive);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    CamEditorWidget* editor = m_cams->editor();
-    editor->undoAction()->setShortcut(QKeySequence::Undo);
-    // Ctrl+Y as well: what most Windows programs and many technicians use.
-    editor->redoAction()->setShortcuts(
-        {QKeySequence(QKeySequence::Redo), QKeySequence(Qt::CTRL | Qt::Key_Y)});
-    edit->addAction(editor->undoAction());
-    edit->addAction(editor->redoAction());
-    edit->addSeparator();
-    edit->addActions(editor->editorActions());
-
     QMenu* device = menuBar()->addMenu(tr("&Device"));
     device->addAction(tr("&Connect"), this, [this] {
         m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
     });
     device->addAction(tr("&Disconnect"), m_session, &DeviceSession::disconnectFromDevice);
-    device->addAction(tr("&Read everything"), this,
-                      [this] { readEverything(m_cams->editor()->currentProgram()); });
+    for (FamilyWindow* family : m_families) {
+        QList<QAction*> before;
+        for (QMenu* menu : {file, edit, device}) before << menu->actions();
+        family->addMenuEntries({file, edit, device});
+        for (QMenu* menu : {file, edit, device}) {
+            for (QAction* action : menu->actions())
+                if (!before.contains(action))
+                    m_familyActions.append({action, family->gui()->familyId()});
+        }
+    }
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     device->addSeparator();
-    device->addAction(tr("Co&mpare with device…"), this, &MainWindow::openCompare);
     QAction* lastWrite =
         device->addAction(tr("&Last write report…"), this, &MainWindow::showLastWriteReport);
     lastWrite->setEnabled(!LastWriteReport::instance().isEmpty());
     connect(&LastWriteReport::instance(), &LastWriteReport::changed, lastWrite,
             [lastWrite] { lastWrite->setEnabled(true); });
-    QAction* backup =
-        device->addAction(tr("&Backup and restore…"), this, &MainWindow::openBackupWizard);
-    QAction* lineBackup = device->addAction(tr("Back up all devices on this &line…"), this,
-                                            &MainWindow::openLineBackup);
-    // Greyed with the Backup section where the protocol has no EEPROM backup
-    // (the table interface), with the reason as the tooltip.
-    if (auto* gate = qobject_cast<CapabilityGate*>(m_pages.at(Backup))) {
-        const auto follow = [gate, backup, lineBackup](bool available) {
-            for (QAction* action : {backup, lineBackup}) {
-                action->setEnabled(available);
-                action->setToolTip(gate->reason());
-            }
-        };
-        connect(gate, &CapabilityGate::availabilityChanged, this, follow);
-        follow(gate->isAvailable());
-    }
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* dark = view->addAction(tr("&Dark palette"));
@@ -284,17 +186,22 @@ void MainWindow::createMenus() {
     for (int i = 0; i < m_pages.size(); ++i) {
         // "Encoder & system" would make "&s" a mnemonic: double the ampersand.
         QString title = m_pages[i]->sectionTitle();
-        view->addAction(title.replace(QLatin1Char('&'), QLatin1String("&&")), this,
-                        [this, i] { showSection(Section(i)); });
+        QAction* show = view->addAction(title.replace(QLatin1Char('&'), QLatin1String("&&")), this,
+                                        [this, i] { showSection(i); });
+        if (!m_pageFamilies.at(i).isEmpty()) m_familyActions.append({show, m_pageFamilies.at(i)});
     }
+    showFamilyPages();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About CamBench"), this, [this] {
+        QStringList families;
+        for (const comm::FamilyInfo* info : comm::FamilyRegistry::instance().all())
+            if (info->built) families << info->title;
         QMessageBox::about(
             this, tr("About CamBench"),
-            tr("<b>CamBench %1</b><p>Programming, monitoring and backup of Digitronic "
-               "CamCon electronic cam controllers.</p>")
-                .arg(QStringLiteral(CAMBENCH_VERSION)));
+            tr("<b>CamBench %1</b><p>Programming, monitoring and backup of "
+               "machine controllers: %2.</p>")
+                .arg(QStringLiteral(CAMBENCH_VERSION), families.join(QStringLiteral(", "))));
     });
 }
 
@@ -323,7 +230,7 @@ void MainWindow::createStatusBar() {
         if (m_runningJob != 0) m_session->worker().cancel(m_runningJob);
     });
     connect(&worker, &comm::CommWorker::jobStarted, this, [this](quint64 id, const QString& title) {
-        if (title == MonitorPage::tr("Monitor")) return;  // polls would make the bar flicker
+        if (m_quietJobs.contains(title)) return;
         m_runningJob = id;
         m_jobLabel->setText(title);
         m_jobProgress->setRange(0, 0);
@@ -348,18 +255,22 @@ void MainWindow::createStatusBar() {
     });
 }
 
-void MainWindow::showSection(Section section) {
+void MainWindow::showSection(int section) {
     m_nav->setCurrentRow(section);
+}
+
+void MainWindow::showPage(SectionPage* page) {
+    if (const int row = rowOf(page); row >= 0) showSection(row);
 }
 
 void MainWindow::updateLivePolling() {
     // Only pages that show live values keep the line busy with polls.
-    const Section section = currentSection();
-    m_monitor->setLiveWanted(section == Monitor || section == Cams);
+    SectionPage* shown = m_pages.value(currentSection());
+    for (FamilyWindow* family : m_families) family->pageShown(shown);
 }
 
-MainWindow::Section MainWindow::currentSection() const {
-    return Section(m_stack->currentIndex());
+int MainWindow::currentSection() const {
+    return m_stack->currentIndex();
 }
 
 void MainWindow::updateLastWriteButton() {
@@ -394,16 +305,13 @@ void MainWindow::showMessage(const QString& message) {
 }
 
 void MainWindow::updateTitle() {
-    const int changes = m_workspace->changedCount();
-    const QString projectPath = m_workspace->projectPath();
-    QString where = projectPath.isEmpty() ? QString() : QFileInfo(projectPath).fileName();
-    if (where.isEmpty()) {
-        where = m_workspace->infoFromDevice() ? tr("CamCon %1 (device %2)")
-                                                    .arg(m_workspace->info().epromDate)
-                                                    .arg(m_workspace->info().deviceNumber)
-                                              : tr("offline project");
-    }
-    QString title = tr("CamBench – %1").arg(where) + QStringLiteral("[*]");
+    const FamilyWindow* family = sessionWindow();
+    if (!family && !m_families.isEmpty()) family = m_families.first();
+    const QString subject = family ? family->gui()->windowSubject() : QString();
+    int changes = 0;
+    for (const FamilyWindow* part : m_families) changes += part->gui()->unwrittenCount();
+    QString title = (subject.isEmpty() ? tr("CamBench") : tr("CamBench – %1").arg(subject)) +
+                    QStringLiteral("[*]");
     if (changes > 0) title += QLatin1Char(' ') + tr("[%n change(s) not written]", nullptr, changes);
     setWindowTitle(title);
     setWindowModified(changes > 0);
@@ -414,158 +322,48 @@ void MainWindow::updateConnection() {
     if (state == comm::ConnectionState::Lost)
         showMessage(tr("Connection lost: %1").arg(asSentence(m_session->lastMessage())));
     showFamilyPages();
+    updateTitle();
+    m_strip->update();
     // Every connect and reconnect may reach another device.
     if (state == comm::ConnectionState::Connected) checkDevice();
     // A connect that failed (a user's disconnect carries no message).
     if (state == comm::ConnectionState::Disconnected && !m_session->lastMessage().isEmpty() &&
         !m_session->isRetrying()) {
         showMessage(tr("Not connected: %1").arg(m_session->lastMessage()));
-        if (m_pendingProgram >= 0) {
-            m_pendingProgram = -1;
-            Q_EMIT loaded(false);
-        }
+        if (m_loadPending) reportLoaded(false);
     }
 }
 
-void MainWindow::connectAndLoad(int program) {
-    m_pendingProgram = program;
+void MainWindow::connectAndLoad() {
+    m_loadPending = true;
     m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
 }
 
-void MainWindow::readAtStart(int program) {
-    m_pendingProgram = program;
+void MainWindow::readAtStart() {
+    m_loadPending = true;
     if (m_session->isOnline()) checkDevice();
 }
 
+void MainWindow::reportLoaded(bool ok) {
+    m_loadPending = false;
+    Q_EMIT loaded(ok);
+}
+
 void MainWindow::checkDevice() {
-    // The CamCon's pages read its sections; another family's read their own.
-    if (sessionFamily(*m_session) != QLatin1String("camcon")) {
-        identifyOtherFamily();
-        return;
+    FamilyWindow* family = sessionWindow();
+    const bool load = std::exchange(m_loadPending, false);
+    if (family) {
+        family->deviceOnLine(load);
+    } else if (load) {
+        showMessage(tr("No page of CamBench knows the devices of this protocol."));
+        reportLoaded(false);
     }
-    ++m_startReads;
-    checkConnectedDevice(this, m_session, m_workspace, [this](const Status& status, bool other) {
-        --m_startReads;
-        const int pending = m_pendingProgram;
-        m_pendingProgram = -1;
-        if (!status) {
-            if (status.error().kind != ErrorKind::Cancelled) {
-                showMessage(tr("The device did not identify itself: %1 Your edits are kept.")
-                                .arg(asSentence(status.error().message)));
-                if (pending >= 0) Q_EMIT loaded(false);
-            }
-            // Still on the line: asked again shortly (an identity read has no
-            // side effect); until it answers, nothing is written.
-            if (m_session->isOnline()) {
-                m_pendingProgram = pending;
-                constexpr int kRecheckMs = 2000;
-                QTimer::singleShot(kRecheckMs, this, [this] {
-                    if (m_session->isOnline() && !m_session->deviceChecked()) checkDevice();
-                });
-            }
-            return;
-        }
-        if (other) showMessage(m_workspace->otherDeviceNote());
-        // Another device: what a technician looks at first is read from it
-        // (asking where that would replace edits).
-        if (pending >= 0 || other)
-            readStartSections(pending >= 0 ? pending : m_cams->editor()->currentProgram());
-    });
-}
-
-void MainWindow::readStartSections(int program) {
-    // What a technician looks at first; the other programs stay "not read"
-    // until Device → Read everything (that takes long on a slow line).
-    showMessage(tr("Reading the device…"));
-    const int shown = std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1));
-    m_cams->editor()->setCurrentProgram(shown);
-    // The sections some protocols lack (and only those) read here; a
-    // section the protocol lacks says so on its page, not as a failure.
-    for (SectionPage* page : m_pages) page->deviceConnected();
-    const auto finished = [this](const Status& status) {
-        if (!status && status.error().kind != ErrorKind::Cancelled &&
-            status.error().kind != ErrorKind::Usage)
-            showMessage(tr("Reading the device: %1").arg(status.error().message));
-        if (--m_startReads > 0) return;
-        Q_EMIT loaded(true);
-    };
-    m_startReads += 4;
-    devicereads::readSettings(this, m_session, m_workspace, finished);
-    devicereads::readOutputSettings(this, m_session, m_workspace, finished);
-    devicereads::readUsers(this, m_session, m_workspace, finished);
-    m_cams->readProgram(shown, finished);
-}
-
-void MainWindow::readEverything(int program) {
-    if (m_readJob != 0) return;  // one whole-device read at a time
-    showMessage(tr("Reading everything the device holds…"));
-    m_readJob = devicereads::readEverything(
-        this, m_session, m_workspace,
-        [this, program](const Status& status, const QStringList& skipped) {
-            m_readJob = 0;
-            if (status) {
-                m_cams->editor()->setCurrentProgram(
-                    std::clamp(program, 0, std::max(0, m_workspace->info().programs - 1)));
-                showMessage(skipped.isEmpty() ? tr("Everything read from the device.")
-                                              : tr("Read from the device, except: %1")
-                                                    .arg(skipped.join(QLatin1Char(' '))));
-            } else if (status.error().kind == ErrorKind::Cancelled) {
-                showMessage(tr("Reading the device: %1").arg(status.error().message));
-            } else {
-                showMessage(tr("Reading the device failed: %1 Your edits are kept.")
-                                .arg(asSentence(status.error().message)));
-            }
-            Q_EMIT everythingRead(status.ok());
-        });
-}
-
-CompareDialog* MainWindow::openCompare() {
-    auto* dialog = new CompareDialog(m_session, m_workspace, dataPages(), this);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &CompareDialog::writeFinished, this, [this](const WriteResult& result) {
-        showMessage(tr("Write: %1").arg(writeSummary(result)));
-    });
-    dialog->show();
-    return dialog;
-}
-
-BackupWizard* MainWindow::openBackupWizard() {
-    auto* wizard = new BackupWizard(m_session, m_workspace, this);
-    wizard->setAttribute(Qt::WA_DeleteOnClose);
-    connect(wizard, &BackupWizard::restored, this, [this] { readEverything(0); });
-    wizard->show();
-    return wizard;
-}
-
-LineBackupDialog* MainWindow::openLineBackup() {
-    auto* dialog = new LineBackupDialog(m_session, this);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->show();
-    return dialog;
 }
 
 bool MainWindow::confirmClose() {
-    const int changes = m_workspace->changedCount();
-    if (changes == 0) return true;
-    QMessageBox box(
-        QMessageBox::Warning, tr("Unwritten changes"),
-        tr("%n change(s) are not written to the device. Close anyway?", nullptr, changes),
-        QMessageBox::NoButton, this);
-    QPushButton* compare = box.addButton(tr("Compare with device…"), QMessageBox::AcceptRole);
-    QPushButton* save = box.addButton(tr("Save project…"), QMessageBox::ActionRole);
-    box.addButton(tr("Close without writing"), QMessageBox::DestructiveRole);
-    QPushButton* cancel = box.addButton(QMessageBox::Cancel);
-    box.setDefaultButton(cancel);
-    box.exec();
-    if (box.clickedButton() == compare) {
-        openCompare();
-        return false;
-    }
-    if (box.clickedButton() == save) {
-        saveProject();
-        return m_workspace->changedCount() == 0 || !m_workspace->projectPath().isEmpty();
-    }
-    return box.clickedButton() != cancel;
+    for (FamilyWindow* family : m_families)
+        if (!family->confirmClose()) return false;
+    return true;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
@@ -574,130 +372,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         event->accept();
     } else {
         event->ignore();
-    }
-}
-
-void MainWindow::newProject() {
-    NewProjectDialog dialog(m_workspace->info(), this);
-    if (dialog.exec() != QDialog::Accepted) return;
-    if (m_workspace->changedCount() > 0 &&
-        QMessageBox::question(this, tr("New project"),
-                              tr("%n change(s) are not written or saved. Discard them for a new, "
-                                 "empty project?",
-                                 nullptr, m_workspace->changedCount())) != QMessageBox::Yes)
-        return;
-    m_session->disconnectFromDevice();
-    m_workspace->clear(emptyProject(dialog.capacities()).device);
-    m_workspace->setProjectPath({});
-    showSection(Cams);
-}
-
-void MainWindow::openProject() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), QString(),
-                                                      tr("CamBench projects (*.json)"));
-    if (!path.isEmpty()) openProjectFile(path);
-}
-
-void MainWindow::openProjectFile(const QString& path) {
-    const Result<Project> project = loadProject(path);
-    if (!project) {
-        ReportDialog::present(this, QMessageBox::Warning, tr("Open project"),
-                              tr("The project %1 was not opened.").arg(path),
-                              project.error().message);
-        if (!QFileInfo::exists(path)) guisettings::removeRecentProject(path);
-        return;
-    }
-    if (!takeIncoming(this, *m_workspace, project.value(), ValueSource::File)) {
-        showMessage(tr("Project %1 not opened: your edits are unchanged.").arg(path));
-        return;
-    }
-    // The editors follow the project's device; writing checks the device on the line.
-    if (!(m_workspace->info() == project->device)) m_workspace->setInfo(project->device, false);
-    m_workspace->setProjectPath(path);
-    guisettings::addRecentProject(path);
-    showMessage(
-        tr("Project %1 opened. Its content is not on the device until you write it.").arg(path));
-}
-
-void MainWindow::fillRecentFiles() {
-    m_recentMenu->clear();
-    const QStringList recent = guisettings::recentProjects();
-    for (int i = 0; i < recent.size(); ++i) {
-        const QString path = recent.at(i);
-        // "&1 name.json" – the path in the tooltip and the status bar.
-        QString name = QFileInfo(path).fileName();
-        QAction* action = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(
-            name.replace(QLatin1Char('&'), QLatin1String("&&"))));
-        action->setToolTip(path);
-        action->setStatusTip(path);
-        connect(action, &QAction::triggered, this, [this, path] { openProjectFile(path); });
-    }
-    if (recent.isEmpty()) m_recentMenu->addAction(tr("No recent projects"))->setEnabled(false);
-    m_recentMenu->addSeparator();
-    QAction* clear = m_recentMenu->addAction(tr("&Clear list"), this, [] {
-        for (const QString& path : guisettings::recentProjects())
-            guisettings::removeRecentProject(path);
-    });
-    clear->setEnabled(!recent.isEmpty());
-}
-
-void MainWindow::saveProject() {
-    if (m_workspace->projectPath().isEmpty()) {
-        saveProjectAs();
-    } else {
-        saveProjectTo(m_workspace->projectPath());
-    }
-}
-
-void MainWindow::saveProjectAs() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save project"), m_workspace->projectPath(), tr("CamBench projects (*.json)"));
-    if (!path.isEmpty()) saveProjectTo(path);
-}
-
-Status MainWindow::saveProjectTo(const QString& path) {
-    if (isReadingDevice()) {
-        // Half a device in a file would look like a whole one later.
-        const Status refused =
-            Error::usage(tr("The device is still being read; the project was not "
-                            "saved. Save again when the reading is done."));
-        ReportDialog::present(this, QMessageBox::Information, tr("Save project"),
-                              refused.error().message);
-        return refused;
-    }
-    const Project project = projectFromWorkspace(*m_workspace);
-    const Status saved = cambench::saveProject(path, project);
-    if (!saved) {
-        ReportDialog::present(this, QMessageBox::Warning, tr("Save project"),
-                              tr("The project was not saved."), saved.error().message);
-        return saved;
-    }
-    m_workspace->setProjectPath(path);
-    guisettings::addRecentProject(path);
-    // Values as the device holds them are saved as they are; say which a
-    // write would refuse.
-    const QStringList warnings = validateProject(project);
-    showMessage(warnings.isEmpty()
-                    ? tr("Project saved to %1.").arg(path)
-                    : tr("Project saved to %1. %n value(s) are outside what a write accepts (%2).",
-                         nullptr, int(warnings.size()))
-                          .arg(path, warnings.first()));
-    return saved;
-}
-
-Status MainWindow::exportReport(const QString& path) {
-    return CommissioningReport::write(path, *m_workspace);
-}
-
-void MainWindow::exportReportInteractive() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Commissioning report"), QString(),
-                                                      tr("PDF files (*.pdf)"));
-    if (path.isEmpty()) return;
-    const Status written = exportReport(path);
-    if (!written) {
-        QMessageBox::warning(this, tr("Commissioning report"), written.error().message);
-    } else {
-        showMessage(tr("Report written to %1.").arg(path));
     }
 }
 

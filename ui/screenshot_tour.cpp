@@ -1,23 +1,10 @@
 #include "screenshot_tour.h"
 
-#include "connection_page.h"
 #include "device_session.h"
+#include "family_gui.h"
 #include "main_window.h"
-#include "progress_page.h"
 #include "shell.h"
 #include "shell_log.h"
-#include "ui/camcon/backup_wizard.h"
-#include "ui/camcon/cam_page.h"
-#include "ui/camcon/compare_dialog.h"
-#include "ui/camcon/monitor_page.h"
-#include "ui/camcon/plc_page.h"
-#include "ui/camcon/settings_page.h"
-#include "ui/camcon/terminal_page.h"
-#include "ui/camcon/users_page.h"
-#include "ui/camcon/workspace.h"
-
-#include "ui/camcon/cameditor/cam_document.h"
-#include "ui/camcon/cameditor/cam_editor_widget.h"
 
 #include <QDir>
 #include <QListWidget>
@@ -33,9 +20,7 @@ constexpr int kPollMs = 100;
 }  // namespace
 
 ScreenshotTour::ScreenshotTour(Shell* shell, const QString& directory, QObject* parent)
-    : QObject(parent), m_shell(shell), m_directory(directory) {
-    m_backupPath = QDir(directory).filePath(QStringLiteral("screenshot-backup.json"));
-}
+    : QObject(parent), m_shell(shell), m_directory(directory) {}
 
 void ScreenshotTour::start() {
     QDir().mkpath(m_directory);
@@ -45,91 +30,12 @@ void ScreenshotTour::start() {
 }
 
 void ScreenshotTour::buildSteps() {
-    MainWindow* w = m_shell->window();
-    Workspace* ws = m_shell->workspace();
-    const auto loaded = [ws] { return ws->infoFromDevice() && ws->cams()->hasDeviceCopy(0); };
-    auto* devices = w->connectionPage()->findChild<QListWidget*>();
-    m_steps = {
-        {QStringLiteral("01-connection"),
-         [w] {
-             w->showSection(MainWindow::Connection);
-             w->connectionPage()->scanBus();
-         },
-         [loaded, devices] { return loaded() && devices && devices->count() > 0; },
-         {}},
-        {QStringLiteral("02-cam-editor"), [w] { w->showSection(MainWindow::Cams); }, loaded, {}},
-        {QStringLiteral("03-dead-times"),
-         [w] { w->showSection(MainWindow::DeadTimes); },
-         [ws] { return ws->outputSettingsKnown(); },
-         {}},
-        {QStringLiteral("04-settings"),
-         [w] { w->showSection(MainWindow::Settings); },
-         [ws] { return ws->settingsKnown(); },
-         {}},
-        {QStringLiteral("05-users"),
-         [w] { w->showSection(MainWindow::Users); },
-         [w, ws] {
-             if (ws->users().isEmpty()) return false;
-             w->usersPage()->selectUser(0);
-             return true;
-         },
-         {}},
-        {QStringLiteral("06-plc"),
-         [w] {
-             w->showSection(MainWindow::Plc);
-             w->plcPage()->showNetwork(PlcNetwork::O, 0);
-             w->plcPage()->readNetwork();
-         },
-         [ws] { return ws->devicePlcNetworks().contains(Workspace::plcKey(PlcNetwork::O, 0)); },
-         {}},
-        {QStringLiteral("07-monitor"),
-         [w] { w->showSection(MainWindow::Monitor); },
-         [w] { return w->monitorPage()->trendSamples() >= 48; },
-         {}},
-        {QStringLiteral("08-compare"),
-         [this, w, ws] {
-             // An edit to compare: one cam moved, one dead time changed.
-             CamDocument* cams = ws->cams();
-             const Track track = cams->track(0, 1);
-             if (!track.cams.isEmpty()) {
-                 Cam cam = track.cams.first();
-                 cam.off = std::min<qint32>(cam.off + 10, ws->info().maxPosition);
-                 cams->setCam(0, 1, 0, cam);
-             }
-             cams->setDeadTime(2, cams->deadTime(2) + 15);
-             w->showSection(MainWindow::Cams);
-             m_dialog = w->openCompare();
-         },
-         [this] {
-             auto* compare = static_cast<CompareDialog*>(m_dialog);
-             return !compare->isReading() && compare->differenceCount() > 0;
-         },
-         [this] { return m_dialog; }},
-        {QStringLiteral("09-backup-wizard"),
-         [this, w] {
-             m_dialog->close();
-             w->showSection(MainWindow::Backup);
-             auto* wizard = w->openBackupWizard();
-             m_dialog = wizard;
-             wizard->setMode(BackupWizard::Mode::Backup);
-             wizard->setPath(m_backupPath);
-             wizard->next();
-         },
-         [this] {
-             auto* wizard = static_cast<BackupWizard*>(m_dialog);
-             return wizard->progressPage()->isComplete();
-         },
-         [this] { return m_dialog; }},
-        {QStringLiteral("10-terminal"),
-         [this, w] {
-             m_dialog->close();
-             w->showSection(MainWindow::Terminal);
-             w->terminalPage()->send(QStringLiteral("?IFGWG"));
-             w->terminalPage()->send(QStringLiteral("?AMAX"));
-         },
-         [w] { return w->terminalPage()->logText().count(QLatin1Char('\n')) >= 6; },
-         {}},
-    };
+    // The stops are the connected family's: its pages, its dialogs.
+    MainWindow* window = m_shell->window();
+    FamilyWindow* family = window->familyWindow(sessionFamily(*m_shell->session()));
+    m_steps = family ? family->tourStops(m_directory) : QList<TourStop>{};
+    if (m_steps.isEmpty())
+        m_failures << QStringLiteral("no screens to visit: no family page knows the device");
 }
 
 void ScreenshotTour::runStep(int index) {
@@ -142,7 +48,7 @@ void ScreenshotTour::runStep(int index) {
 }
 
 void ScreenshotTour::waitFor(int index, int waitedMs) {
-    const Step& step = m_steps[index];
+    const TourStop& step = m_steps[index];
     if (!step.ready() && waitedMs < kStepTimeoutMs) {
         QTimer::singleShot(kPollMs, this,
                            [this, index, waitedMs] { waitFor(index, waitedMs + kPollMs); });

@@ -1,10 +1,10 @@
 #pragma once
 
+#include "family_gui.h"
+
 #include <QObject>
 #include <QSize>
 #include <QString>
-
-#include <functional>
 
 class QWidget;
 
@@ -27,14 +27,6 @@ Q_SIGNALS:
     void finished(bool ok);
 
 private:
-    using Condition = std::function<bool()>;
-    struct Step {
-        QString name;
-        std::function<void()> prepare;
-        Condition ready;
-        std::function<QWidget*()> overlay;  // a dialog shown over the window
-    };
-
     void buildSteps();
     void runStep(int index);
     void waitFor(int index, int waitedMs);
@@ -42,10 +34,8 @@ private:
 
     Shell* m_shell;
     QString m_directory;
-    QList<Step> m_steps;
+    QList<TourStop> m_steps;
     QStringList m_failures;
-    QWidget* m_dialog = nullptr;
-    QString m_backupPath;
 };
 
 }  // namespace cambench

@@ -1,51 +1,30 @@
 #pragma once
 
-#include "ui/camcon/device_writer.h"
-#include "ui/camcon/workspace_item.h"
-
 #include <QWidget>
+
+class QListWidgetItem;
 
 namespace cambench {
 
-class DeviceSession;
-class Workspace;
-
-// One line of "Compare with device": an item whose edited value differs
-// from the device's.
-struct SectionDifference {
-    WorkspaceItem item;
-    QString label;
-    QString device;
-    QString edited;
-};
-
-// A page of the main window that shows one section of a device. Pages that
-// hold data list where the edited values differ from the device; writing
-// goes through writeToDevice() (device_writer.h), reading through
-// DeviceReader.
+// A page of the main window: one section of a device, or the shell's own
+// connection page. A family's pages that hold data derive from its own
+// page class (the CamCon's: CamConSectionPage) for what Compare and Write
+// need.
 class SectionPage : public QWidget {
     Q_OBJECT
 public:
     using QWidget::QWidget;
 
     virtual QString sectionTitle() const = 0;
-    virtual QList<SectionDifference> differences() const { return {}; }
-    // How many items the section holds for the device: a write reports
-    // the ones it did not send as already on the device.
-    virtual int itemCount() const { return int(differences().size()); }
     // The sections outside the whole-device read (those only some protocols
     // have) read here once the device's identity is known.
     virtual void deviceConnected() {}
+    // The page's entry in the window's list, for a page that greys or
+    // explains its entry itself.
+    virtual void setNavItem(QListWidgetItem* item) { Q_UNUSED(item); }
 
 Q_SIGNALS:
     void statusMessage(const QString& text);
-
-protected:
-    // "Write changes" of a page: every difference of this section through
-    // the one write path; the summary in the status bar, the items not
-    // written in a dialog; then `done`.
-    void writeDifferences(DeviceSession* session, Workspace* workspace,
-                          std::function<void(const WriteResult&)> done = {});
 };
 
 }  // namespace cambench

@@ -2,17 +2,18 @@
 
 #include "connection_page.h"
 #include "device_session.h"
+#include "family_gui.h"
 #include "gui_settings.h"
 #include "language.h"
 #include "main_window.h"
-#include "ui/camcon/workspace.h"
 
 #include <QScreen>
 
 namespace cambench {
 
-Shell::Shell(QObject* parent)
-    : QObject(parent), m_session(new DeviceSession(this)), m_workspace(new Workspace(this)) {
+Shell::Shell(QObject* parent) : QObject(parent), m_session(new DeviceSession(this)) {
+    for (const FamilyGuiInfo* info : FamilyGuiRegistry::instance().all())
+        m_families << info->create(m_session, this);
     // Only a connection that worked is worth remembering for the next start.
     connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         if (state == comm::ConnectionState::Connected)
@@ -38,8 +39,14 @@ void Shell::showFitting(MainWindow& window, bool restored) {
     window.show();
 }
 
+FamilyGui* Shell::family(const QString& familyId) const {
+    for (FamilyGui* family : m_families)
+        if (family->familyId() == familyId) return family;
+    return nullptr;
+}
+
 MainWindow* Shell::createWindow() {
-    auto* window = new MainWindow(m_session, m_workspace);
+    auto* window = new MainWindow(m_session, m_families);
     connect(window, &MainWindow::languageRequested, this, &Shell::switchLanguage,
             Qt::QueuedConnection);
     return window;
@@ -48,8 +55,7 @@ MainWindow* Shell::createWindow() {
 void Shell::start(const QString& port, const QString& protocol) {
     m_window = createWindow();
     const int section = guisettings::restoreWindow(*m_window);
-    if (section >= 0 && section < MainWindow::COUNT)
-        m_window->showSection(MainWindow::Section(section));
+    if (section >= 0 && section < m_window->sectionCount()) m_window->showSection(section);
     showFitting(*m_window, section >= 0);
     if (port.isEmpty()) {
         // The last connection that worked, with its protocol and settings.
@@ -60,7 +66,7 @@ void Shell::start(const QString& port, const QString& protocol) {
         m_window->connectionPage()->setPort(port);
         if (!protocol.isEmpty()) m_window->connectionPage()->setProtocol(protocol);
     }
-    m_window->connectAndLoad(0);
+    m_window->connectAndLoad();
 }
 
 void Shell::switchLanguage(const QString& language) {

@@ -1,17 +1,19 @@
 #pragma once
 
+#include <QList>
 #include <QObject>
 #include <QPointer>
 
 namespace cambench {
 
 class DeviceSession;
+class FamilyGui;
 class MainWindow;
-class Workspace;
 
-// The application around the window: one session and one workspace for the
-// whole run, and a main window that is rebuilt on a language switch (its
-// texts are set when it is built) without losing the line or any edit.
+// The application around the window: one session and each registered
+// family's GUI part (with what it holds on the PC) for the whole run, and a
+// main window that is rebuilt on a language switch (its texts are set when
+// it is built) without losing the line or any edit.
 class Shell : public QObject {
     Q_OBJECT
 public:
@@ -19,7 +21,9 @@ public:
     ~Shell() override;
 
     DeviceSession* session() const { return m_session; }
-    Workspace* workspace() const { return m_workspace; }
+    QList<FamilyGui*> families() const { return m_families; }
+    // A registered family's part ("camcon"), nullptr when there is none.
+    FamilyGui* family(const QString& familyId) const;
     MainWindow* window() const { return m_window; }
 
     // Shows the window as it was left; connects to `port`, or without one
@@ -36,7 +40,7 @@ private:
     static void showFitting(MainWindow& window, bool restored);
 
     DeviceSession* m_session;
-    Workspace* m_workspace;
+    QList<FamilyGui*> m_families;
     QPointer<MainWindow> m_window;
 };
 

@@ -17,17 +17,26 @@ target_sources(cambench_ui PRIVATE
   camcon/table_section_copies.cpp
   camcon/workspace_item.h
   section_page.h
-  section_page.cpp
-  family_pages.h
-  family_pages.cpp
+  camcon/camcon_section_page.h
+  camcon/camcon_section_page.cpp
+  camcon/camcon_gui.h
+  camcon/camcon_gui.cpp
+  camcon/camcon_window.h
+  camcon/camcon_window.cpp
+  camcon/camcon_window_files.cpp
+  camcon/camcon_tour.cpp
+  camcon/camcon_identity_panel.h
+  camcon/camcon_identity_panel.cpp
+  family_gui.h
+  family_gui.cpp
   replace_edits_question.h
   replace_edits_question.cpp
   camcon/write_plan_builder.h
   camcon/write_plan_builder.cpp
   camcon/device_writer.h
   camcon/device_writer.cpp
-  replace_edits_dialog.h
-  replace_edits_dialog.cpp
+  camcon/replace_edits_dialog.h
+  camcon/replace_edits_dialog.cpp
   camcon/incoming_values.h
   camcon/incoming_values.cpp
   camcon/device_check.h

@@ -137,8 +137,10 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         }
     }
     if (options.command.isEmpty()) return usageError(QStringLiteral("no COMMAND given"));
+    if (options.family.isEmpty()) options.family = comm::FamilyRegistry::instance().defaultId();
     // The protocol follows the family: its default, or one of its own.
     const comm::FamilyInfo* family = comm::FamilyRegistry::instance().find(options.family);
+    if (!family) return usageError(QStringLiteral("no device family is built into this CamBench"));
     if (!protocolGiven) {
         options.protocol = family->defaultProtocol;
     } else if (options.protocolInfo().familyId != family->id) {

@@ -11,9 +11,9 @@ namespace cambench::cli {
 // The options before COMMAND (see usageText()).
 struct GlobalOptions {
     QString port = QStringLiteral("sim");
-    QString family = QStringLiteral("camcon");      // a FamilyRegistry id
-    QString protocol = QStringLiteral("standard");  // a ProtocolRegistry id of `family`
-    int baud = 0;                                   // 0 = the protocol's default
+    QString family;    // a FamilyRegistry id; empty: FamilyRegistry::defaultId()
+    QString protocol;  // a ProtocolRegistry id of `family`: its default unless --protocol
+    int baud = 0;      // 0 = the protocol's default
     int device = 0;
     int pcNumber = 63;
     int timeoutMs = 0;  // 0 = derived from the line

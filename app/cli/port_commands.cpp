@@ -4,7 +4,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 
-#include "comm/transport/serial_port_list.h"
+#include "comm/ports/serial_port_list.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -2,7 +2,7 @@
 
 #include "cli_output.h"
 
-#include "comm/engine/traffic_log.h"
+#include "comm/traffic/traffic_log.h"
 
 namespace cambench::cli {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "comm/engine/traffic_entry.h"
+#include "comm/traffic/traffic_entry.h"
 
 #include <QSaveFile>
 #include <QString>

@@ -1,11 +1,12 @@
 #include "gui_registry.h"
 
+#include "ui/camcon/camcon_gui.h"
 #include "ui/camcon/protocols/ascii_settings_widget.h"
 #include "ui/camcon/protocols/table_settings_widget.h"
 
 namespace cambench {
 
-void registerProtocolWidgets() {
+void registerGuiParts() {
     ProtocolWidgetRegistry& widgets = ProtocolWidgetRegistry::instance();
     widgets.add(QStringLiteral("standard"),
                 [](const QString&) { return new AsciiSettingsWidget(false); });
@@ -15,6 +16,11 @@ void registerProtocolWidgets() {
         widgets.add(QLatin1String(id),
                     [](const QString& protocol) { return new TableSettingsWidget(protocol); });
     }
+
+    FamilyGuiRegistry& families = FamilyGuiRegistry::instance();
+    families.add({QStringLiteral("camcon"), [](DeviceSession* session, QObject* parent) {
+                      return new CamConGui(session, parent);
+                  }});
 }
 
 }  // namespace cambench

@@ -32,8 +32,8 @@ struct CommandLine {
         QStringLiteral("port")};
     const QCommandLineOption protocol{
         QStringLiteral("protocol"),
-        QStringLiteral("With --port: standard, multiuser, 3964r-n96 or 3964r-e38 (default: the "
-                       "connection page's choice)."),
+        QStringLiteral("With --port: a protocol id, as `cambench-cli --help` lists them "
+                       "(default: the connection page's choice)."),
         QStringLiteral("protocol")};
     const QCommandLineOption shots{QStringLiteral("screenshots"),
                                    QStringLiteral("Visit every screen on the simulated device, "
@@ -42,7 +42,7 @@ struct CommandLine {
 
     CommandLine() {
         parser.setApplicationDescription(
-            QStringLiteral("Programming and monitoring of CamCon cam controllers.\n"
+            QStringLiteral("Programming, monitoring and backup of machine controllers.\n"
                            "Version " CAMBENCH_VERSION_TEXT "."));
         parser.addHelpOption();
         parser.addVersionOption();
@@ -79,7 +79,7 @@ int main(int argc, char* argv[]) {
         commandLine.parser.process(text);  // prints and exits
         return 0;
     }
-    cambench::registerProtocolWidgets();
+    cambench::registerGuiParts();
     QApplication app(argc, argv);
     nameApplication();
 

@@ -105,9 +105,9 @@ void addOptions(QCommandLineParser& parser) {
     for (const FamilyInfo* family : FamilyRegistry::instance().all())
         families << (family->built ? family->id
                                    : QStringLiteral("%1 (not built yet)").arg(family->id));
-    parser.setApplicationDescription(QStringLiteral(
-        "A simulated device: CamCon cam controller by default. Without --tcp it serves a "
-        "pseudo-terminal and prints its path as the first line on stdout."));
+    parser.setApplicationDescription(
+        QStringLiteral("A simulated device of one family (see --family). Without --tcp it serves a "
+                       "pseudo-terminal and prints its path as the first line on stdout."));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOptions({

@@ -107,8 +107,7 @@ public:
     // On failure the message says whether the device is erased or partial.
     virtual Status restore(const EepromImage& image, const ProgressFn& progress = {}) = 0;
 
-    // Device numbers in [first,last] that answer.
-    virtual Result<QList<int>> scanBus(int first, int last, const ProgressFn& progress = {}) = 0;
+    // scanBus() (DeviceConnection): Multiuser only; the others refuse it.
     // A request typed by the user; returns the reply as text.
     virtual Result<QByteArray> raw(const QByteArray& request) = 0;
 

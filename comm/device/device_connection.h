@@ -1,6 +1,12 @@
 #pragma once
 
+#include "progress.h"
+
 #include "comm/engine/request_engine.h"
+#include "model/result.h"
+
+#include <QCoreApplication>
+#include <QList>
 
 #include <QString>
 
@@ -33,6 +39,15 @@ public:
         quick.retries = 0;
         engine().setSettings(quick);
         return identify();
+    }
+    // Device numbers in [first,last] that answer on a bus (ProtocolInfo::
+    // isBus); a point-to-point protocol has none to scan.
+    virtual Result<QList<int>> scanBus(int first, int last, const ProgressFn& progress = {}) {
+        Q_UNUSED(first);
+        Q_UNUSED(last);
+        Q_UNUSED(progress);
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "this protocol has no bus to scan"));
     }
     // A bus protocol addresses later requests to `device`; others ignore it.
     virtual void setDevice(int device) { Q_UNUSED(device); }

@@ -32,4 +32,10 @@ Result<const FamilyInfo*> FamilyRegistry::usable(const QString& id) const {
     return family;
 }
 
+QString FamilyRegistry::defaultId() const {
+    for (const FamilyInfo* family : all())
+        if (family->built) return family->id;
+    return {};
+}
+
 }  // namespace cambench::comm

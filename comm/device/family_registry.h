@@ -38,6 +38,9 @@ public:
     // The family `id` names when this build can talk to it; otherwise a
     // usage error naming the families there are, or saying it is not built.
     Result<const FamilyInfo*> usable(const QString& id) const;
+    // The family a command line without --family means: the first built
+    // one registered (app/registry registers the CamCon first).
+    QString defaultId() const;
 };
 
 }  // namespace cambench::comm

@@ -26,6 +26,7 @@ struct ProtocolInfo {
     QString title;     // "CamCon ASCII, Multiuser (RS485)" (English; ui/ translates)
     SerialSettings defaultSerial;
     bool isBus = false;  // devices are addressed by number (and may be scanned)
+    int lastDevice = 0;  // a bus: the highest device number (CamCon Multiuser: 63)
     std::function<std::unique_ptr<ProtocolSettings>()> makeSettings;
     // Opens the device connection over an open transport. `line` carries
     // the baud rate and character size the timeouts derive from.

@@ -1,6 +1,7 @@
 # The protocol-neutral device seam: protocol settings, device connections,
 # the protocol and family registries.
 target_sources(cambench_comm PRIVATE
+  device/connection_settings.h
   device/device_connection.h
   device/progress.h
   device/error_context.h

@@ -1,9 +1,9 @@
 #pragma once
 
+#include "comm/traffic/traffic_entry.h"
 #include "framing_backend.h"
 #include "line_timing.h"
 #include "request.h"
-#include "traffic_entry.h"
 
 #include "comm/transport/transport.h"
 #include "model/result.h"

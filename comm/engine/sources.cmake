@@ -8,7 +8,4 @@ target_sources(cambench_comm PRIVATE
   engine/request.h
   engine/request_engine.h
   engine/request_engine.cpp
-  engine/traffic_entry.h
-  engine/traffic_log.h
-  engine/traffic_log.cpp
 )

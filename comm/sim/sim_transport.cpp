@@ -1,7 +1,5 @@
 #include "sim_transport.h"
 
-#include "comm/sim/camcon/sim_demo.h"
-
 #include <QThread>
 
 #include <algorithm>

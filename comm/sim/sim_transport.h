@@ -1,9 +1,8 @@
 #pragma once
 
-#include "comm/sim/camcon/sim_device.h"
-#include "comm/sim/camcon/sim_port_config.h"
 #include "sim_endpoint.h"
 #include "sim_pacer.h"
+#include "simulator_registry.h"
 
 #include "comm/transport/transport_registry.h"
 

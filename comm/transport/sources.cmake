@@ -4,8 +4,6 @@ target_sources(cambench_comm PRIVATE
   transport/transport_logging.cpp
   transport/serial_transport.h
   transport/serial_transport.cpp
-  transport/serial_port_list.h
-  transport/serial_port_list.cpp
   transport/tcp_transport.h
   transport/tcp_transport.cpp
   transport/transport_registry.h

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "comm/device/connection_settings.h"
 #include "model/result.h"
 
 #include <QByteArray>
@@ -8,27 +9,6 @@
 #include <memory>
 
 namespace cambench::comm {
-
-// Serial line settings; every one QSerialPort offers.
-struct SerialSettings {
-    int baud = 9600;
-    int dataBits = 8;
-    char parity = 'N';       // 'N', 'E', 'O', 'S', 'M'
-    int stopBits = 1;        // 1 or 2 (3 = one and a half)
-    char flowControl = 'N';  // 'N' none, 'H' RTS/CTS, 'S' XON/XOFF
-    bool dtr = true;         // failing to set DTR/RTS (pty) must not abort a connection
-    bool rts = true;
-};
-
-// How to reach the device. `port` is a device path or name (/dev/ttyUSB0,
-// COM3, any pty path), "tcp://host:port" (serial device servers) or "sim".
-struct ConnectionSettings {
-    QString port = QStringLiteral("sim");
-    SerialSettings serial;
-    // The protocol id the PC speaks ("standard", "3964r-n96"): a transport
-    // ignores it, but a simulated device on the far side answers in it.
-    QString protocol;
-};
 
 // A byte pipe to the device, used only from the worker thread, with a
 // blocking API bounded by deadlines: the worker thread may wait on the line,

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "comm/device/protocol_settings.h"
-#include "comm/engine/traffic_entry.h"
+#include "comm/traffic/traffic_entry.h"
 #include "comm/transport/transport.h"
 #include "job.h"
 

@@ -8,10 +8,13 @@
 #include "comm/engine/request_engine.h"
 #include "comm/sim/simulator_registry.h"
 #include "ui/device_session.h"
-#include "ui/family_pages.h"
+#include "ui/family_gui.h"
+#include "ui/main_window.h"
 #include "ui/section_page.h"
 
+#include <QAction>
 #include <QLabel>
+#include <QMenu>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -129,6 +132,36 @@ private:
     QLabel* m_answer;
 };
 
+// The family's part of the window: its page, one Device menu entry and
+// one screenshot-tour stop.
+class FakeWindow : public FamilyWindow {
+public:
+    FakeWindow(FamilyGui* gui, MainWindow* window)
+        : FamilyWindow(gui, window), m_page(new FakePage(gui->session())) {}
+    QList<SectionPage*> pages() const override { return {m_page}; }
+    void addMenuEntries(const FamilyMenus& menus) override {
+        QAction* ping = menus.device->addAction(QStringLiteral("Ping the fake device"), this,
+                                                [this] { window()->showPage(m_page); });
+        ping->setObjectName(QStringLiteral("fakePingAction"));
+    }
+    QList<TourStop> tourStops(const QString&) override {
+        return {{QStringLiteral("01-fake"),
+                 [this] { window()->showPage(m_page); },
+                 [] { return true; },
+                 {}}};
+    }
+
+private:
+    FakePage* m_page;
+};
+
+class FakeGui : public FamilyGui {
+public:
+    FakeGui(DeviceSession* session, QObject* parent)
+        : FamilyGui(QStringLiteral("fake"), session, parent) {}
+    FamilyWindow* createWindow(MainWindow* window) override { return new FakeWindow(this, window); }
+};
+
 // cambench-cli --family fake ping N
 int runPing(cli::CliSession& session, cli::CommandArgs& args) {
     const Result<int> n = cli::parseIntArgument(args.takePositional(), QStringLiteral("N"), 0, 99);
@@ -219,8 +252,9 @@ void registerFakeFamily() {
     static bool pagesAdded = false;
     if (!pagesAdded) {
         pagesAdded = true;
-        FamilyPageRegistry::instance().add(
-            {QStringLiteral("fake"), [](DeviceSession* session) { return new FakePage(session); }});
+        FamilyGuiRegistry::instance().add(
+            {QStringLiteral("fake"),
+             [](DeviceSession* session, QObject* parent) { return new FakeGui(session, parent); }});
         cli::CommandRegistry::instance().add(
             {QStringLiteral("fake"), QStringLiteral("ping"), runPing});
         cli::CommandRegistry::instance().addHelp(QStringLiteral("fake"),

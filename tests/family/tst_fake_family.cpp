@@ -7,17 +7,22 @@
 
 #include "app/cli/command_line.h"
 #include "ui/connection_page.h"
+#include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/main_window.h"
+#include "ui/screenshot_tour.h"
 #include "ui/shell.h"
 
+#include <QAction>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace cambench;
@@ -32,12 +37,18 @@ QListWidgetItem* navItem(MainWindow* window, const QString& title) {
     return items.isEmpty() ? nullptr : items.first();
 }
 
+QAction* menuEntry(MainWindow* window, const QString& text) {
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text() == text) return action;
+    return nullptr;
+}
+
 bool connectVia(Shell& shell, const QString& protocol) {
     ConnectionPage* page = shell.window()->connectionPage();
     page->setPort(QStringLiteral("sim:throttle=0"));
     page->setProtocol(protocol);
     QSignalSpy loaded(shell.window(), &MainWindow::loaded);
-    shell.window()->connectAndLoad(0);
+    shell.window()->connectAndLoad();
     return loaded.wait(kTimeoutMs) && loaded.first().first().toBool();
 }
 
@@ -69,9 +80,18 @@ private Q_SLOTS:
         QListWidgetItem* fakeItem = navItem(window, QStringLiteral("Fake device"));
         QVERIFY(fakeItem);
         QVERIFY(!fakeItem->isHidden());
-        QListWidgetItem* cams = window->findChild<QListWidget*>()->item(MainWindow::Cams);
+        QListWidgetItem* cams = navItem(window, QStringLiteral("Cam programs"));
+        QVERIFY(cams);
         QVERIFY(cams->isHidden());
         QVERIFY(!window->findChild<QListWidget*>()->item(MainWindow::Connection)->isHidden());
+        // So do the menu entries: its own shows, the CamCon's Compare hides.
+        auto* ping = window->findChild<QAction*>(QStringLiteral("fakePingAction"));
+        QVERIFY(ping && ping->isVisible());
+        QAction* compare = menuEntry(window, QStringLiteral("Co&mpare with device…"));
+        QVERIFY(compare && !compare->isVisible());
+        // The connection strip names the device as the family identified it.
+        QVERIFY2(window->connectionStrip()->text().contains(QLatin1String("FAKE-1")),
+                 qPrintable(window->connectionStrip()->text()));
 
         // The page works with its device through the worker.
         const int before = fake::requestsReceived();
@@ -87,7 +107,23 @@ private Q_SLOTS:
         QVERIFY(connectVia(shell, QStringLiteral("standard")));
         QVERIFY(fakeItem->isHidden());
         QVERIFY(!cams->isHidden());
+        QVERIFY(!ping->isVisible());
+        QVERIFY(compare->isVisible());
         QCOMPARE(window->connectionPage()->family(), QStringLiteral("camcon"));
+    }
+
+    void screenshotTourVisitsTheFamilysStops() {
+        Shell shell;
+        shell.start(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
+        QSignalSpy loaded(shell.window(), &MainWindow::loaded);
+        QVERIFY(loaded.wait(kTimeoutMs));
+        QTemporaryDir dir;
+        ScreenshotTour tour(&shell, dir.path());
+        QSignalSpy finished(&tour, &ScreenshotTour::finished);
+        tour.start();
+        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(tour.failures().join('\n')));
+        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("01-fake.png"))));
     }
 
     void cliHostsTheFamily() {

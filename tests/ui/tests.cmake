@@ -6,7 +6,7 @@ cambench_add_test(ui_shell_pages_test SOURCES ui/register_widgets.cpp ui/shell/t
 # Issue 6 ("what CamBench says about a device must be true"): the GUI on
 # real widgets against the simulator, one file per group of points.
 function(cambench_add_truth_test name)
-  cambench_add_test(${name} SOURCES ${ARGN} ui/truth/pty_simulator.h ui/shell/shell_fixture.h
+  cambench_add_test(${name} SOURCES ${ARGN} ui/register_widgets.cpp ui/truth/pty_simulator.h ui/shell/shell_fixture.h
                     LIBS cambench_ui cambench_gui_registry cambench_sim)
 endfunction()
 cambench_add_truth_test(ui_truth_write_test ui/truth/tst_write_truth.cpp)

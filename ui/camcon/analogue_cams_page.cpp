@@ -32,7 +32,7 @@ QTableWidgetItem* numberItem(qint32 value) {
 }  // namespace
 
 AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_output(new QSpinBox),

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "model/camcon/analogue_cams.h"
 
@@ -18,7 +18,7 @@ class Workspace;
 // the workspace (TableSectionCopies): edits of every output stay when
 // another one is shown, are saved with the project, listed in Compare with
 // device and written through the one write path.
-class AnalogueCamsPage : public SectionPage {
+class AnalogueCamsPage : public CamConSectionPage {
     Q_OBJECT
 public:
     AnalogueCamsPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

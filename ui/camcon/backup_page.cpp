@@ -6,7 +6,7 @@
 
 namespace cambench {
 
-BackupPage::BackupPage(QWidget* parent) : SectionPage(parent) {
+BackupPage::BackupPage(QWidget* parent) : CamConSectionPage(parent) {
     auto* text = new QLabel(
         tr("<h3>Backup and restore</h3>"
            "<p>A <b>backup</b> copies the whole EEPROM of the device (cam programs, dead times, "

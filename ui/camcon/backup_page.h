@@ -1,11 +1,11 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 namespace cambench {
 
 // The Backup section: what backup and restore do, and the way into the wizard.
-class BackupPage : public SectionPage {
+class BackupPage : public CamConSectionPage {
     Q_OBJECT
 public:
     explicit BackupPage(QWidget* parent = nullptr);

@@ -21,7 +21,7 @@ namespace cambench {
 namespace {}  // namespace
 
 CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_editor(new CamEditorWidget(workspace->cams())) {

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "device_writer.h"
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "model/camcon/device_info.h"
 
@@ -14,7 +14,7 @@ class Workspace;
 // The cam program editor (ui/cameditor) wired to the device: its read and
 // write requests become jobs, and the monitor's live position and outputs
 // reach its diagram while they are live.
-class CamPage : public SectionPage {
+class CamPage : public CamConSectionPage {
     Q_OBJECT
 public:
     CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

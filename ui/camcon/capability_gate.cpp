@@ -20,9 +20,9 @@ struct Availability {
 
 }  // namespace
 
-CapabilityGate::CapabilityGate(DeviceSession* session, SectionPage* page,
+CapabilityGate::CapabilityGate(DeviceSession* session, CamConSectionPage* page,
                                comm::CamConCapability capability, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_page(page),
       m_capability(capability),

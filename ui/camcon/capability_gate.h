@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "comm/camcon/camcon_device.h"
 
@@ -19,22 +19,22 @@ class DeviceSession;
 // why (the protocol's own reason, translated) and greys its entry in the
 // navigation, so that nothing of another protocol's device stays on view.
 // Offline, the page is shown for editing.
-class CapabilityGate : public SectionPage {
+class CapabilityGate : public CamConSectionPage {
     Q_OBJECT
 public:
-    CapabilityGate(DeviceSession* session, SectionPage* page, comm::CamConCapability capability,
-                   QWidget* parent = nullptr);
+    CapabilityGate(DeviceSession* session, CamConSectionPage* page,
+                   comm::CamConCapability capability, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return m_page->sectionTitle(); }
     QList<SectionDifference> differences() const override;
     void deviceConnected() override;
 
-    SectionPage* page() const { return m_page; }
+    CamConSectionPage* page() const { return m_page; }
     bool isAvailable() const { return m_available; }
     // Why the section is not available (translated), empty while it is.
     QString reason() const;
     // The navigation entry of this section, greyed while not available.
-    void setNavItem(QListWidgetItem* item);
+    void setNavItem(QListWidgetItem* item) override;
 
 Q_SIGNALS:
     void availabilityChanged(bool available);
@@ -45,7 +45,7 @@ private:
     void showAvailability(bool available, const QString& reason);
 
     DeviceSession* m_session;
-    SectionPage* m_page;
+    CamConSectionPage* m_page;
     comm::CamConCapability m_capability;
     QStackedWidget* m_stack;
     QLabel* m_reason;

@@ -2,8 +2,8 @@
 #include "ui/camcon/camcon_jobs.h"
 
 #include "incoming_values.h"
+#include "ui/camcon/camcon_section_page.h"
 #include "ui/device_session.h"
-#include "ui/section_page.h"
 #include "workspace.h"
 
 #include "comm/camcon/usecases/read_everything.h"
@@ -31,7 +31,7 @@ QString timeText(const QDateTime& utc) {
 }  // namespace
 
 CompareDialog::CompareDialog(DeviceSession* session, Workspace* workspace,
-                             const QList<SectionPage*>& pages, QWidget* parent)
+                             const QList<CamConSectionPage*>& pages, QWidget* parent)
     : QDialog(parent),
       m_session(session),
       m_workspace(workspace),
@@ -174,7 +174,7 @@ void CompareDialog::showDifferences() {
         section->setExpanded(true);
     }
     int count = 0;
-    for (SectionPage* page : m_pages) {
+    for (CamConSectionPage* page : m_pages) {
         const QList<SectionDifference> differences = page->differences();
         if (differences.isEmpty()) continue;
         count += int(differences.size());

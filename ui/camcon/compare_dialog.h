@@ -13,7 +13,7 @@ class QTreeWidget;
 namespace cambench {
 
 class DeviceSession;
-class SectionPage;
+class CamConSectionPage;
 class Workspace;
 
 // "Compare with device": reads the device first (progress, cancel), then
@@ -24,8 +24,8 @@ class Workspace;
 class CompareDialog : public QDialog {
     Q_OBJECT
 public:
-    CompareDialog(DeviceSession* session, Workspace* workspace, const QList<SectionPage*>& pages,
-                  QWidget* parent = nullptr);
+    CompareDialog(DeviceSession* session, Workspace* workspace,
+                  const QList<CamConSectionPage*>& pages, QWidget* parent = nullptr);
 
     // Reads the device again (offline: shows the last device copy, saying so).
     void refresh();
@@ -54,7 +54,7 @@ private:
 
     DeviceSession* m_session;
     Workspace* m_workspace;
-    QList<SectionPage*> m_pages;
+    QList<CamConSectionPage*> m_pages;
     QLabel* m_source;
     QProgressBar* m_progress;
     QPushButton* m_cancel;

@@ -42,7 +42,7 @@ qint32 tenthsOf(const QTableWidgetItem* item) {
 }  // namespace
 
 DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_table(new QTableWidget(0, COUNT)),

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "model/camcon/dead_time_modes.h"
 
@@ -15,7 +15,7 @@ class Workspace;
 // Dead-time modes and the separate switch-on and switch-off dead times of
 // each output (table interface, areas 1..200 words 251..253): read, edit,
 // write the outputs that differ from the device.
-class DeadTimeModesPage : public SectionPage {
+class DeadTimeModesPage : public CamConSectionPage {
     Q_OBJECT
 public:
     enum Column { OutputColumn, ModeColumn, NormalColumn, OnColumn, OffColumn, COUNT };

@@ -29,7 +29,7 @@ QString ms(qint32 tenths) {
 }  // namespace
 
 DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_model(new DeadTimesModel(workspace, this)),

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 class QLabel;
 class QTableView;
@@ -12,7 +12,7 @@ class DeviceSession;
 class Workspace;
 
 // Dead times (and names) of the outputs: read, edit, write the changed ones.
-class DeadTimesPage : public SectionPage {
+class DeadTimesPage : public CamConSectionPage {
     Q_OBJECT
 public:
     DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

@@ -18,7 +18,7 @@
 namespace cambench {
 
 EepromLockPage::EepromLockPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_state(new QLabel),

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include <optional>
 
@@ -17,7 +17,7 @@ class Workspace;
 // when the device is switched off. The page says so plainly. The state
 // lives in the workspace (TableSectionCopies): a project carries it, and a
 // project that wants another state shows here and in Compare as an edit.
-class EepromLockPage : public SectionPage {
+class EepromLockPage : public CamConSectionPage {
     Q_OBJECT
 public:
     EepromLockPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

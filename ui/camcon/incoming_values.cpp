@@ -4,7 +4,7 @@
 #include "plc_page.h"
 #include "setting_field.h"
 #include "table_section_copies.h"
-#include "ui/replace_edits_dialog.h"
+#include "ui/camcon/replace_edits_dialog.h"
 
 #include "ui/camcon/cameditor/cam_document.h"
 

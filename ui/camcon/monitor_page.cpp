@@ -1,5 +1,7 @@
 #include "monitor_page.h"
+
 #include "ui/camcon/camcon_jobs.h"
+#include "ui/family_gui.h"
 
 #include "ui/device_session.h"
 #include "ui/led_strip.h"
@@ -66,7 +68,7 @@ QString readout(const QString& text, qint32 raw) {
 }  // namespace
 
 MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_freshness(new QLabel),
@@ -225,8 +227,14 @@ void MonitorPage::setLiveWanted(bool wanted) {
     updateRunning();
 }
 
+bool MonitorPage::onCamCon() const {
+    // Connected to another family, the CamCon's polls would only fail
+    // there and call that line silent.
+    return m_session->isOnline() && sessionFamily(*m_session) == QLatin1String("camcon");
+}
+
 void MonitorPage::updateRunning() {
-    if (!m_session->isOnline()) {
+    if (!onCamCon()) {
         m_timer.stop();
         Q_EMIT liveEnded();
         return;
@@ -243,7 +251,7 @@ void MonitorPage::updateRunning() {
 }
 
 void MonitorPage::pollCycle() {
-    if (!m_session->isOnline()) return;
+    if (!onCamCon()) return;
     if (m_pollJob != 0) {
         // Still waiting in the queue behind a user job: the line is busy,
         // not silent. On the line for a whole cycle: no answer.

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "model/camcon/device_info.h"
 
@@ -24,7 +24,7 @@ class Workspace;
 // cycles: one Poll job per cycle, never a second while one is unanswered;
 // a cycle that finds the last poll unanswered marks every live value stale
 // (see LiveFreshness). Polls only while a page shows live values.
-class MonitorPage : public SectionPage {
+class MonitorPage : public CamConSectionPage {
     Q_OBJECT
 public:
     MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
@@ -63,6 +63,7 @@ private:
     void onPollDone(const Result<DeviceStatus>& status);
     void showStatus(const DeviceStatus& status);
     void showFreshness();
+    bool onCamCon() const;
     void updateRunning();
     void adaptInterval(qint64 lineMs);
     void setLiveInterval(int ms);

@@ -60,7 +60,7 @@ QString outputList(const QList<bool>& bits, int first, int last) {
 }  // namespace
 
 PlcCouplingPage::PlcCouplingPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_statusArea(monospaceLabel()),

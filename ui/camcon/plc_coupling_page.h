@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "comm/camcon/table/short_commands.h"
 #include "comm/usecases/item_outcome.h"
@@ -29,7 +29,7 @@ class Workspace;
 // CamCon answers as it should - then the PLC program is at fault.
 // Writes ask first, saying what will switch, and report what the device
 // holds afterwards (comm/usecases/short_coupling.h).
-class PlcCouplingPage : public SectionPage {
+class PlcCouplingPage : public CamConSectionPage {
     Q_OBJECT
 public:
     PlcCouplingPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

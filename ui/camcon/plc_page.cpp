@@ -43,7 +43,7 @@ QString PlcPage::networkName(int area, int number) {
 }
 
 PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_model(new PlcMatrixModel(workspace, this)),

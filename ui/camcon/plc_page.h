@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 class QComboBox;
 class QLabel;
@@ -17,7 +17,7 @@ class Workspace;
 
 // The PLC logic matrix: networks by area (O, P, M, X) and number, each with
 // its value, reset field and 5 x 6 symbols.
-class PlcPage : public SectionPage {
+class PlcPage : public CamConSectionPage {
     Q_OBJECT
 public:
     PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

@@ -25,7 +25,7 @@ namespace cambench {
 
 ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace* workspace,
                                                QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_program(new QSpinBox),

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "model/camcon/programming_program.h"
 
@@ -19,7 +19,7 @@ class Workspace;
 // the program whose cams the table's areas 1..200 read and write, and how
 // the device changes to it. The values live in the workspace
 // (TableSectionCopies), so a project saves them and Compare lists them.
-class ProgrammingProgramPage : public SectionPage {
+class ProgrammingProgramPage : public CamConSectionPage {
     Q_OBJECT
 public:
     ProgrammingProgramPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

@@ -72,7 +72,7 @@ QString SettingsPage::groupTitle(const QString& group) {
 }
 
 SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_groups(new QListWidget),

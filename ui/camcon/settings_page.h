@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include <QMap>
 
@@ -16,7 +16,7 @@ class Workspace;
 // Encoder and system settings: a form generated from settingSpecs(), one
 // page per group; dotted keys ("specialEncoder.ssi.…") get a box per
 // encoder type on their group's page.
-class SettingsPage : public SectionPage {
+class SettingsPage : public CamConSectionPage {
     Q_OBJECT
 public:
     SettingsPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

@@ -3,7 +3,7 @@
 
 #include "ui/device_session.h"
 
-#include "comm/engine/traffic_log.h"
+#include "comm/traffic/traffic_log.h"
 
 #include <QCheckBox>
 #include <QFileDialog>
@@ -26,7 +26,7 @@ constexpr int kMaxLogLines = 5000;
 }
 
 TerminalPage::TerminalPage(DeviceSession* session, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_command(new QLineEdit),
       m_replies(new QPlainTextEdit),

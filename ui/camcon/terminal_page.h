@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include "comm/camcon/ascii/ascii_link.h"
 
@@ -15,7 +15,7 @@ class DeviceSession;
 // Raw commands for diagnosis (the checksum is added by the link) and the
 // live traffic log: timestamps, hex and ASCII, user numbers masked by the
 // link before they get here. The log can be saved to a file.
-class TerminalPage : public SectionPage {
+class TerminalPage : public CamConSectionPage {
     Q_OBJECT
 public:
     explicit TerminalPage(DeviceSession* session, QWidget* parent = nullptr);

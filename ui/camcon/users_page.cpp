@@ -25,7 +25,7 @@ constexpr int kNumberLength = 5;
 }  // namespace
 
 UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
-    : SectionPage(parent),
+    : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
       m_model(new UsersModel(workspace, this)),

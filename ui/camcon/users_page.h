@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/section_page.h"
+#include "ui/camcon/camcon_section_page.h"
 
 #include <QList>
 
@@ -17,7 +17,7 @@ class Workspace;
 
 // Key assignment: the users, their rights and per-output access. User
 // numbers are masked everywhere until "Show numbers" is checked.
-class UsersPage : public SectionPage {
+class UsersPage : public CamConSectionPage {
     Q_OBJECT
 public:
     UsersPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);

@@ -27,6 +27,7 @@ ProtocolInfo asciiProtocol(Framing framing) {
               : QCoreApplication::translate("cambench::comm", "CamCon ASCII, Standard (RS232)");
     info.defaultSerial.baud = multi ? 38400 : 9600;  // notes 1, both 8N1
     info.isBus = multi;
+    info.lastDevice = multi ? 63 : 0;  // device numbers 0..63
     info.makeSettings = [framing] { return std::make_unique<AsciiProtocolSettings>(framing); };
     info.connect = [](Transport& transport, const ProtocolSettings& settings,
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {

@@ -1,7 +1,7 @@
 // The traffic log line and the masking of user numbers, on wire bytes.
 #include "comm/camcon/ascii/command_codec.h"
 #include "comm/camcon/ascii/traffic_mask.h"
-#include "comm/engine/traffic_log.h"
+#include "comm/traffic/traffic_log.h"
 
 #include <QtTest>
 

@@ -4,7 +4,7 @@
 
 #include "comm/camcon/ascii/ascii_camcon.h"
 #include "comm/camcon/ascii/ascii_protocol.h"
-#include "comm/engine/traffic_log.h"
+#include "comm/traffic/traffic_log.h"
 #include "comm/worker/comm_worker.h"
 
 #include <QSemaphore>

@@ -1,12 +1,14 @@
 #pragma once
 
+#include "ui/camcon/camcon_gui.h"
+#include "ui/camcon/camcon_window.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/capability_gate.h"
+#include "ui/camcon/replace_edits_dialog.h"
 #include "ui/camcon/users_page.h"
 #include "ui/camcon/workspace.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
-#include "ui/replace_edits_dialog.h"
 #include "ui/shell.h"
 
 #include <QApplication>
@@ -61,8 +63,8 @@ inline CapabilityGate* gateOf(MainWindow* window, QWidget* page) {
 // Lets queued reads (dead times, settings, users where the protocol has
 // them) of the start finish.
 inline bool waitForSections(Shell& shell) {
-    Workspace* ws = shell.workspace();
-    CapabilityGate* users = gateOf(shell.window(), shell.window()->usersPage());
+    Workspace* ws = camConWorkspace(shell);
+    CapabilityGate* users = gateOf(shell.window(), camConWindow(shell.window())->usersPage());
     return QTest::qWaitFor(
         [ws, users] {
             return ws->outputSettingsKnown() && ws->settingsKnown() &&

@@ -63,12 +63,12 @@ void GuiSettingsTest::everythingRememberedSurvivesARestart() {
         QTRY_VERIFY_WITH_TIMEOUT(first.session()->isOnline(), kDeviceTimeoutMs);
         // Another device than the demo: it is identified and read first.
         QTRY_VERIFY_WITH_TIMEOUT(
-            first.session()->deviceChecked() && !first.window()->isReadingDevice(),
+            first.session()->deviceChecked() && !camConWindow(first.window())->isReadingDevice(),
             kDeviceTimeoutMs);
-        QVERIFY(first.window()->saveProjectTo(project).ok());
+        QVERIFY(camConWindow(first.window())->saveProjectTo(project).ok());
         first.window()->resize(1100, 700);
         first.window()->move(30, 40);
-        first.window()->showSection(MainWindow::Monitor);
+        camConWindow(first.window())->showSection(CamConWindow::Monitor);
         first.switchLanguage(QStringLiteral("de"));
         guisettings::setDark(true);
         geometry = first.window()->geometry();
@@ -96,12 +96,14 @@ void GuiSettingsTest::everythingRememberedSurvivesARestart() {
     QCOMPARE(second.session()->protocol().protocolId(), QStringLiteral("multiuser"));
     QCOMPARE(second.session()->protocol().device(), 4);
     QCOMPARE(second.window()->connectionPage()->protocolSettings()->device(), 4);
-    QCOMPARE(second.window()->currentSection(), MainWindow::Monitor);
+    QCOMPARE(
+        second.window()->currentSection(),
+        second.window()->rowOf(camConWindow(second.window())->sectionPage(CamConWindow::Monitor)));
     QCOMPARE(second.window()->size(), geometry.size());
     QSignalSpy done(second.window(), &MainWindow::loaded);
     QVERIFY(done.wait(kDeviceTimeoutMs));
     QVERIFY(done.first().first().toBool());
-    QCOMPARE(second.workspace()->info().deviceNumber, 4);
+    QCOMPARE(camConWorkspace(second)->info().deviceNumber, 4);
 }
 
 void GuiSettingsTest::recentFilesMenuOpensAndForgetsMissingFiles() {
@@ -110,10 +112,10 @@ void GuiSettingsTest::recentFilesMenuOpensAndForgetsMissingFiles() {
     QTemporaryDir dir;
     const QString kept = dir.filePath(QStringLiteral("kept.json"));
     const QString gone = dir.filePath(QStringLiteral("gone.json"));
-    QVERIFY(shell->window()->saveProjectTo(gone).ok());
-    QVERIFY(shell->window()->saveProjectTo(kept).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(gone).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(kept).ok());
     QFile::remove(gone);
-    QMenu* recent = shell->window()->recentFilesMenu();
+    QMenu* recent = camConWindow(shell->window())->recentFilesMenu();
     Q_EMIT recent->aboutToShow();
     QStringList texts;
     for (QAction* action : recent->actions()) texts << action->text();
@@ -126,7 +128,7 @@ void GuiSettingsTest::recentFilesMenuOpensAndForgetsMissingFiles() {
     QCOMPARE(close.answered(), 1);
     QVERIFY(!guisettings::recentProjects().contains(QFileInfo(gone).absoluteFilePath()));
     recent->actions().at(0)->trigger();
-    QCOMPARE(shell->workspace()->projectPath(), QFileInfo(kept).absoluteFilePath());
+    QCOMPARE(camConWorkspace(*shell)->projectPath(), QFileInfo(kept).absoluteFilePath());
 }
 
 QTEST_MAIN(GuiSettingsTest)

@@ -39,7 +39,7 @@ void LineBackupTest::everyDeviceGetsItsBarAndAFailureIsSaid() {
     QTRY_VERIFY_WITH_TIMEOUT(shell->session()->isOnline(), kDeviceTimeoutMs);
 
     QTemporaryDir dir;
-    LineBackupDialog* dialog = shell->window()->openLineBackup();
+    LineBackupDialog* dialog = camConWindow(shell->window())->openLineBackup();
     dialog->setDirectory(dir.path());
     dialog->setDevices(QStringLiteral("0, 5, 9"));
     QSignalSpy finished(dialog, &LineBackupDialog::finished);

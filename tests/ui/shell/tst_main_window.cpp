@@ -58,18 +58,18 @@ void MainWindowTest::startReadsIdentityAndProgramZero() {
     QFETCH(QString, protocol);
     auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
     QVERIFY(shell);
-    QVERIFY(shell->workspace()->infoFromDevice());
-    QCOMPARE(shell->workspace()->info().epromDate, QStringLiteral("11.10.1994"));
-    QVERIFY(shell->workspace()->cams()->hasDeviceCopy(0));
-    QVERIFY(!shell->workspace()->cams()->program(0).tracks.isEmpty());
-    QCOMPARE(shell->workspace()->changedCount(), 0);
+    QVERIFY(camConWorkspace(*shell)->infoFromDevice());
+    QCOMPARE(camConWorkspace(*shell)->info().epromDate, QStringLiteral("11.10.1994"));
+    QVERIFY(camConWorkspace(*shell)->cams()->hasDeviceCopy(0));
+    QVERIFY(!camConWorkspace(*shell)->cams()->program(0).tracks.isEmpty());
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
 }
 
 void MainWindowTest::editedCamWrittenAndReadBackEqualsEdit() {
     QFETCH(QString, protocol);
     auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     const Track before = cams->track(0, 1);
     QVERIFY(!before.cams.isEmpty());
     Cam edited = before.cams.first();
@@ -77,7 +77,7 @@ void MainWindowTest::editedCamWrittenAndReadBackEqualsEdit() {
     cams->setCam(0, 1, 0, edited);
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
 
-    CamPage* page = shell->window()->camPage();
+    CamPage* page = camConWindow(shell->window())->camPage();
     std::optional<WriteResult> result;
     page->writeProgram(0, [&](const WriteResult& r) { result = r; });
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
@@ -102,13 +102,13 @@ void MainWindowTest::compareWritesOnlySelectedItems() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     cams->setDeadTime(2, cams->deadTime(2) + 15);
     Cam cam = cams->track(0, 1).cams.first();
     cam.on += 1;
     cams->setCam(0, 1, 0, cam);
 
-    CompareDialog* compare = shell->window()->openCompare();
+    CompareDialog* compare = camConWindow(shell->window())->openCompare();
     QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
     QCOMPARE(compare->differenceCount(), 2);
     compare->checkOnly({WorkspaceItem::deadTime(2)});
@@ -124,7 +124,7 @@ void MainWindowTest::compareWritesOnlySelectedItems() {
              qPrintable(compare->reportText()));
     // The cam edit was not selected and is still a difference.
     QCOMPARE(compare->differenceCount(), 1);
-    QCOMPARE(shell->workspace()->deviceDeadTime(2), cams->deadTime(2));
+    QCOMPARE(camConWorkspace(*shell)->deviceDeadTime(2), cams->deadTime(2));
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
     compare->close();
 }
@@ -134,14 +134,14 @@ void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {
     auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), protocol);
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    DeadTimesPage* page = shell->window()->deadTimesPage();
+    DeadTimesPage* page = camConWindow(shell->window())->deadTimesPage();
     DeadTimesModel* model = page->model();
     const QModelIndex cell = model->index(0, DeadTimesModel::DeadTimeColumn);
     QVERIFY(model->setData(cell, 12.3));
-    QCOMPARE(shell->workspace()->cams()->deadTime(1), 123);
+    QCOMPARE(camConWorkspace(*shell)->cams()->deadTime(1), 123);
     QVERIFY(model->data(cell).toString().startsWith(QStringLiteral("● ")));
     // Above the device's maximum (?GTZKMAX) is refused.
-    QVERIFY(!model->setData(cell, shell->workspace()->info().maxDeadTime / 10.0 + 0.1));
+    QVERIFY(!model->setData(cell, camConWorkspace(*shell)->info().maxDeadTime / 10.0 + 0.1));
 
     std::optional<WriteResult> result;
     page->writeChanges([&](const WriteResult& r) { result = r; });
@@ -152,7 +152,7 @@ void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {
     QVERIFY(!model->data(cell).toString().startsWith(QStringLiteral("● ")));
 
     page->readFromDevice();
-    QTRY_COMPARE_WITH_TIMEOUT(shell->workspace()->deviceDeadTime(1), 123, kDeviceTimeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(camConWorkspace(*shell)->deviceDeadTime(1), 123, kDeviceTimeoutMs);
 }
 
 void MainWindowTest::backupAndRestoreThroughWizard() {
@@ -163,7 +163,7 @@ void MainWindowTest::backupAndRestoreThroughWizard() {
     const QString image = dir.filePath(QStringLiteral("backup.json"));
     const QString safety = dir.filePath(QStringLiteral("safety.json"));
 
-    BackupWizard* backup = shell->window()->openBackupWizard();
+    BackupWizard* backup = camConWindow(shell->window())->openBackupWizard();
     backup->setMode(BackupWizard::Mode::Backup);
     backup->setPath(image);
     backup->next();
@@ -174,7 +174,7 @@ void MainWindowTest::backupAndRestoreThroughWizard() {
     QVERIFY(loadEepromImage(image).ok());
     backup->close();
 
-    BackupWizard* restore = shell->window()->openBackupWizard();
+    BackupWizard* restore = camConWindow(shell->window())->openBackupWizard();
     QSignalSpy restored(restore, &BackupWizard::restored);
     restore->setMode(BackupWizard::Mode::Restore);
     restore->setPath(image);
@@ -207,7 +207,7 @@ void MainWindowTest::restoreRefusesDamagedImage() {
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write("{\"format\":\"cambench-eeprom-image\",\"version\":1,\"blocks\":[]}");
     file.close();
-    BackupWizard* restore = shell->window()->openBackupWizard();
+    BackupWizard* restore = camConWindow(shell->window())->openBackupWizard();
     restore->setMode(BackupWizard::Mode::Restore);
     restore->setPath(path);
     // The refusal is a message box; answer it so the test goes on.
@@ -224,11 +224,11 @@ void MainWindowTest::failedReadOnDeadLineKeepsEditsAndSaysWhy() {
     QVERIFY(shell);
     // The sections' reads of the start run on the old line first.
     QVERIFY(waitForSections(*shell));
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     Cam cam = cams->track(0, 1).cams.first();
     cam.off += 3;
     cams->setCam(0, 1, 0, cam);
-    const int changes = shell->workspace()->changedCount();
+    const int changes = camConWorkspace(*shell)->changedCount();
     QVERIFY(changes > 0);
 
     // The same line now loses every answer (a pulled cable).
@@ -243,14 +243,14 @@ void MainWindowTest::failedReadOnDeadLineKeepsEditsAndSaysWhy() {
     QTRY_VERIFY_WITH_TIMEOUT(session->isOnline(), kDeviceTimeoutMs);
 
     std::optional<Status> read;
-    shell->window()->camPage()->readProgram(0, [&](const Status& s) { read = s; });
+    camConWindow(shell->window())->camPage()->readProgram(0, [&](const Status& s) { read = s; });
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QVERIFY(!read->ok());
     QVERIFY(!read->error().message.isEmpty());
     QVERIFY2(shell->window()->lastMessage().contains(QStringLiteral("Your edits are kept")),
              qPrintable(shell->window()->lastMessage()));
     QCOMPARE(cams->track(0, 1).cams.first(), cam);
-    QCOMPARE(shell->workspace()->changedCount(), changes);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), changes);
 }
 
 void MainWindowTest::closingWithUnwrittenChangesCountsThem() {
@@ -258,7 +258,7 @@ void MainWindowTest::closingWithUnwrittenChangesCountsThem() {
     QVERIFY(shell);
     MainWindow* window = shell->window();
     QVERIFY(!window->windowTitle().contains(QStringLiteral("not written")));
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     Cam cam = cams->track(0, 1).cams.first();
     cam.on += 2;
     cams->setCam(0, 1, 0, cam);
@@ -277,7 +277,7 @@ void MainWindowTest::sectionsFollowTheProtocolsCapabilities() {
     QVERIFY(shell);
     MainWindow* window = shell->window();
     const bool ascii = protocol == QLatin1String("standard");
-    CapabilityGate* users = gateOf(window, window->usersPage());
+    CapabilityGate* users = gateOf(window, camConWindow(window)->usersPage());
     CapabilityGate* modes = gateOf(window, window->findChild<DeadTimeModesPage*>());
     CapabilityGate* lock = gateOf(window, window->findChild<EepromLockPage*>());
     QVERIFY(users && modes && lock);

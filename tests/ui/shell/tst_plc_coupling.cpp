@@ -122,8 +122,8 @@ void PlcCouplingTest::deadTimeIsWrittenOnlyAfterYes() {
     QCOMPARE(bench.sim.device().state().deadTimes.value(4), 125);
     // Read back after the write: the page and the Dead times section's
     // device copy show what the device holds, not the value before.
-    QTRY_COMPARE_WITH_TIMEOUT(bench.shell->workspace()->cams()->deviceDeadTime(5).value_or(-1), 125,
-                              kDeviceTimeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(camConWorkspace(*bench.shell)->cams()->deviceDeadTime(5).value_or(-1),
+                              125, kDeviceTimeoutMs);
     QCOMPARE(bench.page->deadTimeBox()->value(), 12.5);
 }
 

@@ -57,7 +57,7 @@ void ShellPagesTest::modelsPassTheModelTester() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    Workspace* ws = shell->workspace();
+    Workspace* ws = camConWorkspace(*shell);
     DeadTimesModel deadTimes(ws);
     UsersModel users(ws);
     AccessGridModel access(ws);
@@ -126,8 +126,8 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    Workspace* ws = shell->workspace();
-    SettingsPage* page = shell->window()->settingsPage();
+    Workspace* ws = camConWorkspace(*shell);
+    SettingsPage* page = camConWindow(shell->window())->settingsPage();
     const SettingSpec* spec = nullptr;
     for (const SettingSpec& s : settingSpecs()) {
         if (s.kind == SettingKind::Integer && !s.readOnly &&
@@ -159,8 +159,8 @@ void ShellPagesTest::userNumbersMaskedUntilRevealed() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    UsersPage* page = shell->window()->usersPage();
-    const QString number = shell->workspace()->users().first().user.number;
+    UsersPage* page = camConWindow(shell->window())->usersPage();
+    const QString number = camConWorkspace(*shell)->users().first().user.number;
     QVERIFY(!number.isEmpty());
     const QModelIndex cell = page->model()->index(0, UsersModel::NumberColumn);
     page->selectUser(0);
@@ -210,7 +210,7 @@ void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
 void ShellPagesTest::languageSwitchShowsGermanLabels() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     Cam cam = cams->track(0, 1).cams.first();
     cam.on += 1;
     cams->setCam(0, 1, 0, cam);
@@ -220,7 +220,9 @@ void ShellPagesTest::languageSwitchShowsGermanLabels() {
     auto* nav = shell->window()->findChild<QListWidget*>();
     QVERIFY(nav);
     QCOMPARE(nav->item(MainWindow::Connection)->text(), QStringLiteral("Verbindung"));
-    QCOMPARE(nav->item(MainWindow::DeadTimes)->text(), QStringLiteral("Totzeiten"));
+    const SectionPage* deadTimes =
+        camConWindow(shell->window())->sectionPage(CamConWindow::DeadTimes);
+    QCOMPARE(nav->item(shell->window()->rowOf(deadTimes))->text(), QStringLiteral("Totzeiten"));
     // The edit and the line survived the rebuilt window.
     QCOMPARE(cams->track(0, 1).cams.first(), cam);
     QVERIFY(shell->session()->isOnline());
@@ -252,13 +254,13 @@ void ShellPagesTest::reportPdfHoldsIdentityAndPrograms() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QTextDocument document;
-    CommissioningReport::build(document, *shell->workspace());
+    CommissioningReport::build(document, *camConWorkspace(*shell));
     const QString text = document.toPlainText();
     QVERIFY(text.contains(QStringLiteral("11.10.1994")));
     QVERIFY(text.contains(QStringLiteral("Program 0")));
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("report.pdf"));
-    QVERIFY(CommissioningReport::write(path, *shell->workspace()).ok());
+    QVERIFY(CommissioningReport::write(path, *camConWorkspace(*shell)).ok());
     QFile pdf(path);
     QVERIFY(pdf.open(QIODevice::ReadOnly));
     QVERIFY(pdf.read(5) == "%PDF-");
@@ -268,13 +270,13 @@ void ShellPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    const Project saved = projectFromWorkspace(*shell->workspace());
+    const Project saved = projectFromWorkspace(*camConWorkspace(*shell));
     QVERIFY(!saved.programs.isEmpty());
     Workspace offline;
     offline.setInfo(saved.device, false);
     mergeIncoming(offline, saved, ValueSource::File, {});
-    QCOMPARE(offline.cams()->program(0).tracks, shell->workspace()->cams()->program(0).tracks);
-    QCOMPARE(offline.settings(), shell->workspace()->settings());
+    QCOMPARE(offline.cams()->program(0).tracks, camConWorkspace(*shell)->cams()->program(0).tracks);
+    QCOMPARE(offline.settings(), camConWorkspace(*shell)->settings());
     // Nothing of a loaded project is on a device yet.
     QVERIFY(offline.changedCount() > 0);
     // The same values; no read times: nothing of it was read from a device here.

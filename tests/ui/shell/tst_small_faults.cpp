@@ -70,7 +70,7 @@ void SmallFaultsTest::viewMenuShowsEncoderAndSystemWithItsAmpersand() {
 void SmallFaultsTest::ctrlYRedoes() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    QAction* redo = shell->window()->camPage()->editor()->redoAction();
+    QAction* redo = camConWindow(shell->window())->camPage()->editor()->redoAction();
     QVERIFY(redo->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::Key_Y)));
     QVERIFY(redo->shortcuts().contains(QKeySequence(QKeySequence::Redo)));
 }
@@ -80,11 +80,11 @@ void SmallFaultsTest::deadTimeCellRefuses1500InsteadOfMaking150() {
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
     MainWindow* window = shell->window();
-    window->showSection(MainWindow::DeadTimes);
-    QTableView* view = window->deadTimesPage()->view();
+    camConWindow(window)->showSection(CamConWindow::DeadTimes);
+    QTableView* view = camConWindow(window)->deadTimesPage()->view();
     const QModelIndex cell =
-        window->deadTimesPage()->model()->index(2, DeadTimesModel::DeadTimeColumn);
-    const qint32 before = shell->workspace()->cams()->deadTime(3);
+        camConWindow(window)->deadTimesPage()->model()->index(2, DeadTimesModel::DeadTimeColumn);
+    const qint32 before = camConWorkspace(*shell)->cams()->deadTime(3);
     view->setCurrentIndex(cell);
     view->edit(cell);
     auto* editor = qobject_cast<QDoubleSpinBox*>(QApplication::focusWidget());
@@ -98,11 +98,11 @@ void SmallFaultsTest::deadTimeCellRefuses1500InsteadOfMaking150() {
     QVERIFY(delegate);
     QVERIFY2(delegate->lastRefusal().contains(QStringLiteral("1500")),
              qPrintable(delegate->lastRefusal()));
-    QCOMPARE(shell->workspace()->cams()->deadTime(3), before);  // not 150.0 ms
+    QCOMPARE(camConWorkspace(*shell)->cams()->deadTime(3), before);  // not 150.0 ms
     editor->selectAll();
     QTest::keyClicks(editor, QStringLiteral("150"));
     QTest::keyClick(editor, Qt::Key_Return);
-    QTRY_COMPARE(shell->workspace()->cams()->deadTime(3), 1500);  // 150.0 ms, in 0.1 ms steps
+    QTRY_COMPARE(camConWorkspace(*shell)->cams()->deadTime(3), 1500);  // 150.0 ms, in 0.1 ms steps
 }
 
 void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
@@ -132,7 +132,7 @@ void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
 void SmallFaultsTest::plcOperandsI5AndE5AreRefusedWithAReason() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    PlcPage* page = shell->window()->plcPage();
+    PlcPage* page = camConWindow(shell->window())->plcPage();
     PlcMatrixModel* model = page->model();
     for (const QString& typed : {QStringLiteral("I5"), QStringLiteral("E5")}) {
         QVERIFY(!model->setData(model->index(0, 0), typed));
@@ -148,7 +148,7 @@ void SmallFaultsTest::progressMessageGoesWhenItsJobIsDone() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     std::optional<Status> read;
-    shell->window()->camPage()->readProgram(1, [&](const Status& s) { read = s; });
+    camConWindow(shell->window())->camPage()->readProgram(1, [&](const Status& s) { read = s; });
     QVERIFY(shell->window()->statusBar()->currentMessage().endsWith(QChar(0x2026)));
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QVERIFY(!shell->window()->statusBar()->currentMessage().endsWith(QChar(0x2026)));
@@ -159,7 +159,7 @@ void SmallFaultsTest::projectNameSurvivesLanguageSwitch() {
     QVERIFY(shell);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("line-7.json"));
-    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
     QVERIFY(shell->window()->windowTitle().contains(QStringLiteral("line-7.json")));
     shell->switchLanguage(QStringLiteral("de"));
     QVERIFY2(shell->window()->windowTitle().contains(QStringLiteral("line-7.json")),
@@ -177,15 +177,15 @@ void SmallFaultsTest::toolBarsShowEveryActionAt1280Pixels() {
         window = shell->window();
         window->showNormal();
         window->resize(1280, 800);
-        window->showSection(MainWindow::Cams);
+        camConWindow(window)->showSection(CamConWindow::Cams);
         QVERIFY(QTest::qWaitForWindowExposed(window));
-        for (QToolBar* bar : window->camPage()->editor()->findChildren<QToolBar*>()) {
+        for (QToolBar* bar : camConWindow(window)->camPage()->editor()->findChildren<QToolBar*>()) {
             // The overflow button shows only when actions do not fit.
             for (QToolButton* button :
                  bar->findChildren<QToolButton*>(QStringLiteral("qt_toolbar_ext_button")))
                 QVERIFY2(!button->isVisible(), qPrintable(language));
         }
-        const QList<QAction*> actions = window->camPage()->editor()->editorActions();
+        const QList<QAction*> actions = camConWindow(window)->camPage()->editor()->editorActions();
         for (QAction* zoom : {actions.at(9), actions.at(10), actions.at(11)}) {
             bool shown = false;
             for (QToolButton* button : window->findChildren<QToolButton*>()) {

@@ -72,13 +72,13 @@ void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
     QVERIFY(shell);
     auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
     QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
-    const int before = shell->workspace()->changedCount();
+    const int before = camConWorkspace(*shell)->changedCount();
 
     // Output 5's switch-on dead time typed as 3.5 ms, as the delegate commits it.
     QTableWidget* table = modes->table();
     QTableWidgetItem* on = table->item(4, DeadTimeModesPage::OnColumn);
     on->setData(Qt::EditRole, 3.5);
-    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 1);
     QVERIFY(on->font().bold());
     QVERIFY2(on->toolTip().startsWith(QLatin1String("On the device: ")), qPrintable(on->toolTip()));
     QVERIFY(table->item(4, DeadTimeModesPage::OutputColumn)->text().startsWith(changedMarker()));
@@ -98,7 +98,7 @@ void TablePageEditsTest::deadTimeModeEditIsMarkedCountedAndAskedAbout() {
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
     QVERIFY2(result->ok() && (*result)->complete(), qPrintable(writeDetails(*result)));
     QCOMPARE((*result)->deadTimeModes.size(), 1);
-    QCOMPARE(shell->workspace()->changedCount(), before);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before);
     QVERIFY(!table->item(4, DeadTimeModesPage::OnColumn)->font().bold());
 }
 
@@ -107,11 +107,11 @@ void TablePageEditsTest::analogueEditIsCountedAndARefusalSaysWhere() {
     QVERIFY(shell);
     auto* analogue = shell->window()->findChild<AnalogueCamsPage*>();
     QTRY_COMPARE_WITH_TIMEOUT(analogue->onDevice().points.size(), 3, kDeviceTimeoutMs);
-    const int before = shell->workspace()->changedCount();
+    const int before = camConWorkspace(*shell)->changedCount();
     // The second point's position set below the first's: out of order.
     QTableWidgetItem* position = analogue->table()->item(1, 0);
     position->setData(Qt::EditRole, -5);
-    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 1);
     QVERIFY(position->font().bold());
 
     // Said on the page before anything is written, naming the point.
@@ -135,7 +135,7 @@ void TablePageEditsTest::analogueEditIsCountedAndARefusalSaysWhere() {
     QVERIFY2(seen.contains(QLatin1String("base point 2")), qPrintable(seen));
     QVERIFY2(!seen.contains(QLatin1String("reply may have been lost")), qPrintable(seen));
     // The edit stays, counted.
-    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 1);
     QString question;
     QVERIFY(quitAsks(shell->window(), &question));
     QVERIFY2(question.contains(QString::number(before + 1)), qPrintable(question));
@@ -152,10 +152,10 @@ void TablePageEditsTest::programmingProgramEditIsMarkedAndCounted() {
             state = label;
     QVERIFY(state);
     QTRY_COMPARE_WITH_TIMEOUT(state->text(), QStringLiteral("As on the device."), kDeviceTimeoutMs);
-    const int before = shell->workspace()->changedCount();
+    const int before = camConWorkspace(*shell)->changedCount();
     auto* program = page->findChildren<QSpinBox*>().first();
     program->setValue(program->value() + 1);
-    QCOMPARE(shell->workspace()->changedCount(), before + 1);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 1);
     QVERIFY(program->font().bold());
     QVERIFY2(state->text().contains(QLatin1String("Edited, not written")),
              qPrintable(state->text()));
@@ -168,10 +168,10 @@ void TablePageEditsTest::projectFileCarriesDeadTimeModesThroughThePage() {
     QVERIFY(shell);
     auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
     QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(!shell->window()->isReadingDevice(), kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("p.json"));
-    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
     Result<Project> saved = loadProject(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error().message));
     QCOMPARE(saved->deadTimeModes, modes->onDevice());
@@ -183,26 +183,26 @@ void TablePageEditsTest::projectFileCarriesDeadTimeModesThroughThePage() {
     edited.deadTimeModes.insert(6, wanted);
     edited.readAt = {};
     QVERIFY(saveProject(path, edited).ok());
-    const int before = shell->workspace()->changedCount();
+    const int before = camConWorkspace(*shell)->changedCount();
     const auto keep = answerReplaceEdits(false);
-    shell->window()->openProjectFile(path);
+    camConWindow(shell->window())->openProjectFile(path);
     QCOMPARE(modes->edited(6), wanted);
     QVERIFY(modes->table()
                 ->item(5, DeadTimeModesPage::OutputColumn)
                 ->text()
                 .startsWith(changedMarker()));
-    QVERIFY(shell->workspace()->changedCount() >= before + 1);
+    QVERIFY(camConWorkspace(*shell)->changedCount() >= before + 1);
 
     // The report prints them, the edited one marked with the device's value.
     QTextDocument report;
-    CommissioningReport::build(report, *shell->workspace());
+    CommissioningReport::build(report, *camConWorkspace(*shell));
     const QString text = report.toPlainText();
     QVERIFY2(text.contains(QLatin1String("Dead-time modes")), qPrintable(text));
     QVERIFY2(text.contains(changedMarker() + QLatin1String("Path-time (device: Normal)")),
              qPrintable(text));
 
     const QString again = dir.filePath(QStringLiteral("again.json"));
-    QVERIFY(shell->window()->saveProjectTo(again).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(again).ok());
     const Result<Project> reloaded = loadProject(again);
     QVERIFY2(reloaded.ok(), qPrintable(reloaded.error().message));
     QCOMPARE(reloaded->deadTimeModes.value(6), wanted);
@@ -214,14 +214,14 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
     QVERIFY(shell);
     auto* lock = shell->window()->findChild<EepromLockPage*>();
     QTRY_VERIFY_WITH_TIMEOUT(lock->locked().has_value(), kDeviceTimeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(!shell->window()->isReadingDevice(), kDeviceTimeoutMs);
-    TableSectionCopies* copies = shell->workspace()->tableSections();
+    QTRY_VERIFY_WITH_TIMEOUT(!camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
+    TableSectionCopies* copies = camConWorkspace(*shell)->tableSections();
     QTRY_VERIFY_WITH_TIMEOUT(copies->deviceProgrammingProgram().has_value(), kDeviceTimeoutMs);
 
     // A project that wants other analogue points, programming program and lock.
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("p.json"));
-    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
     Result<Project> saved = loadProject(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error().message));
     QVERIFY(saved->programmingProgram.has_value());
@@ -233,12 +233,12 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
     wanted.readAt = {};
     QVERIFY(saveProject(path, wanted).ok());
     const auto keep = answerReplaceEdits(false);
-    shell->window()->openProjectFile(path);
+    camConWindow(shell->window())->openProjectFile(path);
     QVERIFY(copies->changedAnalogueOutputs().contains(7));
     QVERIFY(copies->programmingProgramChanged());
     QVERIFY(copies->eepromLockChanged());
 
-    CompareDialog* compare = shell->window()->openCompare();
+    CompareDialog* compare = camConWindow(shell->window())->openCompare();
     QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
     QStringList listed;
     for (int i = 0; i < compare->tree()->topLevelItemCount(); ++i) {
@@ -271,7 +271,7 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
 
     // The report prints what the device holds now.
     QTextDocument report;
-    CommissioningReport::build(report, *shell->workspace());
+    CommissioningReport::build(report, *camConWorkspace(*shell));
     const QString text = report.toPlainText();
     QVERIFY2(text.contains(QLatin1String("Analogue cams")), qPrintable(text));
     QVERIFY2(text.contains(QLatin1String("Programming program")), qPrintable(text));

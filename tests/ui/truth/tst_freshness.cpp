@@ -31,9 +31,9 @@ bool answeredCycle(MonitorPage* monitor, LiveFreshness* freshness) {
 
 // The monitor in front, its poll cycles driven by the test.
 MonitorPage* monitorOnCycles(Shell& shell) {
-    MonitorPage* monitor = shell.window()->monitorPage();
+    MonitorPage* monitor = camConWindow(shell.window())->monitorPage();
     monitor->setTimerDriven(false);
-    shell.window()->showSection(MainWindow::Monitor);
+    camConWindow(shell.window())->showSection(CamConWindow::Monitor);
     return monitor;
 }
 
@@ -88,7 +88,7 @@ void FreshnessTest::silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle(
     QVERIFY2(monitor->stateText().startsWith(QStringLiteral("unknown now")),
              qPrintable(monitor->stateText()));
     // The cam diagram shows no live position any more.
-    QVERIFY(!window->camPage()->editor()->diagram()->isLive());
+    QVERIFY(!camConWindow(window)->camPage()->editor()->diagram()->isLive());
 
     // The device answers again: live again, and the trend has a gap.
     sim.fallSilent(false);
@@ -127,20 +127,23 @@ void FreshnessTest::pagesWithoutLiveValuesOnlyWatchTheLink() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     MainWindow* window = shell->window();
-    MonitorPage* monitor = window->monitorPage();
-    window->showSection(MainWindow::Monitor);
+    MonitorPage* monitor = camConWindow(window)->monitorPage();
+    camConWindow(window)->showSection(CamConWindow::Monitor);
     QVERIFY(monitor->isPolling());
-    window->showSection(MainWindow::Cams);  // the diagram shows the live position
+    camConWindow(window)->showSection(CamConWindow::Cams);  // the diagram shows the live position
     QVERIFY(monitor->isPolling());
-    for (MainWindow::Section quiet :
-         {MainWindow::Connection, MainWindow::DeadTimes, MainWindow::Settings, MainWindow::Users,
-          MainWindow::Plc, MainWindow::Backup, MainWindow::Terminal}) {
-        window->showSection(quiet);
+    CamConWindow* camcon = camConWindow(window);
+    for (SectionPage* quiet : QList<SectionPage*>{
+             window->connectionPage(), camcon->sectionPage(CamConWindow::DeadTimes),
+             camcon->sectionPage(CamConWindow::Settings), camcon->sectionPage(CamConWindow::Users),
+             camcon->sectionPage(CamConWindow::Plc), camcon->sectionPage(CamConWindow::Backup),
+             camcon->sectionPage(CamConWindow::Terminal)}) {
+        window->showPage(quiet);
         // Only a slow heartbeat watches the link there (issue 12, point 4).
-        QVERIFY2(monitor->isPolling(), qPrintable(QString::number(int(quiet))));
+        QVERIFY2(monitor->isPolling(), qPrintable(quiet->sectionTitle()));
         QVERIFY(monitor->pollInterval() >= 2000);
     }
-    window->showSection(MainWindow::Monitor);
+    camConWindow(window)->showSection(CamConWindow::Monitor);
     QVERIFY(monitor->isPolling());
     QCOMPARE(monitor->pollInterval(), 250);
 }
@@ -167,8 +170,8 @@ void FreshnessTest::pollRateReturnsOnceTheLineCarriesItAgain() {
     auto shell = startOnPty(sim);
     QVERIFY(shell);
     MainWindow* window = shell->window();
-    MonitorPage* monitor = window->monitorPage();
-    window->showSection(MainWindow::Monitor);
+    MonitorPage* monitor = camConWindow(window)->monitorPage();
+    camConWindow(window)->showSection(CamConWindow::Monitor);
     QTRY_VERIFY_WITH_TIMEOUT(shell->session()->freshness()->isLive(), kDeviceTimeoutMs);
     // A stall: answers come late (a retry), and the poll slows down.
     sim.fallSilent(true);
@@ -185,10 +188,10 @@ void FreshnessTest::pollRateTheLineCannotCarryIsAdjustedWithAWord() {
     auto shell = startOnSimulator(QStringLiteral("sim:baud=9600"));
     QVERIFY(shell);
     MainWindow* window = shell->window();
-    MonitorPage* monitor = window->monitorPage();
+    MonitorPage* monitor = camConWindow(window)->monitorPage();
     monitor->setPollInterval(100);
     QVERIFY(monitor->rateNote().isEmpty());
-    window->showSection(MainWindow::Monitor);
+    camConWindow(window)->showSection(CamConWindow::Monitor);
     QTRY_VERIFY_WITH_TIMEOUT(!monitor->rateNote().isEmpty(), kDeviceTimeoutMs);
     QVERIFY(monitor->pollInterval() > 100);
     QVERIFY2(monitor->rateNote().contains(QStringLiteral("instead of 100 ms")),

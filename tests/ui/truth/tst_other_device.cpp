@@ -36,7 +36,9 @@ std::optional<WriteResult> writeProgram(Shell& shell, int program) {
     std::optional<WriteResult> result;
     const auto reports =
         std::make_unique<NextDialog<ReportDialog>>([](ReportDialog* dialog) { dialog->accept(); });
-    shell.window()->camPage()->writeProgram(program, [&](const WriteResult& r) { result = r; });
+    camConWindow(shell.window())->camPage()->writeProgram(program, [&](const WriteResult& r) {
+        result = r;
+    });
     (void)QTest::qWaitFor([&result] { return result.has_value(); }, kDeviceTimeoutMs);
     return result;
 }
@@ -61,7 +63,7 @@ void OtherDeviceTest::anotherPortShowsTheNewDeviceAndWritesOnlyWhatItHolds() {
     PtySimulator demo;
     auto shell = startOnPty(demo);
     QVERIFY(shell);
-    Workspace* workspace = shell->workspace();
+    Workspace* workspace = camConWorkspace(*shell);
     CamDocument* cams = workspace->cams();
     const qint32 demoCams = workspace->info().programmedCams;
     QCOMPARE(cams->trackState(0, 1), ChangeState::Unchanged);
@@ -110,7 +112,7 @@ void OtherDeviceTest::aDeviceChangedBehindThePcIsNotWrittenFromTheOldCopy() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     // Someone reprograms the device at its panel (or another device takes
     // its place on a device server): the copy is no longer what it holds.
     comm::fillBenchmarkCams(sim.device(), 3);
@@ -131,7 +133,7 @@ void OtherDeviceTest::theSameDeviceAgainKeepsItsCopies() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     cams->setCam(0, 1, 0, {12, 90});
     shell->session()->reconnect();
     QTRY_VERIFY_WITH_TIMEOUT(shell->session()->isOnline() && shell->session()->deviceChecked(),
@@ -139,7 +141,7 @@ void OtherDeviceTest::theSameDeviceAgainKeepsItsCopies() {
     QVERIFY(cams->hasDeviceCopy(0));
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
     QCOMPARE(cams->trackState(0, 2), ChangeState::Unchanged);
-    QVERIFY(shell->workspace()->otherDeviceNote().isEmpty());
+    QVERIFY(camConWorkspace(*shell)->otherDeviceNote().isEmpty());
 }
 
 void OtherDeviceTest::readProgramRefreshesNamesAndDeadTimes() {
@@ -148,11 +150,11 @@ void OtherDeviceTest::readProgramRefreshesNamesAndDeadTimes() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    Workspace* workspace = shell->workspace();
+    Workspace* workspace = camConWorkspace(*shell);
     QTRY_VERIFY_WITH_TIMEOUT(workspace->outputSettingsKnown(), kDeviceTimeoutMs);
     sim.device().state().deadTimes.insert(1, 35);  // output 2: 3.5 ms, set at the panel
     sim.device().state().outputNames.insert(1, QByteArray("Glue"));
-    shell->window()->camPage()->editor()->editorActions().at(0)->trigger();
+    camConWindow(shell->window())->camPage()->editor()->editorActions().at(0)->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(workspace->cams()->deadTime(2), 35, kDeviceTimeoutMs);
     QTRY_COMPARE_WITH_TIMEOUT(workspace->cams()->outputName(2), QStringLiteral("Glue"),
                               kDeviceTimeoutMs);

@@ -33,8 +33,8 @@ namespace {
 std::unique_ptr<Shell> startAndReadEverything() {
     auto shell = startOnSimulator();
     if (!shell) return nullptr;
-    QSignalSpy done(shell->window(), &MainWindow::everythingRead);
-    shell->window()->readEverything(0);
+    QSignalSpy done(camConWindow(shell->window()), &CamConWindow::everythingRead);
+    camConWindow(shell->window())->readEverything(0);
     if (!done.wait(kDeviceTimeoutMs) || !done.first().first().toBool()) return nullptr;
     return shell;
 }
@@ -70,7 +70,7 @@ private Q_SLOTS:
 void ReportAndCountsTest::reportHoldsEverySectionOfTheDevice() {
     auto shell = startAndReadEverything();
     QVERIFY(shell);
-    const Workspace& ws = *shell->workspace();
+    const Workspace& ws = *camConWorkspace(*shell);
     const QString text = reportText(ws);
     for (int program = 0; program < ws.info().programs; ++program)
         QVERIFY2(text.contains(QStringLiteral("Program %1").arg(program)),
@@ -103,11 +103,11 @@ void ReportAndCountsTest::reportMarksUnwrittenValues() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     const qint32 device = cams->deadTime(2);
     cams->setDeadTime(2, device + 15);
     cams->setCam(0, 1, 0, {12, 90});
-    const QString text = reportText(*shell->workspace());
+    const QString text = reportText(*camConWorkspace(*shell));
     QVERIFY2(text.contains(QStringLiteral("2 value")) &&
                  text.contains(QStringLiteral("edited on this PC and NOT written")),
              qPrintable(text.left(400)));
@@ -130,14 +130,14 @@ void ReportAndCountsTest::reportSaysOfflineOnlyWhenOffline() {
     QVERIFY(reportText(offline).contains(QStringLiteral("offline project")));
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    QVERIFY(!reportText(*shell->workspace()).contains(QStringLiteral("offline project")));
+    QVERIFY(!reportText(*camConWorkspace(*shell)).contains(QStringLiteral("offline project")));
 }
 
 void ReportAndCountsTest::reportDiagramIsDrawnForPrintWithAllOutputs() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     applyTheme(true);  // whatever the screen uses, paper is white
-    const CamDocument& cams = *shell->workspace()->cams();
+    const CamDocument& cams = *camConWorkspace(*shell)->cams();
     const QImage outputs1to32 = printDiagram(cams, 0, 1, 32, 1000);
     const QImage outputs1to8 = printDiagram(cams, 0, 1, 8, 1000);
     applyTheme(false);
@@ -153,10 +153,10 @@ void ReportAndCountsTest::deadTimeWriteCountsOverTheDevicesOutputs() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    const DeviceInfo& info = shell->workspace()->info();
-    CamDocument* cams = shell->workspace()->cams();
+    const DeviceInfo& info = camConWorkspace(*shell)->info();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     cams->setDeadTime(3, cams->deadTime(3) + 5);
-    DeadTimesPage* page = shell->window()->deadTimesPage();
+    DeadTimesPage* page = camConWindow(shell->window())->deadTimesPage();
     // Differences are counted over the device's outputs, nothing beyond.
     QCOMPARE(page->differences().size(), 1);
     QCOMPARE(page->itemCount(), info.deadTimeOutputs + info.outputs);
@@ -176,14 +176,16 @@ void ReportAndCountsTest::userWriteCountsTheUnchangedUsers() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    Workspace* ws = shell->workspace();
+    Workspace* ws = camConWorkspace(*shell);
     const int users = int(ws->users().size());
     QVERIFY(users >= 2);
     User renamed = ws->users().first().user;
     renamed.name += QStringLiteral("X");
     ws->setUser(0, renamed);
     std::optional<WriteResult> result;
-    shell->window()->usersPage()->writeChanges([&](const WriteResult& r) { result = r; });
+    camConWindow(shell->window())->usersPage()->writeChanges([&](const WriteResult& r) {
+        result = r;
+    });
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
     QVERIFY2(result->ok() && result->value().complete(), qPrintable(writeSummary(*result)));
     QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
@@ -197,7 +199,7 @@ void ReportAndCountsTest::backupGivesNoGuessedTimeLeft() {
     auto shell = startOnSimulator(QStringLiteral("sim:baud=115200"));
     QVERIFY(shell);
     QTemporaryDir dir;
-    BackupWizard* wizard = shell->window()->openBackupWizard();
+    BackupWizard* wizard = camConWindow(shell->window())->openBackupWizard();
     wizard->setMode(BackupWizard::Mode::Backup);
     wizard->setPath(dir.filePath(QStringLiteral("backup.json")));
     QStringList seen;
@@ -221,14 +223,14 @@ void ReportAndCountsTest::restoreToTheSameDeviceAsksItsOwnConfirmation() {
     QVERIFY(shell);
     QTemporaryDir dir;
     const QString image = dir.filePath(QStringLiteral("same.json"));
-    BackupWizard* backup = shell->window()->openBackupWizard();
+    BackupWizard* backup = camConWindow(shell->window())->openBackupWizard();
     backup->setMode(BackupWizard::Mode::Backup);
     backup->setPath(image);
     backup->next();
     QTRY_VERIFY_WITH_TIMEOUT(backup->progressPage()->isComplete(), kDeviceTimeoutMs);
     backup->close();
 
-    BackupWizard* restore = shell->window()->openBackupWizard();
+    BackupWizard* restore = camConWindow(shell->window())->openBackupWizard();
     restore->setMode(BackupWizard::Mode::Restore);
     restore->setPath(image);
     restore->next();

@@ -39,14 +39,14 @@ void UnwrittenEditsTest::readProgramWithEditsAsksAndKeepsThem() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     cams->setCam(0, 1, 0, {15, 90});
     // Meanwhile someone changes output 2 at the device's panel.
     sim.device().state().cams.insert(0, 1, {100, 120});
 
     const auto answer = answerReplaceEdits(true);
     std::optional<Status> read;
-    shell->window()->camPage()->readProgram(0, [&](const Status& s) { read = s; });
+    camConWindow(shell->window())->camPage()->readProgram(0, [&](const Status& s) { read = s; });
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QCOMPARE(answer->answered(), 1);
     QVERIFY(read->ok());
@@ -60,15 +60,15 @@ void UnwrittenEditsTest::readProgramTakingTheDevicesIsUndoable() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     cams->setCam(0, 1, 0, {15, 90});
     const auto answer = answerReplaceEdits(false);
     std::optional<Status> read;
-    shell->window()->camPage()->readProgram(0, [&](const Status& s) { read = s; });
+    camConWindow(shell->window())->camPage()->readProgram(0, [&](const Status& s) { read = s; });
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QCOMPARE(answer->answered(), 1);
     QCOMPARE(cams->track(0, 1).cams, sim.track(0, 1));
-    QCOMPARE(shell->workspace()->changedCount(), 0);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
     // Taking the device's values is one undo step: the edit comes back.
     cams->undoStack()->undo();
     QCOMPARE(cams->track(0, 1).cams.first(), (Cam{15, 90}));
@@ -79,7 +79,7 @@ void UnwrittenEditsTest::readEverythingWithEditsAsksPerSection() {
     auto shell = startOnPty(sim);
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    Workspace* ws = shell->workspace();
+    Workspace* ws = camConWorkspace(*shell);
     CamDocument* cams = ws->cams();
     cams->setCam(0, 1, 0, {15, 90});
     cams->setDeadTime(2, cams->deadTime(2) + 10);
@@ -95,8 +95,8 @@ void UnwrittenEditsTest::readEverythingWithEditsAsksPerSection() {
         dialog->choose(EditSection::OutputSettings, false);
         dialog->accept();
     });
-    QSignalSpy done(shell->window(), &MainWindow::everythingRead);
-    shell->window()->readEverything(0);
+    QSignalSpy done(camConWindow(shell->window()), &CamConWindow::everythingRead);
+    camConWindow(shell->window())->readEverything(0);
     QVERIFY(done.wait(kDeviceTimeoutMs));
     QVERIFY(done.first().first().toBool());
     QCOMPARE(asked, (QList<EditSection>{EditSection::Cams, EditSection::OutputSettings}));
@@ -118,7 +118,7 @@ void UnwrittenEditsTest::openProjectWithEditsAsksAndCancelChangesNothing() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    Workspace* ws = shell->workspace();
+    Workspace* ws = camConWorkspace(*shell);
     CamDocument* cams = ws->cams();
     Project project = projectFromWorkspace(*ws);
     for (CamProgram& program : project.programs) {
@@ -132,7 +132,7 @@ void UnwrittenEditsTest::openProjectWithEditsAsksAndCancelChangesNothing() {
 
     {
         const auto cancel = cancelReplaceEdits();
-        shell->window()->openProjectFile(path);
+        camConWindow(shell->window())->openProjectFile(path);
         QCOMPARE(cancel->answered(), 1);
     }
     QCOMPARE(cams->track(0, 1).cams.first(), (Cam{15, 90}));
@@ -140,7 +140,7 @@ void UnwrittenEditsTest::openProjectWithEditsAsksAndCancelChangesNothing() {
     QCOMPARE(cams->undoStack()->count(), undoSteps);
 
     const auto take = answerReplaceEdits(false);
-    shell->window()->openProjectFile(path);
+    camConWindow(shell->window())->openProjectFile(path);
     QCOMPARE(take->answered(), 1);
     QCOMPARE(cams->track(0, 1).cams, (QList<Cam>{{200, 210}}));
     QCOMPARE(ws->projectPath(), path);
@@ -151,11 +151,11 @@ void UnwrittenEditsTest::programReadFinishingWhileEditingAsks() {
     PtySimulator sim(true, 9600);
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
-    QCOMPARE(shell->workspace()->changedCount(), 0);
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
     const auto answer = answerReplaceEdits(true);
     std::optional<Status> read;
-    shell->window()->camPage()->readProgram(0, [&](const Status& s) { read = s; });
+    camConWindow(shell->window())->camPage()->readProgram(0, [&](const Status& s) { read = s; });
     // No event has been processed: the read's answer cannot be here yet.
     cams->setCam(0, 1, 0, {15, 90});
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
@@ -168,7 +168,7 @@ void UnwrittenEditsTest::readWithoutEditsAsksNothing() {
     QVERIFY(shell);
     const auto answer = answerReplaceEdits(true);
     std::optional<Status> read;
-    shell->window()->camPage()->readProgram(0, [&](const Status& s) { read = s; });
+    camConWindow(shell->window())->camPage()->readProgram(0, [&](const Status& s) { read = s; });
     QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
     QVERIFY(read->ok());
     QCOMPARE(answer->answered(), 0);
@@ -178,14 +178,16 @@ void UnwrittenEditsTest::undoHistorySurvivesFailedWrite() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     cams->setCam(0, 1, 0, {12, 90});
     cams->setCam(0, 1, 0, {14, 90});
     const int undoSteps = cams->undoStack()->count();
     QVERIFY(undoSteps >= 1);
     sim.fallSilent();  // every command goes unanswered
     std::optional<WriteResult> result;
-    shell->window()->camPage()->writeProgram(0, [&](const WriteResult& r) { result = r; });
+    camConWindow(shell->window())->camPage()->writeProgram(0, [&](const WriteResult& r) {
+        result = r;
+    });
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
     QVERIFY(!result->ok() || !result->value().complete());
     QCOMPARE(cams->undoStack()->count(), undoSteps);

@@ -42,16 +42,16 @@ private Q_SLOTS:
 void WholeDeviceTest::savedProjectAfterReadEverythingHoldsAllPrograms() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    QSignalSpy done(shell->window(), &MainWindow::everythingRead);
-    shell->window()->readEverything(0);
+    QSignalSpy done(camConWindow(shell->window()), &CamConWindow::everythingRead);
+    camConWindow(shell->window())->readEverything(0);
     QVERIFY(done.wait(kDeviceTimeoutMs));
     QVERIFY(done.first().first().toBool());
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("device.json"));
-    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
     const Result<Project> saved = loadProject(path);
     QVERIFY2(saved.ok(), qPrintable(saved.error().message));
-    const int programs = shell->workspace()->info().programs;
+    const int programs = camConWorkspace(*shell)->info().programs;
     QCOMPARE(saved->programs.size(), programs);
     QCOMPARE(saved->readAt.programs.size(), programs);  // each read, with its time
     // The demo device's programs 1 and 2 hold cams.
@@ -72,8 +72,8 @@ void WholeDeviceTest::savedProjectAfterReadEverythingHoldsAllPrograms() {
 void WholeDeviceTest::programNotReadShowsNotRead() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
-    CamEditorWidget* editor = shell->window()->camPage()->editor();
-    CamDocument* cams = shell->workspace()->cams();
+    CamEditorWidget* editor = camConWindow(shell->window())->camPage()->editor();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     QVERIFY(!cams->hasDeviceCopy(1));
     QCOMPARE(cams->trackState(1, 1), ChangeState::NotRead);
     editor->setCurrentProgram(1);
@@ -93,12 +93,12 @@ void WholeDeviceTest::saveRightAfterStartWorksOnTheDemoDevice() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("start.json"));
     // The demo device holds settings outside the manual's ranges: saved as they are.
-    const Status saved = shell->window()->saveProjectTo(path);
+    const Status saved = camConWindow(shell->window())->saveProjectTo(path);
     QVERIFY2(saved.ok(), qPrintable(saved.ok() ? QString() : saved.error().message));
     const Result<Project> loaded = loadProject(path);
     QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
     QVERIFY(!validateProject(*loaded).isEmpty());  // warned about, not refused
-    QCOMPARE(loaded->settings, shell->workspace()->deviceSettings());
+    QCOMPARE(loaded->settings, camConWorkspace(*shell)->deviceSettings());
     QVERIFY(!loaded->users.isEmpty());
     QVERIFY(shell->window()->lastMessage().contains(QStringLiteral("outside")));
 }
@@ -110,28 +110,30 @@ void WholeDeviceTest::saveWhileLoadingIsRefused() {
     const QString path = dir.filePath(QStringLiteral("half.json"));
     // Answer the refusal's message so the test goes on.
     NextDialog<ReportDialog> close([](ReportDialog* dialog) { dialog->accept(); });
-    QTRY_VERIFY_WITH_TIMEOUT(shell->window()->isReadingDevice(), kDeviceTimeoutMs);
-    QVERIFY(!shell->window()->saveProjectTo(path).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
+    QVERIFY(!camConWindow(shell->window())->saveProjectTo(path).ok());
     QVERIFY(!QFile::exists(path));
     QCOMPARE(close.answered(), 1);
-    QTRY_VERIFY_WITH_TIMEOUT(!shell->window()->isReadingDevice(), kDeviceTimeoutMs);
-    QVERIFY(shell->window()->saveProjectTo(path).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
 }
 
 void WholeDeviceTest::writingAProgramNeverReadWritesItWhole() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     QVERIFY(!cams->hasDeviceCopy(3));
     cams->insertCam(3, 4, {10, 20});
     std::optional<WriteResult> result;
-    shell->window()->camPage()->writeProgram(3, [&](const WriteResult& r) { result = r; });
+    camConWindow(shell->window())->camPage()->writeProgram(3, [&](const WriteResult& r) {
+        result = r;
+    });
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
     QVERIFY2(result->ok(), qPrintable(writeSummary(*result)));
     const usecases::WriteReport& report = result->value();
     // Every output of the program was looked at; the counts add up to them.
-    QCOMPARE(report.tracks.size(), shell->workspace()->info().outputs);
+    QCOMPARE(report.tracks.size(), camConWorkspace(*shell)->info().outputs);
     QCOMPARE(
         report.count(usecases::WriteState::Written) + report.count(usecases::WriteState::Unchanged),
         report.total());
@@ -145,7 +147,7 @@ void WholeDeviceTest::deviceValueOutsideTheRangeIsShownAsItIs() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
-    Workspace* ws = shell->workspace();
+    Workspace* ws = camConWorkspace(*shell);
     // A value the device holds below the manual's minimum.
     QString key;
     for (const SettingSpec& spec : settingSpecs()) {
@@ -158,7 +160,7 @@ void WholeDeviceTest::deviceValueOutsideTheRangeIsShownAsItIs() {
         }
     }
     QVERIFY2(!key.isEmpty(), "the demo device holds a setting below its minimum");
-    SettingField* field = shell->window()->settingsPage()->field(key);
+    SettingField* field = camConWindow(shell->window())->settingsPage()->field(key);
     QCOMPARE(field->value(), ws->deviceSettings().value(key));  // not clamped
     QVERIFY(!field->problem().isEmpty());                       // flagged
     QVERIFY(field->label()->text().contains(QStringLiteral("⚠")));
@@ -174,17 +176,17 @@ void WholeDeviceTest::wheelOverAnUnfocusedFieldDoesNotChangeIt() {
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
     MainWindow* window = shell->window();
-    window->showSection(MainWindow::Settings);
+    camConWindow(window)->showSection(CamConWindow::Settings);
     SettingField* field = nullptr;
     for (const SettingSpec& spec : settingSpecs()) {
         if (spec.kind == SettingKind::Integer && !spec.readOnly) {
-            field = window->settingsPage()->field(QString::fromLatin1(spec.key));
+            field = camConWindow(window)->settingsPage()->field(QString::fromLatin1(spec.key));
             if (qobject_cast<QSpinBox*>(field->editor())) break;
         }
     }
     auto* spin = qobject_cast<QSpinBox*>(field->editor());
     QVERIFY(spin);
-    window->settingsPage()->showSetting(QString::fromLatin1(field->spec().key));
+    camConWindow(window)->settingsPage()->showSetting(QString::fromLatin1(field->spec().key));
     spin->clearFocus();
     const int before = spin->value();
     const QPoint centre = spin->rect().center();
@@ -192,7 +194,7 @@ void WholeDeviceTest::wheelOverAnUnfocusedFieldDoesNotChangeIt() {
                       Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(spin, &wheel);
     QCOMPARE(spin->value(), before);
-    QCOMPARE(shell->workspace()->changedCount(), 0);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
 }
 
 QTEST_MAIN(WholeDeviceTest)

@@ -45,7 +45,7 @@ std::unique_ptr<NextDialog<ReportDialog>> recordReport(SeenReport& seen) {
 }
 
 void triggerWriteProgram(Shell& shell) {
-    shell.window()->camPage()->editor()->editorActions().at(1)->trigger();
+    camConWindow(shell.window())->camPage()->editor()->editorActions().at(1)->trigger();
 }
 
 }  // namespace
@@ -67,7 +67,7 @@ void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     const QList<Cam> before = sim.track(0, 3);
     QCOMPARE(before.size(), 4);
     // Four cams become two others: inserts and deletes on the device.
@@ -82,7 +82,9 @@ void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
     SeenReport seen;
     const auto dialog = recordReport(seen);
     std::optional<WriteResult> result;
-    shell->window()->camPage()->writeProgram(0, [&](const WriteResult& r) { result = r; });
+    camConWindow(shell->window())->camPage()->writeProgram(0, [&](const WriteResult& r) {
+        result = r;
+    });
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
     QVERIFY2(result->ok(), qPrintable(writeSummary(*result)));
     QVERIFY(!result->value().complete());
@@ -127,7 +129,7 @@ void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
     QVERIFY2(seen.details.contains(QStringLiteral("output 3")), qPrintable(seen.details));
 
     // Compare asks the device, and shows what it holds now.
-    CompareDialog* compare = shell->window()->openCompare();
+    CompareDialog* compare = camConWindow(shell->window())->openCompare();
     QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
     QVERIFY2(compare->sourceText().contains(QStringLiteral("read at")),
              qPrintable(compare->sourceText()));
@@ -139,7 +141,7 @@ void WriteTruthTest::editKnownInvalidIsRefusedBeforeAnyCommand() {
     PtySimulator sim;
     auto shell = startOnPty(sim);
     QVERIFY(shell);
-    CamDocument* cams = shell->workspace()->cams();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
     // Output 1 holds 10–90 and 180–270; the second cam now overlaps the first.
     QCOMPARE(sim.track(0, 1), (QList<Cam>{{10, 90}, {180, 270}}));
     cams->setCam(0, 1, 1, {80, 270});
@@ -166,7 +168,7 @@ void WriteTruthTest::projectFor96OutputsIsRefusedBeforeAnyWriteCommand() {
 
     // A project made for a 96-output device with positions up to 12499.
     Project project;
-    project.device = shell->workspace()->info();
+    project.device = camConWorkspace(*shell)->info();
     project.device.outputs = 96;
     project.device.deadTimeOutputs = 96;
     project.device.maxPosition = 12499;
@@ -182,8 +184,8 @@ void WriteTruthTest::projectFor96OutputsIsRefusedBeforeAnyWriteCommand() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("big.json"));
     QVERIFY(saveProject(path, project).ok());
-    shell->window()->openProjectFile(path);
-    QCOMPARE(shell->workspace()->projectPath(), path);
+    camConWindow(shell->window())->openProjectFile(path);
+    QCOMPARE(camConWorkspace(*shell)->projectPath(), path);
     sim.injections().clearLog();
 
     SeenReport seen;

@@ -1,11 +1,11 @@
-#include "section_page.h"
+#include "camcon_section_page.h"
 
-#include "sentence.h"
+#include "ui/sentence.h"
 
 namespace cambench {
 
-void SectionPage::writeDifferences(DeviceSession* session, Workspace* workspace,
-                                   std::function<void(const WriteResult&)> done) {
+void CamConSectionPage::writeDifferences(DeviceSession* session, Workspace* workspace,
+                                         std::function<void(const WriteResult&)> done) {
     QList<WorkspaceItem> items;
     for (const SectionDifference& difference : differences()) items << difference.item;
     const QString title = sectionTitle();

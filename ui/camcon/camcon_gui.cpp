@@ -1,0 +1,58 @@
+#include "camcon_gui.h"
+
+#include "camcon_window.h"
+#include "workspace.h"
+
+#include "ui/main_window.h"
+#include "ui/shell.h"
+
+#include <QFileInfo>
+
+namespace cambench {
+
+CamConGui::CamConGui(DeviceSession* session, QObject* parent)
+    : FamilyGui(QStringLiteral("camcon"), session, parent), m_workspace(new Workspace(this)) {
+    connect(m_workspace, &Workspace::infoChanged, this, &FamilyGui::identityChanged);
+    connect(m_workspace, &Workspace::otherDeviceNoteChanged, this, &FamilyGui::identityChanged);
+    connect(m_workspace, &Workspace::changedCountChanged, this, &FamilyGui::titleChanged);
+    connect(m_workspace, &Workspace::infoChanged, this, &FamilyGui::titleChanged);
+    connect(m_workspace, &Workspace::projectPathChanged, this, &FamilyGui::titleChanged);
+}
+
+FamilyWindow* CamConGui::createWindow(MainWindow* window) {
+    return new CamConWindow(this, window);
+}
+
+QString CamConGui::identityLine() const {
+    if (!m_workspace->infoFromDevice()) return {};
+    const DeviceInfo& info = m_workspace->info();
+    QString line = tr("CamCon %1, device number %2.").arg(info.epromDate).arg(info.deviceNumber);
+    if (!m_workspace->otherDeviceNote().isEmpty())
+        line += QLatin1Char('\n') + m_workspace->otherDeviceNote();
+    return line;
+}
+
+QString CamConGui::windowSubject() const {
+    const QString projectPath = m_workspace->projectPath();
+    if (!projectPath.isEmpty()) return QFileInfo(projectPath).fileName();
+    return m_workspace->infoFromDevice() ? tr("CamCon %1 (device %2)")
+                                               .arg(m_workspace->info().epromDate)
+                                               .arg(m_workspace->info().deviceNumber)
+                                         : tr("offline project");
+}
+
+int CamConGui::unwrittenCount() const {
+    return m_workspace->changedCount();
+}
+
+Workspace* camConWorkspace(const Shell& shell) {
+    auto* camcon = qobject_cast<CamConGui*>(shell.family(QStringLiteral("camcon")));
+    return camcon ? camcon->workspace() : nullptr;
+}
+
+CamConWindow* camConWindow(const MainWindow* window) {
+    return window ? qobject_cast<CamConWindow*>(window->familyWindow(QStringLiteral("camcon")))
+                  : nullptr;
+}
+
+}  // namespace cambench

@@ -1,0 +1,122 @@
+// The screenshot tour's stops on a CamCon (`cambench --screenshots DIR`).
+
+#include "camcon_window.h"
+
+#include "backup_wizard.h"
+#include "cam_page.h"
+#include "compare_dialog.h"
+#include "monitor_page.h"
+#include "plc_page.h"
+#include "terminal_page.h"
+#include "users_page.h"
+#include "workspace.h"
+
+#include "ui/camcon/cameditor/cam_document.h"
+#include "ui/connection_page.h"
+#include "ui/main_window.h"
+#include "ui/progress_page.h"
+
+#include <QDir>
+#include <QListWidget>
+#include <QPointer>
+
+#include <memory>
+
+namespace cambench {
+
+QList<TourStop> CamConWindow::tourStops(const QString& directory) {
+    MainWindow* w = window();
+    Workspace* ws = m_workspace;
+    // The dialog a stop opened, drawn over the window and closed by the next.
+    auto dialog = std::make_shared<QPointer<QWidget>>();
+    const auto shown = [dialog] { return dialog->data(); };
+    const auto closeDialog = [dialog] {
+        if (*dialog) (*dialog)->close();
+    };
+    const QString backupPath = QDir(directory).filePath(QStringLiteral("screenshot-backup.json"));
+    const auto loaded = [ws] { return ws->infoFromDevice() && ws->cams()->hasDeviceCopy(0); };
+    auto* devices = w->connectionPage()->findChild<QListWidget*>();
+    return {
+        {QStringLiteral("01-connection"),
+         [w] {
+             w->showSection(MainWindow::Connection);
+             w->connectionPage()->scanBus();
+         },
+         [loaded, devices] { return loaded() && devices && devices->count() > 0; },
+         {}},
+        {QStringLiteral("02-cam-editor"), [this] { showSection(Cams); }, loaded, {}},
+        {QStringLiteral("03-dead-times"),
+         [this] { showSection(DeadTimes); },
+         [ws] { return ws->outputSettingsKnown(); },
+         {}},
+        {QStringLiteral("04-settings"),
+         [this] { showSection(Settings); },
+         [ws] { return ws->settingsKnown(); },
+         {}},
+        {QStringLiteral("05-users"),
+         [this] { showSection(Users); },
+         [this, ws] {
+             if (ws->users().isEmpty()) return false;
+             m_users->selectUser(0);
+             return true;
+         },
+         {}},
+        {QStringLiteral("06-plc"),
+         [this] {
+             showSection(Plc);
+             m_plc->showNetwork(PlcNetwork::O, 0);
+             m_plc->readNetwork();
+         },
+         [ws] { return ws->devicePlcNetworks().contains(Workspace::plcKey(PlcNetwork::O, 0)); },
+         {}},
+        {QStringLiteral("07-monitor"),
+         [this] { showSection(Monitor); },
+         [this] { return m_monitor->trendSamples() >= 48; },
+         {}},
+        {QStringLiteral("08-compare"),
+         [this, ws, dialog] {
+             // An edit to compare: one cam moved, one dead time changed.
+             CamDocument* cams = ws->cams();
+             const Track track = cams->track(0, 1);
+             if (!track.cams.isEmpty()) {
+                 Cam cam = track.cams.first();
+                 cam.off = std::min<qint32>(cam.off + 10, ws->info().maxPosition);
+                 cams->setCam(0, 1, 0, cam);
+             }
+             cams->setDeadTime(2, cams->deadTime(2) + 15);
+             showSection(Cams);
+             *dialog = openCompare();
+         },
+         [dialog] {
+             auto* compare = qobject_cast<CompareDialog*>(dialog->data());
+             return compare && !compare->isReading() && compare->differenceCount() > 0;
+         },
+         shown},
+        {QStringLiteral("09-backup-wizard"),
+         [this, dialog, closeDialog, backupPath] {
+             closeDialog();
+             showSection(Backup);
+             BackupWizard* wizard = openBackupWizard();
+             *dialog = wizard;
+             wizard->setMode(BackupWizard::Mode::Backup);
+             wizard->setPath(backupPath);
+             wizard->next();
+         },
+         [dialog] {
+             auto* wizard = qobject_cast<BackupWizard*>(dialog->data());
+             return wizard && wizard->progressPage()->isComplete();
+         },
+         shown},
+        {QStringLiteral("10-terminal"),
+         [this, closeDialog] {
+             closeDialog();
+             showSection(Terminal);
+             m_terminal->send(QStringLiteral("?IFGWG"));
+             m_terminal->send(QStringLiteral("?AMAX"));
+         },
+         [this] { return m_terminal->logText().count(QLatin1Char('\n')) >= 6; },
+         {}},
+    };
+}
+
+}  // namespace cambench

@@ -1,0 +1,125 @@
+#pragma once
+
+#include "comm/device/id_registry.h"
+
+#include <QList>
+#include <QObject>
+#include <QString>
+
+#include <functional>
+
+class QMenu;
+class QWidget;
+
+namespace cambench {
+
+class DeviceSession;
+class FamilyWindow;
+class MainWindow;
+class SectionPage;
+
+// One device family's part of the GUI for the whole run. What the family
+// holds on the PC (the CamCon's edits) lives here: it outlives a window
+// rebuilt on a language switch. The shell makes one per registered family
+// and asks it for its part of each window it builds.
+class FamilyGui : public QObject {
+    Q_OBJECT
+public:
+    FamilyGui(QString familyId, DeviceSession* session, QObject* parent = nullptr);
+
+    QString familyId() const { return m_familyId; }
+    DeviceSession* session() const { return m_session; }
+
+    // The family's pages, menu entries and start reads in `window`.
+    virtual FamilyWindow* createWindow(MainWindow* window) = 0;
+    // The connected device for the connection strip ("CamCon 11.10.1994,
+    // device number 0."; a second line may follow); empty until it has
+    // identified itself.
+    virtual QString identityLine() const { return m_identity; }
+    // What the window's title names when no file does: the device, or
+    // what is being edited ("offline project"); empty = nothing.
+    virtual QString windowSubject() const { return {}; }
+    // Edits on this PC that are not on the device.
+    virtual int unwrittenCount() const { return 0; }
+    // A family that keeps no identity of its own stores what identify() said.
+    void setIdentity(const QString& identity);
+
+Q_SIGNALS:
+    void identityChanged();
+    // windowSubject() or unwrittenCount() changed.
+    void titleChanged();
+
+private:
+    QString m_familyId;
+    DeviceSession* m_session;
+    QString m_identity;
+};
+
+// One stop of `cambench --screenshots DIR`: what to show, when its data has
+// arrived, and a dialog drawn over the window.
+struct TourStop {
+    QString name;  // the PNG's name: "02-cam-editor"
+    std::function<void()> prepare;
+    std::function<bool()> ready;
+    std::function<QWidget*()> overlay;
+};
+
+// The window's menus a family adds its entries to. They show while the
+// session's protocol belongs to the family, like its pages.
+struct FamilyMenus {
+    QMenu* file;
+    QMenu* edit;
+    QMenu* device;
+};
+
+// A family's part of one main window: its pages, its menu entries, what it
+// reads when one of its devices comes on the line.
+class FamilyWindow : public QObject {
+    Q_OBJECT
+public:
+    FamilyWindow(FamilyGui* gui, MainWindow* window);
+
+    FamilyGui* gui() const { return m_gui; }
+    MainWindow* window() const { return m_window; }
+
+    // In the order of the window's list; made once, owned by the window.
+    virtual QList<SectionPage*> pages() const = 0;
+    virtual void addMenuEntries(const FamilyMenus& menus) { Q_UNUSED(menus); }
+    // What the connection page shows of the connected (or last) device;
+    // nullptr: nothing beyond the connection strip's line.
+    virtual QWidget* identityPanel() { return nullptr; }
+    // A device of this family is on the line (a connect, a reconnect,
+    // another bus device chosen): find out which, and, when `load`, read
+    // what a person looks at first; then window()->reportLoaded(ok).
+    // The default asks the device to identify itself.
+    virtual void deviceOnLine(bool load);
+    // Another page became current (live values poll only where shown).
+    virtual void pageShown(SectionPage* page) { Q_UNUSED(page); }
+    // Asked before the window closes; false keeps it open.
+    virtual bool confirmClose() { return true; }
+    // The screenshot tour's stops while a device of this family is connected.
+    virtual QList<TourStop> tourStops(const QString& directory) {
+        Q_UNUSED(directory);
+        return {};
+    }
+
+private:
+    FamilyGui* m_gui;
+    MainWindow* m_window;
+};
+
+// A family's GUI, registered from app/gui (one line per family).
+struct FamilyGuiInfo {
+    QString familyId;
+    std::function<FamilyGui*(DeviceSession* session, QObject* parent)> create;
+};
+
+class FamilyGuiRegistry : public comm::IdRegistry<FamilyGuiInfo, &FamilyGuiInfo::familyId> {
+public:
+    static FamilyGuiRegistry& instance();
+};
+
+// The family of the protocol `session` connects (or last connected) with.
+QString sessionFamily(const DeviceSession& session);
+
+}  // namespace cambench
