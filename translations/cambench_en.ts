@@ -1477,7 +1477,7 @@ Erase and restore now?</translation>
     <message numerus="yes">
         <source>%n change(s) are not written to the device. Close anyway?</source>
         <translation>
-            <numerusform>%n change are not written to the device. Close anyway?</numerusform>
+            <numerusform>%n change is not written to the device. Close anyway?</numerusform>
             <numerusform>%n changes are not written to the device. Close anyway?</numerusform>
         </translation>
     </message>

@@ -454,6 +454,9 @@ void ConnectionPage::showSimulatedNote() {
 
 void ConnectionPage::showConnectFailure() {
     const comm::ConnectionState state = m_session->state();
+    // What a scan found was on the line then; off it, the list would claim
+    // devices nobody can see now.
+    if (state != comm::ConnectionState::Connected) m_devices->clear();
     // What Detect found has been acted on (or another line chosen).
     if (state == comm::ConnectionState::Connected) m_detectResult->hide();
     if (state == comm::ConnectionState::Connecting || state == comm::ConnectionState::Connected) {

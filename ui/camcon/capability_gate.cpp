@@ -45,6 +45,9 @@ CapabilityGate::CapabilityGate(DeviceSession* session, CamConSectionPage* page,
     connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         if (state == comm::ConnectionState::Connected) checkAvailability(false);
     });
+    // A window rebuilt on a language switch while connected asks at once:
+    // no section of a protocol that lacks it may look available meanwhile.
+    if (m_session->isOnline()) checkAvailability(false);
 }
 
 QList<SectionDifference> CapabilityGate::differences() const {

@@ -223,6 +223,11 @@ void ShellPagesTest::languageSwitchShowsGermanLabels() {
     const SectionPage* deadTimes =
         camConWindow(shell->window())->sectionPage(CamConWindow::DeadTimes);
     QCOMPARE(nav->item(shell->window()->rowOf(deadTimes))->text(), QStringLiteral("Totzeiten"));
+    // A section the protocol lacks is greyed in the rebuilt window too.
+    auto* modes = qobject_cast<CapabilityGate*>(
+        camConWindow(shell->window())->sectionPage(CamConWindow::DeadTimeModes));
+    QVERIFY(modes);
+    QTRY_VERIFY_WITH_TIMEOUT(!modes->isAvailable(), kDeviceTimeoutMs);
     // The edit and the line survived the rebuilt window.
     QCOMPARE(cams->track(0, 1).cams.first(), cam);
     QVERIFY(shell->session()->isOnline());
