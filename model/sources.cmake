@@ -28,6 +28,8 @@ target_sources(cambench_model PRIVATE
   file_read.cpp
   camcon/cam_validation.h
   camcon/cam_validation.cpp
+  camcon/program_diff.h
+  camcon/program_diff.cpp
   camcon/data_validation.h
   camcon/data_validation.cpp
   json_reader.h

@@ -22,6 +22,10 @@ QString camConHelp() {
         "  plc read [-o FILE] | plc write FILE            JSON\n"
         "  project read [-o FILE] [--with-user-numbers]   everything on the device as a project\n"
         "  project write FILE               makes the device hold the project's contents\n"
+        "  diff A B [--program P [--program-b Q]] [--json]\n"
+        "                                   the cams that differ between A and B (project or\n"
+        "                                   CSV files, or device: needs --program), one a line;\n"
+        "                                   exit 0 equal, 1 differ; --git: git's diff driver\n"
         "  backup -o FILE                   whole EEPROM image\n"
         "  restore FILE [--force] [--no-safety-backup]\n"
         "                                   checks FILE, matches it against the device, saves a\n"
@@ -88,6 +92,7 @@ void registerCamConCommands(CommandRegistry& registry) {
         {"analogue", runAnalogue},
         {"programming", runProgramming},
         {"eeprom-lock", runEepromLock},
+        {"diff", runDiff},
     };
     for (const auto& [name, run] : groups) registry.add({family, QLatin1String(name), run});
     registry.addHelp(family, camConHelp());

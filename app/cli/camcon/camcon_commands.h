@@ -39,5 +39,6 @@ int runShortCommands(CliSession& session, CommandArgs& args);
 int runAnalogue(CliSession& session, CommandArgs& args);
 int runProgramming(CliSession& session, CommandArgs& args);
 int runEepromLock(CliSession& session, CommandArgs& args);
+int runDiff(CliSession& session, CommandArgs& args);
 
 }  // namespace cambench::cli

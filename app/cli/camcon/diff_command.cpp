@@ -1,0 +1,282 @@
+// diff A B: what differs between the cam programs of two sources - project
+// files, CSV cam files or the device - one difference a line; exit 0 when
+// equal, 1 when they differ. With --git it is git's external diff driver
+// for project files (README: "Project files under git").
+#include "app/cli/camcon/camcon_commands.h"
+#include "app/cli/cli_output.h"
+#include "app/cli/exit_codes.h"
+
+#include "model/camcon/csv_io.h"
+#include "model/camcon/program_diff.h"
+#include "model/camcon/project_file.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace cambench::cli {
+
+namespace {
+
+using comm::CamConDevice;
+using comm::JobContext;
+
+constexpr int kMaxProgramNumber = 32767;  // as cams read
+const QString kDevice = QStringLiteral("device");
+
+// One side of the comparison: its programs by number. A CSV file holds one
+// program without a name; the device's program is read with its name.
+struct Side {
+    QString label;
+    QMap<int, CamProgram> programs;
+    bool named = true;
+    bool single = false;  // one program, whatever its number (a CSV file)
+};
+
+bool isCsv(const QString& path) {
+    return QFileInfo(path).suffix().compare(QLatin1String("csv"), Qt::CaseInsensitive) == 0;
+}
+
+Result<Side> loadFile(const QString& path, const QString& kindFrom) {
+    Side side;
+    side.label = path;
+    if (isCsv(kindFrom)) {
+        side.named = false;
+        side.single = true;
+        if (path == QLatin1String("/dev/null")) return side;  // git: the file is new or gone
+        const Result<Tracks> tracks = loadCamsCsv(path);
+        if (!tracks) return tracks.error();
+        CamProgram program;
+        program.tracks = *tracks;
+        side.programs.insert(0, program);
+        return side;
+    }
+    if (path == QLatin1String("/dev/null")) return side;
+    const Result<Project> project = loadProject(path);
+    if (!project) return project.error();
+    for (const CamProgram& program : project->programs)
+        side.programs.insert(program.number, program);
+    return side;
+}
+
+Result<Side> readDevice(CliSession& session, int program) {
+    session.setShowProgress(true);
+    const Result<CamProgram> read = runOnCamCon<CamProgram>(
+        session, QStringLiteral("diff"),
+        [program](CamConDevice& device, JobContext& job) -> Result<CamProgram> {
+            const Result<DeviceInfo> info = device.readInfo();
+            if (!info) return info.error();
+            if (program >= info->programs)
+                return Error::usage(QStringLiteral("program %1 does not exist on the device "
+                                                   "(programs 0..%2); choose another --program")
+                                        .arg(program)
+                                        .arg(info->programs - 1));
+            Result<CamProgram> cams =
+                device.readProgram(program, info->outputs, [&job](qint64 done, qint64 total) {
+                    job.progress(done, total, QStringLiteral("reading cams"));
+                });
+            if (!cams) return cams.error();
+            const Result<QString> name = device.readProgramName(program);
+            if (!name) return name.error();
+            CamProgram read = std::move(cams).value();
+            read.number = program;
+            read.name = *name;
+            return read;
+        });
+    if (!read) return read.error();
+    Side side;
+    side.label = session.where();
+    side.programs.insert(program, *read);
+    return side;
+}
+
+// The program `number` of `side`: a CSV file's one program stands for any.
+std::optional<CamProgram> programOf(const Side& side, int number) {
+    if (side.single) {
+        if (side.programs.isEmpty()) return CamProgram{};
+        return side.programs.first();
+    }
+    if (!side.programs.contains(number)) return std::nullopt;
+    return side.programs.value(number);
+}
+
+struct Line {
+    int program;
+    QString text;
+    QJsonObject json;
+};
+
+QJsonObject camJson(const Cam& cam) {
+    return {{QStringLiteral("on"), cam.on}, {QStringLiteral("off"), cam.off}};
+}
+
+void addProgramDiff(int numberA, int numberB, const CamProgram& a, const CamProgram& b,
+                    bool compareNames, QList<Line>& lines) {
+    ProgramDiff diff = diffPrograms(a, b);
+    const QJsonObject where{{QStringLiteral("programA"), numberA},
+                            {QStringLiteral("programB"), numberB}};
+    if (compareNames && diff.nameDiffers()) {
+        QJsonObject json = where;
+        json.insert(QStringLiteral("kind"), QStringLiteral("name"));
+        json.insert(QStringLiteral("a"), diff.nameA);
+        json.insert(QStringLiteral("b"), diff.nameB);
+        lines.append(
+            {numberA, QStringLiteral("name \"%1\" → \"%2\"").arg(diff.nameA, diff.nameB), json});
+    }
+    static const char* const kinds[] = {"onlyInA", "onlyInB", "changed"};
+    for (const CamDifference& cam : diff.cams) {
+        QJsonObject json = where;
+        json.insert(QStringLiteral("kind"), QLatin1String(kinds[int(cam.kind)]));
+        json.insert(QStringLiteral("output"), cam.output);
+        if (cam.camA > 0) {
+            json.insert(QStringLiteral("camA"), cam.camA);
+            json.insert(QStringLiteral("a"), camJson(cam.a));
+        }
+        if (cam.camB > 0) {
+            json.insert(QStringLiteral("camB"), cam.camB);
+            json.insert(QStringLiteral("b"), camJson(cam.b));
+        }
+        lines.append({numberA, describeDifference(cam), json});
+    }
+}
+
+// Every program either side holds, or the one chosen.
+Result<QList<Line>> compare(const Side& a, const Side& b, int programA, int programB) {
+    QList<Line> lines;
+    const bool names = a.named && b.named;
+    if (programA >= 0) {
+        const std::optional<CamProgram> pa = programOf(a, programA);
+        const std::optional<CamProgram> pb = programOf(b, programB);
+        for (const auto& [side, program, found] :
+             {std::tuple{&a, programA, pa.has_value()}, std::tuple{&b, programB, pb.has_value()}}) {
+            if (!found)
+                return Error::invalidData(QStringLiteral("%1 holds no program %2 (not read or not "
+                                                         "there); choose another --program")
+                                              .arg(side->label)
+                                              .arg(program));
+        }
+        addProgramDiff(programA, programB, *pa, *pb, names, lines);
+        return lines;
+    }
+    if (a.single != b.single && !(a.programs.isEmpty() || b.programs.isEmpty()))
+        return Error::usage(
+            QStringLiteral("a CSV file holds one program: add --program P to choose the "
+                           "program of the project to compare it with"));
+    QList<int> numbers = a.programs.keys() + b.programs.keys();
+    std::sort(numbers.begin(), numbers.end());
+    numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
+    if (a.single && b.single) numbers = {0};
+    for (int number : numbers) {
+        const std::optional<CamProgram> pa = programOf(a, number);
+        const std::optional<CamProgram> pb = programOf(b, number);
+        if (pa && pb) {
+            addProgramDiff(number, number, *pa, *pb, names, lines);
+            continue;
+        }
+        // A program only one side holds (the other never read it, or lacks it).
+        const bool inA = pa.has_value();
+        lines.append({number,
+                      inA ? QStringLiteral("only in A") : QStringLiteral("only in B"),
+                      {{QStringLiteral("programA"), number},
+                       {QStringLiteral("programB"), number},
+                       {QStringLiteral("kind"), inA ? QStringLiteral("programOnlyInA")
+                                                    : QStringLiteral("programOnlyInB")}}});
+    }
+    return lines;
+}
+
+QString text(const QList<Line>& lines, bool oneProgram) {
+    QString out;
+    for (const Line& line : lines) {
+        out += oneProgram ? line.text
+                          : QStringLiteral("program %1: %2").arg(line.program).arg(line.text);
+        out += QLatin1Char('\n');
+    }
+    return out;
+}
+
+// git's external diff driver: PATH OLD-FILE OLD-HEX OLD-MODE NEW-FILE NEW-HEX NEW-MODE.
+// Git stops on a non-zero exit, so differences exit 0 here.
+int runGitDriver(CommandArgs& args) {
+    QStringList parts;
+    for (QString part = args.takePositional(); !part.isEmpty(); part = args.takePositional())
+        parts << part;
+    if (parts.size() != 7)
+        return reportError(Error::usage(QStringLiteral(
+            "diff --git takes the 7 arguments git passes to an external diff driver")));
+    const QString& path = parts.at(0);
+    const Result<Side> a = loadFile(parts.at(1), path);
+    if (!a) return reportError(a.error());
+    const Result<Side> b = loadFile(parts.at(4), path);
+    if (!b) return reportError(b.error());
+    const Result<QList<Line>> lines = compare(*a, *b, -1, -1);
+    if (!lines) return reportError(lines.error());
+    printOut(QStringLiteral("cambench diff %1\n").arg(path));
+    printOut(lines->isEmpty() ? QStringLiteral("no cam program differs\n")
+                              : text(*lines, a->single && b->single));
+    return ExitOk;
+}
+
+}  // namespace
+
+int runDiff(CliSession& session, CommandArgs& args) {
+    if (args.takeFlag(QStringLiteral("--git"))) return runGitDriver(args);
+    const bool json = args.takeFlag(QStringLiteral("--json"));
+    const Result<int> program =
+        args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);
+    if (!program) return reportError(program.error());
+    const Result<int> programB =
+        args.takeIntOption(QStringLiteral("--program-b"), -1, 0, kMaxProgramNumber);
+    if (!programB) return reportError(programB.error());
+    const Result<QString> first =
+        args.takeRequiredPositional(QStringLiteral("A (a FILE or device)"));
+    if (!first) return reportError(first.error());
+    const Result<QString> second =
+        args.takeRequiredPositional(QStringLiteral("B (a FILE or device)"));
+    if (!second) return reportError(second.error());
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    if (*programB >= 0 && *program < 0)
+        return reportError(Error::usage(QStringLiteral("--program-b needs --program for A")));
+    const int pa = *program;
+    const int pb = *programB >= 0 ? *programB : pa;
+
+    // Both files first: a typo in a path is said before the device is asked.
+    std::optional<Side> sides[2];
+    const QString sources[2] = {*first, *second};
+    for (int i = 0; i < 2; ++i) {
+        if (sources[i] == kDevice) continue;
+        const Result<Side> side = loadFile(sources[i], sources[i]);
+        if (!side) return reportError(side.error());
+        sides[i] = *side;
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (sources[i] != kDevice) continue;
+        if (pa < 0)
+            return reportError(
+                Error::usage(QStringLiteral("diff with the device needs --program P")));
+        const Result<Side> side = readDevice(session, i == 0 ? pa : pb);
+        if (!side) return reportError(side.error());
+        sides[i] = *side;
+    }
+    const Result<QList<Line>> lines = compare(*sides[0], *sides[1], pa, pb);
+    if (!lines) return reportError(lines.error());
+    const int exit = lines->isEmpty() ? ExitOk : ExitDevice;
+    if (json) {
+        QJsonArray differences;
+        for (const Line& line : *lines) {
+            QJsonObject entry = line.json;
+            entry.insert(QStringLiteral("text"), line.text);
+            differences.append(entry);
+        }
+        printJson(QJsonDocument(QJsonObject{{QStringLiteral("a"), sides[0]->label},
+                                            {QStringLiteral("b"), sides[1]->label},
+                                            {QStringLiteral("equal"), lines->isEmpty()},
+                                            {QStringLiteral("differences"), differences}}));
+        return exit;
+    }
+    printOut(text(*lines, pa >= 0 || (sides[0]->single && sides[1]->single)));
+    return exit;
+}
+
+}  // namespace cambench::cli
