@@ -137,6 +137,43 @@ private Q_SLOTS:
                      .arg(cells.at(3).toInt() + 5));
     }
 
+    void timingAtSpeedFromDeviceAndProject() {
+        SimSession session;
+        START_SIM(session);
+        const CliRun run = session.cli({"timing", "--program", "0", "--speed", "60"});
+        VERIFY_EXIT(run, 0);
+        QVERIFY2(run.out.startsWith(
+                     QLatin1String("program 0 at 60.0 1/min (360.0 pos/s), axis 0..359 rotary\n")),
+                 describe(run));
+        // The simulated device's output 1: dead time 2.5 ms, cams 10..90 and 180..270.
+        QVERIFY2(run.out.contains(QLatin1String("output 1: shift 0.9 pos (dead time 2.5 ms), "
+                                                "shortest cam 222.2 ms")),
+                 describe(run));
+
+        // The same numbers from a project file of the device, without it.
+        const QString project = session.path(QStringLiteral("p.json"));
+        VERIFY_EXIT(session.cli({"project", "read", "-o", project}), 0);
+        const CliRun offline =
+            runCli({"timing", "--project", project, "--program", "0", "--speed", "60"});
+        VERIFY_EXIT(offline, 0);
+        QCOMPARE(offline.out, run.out);
+
+        // A minimum pulse the cams miss at speed: named, with the limit.
+        const CliRun fast = runCli({"timing", "--project", project, "--program", "0", "--speed",
+                                    "3000", "--min-pulse", "20", "--json"});
+        VERIFY_EXIT(fast, 0);
+        const QJsonObject root = QJsonDocument::fromJson(fast.out.toUtf8()).object();
+        QCOMPARE(root.value(QStringLiteral("speedUnit")).toString(), QStringLiteral("1/min"));
+        const QJsonObject first = root.value(QStringLiteral("outputs")).toArray().at(0).toObject();
+        QCOMPARE(first.value(QStringLiteral("output")).toInt(), 1);
+        QCOMPARE(first.value(QStringLiteral("limit")).toObject().value(QStringLiteral("kind")),
+                 QJsonValue(QStringLiteral("shortPulse")));
+        QVERIFY(!first.value(QStringLiteral("problems")).toArray().isEmpty());
+
+        const CliRun bad = runCli({"timing", "--program", "0", "--speed", "fast"});
+        VERIFY_EXIT(bad, 2);
+    }
+
     void gitDiffDriverForProjectFiles() {
         if (QStandardPaths::findExecutable(QStringLiteral("git")).isEmpty())
             QSKIP("git is not installed");

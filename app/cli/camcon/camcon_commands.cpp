@@ -26,6 +26,10 @@ QString camConHelp() {
         "                                   the cams that differ between A and B (project or\n"
         "                                   CSV files, or device: needs --program), one a line;\n"
         "                                   exit 0 equal, 1 differ; --git: git's diff driver\n"
+        "  timing --program P --speed V [--min-pulse MS] [--axis rotary|linear]\n"
+        "         [--project FILE] [--json] where each output switches at speed V (1/min on a\n"
+        "                                   rotary axis, pos/s on a linear one): shift, shortest\n"
+        "                                   cam, the speed above which cams vanish or merge\n"
         "  backup -o FILE                   whole EEPROM image\n"
         "  restore FILE [--force] [--no-safety-backup]\n"
         "                                   checks FILE, matches it against the device, saves a\n"
@@ -93,6 +97,7 @@ void registerCamConCommands(CommandRegistry& registry) {
         {"programming", runProgramming},
         {"eeprom-lock", runEepromLock},
         {"diff", runDiff},
+        {"timing", runTiming},
     };
     for (const auto& [name, run] : groups) registry.add({family, QLatin1String(name), run});
     registry.addHelp(family, camConHelp());

@@ -40,5 +40,6 @@ int runAnalogue(CliSession& session, CommandArgs& args);
 int runProgramming(CliSession& session, CommandArgs& args);
 int runEepromLock(CliSession& session, CommandArgs& args);
 int runDiff(CliSession& session, CommandArgs& args);
+int runTiming(CliSession& session, CommandArgs& args);
 
 }  // namespace cambench::cli

@@ -9,6 +9,7 @@ target_sources(cambench-cli PRIVATE
   cli/camcon/eeprom_commands.cpp
   cli/camcon/project_commands.cpp
   cli/camcon/diff_command.cpp
+  cli/camcon/timing_command.cpp
   cli/camcon/line_commands.cpp
   cli/camcon/coupling_commands.cpp
   cli/camcon/table_section_commands.cpp

@@ -1,0 +1,252 @@
+// timing --program P --speed V: where each output's cams switch electrically
+// at that speed (dead times act ahead of the programmed positions), the
+// shortest time an output is on, and the speed above which its picture
+// breaks. From the device, or from a project file with --project.
+#include "app/cli/camcon/camcon_commands.h"
+#include "app/cli/cli_output.h"
+#include "app/cli/exit_codes.h"
+
+#include "model/camcon/cam_timing.h"
+#include "model/camcon/project_file.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace cambench::cli {
+
+namespace {
+
+using comm::CamConDevice;
+using comm::JobContext;
+
+constexpr int kMaxProgramNumber = 32767;  // as cams read
+
+// What the arithmetic needs of a device or a project.
+struct TimingInput {
+    CamProgram program;
+    DeadTimeModes deadTimes;  // every output with cams; plain dead times as mode Normal
+    AxisGeometry axis;
+    bool axisKnown = true;
+};
+
+DeadTimeModes asModes(const DeadTimes& plain, const DeadTimeModes& modes) {
+    if (!modes.isEmpty()) return modes;
+    DeadTimeModes result;
+    for (auto it = plain.cbegin(); it != plain.cend(); ++it)
+        result.insert(it.key(), {DeadTimeMode::Normal, it.value(), 0, 0});
+    return result;
+}
+
+Result<TimingInput> fromProject(const QString& path, int number) {
+    const Result<Project> project = loadProject(path);
+    if (!project) return project.error();
+    TimingInput input;
+    bool found = false;
+    for (const CamProgram& program : project->programs) {
+        if (program.number != number) continue;
+        input.program = program;
+        found = true;
+    }
+    if (!found)
+        return Error::invalidData(
+            QStringLiteral("%1 holds no program %2 (not read or not there); choose another "
+                           "--program")
+                .arg(path)
+                .arg(number));
+    input.deadTimes = asModes(project->deadTimes, project->deadTimeModes);
+    input.axis = {project->device.minPosition, project->device.maxPosition,
+                  isRotaryAxis(project->settings)};
+    return input;
+}
+
+Result<TimingInput> fromDevice(CliSession& session, int number) {
+    session.setShowProgress(true);
+    return runOnCamCon<TimingInput>(
+        session, QStringLiteral("timing"),
+        [number](CamConDevice& device, JobContext& job) -> Result<TimingInput> {
+            const Result<DeviceInfo> info = device.readInfo();
+            if (!info) return info.error();
+            if (number >= info->programs)
+                return Error::usage(QStringLiteral("program %1 does not exist on the device "
+                                                   "(programs 0..%2); choose another --program")
+                                        .arg(number)
+                                        .arg(info->programs - 1));
+            TimingInput input;
+            Result<CamProgram> program =
+                device.readProgram(number, info->outputs, [&job](qint64 done, qint64 total) {
+                    job.progress(done, total, QStringLiteral("reading cams"));
+                });
+            if (!program) return program.error();
+            input.program = std::move(program).value();
+            DeadTimeModes modes;
+            if (device.has(comm::CamConCapability::DeadTimeModes)) {
+                Result<DeadTimeModes> read = device.readDeadTimeModes(info->deadTimeOutputs);
+                if (!read) return read.error();
+                modes = *read;
+            }
+            DeadTimes plain;
+            if (modes.isEmpty()) {
+                Result<DeadTimes> read = device.readDeadTimes(info->deadTimeOutputs);
+                if (!read) return read.error();
+                plain = *read;
+            }
+            input.deadTimes = asModes(plain, modes);
+            input.axis = {info->minPosition, info->maxPosition, true};
+            const Result<QVariant> axisType = device.readSetting(QStringLiteral("axisType"));
+            if (axisType)
+                input.axis.rotary = axisType->toLongLong() == 0;
+            else
+                input.axisKnown = false;
+            return input;
+        });
+}
+
+QString number(double value, int decimals = 1) {
+    return QString::number(value, 'f', decimals);
+}
+
+QJsonObject problemJson(int output, const TimingProblem& problem, const AxisGeometry& axis) {
+    static const char* const kinds[] = {"vanishes", "merges", "shortPulse", "shiftOverCycle"};
+    QJsonObject json{{QStringLiteral("kind"), QLatin1String(kinds[int(problem.kind)])},
+                     {QStringLiteral("cam"), problem.cam},
+                     {QStringLiteral("fromSpeed"), fromPositionsPerSecond(problem.fromSpeed, axis)},
+                     {QStringLiteral("text"), describeProblem(output, problem, axis)}};
+    if (problem.nextCam > 0) json.insert(QStringLiteral("nextCam"), problem.nextCam);
+    return json;
+}
+
+}  // namespace
+
+int runTiming(CliSession& session, CommandArgs& args) {
+    const bool json = args.takeFlag(QStringLiteral("--json"));
+    const Result<int> program =
+        args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);
+    if (!program) return reportError(program.error());
+    const Result<QString> speedText = args.takeOption(QStringLiteral("--speed"));
+    if (!speedText) return reportError(speedText.error());
+    const Result<QString> pulseText = args.takeOption(QStringLiteral("--min-pulse"));
+    if (!pulseText) return reportError(pulseText.error());
+    const Result<QString> axisText = args.takeOption(QStringLiteral("--axis"));
+    if (!axisText) return reportError(axisText.error());
+    const Result<QString> projectPath = args.takeOption(QStringLiteral("--project"));
+    if (!projectPath) return reportError(projectPath.error());
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    if (*program < 0 || speedText->isEmpty())
+        return reportError(Error::usage(QStringLiteral("timing needs --program P and --speed V")));
+    bool ok = false;
+    // A decimal point, never the locale's comma: scripts give "412.5".
+    const double speed = speedText->toDouble(&ok);
+    if (!ok || speed < 0)
+        return reportError(Error::usage(
+            QStringLiteral("--speed must be a number of 0 or more, not \"%1\"").arg(*speedText)));
+    double minPulseMs = 0;
+    if (!pulseText->isEmpty()) {
+        minPulseMs = pulseText->toDouble(&ok);
+        if (!ok || minPulseMs < 0)
+            return reportError(Error::usage(
+                QStringLiteral("--min-pulse must be milliseconds, 0 or more, not \"%1\"")
+                    .arg(*pulseText)));
+    }
+    if (!axisText->isEmpty() && *axisText != QLatin1String("rotary") &&
+        *axisText != QLatin1String("linear"))
+        return reportError(Error::usage(
+            QStringLiteral("--axis must be rotary or linear, not \"%1\"").arg(*axisText)));
+
+    const Result<TimingInput> read = projectPath->isEmpty() ? fromDevice(session, *program)
+                                                            : fromProject(*projectPath, *program);
+    if (!read) return reportError(read.error());
+    TimingInput input = *read;
+    if (!axisText->isEmpty()) {
+        input.axis.rotary = *axisText == QLatin1String("rotary");
+        input.axisKnown = true;
+    }
+    if (!input.axisKnown)
+        printError(
+            QStringLiteral("note: the device did not say whether its axis is rotary or "
+                           "linear; taken as rotary (give --axis linear if it is not)"));
+    const AxisGeometry& axis = input.axis;
+    const double v = toPositionsPerSecond(speed, axis);
+    const QString unit = speedUnit(axis);
+
+    QJsonArray outputs;
+    QString text = QStringLiteral("program %1 at %2 %3 (%4 pos/s), axis %5..%6 %7\n")
+                       .arg(*program)
+                       .arg(number(speed, speed >= 100 ? 0 : 1), unit, number(v))
+                       .arg(axis.minPosition)
+                       .arg(axis.maxPosition)
+                       .arg(axis.rotary ? QStringLiteral("rotary") : QStringLiteral("linear"));
+    QStringList warnings;
+    for (const Track& track : input.program.tracks) {
+        if (track.cams.isEmpty()) continue;
+        const OutputTiming timing =
+            timeTrack(track, input.deadTimes.value(track.output), v, axis, minPulseMs);
+        QString line =
+            QStringLiteral("output %1: shift %2 pos").arg(track.output).arg(number(timing.shiftOn));
+        if (!qFuzzyCompare(timing.shiftOn + 1, timing.shiftOff + 1))
+            line = QStringLiteral("output %1: shift on %2 pos, off %3 pos")
+                       .arg(track.output)
+                       .arg(number(timing.shiftOn), number(timing.shiftOff));
+        line += QStringLiteral(" (dead time %1 ms").arg(number(timing.onDeadTimeMs));
+        if (timing.offDeadTimeMs != timing.onDeadTimeMs)
+            line += QStringLiteral(" on, %1 ms off").arg(number(timing.offDeadTimeMs));
+        line += QLatin1Char(')');
+        line += timing.shortestDurationMs
+                    ? QStringLiteral(", shortest cam %1 ms").arg(number(*timing.shortestDurationMs))
+                    : QStringLiteral(", standing still");
+        line += timing.firstLimit ? QStringLiteral(", limit %1")
+                                        .arg(describeProblem(track.output, *timing.firstLimit, axis)
+                                                 .section(QStringLiteral(": "), 1))
+                                  : QStringLiteral(", no limit");
+        text += line + QLatin1Char('\n');
+        for (const TimingProblem& problem : timing.problems)
+            warnings << QStringLiteral("warning: %1 (at %2 %3)")
+                            .arg(describeProblem(track.output, problem, axis),
+                                 number(speed, speed >= 100 ? 0 : 1), unit);
+
+        QJsonArray cams;
+        for (const TimedCam& cam : timing.cams) {
+            QJsonObject c{{QStringLiteral("cam"), cam.number},
+                          {QStringLiteral("programmedOn"), cam.programmed.on},
+                          {QStringLiteral("programmedOff"), cam.programmed.off},
+                          {QStringLiteral("on"), cam.on},
+                          {QStringLiteral("off"), cam.off},
+                          {QStringLiteral("length"), cam.length}};
+            if (cam.durationMs) c.insert(QStringLiteral("durationMs"), *cam.durationMs);
+            cams.append(c);
+        }
+        QJsonArray problems;
+        for (const TimingProblem& problem : timing.problems)
+            problems.append(problemJson(track.output, problem, axis));
+        QJsonObject entry{{QStringLiteral("output"), track.output},
+                          {QStringLiteral("onDeadTimeMs"), timing.onDeadTimeMs},
+                          {QStringLiteral("offDeadTimeMs"), timing.offDeadTimeMs},
+                          {QStringLiteral("shiftOn"), timing.shiftOn},
+                          {QStringLiteral("shiftOff"), timing.shiftOff},
+                          {QStringLiteral("cams"), cams},
+                          {QStringLiteral("problems"), problems}};
+        if (timing.shortestDurationMs)
+            entry.insert(QStringLiteral("shortestCamMs"), *timing.shortestDurationMs);
+        if (timing.firstLimit)
+            entry.insert(QStringLiteral("limit"),
+                         problemJson(track.output, *timing.firstLimit, axis));
+        outputs.append(entry);
+    }
+    if (json) {
+        return printJson(QJsonDocument(QJsonObject{
+            {QStringLiteral("program"), *program},
+            {QStringLiteral("speed"), speed},
+            {QStringLiteral("speedUnit"), unit},
+            {QStringLiteral("positionsPerSecond"), v},
+            {QStringLiteral("minPulseMs"), minPulseMs},
+            {QStringLiteral("axis"), QJsonObject{{QStringLiteral("min"), axis.minPosition},
+                                                 {QStringLiteral("max"), axis.maxPosition},
+                                                 {QStringLiteral("rotary"), axis.rotary}}},
+            {QStringLiteral("outputs"), outputs}}));
+    }
+    printOut(text);
+    for (const QString& warning : warnings) printOut(warning + QLatin1Char('\n'));
+    return ExitOk;
+}
+
+}  // namespace cambench::cli
