@@ -65,17 +65,7 @@ Result<Side> readDevice(CliSession& session, int program) {
     const Result<CamProgram> read = runOnCamCon<CamProgram>(
         session, QStringLiteral("diff"),
         [program](CamConDevice& device, JobContext& job) -> Result<CamProgram> {
-            const Result<DeviceInfo> info = device.readInfo();
-            if (!info) return info.error();
-            if (program >= info->programs)
-                return Error::usage(QStringLiteral("program %1 does not exist on the device "
-                                                   "(programs 0..%2); choose another --program")
-                                        .arg(program)
-                                        .arg(info->programs - 1));
-            Result<CamProgram> cams =
-                device.readProgram(program, info->outputs, [&job](qint64 done, qint64 total) {
-                    job.progress(done, total, QStringLiteral("reading cams"));
-                });
+            Result<CamProgram> cams = readDeviceProgram(device, job, program);
             if (!cams) return cams.error();
             const Result<QString> name = device.readProgramName(program);
             if (!name) return name.error();

@@ -65,34 +65,25 @@ Result<TimingInput> fromDevice(CliSession& session, int number) {
     return runOnCamCon<TimingInput>(
         session, QStringLiteral("timing"),
         [number](CamConDevice& device, JobContext& job) -> Result<TimingInput> {
-            const Result<DeviceInfo> info = device.readInfo();
-            if (!info) return info.error();
-            if (number >= info->programs)
-                return Error::usage(QStringLiteral("program %1 does not exist on the device "
-                                                   "(programs 0..%2); choose another --program")
-                                        .arg(number)
-                                        .arg(info->programs - 1));
             TimingInput input;
-            Result<CamProgram> program =
-                device.readProgram(number, info->outputs, [&job](qint64 done, qint64 total) {
-                    job.progress(done, total, QStringLiteral("reading cams"));
-                });
+            DeviceInfo identity;
+            Result<CamProgram> program = readDeviceProgram(device, job, number, &identity);
             if (!program) return program.error();
             input.program = std::move(program).value();
             DeadTimeModes modes;
             if (device.has(comm::CamConCapability::DeadTimeModes)) {
-                Result<DeadTimeModes> read = device.readDeadTimeModes(info->deadTimeOutputs);
+                Result<DeadTimeModes> read = device.readDeadTimeModes(identity.deadTimeOutputs);
                 if (!read) return read.error();
                 modes = *read;
             }
             DeadTimes plain;
             if (modes.isEmpty()) {
-                Result<DeadTimes> read = device.readDeadTimes(info->deadTimeOutputs);
+                Result<DeadTimes> read = device.readDeadTimes(identity.deadTimeOutputs);
                 if (!read) return read.error();
                 plain = *read;
             }
             input.deadTimes = asModes(plain, modes);
-            input.axis = {info->minPosition, info->maxPosition, true};
+            input.axis = {identity.minPosition, identity.maxPosition, true};
             const Result<QVariant> axisType = device.readSetting(QStringLiteral("axisType"));
             if (axisType)
                 input.axis.rotary = axisType->toLongLong() == 0;
