@@ -1591,6 +1591,10 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Report written to %1.</source>
         <translation>Protokoll nach %1 geschrieben.</translation>
     </message>
+    <message>
+        <source>Compare &amp;programs…</source>
+        <translation>&amp;Programme vergleichen…</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDiagramWidget</name>
@@ -2355,6 +2359,156 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Changed on the device since it was last read (%1)</source>
         <translation>Im Gerät geändert seit dem letzten Lesen (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CompareProgramsDialog</name>
+    <message>
+        <source>Compare</source>
+        <translation>Vergleichen</translation>
+    </message>
+    <message>
+        <source>Hide outputs without a difference</source>
+        <translation>Ausgänge ohne Unterschied ausblenden</translation>
+    </message>
+    <message>
+        <source>Compare programs</source>
+        <translation>Programme vergleichen</translation>
+    </message>
+    <message>
+        <source>A (before)</source>
+        <translation>A (vorher)</translation>
+    </message>
+    <message>
+        <source>B (after)</source>
+        <translation>B (nachher)</translation>
+    </message>
+    <message>
+        <source>the same in both</source>
+        <translation>in beiden gleich</translation>
+    </message>
+    <message>
+        <source>changed: A dashed, B solid, moved edges marked</source>
+        <translation>geändert: A gestrichelt, B gefüllt, verschobene Kanten markiert</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>nur in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>nur in B</translation>
+    </message>
+    <message>
+        <source>Edited on this PC</source>
+        <translation>Auf diesem PC bearbeitet</translation>
+    </message>
+    <message>
+        <source>On the device</source>
+        <translation>Im Gerät</translation>
+    </message>
+    <message>
+        <source>Project file</source>
+        <translation>Projektdatei</translation>
+    </message>
+    <message>
+        <source>CSV cam file</source>
+        <translation>CSV-Nockendatei</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Auswählen…</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>Quelle:</translation>
+    </message>
+    <message>
+        <source>Program:</source>
+        <translation>Programm:</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>CSV cam files (*.csv)</source>
+        <translation>CSV-Nockendateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>CamBench projects (*.json)</source>
+        <translation>CamBench-Projekte (*.json)</translation>
+    </message>
+    <message>
+        <source>(none chosen)</source>
+        <translation>(keine ausgewählt)</translation>
+    </message>
+    <message>
+        <source>Program %1 is not on this PC yet: read it from the device or open a project.</source>
+        <translation>Programm %1 ist noch nicht auf diesem PC: Lesen Sie es aus dem Gerät oder öffnen Sie ein Projekt.</translation>
+    </message>
+    <message>
+        <source>edited on this PC, program %1</source>
+        <translation>auf diesem PC bearbeitet, Programm %1</translation>
+    </message>
+    <message>
+        <source>Read program %1</source>
+        <translation>Programm %1 lesen</translation>
+    </message>
+    <message>
+        <source>The device has programs 0 to %1 only.</source>
+        <translation>Das Gerät hat nur die Programme 0 bis %1.</translation>
+    </message>
+    <message>
+        <source>the device, program %1, read at %2</source>
+        <translation>das Gerät, Programm %1, gelesen um %2</translation>
+    </message>
+    <message>
+        <source>Choose the project file.</source>
+        <translation>Wählen Sie die Projektdatei.</translation>
+    </message>
+    <message>
+        <source>%1, program %2</source>
+        <translation>%1, Programm %2</translation>
+    </message>
+    <message>
+        <source>%1 holds no program %2.</source>
+        <translation>%1 enthält kein Programm %2.</translation>
+    </message>
+    <message>
+        <source>Choose the CSV file.</source>
+        <translation>Wählen Sie die CSV-Datei.</translation>
+    </message>
+    <message>
+        <source>Reading…</source>
+        <translation>Lesen…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>A: %1. B: %2. %n difference(s).</source>
+        <translation>
+            <numerusform>A: %1. B: %2. %n Unterschied.</numerusform>
+            <numerusform>A: %1. B: %2. %n Unterschiede.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>output %1, cam %2: %3 → %4</source>
+        <translation>Ausgang %1, Nocken %2: %3 → %4</translation>
+    </message>
+    <message>
+        <source>output %1, cam %2 (in B %3): %4 → %5</source>
+        <translation>Ausgang %1, Nocken %2 (in B %3): %4 → %5</translation>
+    </message>
+    <message>
+        <source>output %1: cam %2 only in A</source>
+        <translation>Ausgang %1: Nocken %2 nur in A</translation>
+    </message>
+    <message>
+        <source>output %1: cam %2 only in B</source>
+        <translation>Ausgang %1: Nocken %2 nur in B</translation>
     </message>
 </context>
 <context>
@@ -3248,6 +3402,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>No page of CamBench knows the devices of this protocol.</source>
         <translation>Keine Seite von CamBench kennt die Geräte dieses Protokolls.</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
     </message>
 </context>
 <context>

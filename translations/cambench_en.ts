@@ -1591,6 +1591,10 @@ Erase and restore now?</translation>
         <source>Report written to %1.</source>
         <translation type="unfinished">Report written to %1.</translation>
     </message>
+    <message>
+        <source>Compare &amp;programs…</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDiagramWidget</name>
@@ -2355,6 +2359,156 @@ Erase and restore now?</translation>
     <message>
         <source>Changed on the device since it was last read (%1)</source>
         <translation>Changed on the device since it was last read (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CompareProgramsDialog</name>
+    <message>
+        <source>Compare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hide outputs without a difference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare programs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A (before)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B (after)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same in both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed: A dashed, B solid, moved edges marked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edited on this PC</source>
+        <translation type="unfinished">Edited on this PC</translation>
+    </message>
+    <message>
+        <source>On the device</source>
+        <translation type="unfinished">On the device</translation>
+    </message>
+    <message>
+        <source>Project file</source>
+        <translation type="unfinished">Project file</translation>
+    </message>
+    <message>
+        <source>CSV cam file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation type="unfinished">File:</translation>
+    </message>
+    <message>
+        <source>CSV cam files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamBench projects (*.json)</source>
+        <translation type="unfinished">CamBench projects (*.json)</translation>
+    </message>
+    <message>
+        <source>(none chosen)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program %1 is not on this PC yet: read it from the device or open a project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>edited on this PC, program %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read program %1</source>
+        <translation type="unfinished">Read program %1</translation>
+    </message>
+    <message>
+        <source>The device has programs 0 to %1 only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device, program %1, read at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the project file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, program %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds no program %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the CSV file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>A: %1. B: %2. %n difference(s).</source>
+        <translation>
+            <numerusform>A: %1. B: %2. %n difference.</numerusform>
+            <numerusform>A: %1. B: %2. %n differences.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>output %1, cam %2: %3 → %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output %1, cam %2 (in B %3): %4 → %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output %1: cam %2 only in A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output %1: cam %2 only in B</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3245,6 +3399,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>No page of CamBench knows the devices of this protocol.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

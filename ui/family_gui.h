@@ -70,6 +70,7 @@ struct FamilyMenus {
     QMenu* file;
     QMenu* edit;
     QMenu* device;
+    QMenu* tools;
 };
 
 // A family's part of one main window: its pages, its menu entries, what it

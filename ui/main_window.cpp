@@ -136,15 +136,16 @@ void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QMenu* device = menuBar()->addMenu(tr("&Device"));
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     device->addAction(tr("&Connect"), this, [this] {
         m_session->connectTo(m_connection->connectionSettings(), m_connection->protocolSettings());
     });
     device->addAction(tr("&Disconnect"), m_session, &DeviceSession::disconnectFromDevice);
     for (FamilyWindow* family : m_families) {
         QList<QAction*> before;
-        for (QMenu* menu : {file, edit, device}) before << menu->actions();
-        family->addMenuEntries({file, edit, device});
-        for (QMenu* menu : {file, edit, device}) {
+        for (QMenu* menu : {file, edit, device, tools}) before << menu->actions();
+        family->addMenuEntries({file, edit, device, tools});
+        for (QMenu* menu : {file, edit, device, tools}) {
             for (QAction* action : menu->actions())
                 if (!before.contains(action))
                     m_familyActions.append({action, family->gui()->familyId()});

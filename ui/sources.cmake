@@ -27,6 +27,10 @@ target_sources(cambench_ui PRIVATE
   camcon/camcon_tour.cpp
   camcon/camcon_identity_panel.h
   camcon/camcon_identity_panel.cpp
+  camcon/program_diff_view.h
+  camcon/program_diff_view.cpp
+  camcon/compare_programs_dialog.h
+  camcon/compare_programs_dialog.cpp
   family_gui.h
   family_gui.cpp
   replace_edits_question.h

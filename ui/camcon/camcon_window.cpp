@@ -8,6 +8,7 @@
 #include "camcon_identity_panel.h"
 #include "capability_gate.h"
 #include "compare_dialog.h"
+#include "compare_programs_dialog.h"
 #include "dead_time_modes_page.h"
 #include "dead_times_page.h"
 #include "device_check.h"
@@ -117,6 +118,8 @@ void CamConWindow::addMenuEntries(const FamilyMenus& menus) {
     menus.edit->addAction(editor->redoAction());
     menus.edit->addSeparator();
     menus.edit->addActions(editor->editorActions());
+
+    menus.tools->addAction(tr("Compare &programs…"), this, &CamConWindow::openComparePrograms);
 
     QMenu* device = menus.device;
     device->addAction(tr("&Read everything"), this,
@@ -243,6 +246,17 @@ CompareDialog* CamConWindow::openCompare() {
         showMessage(tr("Write: %1").arg(writeSummary(result)));
     });
     dialog->show();
+    return dialog;
+}
+
+CompareProgramsDialog* CamConWindow::openComparePrograms() {
+    auto* dialog = new CompareProgramsDialog(gui()->session(), m_workspace, window());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setSide(0, dialog->sideSource(0), m_cams->editor()->currentProgram());
+    dialog->setSide(1, dialog->sideSource(1), m_cams->editor()->currentProgram());
+    dialog->show();
+    // The program on screen against the device (or, offline, a file to choose).
+    if (gui()->session()->isOnline()) dialog->compare();
     return dialog;
 }
 

@@ -12,6 +12,7 @@ class CamConGui;
 class CamConSectionPage;
 class CamPage;
 class CompareDialog;
+class CompareProgramsDialog;
 class DeadTimesPage;
 class LineBackupDialog;
 class MonitorPage;
@@ -77,6 +78,8 @@ public:
     // job with one progress bar; `everythingRead` says when.
     void readEverything(int program = 0);
     CompareDialog* openCompare();
+    // Tools → Compare programs…
+    CompareProgramsDialog* openComparePrograms();
     BackupWizard* openBackupWizard();
     LineBackupDialog* openLineBackup();
 

@@ -8,17 +8,21 @@
 #include "ui/camcon/backup_wizard.h"
 #include "ui/camcon/cam_page.h"
 #include "ui/camcon/compare_dialog.h"
+#include "ui/camcon/compare_programs_dialog.h"
 #include "ui/camcon/dead_time_modes_page.h"
 #include "ui/camcon/dead_times_model.h"
 #include "ui/camcon/dead_times_page.h"
 #include "ui/camcon/eeprom_lock_page.h"
+#include "ui/camcon/program_diff_view.h"
 #include "ui/camcon/users_page.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
 #include "ui/progress_page.h"
 
 #include <QAbstractButton>
+#include <QCheckBox>
 #include <QFile>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTemporaryDir>
@@ -41,6 +45,7 @@ private Q_SLOTS:
     void editedCamWrittenAndReadBackEqualsEdit_data() { protocolRows(); }
     void editedCamWrittenAndReadBackEqualsEdit();
     void compareWritesOnlySelectedItems();
+    void compareProgramsDrawsAndListsTheDifferences();
     void deadTimeEditIsWrittenInTenthsOfMs_data() { protocolRows(); }
     void deadTimeEditIsWrittenInTenthsOfMs();
     void sectionsFollowTheProtocolsCapabilities_data() { protocolRows(); }
@@ -127,6 +132,49 @@ void MainWindowTest::compareWritesOnlySelectedItems() {
     QCOMPARE(camConWorkspace(*shell)->deviceDeadTime(2), cams->deadTime(2));
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
     compare->close();
+}
+
+void MainWindowTest::compareProgramsDrawsAndListsTheDifferences() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    const Cam before = cams->track(0, 1).cams.first();
+    Cam after = before;
+    after.off += 10;
+    cams->setCam(0, 1, 0, after);
+
+    CompareProgramsDialog* dialog = camConWindow(shell->window())->openComparePrograms();
+    dialog->setSide(0, CompareProgramsDialog::Source::Device, 0);
+    dialog->setSide(1, CompareProgramsDialog::Source::Edited, 0);
+    QSignalSpy compared(dialog, &CompareProgramsDialog::compared);
+    dialog->compare();
+    QVERIFY(compared.wait(kDeviceTimeoutMs));
+    QVERIFY2(compared.first().first().toBool(), qPrintable(dialog->summary()));
+    QCOMPARE(dialog->differenceTexts(),
+             QStringList{QStringLiteral("output 1, cam 1: %1..%2 → %1..%3")
+                             .arg(before.on)
+                             .arg(before.off)
+                             .arg(after.off)});
+    QVERIFY2(dialog->summary().contains(QLatin1String("the device, program 0, read at")),
+             qPrintable(dialog->summary()));
+    // The list selects in the diagram.
+    dialog->list()->setCurrentRow(0);
+    QCOMPARE(dialog->view()->selected(), 0);
+    // Outputs without a difference fold away on request.
+    QVERIFY(dialog->view()->shownOutputs().size() > 1);
+    dialog->findChild<QCheckBox*>()->setChecked(true);
+    QCOMPARE(dialog->view()->shownOutputs(), QList<int>{1});
+
+    // A side that cannot be read is said, and nothing is drawn.
+    dialog->setSide(0, CompareProgramsDialog::Source::ProjectFile, 0);
+    compared.clear();
+    dialog->compare();
+    if (compared.isEmpty()) QVERIFY(compared.wait(kDeviceTimeoutMs));
+    QVERIFY(!compared.first().first().toBool());
+    QVERIFY2(dialog->summary().contains(QLatin1String("Choose the project file")),
+             qPrintable(dialog->summary()));
+    QVERIFY(dialog->differenceTexts().isEmpty());
+    dialog->close();
 }
 
 void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {
