@@ -145,7 +145,9 @@ void FreshnessTest::pagesWithoutLiveValuesOnlyWatchTheLink() {
     }
     camConWindow(window)->showSection(CamConWindow::Monitor);
     QVERIFY(monitor->isPolling());
-    QCOMPARE(monitor->pollInterval(), 250);
+    // The live rate again, not the heartbeat: 250 ms, or slower where the
+    // line measured busier (a loaded test machine) - no wall-clock figure.
+    QVERIFY2(monitor->pollInterval() < 2000, qPrintable(QString::number(monitor->pollInterval())));
 }
 
 void FreshnessTest::killedSimulatorTurnsTheConnectionPageStale() {
