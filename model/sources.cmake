@@ -30,6 +30,8 @@ target_sources(cambench_model PRIVATE
   camcon/cam_validation.cpp
   camcon/program_diff.h
   camcon/program_diff.cpp
+  camcon/cam_axis.h
+  camcon/cam_axis.cpp
   camcon/cam_timing.h
   camcon/cam_timing.cpp
   camcon/data_validation.h

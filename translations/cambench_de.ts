@@ -989,6 +989,45 @@
     </message>
 </context>
 <context>
+    <name>TimingText</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>above %1</source>
+        <translation>über %1</translation>
+    </message>
+    <message>
+        <source>at every speed</source>
+        <translation>bei jeder Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Output %1: cam %2 vanishes %3 (the switch-off dead time is longer than the switch-on one).</source>
+        <translation>Ausgang %1: Nocke %2 verschwindet %3 (die Ausschalt-Totzeit ist länger als die Einschalt-Totzeit).</translation>
+    </message>
+    <message>
+        <source>Output %1: cams %2 and %3 merge %4.</source>
+        <translation>Ausgang %1: Nocken %2 und %3 verschmelzen %4.</translation>
+    </message>
+    <message>
+        <source>Output %1: cam %2 is on for less than the minimum pulse %3.</source>
+        <translation>Ausgang %1: Nocke %2 ist kürzer eingeschaltet als der Mindestimpuls %3.</translation>
+    </message>
+    <message>
+        <source>Output %1: the switch points move by more than one cycle %2.</source>
+        <translation>Ausgang %1: Die Schaltpunkte verschieben sich um mehr als einen Zyklus %2.</translation>
+    </message>
+</context>
+<context>
     <name>cambench</name>
     <message>
         <source>On the device: %1</source>
@@ -1595,6 +1634,10 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Compare &amp;programs…</source>
         <translation>&amp;Programme vergleichen…</translation>
     </message>
+    <message>
+        <source>Timing tables at the speed (%1); 0 leaves them out:</source>
+        <translation>Schaltzeit-Tabellen bei der Geschwindigkeit (%1); 0 lässt sie weg:</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDiagramWidget</name>
@@ -1613,6 +1656,22 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Output</source>
         <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2 at %3: never switches on (it vanishes).</source>
+        <translation>Ausgang %1, Nocke %2 bei %3: schaltet nie ein (sie verschwindet).</translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2 at %3: switches on at %4, off at %5</source>
+        <translation>Ausgang %1, Nocke %2 bei %3: schaltet ein bei %4, aus bei %5</translation>
+    </message>
+    <message>
+        <source>On for %1.</source>
+        <translation>Eingeschaltet für %1.</translation>
+    </message>
+    <message>
+        <source>Programmed: on %1, off %2; dead time %3 on, %4 off.</source>
+        <translation>Programmiert: ein %1, aus %2; Totzeit %3 ein, %4 aus.</translation>
     </message>
 </context>
 <context>
@@ -2269,6 +2328,50 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Analogue cams</source>
         <translation>Analognocken</translation>
     </message>
+    <message>
+        <source>Dead time on / off</source>
+        <translation>Totzeit ein / aus</translation>
+    </message>
+    <message>
+        <source>Shift on / off</source>
+        <translation>Verschiebung ein / aus</translation>
+    </message>
+    <message>
+        <source>Shortest cam</source>
+        <translation>Kürzeste Nocke</translation>
+    </message>
+    <message>
+        <source>Minimum pulse</source>
+        <translation>Mindestimpuls</translation>
+    </message>
+    <message>
+        <source>Limit</source>
+        <translation>Grenze</translation>
+    </message>
+    <message>
+        <source>%1 / %2 positions</source>
+        <translation>%1 / %2 Positionen</translation>
+    </message>
+    <message>
+        <source>standing still</source>
+        <translation>Stillstand</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Timing at %1</source>
+        <translation>Schaltzeiten bei %1</translation>
+    </message>
+    <message>
+        <source>Each edge switches early by speed × its dead time, so that the actuator acts at the programmed position. Dead times as in this report (edits included).</source>
+        <translation>Jede Flanke schaltet um Geschwindigkeit × ihre Totzeit früher, damit der Aktor an der programmierten Position wirkt. Totzeiten wie in diesem Bericht (mit Änderungen).</translation>
+    </message>
+    <message>
+        <source>Warnings at this speed: %1</source>
+        <translation>Warnungen bei dieser Geschwindigkeit: %1</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -2509,6 +2612,61 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>output %1: cam %2 only in B</source>
         <translation>Ausgang %1: Nocken %2 nur in B</translation>
+    </message>
+    <message>
+        <source>Write checked to the device…</source>
+        <translation>Angehakte ins Gerät schreiben…</translation>
+    </message>
+    <message>
+        <source>Writes the checked differences to the device side&apos;s program: its outputs as the device held them, with those differences made like the other side.</source>
+        <translation>Schreibt die angehakten Unterschiede in das Programm der Geräteseite: seine Ausgänge, wie das Gerät sie hatte, mit diesen Unterschieden wie auf der anderen Seite.</translation>
+    </message>
+    <message>
+        <source>%1 Reading both sides again…</source>
+        <translation>%1 Beide Seiten werden neu gelesen…</translation>
+    </message>
+    <message>
+        <source>Nothing written: %1</source>
+        <translation>Nichts geschrieben: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>output %1 (%n difference(s))</source>
+        <translation>
+            <numerusform>Ausgang %1 (%n Unterschied)</numerusform>
+            <numerusform>Ausgang %1 (%n Unterschiede)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write to the device, program %1: %2?</source>
+        <translation>Ins Gerät schreiben, Programm %1: %2?</translation>
+    </message>
+    <message>
+        <source>Each output is written whole: as read from the device (%1), with the checked differences made like the other side. Cam outputs switch as soon as the device takes them.</source>
+        <translation>Jeder Ausgang wird ganz geschrieben: wie vom Gerät gelesen (%1), mit den angehakten Unterschieden wie auf der anderen Seite. Nockenausgänge schalten, sobald das Gerät sie übernimmt.</translation>
+    </message>
+    <message>
+        <source>Output(s) %1 of program %2 hold edits on this PC that are not on the device: they are replaced by what is written (Edit → Undo brings them back).</source>
+        <translation>Ausgang/Ausgänge %1 von Programm %2 haben Änderungen auf diesem PC, die nicht im Gerät sind: Sie werden durch das Geschriebene ersetzt (Bearbeiten → Rückgängig holt sie zurück).</translation>
+    </message>
+    <message>
+        <source>Write checked differences</source>
+        <translation>Angehakte Unterschiede schreiben</translation>
+    </message>
+    <message>
+        <source>Write to device</source>
+        <translation>Ins Gerät schreiben</translation>
+    </message>
+    <message>
+        <source>Apply differences from Compare programs</source>
+        <translation>Unterschiede aus „Programme vergleichen“ übernehmen</translation>
+    </message>
+    <message>
+        <source>Writing program %1…</source>
+        <translation>Programm %1 wird geschrieben…</translation>
+    </message>
+    <message>
+        <source>Program %1: %2</source>
+        <translation>Programm %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2877,10 +3035,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>Same as on the device.</source>
         <translation>Wie im Gerät.</translation>
-    </message>
-    <message>
-        <source> ms</source>
-        <translation> ms</translation>
     </message>
     <message>
         <source>Output</source>
@@ -4329,6 +4483,52 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
+    <name>cambench::TimingBar</name>
+    <message>
+        <source>Program %1 has no cams.</source>
+        <translation>Programm %1 hat keine Nocken.</translation>
+    </message>
+    <message numerus="yes">
+        <source>At %1: %n warning(s). %2</source>
+        <translation>
+            <numerusform>Bei %1: %n Warnung. %2</numerusform>
+            <numerusform>Bei %1: %n Warnungen. %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>At %1 every cam switches as drawn. First limit: %2</source>
+        <translation>Bei %1 schaltet jede Nocke wie gezeichnet. Erste Grenze: %2</translation>
+    </message>
+    <message>
+        <source>At %1 every cam switches as drawn, at any speed.</source>
+        <translation>Bei %1 schaltet jede Nocke wie gezeichnet, bei jeder Geschwindigkeit.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s speed is no longer live; shown at the last speed read.</source>
+        <translation>Die Geschwindigkeit des Geräts ist nicht mehr live; gezeigt bei der zuletzt gelesenen.</translation>
+    </message>
+    <message>
+        <source>Timing at speed</source>
+        <translation>Schaltzeiten bei Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Draws under every output where it really switches at this speed: the device switches each edge early by speed × dead time so that the actuator acts at the programmed position. Durations in ms; warnings where cams vanish, merge or are shorter than the output&apos;s minimum pulse (track table).</source>
+        <translation>Zeichnet unter jeden Ausgang, wo er bei dieser Geschwindigkeit wirklich schaltet: Das Gerät schaltet jede Flanke um Geschwindigkeit × Totzeit früher, damit der Aktor an der programmierten Position wirkt. Dauern in ms; Warnungen, wo Nocken verschwinden, verschmelzen oder kürzer sind als der Mindestimpuls des Ausgangs (Spurtabelle).</translation>
+    </message>
+    <message>
+        <source>Device speed</source>
+        <translation>Gerätegeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Follow the speed the device measures, live.</source>
+        <translation>Der vom Gerät gemessenen Geschwindigkeit live folgen.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s speed is shown while the monitor reads it live (connected, Monitor or diagram polling).</source>
+        <translation>Die Geschwindigkeit des Geräts gibt es, solange der Monitor sie live liest (verbunden, Monitor oder Diagramm fragt ab).</translation>
+    </message>
+</context>
+<context>
     <name>cambench::TrackTableModel</name>
     <message>
         <source>%1 ms</source>
@@ -4381,6 +4581,14 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Program %1 was not read from the device: what the device holds is unknown. The cams shown exist on this PC.</source>
         <translation>Programm %1 wurde nicht aus dem Gerät gelesen: was das Gerät enthält, ist unbekannt. Die gezeigten Nocken gibt es auf diesem PC.</translation>
+    </message>
+    <message>
+        <source>The shortest time output %1 must stay on for its actuator to act. The timing view warns where a cam is on for less at the speed chosen. Kept on this PC and in the project file, not on the device.</source>
+        <translation>Die kürzeste Zeit, die Ausgang %1 eingeschaltet bleiben muss, damit sein Aktor wirkt. Die Schaltzeit-Ansicht warnt, wo eine Nocke bei der gewählten Geschwindigkeit kürzer eingeschaltet ist. Nur auf diesem PC und in der Projektdatei, nicht im Gerät.</translation>
+    </message>
+    <message>
+        <source>Min. pulse</source>
+        <translation>Mindestimpuls</translation>
     </message>
 </context>
 <context>
@@ -6479,6 +6687,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>This %1 is for devices of the family &quot;%2&quot;, not &quot;%3&quot;: nothing was loaded. Open it where a device of that family is connected.</source>
         <translation>Diese Datei (%1) ist für Geräte der Familie &quot;%2&quot;, nicht &quot;%3&quot;: nichts wurde geladen. Öffnen Sie sie, wo ein Gerät dieser Familie angeschlossen ist.</translation>
+    </message>
+    <message>
+        <source>minimum pulse</source>
+        <translation>Mindestimpuls</translation>
     </message>
 </context>
 <context>

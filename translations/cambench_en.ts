@@ -989,6 +989,45 @@
     </message>
 </context>
 <context>
+    <name>TimingText</name>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished">%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished">%1 ms</translation>
+    </message>
+    <message>
+        <source>above %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at every speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: cam %2 vanishes %3 (the switch-off dead time is longer than the switch-on one).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: cams %2 and %3 merge %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: cam %2 is on for less than the minimum pulse %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1: the switch points move by more than one cycle %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench</name>
     <message>
         <source>On the device: %1</source>
@@ -1595,6 +1634,10 @@ Erase and restore now?</translation>
         <source>Compare &amp;programs…</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Timing tables at the speed (%1); 0 leaves them out:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDiagramWidget</name>
@@ -1613,6 +1656,22 @@ Erase and restore now?</translation>
     <message>
         <source>Output</source>
         <translation>Output</translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2 at %3: never switches on (it vanishes).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1, cam %2 at %3: switches on at %4, off at %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On for %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programmed: on %1, off %2; dead time %3 on, %4 off.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2269,6 +2328,50 @@ Erase and restore now?</translation>
         <source>Analogue cams</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Dead time on / off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shift on / off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shortest cam</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Minimum pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 positions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>standing still</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">none</translation>
+    </message>
+    <message>
+        <source>Timing at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each edge switches early by speed × its dead time, so that the actuator acts at the programmed position. Dead times as in this report (edits included).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings at this speed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -2509,6 +2612,61 @@ Erase and restore now?</translation>
     <message>
         <source>output %1: cam %2 only in B</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write checked to the device…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes the checked differences to the device side&apos;s program: its outputs as the device held them, with those differences made like the other side.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Reading both sides again…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>output %1 (%n difference(s))</source>
+        <translation>
+            <numerusform>output %1 (%n difference)</numerusform>
+            <numerusform>output %1 (%n differences)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write to the device, program %1: %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each output is written whole: as read from the device (%1), with the checked differences made like the other side. Cam outputs switch as soon as the device takes them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output(s) %1 of program %2 hold edits on this PC that are not on the device: they are replaced by what is written (Edit → Undo brings them back).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write checked differences</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write to device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply differences from Compare programs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing program %1…</source>
+        <translation type="unfinished">Writing program %1…</translation>
+    </message>
+    <message>
+        <source>Program %1: %2</source>
+        <translation type="unfinished">Program %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2876,10 +3034,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     <message>
         <source>Same as on the device.</source>
         <translation>Same as on the device.</translation>
-    </message>
-    <message>
-        <source> ms</source>
-        <translation> ms</translation>
     </message>
     <message>
         <source>Output</source>
@@ -4327,6 +4481,52 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
+    <name>cambench::TimingBar</name>
+    <message>
+        <source>Program %1 has no cams.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>At %1: %n warning(s). %2</source>
+        <translation>
+            <numerusform>At %1: %n warning. %2</numerusform>
+            <numerusform>At %1: %n warnings. %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>At %1 every cam switches as drawn. First limit: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At %1 every cam switches as drawn, at any speed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device&apos;s speed is no longer live; shown at the last speed read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timing at speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draws under every output where it really switches at this speed: the device switches each edge early by speed × dead time so that the actuator acts at the programmed position. Durations in ms; warnings where cams vanish, merge or are shorter than the output&apos;s minimum pulse (track table).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow the speed the device measures, live.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device&apos;s speed is shown while the monitor reads it live (connected, Monitor or diagram polling).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::TrackTableModel</name>
     <message>
         <source>%1 ms</source>
@@ -4379,6 +4579,14 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>Program %1 was not read from the device: what the device holds is unknown. The cams shown exist on this PC.</source>
         <translation>Program %1 was not read from the device: what the device holds is unknown. The cams shown exist on this PC.</translation>
+    </message>
+    <message>
+        <source>The shortest time output %1 must stay on for its actuator to act. The timing view warns where a cam is on for less at the speed chosen. Kept on this PC and in the project file, not on the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min. pulse</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -6476,6 +6684,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>This %1 is for devices of the family &quot;%2&quot;, not &quot;%3&quot;: nothing was loaded. Open it where a device of that family is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>minimum pulse</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

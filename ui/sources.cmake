@@ -103,6 +103,8 @@ target_sources(cambench_ui PRIVATE
   camcon/plc_page.cpp
   camcon/cam_page.h
   camcon/cam_page.cpp
+  camcon/timing_bar.cpp
+  camcon/timing_bar.h
   camcon/compare_dialog.h
   camcon/compare_dialog.cpp
   progress_page.h

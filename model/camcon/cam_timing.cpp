@@ -31,25 +31,25 @@ Edges edgesOf(const OutputDeadTime& deadTime) {
 
 // The programmed length of a cam in positions; a rotary cam with off < on
 // wraps through the cycle's end.
-double lengthOf(const Cam& cam, const AxisGeometry& axis) {
+double lengthOf(const Cam& cam, const Axis& axis) {
     const double length = double(cam.off) - cam.on;
-    return (axis.rotary && length < 0) ? length + double(axis.cycle()) : length;
+    return (axis.rotary && length < 0) ? length + double(axis.span()) : length;
 }
 
-double distance(double from, double to, const AxisGeometry& axis) {
+double distance(double from, double to, const Axis& axis) {
     const double d = to - from;
-    return (axis.rotary && d < 0) ? d + double(axis.cycle()) : d;
+    return (axis.rotary && d < 0) ? d + double(axis.span()) : d;
 }
 
-double wrapped(double position, const AxisGeometry& axis) {
+double wrapped(double position, const Axis& axis) {
     if (!axis.rotary) return position;
-    const double cycle = double(axis.cycle());
-    double offset = std::fmod(position - axis.minPosition, cycle);
+    const double cycle = double(axis.span());
+    double offset = std::fmod(position - axis.min, cycle);
     if (offset < 0) offset += cycle;
-    return axis.minPosition + offset;
+    return axis.min + offset;
 }
 
-QString speedText(double positionsPerSecond, const AxisGeometry& axis) {
+QString speedText(double positionsPerSecond, const Axis& axis) {
     const double speed = fromPositionsPerSecond(positionsPerSecond, axis);
     return QStringLiteral("%1 %2").arg(QString::number(speed, 'f', speed >= 100 ? 0 : 1),
                                        speedUnit(axis));
@@ -57,21 +57,21 @@ QString speedText(double positionsPerSecond, const AxisGeometry& axis) {
 
 }  // namespace
 
-double toPositionsPerSecond(double speed, const AxisGeometry& axis) {
-    return axis.rotary ? speed * double(axis.cycle()) / kSecondsPerMinute : speed;
+double toPositionsPerSecond(double speed, const Axis& axis) {
+    return axis.rotary ? speed * double(axis.span()) / kSecondsPerMinute : speed;
 }
 
-double fromPositionsPerSecond(double positionsPerSecond, const AxisGeometry& axis) {
-    return axis.rotary ? positionsPerSecond * kSecondsPerMinute / double(axis.cycle())
+double fromPositionsPerSecond(double positionsPerSecond, const Axis& axis) {
+    return axis.rotary ? positionsPerSecond * kSecondsPerMinute / double(axis.span())
                        : positionsPerSecond;
 }
 
-QString speedUnit(const AxisGeometry& axis) {
+QString speedUnit(const Axis& axis) {
     return axis.rotary ? QStringLiteral("1/min") : QStringLiteral("pos/s");
 }
 
 OutputTiming timeTrack(const Track& track, const OutputDeadTime& deadTime,
-                       double positionsPerSecond, const AxisGeometry& axis, double minPulseMs) {
+                       double positionsPerSecond, const Axis& axis, double minPulseMs) {
     const double v = std::max(0.0, positionsPerSecond);
     const Edges edges = edgesOf(deadTime);
     OutputTiming timing;
@@ -134,7 +134,7 @@ OutputTiming timeTrack(const Track& track, const OutputDeadTime& deadTime,
     const double longestMs = std::max(edges.onMs, timing.offDeadTimeMs);
     if (axis.rotary && longestMs > 0 && count > 0)
         limits << TimingProblem{TimingProblem::Kind::ShiftOverCycle, 1, 0,
-                                double(axis.cycle()) * kMsPerSecond / longestMs};
+                                double(axis.span()) * kMsPerSecond / longestMs};
 
     for (const TimingProblem& problem : limits) {
         if (problem.fromSpeed <= v && (v > 0 || problem.fromSpeed == 0)) timing.problems << problem;
@@ -149,7 +149,75 @@ OutputTiming timeTrack(const Track& track, const OutputDeadTime& deadTime,
     return timing;
 }
 
-QString describeProblem(int output, const TimingProblem& problem, const AxisGeometry& axis) {
+DeadTimeModes deadTimesAsModes(const DeadTimes& plain, const DeadTimeModes& modes) {
+    if (!modes.isEmpty()) return modes;
+    DeadTimeModes result;
+    for (auto it = plain.cbegin(); it != plain.cend(); ++it)
+        result.insert(it.key(), {DeadTimeMode::Normal, it.value(), 0, 0});
+    return result;
+}
+
+QList<OutputTiming> timeProgram(const CamProgram& program, const DeadTimeModes& deadTimes,
+                                double positionsPerSecond, const Axis& axis,
+                                const MinimumPulses& minimumPulses) {
+    QList<OutputTiming> outputs;
+    for (const Track& track : program.tracks) {
+        if (track.cams.isEmpty()) continue;
+        outputs << timeTrack(track, deadTimes.value(track.output), positionsPerSecond, axis,
+                             minimumPulses.value(track.output) / 10.0);
+    }
+    return outputs;
+}
+
+Result<MinimumPulses> parseMinimumPulses(const QString& text, int outputs) {
+    const auto tenths = [](const QString& ms) -> std::optional<qint32> {
+        bool ok = false;
+        const double value = ms.trimmed().toDouble(&ok);  // C locale: "8.5", never "8,5"
+        if (!ok || value < 0 || value > 1e6) return std::nullopt;
+        return qint32(std::lround(value * 10));
+    };
+    MinimumPulses pulses;
+    std::optional<qint32> everyOutput;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const qsizetype equals = part.indexOf(QLatin1Char('='));
+        if (equals < 0) {
+            // "2=7,5" is a German 7.5, not "every other output 5 ms": the
+            // value for every output comes first or not at all.
+            if (!pulses.isEmpty())
+                return Error::usage(
+                    QStringLiteral("\"%1\" after an output's value: give the value for every "
+                                   "output first (\"5,2=7.5\"), and milliseconds with a decimal "
+                                   "point")
+                        .arg(part.trimmed()));
+            everyOutput = tenths(part);
+            if (!everyOutput)
+                return Error::usage(
+                    QStringLiteral("minimum pulse \"%1\" is not milliseconds (0 or more, with "
+                                   "a decimal point)")
+                        .arg(part.trimmed()));
+            continue;
+        }
+        bool ok = false;
+        const int output = part.left(equals).trimmed().toInt(&ok);
+        if (!ok || output < 1 || output > outputs)
+            return Error::usage(QStringLiteral("\"%1\": the output must be 1 to %2")
+                                    .arg(part.trimmed())
+                                    .arg(outputs));
+        const std::optional<qint32> value = tenths(part.mid(equals + 1));
+        if (!value)
+            return Error::usage(
+                QStringLiteral("\"%1\": the minimum pulse must be milliseconds (0 or more)")
+                    .arg(part.trimmed()));
+        pulses.insert(output, *value);
+    }
+    if (everyOutput) {
+        for (int output = 1; output <= outputs; ++output)
+            if (!pulses.contains(output)) pulses.insert(output, *everyOutput);
+    }
+    return pulses;
+}
+
+QString describeProblem(int output, const TimingProblem& problem, const Axis& axis) {
     const QString where = problem.fromSpeed > 0
                               ? QStringLiteral("above %1").arg(speedText(problem.fromSpeed, axis))
                               : QStringLiteral("at every speed");

@@ -1,7 +1,10 @@
 #pragma once
 
+#include "cam_axis.h"
 #include "cam_program.h"
 #include "dead_time_modes.h"
+#include "dead_times.h"
+#include "model/result.h"
 
 #include <QList>
 #include <QString>
@@ -10,22 +13,12 @@
 
 namespace cambench {
 
-// The axis the cams are on: positions minPosition..maxPosition in
-// actual-value units; a rotary axis runs round (one cycle = every position
-// once), a linear one from its start upwards.
-struct AxisGeometry {
-    qint32 minPosition = 0;
-    qint32 maxPosition = 359;
-    bool rotary = true;
-    qint64 cycle() const { return qint64(maxPosition) - minPosition + 1; }
-};
-
 // Speeds are given as a person reads them: revolutions per minute ("1/min",
 // one revolution = one cycle) on a rotary axis, positions per second
 // ("pos/s") on a linear one. The arithmetic works in positions per second.
-double toPositionsPerSecond(double speed, const AxisGeometry& axis);
-double fromPositionsPerSecond(double positionsPerSecond, const AxisGeometry& axis);
-QString speedUnit(const AxisGeometry& axis);
+double toPositionsPerSecond(double speed, const Axis& axis);
+double fromPositionsPerSecond(double positionsPerSecond, const Axis& axis);
+QString speedUnit(const Axis& axis);
 
 // One cam as it switches electrically at a speed: the output switches each
 // edge early by speed × that edge's dead time, so that the actuator acts at
@@ -72,9 +65,24 @@ struct OutputTiming {
 // §3 names no formula): the switch-on edge moves by the switch-on dead time
 // and the output stays on for the switching time, whatever the off point.
 OutputTiming timeTrack(const Track& track, const OutputDeadTime& deadTime,
-                       double positionsPerSecond, const AxisGeometry& axis, double minPulseMs = 0);
+                       double positionsPerSecond, const Axis& axis, double minPulseMs = 0);
+
+// Each output's dead time as timeTrack takes it: the modes where the device
+// has them (table interface), else every plain dead time as mode Normal.
+DeadTimeModes deadTimesAsModes(const DeadTimes& plain, const DeadTimeModes& modes);
+
+// Every output of `program` that has cams, in output order; `minimumPulses`
+// in 0.1 ms (an output not in it has none).
+QList<OutputTiming> timeProgram(const CamProgram& program, const DeadTimeModes& deadTimes,
+                                double positionsPerSecond, const Axis& axis,
+                                const MinimumPulses& minimumPulses = {});
+
+// The command line's minimum pulses: "12" (every output, ms), "3=12,4=8.5"
+// (those outputs), or both ("5,3=12": output 3 12 ms, every other 5 ms).
+// `outputs` is the highest output number. A decimal point, never a comma.
+Result<MinimumPulses> parseMinimumPulses(const QString& text, int outputs);
 
 // "output 4: cams 2 and 3 merge above 412 1/min".
-QString describeProblem(int output, const TimingProblem& problem, const AxisGeometry& axis);
+QString describeProblem(int output, const TimingProblem& problem, const Axis& axis);
 
 }  // namespace cambench

@@ -9,6 +9,11 @@ namespace cambench {
 // key = output (1-based).
 using DeadTimes = QMap<int, qint32>;
 
+// The shortest time each output must stay on for its actuator to act (a
+// valve's response), in 0.1 ms steps like the dead times. Kept on the PC
+// only (the project file), never on the device. key = output (1-based).
+using MinimumPulses = QMap<int, qint32>;
+
 // Output and program names (22 characters on the device including the NUL,
 // so at most 21 visible characters).
 struct Names {

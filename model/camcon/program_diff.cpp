@@ -118,6 +118,45 @@ ProgramDiff diffPrograms(const CamProgram& a, const CamProgram& b) {
     return diff;
 }
 
+AppliedDifferences applyDifferences(const CamProgram& target, DiffSide side,
+                                    const QList<CamDifference>& selected) {
+    AppliedDifferences applied;
+    QSet<int> failed;
+    const bool onA = side == DiffSide::A;
+    for (const CamDifference& difference : selected) {
+        const int output = difference.output;
+        if (failed.contains(output)) continue;
+        if (!applied.tracks.contains(output)) {
+            Track track = target.tracks.value(output);
+            track.output = output;
+            applied.tracks.insert(output, track);
+        }
+        QList<Cam>& cams = applied.tracks[output].cams;
+        const bool mine = onA ? difference.camA > 0 : difference.camB > 0;
+        const bool theirs = onA ? difference.camB > 0 : difference.camA > 0;
+        const Cam& own = onA ? difference.a : difference.b;
+        const Cam& other = onA ? difference.b : difference.a;
+        if (mine) {
+            const qsizetype at = cams.indexOf(own);
+            if (at < 0) {
+                failed.insert(output);
+                applied.tracks.remove(output);
+                applied.problems << QStringLiteral("output %1: cam %2..%3 is no longer there")
+                                        .arg(output)
+                                        .arg(own.on)
+                                        .arg(own.off);
+                continue;
+            }
+            cams.removeAt(at);
+        }
+        if (theirs) cams.append(other);
+    }
+    for (Track& track : applied.tracks)
+        std::sort(track.cams.begin(), track.cams.end(),
+                  [](const Cam& x, const Cam& y) { return x.on < y.on; });
+    return applied;
+}
+
 QString describeDifference(const CamDifference& difference) {
     switch (difference.kind) {
         case CamDifference::Kind::Changed:

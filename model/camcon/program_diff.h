@@ -3,7 +3,9 @@
 #include "cam_program.h"
 
 #include <QList>
+#include <QMap>
 #include <QString>
+#include <QStringList>
 
 namespace cambench {
 
@@ -41,6 +43,22 @@ struct ProgramDiff {
 };
 
 ProgramDiff diffPrograms(const CamProgram& a, const CamProgram& b);
+
+// Which program of a comparison receives the differences.
+enum class DiffSide { A, B };
+
+// The tracks of `target` (the program on side `side`) with `selected`
+// differences applied towards the other side: a cam only on the other side
+// is added, one only on this side removed, a changed cam takes the other
+// side's extent. Only outputs a difference touches are returned, each
+// whole (key = output); a cam that is not in `target` as the difference
+// says (the program changed since) makes that output fail with a sentence.
+struct AppliedDifferences {
+    QMap<int, Track> tracks;
+    QStringList problems;
+};
+AppliedDifferences applyDifferences(const CamProgram& target, DiffSide side,
+                                    const QList<CamDifference>& selected);
 
 // "output 3, cam 2: 10..20 → 12..20", "output 4: cam 100..120 only in B".
 QString describeDifference(const CamDifference& difference);

@@ -15,6 +15,8 @@
 #include <QJsonArray>
 #include <QSet>
 
+#include <limits>
+
 namespace cambench {
 
 namespace {
@@ -139,6 +141,10 @@ public:
                 m_r.boolean(root, {}, key("eepromLock"),
                             QCoreApplication::translate("cambench::model", "EEPROM lock"));
         }
+        if (root.contains(key("minimumPulses"))) {
+            project.minimumPulses =
+                readMinimumPulses(m_r.array(root, {}, key("minimumPulses")), project.device);
+        }
         if (root.contains(key("readAt")))
             project.readAt = readTimes(m_r.object(root, {}, key("readAt")));
         if (m_r.failed()) return Error::invalidData(m_r.problem() + QLatin1Char('.'));
@@ -215,25 +221,37 @@ private:
     }
 
     DeadTimes readDeadTimes(const QJsonArray& array, const DeviceInfo& device) {
-        DeadTimes deadTimes;
+        return readOutputValues(array, "deadTimes", "deadTime",
+                                QCoreApplication::translate("cambench::model", "dead time"),
+                                device.deadTimeOutputs);
+    }
+
+    MinimumPulses readMinimumPulses(const QJsonArray& array, const DeviceInfo& device) {
+        return readOutputValues(array, "minimumPulses", "minimumPulse",
+                                QCoreApplication::translate("cambench::model", "minimum pulse"),
+                                device.outputs, 0);
+    }
+
+    // [{"output": n, valueKey: v}, ...], each output at most once.
+    QMap<int, qint32> readOutputValues(const QJsonArray& array, const char* member,
+                                       const char* valueKey, const QString& what, int outputs,
+                                       qint64 min = std::numeric_limits<qint32>::min()) {
+        QMap<int, qint32> values;
         for (int i = 0; i < array.size() && !m_r.failed(); ++i) {
-            const QString path = JsonReader::element(key("deadTimes"), i);
+            const QString path = JsonReader::element(key(member), i);
             const QJsonObject object = m_r.objectValue(array.at(i), path);
-            const int output =
-                int(m_r.integer(object, path, key("output"),
-                                QCoreApplication::translate("cambench::model", "output"), 1,
-                                device.deadTimeOutputs));
-            const qint32 value =
-                qint32(m_r.integer(object, path, key("deadTime"),
-                                   QCoreApplication::translate("cambench::model", "dead time")));
-            if (!m_r.failed() && deadTimes.contains(output)) {
+            const int output = int(
+                m_r.integer(object, path, key("output"),
+                            QCoreApplication::translate("cambench::model", "output"), 1, outputs));
+            const qint32 value = qint32(m_r.integer(object, path, key(valueKey), what, min));
+            if (!m_r.failed() && values.contains(output)) {
                 m_r.fail(JsonReader::member(path, key("output")),
                          QCoreApplication::translate("cambench::model", "output %1 appears twice")
                              .arg(output));
             }
-            deadTimes.insert(output, value);
+            values.insert(output, value);
         }
-        return deadTimes;
+        return values;
     }
 
     DeadTimeModes readDeadTimeModes(const QJsonArray& array, const DeviceInfo& device) {
@@ -463,6 +481,9 @@ QByteArray projectToJson(const Project& project, const ProjectSaveOptions& optio
                     programmingProgramToJson(*project.programmingProgram));
     }
     if (project.eepromLock) root.insert(key("eepromLock"), *project.eepromLock);
+    if (!project.minimumPulses.isEmpty())
+        root.insert(key("minimumPulses"),
+                    numberedToJson(project.minimumPulses, "output", "minimumPulse"));
     return toIndentedJson(root);
 }
 

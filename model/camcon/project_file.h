@@ -81,6 +81,8 @@ struct Project {
     // The table interface's EEPROM write lock (true: changes stay in RAM);
     // empty: the project says nothing about it.
     std::optional<bool> eepromLock;
+    // The user's minimum pulse per output for the timing check (PC only).
+    MinimumPulses minimumPulses;
     ProjectReadTimes readAt;
 
     friend bool operator==(const Project& a, const Project& b) {
@@ -88,7 +90,8 @@ struct Project {
                a.names == b.names && a.settings == b.settings && a.users == b.users &&
                a.plcNetworks == b.plcNetworks && a.deadTimeModes == b.deadTimeModes &&
                a.analogueCams == b.analogueCams && a.programmingProgram == b.programmingProgram &&
-               a.eepromLock == b.eepromLock && a.readAt == b.readAt;
+               a.eepromLock == b.eepromLock && a.minimumPulses == b.minimumPulses &&
+               a.readAt == b.readAt;
     }
 };
 

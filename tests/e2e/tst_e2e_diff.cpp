@@ -170,6 +170,21 @@ private Q_SLOTS:
                  QJsonValue(QStringLiteral("shortPulse")));
         QVERIFY(!first.value(QStringLiteral("problems")).toArray().isEmpty());
 
+        // Per output: output 1's own minimum pulse; a German decimal comma
+        // is refused with the reason.
+        const CliRun perOutput = runCli({"timing", "--project", project, "--program", "0",
+                                         "--speed", "3000", "--min-pulse", "1=20", "--json"});
+        VERIFY_EXIT(perOutput, 0);
+        const QJsonArray timed =
+            QJsonDocument::fromJson(perOutput.out.toUtf8()).object().value("outputs").toArray();
+        QCOMPARE(timed.at(0).toObject().value(QStringLiteral("minPulseMs")).toDouble(), 20.0);
+        for (int i = 1; i < timed.size(); ++i)
+            QVERIFY(!timed.at(i).toObject().contains(QStringLiteral("minPulseMs")));
+        const CliRun comma = runCli({"timing", "--project", project, "--program", "0", "--speed",
+                                     "3000", "--min-pulse", "1=7,5"});
+        VERIFY_EXIT(comma, 2);
+        QVERIFY2(comma.err.contains(QStringLiteral("decimal point")), qPrintable(comma.err));
+
         const CliRun bad = runCli({"timing", "--program", "0", "--speed", "fast"});
         VERIFY_EXIT(bad, 2);
     }

@@ -8,8 +8,8 @@ using namespace cambench;
 
 namespace {
 
-const AxisGeometry kRotary{0, 359, true};
-const AxisGeometry kLinear{0, 9999, false};
+const Axis kRotary{0, 359, true};
+const Axis kLinear{0, 9999, false};
 
 Track track(int output, const QList<Cam>& cams) {
     return {output, cams};
@@ -125,6 +125,45 @@ private Q_SLOTS:
         QCOMPARE(describeProblem(7, t.problems.first(), kRotary),
                  QStringLiteral("output 7: cam 1 is on for less than the minimum pulse at every "
                                 "speed"));
+    }
+
+    void programWithDeadTimesAndMinimumPulsesPerOutput() {
+        // Plain dead times stand in as mode Normal; modes, where there are
+        // any, are the device's whole answer.
+        const DeadTimeModes plain = deadTimesAsModes({{1, 100}, {2, 0}}, {});
+        QCOMPARE(plain.value(1), normal(100));
+        const DeadTimeModes modes{{1, separate(10, 20)}};
+        QCOMPARE(deadTimesAsModes({{1, 100}}, modes), modes);
+
+        CamProgram program;
+        program.tracks[1] = track(1, {{0, 90}});
+        program.tracks[2] = track(2, {{0, 90}});
+        program.tracks[3] = track(3, {});  // no cams: not timed
+        // 2000 pos/s: 90 positions last 45 ms; only output 2 needs 50 ms.
+        const QList<OutputTiming> timed = timeProgram(program, plain, 2000, kRotary, {{2, 500}});
+        QCOMPARE(timed.size(), 2);
+        QCOMPARE(timed[0].output, 1);
+        QVERIFY(timed[0].problems.isEmpty());
+        QCOMPARE(timed[1].problems.size(), 1);
+        QCOMPARE(timed[1].problems.first().kind, TimingProblem::Kind::ShortPulse);
+    }
+
+    void minimumPulsesFromTheCommandLine() {
+        QCOMPARE(*parseMinimumPulses(QStringLiteral("12"), 3),
+                 (MinimumPulses{{1, 120}, {2, 120}, {3, 120}}));
+        QCOMPARE(*parseMinimumPulses(QStringLiteral("3=12,1=8.5"), 4),
+                 (MinimumPulses{{1, 85}, {3, 120}}));
+        // Every output 5 ms, output 2 its own.
+        QCOMPARE(*parseMinimumPulses(QStringLiteral("5, 2=20"), 3),
+                 (MinimumPulses{{1, 50}, {2, 200}, {3, 50}}));
+        QVERIFY(!parseMinimumPulses(QStringLiteral("8,5=2"), 4));  // output 5 of 4
+        QVERIFY(!parseMinimumPulses(QStringLiteral("2=fast"), 4));
+        QVERIFY(!parseMinimumPulses(QStringLiteral("-1"), 4));
+        // A German decimal comma is refused, not read as "every output 5 ms".
+        const auto comma = parseMinimumPulses(QStringLiteral("2=7,5"), 4);
+        QVERIFY(!comma);
+        QVERIFY2(comma.error().message.contains(QStringLiteral("decimal point")),
+                 qPrintable(comma.error().message));
     }
 
     void standstillHasNoDuration() {

@@ -77,6 +77,32 @@ private Q_SLOTS:
         QCOMPARE(diffPrograms(a, d).cams.size(), 2);
     }
 
+    void checkedDifferencesApplyToEitherSide() {
+        const CamProgram a = program({{1, {{10, 20}, {50, 60}}}, {2, {{100, 120}}}});
+        const CamProgram b = program({{1, {{12, 20}, {50, 60}, {200, 220}}}, {3, {{5, 9}}}});
+        const ProgramDiff diff = diffPrograms(a, b);
+        QCOMPARE(diff.cams.size(), 4);  // 1 changed, 1: 200..220 in B, 2: in A, 3: in B
+
+        // B made like A in everything: B's tracks become A's.
+        const AppliedDifferences all = applyDifferences(b, DiffSide::B, diff.cams);
+        QVERIFY(all.problems.isEmpty());
+        QCOMPARE(all.tracks.value(1).cams, a.tracks.value(1).cams);
+        QCOMPARE(all.tracks.value(2).cams, a.tracks.value(2).cams);
+        QVERIFY(all.tracks.value(3).cams.isEmpty());  // removed: written empty
+        QCOMPARE(all.tracks.value(3).output, 3);
+
+        // Only the changed cam, onto A: output 1 only, its other cam kept.
+        const AppliedDifferences one = applyDifferences(a, DiffSide::A, {diff.cams.first()});
+        QCOMPARE(one.tracks.keys(), QList<int>{1});
+        QCOMPARE(one.tracks.value(1).cams, (QList<Cam>{{12, 20}, {50, 60}}));
+
+        // A program that no longer holds the cam: that output is refused.
+        const CamProgram moved = program({{1, {{30, 40}}}});
+        const AppliedDifferences stale = applyDifferences(moved, DiffSide::A, {diff.cams.first()});
+        QVERIFY(stale.tracks.isEmpty());
+        QCOMPARE(stale.problems.size(), 1);
+    }
+
     void namesDiffer() {
         const ProgramDiff diff = diffPrograms(program({}, QStringLiteral("Standard")),
                                               program({}, QStringLiteral("Fast")));

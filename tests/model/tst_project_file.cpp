@@ -154,6 +154,26 @@ private Q_SLOTS:
                  qPrintable(refused.error().message));
     }
 
+    // Issue 17: the user's minimum pulses (PC only) ride in the project;
+    // a negative one or an output the device lacks is refused by path.
+    void minimumPulsesRoundTrip() {
+        Project project = sampleProject();
+        project.minimumPulses = {{1, 125}, {project.device.outputs, 5}};
+        const QByteArray json = projectToJson(project);
+        QVERIFY(json.contains("minimumPulses"));
+        const Result<Project> loaded = projectFromJson(json);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
+        QCOMPARE(loaded->minimumPulses, project.minimumPulses);
+        QVERIFY(!projectToJson(sampleProject()).contains("minimumPulses"));
+
+        QByteArray negative = json;
+        negative.replace("\"minimumPulse\": 125", "\"minimumPulse\": -3");
+        const Result<Project> refused = projectFromJson(negative);
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.contains(QLatin1String("minimumPulses[0]")),
+                 qPrintable(refused.error().message));
+    }
+
     void otherTableSectionsRoundTrip() {
         Project project = sampleProject();
         project.analogueCams = {AnalogueCamTrack{2, {{0, 100}, {90, -2000}}},

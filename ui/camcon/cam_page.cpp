@@ -2,6 +2,7 @@
 
 #include "cam_text.h"
 #include "device_reads.h"
+#include "timing_bar.h"
 #include "ui/device_session.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
@@ -24,7 +25,9 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     : CamConSectionPage(parent),
       m_session(session),
       m_workspace(workspace),
-      m_editor(new CamEditorWidget(workspace->cams())) {
+      m_editor(new CamEditorWidget(workspace->cams())),
+      m_timing(new TimingBar(workspace, m_editor)) {
+    m_editor->addDiagramBar(m_timing);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_editor);
@@ -58,10 +61,13 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
 void CamPage::showStatus(const DeviceStatus& status) {
     m_editor->diagram()->setLivePosition(status.position);
     m_editor->diagram()->setOutputStates(status.outputs);
+    // ?BSPEED read as positions per second (provisional, PROTOCOL-NOTES §3).
+    m_timing->setLiveSpeed(double(status.speed));
 }
 
 void CamPage::clearLive() {
     m_editor->diagram()->clearLive();
+    m_timing->setLiveSpeed(std::nullopt);
 }
 
 void CamPage::readProgram(int program, std::function<void(const Status&)> done) {

@@ -8,6 +8,7 @@
 namespace cambench {
 
 class CamEditorWidget;
+class TimingBar;
 class DeviceSession;
 class Workspace;
 
@@ -23,6 +24,7 @@ public:
     QList<SectionDifference> differences() const override;
 
     CamEditorWidget* editor() const { return m_editor; }
+    TimingBar* timingBar() const { return m_timing; }
 
     void readProgram(int program, std::function<void(const Status&)> done = {});
     // Writes what differs in `program` (a program never read: all of it).
@@ -34,6 +36,7 @@ private:
     DeviceSession* m_session;
     Workspace* m_workspace;
     CamEditorWidget* m_editor;
+    TimingBar* m_timing;
 };
 
 }  // namespace cambench

@@ -5,13 +5,16 @@
 #include "backup_wizard.h"
 #include "cam_page.h"
 #include "compare_dialog.h"
+#include "compare_programs_dialog.h"
 #include "monitor_page.h"
 #include "plc_page.h"
 #include "terminal_page.h"
+#include "timing_bar.h"
 #include "users_page.h"
 #include "workspace.h"
 
 #include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
 #include "ui/progress_page.h"
@@ -115,6 +118,32 @@ QList<TourStop> CamConWindow::tourStops(const QString& directory) {
              m_terminal->send(QStringLiteral("?AMAX"));
          },
          [this] { return m_terminal->logText().count(QLatin1Char('\n')) >= 6; },
+         {}},
+        {QStringLiteral("11-compare-programs"),
+         [this, dialog] {
+             // The moved cam of stop 08, drawn over what the device holds.
+             CompareProgramsDialog* compare = openComparePrograms();
+             *dialog = compare;
+             compare->setSide(0, CompareProgramsDialog::Source::Device, 0);
+             compare->setSide(1, CompareProgramsDialog::Source::Edited, 0);
+             compare->compare();
+         },
+         [dialog] {
+             auto* compare = qobject_cast<CompareProgramsDialog*>(dialog->data());
+             return compare && !compare->isReading() && !compare->differenceTexts().isEmpty();
+         },
+         shown},
+        {QStringLiteral("12-timing-at-speed"),
+         [this, ws, closeDialog] {
+             closeDialog();
+             showSection(Cams);
+             // The knife's valve needs 40 ms: at 300 1/min its cam is shorter.
+             ws->cams()->setMinimumPulse(2, 400);
+             m_cams->editor()->setCurrentProgram(0);
+             m_cams->timingBar()->setSpeed(300);
+             m_cams->timingBar()->setTimingShown(true);
+         },
+         [this] { return !m_cams->timingBar()->timing().isEmpty(); },
          {}},
     };
 }

@@ -3,6 +3,8 @@
 #include "model/result.h"
 #include "ui/family_gui.h"
 
+#include <optional>
+
 class QMenu;
 
 namespace cambench {
@@ -89,7 +91,8 @@ public:
     bool isReadingDevice() const { return m_readJob != 0 || m_startReads > 0; }
     // Opens a project file (asks first when it would replace edits).
     void openProjectFile(const QString& path);
-    Status exportReport(const QString& path);
+    // `timingSpeed` (axis unit): each program with a table of its timing.
+    Status exportReport(const QString& path, std::optional<double> timingSpeed = {});
     QMenu* recentFilesMenu() const { return m_recentMenu; }
 
 Q_SIGNALS:

@@ -1,14 +1,17 @@
 // The CamCon's entries of the File menu: its project file (the family's
 // file kind), the recent projects and the commissioning report.
 
+#include "cam_page.h"
 #include "camcon_window.h"
 
 #include "commissioning_report.h"
 #include "incoming_values.h"
 #include "new_project_dialog.h"
 #include "project_io.h"
+#include "timing_bar.h"
 #include "workspace.h"
 
+#include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/device_session.h"
 #include "ui/gui_settings.h"
@@ -18,6 +21,7 @@
 #include <QAction>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 
@@ -145,15 +149,26 @@ Status CamConWindow::saveProjectTo(const QString& path) {
     return saved;
 }
 
-Status CamConWindow::exportReport(const QString& path) {
-    return CommissioningReport::write(path, *m_workspace);
+Status CamConWindow::exportReport(const QString& path, std::optional<double> timingSpeed) {
+    return CommissioningReport::write(path, *m_workspace, {timingSpeed});
 }
 
 void CamConWindow::exportReportInteractive() {
+    // The timing tables at a speed the user gives: the cam page's when its
+    // timing view is on; 0 leaves them out.
+    const TimingBar* timing = m_cams->timingBar();
+    bool ok = false;
+    const double speed =
+        QInputDialog::getDouble(window(), tr("Commissioning report"),
+                                tr("Timing tables at the speed (%1); 0 leaves them out:")
+                                    .arg(speedUnit(m_workspace->cams()->axis())),
+                                timing->timingShown() ? timing->speed() : 0.0, 0, 1e7, 1, &ok);
+    if (!ok) return;
     const QString path = QFileDialog::getSaveFileName(window(), tr("Commissioning report"),
                                                       QString(), tr("PDF files (*.pdf)"));
     if (path.isEmpty()) return;
-    const Status written = exportReport(path);
+    const Status written =
+        exportReport(path, speed > 0 ? std::optional<double>(speed) : std::nullopt);
     if (!written) {
         QMessageBox::warning(window(), tr("Commissioning report"), written.error().message);
     } else {

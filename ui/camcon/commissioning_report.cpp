@@ -14,6 +14,7 @@
 
 #include "comm/camcon/usecases/value_text.h"
 #include "ui/camcon/cameditor/cam_document.h"
+#include "ui/camcon/cameditor/timing_text.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -71,8 +72,12 @@ QString marked(const QString& edited, bool changed, const QString& device) {
 
 class Builder {
 public:
-    Builder(QTextDocument& document, const Workspace& workspace)
-        : m_document(document), m_workspace(workspace), m_cams(*workspace.cams()) {}
+    Builder(QTextDocument& document, const Workspace& workspace,
+            const CommissioningReport::Options& options)
+        : m_document(document),
+          m_workspace(workspace),
+          m_cams(*workspace.cams()),
+          m_options(options) {}
 
     QString build() {
         QString html = title();
@@ -329,7 +334,52 @@ private:
             rows += row({QString::number(output),
                          marked(camsText(track), changed, device ? camsText(*device) : QString())});
         }
-        return html + table(rows);
+        return html + table(rows) + timing(program);
+    }
+
+    // Where the outputs switch at the speed asked for, as the cam page's
+    // timing view draws it (model/camcon/cam_timing.h).
+    QString timing(const CamProgram& program) const {
+        if (!m_options.timingSpeed) return {};
+        const Axis axis = m_cams.axis();
+        const double v = toPositionsPerSecond(*m_options.timingSpeed, axis);
+        const QList<OutputTiming> outputs =
+            timeProgram(program, deadTimesAsModes(m_cams.deadTimes(), m_workspace.deadTimeModes()),
+                        v, axis, m_cams.minimumPulses());
+        QString rows = headerRow(
+            {CommissioningReport::tr("Output"), CommissioningReport::tr("Dead time on / off"),
+             CommissioningReport::tr("Shift on / off"), CommissioningReport::tr("Shortest cam"),
+             CommissioningReport::tr("Minimum pulse"), CommissioningReport::tr("Limit")});
+        QStringList warnings;
+        const QLocale locale;
+        for (const OutputTiming& t : outputs) {
+            const qint32 pulse = m_cams.minimumPulses().value(t.output);
+            rows += row(
+                {QString::number(t.output),
+                 QStringLiteral("%1 / %2").arg(durationText(t.onDeadTimeMs),
+                                               durationText(t.offDeadTimeMs)),
+                 CommissioningReport::tr("%1 / %2 positions")
+                     .arg(locale.toString(t.shiftOn, 'f', 1), locale.toString(t.shiftOff, 'f', 1)),
+                 t.shortestDurationMs ? durationText(*t.shortestDurationMs)
+                                      : CommissioningReport::tr("standing still"),
+                 pulse > 0 ? durationText(pulse / 10.0) : QStringLiteral("—"),
+                 t.firstLimit ? timingProblemText(t.output, *t.firstLimit, axis)
+                              : CommissioningReport::tr("none")});
+            for (const TimingProblem& problem : t.problems)
+                warnings << timingProblemText(t.output, problem, axis);
+        }
+        QString html = QStringLiteral("<h3>%1</h3>")
+                           .arg(CommissioningReport::tr("Timing at %1")
+                                    .arg(speedText(v, axis))
+                                    .toHtmlEscaped());
+        html += paragraph(CommissioningReport::tr(
+            "Each edge switches early by speed × its dead time, so that the actuator acts at the "
+            "programmed position. Dead times as in this report (edits included)."));
+        html += table(rows);
+        if (!warnings.isEmpty())
+            html += paragraph(CommissioningReport::tr("Warnings at this speed: %1")
+                                  .arg(warnings.join(QLatin1Char(' '))));
+        return html;
     }
 
     QString users() const {
@@ -386,17 +436,20 @@ private:
     QTextDocument& m_document;
     const Workspace& m_workspace;
     const CamDocument& m_cams;
+    CommissioningReport::Options m_options;
 };
 
 }  // namespace
 
-void CommissioningReport::build(QTextDocument& document, const Workspace& workspace) {
-    document.setHtml(Builder(document, workspace).build());
+void CommissioningReport::build(QTextDocument& document, const Workspace& workspace,
+                                const Options& options) {
+    document.setHtml(Builder(document, workspace, options).build());
 }
 
-Status CommissioningReport::write(const QString& path, const Workspace& workspace) {
+Status CommissioningReport::write(const QString& path, const Workspace& workspace,
+                                  const Options& options) {
     QTextDocument document;
-    build(document, workspace);
+    build(document, workspace, options);
     // QPdfWriter writes straight into its target: render into a QSaveFile.
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))

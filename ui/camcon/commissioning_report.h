@@ -5,6 +5,8 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <optional>
+
 class QTextDocument;
 
 namespace cambench {
@@ -17,8 +19,15 @@ class Workspace;
 class CommissioningReport {
     Q_DECLARE_TR_FUNCTIONS(cambench::CommissioningReport)
 public:
-    static void build(QTextDocument& document, const Workspace& workspace);
-    static Status write(const QString& path, const Workspace& workspace);
+    struct Options {
+        // With a speed (in the axis unit: 1/min rotary, pos/s linear), each
+        // program gets a table of where its outputs switch at that speed.
+        std::optional<double> timingSpeed;
+    };
+    static void build(QTextDocument& document, const Workspace& workspace,
+                      const Options& options = {});
+    static Status write(const QString& path, const Workspace& workspace,
+                        const Options& options = {});
 };
 
 }  // namespace cambench

@@ -1,6 +1,7 @@
 #include "compare_programs_dialog.h"
 
 #include "camcon_jobs.h"
+#include "device_writer.h"
 #include "program_diff_view.h"
 #include "workspace.h"
 
@@ -8,6 +9,7 @@
 #include "model/camcon/program_diff.h"
 #include "model/camcon/project_file.h"
 #include "ui/camcon/cameditor/cam_document.h"
+#include "ui/device_session.h"
 #include "ui/sentence.h"
 
 #include <QCheckBox>
@@ -20,9 +22,11 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPainter>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -58,6 +62,7 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
       m_session(session),
       m_workspace(workspace),
       m_compare(new QPushButton(tr("Compare"))),
+      m_apply(new QPushButton(tr("Write checked to the device…"))),
       m_fold(new QCheckBox(tr("Hide outputs without a difference"))),
       m_summary(new QLabel),
       m_view(new ProgramDiffView),
@@ -100,6 +105,11 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
     actions->addWidget(m_compare);
     actions->addWidget(m_fold);
     actions->addStretch();
+    m_apply->setObjectName(QStringLiteral("applyDifferences"));
+    m_apply->setToolTip(
+        tr("Writes the checked differences to the device side's program: its outputs as the "
+           "device held them, with those differences made like the other side."));
+    actions->addWidget(m_apply);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
@@ -113,6 +123,10 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
     resize(1100, 640);
 
     connect(m_compare, &QPushButton::clicked, this, &CompareProgramsDialog::compare);
+    connect(m_apply, &QPushButton::clicked, this, &CompareProgramsDialog::applyChecked);
+    connect(m_list, &QListWidget::itemChanged, this, &CompareProgramsDialog::updateApply);
+    connect(m_session, &DeviceSession::stateChanged, this, &CompareProgramsDialog::updateApply);
+    updateApply();
     connect(m_fold, &QCheckBox::toggled, m_view, &ProgramDiffView::setFoldUnchanged);
     connect(m_list, &QListWidget::currentRowChanged, m_view, &ProgramDiffView::setSelected);
     connect(m_view, &ProgramDiffView::differenceClicked, m_list,
@@ -184,7 +198,8 @@ void CompareProgramsDialog::load(int side, std::function<void(Result<Loaded>)> d
                                       .arg(number)));
                 return;
             }
-            done(Loaded{cams->program(number), tr("edited on this PC, program %1").arg(number)});
+            done(Loaded{
+                cams->program(number), tr("edited on this PC, program %1").arg(number), false, {}});
             return;
         }
         case Source::Device: {
@@ -203,6 +218,13 @@ void CompareProgramsDialog::load(int side, std::function<void(Result<Loaded>)> d
                     if (!read) return read.error();
                     CamProgram program = std::move(read).value();
                     program.number = number;
+                    // With its name, so that the program is the device's whole
+                    // (the write of checked differences makes it the PC's copy).
+                    if (device.has(comm::CamConCapability::OutputNames)) {
+                        const Result<QString> name = device.readProgramName(number);
+                        if (!name) return name.error();
+                        program.name = *name;
+                    }
                     return program;
                 },
                 [this, number, done](Result<CamProgram> program) {
@@ -211,10 +233,11 @@ void CompareProgramsDialog::load(int side, std::function<void(Result<Loaded>)> d
                         done(program.error());
                         return;
                     }
-                    done(Loaded{*program, tr("the device, program %1, read at %2")
-                                              .arg(number)
-                                              .arg(QTime::currentTime().toString(
-                                                  QStringLiteral("HH:mm:ss")))});
+                    done(Loaded{*program,
+                                tr("the device, program %1, read at %2")
+                                    .arg(number)
+                                    .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))),
+                                true, QDateTime::currentDateTimeUtc()});
                 });
             return;
         }
@@ -230,9 +253,10 @@ void CompareProgramsDialog::load(int side, std::function<void(Result<Loaded>)> d
             }
             for (const CamProgram& program : project->programs) {
                 if (program.number == number) {
-                    done(
-                        Loaded{program,
-                               tr("%1, program %2").arg(QFileInfo(w.file).fileName()).arg(number)});
+                    done(Loaded{program,
+                                tr("%1, program %2").arg(QFileInfo(w.file).fileName()).arg(number),
+                                false,
+                                {}});
                     return;
                 }
             }
@@ -252,7 +276,7 @@ void CompareProgramsDialog::load(int side, std::function<void(Result<Loaded>)> d
             }
             CamProgram program;
             program.tracks = *tracks;
-            done(Loaded{program, QFileInfo(w.file).fileName()});
+            done(Loaded{program, QFileInfo(w.file).fileName(), false, {}});
             return;
         }
     }
@@ -264,7 +288,15 @@ void CompareProgramsDialog::compare() {
     m_compare->setEnabled(false);
     m_results[0].reset();
     m_results[1].reset();
-    m_summary->setText(tr("Reading…"));
+    m_diff = {};
+    m_deviceSide = -1;
+    // What was compared before is not shown as if it were still so.
+    m_list->clear();
+    m_view->setComparison({}, {}, {}, m_workspace->cams()->axis(), {});
+    updateApply();
+    m_summary->setText(m_pendingNote.isEmpty()
+                           ? tr("Reading…")
+                           : tr("%1 Reading both sides again…").arg(asSentence(m_pendingNote)));
     // Each side as it arrives; the comparison once both are there.
     for (int side = 0; side < 2; ++side) {
         load(side, [this, side, generation](Result<Loaded> loaded) {
@@ -283,7 +315,9 @@ void CompareProgramsDialog::compare() {
 
 void CompareProgramsDialog::fail(const QString& message) {
     m_compare->setEnabled(true);
-    m_summary->setText(message);
+    m_summary->setText(
+        m_pendingNote.isEmpty() ? message : asSentence(m_pendingNote) + QLatin1Char(' ') + message);
+    m_pendingNote.clear();
     m_list->clear();
     m_view->setComparison({}, {}, {}, m_workspace->cams()->axis(), {});
     Q_EMIT compared(false);
@@ -301,11 +335,129 @@ void CompareProgramsDialog::showComparison(const Loaded& a, const Loaded& b) {
     for (int output = 1; output <= m_workspace->info().outputs; ++output)
         names.insert(output, m_workspace->cams()->outputName(output));
     m_view->setComparison(left, right, diff, m_workspace->cams()->axis(), names);
-    m_list->clear();
-    for (const CamDifference& difference : diff.cams) m_list->addItem(differenceText(difference));
-    m_summary->setText(tr("A: %1. B: %2. %n difference(s).", nullptr, int(diff.cams.size()))
-                           .arg(a.label, b.label));
+    m_diff = diff;
+    // Only a comparison with the device on exactly one side can be applied.
+    m_deviceSide = a.fromDevice == b.fromDevice ? -1 : (a.fromDevice ? 0 : 1);
+    {
+        const QSignalBlocker blocker(m_list);
+        m_list->clear();
+        for (const CamDifference& difference : diff.cams) {
+            auto* item = new QListWidgetItem(differenceText(difference), m_list);
+            if (m_deviceSide >= 0) {
+                item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+                item->setCheckState(Qt::Unchecked);
+            }
+        }
+    }
+    updateApply();
+    QString summary =
+        tr("A: %1. B: %2. %n difference(s).", nullptr, int(diff.cams.size())).arg(a.label, b.label);
+    // After a write, what it did stays said above what the device holds now.
+    if (!m_pendingNote.isEmpty()) summary = asSentence(m_pendingNote) + QLatin1Char(' ') + summary;
+    m_pendingNote.clear();
+    m_summary->setText(summary);
     Q_EMIT compared(true);
+}
+
+void CompareProgramsDialog::setChecked(int row, bool checked) {
+    if (QListWidgetItem* item = m_list->item(row))
+        item->setCheckState(checked ? Qt::Checked : Qt::Unchecked);
+}
+
+QList<CamDifference> CompareProgramsDialog::checkedDifferences() const {
+    QList<CamDifference> checked;
+    for (int row = 0; row < m_list->count() && row < m_diff.cams.size(); ++row) {
+        if (m_list->item(row)->checkState() == Qt::Checked) checked << m_diff.cams.at(row);
+    }
+    return checked;
+}
+
+bool CompareProgramsDialog::canApply() const {
+    return m_deviceSide >= 0 && m_applying == 0 && m_reading == 0 && m_session->isOnline() &&
+           !checkedDifferences().isEmpty();
+}
+
+void CompareProgramsDialog::updateApply() {
+    m_apply->setVisible(m_deviceSide >= 0);
+    m_apply->setEnabled(canApply());
+}
+
+void CompareProgramsDialog::applyChecked() {
+    if (!canApply()) return;
+    const int side = m_deviceSide;
+    const QString sideName = side == 0 ? QStringLiteral("A") : QStringLiteral("B");
+    const CamProgram device = m_results[side]->program;
+    const int number = device.number;
+    const QList<CamDifference> checked = checkedDifferences();
+    const AppliedDifferences changes =
+        applyDifferences(device, side == 0 ? DiffSide::A : DiffSide::B, checked);
+    if (!changes.problems.isEmpty() || changes.tracks.isEmpty()) {
+        m_applyResult = tr("Nothing written: %1").arg(changes.problems.join(QStringLiteral("; ")));
+        m_summary->setText(m_applyResult);
+        return;
+    }
+
+    // Say exactly what will be written, and what of this PC's it replaces.
+    CamDocument* cams = m_workspace->cams();
+    QStringList outputs;
+    QStringList replacedEdits;
+    for (auto it = changes.tracks.cbegin(); it != changes.tracks.cend(); ++it) {
+        const int count =
+            int(std::count_if(checked.cbegin(), checked.cend(),
+                              [&](const CamDifference& d) { return d.output == it.key(); }));
+        outputs << tr("output %1 (%n difference(s))", nullptr, count).arg(it.key());
+        const Track mine = cams->track(number, it.key());
+        if (cams->trackState(number, it.key()) != ChangeState::Unchanged &&
+            mine.cams != device.tracks.value(it.key()).cams && mine.cams != it->cams)
+            replacedEdits << QString::number(it.key());
+    }
+    QString text = tr("Write to the device, program %1: %2?")
+                       .arg(number)
+                       .arg(outputs.join(QStringLiteral(", ")));
+    QString details =
+        tr("Each output is written whole: as read from the device (%1), with the checked "
+           "differences made like the other side. Cam outputs switch as soon as the device "
+           "takes them.")
+            .arg(m_results[side]->label);
+    if (!replacedEdits.isEmpty())
+        details += QLatin1String("\n\n") +
+                   tr("Output(s) %1 of program %2 hold edits on this PC that are not on the "
+                      "device: they are replaced by what is written (Edit → Undo brings them "
+                      "back).")
+                       .arg(replacedEdits.join(QStringLiteral(", ")))
+                       .arg(number);
+    QMessageBox box(QMessageBox::Question, tr("Write checked differences"), text,
+                    QMessageBox::Cancel, this);
+    box.setInformativeText(details);
+    QPushButton* write = box.addButton(tr("Write to device"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() != write) return;
+
+    // The workspace learns the device's program as just read, takes the
+    // new tracks as edits (one undo step), and the one write path writes
+    // those outputs with its checks and per-item report.
+    cams->setDeviceProgram(device);
+    m_workspace->setProgramReadTime(number, m_results[side]->readAt);
+    QMap<int, Track> tracks = cams->program(number).tracks;
+    QList<WorkspaceItem> items;
+    for (auto it = changes.tracks.cbegin(); it != changes.tracks.cend(); ++it) {
+        tracks.insert(it.key(), *it);
+        items << WorkspaceItem::track(number, it.key());
+    }
+    cams->replaceTracks(number, tracks, tr("Apply differences from Compare programs"));
+    ++m_applying;
+    updateApply();
+    m_summary->setText(tr("Writing program %1…").arg(number));
+    writeToDevice(this, m_session, m_workspace, items, [this, number](const WriteResult& result) {
+        --m_applying;
+        m_applyResult = tr("Program %1: %2").arg(number).arg(writeSummary(result));
+        presentWriteResult(this, tr("Write checked differences"), result);
+        Q_EMIT applied(result && result->complete());
+        // Read again: the list shows what the device holds now.
+        m_pendingNote = m_applyResult;
+        compare();
+    });
 }
 
 QString CompareProgramsDialog::differenceText(const CamDifference& difference) {

@@ -47,8 +47,19 @@ public:
     // One line of the list, in the user's language.
     static QString differenceText(const CamDifference& difference);
 
+    // Applying: every row has a check box; with the device on one side,
+    // the checked differences are written to it (the device's program as
+    // read, with them applied, through the one write path), after a
+    // confirmation that names what is written. Then both sides are read
+    // again, so the list shows what the device holds now.
+    void setChecked(int row, bool checked);
+    bool canApply() const;
+    void applyChecked();
+    QString lastApplyResult() const { return m_applyResult; }
+
 Q_SIGNALS:
     void compared(bool ok);
+    void applied(bool complete);
 
 private:
     struct SideWidgets {
@@ -61,6 +72,8 @@ private:
     struct Loaded {
         CamProgram program;
         QString label;
+        bool fromDevice = false;
+        QDateTime readAt;  // UTC, when read from the device
     };
     void buildSide(int side, QWidget* box);
     void updateSide(int side);
@@ -68,11 +81,14 @@ private:
     void load(int side, std::function<void(Result<Loaded>)> done);
     void showComparison(const Loaded& a, const Loaded& b);
     void fail(const QString& message);
+    void updateApply();
+    QList<CamDifference> checkedDifferences() const;
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     SideWidgets m_sides[2];
     QPushButton* m_compare;
+    QPushButton* m_apply;
     QCheckBox* m_fold;
     QLabel* m_summary;
     ProgramDiffView* m_view;
@@ -80,6 +96,11 @@ private:
     int m_reading = 0;
     int m_generation = 0;  // of the comparison running
     std::optional<Loaded> m_results[2];
+    ProgramDiff m_diff;     // of the comparison shown
+    int m_deviceSide = -1;  // the side read from the device in it, -1 none
+    int m_applying = 0;
+    QString m_applyResult;
+    QString m_pendingNote;  // said with the next comparison (the write before it)
 };
 
 }  // namespace cambench

@@ -85,25 +85,13 @@ QVariant DeadTimesModel::deadTimeData(int output, int role) const {
     switch (role) {
         case Qt::DisplayRole:
             return (changed ? changedMarker() : QString()) + tr("%1 ms").arg(milliseconds(tenths));
-        case Qt::EditRole:
-            return tenths / 10.0;
         case Qt::FontRole:
             return changed ? QVariant(changedFont()) : QVariant();
         case Qt::ToolTipRole:
             return changed ? tr("Edited, not yet written to the device.")
                            : tr("Same as on the device.");
-        case Qt::TextAlignmentRole:
-            return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
-        case MinimumRole:
-            return 0.0;
-        case MaximumRole:
-            return m_workspace->info().maxDeadTime / 10.0;
-        case DecimalsRole:
-            return 1;
-        case SuffixRole:
-            return tr(" ms");
         default:
-            return {};
+            return millisecondsEditData(tenths, m_workspace->info().maxDeadTime / 10.0, role);
     }
 }
 

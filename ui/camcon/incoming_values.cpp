@@ -94,6 +94,8 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
         const QDateTime time = read.programs.value(program.number);
         if (fromDevice && time.isValid()) workspace.setProgramReadTime(program.number, time);
     }
+    // A project's minimum pulses are the PC's own notes: they come with the file.
+    if (source == ValueSource::File) workspace.cams()->setMinimumPulses(incoming.minimumPulses);
     if (parts.outputSettings) {
         workspace.mergeOutputSettings(incoming.names.outputs, incoming.deadTimes, source,
                                       keepEdits.contains(EditSection::OutputSettings));

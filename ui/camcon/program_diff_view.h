@@ -1,7 +1,7 @@
 #pragma once
 
+#include "model/camcon/cam_axis.h"
 #include "model/camcon/program_diff.h"
-#include "ui/camcon/cameditor/cam_geometry.h"
 
 #include <QMap>
 #include <QWidget>

@@ -22,6 +22,7 @@ Project projectFromWorkspace(const Workspace& workspace) {
             project.readAt.programs.insert(number, read.programs.value(number));
     }
     project.deadTimes = cams->deadTimes();
+    project.minimumPulses = cams->minimumPulses();
     project.names.outputs = cams->names().outputs;
     if (workspace.outputSettingsEditCount() == 0) {
         for (ProjectPart part : {ProjectPart::DeadTimes, ProjectPart::OutputNames}) {

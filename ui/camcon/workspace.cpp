@@ -32,6 +32,12 @@ Workspace::Workspace(QObject* parent)
       m_tableSections(new TableSectionCopies(this)) {
     m_cams->setLimits(m_info, true);
     connect(m_cams, &CamDocument::changedCountChanged, this, &Workspace::notifyChanged);
+    // The editor draws and checks cams on the axis the settings describe:
+    // a linear axis has no wrapping cams.
+    connect(this, &Workspace::settingsChanged, this, [this] {
+        if (m_cams->isRotary() != isRotaryAxis(m_settings))
+            m_cams->setLimits(m_info, isRotaryAxis(m_settings));
+    });
     connect(m_tableSections, &TableSectionCopies::changed, this, &Workspace::notifyChanged);
 }
 
@@ -40,7 +46,7 @@ Workspace::~Workspace() = default;
 void Workspace::setInfo(const DeviceInfo& info, bool fromDevice) {
     m_info = info;
     m_infoFromDevice = fromDevice;
-    m_cams->setLimits(info, true);
+    m_cams->setLimits(info, isRotaryAxis(m_settings));
     Q_EMIT infoChanged();
 }
 

@@ -26,17 +26,11 @@ constexpr int kMaxProgramNumber = 32767;  // as cams read
 struct TimingInput {
     CamProgram program;
     DeadTimeModes deadTimes;  // every output with cams; plain dead times as mode Normal
-    AxisGeometry axis;
+    Axis axis;
     bool axisKnown = true;
+    int outputs = 0;
+    MinimumPulses minimumPulses;  // the project's, when --min-pulse is not given
 };
-
-DeadTimeModes asModes(const DeadTimes& plain, const DeadTimeModes& modes) {
-    if (!modes.isEmpty()) return modes;
-    DeadTimeModes result;
-    for (auto it = plain.cbegin(); it != plain.cend(); ++it)
-        result.insert(it.key(), {DeadTimeMode::Normal, it.value(), 0, 0});
-    return result;
-}
 
 Result<TimingInput> fromProject(const QString& path, int number) {
     const Result<Project> project = loadProject(path);
@@ -54,7 +48,9 @@ Result<TimingInput> fromProject(const QString& path, int number) {
                            "--program")
                 .arg(path)
                 .arg(number));
-    input.deadTimes = asModes(project->deadTimes, project->deadTimeModes);
+    input.deadTimes = deadTimesAsModes(project->deadTimes, project->deadTimeModes);
+    input.minimumPulses = project->minimumPulses;
+    input.outputs = project->device.outputs;
     input.axis = {project->device.minPosition, project->device.maxPosition,
                   isRotaryAxis(project->settings)};
     return input;
@@ -82,8 +78,9 @@ Result<TimingInput> fromDevice(CliSession& session, int number) {
                 if (!read) return read.error();
                 plain = *read;
             }
-            input.deadTimes = asModes(plain, modes);
+            input.deadTimes = deadTimesAsModes(plain, modes);
             input.axis = {identity.minPosition, identity.maxPosition, true};
+            input.outputs = identity.outputs;
             const Result<QVariant> axisType = device.readSetting(QStringLiteral("axisType"));
             if (axisType)
                 input.axis.rotary = axisType->toLongLong() == 0;
@@ -97,7 +94,7 @@ QString number(double value, int decimals = 1) {
     return QString::number(value, 'f', decimals);
 }
 
-QJsonObject problemJson(int output, const TimingProblem& problem, const AxisGeometry& axis) {
+QJsonObject problemJson(int output, const TimingProblem& problem, const Axis& axis) {
     static const char* const kinds[] = {"vanishes", "merges", "shortPulse", "shiftOverCycle"};
     QJsonObject json{{QStringLiteral("kind"), QLatin1String(kinds[int(problem.kind)])},
                      {QStringLiteral("cam"), problem.cam},
@@ -131,14 +128,6 @@ int runTiming(CliSession& session, CommandArgs& args) {
     if (!ok || speed < 0)
         return reportError(Error::usage(
             QStringLiteral("--speed must be a number of 0 or more, not \"%1\"").arg(*speedText)));
-    double minPulseMs = 0;
-    if (!pulseText->isEmpty()) {
-        minPulseMs = pulseText->toDouble(&ok);
-        if (!ok || minPulseMs < 0)
-            return reportError(Error::usage(
-                QStringLiteral("--min-pulse must be milliseconds, 0 or more, not \"%1\"")
-                    .arg(*pulseText)));
-    }
     if (!axisText->isEmpty() && *axisText != QLatin1String("rotary") &&
         *axisText != QLatin1String("linear"))
         return reportError(Error::usage(
@@ -148,6 +137,11 @@ int runTiming(CliSession& session, CommandArgs& args) {
                                                             : fromProject(*projectPath, *program);
     if (!read) return reportError(read.error());
     TimingInput input = *read;
+    if (!pulseText->isEmpty()) {
+        const Result<MinimumPulses> pulses = parseMinimumPulses(*pulseText, input.outputs);
+        if (!pulses) return reportError(pulses.error());
+        input.minimumPulses = *pulses;
+    }
     if (!axisText->isEmpty()) {
         input.axis.rotary = *axisText == QLatin1String("rotary");
         input.axisKnown = true;
@@ -156,7 +150,7 @@ int runTiming(CliSession& session, CommandArgs& args) {
         printError(
             QStringLiteral("note: the device did not say whether its axis is rotary or "
                            "linear; taken as rotary (give --axis linear if it is not)"));
-    const AxisGeometry& axis = input.axis;
+    const Axis& axis = input.axis;
     const double v = toPositionsPerSecond(speed, axis);
     const QString unit = speedUnit(axis);
 
@@ -164,35 +158,37 @@ int runTiming(CliSession& session, CommandArgs& args) {
     QString text = QStringLiteral("program %1 at %2 %3 (%4 pos/s), axis %5..%6 %7\n")
                        .arg(*program)
                        .arg(number(speed, speed >= 100 ? 0 : 1), unit, number(v))
-                       .arg(axis.minPosition)
-                       .arg(axis.maxPosition)
+                       .arg(axis.min)
+                       .arg(axis.max)
                        .arg(axis.rotary ? QStringLiteral("rotary") : QStringLiteral("linear"));
     QStringList warnings;
-    for (const Track& track : input.program.tracks) {
-        if (track.cams.isEmpty()) continue;
-        const OutputTiming timing =
-            timeTrack(track, input.deadTimes.value(track.output), v, axis, minPulseMs);
-        QString line =
-            QStringLiteral("output %1: shift %2 pos").arg(track.output).arg(number(timing.shiftOn));
+    for (const OutputTiming& timing :
+         timeProgram(input.program, input.deadTimes, v, axis, input.minimumPulses)) {
+        QString line = QStringLiteral("output %1: shift %2 pos")
+                           .arg(timing.output)
+                           .arg(number(timing.shiftOn));
         if (!qFuzzyCompare(timing.shiftOn + 1, timing.shiftOff + 1))
             line = QStringLiteral("output %1: shift on %2 pos, off %3 pos")
-                       .arg(track.output)
+                       .arg(timing.output)
                        .arg(number(timing.shiftOn), number(timing.shiftOff));
         line += QStringLiteral(" (dead time %1 ms").arg(number(timing.onDeadTimeMs));
         if (timing.offDeadTimeMs != timing.onDeadTimeMs)
             line += QStringLiteral(" on, %1 ms off").arg(number(timing.offDeadTimeMs));
         line += QLatin1Char(')');
+        if (const qint32 pulse = input.minimumPulses.value(timing.output); pulse > 0)
+            line += QStringLiteral(", minimum pulse %1 ms").arg(number(pulse / 10.0));
         line += timing.shortestDurationMs
                     ? QStringLiteral(", shortest cam %1 ms").arg(number(*timing.shortestDurationMs))
                     : QStringLiteral(", standing still");
-        line += timing.firstLimit ? QStringLiteral(", limit %1")
-                                        .arg(describeProblem(track.output, *timing.firstLimit, axis)
-                                                 .section(QStringLiteral(": "), 1))
-                                  : QStringLiteral(", no limit");
+        line += timing.firstLimit
+                    ? QStringLiteral(", limit %1")
+                          .arg(describeProblem(timing.output, *timing.firstLimit, axis)
+                                   .section(QStringLiteral(": "), 1))
+                    : QStringLiteral(", no limit");
         text += line + QLatin1Char('\n');
         for (const TimingProblem& problem : timing.problems)
             warnings << QStringLiteral("warning: %1 (at %2 %3)")
-                            .arg(describeProblem(track.output, problem, axis),
+                            .arg(describeProblem(timing.output, problem, axis),
                                  number(speed, speed >= 100 ? 0 : 1), unit);
 
         QJsonArray cams;
@@ -208,19 +204,22 @@ int runTiming(CliSession& session, CommandArgs& args) {
         }
         QJsonArray problems;
         for (const TimingProblem& problem : timing.problems)
-            problems.append(problemJson(track.output, problem, axis));
-        QJsonObject entry{{QStringLiteral("output"), track.output},
+            problems.append(problemJson(timing.output, problem, axis));
+        QJsonObject entry{{QStringLiteral("output"), timing.output},
                           {QStringLiteral("onDeadTimeMs"), timing.onDeadTimeMs},
                           {QStringLiteral("offDeadTimeMs"), timing.offDeadTimeMs},
                           {QStringLiteral("shiftOn"), timing.shiftOn},
                           {QStringLiteral("shiftOff"), timing.shiftOff},
                           {QStringLiteral("cams"), cams},
                           {QStringLiteral("problems"), problems}};
+        if (input.minimumPulses.value(timing.output) > 0)
+            entry.insert(QStringLiteral("minPulseMs"),
+                         input.minimumPulses.value(timing.output) / 10.0);
         if (timing.shortestDurationMs)
             entry.insert(QStringLiteral("shortestCamMs"), *timing.shortestDurationMs);
         if (timing.firstLimit)
             entry.insert(QStringLiteral("limit"),
-                         problemJson(track.output, *timing.firstLimit, axis));
+                         problemJson(timing.output, *timing.firstLimit, axis));
         outputs.append(entry);
     }
     if (json) {
@@ -229,9 +228,8 @@ int runTiming(CliSession& session, CommandArgs& args) {
             {QStringLiteral("speed"), speed},
             {QStringLiteral("speedUnit"), unit},
             {QStringLiteral("positionsPerSecond"), v},
-            {QStringLiteral("minPulseMs"), minPulseMs},
-            {QStringLiteral("axis"), QJsonObject{{QStringLiteral("min"), axis.minPosition},
-                                                 {QStringLiteral("max"), axis.maxPosition},
+            {QStringLiteral("axis"), QJsonObject{{QStringLiteral("min"), axis.min},
+                                                 {QStringLiteral("max"), axis.max},
                                                  {QStringLiteral("rotary"), axis.rotary}}},
             {QStringLiteral("outputs"), outputs}}));
     }

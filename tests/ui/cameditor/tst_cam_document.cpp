@@ -2,9 +2,9 @@
 // compare with device, the multi-cam generator and the table models.
 #include "cam_test_support.h"
 
+#include "model/camcon/cam_axis.h"
 #include "ui/camcon/cameditor/cam_commands.h"
 #include "ui/camcon/cameditor/cam_generator.h"
-#include "ui/camcon/cameditor/cam_geometry.h"
 #include "ui/camcon/cameditor/cam_table_model.h"
 #include "ui/camcon/cameditor/editor_colors.h"
 #include "ui/camcon/cameditor/track_table_model.h"

@@ -7,6 +7,8 @@
 #include "ui/camcon/analogue_cams_page.h"
 #include "ui/camcon/backup_wizard.h"
 #include "ui/camcon/cam_page.h"
+#include "ui/camcon/cameditor/cam_diagram_widget.h"
+#include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/camcon/compare_dialog.h"
 #include "ui/camcon/compare_programs_dialog.h"
 #include "ui/camcon/dead_time_modes_page.h"
@@ -14,6 +16,7 @@
 #include "ui/camcon/dead_times_page.h"
 #include "ui/camcon/eeprom_lock_page.h"
 #include "ui/camcon/program_diff_view.h"
+#include "ui/camcon/timing_bar.h"
 #include "ui/camcon/users_page.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
@@ -46,6 +49,8 @@ private Q_SLOTS:
     void editedCamWrittenAndReadBackEqualsEdit();
     void compareWritesOnlySelectedItems();
     void compareProgramsDrawsAndListsTheDifferences();
+    void compareProgramsWritesOnlyTheCheckedDifferences();
+    void timingAtSpeedIsDrawnUnderTheCamsAndWarns();
     void deadTimeEditIsWrittenInTenthsOfMs_data() { protocolRows(); }
     void deadTimeEditIsWrittenInTenthsOfMs();
     void sectionsFollowTheProtocolsCapabilities_data() { protocolRows(); }
@@ -175,6 +180,93 @@ void MainWindowTest::compareProgramsDrawsAndListsTheDifferences() {
              qPrintable(dialog->summary()));
     QVERIFY(dialog->differenceTexts().isEmpty());
     dialog->close();
+}
+
+void MainWindowTest::compareProgramsWritesOnlyTheCheckedDifferences() {
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"));
+    QVERIFY(shell);
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    // Two edits on this PC, on two outputs; only the first gets checked.
+    const Cam before = cams->track(0, 1).cams.first();
+    Cam moved = before;
+    moved.off += 10;
+    cams->setCam(0, 1, 0, moved);
+    int other = 2;
+    while (other <= cams->outputCount() && !cams->track(0, other).cams.isEmpty()) ++other;
+    QVERIFY(other <= cams->outputCount());
+    cams->insertCam(0, other, {5, 9});
+
+    CompareProgramsDialog* dialog = camConWindow(shell->window())->openComparePrograms();
+    dialog->setSide(0, CompareProgramsDialog::Source::Device, 0);
+    dialog->setSide(1, CompareProgramsDialog::Source::Edited, 0);
+    QSignalSpy compared(dialog, &CompareProgramsDialog::compared);
+    dialog->compare();
+    QTRY_VERIFY_WITH_TIMEOUT(!compared.isEmpty() && !dialog->isReading(), kDeviceTimeoutMs);
+    QCOMPARE(dialog->differenceTexts().size(), 2);
+    QVERIFY(!dialog->canApply());  // nothing checked yet
+    dialog->setChecked(0, true);
+    QVERIFY(dialog->canApply());
+
+    QSignalSpy applied(dialog, &CompareProgramsDialog::applied);
+    QString question;
+    NextDialog<QMessageBox> confirm([&question](QMessageBox* box) {
+        question = box->text();
+        for (QAbstractButton* button : box->buttons())
+            if (box->buttonRole(button) == QMessageBox::AcceptRole) button->click();
+    });
+    dialog->applyChecked();
+    QCOMPARE(confirm.answered(), 1);
+    QVERIFY2(question.contains(QLatin1String("program 0: output 1 (1 difference")),
+             qPrintable(question));
+    QVERIFY(applied.wait(kDeviceTimeoutMs));
+    QVERIFY2(applied.first().first().toBool(), qPrintable(dialog->lastApplyResult()));
+    // Output 1 is on the device now, the unchecked edit is still only here.
+    QCOMPARE(cams->deviceTrack(0, 1)->cams.first(), moved);
+    QCOMPARE(cams->trackState(0, 1), ChangeState::Unchanged);
+    QCOMPARE(cams->trackState(0, other), ChangeState::Edited);
+    // Both sides read again: the one difference left.
+    QTRY_COMPARE_WITH_TIMEOUT(dialog->differenceTexts().size(), 1, kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog->isReading(), kDeviceTimeoutMs);
+    QVERIFY(dialog->differenceTexts().first().contains(QStringLiteral("output %1").arg(other)));
+    // What the write did stays said above the new comparison.
+    QVERIFY2(dialog->summary().contains(QLatin1String("1 written")), qPrintable(dialog->summary()));
+    dialog->close();
+}
+
+void MainWindowTest::timingAtSpeedIsDrawnUnderTheCamsAndWarns() {
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"));
+    QVERIFY(shell);
+    CamPage* page = camConWindow(shell->window())->camPage();
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    TimingBar* bar = page->timingBar();
+    CamDiagramWidget* diagram = page->editor()->diagram();
+    page->editor()->setCurrentProgram(0);
+    QVERIFY(!diagram->timingShown());
+    QVERIFY(!cams->track(0, 1).cams.isEmpty());
+    cams->setDeadTime(1, 100);  // 10 ms
+    bar->setSpeed(60);
+    bar->setTimingShown(true);
+    QVERIFY(diagram->timingShown());
+    QVERIFY(!bar->timing().isEmpty());
+    QCOMPARE(bar->timing().first().output, 1);
+    // 60 1/min on 0..359 is 360 positions/s: 10 ms moves the edges 3.6 early.
+    QVERIFY(std::abs(bar->timing().first().shiftOn - 3.6) < 1e-6);
+    const QList<QRectF> strip = diagram->timingRects(1, 0);
+    const QList<QRectF> bar1 = diagram->camRects(1, 0);
+    QVERIFY(!strip.isEmpty() && !bar1.isEmpty());
+    QVERIFY(strip.first().top() >= bar1.first().bottom());  // under the cam
+    QVERIFY(strip.first().left() < bar1.first().left());    // switched early
+    QVERIFY2(!bar->summary().contains(QLatin1String("warning")), qPrintable(bar->summary()));
+
+    // A minimum pulse (track table, PC only) longer than the cam lasts.
+    cams->setMinimumPulse(1, 100000);
+    QVERIFY2(bar->summary().contains(QLatin1String("minimum pulse")), qPrintable(bar->summary()));
+    QVERIFY(!bar->timing().first().problems.isEmpty());
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 1);  // the dead time; the pulse is no edit
+
+    bar->setTimingShown(false);
+    QVERIFY(!diagram->timingShown());
+    QVERIFY(diagram->timingRects(1, 0).isEmpty());
 }
 
 void MainWindowTest::deadTimeEditIsWrittenInTenthsOfMs() {

@@ -90,6 +90,18 @@ void ReportAndCountsTest::reportHoldsEverySectionOfTheDevice() {
     QVERIFY(text.contains(QStringLiteral("Read from the device at")));
     QVERIFY(!text.contains(QStringLiteral("offline project")));
     QVERIFY(text.contains(QStringLiteral("Every value in this report is what the device held")));
+    QVERIFY(!text.contains(QStringLiteral("Timing at")));  // only when a speed is given
+
+    // Issue 17: with a speed, one timing table per program with cams, at
+    // that speed and in its unit.
+    {
+        QTextDocument timed;
+        CommissioningReport::build(timed, ws, {60.0});
+        const QString withTiming = timed.toPlainText();
+        QVERIFY2(withTiming.contains(QStringLiteral("Timing at 60.0 1/min")),
+                 qPrintable(withTiming.right(2000)));
+        QVERIFY(withTiming.contains(QStringLiteral("Shortest cam")));
+    }
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("report.pdf"));

@@ -2,10 +2,12 @@
 
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/editor_colors.h"
+#include "ui/camcon/cameditor/timing_text.h"
 
 #include <QEvent>
 #include <QHelpEvent>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QScrollBar>
@@ -29,6 +31,9 @@ constexpr double kScaleTickPixels = 90.0;
 // else comes from the palette.
 const QColor kLiveColor(255, 140, 0);
 const QColor kLedOnColor(40, 200, 60);
+// The electrical on-times: a teal apart from the palette's highlight, the
+// live cursor's orange and the error red, outlined so it reads on both.
+const QColor kTimingColor(0, 150, 160);
 
 QColor withAlpha(QColor color, int alpha) {
     color.setAlpha(alpha);
@@ -82,7 +87,11 @@ int CamDiagramWidget::labelWidth() const {
 }
 
 int CamDiagramWidget::rowHeight() const {
-    return fontMetrics().height() + 10;
+    return fontMetrics().height() + 10 + (m_timingShown ? stripHeight() : 0);
+}
+
+int CamDiagramWidget::stripHeight() const {
+    return fontMetrics().height() + 4;
 }
 
 int CamDiagramWidget::scaleHeight() const {
@@ -107,6 +116,7 @@ void CamDiagramWidget::updateLayout() {
         m_vertical->setPageStep(plot.height());
         m_vertical->setSingleStep(rowHeight());
     }
+    m_layout.setStripHeight(m_timingShown ? stripHeight() : 0);
     m_layout.setPlotArea(plot, rowHeight(), m_vertical->value());
     syncScrollBars();
 }
@@ -179,6 +189,31 @@ void CamDiagramWidget::clearLive() {
     m_live = false;
     m_outputStates.clear();
     update();
+}
+
+void CamDiagramWidget::setTiming(const QList<OutputTiming>& outputs, const QString& speed) {
+    const bool grows = !m_timingShown;
+    m_timingShown = true;
+    m_timing.clear();
+    for (const OutputTiming& timing : outputs) m_timing.insert(timing.output, timing);
+    m_timingSpeed = speed;
+    if (grows) updateLayout();
+    update();
+}
+
+void CamDiagramWidget::clearTiming() {
+    if (!m_timingShown) return;
+    m_timingShown = false;
+    m_timing.clear();
+    updateLayout();
+    update();
+}
+
+QList<QRectF> CamDiagramWidget::timingRects(int output, int cam) const {
+    const OutputTiming timing = m_timing.value(output);
+    if (cam < 0 || cam >= timing.cams.size()) return {};
+    const TimedCam& timed = timing.cams.at(cam);
+    return m_layout.stripRects(timed.on, std::max(timed.length, 0.0), output);
 }
 
 QList<QRectF> CamDiagramWidget::camRects(int output, int index) const {
@@ -377,8 +412,11 @@ bool CamDiagramWidget::event(QEvent* event) {
     if (event->type() == QEvent::ToolTip) {
         auto* help = static_cast<QHelpEvent*>(event);
         const DiagramHit hit = hitTest(help->pos());
+        const QString timing = timingToolTipAt(help->pos());
         if (hit.cam >= 0) {
             QToolTip::showText(help->globalPos(), camToolTip(hit.output, hit.cam), this);
+        } else if (!timing.isEmpty()) {
+            QToolTip::showText(help->globalPos(), timing, this);
         } else {
             QToolTip::hideText();
             event->ignore();
@@ -416,6 +454,59 @@ QString CamDiagramWidget::camToolTip(int output, int cam) const {
     }
     if (m_document->camState(m_program, output, cam) == ChangeState::Edited) {
         text += QLatin1Char('\n') + tr("Changed, not yet written to the device.");
+    }
+    return text;
+}
+
+QString CamDiagramWidget::timingToolTipAt(const QPoint& point) const {
+    if (!m_timingShown) return {};
+    const int output = m_layout.outputAtY(point.y(), m_document->outputCount());
+    const OutputTiming timing = m_timing.value(output);
+    if (output == 0 || timing.cams.isEmpty()) return {};
+    QStringList lines;
+    if (point.x() < m_layout.plotArea().left()) {
+        // The row's label: what breaks on this output.
+        for (const TimingProblem& problem : timing.problems)
+            lines << timingProblemText(output, problem, m_layout.axis());
+        return lines.join(QLatin1Char('\n'));
+    }
+    for (int cam = 0; cam < timing.cams.size(); ++cam) {
+        const QList<QRectF> rects = timingRects(output, cam);
+        if (std::any_of(rects.cbegin(), rects.cend(), [&](const QRectF& rect) {
+                return rect.adjusted(-kEdgeGrip, 0, kEdgeGrip, 0).contains(point);
+            }))
+            return timingToolTip(output, cam);
+    }
+    return {};
+}
+
+QString CamDiagramWidget::timingToolTip(int output, int cam) const {
+    const OutputTiming timing = m_timing.value(output);
+    const TimedCam& timed = timing.cams.at(cam);
+    const QLocale locale;
+    QString text;
+    if (timed.length <= 0) {
+        text = tr("Output %1, cam %2 at %3: never switches on (it vanishes).")
+                   .arg(output)
+                   .arg(timed.number)
+                   .arg(m_timingSpeed);
+    } else {
+        text = tr("Output %1, cam %2 at %3: switches on at %4, off at %5")
+                   .arg(output)
+                   .arg(timed.number)
+                   .arg(m_timingSpeed, locale.toString(timed.on, 'f', 1),
+                        locale.toString(timed.off, 'f', 1));
+        if (timed.durationMs)
+            text += QLatin1Char('\n') + tr("On for %1.").arg(durationText(*timed.durationMs));
+    }
+    text += QLatin1Char('\n') +
+            tr("Programmed: on %1, off %2; dead time %3 on, %4 off.")
+                .arg(timed.programmed.on)
+                .arg(timed.programmed.off)
+                .arg(durationText(timing.onDeadTimeMs), durationText(timing.offDeadTimeMs));
+    for (const TimingProblem& problem : timing.problems) {
+        if (problem.cam == timed.number || problem.nextCam == timed.number)
+            text += QLatin1Char('\n') + timingProblemText(output, problem, m_layout.axis());
     }
     return text;
 }
@@ -461,6 +552,7 @@ void CamDiagramWidget::paintRows(QPainter& painter) const {
         const QRectF band = m_layout.rowBand(output);
         if (band.bottom() >= plot.top() && band.top() <= plot.bottom()) {
             paintCams(painter, output);
+            if (m_timingShown) paintTiming(painter, output);
         }
     }
     painter.restore();
@@ -472,8 +564,10 @@ void CamDiagramWidget::paintLabel(QPainter& painter, int output) const {
     const QRectF label(0, band.top(), m_layout.plotArea().left(), band.height());
     painter.fillRect(
         label, pal.color(output == m_selectedOutput ? QPalette::Highlight : QPalette::Button));
-    const double led = band.height() * 0.45;
-    const QRectF ledRect(4, band.center().y() - led / 2, led, led);
+    // The LED keeps its size when the timing strip makes the row taller.
+    const double led = (band.height() - m_layout.stripHeight()) * 0.45;
+    const QRectF ledRect(4, band.top() + (band.height() - m_layout.stripHeight() - led) / 2, led,
+                         led);
     if (m_live) {
         const bool on = output - 1 < m_outputStates.size() && m_outputStates.at(output - 1);
         painter.setRenderHint(QPainter::Antialiasing);
@@ -482,7 +576,22 @@ void CamDiagramWidget::paintLabel(QPainter& painter, int output) const {
         painter.drawEllipse(ledRect);
         painter.setRenderHint(QPainter::Antialiasing, false);
     }
-    const QRectF textRect = label.adjusted(ledRect.right() + 6, 0, -4, 0);
+    QRectF textRect = label.adjusted(ledRect.right() + 6, 0, -4, 0);
+    if (m_timingShown && !m_timing.value(output).problems.isEmpty()) {
+        // A red triangle with "!" at the label's end: this output's picture
+        // breaks at the speed shown (the tool tip says how).
+        const double size = std::min(band.height() - 6, double(fontMetrics().height()));
+        const QRectF mark(textRect.right() - size, band.center().y() - size / 2, size, size);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(QPen(Qt::white, 1));
+        painter.setBrush(errorColor());
+        painter.drawPolygon(QPolygonF(
+            {QPointF(mark.center().x(), mark.top()), mark.bottomRight(), mark.bottomLeft()}));
+        painter.setRenderHint(QPainter::Antialiasing, false);
+        painter.setPen(Qt::white);
+        painter.drawText(mark.adjusted(0, size * 0.2, 0, 0), Qt::AlignCenter, QStringLiteral("!"));
+        textRect.setRight(mark.left() - 3);
+    }
     const QString name = m_document->outputName(output);
     const QString text =
         name.isEmpty() ? QString::number(output) : tr("%1  %2").arg(output).arg(name);
@@ -526,6 +635,57 @@ void CamDiagramWidget::paintCams(QPainter& painter, int output) const {
             if (rect.width() > fontMetrics().horizontalAdvance(number) + 6) {
                 painter.setPen(text);
                 painter.drawText(rect, Qt::AlignCenter, number);
+            }
+        }
+    }
+}
+
+void CamDiagramWidget::paintTiming(QPainter& painter, int output) const {
+    const OutputTiming timing = m_timing.value(output);
+    if (timing.cams.isEmpty()) return;
+    const QPalette& pal = palette();
+    const Track track = m_document->track(m_program, output);
+    QSet<int> troubled;  // cams in a problem at this speed
+    for (const TimingProblem& problem : timing.problems) {
+        if (problem.kind == TimingProblem::Kind::ShiftOverCycle) continue;
+        troubled << problem.cam << problem.nextCam;
+    }
+    const QRectF band = m_layout.rowBand(output);
+    const double stripTop = band.bottom() - m_layout.stripHeight();
+    for (int cam = 0; cam < timing.cams.size(); ++cam) {
+        const TimedCam& timed = timing.cams.at(cam);
+        const bool trouble = troubled.contains(timed.number);
+        // From the programmed switch-on edge down to where it switches.
+        if (cam < track.cams.size() && timing.shiftOn > 0) {
+            const double from = m_layout.xForPosition(track.cams.at(cam).on);
+            const double to = m_layout.xForPosition(timed.on);
+            if (std::abs(from - to) < m_layout.plotArea().width() / 2.0) {
+                painter.setPen(QPen(pal.color(QPalette::Text), 1, Qt::DotLine));
+                painter.drawLine(QPointF(from, stripTop - 2), QPointF(to, stripTop + 2));
+            }
+        }
+        if (timed.length <= 0) {
+            // Vanished: a red cross where it would switch on.
+            const double x = m_layout.xForPosition(timed.on);
+            const double h = m_layout.stripHeight() / 2.0 - 1;
+            const double y = stripTop + m_layout.stripHeight() / 2.0;
+            painter.setPen(QPen(errorColor(), 2.5));
+            painter.drawLine(QPointF(x - h, y - h), QPointF(x + h, y + h));
+            painter.drawLine(QPointF(x - h, y + h), QPointF(x + h, y - h));
+            continue;
+        }
+        const QString duration = timed.durationMs ? durationText(*timed.durationMs) : QString();
+        for (const QRectF& rect : timingRects(output, cam)) {
+            painter.fillRect(rect, trouble ? errorColor() : kTimingColor);
+            if (trouble)
+                painter.fillRect(rect, QBrush(withAlpha(Qt::white, 120), Qt::Dense6Pattern));
+            painter.setPen(QPen(pal.color(QPalette::Text), 1));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawRect(rect.adjusted(0.5, 0.5, -0.5, -0.5));
+            if (!duration.isEmpty() &&
+                rect.width() > fontMetrics().horizontalAdvance(duration) + 6) {
+                painter.setPen(Qt::white);
+                painter.drawText(rect, Qt::AlignCenter, duration);
             }
         }
     }

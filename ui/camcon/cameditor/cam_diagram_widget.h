@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/camcon/cam_program.h"
+#include "model/camcon/cam_timing.h"
 #include "ui/camcon/cameditor/diagram_layout.h"
 
 #include <QList>
@@ -52,6 +53,16 @@ public Q_SLOTS:
     void setOutputStates(const QList<bool>& states);
     void clearLive();
     bool isLive() const { return m_live; }
+    // Where the outputs switch electrically at a speed: a strip under each
+    // row with the on-times, each cam's duration, and the problems marked
+    // at the row's label. `speed` names the speed for tool tips.
+    void setTiming(const QList<OutputTiming>& outputs, const QString& speed);
+    void clearTiming();
+
+public:
+    bool timingShown() const { return m_timingShown; }
+    // The strip pieces of an output's electrical cam (tests check them).
+    QList<QRectF> timingRects(int output, int cam) const;
 
 Q_SIGNALS:
     // The user clicked a cam (cam >= 0) or an empty part of a row (cam = -1).
@@ -77,6 +88,7 @@ private:
     void dragCamTo(double position);
     int labelWidth() const;
     int rowHeight() const;
+    int stripHeight() const;
     int scaleHeight() const;
     QString camToolTip(int output, int cam) const;
 
@@ -85,6 +97,9 @@ private:
     void paintCams(QPainter& painter, int output) const;
     void paintLabel(QPainter& painter, int output) const;
     void paintLiveCursor(QPainter& painter) const;
+    void paintTiming(QPainter& painter, int output) const;
+    QString timingToolTip(int output, int cam) const;
+    QString timingToolTipAt(const QPoint& point) const;
 
     CamDocument* m_document;
     DiagramLayout m_layout;
@@ -97,6 +112,10 @@ private:
     bool m_live = false;
     qint32 m_livePosition = 0;
     QList<bool> m_outputStates;
+
+    bool m_timingShown = false;
+    QMap<int, OutputTiming> m_timing;  // key = output
+    QString m_timingSpeed;
 
     Drag m_drag = Drag::None;
     int m_dragOutput = 0;

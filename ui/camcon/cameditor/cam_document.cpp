@@ -106,6 +106,7 @@ void CamDocument::clear() {
     m_deviceOutputNames.clear();
     m_deviceDeadTimes.clear();
     m_outputSettingsKnown = false;
+    setMinimumPulses({});
     for (int number = 0; number < m_info.programs; ++number) Q_EMIT programChanged(number);
     for (int output = 1; output <= m_info.outputs; ++output) {
         Q_EMIT outputNameChanged(output);
@@ -174,6 +175,21 @@ void CamDocument::setDeviceProgram(const CamProgram& program) {
     Q_EMIT programChanged(program.number);
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
+}
+
+void CamDocument::setMinimumPulse(int output, qint32 tenths) {
+    MinimumPulses pulses = m_minimumPulses;
+    if (tenths > 0)
+        pulses.insert(output, tenths);
+    else
+        pulses.remove(output);
+    setMinimumPulses(pulses);
+}
+
+void CamDocument::setMinimumPulses(const MinimumPulses& pulses) {
+    if (pulses == m_minimumPulses) return;
+    m_minimumPulses = pulses;
+    Q_EMIT minimumPulsesChanged();
 }
 
 void CamDocument::setDeviceOutputSettings(const QMap<int, QString>& outputNames,

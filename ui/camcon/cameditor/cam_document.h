@@ -1,10 +1,10 @@
 #pragma once
 
+#include "model/camcon/cam_axis.h"
 #include "model/camcon/cam_program.h"
 #include "model/camcon/cam_validation.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
-#include "ui/camcon/cameditor/cam_geometry.h"
 
 #include <QList>
 #include <QMap>
@@ -63,6 +63,11 @@ public:
     qint32 deadTime(int output) const;  // 0.1 ms steps
     const Names& names() const { return m_names; }
     const DeadTimes& deadTimes() const { return m_deadTimes; }
+    // The user's minimum pulse per output (0.1 ms) for the timing check:
+    // kept on this PC and in the project file, never written to a device.
+    const MinimumPulses& minimumPulses() const { return m_minimumPulses; }
+    void setMinimumPulse(int output, qint32 tenths);
+    void setMinimumPulses(const MinimumPulses& pulses);
 
     // Values that arrive: from the device (also the new device copy) or
     // from a file (edited state only). With `keepEdits` a track, name or
@@ -164,6 +169,7 @@ Q_SIGNALS:
     void programChanged(int program);  // name, or every track at once
     void outputNameChanged(int output);
     void deadTimeChanged(int output);
+    void minimumPulsesChanged();
     // The device copy changed (read or written): change markers must follow.
     void deviceStateChanged();
     void changedCountChanged(int count);
@@ -177,6 +183,7 @@ private:
     QMap<int, CamProgram> m_device;
     Names m_names;  // edited output names; program names live in CamProgram
     DeadTimes m_deadTimes;
+    MinimumPulses m_minimumPulses;
     QMap<int, QString> m_deviceOutputNames;
     DeadTimes m_deviceDeadTimes;
     // Tracks of read programs whose state on the device is unknown (key

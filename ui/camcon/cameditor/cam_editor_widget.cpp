@@ -75,6 +75,7 @@ CamEditorWidget::CamEditorWidget(CamDocument* document, QWidget* parent)
     zoomBar->addActions({m_zoomIn, m_zoomOut, m_zoomFit});
     diagramLayout->addWidget(zoomBar);
     diagramLayout->addWidget(m_diagram, 1);
+    m_diagramLayout = diagramLayout;
 
     auto* splitter = new QSplitter(Qt::Vertical);
     splitter->addWidget(tables);
@@ -208,8 +209,9 @@ void CamEditorWidget::createTables() {
     m_trackTable->resizeColumnsToContents();
     // Sized for the longest value, not the (empty) first contents: German
     // decimals ("999,9 ms") must not wrap.
-    m_trackTable->setColumnWidth(TrackTableModel::DeadTimeColumn,
-                                 fontMetrics().horizontalAdvance(QStringLiteral("00000,0 ms")));
+    for (int column : {TrackTableModel::DeadTimeColumn, TrackTableModel::MinimumPulseColumn})
+        m_trackTable->setColumnWidth(column,
+                                     fontMetrics().horizontalAdvance(QStringLiteral("00000,0 ms")));
     m_trackTable->setColumnWidth(TrackTableModel::NameColumn,
                                  fontMetrics().averageCharWidth() * (kMaxNameLength + 2));
     connect(m_trackTable->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
@@ -243,6 +245,10 @@ QList<QAction*> CamEditorWidget::editorActions() const {
 
 int CamEditorWidget::currentOutput() const {
     return m_camModel->output();
+}
+
+void CamEditorWidget::addDiagramBar(QWidget* bar) {
+    m_diagramLayout->insertWidget(m_diagramLayout->indexOf(m_diagram), bar);
 }
 
 void CamEditorWidget::setCurrentProgram(int program) {

@@ -10,6 +10,7 @@ class QLabel;
 class QLineEdit;
 class QTableView;
 class QToolBar;
+class QVBoxLayout;
 
 namespace cambench {
 
@@ -42,6 +43,9 @@ public:
     QAction* redoAction() const { return m_redo; }
     // Add cam, delete cam, copy…, generate…, import/export, zoom, read/write.
     QList<QAction*> editorActions() const;
+
+    // A bar of the page's own (the timing at speed) put above the diagram.
+    void addDiagramBar(QWidget* bar);
 
     // The CSV work behind the actions, without dialogs (and for tests).
     Status importCsv(const QString& path);
@@ -87,6 +91,7 @@ private:
     QTableView* m_camTable = nullptr;
     QLabel* m_camTitle = nullptr;
     CamDiagramWidget* m_diagram;
+    QVBoxLayout* m_diagramLayout = nullptr;
 
     QAction* m_undo;
     QAction* m_redo;

@@ -78,7 +78,34 @@ QList<QRectF> DiagramLayout::camRects(const Cam& cam, int output) const {
         const double left = xForPosition(double(piece.from));
         const double right = xForPosition(double(piece.to));
         rects.append(QRectF(left, band.top() + kBarMargin, std::max(right - left, 1.0),
-                            band.height() - 2 * kBarMargin));
+                            band.height() - 2 * kBarMargin - m_strip));
+    }
+    return rects;
+}
+
+QList<QRectF> DiagramLayout::stripRects(double from, double length, int output) const {
+    const QRectF band = rowBand(output);
+    const double top = band.bottom() - m_strip;
+    const double height = std::max(m_strip - kBarMargin, 1.0);
+    const double start = double(m_axis.min);
+    const double end = double(m_axis.max) + 1.0;
+    QList<QRectF> rects;
+    const auto add = [&](double a, double b) {
+        const double left = xForPosition(a);
+        rects.append(QRectF(left, top, std::max(xForPosition(b) - left, 1.0), height));
+    };
+    if (!m_axis.rotary) {
+        add(std::max(from, start), std::min(from + length, end));
+        return rects;
+    }
+    const double span = end - start;
+    double a = start + std::fmod(std::fmod(from - start, span) + span, span);
+    double rest = std::min(length, span);
+    while (rest > 0) {
+        const double piece = std::min(rest, end - a);
+        add(a, a + piece);
+        rest -= piece;
+        a = start;
     }
     return rects;
 }

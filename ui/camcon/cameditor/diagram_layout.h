@@ -1,10 +1,12 @@
 #pragma once
 
-#include "ui/camcon/cameditor/cam_geometry.h"
+#include "model/camcon/cam_axis.h"
 
 #include <QList>
 #include <QRect>
 #include <QRectF>
+
+#include <algorithm>
 
 namespace cambench {
 
@@ -37,6 +39,13 @@ public:
     QRectF rowBand(int output) const;
     // The bar(s) of a cam, two for a cam that wraps through zero.
     QList<QRectF> camRects(const Cam& cam, int output) const;
+    // Pixels at the foot of every row kept for the timing strip (0: none);
+    // the cam bars take the rest.
+    void setStripHeight(int pixels) { m_strip = std::max(pixels, 0); }
+    int stripHeight() const { return m_strip; }
+    // Where an output is on electrically, [from, from + length) in
+    // positions, in the row's strip; wraps round on a rotary axis.
+    QList<QRectF> stripRects(double from, double length, int output) const;
     // A tick step of 1, 2 or 5 times a power of ten, about `pixels` apart.
     qint64 tickStep(double pixels) const;
 
@@ -46,6 +55,7 @@ private:
     Axis m_axis;
     QRect m_plot;
     int m_rowHeight = 20;
+    int m_strip = 0;
     int m_scrollY = 0;
     double m_viewStart = 0;
     double m_viewSpan = 360;

@@ -11,12 +11,12 @@ target_sources(cambench_ui PRIVATE
   camcon/cameditor/cam_generator.h
   camcon/cameditor/cam_generator_dialog.cpp
   camcon/cameditor/cam_generator_dialog.h
-  camcon/cameditor/cam_geometry.cpp
-  camcon/cameditor/cam_geometry.h
   camcon/cameditor/cam_table_model.cpp
   camcon/cameditor/cam_table_model.h
   camcon/cameditor/diagram_layout.cpp
   camcon/cameditor/diagram_layout.h
+  camcon/cameditor/timing_text.cpp
+  camcon/cameditor/timing_text.h
   camcon/cameditor/editor_colors.h
   camcon/cameditor/editor_roles.h
   camcon/cameditor/range_delegate.cpp

@@ -11,6 +11,10 @@
 
 namespace cambench {
 
+namespace {
+constexpr double kMaximumPulseMs = 10000.0;  // a valve that needs 10 s is no valve
+}  // namespace
+
 TrackTableModel::TrackTableModel(CamDocument* document, QObject* parent)
     : QAbstractTableModel(parent), m_document(document), m_rows(document->outputCount()) {
     connect(document, &CamDocument::limitsChanged, this, &TrackTableModel::resetRows);
@@ -33,6 +37,10 @@ TrackTableModel::TrackTableModel(CamDocument* document, QObject* parent)
             [this](int output) { outputChanged(output, NameColumn, NameColumn); });
     connect(document, &CamDocument::deadTimeChanged, this,
             [this](int output) { outputChanged(output, DeadTimeColumn, DeadTimeColumn); });
+    connect(document, &CamDocument::minimumPulsesChanged, this, [this] {
+        if (m_rows > 0)
+            Q_EMIT dataChanged(index(0, MinimumPulseColumn), index(m_rows - 1, MinimumPulseColumn));
+    });
 }
 
 void TrackTableModel::setProgram(int program) {
@@ -81,6 +89,8 @@ QVariant TrackTableModel::data(const QModelIndex& index, int role) const {
             return {};
         case DeadTimeColumn:
             return deadTimeData(output, role);
+        case MinimumPulseColumn:
+            return minimumPulseData(output, role);
         case CamCountColumn:
             return camCountData(output, role);
         case StateColumn:
@@ -92,23 +102,24 @@ QVariant TrackTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant TrackTableModel::deadTimeData(int output, int role) const {
     const qint32 steps = m_document->deadTime(output);
+    if (role == Qt::DisplayRole) return tr("%1 ms").arg(QLocale().toString(steps / 10.0, 'f', 1));
+    return millisecondsEditData(steps, m_document->deviceInfo().maxDeadTime / 10.0, role);
+}
+
+QVariant TrackTableModel::minimumPulseData(int output, int role) const {
+    const qint32 steps = m_document->minimumPulses().value(output);
     switch (role) {
         case Qt::DisplayRole:
-            return tr("%1 ms").arg(QLocale().toString(steps / 10.0, 'f', 1));
-        case Qt::EditRole:
-            return steps / 10.0;
-        case Qt::TextAlignmentRole:
-            return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
-        case MinimumRole:
-            return 0.0;
-        case MaximumRole:
-            return m_document->deviceInfo().maxDeadTime / 10.0;
-        case DecimalsRole:
-            return 1;
-        case SuffixRole:
-            return tr(" ms");
+            return steps > 0 ? tr("%1 ms").arg(QLocale().toString(steps / 10.0, 'f', 1))
+                             : QString();
+        case Qt::ToolTipRole:
+        case Qt::StatusTipRole:
+            return tr("The shortest time output %1 must stay on for its actuator to act. The "
+                      "timing view warns where a cam is on for less at the speed chosen. Kept "
+                      "on this PC and in the project file, not on the device.")
+                .arg(output);
         default:
-            return {};
+            return millisecondsEditData(steps, kMaximumPulseMs, role);
     }
 }
 
@@ -192,12 +203,20 @@ bool TrackTableModel::setData(const QModelIndex& index, const QVariant& value, i
         m_document->setDeadTime(output, qint32(steps));
         return true;
     }
+    if (index.column() == MinimumPulseColumn) {
+        bool ok = false;
+        const qint64 steps = qRound64(value.toDouble(&ok) * 10.0);
+        if (!ok || steps < 0 || steps > kMaximumPulseMs * 10) return false;
+        m_document->setMinimumPulse(output, qint32(steps));
+        return true;
+    }
     return false;
 }
 
 Qt::ItemFlags TrackTableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags flags = QAbstractTableModel::flags(index);
-    if (index.isValid() && (index.column() == NameColumn || index.column() == DeadTimeColumn)) {
+    if (index.isValid() && (index.column() == NameColumn || index.column() == DeadTimeColumn ||
+                            index.column() == MinimumPulseColumn)) {
         flags |= Qt::ItemIsEditable;
     }
     return flags;
@@ -214,6 +233,8 @@ QVariant TrackTableModel::headerData(int section, Qt::Orientation orientation, i
             return tr("Name");
         case DeadTimeColumn:
             return tr("Dead time");
+        case MinimumPulseColumn:
+            return tr("Min. pulse");
         case CamCountColumn:
             return tr("Cams");
         case StateColumn:

@@ -6,14 +6,23 @@ namespace cambench {
 
 class CamDocument;
 
-// The outputs 1..N of one program: name, dead time, number of cams and
-// whether the track differs from the device. Name and dead time are
-// editable; edits go through the document's undo stack.
+// The outputs 1..N of one program: name, dead time, the user's minimum
+// pulse (PC only, for the timing check), number of cams and whether the
+// track differs from the device. Name, dead time and minimum pulse are
+// editable; name and dead time edits go through the document's undo stack.
 class TrackTableModel : public QAbstractTableModel {
     Q_OBJECT
 
 public:
-    enum Column { OutputColumn, NameColumn, DeadTimeColumn, CamCountColumn, StateColumn, COUNT };
+    enum Column {
+        OutputColumn,
+        NameColumn,
+        DeadTimeColumn,
+        MinimumPulseColumn,
+        CamCountColumn,
+        StateColumn,
+        COUNT
+    };
 
     explicit TrackTableModel(CamDocument* document, QObject* parent = nullptr);
 
@@ -34,6 +43,7 @@ private:
     void resetRows();
     void outputChanged(int output, Column first, Column last);
     QVariant deadTimeData(int output, int role) const;
+    QVariant minimumPulseData(int output, int role) const;
     QVariant stateData(int output, int role) const;
     QVariant camCountData(int output, int role) const;
 

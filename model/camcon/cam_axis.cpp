@@ -1,4 +1,4 @@
-#include "ui/camcon/cameditor/cam_geometry.h"
+#include "model/camcon/cam_axis.h"
 
 #include <algorithm>
 
