@@ -1673,6 +1673,10 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Programmed: on %1, off %2; dead time %3 on, %4 off.</source>
         <translation>Programmiert: ein %1, aus %2; Totzeit %3 ein, %4 aus.</translation>
     </message>
+    <message>
+        <source>At %1 output %2 switches as drawn. First limit: %3</source>
+        <translation>Bei %1 schaltet Ausgang %2 wie gezeichnet. Erste Grenze: %3</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDocument</name>
@@ -4588,7 +4592,7 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
     <message>
         <source>Min. pulse</source>
-        <translation>Mindestimpuls</translation>
+        <translation>Min.-Impuls</translation>
     </message>
 </context>
 <context>

@@ -1673,6 +1673,10 @@ Erase and restore now?</translation>
         <source>Programmed: on %1, off %2; dead time %3 on, %4 off.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>At %1 output %2 switches as drawn. First limit: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDocument</name>

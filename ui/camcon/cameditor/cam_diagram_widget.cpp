@@ -465,9 +465,15 @@ QString CamDiagramWidget::timingToolTipAt(const QPoint& point) const {
     if (output == 0 || timing.cams.isEmpty()) return {};
     QStringList lines;
     if (point.x() < m_layout.plotArea().left()) {
-        // The row's label: what breaks on this output.
+        // The row's label: what breaks on this output at this speed, and
+        // the speed above which it first breaks.
         for (const TimingProblem& problem : timing.problems)
             lines << timingProblemText(output, problem, m_layout.axis());
+        if (lines.isEmpty() && timing.firstLimit)
+            lines << tr("At %1 output %2 switches as drawn. First limit: %3")
+                         .arg(m_timingSpeed)
+                         .arg(output)
+                         .arg(timingProblemText(output, *timing.firstLimit, m_layout.axis()));
         return lines.join(QLatin1Char('\n'));
     }
     for (int cam = 0; cam < timing.cams.size(); ++cam) {

@@ -209,9 +209,13 @@ void CamEditorWidget::createTables() {
     m_trackTable->resizeColumnsToContents();
     // Sized for the longest value, not the (empty) first contents: German
     // decimals ("999,9 ms") must not wrap.
-    for (int column : {TrackTableModel::DeadTimeColumn, TrackTableModel::MinimumPulseColumn})
-        m_trackTable->setColumnWidth(column,
-                                     fontMetrics().horizontalAdvance(QStringLiteral("00000,0 ms")));
+    // ... and never narrower than their (translated) title.
+    for (int column : {TrackTableModel::DeadTimeColumn, TrackTableModel::MinimumPulseColumn}) {
+        const QString title = m_trackModel->headerData(column, Qt::Horizontal).toString();
+        m_trackTable->setColumnWidth(
+            column, std::max(fontMetrics().horizontalAdvance(QStringLiteral("00000,0 ms")),
+                             fontMetrics().horizontalAdvance(title) + 16));
+    }
     m_trackTable->setColumnWidth(TrackTableModel::NameColumn,
                                  fontMetrics().averageCharWidth() * (kMaxNameLength + 2));
     connect(m_trackTable->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
