@@ -15,3 +15,4 @@ target_compile_definitions(tst_sim_executable PRIVATE CAMBENCH_SIM_EXECUTABLE="$
 add_dependencies(tst_sim_executable cambench-sim)
 cambench_add_test(tst_worker_job_queue SOURCES comm/worker/tst_job_queue.cpp LIBS cambench_sim)
 cambench_add_test(tst_worker_comm_worker SOURCES comm/worker/tst_comm_worker.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
+cambench_add_test(tst_mc1_protocol SOURCES comm/mc1/tst_mc1_protocol.cpp LIBS cambench_comm)

@@ -1,0 +1,101 @@
+#pragma once
+
+#include "mc1_telegram.h"
+#include "mc1_variant.h"
+
+#include "model/result.h"
+
+#include <QByteArray>
+#include <QList>
+
+namespace cambench::comm {
+
+// Every MC-1 telegram the client sends (PROTOCOL-NOTES §11, chapter 3 of
+// the manual), one row each in mc1_catalogue.cpp with the variants that
+// know it. RDBIT_INT/EXT are left out: nothing about them is printed but
+// the opcodes, and RDBYTE does the same.
+enum class Mc1Op {
+    ReadVariable,   // RDVAR C3 (24-bit answer 04 on an MC100, 32-bit 05 on an MC200)
+    WriteVariable,  // WRVAR CE, 24 bit
+    WriteVariable32,
+    ReadByteInternal,
+    WriteByteInternal,
+    WriteBitInternal,
+    ReadByteExternal,
+    WriteByteExternal,
+    WriteBitExternal,
+    ReadBlock,    // RDBLOCK D5 (MC100 V2)
+    ReadMemory6,  // RDMEM6 D5 (MC200): the same opcode, another telegram
+    ReadStatus,   // RDSTAT E3 (MC200)
+    WriteStatus,
+    ReadTable,  // RDTABLE E5 (MC200): logical to physical axis
+    ReadMemory,
+    WriteMemory,
+    ProgramStatus,  // SYSDATA0 92 00 → 94 flags, PC
+    ProgramStart,
+    ProgramStop,
+    ProgramStep,
+    ProgramDelete,
+    EndOfTransfer,
+    UdbAddress,  // SYSDATA0 92 08 → 95 u32
+    Reset,       // SYSDATA1 93 05
+    PrepareTransfer,
+    Flash,            // SYSDATA1 93 0A: 1 save, 2 load
+    Display,          // SYSDATA4 96 09
+    AxisCommand,      // AXIS_NODATA 9B
+    AxisDataCommand,  // AXIS_DATA 9F
+};
+
+// Whether a telegram may be sent again after its answer was lost. MC-1 has
+// no sequence numbers: the device cannot tell a repeat from a new command.
+enum class Mc1Retry {
+    Read,        // changes nothing: send again
+    Idempotent,  // sets an absolute state: again leaves the same state
+    Never,       // acts (start, step, reset, a move, a bit): re-read the state, report
+};
+
+struct Mc1Telegram {
+    Mc1Op op;
+    const char* name;  // as the manual names it ("RDVAR")
+    quint8 opcode;
+    int command;          // SYSDATA's command byte, -1 none
+    int requestData;      // bytes after opcode, checksum (and command); -1: WRMEM's 3 + n
+    quint8 answerOpcode;  // kMc1Ack: the single byte 0x80
+    int answerData;       // bytes after the answer's opcode and checksum; -1: the n asked for
+    Mc1Retry retry;
+    bool lengthException;     // the telegram breaks the (opcode & 7) + 1 rule, as printed
+    const char* provisional;  // PROTOCOL-NOTES §11 provisional point, or nullptr
+};
+
+// The telegrams `variant` knows.
+QList<Mc1Telegram> mc1Catalogue(Mc1Variant variant);
+// The row of `op` for `variant`, nullptr when the variant lacks it.
+const Mc1Telegram* mc1Find(Mc1Variant variant, Mc1Op op);
+
+// The request for `telegram` with its parameters (after the command byte,
+// which is added): refused when their count does not fit the row.
+Result<QByteArray> mc1Request(const Mc1Telegram& telegram, const QByteArray& parameters);
+
+// What answers a request: its opcode and whole length (1 for the ACK).
+struct Mc1Expectation {
+    quint8 opcode = kMc1Ack;
+    int length = 1;
+};
+Mc1Expectation mc1ExpectedAnswer(const Mc1Telegram& telegram, const QByteArray& parameters);
+
+// An answer taken from the line.
+struct Mc1Answer {
+    enum class Kind { Ack, Nak, Data };
+    Kind kind = Kind::Ack;
+    QByteArray data;  // Data: the bytes after opcode and checksum
+};
+
+// Takes the answer to `expected` from the front of `buffer` (bytes read so
+// far): 0xFF synchronisation bytes before it are skipped; an ACK or NAK is
+// one byte; a data answer is complete at its length and its checksum is
+// checked. Returns nothing while the answer is incomplete; an error for a
+// byte that starts no answer to this request or a bad checksum (the
+// buffer is then cleared: what follows cannot be trusted).
+std::optional<Result<Mc1Answer>> takeMc1Answer(QByteArray& buffer, const Mc1Expectation& expected);
+
+}  // namespace cambench::comm
