@@ -109,6 +109,27 @@ const Mc1Telegram* mc1Find(Mc1Variant variant, Mc1Op op) {
     return nullptr;
 }
 
+const Mc1Telegram* mc1FindByOpcode(Mc1Variant variant, quint8 opcode, int command) {
+    for (const Row& row : kRows) {
+        const Mc1Telegram& t = row.telegram;
+        if ((row.variants & maskOf(variant)) && t.opcode == opcode &&
+            (t.command < 0 || t.command == command))
+            return &t;
+    }
+    return nullptr;
+}
+
+Mc1Retry mc1AxisRetry(Mc1Op op, quint8 command) {
+    if (op == Mc1Op::AxisCommand)
+        return (command == 0x08 || command == 0x09 || command == 0x11) ? Mc1Retry::Idempotent
+                                                                       : Mc1Retry::Never;
+    if (op == Mc1Op::AxisDataCommand)
+        return (command == 0x02 || command == 0x0A || command == 0x0C || command == 0x0D)
+                   ? Mc1Retry::Idempotent
+                   : Mc1Retry::Never;
+    return Mc1Retry::Never;
+}
+
 Result<QByteArray> mc1Request(const Mc1Telegram& telegram, const QByteArray& parameters) {
     const bool fits =
         telegram.requestData >= 0

@@ -72,6 +72,16 @@ QList<Mc1Telegram> mc1Catalogue(Mc1Variant variant);
 // The row of `op` for `variant`, nullptr when the variant lacks it.
 const Mc1Telegram* mc1Find(Mc1Variant variant, Mc1Op op);
 
+// The controller's side: the row a request starting with `opcode` (and,
+// for SYSDATA, `command`) means on `variant`, nullptr when it means none.
+const Mc1Telegram* mc1FindByOpcode(Mc1Variant variant, quint8 opcode, int command);
+
+// Axis commands differ in what a repeat does: a stop (AXIS_NODATA 08, 09),
+// an error acknowledgement (11) and setting override, speed, ramp or a
+// preloaded absolute position (AXIS_DATA 0A, 0C, 0D, 02) leave the same
+// state; every start or move acts again.
+Mc1Retry mc1AxisRetry(Mc1Op op, quint8 command);
+
 // The request for `telegram` with its parameters (after the command byte,
 // which is added): refused when their count does not fit the row.
 Result<QByteArray> mc1Request(const Mc1Telegram& telegram, const QByteArray& parameters);

@@ -3,6 +3,8 @@
 # camcon/, the simulated CamCon.
 target_sources(cambench_sim PRIVATE
   camcon/sim_axis.cpp
+  mc1/sim_mc1_controller.cpp
+  mc1/sim_mc1_controller.h
   camcon/sim_axis.h
   camcon/sim_cam_handlers.cpp
   camcon/sim_cam_store.cpp

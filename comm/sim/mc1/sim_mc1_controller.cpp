@@ -1,0 +1,297 @@
+#include "sim_mc1_controller.h"
+
+#include "comm/mc1/mc1_catalogue.h"
+
+#include <cmath>
+
+namespace cambench::comm {
+
+namespace {
+
+constexpr int kMemorySize = 0x10000;  // 16-bit addresses (provisional P1)
+constexpr int kMaxBlock = 56;         // RDBLOCK
+constexpr int kMaxRead = 125;         // RDMEM
+constexpr quint32 kUdbAddress = 0x00010000;
+
+QByteArray ack() {
+    return QByteArray(1, char(kMc1Ack));
+}
+
+QByteArray nak() {
+    return QByteArray(1, char(kMc1Nak));
+}
+
+quint8 at(const QByteArray& data, int index) {
+    return quint8(data.at(index));
+}
+
+qint64 wrapped(qint64 value, int bits) {
+    const qint64 span = qint64(1) << bits;
+    value &= span - 1;
+    return value >= span / 2 ? value - span : value;
+}
+
+}  // namespace
+
+SimMc1Controller::SimMc1Controller(Mc1Variant variant)
+    : m_variant(variant), m_memory(kMemorySize, '\0') {}
+
+void SimMc1Controller::setVariable(int number, qint64 value) {
+    m_variables.insert(number, wrapped(value, mc1VariableBits(m_variant)));
+}
+
+quint8 SimMc1Controller::flagPage() const {
+    return isMc200(m_variant) ? 0x00 : 0x7F;
+}
+
+QByteArray& SimMc1Controller::page(quint8 number) {
+    auto it = m_pages.find(number);
+    if (it == m_pages.end()) it = m_pages.insert(number, QByteArray(256, '\0'));
+    return *it;
+}
+
+quint8 SimMc1Controller::externalByte(quint8 number, quint8 address) const {
+    return m_pages.contains(number) ? quint8(m_pages.value(number).at(address)) : 0;
+}
+
+int SimMc1Controller::requestLength(const QByteArray& bytes) const {
+    if (bytes.isEmpty()) return 0;
+    const quint8 opcode = at(bytes, 0);
+    const bool sysdata = opcode == 0x92 || opcode == 0x93 || opcode == 0x96;
+    if (sysdata && bytes.size() < 3) return 0;
+    const Mc1Telegram* t = mc1FindByOpcode(m_variant, opcode, sysdata ? at(bytes, 2) : -1);
+    if (!t) return -1;
+    if (t->requestData >= 0) return 2 + (t->command >= 0 ? 1 : 0) + t->requestData;
+    // WRMEM: address u16, n, then n bytes.
+    return bytes.size() < 5 ? 0 : 5 + at(bytes, 4);
+}
+
+QByteArray SimMc1Controller::handle(const QByteArray& request, qint64 nowMs) {
+    if (request.size() < 2 || requestLength(request) != request.size() ||
+        mc1Checksum(request) != at(request, 1))
+        return nak();
+    return answer(request, nowMs);
+}
+
+QByteArray SimMc1Controller::answer(const QByteArray& request, qint64 nowMs) {
+    const quint8 opcode = at(request, 0);
+    const bool sysdata = opcode == 0x92 || opcode == 0x93 || opcode == 0x96;
+    const Mc1Telegram& t = *mc1FindByOpcode(m_variant, opcode, sysdata ? at(request, 2) : -1);
+    const QByteArray p = request.mid(sysdata ? 3 : 2);
+    const auto u16 = [&p](int i) { return int(mc1FromLittleEndian(p.mid(i, 2), false)); };
+    const auto reply = [&t](const QByteArray& data) { return mc1Telegram(t.answerOpcode, data); };
+    switch (t.op) {
+        case Mc1Op::ReadVariable:
+            return reply(
+                mc1LittleEndian(m_variables.value(u16(0)), mc1VariableBits(m_variant) / 8));
+        case Mc1Op::WriteVariable:
+            // 24 bits, sign-extended on an MC200 (provisional P3).
+            setVariable(u16(0), mc1FromLittleEndian(p.mid(2, 3), true));
+            return ack();
+        case Mc1Op::WriteVariable32:
+            setVariable(u16(0), mc1FromLittleEndian(p.mid(2, 4), true));
+            return ack();
+        case Mc1Op::ReadByteInternal:
+            return reply(QByteArray(1, char(m_ram[at(p, 0)])));
+        case Mc1Op::WriteByteInternal:
+            m_ram[at(p, 0)] = at(p, 1);
+            return ack();
+        case Mc1Op::ReadByteExternal:
+            return reply(QByteArray(1, char(externalByte(at(p, 1), at(p, 0)))));
+        case Mc1Op::WriteByteExternal:
+            page(at(p, 1))[at(p, 0)] = char(at(p, 2));
+            return ack();
+        case Mc1Op::WriteBitInternal:
+        case Mc1Op::WriteBitExternal: {
+            // 2^bit sets the bit, NOT 2^bit clears it; anything else is NAKed.
+            const quint8 flag = at(p, 1);
+            const int ones = __builtin_popcount(flag);
+            if (ones != 1 && ones != 7) return nak();
+            const quint8 address = at(p, 0);
+            const bool internal = t.op == Mc1Op::WriteBitInternal;
+            const quint8 before = internal ? m_ram[address] : externalByte(flagPage(), address);
+            const quint8 after = ones == 1 ? quint8(before | flag) : quint8(before & flag);
+            if (internal)
+                m_ram[address] = after;
+            else
+                page(flagPage())[address] = char(after);
+            return ack();
+        }
+        case Mc1Op::ReadBlock: {
+            const int n = at(p, 3);
+            if (n < 1 || n > kMaxBlock) return nak();
+            QByteArray data;
+            for (int i = 0; i < n; ++i) {
+                const quint8 address = quint8(at(p, 0) + i);
+                data.append(char(at(p, 2) ? externalByte(at(p, 1), address) : m_ram[address]));
+            }
+            return reply(data);
+        }
+        case Mc1Op::ReadMemory6:
+            return reply(m_memory.mid(u16(0), 6).leftJustified(6, '\0'));
+        case Mc1Op::ReadMemory: {
+            const int n = at(p, 2);
+            if (n < 1 || n > kMaxRead) return nak();
+            return reply(m_memory.mid(u16(0), n).leftJustified(n, '\0'));
+        }
+        case Mc1Op::WriteMemory: {
+            const int n = at(p, 2);
+            const int address = u16(0);
+            if (address + n > kMemorySize) return nak();
+            m_memory.replace(address, n, p.mid(3, n));
+            return ack();
+        }
+        case Mc1Op::ReadStatus:
+            return reply(mc1LittleEndian(m_status.value(u16(0)), 4));
+        case Mc1Op::WriteStatus:
+            m_status.insert(u16(0), qint32(mc1FromLittleEndian(p.mid(2, 4), true)));
+            return ack();
+        case Mc1Op::ReadTable: {
+            // Logical axis n is physical axis n-1, a servo (type 1): provisional.
+            const int axis = at(p, 2);
+            if (axis < 1 || axis > int(m_axes.size())) return nak();
+            QByteArray data;
+            data.append(char(axis - 1));
+            data.append(char(1));
+            return reply(data);
+        }
+        case Mc1Op::ProgramStatus: {
+            const quint8 flags = quint8((m_present ? 1 : 0) | (m_running ? 2 : 0));
+            return reply(QByteArray(1, char(flags)) + mc1LittleEndian(m_pc, 2));
+        }
+        case Mc1Op::ProgramStart:
+            if (!m_present) return nak();
+            m_running = true;
+            return ack();
+        case Mc1Op::ProgramStop:
+            m_running = false;
+            return ack();
+        case Mc1Op::ProgramStep:
+            if (!m_present) return nak();
+            m_running = false;
+            ++m_pc;
+            return ack();
+        case Mc1Op::ProgramDelete:
+            m_present = m_running = false;
+            m_pc = 0;
+            return ack();
+        case Mc1Op::EndOfTransfer:
+            m_present = true;
+            m_running = false;
+            m_pc = 0;
+            return ack();
+        case Mc1Op::UdbAddress:
+            return reply(mc1LittleEndian(kUdbAddress, 4));
+        case Mc1Op::Reset:
+            m_running = false;
+            m_pc = 0;
+            if (at(p, 0) & 2) m_variables.clear();  // b1: total wipe
+            return ack();
+        case Mc1Op::PrepareTransfer:
+        case Mc1Op::Display:
+            return ack();
+        case Mc1Op::Flash:
+            if (at(p, 0) == 1) {
+                m_flashedVariables = m_variables;
+            } else if (at(p, 0) == 2) {
+                m_variables = m_flashedVariables;
+            } else {
+                return nak();
+            }
+            return ack();
+        case Mc1Op::AxisCommand:
+            return axisCommand(at(p, 0), at(p, 1), 0, false, nowMs);
+        case Mc1Op::AxisDataCommand:
+            return axisCommand(at(p, 0), at(p, 1), qint32(mc1FromLittleEndian(p.mid(2, 4), true)),
+                               true, nowMs);
+    }
+    return nak();
+}
+
+void SimMc1Controller::startMove(int axis, double target, qint64 nowMs) {
+    Axis& a = m_axes[axis];
+    a.from = axisPosition(axis + 1, nowMs);
+    a.target = target;
+    a.startMs = nowMs;
+    a.continuous = false;
+}
+
+QByteArray SimMc1Controller::axisCommand(int logical, quint8 command, qint32 value, bool withValue,
+                                         qint64 nowMs) {
+    if (logical < 1 || logical > int(m_axes.size())) return nak();
+    const int i = logical - 1;
+    Axis& a = m_axes[i];
+    const double here = axisPosition(logical, nowMs);
+    if (!withValue) {
+        switch (command) {
+            case 0x06:  // home
+                a.homed = true;
+                startMove(i, 0, nowMs);
+                return ack();
+            case 0x07:  // start to the preloaded value
+                startMove(i, a.target, nowMs);
+                return ack();
+            case 0x08:  // stop (programmed ramp)
+            case 0x09:  // stop (maximum ramp)
+                a.from = a.target = here;
+                a.continuous = false;
+                a.startMs = nowMs;
+                return ack();
+            case 0x11:  // acknowledge axis error
+                return ack();
+        }
+        return nak();
+    }
+    switch (command) {
+        case 0x01:  // preload relative
+            a.target = here + value;
+            return ack();
+        case 0x02:  // preload absolute
+            a.target = value;
+            return ack();
+        case 0x03:  // start to absolute
+        case 0x12:
+            startMove(i, value, nowMs);
+            return ack();
+        case 0x04:  // start relative
+        case 0x13:
+            startMove(i, here + value, nowMs);
+            return ack();
+        case 0x05:  // continuous
+            a.from = here;
+            a.startMs = nowMs;
+            a.continuous = true;
+            a.direction = value ? 1 : -1;
+            return ack();
+        case 0x0C:  // speed
+        case 0x0E:
+            if (value <= 0) return nak();
+            a.from = here;
+            a.startMs = nowMs;
+            a.speed = value;
+            return ack();
+        case 0x00:
+        case 0x0A:
+        case 0x0B:
+        case 0x0D:
+        case 0x10:
+            return ack();
+    }
+    return nak();
+}
+
+qint32 SimMc1Controller::axisPosition(int logical, qint64 nowMs) const {
+    const Axis& a = m_axes.at(logical - 1);
+    const double travelled = a.speed * double(nowMs - a.startMs) / 1000.0;
+    if (a.continuous) return qint32(std::lround(a.from + a.direction * travelled));
+    const double distance = a.target - a.from;
+    if (std::abs(distance) <= travelled) return qint32(std::lround(a.target));
+    return qint32(std::lround(a.from + (distance > 0 ? travelled : -travelled)));
+}
+
+bool SimMc1Controller::axisMoving(int logical, qint64 nowMs) const {
+    const Axis& a = m_axes.at(logical - 1);
+    return a.continuous || axisPosition(logical, nowMs) != qint32(std::lround(a.target));
+}
+
+}  // namespace cambench::comm

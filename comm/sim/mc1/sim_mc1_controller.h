@@ -1,0 +1,69 @@
+#pragma once
+
+#include "comm/mc1/mc1_variant.h"
+
+#include <QByteArray>
+#include <QMap>
+
+#include <array>
+
+namespace cambench::comm {
+
+// A simulated MC100 or MC200 of one variant: what a complete request
+// telegram does to it and the answer it gives (an empty answer: none).
+// Variables, internal RAM, external RAM pages, memory, status parameters,
+// the PLC program's state and eight axes that move with time. Like the
+// real one it checks neither variable numbers nor write addresses, and it
+// NAKs an opcode its variant lacks, a bad checksum or a bad length.
+class SimMc1Controller {
+public:
+    explicit SimMc1Controller(Mc1Variant variant);
+
+    Mc1Variant variant() const { return m_variant; }
+    // `request` is one whole telegram; `nowMs` a monotonic clock (axes).
+    QByteArray handle(const QByteArray& request, qint64 nowMs);
+    // The length of the telegram that starts `bytes` once enough of it is
+    // there to tell (WRMEM carries its n); 0 while unknown; -1 for a first
+    // byte that starts no telegram of this variant.
+    int requestLength(const QByteArray& bytes) const;
+
+    // State, for tests and the demo.
+    qint64 variable(int number) const { return m_variables.value(number); }
+    void setVariable(int number, qint64 value);
+    quint8 internalByte(quint8 address) const { return m_ram[address]; }
+    quint8 externalByte(quint8 page, quint8 address) const;
+    bool running() const { return m_running; }
+    quint16 programCounter() const { return m_pc; }
+    qint32 axisPosition(int axis, qint64 nowMs) const;
+    bool axisMoving(int axis, qint64 nowMs) const;
+
+private:
+    struct Axis {
+        double from = 0;
+        double target = 0;
+        qint64 startMs = 0;
+        double speed = 1000;  // units per second
+        bool homed = false;
+        bool continuous = false;
+        int direction = 1;
+    };
+    QByteArray answer(const QByteArray& request, qint64 nowMs);
+    QByteArray axisCommand(int axis, quint8 command, qint32 value, bool withValue, qint64 nowMs);
+    void startMove(int axis, double target, qint64 nowMs);
+    QByteArray& page(quint8 page);
+    quint8 flagPage() const;
+
+    Mc1Variant m_variant;
+    QMap<int, qint64> m_variables;
+    std::array<quint8, 256> m_ram{};
+    QMap<quint8, QByteArray> m_pages;
+    QByteArray m_memory;
+    QMap<int, qint32> m_status;
+    bool m_present = true;
+    bool m_running = false;
+    quint16 m_pc = 0;
+    QMap<int, qint64> m_flashedVariables;
+    std::array<Axis, 8> m_axes{};
+};
+
+}  // namespace cambench::comm
