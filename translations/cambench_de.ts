@@ -6041,6 +6041,14 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>this protocol has no bus to scan</source>
         <translation>dieses Protokoll hat keinen Bus zum Absuchen</translation>
     </message>
+    <message>
+        <source>the %1</source>
+        <translation>die %1</translation>
+    </message>
+    <message>
+        <source>check the cable (MC100: RxD/TxD crossed; MC200: 1:1, and DTR high, RTS low power its interface), the baud rate (MC100: 9600) and the controller&apos;s variant</source>
+        <translation>prüfen Sie das Kabel (MC100: RxD/TxD gekreuzt; MC200: 1:1, und DTR high, RTS low versorgen seine Schnittstelle), die Baudrate (MC100: 9600) und die Variante der Steuerung</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>

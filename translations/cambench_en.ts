@@ -6039,6 +6039,14 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>this protocol has no bus to scan</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check the cable (MC100: RxD/TxD crossed; MC200: 1:1, and DTR high, RTS low power its interface), the baud rate (MC100: 9600) and the controller&apos;s variant</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>

@@ -14,4 +14,8 @@ target_sources(cambench_comm PRIVATE
   mc1/mc1_address.cpp
   mc1/mc1_ascii.h
   mc1/mc1_ascii.cpp
+  mc1/mc1_backend.h
+  mc1/mc1_backend.cpp
+  mc1/mc1_link.h
+  mc1/mc1_link.cpp
 )

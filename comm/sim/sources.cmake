@@ -5,6 +5,8 @@ target_sources(cambench_sim PRIVATE
   camcon/sim_axis.cpp
   mc1/sim_mc1_controller.cpp
   mc1/sim_mc1_controller.h
+  mc1/sim_mc1_line.cpp
+  mc1/sim_mc1_line.h
   camcon/sim_axis.h
   camcon/sim_cam_handlers.cpp
   camcon/sim_cam_store.cpp

@@ -1,0 +1,88 @@
+#include "mc1_backend.h"
+
+#include <QCoreApplication>
+
+namespace cambench::comm {
+
+namespace {
+
+bool isSysData(quint8 opcode) {
+    return opcode == 0x92 || opcode == 0x93 || opcode == 0x96;
+}
+
+}  // namespace
+
+Mc1Backend::Mc1Backend(Mc1Variant variant) : m_variant(variant) {}
+
+QString Mc1Backend::describe() const {
+    return QCoreApplication::translate("cambench::comm", "the %1").arg(mc1VariantName(m_variant));
+}
+
+QString Mc1Backend::checkHint() const {
+    return QCoreApplication::translate(
+        "cambench::comm",
+        "check the cable (MC100: RxD/TxD crossed; MC200: 1:1, and DTR high, RTS low power its "
+        "interface), the baud rate (MC100: 9600) and the controller's variant");
+}
+
+Mc1Expectation Mc1Backend::expectationFor(Mc1Variant variant, const QByteArray& telegram) {
+    if (telegram.isEmpty()) return {};
+    const quint8 opcode = quint8(telegram.at(0));
+    const int command = isSysData(opcode) && telegram.size() > 2 ? quint8(telegram.at(2)) : -1;
+    const Mc1Telegram* row = mc1FindByOpcode(variant, opcode, command);
+    if (!row) return {};
+    return mc1ExpectedAnswer(*row, telegram.mid(row->command >= 0 ? 3 : 2));
+}
+
+void Mc1Backend::beginRequest(const Request& request) {
+    m_expected = expectationFor(m_variant, request.message);
+}
+
+BackendStep Mc1Backend::startAttempt(const Request& request, int, qint64) {
+    BackendStep step;
+    step.write = request.message;
+    step.sent = true;
+    return step;
+}
+
+BackendStep Mc1Backend::feed(QByteArrayView bytes, qint64) {
+    BackendStep step;
+    m_buffer.append(bytes.toByteArray());
+    for (;;) {
+        const QByteArray before = m_buffer;
+        const std::optional<Result<Mc1Answer>> answer = takeMc1Answer(m_buffer, m_expected);
+        if (!answer) break;
+        Incoming in;
+        const qsizetype used = before.size() - m_buffer.size();
+        in.wire = before.left(used > 0 ? used : before.size());
+        if (!answer->ok()) {
+            in.kind = Incoming::Damaged;
+            in.detail = answer->error().message;
+        } else if ((*answer)->kind == Mc1Answer::Kind::Data) {
+            in.message = in.wire.mid(in.wire.size() - (*answer)->data.size() - 2);
+        } else {
+            in.message =
+                QByteArray(1, char((*answer)->kind == Mc1Answer::Kind::Ack ? kMc1Ack : kMc1Nak));
+        }
+        step.incoming << in;
+        if (m_buffer.isEmpty()) break;
+    }
+    return step;
+}
+
+QByteArray Mc1Backend::resetInput() {
+    QByteArray dropped = m_buffer;
+    m_buffer.clear();
+    return dropped;
+}
+
+qint64 Mc1Backend::requestWireBytes(const Request& request) const {
+    return request.message.size();
+}
+
+qint64 Mc1Backend::replyWireBytes(const Request& request) const {
+    return std::max<qint64>(expectationFor(m_variant, request.message).length,
+                            request.longestReplyBytes);
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "mc1_catalogue.h"
+
+#include "comm/engine/request_engine.h"
+
+namespace cambench::comm {
+
+// MC-1 telegrams through the request engine: each sent with the repeat
+// rule its catalogue row (and, for axis commands, its command) gives, its
+// answer checked. A NAK is the controller's refusal (unknown to the
+// variant, bad parameters) and is reported as such.
+class Mc1Link {
+public:
+    Mc1Link(RequestEngine& engine, Mc1Variant variant) : m_engine(engine), m_variant(variant) {}
+
+    Mc1Variant variant() const { return m_variant; }
+    void setVariant(Mc1Variant variant) { m_variant = variant; }
+
+    // The answer data (empty for an ACK); an error names the telegram.
+    Result<QByteArray> exchange(Mc1Op op, const QByteArray& parameters);
+    // The last exchange went out more than once although it acts: the
+    // caller must re-read the state and say what it found.
+    bool lastMayHaveActedTwice() const { return m_engine.lastCallMayHaveActedTwice(); }
+
+private:
+    RequestEngine& m_engine;
+    Mc1Variant m_variant;
+};
+
+}  // namespace cambench::comm
