@@ -4,14 +4,6 @@
 
 namespace cambench::comm {
 
-namespace {
-
-bool isSysData(quint8 opcode) {
-    return opcode == 0x92 || opcode == 0x93 || opcode == 0x96;
-}
-
-}  // namespace
-
 Mc1Backend::Mc1Backend(Mc1Variant variant) : m_variant(variant) {}
 
 QString Mc1Backend::describe() const {
@@ -26,10 +18,7 @@ QString Mc1Backend::checkHint() const {
 }
 
 Mc1Expectation Mc1Backend::expectationFor(Mc1Variant variant, const QByteArray& telegram) {
-    if (telegram.isEmpty()) return {};
-    const quint8 opcode = quint8(telegram.at(0));
-    const int command = isSysData(opcode) && telegram.size() > 2 ? quint8(telegram.at(2)) : -1;
-    const Mc1Telegram* row = mc1FindByOpcode(variant, opcode, command);
+    const Mc1Telegram* row = mc1RequestRow(variant, telegram);
     if (!row) return {};
     return mc1ExpectedAnswer(*row, telegram.mid(row->command >= 0 ? 3 : 2));
 }

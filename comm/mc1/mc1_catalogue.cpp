@@ -119,6 +119,19 @@ const Mc1Telegram* mc1FindByOpcode(Mc1Variant variant, quint8 opcode, int comman
     return nullptr;
 }
 
+bool mc1HasCommandByte(quint8 opcode) {
+    for (const Row& row : kRows)
+        if (row.telegram.opcode == opcode && row.telegram.command >= 0) return true;
+    return false;
+}
+
+const Mc1Telegram* mc1RequestRow(Mc1Variant variant, const QByteArray& telegram) {
+    if (telegram.isEmpty()) return nullptr;
+    const quint8 opcode = quint8(telegram.at(0));
+    if (!mc1HasCommandByte(opcode)) return mc1FindByOpcode(variant, opcode, -1);
+    return telegram.size() > 2 ? mc1FindByOpcode(variant, opcode, quint8(telegram.at(2))) : nullptr;
+}
+
 Mc1Retry mc1AxisRetry(Mc1Op op, quint8 command) {
     if (op == Mc1Op::AxisCommand)
         return (command == 0x08 || command == 0x09 || command == 0x11) ? Mc1Retry::Idempotent

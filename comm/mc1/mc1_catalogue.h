@@ -75,6 +75,12 @@ const Mc1Telegram* mc1Find(Mc1Variant variant, Mc1Op op);
 // The controller's side: the row a request starting with `opcode` (and,
 // for SYSDATA, `command`) means on `variant`, nullptr when it means none.
 const Mc1Telegram* mc1FindByOpcode(Mc1Variant variant, quint8 opcode, int command);
+// Whether requests with this opcode carry a command byte that picks the
+// telegram (SYSDATA), as the table says.
+bool mc1HasCommandByte(quint8 opcode);
+// The row the request `telegram` (whole, or its first bytes) means on
+// `variant`; nullptr when it means none or its command byte has not come.
+const Mc1Telegram* mc1RequestRow(Mc1Variant variant, const QByteArray& telegram);
 
 // Axis commands differ in what a repeat does: a stop (AXIS_NODATA 08, 09),
 // an error acknowledgement (11) and setting override, speed, ramp or a

@@ -56,10 +56,8 @@ quint8 SimMc1Controller::externalByte(quint8 number, quint8 address) const {
 
 int SimMc1Controller::requestLength(const QByteArray& bytes) const {
     if (bytes.isEmpty()) return 0;
-    const quint8 opcode = at(bytes, 0);
-    const bool sysdata = opcode == 0x92 || opcode == 0x93 || opcode == 0x96;
-    if (sysdata && bytes.size() < 3) return 0;
-    const Mc1Telegram* t = mc1FindByOpcode(m_variant, opcode, sysdata ? at(bytes, 2) : -1);
+    if (mc1HasCommandByte(at(bytes, 0)) && bytes.size() < 3) return 0;
+    const Mc1Telegram* t = mc1RequestRow(m_variant, bytes);
     if (!t) return -1;
     if (t->requestData >= 0) return 2 + (t->command >= 0 ? 1 : 0) + t->requestData;
     // WRMEM: address u16, n, then n bytes.
@@ -74,10 +72,9 @@ QByteArray SimMc1Controller::handle(const QByteArray& request, qint64 nowMs) {
 }
 
 QByteArray SimMc1Controller::answer(const QByteArray& request, qint64 nowMs) {
-    const quint8 opcode = at(request, 0);
-    const bool sysdata = opcode == 0x92 || opcode == 0x93 || opcode == 0x96;
-    const Mc1Telegram& t = *mc1FindByOpcode(m_variant, opcode, sysdata ? at(request, 2) : -1);
-    const QByteArray p = request.mid(sysdata ? 3 : 2);
+    // handle() checked the length, so the row exists.
+    const Mc1Telegram& t = *mc1RequestRow(m_variant, request);
+    const QByteArray p = request.mid(t.command >= 0 ? 3 : 2);
     const auto u16 = [&p](int i) { return int(mc1FromLittleEndian(p.mid(i, 2), false)); };
     const auto reply = [&t](const QByteArray& data) { return mc1Telegram(t.answerOpcode, data); };
     switch (t.op) {
