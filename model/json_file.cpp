@@ -3,6 +3,7 @@
 #include "json_reader.h"
 
 #include <QCoreApplication>
+#include <QCryptographicHash>
 #include <QJsonDocument>
 #include <QJsonParseError>
 
@@ -88,6 +89,34 @@ QJsonObject jsonFileHeader(const JsonFileType& type) {
 
 QByteArray toIndentedJson(const QJsonObject& object) {
     return QJsonDocument(object).toJson(QJsonDocument::Indented);
+}
+
+namespace {
+
+QByteArray hashOf(const QJsonObject& withoutHash) {
+    return QCryptographicHash::hash(QJsonDocument(withoutHash).toJson(QJsonDocument::Compact),
+                                    QCryptographicHash::Sha256)
+        .toHex();
+}
+
+}  // namespace
+
+void sealWithHash(QJsonObject& root) {
+    root.insert(QStringLiteral("sha256"), QString::fromLatin1(hashOf(root)));
+}
+
+Status takeCheckedHash(QJsonObject& root) {
+    const QJsonValue stored = root.take(QStringLiteral("sha256"));
+    if (!stored.isString())
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model", "sha256: the checksum is missing."));
+    if (stored.toString().toLatin1().toLower() != hashOf(root))
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model",
+                                        "The file was changed or damaged: its SHA-256 "
+                                        "checksum does not match its content. Do not "
+                                        "restore it; take a new backup."));
+    return success();
 }
 
 }  // namespace cambench

@@ -28,6 +28,13 @@ Result<QJsonObject> parseJsonFile(const QByteArray& bytes, const JsonFileType& t
 // The envelope of a new file.
 QJsonObject jsonFileHeader(const JsonFileType& type);
 
+// Files that guard their content (backups, images) carry "sha256": the
+// SHA-256 of the compact JSON of the same object without it. sealWithHash
+// adds it; takeCheckedHash removes it and refuses a file whose content no
+// longer matches (changed or damaged: not to be restored).
+void sealWithHash(QJsonObject& root);
+Status takeCheckedHash(QJsonObject& root);
+
 // Indented JSON: QJsonObject keeps keys sorted, so equal data give
 // byte-identical files that diff cleanly.
 QByteArray toIndentedJson(const QJsonObject& object);

@@ -2,6 +2,7 @@
 #include "commands.h"
 
 #include "app/cli/camcon/camcon_commands.h"
+#include "app/cli/mc1/mc1_commands.h"
 
 namespace cambench::cli {
 
@@ -9,6 +10,7 @@ void registerCliCommands() {
     CommandRegistry& registry = CommandRegistry::instance();
     registerShellCommands(registry);
     registerCamConCommands(registry);
+    registerMc1Commands(registry);
 }
 
 }  // namespace cambench::cli

@@ -46,9 +46,11 @@ comm::ConnectionSettings GlobalOptions::connection() const {
 
 comm::ProtocolSettingsPtr GlobalOptions::protocolSettings() const {
     std::unique_ptr<comm::ProtocolSettings> settings = protocolInfo().makeSettings();
-    settings->fromMap({{QStringLiteral("device"), device},
-                       {QStringLiteral("pcNumber"), pcNumber},
-                       {QStringLiteral("timeoutMs"), timeoutMs}});
+    QVariantMap map{{QStringLiteral("device"), device},
+                    {QStringLiteral("pcNumber"), pcNumber},
+                    {QStringLiteral("timeoutMs"), timeoutMs}};
+    if (!variant.isEmpty()) map.insert(QStringLiteral("variant"), variant);
+    settings->fromMap(map);
     return comm::ProtocolSettingsPtr(std::move(settings));
 }
 
@@ -86,7 +88,7 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         static const QStringList kNames = {
             QStringLiteral("--port"),    QStringLiteral("--family"), QStringLiteral("--protocol"),
             QStringLiteral("--baud"),    QStringLiteral("--device"), QStringLiteral("--pc-number"),
-            QStringLiteral("--timeout"), QStringLiteral("--log")};
+            QStringLiteral("--timeout"), QStringLiteral("--log"),    QStringLiteral("--variant")};
         QString name;
         QString inlineValue;
         for (const QString& candidate : kNames) {
@@ -116,6 +118,8 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
             options.protocol = info->id;
         } else if (name == QLatin1String("--log")) {
             options.logFile = *value;
+        } else if (name == QLatin1String("--variant")) {
+            options.variant = value->trimmed().toLower();
         } else {
             struct Range {
                 const char* name;
@@ -137,6 +141,8 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         }
     }
     if (options.command.isEmpty()) return usageError(QStringLiteral("no COMMAND given"));
+    // Without --family, --protocol names it; without both, the default family.
+    if (options.family.isEmpty() && protocolGiven) options.family = options.protocolInfo().familyId;
     if (options.family.isEmpty()) options.family = comm::FamilyRegistry::instance().defaultId();
     // The protocol follows the family: its default, or one of its own.
     const comm::FamilyInfo* family = comm::FamilyRegistry::instance().find(options.family);
@@ -146,6 +152,16 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
     } else if (options.protocolInfo().familyId != family->id) {
         return usageError(QStringLiteral("--protocol %1 is a protocol of the %2 family, not of %3")
                               .arg(options.protocol, options.protocolInfo().familyId, family->id));
+    }
+    if (!options.variant.isEmpty()) {
+        const QStringList variants = options.protocolInfo().makeSettings()->variantKeys();
+        if (variants.isEmpty())
+            return usageError(QStringLiteral("--variant is for families with variants; the %1 "
+                                             "protocol has none")
+                                  .arg(options.protocol));
+        if (!variants.contains(options.variant))
+            return usageError(QStringLiteral("--variant must be one of %1, not \"%2\"")
+                                  .arg(variants.join(QStringLiteral(", ")), options.variant));
     }
     return options;
 }
@@ -183,8 +199,9 @@ Result<int> CommandArgs::takeIntOption(const QString& name, int fallback, int mi
 QString CommandArgs::takePositional() {
     for (int i = 0; i < m_args.size(); ++i) {
         const QString& arg = m_args.at(i);
-        // A lone "-" is a positional (stdin/stdout); anything else with a dash is an option.
-        if (arg.startsWith(QLatin1Char('-')) && arg != QLatin1String("-")) continue;
+        // A lone "-" is stdin/stdout and "-5" a negative number.
+        const bool negative = arg.size() > 1 && arg.at(1).isDigit();
+        if (arg.startsWith(QLatin1Char('-')) && arg != QLatin1String("-") && !negative) continue;
         return m_args.takeAt(i);
     }
     return {};
@@ -229,8 +246,8 @@ QString usageText() {
     return QStringLiteral(
                "Usage: cambench-cli [--port PORT] [--family FAMILY] [--protocol PROTOCOL] [--baud "
                "N]\n"
-               "                    [--device N] [--pc-number N] [--timeout MS] [--log FILE] "
-               "COMMAND\n"
+               "                    [--device N] [--pc-number N] [--variant V] [--timeout MS]\n"
+               "                    [--log FILE] COMMAND\n"
                "\n"
                "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
                "default)\n"
@@ -241,6 +258,8 @@ QString usageText() {
                "  --baud N      line speed; overrides the protocol's default\n"
                "  --device N    bus protocols: device number 0..63 (default 0)\n"
                "  --pc-number N Multiuser number of this PC 0..63 (default 63)\n"
+               "  --variant V   the device's variant, for families that have them (see below);\n"
+               "                auto (the default) probes and names what it found\n"
                "  --timeout MS  reply timeout per attempt (default: derived from the baud rate)\n"
                "  --log FILE    write the traffic (hex and ASCII, user numbers masked) to FILE\n"
                "\n"

@@ -19,6 +19,7 @@ struct GlobalOptions {
     int timeoutMs = 0;  // 0 = derived from the line
     bool timeoutGiven = false;
     QString logFile;
+    QString variant;  // --variant: a key of the protocol's variantKeys(); empty: its default
     QString command;
     QStringList commandArgs;  // everything after COMMAND
 

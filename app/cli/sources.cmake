@@ -2,7 +2,7 @@
 # The front every family shares - options, exit codes, output, the session,
 # the command registry, the shell's own commands - is a library, so that a
 # test can host a family of its own in it.
-add_library(cambench_cli_front STATIC
+add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/exit_codes.h
   cli/cli_options.h
   cli/cli_options.cpp
@@ -30,5 +30,6 @@ add_executable(cambench-cli
 )
 # The CamCon's command groups.
 include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/mc1/sources.cmake)
 target_link_libraries(cambench-cli PRIVATE cambench_cli_front cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

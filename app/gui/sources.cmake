@@ -1,7 +1,7 @@
 # The desktop application: main() only wires the libraries together.
 # The GUI's registrations (one line per protocol widget), also linked by
 # the GUI tests.
-add_library(cambench_gui_registry STATIC gui/gui_registry.h gui/gui_registry.cpp)
+add_library(cambench_gui_registry ${CAMBENCH_LIBRARY_TYPE} gui/gui_registry.h gui/gui_registry.cpp)
 target_link_libraries(cambench_gui_registry PUBLIC cambench_ui)
 
 add_executable(cambench gui/main.cpp)

@@ -7,7 +7,9 @@
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/mc1/mc1_family.h"
+#include "comm/mc1/mc1_protocol.h"
 #include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/mc1/mc1_simulator.h"
 #include "comm/sim/sim_transport.h"
 #include "comm/transport/transport_registry.h"
 
@@ -26,9 +28,11 @@ void registerBuiltins() {
     comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
     comm::registerCamConAscii(protocols);
     comm::registerCamConTable(protocols);
+    comm::registerMc1Protocol(protocols);
 
     comm::SimulatorRegistry& simulators = comm::SimulatorRegistry::instance();
     comm::registerCamConSimulator(simulators);
+    comm::registerMc1Simulator(simulators);
 }
 
 }  // namespace cambench

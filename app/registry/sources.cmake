@@ -1,6 +1,6 @@
 # What CamBench can talk to: transports, protocols, simulators. Linked by
 # every program and by the tests that open connections.
-add_library(cambench_registry STATIC
+add_library(cambench_registry ${CAMBENCH_LIBRARY_TYPE}
   registry/builtin_registry.h
   registry/builtin_registry.cpp
 )

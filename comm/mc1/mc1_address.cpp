@@ -72,8 +72,8 @@ Result<Mc1BitAddress> mc100(const Mc1Point& point) {
     switch (point.area) {
         case Mc1Area::Flag:
             // External page 0x7F: 2048 flags fill it, M1–499 then M2000–3548.
-            if (n >= 1 && n <= 499) return externalAt(0x7F, n - 1);
-            if (n >= 2000 && n <= 3548) return externalAt(0x7F, n - 1501);
+            if (n >= 1 && n <= 499) return externalAt(mc1ExternalFlagPage(false), n - 1);
+            if (n >= 2000 && n <= 3548) return externalAt(mc1ExternalFlagPage(false), n - 1501);
             if (const auto at = fromRuns(kFlagRuns, n)) return *at;
             return noSuch(point, false,
                           QStringLiteral("flags M1–M499, M500–M1088 as table 47 lists them, "
@@ -94,7 +94,7 @@ Result<Mc1BitAddress> mc200(const Mc1Point& point) {
     const int n = point.number;
     switch (point.area) {
         case Mc1Area::Flag:
-            if (n >= 1 && n <= 2048) return externalAt(0x00, n - 1);
+            if (n >= 1 && n <= 2048) return externalAt(mc1ExternalFlagPage(true), n - 1);
             if (n >= 2049 && n <= 3584) return internalAt(0x00, n - 2049);
             return noSuch(point, true, QStringLiteral("flags M1–M3584"));
         case Mc1Area::Input:
@@ -132,6 +132,25 @@ QString mc1PointText(const Mc1Point& point) {
 
 Result<Mc1BitAddress> mc1BitAddress(const Mc1Point& point, bool isMc200) {
     return isMc200 ? mc200(point) : mc100(point);
+}
+
+QList<int> mc1PointNumbers(Mc1Area area, bool isMc200) {
+    QList<int> numbers;
+    // The highest number any table names: M3584 (MC200), E579 (MC100).
+    const int highest = area == Mc1Area::Flag ? 3584 : area == Mc1Area::Input ? 579 : 256;
+    for (int n = 1; n <= highest; ++n)
+        if (mc1BitAddress(Mc1Point{area, n}, isMc200).ok()) numbers << n;
+    return numbers;
+}
+
+quint8 mc1ExternalFlagPage(bool isMc200) {
+    return isMc200 ? 0x00 : 0x7F;
+}
+
+Mc1Point mc1ExternalFlagAt(int index, bool isMc200) {
+    // MC100: M1–499 then M2000–3548 (the inverse of mc100() above).
+    if (isMc200 || index < 499) return {Mc1Area::Flag, index + 1};
+    return {Mc1Area::Flag, index + 1501};
 }
 
 }  // namespace cambench::comm

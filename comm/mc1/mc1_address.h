@@ -2,6 +2,7 @@
 
 #include "model/result.h"
 
+#include <QList>
 #include <QString>
 
 namespace cambench::comm {
@@ -44,5 +45,13 @@ QString mc1PointText(const Mc1Point& point);
 // and special inputs E500–579 (table 48), outputs 1–128. MC200: flags
 // M1–2048 external (page 0), M2049–3584 internal, inputs and outputs 1–256.
 Result<Mc1BitAddress> mc1BitAddress(const Mc1Point& point, bool mc200);
+
+// Every number of `area` that exists on an MC100 or MC200, ascending.
+QList<int> mc1PointNumbers(Mc1Area area, bool mc200);
+// The external RAM page of the flags that live there (MC100 0x7F, MC200 0).
+quint8 mc1ExternalFlagPage(bool mc200);
+// The flag at bit `index` (byte index >> 3, bit index & 7) of that page:
+// every one of its 2048 bits is a flag on both controllers.
+Mc1Point mc1ExternalFlagAt(int index, bool mc200);
 
 }  // namespace cambench::comm

@@ -25,6 +25,14 @@ Mc1Expectation Mc1Backend::expectationFor(Mc1Variant variant, const QByteArray& 
 
 void Mc1Backend::beginRequest(const Request& request) {
     m_expected = expectationFor(m_variant, request.message);
+    const Mc1Telegram* row = mc1RequestRow(m_variant, request.message);
+    if (m_probing && row && row->op == Mc1Op::ReadVariable) {
+        // The other width's row: an MC200's if `m_variant` is an MC100.
+        const Mc1Variant other = isMc200(m_variant) ? Mc1Variant::Mc100V1 : Mc1Variant::Mc200V1;
+        const Mc1Expectation theirs = expectationFor(other, request.message);
+        m_expected.otherOpcode = theirs.opcode;
+        m_expected.otherLength = theirs.length;
+    }
 }
 
 BackendStep Mc1Backend::startAttempt(const Request& request, int, qint64) {

@@ -21,6 +21,9 @@ public:
 
     Mc1Variant variant() const { return m_variant; }
     void setVariant(Mc1Variant variant) { m_variant = variant; }
+    // While probing, an RDVAR answer of either width is taken (its width
+    // tells an MC100 from an MC200).
+    void setProbing(bool probing) { m_probing = probing; }
 
     QString describe() const override;
     QString checkHint() const override;
@@ -36,6 +39,7 @@ public:
 
 private:
     Mc1Variant m_variant;
+    bool m_probing = false;
     Mc1Expectation m_expected;
     QByteArray m_buffer;
 };

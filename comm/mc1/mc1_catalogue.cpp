@@ -182,7 +182,8 @@ std::optional<Result<Mc1Answer>> takeMc1Answer(QByteArray& buffer, const Mc1Expe
         return Result<Mc1Answer>(
             Mc1Answer{first == kMc1Ack ? Mc1Answer::Kind::Ack : Mc1Answer::Kind::Nak, {}});
     }
-    if (first != expected.opcode || expected.opcode == kMc1Ack) {
+    const bool other = expected.otherOpcode != 0 && first == expected.otherOpcode;
+    if ((first != expected.opcode || expected.opcode == kMc1Ack) && !other) {
         const QString got = hex(first);
         buffer.clear();
         return Result<Mc1Answer>(Error::communication(
@@ -190,9 +191,10 @@ std::optional<Result<Mc1Answer>> takeMc1Answer(QByteArray& buffer, const Mc1Expe
                 .arg(got, expected.opcode == kMc1Ack ? QStringLiteral("80 (ACK) or 87 (NAK)")
                                                      : hex(expected.opcode))));
     }
-    if (buffer.size() < expected.length) return std::nullopt;
-    const QByteArray telegram = buffer.left(expected.length);
-    buffer.remove(0, expected.length);
+    const int length = other ? expected.otherLength : expected.length;
+    if (buffer.size() < length) return std::nullopt;
+    const QByteArray telegram = buffer.left(length);
+    buffer.remove(0, length);
     if (mc1Checksum(telegram) != quint8(telegram.at(1))) {
         buffer.clear();
         return Result<Mc1Answer>(Error::communication(

@@ -96,6 +96,10 @@ Result<QByteArray> mc1Request(const Mc1Telegram& telegram, const QByteArray& par
 struct Mc1Expectation {
     quint8 opcode = kMc1Ack;
     int length = 1;
+    // While the variant is being probed, RDVAR's answer of the other width
+    // (04 on an MC100, 05 on an MC200) is taken too: 0 = none.
+    quint8 otherOpcode = 0;
+    int otherLength = 0;
 };
 Mc1Expectation mc1ExpectedAnswer(const Mc1Telegram& telegram, const QByteArray& parameters);
 

@@ -5,9 +5,12 @@
 namespace cambench::comm {
 
 void registerMc1Family(FamilyRegistry& registry) {
-    registry.add(FamilyInfo::announced(QStringLiteral("mc1"),
-                                       QStringLiteral("MICRO DESIGN MC100/MC200 (MC-1)"),
-                                       QStringLiteral("mc1")));
+    FamilyInfo family;
+    family.id = QStringLiteral("mc1");
+    family.title = QStringLiteral("MICRO DESIGN MC100/MC200 (MC-1)");
+    family.defaultProtocol = QStringLiteral("mc1");
+    family.built = true;
+    registry.add(family);
 }
 
 }  // namespace cambench::comm

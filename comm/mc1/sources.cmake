@@ -1,6 +1,6 @@
 # The MICRO DESIGN MC100/MC200 (MC-1) family: its protocol core (telegrams of
-# the four variants, answers, address arithmetic); the device, simulator and
-# pages come with issue 14's next steps.
+# the four variants, answers, address arithmetic), the device (Mc1Device,
+# Mc1Controller) and the protocol's registration.
 target_sources(cambench_comm PRIVATE
   mc1/mc1_family.h
   mc1/mc1_family.cpp
@@ -18,4 +18,13 @@ target_sources(cambench_comm PRIVATE
   mc1/mc1_backend.cpp
   mc1/mc1_link.h
   mc1/mc1_link.cpp
+  mc1/mc1_parameters.h
+  mc1/mc1_parameters.cpp
+  mc1/mc1_device.h
+  mc1/mc1_device.cpp
+  mc1/mc1_controller.h
+  mc1/mc1_controller.cpp
+  mc1/mc1_controller_motion.cpp
+  mc1/mc1_protocol.h
+  mc1/mc1_protocol.cpp
 )

@@ -7,7 +7,6 @@
 #include "model/json_reader.h"
 
 #include <QCoreApplication>
-#include <QCryptographicHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 
@@ -25,12 +24,6 @@ constexpr int kEndBlockNumber = 0xFFFF;
 
 QString key(const char* text) {
     return QString::fromLatin1(text);
-}
-
-QByteArray hashOf(const QJsonObject& withoutHash) {
-    return QCryptographicHash::hash(QJsonDocument(withoutHash).toJson(QJsonDocument::Compact),
-                                    QCryptographicHash::Sha256)
-        .toHex();
 }
 
 // Block numbers as the protocol writes them: 4 upper-case hex digits.
@@ -171,7 +164,7 @@ QByteArray eepromImageToJson(const EepromImage& image) {
                                   {key("data"), QString::fromLatin1(block.data.toHex())}});
     }
     root.insert(key("blocks"), blocks);
-    root.insert(key("sha256"), QString::fromLatin1(hashOf(root)));
+    sealWithHash(root);
     return toIndentedJson(root);
 }
 
@@ -179,18 +172,8 @@ Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
     const Result<QJsonObject> parsed = parseJsonFile(bytes, kImageFile);
     if (!parsed) return parsed.error();
     QJsonObject root = *parsed;
+    if (const Status hash = takeCheckedHash(root); !hash) return hash.error();
     JsonReader reader;
-    const QString storedHash = reader.string(
-        root, {}, key("sha256"), QCoreApplication::translate("cambench::model", "checksum"));
-    if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
-    root.remove(key("sha256"));
-    if (storedHash.toLatin1().toLower() != hashOf(root)) {
-        return Error::invalidData(
-            QCoreApplication::translate("cambench::model",
-                                        "The file was changed or damaged: its SHA-256 "
-                                        "checksum does not match its content. Do not "
-                                        "restore it; take a new backup."));
-    }
 
     EepromImage image;
     image.device = readDeviceInfo(reader, reader.object(root, {}, key("device")), key("device"));

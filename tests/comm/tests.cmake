@@ -18,3 +18,4 @@ cambench_add_test(tst_worker_comm_worker SOURCES comm/worker/tst_comm_worker.cpp
 cambench_add_test(tst_mc1_protocol SOURCES comm/mc1/tst_mc1_protocol.cpp LIBS cambench_comm)
 cambench_add_test(tst_sim_mc1_controller SOURCES comm/sim/tst_sim_mc1_controller.cpp LIBS cambench_sim)
 cambench_add_test(tst_mc1_link SOURCES comm/mc1/tst_mc1_link.cpp LIBS cambench_sim)
+cambench_add_test(tst_mc1_device SOURCES comm/mc1/tst_mc1_device.cpp LIBS cambench_sim)

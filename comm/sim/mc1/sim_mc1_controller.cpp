@@ -1,6 +1,8 @@
 #include "sim_mc1_controller.h"
 
+#include "comm/mc1/mc1_address.h"
 #include "comm/mc1/mc1_catalogue.h"
+#include "comm/mc1/mc1_parameters.h"
 
 #include <cmath>
 
@@ -8,10 +10,11 @@ namespace cambench::comm {
 
 namespace {
 
-constexpr int kMemorySize = 0x10000;  // 16-bit addresses (provisional P1)
-constexpr int kMaxBlock = 56;         // RDBLOCK
-constexpr int kMaxRead = 125;         // RDMEM
+constexpr int kMemorySize = kMc1MemorySize;
+constexpr int kMaxBlock = kMc1MaxBlockRead;
+constexpr int kMaxRead = kMc1MaxMemoryRead;
 constexpr quint32 kUdbAddress = 0x00010000;
+constexpr int kProgramLength = 0x400;
 
 QByteArray ack() {
     return QByteArray(1, char(kMc1Ack));
@@ -41,7 +44,7 @@ void SimMc1Controller::setVariable(int number, qint64 value) {
 }
 
 quint8 SimMc1Controller::flagPage() const {
-    return isMc200(m_variant) ? 0x00 : 0x7F;
+    return mc1ExternalFlagPage(isMc200(m_variant));
 }
 
 QByteArray& SimMc1Controller::page(quint8 number) {
@@ -52,6 +55,16 @@ QByteArray& SimMc1Controller::page(quint8 number) {
 
 quint8 SimMc1Controller::externalByte(quint8 number, quint8 address) const {
     return m_pages.contains(number) ? quint8(m_pages.value(number).at(address)) : 0;
+}
+
+void SimMc1Controller::setBit(const Mc1BitAddress& address, bool on) {
+    const quint8 before =
+        address.external ? externalByte(address.page, address.address) : m_ram[address.address];
+    const quint8 after = on ? quint8(before | address.mask()) : quint8(before & ~address.mask());
+    if (address.external)
+        page(address.page)[address.address] = char(after);
+    else
+        m_ram[address.address] = after;
 }
 
 int SimMc1Controller::requestLength(const QByteArray& bytes) const {
@@ -139,7 +152,7 @@ QByteArray SimMc1Controller::answer(const QByteArray& request, qint64 nowMs) {
             return ack();
         }
         case Mc1Op::ReadStatus:
-            return reply(mc1LittleEndian(m_status.value(u16(0)), 4));
+            return reply(mc1LittleEndian(statusParameter(u16(0), nowMs), 4));
         case Mc1Op::WriteStatus:
             m_status.insert(u16(0), qint32(mc1FromLittleEndian(p.mid(2, 4), true)));
             return ack();
@@ -154,19 +167,21 @@ QByteArray SimMc1Controller::answer(const QByteArray& request, qint64 nowMs) {
         }
         case Mc1Op::ProgramStatus: {
             const quint8 flags = quint8((m_present ? 1 : 0) | (m_running ? 2 : 0));
-            return reply(QByteArray(1, char(flags)) + mc1LittleEndian(m_pc, 2));
+            return reply(QByteArray(1, char(flags)) + mc1LittleEndian(programCounter(nowMs), 2));
         }
         case Mc1Op::ProgramStart:
             if (!m_present) return nak();
+            if (!m_running) m_runStartMs = nowMs;
             m_running = true;
             return ack();
         case Mc1Op::ProgramStop:
+            m_pc = programCounter(nowMs);
             m_running = false;
             return ack();
         case Mc1Op::ProgramStep:
             if (!m_present) return nak();
+            m_pc = quint16((programCounter(nowMs) + 1) % kProgramLength);
             m_running = false;
-            ++m_pc;
             return ack();
         case Mc1Op::ProgramDelete:
             m_present = m_running = false;
@@ -275,6 +290,27 @@ QByteArray SimMc1Controller::axisCommand(int logical, quint8 command, qint32 val
             return ack();
     }
     return nak();
+}
+
+quint16 SimMc1Controller::programCounter(qint64 nowMs) const {
+    // A running program advances one instruction a millisecond through a
+    // program of kProgramLength instructions.
+    if (!m_running) return m_pc;
+    return quint16((m_pc + (nowMs - m_runStartMs)) % kProgramLength);
+}
+
+qint32 SimMc1Controller::statusParameter(int parameter, qint64 nowMs) const {
+    // The axes' parameters (provisional numbers, mc1_parameters.h).
+    for (int axis = kMc1FirstAxis; axis <= kMc1LastAxis; ++axis) {
+        const Axis& a = m_axes.at(axis - 1);
+        if (parameter == mc1AxisParameter(axis, Mc1AxisValue::Position))
+            return axisPosition(axis, nowMs);
+        if (parameter == mc1AxisParameter(axis, Mc1AxisValue::Target))
+            return qint32(std::lround(a.target));
+        if (parameter == mc1AxisParameter(axis, Mc1AxisValue::Status))
+            return (axisMoving(axis, nowMs) ? kMc1AxisMoving : 0) | (a.homed ? kMc1AxisHomed : 0);
+    }
+    return m_status.value(parameter);
 }
 
 qint32 SimMc1Controller::axisPosition(int logical, qint64 nowMs) const {

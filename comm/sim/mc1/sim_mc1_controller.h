@@ -1,5 +1,6 @@
 #pragma once
 
+#include "comm/mc1/mc1_address.h"
 #include "comm/mc1/mc1_variant.h"
 
 #include <QByteArray>
@@ -32,8 +33,9 @@ public:
     void setVariable(int number, qint64 value);
     quint8 internalByte(quint8 address) const { return m_ram[address]; }
     quint8 externalByte(quint8 page, quint8 address) const;
+    void setBit(const Mc1BitAddress& address, bool on);
     bool running() const { return m_running; }
-    quint16 programCounter() const { return m_pc; }
+    quint16 programCounter(qint64 nowMs) const;
     qint32 axisPosition(int axis, qint64 nowMs) const;
     bool axisMoving(int axis, qint64 nowMs) const;
 
@@ -51,6 +53,8 @@ private:
     QByteArray axisCommand(int axis, quint8 command, qint32 value, bool withValue, qint64 nowMs);
     void startMove(int axis, double target, qint64 nowMs);
     QByteArray& page(quint8 page);
+    // RDSTAT: the axes' parameters from their motion, others as written.
+    qint32 statusParameter(int parameter, qint64 nowMs) const;
     quint8 flagPage() const;
 
     Mc1Variant m_variant;
@@ -61,7 +65,8 @@ private:
     QMap<int, qint32> m_status;
     bool m_present = true;
     bool m_running = false;
-    quint16 m_pc = 0;
+    quint16 m_pc = 0;  // while running: where it was at m_runStartMs
+    qint64 m_runStartMs = 0;
     QMap<int, qint64> m_flashedVariables;
     std::array<Axis, 8> m_axes{};
 };

@@ -21,8 +21,11 @@ QList<SimOutput> SimMc1Line::receive(QByteArrayView bytes, qint64 nowMs) {
         if (length == 0 || m_pending.size() < length) break;
         const QByteArray telegram = m_pending.left(length);
         m_pending.remove(0, length);
+        if (m_faults.settings().dead || m_faults.ignoresRequest()) continue;
         const QByteArray answer = m_controller.handle(telegram, nowMs);
-        if (!answer.isEmpty()) out << SimOutput{answer, 0};
+        if (answer.isEmpty()) continue;
+        if (std::optional<SimOutput> sent = m_faults.apply(SimOutput{answer, 0}, telegram))
+            out << *sent;
     }
     m_deadline = nowMs + kCharacterTimeoutMs;
     return out;

@@ -3,6 +3,7 @@
 #include "sim_mc1_controller.h"
 
 #include "comm/sim/sim_endpoint.h"
+#include "comm/sim/sim_faults.h"
 
 namespace cambench::comm {
 
@@ -10,12 +11,15 @@ namespace cambench::comm {
 // telegram is there, then the controller answers. A first byte that starts
 // no telegram of its variant, or a telegram that stops for longer than the
 // character timeout (100 ms, as the manufacturer's emulator), is NAKed and
-// dropped, as the real one does.
+// dropped, as the real one does. Faults: an ignored telegram is neither
+// executed nor answered; a dropped answer was executed.
 class SimMc1Line : public SimEndpoint {
 public:
-    explicit SimMc1Line(Mc1Variant variant) : m_controller(variant) {}
+    explicit SimMc1Line(Mc1Variant variant, const SimFaultSettings& faults = {})
+        : m_controller(variant), m_faults(faults) {}
 
     SimMc1Controller& controller() { return m_controller; }
+    const SimFaults& faults() const { return m_faults; }
     QList<SimOutput> receive(QByteArrayView bytes, qint64 nowMs) override;
     QList<SimOutput> poll(qint64 nowMs) override;
     qint64 nextTimerMs() const override { return m_pending.isEmpty() ? -1 : m_deadline; }
@@ -23,6 +27,7 @@ public:
 
 private:
     SimMc1Controller m_controller;
+    SimFaults m_faults;
     QByteArray m_pending;
     qint64 m_deadline = -1;
 };

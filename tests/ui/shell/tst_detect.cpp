@@ -68,11 +68,13 @@ private Q_SLOTS:
         auto* families = page->findChild<QComboBox*>(QStringLiteral("familyBox"));
         QVERIFY(families);
         QCOMPARE(page->family(), QStringLiteral("camcon"));
-        const int mc1 = families->findData(QStringLiteral("mc1"));
-        QVERIFY(mc1 >= 0);
+        const int compax3 = families->findData(QStringLiteral("compax3"));
+        QVERIFY(compax3 >= 0);
         const auto* model = qobject_cast<QStandardItemModel*>(families->model());
-        QVERIFY(!(model->item(mc1)->flags() & Qt::ItemIsEnabled));
-        QVERIFY(families->itemText(mc1).contains(QLatin1String("not built")));
+        QVERIFY(!(model->item(compax3)->flags() & Qt::ItemIsEnabled));
+        QVERIFY(families->itemText(compax3).contains(QLatin1String("not built")));
+        QVERIFY(model->item(families->findData(QStringLiteral("mc1")))->flags() &
+                Qt::ItemIsEnabled);
         QCOMPARE(page->protocolSettings()->protocolId(), QStringLiteral("3964r-n96"));
     }
 
@@ -123,11 +125,11 @@ private Q_SLOTS:
         QVERIFY2(text.contains(QLatin1String("Nothing answered on ") + device.path()),
                  qPrintable(text));
         // One short line per try on the page, what each said in full in the tooltip.
-        QCOMPARE(text.count(QLatin1String(": no answer")), 4);
-        for (const char* title : {"Standard", "Multiuser", "3964R n96", "3964R e38"})
+        QCOMPARE(text.count(QLatin1String(": no answer")), 5);
+        for (const char* title : {"Standard", "Multiuser", "3964R n96", "3964R e38", "MC-1"})
             QVERIFY2(text.contains(QLatin1String(title)), qPrintable(text));
         const QString details = page->findChild<QLabel*>(QStringLiteral("detectResult"))->toolTip();
-        for (const char* protocol : {"standard", "multiuser", "3964r-n96", "3964r-e38"})
+        for (const char* protocol : {"standard", "multiuser", "3964r-n96", "3964r-e38", "mc1"})
             QVERIFY2(details.contains(QLatin1String(protocol)), qPrintable(details));
         QVERIFY(text.contains(QLatin1String("Check the cable")));
     }

@@ -1,0 +1,75 @@
+#pragma once
+
+#include "mc1_backend.h"
+#include "mc1_device.h"
+#include "mc1_link.h"
+
+#include "comm/engine/request_engine.h"
+
+#include <optional>
+
+namespace cambench::comm {
+
+// How CamBench talks to an MC100/MC200: the variant (none: probe it), the
+// user's fixed timeout and the retries of the telegrams that may repeat.
+struct Mc1Settings {
+    std::optional<Mc1Variant> variant;
+    int timeoutMs = 0;
+    int retries = 2;
+};
+
+// Mc1Device over the binary MC-1 protocol (RS232, any variant).
+class Mc1Controller : public Mc1Device {
+public:
+    Mc1Controller(Transport& transport, const Mc1Settings& settings, const LineTiming& line);
+
+    QString protocolId() const override { return QStringLiteral("mc1"); }
+    RequestEngine& engine() override { return m_engine; }
+    Result<QString> identify() override;
+
+    Mc1Variant variant() const override { return m_link.variant(); }
+    QString variantSource() const override { return m_source; }
+    Result<Mc1Variant> ensureIdentified() override;
+    bool has(Mc1Capability capability) const override;
+
+    Result<qint64> readVariable(int number) override;
+    Status writeVariable(int number, qint64 value) override;
+    Result<QList<bool>> readPoints(const QList<Mc1Point>& points,
+                                   const ProgressFn& progress) override;
+    Result<bool> writePoint(const Mc1Point& point, bool on) override;
+    Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress) override;
+
+    Result<Mc1ProgramStatus> programStatus() override;
+    Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) override;
+    Result<Mc1AxisState> axisState(int axis) override;
+    Result<Mc1AxisState> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
+
+    Result<QByteArray> readMemory(int address, int length, const ProgressFn& progress) override;
+    Status writeMemory(int address, const QByteArray& bytes, const ProgressFn& progress) override;
+
+private:
+    // Link and backend speak `variant` from now on.
+    void use(Mc1Variant variant);
+    // The variant's width (MC100 or MC200) and whether SYSDATA or RDBLOCK
+    // answer: what a probe can tell.
+    Result<Mc1Variant> probeVariant();
+    // The identified variant, once `variable` is a number RDVAR/WRVAR carry.
+    Result<Mc1Variant> identifiedFor(int variable);
+    // A usage error unless the identified variant has `capability`.
+    Status require(Mc1Capability capability, const QString& what);
+    // `bytes` bytes of internal RAM (`external` false) or of an external
+    // page from `address` on.
+    Result<QByteArray> readRam(bool external, quint8 page, int address, int count,
+                               const ProgressFn& progress);
+    // An acting telegram whose answer was lost: what reading back found.
+    Error lostAnswer(const QString& what, const Error& error, const QString& readBack) const;
+
+    Mc1Backend m_backend;
+    RequestEngine m_engine;
+    Mc1Link m_link;
+    std::optional<Mc1Variant> m_given;
+    bool m_identified = false;
+    QString m_source;
+};
+
+}  // namespace cambench::comm

@@ -1,0 +1,213 @@
+// Mc1Controller: the PLC program, the axes and the memory (MC200).
+#include "mc1_controller.h"
+
+#include "mc1_parameters.h"
+
+#include <QCoreApplication>
+
+namespace cambench::comm {
+
+namespace {
+
+QByteArray le(qint64 value, int bytes) {
+    return mc1LittleEndian(value, bytes);
+}
+
+// The telegram and its command byte for each axis command.
+struct AxisTelegram {
+    Mc1Op op;
+    quint8 command;
+    bool withValue;
+};
+
+AxisTelegram axisTelegram(Mc1AxisCommand command) {
+    switch (command) {
+        case Mc1AxisCommand::Home:
+            return {Mc1Op::AxisCommand, 0x06, false};
+        case Mc1AxisCommand::MoveAbsolute:
+            return {Mc1Op::AxisDataCommand, 0x03, true};
+        case Mc1AxisCommand::MoveRelative:
+            return {Mc1Op::AxisDataCommand, 0x04, true};
+        case Mc1AxisCommand::JogPlus:
+        case Mc1AxisCommand::JogMinus:
+            return {Mc1Op::AxisDataCommand, 0x05, true};
+        case Mc1AxisCommand::Stop:
+            return {Mc1Op::AxisCommand, 0x08, false};
+        case Mc1AxisCommand::QuickStop:
+            return {Mc1Op::AxisCommand, 0x09, false};
+        case Mc1AxisCommand::AcknowledgeError:
+            return {Mc1Op::AxisCommand, 0x11, false};
+        case Mc1AxisCommand::SetSpeed:
+            return {Mc1Op::AxisDataCommand, 0x0C, true};
+    }
+    return {Mc1Op::AxisCommand, 0x08, false};
+}
+
+}  // namespace
+
+Result<Mc1ProgramStatus> Mc1Controller::programStatus() {
+    if (const Status ok =
+            require(Mc1Capability::ProgramControl,
+                    QCoreApplication::translate("cambench::comm", "report its program status"));
+        !ok)
+        return ok.error();
+    const Result<QByteArray> answer = m_link.exchange(Mc1Op::ProgramStatus, {});
+    if (!answer) return answer.error();
+    Mc1ProgramStatus status;
+    status.flags = quint8(answer->at(0));
+    status.programCounter = quint16(mc1FromLittleEndian(answer->mid(1, 2), false));
+    return status;
+}
+
+Result<Mc1ProgramStatus> Mc1Controller::programCommand(Mc1ProgramCommand command) {
+    const QString what = mc1ProgramCommandText(command);
+    if (const Status ok = require(Mc1Capability::ProgramControl, what); !ok) return ok.error();
+    Result<QByteArray> done = QByteArray();
+    switch (command) {
+        case Mc1ProgramCommand::Start:
+            done = m_link.exchange(Mc1Op::ProgramStart, {});
+            break;
+        case Mc1ProgramCommand::Stop:
+            done = m_link.exchange(Mc1Op::ProgramStop, {});
+            break;
+        case Mc1ProgramCommand::Step:
+            done = m_link.exchange(Mc1Op::ProgramStep, {});
+            break;
+        case Mc1ProgramCommand::Reset:
+            // Parameter 0: the PLC program starts again, nothing is wiped.
+            done = m_link.exchange(Mc1Op::Reset, le(0, 1));
+            break;
+        case Mc1ProgramCommand::FlashSave:
+        case Mc1ProgramCommand::FlashLoad:
+            done = m_link.exchange(Mc1Op::Flash,
+                                   le(command == Mc1ProgramCommand::FlashSave ? 1 : 2, 1));
+            break;
+    }
+    const Result<Mc1ProgramStatus> after = programStatus();
+    if (!done) {
+        if (done.error().kind != ErrorKind::Communication) return done.error();
+        return lostAnswer(what, done.error(),
+                          after ? QCoreApplication::translate("cambench::comm", "PLC program %1")
+                                      .arg(after->summary())
+                                : QCoreApplication::translate("cambench::comm",
+                                                              "reading the status failed too: %1")
+                                      .arg(after.error().message));
+    }
+    return after;
+}
+
+Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
+    if (const Status ok = require(Mc1Capability::Axes,
+                                  QCoreApplication::translate("cambench::comm", "report its axes"));
+        !ok)
+        return ok.error();
+    if (axis < kMc1FirstAxis || axis > kMc1LastAxis)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "axes are %1 to %2, not %3")
+                .arg(kMc1FirstAxis)
+                .arg(kMc1LastAxis)
+                .arg(axis));
+    qint32 values[3] = {};
+    const Mc1AxisValue which[3] = {Mc1AxisValue::Position, Mc1AxisValue::Target,
+                                   Mc1AxisValue::Status};
+    for (int i = 0; i < 3; ++i) {
+        const Result<QByteArray> answer =
+            m_link.exchange(Mc1Op::ReadStatus, le(mc1AxisParameter(axis, which[i]), 2));
+        if (!answer) return answer.error();
+        values[i] = qint32(mc1FromLittleEndian(*answer, true));
+    }
+    Mc1AxisState state;
+    state.axis = axis;
+    state.position = values[0];
+    state.target = values[1];
+    state.moving = values[2] & kMc1AxisMoving;
+    state.homed = values[2] & kMc1AxisHomed;
+    state.error = values[2] & kMc1AxisError;
+    return state;
+}
+
+Result<Mc1AxisState> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command, qint32 value) {
+    const QString what = mc1AxisCommandText(axis, command, value);
+    if (const Status ok = require(Mc1Capability::Axes, what); !ok) return ok.error();
+    if (axis < kMc1FirstAxis || axis > kMc1LastAxis)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "axes are %1 to %2, not %3")
+                .arg(kMc1FirstAxis)
+                .arg(kMc1LastAxis)
+                .arg(axis));
+    if (command == Mc1AxisCommand::SetSpeed && value <= 0)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "a speed must be more than 0, not %1")
+                .arg(value));
+    const AxisTelegram telegram = axisTelegram(command);
+    QByteArray parameters = le(axis, 1) + le(telegram.command, 1);
+    if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
+        value = command == Mc1AxisCommand::JogPlus ? 1 : 0;
+    if (telegram.withValue) parameters += le(value, 4);
+    const Result<QByteArray> done = m_link.exchange(telegram.op, parameters);
+    const Result<Mc1AxisState> after = axisState(axis);
+    if (!done) {
+        if (done.error().kind != ErrorKind::Communication) return done.error();
+        const QString found =
+            after ? (mc1AxisCommandMoves(command)
+                         ? QCoreApplication::translate("cambench::comm",
+                                                       "the move may have started: %1")
+                         : QStringLiteral("%1"))
+                        .arg(after->summary())
+                  : QCoreApplication::translate("cambench::comm", "reading the axis failed too: %1")
+                        .arg(after.error().message);
+        return lostAnswer(what, done.error(), found);
+    }
+    return after;
+}
+
+Result<QByteArray> Mc1Controller::readMemory(int address, int length, const ProgressFn& progress) {
+    if (const Status ok = require(Mc1Capability::MemoryRead,
+                                  QCoreApplication::translate("cambench::comm", "read memory"));
+        !ok)
+        return ok.error();
+    if (address < 0 || length < 1 || address + length > kMc1MemorySize)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "memory is 0x0000 to 0xFFFF: %1 bytes from 0x%2 do not fit")
+                .arg(length)
+                .arg(address, 4, 16, QLatin1Char('0')));
+    const bool wide = has(Mc1Capability::MemoryWrite);  // RDMEM; an MC200 V1 has RDMEM6
+    QByteArray bytes;
+    while (bytes.size() < length) {
+        const int at = address + int(bytes.size());
+        const int n = std::min<int>(wide ? kMc1MaxMemoryRead : 6, length - int(bytes.size()));
+        const Result<QByteArray> got =
+            wide ? m_link.exchange(Mc1Op::ReadMemory, le(at, 2) + le(n, 1))
+                 : m_link.exchange(Mc1Op::ReadMemory6, le(at, 2));
+        if (!got) return got.error();
+        bytes += got->left(n);
+        if (progress) progress(bytes.size(), length);
+    }
+    return bytes;
+}
+
+Status Mc1Controller::writeMemory(int address, const QByteArray& bytes,
+                                  const ProgressFn& progress) {
+    if (const Status ok = require(Mc1Capability::MemoryWrite,
+                                  QCoreApplication::translate("cambench::comm", "write memory"));
+        !ok)
+        return ok.error();
+    if (address < 0 || bytes.isEmpty() || address + bytes.size() > kMc1MemorySize)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "memory is 0x0000 to 0xFFFF: %1 bytes from 0x%2 do not fit")
+                .arg(bytes.size())
+                .arg(address, 4, 16, QLatin1Char('0')));
+    for (qsizetype done = 0; done < bytes.size();) {
+        const QByteArray chunk = bytes.mid(done, kMc1MaxMemoryWrite);
+        const Result<QByteArray> written = m_link.exchange(
+            Mc1Op::WriteMemory, le(address + done, 2) + le(chunk.size(), 1) + chunk);
+        if (!written) return written.error();
+        done += chunk.size();
+        if (progress) progress(done, bytes.size());
+    }
+    return success();
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,116 @@
+#pragma once
+
+#include "mc1_address.h"
+#include "mc1_variant.h"
+
+#include "comm/device/device_connection.h"
+#include "model/result.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QStringList>
+
+namespace cambench::comm {
+
+// What a connected MC100/MC200 can do beyond variables, flags and I/O,
+// which every variant has.
+enum class Mc1Capability {
+    BlockRead,       // RDBLOCK: up to 56 RAM bytes a telegram (MC100 V2)
+    MemoryRead,      // RDMEM (MC200 V2), RDMEM6 (MC200 V1: 6 bytes a telegram)
+    MemoryWrite,     // WRMEM (MC200 V2)
+    ProgramControl,  // SYSDATA: status, start, stop, step, reset, flash (MC200 V2)
+    Axes,            // AXIS_NODATA/AXIS_DATA and the axis parameters (MC200 V2)
+};
+
+// The PLC program's state (SYSDATA status, manual table 39).
+struct Mc1ProgramStatus {
+    quint8 flags = 0;
+    quint16 programCounter = 0;
+    bool present() const { return flags & 0x01; }
+    bool running() const { return flags & 0x02; }
+    // Each set bit of `flags` as a person reads it ("PLC program running").
+    QStringList flagTexts() const;
+    // "running, PC 0x1234" / "stopped, PC 0x0000" / "no PLC program".
+    QString summary() const;
+};
+
+enum class Mc1ProgramCommand { Start, Stop, Step, Reset, FlashSave, FlashLoad };
+// "start the PLC program", for messages.
+QString mc1ProgramCommandText(Mc1ProgramCommand command);
+
+// One axis as the controller reports it (provisional parameters,
+// mc1_parameters.h).
+struct Mc1AxisState {
+    int axis = 1;
+    qint32 position = 0;
+    qint32 target = 0;
+    bool moving = false;
+    bool homed = false;
+    bool error = false;
+    // "axis 1 is moving to 100 (now at 12)" / "axis 1 stands at 0".
+    QString summary() const;
+};
+
+enum class Mc1AxisCommand {
+    Home,
+    MoveAbsolute,  // to `value`
+    MoveRelative,  // by `value`
+    JogPlus,       // continuous, until stopped
+    JogMinus,
+    Stop,       // with the programmed ramp
+    QuickStop,  // with the maximum ramp
+    AcknowledgeError,
+    SetSpeed,  // `value` units per second
+};
+// "move axis 1 by 100", for confirmations and messages.
+QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value);
+// Whether the command sets an axis in motion (and so wants a confirmation).
+bool mc1AxisCommandMoves(Mc1AxisCommand command);
+
+// A connected MICRO DESIGN MC100/MC200 controller. Every call identifies
+// the controller first if that has not happened yet (the variant probed,
+// or the one the settings name checked against what answers). Commands
+// that act are sent once: when their answer is lost the state is read
+// back and the error says what was found.
+class Mc1Device : public DeviceConnection {
+public:
+    QString familyId() const override { return QStringLiteral("mc1"); }
+
+    // The variant in use (after identification; before it, the settings').
+    virtual Mc1Variant variant() const = 0;
+    // How the variant was found: "probed" or "as given (the probe found
+    // MC200 V1)".
+    virtual QString variantSource() const = 0;
+    virtual Result<Mc1Variant> ensureIdentified() = 0;
+    virtual bool has(Mc1Capability capability) const = 0;
+
+    // Variables, signed, of the variant's width (24 or 32 bits).
+    virtual Result<qint64> readVariable(int number) = 0;
+    // Refused before sending when `value` does not fit the width.
+    virtual Status writeVariable(int number, qint64 value) = 0;
+
+    // Flags, inputs and outputs by their manual numbers, in the given order.
+    virtual Result<QList<bool>> readPoints(const QList<Mc1Point>& points,
+                                           const ProgressFn& progress = {}) = 0;
+    // Sets or clears one flag or output (WRBIT) and returns the value read
+    // back afterwards.
+    virtual Result<bool> writePoint(const Mc1Point& point, bool on) = 0;
+    // The raw bytes of an external RAM page (the flags' page for a backup).
+    virtual Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress = {}) = 0;
+
+    virtual Result<Mc1ProgramStatus> programStatus() = 0;
+    // Returns the status read after the command.
+    virtual Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) = 0;
+
+    virtual Result<Mc1AxisState> axisState(int axis) = 0;
+    // Returns the axis as read after the command.
+    virtual Result<Mc1AxisState> axisCommand(int axis, Mc1AxisCommand command,
+                                             qint32 value = 0) = 0;
+
+    virtual Result<QByteArray> readMemory(int address, int length,
+                                          const ProgressFn& progress = {}) = 0;
+    virtual Status writeMemory(int address, const QByteArray& bytes,
+                               const ProgressFn& progress = {}) = 0;
+};
+
+}  // namespace cambench::comm

@@ -1,0 +1,54 @@
+#include "mc1_protocol.h"
+
+#include <QCoreApplication>
+
+namespace cambench::comm {
+
+std::unique_ptr<ProtocolSettings> Mc1ProtocolSettings::clone() const {
+    return std::make_unique<Mc1ProtocolSettings>(*this);
+}
+
+QStringList Mc1ProtocolSettings::variantKeys() const {
+    QStringList keys{QStringLiteral("auto")};
+    for (Mc1Variant variant : allMc1Variants()) keys << mc1VariantKey(variant);
+    return keys;
+}
+
+QVariantMap Mc1ProtocolSettings::toMap() const {
+    return {{QStringLiteral("variant"),
+             mc1.variant ? mc1VariantKey(*mc1.variant) : QStringLiteral("auto")},
+            {QStringLiteral("timeoutMs"), mc1.timeoutMs},
+            {QStringLiteral("retries"), mc1.retries}};
+}
+
+void Mc1ProtocolSettings::fromMap(const QVariantMap& map) {
+    if (map.contains(QStringLiteral("variant")))
+        mc1.variant = mc1VariantFromKey(map.value(QStringLiteral("variant")).toString());
+    mc1.timeoutMs = qMax(0, map.value(QStringLiteral("timeoutMs"), mc1.timeoutMs).toInt());
+    mc1.retries = qBound(0, map.value(QStringLiteral("retries"), mc1.retries).toInt(), 10);
+}
+
+void registerMc1Protocol(ProtocolRegistry& registry) {
+    ProtocolInfo info;
+    info.id = QStringLiteral("mc1");
+    info.familyId = QStringLiteral("mc1");
+    info.title = QCoreApplication::translate("cambench::comm", "MC-1 (RS232)");
+    info.defaultSerial.baud = 9600;  // MC100: 9600 only; MC200: as set in the device
+    info.defaultSerial.dtr = true;   // DTR high and RTS low power the MC200's driver
+    info.defaultSerial.rts = false;
+    info.makeSettings = [] { return std::make_unique<Mc1ProtocolSettings>(); };
+    info.connect = [](Transport& transport, const ProtocolSettings& settings,
+                      const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {
+        const auto* mc1 = dynamic_cast<const Mc1ProtocolSettings*>(&settings);
+        if (!mc1)
+            return Error::usage(
+                QCoreApplication::translate("cambench::comm", "the %1 protocol got settings of %2")
+                    .arg(QStringLiteral("mc1"),
+                         QCoreApplication::translate("cambench::comm", "another protocol")));
+        return std::unique_ptr<DeviceConnection>(
+            std::make_unique<Mc1Controller>(transport, mc1->mc1, line));
+    };
+    registry.add(info);
+}
+
+}  // namespace cambench::comm

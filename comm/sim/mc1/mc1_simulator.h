@@ -1,0 +1,16 @@
+#pragma once
+
+#include "comm/mc1/mc1_variant.h"
+#include "comm/sim/simulator_registry.h"
+
+namespace cambench::comm {
+
+// A simulated MC100/MC200 of `variant` on its line at `baud`, with demo
+// values (variables, flags, outputs) so that a first look shows something.
+SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared);
+
+// The MC-1 simulator: "sim" / "sim:variant=mc100v1" ports when the PC
+// speaks mc1, and cambench-sim --family mc1 [--variant V] [--baud B].
+void registerMc1Simulator(SimulatorRegistry& registry);
+
+}  // namespace cambench::comm

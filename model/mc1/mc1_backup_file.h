@@ -1,0 +1,50 @@
+#pragma once
+
+#include "model/result.h"
+
+#include <QByteArray>
+#include <QDateTime>
+#include <QList>
+#include <QMap>
+#include <QString>
+
+namespace cambench {
+
+constexpr int kMc1BackupFormatVersion = 1;
+
+// A range of an MC200's memory as it was read.
+struct Mc1MemoryRange {
+    int address = 0;
+    QByteArray data;
+};
+
+// What `mc backup` saves of an MC100/MC200: variables, the external flag
+// page, memory ranges.
+struct Mc1Backup {
+    QString variant;  // "mc200v2" (comm/mc1/mc1_variant.h keys)
+    QDateTime taken;
+    QString toolVersion;
+    QMap<int, qint64> variables;  // number -> value
+    int flagPage = 0;             // the external RAM page of the flags
+    QByteArray flags;             // that page: 256 bytes, or empty when not saved
+    QList<Mc1MemoryRange> memory;
+
+    // Whether the variant is an MC200 (32-bit variables) or an MC100 (24).
+    bool mc200() const { return variant.startsWith(QLatin1String("mc200")); }
+};
+
+// {"format":"cambench-mc1-backup","version":1,"family":"mc1",
+//  "variant":"mc200v2","taken":ISO UTC,"tool":"CamBench x.y.z",
+//  "variables":[[1,-250],[2,-150],...],"flagPage":0,"flags":"<hex>",
+//  "memory":[{"address":4096,"data":"<hex>"}],"sha256":"<hex>"}, sha256
+// over the compact JSON of the same object without "sha256".
+QByteArray mc1BackupToJson(const Mc1Backup& backup);
+// Checks format, version, family, the hash (a mismatch: changed or
+// damaged), the variant, every value against its width, the page size and
+// the memory ranges (inside 0x0000–0xFFFF, not overlapping).
+Result<Mc1Backup> mc1BackupFromJson(const QByteArray& bytes);
+
+Status saveMc1Backup(const QString& path, const Mc1Backup& backup);
+Result<Mc1Backup> loadMc1Backup(const QString& path);
+
+}  // namespace cambench

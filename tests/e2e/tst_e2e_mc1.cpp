@@ -1,0 +1,124 @@
+// Issue 14, end to end: the real cambench-cli against the real cambench-sim
+// on a pseudo-terminal, for each MC100/MC200 variant: identification,
+// variables, flags, I/O, memory, and backup → change → verify → restore →
+// verify with honest counts.
+#include "e2e_support.h"
+
+#include <QTest>
+
+using namespace cambench::e2e;
+
+class TestE2eMc1 : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void eachVariant_data() {
+        QTest::addColumn<QString>("variant");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("mc100v1") << "mc100v1"
+                                 << "MC100 V1";
+        QTest::newRow("mc100v2") << "mc100v2"
+                                 << "MC100 V2";
+        QTest::newRow("mc200v1") << "mc200v1"
+                                 << "MC200 V1";
+        QTest::newRow("mc200v2") << "mc200v2"
+                                 << "MC200 V2";
+    }
+
+    void eachVariant() {
+        QFETCH(QString, variant);
+        QFETCH(QString, name);
+        const bool v2mc200 = variant == QLatin1String("mc200v2");
+        SimSession session(QStringLiteral("mc1"));
+        START_SIM(session, {"--variant", variant});
+
+        const CliRun info = session.cli({"mc", "info"});
+        VERIFY_EXIT(info, 0);
+        QVERIFY2(info.out.contains(QStringLiteral("variant: %1\n").arg(name)),
+                 qPrintable(info.out));
+        QVERIFY2(info.out.contains(QLatin1String("found: probed")), qPrintable(info.out));
+
+        VERIFY_EXIT(session.cli({"mc", "var", "write", "12", "-5"}), 0);
+        const CliRun var = session.cli({"mc", "var", "read", "11-12"});
+        VERIFY_EXIT(var, 0);
+        QVERIFY2(var.out.endsWith(QLatin1String("V12 = -5\n")), qPrintable(var.out));
+
+        const CliRun set = session.cli({"mc", "flag", "set", "M7", "A3", "M2327"});
+        VERIFY_EXIT(set, 0);
+        QCOMPARE(set.out, QStringLiteral("M7 = 1\nA3 = 1\nM2327 = 1\n"));
+        const CliRun io = session.cli({"mc", "io", "read"});
+        VERIFY_EXIT(io, 0);
+        QVERIFY2(io.out.contains(QLatin1String("\nA3 = 1\n")), qPrintable(io.out.left(200)));
+        QVERIFY2(io.out.contains(QLatin1String("E2 = 1\n")), qPrintable(io.out.left(200)));
+        const CliRun input = session.cli({"mc", "flag", "set", "E2"});
+        VERIFY_EXIT(input, 2);
+
+        const CliRun run = session.cli({"mc", "run"});
+        if (v2mc200) {
+            VERIFY_EXIT(run, 0);
+            QVERIFY2(run.out.startsWith(QLatin1String("program: running")), qPrintable(run.out));
+            VERIFY_EXIT(session.cli({"mc", "mem", "write", "0x100", "0a0b0c"}), 0);
+            const CliRun mem = session.cli({"mc", "mem", "read", "0x100", "3"});
+            VERIFY_EXIT(mem, 0);
+            QCOMPARE(mem.out, QStringLiteral("0x0100: 0a 0b 0c\n"));
+        } else {
+            VERIFY_EXIT(run, 2);  // no SYSDATA: said before anything is sent
+            QVERIFY2(run.err.contains(name), qPrintable(run.err));
+        }
+
+        // Backup, change, verify (differs), restore (only the changes), verify.
+        const QString file = session.path(QStringLiteral("backup.json"));
+        QStringList backup{"mc", "backup", "-o", file, "--vars", "1-40"};
+        if (v2mc200)
+            backup << "--mem"
+                   << "0x100:200";
+        VERIFY_EXIT(session.cli(backup), 0);
+        VERIFY_EXIT(session.cli({"mc", "var", "write", "12", "77"}), 0);
+        VERIFY_EXIT(session.cli({"mc", "flag", "clear", "M7"}), 0);
+        if (v2mc200) VERIFY_EXIT(session.cli({"mc", "mem", "write", "0x101", "ff"}), 0);
+        const CliRun differs = session.cli({"mc", "verify", file});
+        VERIFY_EXIT(differs, 1);
+        QVERIFY2(differs.out.contains(QLatin1String("V12: file -5, controller 77")),
+                 qPrintable(differs.out));
+        QVERIFY2(differs.out.contains(QLatin1String("M7: file 1, controller 0")),
+                 qPrintable(differs.out));
+        const CliRun restore = session.cli({"mc", "restore", file});
+        VERIFY_EXIT(restore, 0);
+        const QString written = v2mc200 ? QStringLiteral("3 written") : QStringLiteral("2 written");
+        QVERIFY2(restore.out.contains(written), qPrintable(restore.out));
+        QVERIFY2(!restore.out.contains(QLatin1String("failed")), qPrintable(restore.out));
+        VERIFY_EXIT(session.cli({"mc", "verify", file}), 0);
+    }
+
+    // Detect tries every family's protocols; an MC-1 controller is named
+    // with its variant (at 9600 baud, the protocol's default).
+    void detectFindsTheController() {
+        SimProcess sim;
+        QVERIFY2(sim.start({"--family", "mc1", "--variant", "mc200v1"}),
+                 qPrintable(sim.errorText()));
+        const CliRun detect = runCli({"--port", sim.ptyPath(), "detect"});
+        VERIFY_EXIT(detect, 0);
+        QVERIFY2(detect.out.contains(QLatin1String("mc1: MC200 V1 (probed)")),
+                 qPrintable(detect.out));
+    }
+
+    // A file of the other controller type is refused before anything is sent.
+    void aFileOfTheOtherControllerIsRefused() {
+        SimSession mc200(QStringLiteral("mc1"));
+        START_SIM(mc200, {"--variant", "mc200v2"});
+        const QString file = mc200.path(QStringLiteral("mc200.json"));
+        VERIFY_EXIT(mc200.cli({"mc", "backup", "-o", file, "--vars", "1-3"}), 0);
+        SimSession mc100(QStringLiteral("mc1"));
+        START_SIM(mc100, {"--variant", "mc100v1"});
+        const CliRun refused = mc100.cli({"mc", "restore", file});
+        VERIFY_EXIT(refused, 4);
+        QVERIFY2(refused.err.contains(QLatin1String("nothing was written")),
+                 qPrintable(refused.err));
+        // A variant named that does not answer so: refused, naming what answers.
+        const CliRun wrong = mc100.cli({"--variant", "mc200v2", "mc", "var", "read", "1"});
+        VERIFY_EXIT(wrong, 2);
+        QVERIFY2(wrong.err.contains(QLatin1String("MC100 V1")), qPrintable(wrong.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestE2eMc1)
+#include "tst_e2e_mc1.moc"
