@@ -1,5 +1,6 @@
 #include "led_strip.h"
 
+#include <QMouseEvent>
 #include <QPainter>
 
 namespace cambench {
@@ -23,6 +24,29 @@ void LedStrip::setCount(int count) {
     QList<bool> states = m_states;
     states.resize(count);
     setStates(states);
+}
+
+void LedStrip::setNumbers(const QList<int>& numbers) {
+    m_numbers = numbers;
+    update();
+}
+
+void LedStrip::setStale(bool stale) {
+    if (stale == m_stale) return;
+    m_stale = stale;
+    update();
+}
+
+int LedStrip::indexAt(const QPoint& point) const {
+    const int cols = columns(width());
+    if (point.x() < 0 || point.y() < 0 || point.x() >= cols * kCell) return -1;
+    const int index = (point.y() / kCell) * cols + point.x() / kCell;
+    return index < m_states.size() ? index : -1;
+}
+
+void LedStrip::mousePressEvent(QMouseEvent* event) {
+    const int index = indexAt(event->position().toPoint());
+    if (index >= 0) Q_EMIT ledClicked(index);
 }
 
 int LedStrip::columns(int width) const {
@@ -50,11 +74,12 @@ void LedStrip::paintEvent(QPaintEvent*) {
         const QRect led = cell.adjusted(5, 3, -5, -9);
         const bool on = m_states.at(i);
         painter.setPen(palette().color(QPalette::Mid));
-        painter.setBrush(on ? QColor(0x2e, 0xcc, 0x40) : palette().color(QPalette::Base));
+        const QColor lit = m_stale ? palette().color(QPalette::Mid) : QColor(0x2e, 0xcc, 0x40);
+        painter.setBrush(on ? lit : palette().color(QPalette::Base));
         painter.drawEllipse(QRectF(led).adjusted(2, 0, -2, 0));
         painter.setPen(palette().color(QPalette::WindowText));
         painter.drawText(QRect(cell.left(), cell.bottom() - 10, kCell, 11), Qt::AlignCenter,
-                         QString::number(i + 1));
+                         QString::number(i < m_numbers.size() ? m_numbers.at(i) : i + 1));
     }
 }
 

@@ -18,6 +18,13 @@ inline QString asSentence(const QString& text) {
     return trimmed + QLatin1Char('.');
 }
 
+// `text` with its first letter capitalised: "move axis 1 by 100" starting
+// a question.
+inline QString capitalised(const QString& text) {
+    if (text.isEmpty()) return text;
+    return text.at(0).toUpper() + text.mid(1);
+}
+
 // A message from comm/ for a person at the machine: the protocol's command
 // names the CLI prints for diagnosis ("reading the identity (?EPROM)", "no
 // reply from the device to ?EPROM on …") are left out; the words say it.

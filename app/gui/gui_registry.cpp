@@ -3,6 +3,8 @@
 #include "ui/camcon/camcon_gui.h"
 #include "ui/camcon/protocols/ascii_settings_widget.h"
 #include "ui/camcon/protocols/table_settings_widget.h"
+#include "ui/mc1/mc1_gui.h"
+#include "ui/mc1/protocols/mc1_settings_widget.h"
 
 namespace cambench {
 
@@ -17,9 +19,14 @@ void registerGuiParts() {
                     [](const QString& protocol) { return new TableSettingsWidget(protocol); });
     }
 
+    widgets.add(QStringLiteral("mc1"), [](const QString&) { return new Mc1SettingsWidget; });
+
     FamilyGuiRegistry& families = FamilyGuiRegistry::instance();
     families.add({QStringLiteral("camcon"), [](DeviceSession* session, QObject* parent) {
                       return new CamConGui(session, parent);
+                  }});
+    families.add({QStringLiteral("mc1"), [](DeviceSession* session, QObject* parent) {
+                      return new Mc1Gui(session, parent);
                   }});
 }
 

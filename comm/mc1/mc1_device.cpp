@@ -100,6 +100,15 @@ QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value) {
     return {};
 }
 
+QString mc1HexLines(int address, const QByteArray& bytes) {
+    QString text;
+    for (int at = 0; at < bytes.size(); at += 16)
+        text += QStringLiteral("0x%1: %2\n")
+                    .arg(QString::number(address + at, 16).toUpper().rightJustified(4, u'0'),
+                         QString::fromLatin1(bytes.mid(at, 16).toHex(' ')));
+    return text;
+}
+
 bool mc1AxisCommandMoves(Mc1AxisCommand command) {
     switch (command) {
         case Mc1AxisCommand::Home:

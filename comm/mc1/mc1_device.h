@@ -67,6 +67,9 @@ QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value);
 // Whether the command sets an axis in motion (and so wants a confirmation).
 bool mc1AxisCommandMoves(Mc1AxisCommand command);
 
+// "0x1000: 0a 0b ..." lines of 16 bytes, for memory shown to a person.
+QString mc1HexLines(int address, const QByteArray& bytes);
+
 // A connected MICRO DESIGN MC100/MC200 controller. Every call identifies
 // the controller first if that has not happened yet (the variant probed,
 // or the one the settings name checked against what answers). Commands

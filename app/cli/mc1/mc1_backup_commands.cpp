@@ -18,16 +18,6 @@ using comm::JobContext;
 using comm::Mc1Device;
 using usecases::UseCaseProgress;
 
-QString hexLines(int address, const QByteArray& bytes) {
-    QString text;
-    for (int at = 0; at < bytes.size(); at += 16) {
-        text += QStringLiteral("0x%1: %2\n")
-                    .arg(QString::number(address + at, 16).toUpper().rightJustified(4, u'0'),
-                         QString::fromLatin1(bytes.mid(at, 16).toHex(' ')));
-    }
-    return text;
-}
-
 // "ADDR:LEN", e.g. 0x1000:256.
 Result<std::pair<int, int>> parseMemoryRange(const QString& text) {
     const QStringList parts = text.split(QLatin1Char(':'));
@@ -87,7 +77,7 @@ int runMc1Memory(CliSession& session, CommandArgs& args) {
             const Status written = writeOutput(*path, *bytes);
             return written ? ExitOk : reportError(written.error());
         }
-        printOut(hexLines(*address, *bytes));
+        printOut(comm::mc1HexLines(*address, *bytes));
         return ExitOk;
     }
     const Result<QString> hex = args.takeRequiredPositional(QStringLiteral("the bytes in HEX"));
@@ -107,7 +97,7 @@ int runMc1Memory(CliSession& session, CommandArgs& args) {
             return device.readMemory(a, int(bytes.size()), {});
         });
     if (!back) return reportError(back.error());
-    printOut(hexLines(*address, *back));
+    printOut(comm::mc1HexLines(*address, *back));
     if (*back != bytes)
         return reportError(
             Error::device(0, QStringLiteral("the memory reads back other bytes than written")));

@@ -103,10 +103,17 @@ void TestSimExecutable::rejectsBadOptions() {
     QVERIFY(process.readAllStandardError().contains("0..63"));
     // A family announced but not simulated yet is refused by name.
     process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
-                  {QStringLiteral("--family"), QStringLiteral("mc1")});
+                  {QStringLiteral("--family"), QStringLiteral("compax3")});
     QVERIFY(process.waitForFinished(10000));
     QCOMPARE(process.exitCode(), 2);
     QVERIFY(process.readAllStandardError().contains("not built into this CamBench yet"));
+    // A variant the MC-1 simulator does not know is named with those it does.
+    process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
+                  {QStringLiteral("--family"), QStringLiteral("mc1"), QStringLiteral("--variant"),
+                   QStringLiteral("mc300")});
+    QVERIFY(process.waitForFinished(10000));
+    QCOMPARE(process.exitCode(), 2);
+    QVERIFY(process.readAllStandardError().contains("mc100v1, mc100v2, mc200v1, mc200v2"));
 }
 
 QTEST_GUILESS_MAIN(TestSimExecutable)

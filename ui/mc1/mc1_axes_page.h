@@ -1,0 +1,49 @@
+#pragma once
+
+#include "mc1_page.h"
+
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace cambench {
+
+// Axes: one axis's position, target and state, live while shown; home,
+// jog, absolute and relative moves and the speed, every motion after a
+// confirmation that names the axis and where it goes. STOP is always
+// visible and Escape presses it: it cancels what waits for the line and
+// stops every axis with the maximum ramp.
+class Mc1AxesPage : public Mc1Page {
+    Q_OBJECT
+public:
+    explicit Mc1AxesPage(DeviceSession* session, QWidget* parent = nullptr);
+
+    QString sectionTitle() const override { return tr("Axes"); }
+    bool poll() override;
+    void markStale() override;
+
+    QPushButton* stopButton() const { return m_stop; }
+    QLabel* stateLabel() const { return m_state; }
+    int axis() const;
+    // Asks (naming the motion), then sends it and shows the axis after.
+    void command(comm::Mc1AxisCommand command, qint32 value = 0);
+    void stopAll();
+
+protected:
+    void factsChanged() override;
+
+private:
+    void showState(const comm::Mc1AxisState& state);
+
+    QSpinBox* m_axis;
+    QLabel* m_availability;
+    QLabel* m_state;
+    QLabel* m_details;
+    QSpinBox* m_absolute;
+    QSpinBox* m_relative;
+    QSpinBox* m_speed;
+    QPushButton* m_stop;
+    QList<QWidget*> m_motion;
+};
+
+}  // namespace cambench

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <QAbstractTableModel>
+#include <QDateTime>
+#include <QList>
+
+#include <optional>
+
+namespace cambench {
+
+// The variables a technician watches on an MC100/MC200: number, a name of
+// their own (kept on the PC), the value as last read and whether it is
+// still live. The value column is editable: an edit is a request to write
+// (writeRequested), never a change of the shown value, which only ever
+// shows what was read.
+class Mc1WatchModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column { NumberColumn, NameColumn, ValueColumn, StateColumn, ColumnCount };
+
+    struct Entry {
+        int number = 0;
+        QString name;
+        std::optional<qint64> value;
+        bool stale = false;
+        QDateTime readAt;
+    };
+
+    explicit Mc1WatchModel(QObject* parent = nullptr);
+
+    const QList<Entry>& entries() const { return m_entries; }
+    QList<int> numbers() const;
+    // Adds first..last (those not watched yet); returns how many were added.
+    int addRange(int first, int last);
+    void removeRows(const QList<int>& rows);
+    // Names by number ("12" -> "Feed length"); numbers not watched are added.
+    void setNames(const QMap<int, QString>& names);
+    // Values read at `at`, in the order of numbers().
+    void setValues(const QList<qint64>& values, const QDateTime& at);
+    void setValue(int number, qint64 value, const QDateTime& at);
+    // Every value shown is no longer known to be true.
+    void markStale();
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+
+Q_SIGNALS:
+    void writeRequested(int number, qint64 value);
+    // Fresh values arrived (for the trend).
+    void sampled(const QDateTime& at);
+
+private:
+    int rowOf(int number) const;
+
+    QList<Entry> m_entries;
+};
+
+// "12;Feed length" / "12,Feed length" / "V12,Feed length" lines (a header
+// line without a number is skipped); an error names the line.
+struct Mc1NameList {
+    QMap<int, QString> names;
+    QString error;
+};
+Mc1NameList parseMc1NameList(const QByteArray& csv);
+
+}  // namespace cambench

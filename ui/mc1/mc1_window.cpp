@@ -1,0 +1,269 @@
+#include "mc1_window.h"
+
+#include "mc1_axes_page.h"
+#include "mc1_gui.h"
+#include "mc1_memory_page.h"
+#include "mc1_points_page.h"
+#include "mc1_program_page.h"
+#include "mc1_trend_page.h"
+#include "mc1_variables_page.h"
+#include "mc1_watch_model.h"
+
+#include "comm/mc1/usecases/mc1_backup_restore.h"
+#include "ui/device_session.h"
+#include "ui/main_window.h"
+#include "ui/report_dialog.h"
+#include "ui/sentence.h"
+
+#include <QFileDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTimer>
+
+namespace cambench {
+
+namespace {
+constexpr int kPollMs = 500;
+}  // namespace
+
+Mc1Window::Mc1Window(Mc1Gui* gui, MainWindow* window)
+    : FamilyWindow(gui, window),
+      m_mc1(gui),
+      m_variables(new Mc1VariablesPage(gui->session(), gui->watchList())),
+      m_points(new Mc1PointsPage(gui->session())),
+      m_program(new Mc1ProgramPage(gui->session())),
+      m_axes(new Mc1AxesPage(gui->session())),
+      m_memory(new Mc1MemoryPage(gui->session())),
+      m_trend(new Mc1TrendPage(gui->session(), m_variables)),
+      m_poll(new QTimer(this)) {
+    m_poll->setInterval(kPollMs);
+    // Polls go on all the time a page is shown: not a job for the progress bar.
+    for (const QString& title :
+         {Mc1VariablesPage::tr("Read variables"), Mc1PointsPage::tr("Read flags and I/O"),
+          Mc1ProgramPage::tr("Read program status"), Mc1AxesPage::tr("Read axis")})
+        window->addQuietJobTitle(title);
+    connect(m_poll, &QTimer::timeout, this, [this] {
+        if (m_shown && m_mc1->session()->isOnline()) m_shown->poll();
+    });
+    connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
+        if (m_mc1->session()->isOnline()) return;
+        // The line is gone: what the pages show is no longer known to be true.
+        for (Mc1Page* page : mc1Pages()) page->markStale();
+    });
+}
+
+QList<Mc1Page*> Mc1Window::mc1Pages() const {
+    return {m_variables, m_points, m_program, m_axes, m_memory, m_trend};
+}
+
+QList<SectionPage*> Mc1Window::pages() const {
+    QList<SectionPage*> pages;
+    for (Mc1Page* page : mc1Pages()) pages << page;
+    return pages;
+}
+
+void Mc1Window::setFacts(const Mc1Facts& facts) {
+    m_facts = facts;
+    for (Mc1Page* page : mc1Pages()) page->setFacts(facts);
+}
+
+void Mc1Window::deviceOnLine(bool load) {
+    m_mc1->setIdentity({});
+    m_mc1->session()->setDeviceChecked(false);
+    setFacts({});
+    struct Found {
+        Mc1Facts facts;
+        QString identity;
+    };
+    m_mc1->session()->run<comm::Mc1Device, Found>(
+        this, tr("Identify controller"),
+        [](comm::Mc1Device& device, comm::JobContext&) -> Result<Found> {
+            const Result<comm::Mc1Variant> variant = device.ensureIdentified();
+            if (!variant) return variant.error();
+            Found found;
+            // The controller, not its program's state: this line is not polled.
+            found.identity = QStringLiteral("%1 (%2)").arg(comm::mc1VariantName(*variant),
+                                                           device.variantSource());
+            found.facts.known = true;
+            found.facts.variant = device.variant();
+            found.facts.source = device.variantSource();
+            for (comm::Mc1Capability capability :
+                 {comm::Mc1Capability::BlockRead, comm::Mc1Capability::MemoryRead,
+                  comm::Mc1Capability::MemoryWrite, comm::Mc1Capability::ProgramControl,
+                  comm::Mc1Capability::Axes})
+                if (device.has(capability)) found.facts.capabilities.insert(capability);
+            return found;
+        },
+        [this, load](Result<Found> found) {
+            if (found) {
+                setFacts(found->facts);
+                m_mc1->setIdentity(found->identity);
+                m_mc1->session()->setDeviceChecked(true);
+            }
+            window()->showMessage(found ? tr("Connected: %1").arg(found->identity)
+                                        : tr("No MC100/MC200 identified itself: %1")
+                                              .arg(asSentence(found.error().message)));
+            if (load) window()->reportLoaded(found.ok());
+            if (m_shown) m_shown->poll();
+        });
+}
+
+void Mc1Window::pageShown(SectionPage* page) {
+    m_shown = nullptr;
+    for (Mc1Page* mine : mc1Pages())
+        if (mine == page) m_shown = mine;
+    if (m_shown) {
+        m_shown->poll();
+        m_poll->start();
+    } else {
+        m_poll->stop();
+    }
+}
+
+void Mc1Window::addMenuEntries(const FamilyMenus& menus) {
+    QMenu* device = menus.device;
+    device->addSeparator();
+    QAction* backup = device->addAction(tr("Back up controller (variables, flags)…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(window(), tr("Back up controller"),
+                                                          QStringLiteral("mc1-backup.json"),
+                                                          tr("MC-1 backups (*.json)"));
+        if (!path.isEmpty()) backupToFile(path);
+    });
+    backup->setObjectName(QStringLiteral("mc1BackupAction"));
+    QAction* verify = device->addAction(tr("Verify controller against backup…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(window(), tr("Verify against backup"), {},
+                                                          tr("MC-1 backups (*.json)"));
+        if (!path.isEmpty()) verifyFile(path);
+    });
+    verify->setObjectName(QStringLiteral("mc1VerifyAction"));
+    QAction* restore = device->addAction(tr("Restore backup to controller…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(window(), tr("Restore backup"), {},
+                                                          tr("MC-1 backups (*.json)"));
+        if (!path.isEmpty()) restoreFile(path);
+    });
+    restore->setObjectName(QStringLiteral("mc1RestoreAction"));
+}
+
+void Mc1Window::backupToFile(const QString& path) {
+    m_mc1->session()->run<comm::Mc1Device, Mc1Backup>(
+        this, tr("Back up controller"),
+        [](comm::Mc1Device& device, comm::JobContext& job) -> Result<Mc1Backup> {
+            const Result<comm::Mc1Variant> variant = device.ensureIdentified();
+            if (!variant) return variant.error();
+            return usecases::takeMc1Backup(device, usecases::defaultMc1BackupScope(*variant),
+                                           usecases::UseCaseProgress::of(job));
+        },
+        [this, path](Result<Mc1Backup> backup) {
+            const Status saved = backup ? saveMc1Backup(path, *backup) : Status(backup.error());
+            if (!saved) {
+                ReportDialog::present(
+                    window(), QMessageBox::Warning, tr("Backup"),
+                    tr("No backup was saved: %1").arg(asSentence(saved.error().message)));
+                return;
+            }
+            window()->showMessage(tr("Saved %1 variables and %2 flags to %3.")
+                                      .arg(backup->variables.size())
+                                      .arg(backup->flags.size() * 8)
+                                      .arg(path));
+        });
+}
+
+void Mc1Window::verifyFile(const QString& path) {
+    const Result<Mc1Backup> backup = loadMc1Backup(path);
+    if (!backup) {
+        ReportDialog::present(window(), QMessageBox::Warning, tr("Verify"),
+                              asSentence(backup.error().message));
+        return;
+    }
+    m_mc1->session()->run<comm::Mc1Device, usecases::Mc1VerifyReport>(
+        this, tr("Verify controller"),
+        [b = *backup](comm::Mc1Device& device, comm::JobContext& job) {
+            return usecases::verifyMc1Backup(device, b, usecases::UseCaseProgress::of(job));
+        },
+        [this, path](Result<usecases::Mc1VerifyReport> report) {
+            if (!report) {
+                ReportDialog::present(
+                    window(), QMessageBox::Warning, tr("Verify"),
+                    tr("Not verified: %1").arg(asSentence(report.error().message)));
+                return;
+            }
+            const bool equal = report->differences.isEmpty();
+            ReportDialog::present(
+                window(), equal ? QMessageBox::Information : QMessageBox::Warning, tr("Verify"),
+                equal ? tr("The controller holds all %1 values of %2.")
+                            .arg(report->compared)
+                            .arg(path)
+                      : tr("%n difference(s) between the controller and %1:", nullptr,
+                           int(report->differences.size()))
+                            .arg(path),
+                report->differences.join(QLatin1Char('\n')));
+        });
+}
+
+void Mc1Window::restoreFile(const QString& path) {
+    const Result<Mc1Backup> backup = loadMc1Backup(path);
+    if (!backup) {
+        ReportDialog::present(
+            window(), QMessageBox::Warning, tr("Restore"),
+            tr("Nothing was written: %1").arg(asSentence(backup.error().message)));
+        return;
+    }
+    QMessageBox ask(
+        QMessageBox::Warning, tr("Restore"),
+        tr("Restore %1 (taken %2) to the controller?")
+            .arg(path, backup->taken.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))),
+        QMessageBox::Cancel, window());
+    ask.setInformativeText(
+        tr("It is checked against the controller first; then only the "
+           "variables, flags and memory that differ are written. The PLC "
+           "program uses them at once."));
+    QPushButton* yes = ask.addButton(tr("Restore"), QMessageBox::AcceptRole);
+    ask.setDefaultButton(QMessageBox::Cancel);
+    ask.exec();
+    if (ask.clickedButton() != yes) return;
+    m_mc1->session()->run<comm::Mc1Device, usecases::OutcomeTally>(
+        this, tr("Restore controller"),
+        [b = *backup](comm::Mc1Device& device, comm::JobContext& job) {
+            return usecases::restoreMc1Backup(device, b, usecases::UseCaseProgress::of(job));
+        },
+        [this](Result<usecases::OutcomeTally> tally) {
+            if (!tally) {
+                ReportDialog::present(window(), QMessageBox::Warning, tr("Restore"),
+                                      asSentence(tally.error().message));
+                return;
+            }
+            QStringList lines;
+            for (const usecases::OutcomeLine& line : tally->lines())
+                if (line.state != usecases::WriteState::Unchanged) lines << line.text;
+            ReportDialog::present(
+                window(), tally->complete() ? QMessageBox::Information : QMessageBox::Warning,
+                tr("Restore"), tally->summary(), lines.join(QLatin1Char('\n')));
+            if (m_shown) m_shown->poll();
+        });
+}
+
+QList<TourStop> Mc1Window::tourStops(const QString&) {
+    return {
+        {QStringLiteral("21-mc1-variables"),
+         [this] { window()->showPage(m_variables); },
+         [this] {
+             return m_facts.known && m_mc1->watchList()->entries().value(0).value.has_value();
+         },
+         {}},
+        {QStringLiteral("22-mc1-flags-io"),
+         [this] { window()->showPage(m_points); },
+         [this] { return m_facts.known; },
+         {}},
+        {QStringLiteral("23-mc1-axes"),
+         [this] { window()->showPage(m_axes); },
+         [this] { return m_facts.known; },
+         {}},
+    };
+}
+
+Mc1Window* mc1Window(const MainWindow* window) {
+    return window ? window->findChild<Mc1Window*>() : nullptr;
+}
+
+}  // namespace cambench
