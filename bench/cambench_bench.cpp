@@ -4,6 +4,7 @@
 // differ from what the simulator holds. Figures, not assertions: run it when
 // asked (it takes minutes); docs/performance.md records a run.
 
+#include "mc1_bench.h"
 #include "protocol_bench.h"
 
 #include "comm/camcon/ascii/ascii_camcon.h"
@@ -319,6 +320,10 @@ int main(int argc, char** argv) {
         QStringLiteral("Only a program of 32 tracks x 20 cams read and written over CamCon "
                        "ASCII and the table interface (3964R n96, e38) at the same baud rates."));
     parser.addOption(protocols);
+    QCommandLineOption mc1(QStringLiteral("mc1"),
+                           QStringLiteral("Only MC100/MC200: 1,000 variables and a 32 KiB range "
+                                          "of each variant at 9600 baud (about 4 minutes)."));
+    parser.addOption(mc1);
     QCommandLineOption repeat(QStringLiteral("repeat"),
                               QStringLiteral("Runs per row, with seeds 7, 8, ...; the median time "
                                              "is printed (default 1)."),
@@ -333,6 +338,10 @@ int main(int argc, char** argv) {
     const Line multiuser{QStringLiteral("Multiuser 38400"), Framing::Multiuser, 38400};
     const QList<Line> lines =
         parser.isSet(quick) ? QList<Line>{multiuser} : QList<Line>{standard, multiuser};
+    if (parser.isSet(mc1)) {
+        bench::benchMc1();
+        return 0;
+    }
     if (parser.isSet(protocols)) {
         bench::benchProtocols(parser.isSet(quick) ? QList<int>{38400} : QList<int>{9600, 38400});
         return 0;

@@ -1,3 +1,4 @@
 # Benchmark: prints figures against the throttled simulator (not a test).
-add_executable(cambench-bench cambench_bench.cpp protocol_bench.h protocol_bench.cpp)
+add_executable(cambench-bench cambench_bench.cpp protocol_bench.h protocol_bench.cpp
+  mc1_bench.h mc1_bench.cpp)
 target_link_libraries(cambench-bench PRIVATE cambench_registry cambench_comm cambench_sim)

@@ -3567,6 +3567,629 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
+    <name>cambench::Mc1AxesPage</name>
+    <message>
+        <source>Axes</source>
+        <translation>Achsen</translation>
+    </message>
+    <message>
+        <source>STOP (Esc)</source>
+        <translation>STOPP (Esc)</translation>
+    </message>
+    <message>
+        <source>Axis </source>
+        <translation>Achse </translation>
+    </message>
+    <message>
+        <source>Stops every axis with the maximum ramp and drops what waits for the line. Escape does the same.</source>
+        <translation>Hält jede Achse mit der maximalen Rampe an und verwirft, was auf die Leitung wartet. Escape tut dasselbe.</translation>
+    </message>
+    <message>
+        <source>Move (each asks first)</source>
+        <translation>Verfahren (jede Bewegung fragt vorher)</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>Jog −</source>
+        <translation>Tippen −</translation>
+    </message>
+    <message>
+        <source>Jog +</source>
+        <translation>Tippen +</translation>
+    </message>
+    <message>
+        <source>Move to</source>
+        <translation>Fahren nach</translation>
+    </message>
+    <message>
+        <source>Move by</source>
+        <translation>Fahren um</translation>
+    </message>
+    <message>
+        <source>Set speed</source>
+        <translation>Geschwindigkeit setzen</translation>
+    </message>
+    <message>
+        <source>Acknowledge error</source>
+        <translation>Fehler quittieren</translation>
+    </message>
+    <message>
+        <source>The %1 has no axis telegrams: moving axes needs an MC200 V2.</source>
+        <translation>Die %1 hat keine Achstelegramme: Achsen verfahren braucht eine MC200 V2.</translation>
+    </message>
+    <message>
+        <source>Not connected to an MC100/MC200.</source>
+        <translation>Nicht mit einer MC100/MC200 verbunden.</translation>
+    </message>
+    <message>
+        <source>Position %1 · target %2 · %3 · %4</source>
+        <translation>Position %1 · Ziel %2 · %3 · %4</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>referenziert</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>nicht referenziert</translation>
+    </message>
+    <message>
+        <source>axis error</source>
+        <translation>Achsfehler</translation>
+    </message>
+    <message>
+        <source>no error</source>
+        <translation>kein Fehler</translation>
+    </message>
+    <message>
+        <source>Read axis</source>
+        <translation>Achse lesen</translation>
+    </message>
+    <message>
+        <source>The axis moves until STOP (or Escape) is pressed.</source>
+        <translation>Die Achse fährt, bis STOPP (oder Escape) gedrückt wird.</translation>
+    </message>
+    <message>
+        <source>The axis moves at its set speed. STOP (or Escape) stops it.</source>
+        <translation>Die Achse fährt mit ihrer eingestellten Geschwindigkeit. STOPP (oder Escape) hält sie an.</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>%1 on the %2?</source>
+        <translation>%2: %1?</translation>
+    </message>
+    <message>
+        <source>Axis command</source>
+        <translation>Achsbefehl</translation>
+    </message>
+    <message>
+        <source>Sent: %1. Now %2.</source>
+        <translation>Gesendet: %1. Jetzt: %2.</translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation>STOPP</translation>
+    </message>
+    <message>
+        <source>STOP sent to every axis; each acknowledged it.</source>
+        <translation>STOPP an jede Achse gesendet; jede hat ihn bestätigt.</translation>
+    </message>
+    <message>
+        <source>STOP did not reach every axis: %1. Use the machine&apos;s emergency stop.</source>
+        <translation>STOPP hat nicht jede Achse erreicht: %1. Benutzen Sie den Not-Halt der Maschine.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1MemoryPage</name>
+    <message>
+        <source>Memory</source>
+        <translation>Speicher</translation>
+    </message>
+    <message>
+        <source>bytes in hex, e.g. 0a 0b 0c</source>
+        <translation>Bytes hexadezimal, z. B. 0a 0b 0c</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>Write…</source>
+        <translation>Schreiben…</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>Write (MC200 V2; asks first, then reads back)</source>
+        <translation>Schreiben (MC200 V2; fragt vorher, liest danach zurück)</translation>
+    </message>
+    <message>
+        <source>Write the bytes as pairs of hex digits, e.g. 0a 0b 0c.</source>
+        <translation>Schreiben Sie die Bytes als Paare von Hexadezimalziffern, z. B. 0a 0b 0c.</translation>
+    </message>
+    <message>
+        <source>The %1 has no memory telegrams (an MC200 has).</source>
+        <translation>Die %1 hat keine Speichertelegramme (eine MC200 hat sie).</translation>
+    </message>
+    <message>
+        <source>Read memory</source>
+        <translation>Speicher lesen</translation>
+    </message>
+    <message>
+        <source>%1 bytes read from 0x%2 at %3.</source>
+        <translation>%1 Bytes ab 0x%2 um %3 gelesen.</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n byte(s) at %1 of the %2?</source>
+        <translation>
+            <numerusform>%n Byte an %1 der %2 schreiben?</numerusform>
+            <numerusform>%n Bytes an %1 der %2 schreiben?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The controller uses its memory at once; a wrong byte can stop its program.</source>
+        <translation>Die Steuerung verwendet ihren Speicher sofort; ein falsches Byte kann ihr Programm anhalten.</translation>
+    </message>
+    <message>
+        <source>Write memory</source>
+        <translation>Speicher schreiben</translation>
+    </message>
+    <message>
+        <source>Written at %1 and read back.</source>
+        <translation>An %1 geschrieben und zurückgelesen.</translation>
+    </message>
+    <message>
+        <source>Written at %1, but the bytes read back differ.</source>
+        <translation>An %1 geschrieben, aber die zurückgelesenen Bytes weichen ab.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1PointsPage</name>
+    <message>
+        <source>Flags &amp; I/O</source>
+        <translation>Merker &amp; E/A</translation>
+    </message>
+    <message>
+        <source>Inputs (E)</source>
+        <translation>Eingänge (E)</translation>
+    </message>
+    <message>
+        <source>Outputs (A) - click to set or clear</source>
+        <translation>Ausgänge (A) – Klick setzt oder löscht</translation>
+    </message>
+    <message>
+        <source>Flags (M) - click to set or clear</source>
+        <translation>Merker (M) – Klick setzt oder löscht</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <source>count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>Read flags and I/O</source>
+        <translation>Merker und E/A lesen</translation>
+    </message>
+    <message>
+        <source>Set %1 on the %2?</source>
+        <translation>%1 an der %2 setzen?</translation>
+    </message>
+    <message>
+        <source>Clear %1 on the %2?</source>
+        <translation>%1 an der %2 löschen?</translation>
+    </message>
+    <message>
+        <source>The output switches at once; whatever it drives on the machine acts.</source>
+        <translation>Der Ausgang schaltet sofort; was er an der Maschine ansteuert, reagiert.</translation>
+    </message>
+    <message>
+        <source>The PLC program sees the flag at once.</source>
+        <translation>Das SPS-Programm sieht den Merker sofort.</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Setzen</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Write flag or output</source>
+        <translation>Merker oder Ausgang schreiben</translation>
+    </message>
+    <message>
+        <source>%1 = %2, read back.</source>
+        <translation>%1 = %2, zurückgelesen.</translation>
+    </message>
+    <message>
+        <source>%1 reads back %2 after the write.</source>
+        <translation>%1 liest nach dem Schreiben %2 zurück.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1ProgramPage</name>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>The PLC program runs: outputs and axes follow it.</source>
+        <translation>Das SPS-Programm läuft: Ausgänge und Achsen folgen ihm.</translation>
+    </message>
+    <message>
+        <source>The PLC program stops where it is; outputs keep their state.</source>
+        <translation>Das SPS-Programm hält an, wo es ist; Ausgänge behalten ihren Zustand.</translation>
+    </message>
+    <message>
+        <source>One instruction of the PLC program runs; it may switch an output or start an axis.</source>
+        <translation>Eine Anweisung des SPS-Programms läuft; sie kann einen Ausgang schalten oder eine Achse starten.</translation>
+    </message>
+    <message>
+        <source>The controller restarts: axes stop, outputs drop, the PLC program starts again from the beginning.</source>
+        <translation>Die Steuerung startet neu: Achsen halten an, Ausgänge fallen ab, das SPS-Programm beginnt von vorn.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s flash is overwritten with what it holds now. What the flash held before is lost.</source>
+        <translation>Der Flash der Steuerung wird mit ihrem jetzigen Inhalt überschrieben. Was der Flash vorher enthielt, geht verloren.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s variables are replaced by those in its flash. Values changed since the last save are lost.</source>
+        <translation>Die Variablen der Steuerung werden durch die im Flash ersetzt. Seit dem letzten Sichern geänderte Werte gehen verloren.</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>Steuern</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Reset…</source>
+        <translation>Reset…</translation>
+    </message>
+    <message>
+        <source>Save to flash…</source>
+        <translation>In Flash sichern…</translation>
+    </message>
+    <message>
+        <source>Load from flash…</source>
+        <translation>Aus Flash laden…</translation>
+    </message>
+    <message>
+        <source>The %1 has no program telegrams: status and control need an MC200 V2 (SYSDATA). Variables, flags and I/O work.</source>
+        <translation>Die %1 hat keine Programmtelegramme: Status und Steuerung brauchen eine MC200 V2 (SYSDATA). Variablen, Merker und E/A funktionieren.</translation>
+    </message>
+    <message>
+        <source>Not connected to an MC100/MC200.</source>
+        <translation>Nicht mit einer MC100/MC200 verbunden.</translation>
+    </message>
+    <message>
+        <source>PLC program: %1</source>
+        <translation>SPS-Programm: %1</translation>
+    </message>
+    <message>
+        <source>Read program status</source>
+        <translation>Programmstatus lesen</translation>
+    </message>
+    <message>
+        <source>%1 on the %2?</source>
+        <translation>%2: %1?</translation>
+    </message>
+    <message>
+        <source>Program command</source>
+        <translation>Programmbefehl</translation>
+    </message>
+    <message>
+        <source>Done: %1. PLC program %2.</source>
+        <translation>Ausgeführt: %1. SPS-Programm %2.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1SettingsWidget</name>
+    <message>
+        <source>Automatic (probe the controller)</source>
+        <translation>Automatisch (Steuerung abfragen)</translation>
+    </message>
+    <message>
+        <source>Automatic asks the controller and names what it found. A variant chosen here is checked against what answers.</source>
+        <translation>Automatisch fragt die Steuerung und nennt, was gefunden wurde. Eine hier gewählte Variante wird mit dem geprüft, was antwortet.</translation>
+    </message>
+    <message>
+        <source>RS232, 8N1. MC100: 9600 baud, RxD/TxD crossed. MC200: the baud rate set in the controller, a 1:1 cable; CamBench holds DTR high and RTS low, which power its interface.</source>
+        <translation>RS232, 8N1. MC100: 9600 Baud, RxD/TxD gekreuzt. MC200: die in der Steuerung eingestellte Baudrate, ein 1:1-Kabel; CamBench hält DTR high und RTS low, die ihre Schnittstelle versorgen.</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Steuerung:</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1TrendPage</name>
+    <message>
+        <source>Trend</source>
+        <translation>Trend</translation>
+    </message>
+    <message>
+        <source>seconds</source>
+        <translation>Sekunden</translation>
+    </message>
+    <message>
+        <source>The first eight variables of the Variables page&apos;s watch list, read while this page or that one is shown.</source>
+        <translation>Die ersten acht Variablen der Beobachtungsliste der Seite Variablen, gelesen, solange diese oder jene Seite angezeigt wird.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1VariablesPage</name>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Beobachten</translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation>Auswahl entfernen</translation>
+    </message>
+    <message>
+        <source>Import names…</source>
+        <translation>Namen importieren…</translation>
+    </message>
+    <message>
+        <source>A CSV file of &quot;number;name&quot; lines, e.g. from the PLC program&apos;s variable list. The names stay on this PC.</source>
+        <translation>Eine CSV-Datei mit Zeilen &quot;Nummer;Name&quot;, z. B. aus der Variablenliste des SPS-Programms. Die Namen bleiben auf diesem PC.</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <source>Import variable names</source>
+        <translation>Variablennamen importieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s) added to the watch list.</source>
+        <translation>
+            <numerusform>%n Variable zur Beobachtungsliste hinzugefügt.</numerusform>
+            <numerusform>%n Variablen zur Beobachtungsliste hinzugefügt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2. Nothing was imported.</source>
+        <translation>%1 konnte nicht gelesen werden: %2. Nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <source>%1 is not a name list (%2). Nothing was imported.</source>
+        <translation>%1 ist keine Namensliste (%2). Nichts wurde importiert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n name(s) imported from %1.</source>
+        <translation>
+            <numerusform>%n Name aus %1 importiert.</numerusform>
+            <numerusform>%n Namen aus %1 importiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read variables</source>
+        <translation>Variablen lesen</translation>
+    </message>
+    <message>
+        <source>Not connected to an MC100/MC200: nothing was written.</source>
+        <translation>Nicht mit einer MC100/MC200 verbunden: nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Write V%1 = %2 to the %3?</source>
+        <translation>V%1 = %2 in die %3 schreiben?</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s PLC program uses this variable at once.</source>
+        <translation>Das SPS-Programm der Steuerung verwendet diese Variable sofort.</translation>
+    </message>
+    <message>
+        <source>Write variable</source>
+        <translation>Variable schreiben</translation>
+    </message>
+    <message>
+        <source>V%1 was not written: %2</source>
+        <translation>V%1 wurde nicht geschrieben: %2</translation>
+    </message>
+    <message>
+        <source>V%1 = %2 written and read back.</source>
+        <translation>V%1 = %2 geschrieben und zurückgelesen.</translation>
+    </message>
+    <message>
+        <source>V%1 reads back %2, not the %3 written.</source>
+        <translation>V%1 liest %2 zurück, nicht die geschriebenen %3.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1WatchModel</name>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>stale, read %1</source>
+        <translation>veraltet, gelesen %1</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>aktuell</translation>
+    </message>
+    <message>
+        <source>Double-click to write a new value to the controller (it asks first).</source>
+        <translation>Doppelklick schreibt einen neuen Wert in die Steuerung (fragt vorher).</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Name (on this PC)</source>
+        <translation>Name (auf diesem PC)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>line %1: &quot;%2&quot; is not &quot;number;name&quot;</source>
+        <translation>Zeile %1: &quot;%2&quot; ist nicht &quot;Nummer;Name&quot;</translation>
+    </message>
+    <message>
+        <source>line %1: variable numbers end at 65535</source>
+        <translation>Zeile %1: Variablennummern enden bei 65535</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1Window</name>
+    <message>
+        <source>Identify controller</source>
+        <translation>Steuerung erkennen</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Verbunden: %1</translation>
+    </message>
+    <message>
+        <source>No MC100/MC200 identified itself: %1</source>
+        <translation>Keine MC100/MC200 hat sich zu erkennen gegeben: %1</translation>
+    </message>
+    <message>
+        <source>Back up controller (variables, flags)…</source>
+        <translation>Steuerung sichern (Variablen, Merker)…</translation>
+    </message>
+    <message>
+        <source>Back up controller</source>
+        <translation>Steuerung sichern</translation>
+    </message>
+    <message>
+        <source>MC-1 backups (*.json)</source>
+        <translation>MC-1-Sicherungen (*.json)</translation>
+    </message>
+    <message>
+        <source>Verify controller against backup…</source>
+        <translation>Steuerung mit Sicherung vergleichen…</translation>
+    </message>
+    <message>
+        <source>Verify against backup</source>
+        <translation>Mit Sicherung vergleichen</translation>
+    </message>
+    <message>
+        <source>Restore backup to controller…</source>
+        <translation>Sicherung in Steuerung zurückspielen…</translation>
+    </message>
+    <message>
+        <source>Restore backup</source>
+        <translation>Sicherung zurückspielen</translation>
+    </message>
+    <message>
+        <source>Backup</source>
+        <translation>Sicherung</translation>
+    </message>
+    <message>
+        <source>No backup was saved: %1</source>
+        <translation>Keine Sicherung gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1 variables and %2 flags to %3.</source>
+        <translation>%1 Variablen und %2 Merker in %3 gesichert.</translation>
+    </message>
+    <message>
+        <source>Verify</source>
+        <translation>Vergleichen</translation>
+    </message>
+    <message>
+        <source>Verify controller</source>
+        <translation>Steuerung vergleichen</translation>
+    </message>
+    <message>
+        <source>Not verified: %1</source>
+        <translation>Nicht verglichen: %1</translation>
+    </message>
+    <message>
+        <source>The controller holds all %1 values of %2.</source>
+        <translation>Die Steuerung enthält alle %1 Werte aus %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s) between the controller and %1:</source>
+        <translation>
+            <numerusform>%n Unterschied zwischen der Steuerung und %1:</numerusform>
+            <numerusform>%n Unterschiede zwischen der Steuerung und %1:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Zurückspielen</translation>
+    </message>
+    <message>
+        <source>Nothing was written: %1</source>
+        <translation>Nichts wurde geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>Restore %1 (taken %2) to the controller?</source>
+        <translation>%1 (gesichert %2) in die Steuerung zurückspielen?</translation>
+    </message>
+    <message>
+        <source>It is checked against the controller first; then only the variables, flags and memory that differ are written. The PLC program uses them at once.</source>
+        <translation>Die Datei wird zuerst mit der Steuerung geprüft; dann werden nur abweichende Variablen, Merker und Speicherbereiche geschrieben. Das SPS-Programm verwendet sie sofort.</translation>
+    </message>
+    <message>
+        <source>Restore controller</source>
+        <translation>Steuerung zurückspielen</translation>
+    </message>
+</context>
+<context>
     <name>cambench::MonitorPage</name>
     <message>
         <source>Monitor</source>
@@ -6049,6 +6672,242 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>check the cable (MC100: RxD/TxD crossed; MC200: 1:1, and DTR high, RTS low power its interface), the baud rate (MC100: 9600) and the controller&apos;s variant</source>
         <translation>prüfen Sie das Kabel (MC100: RxD/TxD gekreuzt; MC200: 1:1, und DTR high, RTS low versorgen seine Schnittstelle), die Baudrate (MC100: 9600) und die Variante der Steuerung</translation>
     </message>
+    <message>
+        <source>PLC program present</source>
+        <translation>SPS-Programm vorhanden</translation>
+    </message>
+    <message>
+        <source>PLC program running</source>
+        <translation>SPS-Programm läuft</translation>
+    </message>
+    <message>
+        <source>error: invalid opcode</source>
+        <translation>Fehler: ungültiger Opcode</translation>
+    </message>
+    <message>
+        <source>error: stack overflow</source>
+        <translation>Fehler: Stacküberlauf</translation>
+    </message>
+    <message>
+        <source>breakpoint list cleared</source>
+        <translation>Haltepunktliste gelöscht</translation>
+    </message>
+    <message>
+        <source>task switching off</source>
+        <translation>Taskumschaltung aus</translation>
+    </message>
+    <message>
+        <source>current bit result 1</source>
+        <translation>aktuelles Bitergebnis 1</translation>
+    </message>
+    <message>
+        <source>PLC program at a breakpoint</source>
+        <translation>SPS-Programm steht auf Haltepunkt</translation>
+    </message>
+    <message>
+        <source>no PLC program</source>
+        <translation>kein SPS-Programm</translation>
+    </message>
+    <message>
+        <source>running, PC %1</source>
+        <translation>läuft, PC %1</translation>
+    </message>
+    <message>
+        <source>stopped, PC %1</source>
+        <translation>angehalten, PC %1</translation>
+    </message>
+    <message>
+        <source>start the PLC program</source>
+        <translation>SPS-Programm starten</translation>
+    </message>
+    <message>
+        <source>stop the PLC program</source>
+        <translation>SPS-Programm anhalten</translation>
+    </message>
+    <message>
+        <source>run one step of the PLC program</source>
+        <translation>einen Schritt des SPS-Programms ausführen</translation>
+    </message>
+    <message>
+        <source>reset the controller</source>
+        <translation>Steuerung zurücksetzen</translation>
+    </message>
+    <message>
+        <source>save to flash</source>
+        <translation>in Flash sichern</translation>
+    </message>
+    <message>
+        <source>load from flash</source>
+        <translation>aus Flash laden</translation>
+    </message>
+    <message>
+        <source>axis %1 is moving to %2 (now at %3)</source>
+        <translation>Achse %1 fährt nach %2 (jetzt bei %3)</translation>
+    </message>
+    <message>
+        <source>axis %1 stands at %2</source>
+        <translation>Achse %1 steht bei %2</translation>
+    </message>
+    <message>
+        <source>, axis error</source>
+        <translation>, Achsfehler</translation>
+    </message>
+    <message>
+        <source>home axis %1</source>
+        <translation>Referenzfahrt Achse %1</translation>
+    </message>
+    <message>
+        <source>move axis %1 to %2</source>
+        <translation>Achse %1 nach %2 fahren</translation>
+    </message>
+    <message>
+        <source>move axis %1 by %2</source>
+        <translation>Achse %1 um %2 fahren</translation>
+    </message>
+    <message>
+        <source>move axis %1 continuously in the plus direction</source>
+        <translation>Achse %1 endlos in Plusrichtung fahren</translation>
+    </message>
+    <message>
+        <source>move axis %1 continuously in the minus direction</source>
+        <translation>Achse %1 endlos in Minusrichtung fahren</translation>
+    </message>
+    <message>
+        <source>stop axis %1</source>
+        <translation>Achse %1 anhalten</translation>
+    </message>
+    <message>
+        <source>stop axis %1 with the maximum ramp</source>
+        <translation>Achse %1 mit maximaler Rampe anhalten</translation>
+    </message>
+    <message>
+        <source>acknowledge the error of axis %1</source>
+        <translation>Fehler von Achse %1 quittieren</translation>
+    </message>
+    <message>
+        <source>set the speed of axis %1 to %2</source>
+        <translation>Geschwindigkeit von Achse %1 auf %2 setzen</translation>
+    </message>
+    <message>
+        <source>no MC100/MC200 answers reading variable 1: %1</source>
+        <translation>keine MC100/MC200 antwortet auf das Lesen von Variable 1: %1</translation>
+    </message>
+    <message>
+        <source>probed</source>
+        <translation>abgefragt</translation>
+    </message>
+    <message>
+        <source>the connection is set to the %1, but the controller answers as an %2 (variables of %3 bits): choose %2 or automatic detection</source>
+        <translation>die Verbindung ist auf die %1 eingestellt, aber die Steuerung antwortet als %2 (Variablen mit %3 Bit): wählen Sie %2 oder die automatische Erkennung</translation>
+    </message>
+    <message>
+        <source>as given, confirmed by the probe</source>
+        <translation>wie angegeben, von der Abfrage bestätigt</translation>
+    </message>
+    <message>
+        <source>as given (the probe found the %1)</source>
+        <translation>wie angegeben (die Abfrage fand die %1)</translation>
+    </message>
+    <message>
+        <source>the %1 cannot %2 (%3)</source>
+        <translation>%2 ist mit der %1 nicht möglich (%3)</translation>
+    </message>
+    <message>
+        <source>the memory telegrams need an MC200</source>
+        <translation>die Speichertelegramme brauchen eine MC200</translation>
+    </message>
+    <message>
+        <source>this needs an MC200 V2</source>
+        <translation>das braucht eine MC200 V2</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>PLC program %1</source>
+        <translation>SPS-Programm %1</translation>
+    </message>
+    <message>
+        <source>variable numbers are 0 to 65535, not %1</source>
+        <translation>Variablennummern sind 0 bis 65535, nicht %1</translation>
+    </message>
+    <message>
+        <source>V%1 of the %2 holds %3 to %4 (%5 bits), not %6</source>
+        <translation>V%1 der %2 fasst %3 bis %4 (%5 Bit), nicht %6</translation>
+    </message>
+    <message>
+        <source>%1 is an input: inputs are read-only</source>
+        <translation>%1 ist ein Eingang: Eingänge sind nur lesbar</translation>
+    </message>
+    <message>
+        <source>reading it failed too: %1</source>
+        <translation>auch das Lesen schlug fehl: %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%2 %1</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>setzen</translation>
+    </message>
+    <message>
+        <source>clear</source>
+        <translation>löschen</translation>
+    </message>
+    <message>
+        <source>the answer to &quot;%1&quot; was lost (%2); it was not sent again, because it acts each time it arrives. Read back: %3</source>
+        <translation>die Antwort auf &quot;%1&quot; ging verloren (%2); der Befehl wurde nicht erneut gesendet, weil er bei jedem Eintreffen wirkt. Zurückgelesen: %3</translation>
+    </message>
+    <message>
+        <source>report its program status</source>
+        <translation>Programmstatus melden</translation>
+    </message>
+    <message>
+        <source>reading the status failed too: %1</source>
+        <translation>auch das Lesen des Status schlug fehl: %1</translation>
+    </message>
+    <message>
+        <source>report its axes</source>
+        <translation>Achsen melden</translation>
+    </message>
+    <message>
+        <source>axes are %1 to %2, not %3</source>
+        <translation>Achsen sind %1 bis %2, nicht %3</translation>
+    </message>
+    <message>
+        <source>a speed must be more than 0, not %1</source>
+        <translation>eine Geschwindigkeit muss größer als 0 sein, nicht %1</translation>
+    </message>
+    <message>
+        <source>the move may have started: %1</source>
+        <translation>die Bewegung hat womöglich begonnen: %1</translation>
+    </message>
+    <message>
+        <source>reading the axis failed too: %1</source>
+        <translation>auch das Lesen der Achse schlug fehl: %1</translation>
+    </message>
+    <message>
+        <source>read memory</source>
+        <translation>Speicher lesen</translation>
+    </message>
+    <message>
+        <source>memory is 0x0000 to 0xFFFF: %1 bytes from 0x%2 do not fit</source>
+        <translation>der Speicher reicht von 0x0000 bis 0xFFFF: %1 Bytes ab 0x%2 passen nicht</translation>
+    </message>
+    <message>
+        <source>write memory</source>
+        <translation>Speicher schreiben</translation>
+    </message>
+    <message>
+        <source>MC-1 (RS232)</source>
+        <translation>MC-1 (RS232)</translation>
+    </message>
+    <message>
+        <source>no 0xFF synchronisation byte from the MC100MA for %1 ms</source>
+        <translation>kein 0xFF-Synchronisationsbyte von der MC100MA seit %1 ms</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -6621,10 +7480,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Zeit</translation>
     </message>
     <message>
-        <source>checksum</source>
-        <translation>Prüfsumme</translation>
-    </message>
-    <message>
         <source>tool</source>
         <translation>Erstellerprogramm</translation>
     </message>
@@ -6703,6 +7558,66 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>minimum pulse</source>
         <translation>Mindestimpuls</translation>
+    </message>
+    <message>
+        <source>not an even number of hexadecimal digits</source>
+        <translation>keine gerade Anzahl Hexadezimalziffern</translation>
+    </message>
+    <message>
+        <source>not a pair [number, value]</source>
+        <translation>kein Paar [Nummer, Wert]</translation>
+    </message>
+    <message>
+        <source>variable number</source>
+        <translation>Variablennummer</translation>
+    </message>
+    <message>
+        <source>value (%1 bits)</source>
+        <translation>Wert (%1 Bit)</translation>
+    </message>
+    <message>
+        <source>V%1 a second time</source>
+        <translation>V%1 ein zweites Mal</translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <source>%1 bytes from 0x%2 do not fit memory 0x0000–0xFFFF</source>
+        <translation>%1 Bytes ab 0x%2 passen nicht in den Speicher 0x0000–0xFFFF</translation>
+    </message>
+    <message>
+        <source>overlaps the range before it or is out of order</source>
+        <translation>überlappt den Bereich davor oder steht nicht in Reihenfolge</translation>
+    </message>
+    <message>
+        <source>controller variant</source>
+        <translation>Steuerungsvariante</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is none of mc100v1, mc100v2, mc200v1, mc200v2</source>
+        <translation>&quot;%1&quot; ist keine von mc100v1, mc100v2, mc200v1, mc200v2</translation>
+    </message>
+    <message>
+        <source>flag page</source>
+        <translation>Merkerseite</translation>
+    </message>
+    <message>
+        <source>flags</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>%1 bytes, not the page&apos;s %2</source>
+        <translation>%1 Bytes, nicht die %2 der Seite</translation>
+    </message>
+    <message>
+        <source>sha256: the checksum is missing.</source>
+        <translation>sha256: die Prüfsumme fehlt.</translation>
     </message>
 </context>
 <context>
@@ -7274,6 +8189,78 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>reading the EEPROM lock</source>
         <translation>lese die EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>memory %1–%2</source>
+        <translation>Speicher %1–%2</translation>
+    </message>
+    <message>
+        <source>Reading variables</source>
+        <translation>Variablen lesen</translation>
+    </message>
+    <message>
+        <source>Reading flags</source>
+        <translation>Merker lesen</translation>
+    </message>
+    <message>
+        <source>Reading memory</source>
+        <translation>Speicher lesen</translation>
+    </message>
+    <message>
+        <source>the file was taken from an %1, the controller is an %2 (variables of other widths, flags elsewhere): nothing was written</source>
+        <translation>die Datei stammt von einer %1, die Steuerung ist eine %2 (Variablen anderer Breite, Merker an anderer Stelle): nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>the file&apos;s flags are on page %1, the %2 keeps them on page %3: nothing was written</source>
+        <translation>die Merker der Datei liegen auf Seite %1, die %2 hält sie auf Seite %3: nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>the file holds memory ranges, which the %1 cannot write (an MC200 V2 can): nothing was written</source>
+        <translation>die Datei enthält Speicherbereiche, die die %1 nicht schreiben kann (eine MC200 V2 kann es): nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>written, as read back after: %1</source>
+        <translation>geschrieben, wie das Zurücklesen danach zeigt: %1</translation>
+    </message>
+    <message>
+        <source>the %1 has no memory telegrams (an MC200 has): leave out --mem</source>
+        <translation>die %1 hat keine Speichertelegramme (eine MC200 hat sie): lassen Sie --mem weg</translation>
+    </message>
+    <message>
+        <source>V%1: file %2, controller %3</source>
+        <translation>V%1: Datei %2, Steuerung %3</translation>
+    </message>
+    <message>
+        <source>%1: file %2, controller %3</source>
+        <translation>%1: Datei %2, Steuerung %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes differ, the first at %3</source>
+        <translation>%1: %2 Bytes weichen ab, das erste bei %3</translation>
+    </message>
+    <message>
+        <source>Writing variables</source>
+        <translation>Variablen schreiben</translation>
+    </message>
+    <message>
+        <source>read back %1</source>
+        <translation>zurückgelesen %1</translation>
+    </message>
+    <message>
+        <source>the other %1 flags</source>
+        <translation>die übrigen %1 Merker</translation>
+    </message>
+    <message>
+        <source>Writing flags</source>
+        <translation>Merker schreiben</translation>
+    </message>
+    <message>
+        <source>the bytes read back differ from those written</source>
+        <translation>die zurückgelesenen Bytes weichen von den geschriebenen ab</translation>
+    </message>
+    <message>
+        <source>Writing memory</source>
+        <translation>Speicher schreiben</translation>
     </message>
 </context>
 </TS>

@@ -3565,6 +3565,629 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
+    <name>cambench::Mc1AxesPage</name>
+    <message>
+        <source>Axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP (Esc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stops every axis with the maximum ramp and drops what waits for the line. Escape does the same.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move (each asks first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog −</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledge error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The %1 has no axis telegrams: moving axes needs an MC200 V2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected to an MC100/MC200.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position %1 · target %2 · %3 · %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis moves until STOP (or Escape) is pressed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis moves at its set speed. STOP (or Escape) stops it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on the %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent: %1. Now %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP sent to every axis; each acknowledged it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP did not reach every axis: %1. Use the machine&apos;s emergency stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1MemoryPage</name>
+    <message>
+        <source>Memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bytes in hex, e.g. 0a 0b 0c</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write (MC200 V2; asks first, then reads back)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the bytes as pairs of hex digits, e.g. 0a 0b 0c.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The %1 has no memory telegrams (an MC200 has).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 bytes read from 0x%2 at %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n byte(s) at %1 of the %2?</source>
+        <translation>
+            <numerusform>Write %n byte at %1 of the %2?</numerusform>
+            <numerusform>Write %n bytes at %1 of the %2?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The controller uses its memory at once; a wrong byte can stop its program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written at %1 and read back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written at %1, but the bytes read back differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1PointsPage</name>
+    <message>
+        <source>Flags &amp; I/O</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inputs (E)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outputs (A) - click to set or clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flags (M) - click to set or clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read flags and I/O</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set %1 on the %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear %1 on the %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The output switches at once; whatever it drives on the machine acts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PLC program sees the flag at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation type="unfinished">Clear</translation>
+    </message>
+    <message>
+        <source>Write flag or output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 = %2, read back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 reads back %2 after the write.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1ProgramPage</name>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PLC program runs: outputs and axes follow it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PLC program stops where it is; outputs keep their state.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One instruction of the PLC program runs; it may switch an output or start an axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller restarts: axes stop, outputs drop, the PLC program starts again from the beginning.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller&apos;s flash is overwritten with what it holds now. What the flash held before is lost.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller&apos;s variables are replaced by those in its flash. Values changed since the last save are lost.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save to flash…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load from flash…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The %1 has no program telegrams: status and control need an MC200 V2 (SYSDATA). Variables, flags and I/O work.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected to an MC100/MC200.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC program: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read program status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on the %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Done: %1. PLC program %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1SettingsWidget</name>
+    <message>
+        <source>Automatic (probe the controller)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic asks the controller and names what it found. A variant chosen here is checked against what answers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RS232, 8N1. MC100: 9600 baud, RxD/TxD crossed. MC200: the baud rate set in the controller, a 1:1 cable; CamBench holds DTR high and RTS low, which power its interface.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1TrendPage</name>
+    <message>
+        <source>Trend</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seconds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The first eight variables of the Variables page&apos;s watch list, read while this page or that one is shown.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1VariablesPage</name>
+    <message>
+        <source>Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import names…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A CSV file of &quot;number;name&quot; lines, e.g. from the PLC program&apos;s variable list. The names stay on this PC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import variable names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s) added to the watch list.</source>
+        <translation>
+            <numerusform>%n variable added to the watch list.</numerusform>
+            <numerusform>%n variables added to the watch list.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 could not be read: %2. Nothing was imported.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a name list (%2). Nothing was imported.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n name(s) imported from %1.</source>
+        <translation>
+            <numerusform>%n name imported from %1.</numerusform>
+            <numerusform>%n names imported from %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected to an MC100/MC200: nothing was written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write V%1 = %2 to the %3?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller&apos;s PLC program uses this variable at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1 was not written: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1 = %2 written and read back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1 reads back %2, not the %3 written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1WatchModel</name>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
+    </message>
+    <message>
+        <source>stale, read %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double-click to write a new value to the controller (it asks first).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name (on this PC)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished">Value</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished">State</translation>
+    </message>
+    <message>
+        <source>line %1: &quot;%2&quot; is not &quot;number;name&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: variable numbers end at 65535</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1Window</name>
+    <message>
+        <source>Identify controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No MC100/MC200 identified itself: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back up controller (variables, flags)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back up controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MC-1 backups (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify controller against backup…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify against backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore backup to controller…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Backup</source>
+        <translation type="unfinished">Backup</translation>
+    </message>
+    <message>
+        <source>No backup was saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1 variables and %2 flags to %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not verified: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller holds all %1 values of %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s) between the controller and %1:</source>
+        <translation>
+            <numerusform>%n difference between the controller and %1:</numerusform>
+            <numerusform>%n differences between the controller and %1:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation type="unfinished">Restore</translation>
+    </message>
+    <message>
+        <source>Nothing was written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore %1 (taken %2) to the controller?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>It is checked against the controller first; then only the variables, flags and memory that differ are written. The PLC program uses them at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::MonitorPage</name>
     <message>
         <source>Monitor</source>
@@ -6047,6 +6670,242 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>check the cable (MC100: RxD/TxD crossed; MC200: 1:1, and DTR high, RTS low power its interface), the baud rate (MC100: 9600) and the controller&apos;s variant</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>PLC program present</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC program running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error: invalid opcode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error: stack overflow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>breakpoint list cleared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>task switching off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>current bit result 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC program at a breakpoint</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no PLC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running, PC %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped, PC %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>start the PLC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop the PLC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run one step of the PLC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reset the controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>save to flash</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>load from flash</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1 is moving to %2 (now at %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1 stands at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, axis error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home axis %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move axis %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move axis %1 by %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move axis %1 continuously in the plus direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move axis %1 continuously in the minus direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop axis %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop axis %1 with the maximum ramp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acknowledge the error of axis %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set the speed of axis %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no MC100/MC200 answers reading variable 1: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>probed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the connection is set to the %1, but the controller answers as an %2 (variables of %3 bits): choose %2 or automatic detection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>as given, confirmed by the probe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>as given (the probe found the %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 cannot %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the memory telegrams need an MC200</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this needs an MC200 V2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished">%1 (%2)</translation>
+    </message>
+    <message>
+        <source>PLC program %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variable numbers are 0 to 65535, not %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1 of the %2 holds %3 to %4 (%5 bits), not %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is an input: inputs are read-only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading it failed too: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished">%1 %2</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the answer to &quot;%1&quot; was lost (%2); it was not sent again, because it acts each time it arrives. Read back: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>report its program status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the status failed too: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>report its axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axes are %1 to %2, not %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a speed must be more than 0, not %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the move may have started: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the axis failed too: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>memory is 0x0000 to 0xFFFF: %1 bytes from 0x%2 do not fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>write memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MC-1 (RS232)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no 0xFF synchronisation byte from the MC100MA for %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -6619,10 +7478,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>checksum</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>tool</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6700,6 +7555,66 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>minimum pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not an even number of hexadecimal digits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a pair [number, value]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variable number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>value (%1 bits)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1 a second time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 bytes from 0x%2 do not fit memory 0x0000–0xFFFF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overlaps the range before it or is out of order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>controller variant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is none of mc100v1, mc100v2, mc200v1, mc200v2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flag page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flags</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 bytes, not the page&apos;s %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sha256: the checksum is missing.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7271,6 +8186,78 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>reading the EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>memory %1–%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading flags</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file was taken from an %1, the controller is an %2 (variables of other widths, flags elsewhere): nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file&apos;s flags are on page %1, the %2 keeps them on page %3: nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file holds memory ranges, which the %1 cannot write (an MC200 V2 can): nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>written, as read back after: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 has no memory telegrams (an MC200 has): leave out --mem</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1: file %2, controller %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: file %2, controller %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes differ, the first at %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read back %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the other %1 flags</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing flags</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the bytes read back differ from those written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing memory</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -35,15 +35,50 @@ void Mc1Backend::beginRequest(const Request& request) {
     }
 }
 
-BackendStep Mc1Backend::startAttempt(const Request& request, int, qint64) {
+namespace {
+// Two periods of the slower card (10 ms) and more: a line whose 0xFF stop
+// is no longer an MC100MA's (or no longer there).
+constexpr qint64 kSyncWaitMs = 100;
+}  // namespace
+
+BackendStep Mc1Backend::startAttempt(const Request& request, int, qint64 nowMs) {
     BackendStep step;
+    if (m_syncSeen) {
+        m_waitingForSync = true;
+        m_held = request.message;
+        m_syncDeadline = nowMs + kSyncWaitMs;
+        return step;
+    }
     step.write = request.message;
     step.sent = true;
     return step;
 }
 
-BackendStep Mc1Backend::feed(QByteArrayView bytes, qint64) {
+BackendStep Mc1Backend::poll(qint64 nowMs) {
     BackendStep step;
+    if (!m_waitingForSync || nowMs < m_syncDeadline) return step;
+    m_waitingForSync = false;
+    m_syncSeen = false;  // the next attempt goes out without waiting
+    step.linkFailure =
+        QCoreApplication::translate("cambench::comm",
+                                    "no 0xFF synchronisation byte from the MC100MA for %1 ms")
+            .arg(kSyncWaitMs);
+    return step;
+}
+
+BackendStep Mc1Backend::feed(QByteArrayView input, qint64) {
+    BackendStep step;
+    QByteArrayView bytes = input;
+    const qsizetype sync = bytes.indexOf(char(kMc1Sync));
+    if (sync >= 0) m_syncSeen = true;
+    if (m_waitingForSync && sync >= 0) {
+        // The window is open now: the telegram goes out at once, and what
+        // came before the 0xFF answers nothing of it.
+        m_waitingForSync = false;
+        step.write = m_held;
+        step.sent = true;
+        bytes = bytes.sliced(sync + 1);
+    }
     m_buffer.append(bytes.toByteArray());
     for (;;) {
         const QByteArray before = m_buffer;
@@ -70,6 +105,7 @@ BackendStep Mc1Backend::feed(QByteArrayView bytes, qint64) {
 QByteArray Mc1Backend::resetInput() {
     QByteArray dropped = m_buffer;
     m_buffer.clear();
+    m_waitingForSync = false;
     return dropped;
 }
 

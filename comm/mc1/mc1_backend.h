@@ -13,8 +13,11 @@ namespace cambench::comm {
 // skipped. The message handed up is the single ACK or NAK byte, or the
 // whole answer telegram.
 //
-// Not built yet: the MC100MA's send window (a telegram must start within
-// 2–4 ms after the card's 0xFF); lines to such cards need it.
+// The MC100MA's single-FIFO cards send 0xFF every 5 or 10 ms and take a
+// telegram only when it starts within 2 or 4 ms after one. Once the backend
+// has seen a 0xFF on the line, each attempt waits for the next one and
+// sends at once (a telegram sent before that, blind, is lost silently and
+// its attempt times out; reads are then sent again in step).
 class Mc1Backend : public FramingBackend {
 public:
     explicit Mc1Backend(Mc1Variant variant);
@@ -30,7 +33,11 @@ public:
     void beginRequest(const Request& request) override;
     BackendStep startAttempt(const Request& request, int attempt, qint64 nowMs) override;
     BackendStep feed(QByteArrayView bytes, qint64 nowMs) override;
+    BackendStep poll(qint64 nowMs) override;
+    qint64 nextTimerMs() const override { return m_waitingForSync ? m_syncDeadline : -1; }
     QByteArray resetInput() override;
+    // The line carries the MC100MA's 0xFF synchronisation.
+    bool synchronised() const { return m_syncSeen; }
     qint64 requestWireBytes(const Request& request) const override;
     qint64 replyWireBytes(const Request& request) const override;
 
@@ -42,6 +49,10 @@ private:
     bool m_probing = false;
     Mc1Expectation m_expected;
     QByteArray m_buffer;
+    bool m_syncSeen = false;
+    bool m_waitingForSync = false;
+    QByteArray m_held;  // the telegram waiting for its 0xFF
+    qint64 m_syncDeadline = -1;
 };
 
 }  // namespace cambench::comm

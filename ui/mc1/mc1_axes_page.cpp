@@ -58,8 +58,10 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     // STOP: big, red, always on the page, never disabled while connected.
     m_stop->setObjectName(QStringLiteral("mc1Stop"));
     m_stop->setMinimumHeight(56);
+    // Red only while it can stop something: a disabled STOP must not look armed.
     m_stop->setStyleSheet(QStringLiteral(
-        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 16pt; }"));
+        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 16pt; }"
+        "QPushButton:disabled { background: palette(mid); color: palette(dark); }"));
     m_stop->setToolTip(
         tr("Stops every axis with the maximum ramp and drops what waits for the "
            "line. Escape does the same."));

@@ -35,16 +35,31 @@ void addDemoState(SimMc1Controller& controller) {
     }
 }
 
+// --sync / sync=: 5 or 10 ms, on an MC100 V1 only (single-FIFO cards).
+Result<int> syncFrom(const QString& text, Mc1Variant variant) {
+    const int ms = text.toInt();
+    if (ms != 5 && ms != 10)
+        return Error::usage(QStringLiteral("sync must be 5 or 10 (ms), not \"%1\"").arg(text));
+    if (variant != Mc1Variant::Mc100V1)
+        return Error::usage(
+            QStringLiteral("sync is for the MC100MA's single-FIFO cards, an "
+                           "MC100 V1: add --variant mc100v1"));
+    return ms;
+}
+
 }  // namespace
 
-SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared) {
+SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared,
+                               int syncMs) {
     auto line = std::make_unique<SimMc1Line>(variant, shared.faults);
+    line->setSync(syncMs);
     addDemoState(line->controller());
     const QString description =
         QStringLiteral("simulator (%1, %2 baud%3)")
             .arg(mc1VariantName(variant))
             .arg(baud)
-            .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled"));
+            .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled"))
+            .append(syncMs ? QStringLiteral(", 0xFF every %1 ms").arg(syncMs) : QString());
     return {std::move(line), SimPacer(baud, shared.throttle, 10), description};
 }
 
@@ -55,21 +70,33 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
     info.fromPort = [](const QString& port, const SerialSettings& serial,
                        const QString&) -> Result<SimulatedLine> {
         Mc1Variant variant = kDefaultVariant;
+        QString sync;
         const QString options = port.section(QLatin1Char(':'), 1);
         for (const QString& option : options.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
             const QString key = option.section(QLatin1Char('='), 0, 0).trimmed();
             const QString value = option.section(QLatin1Char('='), 1);
+            if (key == QLatin1String("sync")) {
+                sync = value;
+                continue;
+            }
             if (key != QLatin1String("variant"))
                 return Error::usage(
-                    QStringLiteral("the MC-1 simulator's port takes variant=…, not \"%1\"")
+                    QStringLiteral("the MC-1 simulator's port takes variant=… and sync=…, not "
+                                   "\"%1\"")
                         .arg(option));
             const Result<Mc1Variant> parsed = variantFrom(value);
             if (!parsed) return parsed.error();
             variant = *parsed;
         }
+        int syncMs = 0;
+        if (!sync.isEmpty()) {
+            const Result<int> parsed = syncFrom(sync, variant);
+            if (!parsed) return parsed.error();
+            syncMs = *parsed;
+        }
         SimHostOptions shared;
         shared.throttle = false;
-        return mc1SimulatedLine(variant, serial.baud, shared);
+        return mc1SimulatedLine(variant, serial.baud, shared, syncMs);
     };
     info.options = [] {
         return QList<QCommandLineOption>{
@@ -80,6 +107,10 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
             {QStringLiteral("baud"),
              QStringLiteral("Baud rate for the timing (default %1).").arg(kDefaultBaud),
              QStringLiteral("rate")},
+            {QStringLiteral("sync"),
+             QStringLiteral("MC-1, MC100 V1: an MC100MA single-FIFO card sending 0xFF every 5 or "
+                            "10 ms; telegrams outside the window after one are lost."),
+             QStringLiteral("ms")},
         };
     };
     info.fromOptions = [](const QCommandLineParser& parser,
@@ -97,7 +128,13 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
             if (!ok || baud < 300)
                 return Error::usage(QStringLiteral("--baud needs a baud rate of 300 or more."));
         }
-        return mc1SimulatedLine(variant, baud, shared);
+        int syncMs = 0;
+        if (parser.isSet(QStringLiteral("sync"))) {
+            const Result<int> parsed = syncFrom(parser.value(QStringLiteral("sync")), variant);
+            if (!parsed) return Error::usage(QStringLiteral("--%1").arg(parsed.error().message));
+            syncMs = *parsed;
+        }
+        return mc1SimulatedLine(variant, baud, shared, syncMs);
     };
     registry.add(info);
 }

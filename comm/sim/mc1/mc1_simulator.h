@@ -6,11 +6,14 @@
 namespace cambench::comm {
 
 // A simulated MC100/MC200 of `variant` on its line at `baud`, with demo
-// values (variables, flags, outputs) so that a first look shows something.
-SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared);
+// values (variables, flags, outputs) so that a first look shows something;
+// `syncMs` 5 or 10: an MC100MA single-FIFO card's 0xFF synchronisation.
+SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared,
+                               int syncMs = 0);
 
-// The MC-1 simulator: "sim" / "sim:variant=mc100v1" ports when the PC
-// speaks mc1, and cambench-sim --family mc1 [--variant V] [--baud B].
+// The MC-1 simulator: "sim" / "sim:variant=mc100v1;sync=10" ports when the
+// PC speaks mc1, and cambench-sim --family mc1 [--variant V] [--sync MS]
+// [--baud B].
 void registerMc1Simulator(SimulatorRegistry& registry);
 
 }  // namespace cambench::comm

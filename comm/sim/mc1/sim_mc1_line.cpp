@@ -8,8 +8,29 @@ namespace {
 constexpr int kCharacterTimeoutMs = 100;
 }  // namespace
 
+void SimMc1Line::setSync(int periodMs) {
+    m_syncPeriod = periodMs;
+    m_nextSync = -1;
+}
+
+qint64 SimMc1Line::nextTimerMs() const {
+    qint64 next = m_pending.isEmpty() ? -1 : m_deadline;
+    if (m_syncPeriod > 0)
+        next = next < 0 ? std::max<qint64>(0, m_nextSync) : std::min(next, m_nextSync);
+    return next;
+}
+
 QList<SimOutput> SimMc1Line::receive(QByteArrayView bytes, qint64 nowMs) {
     QList<SimOutput> out;
+    if (m_syncPeriod > 0 && m_pending.isEmpty()) {
+        // A telegram starts: only inside the window after a 0xFF, once.
+        const qint64 window = m_syncPeriod <= 5 ? 2 : 4;
+        if (!m_windowOpen || nowMs - m_lastSync > window) {
+            ++m_outsideWindow;
+            return out;
+        }
+        m_windowOpen = false;
+    }
     m_pending.append(bytes.toByteArray());
     while (!m_pending.isEmpty()) {
         const int length = m_controller.requestLength(m_pending);
@@ -32,9 +53,21 @@ QList<SimOutput> SimMc1Line::receive(QByteArrayView bytes, qint64 nowMs) {
 }
 
 QList<SimOutput> SimMc1Line::poll(qint64 nowMs) {
-    if (m_pending.isEmpty() || nowMs < m_deadline) return {};
-    m_pending.clear();
-    return {SimOutput{QByteArray(1, char(kMc1Nak)), 0}};
+    QList<SimOutput> out;
+    if (m_syncPeriod > 0 && nowMs >= m_nextSync) {
+        // A late poll sends one 0xFF, not the ones it missed; its window
+        // counts from when it leaves (provisional: the notes count the
+        // window to the telegram's first byte, from the 0xFF).
+        out << SimOutput{QByteArray(1, char(kMc1Sync)), 0};
+        m_lastSync = nowMs;
+        m_nextSync = nowMs + m_syncPeriod;
+        m_windowOpen = true;
+    }
+    if (!m_pending.isEmpty() && nowMs >= m_deadline) {
+        m_pending.clear();
+        out << SimOutput{QByteArray(1, char(kMc1Nak)), 0};
+    }
+    return out;
 }
 
 QString SimMc1Line::protocolName() const {

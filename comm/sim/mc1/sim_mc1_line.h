@@ -20,9 +20,14 @@ public:
 
     SimMc1Controller& controller() { return m_controller; }
     const SimFaults& faults() const { return m_faults; }
+    // An MC100MA single-FIFO card: 0xFF every `periodMs` (5 or 10; 0 off),
+    // and a telegram is taken only when its first byte comes within 2 or
+    // 4 ms after one (each 0xFF opens one window); others are lost silently.
+    void setSync(int periodMs);
+    int telegramsOutsideWindow() const { return m_outsideWindow; }
     QList<SimOutput> receive(QByteArrayView bytes, qint64 nowMs) override;
     QList<SimOutput> poll(qint64 nowMs) override;
-    qint64 nextTimerMs() const override { return m_pending.isEmpty() ? -1 : m_deadline; }
+    qint64 nextTimerMs() const override;
     QString protocolName() const override;
 
 private:
@@ -30,6 +35,11 @@ private:
     SimFaults m_faults;
     QByteArray m_pending;
     qint64 m_deadline = -1;
+    int m_syncPeriod = 0;
+    qint64 m_nextSync = -1;
+    qint64 m_lastSync = -1;
+    bool m_windowOpen = false;
+    int m_outsideWindow = 0;
 };
 
 }  // namespace cambench::comm

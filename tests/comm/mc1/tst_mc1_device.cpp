@@ -21,16 +21,18 @@ namespace {
 // `given` (none: probe).
 struct Bench {
     explicit Bench(Mc1Variant variant, std::optional<Mc1Variant> given = std::nullopt,
-                   const SimFaultSettings& faults = {})
-        : transport(line(variant, faults)), controller(transport, settings(given), timing()) {
+                   const SimFaultSettings& faults = {}, int syncMs = 0)
+        : transport(line(variant, faults, syncMs)),
+          controller(transport, settings(given), timing()) {
         (void)transport.open();
     }
-    static SimulatedLine line(Mc1Variant variant, const SimFaultSettings& faults) {
+    static SimulatedLine line(Mc1Variant variant, const SimFaultSettings& faults, int syncMs) {
         SimHostOptions shared;
         shared.throttle = false;
         shared.faults = faults;
-        return mc1SimulatedLine(variant, 115200, shared);
+        return mc1SimulatedLine(variant, 115200, shared, syncMs);
     }
+    SimMc1Line& simLine() { return static_cast<SimMc1Line&>(transport.line()); }
     static Mc1Settings settings(std::optional<Mc1Variant> given) {
         Mc1Settings s;
         s.variant = given;
@@ -195,6 +197,29 @@ private Q_SLOTS:
         const Result<bool> set = bench.device.writePoint(point("M40"), true);
         QVERIFY2(set.ok(), qPrintable(set.error().message));
         QVERIFY(*set);
+    }
+
+    // An MC100MA single-FIFO card: a telegram sent blind is lost; once the
+    // 0xFF bytes are seen, every telegram waits for one and is taken.
+    void theMc100maSynchronisationIsKept() {
+        for (int period : {5, 10}) {
+            Bench bench(Mc1Variant::Mc100V1, std::nullopt, {}, period);
+            // The card has been sending a while: the first telegram, sent
+            // before any 0xFF was seen, goes out blind (and is lost unless it
+            // happens to fall into a window; its read is then sent again).
+            QTest::qWait(30);
+            const Result<Mc1Variant> found = bench.device.ensureIdentified();
+            QVERIFY2(found.ok(), qPrintable(found.error().message));
+            QCOMPARE(*found, Mc1Variant::Mc100V1);
+            const int lostBefore = bench.simLine().telegramsOutsideWindow();
+            for (int n = 1; n <= 20; ++n) {
+                QVERIFY(bench.device.writeVariable(n, -n * 3).ok());
+                QCOMPARE(*bench.device.readVariable(n), qint64(-n * 3));
+            }
+            QCOMPARE(*bench.device.writePoint(point("A9"), true), true);
+            // In step with the card, nothing more is lost and nothing is sent twice.
+            QCOMPARE(bench.simLine().telegramsOutsideWindow(), lostBefore);
+        }
     }
 
     void aLossyLineGivesRightValuesOrClearErrorsAndNeverADoubleMove() {
