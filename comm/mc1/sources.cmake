@@ -1,6 +1,16 @@
 # The MICRO DESIGN MC100/MC200 (MC-1) family: its protocol core (telegrams of
 # the four variants, answers, address arithmetic), the device (Mc1Device,
 # Mc1Controller) and the protocol's registration.
+# What the MC-1 answer decoder is made of: fuzz_mc1_decoder compiles these
+# itself, with sanitizer coverage.
+set(CAMBENCH_MC1_DECODER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/mc1_variant.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mc1_telegram.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mc1_catalogue.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mc1_backend.cpp
+)
+set_property(GLOBAL PROPERTY CAMBENCH_MC1_DECODER_SOURCES ${CAMBENCH_MC1_DECODER_SOURCES})
+
 target_sources(cambench_comm PRIVATE
   mc1/mc1_family.h
   mc1/mc1_family.cpp

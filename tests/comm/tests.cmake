@@ -19,3 +19,4 @@ cambench_add_test(tst_mc1_protocol SOURCES comm/mc1/tst_mc1_protocol.cpp LIBS ca
 cambench_add_test(tst_sim_mc1_controller SOURCES comm/sim/tst_sim_mc1_controller.cpp LIBS cambench_sim)
 cambench_add_test(tst_mc1_link SOURCES comm/mc1/tst_mc1_link.cpp LIBS cambench_sim)
 cambench_add_test(tst_mc1_device SOURCES comm/mc1/tst_mc1_device.cpp LIBS cambench_sim)
+include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/mc1_decoder.cmake)
