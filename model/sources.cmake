@@ -1,6 +1,8 @@
 target_sources(cambench_model PRIVATE
   mc1/mc1_backup_file.h
   mc1/mc1_backup_file.cpp
+  mc1/mc1_project_file.h
+  mc1/mc1_project_file.cpp
   result.h
   walked_list.h
   walked_list.cpp

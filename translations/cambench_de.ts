@@ -4047,6 +4047,53 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>V%1 reads back %2, not the %3 written.</source>
         <translation>V%1 liest %2 zurück, nicht die geschriebenen %3.</translation>
     </message>
+    <message>
+        <source>Open list…</source>
+        <translation>Liste öffnen…</translation>
+    </message>
+    <message>
+        <source>A watch list saved before (MC-1 project file): its variables, names and the values they had then, shown as not read until read.</source>
+        <translation>Eine früher gespeicherte Beobachtungsliste (MC-1-Projektdatei): ihre Variablen, Namen und die damaligen Werte, als nicht gelesen angezeigt, bis sie gelesen sind.</translation>
+    </message>
+    <message>
+        <source>Save list…</source>
+        <translation>Liste speichern…</translation>
+    </message>
+    <message>
+        <source>The watch list with its names and the values last read, as an MC-1 project file on this PC.</source>
+        <translation>Die Beobachtungsliste mit ihren Namen und den zuletzt gelesenen Werten, als MC-1-Projektdatei auf diesem PC.</translation>
+    </message>
+    <message>
+        <source>Open watch list</source>
+        <translation>Beobachtungsliste öffnen</translation>
+    </message>
+    <message>
+        <source>MC-1 projects (*.json)</source>
+        <translation>MC-1-Projekte (*.json)</translation>
+    </message>
+    <message>
+        <source>Save watch list</source>
+        <translation>Beobachtungsliste speichern</translation>
+    </message>
+    <message>
+        <source>Watch list saved to %1.</source>
+        <translation>Beobachtungsliste in %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>The watch list was not saved: %1</source>
+        <translation>Die Beobachtungsliste wurde nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Nothing was opened: %1</source>
+        <translation>Nichts wurde geöffnet: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s) from %1; values shown as in the file until read.</source>
+        <translation>
+            <numerusform>%n Variable aus %1; Werte wie in der Datei, bis sie gelesen sind.</numerusform>
+            <numerusform>%n Variablen aus %1; Werte wie in der Datei, bis sie gelesen sind.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1WatchModel</name>
@@ -4089,6 +4136,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>line %1: variable numbers end at 65535</source>
         <translation>Zeile %1: Variablennummern enden bei 65535</translation>
+    </message>
+    <message>
+        <source>from the file, not read</source>
+        <translation>aus der Datei, nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -7618,6 +7669,30 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>sha256: the checksum is missing.</source>
         <translation>sha256: die Prüfsumme fehlt.</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not %2</source>
+        <translation>"%1" ist nicht %2</translation>
+    </message>
+    <message>
+        <source>%1 a second time</source>
+        <translation>%1 ein zweites Mal</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is none of auto, mc100v1, mc100v2, mc200v1, mc200v2</source>
+        <translation>"%1" ist keine von auto, mc100v1, mc100v2, mc200v1, mc200v2</translation>
+    </message>
+    <message>
+        <source>a variable such as V12</source>
+        <translation>eine Variable wie V12</translation>
+    </message>
+    <message>
+        <source>a flag, input or output such as M2327</source>
+        <translation>ein Merker, Eingang oder Ausgang wie M2327</translation>
     </message>
 </context>
 <context>

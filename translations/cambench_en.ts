@@ -4045,6 +4045,53 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>V%1 reads back %2, not the %3 written.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Open list…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A watch list saved before (MC-1 project file): its variables, names and the values they had then, shown as not read until read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save list…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The watch list with its names and the values last read, as an MC-1 project file on this PC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open watch list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MC-1 projects (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save watch list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Watch list saved to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The watch list was not saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was opened: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n variable(s) from %1; values shown as in the file until read.</source>
+        <translation>
+            <numerusform>%n variable from %1; values shown as in the file until read.</numerusform>
+            <numerusform>%n variables from %1; values shown as in the file until read.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1WatchModel</name>
@@ -4086,6 +4133,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>line %1: variable numbers end at 65535</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from the file, not read</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7615,6 +7666,30 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>sha256: the checksum is missing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 a second time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is none of auto, mc100v1, mc100v2, mc200v1, mc200v2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a variable such as V12</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a flag, input or output such as M2327</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -11,3 +11,4 @@ cambench_add_test(tst_walked_list SOURCES model/tst_walked_list.cpp LIBS cambenc
 cambench_add_test(tst_program_diff SOURCES model/tst_program_diff.cpp LIBS cambench_model)
 cambench_add_test(tst_cam_timing SOURCES model/tst_cam_timing.cpp LIBS cambench_model)
 cambench_add_test(tst_mc1_backup_file SOURCES model/tst_mc1_backup_file.cpp LIBS cambench_model)
+cambench_add_test(tst_mc1_project_file SOURCES model/tst_mc1_project_file.cpp LIBS cambench_model)

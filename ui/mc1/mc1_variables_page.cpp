@@ -47,6 +47,14 @@ Mc1VariablesPage::Mc1VariablesPage(DeviceSession* session, Mc1WatchModel* model,
     auto* add = new QPushButton(tr("Watch"));
     add->setObjectName(QStringLiteral("mc1WatchAdd"));
     auto* remove = new QPushButton(tr("Remove selected"));
+    auto* open = new QPushButton(tr("Open list…"));
+    open->setToolTip(
+        tr("A watch list saved before (MC-1 project file): its variables, names "
+           "and the values they had then, shown as not read until read."));
+    auto* save = new QPushButton(tr("Save list…"));
+    save->setToolTip(
+        tr("The watch list with its names and the values last read, as an MC-1 "
+           "project file on this PC."));
     auto* import = new QPushButton(tr("Import names…"));
     import->setToolTip(
         tr("A CSV file of \"number;name\" lines, e.g. from the PLC program's "
@@ -60,6 +68,8 @@ Mc1VariablesPage::Mc1VariablesPage(DeviceSession* session, Mc1WatchModel* model,
     controls->addSpacing(12);
     controls->addWidget(remove);
     controls->addWidget(import);
+    controls->addWidget(open);
+    controls->addWidget(save);
     controls->addStretch();
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
@@ -77,6 +87,17 @@ Mc1VariablesPage::Mc1VariablesPage(DeviceSession* session, Mc1WatchModel* model,
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Import variable names"), {}, tr("CSV files (*.csv *.txt);;All files (*)"));
         if (!path.isEmpty()) importNames(path);
+    });
+    connect(open, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open watch list"), {},
+                                                          tr("MC-1 projects (*.json)"));
+        if (!path.isEmpty()) openList(path);
+    });
+    connect(save, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save watch list"),
+                                                          QStringLiteral("mc1-project.json"),
+                                                          tr("MC-1 projects (*.json)"));
+        if (!path.isEmpty()) saveList(path);
     });
     connect(m_model, &Mc1WatchModel::writeRequested, this, &Mc1VariablesPage::writeVariable);
 }
@@ -105,6 +126,30 @@ void Mc1VariablesPage::importNames(const QString& path) {
     }
     m_model->setNames(list.names);
     showResult(tr("%n name(s) imported from %1.", nullptr, int(list.names.size())).arg(path), true);
+}
+
+void Mc1VariablesPage::saveList(const QString& path) {
+    const QString variant =
+        facts().known ? comm::mc1VariantKey(facts().variant) : QStringLiteral("auto");
+    const Status saved = saveMc1Project(path, m_model->toProject(variant));
+    showResult(saved
+                   ? tr("Watch list saved to %1.").arg(path)
+                   : tr("The watch list was not saved: %1").arg(asSentence(saved.error().message)),
+               saved.ok());
+}
+
+void Mc1VariablesPage::openList(const QString& path) {
+    const Result<Mc1Project> project = loadMc1Project(path);
+    if (!project) {
+        showResult(tr("Nothing was opened: %1").arg(asSentence(project.error().message)), false);
+        return;
+    }
+    m_model->setProject(*project);
+    showResult(tr("%n variable(s) from %1; values shown as in the file until read.", nullptr,
+                  int(project->variables.size()))
+                   .arg(path),
+               true);
+    poll();
 }
 
 bool Mc1VariablesPage::poll() {

@@ -27,6 +27,9 @@ public:
     // Asks, then writes `value` to variable `number` and reads it back.
     void writeVariable(int number, qint64 value);
     void importNames(const QString& path);
+    // The watch list (numbers, names, last values) to and from a project file.
+    void saveList(const QString& path);
+    void openList(const QString& path);
 
 private:
     void addRange();

@@ -80,6 +80,31 @@ void Mc1WatchModel::markStale() {
     if (changed) Q_EMIT dataChanged(index(0, ValueColumn), index(rowCount() - 1, StateColumn));
 }
 
+Mc1Project Mc1WatchModel::toProject(const QString& variant) const {
+    Mc1Project project;
+    project.variant = variant;
+    for (const Entry& entry : m_entries)
+        project.variables << Mc1NamedValue{QStringLiteral("V%1").arg(entry.number), entry.name,
+                                           entry.value};
+    project.flags = m_flags;
+    return project;
+}
+
+void Mc1WatchModel::setProject(const Mc1Project& project) {
+    beginResetModel();
+    m_entries.clear();
+    for (const Mc1NamedValue& variable : project.variables) {
+        Entry entry;
+        entry.number = variable.point.mid(1).toInt();
+        entry.name = variable.name;
+        entry.value = variable.value;
+        entry.stale = variable.value.has_value();  // from the file, not from the controller
+        m_entries << entry;
+    }
+    m_flags = project.flags;
+    endResetModel();
+}
+
 int Mc1WatchModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : int(m_entries.size());
 }
@@ -102,6 +127,7 @@ QVariant Mc1WatchModel::data(const QModelIndex& index, int role) const {
                 return entry.value ? QString::number(*entry.value) : QStringLiteral("—");
             case StateColumn:
                 if (!entry.value) return tr("not read");
+                if (entry.stale && !entry.readAt.isValid()) return tr("from the file, not read");
                 return entry.stale ? tr("stale, read %1")
                                          .arg(entry.readAt.toString(QStringLiteral("HH:mm:ss")))
                                    : tr("live");

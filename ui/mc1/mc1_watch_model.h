@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/mc1/mc1_project_file.h"
+
 #include <QAbstractTableModel>
 #include <QDateTime>
 #include <QList>
@@ -41,6 +43,12 @@ public:
     // Every value shown is no longer known to be true.
     void markStale();
 
+    // The watch list as a project file holds it (names, last values; the
+    // flags as they were loaded), and replaced by one: values from a file
+    // are shown as stale until read.
+    Mc1Project toProject(const QString& variant) const;
+    void setProject(const Mc1Project& project);
+
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role) const override;
@@ -57,6 +65,7 @@ private:
     int rowOf(int number) const;
 
     QList<Entry> m_entries;
+    QList<Mc1NamedValue> m_flags;  // kept from a project file, saved back
 };
 
 // "12;Feed length" / "12,Feed length" / "V12,Feed length" lines (a header

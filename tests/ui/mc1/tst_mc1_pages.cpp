@@ -16,6 +16,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QTemporaryDir>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -78,6 +79,29 @@ private Q_SLOTS:
             mc1->variablesPage()->findChild<QLabel*>(QStringLiteral("mc1Result"));
         QVERIFY2(result->text().contains(QLatin1String("V2 = 77 written and read back")),
                  qPrintable(result->text()));
+
+        // The watch list, named, to a project file and back: values from
+        // the file are not shown as live.
+        model->setData(model->index(1, Mc1WatchModel::NameColumn), QStringLiteral("Feed length"),
+                       Qt::EditRole);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("watch.json"));
+        mc1->variablesPage()->saveList(path);
+        model->removeRows({0, 1, 2});
+        shell->session()->disconnectFromDevice();
+        mc1->variablesPage()->openList(path);
+        QCOMPARE(model->entries().size(), 10);
+        QCOMPARE(model->entries().at(1).name, QStringLiteral("Feed length"));
+        QCOMPARE(*model->entries().at(1).value, qint64(77));
+        QCOMPARE(model->index(1, Mc1WatchModel::StateColumn).data().toString(),
+                 QStringLiteral("from the file, not read"));
+        shell->session()->reconnect();
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return model->index(1, Mc1WatchModel::StateColumn).data().toString() ==
+                       QLatin1String("live");
+            },
+            kDeviceTimeoutMs));
 
         // The line goes: values stay, marked stale.
         shell->session()->disconnectFromDevice();
