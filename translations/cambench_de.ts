@@ -6959,6 +6959,54 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>no 0xFF synchronisation byte from the MC100MA for %1 ms</source>
         <translation>kein 0xFF-Synchronisationsbyte von der MC100MA seit %1 ms</translation>
     </message>
+    <message>
+        <source>MC100 ASCII (RS232)</source>
+        <translation>MC100 ASCII (RS232)</translation>
+    </message>
+    <message>
+        <source>the MC100 (ASCII protocol)</source>
+        <translation>die MC100 (ASCII-Protokoll)</translation>
+    </message>
+    <message>
+        <source>check the cable (RxD/TxD crossed), 9600 baud, and that the MC100 speaks ASCII (a controller set to the binary protocol answers only that: connect with mc1)</source>
+        <translation>prüfen Sie das Kabel (RxD/TxD gekreuzt), 9600 Baud und ob die MC100 ASCII spricht (eine auf das Binärprotokoll eingestellte Steuerung antwortet nur darauf: verbinden Sie mit mc1)</translation>
+    </message>
+    <message>
+        <source>ASCII protocol, which looks alike on V1 and V2</source>
+        <translation>ASCII-Protokoll, das auf V1 und V2 gleich aussieht</translation>
+    </message>
+    <message>
+        <source>no MC100 answers in ASCII reading V1: %1</source>
+        <translation>keine MC100 antwortet in ASCII auf das Lesen von V1: %1</translation>
+    </message>
+    <message>
+        <source>MC100 (ASCII protocol)</source>
+        <translation>MC100 (ASCII-Protokoll)</translation>
+    </message>
+    <message>
+        <source>V%1 of the MC100 holds %2 to %3 (24 bits), not %4</source>
+        <translation>V%1 der MC100 fasst %2 bis %3 (24 Bit), nicht %4</translation>
+    </message>
+    <message>
+        <source>external RAM page %1 (only the flags&apos;)</source>
+        <translation>externe RAM-Seite %1 (nur die der Merker)</translation>
+    </message>
+    <message>
+        <source>the MC100&apos;s ASCII protocol has no requests for %1; an MC200 V2 over the binary protocol (mc1) has</source>
+        <translation>das ASCII-Protokoll der MC100 hat keine Anfragen für: %1; eine MC200 V2 über das Binärprotokoll (mc1) hat sie</translation>
+    </message>
+    <message>
+        <source>the program status</source>
+        <translation>den Programmstatus</translation>
+    </message>
+    <message>
+        <source>axes</source>
+        <translation>Achsen</translation>
+    </message>
+    <message>
+        <source>memory</source>
+        <translation>Speicher</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -7676,7 +7724,7 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
     <message>
         <source>&quot;%1&quot; is not %2</source>
-        <translation>"%1" ist nicht %2</translation>
+        <translation>&quot;%1&quot; ist nicht %2</translation>
     </message>
     <message>
         <source>%1 a second time</source>
@@ -7684,7 +7732,7 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
     <message>
         <source>&quot;%1&quot; is none of auto, mc100v1, mc100v2, mc200v1, mc200v2</source>
-        <translation>"%1" ist keine von auto, mc100v1, mc100v2, mc200v1, mc200v2</translation>
+        <translation>&quot;%1&quot; ist keine von auto, mc100v1, mc100v2, mc200v1, mc200v2</translation>
     </message>
     <message>
         <source>a variable such as V12</source>

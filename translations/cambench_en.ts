@@ -6957,6 +6957,54 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>no 0xFF synchronisation byte from the MC100MA for %1 ms</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>MC100 ASCII (RS232)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the MC100 (ASCII protocol)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check the cable (RxD/TxD crossed), 9600 baud, and that the MC100 speaks ASCII (a controller set to the binary protocol answers only that: connect with mc1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ASCII protocol, which looks alike on V1 and V2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no MC100 answers in ASCII reading V1: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MC100 (ASCII protocol)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V%1 of the MC100 holds %2 to %3 (24 bits), not %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>external RAM page %1 (only the flags&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the MC100&apos;s ASCII protocol has no requests for %1; an MC200 V2 over the binary protocol (mc1) has</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the program status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>memory</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>

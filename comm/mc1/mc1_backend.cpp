@@ -68,22 +68,30 @@ BackendStep Mc1Backend::poll(qint64 nowMs) {
 
 BackendStep Mc1Backend::feed(QByteArrayView input, qint64) {
     BackendStep step;
-    QByteArrayView bytes = input;
-    const qsizetype sync = bytes.indexOf(char(kMc1Sync));
-    if (sync >= 0) m_syncSeen = true;
-    if (m_waitingForSync && sync >= 0) {
-        // The window is open now: the telegram goes out at once, and what
-        // came before the 0xFF answers nothing of it.
-        m_waitingForSync = false;
-        step.write = m_held;
-        step.sent = true;
-        bytes = bytes.sliced(sync + 1);
+    for (const char byte : input) {
+        // A 0xFF between telegrams is the MC100MA's synchronisation; inside
+        // an answer it is a data byte.
+        if (m_buffer.isEmpty() && quint8(byte) == kMc1Sync) {
+            m_syncSeen = true;
+            if (m_waitingForSync) {
+                // The window is open now: the telegram goes out at once.
+                m_waitingForSync = false;
+                step.write = m_held;
+                step.sent = true;
+            }
+            continue;
+        }
+        m_buffer.append(byte);
+        takeAnswers(step);
     }
-    m_buffer.append(bytes.toByteArray());
-    for (;;) {
+    return step;
+}
+
+void Mc1Backend::takeAnswers(BackendStep& step) {
+    while (!m_buffer.isEmpty()) {
         const QByteArray before = m_buffer;
         const std::optional<Result<Mc1Answer>> answer = takeMc1Answer(m_buffer, m_expected);
-        if (!answer) break;
+        if (!answer) return;
         Incoming in;
         const qsizetype used = before.size() - m_buffer.size();
         in.wire = before.left(used > 0 ? used : before.size());
@@ -97,9 +105,7 @@ BackendStep Mc1Backend::feed(QByteArrayView input, qint64) {
                 QByteArray(1, char((*answer)->kind == Mc1Answer::Kind::Ack ? kMc1Ack : kMc1Nak));
         }
         step.incoming << in;
-        if (m_buffer.isEmpty()) break;
     }
-    return step;
 }
 
 QByteArray Mc1Backend::resetInput() {

@@ -45,6 +45,9 @@ public:
     static Mc1Expectation expectationFor(Mc1Variant variant, const QByteArray& telegram);
 
 private:
+    // Hands up every answer complete in the buffer.
+    void takeAnswers(BackendStep& step);
+
     Mc1Variant m_variant;
     bool m_probing = false;
     Mc1Expectation m_expected;

@@ -28,6 +28,45 @@ void Mc1ProtocolSettings::fromMap(const QVariantMap& map) {
     mc1.retries = qBound(0, map.value(QStringLiteral("retries"), mc1.retries).toInt(), 10);
 }
 
+std::unique_ptr<ProtocolSettings> Mc1AsciiProtocolSettings::clone() const {
+    return std::make_unique<Mc1AsciiProtocolSettings>(*this);
+}
+
+QVariantMap Mc1AsciiProtocolSettings::toMap() const {
+    return {{QStringLiteral("timeoutMs"), timeout}};
+}
+
+void Mc1AsciiProtocolSettings::fromMap(const QVariantMap& map) {
+    timeout = qMax(0, map.value(QStringLiteral("timeoutMs"), timeout).toInt());
+}
+
+namespace {
+
+Error otherSettings(const QString& protocol) {
+    return Error::usage(
+        QCoreApplication::translate("cambench::comm", "the %1 protocol got settings of %2")
+            .arg(protocol, QCoreApplication::translate("cambench::comm", "another protocol")));
+}
+
+ProtocolInfo asciiProtocol() {
+    ProtocolInfo info;
+    info.id = QStringLiteral("mc1-ascii");
+    info.familyId = QStringLiteral("mc1");
+    info.title = QCoreApplication::translate("cambench::comm", "MC100 ASCII (RS232)");
+    info.defaultSerial.baud = 9600;
+    info.makeSettings = [] { return std::make_unique<Mc1AsciiProtocolSettings>(); };
+    info.connect = [](Transport& transport, const ProtocolSettings& settings,
+                      const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {
+        const auto* ascii = dynamic_cast<const Mc1AsciiProtocolSettings*>(&settings);
+        if (!ascii) return otherSettings(QStringLiteral("mc1-ascii"));
+        return std::unique_ptr<DeviceConnection>(
+            std::make_unique<Mc1AsciiController>(transport, ascii->timeout, line));
+    };
+    return info;
+}
+
+}  // namespace
+
 void registerMc1Protocol(ProtocolRegistry& registry) {
     ProtocolInfo info;
     info.id = QStringLiteral("mc1");
@@ -40,15 +79,12 @@ void registerMc1Protocol(ProtocolRegistry& registry) {
     info.connect = [](Transport& transport, const ProtocolSettings& settings,
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {
         const auto* mc1 = dynamic_cast<const Mc1ProtocolSettings*>(&settings);
-        if (!mc1)
-            return Error::usage(
-                QCoreApplication::translate("cambench::comm", "the %1 protocol got settings of %2")
-                    .arg(QStringLiteral("mc1"),
-                         QCoreApplication::translate("cambench::comm", "another protocol")));
+        if (!mc1) return otherSettings(QStringLiteral("mc1"));
         return std::unique_ptr<DeviceConnection>(
             std::make_unique<Mc1Controller>(transport, mc1->mc1, line));
     };
     registry.add(info);
+    registry.add(asciiProtocol());
 }
 
 }  // namespace cambench::comm

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mc1_ascii_controller.h"
 #include "mc1_controller.h"
 
 #include "comm/device/protocol_registry.h"
@@ -21,8 +22,21 @@ public:
     void fromMap(const QVariantMap& map) override;
 };
 
-// Adds "mc1" (RS232, 9600 8N1, DTR high and RTS low: they power an MC200's
-// interface) to `registry`.
+// The MC100's ASCII protocol ("mc1-ascii"): only the user's timeout.
+class Mc1AsciiProtocolSettings : public ProtocolSettings {
+public:
+    int timeout = 0;
+
+    QString protocolId() const override { return QStringLiteral("mc1-ascii"); }
+    std::unique_ptr<ProtocolSettings> clone() const override;
+    int timeoutMs() const override { return timeout; }
+    QVariantMap toMap() const override;
+    void fromMap(const QVariantMap& map) override;
+};
+
+// Adds the family's protocols to `registry`: "mc1", the binary MC-1 (RS232,
+// 9600 8N1, DTR high and RTS low: they power an MC200's interface), and
+// "mc1-ascii", the MC100's ASCII protocol.
 void registerMc1Protocol(ProtocolRegistry& registry);
 
 }  // namespace cambench::comm

@@ -37,4 +37,8 @@ target_sources(cambench_comm PRIVATE
   mc1/mc1_controller_motion.cpp
   mc1/mc1_protocol.h
   mc1/mc1_protocol.cpp
+  mc1/mc1_ascii_backend.h
+  mc1/mc1_ascii_backend.cpp
+  mc1/mc1_ascii_controller.h
+  mc1/mc1_ascii_controller.cpp
 )

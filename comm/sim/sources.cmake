@@ -9,6 +9,8 @@ target_sources(cambench_sim PRIVATE
   mc1/sim_mc1_line.h
   mc1/mc1_simulator.cpp
   mc1/mc1_simulator.h
+  mc1/sim_mc1_ascii_line.cpp
+  mc1/sim_mc1_ascii_line.h
   camcon/sim_axis.h
   camcon/sim_cam_handlers.cpp
   camcon/sim_cam_store.cpp

@@ -101,6 +101,39 @@ private Q_SLOTS:
                  qPrintable(detect.out));
     }
 
+    // An MC100 set to its ASCII protocol: variables, flags, a backup and a
+    // restore of the differences; what ASCII lacks is refused by name; Detect
+    // finds it after the binary protocols have been tried.
+    void theMc100AsciiProtocol() {
+        SimSession session(QStringLiteral("mc1-ascii"));
+        START_SIM(session);
+        const CliRun info = session.cli({"mc", "info"});
+        VERIFY_EXIT(info, 0);
+        QVERIFY2(info.out.contains(QLatin1String("found: ASCII protocol")), qPrintable(info.out));
+        VERIFY_EXIT(session.cli({"mc", "var", "write", "4", "-8388608"}), 0);
+        const CliRun var = session.cli({"mc", "var", "read", "4"});
+        QCOMPARE(var.out, QStringLiteral("V4 = -8388608\n"));
+        VERIFY_EXIT(session.cli({"mc", "var", "write", "4", "8388608"}), 2);
+        const CliRun set = session.cli({"mc", "flag", "set", "M2327", "A9"});
+        VERIFY_EXIT(set, 0);
+        QCOMPARE(set.out, QStringLiteral("M2327 = 1\nA9 = 1\n"));
+        const QString file = session.path(QStringLiteral("ascii.json"));
+        VERIFY_EXIT(session.cli({"mc", "backup", "-o", file, "--vars", "1-8"}), 0);
+        VERIFY_EXIT(session.cli({"mc", "flag", "clear", "M2327"}), 0);
+        const CliRun restore = session.cli({"mc", "restore", file});
+        VERIFY_EXIT(restore, 0);
+        QVERIFY2(restore.out.contains(QLatin1String("M2327: written")), qPrintable(restore.out));
+        VERIFY_EXIT(session.cli({"mc", "verify", file}), 0);
+        const CliRun run = session.cli({"mc", "run"});
+        VERIFY_EXIT(run, 2);
+        QVERIFY2(run.err.contains(QLatin1String("ASCII protocol has no requests")),
+                 qPrintable(run.err));
+        const CliRun detect = runCli({"--port", session.ptyPath(), "detect"});
+        VERIFY_EXIT(detect, 0);
+        QVERIFY2(detect.out.contains(QLatin1String("mc1: MC100 (ASCII protocol)")),
+                 qPrintable(detect.out));
+    }
+
     // A file of the other controller type is refused before anything is sent.
     void aFileOfTheOtherControllerIsRefused() {
         SimSession mc200(QStringLiteral("mc1"));

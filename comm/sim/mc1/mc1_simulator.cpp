@@ -1,5 +1,6 @@
 #include "mc1_simulator.h"
 
+#include "sim_mc1_ascii_line.h"
 #include "sim_mc1_line.h"
 
 #include "comm/mc1/mc1_address.h"
@@ -47,7 +48,28 @@ Result<int> syncFrom(const QString& text, Mc1Variant variant) {
     return ms;
 }
 
+const QLatin1String kAsciiProtocol("mc1-ascii");
+
+// The ASCII protocol is the MC100's (V1 and V2 alike), without the
+// single-FIFO synchronisation.
+Status checkAscii(Mc1Variant variant, int syncMs) {
+    if (isMc200(variant) && variant != kDefaultVariant)
+        return Error::usage(QStringLiteral("the ASCII protocol is the MC100's, not the %1's")
+                                .arg(mc1VariantName(variant)));
+    if (syncMs) return Error::usage(QStringLiteral("the ASCII protocol has no 0xFF sync"));
+    return success();
+}
+
 }  // namespace
+
+SimulatedLine mc1AsciiSimulatedLine(int baud, const SimHostOptions& shared) {
+    auto line = std::make_unique<SimMc1AsciiLine>(shared.faults);
+    addDemoState(line->controller());
+    return {std::move(line), SimPacer(baud, shared.throttle, 10),
+            QStringLiteral("simulator (MC100, ASCII protocol, %1 baud%2)")
+                .arg(baud)
+                .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled"))};
+}
 
 SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared,
                                int syncMs) {
@@ -68,7 +90,7 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
     info.familyId = QStringLiteral("mc1");
     // "sim" or "sim:variant=mc100v1": the in-process simulator.
     info.fromPort = [](const QString& port, const SerialSettings& serial,
-                       const QString&) -> Result<SimulatedLine> {
+                       const QString& protocol) -> Result<SimulatedLine> {
         Mc1Variant variant = kDefaultVariant;
         QString sync;
         const QString options = port.section(QLatin1Char(':'), 1);
@@ -96,6 +118,10 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
         }
         SimHostOptions shared;
         shared.throttle = false;
+        if (protocol == kAsciiProtocol) {
+            if (const Status ascii = checkAscii(variant, syncMs); !ascii) return ascii.error();
+            return mc1AsciiSimulatedLine(serial.baud, shared);
+        }
         return mc1SimulatedLine(variant, serial.baud, shared, syncMs);
     };
     info.options = [] {
@@ -133,6 +159,12 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
             const Result<int> parsed = syncFrom(parser.value(QStringLiteral("sync")), variant);
             if (!parsed) return Error::usage(QStringLiteral("--%1").arg(parsed.error().message));
             syncMs = *parsed;
+        }
+        if (shared.protocol == kAsciiProtocol) {
+            if (const Status ascii = checkAscii(variant, syncMs); !ascii)
+                return Error::usage(
+                    QStringLiteral("--protocol mc1-ascii: %1").arg(ascii.error().message));
+            return mc1AsciiSimulatedLine(baud, shared);
         }
         return mc1SimulatedLine(variant, baud, shared, syncMs);
     };

@@ -11,6 +11,9 @@ namespace cambench::comm {
 SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared,
                                int syncMs = 0);
 
+// A simulated MC100 that speaks its ASCII protocol ("mc1-ascii").
+SimulatedLine mc1AsciiSimulatedLine(int baud, const SimHostOptions& shared);
+
 // The MC-1 simulator: "sim" / "sim:variant=mc100v1;sync=10" ports when the
 // PC speaks mc1, and cambench-sim --family mc1 [--variant V] [--sync MS]
 // [--baud B].

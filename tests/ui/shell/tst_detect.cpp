@@ -125,11 +125,13 @@ private Q_SLOTS:
         QVERIFY2(text.contains(QLatin1String("Nothing answered on ") + device.path()),
                  qPrintable(text));
         // One short line per try on the page, what each said in full in the tooltip.
-        QCOMPARE(text.count(QLatin1String(": no answer")), 5);
-        for (const char* title : {"Standard", "Multiuser", "3964R n96", "3964R e38", "MC-1"})
+        QCOMPARE(text.count(QLatin1String(": no answer")), 6);
+        for (const char* title :
+             {"Standard", "Multiuser", "3964R n96", "3964R e38", "MC-1", "MC100 ASCII"})
             QVERIFY2(text.contains(QLatin1String(title)), qPrintable(text));
         const QString details = page->findChild<QLabel*>(QStringLiteral("detectResult"))->toolTip();
-        for (const char* protocol : {"standard", "multiuser", "3964r-n96", "3964r-e38", "mc1"})
+        for (const char* protocol :
+             {"standard", "multiuser", "3964r-n96", "3964r-e38", "mc1", "mc1-ascii"})
             QVERIFY2(details.contains(QLatin1String(protocol)), qPrintable(details));
         QVERIFY(text.contains(QLatin1String("Check the cable")));
     }
