@@ -1,6 +1,7 @@
 #include "mc1_ascii_controller.h"
 
 #include "mc1_ascii.h"
+#include "mc1_link.h"
 
 #include <QCoreApplication>
 
@@ -11,15 +12,10 @@ namespace {
 // The longest answer line: a 24-bit value with its sign and CR LF.
 constexpr int kLongestAnswer = 10;
 
-EngineSettings engineSettings(int timeoutMs, LineTiming line) {
-    line.turnaroundMs = std::max(line.turnaroundMs, 500);
-    return EngineSettings{line, 2, timeoutMs};
-}
-
 }  // namespace
 
 Mc1AsciiController::Mc1AsciiController(Transport& transport, int timeoutMs, const LineTiming& line)
-    : m_engine(transport, m_backend, engineSettings(timeoutMs, line)) {}
+    : m_engine(transport, m_backend, mc1EngineSettings(line, 2, timeoutMs)) {}
 
 QString Mc1AsciiController::variantSource() const {
     return QCoreApplication::translate("cambench::comm",

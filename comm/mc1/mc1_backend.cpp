@@ -17,22 +17,23 @@ QString Mc1Backend::checkHint() const {
         "interface), the baud rate (MC100: 9600) and the controller's variant");
 }
 
-Mc1Expectation Mc1Backend::expectationFor(Mc1Variant variant, const QByteArray& telegram) {
+Mc1Expectation Mc1Backend::expectationFor(Mc1Variant variant, const QByteArray& telegram,
+                                          bool probing) {
     const Mc1Telegram* row = mc1RequestRow(variant, telegram);
     if (!row) return {};
-    return mc1ExpectedAnswer(*row, telegram.mid(row->command >= 0 ? 3 : 2));
+    Mc1Expectation expected = mc1ExpectedAnswer(*row, telegram.mid(row->command >= 0 ? 3 : 2));
+    if (probing && row->op == Mc1Op::ReadVariable) {
+        // The other width's row: an MC200's if `variant` is an MC100.
+        const Mc1Variant other = isMc200(variant) ? Mc1Variant::Mc100V1 : Mc1Variant::Mc200V1;
+        const Mc1Expectation theirs = expectationFor(other, telegram);
+        expected.otherOpcode = theirs.opcode;
+        expected.otherLength = theirs.length;
+    }
+    return expected;
 }
 
 void Mc1Backend::beginRequest(const Request& request) {
-    m_expected = expectationFor(m_variant, request.message);
-    const Mc1Telegram* row = mc1RequestRow(m_variant, request.message);
-    if (m_probing && row && row->op == Mc1Op::ReadVariable) {
-        // The other width's row: an MC200's if `m_variant` is an MC100.
-        const Mc1Variant other = isMc200(m_variant) ? Mc1Variant::Mc100V1 : Mc1Variant::Mc200V1;
-        const Mc1Expectation theirs = expectationFor(other, request.message);
-        m_expected.otherOpcode = theirs.opcode;
-        m_expected.otherLength = theirs.length;
-    }
+    m_expected = expectationFor(m_variant, request.message, m_probing);
 }
 
 namespace {

@@ -41,8 +41,10 @@ public:
     qint64 requestWireBytes(const Request& request) const override;
     qint64 replyWireBytes(const Request& request) const override;
 
-    // What answers `telegram` on `variant`, from its request bytes.
-    static Mc1Expectation expectationFor(Mc1Variant variant, const QByteArray& telegram);
+    // What answers `telegram` on `variant`, from its request bytes; while
+    // `probing`, an RDVAR answer of the other width too.
+    static Mc1Expectation expectationFor(Mc1Variant variant, const QByteArray& telegram,
+                                         bool probing = false);
 
 private:
     // Hands up every answer complete in the buffer.

@@ -9,18 +9,6 @@ namespace cambench::comm {
 
 namespace {
 
-QByteArray le(qint64 value, int bytes) {
-    return mc1LittleEndian(value, bytes);
-}
-
-EngineSettings engineSettings(const Mc1Settings& settings, LineTiming line) {
-    // A telegram cut short is NAKed only after the controller's character
-    // timeout (the emulator's: 100 ms); waiting 0.5 s for an answer keeps
-    // that late NAK from being taken as the next request's answer.
-    line.turnaroundMs = std::max(line.turnaroundMs, 500);
-    return EngineSettings{line, settings.retries, settings.timeoutMs};
-}
-
 bool isNak(const Error& error) {
     return error.kind == ErrorKind::DeviceError && error.deviceCode == kMc1Nak;
 }
@@ -30,7 +18,7 @@ bool isNak(const Error& error) {
 Mc1Controller::Mc1Controller(Transport& transport, const Mc1Settings& settings,
                              const LineTiming& line)
     : m_backend(settings.variant.value_or(Mc1Variant::Mc200V2)),
-      m_engine(transport, m_backend, engineSettings(settings, line)),
+      m_engine(transport, m_backend, mc1EngineSettings(line, settings.retries, settings.timeoutMs)),
       m_link(m_engine, settings.variant.value_or(Mc1Variant::Mc200V2)),
       m_given(settings.variant) {}
 
@@ -44,7 +32,7 @@ Result<Mc1Variant> Mc1Controller::probeVariant() {
     // MC100, 32 on an MC200.
     use(Mc1Variant::Mc100V1);
     m_backend.setProbing(true);
-    const Result<QByteArray> value = m_link.exchange(Mc1Op::ReadVariable, le(1, 2));
+    const Result<QByteArray> value = m_link.exchange(Mc1Op::ReadVariable, mc1LittleEndian(1, 2));
     m_backend.setProbing(false);
     if (!value) {
         Error error = value.error();
@@ -59,7 +47,7 @@ Result<Mc1Variant> Mc1Controller::probeVariant() {
     use(mc200 ? Mc1Variant::Mc200V2 : Mc1Variant::Mc100V2);
     const Result<QByteArray> second =
         mc200 ? m_link.exchange(Mc1Op::ProgramStatus, {})
-              : m_link.exchange(Mc1Op::ReadBlock, QByteArray(3, '\0') + le(1, 1));
+              : m_link.exchange(Mc1Op::ReadBlock, QByteArray(3, '\0') + mc1LittleEndian(1, 1));
     if (second) return mc200 ? Mc1Variant::Mc200V2 : Mc1Variant::Mc100V2;
     if (isNak(second.error())) return mc200 ? Mc1Variant::Mc200V1 : Mc1Variant::Mc100V1;
     return second.error();
@@ -149,7 +137,8 @@ Result<Mc1Variant> Mc1Controller::identifiedFor(int variable) {
 Result<qint64> Mc1Controller::readVariable(int number) {
     const Result<Mc1Variant> identified = identifiedFor(number);
     if (!identified) return identified.error();
-    const Result<QByteArray> value = m_link.exchange(Mc1Op::ReadVariable, le(number, 2));
+    const Result<QByteArray> value =
+        m_link.exchange(Mc1Op::ReadVariable, mc1LittleEndian(number, 2));
     if (!value) return value.error();
     return mc1FromLittleEndian(*value, true);
 }
@@ -172,7 +161,7 @@ Status Mc1Controller::writeVariable(int number, qint64 value) {
     const bool wide = isMc200(*identified);
     const Result<QByteArray> done =
         m_link.exchange(wide ? Mc1Op::WriteVariable32 : Mc1Op::WriteVariable,
-                        le(number, 2) + le(value, wide ? 4 : 3));
+                        mc1LittleEndian(number, 2) + mc1LittleEndian(value, wide ? 4 : 3));
     if (!done) return done.error();
     return success();
 }
@@ -185,11 +174,13 @@ Result<QByteArray> Mc1Controller::readRam(bool external, quint8 page, int addres
         Result<QByteArray> got = QByteArray();
         if (has(Mc1Capability::BlockRead)) {
             const int n = std::min<int>(kMc1MaxBlockRead, count - int(bytes.size()));
-            QByteArray parameters = le(at, 1) + le(page, 1) + le(external ? 1 : 0, 1) + le(n, 1);
+            QByteArray parameters = mc1LittleEndian(at, 1) + mc1LittleEndian(page, 1) +
+                                    mc1LittleEndian(external ? 1 : 0, 1) + mc1LittleEndian(n, 1);
             got = m_link.exchange(Mc1Op::ReadBlock, parameters);
         } else {
-            got = external ? m_link.exchange(Mc1Op::ReadByteExternal, le(at, 1) + le(page, 1))
-                           : m_link.exchange(Mc1Op::ReadByteInternal, le(at, 1));
+            got = external ? m_link.exchange(Mc1Op::ReadByteExternal,
+                                             mc1LittleEndian(at, 1) + mc1LittleEndian(page, 1))
+                           : m_link.exchange(Mc1Op::ReadByteInternal, mc1LittleEndian(at, 1));
         }
         if (!got) return got.error();
         bytes += *got;
@@ -249,7 +240,7 @@ Result<bool> Mc1Controller::writePoint(const Mc1Point& point, bool on) {
     const quint8 flag = on ? address->mask() : quint8(~address->mask());
     const Result<QByteArray> done =
         m_link.exchange(address->external ? Mc1Op::WriteBitExternal : Mc1Op::WriteBitInternal,
-                        le(address->address, 1) + le(flag, 1));
+                        mc1LittleEndian(address->address, 1) + mc1LittleEndian(flag, 1));
     const Result<QList<bool>> readBack = readPoints({point}, {});
     if (!done) {
         if (done.error().kind != ErrorKind::Communication) return done.error();

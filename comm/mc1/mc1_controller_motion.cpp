@@ -9,10 +9,6 @@ namespace cambench::comm {
 
 namespace {
 
-QByteArray le(qint64 value, int bytes) {
-    return mc1LittleEndian(value, bytes);
-}
-
 // The telegram and its command byte for each axis command.
 struct AxisTelegram {
     Mc1Op op;
@@ -75,12 +71,12 @@ Result<Mc1ProgramStatus> Mc1Controller::programCommand(Mc1ProgramCommand command
             break;
         case Mc1ProgramCommand::Reset:
             // Parameter 0: the PLC program starts again, nothing is wiped.
-            done = m_link.exchange(Mc1Op::Reset, le(0, 1));
+            done = m_link.exchange(Mc1Op::Reset, mc1LittleEndian(0, 1));
             break;
         case Mc1ProgramCommand::FlashSave:
         case Mc1ProgramCommand::FlashLoad:
-            done = m_link.exchange(Mc1Op::Flash,
-                                   le(command == Mc1ProgramCommand::FlashSave ? 1 : 2, 1));
+            done = m_link.exchange(
+                Mc1Op::Flash, mc1LittleEndian(command == Mc1ProgramCommand::FlashSave ? 1 : 2, 1));
             break;
     }
     const Result<Mc1ProgramStatus> after = programStatus();
@@ -111,8 +107,8 @@ Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
     const Mc1AxisValue which[3] = {Mc1AxisValue::Position, Mc1AxisValue::Target,
                                    Mc1AxisValue::Status};
     for (int i = 0; i < 3; ++i) {
-        const Result<QByteArray> answer =
-            m_link.exchange(Mc1Op::ReadStatus, le(mc1AxisParameter(axis, which[i]), 2));
+        const Result<QByteArray> answer = m_link.exchange(
+            Mc1Op::ReadStatus, mc1LittleEndian(mc1AxisParameter(axis, which[i]), 2));
         if (!answer) return answer.error();
         values[i] = qint32(mc1FromLittleEndian(*answer, true));
     }
@@ -140,10 +136,10 @@ Result<Mc1AxisState> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command
             QCoreApplication::translate("cambench::comm", "a speed must be more than 0, not %1")
                 .arg(value));
     const AxisTelegram telegram = axisTelegram(command);
-    QByteArray parameters = le(axis, 1) + le(telegram.command, 1);
+    QByteArray parameters = mc1LittleEndian(axis, 1) + mc1LittleEndian(telegram.command, 1);
     if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
         value = command == Mc1AxisCommand::JogPlus ? 1 : 0;
-    if (telegram.withValue) parameters += le(value, 4);
+    if (telegram.withValue) parameters += mc1LittleEndian(value, 4);
     const Result<QByteArray> done = m_link.exchange(telegram.op, parameters);
     const Result<Mc1AxisState> after = axisState(axis);
     if (!done) {
@@ -178,8 +174,9 @@ Result<QByteArray> Mc1Controller::readMemory(int address, int length, const Prog
         const int at = address + int(bytes.size());
         const int n = std::min<int>(wide ? kMc1MaxMemoryRead : 6, length - int(bytes.size()));
         const Result<QByteArray> got =
-            wide ? m_link.exchange(Mc1Op::ReadMemory, le(at, 2) + le(n, 1))
-                 : m_link.exchange(Mc1Op::ReadMemory6, le(at, 2));
+            wide
+                ? m_link.exchange(Mc1Op::ReadMemory, mc1LittleEndian(at, 2) + mc1LittleEndian(n, 1))
+                : m_link.exchange(Mc1Op::ReadMemory6, mc1LittleEndian(at, 2));
         if (!got) return got.error();
         bytes += got->left(n);
         if (progress) progress(bytes.size(), length);
@@ -201,8 +198,9 @@ Status Mc1Controller::writeMemory(int address, const QByteArray& bytes,
                 .arg(address, 4, 16, QLatin1Char('0')));
     for (qsizetype done = 0; done < bytes.size();) {
         const QByteArray chunk = bytes.mid(done, kMc1MaxMemoryWrite);
-        const Result<QByteArray> written = m_link.exchange(
-            Mc1Op::WriteMemory, le(address + done, 2) + le(chunk.size(), 1) + chunk);
+        const Result<QByteArray> written =
+            m_link.exchange(Mc1Op::WriteMemory, mc1LittleEndian(address + done, 2) +
+                                                    mc1LittleEndian(chunk.size(), 1) + chunk);
         if (!written) return written.error();
         done += chunk.size();
         if (progress) progress(done, bytes.size());

@@ -2,6 +2,11 @@
 
 namespace cambench::comm {
 
+EngineSettings mc1EngineSettings(LineTiming line, int retries, int timeoutMs) {
+    line.turnaroundMs = std::max(line.turnaroundMs, 500);
+    return EngineSettings{line, retries, timeoutMs};
+}
+
 Result<QByteArray> Mc1Link::exchange(Mc1Op op, const QByteArray& parameters) {
     const Mc1Telegram* telegram = mc1Find(m_variant, op);
     if (!telegram)

@@ -6,6 +6,12 @@
 
 namespace cambench::comm {
 
+// The engine settings of an MC-1 connection (binary or ASCII): an answer
+// is awaited 0.5 s beyond the wire time, since the controller NAKs a
+// telegram cut short only after its character timeout (the emulator's:
+// 100 ms), and that late NAK must not pass for the next request's answer.
+EngineSettings mc1EngineSettings(LineTiming line, int retries, int timeoutMs);
+
 // MC-1 telegrams through the request engine: each sent with the repeat
 // rule its catalogue row (and, for axis commands, its command) gives, its
 // answer checked. A NAK is the controller's refusal (unknown to the

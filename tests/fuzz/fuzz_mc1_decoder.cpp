@@ -62,13 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Request request;
     request.message = *mc1Request(*row, ask.parameters);
     backend.beginRequest(request);
-    Mc1Expectation expected = Mc1Backend::expectationFor(variant, request.message);
-    if (probing && ask.op == Mc1Op::ReadVariable) {
-        const Mc1Variant other = isMc200(variant) ? Mc1Variant::Mc100V1 : Mc1Variant::Mc200V1;
-        const Mc1Expectation theirs = Mc1Backend::expectationFor(other, request.message);
-        expected.otherOpcode = theirs.opcode;
-        expected.otherLength = theirs.length;
-    }
+    const Mc1Expectation expected = Mc1Backend::expectationFor(variant, request.message, probing);
     qint64 now = 0;
     checkStep(backend.startAttempt(request, 1, now), expected, probing);
     // The rest in chunks of 1..8 bytes, their sizes taken from the input.
