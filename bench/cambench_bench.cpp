@@ -4,6 +4,7 @@
 // differ from what the simulator holds. Figures, not assertions: run it when
 // asked (it takes minutes); docs/performance.md records a run.
 
+#include "compax3_bench.h"
 #include "mc1_bench.h"
 #include "protocol_bench.h"
 
@@ -324,6 +325,10 @@ int main(int argc, char** argv) {
                            QStringLiteral("Only MC100/MC200: 1,000 variables and a 32 KiB range "
                                           "of each variant at 9600 baud (about 4 minutes)."));
     parser.addOption(mc1);
+    QCommandLineOption compax3(
+        QStringLiteral("compax3"),
+        QStringLiteral("Only Compax3: a 500-object parameter set at 115200 and 9600 baud."));
+    parser.addOption(compax3);
     QCommandLineOption repeat(QStringLiteral("repeat"),
                               QStringLiteral("Runs per row, with seeds 7, 8, ...; the median time "
                                              "is printed (default 1)."),
@@ -338,6 +343,10 @@ int main(int argc, char** argv) {
     const Line multiuser{QStringLiteral("Multiuser 38400"), Framing::Multiuser, 38400};
     const QList<Line> lines =
         parser.isSet(quick) ? QList<Line>{multiuser} : QList<Line>{standard, multiuser};
+    if (parser.isSet(compax3)) {
+        bench::benchCompax3();
+        return 0;
+    }
     if (parser.isSet(mc1)) {
         bench::benchMc1();
         return 0;

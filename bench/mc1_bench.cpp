@@ -1,5 +1,7 @@
 #include "mc1_bench.h"
 
+#include "bench_run.h"
+
 #include "comm/mc1/mc1_controller.h"
 #include "comm/sim/mc1/mc1_simulator.h"
 #include "comm/sim/sim_transport.h"
@@ -22,33 +24,16 @@ constexpr int kRange = 32 * 1024;
 // measured over 1 KiB, and the ratio is what compares.
 constexpr int kSingleRange = 1024;
 
-struct Run {
-    double seconds = 0;
-    qint64 wire = 0;
-    int requests = 0;
-};
-
 Run measure(Mc1Variant variant, const std::function<Status(Mc1Device&)>& work) {
     SimHostOptions shared;
     shared.throttle = true;
     SimTransport transport(mc1SimulatedLine(variant, kBaud, shared));
-    if (Status opened = transport.open(); !opened) {
-        std::fprintf(stderr, "cambench-bench: %s\n", qPrintable(opened.error().message));
-        std::exit(3);
-    }
+    openOrExit(transport);
     LineTiming line;
     line.baud = kBaud;
     Mc1Controller device(transport, Mc1Settings{variant, 0, 2}, line);
     (void)device.ensureIdentified();
-    device.engine().resetStats();
-    QElapsedTimer timer;
-    timer.start();
-    if (Status done = work(device); !done) {
-        std::fprintf(stderr, "cambench-bench: %s\n", qPrintable(done.error().message));
-        std::exit(3);
-    }
-    const RequestEngine::Stats& stats = device.engine().stats();
-    return {timer.nsecsElapsed() / 1e9, stats.bytesSent + stats.bytesReceived, stats.requests};
+    return timeWork(device.engine(), [&] { return work(device); });
 }
 
 void printRow(const QString& what, Mc1Variant variant, const Run& run) {

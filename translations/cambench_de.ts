@@ -2674,6 +2674,688 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Compax3MotionPage</name>
+    <message>
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <source>STOP (Esc)</source>
+        <translation>STOPP (Esc)</translation>
+    </message>
+    <message>
+        <source>0 (homing)</source>
+        <translation>0 (Referenzfahrt)</translation>
+    </message>
+    <message>
+        <source>Stops the axis with its ramp (control word 1) and drops what waits for the line. Escape does the same.</source>
+        <translation>Hält die Achse mit ihrer Rampe an (Steuerwort 1) und verwirft, was auf die Leitung wartet. Escape tut dasselbe.</translation>
+    </message>
+    <message>
+        <source>Enable…</source>
+        <translation>Freigeben…</translation>
+    </message>
+    <message>
+        <source>Disable</source>
+        <translation>Sperren</translation>
+    </message>
+    <message>
+        <source>Jog +…</source>
+        <translation>Tippen +…</translation>
+    </message>
+    <message>
+        <source>Jog −…</source>
+        <translation>Tippen −…</translation>
+    </message>
+    <message>
+        <source>Start set…</source>
+        <translation>Satz starten…</translation>
+    </message>
+    <message>
+        <source>Power</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <source>Jog (moves until STOP)</source>
+        <translation>Tippen (fährt bis STOPP)</translation>
+    </message>
+    <message>
+        <source>Positioning set</source>
+        <translation>Positioniersatz</translation>
+    </message>
+    <message>
+        <source>Set:</source>
+        <translation>Satz:</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Ziel:</translation>
+    </message>
+    <message>
+        <source>Velocity:</source>
+        <translation>Geschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Acceleration:</source>
+        <translation>Beschleunigung:</translation>
+    </message>
+    <message>
+        <source>Every motion asks first. A command that moves the axis is sent once: when its answer is lost, CamBench reads the drive&apos;s state and says it instead of sending it again.</source>
+        <translation>Jede Bewegung fragt zuerst. Ein Befehl, der die Achse bewegt, wird einmal gesendet: Geht seine Antwort verloren, liest CamBench den Zustand des Antriebs und nennt ihn, statt den Befehl noch einmal zu senden.</translation>
+    </message>
+    <message>
+        <source>No drive connected.</source>
+        <translation>Kein Antrieb verbunden.</translation>
+    </message>
+    <message>
+        <source>%1 (stale: the connection was lost)</source>
+        <translation>%1 (veraltet: die Verbindung ging verloren)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Sent: %1. Now %2.</source>
+        <translation>Gesendet: %1. Jetzt %2.</translation>
+    </message>
+    <message>
+        <source>The axis moves until STOP (or Escape) is pressed. Make sure nobody is at the axis.</source>
+        <translation>Die Achse fährt, bis STOPP (oder Escape) gedrückt wird. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
+    </message>
+    <message>
+        <source>The axis is powered and holds its position. Make sure nobody is at the axis.</source>
+        <translation>Die Achse wird bestromt und hält ihre Position. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
+    </message>
+    <message>
+        <source>%1 on drive %2?</source>
+        <translation>%1 am Antrieb %2?</translation>
+    </message>
+    <message>
+        <source>The axis moves to the set&apos;s target at its velocity. STOP (or Escape) stops it. Make sure nobody is at the axis.</source>
+        <translation>Die Achse fährt mit der Geschwindigkeit des Satzes zu seinem Ziel. STOPP (oder Escape) hält sie an. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation>STOPP</translation>
+    </message>
+    <message>
+        <source>STOP did not reach the drive: %1. Use the machine&apos;s emergency stop.</source>
+        <translation>STOPP hat den Antrieb nicht erreicht: %1. Benutzen Sie den Not-Halt der Maschine.</translation>
+    </message>
+    <message>
+        <source>STOP acknowledged by the drive; now %1.</source>
+        <translation>STOPP vom Antrieb bestätigt; jetzt %1.</translation>
+    </message>
+    <message>
+        <source>Enable</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Tippen</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3ObjectModel</name>
+    <message>
+        <source>(not in the dictionary)</source>
+        <translation>(nicht im Objektverzeichnis)</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>nur lesbar</translation>
+    </message>
+    <message>
+        <source>function (written only)</source>
+        <translation>Funktion (nur schreiben)</translation>
+    </message>
+    <message>
+        <source>control word: Motion page</source>
+        <translation>Steuerwort: Seite Bewegung</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation>Im Antrieb</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>Other objects</source>
+        <translation>Weitere Objekte</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation>abgelehnt</translation>
+    </message>
+    <message>
+        <source>Stale: read %1, the connection was lost since.</source>
+        <translation>Veraltet: gelesen %1, seitdem ging die Verbindung verloren.</translation>
+    </message>
+    <message>
+        <source>Read %1.</source>
+        <translation>Gelesen %1.</translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation>Noch nicht gelesen.</translation>
+    </message>
+    <message>
+        <source>Edited on this PC, not on the drive yet: Write changes sends it.</source>
+        <translation>Auf diesem PC geändert, noch nicht im Antrieb: „Änderungen schreiben“ sendet es.</translation>
+    </message>
+    <message>
+        <source>Type a new value (decimal point: 12.5)</source>
+        <translation>Neuen Wert eingeben (Dezimalpunkt: 12.5)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3ObjectsPage</name>
+    <message>
+        <source>Objects</source>
+        <translation>Objekte</translation>
+    </message>
+    <message>
+        <source>Write changes…</source>
+        <translation>Änderungen schreiben…</translation>
+    </message>
+    <message>
+        <source>Search objects (number, name, group)…</source>
+        <translation>Objekte suchen (Nummer, Name, Gruppe)…</translation>
+    </message>
+    <message>
+        <source>Read all</source>
+        <translation>Alle lesen</translation>
+    </message>
+    <message>
+        <source>Discard changes</source>
+        <translation>Änderungen verwerfen</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Discard %n value(s) typed in but not written?</source>
+        <translation>
+            <numerusform>%n eingegebenen, nicht geschriebenen Wert verwerfen?</numerusform>
+            <numerusform>%n eingegebene, nicht geschriebene Werte verwerfen?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load dictionary…</source>
+        <translation>Objektverzeichnis laden…</translation>
+    </message>
+    <message>
+        <source>Load object dictionary</source>
+        <translation>Objektverzeichnis laden</translation>
+    </message>
+    <message>
+        <source>Compax3 dictionaries (*.json)</source>
+        <translation>Compax3-Objektverzeichnisse (*.json)</translation>
+    </message>
+    <message>
+        <source>Object, e.g. O 1234,5</source>
+        <translation>Objekt, z. B. O 1234,5</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>Write…</source>
+        <translation>Schreiben…</translation>
+    </message>
+    <message>
+        <source>Any object by number:</source>
+        <translation>Beliebiges Objekt nach Nummer:</translation>
+    </message>
+    <message>
+        <source>Read objects</source>
+        <translation>Objekte lesen</translation>
+    </message>
+    <message>
+        <source>Reading objects</source>
+        <translation>Objekte werden gelesen</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Nicht gelesen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read %n object(s) at %1.</source>
+        <translation>
+            <numerusform>%n Objekt um %1 gelesen.</numerusform>
+            <numerusform>%n Objekte um %1 gelesen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read %1 objects; the drive refused %2 (hover over &quot;refused&quot; for its answer).</source>
+        <translation>%1 Objekte gelesen; der Antrieb lehnte %2 ab (seine Antwort steht im Tooltip von „abgelehnt“).</translation>
+    </message>
+    <message>
+        <source>Nothing to write: no value is typed in.</source>
+        <translation>Nichts zu schreiben: kein Wert ist eingegeben.</translation>
+    </message>
+    <message>
+        <source>Not connected to a drive: the values stay typed in.</source>
+        <translation>Nicht mit einem Antrieb verbunden: die Werte bleiben eingegeben.</translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation>%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>(not read)</source>
+        <translation>(nicht gelesen)</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n value(s) to the drive %1?</source>
+        <translation>
+            <numerusform>%n Wert in den Antrieb %1 schreiben?</numerusform>
+            <numerusform>%n Werte in den Antrieb %1 schreiben?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write objects</source>
+        <translation>Objekte schreiben</translation>
+    </message>
+    <message>
+        <source>Not written: %1</source>
+        <translation>Nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>1100.3 is the control word, which moves the axis: use the Motion page.</source>
+        <translation>1100.3 ist das Steuerwort, das die Achse bewegt: benutzen Sie die Seite Bewegung.</translation>
+    </message>
+    <message>
+        <source>Load dictionary</source>
+        <translation>Objektverzeichnis laden</translation>
+    </message>
+    <message>
+        <source>The dictionary was not loaded: %1</source>
+        <translation>Das Objektverzeichnis wurde nicht geladen: %1</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Laden</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) are typed in but not written. Load the dictionary anyway? Values of objects it still lists stay typed in.</source>
+        <translation>
+            <numerusform>%n Wert ist eingegeben, aber nicht geschrieben. Das Objektverzeichnis trotzdem laden? Werte von Objekten, die es weiter enthält, bleiben eingegeben.</numerusform>
+            <numerusform>%n Werte sind eingegeben, aber nicht geschrieben. Das Objektverzeichnis trotzdem laden? Werte von Objekten, die es weiter enthält, bleiben eingegeben.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded %n object(s) from %1.</source>
+        <translation>
+            <numerusform>%n Objekt aus %1 geladen.</numerusform>
+            <numerusform>%n Objekte aus %1 geladen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) typed in, not on the drive yet: Write changes sends them.</source>
+        <translation>
+            <numerusform>%n Wert eingegeben, noch nicht im Antrieb: „Änderungen schreiben“ sendet ihn.</numerusform>
+            <numerusform>%n Werte eingegeben, noch nicht im Antrieb: „Änderungen schreiben“ sendet sie.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3Page</name>
+    <message>
+        <source>Read drive status</source>
+        <translation>Antriebsstatus lesen</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3ParametersPage</name>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>No file compared yet.</source>
+        <translation>Noch keine Datei verglichen.</translation>
+    </message>
+    <message>
+        <source>Write to another drive type</source>
+        <translation>In einen anderen Antriebstyp schreiben</translation>
+    </message>
+    <message>
+        <source>Store the sets in the drive&apos;s flash afterwards (1904.1 = $32)</source>
+        <translation>Die Sätze danach im Flash des Antriebs speichern (1904.1 = $32)</translation>
+    </message>
+    <message>
+        <source>Save drive to file…</source>
+        <translation>Antrieb in Datei sichern…</translation>
+    </message>
+    <message>
+        <source>Save drive parameters</source>
+        <translation>Antriebsparameter sichern</translation>
+    </message>
+    <message>
+        <source>Compax3 parameter files (*.json)</source>
+        <translation>Compax3-Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare with file…</source>
+        <translation>Mit Datei vergleichen…</translation>
+    </message>
+    <message>
+        <source>Compare with file</source>
+        <translation>Mit Datei vergleichen</translation>
+    </message>
+    <message>
+        <source>Write selected differences…</source>
+        <translation>Ausgewählte Unterschiede schreiben…</translation>
+    </message>
+    <message>
+        <source>Write whole file…</source>
+        <translation>Ganze Datei schreiben…</translation>
+    </message>
+    <message>
+        <source>Only when you know the objects mean the same on both drive types.</source>
+        <translation>Nur wenn Sie wissen, dass die Objekte in beiden Antriebstypen dasselbe bedeuten.</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation>In der Datei</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation>Im Antrieb</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Sichern</translation>
+    </message>
+    <message>
+        <source>No file was saved: %1</source>
+        <translation>Es wurde keine Datei gesichert: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1 objects to %2, but the file is incomplete: the drive refused %3 objects.</source>
+        <translation>%1 Objekte in %2 gesichert, aber die Datei ist unvollständig: der Antrieb lehnte %3 Objekte ab.</translation>
+    </message>
+    <message>
+        <source>Incomplete: %1 objects refused.</source>
+        <translation>Unvollständig: %1 Objekte abgelehnt.</translation>
+    </message>
+    <message>
+        <source>Saved %1 objects of drive %2 to %3.</source>
+        <translation>%1 Objekte des Antriebs %2 in %3 gesichert.</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Vergleichen</translation>
+    </message>
+    <message>
+        <source>%1: %2 objects of %3 (serial number %4), saved %5.</source>
+        <translation>%1: %2 Objekte von %3 (Seriennummer %4), gesichert %5.</translation>
+    </message>
+    <message>
+        <source>Not compared: %1</source>
+        <translation>Nicht verglichen: %1</translation>
+    </message>
+    <message>
+        <source>Equal: the drive holds all %1 values of the file.</source>
+        <translation>Gleich: der Antrieb enthält alle %1 Werte der Datei.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 objects differ.</source>
+        <translation>%1 von %2 Objekten unterscheiden sich.</translation>
+    </message>
+    <message>
+        <source>The file is from a drive of type %1, this one is of type %2.</source>
+        <translation>Die Datei stammt von einem Antrieb des Typs %1, dieser ist vom Typ %2.</translation>
+    </message>
+    <message>
+        <source>Compare with a file first.</source>
+        <translation>Vergleichen Sie zuerst mit einer Datei.</translation>
+    </message>
+    <message>
+        <source>No difference is ticked: nothing to write.</source>
+        <translation>Kein Unterschied ist angehakt: nichts zu schreiben.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n selected object(s)</source>
+        <translation>
+            <numerusform>%n ausgewähltes Objekt</numerusform>
+            <numerusform>%n ausgewählte Objekte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>the whole file (%n object(s))</source>
+        <translation>
+            <numerusform>die ganze Datei (%n Objekt)</numerusform>
+            <numerusform>die ganze Datei (%n Objekte)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Write %1 of %2 to drive %3?</source>
+        <translation>%1 aus %2 in den Antrieb %3 schreiben?</translation>
+    </message>
+    <message>
+        <source>The file is checked against the drive first; then only objects that differ are written, each read back.%1</source>
+        <translation>Die Datei wird zuerst mit dem Antrieb abgeglichen; dann werden nur abweichende Objekte geschrieben und jedes zurückgelesen.%1</translation>
+    </message>
+    <message>
+        <source> Afterwards the sets are stored in flash.</source>
+        <translation> Danach werden die Sätze im Flash gespeichert.</translation>
+    </message>
+    <message>
+        <source>Write parameters</source>
+        <translation>Parameter schreiben</translation>
+    </message>
+    <message>
+        <source>To replace a drive: save the old drive&apos;s parameters to a file (or take one saved before), connect the new drive, compare it with the file, then write the differences and store the sets.</source>
+        <translation>Einen Antrieb tauschen: die Parameter des alten Antriebs in eine Datei sichern (oder eine früher gesicherte nehmen), den neuen Antrieb verbinden, ihn mit der Datei vergleichen, dann die Unterschiede schreiben und die Sätze speichern.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3SettingsWidget</name>
+    <message>
+        <source>The drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;). Scan bus lists the addresses that answer.</source>
+        <translation>Die RS485-Adresse des Antriebs (C3 ServoManager, „RS485 Einstellungen“). „Bus durchsuchen“ listet die Adressen, die antworten.</translation>
+    </message>
+    <message>
+        <source>RS485, 115200 8N1 unless set otherwise in the drive.</source>
+        <translation>RS485, 115200 8N1, sofern im Antrieb nicht anders eingestellt.</translation>
+    </message>
+    <message>
+        <source>RS232, 115200 8N1 with RTS/CTS unless set otherwise in the drive; a null-modem cable with RTS/CTS.</source>
+        <translation>RS232, 115200 8N1 mit RTS/CTS, sofern im Antrieb nicht anders eingestellt; ein Nullmodemkabel mit RTS/CTS.</translation>
+    </message>
+    <message>
+        <source>Drive address:</source>
+        <translation>Antriebsadresse:</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3StatusPage</name>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Acknowledge error…</source>
+        <translation>Fehler quittieren…</translation>
+    </message>
+    <message>
+        <source>Switches the drive off and on again (control word 0, then 1): the rising edge acknowledges the error and powers the axis.</source>
+        <translation>Schaltet den Antrieb aus und wieder ein (Steuerwort 0, dann 1): die steigende Flanke quittiert den Fehler und bestromt die Achse.</translation>
+    </message>
+    <message>
+        <source>Status word 1 (object 1000.3), bit 0 first. The meanings of the bits and error numbers come from a public client, not from Parker&apos;s manual.</source>
+        <translation>Statuswort 1 (Objekt 1000.3), Bit 0 zuerst. Die Bedeutungen der Bits und Fehlernummern stammen aus einem öffentlichen Client, nicht aus Parkers Handbuch.</translation>
+    </message>
+    <message>
+        <source>Last error:</source>
+        <translation>Letzter Fehler:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Achse:</translation>
+    </message>
+    <message>
+        <source>%1 (stale: the connection was lost)</source>
+        <translation>%1 (veraltet: die Verbindung ging verloren)</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Quittieren</translation>
+    </message>
+    <message>
+        <source>Acknowledge the error and power the axis of drive %1?</source>
+        <translation>Den Fehler quittieren und die Achse des Antriebs %1 bestromen?</translation>
+    </message>
+    <message>
+        <source>The drive is switched off and on again; it holds its position with power afterwards. Make sure nobody is at the axis.</source>
+        <translation>Der Antrieb wird aus- und wieder eingeschaltet; danach hält er seine Position bestromt. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
+    </message>
+    <message>
+        <source>Not acknowledged: %1</source>
+        <translation>Nicht quittiert: %1</translation>
+    </message>
+    <message>
+        <source>Acknowledged; last error now: %1.</source>
+        <translation>Quittiert; letzter Fehler jetzt: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3WatchPage</name>
+    <message>
+        <source>Watch</source>
+        <translation>Beobachten</translation>
+    </message>
+    <message>
+        <source>Object to watch, e.g. 680.5</source>
+        <translation>Zu beobachtendes Objekt, z. B. 680.5</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation>Auswahl entfernen</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>%1 is a function: it is written, never read.</source>
+        <translation>%1 ist eine Funktion: sie wird geschrieben, nie gelesen.</translation>
+    </message>
+    <message>
+        <source>Read watched objects</source>
+        <translation>Beobachtete Objekte lesen</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation>abgelehnt</translation>
+    </message>
+    <message>
+        <source>Stale: the connection was lost after this was read.</source>
+        <translation>Veraltet: die Verbindung ging verloren, nachdem dies gelesen wurde.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3Window</name>
+    <message>
+        <source>Identify drive</source>
+        <translation>Antrieb identifizieren</translation>
+    </message>
+    <message>
+        <source>%1, serial number %2</source>
+        <translation>%1, Seriennummer %2</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Verbunden: %1</translation>
+    </message>
+    <message>
+        <source>No Compax3 identified itself: %1</source>
+        <translation>Kein Compax3 hat sich zu erkennen gegeben: %1</translation>
+    </message>
+    <message>
+        <source>Unwritten values</source>
+        <translation>Nicht geschriebene Werte</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) typed in on the Objects page are not on the drive.</source>
+        <translation>
+            <numerusform>%n auf der Seite Objekte eingegebener Wert ist nicht im Antrieb.</numerusform>
+            <numerusform>%n auf der Seite Objekte eingegebene Werte sind nicht im Antrieb.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Closing drops them.</source>
+        <translation>Beim Schließen gehen sie verloren.</translation>
+    </message>
+    <message>
+        <source>Close and drop them</source>
+        <translation>Schließen und verwerfen</translation>
+    </message>
+</context>
+<context>
     <name>cambench::ConnectionIndicator</name>
     <message>
         <source>No answer since %1 (%2)</source>
@@ -3943,10 +4625,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Trend</translation>
     </message>
     <message>
-        <source>seconds</source>
-        <translation>Sekunden</translation>
-    </message>
-    <message>
         <source>The first eight variables of the Variables page&apos;s watch list, read while this page or that one is shown.</source>
         <translation>Die ersten acht Variablen der Beobachtungsliste der Seite Variablen, gelesen, solange diese oder jene Seite angezeigt wird.</translation>
     </message>
@@ -4397,6 +5075,13 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>unknown now; at %1: %2</source>
         <translation>jetzt unbekannt; um %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MultiTrendChart</name>
+    <message>
+        <source>seconds</source>
+        <translation>Sekunden</translation>
     </message>
 </context>
 <context>
@@ -7007,6 +7692,246 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>memory</source>
         <translation>Speicher</translation>
     </message>
+    <message>
+        <source>the answer &quot;%1&quot; holds a byte that is no printable ASCII (0x%2)</source>
+        <translation>die Antwort „%1“ enthält ein Byte, das kein druckbares ASCII ist (0x%2)</translation>
+    </message>
+    <message>
+        <source>the answer &quot;%1&quot; is no error number (! and four hex digits)</source>
+        <translation>die Antwort „%1“ ist keine Fehlernummer (! und vier Hex-Ziffern)</translation>
+    </message>
+    <message>
+        <source>the answer is an empty line</source>
+        <translation>die Antwort ist eine leere Zeile</translation>
+    </message>
+    <message>
+        <source>syntax error</source>
+        <translation>Syntaxfehler</translation>
+    </message>
+    <message>
+        <source>no such object</source>
+        <translation>kein solches Objekt</translation>
+    </message>
+    <message>
+        <source>the object is read-only</source>
+        <translation>das Objekt ist nur lesbar</translation>
+    </message>
+    <message>
+        <source>the value is outside the object&apos;s range</source>
+        <translation>der Wert liegt außerhalb des Bereichs des Objekts</translation>
+    </message>
+    <message>
+        <source>not possible in the drive&apos;s state</source>
+        <translation>im Zustand des Antriebs nicht möglich</translation>
+    </message>
+    <message>
+        <source>the value has the wrong type</source>
+        <translation>der Wert hat den falschen Typ</translation>
+    </message>
+    <message>
+        <source>the drive refused %1 with %2 (an error number CamBench does not know: see the drive&apos;s manual)</source>
+        <translation>der Antrieb lehnte %1 mit %2 ab (eine Fehlernummer, die CamBench nicht kennt: siehe Handbuch des Antriebs)</translation>
+    </message>
+    <message>
+        <source>the drive refused %1 with %2 (%3)</source>
+        <translation>der Antrieb lehnte %1 mit %2 ab (%3)</translation>
+    </message>
+    <message>
+        <source>the Compax3 (RS232)</source>
+        <translation>der Compax3 (RS232)</translation>
+    </message>
+    <message>
+        <source>the Compax3 at address %1 (RS485)</source>
+        <translation>der Compax3 an Adresse %1 (RS485)</translation>
+    </message>
+    <message>
+        <source>check the cable (a null-modem cable with RTS/CTS), the baud rate (115200 unless set otherwise in the C3 ServoManager) and that the drive is powered</source>
+        <translation>prüfen Sie das Kabel (ein Nullmodemkabel mit RTS/CTS), die Baudrate (115200, sofern im C3 ServoManager nicht anders eingestellt) und ob der Antrieb eingeschaltet ist</translation>
+    </message>
+    <message>
+        <source>check the RS485 wiring, the baud rate and the drive&apos;s address (C3 ServoManager, &quot;RS485 settings&quot;); `c3 scan` lists the addresses that answer</source>
+        <translation>prüfen Sie die RS485-Verdrahtung, die Baudrate und die Adresse des Antriebs (C3 ServoManager, „RS485 Einstellungen“); `c3 scan` listet die Adressen, die antworten</translation>
+    </message>
+    <message>
+        <source>input I%1</source>
+        <translation>Eingang I%1</translation>
+    </message>
+    <message>
+        <source>no error</source>
+        <translation>kein Fehler</translation>
+    </message>
+    <message>
+        <source>position reached</source>
+        <translation>Position erreicht</translation>
+    </message>
+    <message>
+        <source>powerless</source>
+        <translation>stromlos</translation>
+    </message>
+    <message>
+        <source>powered standstill</source>
+        <translation>bestromter Stillstand</translation>
+    </message>
+    <message>
+        <source>zero known</source>
+        <translation>Nullpunkt bekannt</translation>
+    </message>
+    <message>
+        <source>PSB0</source>
+        <translation>PSB0</translation>
+    </message>
+    <message>
+        <source>PSB1</source>
+        <translation>PSB1</translation>
+    </message>
+    <message>
+        <source>PSB2</source>
+        <translation>PSB2</translation>
+    </message>
+    <message>
+        <source>motor temperature (%1)</source>
+        <translation>Motortemperatur (%1)</translation>
+    </message>
+    <message>
+        <source>following error (%1)</source>
+        <translation>Schleppfehler (%1)</translation>
+    </message>
+    <message>
+        <source>end limit + (%1)</source>
+        <translation>Endlage + (%1)</translation>
+    </message>
+    <message>
+        <source>end limit − (%1)</source>
+        <translation>Endlage − (%1)</translation>
+    </message>
+    <message>
+        <source>direction change while moving (%1)</source>
+        <translation>Richtungswechsel während der Fahrt (%1)</translation>
+    </message>
+    <message>
+        <source>error %1 (%2): see the drive&apos;s manual</source>
+        <translation>Fehler %1 (%2): siehe Handbuch des Antriebs</translation>
+    </message>
+    <message>
+        <source>powerless at %1</source>
+        <translation>stromlos bei %1</translation>
+    </message>
+    <message>
+        <source>moving, now at %1</source>
+        <translation>fährt, jetzt bei %1</translation>
+    </message>
+    <message>
+        <source>power the axis and acknowledge errors</source>
+        <translation>die Achse bestromen und Fehler quittieren</translation>
+    </message>
+    <message>
+        <source>switch the axis powerless</source>
+        <translation>die Achse stromlos schalten</translation>
+    </message>
+    <message>
+        <source>jog the axis in + direction</source>
+        <translation>die Achse in +-Richtung tippen</translation>
+    </message>
+    <message>
+        <source>jog the axis in − direction</source>
+        <translation>die Achse in −-Richtung tippen</translation>
+    </message>
+    <message>
+        <source>stop the axis</source>
+        <translation>die Achse anhalten</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>Ziel %1</translation>
+    </message>
+    <message>
+        <source>velocity %1</source>
+        <translation>Geschwindigkeit %1</translation>
+    </message>
+    <message>
+        <source>acceleration %1</source>
+        <translation>Beschleunigung %1</translation>
+    </message>
+    <message>
+        <source>start homing (set 0)</source>
+        <translation>Referenzfahrt starten (Satz 0)</translation>
+    </message>
+    <message>
+        <source>start set %1</source>
+        <translation>Satz %1 starten</translation>
+    </message>
+    <message>
+        <source>%1 answered %2: %3</source>
+        <translation>%1 antwortete auf %2: %3</translation>
+    </message>
+    <message>
+        <source>what answers is no Compax3: its info string is &quot;%1&quot;</source>
+        <translation>was antwortet, ist kein Compax3: sein Info-String ist „%1“</translation>
+    </message>
+    <message>
+        <source>, address %1</source>
+        <translation>, Adresse %1</translation>
+    </message>
+    <message>
+        <source>%1, serial number %2%3</source>
+        <translation>%1, Seriennummer %2%3</translation>
+    </message>
+    <message>
+        <source>%1 answered %2 with &quot;&gt;&quot;, not a value</source>
+        <translation>%1 antwortete auf %2 mit „&gt;“, nicht mit einem Wert</translation>
+    </message>
+    <message>
+        <source>%1 answered %2 with &quot;%3&quot;, not &quot;&gt;&quot;</source>
+        <translation>%1 antwortete auf %2 mit „%3“, nicht mit „&gt;“</translation>
+    </message>
+    <message>
+        <source>%1 answered O%2 with &quot;%3&quot;, not a number</source>
+        <translation>%1 antwortete auf O%2 mit „%3“, nicht mit einer Zahl</translation>
+    </message>
+    <message>
+        <source>the answer to &quot;%1&quot; was lost (%2); it was not sent again, because it moves the axis each time it arrives</source>
+        <translation>die Antwort auf „%1“ ging verloren (%2); der Befehl wurde nicht noch einmal gesendet, weil er die Achse bei jedem Eintreffen bewegt</translation>
+    </message>
+    <message>
+        <source>%1. Reading back failed too (%2): the axis&apos;s state is unknown; look at the machine</source>
+        <translation>%1. Auch das Zurücklesen schlug fehl (%2): der Zustand der Achse ist unbekannt; sehen Sie an der Maschine nach</translation>
+    </message>
+    <message>
+        <source>the command was taken</source>
+        <translation>der Befehl wurde ausgeführt</translation>
+    </message>
+    <message>
+        <source>the command was not taken (control word %1)</source>
+        <translation>der Befehl wurde nicht ausgeführt (Steuerwort %1)</translation>
+    </message>
+    <message>
+        <source>%1. Read back: %2; the axis is %3</source>
+        <translation>%1. Zurückgelesen: %2; die Achse ist %3</translation>
+    </message>
+    <message>
+        <source>the set must be 0 to %1, not %2</source>
+        <translation>der Satz muss 0 bis %1 sein, nicht %2</translation>
+    </message>
+    <message>
+        <source>the axis is powerless: enable it first (nothing was sent)</source>
+        <translation>die Achse ist stromlos: geben Sie sie zuerst frei (nichts wurde gesendet)</translation>
+    </message>
+    <message>
+        <source>Compax3 ASCII (RS485)</source>
+        <translation>Compax3 ASCII (RS485)</translation>
+    </message>
+    <message>
+        <source>Compax3 ASCII (RS232)</source>
+        <translation>Compax3 ASCII (RS232)</translation>
+    </message>
+    <message>
+        <source>powered, standing at %1 (last set %2)</source>
+        <translation>bestromt, steht bei %1 (letzter Satz %2)</translation>
+    </message>
+    <message>
+        <source>no Compax3 answered at any RS485 address 0..99</source>
+        <translation>an keiner RS485-Adresse 0..99 antwortete ein Compax3</translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -7742,6 +8667,98 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>a flag, input or output such as M2327</source>
         <translation>ein Merker, Eingang oder Ausgang wie M2327</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is not a Compax3 object; write index.subindex, e.g. 680.5 (also o680.5, O 680,5, $ for hexadecimal; index up to 65535, subindex up to 255)</source>
+        <translation>„%1“ ist kein Compax3-Objekt; schreiben Sie Index.Subindex, z. B. 680.5 (auch o680.5, O 680,5, $ für hexadezimal; Index bis 65535, Subindex bis 255)</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>at least %1</source>
+        <translation>mindestens %1</translation>
+    </message>
+    <message>
+        <source>at most %1</source>
+        <translation>höchstens %1</translation>
+    </message>
+    <message>
+        <source>a text for the drive cannot hold &quot; or a line break</source>
+        <translation>ein Text für den Antrieb kann kein &quot; und keinen Zeilenumbruch enthalten</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: write the number with a decimal point (%2); the drive takes a comma for a syntax error</source>
+        <translation>„%1“: schreiben Sie die Zahl mit Dezimalpunkt (%2); der Antrieb hält ein Komma für einen Syntaxfehler</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a number (decimal, or $ and hexadecimal digits)</source>
+        <translation>„%1“ ist keine Zahl (dezimal, oder $ und Hex-Ziffern)</translation>
+    </message>
+    <message>
+        <source>%1 is outside the object&apos;s range (%2)</source>
+        <translation>%1 liegt außerhalb des Bereichs des Objekts (%2)</translation>
+    </message>
+    <message>
+        <source>no value given</source>
+        <translation>kein Wert angegeben</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>keine Zahl</translation>
+    </message>
+    <message>
+        <source>object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>access</source>
+        <translation>Zugriff</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not integer, real or text</source>
+        <translation>„%1“ ist weder integer, real noch text</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not ro, rw, wo or cmd</source>
+        <translation>„%1“ ist weder ro, rw, wo noch cmd</translation>
+    </message>
+    <message>
+        <source>min is above max</source>
+        <translation>min liegt über max</translation>
+    </message>
+    <message>
+        <source>Other</source>
+        <translation>Sonstige</translation>
+    </message>
+    <message>
+        <source>object %1 a second time</source>
+        <translation>Objekt %1 ein zweites Mal</translation>
+    </message>
+    <message>
+        <source>line %1: %2.</source>
+        <translation>Zeile %1: %2.</translation>
+    </message>
+    <message>
+        <source>built in</source>
+        <translation>eingebaut</translation>
+    </message>
+    <message>
+        <source>%1 (%2) is read-only</source>
+        <translation>%1 (%2) ist nur lesbar</translation>
+    </message>
+    <message>
+        <source>info string</source>
+        <translation>Info-String</translation>
+    </message>
+    <message>
+        <source>not a pair [&quot;object&quot;, &quot;value&quot;]</source>
+        <translation>kein Paar [&quot;Objekt&quot;, &quot;Wert&quot;]</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -8384,6 +9401,58 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Writing memory</source>
         <translation>Speicher schreiben</translation>
+    </message>
+    <message>
+        <source>%1 read %2 times, no two answers in a row agreed: the line damages answers (check the cable, its shield and the baud rate)</source>
+        <translation>%1 %2-mal gelesen, keine zwei Antworten hintereinander stimmten überein: die Leitung beschädigt Antworten (prüfen Sie das Kabel, seine Schirmung und die Baudrate)</translation>
+    </message>
+    <message>
+        <source>Reading objects</source>
+        <translation>Objekte werden gelesen</translation>
+    </message>
+    <message>
+        <source>%1: file %2, drive: %3</source>
+        <translation>%1: Datei %2, Antrieb: %3</translation>
+    </message>
+    <message>
+        <source>%1: file %2, drive %3</source>
+        <translation>%1: Datei %2, Antrieb %3</translation>
+    </message>
+    <message>
+        <source>Comparing objects</source>
+        <translation>Objekte werden verglichen</translation>
+    </message>
+    <message>
+        <source>the file is from a drive of type %1 (&quot;%2&quot;), the connected drive is of type %3 (&quot;%4&quot;): nothing was written. Restore it with --force (GUI: &quot;Write to another type&quot;) only if you know the objects mean the same on both</source>
+        <translation>die Datei stammt von einem Antrieb des Typs %1 („%2“), der verbundene Antrieb ist vom Typ %3 („%4“): nichts wurde geschrieben. Stellen Sie sie mit --force (GUI: „In einen anderen Antriebstyp schreiben“) nur wieder her, wenn Sie wissen, dass die Objekte in beiden dasselbe bedeuten</translation>
+    </message>
+    <message>
+        <source>the file&apos;s value of %1 cannot be written: %2. Nothing was written</source>
+        <translation>der Wert von %1 in der Datei kann nicht geschrieben werden: %2. Nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>%1 is not in the file: nothing was written</source>
+        <translation>%1 ist nicht in der Datei: nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>Writing objects</source>
+        <translation>Objekte werden geschrieben</translation>
+    </message>
+    <message>
+        <source>the drive took it but reads back %1</source>
+        <translation>der Antrieb nahm es an, liest aber %1 zurück</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>Geschrieben</translation>
+    </message>
+    <message>
+        <source>store the sets in the drive&apos;s flash (1904.1 = $32)</source>
+        <translation>die Sätze im Flash des Antriebs speichern (1904.1 = $32)</translation>
+    </message>
+    <message>
+        <source>not stored, because not every object was written</source>
+        <translation>nicht gespeichert, weil nicht jedes Objekt geschrieben wurde</translation>
     </message>
 </context>
 </TS>

@@ -2674,6 +2674,688 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Compax3MotionPage</name>
+    <message>
+        <source>Motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP (Esc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0 (homing)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stops the axis with its ramp (control word 1) and drops what waits for the line. Escape does the same.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog +…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog −…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start set…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Power</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog (moves until STOP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioning set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every motion asks first. A command that moves the axis is sent once: when its answer is lost, CamBench reads the drive&apos;s state and says it instead of sending it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No drive connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (stale: the connection was lost)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message>
+        <source>Sent: %1. Now %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis moves until STOP (or Escape) is pressed. Make sure nobody is at the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis is powered and holds its position. Make sure nobody is at the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on drive %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis moves to the set&apos;s target at its velocity. STOP (or Escape) stops it. Make sure nobody is at the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP did not reach the drive: %1. Use the machine&apos;s emergency stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP acknowledged by the drive; now %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3ObjectModel</name>
+    <message>
+        <source>(not in the dictionary)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>function (written only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>control word: Motion page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished">Name</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Other objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stale: read %1, the connection was lost since.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edited on this PC, not on the drive yet: Write changes sends it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a new value (decimal point: 12.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3ObjectsPage</name>
+    <message>
+        <source>Objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write changes…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Search objects (number, name, group)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Discard %n value(s) typed in but not written?</source>
+        <translation>
+            <numerusform>Discard %n value typed in but not written?</numerusform>
+            <numerusform>Discard %n values typed in but not written?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load dictionary…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load object dictionary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compax3 dictionaries (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object, e.g. O 1234,5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished">Value</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Any object by number:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation type="unfinished">Not read: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read %n object(s) at %1.</source>
+        <translation>
+            <numerusform>Read %n object at %1.</numerusform>
+            <numerusform>Read %n objects at %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read %1 objects; the drive refused %2 (hover over &quot;refused&quot; for its answer).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to write: no value is typed in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected to a drive: the values stay typed in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation type="unfinished">%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>(not read)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n value(s) to the drive %1?</source>
+        <translation>
+            <numerusform>Write %n value to the drive %1?</numerusform>
+            <numerusform>Write %n values to the drive %1?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1100.3 is the control word, which moves the axis: use the Motion page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load dictionary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The dictionary was not loaded: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) are typed in but not written. Load the dictionary anyway? Values of objects it still lists stay typed in.</source>
+        <translation>
+            <numerusform>%n value is typed in but not written. Load the dictionary anyway? Values of objects it still lists stay typed in.</numerusform>
+            <numerusform>%n values are typed in but not written. Load the dictionary anyway? Values of objects it still lists stay typed in.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded %n object(s) from %1.</source>
+        <translation>
+            <numerusform>Loaded %n object from %1.</numerusform>
+            <numerusform>Loaded %n objects from %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) typed in, not on the drive yet: Write changes sends them.</source>
+        <translation>
+            <numerusform>%n value typed in, not on the drive yet: Write changes sends it.</numerusform>
+            <numerusform>%n values typed in, not on the drive yet: Write changes sends them.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3Page</name>
+    <message>
+        <source>Read drive status</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3ParametersPage</name>
+    <message>
+        <source>Parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No file compared yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write to another drive type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Store the sets in the drive&apos;s flash afterwards (1904.1 = $32)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save drive to file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save drive parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compax3 parameter files (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare with file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare with file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write selected differences…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write whole file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only when you know the objects mean the same on both drive types.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished">Name</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No file was saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1 objects to %2, but the file is incomplete: the drive refused %3 objects.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Incomplete: %1 objects refused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1 objects of drive %2 to %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 objects of %3 (serial number %4), saved %5.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not compared: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Equal: the drive holds all %1 values of the file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 objects differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file is from a drive of type %1, this one is of type %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare with a file first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No difference is ticked: nothing to write.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n selected object(s)</source>
+        <translation>
+            <numerusform>%n selected object</numerusform>
+            <numerusform>%n selected objects</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>the whole file (%n object(s))</source>
+        <translation>
+            <numerusform>the whole file (%n object)</numerusform>
+            <numerusform>the whole file (%n objects)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write %1 of %2 to drive %3?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file is checked against the drive first; then only objects that differ are written, each read back.%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> Afterwards the sets are stored in flash.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>To replace a drive: save the old drive&apos;s parameters to a file (or take one saved before), connect the new drive, compare it with the file, then write the differences and store the sets.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3SettingsWidget</name>
+    <message>
+        <source>The drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;). Scan bus lists the addresses that answer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RS485, 115200 8N1 unless set otherwise in the drive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RS232, 115200 8N1 with RTS/CTS unless set otherwise in the drive; a null-modem cable with RTS/CTS.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3StatusPage</name>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledge error…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switches the drive off and on again (control word 0, then 1): the rising edge acknowledges the error and powers the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status word 1 (object 1000.3), bit 0 first. The meanings of the bits and error numbers come from a public client, not from Parker&apos;s manual.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last error:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (stale: the connection was lost)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledge the error and power the axis of drive %1?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive is switched off and on again; it holds its position with power afterwards. Make sure nobody is at the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not acknowledged: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledged; last error now: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3WatchPage</name>
+    <message>
+        <source>Watch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object to watch, e.g. 680.5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished">Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished">Value</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a function: it is written, never read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read watched objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stale: the connection was lost after this was read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Compax3Window</name>
+    <message>
+        <source>Identify drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, serial number %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No Compax3 identified itself: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unwritten values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) typed in on the Objects page are not on the drive.</source>
+        <translation>
+            <numerusform>%n value typed in on the Objects page is not on the drive.</numerusform>
+            <numerusform>%n values typed in on the Objects page are not on the drive.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Closing drops them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close and drop them</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::ConnectionIndicator</name>
     <message>
         <source>No answer since %1 (%2)</source>
@@ -3941,10 +4623,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>seconds</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The first eight variables of the Variables page&apos;s watch list, read while this page or that one is shown.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4395,6 +5073,13 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>unknown now; at %1: %2</source>
         <translation>unknown now; at %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MultiTrendChart</name>
+    <message>
+        <source>seconds</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -7005,6 +7690,246 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>memory</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>the answer &quot;%1&quot; holds a byte that is no printable ASCII (0x%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the answer &quot;%1&quot; is no error number (! and four hex digits)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the answer is an empty line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>syntax error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no such object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the object is read-only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the value is outside the object&apos;s range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not possible in the drive&apos;s state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the value has the wrong type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive refused %1 with %2 (an error number CamBench does not know: see the drive&apos;s manual)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive refused %1 with %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Compax3 (RS232)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Compax3 at address %1 (RS485)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check the cable (a null-modem cable with RTS/CTS), the baud rate (115200 unless set otherwise in the C3 ServoManager) and that the drive is powered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check the RS485 wiring, the baud rate and the drive&apos;s address (C3 ServoManager, &quot;RS485 settings&quot;); `c3 scan` lists the addresses that answer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>input I%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>position reached</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>powerless</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>powered standstill</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zero known</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PSB0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PSB1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PSB2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>motor temperature (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>following error (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end limit + (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end limit − (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>direction change while moving (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error %1 (%2): see the drive&apos;s manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>powerless at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>moving, now at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>power the axis and acknowledge errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch the axis powerless</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jog the axis in + direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jog the axis in − direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acceleration %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>start homing (set 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>start set %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 answered %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>what answers is no Compax3: its info string is &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, address %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, serial number %2%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 answered %2 with &quot;&gt;&quot;, not a value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 answered %2 with &quot;%3&quot;, not &quot;&gt;&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 answered O%2 with &quot;%3&quot;, not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the answer to &quot;%1&quot; was lost (%2); it was not sent again, because it moves the axis each time it arrives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1. Reading back failed too (%2): the axis&apos;s state is unknown; look at the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the command was taken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the command was not taken (control word %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1. Read back: %2; the axis is %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the set must be 0 to %1, not %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis is powerless: enable it first (nothing was sent)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compax3 ASCII (RS485)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compax3 ASCII (RS232)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>powered, standing at %1 (last set %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Compax3 answered at any RS485 address 0..99</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::model</name>
@@ -7740,6 +8665,98 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>a flag, input or output such as M2327</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is not a Compax3 object; write index.subindex, e.g. 680.5 (also o680.5, O 680,5, $ for hexadecimal; index up to 65535, subindex up to 255)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at least %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at most %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a text for the drive cannot hold &quot; or a line break</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: write the number with a decimal point (%2); the drive takes a comma for a syntax error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a number (decimal, or $ and hexadecimal digits)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is outside the object&apos;s range (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no value given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>access</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not integer, real or text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not ro, rw, wo or cmd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min is above max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>object %1 a second time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>built in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2) is read-only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>info string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a pair [&quot;object&quot;, &quot;value&quot;]</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -8381,6 +9398,58 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Writing memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 read %2 times, no two answers in a row agreed: the line damages answers (check the cable, its shield and the baud rate)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: file %2, drive: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: file %2, drive %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparing objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is from a drive of type %1 (&quot;%2&quot;), the connected drive is of type %3 (&quot;%4&quot;): nothing was written. Restore it with --force (GUI: &quot;Write to another type&quot;) only if you know the objects mean the same on both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file&apos;s value of %1 cannot be written: %2. Nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not in the file: nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing objects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive took it but reads back %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>store the sets in the drive&apos;s flash (1904.1 = $32)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not stored, because not every object was written</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -65,6 +65,8 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
     });
     for (FamilyGui* family : families) {
         connect(family, &FamilyGui::identityChanged, m_strip, &ConnectionStrip::update);
+        // The title names the device too (windowSubject()).
+        connect(family, &FamilyGui::identityChanged, this, &MainWindow::updateTitle);
         connect(family, &FamilyGui::titleChanged, this, &MainWindow::updateTitle);
     }
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);

@@ -78,4 +78,13 @@ void ReportDialog::presentText(QWidget* parent, QMessageBox::Icon icon, const QS
             newline < 0 ? QString() : text.mid(newline + 1));
 }
 
+void ReportDialog::presentTally(QWidget* parent, const QString& title,
+                                const usecases::OutcomeTally& tally) {
+    QStringList lines;
+    for (const usecases::OutcomeLine& line : tally.lines())
+        if (line.state != usecases::WriteState::Unchanged) lines << line.text;
+    present(parent, tally.complete() ? QMessageBox::Information : QMessageBox::Warning, title,
+            tally.summary(), lines.join(QLatin1Char('\n')));
+}
+
 }  // namespace cambench

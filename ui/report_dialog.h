@@ -1,5 +1,7 @@
 #pragma once
 
+#include "comm/usecases/item_outcome.h"
+
 #include <QDialog>
 #include <QMessageBox>
 
@@ -25,6 +27,10 @@ public:
     // Modal; returns when the user closed it.
     static void present(QWidget* parent, QMessageBox::Icon icon, const QString& title,
                         const QString& summary, const QString& details = {});
+    // A write's report, whatever the family: the summary, and every item
+    // that was not unchanged with its outcome; a warning unless complete.
+    static void presentTally(QWidget* parent, const QString& title,
+                             const usecases::OutcomeTally& tally);
     // The summary is the first line of `text`, the rest the details.
     static void presentText(QWidget* parent, QMessageBox::Icon icon, const QString& title,
                             const QString& text);

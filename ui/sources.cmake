@@ -6,6 +6,10 @@ target_sources(cambench_ui PRIVATE
   change_marker.h
   live_freshness.h
   live_freshness.cpp
+  live_device_page.h
+  live_device_page.cpp
+  multi_trend_chart.h
+  multi_trend_chart.cpp
   sentence.h
   connection_status.h
   connection_status.cpp

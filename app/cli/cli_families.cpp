@@ -2,6 +2,7 @@
 #include "commands.h"
 
 #include "app/cli/camcon/camcon_commands.h"
+#include "app/cli/compax3/compax3_commands.h"
 #include "app/cli/mc1/mc1_commands.h"
 
 namespace cambench::cli {
@@ -11,6 +12,7 @@ void registerCliCommands() {
     registerShellCommands(registry);
     registerCamConCommands(registry);
     registerMc1Commands(registry);
+    registerCompax3Commands(registry);
 }
 
 }  // namespace cambench::cli

@@ -88,7 +88,8 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         static const QStringList kNames = {
             QStringLiteral("--port"),    QStringLiteral("--family"), QStringLiteral("--protocol"),
             QStringLiteral("--baud"),    QStringLiteral("--device"), QStringLiteral("--pc-number"),
-            QStringLiteral("--timeout"), QStringLiteral("--log"),    QStringLiteral("--variant")};
+            QStringLiteral("--timeout"), QStringLiteral("--log"),    QStringLiteral("--variant"),
+            QStringLiteral("--address")};
         QString name;
         QString inlineValue;
         for (const QString& candidate : kNames) {
@@ -129,6 +130,7 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
             };
             const Range ranges[] = {{"--baud", 50, 4000000, &options.baud},
                                     {"--device", 0, 63, &options.device},
+                                    {"--address", 0, 99, &options.device},
                                     {"--pc-number", 0, 63, &options.pcNumber},
                                     {"--timeout", 10, 600000, &options.timeoutMs}};
             for (const Range& range : ranges) {
@@ -137,6 +139,7 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
                 if (!number) return number.error();
                 *range.target = *number;
                 if (range.target == &options.timeoutMs) options.timeoutGiven = true;
+                if (name == QLatin1String("--address")) options.addressGiven = true;
             }
         }
     }
@@ -149,10 +152,28 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
     if (!family) return usageError(QStringLiteral("no device family is built into this CamBench"));
     if (!protocolGiven) {
         options.protocol = family->defaultProtocol;
+        // An address asks for the family's bus protocol (Compax3: RS485).
+        if (options.addressGiven && !options.isBus()) {
+            for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
+                if (info->familyId == family->id && info->isBus) {
+                    options.protocol = info->id;
+                    break;
+                }
+        }
     } else if (options.protocolInfo().familyId != family->id) {
         return usageError(QStringLiteral("--protocol %1 is a protocol of the %2 family, not of %3")
                               .arg(options.protocol, options.protocolInfo().familyId, family->id));
     }
+    if (options.addressGiven &&
+        (!options.isBus() || options.device > options.protocolInfo().lastDevice))
+        return usageError(
+            options.isBus()
+                ? QStringLiteral("--address of the %1 protocol is 0..%2, not %3")
+                      .arg(options.protocol)
+                      .arg(options.protocolInfo().lastDevice)
+                      .arg(options.device)
+                : QStringLiteral("--address is for devices on a bus; the %1 protocol has none")
+                      .arg(options.protocol));
     if (!options.variant.isEmpty()) {
         const QStringList variants = options.protocolInfo().makeSettings()->variantKeys();
         if (variants.isEmpty())
@@ -246,8 +267,8 @@ QString usageText() {
     return QStringLiteral(
                "Usage: cambench-cli [--port PORT] [--family FAMILY] [--protocol PROTOCOL] [--baud "
                "N]\n"
-               "                    [--device N] [--pc-number N] [--variant V] [--timeout MS]\n"
-               "                    [--log FILE] COMMAND\n"
+               "                    [--device N] [--address N] [--pc-number N] [--variant V]\n"
+               "                    [--timeout MS] [--log FILE] COMMAND\n"
                "\n"
                "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
                "default)\n"
@@ -257,6 +278,7 @@ QString usageText() {
                "                %2\n"
                "  --baud N      line speed; overrides the protocol's default\n"
                "  --device N    bus protocols: device number 0..63 (default 0)\n"
+               "  --address N   a drive's bus address (Compax3 on RS485: 0..99, compax3-rs485)\n"
                "  --pc-number N Multiuser number of this PC 0..63 (default 63)\n"
                "  --variant V   the device's variant, for families that have them (see below);\n"
                "                auto (the default) probes and names what it found\n"

@@ -14,7 +14,8 @@ struct GlobalOptions {
     QString family;    // a FamilyRegistry id; empty: FamilyRegistry::defaultId()
     QString protocol;  // a ProtocolRegistry id of `family`: its default unless --protocol
     int baud = 0;      // 0 = the protocol's default
-    int device = 0;
+    int device = 0;    // --device (CamCon Multiuser, 0..63) or --address (Compax3 RS485, 0..99)
+    bool addressGiven = false;
     int pcNumber = 63;
     int timeoutMs = 0;  // 0 = derived from the line
     bool timeoutGiven = false;

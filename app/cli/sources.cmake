@@ -8,6 +8,8 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/cli_options.cpp
   cli/cli_output.h
   cli/cli_output.cpp
+  cli/outcome_output.h
+  cli/outcome_output.cpp
   cli/progress_bar.h
   cli/progress_bar.cpp
   cli/traffic_log_file.h
@@ -31,5 +33,6 @@ add_executable(cambench-cli
 # The CamCon's command groups.
 include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/mc1/sources.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/compax3/sources.cmake)
 target_link_libraries(cambench-cli PRIVATE cambench_cli_front cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

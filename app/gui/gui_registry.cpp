@@ -3,6 +3,8 @@
 #include "ui/camcon/camcon_gui.h"
 #include "ui/camcon/protocols/ascii_settings_widget.h"
 #include "ui/camcon/protocols/table_settings_widget.h"
+#include "ui/compax3/compax3_gui.h"
+#include "ui/compax3/protocols/compax3_settings_widget.h"
 #include "ui/mc1/mc1_gui.h"
 #include "ui/mc1/protocols/mc1_settings_widget.h"
 
@@ -20,6 +22,10 @@ void registerGuiParts() {
     }
 
     widgets.add(QStringLiteral("mc1"), [](const QString&) { return new Mc1SettingsWidget; });
+    widgets.add(QStringLiteral("compax3"),
+                [](const QString&) { return new Compax3SettingsWidget(false); });
+    widgets.add(QStringLiteral("compax3-rs485"),
+                [](const QString&) { return new Compax3SettingsWidget(true); });
 
     FamilyGuiRegistry& families = FamilyGuiRegistry::instance();
     families.add({QStringLiteral("camcon"), [](DeviceSession* session, QObject* parent) {
@@ -27,6 +33,9 @@ void registerGuiParts() {
                   }});
     families.add({QStringLiteral("mc1"), [](DeviceSession* session, QObject* parent) {
                       return new Mc1Gui(session, parent);
+                  }});
+    families.add({QStringLiteral("compax3"), [](DeviceSession* session, QObject* parent) {
+                      return new Compax3Gui(session, parent);
                   }});
 }
 

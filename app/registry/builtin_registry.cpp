@@ -4,11 +4,13 @@
 #include "comm/camcon/camcon_family.h"
 #include "comm/camcon/table/table_protocol.h"
 #include "comm/compax3/compax3_family.h"
+#include "comm/compax3/compax3_protocol.h"
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/mc1/mc1_family.h"
 #include "comm/mc1/mc1_protocol.h"
 #include "comm/sim/camcon/camcon_simulator.h"
+#include "comm/sim/compax3/compax3_simulator.h"
 #include "comm/sim/mc1/mc1_simulator.h"
 #include "comm/sim/sim_transport.h"
 #include "comm/transport/transport_registry.h"
@@ -29,10 +31,12 @@ void registerBuiltins() {
     comm::registerCamConAscii(protocols);
     comm::registerCamConTable(protocols);
     comm::registerMc1Protocol(protocols);
+    comm::registerCompax3Protocol(protocols);
 
     comm::SimulatorRegistry& simulators = comm::SimulatorRegistry::instance();
     comm::registerCamConSimulator(simulators);
     comm::registerMc1Simulator(simulators);
+    comm::registerCompax3Simulator(simulators);
 }
 
 }  // namespace cambench

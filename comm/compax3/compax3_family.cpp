@@ -5,8 +5,12 @@
 namespace cambench::comm {
 
 void registerCompax3Family(FamilyRegistry& registry) {
-    registry.add(FamilyInfo::announced(QStringLiteral("compax3"), QStringLiteral("Parker Compax3"),
-                                       QStringLiteral("compax3-ascii")));
+    FamilyInfo family;
+    family.id = QStringLiteral("compax3");
+    family.title = QStringLiteral("Parker Compax3");
+    family.defaultProtocol = QStringLiteral("compax3");
+    family.built = true;
+    registry.add(family);
 }
 
 }  // namespace cambench::comm

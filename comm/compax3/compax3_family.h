@@ -4,8 +4,8 @@ namespace cambench::comm {
 
 class FamilyRegistry;
 
-// Announces the Parker Compax3 family ("compax3") in `registry`: known by name, not built
-// into this CamBench yet, so that asking for it gets that answer.
+// Registers the Parker Compax3 servo drives ("compax3") in `registry`; their
+// protocols are registerCompax3Protocol (compax3_protocol.h).
 void registerCompax3Family(FamilyRegistry& registry);
 
 }  // namespace cambench::comm

@@ -6,6 +6,8 @@ target_sources(cambench_comm PRIVATE
   engine/framing_backend.h
   engine/line_timing.h
   engine/request.h
+  engine/cr_line_backend.h
+  engine/cr_line_backend.cpp
   engine/request_engine.h
   engine/request_engine.cpp
 )

@@ -50,15 +50,6 @@ Result<QByteArray> mc1AsciiWritePoint(const Mc1Point& point, bool on) {
     return line(QStringLiteral("%1=%2").arg(mc1PointText(point)).arg(on ? 1 : 0));
 }
 
-std::optional<QByteArray> takeMc1AsciiLine(QByteArray& buffer) {
-    const qsizetype end = buffer.indexOf(kCr);
-    if (end < 0) return std::nullopt;
-    QByteArray text = buffer.left(end);
-    buffer.remove(0, end + 1);
-    text.replace('\n', QByteArray());
-    return text;
-}
-
 Result<qint32> mc1AsciiValue(const QByteArray& answer) {
     if (answer.trimmed() == "ERR") return refused();
     bool ok = false;

@@ -24,9 +24,6 @@ QByteArray mc1AsciiReadPoint(const Mc1Point& point);
 // Refused for an input.
 Result<QByteArray> mc1AsciiWritePoint(const Mc1Point& point, bool on);
 
-// The next line from the front of `buffer` without its CR (LF dropped),
-// nothing while no CR has come.
-std::optional<QByteArray> takeMc1AsciiLine(QByteArray& buffer);
 // An answer line: a number, a bit, or OK; ERR is the controller's refusal.
 Result<qint32> mc1AsciiValue(const QByteArray& line);
 Result<bool> mc1AsciiBit(const QByteArray& line);

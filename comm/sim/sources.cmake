@@ -11,6 +11,12 @@ target_sources(cambench_sim PRIVATE
   mc1/mc1_simulator.h
   mc1/sim_mc1_ascii_line.cpp
   mc1/sim_mc1_ascii_line.h
+  compax3/sim_compax3_drive.h
+  compax3/sim_compax3_drive.cpp
+  compax3/sim_compax3_line.h
+  compax3/sim_compax3_line.cpp
+  compax3/compax3_simulator.h
+  compax3/compax3_simulator.cpp
   camcon/sim_axis.h
   camcon/sim_cam_handlers.cpp
   camcon/sim_cam_store.cpp

@@ -103,4 +103,20 @@ QString OutcomeTally::summary() const {
         .arg(joined);
 }
 
+OutcomeLine failedWriteLine(const QString& label, const Error& error, bool readOk, bool isOld,
+                            bool isWanted, const QString& actual) {
+    WriteState state = WriteState::Unknown;
+    if (readOk)
+        state = isWanted ? WriteState::Written
+                : isOld  ? WriteState::Failed
+                         : WriteState::ChangedThoughFailed;
+    const QString note =
+        state == WriteState::Written
+            ? QCoreApplication::translate("cambench::usecases", "written, as read back after: %1")
+                  .arg(error.message)
+            : QString();
+    const Error shown = state == WriteState::Written ? Error{} : error;
+    return {label, state, outcomeText(label, state, actual, shown, note), shown};
+}
+
 }  // namespace cambench::usecases

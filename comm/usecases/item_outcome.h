@@ -69,6 +69,12 @@ OutcomeLine outcomeLine(const ItemOutcome<T>& outcome) {
         outcome.error};
 }
 
+// The line of one item whose write failed, from what reading it back
+// found: written after all (the error becomes a note), failed (the old
+// value), changed though failed, or unknown (`readOk` false).
+OutcomeLine failedWriteLine(const QString& label, const Error& error, bool readOk, bool isOld,
+                            bool isWanted, const QString& actual);
+
 // Counts and summary of the lines of one write, in the words every report uses.
 class OutcomeTally {
 public:

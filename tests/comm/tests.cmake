@@ -20,3 +20,5 @@ cambench_add_test(tst_sim_mc1_controller SOURCES comm/sim/tst_sim_mc1_controller
 cambench_add_test(tst_mc1_link SOURCES comm/mc1/tst_mc1_link.cpp LIBS cambench_sim)
 cambench_add_test(tst_mc1_device SOURCES comm/mc1/tst_mc1_device.cpp LIBS cambench_sim)
 include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/mc1_decoder.cmake)
+cambench_add_test(tst_compax3_drive SOURCES comm/compax3/tst_compax3_drive.cpp LIBS cambench_sim cambench_usecases)
+include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/compax3_reply.cmake)

@@ -6,6 +6,7 @@
 #include "fake_family.h"
 
 #include "app/cli/command_line.h"
+#include "comm/device/family_registry.h"
 #include "ui/connection_page.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
@@ -14,6 +15,7 @@
 #include "ui/shell.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QLabel>
@@ -21,6 +23,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -63,6 +66,33 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QSettings().clear();
         fake::registerFakeFamily();
+        // A family known by name whose code is not built yet.
+        comm::FamilyRegistry::instance().add(
+            comm::FamilyInfo::announced(QStringLiteral("coming"), QStringLiteral("Coming Drive"),
+                                        QStringLiteral("coming-line")));
+    }
+
+    // An announced family is shown greyed with the reason, never hidden, and
+    // asking for it gets that answer, not "unknown".
+    void anAnnouncedFamilyIsShownAndRefusedByName() {
+        const Result<const comm::FamilyInfo*> usable =
+            comm::FamilyRegistry::instance().usable(QStringLiteral("coming"));
+        QVERIFY(!usable.ok());
+        QVERIFY2(usable.error().message.contains(QLatin1String("not built into this CamBench yet")),
+                 qPrintable(usable.error().message));
+        QCOMPARE(cli::runCommandLine({QStringLiteral("--family"), QStringLiteral("coming"),
+                                      QStringLiteral("info")}),
+                 2);
+        Shell shell;
+        shell.start(QStringLiteral("sim:throttle=0"), QStringLiteral("standard"));
+        auto* families =
+            shell.window()->connectionPage()->findChild<QComboBox*>(QStringLiteral("familyBox"));
+        QVERIFY(families);
+        const int coming = families->findData(QStringLiteral("coming"));
+        QVERIFY(coming >= 0);
+        const auto* model = qobject_cast<QStandardItemModel*>(families->model());
+        QVERIFY(!(model->item(coming)->flags() & Qt::ItemIsEnabled));
+        QVERIFY(families->itemText(coming).contains(QLatin1String("not built")));
     }
 
     void guiHostsTheFamily() {

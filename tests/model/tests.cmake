@@ -12,3 +12,7 @@ cambench_add_test(tst_program_diff SOURCES model/tst_program_diff.cpp LIBS cambe
 cambench_add_test(tst_cam_timing SOURCES model/tst_cam_timing.cpp LIBS cambench_model)
 cambench_add_test(tst_mc1_backup_file SOURCES model/tst_mc1_backup_file.cpp LIBS cambench_model)
 cambench_add_test(tst_mc1_project_file SOURCES model/tst_mc1_project_file.cpp LIBS cambench_model)
+cambench_add_test(tst_compax3_syntax SOURCES model/tst_compax3_syntax.cpp LIBS cambench_comm)
+# Also under a German C locale: numbers must still go out with a point.
+set_tests_properties(tst_compax3_syntax PROPERTIES
+  ENVIRONMENT "QT_QPA_PLATFORM=offscreen;LC_ALL=de_DE.UTF-8;LANG=de_DE.UTF-8")

@@ -2,12 +2,9 @@
 
 #include "mc1_page.h"
 
-class QChartView;
-class QLineSeries;
-class QValueAxis;
-
 namespace cambench {
 
+class MultiTrendChart;
 class Mc1VariablesPage;
 class Mc1WatchModel;
 
@@ -22,24 +19,16 @@ public:
     QString sectionTitle() const override { return tr("Trend"); }
     bool poll() override;
     void markStale() override;
-    int seriesCount() const { return int(m_series.size()); }
+    int seriesCount() const;
     int pointCount() const;
-
-protected:
-    void changeEvent(QEvent* event) override;
 
 private:
     void sample(const QDateTime& at);
-    void applyPalette();
 
     Mc1VariablesPage* m_variables;
     Mc1WatchModel* m_model;
-    QChartView* m_view;
-    QValueAxis* m_time;
-    QValueAxis* m_values;
-    QList<std::pair<int, QLineSeries*>> m_series;  // variable number, its line
+    MultiTrendChart* m_chart;
     QDateTime m_start;
-    bool m_gap = false;
 };
 
 }  // namespace cambench

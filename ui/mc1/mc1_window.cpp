@@ -233,12 +233,7 @@ void Mc1Window::restoreFile(const QString& path) {
                                       asSentence(tally.error().message));
                 return;
             }
-            QStringList lines;
-            for (const usecases::OutcomeLine& line : tally->lines())
-                if (line.state != usecases::WriteState::Unchanged) lines << line.text;
-            ReportDialog::present(
-                window(), tally->complete() ? QMessageBox::Information : QMessageBox::Warning,
-                tr("Restore"), tally->summary(), lines.join(QLatin1Char('\n')));
+            ReportDialog::presentTally(window(), tr("Restore"), *tally);
             if (m_shown) m_shown->poll();
         });
 }

@@ -2,7 +2,6 @@
 # Trend), its part of the window and its protocol's settings widget.
 target_sources(cambench_ui PRIVATE
   mc1/mc1_page.h
-  mc1/mc1_page.cpp
   mc1/mc1_watch_model.h
   mc1/mc1_watch_model.cpp
   mc1/mc1_variables_page.h

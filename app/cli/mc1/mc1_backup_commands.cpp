@@ -4,6 +4,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
+#include "app/cli/outcome_output.h"
 
 #include "comm/mc1/mc1_parameters.h"
 #include "comm/mc1/usecases/mc1_backup_restore.h"
@@ -188,14 +189,7 @@ int runMc1Restore(CliSession& session, CommandArgs& args) {
             return usecases::restoreMc1Backup(device, b, UseCaseProgress::of(job));
         });
     if (!tally) return reportError(tally.error());
-    QString text;
-    for (const usecases::OutcomeLine& line : tally->lines())
-        if (line.state != usecases::WriteState::Unchanged) text += line.text + QLatin1Char('\n');
-    text += tally->summary() + QLatin1Char('\n');
-    printOut(text);
-    if (tally->complete()) return ExitOk;
-    printError(tally->summary());
-    return exitCodeFor(tally->firstError().kind);
+    return printOutcomeTally(*tally);
 }
 
 }  // namespace cambench::cli

@@ -89,23 +89,6 @@ Status checkFits(Mc1Device& device, const Mc1Backup& backup) {
     return success();
 }
 
-// The outcome of one item whose write failed: what reading back found.
-OutcomeLine failedLine(const QString& label, const Error& error, bool readOk, bool isOld,
-                       bool isWanted, const QString& actual) {
-    WriteState state = WriteState::Unknown;
-    if (readOk)
-        state = isWanted ? WriteState::Written
-                : isOld  ? WriteState::Failed
-                         : WriteState::ChangedThoughFailed;
-    const QString note =
-        state == WriteState::Written
-            ? QCoreApplication::translate("cambench::usecases", "written, as read back after: %1")
-                  .arg(error.message)
-            : QString();
-    const Error shown = state == WriteState::Written ? Error{} : error;
-    return {label, state, outcomeText(label, state, actual, shown, note), shown};
-}
-
 }  // namespace
 
 Mc1BackupScope defaultMc1BackupScope(comm::Mc1Variant variant) {
@@ -234,9 +217,9 @@ Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup
             written(label, QString::number(it.value()));
         } else {
             const Result<qint64> back = device.readVariable(it.key());
-            lines << failedLine(label, w.error(), back.ok(), back && *back == old,
-                                back && *back == it.value(),
-                                back ? QString::number(*back) : QString());
+            lines << failedWriteLine(label, w.error(), back.ok(), back && *back == old,
+                                     back && *back == it.value(),
+                                     back ? QString::number(*back) : QString());
             failed(w.error());
         }
         writing.report(++done, total,
@@ -257,13 +240,13 @@ Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup
         if (back && *back == wanted) {
             written(label, wanted ? QStringLiteral("1") : QStringLiteral("0"));
         } else if (back) {
-            lines << failedLine(
+            lines << failedWriteLine(
                 label,
                 Error::device(0, QCoreApplication::translate("cambench::usecases", "read back %1")
                                      .arg(*back ? 1 : 0)),
                 true, *back == old, false, *back ? QStringLiteral("1") : QStringLiteral("0"));
         } else {
-            lines << failedLine(label, back.error(), false, false, false, {});
+            lines << failedWriteLine(label, back.error(), false, false, false, {});
             failed(back.error());
         }
     }
@@ -305,8 +288,8 @@ Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup
                                              "cambench::usecases",
                                              "the bytes read back differ from those written"))
                       : w.error();
-                lines << failedLine(label, error, back.ok(), back && *back == old,
-                                    back && *back == wanted, {});
+                lines << failedWriteLine(label, error, back.ok(), back && *back == old,
+                                         back && *back == wanted, {});
                 failed(error);
             }
         }

@@ -1,4 +1,5 @@
 #include "sim_mc1_ascii_line.h"
+#include "comm/engine/cr_line_backend.h"
 
 #include "comm/mc1/mc1_ascii.h"
 
@@ -7,7 +8,7 @@ namespace cambench::comm {
 QList<SimOutput> SimMc1AsciiLine::receive(QByteArrayView bytes, qint64) {
     QList<SimOutput> out;
     m_pending.append(bytes.toByteArray());
-    while (const std::optional<QByteArray> line = takeMc1AsciiLine(m_pending)) {
+    while (const std::optional<QByteArray> line = takeCrLine(m_pending)) {
         if (m_faults.settings().dead || m_faults.ignoresRequest()) continue;
         if (std::optional<SimOutput> sent =
                 m_faults.apply(SimOutput{answer(*line) + '\r', 0}, *line))

@@ -1,6 +1,7 @@
 // Issue 14, point 1 and 3: MC-1 telegrams of the four variants, answers and
 // the address arithmetic, against PROTOCOL-NOTES §11's test vectors (worked
 // by hand from the manual's chapter 5 examples) and tables 47 and 48.
+#include "comm/engine/cr_line_backend.h"
 #include "comm/mc1/mc1_address.h"
 #include "comm/mc1/mc1_ascii.h"
 #include "comm/mc1/mc1_catalogue.h"
@@ -188,10 +189,10 @@ private Q_SLOTS:
         QVERIFY(!mc1AsciiWritePoint({Mc1Area::Input, 3}, true));
 
         QByteArray line = "-12345\r\nOK";
-        QCOMPARE(*mc1AsciiValue(*takeMc1AsciiLine(line)), -12345);
-        QVERIFY(!takeMc1AsciiLine(line));  // "OK" still without its CR
+        QCOMPARE(*mc1AsciiValue(*takeCrLine(line)), -12345);
+        QVERIFY(!takeCrLine(line));  // "OK" still without its CR
         line += "\r";
-        QVERIFY(mc1AsciiOk(*takeMc1AsciiLine(line)).ok());  // the LF before it dropped
+        QVERIFY(mc1AsciiOk(*takeCrLine(line)).ok());  // the LF before it dropped
         const Result<bool> refused = mc1AsciiBit("ERR");
         QCOMPARE(refused.error().kind, ErrorKind::DeviceError);
         QVERIFY(!mc1AsciiBit("2"));

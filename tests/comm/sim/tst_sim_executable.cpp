@@ -101,12 +101,13 @@ void TestSimExecutable::rejectsBadOptions() {
     QVERIFY(process.waitForFinished(10000));
     QCOMPARE(process.exitCode(), 2);
     QVERIFY(process.readAllStandardError().contains("0..63"));
-    // A family announced but not simulated yet is refused by name.
+    // A Compax3 address without RS485 says what is missing.
     process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
-                  {QStringLiteral("--family"), QStringLiteral("compax3")});
+                  {QStringLiteral("--family"), QStringLiteral("compax3"),
+                   QStringLiteral("--address"), QStringLiteral("5")});
     QVERIFY(process.waitForFinished(10000));
     QCOMPARE(process.exitCode(), 2);
-    QVERIFY(process.readAllStandardError().contains("not built into this CamBench yet"));
+    QVERIFY(process.readAllStandardError().contains("--address is for RS485: add --rs485"));
     // A variant the MC-1 simulator does not know is named with those it does.
     process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
                   {QStringLiteral("--family"), QStringLiteral("mc1"), QStringLiteral("--variant"),

@@ -23,19 +23,6 @@ using namespace cambench::test;
 
 namespace {
 
-// Presses the confirmation's action (yes) or Cancel.
-std::unique_ptr<NextDialog<QMessageBox>> answerConfirmation(bool yes) {
-    return std::make_unique<NextDialog<QMessageBox>>([yes](QMessageBox* box) {
-        for (QAbstractButton* button : box->buttons()) {
-            const bool isCancel = box->buttonRole(button) == QMessageBox::RejectRole;
-            if (isCancel != yes) {
-                button->click();
-                return;
-            }
-        }
-    });
-}
-
 std::unique_ptr<Shell> startMc1(const QString& variant) {
     return startOnSimulator(QStringLiteral("sim:variant=%1").arg(variant), QStringLiteral("mc1"));
 }
@@ -76,7 +63,7 @@ private Q_SLOTS:
         QVERIFY(
             QTest::qWaitFor([&] { return *model->entries().at(1).value == 77; }, kDeviceTimeoutMs));
         const QLabel* result =
-            mc1->variablesPage()->findChild<QLabel*>(QStringLiteral("mc1Result"));
+            mc1->variablesPage()->findChild<QLabel*>(QStringLiteral("pageResult"));
         QVERIFY2(result->text().contains(QLatin1String("V2 = 77 written and read back")),
                  qPrintable(result->text()));
 
@@ -161,7 +148,7 @@ private Q_SLOTS:
                 stopped,
                 qPrintable(QStringLiteral("%1 / %2 (escape %3)")
                                .arg(axes->stateLabel()->text(),
-                                    axes->findChild<QLabel*>(QStringLiteral("mc1Result"))->text())
+                                    axes->findChild<QLabel*>(QStringLiteral("pageResult"))->text())
                                .arg(escape)));
         }
         // A move the user does not confirm is never sent.

@@ -11,8 +11,10 @@
 #include "ui/main_window.h"
 #include "ui/shell.h"
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QCoreApplication>
+#include <QMessageBox>
 #include <QPointer>
 #include <QSettings>
 #include <QSignalSpy>
@@ -117,6 +119,21 @@ inline void protocolRows() {
     QTest::addColumn<QString>("protocol");
     for (const char* protocol : {"standard", "3964r-n96", "3964r-e38"})
         QTest::newRow(protocol) << QString::fromLatin1(protocol);
+}
+
+// Presses the confirmation's action (yes) or Cancel; a box without a
+// Cancel gets its first button.
+inline std::unique_ptr<NextDialog<QMessageBox>> answerConfirmation(bool yes) {
+    return std::make_unique<NextDialog<QMessageBox>>([yes](QMessageBox* box) {
+        for (QAbstractButton* button : box->buttons()) {
+            const bool isCancel = box->buttonRole(button) == QMessageBox::RejectRole;
+            if (isCancel != yes) {
+                button->click();
+                return;
+            }
+        }
+        box->buttons().first()->click();
+    });
 }
 
 }  // namespace cambench::test

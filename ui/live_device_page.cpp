@@ -1,7 +1,7 @@
-#include "mc1_page.h"
+#include "live_device_page.h"
 
-#include "ui/device_session.h"
-#include "ui/live_freshness.h"
+#include "device_session.h"
+#include "live_freshness.h"
 
 #include <QDateTime>
 #include <QLabel>
@@ -10,9 +10,9 @@
 
 namespace cambench {
 
-bool Mc1Page::confirm(const QString& title, const QString& question, const QString& detail) {
+bool LiveDevicePage::confirm(const QString& title, const QString& question, const QString& detail) {
     QMessageBox box(QMessageBox::Warning, title, question, QMessageBox::Cancel, this);
-    box.setObjectName(QStringLiteral("mc1Confirm"));
+    box.setObjectName(QStringLiteral("pageConfirm"));
     box.setInformativeText(detail);
     QPushButton* yes = box.addButton(title, QMessageBox::AcceptRole);
     box.setDefaultButton(QMessageBox::Cancel);
@@ -20,24 +20,24 @@ bool Mc1Page::confirm(const QString& title, const QString& question, const QStri
     return box.clickedButton() == yes;
 }
 
-void Mc1Page::pollAnswered(bool ok) {
+void LiveDevicePage::pollAnswered(bool ok) {
     if (ok)
         m_session->freshness()->answered(QDateTime::currentDateTime());
     else
         m_session->freshness()->missed();
 }
 
-QLabel* Mc1Page::resultLine() {
+QLabel* LiveDevicePage::resultLine() {
     if (!m_result) {
         m_result = new QLabel;
-        m_result->setObjectName(QStringLiteral("mc1Result"));
+        m_result->setObjectName(QStringLiteral("pageResult"));
         m_result->setWordWrap(true);
         m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
     }
     return m_result;
 }
 
-void Mc1Page::showResult(const QString& text, bool ok) {
+void LiveDevicePage::showResult(const QString& text, bool ok) {
     resultLine()->setText(text);
     resultLine()->setStyleSheet(ok ? QString() : QStringLiteral("color: #d03030;"));
     Q_EMIT statusMessage(text);

@@ -1,0 +1,56 @@
+#include "compax3_device.h"
+
+#include <QCoreApplication>
+
+namespace cambench::comm {
+
+QString Compax3DriveStatus::summary() const {
+    const QString at = compax3NumberText(position);
+    if (status.powerless())
+        return QCoreApplication::translate("cambench::comm", "powerless at %1").arg(at);
+    if (moving()) return QCoreApplication::translate("cambench::comm", "moving, now at %1").arg(at);
+    return QCoreApplication::translate("cambench::comm", "powered, standing at %1 (last set %2)")
+        .arg(at)
+        .arg(lastSet);
+}
+
+QString compax3MotionText(Compax3Motion motion) {
+    switch (motion) {
+        case Compax3Motion::Enable:
+            return QCoreApplication::translate("cambench::comm",
+                                               "power the axis and acknowledge errors");
+        case Compax3Motion::Disable:
+            return QCoreApplication::translate("cambench::comm", "switch the axis powerless");
+        case Compax3Motion::JogPlus:
+            return QCoreApplication::translate("cambench::comm", "jog the axis in + direction");
+        case Compax3Motion::JogMinus:
+            return QCoreApplication::translate("cambench::comm", "jog the axis in − direction");
+        case Compax3Motion::Stop:
+            return QCoreApplication::translate("cambench::comm", "stop the axis");
+    }
+    return {};
+}
+
+QString compax3SetMoveText(const Compax3SetMove& move) {
+    QStringList parts;
+    if (move.target)
+        parts << QCoreApplication::translate("cambench::comm", "target %1")
+                     .arg(compax3NumberText(*move.target));
+    if (move.velocity)
+        parts << QCoreApplication::translate("cambench::comm", "velocity %1")
+                     .arg(compax3NumberText(*move.velocity));
+    if (move.acceleration)
+        parts << QCoreApplication::translate("cambench::comm", "acceleration %1")
+                     .arg(compax3NumberText(*move.acceleration));
+    const QString what =
+        move.set == 0 ? QCoreApplication::translate("cambench::comm", "start homing (set 0)")
+                      : QCoreApplication::translate("cambench::comm", "start set %1").arg(move.set);
+    if (parts.isEmpty()) return what;
+    return QStringLiteral("%1 (%2)").arg(what, parts.join(QStringLiteral(", ")));
+}
+
+bool compax3MotionMoves(Compax3Motion motion) {
+    return motion == Compax3Motion::JogPlus || motion == Compax3Motion::JogMinus;
+}
+
+}  // namespace cambench::comm

@@ -1,0 +1,77 @@
+#pragma once
+
+#include "compax3_objects.h"
+
+#include "comm/device/device_connection.h"
+#include "model/compax3/compax3_parameter_file.h"
+#include "model/result.h"
+
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+namespace cambench::comm {
+
+// What the drive reports about itself and its axis, read in one go.
+struct Compax3DriveStatus {
+    Compax3StatusWord status;
+    int lastError = 1;  // 550.1; 1 = none
+    double position = 0.0;
+    int lastSet = 0;
+    quint16 controlWord = 0;
+    bool moving() const { return !status.powerless() && !status.poweredStandstill(); }
+    // "powered, standing at 12.5 (set 1 done)", "moving, now at 3.2",
+    // "powerless at 0": one line for a person.
+    QString summary() const;
+};
+
+// The motion of a positioning set: what the confirmation shows and what is
+// written into the set before it starts (unset: as the drive holds it).
+struct Compax3SetMove {
+    int set = 1;  // 0 = homing
+    std::optional<double> target;
+    std::optional<double> velocity;
+    std::optional<double> acceleration;
+};
+
+enum class Compax3Motion {
+    Enable,   // power on and acknowledge errors (1100.3 = 0, then 1)
+    Disable,  // powerless (1100.3 = 0): the axis coasts or brakes as the drive is set
+    JogPlus,  // moves until Stop
+    JogMinus,
+    Stop,  // decelerates with the ramp, stays powered (1100.3 = 1)
+};
+// "jog the axis in + direction", for confirmations and messages.
+QString compax3MotionText(Compax3Motion motion);
+// "start set 1 (target 100, velocity 50)".
+QString compax3SetMoveText(const Compax3SetMove& move);
+// Whether it sets the axis in motion (and so wants a confirmation).
+bool compax3MotionMoves(Compax3Motion motion);
+
+// A connected Parker Compax3 servo drive (ASCII objects, RS232 or RS485).
+// Reads are repeated when an answer is lost; a write whose answer is lost
+// is repeated only when writing it twice does the same as once (a value);
+// a command that moves the axis is sent once: when its answer is lost the
+// drive's state is read back and the error says what was found.
+class Compax3Device : public DeviceConnection {
+public:
+    QString familyId() const override { return QStringLiteral("compax3"); }
+
+    // The info string (`_?`) and serial number (1.4).
+    virtual Result<Compax3Identity> identity() = 0;
+    // The value as the drive answers it ("12.5", "Compax3 …"); `hex`: asks
+    // for hexadecimal ("$1A").
+    virtual Result<QString> readObject(const Compax3ObjectId& id, bool hex = false) = 0;
+    // `wireValue` as compax3WireValue made it. A refusal is a DeviceError
+    // whose message holds the drive's "!xxxx".
+    virtual Status writeObject(const Compax3ObjectId& id, const QString& wireValue) = 0;
+
+    virtual Result<Compax3DriveStatus> status() = 0;
+    // Returns the status read after the command.
+    virtual Result<Compax3DriveStatus> motion(Compax3Motion motion) = 0;
+    // Writes what `move` sets into the set, then starts it.
+    virtual Result<Compax3DriveStatus> moveSet(const Compax3SetMove& move) = 0;
+};
+
+}  // namespace cambench::comm

@@ -1,0 +1,136 @@
+#include "compax3_syntax.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+
+namespace cambench::comm {
+
+QByteArray compax3ReadCommand(const Compax3ObjectId& id, bool hexAnswer) {
+    QByteArray command = "O" + QByteArray::number(id.index) + ',' + QByteArray::number(id.subindex);
+    if (hexAnswer) command += '$';
+    return command;
+}
+
+QByteArray compax3WriteCommand(const Compax3ObjectId& id, const QString& wireValue) {
+    return compax3ReadCommand(id) + '=' + wireValue.toLatin1();
+}
+
+QByteArray compax3InfoCommand() {
+    return QByteArrayLiteral("_?");
+}
+
+QByteArray compax3RequestLine(const QByteArray& command, int address) {
+    QByteArray line;
+    if (address >= 0) line += QByteArray::number(address);
+    return line + command + kCompax3End;
+}
+
+Result<Compax3Reply> parseCompax3Reply(const QByteArray& raw) {
+    QByteArray line = raw;
+    if (line.startsWith(kCompax3Rs485Mark)) line.remove(0, 1);
+    for (char c : line)
+        if (quint8(c) < 0x20 || quint8(c) > 0x7E)
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::comm",
+                                            "the answer \"%1\" holds a byte that is no printable "
+                                            "ASCII (0x%2)")
+                    .arg(QString::fromLatin1(line.toPercentEncoding(" !\"$*,.;=>_-+")))
+                    .arg(quint8(c), 2, 16, QLatin1Char('0')));
+    Compax3Reply reply;
+    if (line == ">") {
+        reply.kind = Compax3Reply::Ok;
+        return reply;
+    }
+    if (line.startsWith('!')) {
+        static const QRegularExpression code(QStringLiteral("^![0-9A-Fa-f]{4}$"));
+        const QString text = QString::fromLatin1(line);
+        if (!code.match(text).hasMatch())
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::comm",
+                                            "the answer \"%1\" is no error number (! and four hex "
+                                            "digits)")
+                    .arg(text));
+        reply.kind = Compax3Reply::Error;
+        reply.code = text.mid(1).toInt(nullptr, 16);
+        return reply;
+    }
+    if (line.isEmpty())
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::comm", "the answer is an empty line"));
+    reply.text = QString::fromLatin1(line);
+    return reply;
+}
+
+QString compax3ErrorMeaning(int code) {
+    switch (code) {
+        case 0x0001:
+            return QCoreApplication::translate("cambench::comm", "syntax error");
+        case 0x0002:
+            return QCoreApplication::translate("cambench::comm", "no such object");
+        case 0x0003:
+            return QCoreApplication::translate("cambench::comm", "the object is read-only");
+        case 0x0004:
+            return QCoreApplication::translate("cambench::comm",
+                                               "the value is outside the object's range");
+        case 0x0005:
+            return QCoreApplication::translate("cambench::comm",
+                                               "not possible in the drive's state");
+        case 0x0006:
+            return QCoreApplication::translate("cambench::comm", "the value has the wrong type");
+        default:
+            return {};
+    }
+}
+
+cambench::Error compax3RefusalError(const QByteArray& command, int code) {
+    const QString number = QStringLiteral("!%1").arg(code, 4, 16, QLatin1Char('0')).toUpper();
+    const QString meaning = compax3ErrorMeaning(code);
+    const QString text =
+        meaning.isEmpty()
+            ? QCoreApplication::translate("cambench::comm",
+                                          "the drive refused %1 with %2 (an error number "
+                                          "CamBench does not know: see the drive's manual)")
+                  .arg(QString::fromLatin1(command), number)
+            : QCoreApplication::translate("cambench::comm", "the drive refused %1 with %2 (%3)")
+                  .arg(QString::fromLatin1(command), number, meaning);
+    return cambench::Error::device(code, text);
+}
+
+QByteArray compax3Canonical(const QByteArray& command) {
+    QByteArray out;
+    bool quoted = false;
+    for (char c : command) {
+        if (c == '"') quoted = !quoted;
+        if (!quoted && c == ' ') continue;
+        out += quoted ? c : char(QChar::toUpper(uchar(c)));
+    }
+    return out;
+}
+
+std::optional<Compax3Request> parseCompax3Request(const QByteArray& canonical) {
+    if (canonical == "_?") return Compax3Request{Compax3Request::Info, {}, false, {}};
+    static const QRegularExpression pattern(
+        QStringLiteral("^O(\\$[0-9A-F]+|[0-9]+)[,.](\\$[0-9A-F]+|[0-9]+)(\\$?)(=(.*))?$"));
+    const QRegularExpressionMatch match = pattern.match(QString::fromLatin1(canonical));
+    if (!match.hasMatch()) return std::nullopt;
+    auto number = [](const QString& text) {
+        bool ok = false;
+        const int value =
+            text.startsWith(QLatin1Char('$')) ? text.mid(1).toInt(&ok, 16) : text.toInt(&ok, 10);
+        return ok ? value : -1;
+    };
+    Compax3Request request;
+    request.id = {number(match.captured(1)), number(match.captured(2))};
+    if (request.id.index < 0 || request.id.index > 0xFFFF || request.id.subindex < 0 ||
+        request.id.subindex > 0xFF)
+        return std::nullopt;
+    request.hexAnswer = !match.captured(3).isEmpty();
+    if (!match.captured(4).isEmpty()) {
+        if (request.hexAnswer) return std::nullopt;
+        request.kind = Compax3Request::Write;
+        request.value = match.captured(5);
+    }
+    return request;
+}
+
+}  // namespace cambench::comm

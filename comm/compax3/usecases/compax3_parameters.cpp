@@ -1,0 +1,268 @@
+#include "compax3_parameters.h"
+
+#include <QCoreApplication>
+#include <QSet>
+
+namespace cambench::usecases {
+
+using comm::Compax3Device;
+
+namespace {
+
+bool stopsTheWork(const Error& error) {
+    return error.kind == ErrorKind::Communication || error.kind == ErrorKind::Cancelled;
+}
+
+// The ASCII protocol has no checksum: a digit damaged on the line reads as
+// another number. A value that goes into a file, or that decides whether
+// an object differs, is read until two answers in a row agree.
+constexpr int kMostReads = 4;
+
+Result<QString> readAgreed(Compax3Device& device, const Compax3ObjectId& id,
+                           std::optional<QString> first = std::nullopt) {
+    QString previous;
+    if (first) {
+        previous = *first;
+    } else {
+        const Result<QString> value = device.readObject(id, false);
+        if (!value) return value;
+        previous = *value;
+    }
+    for (int read = 1; read < kMostReads; ++read) {
+        const Result<QString> again = device.readObject(id, false);
+        if (!again) return again;
+        if (*again == previous) return previous;
+        previous = *again;
+    }
+    return Error::communication(
+        QCoreApplication::translate("cambench::usecases",
+                                    "%1 read %2 times, no two answers in a row agreed: the line "
+                                    "damages answers (check the cable, its shield and the baud "
+                                    "rate)")
+            .arg(id.text())
+            .arg(kMostReads));
+}
+
+// Reads `id`; when it seems to differ from `expected`, reads it until two
+// answers agree, so that a damaged answer does not pass for a difference.
+Result<QString> readConfirmed(Compax3Device& device, const Compax3ObjectId& id,
+                              const QString& expected) {
+    const Result<QString> value = device.readObject(id, false);
+    if (!value || compax3SameValue(*value, expected)) return value;
+    return readAgreed(device, id, *value);
+}
+
+QString label(const Compax3ObjectId& id, const Compax3Dictionary& dictionary) {
+    const Compax3ObjectInfo* info = dictionary.find(id);
+    return info ? QStringLiteral("%1 (%2)").arg(id.text(), info->name) : id.text();
+}
+
+}  // namespace
+
+Result<Compax3Backup> takeCompax3Parameters(Compax3Device& device,
+                                            const QList<Compax3ObjectId>& objects,
+                                            const UseCaseProgress& progress) {
+    Compax3Backup backup;
+    const Result<Compax3Identity> identity = device.identity();
+    if (!identity) return identity.error();
+    backup.set.drive = *identity;
+    backup.set.taken = QDateTime::currentDateTimeUtc();
+    backup.set.toolVersion = QCoreApplication::applicationVersion();
+    for (int i = 0; i < objects.size(); ++i) {
+        if (progress.cancelled()) return Error::cancelled();
+        const Result<QString> value = readAgreed(device, objects.at(i));
+        if (value) {
+            backup.set.values << Compax3ParameterValue{objects.at(i), *value};
+        } else if (value.error().kind == ErrorKind::DeviceError) {
+            backup.refused << Compax3Refusal{objects.at(i), value.error().message};
+        } else {
+            return value.error();
+        }
+        progress.report(i + 1, objects.size(),
+                        QCoreApplication::translate("cambench::usecases", "Reading objects"));
+    }
+    return backup;
+}
+
+QString Compax3Comparison::lineFor(const Compax3Difference& difference,
+                                   const Compax3Dictionary& dictionary) {
+    const QString what = label(difference.id, dictionary);
+    if (!difference.error.isEmpty())
+        return QCoreApplication::translate("cambench::usecases", "%1: file %2, drive: %3")
+            .arg(what, difference.fileValue, difference.error);
+    return QCoreApplication::translate("cambench::usecases", "%1: file %2, drive %3")
+        .arg(what, difference.fileValue, difference.driveValue);
+}
+
+Result<Compax3Comparison> compareCompax3Parameters(Compax3Device& device,
+                                                   const Compax3ParameterSet& set,
+                                                   const UseCaseProgress& progress) {
+    Compax3Comparison comparison;
+    const Result<Compax3Identity> identity = device.identity();
+    if (!identity) return identity.error();
+    comparison.drive = *identity;
+    for (int i = 0; i < set.values.size(); ++i) {
+        if (progress.cancelled()) return Error::cancelled();
+        const Compax3ParameterValue& wanted = set.values.at(i);
+        const Result<QString> value = readConfirmed(device, wanted.id, wanted.value);
+        if (!value && value.error().kind != ErrorKind::DeviceError) return value.error();
+        ++comparison.compared;
+        if (!value)
+            comparison.differences
+                << Compax3Difference{wanted.id, wanted.value, {}, value.error().message};
+        else if (!compax3SameValue(*value, wanted.value))
+            comparison.differences << Compax3Difference{wanted.id, wanted.value, *value, {}};
+        progress.report(i + 1, set.values.size(),
+                        QCoreApplication::translate("cambench::usecases", "Comparing objects"));
+    }
+    return comparison;
+}
+
+namespace {
+
+// Everything that can be known without the drive's values: the type, each
+// value, the selection. An error here means nothing was written.
+Result<QList<Compax3Write>> checkRestore(const Compax3Identity& drive,
+                                         const Compax3ParameterSet& set,
+                                         const Compax3Dictionary& dictionary,
+                                         const Compax3RestoreOptions& options) {
+    if (!options.force && drive.type() != set.drive.type())
+        return Error::invalidData(
+            QCoreApplication::translate(
+                "cambench::usecases",
+                "the file is from a drive of type %1 (\"%2\"), the connected drive is of type %3 "
+                "(\"%4\"): nothing was written. Restore it with --force (GUI: \"Write to another "
+                "type\") only if you know the objects mean the same on both")
+                .arg(set.drive.type(), set.drive.info, drive.type(), drive.info));
+    QSet<Compax3ObjectId> inFile;
+    QList<Compax3Write> writes;
+    for (const Compax3ParameterValue& value : set.values) {
+        inFile.insert(value.id);
+        if (!options.only.isEmpty() && !options.only.contains(value.id)) continue;
+        const Result<QString> wire = compax3WireValueFor(dictionary, value.id, value.value);
+        if (!wire)
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::usecases",
+                                            "the file's value of %1 cannot be written: %2. "
+                                            "Nothing was written")
+                    .arg(value.id.text(), wire.error().message));
+        writes << Compax3Write{value.id, value.value, *wire};
+    }
+    for (const Compax3ObjectId& id : options.only)
+        if (!inFile.contains(id))
+            return Error::usage(
+                QCoreApplication::translate("cambench::usecases",
+                                            "%1 is not in the file: nothing was written")
+                    .arg(id.text()));
+    return writes;
+}
+
+}  // namespace
+
+OutcomeTally writeCompax3Objects(Compax3Device& device, const QList<Compax3Write>& writes,
+                                 const Compax3Dictionary& dictionary,
+                                 const UseCaseProgress& progress) {
+    QList<OutcomeLine> lines;
+    Error stopped;
+    for (int i = 0; i < writes.size(); ++i) {
+        const Compax3Write& wanted = writes.at(i);
+        const QString what = label(wanted.id, dictionary);
+        if (stopped.kind == ErrorKind::None && progress.cancelled()) stopped = Error::cancelled();
+        if (stopped.kind != ErrorKind::None) {
+            lines << OutcomeLine{what, WriteState::NotSent,
+                                 outcomeText(what, WriteState::NotSent, {}, stopped, {}), stopped};
+            continue;
+        }
+        progress.report(i, writes.size(),
+                        QCoreApplication::translate("cambench::usecases", "Writing objects"));
+        const Compax3ObjectInfo* info = dictionary.find(wanted.id);
+        if (info && !info->readable()) {
+            // A function (1904.1): nothing to compare or read back.
+            const Status write = device.writeObject(wanted.id, wanted.wire);
+            const WriteState state = write ? WriteState::Written : WriteState::Unknown;
+            lines << OutcomeLine{what, state,
+                                 outcomeText(what, state, {}, write ? Error{} : write.error(), {}),
+                                 write ? Error{} : write.error()};
+            if (!write && stopsTheWork(write.error())) stopped = write.error();
+            continue;
+        }
+        const Result<QString> old = readConfirmed(device, wanted.id, wanted.value);
+        if (!old) {
+            lines << OutcomeLine{what, WriteState::NotSent,
+                                 outcomeText(what, WriteState::NotSent, {}, old.error(), {}),
+                                 old.error()};
+            if (stopsTheWork(old.error())) stopped = old.error();
+            continue;
+        }
+        if (compax3SameValue(*old, wanted.value)) {
+            lines << OutcomeLine{what,
+                                 WriteState::Unchanged,
+                                 outcomeText(what, WriteState::Unchanged, *old, {}, {}),
+                                 {}};
+            continue;
+        }
+        const Status write = device.writeObject(wanted.id, wanted.wire);
+        const Result<QString> back = readConfirmed(device, wanted.id, wanted.value);
+        if (write && back && compax3SameValue(*back, wanted.value)) {
+            lines << OutcomeLine{what,
+                                 WriteState::Written,
+                                 outcomeText(what, WriteState::Written, *back, {}, {}),
+                                 {}};
+            continue;
+        }
+        const Error error =
+            write
+                ? Error::device(0, QCoreApplication::translate(
+                                       "cambench::usecases", "the drive took it but reads back %1")
+                                       .arg(back ? *back : QString()))
+                : write.error();
+        lines << failedWriteLine(what, error, back.ok(), back && compax3SameValue(*back, *old),
+                                 back && compax3SameValue(*back, wanted.value),
+                                 back ? *back : QString());
+        if (stopsTheWork(error)) stopped = error;
+        if (!back && stopsTheWork(back.error())) stopped = back.error();
+    }
+    progress.report(writes.size(), writes.size(),
+                    QCoreApplication::translate("cambench::usecases", "Written"));
+    return OutcomeTally(lines);
+}
+
+Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compax3ParameterSet& set,
+                                              const Compax3Dictionary& dictionary,
+                                              const Compax3RestoreOptions& options,
+                                              const UseCaseProgress& progress) {
+    const Result<Compax3Identity> identity = device.identity();
+    if (!identity) return identity.error();
+    QList<Compax3Write> writes;
+    {
+        const Result<QList<Compax3Write>> checked =
+            checkRestore(*identity, set, dictionary, options);
+        if (!checked) return checked.error();
+        writes = *checked;
+    }
+    const OutcomeTally tally = writeCompax3Objects(device, writes, dictionary, progress);
+    if (!options.store) return tally;
+    // The store makes the sets permanent: only after every object was
+    // written or unchanged.
+    QList<OutcomeLine> lines = tally.lines();
+    const QString label = QCoreApplication::translate(
+        "cambench::usecases", "store the sets in the drive's flash (1904.1 = $32)");
+    const QString value = QStringLiteral("$%1").arg(comm::kCompax3StoreSetsValue, 0, 16).toUpper();
+    if (!tally.complete()) {
+        const Error skipped = Error::usage(QCoreApplication::translate(
+            "cambench::usecases", "not stored, because not every object was written"));
+        lines << OutcomeLine{label, WriteState::NotSent,
+                             outcomeText(label, WriteState::NotSent, {}, skipped, {}), skipped};
+        return OutcomeTally(lines);
+    }
+    OutcomeLine store =
+        writeCompax3Objects(device, {{comm::kCompax3StoreSets, value, value}}, dictionary)
+            .lines()
+            .first();
+    store.label = label;
+    store.text = outcomeText(label, store.state, {}, store.error, {});
+    lines << store;
+    return OutcomeTally(lines);
+}
+
+}  // namespace cambench::usecases

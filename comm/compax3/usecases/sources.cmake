@@ -1,0 +1,6 @@
+# The Compax3 family's use cases, shared by the GUI and the CLI: parameter
+# sets read, compared and written back.
+target_sources(cambench_usecases PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_parameters.h
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_parameters.cpp
+)

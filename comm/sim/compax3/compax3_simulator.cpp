@@ -1,0 +1,117 @@
+#include "compax3_simulator.h"
+
+#include "sim_compax3_line.h"
+
+#include "comm/compax3/compax3_syntax.h"
+
+namespace cambench::comm {
+
+namespace {
+
+constexpr int kDefaultBaud = 115200;
+constexpr int kDefaultAddress = 1;
+const QLatin1String kRs485Protocol("compax3-rs485");
+const QLatin1String kDefaultType("S025V2");
+
+struct DriveOptions {
+    int address = -1;  // -1: RS232
+    QString type = kDefaultType;
+    int baud = kDefaultBaud;
+};
+
+Result<int> addressFrom(const QString& text) {
+    bool ok = false;
+    const int address = text.toInt(&ok);
+    if (!ok || address < 0 || address > kCompax3LastAddress)
+        return Error::usage(QStringLiteral("address must be 0..99, not \"%1\"").arg(text));
+    return address;
+}
+
+SimulatedLine lineFor(const DriveOptions& options, const SimHostOptions& shared) {
+    auto line = std::make_unique<SimCompax3Line>(options.address, SimCompax3Drive(options.type),
+                                                 shared.faults);
+    const QString where = options.address < 0
+                              ? QStringLiteral("RS232")
+                              : QStringLiteral("RS485 address %1").arg(options.address);
+    return {std::move(line), SimPacer(options.baud, shared.throttle, 10),
+            QStringLiteral("simulator (Compax3 %1, %2, %3 baud%4)")
+                .arg(options.type, where)
+                .arg(options.baud)
+                .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled"))};
+}
+
+}  // namespace
+
+void registerCompax3Simulator(SimulatorRegistry& registry) {
+    SimulatorInfo info;
+    info.familyId = QStringLiteral("compax3");
+    info.fromPort = [](const QString& port, const SerialSettings& serial,
+                       const QString& protocol) -> Result<SimulatedLine> {
+        DriveOptions options;
+        options.baud = serial.baud;
+        if (protocol == kRs485Protocol) options.address = kDefaultAddress;
+        const QString list = port.section(QLatin1Char(':'), 1);
+        for (const QString& option : list.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
+            const QString key = option.section(QLatin1Char('='), 0, 0).trimmed();
+            const QString value = option.section(QLatin1Char('='), 1).trimmed();
+            if (key == QLatin1String("type") && !value.isEmpty()) {
+                options.type = value;
+            } else if (key == QLatin1String("address") && protocol == kRs485Protocol) {
+                const Result<int> address = addressFrom(value);
+                if (!address) return address.error();
+                options.address = *address;
+            } else {
+                return Error::usage(
+                    QStringLiteral("the Compax3 simulator's port takes type=… and (RS485) "
+                                   "address=…, not \"%1\"")
+                        .arg(option));
+            }
+        }
+        SimHostOptions shared;
+        shared.throttle = false;
+        return lineFor(options, shared);
+    };
+    info.options = [] {
+        return QList<QCommandLineOption>{
+            {QStringLiteral("rs485"),
+             QStringLiteral("Compax3: on RS485 (answers only its --address, each with '*'); "
+                            "the same as --protocol compax3-rs485.")},
+            {QStringLiteral("address"),
+             QStringLiteral("Compax3 on RS485: the drive's address 0..99 (default %1).")
+                 .arg(kDefaultAddress),
+             QStringLiteral("n")},
+            {QStringLiteral("drive-type"),
+             QStringLiteral("Compax3: the device type its info string names (default %1).")
+                 .arg(kDefaultType),
+             QStringLiteral("type")},
+            {QStringLiteral("baud"),
+             QStringLiteral("Baud rate for the timing (default: the protocol's)."),
+             QStringLiteral("rate")},
+        };
+    };
+    info.fromOptions = [](const QCommandLineParser& parser,
+                          const SimHostOptions& shared) -> Result<SimulatedLine> {
+        DriveOptions options;
+        const bool rs485 =
+            parser.isSet(QStringLiteral("rs485")) || shared.protocol == kRs485Protocol;
+        if (rs485) options.address = kDefaultAddress;
+        if (parser.isSet(QStringLiteral("address"))) {
+            if (!rs485) return Error::usage(QStringLiteral("--address is for RS485: add --rs485"));
+            const Result<int> address = addressFrom(parser.value(QStringLiteral("address")));
+            if (!address) return Error::usage(QStringLiteral("--%1").arg(address.error().message));
+            options.address = *address;
+        }
+        if (parser.isSet(QStringLiteral("drive-type")))
+            options.type = parser.value(QStringLiteral("drive-type")).trimmed();
+        if (parser.isSet(QStringLiteral("baud"))) {
+            bool ok = false;
+            options.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
+            if (!ok || options.baud < 300)
+                return Error::usage(QStringLiteral("--baud needs a baud rate of 300 or more."));
+        }
+        return lineFor(options, shared);
+    };
+    registry.add(info);
+}
+
+}  // namespace cambench::comm

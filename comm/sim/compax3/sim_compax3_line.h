@@ -1,0 +1,30 @@
+#pragma once
+
+#include "sim_compax3_drive.h"
+
+#include "comm/sim/sim_endpoint.h"
+#include "comm/sim/sim_faults.h"
+
+namespace cambench::comm {
+
+// A Compax3 on its line: RS232 (no address: every line is for it) or RS485
+// (a line starts with the drive's address 0..99; other addresses are
+// someone else's and get no answer; every answer starts with '*').
+class SimCompax3Line : public SimEndpoint {
+public:
+    // `address` -1: RS232.
+    SimCompax3Line(int address, SimCompax3Drive drive, const SimFaultSettings& faults = {})
+        : m_address(address), m_drive(std::move(drive)), m_faults(faults) {}
+
+    SimCompax3Drive& drive() { return m_drive; }
+    QList<SimOutput> receive(QByteArrayView bytes, qint64 nowMs) override;
+    QString protocolName() const override;
+
+private:
+    int m_address;
+    SimCompax3Drive m_drive;
+    SimFaults m_faults;
+    QByteArray m_pending;
+};
+
+}  // namespace cambench::comm

@@ -1,0 +1,77 @@
+#pragma once
+
+#include "compax3_object.h"
+#include "compax3_value.h"
+
+#include "model/result.h"
+
+#include <QHash>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+namespace cambench {
+
+enum class Compax3Access {
+    ReadOnly,   // "ro": read, never written (a position, the status word)
+    ReadWrite,  // "rw": a parameter: read, written, saved in a parameter file
+    WriteOnly,  // "wo": a function ("1904.1 = $32" stores the sets): written, never read
+    // "cmd": read and written, never saved in a parameter file: the control
+    // word, whose restore would move the axis.
+    Command,
+};
+
+// What the dictionary knows of one object.
+struct Compax3ObjectInfo {
+    Compax3ObjectId id;
+    QString name;  // "Actual position"
+    Compax3Type type = Compax3Type::Integer;
+    QString unit;  // "unit/s"; may be empty
+    Compax3Range range;
+    Compax3Access access = Compax3Access::ReadWrite;
+    QString group;  // "Positioning set 1": the tree's folders
+    QString help;   // a sentence for a person
+
+    bool readable() const { return access != Compax3Access::WriteOnly; }
+    bool writable() const { return access != Compax3Access::ReadOnly; }
+    // In a parameter file: what a replacement drive needs.
+    bool parameter() const { return access == Compax3Access::ReadWrite; }
+};
+
+// The objects CamBench knows by name: the shipped file (the objects of
+// PROTOCOL-NOTES §12, every meaning provisional) or a larger one the user
+// loads. Objects not in it are still read and written by number.
+//
+// File: {"format":"cambench-compax3-dictionary","version":1,
+//        "objects":[{"object":"680.5","name":"Actual position","type":"real",
+//                    "unit":"unit","access":"ro","group":"Status",
+//                    "min":…,"max":…,"help":"…"}]}
+class Compax3Dictionary {
+public:
+    // The dictionary shipped with CamBench (model/compax3/compax3-objects.json).
+    static const Compax3Dictionary& builtin();
+    // Refuses a broken file with the line of the problem.
+    static Result<Compax3Dictionary> fromJson(const QByteArray& bytes);
+    static Result<Compax3Dictionary> load(const QString& path);
+
+    const QList<Compax3ObjectInfo>& objects() const { return m_objects; }
+    const Compax3ObjectInfo* find(const Compax3ObjectId& id) const;
+    // Groups in the order of the file.
+    QStringList groups() const;
+    // The objects a parameter file holds by default: every read-write one.
+    QList<Compax3ObjectId> parameters() const;
+    // Where the dictionary came from, for a person: "built in" or a path.
+    const QString& source() const { return m_source; }
+
+private:
+    QList<Compax3ObjectInfo> m_objects;
+    QHash<Compax3ObjectId, int> m_index;
+    QString m_source;
+};
+
+// The type and range a value for `id` is checked against: the dictionary's,
+// or for an unknown object a number of any size (text in quotes stays text).
+Result<QString> compax3WireValueFor(const Compax3Dictionary& dictionary, const Compax3ObjectId& id,
+                                    const QString& typed);
+
+}  // namespace cambench

@@ -1,0 +1,219 @@
+// Issue 15: the Compax3 pages on real widgets against the simulated drive
+// through the real worker: the objects with their values, an edit checked
+// at once and written only after Yes (what fails stays typed in), the
+// status lamps, motion only after a confirmation, STOP and Escape, the
+// watch list with its trend, the parameter file compared and written back,
+// and a lost line making the values stale.
+#include "../shell/shell_fixture.h"
+
+#include "ui/compax3/compax3_motion_page.h"
+#include "ui/compax3/compax3_object_model.h"
+#include "ui/compax3/compax3_objects_page.h"
+#include "ui/compax3/compax3_parameters_page.h"
+#include "ui/compax3/compax3_status_page.h"
+#include "ui/compax3/compax3_watch_page.h"
+#include "ui/compax3/compax3_window.h"
+#include "ui/device_session.h"
+#include "ui/multi_trend_chart.h"
+#include "ui/report_dialog.h"
+
+#include "comm/compax3/compax3_objects.h"
+
+#include <QCheckBox>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+using namespace cambench;
+using namespace cambench::test;
+
+namespace {
+
+std::unique_ptr<Shell> startCompax3() {
+    return startOnSimulator(QStringLiteral("sim"), QStringLiteral("compax3"));
+}
+
+QString resultOf(QWidget* page) {
+    return page->findChild<QLabel*>(QStringLiteral("pageResult"))->text();
+}
+
+}  // namespace
+
+class Compax3PagesTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { useTestSettings(); }
+
+    void objectsShowTheDriveAndWriteOnlyAfterYes() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        QVERIFY(c3);
+        QVERIFY(c3->facts().known);
+        QCOMPARE(c3->facts().identity.type(), QStringLiteral("S025V2"));
+        Compax3ObjectsPage* objects = c3->objectsPage();
+        shell->window()->showPage(objects);
+        Compax3ObjectModel* model = objects->model();
+        const Compax3ObjectId target = comm::compax3SetTarget(2);
+        QVERIFY(QTest::qWaitFor([&] { return model->driveValue(target).has_value(); },
+                                kDeviceTimeoutMs));
+        QCOMPARE(*model->driveValue(target), QStringLiteral("200"));
+
+        // Typed in: checked at once; a German comma is refused with the fix.
+        QVERIFY(model->setData(model->indexOf(target, Compax3ObjectModel::NewValue),
+                               QStringLiteral("12,5")));
+        QVERIFY(model->edits().isEmpty());
+        QVERIFY2(resultOf(objects).contains(QLatin1String("decimal point")),
+                 qPrintable(resultOf(objects)));
+        QVERIFY(model->setData(model->indexOf(target, Compax3ObjectModel::NewValue),
+                               QStringLiteral("12.5")));
+        QCOMPARE(model->edits().size(), 1);
+        QVERIFY(model->indexOf(target, Compax3ObjectModel::Object)
+                    .data()
+                    .toString()
+                    .startsWith(QStringLiteral("● ")));
+        {
+            auto no = answerConfirmation(false);
+            objects->writeChanges();
+            QCOMPARE(no->answered(), 1);
+        }
+        QCOMPARE(model->edits().size(), 1);
+        auto yes = answerConfirmation(true);
+        objects->writeChanges();
+        QVERIFY(QTest::qWaitFor([&] { return model->edits().isEmpty(); }, kDeviceTimeoutMs));
+        QCOMPARE(*model->driveValue(target), QStringLiteral("12.5"));
+        QVERIFY2(resultOf(objects).contains(QLatin1String("1 written")),
+                 qPrintable(resultOf(objects)));
+
+        // Any object by number: one the drive lacks is refused with its number.
+        objects->readRaw(QStringLiteral("O 4321,1"));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return model->indexOf({4321, 1}, Compax3ObjectModel::DriveValue)
+                           .data()
+                           .toString() == QLatin1String("refused");
+            },
+            kDeviceTimeoutMs));
+        QVERIFY(model->indexOf({4321, 1}, Compax3ObjectModel::DriveValue)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(QLatin1String("!0002")));
+
+        // The line goes: values stay, marked stale.
+        shell->session()->disconnectFromDevice();
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return model->indexOf(target, Compax3ObjectModel::DriveValue)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .startsWith(QLatin1String("Stale"));
+            },
+            kDeviceTimeoutMs));
+    }
+
+    void statusAndMotionWithStopAndEscape() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        Compax3StatusPage* status = c3->statusPage();
+        shell->window()->showPage(status);
+        QVERIFY(QTest::qWaitFor([&] { return !status->errorText().isEmpty(); }, kDeviceTimeoutMs));
+        QCOMPARE(status->errorText(), QStringLiteral("no error"));
+        QVERIFY(status->bitOn(10));  // b10 powerless
+
+        Compax3MotionPage* motion = c3->motionPage();
+        shell->window()->showPage(motion);
+        shell->window()->show();
+        shell->window()->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(shell->window()));
+        QVERIFY(motion->stopButton()->isVisible());
+        {
+            auto yes = answerConfirmation(true);
+            motion->runMotion(comm::Compax3Motion::Enable);
+            QVERIFY(QTest::qWaitFor(
+                [&] { return motion->axisText().startsWith(QLatin1String("Powered")); },
+                kDeviceTimeoutMs));
+        }
+        for (bool escape : {false, true}) {
+            {
+                auto yes = answerConfirmation(true);
+                motion->runMotion(comm::Compax3Motion::JogPlus);
+                QVERIFY(QTest::qWaitFor(
+                    [&] { return motion->axisText().startsWith(QLatin1String("Moving")); },
+                    kDeviceTimeoutMs));
+            }
+            if (escape) {
+                shell->window()->activateWindow();
+                QVERIFY(QTest::qWaitForWindowActive(shell->window()));
+                QTest::keyClick(motion->stopButton(), Qt::Key_Escape);
+            } else {
+                motion->stopButton()->click();
+            }
+            QVERIFY2(
+                QTest::qWaitFor(
+                    [&] {
+                        return motion->axisText().startsWith(QLatin1String("Powered, standing"));
+                    },
+                    kDeviceTimeoutMs),
+                qPrintable(motion->axisText() + QLatin1String(" / ") + resultOf(motion)));
+        }
+        // A motion the user does not confirm is never sent.
+        auto no = answerConfirmation(false);
+        motion->runMotion(comm::Compax3Motion::JogMinus);
+        QTest::qWait(700);
+        QVERIFY(motion->axisText().startsWith(QLatin1String("Powered, standing")));
+    }
+
+    void watchAndParameters() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        Compax3WatchPage* watch = c3->watchPage();
+        shell->window()->showPage(watch);
+        QVERIFY(watch->addObject(QStringLiteral("o1901.3")));
+        QVERIFY(!watch->addObject(QStringLiteral("1904.1")));  // a function: never read
+        QVERIFY(
+            QTest::qWaitFor([&] { return watch->chart()->pointCount() >= 4; }, kDeviceTimeoutMs));
+        QCOMPARE(watch->table()->rowCount(), 2);  // the position, and what was added
+        QCOMPARE(watch->table()->item(1, 2)->text(), QStringLiteral("300"));
+
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("drive.json"));
+        Compax3ParametersPage* parameters = c3->parametersPage();
+        shell->window()->showPage(parameters);
+        parameters->saveToFile(file);
+        QVERIFY(QTest::qWaitFor(
+            [&] { return resultOf(parameters).startsWith(QLatin1String("Saved 192")); },
+            kDeviceTimeoutMs));
+        // A change on the drive, then compare: one difference, ticked.
+        c3->objectsPage()->model()->setEdit(comm::compax3SetVelocity(4), QStringLiteral("77"));
+        {
+            auto yes = answerConfirmation(true);
+            c3->objectsPage()->writeChanges();
+            QVERIFY(QTest::qWaitFor([&] { return c3->objectsPage()->model()->edits().isEmpty(); },
+                                    kDeviceTimeoutMs));
+        }
+        parameters->compareWith(file);
+        QVERIFY(QTest::qWaitFor([&] { return parameters->differences()->rowCount() == 1; },
+                                kDeviceTimeoutMs));
+        QCOMPARE(parameters->differences()->item(0, 0)->text(), QStringLiteral("1902.4"));
+        QCOMPARE(parameters->differences()->item(0, 3)->text(), QStringLiteral("77"));
+        auto yes = answerConfirmation(true);
+        QString report;
+        NextDialog<ReportDialog> close([&report](ReportDialog* dialog) {
+            report = dialog->windowTitle();
+            dialog->accept();
+        });
+        parameters->writeFile(true);
+        QVERIFY(
+            QTest::qWaitFor([&] { return resultOf(parameters).startsWith(QLatin1String("Equal")); },
+                            kDeviceTimeoutMs));
+        QCOMPARE(parameters->differences()->rowCount(), 0);
+        QCOMPARE(report, QStringLiteral("Write"));
+    }
+};
+
+QTEST_MAIN(Compax3PagesTest)
+#include "tst_compax3_pages.moc"

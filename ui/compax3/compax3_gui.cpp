@@ -1,0 +1,24 @@
+#include "compax3_gui.h"
+
+#include "compax3_window.h"
+
+#include "comm/compax3/compax3_objects.h"
+
+namespace cambench {
+
+Compax3Gui::Compax3Gui(DeviceSession* session, QObject* parent)
+    : FamilyGui(QStringLiteral("compax3"), session, parent),
+      m_dictionary(Compax3Dictionary::builtin()),
+      // A first look: where the axis is.
+      m_watch({comm::kCompax3Position}) {}
+
+void Compax3Gui::setDictionary(const Compax3Dictionary& dictionary) {
+    m_dictionary = dictionary;
+    Q_EMIT dictionaryChanged();
+}
+
+FamilyWindow* Compax3Gui::createWindow(MainWindow* window) {
+    return new Compax3Window(this, window);
+}
+
+}  // namespace cambench

@@ -1,0 +1,218 @@
+#include "compax3_motion_page.h"
+
+#include "ui/device_session.h"
+#include "ui/sentence.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace cambench {
+
+using comm::Compax3Motion;
+
+namespace {
+
+QDoubleSpinBox* numberBox(const char* name, double min, double max, double value) {
+    auto* box = new QDoubleSpinBox;
+    box->setObjectName(QLatin1String(name));
+    box->setRange(min, max);
+    box->setDecimals(3);
+    box->setValue(value);
+    box->setMinimumWidth(140);
+    return box;
+}
+
+}  // namespace
+
+Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
+    : Compax3Page(session, parent),
+      m_axis(new QLabel),
+      m_set(new QSpinBox),
+      m_target(numberBox("compax3Target", -1000000, 1000000, 100)),
+      m_velocity(numberBox("compax3Velocity", 0, 100000, 100)),
+      m_acceleration(numberBox("compax3Acceleration", 0, 10000000, 1000)),
+      m_stop(new QPushButton(tr("STOP (Esc)"))) {
+    setObjectName(QStringLiteral("compax3MotionPage"));
+    m_axis->setObjectName(QStringLiteral("compax3MotionAxis"));
+    QFont big = m_axis->font();
+    big.setPointSizeF(big.pointSizeF() * 1.4);
+    big.setBold(true);
+    m_axis->setFont(big);
+    m_set->setObjectName(QStringLiteral("compax3Set"));
+    m_set->setRange(0, comm::kCompax3LastSetNumber);
+    m_set->setValue(1);
+    m_set->setSpecialValueText(tr("0 (homing)"));
+
+    // STOP: big, red, always on the page.
+    m_stop->setObjectName(QStringLiteral("compax3Stop"));
+    m_stop->setMinimumHeight(56);
+    m_stop->setStyleSheet(QStringLiteral(
+        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 16pt; }"
+        "QPushButton:disabled { background: palette(mid); color: palette(dark); }"));
+    m_stop->setToolTip(
+        tr("Stops the axis with its ramp (control word 1) and drops what waits "
+           "for the line. Escape does the same."));
+    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    escape->setContext(Qt::WindowShortcut);
+    connect(escape, &QShortcut::activated, this, &Compax3MotionPage::stop);
+    connect(m_stop, &QPushButton::clicked, this, &Compax3MotionPage::stop);
+
+    auto button = [this](const QString& text, const char* name) {
+        auto* b = new QPushButton(text);
+        b->setObjectName(QLatin1String(name));
+        m_actions << b;
+        return b;
+    };
+    QPushButton* enable = button(tr("Enable…"), "compax3Enable");
+    QPushButton* disable = button(tr("Disable"), "compax3Disable");
+    QPushButton* jogPlus = button(tr("Jog +…"), "compax3JogPlus");
+    QPushButton* jogMinus = button(tr("Jog −…"), "compax3JogMinus");
+    QPushButton* move = button(tr("Start set…"), "compax3Move");
+    connect(enable, &QPushButton::clicked, this, [this] { runMotion(Compax3Motion::Enable); });
+    connect(disable, &QPushButton::clicked, this, [this] { runMotion(Compax3Motion::Disable); });
+    connect(jogPlus, &QPushButton::clicked, this, [this] { runMotion(Compax3Motion::JogPlus); });
+    connect(jogMinus, &QPushButton::clicked, this, [this] { runMotion(Compax3Motion::JogMinus); });
+    connect(move, &QPushButton::clicked, this, &Compax3MotionPage::moveSet);
+
+    auto* power = new QGroupBox(tr("Power"));
+    auto* powerRow = new QHBoxLayout(power);
+    powerRow->addWidget(enable);
+    powerRow->addWidget(disable);
+    powerRow->addStretch(1);
+    auto* jog = new QGroupBox(tr("Jog (moves until STOP)"));
+    auto* jogRow = new QHBoxLayout(jog);
+    jogRow->addWidget(jogMinus);
+    jogRow->addWidget(jogPlus);
+    jogRow->addStretch(1);
+    auto* set = new QGroupBox(tr("Positioning set"));
+    auto* form = new QFormLayout(set);
+    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    form->addRow(tr("Set:"), m_set);
+    form->addRow(tr("Target:"), m_target);
+    form->addRow(tr("Velocity:"), m_velocity);
+    form->addRow(tr("Acceleration:"), m_acceleration);
+    form->addRow(QString(), move);
+    auto* note =
+        new QLabel(tr("Every motion asks first. A command that moves the axis is sent "
+                      "once: when its answer is lost, CamBench reads the drive's state "
+                      "and says it instead of sending it again."));
+    note->setWordWrap(true);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_axis);
+    layout->addWidget(m_stop);
+    layout->addWidget(power);
+    layout->addWidget(jog);
+    layout->addWidget(set);
+    layout->addWidget(note);
+    layout->addWidget(resultLine());
+    layout->addStretch(1);
+    factsChanged();
+}
+
+QString Compax3MotionPage::axisText() const {
+    return m_axis->text();
+}
+
+void Compax3MotionPage::factsChanged() {
+    const bool known = facts().known;
+    for (QPushButton* action : m_actions) action->setEnabled(known);
+    m_stop->setEnabled(known);
+    if (!known) m_axis->setText(tr("No drive connected."));
+}
+
+bool Compax3MotionPage::poll() {
+    return pollStatus([this](const comm::Compax3DriveStatus& status) {
+        m_stale = false;
+        m_axis->setText(capitalised(status.summary()));
+        m_axis->setStyleSheet(QString());
+    });
+}
+
+void Compax3MotionPage::markStale() {
+    if (m_stale || !facts().known || m_axis->text().isEmpty()) return;
+    m_stale = true;
+    m_axis->setText(tr("%1 (stale: the connection was lost)").arg(m_axis->text()));
+    m_axis->setStyleSheet(QStringLiteral("color: gray;"));
+}
+
+void Compax3MotionPage::finished(const QString& what,
+                                 const Result<comm::Compax3DriveStatus>& status) {
+    if (!status) {
+        showResult(tr("%1: %2").arg(what, asSentence(status.error().message)), false);
+        poll();
+        return;
+    }
+    m_axis->setText(capitalised(status->summary()));
+    showResult(tr("Sent: %1. Now %2.").arg(what, status->summary()), true);
+}
+
+void Compax3MotionPage::runMotion(Compax3Motion motion) {
+    if (!facts().known) return;
+    const QString what = comm::compax3MotionText(motion);
+    if (motion != Compax3Motion::Disable) {
+        const QString detail =
+            comm::compax3MotionMoves(motion)
+                ? tr("The axis moves until STOP (or Escape) is pressed. Make sure nobody is at "
+                     "the axis.")
+                : tr("The axis is powered and holds its position. Make sure nobody is at the "
+                     "axis.");
+        const QString title = motion == Compax3Motion::Enable ? tr("Enable") : tr("Jog");
+        if (!confirm(title, capitalised(tr("%1 on drive %2?").arg(what, facts().identity.serial)),
+                     detail))
+            return;
+    }
+    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+        this, what,
+        [motion](comm::Compax3Device& device, comm::JobContext&) { return device.motion(motion); },
+        [this, what](Result<comm::Compax3DriveStatus> status) { finished(what, status); });
+}
+
+void Compax3MotionPage::moveSet() {
+    if (!facts().known) return;
+    comm::Compax3SetMove move;
+    move.set = m_set->value();
+    if (move.set != 0) move.target = m_target->value();
+    move.velocity = m_velocity->value();
+    move.acceleration = m_acceleration->value();
+    const QString what = comm::compax3SetMoveText(move);
+    if (!confirm(tr("Start"), capitalised(tr("%1 on drive %2?").arg(what, facts().identity.serial)),
+                 tr("The axis moves to the set's target at its velocity. STOP (or Escape) "
+                    "stops it. Make sure nobody is at the axis.")))
+        return;
+    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+        this, what,
+        [move](comm::Compax3Device& device, comm::JobContext&) { return device.moveSet(move); },
+        [this, what](Result<comm::Compax3DriveStatus> status) { finished(what, status); });
+}
+
+void Compax3MotionPage::stop() {
+    if (!facts().known) return;
+    // What waits for the line (a poll, a queued move) goes first.
+    session()->worker().cancelAll();
+    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+        this, tr("STOP"),
+        [](comm::Compax3Device& device, comm::JobContext&) {
+            return device.motion(Compax3Motion::Stop);
+        },
+        [this](Result<comm::Compax3DriveStatus> status) {
+            if (!status) {
+                showResult(tr("STOP did not reach the drive: %1. Use the machine's emergency "
+                              "stop.")
+                               .arg(asSentence(status.error().message)),
+                           false);
+                return;
+            }
+            m_axis->setText(capitalised(status->summary()));
+            showResult(tr("STOP acknowledged by the drive; now %1.").arg(status->summary()), true);
+        });
+}
+
+}  // namespace cambench

@@ -1,0 +1,158 @@
+#include "compax3_watch_page.h"
+
+#include "compax3_gui.h"
+
+#include "ui/device_session.h"
+#include "ui/multi_trend_chart.h"
+#include "ui/sentence.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace cambench {
+
+namespace {
+enum Column { ObjectColumn, NameColumn, ValueColumn, ReadColumn };
+}  // namespace
+
+Compax3WatchPage::Compax3WatchPage(DeviceSession* session, Compax3Gui* gui, QWidget* parent)
+    : Compax3Page(session, parent),
+      m_gui(gui),
+      m_add(new QLineEdit),
+      m_table(new QTableWidget(0, 4)),
+      m_chart(new MultiTrendChart) {
+    setObjectName(QStringLiteral("compax3WatchPage"));
+    m_add->setObjectName(QStringLiteral("compax3WatchAdd"));
+    m_add->setPlaceholderText(tr("Object to watch, e.g. 680.5"));
+    connect(m_add, &QLineEdit::returnPressed, this, [this] {
+        if (addObject(m_add->text())) m_add->clear();
+    });
+    auto* add = new QPushButton(tr("Add"));
+    connect(add, &QPushButton::clicked, this, [this] {
+        if (addObject(m_add->text())) m_add->clear();
+    });
+    auto* remove = new QPushButton(tr("Remove selected"));
+    connect(remove, &QPushButton::clicked, this, [this] {
+        QList<int> rows;
+        for (const QModelIndex& index : m_table->selectionModel()->selectedRows())
+            rows << index.row();
+        std::sort(rows.rbegin(), rows.rend());
+        for (int row : rows) m_gui->watchList().removeAt(row);
+        rebuildTable();
+        m_chart->clear();
+    });
+    m_table->setObjectName(QStringLiteral("compax3WatchTable"));
+    m_table->setHorizontalHeaderLabels({tr("Object"), tr("Name"), tr("Value"), tr("Read")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_chart->setObjectName(QStringLiteral("compax3WatchChart"));
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_add, 1);
+    top->addWidget(add);
+    top->addWidget(remove);
+    auto* split = new QSplitter(Qt::Vertical);
+    split->addWidget(m_table);
+    split->addWidget(m_chart);
+    split->setStretchFactor(1, 2);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(split, 1);
+    layout->addWidget(resultLine());
+    rebuildTable();
+}
+
+bool Compax3WatchPage::addObject(const QString& text) {
+    const Result<Compax3ObjectId> id = parseCompax3Object(text);
+    if (!id) {
+        showResult(asSentence(id.error().message), false);
+        return false;
+    }
+    const Compax3ObjectInfo* info = m_gui->dictionary().find(*id);
+    if (info && !info->readable()) {
+        showResult(tr("%1 is a function: it is written, never read.").arg(id->text()), false);
+        return false;
+    }
+    if (!m_gui->watchList().contains(*id)) m_gui->watchList() << *id;
+    rebuildTable();
+    poll();
+    return true;
+}
+
+void Compax3WatchPage::rebuildTable() {
+    const QList<Compax3ObjectId>& ids = m_gui->watchList();
+    m_table->setRowCount(int(ids.size()));
+    for (int row = 0; row < ids.size(); ++row) {
+        const Compax3ObjectInfo* info = m_gui->dictionary().find(ids.at(row));
+        const QStringList texts{ids.at(row).text(), info ? info->name : QString(), {}, {}};
+        for (int column = 0; column < texts.size(); ++column)
+            if (!m_table->item(row, column) || column < ValueColumn)
+                m_table->setItem(row, column, new QTableWidgetItem(texts.at(column)));
+    }
+}
+
+bool Compax3WatchPage::poll() {
+    if (!facts().known || m_gui->watchList().isEmpty()) return false;
+    const QList<Compax3ObjectId> ids = m_gui->watchList();
+    using Values = QList<std::pair<Compax3ObjectId, QString>>;
+    session()->run<comm::Compax3Device, Values>(
+        this, tr("Read watched objects"),
+        [ids](comm::Compax3Device& device, comm::JobContext&) -> Result<Values> {
+            Values values;
+            for (const Compax3ObjectId& id : ids) {
+                const Result<QString> value = device.readObject(id, false);
+                if (!value && value.error().kind != ErrorKind::DeviceError) return value.error();
+                values << std::pair{id,
+                                    value ? *value : QStringLiteral("!") + value.error().message};
+            }
+            return values;
+        },
+        [this](Result<Values> values) {
+            pollAnswered(values.ok());
+            if (values) show(*values);
+        },
+        comm::JobPriority::Poll, QStringLiteral("compax3-watch"));
+    return true;
+}
+
+void Compax3WatchPage::show(const QList<std::pair<Compax3ObjectId, QString>>& values) {
+    const QDateTime now = QDateTime::currentDateTime();
+    if (!m_start.isValid()) m_start = now;
+    QList<MultiTrendChart::Sample> samples;
+    for (const auto& [id, value] : values) {
+        const int row = int(m_gui->watchList().indexOf(id));
+        if (row < 0 || row >= m_table->rowCount()) continue;
+        const bool refused = value.startsWith(QLatin1Char('!'));
+        auto* item = new QTableWidgetItem(refused ? tr("refused") : value);
+        item->setToolTip(refused ? value.mid(1) : QString());
+        m_table->setItem(row, ValueColumn, item);
+        m_table->setItem(row, ReadColumn,
+                         new QTableWidgetItem(now.toString(QStringLiteral("HH:mm:ss.zzz"))));
+        if (const std::optional<double> number = compax3Number(value); number && !refused) {
+            const QString name = m_table->item(row, NameColumn)->text();
+            samples << MultiTrendChart::Sample{
+                id.text(),
+                name.isEmpty() ? id.text() : QStringLiteral("%1 %2").arg(id.text(), name), *number};
+        }
+    }
+    m_chart->addSamples(m_start.msecsTo(now) / 1000.0, samples);
+}
+
+void Compax3WatchPage::markStale() {
+    m_chart->breakLine();
+    for (int row = 0; row < m_table->rowCount(); ++row)
+        for (int column : {ValueColumn, ReadColumn})
+            if (QTableWidgetItem* item = m_table->item(row, column)) {
+                item->setForeground(Qt::gray);
+                item->setToolTip(tr("Stale: the connection was lost after this was read."));
+            }
+}
+
+}  // namespace cambench

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "compax3_page.h"
+
+#include <QDateTime>
+
+class QLineEdit;
+class QTableWidget;
+
+namespace cambench {
+
+class Compax3Gui;
+class MultiTrendChart;
+
+// Watch: any objects polled live while the page is shown, a table with
+// their values and when they were read (grey when stale), and the numeric
+// ones on a trend over the last minute.
+class Compax3WatchPage : public Compax3Page {
+    Q_OBJECT
+public:
+    Compax3WatchPage(DeviceSession* session, Compax3Gui* gui, QWidget* parent = nullptr);
+
+    QString sectionTitle() const override { return tr("Watch"); }
+    bool poll() override;
+    void markStale() override;
+    // "680.5" or "O 680,5"; false with a message when it is no object.
+    bool addObject(const QString& text);
+    QTableWidget* table() const { return m_table; }
+    MultiTrendChart* chart() const { return m_chart; }
+
+private:
+    void rebuildTable();
+    void show(const QList<std::pair<Compax3ObjectId, QString>>& values);
+
+    Compax3Gui* m_gui;
+    QLineEdit* m_add;
+    QTableWidget* m_table;
+    MultiTrendChart* m_chart;
+    QDateTime m_start;
+};
+
+}  // namespace cambench

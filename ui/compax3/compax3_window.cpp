@@ -1,0 +1,136 @@
+#include "compax3_window.h"
+
+#include "compax3_gui.h"
+#include "compax3_motion_page.h"
+#include "compax3_object_model.h"
+#include "compax3_objects_page.h"
+#include "compax3_parameters_page.h"
+#include "compax3_status_page.h"
+#include "compax3_watch_page.h"
+
+#include "ui/device_session.h"
+#include "ui/main_window.h"
+#include "ui/sentence.h"
+
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTimer>
+
+namespace cambench {
+
+namespace {
+constexpr int kPollMs = 500;
+}  // namespace
+
+Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
+    : FamilyWindow(gui, window),
+      m_compax3(gui),
+      m_objects(new Compax3ObjectsPage(gui->session(), gui)),
+      m_status(new Compax3StatusPage(gui->session())),
+      m_motion(new Compax3MotionPage(gui->session())),
+      m_watch(new Compax3WatchPage(gui->session(), gui)),
+      m_parameters(new Compax3ParametersPage(gui->session(), gui)),
+      m_poll(new QTimer(this)) {
+    m_poll->setInterval(kPollMs);
+    // Polls go on all the time a page is shown: not a job for the progress bar.
+    for (const QString& title :
+         {Compax3Page::tr("Read drive status"), Compax3WatchPage::tr("Read watched objects")})
+        window->addQuietJobTitle(title);
+    connect(m_poll, &QTimer::timeout, this, [this] {
+        if (m_shown && m_compax3->session()->isOnline()) m_shown->poll();
+    });
+    connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
+        if (m_compax3->session()->isOnline()) return;
+        // The line is gone: what the pages show is no longer known to be true.
+        for (Compax3Page* page : compax3Pages()) page->markStale();
+    });
+}
+
+QList<Compax3Page*> Compax3Window::compax3Pages() const {
+    return {m_objects, m_status, m_motion, m_watch, m_parameters};
+}
+
+QList<SectionPage*> Compax3Window::pages() const {
+    QList<SectionPage*> pages;
+    for (Compax3Page* page : compax3Pages()) pages << page;
+    return pages;
+}
+
+void Compax3Window::setFacts(const Compax3Facts& facts) {
+    m_facts = facts;
+    for (Compax3Page* page : compax3Pages()) page->setFacts(facts);
+}
+
+void Compax3Window::deviceOnLine(bool load) {
+    m_compax3->setIdentity({});
+    m_compax3->session()->setDeviceChecked(false);
+    setFacts({});
+    m_compax3->session()->run<comm::Compax3Device, Compax3Identity>(
+        this, tr("Identify drive"),
+        [](comm::Compax3Device& device, comm::JobContext&) { return device.identity(); },
+        [this, load](Result<Compax3Identity> identity) {
+            QString line;
+            if (identity) {
+                line = tr("%1, serial number %2").arg(identity->info, identity->serial);
+                m_compax3->setIdentity(line);
+                m_compax3->session()->setDeviceChecked(true);
+                setFacts({true, *identity});
+            }
+            window()->showMessage(identity ? tr("Connected: %1").arg(line)
+                                           : tr("No Compax3 identified itself: %1")
+                                                 .arg(asSentence(identity.error().message)));
+            if (load) window()->reportLoaded(identity.ok());
+            if (m_shown) m_shown->poll();
+        });
+}
+
+void Compax3Window::pageShown(SectionPage* page) {
+    m_shown = nullptr;
+    for (Compax3Page* mine : compax3Pages())
+        if (mine == page) m_shown = mine;
+    if (m_shown && m_shown->poll()) {
+        m_poll->start();
+    } else {
+        m_poll->stop();
+    }
+}
+
+bool Compax3Window::confirmClose() {
+    const int edits = int(m_objects->model()->edits().size());
+    if (edits == 0) return true;
+    QMessageBox ask(
+        QMessageBox::Warning, tr("Unwritten values"),
+        tr("%n value(s) typed in on the Objects page are not on the drive.", nullptr, edits),
+        QMessageBox::Cancel, window());
+    ask.setInformativeText(tr("Closing drops them."));
+    QPushButton* close = ask.addButton(tr("Close and drop them"), QMessageBox::DestructiveRole);
+    ask.setDefaultButton(QMessageBox::Cancel);
+    ask.exec();
+    return ask.clickedButton() == close;
+}
+
+QList<TourStop> Compax3Window::tourStops(const QString&) {
+    return {
+        {QStringLiteral("31-compax3-objects"),
+         [this] { window()->showPage(m_objects); },
+         [this] {
+             return m_facts.known &&
+                    m_objects->model()->driveValue(comm::kCompax3Position).has_value();
+         },
+         {}},
+        {QStringLiteral("32-compax3-status"),
+         [this] { window()->showPage(m_status); },
+         [this] { return m_facts.known && !m_status->errorText().isEmpty(); },
+         {}},
+        {QStringLiteral("33-compax3-motion"),
+         [this] { window()->showPage(m_motion); },
+         [this] { return m_facts.known; },
+         {}},
+    };
+}
+
+Compax3Window* compax3Window(const MainWindow* window) {
+    return window ? window->findChild<Compax3Window*>() : nullptr;
+}
+
+}  // namespace cambench

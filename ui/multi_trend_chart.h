@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QChartView>
+#include <QList>
+#include <QString>
+
+class QLineSeries;
+class QValueAxis;
+
+namespace cambench {
+
+// Live trend of several values (watched variables, drive objects) over the
+// last minute on one value axis. A stretch without answers is a gap: after
+// breakLine() each value starts a new line in the colour of its old one.
+// Follows the palette (light or dark).
+class MultiTrendChart : public QChartView {
+    Q_OBJECT
+public:
+    struct Sample {
+        QString key;   // identifies the value across samples: "V12", "680.5"
+        QString name;  // the legend's text: "V12 Speed"
+        double value;
+    };
+
+    explicit MultiTrendChart(QWidget* parent = nullptr);
+
+    // The values read at `seconds` (since the first sample).
+    void addSamples(double seconds, const QList<Sample>& samples);
+    void breakLine() { m_gap = true; }
+    void clear();
+    int seriesCount() const { return int(m_series.size()); }
+    int pointCount() const;
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    QLineSeries* seriesFor(const Sample& sample);
+    void applyPalette();
+
+    QValueAxis* m_time;
+    QValueAxis* m_values;
+    QList<std::pair<QString, QLineSeries*>> m_series;  // key, its line (several after gaps)
+    bool m_gap = false;
+};
+
+}  // namespace cambench
