@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 #include <QJsonArray>
+#include <QRegularExpression>
 
 namespace cambench {
 
@@ -107,6 +108,22 @@ Compax3ObjectInfo readObject(JsonReader& reader, const QJsonObject& object, cons
     if (!reader.failed() && info.range.min && info.range.max && *info.range.min > *info.range.max)
         reader.fail(path, QCoreApplication::translate("cambench::model", "min is above max"));
     if (info.group.isEmpty()) info.group = QCoreApplication::translate("cambench::model", "Other");
+    // "de": {"name": …, "group": …, "help": …}: the words in another language.
+    static const QRegularExpression languageCode(QStringLiteral("^[a-z]{2}$"));
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (!languageCode.match(it.key()).hasMatch()) continue;
+        if (!it.value().isObject()) {
+            reader.fail(JsonReader::member(path, it.key()),
+                        QCoreApplication::translate("cambench::model",
+                                                    "not an object of name, group and help"));
+            return info;
+        }
+        const QJsonObject texts = it.value().toObject();
+        info.translated.insert(it.key(),
+                               Compax3Texts{texts.value(QStringLiteral("name")).toString(),
+                                            texts.value(QStringLiteral("group")).toString(),
+                                            texts.value(QStringLiteral("help")).toString()});
+    }
     return info;
 }
 
@@ -156,6 +173,29 @@ const Compax3Dictionary& Compax3Dictionary::builtin() {
         return builtIn;
     }();
     return dictionary;
+}
+
+namespace {
+
+QString inLanguage(const Compax3ObjectInfo& info, const QString& language,
+                   QString Compax3Texts::*member, const QString& english) {
+    const auto it = info.translated.constFind(language);
+    if (it == info.translated.cend() || ((*it).*member).isEmpty()) return english;
+    return (*it).*member;
+}
+
+}  // namespace
+
+QString Compax3ObjectInfo::nameIn(const QString& language) const {
+    return inLanguage(*this, language, &Compax3Texts::name, name);
+}
+
+QString Compax3ObjectInfo::groupIn(const QString& language) const {
+    return inLanguage(*this, language, &Compax3Texts::group, group);
+}
+
+QString Compax3ObjectInfo::helpIn(const QString& language) const {
+    return inLanguage(*this, language, &Compax3Texts::help, help);
 }
 
 const Compax3ObjectInfo* Compax3Dictionary::find(const Compax3ObjectId& id) const {

@@ -21,6 +21,13 @@ enum class Compax3Access {
     Command,
 };
 
+// An object's words for a person in one language.
+struct Compax3Texts {
+    QString name;
+    QString group;
+    QString help;
+};
+
 // What the dictionary knows of one object.
 struct Compax3ObjectInfo {
     Compax3ObjectId id;
@@ -31,6 +38,14 @@ struct Compax3ObjectInfo {
     Compax3Access access = Compax3Access::ReadWrite;
     QString group;  // "Positioning set 1": the tree's folders
     QString help;   // a sentence for a person
+    // The same words in other languages, by code ("de"); English above.
+    QHash<QString, Compax3Texts> translated;
+
+    // The name, group and help in `language` ("de"), English where the
+    // dictionary has none in it.
+    QString nameIn(const QString& language) const;
+    QString groupIn(const QString& language) const;
+    QString helpIn(const QString& language) const;
 
     bool readable() const { return access != Compax3Access::WriteOnly; }
     bool writable() const { return access != Compax3Access::ReadOnly; }
@@ -45,7 +60,8 @@ struct Compax3ObjectInfo {
 // File: {"format":"cambench-compax3-dictionary","version":1,
 //        "objects":[{"object":"680.5","name":"Actual position","type":"real",
 //                    "unit":"unit","access":"ro","group":"Status",
-//                    "min":…,"max":…,"help":"…"}]}
+//                    "min":…,"max":…,"help":"…",
+//                    "de":{"name":"Istposition","group":"Status","help":"…"}}]}
 class Compax3Dictionary {
 public:
     // The dictionary shipped with CamBench (model/compax3/compax3-objects.json).

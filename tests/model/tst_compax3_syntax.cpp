@@ -155,6 +155,10 @@ private Q_SLOTS:
         QVERIFY(!parameters.contains(kCompax3ControlWord));
         QVERIFY(!parameters.contains(kCompax3StoreSets));
         QVERIFY(dictionary.groups().contains(QStringLiteral("Set 0 (homing)")));
+        QCOMPARE(position->nameIn(QStringLiteral("de")), QStringLiteral("Istposition"));
+        QCOMPARE(position->nameIn(QStringLiteral("fr")), QStringLiteral("Actual position"));
+        QCOMPARE(dictionary.find(compax3SetTarget(0))->groupIn(QStringLiteral("de")),
+                 QStringLiteral("Satz 0 (Referenzfahrt)"));
         QVERIFY(!compax3WireValueFor(dictionary, kCompax3Position, QStringLiteral("1")).ok());
         QVERIFY(!compax3WireValueFor(dictionary, compax3SetMode(1), QStringLiteral("3")).ok());
         QCOMPARE(*compax3WireValueFor(dictionary, {4000, 1}, QStringLiteral("7.25")),

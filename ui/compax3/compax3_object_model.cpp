@@ -1,6 +1,7 @@
 #include "compax3_object_model.h"
 
 #include "ui/change_marker.h"
+#include "ui/language.h"
 
 #include <QBrush>
 #include <QFont>
@@ -28,14 +29,15 @@ QList<QStandardItem*> Compax3ObjectModel::rowFor(const Compax3ObjectInfo& info, 
         row << item;
     }
     row[Object]->setText(info.id.text());
-    row[Name]->setText(known ? info.name : tr("(not in the dictionary)"));
+    const QString language = currentLanguage();
+    row[Name]->setText(known ? info.nameIn(language) : tr("(not in the dictionary)"));
     row[Unit]->setText(info.unit);
     QString range = info.range.text();
     if (info.access == Compax3Access::ReadOnly) range = tr("read-only");
     if (info.access == Compax3Access::WriteOnly) range = tr("function (written only)");
     if (info.access == Compax3Access::Command) range = tr("control word: Motion page");
     row[Range]->setText(range);
-    row[Name]->setToolTip(info.help);
+    row[Name]->setToolTip(info.helpIn(language));
     if (info.access == Compax3Access::Command) row[NewValue]->setEditable(false);
     m_rows.insert(info.id, row[Object]);
     return row;
@@ -51,7 +53,7 @@ void Compax3ObjectModel::rebuild() {
     for (const Compax3ObjectInfo& info : m_dictionary.objects()) {
         QStandardItem*& group = groups[info.group];
         if (!group) {
-            group = new QStandardItem(info.group);
+            group = new QStandardItem(info.groupIn(currentLanguage()));
             group->setEditable(false);
             QList<QStandardItem*> groupRow{group};
             for (int column = 1; column < ColumnCount; ++column) {
@@ -108,7 +110,8 @@ void Compax3ObjectModel::refreshRow(const Compax3ObjectId& id) {
                               ? tr("Stale: read %1, the connection was lost since.")
                                     .arg(known.at.toString(QStringLiteral("HH:mm:ss")))
                               : tr("Read %1.").arg(known.at.toString(QStringLiteral("HH:mm:ss"))));
-        value->setForeground(known.stale ? QBrush(Qt::gray) : QBrush());
+        // No colour of its own unless stale: the palette's text colour.
+        value->setData(known.stale ? QVariant(QBrush(Qt::gray)) : QVariant(), Qt::ForegroundRole);
         QFont font = value->font();
         font.setItalic(known.stale);
         value->setFont(font);

@@ -4,6 +4,7 @@
 
 #include "comm/compax3/usecases/compax3_parameters.h"
 #include "ui/device_session.h"
+#include "ui/language.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
 
@@ -162,7 +163,9 @@ void Compax3ParametersPage::compareWith(const QString& path) {
                 object->setFlags(object->flags() | Qt::ItemIsUserCheckable);
                 object->setCheckState(Qt::Checked);
                 m_table->setItem(row, 0, object);
-                m_table->setItem(row, 1, new QTableWidgetItem(info ? info->name : QString()));
+                m_table->setItem(
+                    row, 1,
+                    new QTableWidgetItem(info ? info->nameIn(currentLanguage()) : QString()));
                 m_table->setItem(row, 2, new QTableWidgetItem(d.fileValue));
                 m_table->setItem(row, 3,
                                  new QTableWidgetItem(d.error.isEmpty() ? d.driveValue : d.error));

@@ -3,6 +3,7 @@
 #include "compax3_gui.h"
 
 #include "ui/device_session.h"
+#include "ui/language.h"
 #include "ui/multi_trend_chart.h"
 #include "ui/sentence.h"
 
@@ -91,7 +92,8 @@ void Compax3WatchPage::rebuildTable() {
     m_table->setRowCount(int(ids.size()));
     for (int row = 0; row < ids.size(); ++row) {
         const Compax3ObjectInfo* info = m_gui->dictionary().find(ids.at(row));
-        const QStringList texts{ids.at(row).text(), info ? info->name : QString(), {}, {}};
+        const QStringList texts{
+            ids.at(row).text(), info ? info->nameIn(currentLanguage()) : QString(), {}, {}};
         for (int column = 0; column < texts.size(); ++column)
             if (!m_table->item(row, column) || column < ValueColumn)
                 m_table->setItem(row, column, new QTableWidgetItem(texts.at(column)));
