@@ -8759,6 +8759,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>not a pair [&quot;object&quot;, &quot;value&quot;]</source>
         <translation>kein Paar [&quot;Objekt&quot;, &quot;Wert&quot;]</translation>
     </message>
+    <message>
+        <source>not an object of name, group and help</source>
+        <translation>kein Objekt aus name, group und help</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>

@@ -8757,6 +8757,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>not a pair [&quot;object&quot;, &quot;value&quot;]</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>not an object of name, group and help</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
