@@ -227,12 +227,16 @@ void Compax3ObjectsPage::writeChanges() {
                     m_model->clearEdit(writes.at(i).id);
                 }
             }
-            QStringList lines;
-            for (const usecases::OutcomeLine& line : tally->lines()) lines << line.text;
             showResult(tally->summary(), tally->complete());
-            if (!tally->complete())
-                ReportDialog::present(window(), QMessageBox::Warning, tr("Write"), tally->summary(),
-                                      lines.join(QLatin1Char('\n')));
+            if (!tally->complete()) {
+                // What the drive holds now is read again: a failed write
+                // may have changed it, and the page must not show the old
+                // value as the drive's.
+                QList<Compax3ObjectId> touched;
+                for (const usecases::Compax3Write& write : writes) touched << write.id;
+                read(touched);
+                ReportDialog::presentTally(window(), tr("Write"), *tally);
+            }
         });
 }
 

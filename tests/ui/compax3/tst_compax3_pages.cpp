@@ -6,6 +6,7 @@
 // and a lost line making the values stale.
 #include "../shell/shell_fixture.h"
 
+#include "ui/compax3/compax3_gui.h"
 #include "ui/compax3/compax3_motion_page.h"
 #include "ui/compax3/compax3_object_model.h"
 #include "ui/compax3/compax3_objects_page.h"
@@ -20,6 +21,7 @@
 #include "comm/compax3/compax3_objects.h"
 
 #include <QCheckBox>
+#include <QFile>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
@@ -86,6 +88,36 @@ private Q_SLOTS:
         QCOMPARE(*model->driveValue(target), QStringLiteral("12.5"));
         QVERIFY2(resultOf(objects).contains(QLatin1String("1 written")),
                  qPrintable(resultOf(objects)));
+
+        // A write the drive refuses (a dictionary of our own allows 7 for a
+        // mode; the drive does not): the value stays typed in, the report says
+        // it failed, and the drive's value is read again.
+        {
+            QTemporaryDir dir;
+            const QString path = dir.filePath(QStringLiteral("wide.json"));
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(R"({"format":"cambench-compax3-dictionary","version":1,"objects":[
+{"object":"1905.1","name":"Set 1 mode","type":"integer","access":"rw","min":0,"max":9}]})");
+            file.close();
+            objects->loadDictionary(path);
+            const Compax3ObjectId mode = comm::compax3SetMode(1);
+            QVERIFY(QTest::qWaitFor([&] { return model->driveValue(mode).has_value(); },
+                                    kDeviceTimeoutMs));
+            QVERIFY(model->setEdit(mode, QStringLiteral("7")).ok());
+            auto write = answerConfirmation(true);
+            QString report;
+            NextDialog<ReportDialog> close([&report](ReportDialog* dialog) {
+                report = dialog->summary();
+                dialog->accept();
+            });
+            objects->writeChanges();
+            QVERIFY(QTest::qWaitFor([&] { return !report.isEmpty(); }, kDeviceTimeoutMs));
+            QVERIFY2(report.contains(QLatin1String("1 failed")), qPrintable(report));
+            QCOMPARE(model->edits().size(), 1);
+            QCOMPARE(*model->driveValue(mode), QStringLiteral("1"));
+            static_cast<Compax3Gui*>(c3->gui())->setDictionary(Compax3Dictionary::builtin());
+        }
 
         // Any object by number: one the drive lacks is refused with its number.
         objects->readRaw(QStringLiteral("O 4321,1"));
