@@ -2941,10 +2941,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Objekte lesen</translation>
     </message>
     <message>
-        <source>Reading objects</source>
-        <translation>Objekte werden gelesen</translation>
-    </message>
-    <message>
         <source>Not read: %1</source>
         <translation>Nicht gelesen: %1</translation>
     </message>

@@ -2941,10 +2941,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Reading objects</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Not read: %1</source>
         <translation type="unfinished">Not read: %1</translation>
     </message>

@@ -10,17 +10,9 @@
 
 namespace cambench::comm {
 
-namespace {
-
-QString wordText(quint16 word) {
-    return QStringLiteral("$%1").arg(word, 4, 16, QLatin1Char('0')).toUpper();
-}
-
-}  // namespace
-
 Result<Compax3DriveStatus> Compax3Drive::sendControl(quint16 word, const QString& what,
                                                      RetryPolicy retry) {
-    const QByteArray command = compax3WriteCommand(kCompax3ControlWord, wordText(word));
+    const QByteArray command = compax3WriteCommand(kCompax3ControlWord, compax3HexText(word, 4));
     const Status sent = writeCommand(command, retry);
     if (sent) return status();
     if (sent.error().kind != ErrorKind::Communication || retry != RetryPolicy::Never)
@@ -44,7 +36,7 @@ Result<Compax3DriveStatus> Compax3Drive::sendControl(quint16 word, const QString
             ? QCoreApplication::translate("cambench::comm", "the command was taken")
             : QCoreApplication::translate("cambench::comm",
                                           "the command was not taken (control word %1)")
-                  .arg(wordText(back->controlWord));
+                  .arg(compax3HexText(back->controlWord, 4));
     return Error::communication(
         QCoreApplication::translate("cambench::comm", "%1. Read back: %2; the axis is %3")
             .arg(lost, taken, back->summary()));
@@ -57,7 +49,7 @@ Result<Compax3DriveStatus> Compax3Drive::motion(Compax3Motion motion) {
             // Off, then on: the rising edge of b0 acknowledges a pending error.
             // Neither moves the axis, and writing either twice is harmless.
             const QByteArray off =
-                compax3WriteCommand(kCompax3ControlWord, wordText(compax3control::kOff));
+                compax3WriteCommand(kCompax3ControlWord, compax3HexText(compax3control::kOff, 4));
             if (const Status done = writeCommand(off, RetryPolicy::Idempotent); !done)
                 return done.error();
             return sendControl(compax3control::kEnable, what, RetryPolicy::Idempotent);
@@ -113,8 +105,8 @@ Result<Compax3DriveStatus> Compax3Drive::moveSet(const Compax3SetMove& move) {
             if (const Status written = writeSetValue(id, *value); !written) return written.error();
     // The set selected without the start bit, then with it: the start is
     // its rising edge.
-    const QByteArray select =
-        compax3WriteCommand(kCompax3ControlWord, wordText(compax3control::select(move.set)));
+    const QByteArray select = compax3WriteCommand(
+        kCompax3ControlWord, compax3HexText(compax3control::select(move.set), 4));
     if (const Status selected = writeCommand(select, RetryPolicy::Idempotent); !selected)
         return selected.error();
     return sendControl(compax3control::start(move.set), compax3SetMoveText(move),

@@ -27,7 +27,7 @@ QList<Compax3StatusBit> compax3StatusBits(quint16 word) {
 }
 
 QString compax3LastErrorText(int code) {
-    const QString hex = QStringLiteral("$%1").arg(code, 4, 16, QLatin1Char('0')).toUpper();
+    const QString hex = compax3HexText(code, 4);
     switch (code) {
         case 1:
             return QCoreApplication::translate("cambench::comm", "no error");

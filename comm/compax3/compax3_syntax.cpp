@@ -109,27 +109,23 @@ QByteArray compax3Canonical(const QByteArray& command) {
 
 std::optional<Compax3Request> parseCompax3Request(const QByteArray& canonical) {
     if (canonical == "_?") return Compax3Request{Compax3Request::Info, {}, false, {}};
-    static const QRegularExpression pattern(
-        QStringLiteral("^O(\\$[0-9A-F]+|[0-9]+)[,.](\\$[0-9A-F]+|[0-9]+)(\\$?)(=(.*))?$"));
-    const QRegularExpressionMatch match = pattern.match(QString::fromLatin1(canonical));
-    if (!match.hasMatch()) return std::nullopt;
-    auto number = [](const QString& text) {
-        bool ok = false;
-        const int value =
-            text.startsWith(QLatin1Char('$')) ? text.mid(1).toInt(&ok, 16) : text.toInt(&ok, 10);
-        return ok ? value : -1;
-    };
+    if (!canonical.startsWith('O')) return std::nullopt;
+    QString text = QString::fromLatin1(canonical);
     Compax3Request request;
-    request.id = {number(match.captured(1)), number(match.captured(2))};
-    if (request.id.index < 0 || request.id.index > 0xFFFF || request.id.subindex < 0 ||
-        request.id.subindex > 0xFF)
-        return std::nullopt;
-    request.hexAnswer = !match.captured(3).isEmpty();
-    if (!match.captured(4).isEmpty()) {
-        if (request.hexAnswer) return std::nullopt;
+    if (const qsizetype equals = text.indexOf(QLatin1Char('=')); equals >= 0) {
         request.kind = Compax3Request::Write;
-        request.value = match.captured(5);
+        request.value = text.mid(equals + 1);
+        text.truncate(equals);
     }
+    // A '$' after the subindex asks for a hexadecimal answer (reads only).
+    if (text.endsWith(QLatin1Char('$'))) {
+        if (request.kind == Compax3Request::Write) return std::nullopt;
+        request.hexAnswer = true;
+        text.chop(1);
+    }
+    const Result<Compax3ObjectId> id = parseCompax3Object(text);
+    if (!id) return std::nullopt;
+    request.id = *id;
     return request;
 }
 

@@ -44,6 +44,11 @@ Result<Compax3ObjectId> parseCompax3Object(const QString& text) {
     return Compax3ObjectId{*index, *subindex};
 }
 
+QString compax3HexText(qint64 value, int digits) {
+    return QLatin1Char('$') +
+           QString::number(value, 16).toUpper().rightJustified(digits, QLatin1Char('0'));
+}
+
 QString compax3NumberText(double value) {
     // QString::number ignores the locale: always a '.'.
     QString text = QString::number(value, 'f', 6);

@@ -32,6 +32,10 @@ inline size_t qHash(const Compax3ObjectId& id, size_t seed = 0) {
 // case, spaces anywhere. A usage error says what was expected.
 Result<Compax3ObjectId> parseCompax3Object(const QString& text);
 
+// A number in the drive's hexadecimal notation: "$" and upper-case digits,
+// at least `digits` of them ("$4103", "$32").
+QString compax3HexText(qint64 value, int digits = 0);
+
 // A number as the drive reads it: always a decimal point, whatever the
 // locale (a German "12,5" is a syntax error on the drive), no exponent,
 // no trailing zeros ("12.5", "-3", "0.001").

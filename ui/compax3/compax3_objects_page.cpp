@@ -4,6 +4,7 @@
 #include "compax3_object_model.h"
 
 #include "comm/compax3/usecases/compax3_parameters.h"
+#include "comm/compax3/usecases/compax3_read_objects.h"
 #include "ui/device_session.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
@@ -20,16 +21,6 @@
 #include <QVBoxLayout>
 
 namespace cambench {
-
-namespace {
-
-struct ReadValue {
-    Compax3ObjectId id;
-    QString value;
-    QString error;  // the drive refused it
-};
-
-}  // namespace
 
 Compax3ObjectsPage::Compax3ObjectsPage(DeviceSession* session, Compax3Gui* gui, QWidget* parent)
     : Compax3Page(session, parent),
@@ -139,32 +130,25 @@ void Compax3ObjectsPage::readAll() {
 
 void Compax3ObjectsPage::read(const QList<Compax3ObjectId>& ids) {
     if (!facts().known) return;
-    session()->run<comm::Compax3Device, QList<ReadValue>>(
+    using usecases::Compax3Reading;
+    session()->run<comm::Compax3Device, QList<Compax3Reading>>(
         this, tr("Read objects"),
-        [ids](comm::Compax3Device& device, comm::JobContext& job) -> Result<QList<ReadValue>> {
-            QList<ReadValue> values;
-            for (const Compax3ObjectId& id : ids) {
-                if (job.cancelled()) return Error::cancelled();
-                const Result<QString> value = device.readObject(id, false);
-                if (!value && value.error().kind != ErrorKind::DeviceError) return value.error();
-                values << ReadValue{id, value ? *value : QString(),
-                                    value ? QString() : value.error().message};
-                job.progress(values.size(), ids.size(), tr("Reading objects"));
-            }
-            return values;
+        [ids](comm::Compax3Device& device, comm::JobContext& job) {
+            return usecases::readCompax3Objects(device, ids, false,
+                                                usecases::UseCaseProgress::of(job));
         },
-        [this](Result<QList<ReadValue>> values) {
+        [this](Result<QList<Compax3Reading>> values) {
             if (!values) {
                 showResult(tr("Not read: %1").arg(asSentence(values.error().message)), false);
                 return;
             }
             const QDateTime now = QDateTime::currentDateTime();
             int refused = 0;
-            for (const ReadValue& value : *values) {
-                if (value.error.isEmpty()) {
+            for (const Compax3Reading& value : *values) {
+                if (!value.refused()) {
                     m_model->setDriveValue(value.id, value.value, now);
                 } else {
-                    m_model->setDriveError(value.id, value.error);
+                    m_model->setDriveError(value.id, value.refusal.message);
                     ++refused;
                 }
             }

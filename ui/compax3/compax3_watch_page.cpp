@@ -2,6 +2,7 @@
 
 #include "compax3_gui.h"
 
+#include "comm/compax3/usecases/compax3_read_objects.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
 #include "ui/multi_trend_chart.h"
@@ -103,20 +104,13 @@ void Compax3WatchPage::rebuildTable() {
 bool Compax3WatchPage::poll() {
     if (!facts().known || m_gui->watchList().isEmpty()) return false;
     const QList<Compax3ObjectId> ids = m_gui->watchList();
-    using Values = QList<std::pair<Compax3ObjectId, QString>>;
-    session()->run<comm::Compax3Device, Values>(
+    using usecases::Compax3Reading;
+    session()->run<comm::Compax3Device, QList<Compax3Reading>>(
         this, tr("Read watched objects"),
-        [ids](comm::Compax3Device& device, comm::JobContext&) -> Result<Values> {
-            Values values;
-            for (const Compax3ObjectId& id : ids) {
-                const Result<QString> value = device.readObject(id, false);
-                if (!value && value.error().kind != ErrorKind::DeviceError) return value.error();
-                values << std::pair{id,
-                                    value ? *value : QStringLiteral("!") + value.error().message};
-            }
-            return values;
+        [ids](comm::Compax3Device& device, comm::JobContext&) {
+            return usecases::readCompax3Objects(device, ids);
         },
-        [this](Result<Values> values) {
+        [this](Result<QList<Compax3Reading>> values) {
             pollAnswered(values.ok());
             if (values) show(*values);
         },
@@ -124,16 +118,18 @@ bool Compax3WatchPage::poll() {
     return true;
 }
 
-void Compax3WatchPage::show(const QList<std::pair<Compax3ObjectId, QString>>& values) {
+void Compax3WatchPage::show(const QList<usecases::Compax3Reading>& values) {
     const QDateTime now = QDateTime::currentDateTime();
     if (!m_start.isValid()) m_start = now;
     QList<MultiTrendChart::Sample> samples;
-    for (const auto& [id, value] : values) {
+    for (const usecases::Compax3Reading& reading : values) {
+        const Compax3ObjectId& id = reading.id;
+        const QString& value = reading.value;
         const int row = int(m_gui->watchList().indexOf(id));
         if (row < 0 || row >= m_table->rowCount()) continue;
-        const bool refused = value.startsWith(QLatin1Char('!'));
+        const bool refused = reading.refused();
         auto* item = new QTableWidgetItem(refused ? tr("refused") : value);
-        item->setToolTip(refused ? value.mid(1) : QString());
+        item->setToolTip(refused ? reading.refusal.message : QString());
         m_table->setItem(row, ValueColumn, item);
         m_table->setItem(row, ReadColumn,
                          new QTableWidgetItem(now.toString(QStringLiteral("HH:mm:ss.zzz"))));

@@ -9,6 +9,10 @@ class QTableWidget;
 
 namespace cambench {
 
+namespace usecases {
+struct Compax3Reading;
+}
+
 class Compax3Gui;
 class MultiTrendChart;
 
@@ -30,7 +34,7 @@ public:
 
 private:
     void rebuildTable();
-    void show(const QList<std::pair<Compax3ObjectId, QString>>& values);
+    void show(const QList<usecases::Compax3Reading>& values);
 
     Compax3Gui* m_gui;
     QLineEdit* m_add;

@@ -5,6 +5,7 @@
 #include "app/cli/exit_codes.h"
 
 #include "comm/compax3/compax3_syntax.h"
+#include "comm/compax3/usecases/compax3_read_objects.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -18,6 +19,8 @@ namespace {
 using comm::Compax3Device;
 using comm::Compax3DriveStatus;
 using comm::JobContext;
+using usecases::Compax3Reading;
+using Reading = Compax3Reading;
 
 // The remaining words of the command, options taken first.
 QStringList takeRest(CommandArgs& args) {
@@ -84,26 +87,22 @@ int runCompax3Read(CliSession& session, CommandArgs& args, const Compax3Dictiona
             return reportError(
                 Error::usage(QStringLiteral("%1 (%2) is a function: it is written, never read")
                                  .arg(id.text(), info->name)));
-    const Result<QStringList> values = runOnCompax3<QStringList>(
-        session, QStringLiteral("c3 read"),
-        [ids = *ids, hex](Compax3Device& device, JobContext&) -> Result<QStringList> {
-            QStringList values;
-            for (const Compax3ObjectId& id : ids) {
-                const Result<QString> value = device.readObject(id, hex);
-                if (!value) return value.error();
-                values << *value;
-            }
-            return values;
+    const Result<QList<Reading>> values = runOnCompax3<QList<Reading>>(
+        session, QStringLiteral("c3 read"), [ids = *ids, hex](Compax3Device& device, JobContext&) {
+            return usecases::readCompax3Objects(device, ids, hex);
         });
     if (!values) return reportError(values.error());
+    if (const Error refused = usecases::firstCompax3Refusal(*values);
+        refused.kind != ErrorKind::None)
+        return reportError(refused);
     if (json) {
         QJsonObject object;
-        for (int i = 0; i < ids->size(); ++i) object.insert(ids->at(i).text(), values->at(i));
+        for (const Reading& reading : *values) object.insert(reading.id.text(), reading.value);
         return printJson(QJsonDocument(object));
     }
     QString text;
-    for (int i = 0; i < ids->size(); ++i)
-        text += QStringLiteral("%1 = %2\n").arg(ids->at(i).text(), values->at(i));
+    for (const Reading& reading : *values)
+        text += QStringLiteral("%1 = %2\n").arg(reading.id.text(), reading.value);
     printOut(text);
     return ExitOk;
 }
@@ -192,10 +191,7 @@ int runCompax3Status(CliSession& session, CommandArgs& args) {
         [](Compax3Device& device, JobContext&) { return device.status(); });
     if (!status) return reportError(status.error());
     if (json) return printJson(QJsonDocument(statusJson(*status)));
-    QString text = QStringLiteral("status word: $%1\n")
-                       .arg(QString::number(status->status.word, 16)
-                                .toUpper()
-                                .rightJustified(4, QLatin1Char('0')));
+    QString text = QStringLiteral("status word: %1\n").arg(compax3HexText(status->status.word, 4));
     for (const comm::Compax3StatusBit& bit : comm::compax3StatusBits(status->status.word))
         text += QStringLiteral("  b%1 %2: %3\n").arg(bit.bit).arg(bit.name).arg(bit.on ? 1 : 0);
     text += QStringLiteral("last error: %1\naxis: %2\n")
@@ -215,21 +211,18 @@ int runCompax3Watch(CliSession& session, CommandArgs& args) {
     int failures = 0;
     for (int poll = 0; *count == 0 || poll < *count; ++poll) {
         if (poll > 0) QThread::msleep(ulong(*interval));
-        const Result<QStringList> values = runOnCompax3<QStringList>(
-            session, QStringLiteral("c3 watch"),
-            [ids = *ids](Compax3Device& device, JobContext&) -> Result<QStringList> {
-                QStringList values;
-                for (const Compax3ObjectId& id : ids) {
-                    const Result<QString> value = device.readObject(id, false);
-                    if (!value) return value.error();
-                    values << *value;
-                }
-                return values;
+        Result<QList<Reading>> values = runOnCompax3<QList<Reading>>(
+            session, QStringLiteral("c3 watch"), [ids = *ids](Compax3Device& device, JobContext&) {
+                return usecases::readCompax3Objects(device, ids);
             });
+        if (values)
+            if (const Error refused = usecases::firstCompax3Refusal(*values);
+                refused.kind != ErrorKind::None)
+                values = refused;
         QStringList parts;
         for (int i = 0; i < ids->size(); ++i)
             parts << QStringLiteral("%1 = %2").arg(
-                ids->at(i).text(), values ? values->at(i) : QStringLiteral("? (no value)"));
+                ids->at(i).text(), values ? values->at(i).value : QStringLiteral("? (no value)"));
         printOut(QStringLiteral("%1  %2\n")
                      .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz")),
                           parts.join(QStringLiteral("  "))));

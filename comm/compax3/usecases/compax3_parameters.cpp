@@ -247,7 +247,7 @@ Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compa
     QList<OutcomeLine> lines = tally.lines();
     const QString label = QCoreApplication::translate(
         "cambench::usecases", "store the sets in the drive's flash (1904.1 = $32)");
-    const QString value = QStringLiteral("$%1").arg(comm::kCompax3StoreSetsValue, 0, 16).toUpper();
+    const QString value = compax3HexText(comm::kCompax3StoreSetsValue);
     if (!tally.complete()) {
         const Error skipped = Error::usage(QCoreApplication::translate(
             "cambench::usecases", "not stored, because not every object was written"));

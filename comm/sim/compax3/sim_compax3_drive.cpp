@@ -130,7 +130,7 @@ QByteArray SimCompax3Drive::read(const Compax3ObjectId& id, bool hex) const {
     if (!hex) return value.toLatin1();
     const std::optional<double> number = compax3Number(value);
     if (!number || std::floor(*number) != *number) return refused(6);  // REAL in hex: refused
-    return QStringLiteral("$%1").arg(qint64(*number), 0, 16).toUpper().toLatin1();
+    return compax3HexText(qint64(*number)).toLatin1();
 }
 
 QByteArray SimCompax3Drive::write(const Compax3ObjectId& id, const QString& value) {
