@@ -4,6 +4,7 @@
 // differ from what the simulator holds. Figures, not assertions: run it when
 // asked (it takes minutes); docs/performance.md records a run.
 
+#include "cambus_bench.h"
 #include "compax3_bench.h"
 #include "mc1_bench.h"
 #include "protocol_bench.h"
@@ -329,6 +330,11 @@ int main(int argc, char** argv) {
         QStringLiteral("compax3"),
         QStringLiteral("Only Compax3: a 500-object parameter set at 115200 and 9600 baud."));
     parser.addOption(compax3);
+    QCommandLineOption cambus(
+        QStringLiteral("cambus"),
+        QStringLiteral("Only Cam-BUS: an EEPROM backup and a program read of one CamCon at 38400 "
+                       "baud while two displays poll."));
+    parser.addOption(cambus);
     QCommandLineOption repeat(QStringLiteral("repeat"),
                               QStringLiteral("Runs per row, with seeds 7, 8, ...; the median time "
                                              "is printed (default 1)."),
@@ -343,6 +349,10 @@ int main(int argc, char** argv) {
     const Line multiuser{QStringLiteral("Multiuser 38400"), Framing::Multiuser, 38400};
     const QList<Line> lines =
         parser.isSet(quick) ? QList<Line>{multiuser} : QList<Line>{standard, multiuser};
+    if (parser.isSet(cambus)) {
+        bench::benchCamBus();
+        return 0;
+    }
     if (parser.isSet(compax3)) {
         bench::benchCompax3();
         return 0;

@@ -1329,6 +1329,70 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::CamBusSettingsWidget</name>
+    <message>
+        <source>The number of the CamCon to talk to on the Cam-BUS (0–63).</source>
+        <translation>Die Nummer der CamCon, mit der am Cam-BUS gesprochen wird (0–63).</translation>
+    </message>
+    <message>
+        <source>This PC&apos;s own number on the Cam-BUS (0–63, usually 63). No other user of the bus (CamCon, display, another PC) may have it.</source>
+        <translation>Die eigene Nummer dieses PCs am Cam-BUS (0–63, meist 63). Kein anderer Teilnehmer des Busses (CamCon, Anzeige, anderer PC) darf sie haben.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamBusView</name>
+    <message>
+        <source>&lt;b&gt;Cam-BUS&lt;/b&gt; as this PC hears it</source>
+        <translation>&lt;b&gt;Cam-BUS&lt;/b&gt;, wie dieser PC ihn hört</translation>
+    </message>
+    <message>
+        <source>Not on a Cam-BUS: connect with the Cam-BUS protocol to see its users and the token.</source>
+        <translation>Nicht an einem Cam-BUS: mit dem Protokoll Cam-BUS verbinden, um seine Teilnehmer und das Token zu sehen.</translation>
+    </message>
+    <message>
+        <source>Not live: nothing heard from the line for %1 s; the users below are the last ones heard.</source>
+        <translation>Nicht aktuell: seit %1 s nichts von der Leitung gehört; unten die zuletzt gehörten Teilnehmer.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Initialisation phase: the master searches the users (%n found so far).</source>
+        <translation>
+            <numerusform>Initialisierungsphase: der Master sucht die Teilnehmer (bisher %n gefunden).</numerusform>
+            <numerusform>Initialisierungsphase: der Master sucht die Teilnehmer (bisher %n gefunden).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Listening: no token heard yet.</source>
+        <translation>Hört zu: noch kein Token gehört.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n users · master %1 · token with %2 · %3 rounds/s</source>
+        <translation>
+            <numerusform>%n Teilnehmer · Master %1 · Token bei %2 · %3 Runden/s</numerusform>
+            <numerusform>%n Teilnehmer · Master %1 · Token bei %2 · %3 Runden/s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Initialisation phases heard since connecting: %1</source>
+        <translation>Initialisierungsphasen seit dem Verbinden: %1</translation>
+    </message>
+    <message>
+        <source>User %1</source>
+        <translation>Teilnehmer %1</translation>
+    </message>
+    <message>
+        <source>master: passes the token</source>
+        <translation>Master: gibt das Token weiter</translation>
+    </message>
+    <message>
+        <source>this PC</source>
+        <translation>dieser PC</translation>
+    </message>
+    <message>
+        <source>does not answer (stays in the table until the next initialisation phase)</source>
+        <translation>antwortet nicht (bleibt bis zur nächsten Initialisierungsphase in der Tabelle)</translation>
+    </message>
+</context>
+<context>
     <name>cambench::CamConGui</name>
     <message>
         <source>CamCon %1, device number %2.</source>
@@ -3560,6 +3624,10 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>%1, device number %2</source>
         <translation>%1, Gerätenummer %2</translation>
+    </message>
+    <message>
+        <source>Cam-BUS (RS485 token bus)</source>
+        <translation>Cam-BUS (RS485-Token-Bus)</translation>
     </message>
 </context>
 <context>
@@ -7385,10 +7453,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>der CamCon-Tabellenschnittstelle (3964R n96 oder e38)</translation>
     </message>
     <message>
-        <source>A bus scan needs the Multiuser protocol.</source>
-        <translation>Eine Bus-Suche braucht das Multiuser-Protokoll.</translation>
-    </message>
-    <message>
         <source>CamCon, EPROM %1, device %2, %3 outputs, %4 programs</source>
         <translation>CamCon, EPROM %1, Gerät %2, %3 Ausgänge, %4 Programme</translation>
     </message>
@@ -7927,6 +7991,106 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>no Compax3 answered at any RS485 address 0..99</source>
         <translation>an keiner RS485-Adresse 0..99 antwortete ein Compax3</translation>
+    </message>
+    <message>
+        <source>sending a break on</source>
+        <translation>Senden eines Breaks auf</translation>
+    </message>
+    <message>
+        <source>A bus scan needs the Multiuser or the Cam-BUS protocol.</source>
+        <translation>Ein Bus-Scan braucht das Multiuser- oder das Cam-BUS-Protokoll.</translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block holds 1 to 255 bytes, not %1</source>
+        <translation>ein Cam-BUS-Block fasst 1 bis 255 Bytes, nicht %1</translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block with LEN 0</source>
+        <translation>ein Cam-BUS-Block mit LEN 0</translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block whose checksum is %1, not %2</source>
+        <translation>ein Cam-BUS-Block mit Prüfsumme %1 statt %2</translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block of %1 bytes holds no CamCon frame</source>
+        <translation>ein Cam-BUS-Block von %1 Bytes enthält keinen CamCon-Rahmen</translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block that does not start with ?, ! or : (0x%1)</source>
+        <translation>ein Cam-BUS-Block, der nicht mit ?, ! oder : beginnt (0x%1)</translation>
+    </message>
+    <message>
+        <source>a frame in a Cam-BUS block with checksum %1, not %2</source>
+        <translation>ein Rahmen in einem Cam-BUS-Block mit Prüfsumme %1 statt %2</translation>
+    </message>
+    <message>
+        <source>user %1 answered its TO with %2</source>
+        <translation>Teilnehmer %1 beantwortete sein TO mit %2</translation>
+    </message>
+    <message>
+        <source>user %1 did not acknowledge the block</source>
+        <translation>Teilnehmer %1 hat den Block nicht quittiert</translation>
+    </message>
+    <message>
+        <source>an initialisation phase began before user %1 acknowledged the block</source>
+        <translation>eine Initialisierungsphase begann, bevor Teilnehmer %1 den Block quittierte</translation>
+    </message>
+    <message>
+        <source>user %1 did not answer its TO</source>
+        <translation>Teilnehmer %1 hat auf sein TO nicht geantwortet</translation>
+    </message>
+    <message>
+        <source>Cam-BUS device %1 (PC %2)</source>
+        <translation>Cam-BUS Gerät %1 (PC %2)</translation>
+    </message>
+    <message>
+        <source>check that device %1 is on the Cam-BUS (scan lists its users), the RS485 wiring and 38400 baud, and that no other user has the PC&apos;s number %2</source>
+        <translation>prüfen Sie, ob Gerät %1 am Cam-BUS ist (der Scan listet die Teilnehmer), die RS485-Verdrahtung und 38400 Baud, und dass kein anderer Teilnehmer die Nummer %2 des PCs hat</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 bytes, more than a Cam-BUS block holds (255)</source>
+        <translation>%1 braucht %2 Bytes, mehr als ein Cam-BUS-Block fasst (255)</translation>
+    </message>
+    <message>
+        <source>no Cam-BUS traffic: no user passed the token in %1 s</source>
+        <translation>kein Cam-BUS-Verkehr: kein Teilnehmer hat in %1 s das Token weitergegeben</translation>
+    </message>
+    <message>
+        <source>the PC (user %1) got no turn on the Cam-BUS in %2 s</source>
+        <translation>der PC (Teilnehmer %1) kam in %2 s am Cam-BUS nicht an die Reihe</translation>
+    </message>
+    <message>
+        <source>device %1 did not take the request in %2 turns (%3); it was not executed</source>
+        <translation>Gerät %1 hat die Anfrage in %2 Durchgängen nicht angenommen (%3); sie wurde nicht ausgeführt</translation>
+    </message>
+    <message>
+        <source>the request went to device %1 but was not acknowledged (%2); it may have been executed</source>
+        <translation>die Anfrage ging an Gerät %1, wurde aber nicht quittiert (%2); sie kann ausgeführt worden sein</translation>
+    </message>
+    <message>
+        <source>a Cam-BUS: users %1 get the token; which of them are CamCons, a scan tells</source>
+        <translation>ein Cam-BUS: die Teilnehmer %1 erhalten das Token; welche davon CamCons sind, zeigt ein Scan</translation>
+    </message>
+    <message>
+        <source>no Cam-BUS token heard in %1 s</source>
+        <translation>in %1 s kein Cam-BUS-Token gehört</translation>
+    </message>
+    <message>
+        <source>no Cam-BUS traffic in %1 s on %2: no user passes the token; %3</source>
+        <translation>kein Cam-BUS-Verkehr in %1 s auf %2: kein Teilnehmer gibt das Token weiter; %3</translation>
+    </message>
+    <message>
+        <source>CamCon Cam-BUS (RS485 token bus)</source>
+        <translation>CamCon Cam-BUS (RS485-Token-Bus)</translation>
+    </message>
+    <message>
+        <source>the PC could not join the Cam-BUS: after %1 initialisation phases the master still passes user %2 no token (its answers may come too late for the bus: a USB adapter&apos;s latency timer should be 1 ms; or another user has number %2); the request was not sent</source>
+        <translation>der PC konnte dem Cam-BUS nicht beitreten: nach %1 Initialisierungsphasen gibt der Master dem Teilnehmer %2 noch immer kein Token (seine Antworten kommen vielleicht zu spät für den Bus: der Latenz-Timer eines USB-Adapters sollte 1 ms sein; oder ein anderer Teilnehmer hat die Nummer %2); die Anfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>device %1&apos;s receive queue stayed full for %2 s (it refused the request %3 times); the request was not sent</source>
+        <translation>die Empfangswarteschlange von Gerät %1 blieb %2 s lang voll (es hat die Anfrage %3-mal abgewiesen); die Anfrage wurde nicht gesendet</translation>
     </message>
 </context>
 <context>

@@ -1329,6 +1329,70 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::CamBusSettingsWidget</name>
+    <message>
+        <source>The number of the CamCon to talk to on the Cam-BUS (0–63).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This PC&apos;s own number on the Cam-BUS (0–63, usually 63). No other user of the bus (CamCon, display, another PC) may have it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::CamBusView</name>
+    <message>
+        <source>&lt;b&gt;Cam-BUS&lt;/b&gt; as this PC hears it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not on a Cam-BUS: connect with the Cam-BUS protocol to see its users and the token.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not live: nothing heard from the line for %1 s; the users below are the last ones heard.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Initialisation phase: the master searches the users (%n found so far).</source>
+        <translation>
+            <numerusform>Initialisation phase: the master searches the users (%n found so far).</numerusform>
+            <numerusform>Initialisation phase: the master searches the users (%n found so far).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Listening: no token heard yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n users · master %1 · token with %2 · %3 rounds/s</source>
+        <translation>
+            <numerusform>%n user · master %1 · token with %2 · %3 rounds/s</numerusform>
+            <numerusform>%n users · master %1 · token with %2 · %3 rounds/s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Initialisation phases heard since connecting: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>User %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>master: passes the token</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this PC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>does not answer (stays in the table until the next initialisation phase)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::CamConGui</name>
     <message>
         <source>CamCon %1, device number %2.</source>
@@ -3558,6 +3622,10 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     </message>
     <message>
         <source>%1, device number %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam-BUS (RS485 token bus)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7383,10 +7451,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>A bus scan needs the Multiuser protocol.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>CamCon, EPROM %1, device %2, %3 outputs, %4 programs</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7924,6 +7988,106 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>no Compax3 answered at any RS485 address 0..99</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sending a break on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A bus scan needs the Multiuser or the Cam-BUS protocol.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block holds 1 to 255 bytes, not %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block with LEN 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block whose checksum is %1, not %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block of %1 bytes holds no CamCon frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Cam-BUS block that does not start with ?, ! or : (0x%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a frame in a Cam-BUS block with checksum %1, not %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>user %1 answered its TO with %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>user %1 did not acknowledge the block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an initialisation phase began before user %1 acknowledged the block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>user %1 did not answer its TO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam-BUS device %1 (PC %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check that device %1 is on the Cam-BUS (scan lists its users), the RS485 wiring and 38400 baud, and that no other user has the PC&apos;s number %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs %2 bytes, more than a Cam-BUS block holds (255)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Cam-BUS traffic: no user passed the token in %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the PC (user %1) got no turn on the Cam-BUS in %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>device %1 did not take the request in %2 turns (%3); it was not executed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the request went to device %1 but was not acknowledged (%2); it may have been executed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Cam-BUS: users %1 get the token; which of them are CamCons, a scan tells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Cam-BUS token heard in %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Cam-BUS traffic in %1 s on %2: no user passes the token; %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamCon Cam-BUS (RS485 token bus)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the PC could not join the Cam-BUS: after %1 initialisation phases the master still passes user %2 no token (its answers may come too late for the bus: a USB adapter&apos;s latency timer should be 1 ms; or another user has number %2); the request was not sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>device %1&apos;s receive queue stayed full for %2 s (it refused the request %3 times); the request was not sent</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

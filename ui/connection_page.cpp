@@ -1,5 +1,7 @@
 #include "connection_page.h"
 
+#include <QCoreApplication>
+
 #include "device_session.h"
 #include "family_gui.h"
 #include "sentence.h"
@@ -12,6 +14,7 @@
 #include "comm/usecases/detect_device.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -346,7 +349,9 @@ QString ConnectionPage::protocolTitle(const comm::ProtocolInfo& info) {
     if (info.id == QLatin1String("multiuser")) return tr("Multiuser (RS485 bus)");
     if (info.id == QLatin1String("3964r-n96")) return tr("Table interface, 3964R n96 (9600 8N1)");
     if (info.id == QLatin1String("3964r-e38")) return tr("Table interface, 3964R e38 (38400 8E1)");
-    return info.title;
+    if (info.id == QLatin1String("cambus")) return tr("Cam-BUS (RS485 token bus)");
+    // Registered before any translator was installed: translated here.
+    return QCoreApplication::translate("cambench::comm", info.title.toUtf8().constData());
 }
 
 comm::ConnectionSettings ConnectionPage::connectionSettings() const {

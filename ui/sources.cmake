@@ -73,6 +73,10 @@ target_sources(cambench_ui PRIVATE
   camcon/protocols/ascii_settings_widget.cpp
   camcon/protocols/table_settings_widget.h
   camcon/protocols/table_settings_widget.cpp
+  camcon/cambus/cambus_settings_widget.h
+  camcon/cambus/cambus_settings_widget.cpp
+  camcon/cambus/cambus_view_widget.h
+  camcon/cambus/cambus_view_widget.cpp
   connection_page.h
   connection_page.cpp
   camcon/dead_times_model.h

@@ -279,7 +279,7 @@ QString usageText() {
                "  --baud N      line speed; overrides the protocol's default\n"
                "  --device N    bus protocols: device number 0..63 (default 0)\n"
                "  --address N   a drive's bus address (Compax3 on RS485: 0..99, compax3-rs485)\n"
-               "  --pc-number N Multiuser number of this PC 0..63 (default 63)\n"
+               "  --pc-number N this PC's number on a Multiuser bus or Cam-BUS 0..63 (default 63)\n"
                "  --variant V   the device's variant, for families that have them (see below);\n"
                "                auto (the default) probes and names what it found\n"
                "  --timeout MS  reply timeout per attempt (default: derived from the baud rate)\n"

@@ -1,5 +1,6 @@
 #include "gui_registry.h"
 
+#include "ui/camcon/cambus/cambus_settings_widget.h"
 #include "ui/camcon/camcon_gui.h"
 #include "ui/camcon/protocols/ascii_settings_widget.h"
 #include "ui/camcon/protocols/table_settings_widget.h"
@@ -16,6 +17,7 @@ void registerGuiParts() {
                 [](const QString&) { return new AsciiSettingsWidget(false); });
     widgets.add(QStringLiteral("multiuser"),
                 [](const QString&) { return new AsciiSettingsWidget(true); });
+    widgets.add(QStringLiteral("cambus"), [](const QString&) { return new CamBusSettingsWidget; });
     for (const char* id : {"3964r-n96", "3964r-e38"}) {
         widgets.add(QLatin1String(id),
                     [](const QString& protocol) { return new TableSettingsWidget(protocol); });

@@ -123,10 +123,9 @@ int main(int argc, char* argv[]) {
     const QString startProtocol = parser.value(protocol);
     if (!startProtocol.isEmpty() &&
         !cambench::comm::ProtocolRegistry::instance().find(startProtocol)) {
-        std::fprintf(stderr,
-                     "cambench: unknown protocol '%s'; use standard, multiuser, 3964r-n96 or "
-                     "3964r-e38.\n",
-                     qPrintable(startProtocol));
+        std::fprintf(stderr, "cambench: unknown protocol '%s'; use one of %s.\n",
+                     qPrintable(startProtocol),
+                     qPrintable(cambench::comm::ProtocolRegistry::instance().idList()));
         return 2;
     }
     cambench::Shell shell;

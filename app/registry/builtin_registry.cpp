@@ -1,6 +1,7 @@
 #include "builtin_registry.h"
 
 #include "comm/camcon/ascii/ascii_protocol.h"
+#include "comm/camcon/cambus/cambus_protocol.h"
 #include "comm/camcon/camcon_family.h"
 #include "comm/camcon/table/table_protocol.h"
 #include "comm/compax3/compax3_family.h"
@@ -30,6 +31,7 @@ void registerBuiltins() {
     comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
     comm::registerCamConAscii(protocols);
     comm::registerCamConTable(protocols);
+    comm::registerCamConCamBus(protocols);
     comm::registerMc1Protocol(protocols);
     comm::registerCompax3Protocol(protocols);
 

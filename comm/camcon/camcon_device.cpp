@@ -4,6 +4,15 @@
 
 namespace cambench::comm {
 
+Result<BusUsers> CamConDevice::scanUsers(const ProgressFn& progress) {
+    if (!has(CamConCapability::BusScan)) return missing(CamConCapability::BusScan);
+    const Result<QList<int>> found = scanBus(0, 63, progress);
+    if (!found) return found.error();
+    BusUsers users;
+    for (int number : *found) users.users << BusUser{number, BusUser::CamCon, false};
+    return users;
+}
+
 QString CamConDevice::lacks(CamConCapability capability) const {
     const QString ascii = QCoreApplication::translate(
         "cambench::comm", "the CamCon ASCII protocol (Standard or Multiuser)");
@@ -20,7 +29,8 @@ QString CamConDevice::lacks(CamConCapability capability) const {
                 .arg(ascii);
         case CamConCapability::BusScan:
             return QCoreApplication::translate("cambench::comm",
-                                               "A bus scan needs the Multiuser protocol.");
+                                               "A bus scan needs the Multiuser or the Cam-BUS "
+                                               "protocol.");
         case CamConCapability::Terminal:
             return QCoreApplication::translate("cambench::comm", "Typed requests exist only in %1.")
                 .arg(ascii);

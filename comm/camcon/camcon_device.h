@@ -28,7 +28,7 @@ class ShortClient;
 enum class CamConCapability {
     Users,               // users and rights: ASCII only
     EepromBackup,        // whole-EEPROM backup and restore (?EE/!EE): ASCII only
-    BusScan,             // device numbers on a bus: Multiuser
+    BusScan,             // device numbers on a bus: Multiuser, Cam-BUS
     Terminal,            // free-form requests typed by the user: ASCII
     OutputNames,         // output and program names: ASCII
     PlcNetworks,         // PLC links (?GMXSPS / data area 216)
@@ -37,6 +37,20 @@ enum class CamConCapability {
     EepromLock,          // EEPROM write lock, changes held in RAM: table interface
     ProgrammingProgram,  // a program other than the active one edited (DW70..73): table interface
     ShortCommands,       // the S7-CP340 coupling's short commands 0x01..0x07: table interface
+};
+
+// One user a bus scan found. Multiuser knows only CamCons (they answer);
+// a token bus (Cam-BUS) also knows displays and PCs, which get the token
+// but answer no CamCon command.
+struct BusUser {
+    enum Kind { CamCon, Other, ThisPc };
+    int number = 0;
+    Kind kind = CamCon;
+    bool silent = false;  // in the bus's table but answering nothing
+};
+struct BusUsers {
+    QList<BusUser> users;     // ascending
+    bool kindsKnown = false;  // the protocol tells CamCons from other users
 };
 
 // Everything the GUI and the CLI ask of a CamCon, whatever the protocol.
@@ -107,7 +121,9 @@ public:
     // On failure the message says whether the device is erased or partial.
     virtual Status restore(const EepromImage& image, const ProgressFn& progress = {}) = 0;
 
-    // scanBus() (DeviceConnection): Multiuser only; the others refuse it.
+    // scanBus() (DeviceConnection): Multiuser and Cam-BUS; the others refuse it.
+    // BusScan: the users on the bus; by default the CamCons scanBus() finds.
+    virtual Result<BusUsers> scanUsers(const ProgressFn& progress = {});
     // A request typed by the user; returns the reply as text.
     virtual Result<QByteArray> raw(const QByteArray& request) = 0;
 

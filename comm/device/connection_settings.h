@@ -13,6 +13,11 @@ struct SerialSettings {
     char flowControl = 'N';  // 'N' none, 'H' RTS/CTS, 'S' XON/XOFF
     bool dtr = true;         // failing to set DTR/RTS (pty) must not abort a connection
     bool rts = true;
+    // Breaks travel in the byte stream as PARMRK marks them (break_marks.h):
+    // a real port reads with PARMRK and turns a written FF 00 00 into a
+    // real break; a pseudo-terminal carries the marks as they are. Set by
+    // a protocol that needs breaks (Cam-BUS), not by the user.
+    bool inBandBreaks = false;
 };
 
 // How to reach the device. `port` is a device path or name (/dev/ttyUSB0,

@@ -27,6 +27,9 @@ struct ProtocolInfo {
     SerialSettings defaultSerial;
     bool isBus = false;  // devices are addressed by number (and may be scanned)
     int lastDevice = 0;  // a bus: the highest device number (CamCon Multiuser: 63)
+    // Its probe only listens (a token bus, whose users other protocols'
+    // bytes would disturb): Detect tries it before the others.
+    bool listeningProbe = false;
     std::function<std::unique_ptr<ProtocolSettings>()> makeSettings;
     // Opens the device connection over an open transport. `line` carries
     // the baud rate and character size the timeouts derive from.

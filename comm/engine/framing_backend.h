@@ -32,11 +32,13 @@ struct Incoming {
 // What the backend asks the engine to do after one of its calls.
 struct BackendStep {
     QByteArray write;          // bytes to send now (a frame, a 3964R DLE, ...)
+    bool quiet = false;        // `write` is bus housekeeping (a token answered): not logged
     bool sent = false;         // the request has left completely: its reply may come
     QString linkFailure;       // the link layer gave up on this attempt (3964R: no DLE)
     QList<Incoming> incoming;  // what completed in the bytes fed
 
     void append(BackendStep&& other) {
+        quiet = (write.isEmpty() || quiet) && (other.write.isEmpty() || other.quiet);
         write += other.write;
         sent = sent || other.sent;
         if (linkFailure.isEmpty()) linkFailure = other.linkFailure;
@@ -62,6 +64,9 @@ public:
     // that ends a frame whose end was damaged); set before every request.
     virtual void setLineTiming(const LineTiming& line) { Q_UNUSED(line); }
 
+    // A bus protocol addresses later requests to `device`; others ignore it.
+    virtual void setDevice(int device) { Q_UNUSED(device); }
+
     // "Standard", "Multiuser device 5", "3964R (n96)": for messages.
     virtual QString describe() const = 0;
     // Where to look when the device stays silent, as a clause:
@@ -86,6 +91,15 @@ public:
     // Drops a partly received frame (before a request, before a retry) and
     // returns its bytes for the log.
     virtual QByteArray resetInput() = 0;
+
+    // The line carries other users' bytes all the time (a token bus): a
+    // byte says nothing of our device, only its frames and its
+    // acknowledgement of our request (`sent`) do. The engine then keeps the
+    // line read between requests (RequestEngine::serveLine).
+    virtual bool carriesOtherTraffic() const { return false; }
+    // Time the bus adds before a reply can come, beyond the bytes (a token
+    // bus: the device answers at its next turn).
+    virtual int replyLatencyMs() const { return 0; }
 
     // The protocol answers a repeated request without executing it again
     // (CamCon Multiuser block numbers): every retry is then safe.

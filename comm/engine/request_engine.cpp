@@ -41,7 +41,8 @@ RequestEngine::Window RequestEngine::windowFor(const Request& request) const {
     LineTiming line = m_settings.line;
     if (request.turnaroundMs >= 0) line.turnaroundMs = request.turnaroundMs;
     const qint64 requestBytes = m_backend.requestWireBytes(request);
-    const int full = line.attemptMs(requestBytes, m_backend.replyWireBytes(request));
+    const int latency = m_backend.replyLatencyMs();
+    const int full = line.attemptMs(requestBytes, m_backend.replyWireBytes(request)) + latency;
     if (request.timeout == TimeoutClass::Long) {
         // A device that deduplicates is asked again every probeAfterMs; one
         // that does not is probed when a probe is known, else waited for.
@@ -52,7 +53,7 @@ RequestEngine::Window RequestEngine::windowFor(const Request& request) const {
     }
     if (m_settings.fixedTimeoutMs > 0 && request.turnaroundMs < 0)
         return {m_settings.fixedTimeoutMs, m_settings.fixedTimeoutMs};
-    return {std::min(full, line.firstByteMs(requestBytes)), full};
+    return {std::min(full, line.firstByteMs(requestBytes) + latency), full};
 }
 
 int RequestEngine::attemptTimeoutMs(const Request& request) const {
@@ -195,14 +196,18 @@ Result<RequestEngine::Attempt> RequestEngine::awaitAnswer(const Request& request
             return chunk.error();
         }
         if (!chunk->isEmpty()) {
-            m_lastHeardDevice = true;
             m_stats.bytesReceived += chunk->size();
-            if (sentAt >= 0) {
-                // A reply is arriving: it gets the time its longest form needs.
-                result.silent = false;
-                deadline = std::max(deadline, sentAt + window.fullMs);
+            BackendStep step = m_backend.feed(*chunk, now());
+            if (!m_backend.carriesOtherTraffic() || step.sent ||
+                std::any_of(step.incoming.cbegin(), step.incoming.cend(), couldBeAnswer)) {
+                m_lastHeardDevice = true;
+                if (sentAt >= 0) {
+                    // A reply is arriving: it gets the time its longest form needs.
+                    result.silent = false;
+                    deadline = std::max(deadline, sentAt + window.fullMs);
+                }
             }
-            const Status applied = apply(m_backend.feed(*chunk, now()), request, result, decided);
+            const Status applied = apply(std::move(step), request, result, decided);
             if (!applied) return applied.error();
             if (decided) return result;
         }
@@ -279,7 +284,7 @@ Result<RequestEngine::Probe> RequestEngine::probe(const Request& request) {
 Status RequestEngine::apply(BackendStep&& step, const Request& request, Attempt& attempt,
                             bool& decided) {
     if (!step.write.isEmpty()) {
-        report(step.write, true);
+        if (!step.quiet) report(step.write, true);
         const Status written = m_transport.write(step.write);
         if (!written) return written;
         m_stats.bytesSent += step.write.size();
@@ -340,7 +345,7 @@ Status RequestEngine::apply(BackendStep&& step, const Request& request, Attempt&
 
 Result<int> RequestEngine::consume(BackendStep&& step) {
     if (!step.write.isEmpty()) {
-        report(step.write, true);
+        if (!step.quiet) report(step.write, true);
         const Status written = m_transport.write(step.write);
         if (!written) return written.error();
         m_stats.bytesSent += step.write.size();

@@ -15,6 +15,8 @@ SimReplyScheduler::SimReplyScheduler(SimEndpoint& line, const SimPacer& pacer, W
     }
     connect(&m_timer, &QTimer::timeout, this, &SimReplyScheduler::flush);
     connect(&m_lineTimer, &QTimer::timeout, this, &SimReplyScheduler::pollLine);
+    // A line with a life of its own (a token bus) runs before the PC speaks.
+    arm();
 }
 
 void SimReplyScheduler::received(const QByteArray& bytes) {

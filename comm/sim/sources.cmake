@@ -17,6 +17,12 @@ target_sources(cambench_sim PRIVATE
   compax3/sim_compax3_line.cpp
   compax3/compax3_simulator.h
   compax3/compax3_simulator.cpp
+  camcon/cambus/sim_cambus_medium.h
+  camcon/cambus/sim_cambus_medium.cpp
+  camcon/cambus/sim_cambus_users.h
+  camcon/cambus/sim_cambus_users.cpp
+  camcon/cambus/sim_cambus_line.h
+  camcon/cambus/sim_cambus_line.cpp
   camcon/sim_axis.h
   camcon/sim_cam_handlers.cpp
   camcon/sim_cam_store.cpp

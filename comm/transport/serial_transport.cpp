@@ -6,7 +6,19 @@
 #include <QDeadlineTimer>
 #include <QSerialPort>
 
+#include "break_marks.h"
+
+#include <QFileInfo>
+#include <QThread>
+
 #include <algorithm>
+
+#ifdef Q_OS_LINUX
+#include <termios.h>
+#endif
+#ifdef Q_OS_UNIX
+#include <poll.h>
+#endif
 
 namespace cambench::comm {
 
@@ -142,6 +154,7 @@ Status SerialTransport::open() {
         m_port->clearError();
     }
     m_port->clear(QSerialPort::AllDirections);
+    enableBreakMarks();
     qCInfo(commSerialLog) << "opened" << description();
     return success();
 }
@@ -197,8 +210,78 @@ int SerialTransport::writeTimeoutMs(qint64 bytes) const {
     return int(std::min<qint64>(2 * wireMs + 1000, 600000));
 }
 
+bool SerialTransport::isPseudoTerminal() const {
+    // Unix98 pseudo-terminals (what socat and cambench-sim hand out).
+    return QFileInfo(m_portName).canonicalFilePath().startsWith(QLatin1String("/dev/pts/"));
+}
+
+void SerialTransport::enableBreakMarks() {
+    // A pseudo-terminal carries no breaks: the marks pass as bytes (P12).
+    m_realBreaks = false;
+    if (!m_settings.inBandBreaks || isPseudoTerminal()) return;
+#ifdef Q_OS_LINUX
+    termios tio{};
+    const int fd = int(m_port->handle());
+    if (fd >= 0 && tcgetattr(fd, &tio) == 0) {
+        // Breaks and bytes with a framing error read as FF 00 00 / FF 00 x,
+        // a data FF as FF FF; nothing is ignored or turned into a signal.
+        tio.c_iflag |= PARMRK | INPCK;
+        tio.c_iflag &= ~tcflag_t(IGNBRK | BRKINT | IGNPAR | ISTRIP);
+        if (tcsetattr(fd, TCSANOW, &tio) == 0) {
+            m_realBreaks = true;
+            qCInfo(commSerialLog) << "breaks marked in the input of" << m_portName;
+            return;
+        }
+    }
+#endif
+    qCWarning(commSerialLog) << "cannot mark breaks in the input of" << m_portName
+                             << "- a bus that needs breaks will not work on it";
+}
+
+bool SerialTransport::lineGone() {
+    const QSerialPort::SerialPortError error = m_port->error();
+    if (!isLineGone(error)) return false;
+    // QSerialPort also reports a read that found nothing (EAGAIN: its read
+    // notifier fired after a blocking wait had taken the bytes) as
+    // ResourceError or, with a stale errno, ReadError. Only a hang-up (a pty
+    // whose other end closed, an adapter gone) means the line is gone.
+    if (error != QSerialPort::ReadError && error != QSerialPort::ResourceError) return true;
+#ifdef Q_OS_UNIX
+    pollfd look{int(m_port->handle()), POLLIN, 0};
+    if (::poll(&look, 1, 0) >= 0 && !(look.revents & (POLLHUP | POLLERR | POLLNVAL))) {
+        qCDebug(commSerialLog) << "a read found nothing on" << m_portName << "- not a lost line";
+        m_port->clearError();
+        return false;
+    }
+#endif
+    return true;
+}
+
+Status SerialTransport::writeWithBreaks(const QByteArray& bytes) {
+    QByteArray pending = bytes;
+    // A break: the line at 0 for 2 character times, then idle for 2 (§8).
+    const int charUs = int(10 * 1000000LL / std::max(1, m_settings.baud));
+    for (const MarkedRead& piece : takeBreakMarked(pending)) {
+        if (piece.kind == MarkedRead::Data) {
+            if (const Status written = writeRaw(piece.data); !written) return written;
+            continue;
+        }
+        if (!m_port->setBreakEnabled(true))
+            return lose(QCoreApplication::translate("cambench::comm", "sending a break on"));
+        QThread::usleep(quint64(std::max(2 * charUs, 1000)));
+        m_port->setBreakEnabled(false);
+        QThread::usleep(quint64(2 * charUs));
+    }
+    return success();
+}
+
 Status SerialTransport::write(const QByteArray& bytes) {
     if (!isOpen()) return notOpenError();
+    if (m_realBreaks) return writeWithBreaks(bytes);
+    return writeRaw(bytes);
+}
+
+Status SerialTransport::writeRaw(const QByteArray& bytes) {
     if (m_port->write(bytes) != bytes.size())
         return lose(QCoreApplication::translate("cambench::comm", "writing to"));
     const int timeoutMs = writeTimeoutMs(bytes.size());
@@ -217,7 +300,7 @@ Status SerialTransport::write(const QByteArray& bytes) {
         }
         const int slice = int(std::min<qint64>(kSliceMs, deadline.remainingTime()));
         if (!m_port->waitForBytesWritten(slice)) {
-            if (isLineGone(m_port->error()))
+            if (lineGone())
                 return lose(QCoreApplication::translate("cambench::comm", "writing to"));
             m_port->clearError();
         }
@@ -231,15 +314,14 @@ Result<QByteArray> SerialTransport::read(int timeoutMs) {
     while (m_port->bytesAvailable() == 0) {
         const int slice = int(std::min<qint64>(kSliceMs, deadline.remainingTime()));
         if (!m_port->waitForReadyRead(slice)) {
-            if (isLineGone(m_port->error()))
+            if (lineGone())
                 return lose(QCoreApplication::translate("cambench::comm", "reading from"));
             m_port->clearError();
         }
         if (deadline.hasExpired()) break;
     }
     QByteArray bytes = m_port->readAll();
-    if (isLineGone(m_port->error()))
-        return lose(QCoreApplication::translate("cambench::comm", "reading from"));
+    if (lineGone()) return lose(QCoreApplication::translate("cambench::comm", "reading from"));
     return bytes;
 }
 

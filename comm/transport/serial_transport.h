@@ -32,11 +32,20 @@ private:
     Error lose(const QString& action);
     Error notOpenError() const;
     int writeTimeoutMs(qint64 bytes) const;
+    Status writeRaw(const QByteArray& bytes);
+    // SerialSettings::inBandBreaks on a real port: PARMRK on the input,
+    // FF 00 00 written as a real break.
+    void enableBreakMarks();
+    Status writeWithBreaks(const QByteArray& bytes);
+    bool isPseudoTerminal() const;
+    // The port's error means the line is gone (clears one that does not).
+    bool lineGone();
 
     QString m_portName;
     SerialSettings m_settings;
     std::unique_ptr<QSerialPort> m_port;
     QString m_lostMessage;
+    bool m_realBreaks = false;
 };
 
 // "8N1" and friends; empty when a value is out of range.

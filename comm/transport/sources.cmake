@@ -1,5 +1,7 @@
 target_sources(cambench_comm PRIVATE
   transport/transport.h
+  transport/break_marks.h
+  transport/break_marks.cpp
   transport/transport_logging.h
   transport/transport_logging.cpp
   transport/serial_transport.h

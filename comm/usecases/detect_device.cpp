@@ -4,6 +4,8 @@
 #include "comm/transport/transport_registry.h"
 #include "comm/worker/job.h"
 
+#include <algorithm>
+
 namespace cambench::usecases {
 
 QString lineText(const comm::SerialSettings& serial) {
@@ -24,6 +26,11 @@ QList<const comm::ProtocolInfo*> protocolsToTry() {
             if (protocol->familyId == family->id) protocols << protocol;
         }
     }
+    // Listening first: a running token bus hears nobody else's bytes before.
+    std::stable_sort(protocols.begin(), protocols.end(),
+                     [](const comm::ProtocolInfo* a, const comm::ProtocolInfo* b) {
+                         return a->listeningProbe && !b->listeningProbe;
+                     });
     return protocols;
 }
 

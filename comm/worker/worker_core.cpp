@@ -1,6 +1,7 @@
 #include "worker_core.h"
 
 #include <QCoreApplication>
+#include <QTimer>
 
 #include "worker_logging.h"
 
@@ -8,6 +9,11 @@
 #include "comm/transport/transport_registry.h"
 
 namespace cambench::comm {
+
+namespace {
+// How long one look at a bus line takes between jobs: a job waits at most this.
+constexpr int kServeSliceMs = 20;
+}  // namespace
 
 WorkerCore::WorkerCore(std::shared_ptr<JobQueue> queue) : m_queue(std::move(queue)) {}
 
@@ -35,7 +41,10 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
                      ProtocolRegistry::instance().idList()));
     }
     ConnectionSettings line = connection;
-    if (info) line.protocol = info->id;
+    if (info) {
+        line.protocol = info->id;
+        line.serial.inBandBreaks = info->defaultSerial.inBandBreaks;
+    }
     Result<std::unique_ptr<Transport>> transport =
         opened ? makeTransport(line) : Result<std::unique_ptr<Transport>>(opened.error());
     if (opened) opened = transport ? (*transport)->open() : Status(transport.error());
@@ -60,6 +69,27 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
     m_device->engine().setTrafficSink([this](const TrafficEntry& entry) { Q_EMIT traffic(entry); });
     qCInfo(commWorkerLog) << "connected to" << description;
     setState(ConnectionState::Connected, description);
+    scheduleLineService();
+}
+
+void WorkerCore::scheduleLineService() {
+    if (m_serviceScheduled || !m_device || !m_device->engine().backend().carriesOtherTraffic())
+        return;
+    m_serviceScheduled = true;
+    QTimer::singleShot(0, this, &WorkerCore::serveLine);
+}
+
+void WorkerCore::serveLine() {
+    m_serviceScheduled = false;
+    if (!m_device || !m_line.isOpen() || !m_device->engine().backend().carriesOtherTraffic())
+        return;
+    // A bus user answers the line between jobs too (Cam-BUS: its DIDs),
+    // or the bus waits on it and takes it for gone. Queued jobs run between
+    // these slices.
+    const Status served = m_device->engine().listen(kServeSliceMs);
+    if (!served) qCDebug(commWorkerLog) << "serving the line:" << served.error().message;
+    checkLine();
+    scheduleLineService();
 }
 
 void WorkerCore::disconnectFromDevice() {
@@ -100,6 +130,7 @@ void WorkerCore::runNextJob() {
     qCDebug(commWorkerLog) << "job" << id << "finished";
     Q_EMIT jobFinished(id);
     checkLine();
+    scheduleLineService();
 }
 
 }  // namespace cambench::comm

@@ -35,12 +35,17 @@ Q_SIGNALS:
 private:
     void setState(ConnectionState state, const QString& message);
     void checkLine();
+    // Keeps a line that carries other users' traffic (a token bus) answered
+    // while no job runs.
+    void scheduleLineService();
+    void serveLine();
 
     std::shared_ptr<JobQueue> m_queue;
     GuardedTransport m_line;
     std::unique_ptr<DeviceConnection> m_device;
     quint64 m_lineChangesDone = 0;  // connect, disconnect and device changes carried out
     ConnectionState m_state = ConnectionState::Disconnected;
+    bool m_serviceScheduled = false;
 };
 
 }  // namespace cambench::comm

@@ -22,3 +22,7 @@ cambench_add_test(tst_mc1_device SOURCES comm/mc1/tst_mc1_device.cpp LIBS camben
 include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/mc1_decoder.cmake)
 cambench_add_test(tst_compax3_drive SOURCES comm/compax3/tst_compax3_drive.cpp LIBS cambench_sim cambench_usecases)
 include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/compax3_reply.cmake)
+cambench_add_test(tst_cambus_block SOURCES comm/cambus/tst_cambus_block.cpp LIBS cambench_comm)
+cambench_add_test(tst_cambus_bus SOURCES comm/cambus/tst_cambus_bus.cpp LIBS cambench_sim)
+cambench_add_test(tst_cambus_camcon SOURCES comm/cambus/tst_cambus_camcon.cpp LIBS cambench_sim)
+include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/cambus_station.cmake)

@@ -10,9 +10,14 @@ QStringList SimSession::protocolArgs() const {
 }
 
 bool SimSession::start(const QStringList& simArgs) {
-    return m_dir.isValid() &&
-           m_sim.start(QStringList{QStringLiteral("--baud"), kFastBaud} + protocolArgs() + simArgs,
-                       m_dir.filePath(QStringLiteral("sim-stderr.log")));
+    QStringList busArgs;
+    // The bus waits 10 ms for the PC's answers; a loaded test machine (two
+    // test processes, sanitizers) can take longer to schedule the cli.
+    if (m_protocol == QLatin1String("cambus"))
+        busArgs = {QStringLiteral("--pc-answer-ms"), QStringLiteral("60")};
+    return m_dir.isValid() && m_sim.start(QStringList{QStringLiteral("--baud"), kFastBaud} +
+                                              protocolArgs() + busArgs + simArgs,
+                                          m_dir.filePath(QStringLiteral("sim-stderr.log")));
 }
 
 CliRun SimSession::cli(const QStringList& args, int timeoutMs) const {

@@ -22,6 +22,17 @@ if(TARGET cambench)
   target_compile_definitions(tst_e2e_cli PRIVATE CAMBENCH_GUI_EXE="$<TARGET_FILE:cambench>")
   add_dependencies(tst_e2e_cli cambench)
 endif()
+# The same suite over the Cam-BUS (its protocol rows and its own cases) as a
+# test of its own: every cli run joins the simulated bus (an
+# initialisation phase), which under the sanitizers takes longer than the
+# point-to-point rows all together.
+add_test(NAME tst_e2e_cli_cambus COMMAND tst_e2e_cli
+  infoPrintsIdentityAndCapacities infoJsonIsAnObject camsEditRoundTrip
+  camsWriteRejectsOverlapAndLeavesDeviceUntouched deadTimesRoundTrip settingsChangeOneValue
+  plcRoundTrip camBusScanListsEveryUser camBusDeviceOptionReachesThatDevice
+  camBusBackupRestoreVerify)
+set_tests_properties(tst_e2e_cli_cambus PROPERTIES TIMEOUT 1200
+  ENVIRONMENT "QT_QPA_PLATFORM=offscreen;CAMBENCH_E2E_CAMBUS=1")
 cambench_add_e2e_test(tst_e2e_eeprom e2e/tst_e2e_eeprom.cpp)
 cambench_add_e2e_test(tst_e2e_faults e2e/tst_e2e_faults.cpp)
 cambench_add_e2e_test(tst_e2e_line e2e/tst_e2e_line.cpp)

@@ -14,7 +14,25 @@ namespace {
 
 // The rows of a test that runs once per CamCon protocol: the simulator and
 // the cli speak it (SimSession).
+// Cam-BUS runs as a test of its own (tst_e2e_cli_cambus in tests.cmake:
+// this executable with CAMBENCH_E2E_CAMBUS set): its rows and cases there,
+// the point-to-point rows here.
+bool camBusRun() {
+    return qEnvironmentVariableIsSet("CAMBENCH_E2E_CAMBUS");
+}
+
 void protocolRows() {
+    QTest::addColumn<QString>("protocol");
+    if (camBusRun()) {
+        QTest::newRow("cambus") << QStringLiteral("cambus");
+        return;
+    }
+    for (const char* protocol : {"standard", "3964r-n96", "3964r-e38"})
+        QTest::newRow(protocol) << QString::fromLatin1(protocol);
+}
+
+// The point-to-point ones only.
+void pointToPointRows() {
     QTest::addColumn<QString>("protocol");
     for (const char* protocol : {"standard", "3964r-n96", "3964r-e38"})
         QTest::newRow(protocol) << QString::fromLatin1(protocol);
@@ -46,8 +64,11 @@ private Q_SLOTS:
     void plcRoundTrip();
     void multiuserScanListsExactlyTheDevices();
     void multiuserDeviceOptionReachesThatDevice();
-    void scanNeedsMultiuser_data() { protocolRows(); }
+    void scanNeedsMultiuser_data() { pointToPointRows(); }
     void scanNeedsMultiuser();
+    void camBusScanListsEveryUser();
+    void camBusDeviceOptionReachesThatDevice();
+    void camBusBackupRestoreVerify();
     void usageErrorsExitTwoWithUsage();
     void familyOptionNamesTheFamilies();
     void rawPrintsReplyBody();
@@ -336,6 +357,55 @@ void TestE2eCli::multiuserDeviceOptionReachesThatDevice() {
     QVERIFY(run.out.contains(QLatin1String("deviceNumber: 5\n")));
     const CliRun absent = session.cliMultiuser({"--device", "7", "--timeout", "100", "info"});
     VERIFY_EXIT(absent, 3);
+}
+
+void TestE2eCli::camBusScanListsEveryUser() {
+    if (!camBusRun()) QSKIP("run by tst_e2e_cli_cambus");
+    SimSession session(QStringLiteral("cambus"));
+    START_SIM(session, {"--devices", "3,7", "--display", "12"});
+    const CliRun run = session.cli({"scan"});
+    VERIFY_EXIT(run, 0);
+    QCOMPARE(run.out, QStringLiteral("3: CamCon\n7: CamCon\n12: other\n63: this PC\n"));
+    const CliRun json = session.cli({"--pc-number", "40", "scan", "--json"});
+    VERIFY_EXIT(json, 0);
+    const QJsonArray users = QJsonDocument::fromJson(json.out.toUtf8()).array();
+    QCOMPARE(users.size(), 4);
+    QCOMPARE(users.at(2).toObject().value(QStringLiteral("number")).toInt(), 12);
+    QCOMPARE(users.at(2).toObject().value(QStringLiteral("kind")).toString(),
+             QStringLiteral("other"));
+    QCOMPARE(users.at(3).toObject().value(QStringLiteral("number")).toInt(), 40);
+    QCOMPARE(users.at(3).toObject().value(QStringLiteral("kind")).toString(),
+             QStringLiteral("this PC"));
+}
+
+void TestE2eCli::camBusDeviceOptionReachesThatDevice() {
+    if (!camBusRun()) QSKIP("run by tst_e2e_cli_cambus");
+    SimSession session(QStringLiteral("cambus"));
+    START_SIM(session, {"--devices", "3,7", "--display", "12"});
+    const CliRun run = session.cli({"--device", "7", "info"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY(run.out.contains(QLatin1String("deviceNumber: 7\n")));
+    QVERIFY(run.out.contains(QLatin1String("protocol: 0\n")));  // Ser.mode Cam-BUS
+    // Nobody has number 5: its TO stays unanswered, nothing was executed.
+    const CliRun absent = session.cli({"--device", "5", "info"});
+    VERIFY_EXIT(absent, 3);
+    QVERIFY2(absent.err.contains(QLatin1String("device 5 did not take the request")),
+             qPrintable(absent.err));
+}
+
+void TestE2eCli::camBusBackupRestoreVerify() {
+    if (!camBusRun()) QSKIP("run by tst_e2e_cli_cambus");
+    SimSession session(QStringLiteral("cambus"));
+    START_SIM(session, {"--devices", "3,7", "--display", "12"});
+    const QString image = session.path(QStringLiteral("seven.json"));
+    VERIFY_EXIT(session.cli({"--device", "7", "backup", "-o", image}), 0);
+    // Device 3 gets 7's EEPROM; then it equals the file.
+    const CliRun differs = session.cli({"--device", "3", "verify", image});
+    QVERIFY2(differs.exitCode == 1, describe(differs).constData());
+    const CliRun restored =
+        session.cli({"--device", "3", "restore", image, "--force", "--no-safety-backup"});
+    VERIFY_EXIT(restored, 0);
+    VERIFY_EXIT(session.cli({"--device", "3", "verify", image}), 0);
 }
 
 void TestE2eCli::scanNeedsMultiuser() {

@@ -28,10 +28,27 @@ private Q_SLOTS:
         const QJsonObject root = QJsonDocument::fromJson(json.out.toUtf8()).object();
         QCOMPARE(root.value(QStringLiteral("found")).toObject().value(QStringLiteral("protocol")),
                  QJsonValue(QStringLiteral("3964r-n96")));
-        // Standard and Multiuser were tried first and did not answer.
+        // Cam-BUS (listening only), Standard and Multiuser were tried first
+        // and did not answer.
         const QJsonArray attempts = root.value(QStringLiteral("attempts")).toArray();
-        QCOMPARE(attempts.size(), 3);
+        QCOMPARE(attempts.size(), 4);
+        QCOMPARE(attempts.at(0).toObject().value(QStringLiteral("protocol")),
+                 QJsonValue(QStringLiteral("cambus")));
         QVERIFY(attempts.at(0).toObject().contains(QStringLiteral("failure")));
+    }
+
+    // A Cam-BUS is found by listening: no byte is sent to it. The simulated
+    // bus forms by itself (silence, then an initialisation phase): Detect
+    // started at once waits that out.
+    void findsACamBusByListening() {
+        SimSession session(QStringLiteral("cambus"));
+        START_SIM(session, {"--devices", "3,7", "--display", "12"});
+        const CliRun run = runCli({"--port", session.ptyPath(), "detect"});
+        VERIFY_EXIT(run, 0);
+        QVERIFY2(run.out.startsWith(QLatin1String("camcon: a Cam-BUS: users 3, 7, 12 get the "
+                                                  "token")),
+                 describe(run));
+        QVERIFY2(run.out.contains(QLatin1String("(cambus, 38400 baud 8N1)")), describe(run));
     }
 
     void findsAMultiuserDeviceAtTheNumberGiven() {

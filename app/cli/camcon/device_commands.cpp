@@ -39,6 +39,18 @@ QString errorStateText(int state) {
     }
 }
 
+QString busUserKindText(comm::BusUser::Kind kind) {
+    switch (kind) {
+        case comm::BusUser::CamCon:
+            return QStringLiteral("CamCon");
+        case comm::BusUser::ThisPc:
+            return QStringLiteral("this PC");
+        case comm::BusUser::Other:
+            break;
+    }
+    return QStringLiteral("other");
+}
+
 }  // namespace
 
 int runInfo(CliSession& session, CommandArgs& args) {
@@ -92,23 +104,41 @@ int runScan(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
     if (!session.options().isBus()) {
-        return reportError(
-            Error::usage(QStringLiteral("scan needs a bus protocol; add --protocol multiuser")));
+        return reportError(Error::usage(
+            QStringLiteral("scan needs a bus protocol; add --protocol multiuser (or cambus)")));
     }
     session.setShowProgress(true);
-    const Result<QList<int>> found =
-        runOnCamCon<QList<int>>(session, QStringLiteral("scan"),
-                                [](CamConDevice& device, JobContext& job) -> Result<QList<int>> {
-                                    if (!device.has(comm::CamConCapability::BusScan))
-                                        return device.missing(comm::CamConCapability::BusScan);
-                                    return device.scanBus(0, 63, [&job](qint64 done, qint64 total) {
-                                        job.progress(done, total, QStringLiteral("scanning"));
-                                    });
-                                });
+    const Result<comm::BusUsers> found = runOnCamCon<comm::BusUsers>(
+        session, QStringLiteral("scan"),
+        [](CamConDevice& device, JobContext& job) -> Result<comm::BusUsers> {
+            return device.scanUsers([&job](qint64 done, qint64 total) {
+                job.progress(done, total, QStringLiteral("scanning"));
+            });
+        });
     if (!found) return reportError(found.error());
-    if (json) return printJson(QJsonDocument(jsonNumbers(*found)));
+    if (!found->kindsKnown) {
+        // Multiuser: the CamCons that answered, one number a line.
+        QList<int> numbers;
+        for (const comm::BusUser& user : found->users) numbers << user.number;
+        if (json) return printJson(QJsonDocument(jsonNumbers(numbers)));
+        QString text;
+        for (int device : numbers) text += QStringLiteral("%1\n").arg(device);
+        printOut(text);
+        return ExitOk;
+    }
+    // A token bus: every user, "3: CamCon", "12: other", "63: this PC".
+    QJsonArray users;
     QString text;
-    for (int device : *found) text += QStringLiteral("%1\n").arg(device);
+    for (const comm::BusUser& user : found->users) {
+        const QString kind = busUserKindText(user.kind);
+        QJsonObject entry{{QStringLiteral("number"), user.number}, {QStringLiteral("kind"), kind}};
+        if (user.silent) entry.insert(QStringLiteral("silent"), true);
+        users.append(entry);
+        text += QStringLiteral("%1: %2%3\n")
+                    .arg(user.number)
+                    .arg(kind, user.silent ? QStringLiteral(" (silent)") : QString());
+    }
+    if (json) return printJson(QJsonDocument(users));
     printOut(text);
     return ExitOk;
 }

@@ -26,7 +26,7 @@ public:
 
     Framing framing() const { return m_framing; }
     int device() const { return m_device; }
-    void setDevice(int device);
+    void setDevice(int device) override;
     int pcNumber() const { return m_pcNumber; }
     // The block number the next request to `device` takes.
     int nextBlock(int device) const { return m_nextBlock[clampNumber(device)]; }

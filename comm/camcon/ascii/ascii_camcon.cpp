@@ -12,6 +12,9 @@ AsciiCamCon::AsciiCamCon(Transport& transport, const AsciiSettings& settings,
 
 AsciiCamCon::AsciiCamCon(AsciiLink& link) : m_link(link) {}
 
+AsciiCamCon::AsciiCamCon(std::unique_ptr<AsciiLink> link)
+    : m_ownLink(std::move(link)), m_link(*m_ownLink) {}
+
 AsciiCamCon::~AsciiCamCon() = default;
 
 QString AsciiCamCon::protocolId() const {

@@ -18,6 +18,8 @@ public:
     AsciiCamCon(Transport& transport, const AsciiSettings& settings, const LineTiming& line);
     // Uses a link owned by the caller (tests, the benchmark).
     explicit AsciiCamCon(AsciiLink& link);
+    // Owns `link` (another transport framing, Cam-BUS).
+    explicit AsciiCamCon(std::unique_ptr<AsciiLink> link);
     ~AsciiCamCon() override;
 
     AsciiLink& link() { return m_link; }

@@ -90,10 +90,17 @@ Verdict judgeUnrelated(bool multiuser, QString& problem) {
 }  // namespace
 
 AsciiLink::AsciiLink(Transport& transport, AsciiSettings settings, LineTiming line)
+    : AsciiLink(
+          transport, settings, line,
+          std::make_unique<AsciiBackend>(settings.framing, settings.device, settings.pcNumber)) {}
+
+AsciiLink::AsciiLink(Transport& transport, AsciiSettings settings, LineTiming line,
+                     std::unique_ptr<FramingBackend> backend)
     : m_settings(settings),
       m_line(line),
-      m_backend(settings.framing, settings.device, settings.pcNumber),
-      m_engine(transport, m_backend) {
+      m_backend(std::move(backend)),
+      m_ascii(dynamic_cast<AsciiBackend*>(m_backend.get())),
+      m_engine(transport, *m_backend) {
     applySettings();
 }
 
@@ -108,7 +115,7 @@ void AsciiLink::applySettings() {
 
 void AsciiLink::setDevice(int device) {
     m_settings.device = AsciiBackend::clampNumber(device);
-    m_backend.setDevice(device);
+    m_backend->setDevice(device);
 }
 
 void AsciiLink::setTimeout(int ms) {
@@ -183,7 +190,7 @@ Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fi
 
 Status AsciiLink::ensureBlockSync() {
     if (m_settings.framing != Framing::Multiuser || !m_settings.syncBlockNumbers) return success();
-    const int device = m_backend.device();
+    const int device = m_settings.device;
     if (m_synced[device]) return success();
     m_synced[device] = true;
     // The device may have seen this run's first block number last (an
@@ -204,7 +211,7 @@ Status AsciiLink::ensureBlockSync() {
 
 Result<bool> AsciiLink::ping(int device, int block, int turnaroundMs) {
     setDevice(device);
-    m_backend.setNextBlock(device, block);
+    if (m_ascii) m_ascii->setNextBlock(device, block);
     const CommandSpec* unit = findCommand(kQuery, "UNIT");
     Result<Request> made = makeRequest(*unit, {}, m_settings.timeoutMs, nullptr);
     if (!made) return made.error();
@@ -217,7 +224,7 @@ Result<bool> AsciiLink::ping(int device, int block, int turnaroundMs) {
     request.judge = {};
     const Result<QByteArray> reply = m_engine.send(request);
     if (reply) {
-        m_synced[m_backend.device()] = true;
+        m_synced[m_settings.device] = true;
         return true;
     }
     if (reply.error().kind == ErrorKind::Communication) return false;
@@ -244,7 +251,7 @@ Result<Fields> AsciiLink::call(const CommandSpec& spec, const Fields& fields, in
         const Status synced = ensureBlockSync();
         if (!synced) return synced.error();
     } else {
-        m_synced[m_backend.device()] = true;
+        m_synced[m_settings.device] = true;
     }
     ReplyMatch match;
     Result<Request> request = makeRequest(spec, fields, timeoutMs, &match);

@@ -37,6 +37,11 @@ struct AsciiSettings {
 class AsciiLink {
 public:
     AsciiLink(Transport& transport, AsciiSettings settings, LineTiming line = {});
+    // The same commands in another transport framing (Cam-BUS: a block on a
+    // token bus): `backend` frames the requests, `settings.framing` stays
+    // Standard (no block numbers; retries as the commands allow).
+    AsciiLink(Transport& transport, AsciiSettings settings, LineTiming line,
+              std::unique_ptr<FramingBackend> backend);
 
     const AsciiSettings& settings() const { return m_settings; }
     void setDevice(int device);
@@ -76,7 +81,7 @@ public:
     const Stats& stats() const { return m_engine.stats(); }
     void resetStats() { m_engine.resetStats(); }
     RequestEngine& engine() { return m_engine; }
-    const AsciiBackend& backend() const { return m_backend; }
+    FramingBackend& backend() { return *m_backend; }
 
     // The per-attempt timeout `spec` would get (for tests and messages).
     int attemptTimeoutMs(const CommandSpec& spec, const Fields& fields = {});
@@ -89,7 +94,8 @@ private:
 
     AsciiSettings m_settings;
     LineTiming m_line;
-    AsciiBackend m_backend;
+    std::unique_ptr<FramingBackend> m_backend;  // an AsciiBackend unless another was given
+    AsciiBackend* m_ascii = nullptr;            // m_backend when it is an AsciiBackend
     RequestEngine m_engine;
     bool m_synced[64] = {};
 };

@@ -65,6 +65,22 @@ QList<QCommandLineOption> camConOptions() {
          QStringLiteral("n users \"User 01\", \"User 02\", ... instead of the demo's two "
                         "(at most 32)."),
          QStringLiteral("n")},
+        {QStringLiteral("display"),
+         QStringLiteral("Cam-BUS: display users with these numbers, e.g. 12,13; the first polls "
+                        "the first device, the second the second, ..."),
+         QStringLiteral("list")},
+        {QStringLiteral("pc-answer-ms"),
+         QStringLiteral("Cam-BUS: how long the simulated users wait for the PC's answers "
+                        "(default 10 ms as the bus's timing; more on a loaded test machine)."),
+         QStringLiteral("ms")},
+        {QStringLiteral("silent-after"),
+         QStringLiteral("Cam-BUS: the --dead-devices answer until then (ms after the start) and "
+                        "fall silent (a user that drops off the bus)."),
+         QStringLiteral("ms")},
+        {QStringLiteral("reinit-after"),
+         QStringLiteral("Cam-BUS: a second initialisation phase this long after the start (the "
+                        "first device breaks in)."),
+         QStringLiteral("ms")},
         {QStringLiteral("dead-devices"),
          QStringLiteral("These devices of the line never answer, e.g. 5 (the others do)."),
          QStringLiteral("list")},
@@ -81,8 +97,8 @@ Result<SimulatedLine> fromOptions(const QCommandLineParser& parser, const SimHos
     config.faults = shared.faults;
     config.throttle = shared.throttle;
     if (!shared.protocol.isEmpty() && !applySimProtocol(config, shared.protocol)) {
-        return optionError(QStringLiteral("--protocol must be standard, multiuser, 3964r-n96 or "
-                                          "3964r-e38, not \"%1\".")
+        return optionError(QStringLiteral("--protocol must be standard, multiuser, 3964r-n96, "
+                                          "3964r-e38 or cambus, not \"%1\".")
                                .arg(shared.protocol));
     }
     if (parser.isSet(QStringLiteral("devices"))) {
@@ -136,6 +152,31 @@ Result<SimulatedLine> fromOptions(const QCommandLineParser& parser, const SimHos
             return optionError(
                 QStringLiteral("--%1 needs a whole number of 0 or more.").arg(QLatin1String(name)));
         (QByteArray(name) == "fill" ? config.fill : config.users) = n;
+    }
+    if (parser.isSet(QStringLiteral("display"))) {
+        const Result<QList<int>> displays =
+            parseDeviceList(parser.value(QStringLiteral("display")));
+        bool clash = false;
+        for (int number : displays ? *displays : QList<int>())
+            clash |= config.devices.contains(number);
+        if (!displays || clash || !config.camBus)
+            return optionError(QStringLiteral(
+                "--display needs --protocol cambus and user numbers 0..63 that no device has."));
+        config.displays = *displays;
+    }
+    if (parser.isSet(QStringLiteral("pc-answer-ms"))) {
+        config.pcAnswerMs = parser.value(QStringLiteral("pc-answer-ms")).toInt(&ok);
+        if (!ok || config.pcAnswerMs < 1 || config.pcAnswerMs > 1000 || !config.camBus)
+            return optionError(
+                QStringLiteral("--pc-answer-ms needs --protocol cambus and 1..1000 ms."));
+    }
+    for (const char* name : {"silent-after", "reinit-after"}) {
+        if (!parser.isSet(QLatin1String(name))) continue;
+        const int ms = parser.value(QLatin1String(name)).toInt(&ok);
+        if (!ok || ms < 0 || !config.camBus)
+            return optionError(QStringLiteral("--%1 needs --protocol cambus and milliseconds.")
+                                   .arg(QLatin1String(name)));
+        (QByteArray(name) == "silent-after" ? config.silentAfterMs : config.reinitAfterMs) = ms;
     }
     if (parser.isSet(QStringLiteral("dead-devices"))) {
         Result<QList<int>> dead = parseDeviceList(parser.value(QStringLiteral("dead-devices")));

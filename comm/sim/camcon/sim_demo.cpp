@@ -1,5 +1,7 @@
 #include "sim_demo.h"
 
+#include "cambus/sim_cambus_line.h"
+
 #include "sim_device.h"
 #include "sim_line.h"
 
@@ -93,7 +95,10 @@ namespace {
 // The profile `config` asks for: protocol number and room for its cams.
 SimProfile sizedProfile(const SimPortConfig& config, const SimProfile& profile) {
     SimProfile sized = profile;
-    sized.protocol = config.tableVariant                               ? 4
+    // The device's "Ser.mode" (table interface DW11): 0 Cam-BUS, 1
+    // Standard, 2 Multiuser, 4 3964R.
+    sized.protocol = config.camBus                                     ? 0
+                     : config.tableVariant                             ? 4
                      : config.effectiveFraming() == Framing::Multiuser ? 2
                                                                        : 1;
     sized.camCapacity =
@@ -122,6 +127,22 @@ std::unique_ptr<SimLine> makeSimLine(const SimPortConfig& config, const SimProfi
 
 std::unique_ptr<SimCamConEndpoint> makeSimEndpoint(const SimPortConfig& config,
                                                    const SimProfile& profile) {
+    if (config.camBus) {
+        std::vector<std::unique_ptr<SimDevice>> devices;
+        for (int number : config.devices) devices.push_back(makeDevice(config, profile, number));
+        SimCamBusLine::Setup setup;
+        setup.baud = config.baud;
+        setup.displays = config.displays;
+        setup.pcAnswerMs = config.pcAnswerMs;
+        setup.silentFromMs = config.silentAfterMs;
+        setup.reinitAtMs = config.reinitAfterMs;
+        setup.silent = config.deadDevices;
+        if (config.faults.dead) setup.silent = config.devices;
+        setup.faults.damageBlock = config.faults.corruptProbability;
+        setup.faults.loseAck = config.faults.dropProbability;
+        setup.faults.seed = config.faults.seed;
+        return std::make_unique<SimCamBusLine>(std::move(devices), setup, 0);
+    }
     if (!config.tableVariant) return makeSimLine(config, profile);
     auto line = std::make_unique<SimTableLine>(
         *config.tableVariant, makeDevice(config, profile, config.devices.value(0)));

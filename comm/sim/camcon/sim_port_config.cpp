@@ -8,7 +8,8 @@ namespace {
 
 const QString kPrefix = QStringLiteral("sim");
 const QString kKeys = QStringLiteral(
-    "devices, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, lostdle, collision, "
+    "devices, display, pcanswer, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, "
+    "lostdle, collision, "
     "linkfaults, "
     "delay, seed, throttle, fill, users, dead");
 
@@ -42,6 +43,14 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
             return Error::usage(
                 QStringLiteral("Simulator port \"%1\": %2").arg(port, devices.error().message));
         config.devices = *devices;
+    } else if (key == QLatin1String("display")) {
+        Result<QList<int>> displays = parseDeviceList(value);
+        if (!displays) return badValue(port, key, value, QStringLiteral("user numbers 0..63"));
+        config.displays = *displays;
+    } else if (key == QLatin1String("pcanswer")) {
+        config.pcAnswerMs = value.toInt(&ok);
+        if (!ok || config.pcAnswerMs < 1 || config.pcAnswerMs > 1000)
+            return badValue(port, key, value, QStringLiteral("milliseconds 1..1000"));
     } else if (key == QLatin1String("framing")) {
         if (value == QLatin1String("standard")) {
             config.framing = Framing::Standard;
@@ -53,7 +62,7 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
     } else if (key == QLatin1String("protocol")) {
         if (!applySimProtocol(config, value)) {
             return badValue(port, key, value,
-                            QStringLiteral("standard, multiuser, 3964r-n96 or 3964r-e38"));
+                            QStringLiteral("standard, multiuser, 3964r-n96, 3964r-e38 or cambus"));
         }
     } else if (key == QLatin1String("baud")) {
         config.baud = value.toInt(&ok);
@@ -102,13 +111,19 @@ int SimPortConfig::bitsPerByte() const {
 }
 
 QString SimPortConfig::protocolName() const {
+    if (camBus) return QStringLiteral("Cam-BUS");
     if (tableVariant) return QLatin1String(table::rk512VariantInfo(*tableVariant).name);
     return effectiveFraming() == Framing::Multiuser ? QStringLiteral("Multiuser")
                                                     : QStringLiteral("Standard");
 }
 
 bool applySimProtocol(SimPortConfig& config, const QString& protocol) {
-    if (protocol == QLatin1String("standard") || protocol == QLatin1String("multiuser")) {
+    config.camBus = false;
+    if (protocol == QLatin1String("cambus")) {
+        config.camBus = true;
+        config.framing = Framing::Multiuser;  // several devices, each with its number
+        config.tableVariant.reset();
+    } else if (protocol == QLatin1String("standard") || protocol == QLatin1String("multiuser")) {
         config.framing =
             protocol == QLatin1String("multiuser") ? Framing::Multiuser : Framing::Standard;
         config.tableVariant.reset();

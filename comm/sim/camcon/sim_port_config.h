@@ -22,6 +22,12 @@ struct SimPortConfig {
     std::optional<Framing> framing;  // unset: Multiuser if more than one device
     // Set: the device speaks the table interface (3964R/RK512) instead of ASCII.
     std::optional<table::Rk512Variant> tableVariant;
+    // The devices are users of a Cam-BUS (token bus) instead.
+    bool camBus = false;
+    QList<int> displays;     // Cam-BUS: display users; the i-th polls the i-th device
+    int pcAnswerMs = 10;     // Cam-BUS: how long the simulated users wait for the PC (P11: 10)
+    int silentAfterMs = 0;   // Cam-BUS: the dead devices fall silent then (0: from the start)
+    int reinitAfterMs = -1;  // Cam-BUS: >= 0: a second initialisation phase then
     int baud = 9600;
     bool throttle = true;  // false: bytes arrive at once
     int fill = 0;          // > 0: benchmark cams per track instead of the demo cams
@@ -38,17 +44,16 @@ struct SimPortConfig {
     QString protocolName() const;
 };
 
-// Sets the framing or table variant of a registry id ("standard",
-// "multiuser", "3964r-n96", "3964r-e38"); false for another id.
+// Sets the framing, table variant or Cam-BUS of a registry id ("standard",
+// "multiuser", "3964r-n96", "3964r-e38", "cambus"); false for another id.
 bool applySimProtocol(SimPortConfig& config, const QString& protocol);
 
-// Keys: devices, framing (standard|multiuser), protocol (standard|multiuser|
-// 3964r-n96|3964r-e38), baud, corrupt (damaged replies), drop (lost
-// replies), ignore (lost requests), dropfirst (the first reply to a request
-// starting so is lost, e.g. !EE0000), nak, lostdle, collision, linkfaults
-// (corrupt, nak, lostdle and collision at once), delay, seed,
-// throttle (0|1), fill, dead (0|1). The baud rate defaults to
-// `serial.baud`. Fails with Usage on an unknown key or a bad value.
+// Keys: devices, display and pcanswer (Cam-BUS), framing (standard|multiuser), protocol
+// (standard|multiuser| 3964r-n96|3964r-e38), baud, corrupt (damaged replies), drop (lost replies),
+// ignore (lost requests), dropfirst (the first reply to a request starting so is lost, e.g.
+// !EE0000), nak, lostdle, collision, linkfaults (corrupt, nak, lostdle and collision at once),
+// delay, seed, throttle (0|1), fill, dead (0|1). The baud rate defaults to `serial.baud`. Fails
+// with Usage on an unknown key or a bad value.
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);
 
 // Device numbers "0,5" -> {0, 5}; each 0..63, no duplicates.

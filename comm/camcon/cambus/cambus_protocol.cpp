@@ -1,0 +1,72 @@
+#include "cambus_protocol.h"
+
+#include "cambus_camcon.h"
+
+#include <QCoreApplication>
+
+namespace cambench::comm {
+
+namespace {
+
+QString camBusId() {
+    return QStringLiteral("cambus");
+}
+
+}  // namespace
+
+CamBusProtocolSettings::CamBusProtocolSettings() {
+    ascii.pcNumber = kCamBusDefaultPcNumber;
+}
+
+QString CamBusProtocolSettings::protocolId() const {
+    return camBusId();
+}
+
+std::unique_ptr<ProtocolSettings> CamBusProtocolSettings::clone() const {
+    // The clone reports to the same bus view.
+    return std::make_unique<CamBusProtocolSettings>(*this);
+}
+
+QVariantMap CamBusProtocolSettings::toMap() const {
+    return {{QStringLiteral("device"), ascii.device},
+            {QStringLiteral("pcNumber"), ascii.pcNumber},
+            {QStringLiteral("timeoutMs"), ascii.timeoutMs},
+            {QStringLiteral("retries"), ascii.retries}};
+}
+
+void CamBusProtocolSettings::fromMap(const QVariantMap& map) {
+    ascii.device = qBound(0, map.value(QStringLiteral("device"), ascii.device).toInt(), 63);
+    ascii.pcNumber = qBound(0, map.value(QStringLiteral("pcNumber"), ascii.pcNumber).toInt(), 63);
+    ascii.timeoutMs = qMax(0, map.value(QStringLiteral("timeoutMs"), ascii.timeoutMs).toInt());
+    ascii.retries = qBound(0, map.value(QStringLiteral("retries"), ascii.retries).toInt(), 10);
+}
+
+void registerCamConCamBus(ProtocolRegistry& registry) {
+    ProtocolInfo info;
+    info.id = camBusId();
+    info.familyId = QStringLiteral("camcon");
+    info.title = QCoreApplication::translate("cambench::comm", "CamCon Cam-BUS (RS485 token bus)");
+    info.defaultSerial.baud = 38400;  // §8: 38400 8N1
+    info.defaultSerial.inBandBreaks = true;
+    info.isBus = true;
+    info.listeningProbe = true;
+    info.lastDevice = kCamBusLastUser;
+    info.makeSettings = [] { return std::make_unique<CamBusProtocolSettings>(); };
+    info.connect = [](Transport& transport, const ProtocolSettings& settings,
+                      const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {
+        const auto* bus = dynamic_cast<const CamBusProtocolSettings*>(&settings);
+        if (!bus)
+            return Error::usage(
+                QCoreApplication::translate("cambench::comm", "the %1 protocol got settings of %2")
+                    .arg(camBusId(),
+                         QCoreApplication::translate("cambench::comm", "another protocol")));
+        CamBusStationConfig station;
+        station.number = bus->ascii.pcNumber;
+        station.baud = line.baud;
+        return std::unique_ptr<DeviceConnection>(
+            std::make_unique<CamBusCamCon>(transport, bus->ascii, line, station, bus->monitor));
+    };
+    registry.add(info);
+}
+
+}  // namespace cambench::comm
