@@ -64,8 +64,7 @@ void printRow(const QString& what, const Run& run, qint64 ownBytes, const SimCam
                                .arg(pause);
 }
 
-void resetPauses(SimCamBusLine& line, const Bus& bus) {
-    Q_UNUSED(bus);
+void resetPauses(SimCamBusLine& line) {
     for (int i = 0; i < line.displayCount(); ++i) line.display(i)->resetPauses(-1);
 }
 
@@ -90,7 +89,7 @@ void benchCamBus() {
                                .arg(join.requests)
                                .arg(backend.ownTrafficBytes() - before)
                                .arg(join.seconds, 0, 'f', 2);
-    resetPauses(*bus->line, *bus);
+    resetPauses(*bus->line);
     before = backend.ownTrafficBytes();
     Run backup = timeWork(bus->camCon->engine(), [&] {
         const Result<EepromImage> image = bus->camCon->backup();
@@ -98,7 +97,7 @@ void benchCamBus() {
     });
     printRow(QStringLiteral("EEPROM backup"), backup, backend.ownTrafficBytes() - before,
              *bus->line);
-    resetPauses(*bus->line, *bus);
+    resetPauses(*bus->line);
     before = backend.ownTrafficBytes();
     Run program = timeWork(bus->camCon->engine(), [&] {
         const Result<CamProgram> read = bus->camCon->readProgram(0, 32);

@@ -205,7 +205,7 @@ BackendStep CamBusBackend::collect(qint64 nowMs) {
         m_ownBytes += block.data.size() + kBlockOverhead - 2;
         step.incoming << classify(block);
     }
-    noteRound(nowMs);
+    noteRound();
     publish(nowMs);
     return step;
 }
@@ -229,8 +229,7 @@ Incoming CamBusBackend::classify(const CamBusStation::Received& block) const {
     return in;
 }
 
-void CamBusBackend::noteRound(qint64 nowMs) {
-    Q_UNUSED(nowMs);
+void CamBusBackend::noteRound() {
     const qint64 token = m_station->view().users.value(m_config.number).lastTokenMs;
     if (token < 0 || token == m_lastOwnToken) return;
     if (m_lastOwnToken >= 0) {

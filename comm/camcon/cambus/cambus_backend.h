@@ -64,7 +64,7 @@ private:
     // The station's output, deliveries and received blocks as one step.
     BackendStep collect(qint64 nowMs);
     Incoming classify(const CamBusStation::Received& block) const;
-    void noteRound(qint64 nowMs);
+    void noteRound();
     void publish(qint64 nowMs);
     // Why the request got no turn in time (the turn limit passed).
     QString noTurnMessage(int fullQueueAnswers, bool silentBus) const;

@@ -8,7 +8,6 @@
 #include "comm/camcon/cambus/cambus_station.h"
 #include "comm/sim/camcon/cambus/sim_cambus_line.h"
 #include "comm/sim/camcon/sim_demo.h"
-#include "comm/sim/camcon/sim_port_config.h"
 
 #include <QTest>
 
@@ -21,9 +20,6 @@ namespace {
 struct VirtualBus {
     explicit VirtualBus(QList<int> devices, int display = -1, int pcNumber = 63,
                         SimCamBusFaults faults = {}) {
-        SimPortConfig config;
-        config.devices = devices;
-        config.camBus = true;
         std::vector<std::unique_ptr<SimDevice>> made;
         for (int number : devices) {
             auto device = std::make_unique<SimDevice>(SimProfile{}, number);

@@ -10,18 +10,19 @@ SimCamBusLine::SimCamBusLine(std::vector<std::unique_ptr<SimDevice>> devices, co
     for (const auto& device : devices) simulated.insert(device->number());
     const int answerMs = setup.station.answerMs;
     const int pcAnswerMs = setup.pcAnswerMs;
-    Setup patient = setup;
-    // The PC's number is learnt from its answers (receive()); a number nobody
+    // Every simulated user: the bus's baud rate, the simulator's rules. The
+    // PC's number is learnt from its answers (receive()); a number nobody
     // answered for gets T, or a search of 64 numbers would take ages.
+    CamBusStationConfig station = setup.station;
+    station.baud = setup.baud;
+    station.joinBeforeFirstBlock = false;
     auto external = m_external;
-    patient.station.answerMsFor = [simulated, external, answerMs, pcAnswerMs](int user) {
+    station.answerMsFor = [simulated, external, answerMs, pcAnswerMs](int user) {
         return !simulated.contains(user) && external->contains(user) ? pcAnswerMs : answerMs;
     };
     for (std::unique_ptr<SimDevice>& device : devices) {
-        CamBusStationConfig config = patient.station;
+        CamBusStationConfig config = station;
         config.number = device->number();
-        config.baud = setup.baud;
-        config.joinBeforeFirstBlock = false;
         auto camCon = std::make_unique<SimCamBusCamCon>(std::move(device), config, nowMs);
         if (setup.silent.contains(config.number) && setup.silentFromMs <= 0)
             camCon->station().setSilent(true);
@@ -34,10 +35,8 @@ SimCamBusLine::SimCamBusLine(std::vector<std::unique_ptr<SimDevice>> devices, co
     }
     m_reinitAtMs = setup.reinitAtMs;
     for (int i = 0; i < setup.displays.size(); ++i) {
-        CamBusStationConfig config = patient.station;
+        CamBusStationConfig config = station;
         config.number = setup.displays.at(i);
-        config.baud = setup.baud;
-        config.joinBeforeFirstBlock = false;
         const int target =
             m_camCons.empty() ? 0 : m_camCons.at(i % m_camCons.size())->device().number();
         auto display = std::make_unique<SimCamBusDisplay>(target, config, nowMs);
