@@ -1,5 +1,6 @@
 #pragma once
 
+#include "motion_control.h"
 #include "progress.h"
 
 #include "comm/engine/request_engine.h"
@@ -51,6 +52,9 @@ public:
     }
     // A bus protocol addresses later requests to `device`; others ignore it.
     virtual void setDevice(int device) { Q_UNUSED(device); }
+    // The device's motion (axes, a drive) when its family can move
+    // something; nullptr when it cannot.
+    virtual MotionControl* motionControl() { return nullptr; }
 };
 
 }  // namespace cambench::comm

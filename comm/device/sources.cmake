@@ -3,6 +3,7 @@
 target_sources(cambench_comm PRIVATE
   device/connection_settings.h
   device/device_connection.h
+  device/motion_control.h
   device/progress.h
   device/error_context.h
   device/protocol_settings.h
