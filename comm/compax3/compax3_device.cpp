@@ -14,6 +14,19 @@ QString Compax3DriveStatus::summary() const {
         .arg(lastSet);
 }
 
+QString Compax3SetValues::modeText() const {
+    if (mode == 1) return QCoreApplication::translate("cambench::comm", "absolute");
+    if (mode == 2) return QCoreApplication::translate("cambench::comm", "relative");
+    return QCoreApplication::translate("cambench::comm", "mode %1").arg(mode);
+}
+
+QString Compax3CommandResult::summary() const {
+    if (after) return after->summary();
+    return QCoreApplication::translate("cambench::comm",
+                                       "the state could not be read back afterwards: %1")
+        .arg(readBackFailed);
+}
+
 QString compax3MotionText(Compax3Motion motion) {
     switch (motion) {
         case Compax3Motion::Enable:

@@ -35,6 +35,32 @@ struct Compax3SetMove {
     std::optional<double> acceleration;
 };
 
+// A positioning set as the drive holds it (190x.n), read before a start so
+// that the person sees what will run and only what they change is written.
+struct Compax3SetValues {
+    int set = 1;
+    double target = 0.0;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+    double deceleration = 0.0;
+    int mode = 1;  // 1905.n: 1 absolute, 2 relative (provisional)
+    // "absolute", "relative", "mode 7": for a person.
+    QString modeText() const;
+};
+
+// What an acting command did. Acknowledged by the drive means done; the
+// state read afterwards is separate: when that read fails the command
+// stays done and `readBackFailed` says why `after` is missing.
+struct Compax3CommandResult {
+    std::optional<Compax3DriveStatus> after;
+    QString readBackFailed;
+    // Something the person should know: "already powered: nothing was sent".
+    QString note;
+    // "powered, standing at 3 (last set 1)" or "the state could not be read
+    // back afterwards: …": one line for a person.
+    QString summary() const;
+};
+
 enum class Compax3Motion {
     Enable,   // power on and acknowledge errors (1100.3 = 0, then 1)
     Disable,  // powerless (1100.3 = 0): the axis coasts or brakes as the drive is set
@@ -68,10 +94,15 @@ public:
     virtual Status writeObject(const Compax3ObjectId& id, const QString& wireValue) = 0;
 
     virtual Result<Compax3DriveStatus> status() = 0;
-    // Returns the status read after the command.
-    virtual Result<Compax3DriveStatus> motion(Compax3Motion motion) = 0;
-    // Writes what `move` sets into the set, then starts it.
-    virtual Result<Compax3DriveStatus> moveSet(const Compax3SetMove& move) = 0;
+    // An error only when the command was not acknowledged; the state read
+    // afterwards is in the result. Enable reads the status first and sends
+    // nothing to a powered drive (it never drops power to acknowledge).
+    virtual Result<Compax3CommandResult> motion(Compax3Motion motion) = 0;
+    // The set's target, velocity, ramps and mode as the drive holds them.
+    virtual Result<Compax3SetValues> readSet(int set) = 0;
+    // Writes what `move` sets and the drive does not hold yet into the set
+    // (each value checked before the first byte), then starts it.
+    virtual Result<Compax3CommandResult> moveSet(const Compax3SetMove& move) = 0;
 };
 
 }  // namespace cambench::comm

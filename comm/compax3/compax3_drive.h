@@ -9,7 +9,8 @@
 namespace cambench::comm {
 
 // Compax3Device over the ASCII protocol: one request line, one answer line.
-class Compax3Drive : public Compax3Device {
+// Also the shell's MotionControl of the drive's axis.
+class Compax3Drive : public Compax3Device, public MotionControl {
 public:
     // `address` 0..99 on RS485, -1 on RS232; `protocolId` "compax3" or
     // "compax3-rs485".
@@ -29,8 +30,13 @@ public:
     Result<QString> readObject(const Compax3ObjectId& id, bool hex) override;
     Status writeObject(const Compax3ObjectId& id, const QString& wireValue) override;
     Result<Compax3DriveStatus> status() override;
-    Result<Compax3DriveStatus> motion(Compax3Motion motion) override;
-    Result<Compax3DriveStatus> moveSet(const Compax3SetMove& move) override;
+    Result<Compax3CommandResult> motion(Compax3Motion motion) override;
+    Result<Compax3SetValues> readSet(int set) override;
+    Result<Compax3CommandResult> moveSet(const Compax3SetMove& move) override;
+
+    MotionControl* motionControl() override { return this; }
+    MotionStopReport stopAllMotion() override;
+    Result<QStringList> activeMotion() override;
 
 private:
     // One command out, its answer back; a '!xxxx' answer becomes the
@@ -42,10 +48,10 @@ private:
     Result<double> readNumber(const Compax3ObjectId& id);
     // The control word, sent once when it moves the axis. A lost answer:
     // the state read back, in the error.
-    Result<Compax3DriveStatus> sendControl(quint16 word, const QString& what, RetryPolicy retry);
-    // Writes the value into the set after checking it against the
-    // dictionary's range.
-    Status writeSetValue(const Compax3ObjectId& id, double value);
+    Result<Compax3CommandResult> sendControl(quint16 word, const QString& what, RetryPolicy retry);
+    Result<Compax3CommandResult> enable(const QString& what);
+    // "Compax3 drive at address 3", for STOP's report.
+    QString driveName() const;
 
     QString m_protocolId;
     Compax3Backend m_backend;

@@ -1,5 +1,6 @@
 // Compax3Drive: the motion sequence of PROTOCOL-NOTES §12 (control word
-// 1100.3), each command that moves the axis sent once.
+// 1100.3), each command that moves the axis sent once; and the drive as the
+// shell's MotionControl (STOP of everything, what moves before quitting).
 #include "compax3_drive.h"
 
 #include "compax3_syntax.h"
@@ -10,11 +11,26 @@
 
 namespace cambench::comm {
 
-Result<Compax3DriveStatus> Compax3Drive::sendControl(quint16 word, const QString& what,
-                                                     RetryPolicy retry) {
+namespace {
+
+// The state after an acknowledged command: a failed read is said, and the
+// command stays done.
+Compax3CommandResult acknowledged(const Result<Compax3DriveStatus>& after) {
+    Compax3CommandResult result;
+    if (after)
+        result.after = *after;
+    else
+        result.readBackFailed = after.error().message;
+    return result;
+}
+
+}  // namespace
+
+Result<Compax3CommandResult> Compax3Drive::sendControl(quint16 word, const QString& what,
+                                                       RetryPolicy retry) {
     const QByteArray command = compax3WriteCommand(kCompax3ControlWord, compax3HexText(word, 4));
     const Status sent = writeCommand(command, retry);
-    if (sent) return status();
+    if (sent) return acknowledged(status());
     if (sent.error().kind != ErrorKind::Communication || retry != RetryPolicy::Never)
         return sent.error();
     // The answer was lost: the drive may have taken the command. Sending it
@@ -42,18 +58,39 @@ Result<Compax3DriveStatus> Compax3Drive::sendControl(quint16 word, const QString
             .arg(lost, taken, back->summary()));
 }
 
-Result<Compax3DriveStatus> Compax3Drive::motion(Compax3Motion motion) {
+Result<Compax3CommandResult> Compax3Drive::enable(const QString& what) {
+    // The status first: the acknowledging edge needs power off, and a
+    // powered drive (perhaps holding a load) must never lose it here.
+    const Result<Compax3DriveStatus> before = status();
+    if (!before) return before.error();
+    if (!before->status.powerless()) {
+        Compax3CommandResult result;
+        result.after = *before;
+        result.note =
+            before->status.noError()
+                ? QCoreApplication::translate("cambench::comm",
+                                              "the drive is powered already: nothing was sent")
+                : QCoreApplication::translate(
+                      "cambench::comm",
+                      "the drive is powered with an error pending (%1): nothing was sent, "
+                      "because acknowledging it drops power; stop the axis, Disable, then "
+                      "Enable")
+                      .arg(compax3LastErrorText(before->lastError));
+        return result;
+    }
+    // Off, then on: the rising edge of b0 acknowledges a pending error.
+    // Neither moves the axis, and writing either twice is harmless.
+    const QByteArray off =
+        compax3WriteCommand(kCompax3ControlWord, compax3HexText(compax3control::kOff, 4));
+    if (const Status done = writeCommand(off, RetryPolicy::Idempotent); !done) return done.error();
+    return sendControl(compax3control::kEnable, what, RetryPolicy::Idempotent);
+}
+
+Result<Compax3CommandResult> Compax3Drive::motion(Compax3Motion motion) {
     const QString what = compax3MotionText(motion);
     switch (motion) {
-        case Compax3Motion::Enable: {
-            // Off, then on: the rising edge of b0 acknowledges a pending error.
-            // Neither moves the axis, and writing either twice is harmless.
-            const QByteArray off =
-                compax3WriteCommand(kCompax3ControlWord, compax3HexText(compax3control::kOff, 4));
-            if (const Status done = writeCommand(off, RetryPolicy::Idempotent); !done)
-                return done.error();
-            return sendControl(compax3control::kEnable, what, RetryPolicy::Idempotent);
-        }
+        case Compax3Motion::Enable:
+            return enable(what);
         case Compax3Motion::Disable:
             return sendControl(compax3control::kOff, what, RetryPolicy::Idempotent);
         case Compax3Motion::Stop:
@@ -69,14 +106,31 @@ Result<Compax3DriveStatus> Compax3Drive::motion(Compax3Motion motion) {
     return Error::usage(QStringLiteral("unknown motion"));
 }
 
-Status Compax3Drive::writeSetValue(const Compax3ObjectId& id, double value) {
-    const Result<QString> wire =
-        compax3WireValueFor(Compax3Dictionary::builtin(), id, compax3NumberText(value));
-    if (!wire) return wire.error();
-    return writeObject(id, *wire);
+Result<Compax3SetValues> Compax3Drive::readSet(int set) {
+    if (set < 0 || set > kCompax3LastSetNumber)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "the set must be 0 to %1, not %2")
+                .arg(kCompax3LastSetNumber)
+                .arg(set));
+    Compax3SetValues values;
+    values.set = set;
+    const std::pair<Compax3ObjectId, double*> numbers[] = {
+        {compax3SetTarget(set), &values.target},
+        {compax3SetVelocity(set), &values.velocity},
+        {compax3SetAcceleration(set), &values.acceleration},
+        {compax3SetDeceleration(set), &values.deceleration}};
+    for (const auto& [id, into] : numbers) {
+        const Result<double> value = readNumber(id);
+        if (!value) return value.error();
+        *into = *value;
+    }
+    const Result<double> mode = readNumber(compax3SetMode(set));
+    if (!mode) return mode.error();
+    values.mode = int(*mode);
+    return values;
 }
 
-Result<Compax3DriveStatus> Compax3Drive::moveSet(const Compax3SetMove& move) {
+Result<Compax3CommandResult> Compax3Drive::moveSet(const Compax3SetMove& move) {
     if (move.set < 0 || move.set > kCompax3LastSetNumber)
         return Error::usage(
             QCoreApplication::translate("cambench::comm", "the set must be 0 to %1, not %2")
@@ -88,11 +142,13 @@ Result<Compax3DriveStatus> Compax3Drive::moveSet(const Compax3SetMove& move) {
         {move.velocity, compax3SetVelocity(move.set)},
         {move.acceleration, compax3SetAcceleration(move.set)},
         {move.acceleration, compax3SetDeceleration(move.set)}};
+    QList<std::pair<Compax3ObjectId, QString>> wires;
     for (const auto& [value, id] : values)
         if (value) {
             const Result<QString> wire =
                 compax3WireValueFor(Compax3Dictionary::builtin(), id, compax3NumberText(*value));
             if (!wire) return wire.error();
+            wires.append({id, *wire});
         }
     const Result<Compax3DriveStatus> before = status();
     if (!before) return before.error();
@@ -100,9 +156,12 @@ Result<Compax3DriveStatus> Compax3Drive::moveSet(const Compax3SetMove& move) {
         return Error::device(
             0, QCoreApplication::translate(
                    "cambench::comm", "the axis is powerless: enable it first (nothing was sent)"));
-    for (const auto& [value, id] : values)
-        if (value)
-            if (const Status written = writeSetValue(id, *value); !written) return written.error();
+    // Only what the drive does not hold already is written.
+    for (const auto& [id, wire] : wires) {
+        const Result<QString> held = readObject(id, false);
+        if (held && compax3SameValue(*held, wire)) continue;
+        if (const Status written = writeObject(id, wire); !written) return written.error();
+    }
     // The set selected without the start bit, then with it: the start is
     // its rising edge.
     const QByteArray select = compax3WriteCommand(
@@ -111,6 +170,38 @@ Result<Compax3DriveStatus> Compax3Drive::moveSet(const Compax3SetMove& move) {
         return selected.error();
     return sendControl(compax3control::start(move.set), compax3SetMoveText(move),
                        RetryPolicy::Never);
+}
+
+QString Compax3Drive::driveName() const {
+    return m_backend.address() < 0
+               ? QCoreApplication::translate("cambench::comm", "Compax3 drive")
+               : QCoreApplication::translate("cambench::comm", "Compax3 drive at address %1")
+                     .arg(m_backend.address());
+}
+
+MotionStopReport Compax3Drive::stopAllMotion() {
+    // One drive, one axis: the Motion page's STOP (1100.3 = 1), repeated by
+    // the engine when its answer is lost.
+    MotionStopLine line;
+    line.what = driveName();
+    const Result<Compax3CommandResult> stopped = motion(Compax3Motion::Stop);
+    line.acknowledged = stopped.ok();
+    line.detail = stopped ? stopped->summary() : stopped.error().message;
+    MotionStopReport report;
+    report.lines << line;
+    return report;
+}
+
+Result<QStringList> Compax3Drive::activeMotion() {
+    const Result<Compax3DriveStatus> now = status();
+    if (!now) return now.error();
+    if (now->moving())
+        return QStringList{QCoreApplication::translate("cambench::comm", "%1: the axis moves (%2)")
+                               .arg(driveName(), now->summary())};
+    if (!now->status.powerless())
+        return QStringList{QCoreApplication::translate("cambench::comm", "%1: the axis is powered")
+                               .arg(driveName())};
+    return QStringList();
 }
 
 }  // namespace cambench::comm
