@@ -68,7 +68,7 @@ void benchCompax3() {
         printRow(QStringLiteral("500-object backup (read until two agree)"), baud,
                  measure(baud, [&ids](Compax3Device& device) -> Status {
                      const Result<usecases::Compax3Backup> backup =
-                         usecases::takeCompax3Parameters(device, ids);
+                         usecases::takeCompax3Parameters(device, ids, Compax3Dictionary::builtin());
                      return backup ? success() : Status(backup.error());
                  }));
     }

@@ -18,9 +18,8 @@ inline constexpr Compax3ObjectId kCompax3Position{680, 5};
 inline constexpr Compax3ObjectId kCompax3StatusWord{1000, 3};
 inline constexpr Compax3ObjectId kCompax3LastSet{1000, 4};
 inline constexpr Compax3ObjectId kCompax3ControlWord{1100, 3};
-inline constexpr Compax3ObjectId kCompax3StoreSets{1904, 1};
-inline constexpr int kCompax3StoreSetsValue = 0x32;
-inline constexpr int kCompax3LastSetNumber = 31;  // b8–12 of the control word
+inline constexpr int kCompax3StoreSetsValue = 0x32;  // 1904.n = $32 stores set n
+inline constexpr int kCompax3LastSetNumber = 31;     // b8–12 of the control word
 
 // Objects of positioning set n (190x.n).
 inline Compax3ObjectId compax3SetTarget(int n) {
@@ -28,6 +27,11 @@ inline Compax3ObjectId compax3SetTarget(int n) {
 }
 inline Compax3ObjectId compax3SetVelocity(int n) {
     return {1902, n};
+}
+// Writing $32 stores set n in the drive's flash (as the public client does
+// after a set's values; provisional).
+inline Compax3ObjectId compax3StoreSet(int n) {
+    return {1904, n};
 }
 inline Compax3ObjectId compax3SetMode(int n) {
     return {1905, n};

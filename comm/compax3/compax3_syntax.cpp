@@ -82,6 +82,10 @@ QString compax3ErrorMeaning(int code) {
     }
 }
 
+bool compax3RefusalMeansAbsent(const cambench::Error& error) {
+    return error.kind == ErrorKind::DeviceError && error.deviceCode == 0x0002;
+}
+
 cambench::Error compax3RefusalError(const QByteArray& command, int code) {
     const QString number = QStringLiteral("!%1").arg(code, 4, 16, QLatin1Char('0')).toUpper();
     const QString meaning = compax3ErrorMeaning(code);

@@ -217,6 +217,41 @@ QList<Compax3ObjectId> Compax3Dictionary::parameters() const {
     return ids;
 }
 
+namespace {
+
+// The objects that start, stop or store on a Compax3 whatever a dictionary
+// says (comm/compax3/README.md C1, C3): the control word and the set stores.
+constexpr Compax3ObjectId kControlWord{1100, 3};
+constexpr int kStoreSetIndex = 1904;
+
+bool marked(const Compax3Dictionary& dictionary, const Compax3ObjectId& id, Compax3Access access) {
+    const Compax3ObjectInfo* info = dictionary.find(id);
+    return info && info->access == access;
+}
+
+}  // namespace
+
+bool compax3IsControlWord(const Compax3Dictionary& inUse, const Compax3ObjectId& id) {
+    return id == kControlWord || marked(Compax3Dictionary::builtin(), id, Compax3Access::Command) ||
+           marked(inUse, id, Compax3Access::Command);
+}
+
+QString compax3NeverFromAFile(const Compax3Dictionary& inUse, const Compax3ObjectId& id) {
+    if (compax3IsControlWord(inUse, id))
+        return QCoreApplication::translate("cambench::model",
+                                           "%1 is a control word: a file never starts or stops the "
+                                           "axis (use the Motion page "
+                                           "or c3 enable/jog/move/stop)")
+            .arg(id.text());
+    if (id.index == kStoreSetIndex ||
+        marked(Compax3Dictionary::builtin(), id, Compax3Access::WriteOnly) ||
+        marked(inUse, id, Compax3Access::WriteOnly))
+        return QCoreApplication::translate(
+                   "cambench::model", "%1 is a function, not a value: a file never triggers it")
+            .arg(id.text());
+    return {};
+}
+
 Result<QString> compax3WireValueFor(const Compax3Dictionary& dictionary, const Compax3ObjectId& id,
                                     const QString& typed) {
     const Compax3ObjectInfo* info = dictionary.find(id);

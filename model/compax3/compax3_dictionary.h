@@ -15,7 +15,7 @@ namespace cambench {
 enum class Compax3Access {
     ReadOnly,   // "ro": read, never written (a position, the status word)
     ReadWrite,  // "rw": a parameter: read, written, saved in a parameter file
-    WriteOnly,  // "wo": a function ("1904.1 = $32" stores the sets): written, never read
+    WriteOnly,  // "wo": a function ("1904.n = $32" stores set n): written, never read
     // "cmd": read and written, never saved in a parameter file: the control
     // word, whose restore would move the axis.
     Command,
@@ -84,6 +84,18 @@ private:
     QHash<Compax3ObjectId, int> m_index;
     QString m_source;
 };
+
+// Why `id` is never written from a file, a compare or a restore and never
+// saved in a backup (a file must never start or stop motion or trigger a
+// function), or empty when it may be. Holds for the control word 1100.3 and
+// the set stores 1904.n (a built-in list), for what the shipped dictionary
+// marks "cmd" or "wo", and for what `inUse` marks so: a loaded dictionary
+// can add to the list, never lift it.
+QString compax3NeverFromAFile(const Compax3Dictionary& inUse, const Compax3ObjectId& id);
+// Whether a person may not write `id` by number on the Objects page or with
+// `c3 write` either: the control word, which belongs to the Motion page's
+// confirmations (1100.3, and what either dictionary marks "cmd").
+bool compax3IsControlWord(const Compax3Dictionary& inUse, const Compax3ObjectId& id);
 
 // The type and range a value for `id` is checked against: the dictionary's,
 // or for an unknown object a number of any size (text in quotes stays text).

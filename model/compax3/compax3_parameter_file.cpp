@@ -45,6 +45,13 @@ QByteArray compax3ParametersToJson(const Compax3ParameterSet& set) {
     for (const Compax3ParameterValue& value : values)
         objects.append(QJsonArray{value.id.text(), value.value});
     root.insert(key("objects"), objects);
+    if (!set.absent.isEmpty()) {
+        QList<Compax3ObjectId> absent = set.absent;
+        std::sort(absent.begin(), absent.end());
+        QJsonArray ids;
+        for (const Compax3ObjectId& id : absent) ids.append(id.text());
+        root.insert(key("absent"), ids);
+    }
     sealWithHash(root);
     // One object a line: a diff of two files shows the objects that differ.
     QByteArray json = toIndentedJson(root);
@@ -96,6 +103,21 @@ Result<Compax3ParameterSet> compax3ParametersFromJson(const QByteArray& bytes) {
         }
         seen.insert(*id);
         set.values << Compax3ParameterValue{*id, pair.at(1).toString()};
+    }
+    const QJsonArray absent = root.value(key("absent")).toArray();
+    for (int i = 0; i < absent.size() && !reader.failed(); ++i) {
+        const Result<Compax3ObjectId> id = parseCompax3Object(absent.at(i).toString());
+        const QString path = JsonReader::element(key("absent"), i);
+        if (!id) {
+            reader.fail(path, id.error().message);
+        } else if (seen.contains(*id)) {
+            reader.fail(path, QCoreApplication::translate("cambench::model",
+                                                          "object %1 both with a value and absent")
+                                  .arg(id->text()));
+        } else {
+            seen.insert(*id);
+            set.absent << *id;
+        }
     }
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     return set;

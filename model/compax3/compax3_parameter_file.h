@@ -34,11 +34,16 @@ struct Compax3ParameterSet {
     QDateTime taken;
     QString toolVersion;
     QList<Compax3ParameterValue> values;
+    // Objects asked for that the drive does not have (it answered "no such
+    // object"): recorded, so that a verify or restore knows they were
+    // absent, not forgotten.
+    QList<Compax3ObjectId> absent;
 };
 
 // {"format":"cambench-compax3-parameters","version":1,"family":"compax3",
 //  "drive":{"info":…,"serial":…,"type":…},"taken":ISO UTC,"tool":…,
-//  "objects":[["1901.1","100"],…],"sha256":…}: stable order (by object),
+//  "objects":[["1901.1","100"],…],"absent":["1901.0",…],"sha256":…}
+// ("absent" only when the drive lacked objects): stable order (by object),
 // one object a line, so that two files diff cleanly.
 QByteArray compax3ParametersToJson(const Compax3ParameterSet& set);
 // Checks format, version, family, hash (changed or damaged: refused),

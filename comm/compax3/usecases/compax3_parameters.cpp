@@ -1,7 +1,11 @@
 #include "compax3_parameters.h"
 
+#include "comm/compax3/compax3_syntax.h"
+
 #include <QCoreApplication>
 #include <QSet>
+
+#include <algorithm>
 
 namespace cambench::usecases {
 
@@ -61,6 +65,7 @@ QString label(const Compax3ObjectId& id, const Compax3Dictionary& dictionary) {
 
 Result<Compax3Backup> takeCompax3Parameters(Compax3Device& device,
                                             const QList<Compax3ObjectId>& objects,
+                                            const Compax3Dictionary& dictionary,
                                             const UseCaseProgress& progress) {
     Compax3Backup backup;
     const Result<Compax3Identity> identity = device.identity();
@@ -70,14 +75,20 @@ Result<Compax3Backup> takeCompax3Parameters(Compax3Device& device,
     backup.set.toolVersion = QCoreApplication::applicationVersion();
     for (int i = 0; i < objects.size(); ++i) {
         if (progress.cancelled()) return Error::cancelled();
-        const Result<QString> value = readAgreed(device, objects.at(i));
-        if (value) {
-            backup.set.values << Compax3ParameterValue{objects.at(i), *value};
-        } else if (value.error().kind == ErrorKind::DeviceError) {
-            backup.refused << Compax3Refusal{objects.at(i), value.error().message};
-        } else {
-            return value.error();
+        const Compax3ObjectId& id = objects.at(i);
+        if (const QString never = compax3NeverFromAFile(dictionary, id); !never.isEmpty()) {
+            backup.notSaved << Compax3Refusal{id, never};
+            continue;
         }
+        const Result<QString> value = readAgreed(device, id);
+        if (value)
+            backup.set.values << Compax3ParameterValue{id, *value};
+        else if (comm::compax3RefusalMeansAbsent(value.error()))
+            backup.set.absent << id;
+        else if (value.error().kind == ErrorKind::DeviceError)
+            backup.refused << Compax3Refusal{id, value.error().message};
+        else
+            return value.error();
         progress.report(i + 1, objects.size(),
                         QCoreApplication::translate("cambench::usecases", "Reading objects"));
     }
@@ -87,6 +98,11 @@ Result<Compax3Backup> takeCompax3Parameters(Compax3Device& device,
 QString Compax3Comparison::lineFor(const Compax3Difference& difference,
                                    const Compax3Dictionary& dictionary) {
     const QString what = label(difference.id, dictionary);
+    if (difference.absentInFile)
+        return QCoreApplication::translate(
+                   "cambench::usecases",
+                   "%1: file: not on the drive it was read from, drive %2 (left as it is)")
+            .arg(what, difference.driveValue);
     if (!difference.error.isEmpty())
         return QCoreApplication::translate("cambench::usecases", "%1: file %2, drive: %3")
             .arg(what, difference.fileValue, difference.error);
@@ -94,31 +110,80 @@ QString Compax3Comparison::lineFor(const Compax3Difference& difference,
         .arg(what, difference.fileValue, difference.driveValue);
 }
 
+namespace {
+
+QString notOnThisDrive() {
+    return QCoreApplication::translate("cambench::usecases", "not on this drive");
+}
+
+}  // namespace
+
 Result<Compax3Comparison> compareCompax3Parameters(Compax3Device& device,
                                                    const Compax3ParameterSet& set,
+                                                   const Compax3Dictionary& dictionary,
                                                    const UseCaseProgress& progress) {
     Compax3Comparison comparison;
     const Result<Compax3Identity> identity = device.identity();
     if (!identity) return identity.error();
     comparison.drive = *identity;
+    const qsizetype total = set.values.size() + set.absent.size();
     for (int i = 0; i < set.values.size(); ++i) {
         if (progress.cancelled()) return Error::cancelled();
         const Compax3ParameterValue& wanted = set.values.at(i);
+        if (const QString never = compax3NeverFromAFile(dictionary, wanted.id); !never.isEmpty()) {
+            comparison.ignored << Compax3Refusal{wanted.id, never};
+            continue;
+        }
         const Result<QString> value = readConfirmed(device, wanted.id, wanted.value);
         if (!value && value.error().kind != ErrorKind::DeviceError) return value.error();
         ++comparison.compared;
         if (!value)
-            comparison.differences
-                << Compax3Difference{wanted.id, wanted.value, {}, value.error().message};
+            comparison.differences << Compax3Difference{
+                wanted.id,
+                wanted.value,
+                {},
+                comm::compax3RefusalMeansAbsent(value.error()) ? notOnThisDrive()
+                                                               : value.error().message};
         else if (!compax3SameValue(*value, wanted.value))
             comparison.differences << Compax3Difference{wanted.id, wanted.value, *value, {}};
-        progress.report(i + 1, set.values.size(),
+        progress.report(i + 1, total,
+                        QCoreApplication::translate("cambench::usecases", "Comparing objects"));
+    }
+    // Absent on the file's drive: equal when absent here too.
+    for (int i = 0; i < set.absent.size(); ++i) {
+        if (progress.cancelled()) return Error::cancelled();
+        const Compax3ObjectId& id = set.absent.at(i);
+        const Result<QString> value = device.readObject(id, false);
+        if (!value && !comm::compax3RefusalMeansAbsent(value.error())) {
+            if (value.error().kind != ErrorKind::DeviceError) return value.error();
+            comparison.differences << Compax3Difference{id, {}, {}, value.error().message, true};
+        } else if (value) {
+            comparison.differences << Compax3Difference{id, {}, *value, {}, true};
+        } else {
+            ++comparison.absentOnBoth;
+        }
+        ++comparison.compared;
+        progress.report(set.values.size() + i + 1, total,
                         QCoreApplication::translate("cambench::usecases", "Comparing objects"));
     }
     return comparison;
 }
 
 namespace {
+
+// A line for an object nothing was sent to, with the reason.
+OutcomeLine notSentLine(const QString& what, const Error& why) {
+    return OutcomeLine{what, WriteState::NotSent,
+                       outcomeText(what, WriteState::NotSent, {}, why, {}), why};
+}
+
+// Why nothing may be sent to `id` from `source`, or empty.
+QString refusedFrom(Compax3WriteSource source, const Compax3Dictionary& dictionary,
+                    const Compax3ObjectId& id) {
+    if (source == Compax3WriteSource::File) return compax3NeverFromAFile(dictionary, id);
+    if (compax3IsControlWord(dictionary, id)) return compax3NeverFromAFile(dictionary, id);
+    return {};
+}
 
 // Everything that can be known without the drive's values: the type, each
 // value, the selection. An error here means nothing was written.
@@ -139,6 +204,12 @@ Result<QList<Compax3Write>> checkRestore(const Compax3Identity& drive,
     for (const Compax3ParameterValue& value : set.values) {
         inFile.insert(value.id);
         if (!options.only.isEmpty() && !options.only.contains(value.id)) continue;
+        // A control word or function goes to the write path unchecked: it
+        // sends nothing to it and says why.
+        if (!compax3NeverFromAFile(dictionary, value.id).isEmpty()) {
+            writes << Compax3Write{value.id, value.value, {}};
+            continue;
+        }
         const Result<QString> wire = compax3WireValueFor(dictionary, value.id, value.value);
         if (!wire)
             return Error::invalidData(
@@ -157,27 +228,65 @@ Result<QList<Compax3Write>> checkRestore(const Compax3Identity& drive,
     return writes;
 }
 
+// Stores each set an object was written into (1904.n = $32,
+// comm/compax3/README.md C1): a function, written once each, nothing to
+// read back. `lines` are writeCompax3Objects' for `writes`, in order.
+QList<OutcomeLine> storeSets(Compax3Device& device, const QList<Compax3Write>& writes,
+                             const QList<OutcomeLine>& lines) {
+    QList<int> sets;
+    for (int i = 0; i < writes.size() && i < lines.size(); ++i) {
+        const Compax3ObjectId& id = writes.at(i).id;
+        if (lines.at(i).state == WriteState::Written && id.index >= 1901 && id.index <= 1908 &&
+            id.index != comm::compax3StoreSet(0).index && !sets.contains(id.subindex))
+            sets << id.subindex;
+    }
+    std::sort(sets.begin(), sets.end());
+    QList<OutcomeLine> stores;
+    Error stopped;
+    for (int set : sets) {
+        const QString what =
+            QCoreApplication::translate("cambench::usecases",
+                                        "store set %1 in the drive's flash (1904.%1 = $32)")
+                .arg(set);
+        if (stopped.kind != ErrorKind::None) {
+            stores << notSentLine(what, stopped);
+            continue;
+        }
+        const Status stored = device.writeObject(comm::compax3StoreSet(set),
+                                                 compax3HexText(comm::kCompax3StoreSetsValue));
+        const WriteState state = stored ? WriteState::Written : WriteState::Unknown;
+        const Error error = stored ? Error{} : stored.error();
+        stores << OutcomeLine{what, state, outcomeText(what, state, {}, error, {}), error};
+        if (!stored && stopsTheWork(error)) stopped = error;
+    }
+    return stores;
+}
+
 }  // namespace
 
 OutcomeTally writeCompax3Objects(Compax3Device& device, const QList<Compax3Write>& writes,
-                                 const Compax3Dictionary& dictionary,
+                                 const Compax3Dictionary& dictionary, Compax3WriteSource source,
                                  const UseCaseProgress& progress) {
     QList<OutcomeLine> lines;
     Error stopped;
     for (int i = 0; i < writes.size(); ++i) {
         const Compax3Write& wanted = writes.at(i);
         const QString what = label(wanted.id, dictionary);
+        if (const QString never = refusedFrom(source, dictionary, wanted.id); !never.isEmpty()) {
+            lines << notSentLine(what, Error::usage(never));
+            continue;
+        }
         if (stopped.kind == ErrorKind::None && progress.cancelled()) stopped = Error::cancelled();
         if (stopped.kind != ErrorKind::None) {
-            lines << OutcomeLine{what, WriteState::NotSent,
-                                 outcomeText(what, WriteState::NotSent, {}, stopped, {}), stopped};
+            lines << notSentLine(what, stopped);
             continue;
         }
         progress.report(i, writes.size(),
                         QCoreApplication::translate("cambench::usecases", "Writing objects"));
         const Compax3ObjectInfo* info = dictionary.find(wanted.id);
         if (info && !info->readable()) {
-            // A function (1904.1): nothing to compare or read back.
+            // A function (1904.n) typed by a person: nothing to compare or
+            // read back.
             const Status write = device.writeObject(wanted.id, wanted.wire);
             const WriteState state = write ? WriteState::Written : WriteState::Unknown;
             lines << OutcomeLine{what, state,
@@ -188,9 +297,14 @@ OutcomeTally writeCompax3Objects(Compax3Device& device, const QList<Compax3Write
         }
         const Result<QString> old = readConfirmed(device, wanted.id, wanted.value);
         if (!old) {
-            lines << OutcomeLine{what, WriteState::NotSent,
-                                 outcomeText(what, WriteState::NotSent, {}, old.error(), {}),
-                                 old.error()};
+            const Error why =
+                comm::compax3RefusalMeansAbsent(old.error())
+                    ? Error::device(old.error().deviceCode,
+                                    QCoreApplication::translate(
+                                        "cambench::usecases", "not on this drive (%1): not written")
+                                        .arg(old.error().message))
+                    : old.error();
+            lines << notSentLine(what, why);
             if (stopsTheWork(old.error())) stopped = old.error();
             continue;
         }
@@ -240,28 +354,21 @@ Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compa
         if (!checked) return checked.error();
         writes = *checked;
     }
-    const OutcomeTally tally = writeCompax3Objects(device, writes, dictionary, progress);
+    const OutcomeTally tally =
+        writeCompax3Objects(device, writes, dictionary, Compax3WriteSource::File, progress);
     if (!options.store) return tally;
     // The store makes the sets permanent: only after every object was
     // written or unchanged.
     QList<OutcomeLine> lines = tally.lines();
-    const QString label = QCoreApplication::translate(
-        "cambench::usecases", "store the sets in the drive's flash (1904.1 = $32)");
-    const QString value = compax3HexText(comm::kCompax3StoreSetsValue);
     if (!tally.complete()) {
-        const Error skipped = Error::usage(QCoreApplication::translate(
-            "cambench::usecases", "not stored, because not every object was written"));
-        lines << OutcomeLine{label, WriteState::NotSent,
-                             outcomeText(label, WriteState::NotSent, {}, skipped, {}), skipped};
+        const QString what = QCoreApplication::translate(
+            "cambench::usecases", "store the sets in the drive's flash (1904.n = $32)");
+        lines << notSentLine(
+            what, Error::usage(QCoreApplication::translate(
+                      "cambench::usecases", "not stored, because not every object was written")));
         return OutcomeTally(lines);
     }
-    OutcomeLine store =
-        writeCompax3Objects(device, {{comm::kCompax3StoreSets, value, value}}, dictionary)
-            .lines()
-            .first();
-    store.label = label;
-    store.text = outcomeText(label, store.state, {}, store.error, {});
-    lines << store;
+    lines << storeSets(device, writes, tally.lines());
     return OutcomeTally(lines);
 }
 

@@ -23,39 +23,56 @@ struct Compax3Refusal {
 };
 
 struct Compax3Backup {
+    // Objects the drive does not have are in `set.absent`: the backup is
+    // complete without them and names them.
     Compax3ParameterSet set;
-    // Objects not in the set because the drive refused them: a backup with
-    // refusals is incomplete, and says so.
+    // Objects not in the set because the drive refused them otherwise: a
+    // backup with refusals is incomplete, and says so.
     QList<Compax3Refusal> refused;
+    // Control words and functions that were asked for: never read into a
+    // file (compax3NeverFromAFile says why).
+    QList<Compax3Refusal> notSaved;
 };
 
 // Reads the drive's identity and every object of `objects` (in that order),
 // each until two answers in a row agree (the protocol has no checksum). A
-// line failure ends it with an error; a refused object is listed.
+// line failure ends it with an error; an object the drive does not have is
+// recorded absent; another refusal is listed.
 Result<Compax3Backup> takeCompax3Parameters(comm::Compax3Device& device,
                                             const QList<Compax3ObjectId>& objects,
+                                            const Compax3Dictionary& dictionary,
                                             const UseCaseProgress& progress = {});
 
 // One object whose value on the drive is not the file's.
 struct Compax3Difference {
     Compax3ObjectId id;
-    QString fileValue;
+    QString fileValue;   // empty with `absentInFile`
     QString driveValue;  // empty with `error`
-    QString error;       // the drive refused to read it
+    QString error;       // the drive refused to read it ("not on this drive")
+    // The file records the object as not on the drive it was read from, and
+    // this drive has it.
+    bool absentInFile = false;
 };
 
 struct Compax3Comparison {
     Compax3Identity drive;
     int compared = 0;
+    // Objects absent in the file and on this drive: equal, counted here.
+    int absentOnBoth = 0;
     QList<Compax3Difference> differences;
+    // Control words and functions in the file: not compared, never taken
+    // from a file.
+    QList<Compax3Refusal> ignored;
     // "1901.1 (Set 1 target): file 100, drive 250".
     static QString lineFor(const Compax3Difference& difference,
                            const Compax3Dictionary& dictionary);
 };
 
-// Reads every object of the file from the drive and lists the differences.
+// Reads every object of the file (and those it records absent) from the
+// drive and lists the differences.
 Result<Compax3Comparison> compareCompax3Parameters(comm::Compax3Device& device,
                                                    const Compax3ParameterSet& set,
+                                                   const Compax3Dictionary& dictionary,
                                                    const UseCaseProgress& progress = {});
 
 // One object to write: its value as a person or a file gave it and as it
@@ -66,19 +83,27 @@ struct Compax3Write {
     QString wire;
 };
 
+// Where the values of a write come from: what a person typed on the
+// Objects page, or a file (a restore, a compare's "write the file's value").
+enum class Compax3WriteSource { Typed, File };
+
 // Writes each object that differs on the drive, reads it back and reports
 // it written, unchanged or failed (what reading back found); after a line
 // failure the rest is "not sent". The Objects page's "Write changes" and
-// restoreCompax3Parameters both end here.
+// restoreCompax3Parameters both end here: the one write path. It sends
+// nothing to a control word (compax3IsControlWord) and, from a file,
+// nothing to a function (compax3NeverFromAFile), whatever the dictionary
+// says; those are "not sent" with the reason.
 OutcomeTally writeCompax3Objects(comm::Compax3Device& device, const QList<Compax3Write>& writes,
-                                 const Compax3Dictionary& dictionary,
+                                 const Compax3Dictionary& dictionary, Compax3WriteSource source,
                                  const UseCaseProgress& progress = {});
 
 struct Compax3RestoreOptions {
     bool force = false;  // a set of another drive type
     // Only these objects (empty: every differing one of the file).
     QList<Compax3ObjectId> only;
-    // Afterwards, stores the sets in the drive's flash (1904.1 = $32).
+    // Afterwards, stores each set an object was written into in the drive's
+    // flash (1904.n = $32).
     bool store = false;
 };
 

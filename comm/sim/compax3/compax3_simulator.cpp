@@ -17,6 +17,8 @@ struct DriveOptions {
     int address = -1;  // -1: RS232
     QString type = kDefaultType;
     int baud = kDefaultBaud;
+    QList<Compax3ObjectId> lacks;    // a firmware without these objects
+    QList<Compax3ObjectId> refuses;  // reads answered !0005
 };
 
 Result<int> addressFrom(const QString& text) {
@@ -28,8 +30,10 @@ Result<int> addressFrom(const QString& text) {
 }
 
 SimulatedLine lineFor(const DriveOptions& options, const SimHostOptions& shared) {
-    auto line = std::make_unique<SimCompax3Line>(options.address, SimCompax3Drive(options.type),
-                                                 shared.faults);
+    SimCompax3Drive drive(options.type);
+    for (const Compax3ObjectId& id : options.lacks) drive.removeObject(id);
+    for (const Compax3ObjectId& id : options.refuses) drive.refuseReads(id);
+    auto line = std::make_unique<SimCompax3Line>(options.address, std::move(drive), shared.faults);
     const QString where = options.address < 0
                               ? QStringLiteral("RS232")
                               : QStringLiteral("RS485 address %1").arg(options.address);
@@ -56,14 +60,24 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
             const QString value = option.section(QLatin1Char('='), 1).trimmed();
             if (key == QLatin1String("type") && !value.isEmpty()) {
                 options.type = value;
+            } else if (key == QLatin1String("lacks") || key == QLatin1String("refuse")) {
+                // "sim:lacks=1901.0,1902.0": a drive whose firmware lacks
+                // them; "refuse=1000.3": reads of it answer !0005.
+                QList<Compax3ObjectId>& into =
+                    key == QLatin1String("lacks") ? options.lacks : options.refuses;
+                for (const QString& object : value.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                    const Result<Compax3ObjectId> id = parseCompax3Object(object);
+                    if (!id) return id.error();
+                    into << *id;
+                }
             } else if (key == QLatin1String("address") && protocol == kRs485Protocol) {
                 const Result<int> address = addressFrom(value);
                 if (!address) return address.error();
                 options.address = *address;
             } else {
                 return Error::usage(
-                    QStringLiteral("the Compax3 simulator's port takes type=… and (RS485) "
-                                   "address=…, not \"%1\"")
+                    QStringLiteral("the Compax3 simulator's port takes type=…, lacks=…, refuse=… "
+                                   "and (RS485) address=…, not \"%1\"")
                         .arg(option));
             }
         }
@@ -87,6 +101,14 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
             {QStringLiteral("baud"),
              QStringLiteral("Baud rate for the timing (default: the protocol's)."),
              QStringLiteral("rate")},
+            {QStringLiteral("lacks"),
+             QStringLiteral("Compax3: objects its firmware lacks (answered !0002), e.g. "
+                            "1901.0,1902.0."),
+             QStringLiteral("objects")},
+            {QStringLiteral("refuse"),
+             QStringLiteral("Compax3: objects whose reads it answers with !0005 (writes "
+                            "still work), e.g. 1000.3."),
+             QStringLiteral("objects")},
         };
     };
     info.fromOptions = [](const QCommandLineParser& parser,
@@ -103,6 +125,16 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
         }
         if (parser.isSet(QStringLiteral("drive-type")))
             options.type = parser.value(QStringLiteral("drive-type")).trimmed();
+        for (const auto& [name, into] :
+             {std::pair{"lacks", &options.lacks}, std::pair{"refuse", &options.refuses}})
+            for (const QString& object :
+                 parser.value(QLatin1String(name)).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                const Result<Compax3ObjectId> id = parseCompax3Object(object);
+                if (!id)
+                    return Error::usage(
+                        QStringLiteral("--%1: %2").arg(QLatin1String(name), id.error().message));
+                into->append(*id);
+            }
         if (parser.isSet(QStringLiteral("baud"))) {
             bool ok = false;
             options.baud = parser.value(QStringLiteral("baud")).toInt(&ok);

@@ -95,9 +95,13 @@ quint16 SimCompax3Drive::statusWord() const {
 
 QByteArray SimCompax3Drive::answer(const QByteArray& command, qint64 nowMs) {
     advance(nowMs);
-    const std::optional<Compax3Request> request = parseCompax3Request(compax3Canonical(command));
+    m_requests << compax3Canonical(command);
+    const std::optional<Compax3Request> request = parseCompax3Request(m_requests.last());
     if (!request) return refused(1);
     if (request->kind == Compax3Request::Info) return infoString().toLatin1();
+    if (m_missing.contains(request->id)) return refused(2);
+    if (request->kind == Compax3Request::Read && m_unreadable.contains(request->id))
+        return refused(5);
     if (request->kind == Compax3Request::Read) return read(request->id, request->hexAnswer);
     return write(request->id, request->value);
 }
@@ -149,7 +153,8 @@ QByteArray SimCompax3Drive::write(const Compax3ObjectId& id, const QString& valu
     if (info->type == Compax3Type::Integer && std::floor(*number) != *number) return refused(6);
     if (!info->range.contains(*number)) return refused(4);
     if (id == kCompax3ControlWord) return control(quint16(*number));
-    if (id == kCompax3StoreSets) return *number == kCompax3StoreSetsValue ? ">" : refused(4);
+    if (id.index == compax3StoreSet(0).index)  // 1904.n: stores set n
+        return *number == kCompax3StoreSetsValue ? ">" : refused(4);
     m_values.insert(id, compax3NumberText(*number));
     return ">";
 }

@@ -4,6 +4,8 @@
 
 #include <QByteArray>
 #include <QHash>
+#include <QList>
+#include <QSet>
 #include <QString>
 
 namespace cambench::comm {
@@ -31,6 +33,14 @@ public:
     QString infoString() const;
     // A fault the drive reports in 550.1 (and clears on acknowledge).
     void raiseError(int code) { m_error = code; }
+    // A firmware without `id`: reading or writing it answers !0002.
+    void removeObject(const Compax3ObjectId& id) { m_missing.insert(id); }
+    // Reads of `id` answer !0005 (not possible now), writes still work: a
+    // drive whose read-backs fail after a command.
+    void refuseReads(const Compax3ObjectId& id) { m_unreadable.insert(id); }
+    // Every request the drive answered, as it read it (upper case, no
+    // spaces): tests count what was sent.
+    const QList<QByteArray>& requests() const { return m_requests; }
 
 private:
     QByteArray read(const Compax3ObjectId& id, bool hex) const;
@@ -43,6 +53,9 @@ private:
     QString m_type;
     QString m_serial;
     QHash<Compax3ObjectId, QString> m_values;  // the parameters (190x.n, ...)
+    QSet<Compax3ObjectId> m_missing;
+    QSet<Compax3ObjectId> m_unreadable;
+    QList<QByteArray> m_requests;
     quint16 m_control = 0;
     int m_error = 1;
     int m_lastSet = 0;
