@@ -147,13 +147,15 @@ private Q_SLOTS:
         QCOMPARE(position->access, Compax3Access::ReadOnly);
         QCOMPARE(position->type, Compax3Type::Real);
         QCOMPARE(dictionary.find(kCompax3ControlWord)->access, Compax3Access::Command);
-        QCOMPARE(dictionary.find(kCompax3StoreSets)->access, Compax3Access::WriteOnly);
+        // 1904.n stores set n, as the public client writes it after a set.
+        for (int set : {0, 2, 31})
+            QCOMPARE(dictionary.find(compax3StoreSet(set))->access, Compax3Access::WriteOnly);
         // A parameter set holds what a replacement drive needs, never the
         // control word (restoring it would move the axis) or a function.
         const QList<Compax3ObjectId> parameters = dictionary.parameters();
         QVERIFY(parameters.contains(compax3SetTarget(1)));
         QVERIFY(!parameters.contains(kCompax3ControlWord));
-        QVERIFY(!parameters.contains(kCompax3StoreSets));
+        QVERIFY(!parameters.contains(compax3StoreSet(1)));
         QVERIFY(dictionary.groups().contains(QStringLiteral("Set 0 (homing)")));
         QCOMPARE(position->nameIn(QStringLiteral("de")), QStringLiteral("Istposition"));
         QCOMPARE(position->nameIn(QStringLiteral("fr")), QStringLiteral("Actual position"));
@@ -229,6 +231,45 @@ private Q_SLOTS:
                      tampered.error().message.contains(QLatin1String("changed")),
                  qPrintable(tampered.error().message));
         QVERIFY(!compax3ParametersFromJson(R"({"format":"cambench-mc1-backup","version":1})").ok());
+    }
+
+    void aFileNeverMovesTheAxisWhateverTheDictionarySays() {
+        // A loaded dictionary that calls the control word and a set store
+        // parameters cannot lift the built-in list; it can add to it.
+        const QByteArray lax = R"({"format":"cambench-compax3-dictionary","version":1,
+            "family":"compax3","objects":[
+            {"object":"1100.3","name":"cw","type":"integer","access":"rw"},
+            {"object":"1904.2","name":"store","type":"integer","access":"rw"},
+            {"object":"1901.1","name":"t","type":"real","access":"rw"},
+            {"object":"4711.1","name":"go","type":"integer","access":"cmd"}]})";
+        const Result<Compax3Dictionary> loaded = Compax3Dictionary::fromJson(lax);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
+        QVERIFY(compax3NeverFromAFile(*loaded, kCompax3ControlWord)
+                    .contains(QLatin1String("control word")));
+        QVERIFY(
+            compax3NeverFromAFile(*loaded, compax3StoreSet(2)).contains(QLatin1String("function")));
+        QVERIFY(compax3IsControlWord(*loaded, {4711, 1}));
+        QVERIFY(compax3NeverFromAFile(*loaded, compax3SetTarget(1)).isEmpty());
+        QVERIFY(compax3NeverFromAFile(Compax3Dictionary::builtin(), compax3SetTarget(1)).isEmpty());
+    }
+
+    void aParameterFileRecordsObjectsNotOnTheDrive() {
+        Compax3ParameterSet set;
+        set.drive.info = QStringLiteral("Compax3 S025V2 F10 I10 T40 V04.02");
+        set.taken =
+            QDateTime::fromString(QStringLiteral("2026-01-02T03:04:05.000Z"), Qt::ISODateWithMs);
+        set.values = {{compax3SetTarget(1), QStringLiteral("12.5")}};
+        set.absent = {compax3SetVelocity(0), compax3SetTarget(0)};
+        const QByteArray json = compax3ParametersToJson(set);
+        QVERIFY(json.contains("\"absent\""));
+        const Result<Compax3ParameterSet> back = compax3ParametersFromJson(json);
+        QVERIFY2(back.ok(), qPrintable(back.error().message));
+        QCOMPARE(back->absent,
+                 (QList<Compax3ObjectId>{compax3SetTarget(0), compax3SetVelocity(0)}));
+        QCOMPARE(back->values.size(), 1);
+        // A file without absent objects has no "absent" key (files stay as they were).
+        set.absent.clear();
+        QVERIFY(!compax3ParametersToJson(set).contains("\"absent\""));
     }
 };
 

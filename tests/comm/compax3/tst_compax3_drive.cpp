@@ -12,6 +12,8 @@
 
 #include <QTest>
 
+#include <functional>
+
 using namespace cambench;
 using namespace cambench::comm;
 
@@ -124,17 +126,17 @@ private Q_SLOTS:
         move.target = 40;
         move.velocity = 2000;
         // Powerless: refused before anything moves.
-        const Result<Compax3DriveStatus> refused = bench.device.moveSet(move);
+        const Result<Compax3CommandResult> refused = bench.device.moveSet(move);
         QVERIFY(!refused.ok());
         QVERIFY(refused.error().message.contains(QLatin1String("enable it first")));
         bench.sim().raiseError(0x7320);
-        const Result<Compax3DriveStatus> enabled = bench.device.motion(Compax3Motion::Enable);
+        const Result<Compax3CommandResult> enabled = bench.device.motion(Compax3Motion::Enable);
         QVERIFY2(enabled.ok(), qPrintable(enabled.error().message));
-        QCOMPARE(enabled->lastError, 1);  // the rising edge acknowledged it
-        QVERIFY(!enabled->status.powerless());
-        const Result<Compax3DriveStatus> started = bench.device.moveSet(move);
+        QCOMPARE(enabled->after->lastError, 1);  // the rising edge acknowledged it
+        QVERIFY(!enabled->after->status.powerless());
+        const Result<Compax3CommandResult> started = bench.device.moveSet(move);
         QVERIFY2(started.ok(), qPrintable(started.error().message));
-        QCOMPARE(started->controlWord, compax3control::start(1));
+        QCOMPARE(started->after->controlWord, compax3control::start(1));
         QCOMPARE(bench.sim().value(compax3SetTarget(1)), QStringLiteral("40"));
         const Compax3DriveStatus still = waitStill(bench.device);
         QCOMPARE(still.position, 40.0);
@@ -144,11 +146,11 @@ private Q_SLOTS:
         QVERIFY(bench.device.motion(Compax3Motion::JogMinus).ok());
         QTest::qWait(50);
         QVERIFY(bench.sim().moving());
-        const Result<Compax3DriveStatus> stopped = bench.device.motion(Compax3Motion::Stop);
+        const Result<Compax3CommandResult> stopped = bench.device.motion(Compax3Motion::Stop);
         QVERIFY(stopped.ok());
         QVERIFY(!bench.sim().moving());
-        QVERIFY(stopped->position < 40.0);
-        QVERIFY(bench.device.motion(Compax3Motion::Disable)->status.powerless());
+        QVERIFY(stopped->after->position < 40.0);
+        QVERIFY(bench.device.motion(Compax3Motion::Disable)->after->status.powerless());
         // A set value out of range is refused before the first byte.
         move.velocity = -5;
         QVERIFY(bench.device.moveSet(move).error().message.contains(QLatin1String("range")));
@@ -163,7 +165,7 @@ private Q_SLOTS:
         move.set = 1;
         move.target = 30;
         move.velocity = 1000;
-        const Result<Compax3DriveStatus> started = bench.device.moveSet(move);
+        const Result<Compax3CommandResult> started = bench.device.moveSet(move);
         QVERIFY(!started.ok());
         QCOMPARE(started.error().kind, ErrorKind::Communication);
         const QString message = started.error().message;
@@ -206,7 +208,8 @@ private Q_SLOTS:
             objects << compax3SetTarget(set) << compax3SetVelocity(set);
         for (int set = 0; set <= 31; ++set)
             bench.sim().setValue(compax3SetTarget(set), compax3NumberText(set * 1111.25 - 7000));
-        const Result<Compax3Backup> backup = takeCompax3Parameters(bench.device, objects);
+        const Result<Compax3Backup> backup =
+            takeCompax3Parameters(bench.device, objects, Compax3Dictionary::builtin());
         QVERIFY2(backup.ok(), qPrintable(backup.error().message));
         QCOMPARE(backup->set.values.size(), objects.size());
         for (const Compax3ParameterValue& value : backup->set.values)
@@ -217,7 +220,8 @@ private Q_SLOTS:
         using namespace cambench::usecases;
         Bench bench;
         const QList<Compax3ObjectId> objects = Compax3Dictionary::builtin().parameters();
-        const Result<Compax3Backup> backup = takeCompax3Parameters(bench.device, objects);
+        const Result<Compax3Backup> backup =
+            takeCompax3Parameters(bench.device, objects, Compax3Dictionary::builtin());
         QVERIFY2(backup.ok(), qPrintable(backup.error().message));
         QCOMPARE(backup->set.values.size(), objects.size());
         QVERIFY(backup->refused.isEmpty());
@@ -225,7 +229,7 @@ private Q_SLOTS:
         bench.sim().setValue(compax3SetTarget(5), QStringLiteral("123.25"));
         bench.sim().setValue(compax3SetVelocity(7), QStringLiteral("9"));
         const Result<Compax3Comparison> differs =
-            compareCompax3Parameters(bench.device, backup->set);
+            compareCompax3Parameters(bench.device, backup->set, Compax3Dictionary::builtin());
         QCOMPARE(differs->differences.size(), 2);
         QCOMPARE(
             Compax3Comparison::lineFor(differs->differences.first(), Compax3Dictionary::builtin()),
@@ -237,10 +241,15 @@ private Q_SLOTS:
             bench.device, backup->set, Compax3Dictionary::builtin(), options);
         QVERIFY2(restored.ok(), qPrintable(restored.error().message));
         QVERIFY(restored->complete());
-        QCOMPARE(restored->count(WriteState::Written), 3);  // two objects and the store
+        // Two objects, then the two sets they are in stored (1904.n = $32).
+        QCOMPARE(restored->count(WriteState::Written), 2 + 2);
         QCOMPARE(restored->count(WriteState::Unchanged), objects.size() - 2);
-        QVERIFY(restored->lines().last().text.contains(QLatin1String("1904.1 = $32")));
-        QVERIFY(compareCompax3Parameters(bench.device, backup->set)->differences.isEmpty());
+        QVERIFY2(restored->lines().last().text.contains(QLatin1String("1904.7 = $32")),
+                 qPrintable(restored->lines().last().text));
+        QVERIFY(bench.sim().requests().contains("O1904,5=$32"));
+        QVERIFY(!bench.sim().requests().contains("O1904,6=$32"));
+        QVERIFY(compareCompax3Parameters(bench.device, backup->set, Compax3Dictionary::builtin())
+                    ->differences.isEmpty());
     }
 
     void aSetOfAnotherTypeIsRefusedUnlessForced() {
@@ -266,6 +275,258 @@ private Q_SLOTS:
             restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), forced);
         QVERIFY(badValue.error().message.contains(QLatin1String("1905.1")));
         QCOMPARE(bench.sim().value(compax3SetTarget(2)), QStringLiteral("200"));
+    }
+
+    // Issue 27: each acting request's bytes as the manual writes a command
+    // (`O index,subindex=value`, `$` for hexadecimal; the control word's
+    // bits as PROTOCOL-NOTES §12 reads them), counted at the drive.
+    void actingRequestsAreTheManualsBytes() {
+        Bench bench;
+        const qsizetype start = bench.sim().requests().size();
+        QVERIFY(bench.device.motion(Compax3Motion::Enable).ok());
+        QList<QByteArray> sent = bench.sim().requests().mid(start);
+        QList<QByteArray> writes;
+        for (const QByteArray& request : sent)
+            if (request.contains('=')) writes << request;
+        // Powerless first: off, then on (the rising edge acknowledges).
+        QCOMPARE(writes, (QList<QByteArray>{"O1100,3=$0000", "O1100,3=$0001"}));
+        QCOMPARE(sent.first(), QByteArray("O1000,3"));  // the status read first
+
+        auto writesOf = [&bench](const std::function<void()>& act) {
+            const qsizetype from = bench.sim().requests().size();
+            act();
+            QList<QByteArray> out;
+            for (const QByteArray& request : bench.sim().requests().mid(from))
+                if (request.contains('=')) out << request;
+            return out;
+        };
+        QCOMPARE(writesOf([&] { QVERIFY(bench.device.motion(Compax3Motion::JogPlus).ok()); }),
+                 QList<QByteArray>{"O1100,3=$4007"});
+        QCOMPARE(writesOf([&] { QVERIFY(bench.device.motion(Compax3Motion::JogMinus).ok()); }),
+                 QList<QByteArray>{"O1100,3=$400B"});
+        QCOMPARE(writesOf([&] { QVERIFY(bench.device.motion(Compax3Motion::Stop).ok()); }),
+                 QList<QByteArray>{"O1100,3=$0001"});
+        // A set start writes only what differs from the drive (set 3's
+        // target is 300 already), selects the set, then its start edge.
+        Compax3SetMove move;
+        move.set = 3;
+        move.target = 300;
+        move.velocity = 5000;
+        QCOMPARE(writesOf([&] { QVERIFY(bench.device.moveSet(move).ok()); }),
+                 (QList<QByteArray>{"O1902,3=5000", "O1100,3=$4303", "O1100,3=$6303"}));
+        // The line itself: the request and CR, on RS485 the address first.
+        QCOMPARE(compax3RequestLine("O1100,3=$0001", -1), QByteArray("O1100,3=$0001\r"));
+        QCOMPARE(compax3RequestLine("O1100,3=$0001", 7), QByteArray("7O1100,3=$0001\r"));
+    }
+
+    void enableNeverDropsPowerOnAPoweredDrive() {
+        Bench bench;
+        QVERIFY(bench.device.motion(Compax3Motion::Enable).ok());
+        QVERIFY(bench.device.motion(Compax3Motion::JogPlus).ok());
+        const qsizetype from = bench.sim().requests().size();
+        const Result<Compax3CommandResult> again = bench.device.motion(Compax3Motion::Enable);
+        QVERIFY2(again.ok(), qPrintable(again.error().message));
+        QVERIFY2(again->note.contains(QLatin1String("nothing was sent")), qPrintable(again->note));
+        for (const QByteArray& request : bench.sim().requests().mid(from))
+            QVERIFY2(!request.contains('='), request.constData());
+        QVERIFY(bench.sim().moving());  // the jog runs on: Enable did not touch it
+        QVERIFY(bench.device.motion(Compax3Motion::Stop).ok());
+    }
+
+    void anAcknowledgedCommandStaysDoneWhenItsReadBackIsRefused() {
+        Bench bench;
+        for (const Compax3ObjectId& id : {kCompax3StatusWord, kCompax3LastError, kCompax3Position,
+                                          kCompax3LastSet, kCompax3ControlWord})
+            bench.sim().refuseReads(id);
+        const Result<Compax3CommandResult> jog = bench.device.motion(Compax3Motion::JogPlus);
+        QVERIFY2(jog.ok(), qPrintable(jog.error().message));
+        QVERIFY(!jog->after);
+        QVERIFY2(jog->readBackFailed.contains(QLatin1String("!0005")),
+                 qPrintable(jog->readBackFailed));
+        QVERIFY(bench.sim().moving());
+        // STOP through the shell's seam: acknowledged, though its read-back fails.
+        MotionControl* control = bench.drive.motionControl();
+        QVERIFY(control);
+        const MotionStopReport report = control->stopAllMotion();
+        QVERIFY(report.allAcknowledged());
+        QVERIFY2(report.lines.first().detail.contains(QLatin1String("could not be read back")),
+                 qPrintable(report.lines.first().detail));
+        QVERIFY(!bench.sim().moving());
+        QVERIFY(!control->activeMotion().ok());  // cannot tell: an error, not "nothing"
+    }
+
+    void theShellsStopAndActiveMotion() {
+        SimFaultSettings faults;
+        faults.dropFirstReplyTo = "O1100,3=$0001";  // the first STOP's answer is lost
+        Bench bench(4, 4, faults);
+        MotionControl* control = bench.drive.motionControl();
+        QVERIFY(control);
+        QCOMPARE(*control->activeMotion(), QStringList());
+        QVERIFY(bench.device.motion(Compax3Motion::JogPlus).ok());
+        const Result<QStringList> active = control->activeMotion();
+        QCOMPARE(active->size(), 1);
+        QVERIFY2(active->first().contains(QLatin1String("address 4")) &&
+                     active->first().contains(QLatin1String("moves")),
+                 qPrintable(active->first()));
+        const qsizetype from = bench.sim().requests().size();
+        const MotionStopReport report = control->stopAllMotion();
+        QVERIFY(report.allAcknowledged());
+        QCOMPARE(report.lines.first().what, QStringLiteral("Compax3 drive at address 4"));
+        // Repeated after the lost answer: twice at the drive, stopped.
+        QCOMPARE(bench.sim().requests().mid(from).count("O1100,3=$0001"), 2);
+        QVERIFY(!bench.sim().moving());
+        QCOMPARE(*control->activeMotion(),
+                 QStringList{QStringLiteral("Compax3 drive at address 4: the axis is powered")});
+    }
+
+    void readsASetAsTheDriveHoldsIt() {
+        Bench bench;
+        bench.sim().setValue(compax3SetMode(6), QStringLiteral("2"));
+        const Result<Compax3SetValues> set = bench.device.readSet(6);
+        QVERIFY2(set.ok(), qPrintable(set.error().message));
+        QCOMPARE(set->target, 600.0);
+        QCOMPARE(set->velocity, 200.0);
+        QCOMPARE(set->acceleration, 1000.0);
+        QCOMPARE(set->mode, 2);
+        QCOMPARE(set->modeText(), QStringLiteral("relative"));
+        QVERIFY(!bench.device.readSet(32).ok());
+    }
+
+    void aFileNeverMovesTheAxis() {
+        // Issue 27 item 4: a restore of a file holding the control word
+        // (and a set store) sends nothing to either, says so, writes the rest.
+        using namespace cambench::usecases;
+        Bench bench;
+        Compax3ParameterSet set;
+        set.drive.info = bench.sim().infoString();
+        set.values = {{kCompax3ControlWord, QStringLiteral("$6103")},
+                      {compax3StoreSet(1), QStringLiteral("$32")},
+                      {compax3SetTarget(1), QStringLiteral("55")}};
+        const Result<OutcomeTally> restored =
+            restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), {});
+        QVERIFY2(restored.ok(), qPrintable(restored.error().message));
+        for (const QByteArray& request : bench.sim().requests())
+            QVERIFY2(!request.startsWith("O1100,3") && !request.startsWith("O1904"),
+                     request.constData());
+        QCOMPARE(restored->count(WriteState::NotSent), 2);
+        QCOMPARE(restored->count(WriteState::Written), 1);
+        QVERIFY(!restored->complete());  // never "done" with something skipped
+        QVERIFY2(restored->lines().first().text.contains(QLatin1String("control word")),
+                 qPrintable(restored->lines().first().text));
+        QCOMPARE(bench.sim().value(compax3SetTarget(1)), QStringLiteral("55"));
+        // A backup asked for them never saves them, whatever the dictionary.
+        const Result<Compax3Backup> backup = takeCompax3Parameters(
+            bench.device, {kCompax3ControlWord, compax3SetTarget(1)}, Compax3Dictionary::builtin());
+        QCOMPARE(backup->set.values.size(), 1);
+        QCOMPARE(backup->notSaved.size(), 1);
+        // Typed on the Objects page: the control word is the Motion page's.
+        const OutcomeTally typed = writeCompax3Objects(
+            bench.device, {{kCompax3ControlWord, QStringLiteral("1"), QStringLiteral("1")}},
+            Compax3Dictionary::builtin(), Compax3WriteSource::Typed);
+        QCOMPARE(typed.count(WriteState::NotSent), 1);
+        for (const QByteArray& request : bench.sim().requests())
+            QVERIFY(!request.startsWith("O1100,3="));
+    }
+
+    void twoDrivesThatDifferInTypeAndObjects() {
+        // Issue 29 item 2: one drive without set 0, one with it, of
+        // another type: absent on both is equal; in the file but absent on
+        // the target is said and not written.
+        using namespace cambench::usecases;
+        Bench lacking;
+        Bench full(-1, -1, {}, QStringLiteral("S150V4"));
+        const QList<Compax3ObjectId> set0 = {compax3SetTarget(0), compax3SetVelocity(0)};
+        for (const Compax3ObjectId& id : set0) lacking.sim().removeObject(id);
+        const QList<Compax3ObjectId> objects = Compax3Dictionary::builtin().parameters();
+
+        const Result<Compax3Backup> own =
+            takeCompax3Parameters(lacking.device, objects, Compax3Dictionary::builtin());
+        QVERIFY2(own.ok(), qPrintable(own.error().message));
+        QVERIFY(own->refused.isEmpty());
+        QCOMPARE(own->set.absent, set0);
+        QCOMPARE(own->set.values.size(), objects.size() - 2);
+        const Result<Compax3Comparison> same =
+            compareCompax3Parameters(lacking.device, own->set, Compax3Dictionary::builtin());
+        QVERIFY(same->differences.isEmpty());
+        QCOMPARE(same->absentOnBoth, 2);
+
+        const Result<Compax3Backup> other =
+            takeCompax3Parameters(full.device, objects, Compax3Dictionary::builtin());
+        QVERIFY(other->set.absent.isEmpty());
+        const Result<Compax3Comparison> differs =
+            compareCompax3Parameters(lacking.device, other->set, Compax3Dictionary::builtin());
+        QCOMPARE(differs->differences.size(), 2);
+        QCOMPARE(differs->differences.first().error, QStringLiteral("not on this drive"));
+        Compax3RestoreOptions forced;
+        forced.force = true;  // the types differ
+        const qsizetype from = lacking.sim().requests().size();
+        const Result<OutcomeTally> restored = restoreCompax3Parameters(
+            lacking.device, other->set, Compax3Dictionary::builtin(), forced);
+        QVERIFY2(restored.ok(), qPrintable(restored.error().message));
+        QCOMPARE(restored->count(WriteState::NotSent), 2);
+        QVERIFY(restored->lines().first().text.contains(QLatin1String("not on this drive")));
+        for (const QByteArray& request : lacking.sim().requests().mid(from))
+            QVERIFY(!request.startsWith("O1901,0=") && !request.startsWith("O1902,0="));
+        // The other way: absent in the file, present here: said, left as it is.
+        const Result<Compax3Comparison> extra =
+            compareCompax3Parameters(full.device, own->set, Compax3Dictionary::builtin());
+        QCOMPARE(extra->differences.size(), 2);
+        QVERIFY(extra->differences.first().absentInFile);
+    }
+
+    // Issue 29: the public client python-dvg-devices'
+    // Compax3_servo_protocol_RS232 (its demo's order), replayed as it
+    // writes each line (lower case 'o', '.' between index and subindex,
+    // decimal control words), with the answers it expects.
+    void replaysThePublicClientsSequence() {
+        Bench bench;
+        SimCompax3Drive& drive = bench.sim();
+        qint64 now = 0;
+        auto ask = [&drive, &now](const char* request) {
+            now += 20;
+            return drive.answer(QByteArray(request), now);
+        };
+        // Identify: the info string starts with "Compax3", then the serial.
+        QVERIFY(ask("_?").startsWith("Compax3"));
+        QCOMPARE(ask("o1.4"), QByteArray("C3-4711-0815"));
+        QCOMPARE(ask("o550.1"), QByteArray("1"));
+        QCOMPARE(ask("o680.5"), QByteArray("0"));
+        QCOMPARE(ask("o1000.3"), QByteArray("1285"));  // powerless, no error, I0 and I2
+        // Acknowledge: a rising edge of b0.
+        QCOMPARE(ask("o1100.3=0"), QByteArray(">"));
+        QCOMPARE(ask("o1100.3=1"), QByteArray(">"));
+        QCOMPARE(ask("o1000.3").toInt() & 0x0400, 0);  // powered
+        // Store set 2's values, then 1904.2 = $32 (store profile).
+        for (const char* write :
+             {"o1901.2=-180.00", "o1902.2=100.00", "o1905.2=1", "o1906.2=100.00", "o1907.2=100.00",
+              "o1908.2=1000000.00", "o1904.2=$32"})
+            QCOMPARE(ask(write), QByteArray(">"));
+        QCOMPARE(drive.value(compax3SetTarget(2)), QStringLiteral("-180"));
+        // Activate set 2: start bit low (16899), then high (25091).
+        QCOMPARE(ask("o1100.3=16899"), QByteArray(">"));
+        QCOMPARE(ask("o1100.3=25091"), QByteArray(">"));
+        QVERIFY(drive.moving());
+        now += 5000;  // 180 units at 100/s
+        QCOMPARE(ask("o680.5"), QByteArray("-180"));
+        QCOMPARE(ask("o1000.4"), QByteArray("2"));
+        // Jog + and −, each from $4003 (run, stop bits set), then stop with
+        // power kept ($4003) and with power removed (0).
+        QCOMPARE(ask("o1100.3=16387"), QByteArray(">"));
+        QCOMPARE(ask("o1100.3=16391"), QByteArray(">"));  // jog +
+        QVERIFY(drive.moving());
+        QCOMPARE(ask("o1100.3=16387"), QByteArray(">"));
+        QVERIFY(!drive.moving());
+        QCOMPARE(ask("o1100.3=16395"), QByteArray(">"));  // jog −
+        QVERIFY(drive.moving());
+        QCOMPARE(ask("o1100.3=16387"), QByteArray(">"));  // stop, keep power
+        QVERIFY(!drive.moving());
+        QCOMPARE(ask("o1100.3=0"), QByteArray(">"));  // power off
+        QVERIFY(ask("o1000.3").toInt() & 0x0400);
+        // A refusal: "!" and four hex digits, which the client prints.
+        const QByteArray refusal = ask("o1905.2=7");
+        QCOMPARE(refusal, QByteArray("!0004"));
+        QCOMPARE(parseCompax3Reply(refusal)->kind, Compax3Reply::Error);
+        QCOMPARE(ask("o4321.1"), QByteArray("!0002"));
     }
 };
 
