@@ -77,8 +77,79 @@ private Q_SLOTS:
         VERIFY_EXIT(session.cli({"c3", "jog", "+"}), 0);
         const CliRun stop = session.cli({"c3", "stop"});
         VERIFY_EXIT(stop, 0);
-        QVERIFY2(stop.out.startsWith(QLatin1String("axis: powered, standing at")),
+        QVERIFY2(stop.out.contains(QLatin1String("\naxis: powered, standing at")),
                  qPrintable(stop.out));
+        // Enable on a powered drive: nothing sent (it never drops power).
+        const CliRun again = session.cli({"c3", "enable"});
+        VERIFY_EXIT(again, 0);
+        QVERIFY2(again.out.startsWith(QLatin1String("note: the drive is powered already: nothing "
+                                                    "was sent")),
+                 qPrintable(again.out));
+    }
+
+    void anAcknowledgedCommandWhoseReadBackIsRefusedIsDone() {
+        // Issue 27 item 2: every read-back refused (!0005); the jog was
+        // acknowledged, so it is done: exit 0 with the note.
+        SimSession session(QStringLiteral("compax3"));
+        START_SIM(session, {"--refuse", "1000.3,550.1,680.5,1000.4,1100.3"});
+        const CliRun jog = session.cli({"c3", "jog", "+"});
+        VERIFY_EXIT(jog, 0);
+        QVERIFY2(jog.out.startsWith(QLatin1String("done: jog the axis in + direction "
+                                                  "(acknowledged by the drive)")),
+                 qPrintable(jog.out));
+        QVERIFY2(jog.err.contains(QLatin1String("could not be read back")) &&
+                     jog.err.contains(QLatin1String("!0005")),
+                 qPrintable(jog.err));
+        VERIFY_EXIT(session.cli({"c3", "stop"}), 0);
+    }
+
+    void aScanNeedsNeitherProtocolNorAddress() {
+        SimSession session{QString()};
+        START_SIM(session, {"--family", "compax3", "--rs485", "--address", "12"});
+        const CliRun scan = session.cli({"--family", "compax3", "c3", "scan"});
+        VERIFY_EXIT(scan, 0);
+        QCOMPARE(scan.out, QStringLiteral("12\n"));
+    }
+
+    void aDriveLackingObjectsBacksUpVerifiesAndRestores() {
+        // Issue 29 item 2: a firmware without set 0; the backup records
+        // those objects as not on this drive and exits 0.
+        SimSession session(QStringLiteral("compax3"));
+        START_SIM(session, {"--lacks", "1901.0,1902.0,1905.0,1906.0,1907.0,1908.0"});
+        const QString file = session.path("lacking.json");
+        const CliRun backup = session.cli({"c3", "backup", "-o", file});
+        VERIFY_EXIT(backup, 0);
+        QVERIFY2(backup.out.contains(QLatin1String("1901.0: not on this drive")),
+                 qPrintable(backup.out));
+        QVERIFY2(backup.out.contains(QLatin1String("saved 186 objects")) &&
+                     backup.out.contains(QLatin1String("6 objects are not on this drive")),
+                 qPrintable(backup.out));
+        QVERIFY(readBytes(file).contains("\"absent\""));
+        const CliRun verify = session.cli({"c3", "verify", file});
+        VERIFY_EXIT(verify, 0);
+        QVERIFY2(verify.out.contains(QLatin1String("6 of them not on this drive")),
+                 qPrintable(verify.out));
+        VERIFY_EXIT(session.cli({"c3", "write", "1901.3=7"}), 0);
+        const CliRun restore = session.cli({"c3", "restore", file});
+        VERIFY_EXIT(restore, 0);
+        QVERIFY2(restore.out.contains(QLatin1String("186 items: 1 written, 185 unchanged")),
+                 qPrintable(restore.out));
+
+        // A file of a drive with set 0 on a drive without it: said, not written.
+        SimSession full(QStringLiteral("compax3"));
+        START_SIM(full);
+        const QString fullFile = full.path("full.json");
+        VERIFY_EXIT(full.cli({"c3", "backup", "-o", fullFile}), 0);
+        const CliRun differs = session.cli({"c3", "verify", fullFile});
+        VERIFY_EXIT(differs, 1);
+        QVERIFY2(differs.out.contains(QLatin1String("1901.0 (Set 0 target): file 0, drive: not "
+                                                    "on this drive")),
+                 qPrintable(differs.out));
+        const CliRun partial = session.cli({"c3", "restore", fullFile});
+        QVERIFY2(partial.exitCode != 0, describe(partial).constData());
+        QVERIFY2(partial.out.contains(QLatin1String("not on this drive")) &&
+                     partial.out.contains(QLatin1String("not written")),
+                 qPrintable(partial.out));
     }
 
     void rs485AddressAndScan() {
@@ -112,9 +183,11 @@ private Q_SLOTS:
         QVERIFY(differs.out.contains(QLatin1String("2 differences in 192 objects compared")));
         const CliRun restore = session.cli({"c3", "restore", file, "--store"});
         VERIFY_EXIT(restore, 0);
-        QVERIFY2(restore.out.contains(QLatin1String("193 items: 3 written, 190 unchanged")),
+        // The two objects, then the two sets they are in stored (1904.n = $32).
+        QVERIFY2(restore.out.contains(QLatin1String("194 items: 4 written, 190 unchanged")),
                  qPrintable(restore.out));
-        QVERIFY(restore.out.contains(QLatin1String("(1904.1 = $32): written")));
+        QVERIFY(restore.out.contains(QLatin1String("(1904.4 = $32): written")));
+        QVERIFY(restore.out.contains(QLatin1String("(1904.9 = $32): written")));
         VERIFY_EXIT(session.cli({"c3", "verify", file}), 0);
 
         // A replacement drive of another type.

@@ -18,20 +18,27 @@ QString compax3Help() {
         "                                   and read back; a refusal exits 1 with the drive's "
         "!xxxx\n"
         "  c3 scan [--json]                 RS485 addresses 0..99 that answer, one a line\n"
+        "                                   (on RS485 without --protocol or --address)\n"
         "  c3 status [--json]               status word bit by bit, last error, position\n"
         "  c3 watch OBJ… [--interval MS] [--count N]   the values, a line per poll\n"
         "  c3 enable|disable|stop           power and acknowledge, powerless, stop with the ramp\n"
         "  c3 jog +|-                       moves until `c3 stop`\n"
         "  c3 move N [--target V] [--velocity V] [--accel V]   writes set N, then starts it\n"
         "  c3 backup -o FILE [--objects LIST]   default: every read-write object of the\n"
-        "                                   dictionary; the drive's identity and a SHA-256\n"
+        "                                   dictionary; the drive's identity and a SHA-256;\n"
+        "                                   objects the drive lacks are recorded as not on\n"
+        "                                   it (exit 0); control words and functions are\n"
+        "                                   never saved\n"
         "  c3 verify FILE                   exit 0 equal, 1 the drive differs\n"
         "  c3 restore FILE [--force] [--only LIST] [--store]\n"
         "                                   writes what differs: written/unchanged/failed per\n"
         "                                   object; --force: a file of another drive type;\n"
-        "                                   --store: then stores the sets (1904.1 = $32)\n"
+        "                                   --store: then stores each set (1904.n = $32);\n"
+        "                                   a control word or function in the file: nothing\n"
+        "                                   is sent to it, and it is said\n"
         "  A command that moves the axis is sent once: when its answer is lost it exits 3 and\n"
-        "  says what reading back found.\n");
+        "  says what reading back found. Acknowledged is done: a read-back that fails\n"
+        "  afterwards is a note (exit 0). enable sends nothing to a powered drive.\n");
 }
 
 int runC3(CliSession& session, CommandArgs& args) {

@@ -10,7 +10,6 @@ namespace cambench::cli {
 namespace {
 
 using comm::Compax3Device;
-using comm::Compax3DriveStatus;
 using comm::Compax3Motion;
 using comm::JobContext;
 
@@ -25,10 +24,23 @@ Result<std::optional<double>> numberOption(CommandArgs& args, const QString& nam
     return std::optional<double>(*number);
 }
 
-int printAxis(const Result<Compax3DriveStatus>& status) {
-    if (!status) return reportError(status.error());
-    printOut(QStringLiteral("axis: %1\nlast error: %2\n")
-                 .arg(status->summary(), comm::compax3LastErrorText(status->lastError)));
+// Acknowledged is done (exit 0); a read-back that failed afterwards is a
+// note, never a failure of the command.
+int printAxis(const QString& what, const Result<comm::Compax3CommandResult>& result) {
+    if (!result) return reportError(result.error());
+    QString text;
+    if (!result->note.isEmpty())
+        text += QStringLiteral("note: %1\n").arg(result->note);
+    else
+        text += QStringLiteral("done: %1 (acknowledged by the drive)\n").arg(what);
+    if (result->after)
+        text += QStringLiteral("axis: %1\nlast error: %2\n")
+                    .arg(result->after->summary(),
+                         comm::compax3LastErrorText(result->after->lastError));
+    printOut(text);
+    if (!result->after)
+        printError(
+            QStringLiteral("note: %1; the command itself was acknowledged").arg(result->summary()));
     return ExitOk;
 }
 
@@ -53,9 +65,11 @@ int runCompax3Motion(CliSession& session, CommandArgs& args, const QString& verb
             *target = *value;
         }
         if (const Status done = args.finish(); !done) return reportError(done.error());
-        return printAxis(runOnCompax3<Compax3DriveStatus>(
-            session, QStringLiteral("c3 move"),
-            [move](Compax3Device& device, JobContext&) { return device.moveSet(move); }));
+        return printAxis(
+            comm::compax3SetMoveText(move),
+            runOnCompax3<comm::Compax3CommandResult>(
+                session, QStringLiteral("c3 move"),
+                [move](Compax3Device& device, JobContext&) { return device.moveSet(move); }));
     }
     Compax3Motion motion = Compax3Motion::Stop;
     if (verb == QLatin1String("enable")) motion = Compax3Motion::Enable;
@@ -68,9 +82,11 @@ int runCompax3Motion(CliSession& session, CommandArgs& args, const QString& verb
             *direction == QLatin1String("+") ? Compax3Motion::JogPlus : Compax3Motion::JogMinus;
     }
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    return printAxis(runOnCompax3<Compax3DriveStatus>(
-        session, QStringLiteral("c3 %1").arg(verb),
-        [motion](Compax3Device& device, JobContext&) { return device.motion(motion); }));
+    return printAxis(
+        comm::compax3MotionText(motion),
+        runOnCompax3<comm::Compax3CommandResult>(
+            session, QStringLiteral("c3 %1").arg(verb),
+            [motion](Compax3Device& device, JobContext&) { return device.motion(motion); }));
 }
 
 }  // namespace cambench::cli

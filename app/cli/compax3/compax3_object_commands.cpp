@@ -118,10 +118,12 @@ int runCompax3Write(CliSession& session, CommandArgs& args, const Compax3Diction
                     .arg(word)));
         const Result<Compax3ObjectId> id = parseCompax3Object(word.left(equals));
         if (!id) return reportError(id.error());
-        if (*id == comm::kCompax3ControlWord)
-            return reportError(Error::usage(
-                QStringLiteral("1100.3 is the control word, which moves the axis: use c3 "
-                               "enable, jog, move or stop")));
+        // Whatever the dictionary in use says of it.
+        if (compax3IsControlWord(dictionary, *id))
+            return reportError(
+                Error::usage(QStringLiteral("%1 is a control word, which moves the axis: use c3 "
+                                            "enable, jog, move or stop")
+                                 .arg(id->text())));
         const Result<QString> wire = compax3WireValueFor(dictionary, *id, word.mid(equals + 1));
         if (!wire) return reportError(wire.error());
         writes << std::pair{*id, *wire};
@@ -158,12 +160,9 @@ int runCompax3Write(CliSession& session, CommandArgs& args, const Compax3Diction
     return ExitOk;
 }
 
-int runCompax3Scan(CliSession& session, CommandArgs& args) {
-    const bool json = args.takeFlag(QStringLiteral("--json"));
-    if (const Status done = args.finish(); !done) return reportError(done.error());
-    if (!session.options().isBus())
-        return reportError(Error::usage(
-            QStringLiteral("c3 scan looks for drives on RS485; add --protocol compax3-rs485")));
+namespace {
+
+int scanOn(CliSession& session, bool json) {
     session.setShowProgress(true);
     const Result<QList<int>> found = runOnCompax3<QList<int>>(
         session, QStringLiteral("c3 scan"), [](Compax3Device& device, JobContext& job) {
@@ -179,8 +178,23 @@ int runCompax3Scan(CliSession& session, CommandArgs& args) {
     }
     QString text;
     for (int address : *found) text += QStringLiteral("%1\n").arg(address);
+    if (found->isEmpty()) text = QStringLiteral("no drive answered at RS485 addresses 0..99\n");
     printOut(text);
     return ExitOk;
+}
+
+}  // namespace
+
+int runCompax3Scan(CliSession& session, CommandArgs& args) {
+    const bool json = args.takeFlag(QStringLiteral("--json"));
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    if (session.options().isBus()) return scanOn(session, json);
+    // A scan is of RS485 addresses: the family's bus protocol, without
+    // being told (the session has not opened the port yet).
+    GlobalOptions onBus = session.options();
+    onBus.protocol = QStringLiteral("compax3-rs485");
+    CliSession bus(onBus);
+    return scanOn(bus, json);
 }
 
 int runCompax3Status(CliSession& session, CommandArgs& args) {

@@ -46,18 +46,28 @@ int runCompax3Backup(CliSession& session, CommandArgs& args, const Compax3Dictio
     const QList<Compax3ObjectId> objects = given->isEmpty() ? dictionary.parameters() : *given;
     session.setShowProgress(true);
     const Result<usecases::Compax3Backup> backup = runOnCompax3<usecases::Compax3Backup>(
-        session, QStringLiteral("c3 backup"), [objects](Compax3Device& device, JobContext& job) {
-            return usecases::takeCompax3Parameters(device, objects, UseCaseProgress::of(job));
+        session, QStringLiteral("c3 backup"),
+        [objects, dictionary](Compax3Device& device, JobContext& job) {
+            return usecases::takeCompax3Parameters(device, objects, dictionary,
+                                                   UseCaseProgress::of(job));
         });
     if (!backup) return reportError(backup.error());
     if (const Status saved = saveCompax3Parameters(*path, backup->set); !saved)
         return reportError(saved.error());
     QString text;
+    for (const usecases::Compax3Refusal& refusal : backup->notSaved)
+        text += QStringLiteral("%1: not saved: %2\n").arg(refusal.id.text(), refusal.reason);
+    for (const Compax3ObjectId& id : backup->set.absent)
+        text += QStringLiteral("%1: not on this drive (it answered !0002): recorded as absent\n")
+                    .arg(id.text());
     for (const usecases::Compax3Refusal& refusal : backup->refused)
         text += QStringLiteral("%1: not saved: %2\n").arg(refusal.id.text(), refusal.reason);
-    text += QStringLiteral("saved %1 objects of %2 (serial number %3) to %4\n")
+    text += QStringLiteral("saved %1 objects of %2 (serial number %3) to %4")
                 .arg(backup->set.values.size())
                 .arg(backup->set.drive.info, backup->set.drive.serial, *path);
+    if (!backup->set.absent.isEmpty())
+        text += QStringLiteral("; %1 objects are not on this drive").arg(backup->set.absent.size());
+    text += QLatin1Char('\n');
     printOut(text);
     if (backup->refused.isEmpty()) return ExitOk;
     printError(QStringLiteral("the file is incomplete: the drive refused %1 of %2 objects")
@@ -74,17 +84,24 @@ int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictio
     const Result<usecases::Compax3Comparison> comparison =
         runOnCompax3<usecases::Compax3Comparison>(
             session, QStringLiteral("c3 verify"),
-            [s = *set](Compax3Device& device, JobContext& job) {
-                return usecases::compareCompax3Parameters(device, s, UseCaseProgress::of(job));
+            [s = *set, dictionary](Compax3Device& device, JobContext& job) {
+                return usecases::compareCompax3Parameters(device, s, dictionary,
+                                                          UseCaseProgress::of(job));
             });
     if (!comparison) return reportError(comparison.error());
     QString text;
+    for (const usecases::Compax3Refusal& ignored : comparison->ignored)
+        text += QStringLiteral("%1: not compared: %2\n").arg(ignored.id.text(), ignored.reason);
     for (const usecases::Compax3Difference& difference : comparison->differences)
         text += usecases::Compax3Comparison::lineFor(difference, dictionary) + QLatin1Char('\n');
+    const QString absent = comparison->absentOnBoth == 0
+                               ? QString()
+                               : QStringLiteral(" (%1 of them not on this drive, as on the file's)")
+                                     .arg(comparison->absentOnBoth);
     text += comparison->differences.isEmpty()
-                ? QStringLiteral("equal: the drive holds all %1 values of %2\n")
+                ? QStringLiteral("equal: the drive holds all %1 values of %2%3\n")
                       .arg(comparison->compared)
-                      .arg(path)
+                      .arg(path, absent)
                 : QStringLiteral("%1 differences in %2 objects compared\n")
                       .arg(comparison->differences.size())
                       .arg(comparison->compared);
