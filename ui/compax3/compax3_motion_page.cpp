@@ -38,6 +38,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
       m_target(numberBox("compax3Target", -1000000, 1000000, 100)),
       m_velocity(numberBox("compax3Velocity", 0, 100000, 100)),
       m_acceleration(numberBox("compax3Acceleration", 0, 10000000, 1000)),
+      m_mode(new QLabel),
       m_stop(new QPushButton(tr("STOP (Esc)"))) {
     setObjectName(QStringLiteral("compax3MotionPage"));
     m_axis->setObjectName(QStringLiteral("compax3MotionAxis"));
@@ -98,7 +99,10 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     form->addRow(tr("Target:"), m_target);
     form->addRow(tr("Velocity:"), m_velocity);
     form->addRow(tr("Acceleration:"), m_acceleration);
+    m_mode->setObjectName(QStringLiteral("compax3SetMode"));
+    form->addRow(tr("Mode (1905.n):"), m_mode);
     form->addRow(QString(), move);
+    connect(m_set, &QSpinBox::valueChanged, this, &Compax3MotionPage::readSet);
     auto* note =
         new QLabel(tr("Every motion asks first. A command that moves the axis is sent "
                       "once: when its answer is lost, CamBench reads the drive's state "
@@ -126,32 +130,79 @@ void Compax3MotionPage::factsChanged() {
     for (QPushButton* action : m_actions) action->setEnabled(known);
     m_stop->setEnabled(known);
     if (!known) m_axis->setText(tr("No drive connected."));
+    m_read.reset();
+    m_mode->setText(tr("not read"));
+    if (known) readSet();
+}
+
+void Compax3MotionPage::readSet() {
+    m_read.reset();
+    m_mode->setText(tr("not read"));
+    if (!facts().known) return;
+    const int set = m_set->value();
+    session()->run<comm::Compax3Device, comm::Compax3SetValues>(
+        this, tr("Read set %1").arg(set),
+        [set](comm::Compax3Device& device, comm::JobContext&) { return device.readSet(set); },
+        [this, set](Result<comm::Compax3SetValues> values) {
+            if (set != m_set->value()) return;  // another set was chosen meanwhile
+            if (!values) {
+                showResult(
+                    tr("Set %1 not read: %2").arg(set).arg(asSentence(values.error().message)),
+                    false);
+                return;
+            }
+            showSet(*values);
+        });
+}
+
+void Compax3MotionPage::showSet(const comm::Compax3SetValues& values) {
+    m_read = values;
+    m_target->setValue(values.target);
+    m_velocity->setValue(values.velocity);
+    m_acceleration->setValue(values.acceleration);
+    m_mode->setText(tr("%1 (as on the drive)").arg(values.modeText()));
 }
 
 bool Compax3MotionPage::poll() {
     return pollStatus([this](const comm::Compax3DriveStatus& status) {
         m_stale = false;
+        m_shown = status;
         m_axis->setText(capitalised(status.summary()));
         m_axis->setStyleSheet(QString());
     });
 }
 
 void Compax3MotionPage::markStale() {
-    if (m_stale || !facts().known || m_axis->text().isEmpty()) return;
+    showFreshness(LiveFreshness::State::Stale, tr("stale: the connection was lost"));
+}
+
+void Compax3MotionPage::showFreshness(LiveFreshness::State state, const QString& text) {
+    if (state != LiveFreshness::State::Stale && state != LiveFreshness::State::Paused) return;
+    if (!facts().known || !m_shown) return;
+    // The motion state is never shown as live when it is not.
     m_stale = true;
-    m_axis->setText(tr("%1 (stale: the connection was lost)").arg(m_axis->text()));
+    m_axis->setText(tr("%1 (%2)").arg(capitalised(m_shown->summary()), text.toLower()));
     m_axis->setStyleSheet(QStringLiteral("color: gray;"));
 }
 
 void Compax3MotionPage::finished(const QString& what,
-                                 const Result<comm::Compax3DriveStatus>& status) {
-    if (!status) {
-        showResult(tr("%1: %2").arg(what, asSentence(status.error().message)), false);
+                                 const Result<comm::Compax3CommandResult>& result) {
+    if (!result) {
+        showResult(tr("%1: %2").arg(what, asSentence(result.error().message)), false);
         poll();
         return;
     }
-    m_axis->setText(capitalised(status->summary()));
-    showResult(tr("Sent: %1. Now %2.").arg(what, status->summary()), true);
+    if (!result->note.isEmpty()) {
+        if (result->after) m_axis->setText(capitalised(result->after->summary()));
+        showResult(asSentence(result->note), false);
+        return;
+    }
+    if (result->after) {
+        m_shown = result->after;
+        m_axis->setText(capitalised(result->after->summary()));
+    }
+    // Acknowledged is done, even when the state could not be read after it.
+    showResult(tr("Sent: %1. Now %2.").arg(what, result->summary()), true);
 }
 
 void Compax3MotionPage::runMotion(Compax3Motion motion) {
@@ -169,49 +220,80 @@ void Compax3MotionPage::runMotion(Compax3Motion motion) {
                      detail))
             return;
     }
-    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
         this, what,
         [motion](comm::Compax3Device& device, comm::JobContext&) { return device.motion(motion); },
-        [this, what](Result<comm::Compax3DriveStatus> status) { finished(what, status); });
+        [this, what](Result<comm::Compax3CommandResult> result) {
+            finished(what, result);
+            Q_EMIT objectsWritten({comm::kCompax3ControlWord});
+        });
 }
 
 void Compax3MotionPage::moveSet() {
     if (!facts().known) return;
+    if (!m_read || m_read->set != m_set->value()) {
+        showResult(tr("Set %1 is not read from the drive yet: reading it; start it then.")
+                       .arg(m_set->value()),
+                   false);
+        readSet();
+        return;
+    }
+    // Only what the person changed is written; each value named.
     comm::Compax3SetMove move;
-    move.set = m_set->value();
-    if (move.set != 0) move.target = m_target->value();
-    move.velocity = m_velocity->value();
-    move.acceleration = m_acceleration->value();
+    move.set = m_read->set;
+    QStringList lines;
+    auto value = [&lines](const QString& name, double typed, double onDrive,
+                          std::optional<double>& into) {
+        if (typed != onDrive) {
+            into = typed;
+            lines << tr("%1: %2 → %3 (written first)")
+                         .arg(name, compax3NumberText(onDrive), compax3NumberText(typed));
+        } else {
+            lines << tr("%1: %2 (as on the drive)").arg(name, compax3NumberText(onDrive));
+        }
+    };
+    if (move.set != 0) value(tr("Target"), m_target->value(), m_read->target, move.target);
+    value(tr("Velocity"), m_velocity->value(), m_read->velocity, move.velocity);
+    value(tr("Acceleration and deceleration"), m_acceleration->value(), m_read->acceleration,
+          move.acceleration);
+    lines << tr("Mode (1905.%1): %2 (as on the drive)").arg(move.set).arg(m_read->modeText());
     const QString what = comm::compax3SetMoveText(move);
     if (!confirm(tr("Start"), capitalised(tr("%1 on drive %2?").arg(what, facts().identity.serial)),
-                 tr("The axis moves to the set's target at its velocity. STOP (or Escape) "
-                    "stops it. Make sure nobody is at the axis.")))
+                 lines.join(QLatin1Char('\n')) + QStringLiteral("\n\n") +
+                     tr("The axis moves to the set's target at its velocity. STOP (or Escape) "
+                        "stops it. Make sure nobody is at the axis.")))
         return;
-    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
         this, what,
         [move](comm::Compax3Device& device, comm::JobContext&) { return device.moveSet(move); },
-        [this, what](Result<comm::Compax3DriveStatus> status) { finished(what, status); });
+        [this, what, set = move.set](Result<comm::Compax3CommandResult> result) {
+            finished(what, result);
+            readSet();  // what the set holds now
+            Q_EMIT objectsWritten({comm::compax3SetTarget(set), comm::compax3SetVelocity(set),
+                                   comm::compax3SetAcceleration(set),
+                                   comm::compax3SetDeceleration(set), comm::kCompax3ControlWord});
+        });
 }
 
 void Compax3MotionPage::stop() {
     if (!facts().known) return;
     // What waits for the line (a poll, a queued move) goes first.
     session()->worker().cancelAll();
-    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
         this, tr("STOP"),
         [](comm::Compax3Device& device, comm::JobContext&) {
             return device.motion(Compax3Motion::Stop);
         },
-        [this](Result<comm::Compax3DriveStatus> status) {
-            if (!status) {
+        [this](Result<comm::Compax3CommandResult> result) {
+            if (!result) {
                 showResult(tr("STOP did not reach the drive: %1. Use the machine's emergency "
                               "stop.")
-                               .arg(asSentence(status.error().message)),
+                               .arg(asSentence(result.error().message)),
                            false);
                 return;
             }
-            m_axis->setText(capitalised(status->summary()));
-            showResult(tr("STOP acknowledged by the drive; now %1.").arg(status->summary()), true);
+            if (result->after) m_axis->setText(capitalised(result->after->summary()));
+            showResult(tr("STOP acknowledged by the drive; now %1.").arg(result->summary()), true);
         });
 }
 

@@ -2,6 +2,8 @@
 
 #include "compax3_page.h"
 
+#include <optional>
+
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -10,9 +12,11 @@ class QSpinBox;
 namespace cambench {
 
 // Motion: enable/disable, jog + and −, move set n with target, velocity and
-// acceleration; each asks first, saying that the axis will move. STOP is
-// always on the page and Escape presses it from anywhere in the window; it
-// drops what waits for the line first.
+// acceleration; each asks first, saying that the axis will move. The set's
+// values and mode are read from the drive when a set is chosen; a start
+// writes only what the person changed and the question names each value.
+// STOP is always on the page and Escape presses it from anywhere in the
+// window; it drops what waits for the line first.
 class Compax3MotionPage : public Compax3Page {
     Q_OBJECT
 public:
@@ -21,8 +25,11 @@ public:
     QString sectionTitle() const override { return tr("Motion"); }
     bool poll() override;
     void markStale() override;
+    void showFreshness(LiveFreshness::State state, const QString& text) override;
 
     void runMotion(comm::Compax3Motion motion);
+    // Reads the chosen set from the drive into the editors.
+    void readSet();
     void moveSet();
     void stop();
     QPushButton* stopButton() const { return m_stop; }
@@ -32,16 +39,21 @@ protected:
     void factsChanged() override;
 
 private:
-    void finished(const QString& what, const Result<comm::Compax3DriveStatus>& status);
+    void finished(const QString& what, const Result<comm::Compax3CommandResult>& result);
+    void showSet(const comm::Compax3SetValues& values);
 
     QLabel* m_axis;
     QSpinBox* m_set;
     QDoubleSpinBox* m_target;
     QDoubleSpinBox* m_velocity;
     QDoubleSpinBox* m_acceleration;
+    QLabel* m_mode;
+    // The set as last read from the drive: what a start compares against.
+    std::optional<comm::Compax3SetValues> m_read;
     QPushButton* m_stop;
     QList<QPushButton*> m_actions;
     bool m_stale = false;
+    std::optional<comm::Compax3DriveStatus> m_shown;  // the axis as last read
 };
 
 }  // namespace cambench

@@ -17,6 +17,13 @@ void Compax3ObjectModel::setDictionary(const Compax3Dictionary& dictionary) {
     // Typed values of objects the new dictionary lacks stay, by number.
     for (auto it = m_edits.cbegin(); it != m_edits.cend(); ++it)
         if (!m_dictionary.find(it.key()) && !m_extra.contains(it.key())) m_extra << it.key();
+    // Every typed value checked again against the new dictionary's type
+    // and range; a refused one stays typed in, marked, and is not written.
+    for (auto it = m_edits.begin(); it != m_edits.end(); ++it) {
+        const Result<QString> wire = compax3WireValueFor(m_dictionary, it.key(), it->value);
+        it->wire = wire ? *wire : QString();
+        it->problem = wire ? QString() : wire.error().message;
+    }
     rebuild();
 }
 
@@ -100,7 +107,16 @@ void Compax3ObjectModel::refreshRow(const Compax3ObjectId& id) {
     QStandardItem* edit = parent->child(first->row(), NewValue);
     m_updating = true;
     const Known known = m_known.value(id);
-    if (!known.error.isEmpty()) {
+    for (QStandardItem* cell : {first, parent->child(first->row(), Name)})
+        cell->setData(known.absent ? QVariant(QBrush(Qt::gray)) : QVariant(), Qt::ForegroundRole);
+    if (known.absent) {
+        value->setText(tr("not on this drive"));
+        value->setToolTip(tr("The drive does not have this object: %1").arg(known.error));
+        value->setForeground(QBrush(Qt::gray));
+        QFont font = value->font();
+        font.setItalic(true);
+        value->setFont(font);
+    } else if (!known.error.isEmpty()) {
         value->setText(tr("refused"));
         value->setToolTip(known.error);
         value->setForeground(QBrush(QColor(0xd0, 0x30, 0x30)));
@@ -130,11 +146,18 @@ void Compax3ObjectModel::refreshRow(const Compax3ObjectId& id) {
     }
     if (edited) {
         edit->setText(it->value);
-        edit->setToolTip(tr("Edited on this PC, not on the drive yet: Write changes sends it."));
+        edit->setToolTip(
+            it->problem.isEmpty()
+                ? tr("Edited on this PC, not on the drive yet: Write changes sends it.")
+                : tr("Typed in, but the dictionary in use refuses it: %1").arg(it->problem));
+        edit->setData(
+            it->problem.isEmpty() ? QVariant() : QVariant(QBrush(QColor(0xd0, 0x30, 0x30))),
+            Qt::ForegroundRole);
     } else {
         edit->setText(QString());
         edit->setToolTip(edit->isEditable() ? tr("Type a new value (decimal point: 12.5)")
                                             : QString());
+        edit->setData(QVariant(), Qt::ForegroundRole);
     }
     m_updating = false;
 }
@@ -148,6 +171,19 @@ void Compax3ObjectModel::setDriveValue(const Compax3ObjectId& id, const QString&
 void Compax3ObjectModel::setDriveError(const Compax3ObjectId& id, const QString& error) {
     m_known.insert(id, Known{std::nullopt, error, QDateTime::currentDateTime(), false});
     refreshRow(id);
+}
+
+void Compax3ObjectModel::setDriveAbsent(const Compax3ObjectId& id, const QString& answer) {
+    m_known.insert(id, Known{std::nullopt, answer, QDateTime::currentDateTime(), false, true});
+    refreshRow(id);
+}
+
+QStringList Compax3ObjectModel::editProblems() const {
+    QStringList problems;
+    for (auto it = m_edits.cbegin(); it != m_edits.cend(); ++it)
+        if (!it->problem.isEmpty()) problems << it->problem;
+    problems.sort();
+    return problems;
 }
 
 std::optional<QString> Compax3ObjectModel::driveValue(const Compax3ObjectId& id) const {
@@ -164,7 +200,7 @@ void Compax3ObjectModel::markStale() {
 Status Compax3ObjectModel::setEdit(const Compax3ObjectId& id, const QString& typed) {
     const Result<QString> wire = compax3WireValueFor(m_dictionary, id, typed);
     if (!wire) return wire.error();
-    m_edits.insert(id, Edit{typed.trimmed(), *wire});
+    m_edits.insert(id, Edit{typed.trimmed(), *wire, {}});
     refreshRow(id);
     return success();
 }

@@ -29,15 +29,23 @@ public:
     // A value read from the drive, or a refusal (`error`); clears stale.
     void setDriveValue(const Compax3ObjectId& id, const QString& value, const QDateTime& at);
     void setDriveError(const Compax3ObjectId& id, const QString& error);
+    // The drive does not have the object (it answered "no such object"):
+    // greyed "not on this drive", `answer` in the tooltip.
+    void setDriveAbsent(const Compax3ObjectId& id, const QString& answer);
     std::optional<QString> driveValue(const Compax3ObjectId& id) const;
     // The line went: every value read is no longer known to be true.
     void markStale();
 
-    // Typed values not yet on the drive (already checked: the wire form).
+    // Typed values not yet on the drive (checked: the wire form). A
+    // dictionary loaded later checks them again: one it refuses keeps what
+    // was typed and says why in `problem` (and is not written).
     struct Edit {
         QString value;
         QString wire;
+        QString problem;
     };
+    // "1901.1: …" for each typed value the dictionary in use refuses.
+    QStringList editProblems() const;
     const QHash<Compax3ObjectId, Edit>& edits() const { return m_edits; }
     // Checks `typed` against the dictionary; an error leaves the edit as it was.
     Status setEdit(const Compax3ObjectId& id, const QString& typed);
@@ -62,6 +70,7 @@ private:
         QString error;
         QDateTime at;
         bool stale = false;
+        bool absent = false;
     };
     void rebuild();
     QList<QStandardItem*> rowFor(const Compax3ObjectInfo& info, bool known);

@@ -3,6 +3,7 @@
 #include "compax3_gui.h"
 #include "compax3_object_model.h"
 
+#include "comm/compax3/compax3_syntax.h"
 #include "comm/compax3/usecases/compax3_parameters.h"
 #include "comm/compax3/usecases/compax3_read_objects.h"
 #include "ui/device_session.h"
@@ -62,6 +63,12 @@ Compax3ObjectsPage::Compax3ObjectsPage(DeviceSession* session, Compax3Gui* gui, 
     connect(gui, &Compax3Gui::dictionaryChanged, this, [this] {
         m_model->setDictionary(m_gui->dictionary());
         m_tree->expandToDepth(0);
+        if (const QStringList problems = m_model->editProblems(); !problems.isEmpty())
+            showResult(tr("The loaded dictionary refuses %n typed value(s); they stay typed in "
+                          "and are not written until corrected: %1",
+                          nullptr, int(problems.size()))
+                           .arg(problems.join(QStringLiteral("; "))),
+                       false);
     });
 
     auto* read = new QPushButton(tr("Read all"));
@@ -147,6 +154,8 @@ void Compax3ObjectsPage::read(const QList<Compax3ObjectId>& ids) {
             for (const Compax3Reading& value : *values) {
                 if (!value.refused()) {
                     m_model->setDriveValue(value.id, value.value, now);
+                } else if (comm::compax3RefusalMeansAbsent(value.refusal)) {
+                    m_model->setDriveAbsent(value.id, value.refusal.message);
                 } else {
                     m_model->setDriveError(value.id, value.refusal.message);
                     ++refused;
@@ -172,6 +181,15 @@ void Compax3ObjectsPage::writeChanges() {
         showResult(tr("Not connected to a drive: the values stay typed in."), false);
         return;
     }
+    // Checked again against the dictionary in use before the first byte.
+    if (const QStringList problems = m_model->editProblems(); !problems.isEmpty()) {
+        showResult(tr("Nothing was written: the dictionary in use refuses %n typed value(s) "
+                      "(they stay typed in; correct or clear them): %1",
+                      nullptr, int(problems.size()))
+                       .arg(problems.join(QStringLiteral("; "))),
+                   false);
+        return;
+    }
     QList<usecases::Compax3Write> writes;
     QStringList lines;
     QList<Compax3ObjectId> ids = edits.keys();
@@ -193,7 +211,8 @@ void Compax3ObjectsPage::writeChanges() {
         this, tr("Write objects"),
         [writes, dictionary](comm::Compax3Device& device, comm::JobContext& job) {
             return Result<usecases::OutcomeTally>(usecases::writeCompax3Objects(
-                device, writes, dictionary, usecases::UseCaseProgress::of(job)));
+                device, writes, dictionary, usecases::Compax3WriteSource::Typed,
+                usecases::UseCaseProgress::of(job)));
         },
         [this, writes](Result<usecases::OutcomeTally> tally) {
             if (!tally) {
@@ -269,8 +288,11 @@ void Compax3ObjectsPage::loadDictionary(const QString& path) {
                     nullptr, int(m_model->edits().size()))))
         return;
     m_gui->setDictionary(*loaded);
-    showResult(tr("Loaded %n object(s) from %1.", nullptr, int(loaded->objects().size())).arg(path),
-               true);
+    // The typed values it refuses were said when it was set.
+    if (m_model->editProblems().isEmpty())
+        showResult(
+            tr("Loaded %n object(s) from %1.", nullptr, int(loaded->objects().size())).arg(path),
+            true);
     readAll();
 }
 

@@ -30,6 +30,9 @@ public:
 
     // Reads every readable object of the tree.
     void readAll();
+    // Reads these objects again (another page wrote them): the drive's
+    // values replace what was shown; what is typed stays typed.
+    void read(const QList<Compax3ObjectId>& ids);
     void writeChanges();
     // The raw entry: "O 1234,5" or "1234.5".
     void readRaw(const QString& object);
@@ -40,8 +43,6 @@ protected:
     void factsChanged() override;
 
 private:
-    void read(const QList<Compax3ObjectId>& ids);
-
     Compax3Gui* m_gui;
     Compax3ObjectModel* m_model;
     QSortFilterProxyModel* m_filter;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/live_device_page.h"
+#include "ui/live_freshness.h"
 
 #include "comm/compax3/compax3_device.h"
 
@@ -27,6 +28,18 @@ public:
         m_facts = facts;
         factsChanged();
     }
+
+    // The live values' freshness changed: a page greys what it shows with
+    // `text` ("No answer since 12:03:04", "Paused") unless `state` is Live.
+    virtual void showFreshness(LiveFreshness::State state, const QString& text) {
+        Q_UNUSED(state);
+        Q_UNUSED(text);
+    }
+
+Q_SIGNALS:
+    // This page changed these objects on the drive: the pages that show
+    // them read them again, so that every page shows the drive's value.
+    void objectsWritten(const QList<cambench::Compax3ObjectId>& ids);
 
 protected:
     virtual void factsChanged() {}

@@ -27,7 +27,8 @@ Compax3ParametersPage::Compax3ParametersPage(DeviceSession* session, Compax3Gui*
       m_file(new QLabel(tr("No file compared yet."))),
       m_table(new QTableWidget(0, 4)),
       m_force(new QCheckBox(tr("Write to another drive type"))),
-      m_store(new QCheckBox(tr("Store the sets in the drive's flash afterwards (1904.1 = $32)"))) {
+      m_store(new QCheckBox(
+          tr("Store the written sets in the drive's flash afterwards (1904.n = $32)"))) {
     setObjectName(QStringLiteral("compax3ParametersPage"));
     auto* save = new QPushButton(tr("Save drive to file…"));
     save->setObjectName(QStringLiteral("compax3SaveParameters"));
@@ -88,11 +89,12 @@ Compax3ParametersPage::Compax3ParametersPage(DeviceSession* session, Compax3Gui*
 
 void Compax3ParametersPage::saveToFile(const QString& path) {
     if (!facts().known) return;
-    const QList<Compax3ObjectId> objects = m_gui->dictionary().parameters();
+    const Compax3Dictionary dictionary = m_gui->dictionary();
+    const QList<Compax3ObjectId> objects = dictionary.parameters();
     session()->run<comm::Compax3Device, usecases::Compax3Backup>(
         this, tr("Save drive parameters"),
-        [objects](comm::Compax3Device& device, comm::JobContext& job) {
-            return usecases::takeCompax3Parameters(device, objects,
+        [objects, dictionary](comm::Compax3Device& device, comm::JobContext& job) {
+            return usecases::takeCompax3Parameters(device, objects, dictionary,
                                                    usecases::UseCaseProgress::of(job));
         },
         [this, path](Result<usecases::Compax3Backup> backup) {
@@ -119,10 +121,17 @@ void Compax3ParametersPage::saveToFile(const QString& path) {
                 showResult(tr("Incomplete: %1 objects refused.").arg(refused.size()), false);
                 return;
             }
-            showResult(tr("Saved %1 objects of drive %2 to %3.")
-                           .arg(backup->set.values.size())
-                           .arg(backup->set.drive.serial, path),
-                       true);
+            QString text = tr("Saved %1 objects of drive %2 to %3.")
+                               .arg(backup->set.values.size())
+                               .arg(backup->set.drive.serial, path);
+            if (!backup->set.absent.isEmpty()) {
+                QStringList absent;
+                for (const Compax3ObjectId& id : backup->set.absent) absent << id.text();
+                text +=
+                    QLatin1Char(' ') + tr("Not on this drive (recorded in the file as absent): %1.")
+                                           .arg(absent.join(QStringLiteral(", ")));
+            }
+            showResult(text, true);
         });
 }
 
@@ -145,8 +154,9 @@ void Compax3ParametersPage::compareWith(const QString& path) {
     if (!facts().known) return;
     session()->run<comm::Compax3Device, usecases::Compax3Comparison>(
         this, tr("Compare with file"),
-        [s = *set](comm::Compax3Device& device, comm::JobContext& job) {
-            return usecases::compareCompax3Parameters(device, s,
+        [s = *set, dictionary = m_gui->dictionary()](comm::Compax3Device& device,
+                                                     comm::JobContext& job) {
+            return usecases::compareCompax3Parameters(device, s, dictionary,
                                                       usecases::UseCaseProgress::of(job));
         },
         [this](Result<usecases::Compax3Comparison> comparison) {
@@ -166,7 +176,13 @@ void Compax3ParametersPage::compareWith(const QString& path) {
                 m_table->setItem(
                     row, 1,
                     new QTableWidgetItem(info ? info->nameIn(currentLanguage()) : QString()));
-                m_table->setItem(row, 2, new QTableWidgetItem(d.fileValue));
+                m_table->setItem(row, 2,
+                                 new QTableWidgetItem(d.absentInFile ? tr("not on the file's drive")
+                                                                     : d.fileValue));
+                if (d.absentInFile) {  // nothing in the file to write: no tick
+                    object->setFlags(object->flags() & ~Qt::ItemIsUserCheckable);
+                    object->setData(Qt::CheckStateRole, QVariant());
+                }
                 m_table->setItem(row, 3,
                                  new QTableWidgetItem(d.error.isEmpty() ? d.driveValue : d.error));
             }
@@ -229,6 +245,9 @@ void Compax3ParametersPage::writeFile(bool selectedOnly) {
             }
             ReportDialog::presentTally(window(), tr("Write"), *tally);
             showResult(tally->summary(), tally->complete());
+            QList<Compax3ObjectId> touched;
+            for (const Compax3ParameterValue& value : m_set->values) touched << value.id;
+            Q_EMIT objectsWritten(touched);
             if (!m_path.isEmpty()) compareWith(m_path);
         });
 }

@@ -62,6 +62,8 @@ QString Compax3StatusPage::errorText() const {
 
 void Compax3StatusPage::show(const comm::Compax3DriveStatus& status) {
     m_stale = false;
+    m_shown = status;
+    m_axis->setStyleSheet(QString());
     m_word = status.status.word;
     paintLamps();
     m_error->setText(comm::compax3LastErrorText(status.lastError));
@@ -88,10 +90,23 @@ bool Compax3StatusPage::poll() {
 }
 
 void Compax3StatusPage::markStale() {
-    if (m_stale || m_error->text().isEmpty()) return;
+    greyOut(tr("stale: the connection was lost"));
+}
+
+void Compax3StatusPage::showFreshness(LiveFreshness::State state, const QString& text) {
+    if (state == LiveFreshness::State::Stale || state == LiveFreshness::State::Paused)
+        greyOut(text);
+}
+
+void Compax3StatusPage::greyOut(const QString& why) {
+    if (!m_shown) return;
     m_stale = true;
     paintLamps();
-    m_error->setText(tr("%1 (stale: the connection was lost)").arg(m_error->text()));
+    m_error->setText(
+        tr("%1 (%2)").arg(comm::compax3LastErrorText(m_shown->lastError), why.toLower()));
+    m_error->setStyleSheet(QStringLiteral("color: gray;"));
+    m_axis->setText(tr("%1 (%2)").arg(m_shown->summary(), why.toLower()));
+    m_axis->setStyleSheet(QStringLiteral("color: gray;"));
 }
 
 void Compax3StatusPage::acknowledge() {
@@ -99,24 +114,36 @@ void Compax3StatusPage::acknowledge() {
     if (!confirm(tr("Acknowledge"),
                  tr("Acknowledge the error and power the axis of drive %1?")
                      .arg(facts().identity.serial),
-                 tr("The drive is switched off and on again; it holds its position with power "
-                    "afterwards. Make sure nobody is at the axis.")))
+                 tr("A powerless drive is switched off and on again; it holds its position "
+                    "with power afterwards. A powered drive is left as it is (nothing is sent). "
+                    "Make sure nobody is at the axis.")))
         return;
-    session()->run<comm::Compax3Device, comm::Compax3DriveStatus>(
+    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
         this, tr("Acknowledge"),
         [](comm::Compax3Device& device, comm::JobContext&) {
             return device.motion(comm::Compax3Motion::Enable);
         },
-        [this](Result<comm::Compax3DriveStatus> status) {
-            if (!status) {
-                showResult(tr("Not acknowledged: %1").arg(asSentence(status.error().message)),
+        [this](Result<comm::Compax3CommandResult> result) {
+            if (!result) {
+                showResult(tr("Not acknowledged: %1").arg(asSentence(result.error().message)),
                            false);
                 return;
             }
-            show(*status);
+            if (!result->note.isEmpty()) {
+                if (result->after) show(*result->after);
+                showResult(asSentence(result->note), false);
+                return;
+            }
+            if (!result->after) {
+                showResult(tr("Acknowledged by the drive; %1").arg(asSentence(result->summary())),
+                           true);
+                poll();
+                return;
+            }
+            show(*result->after);
             showResult(tr("Acknowledged; last error now: %1.")
-                           .arg(comm::compax3LastErrorText(status->lastError)),
-                       status->lastError == 1);
+                           .arg(comm::compax3LastErrorText(result->after->lastError)),
+                       result->after->lastError == 1);
         });
 }
 

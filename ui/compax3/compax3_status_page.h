@@ -2,6 +2,8 @@
 
 #include "compax3_page.h"
 
+#include <optional>
+
 class QLabel;
 class QPushButton;
 
@@ -19,6 +21,7 @@ public:
     QString sectionTitle() const override { return tr("Status"); }
     bool poll() override;
     void markStale() override;
+    void showFreshness(LiveFreshness::State state, const QString& text) override;
     void acknowledge();
     // Bit `bit` of the status word as last read.
     bool bitOn(int bit) const { return m_word & (1u << bit); }
@@ -27,6 +30,8 @@ public:
 private:
     void show(const comm::Compax3DriveStatus& status);
     void paintLamps();
+    // Greys lamps, error and axis with `why` after the values.
+    void greyOut(const QString& why);
 
     QList<QLabel*> m_lamps;  // one per bit, with its name
     quint16 m_word = 0;
@@ -34,6 +39,7 @@ private:
     QLabel* m_axis;
     QPushButton* m_acknowledge;
     bool m_stale = false;
+    std::optional<comm::Compax3DriveStatus> m_shown;  // as last read
 };
 
 }  // namespace cambench

@@ -39,6 +39,18 @@ Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
     connect(m_poll, &QTimer::timeout, this, [this] {
         if (m_shown && m_compax3->session()->isOnline()) m_shown->poll();
     });
+    // One copy of each drive value: what one page wrote, the Objects page
+    // reads again and shows as the drive's.
+    for (Compax3Page* page : compax3Pages())
+        connect(page, &Compax3Page::objectsWritten, m_objects,
+                [this](const QList<Compax3ObjectId>& ids) { m_objects->read(ids); });
+    // A missed poll cycle or polling paused (a backup): every page greys
+    // its live values and says why.
+    connect(gui->session()->freshness(), &LiveFreshness::changed, this,
+            [this](LiveFreshness::State state) {
+                const QString text = m_compax3->session()->freshness()->describe();
+                for (Compax3Page* page : compax3Pages()) page->showFreshness(state, text);
+            });
     connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
         if (m_compax3->session()->isOnline()) return;
         // The line is gone: what the pages show is no longer known to be true.

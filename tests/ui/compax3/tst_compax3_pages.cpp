@@ -21,12 +21,17 @@
 #include "comm/compax3/compax3_objects.h"
 
 #include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSortFilterProxyModel>
+#include <QSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTreeView>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -196,6 +201,114 @@ private Q_SLOTS:
         motion->runMotion(comm::Compax3Motion::JogMinus);
         QTest::qWait(700);
         QVERIFY(motion->axisText().startsWith(QLatin1String("Powered, standing")));
+    }
+
+    void anOpenEditorSurvivesAReadAndAPoll() {
+        // Issue 27 item 5: what is typed stays typed while values come in.
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        Compax3ObjectsPage* objects = c3->objectsPage();
+        shell->window()->showPage(objects);
+        shell->window()->show();
+        Compax3ObjectModel* model = objects->model();
+        const Compax3ObjectId target = comm::compax3SetTarget(4);
+        QVERIFY(QTest::qWaitFor([&] { return model->driveValue(target).has_value(); },
+                                kDeviceTimeoutMs));
+        auto* proxy = qobject_cast<QSortFilterProxyModel*>(objects->tree()->model());
+        QVERIFY(proxy);
+        const QModelIndex cell =
+            proxy->mapFromSource(model->indexOf(target, Compax3ObjectModel::NewValue));
+        objects->tree()->scrollTo(cell);
+        objects->tree()->edit(cell);
+        auto* editor = objects->tree()->viewport()->findChild<QLineEdit*>();
+        QVERIFY(editor);
+        editor->setText(QStringLiteral("400"));
+        // The drive's values arrive (a read as after another page's write).
+        objects->read({target, comm::compax3SetVelocity(4)});
+        QVERIFY(QTest::qWaitFor(
+            [&] { return resultOf(objects).startsWith(QLatin1String("Read 2 object")); },
+            kDeviceTimeoutMs));
+        QCOMPARE(editor->text(), QStringLiteral("400"));
+        QVERIFY(model->edits().isEmpty());  // not taken before the person is done
+
+        // The Watch page: its polls never touch what is being typed.
+        Compax3WatchPage* watch = c3->watchPage();
+        shell->window()->showPage(watch);
+        auto* add = watch->findChild<QLineEdit*>(QStringLiteral("compax3WatchAdd"));
+        add->setText(QStringLiteral("1901."));
+        const int before = watch->chart()->pointCount();
+        QVERIFY(QTest::qWaitFor([&] { return watch->chart()->pointCount() >= before + 2; },
+                                kDeviceTimeoutMs));
+        QCOMPARE(add->text(), QStringLiteral("1901."));
+    }
+
+    void aSetStartShowsTheSetAndAWriteShowsOnObjects() {
+        // Issue 27 items 4 and 5: the set as the drive holds it, only what
+        // was changed written and named, and the Objects page shows it.
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        Compax3ObjectModel* model = c3->objectsPage()->model();
+        const Compax3ObjectId velocity = comm::compax3SetVelocity(3);
+        QVERIFY(QTest::qWaitFor([&] { return model->driveValue(velocity).has_value(); },
+                                kDeviceTimeoutMs));
+        QCOMPARE(*model->driveValue(velocity), QStringLiteral("200"));
+        Compax3MotionPage* motion = c3->motionPage();
+        shell->window()->showPage(motion);
+        {
+            auto yes = answerConfirmation(true);
+            motion->runMotion(comm::Compax3Motion::Enable);
+            QVERIFY(QTest::qWaitFor(
+                [&] { return motion->axisText().startsWith(QLatin1String("Powered")); },
+                kDeviceTimeoutMs));
+        }
+        motion->findChild<QSpinBox*>(QStringLiteral("compax3Set"))->setValue(3);
+        auto* mode = motion->findChild<QLabel*>(QStringLiteral("compax3SetMode"));
+        QVERIFY(QTest::qWaitFor([&] { return mode->text().startsWith(QLatin1String("absolute")); },
+                                kDeviceTimeoutMs));
+        auto* target = motion->findChild<QDoubleSpinBox*>(QStringLiteral("compax3Target"));
+        QCOMPARE(target->value(), 300.0);  // set 3 as the drive holds it
+        motion->findChild<QDoubleSpinBox*>(QStringLiteral("compax3Velocity"))->setValue(5000);
+        QString question;
+        NextDialog<QMessageBox> yes([&question](QMessageBox* box) {
+            question = box->informativeText() + box->detailedText() + box->text();
+            for (QAbstractButton* button : box->buttons())
+                if (box->buttonRole(button) != QMessageBox::RejectRole) {
+                    button->click();
+                    return;
+                }
+        });
+        motion->moveSet();
+        QVERIFY(QTest::qWaitFor([&] { return !question.isEmpty(); }, kDeviceTimeoutMs));
+        QVERIFY2(question.contains(QLatin1String("Velocity: 200 → 5000 (written first)")) &&
+                     question.contains(QLatin1String("Target: 300 (as on the drive)")) &&
+                     question.contains(QLatin1String("Mode (1905.3): absolute")),
+                 qPrintable(question));
+        // The Objects page shows the written velocity as the drive's.
+        QVERIFY2(
+            QTest::qWaitFor([&] { return model->driveValue(velocity) == QStringLiteral("5000"); },
+                            kDeviceTimeoutMs),
+            qPrintable(model->driveValue(velocity).value_or(QString())));
+    }
+
+    void objectsTheDriveLacksAreGreyed() {
+        // Issue 29 item 2, with a drive that differs from the default one
+        // in type and objects.
+        std::unique_ptr<Shell> shell = startOnSimulator(
+            QStringLiteral("sim:type=S150V4;lacks=1901.0,1902.0"), QStringLiteral("compax3"));
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        QCOMPARE(c3->facts().identity.type(), QStringLiteral("S150V4"));
+        Compax3ObjectModel* model = c3->objectsPage()->model();
+        auto lacking = [model] {
+            return model->indexOf(comm::compax3SetTarget(0), Compax3ObjectModel::DriveValue);
+        };
+        QVERIFY(QTest::qWaitFor(
+            [&] { return lacking().data().toString() == QLatin1String("not on this drive"); },
+            kDeviceTimeoutMs));
+        QVERIFY(lacking().data(Qt::ToolTipRole).toString().contains(QLatin1String("!0002")));
+        QVERIFY(model->driveValue(comm::compax3SetTarget(1)).has_value());
     }
 
     void watchAndParameters() {
