@@ -1,5 +1,7 @@
 #include "compax3_syntax.h"
 
+#include "model/compax3/compax3_refusals.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
 
@@ -62,28 +64,11 @@ Result<Compax3Reply> parseCompax3Reply(const QByteArray& raw) {
 }
 
 QString compax3ErrorMeaning(int code) {
-    switch (code) {
-        case 0x0001:
-            return QCoreApplication::translate("cambench::comm", "syntax error");
-        case 0x0002:
-            return QCoreApplication::translate("cambench::comm", "no such object");
-        case 0x0003:
-            return QCoreApplication::translate("cambench::comm", "the object is read-only");
-        case 0x0004:
-            return QCoreApplication::translate("cambench::comm",
-                                               "the value is outside the object's range");
-        case 0x0005:
-            return QCoreApplication::translate("cambench::comm",
-                                               "not possible in the drive's state");
-        case 0x0006:
-            return QCoreApplication::translate("cambench::comm", "the value has the wrong type");
-        default:
-            return {};
-    }
+    return compax3RefusalMeaning(code);
 }
 
 bool compax3RefusalMeansAbsent(const cambench::Error& error) {
-    return error.kind == ErrorKind::DeviceError && error.deviceCode == 0x0002;
+    return error.kind == ErrorKind::DeviceError && compax3RefusalSaysAbsent(error.deviceCode);
 }
 
 cambench::Error compax3RefusalError(const QByteArray& command, int code) {

@@ -12,6 +12,8 @@ target_sources(cambench_model PRIVATE
   compax3/compax3_value.cpp
   compax3/compax3_dictionary.h
   compax3/compax3_dictionary.cpp
+  compax3/compax3_refusals.h
+  compax3/compax3_refusals.cpp
   compax3/compax3_builtin_objects.h
   ${CMAKE_CURRENT_BINARY_DIR}/compax3_builtin_objects.cpp
   compax3/compax3_parameter_file.h

@@ -8,6 +8,7 @@
 #include "comm/engine/cr_line_backend.h"
 #include "model/compax3/compax3_dictionary.h"
 #include "model/compax3/compax3_parameter_file.h"
+#include "model/compax3/compax3_refusals.h"
 
 #include <QLocale>
 #include <QTest>
@@ -135,6 +136,15 @@ private Q_SLOTS:
         const Error unknown = compax3RefusalError("O1,1", 0xBEEF);
         QVERIFY2(unknown.message.contains(QLatin1String("!BEEF")), qPrintable(unknown.message));
         QVERIFY(unknown.message.contains(QLatin1String("manual")));
+        // The meanings are data (the dictionary file's "refusals"): every
+        // number the emulator knows, "no such object" the one that means absent.
+        QCOMPARE(compax3Refusals().size(), 6);
+        QVERIFY(compax3RefusalSaysAbsent(2));
+        QVERIFY(!compax3RefusalSaysAbsent(5));
+        QVERIFY(compax3RefusalMeansAbsent(compax3RefusalError("O1901,0", 2)));
+        // English under a German locale without the German translation
+        // (this test's locale): the CLI's language.
+        QCOMPARE(compax3RefusalMeaning(3), QStringLiteral("the object is read-only"));
         QCOMPARE(compax3LastErrorText(0x7320), QStringLiteral("following error ($7320)"));
         QVERIFY(compax3LastErrorText(12345).contains(QLatin1String("$3039")));
     }
