@@ -144,12 +144,21 @@ void Compax3WatchPage::show(const QList<usecases::Compax3Reading>& values) {
 }
 
 void Compax3WatchPage::markStale() {
+    greyOut(tr("Stale: the connection was lost after this was read."));
+}
+
+void Compax3WatchPage::showFreshness(LiveFreshness::State state, const QString& text) {
+    if (state == LiveFreshness::State::Stale || state == LiveFreshness::State::Paused)
+        greyOut(text);
+}
+
+void Compax3WatchPage::greyOut(const QString& why) {
     m_chart->breakLine();
     for (int row = 0; row < m_table->rowCount(); ++row)
         for (int column : {ValueColumn, ReadColumn})
             if (QTableWidgetItem* item = m_table->item(row, column)) {
                 item->setForeground(Qt::gray);
-                item->setToolTip(tr("Stale: the connection was lost after this was read."));
+                item->setToolTip(why);
             }
 }
 

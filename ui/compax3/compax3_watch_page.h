@@ -27,6 +27,7 @@ public:
     QString sectionTitle() const override { return tr("Watch"); }
     bool poll() override;
     void markStale() override;
+    void showFreshness(LiveFreshness::State state, const QString& text) override;
     // "680.5" or "O 680,5"; false with a message when it is no object.
     bool addObject(const QString& text);
     QTableWidget* table() const { return m_table; }
@@ -34,6 +35,8 @@ public:
 
 private:
     void rebuildTable();
+    // Greys the values read and says why in their tooltips.
+    void greyOut(const QString& why);
     void show(const QList<usecases::Compax3Reading>& values);
 
     Compax3Gui* m_gui;
