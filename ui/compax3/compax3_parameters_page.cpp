@@ -131,6 +131,13 @@ void Compax3ParametersPage::saveToFile(const QString& path) {
                     QLatin1Char(' ') + tr("Not on this drive (recorded in the file as absent): %1.")
                                            .arg(absent.join(QStringLiteral(", ")));
             }
+            if (!backup->notSaved.isEmpty()) {
+                QStringList never;
+                for (const usecases::Compax3Refusal& skipped : backup->notSaved)
+                    never << skipped.id.text();
+                text += QLatin1Char(' ') + tr("Never saved, being control words or functions: %1.")
+                                               .arg(never.join(QStringLiteral(", ")));
+            }
             showResult(text, true);
         });
 }
