@@ -200,6 +200,15 @@ void Compax3ParametersPage::compareWith(const QString& path) {
                                : tr("%1 of %2 objects differ.")
                                      .arg(comparison->differences.size())
                                      .arg(comparison->compared);
+            if (!comparison->ignored.isEmpty()) {
+                QStringList ignored;
+                for (const usecases::Compax3Refusal& skipped : comparison->ignored)
+                    ignored << skipped.id.text();
+                text += QLatin1Char(' ') +
+                        tr("Not compared, being control words or functions a file never "
+                           "writes: %1.")
+                            .arg(ignored.join(QStringLiteral(", ")));
+            }
             if (otherType)
                 text += QLatin1Char(' ') +
                         tr("The file is from a drive of type %1, this one is of type %2.")
