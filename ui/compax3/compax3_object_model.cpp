@@ -8,6 +8,17 @@
 
 namespace cambench {
 
+namespace {
+
+// Sets `role` only when it changes: QStandardItem reports even an unset
+// role cleared again as a change, and a change of a cell with an open
+// editor puts the model's text back into it (what is typed must stay).
+void setRole(QStandardItem* item, int role, const QVariant& value) {
+    if (item->data(role) != value) item->setData(value, role);
+}
+
+}  // namespace
+
 Compax3ObjectModel::Compax3ObjectModel(QObject* parent) : QStandardItemModel(parent) {
     connect(this, &QStandardItemModel::itemChanged, this, &Compax3ObjectModel::onItemChanged);
 }
@@ -108,7 +119,7 @@ void Compax3ObjectModel::refreshRow(const Compax3ObjectId& id) {
     m_updating = true;
     const Known known = m_known.value(id);
     for (QStandardItem* cell : {first, parent->child(first->row(), Name)})
-        cell->setData(known.absent ? QVariant(QBrush(Qt::gray)) : QVariant(), Qt::ForegroundRole);
+        setRole(cell, Qt::ForegroundRole, known.absent ? QVariant(QBrush(Qt::gray)) : QVariant());
     if (known.absent) {
         value->setText(tr("not on this drive"));
         value->setToolTip(tr("The drive does not have this object: %1").arg(known.error));
@@ -127,7 +138,7 @@ void Compax3ObjectModel::refreshRow(const Compax3ObjectId& id) {
                                     .arg(known.at.toString(QStringLiteral("HH:mm:ss")))
                               : tr("Read %1.").arg(known.at.toString(QStringLiteral("HH:mm:ss"))));
         // No colour of its own unless stale: the palette's text colour.
-        value->setData(known.stale ? QVariant(QBrush(Qt::gray)) : QVariant(), Qt::ForegroundRole);
+        setRole(value, Qt::ForegroundRole, known.stale ? QVariant(QBrush(Qt::gray)) : QVariant());
         QFont font = value->font();
         font.setItalic(known.stale);
         value->setFont(font);
@@ -150,14 +161,13 @@ void Compax3ObjectModel::refreshRow(const Compax3ObjectId& id) {
             it->problem.isEmpty()
                 ? tr("Edited on this PC, not on the drive yet: Write changes sends it.")
                 : tr("Typed in, but the dictionary in use refuses it: %1").arg(it->problem));
-        edit->setData(
-            it->problem.isEmpty() ? QVariant() : QVariant(QBrush(QColor(0xd0, 0x30, 0x30))),
-            Qt::ForegroundRole);
+        setRole(edit, Qt::ForegroundRole,
+                it->problem.isEmpty() ? QVariant() : QVariant(QBrush(QColor(0xd0, 0x30, 0x30))));
     } else {
         edit->setText(QString());
         edit->setToolTip(edit->isEditable() ? tr("Type a new value (decimal point: 12.5)")
                                             : QString());
-        edit->setData(QVariant(), Qt::ForegroundRole);
+        setRole(edit, Qt::ForegroundRole, QVariant());
     }
     m_updating = false;
 }
