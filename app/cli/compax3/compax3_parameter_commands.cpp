@@ -94,13 +94,14 @@ int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictio
         text += QStringLiteral("%1: not compared: %2\n").arg(ignored.id.text(), ignored.reason);
     for (const usecases::Compax3Difference& difference : comparison->differences)
         text += usecases::Compax3Comparison::lineFor(difference, dictionary) + QLatin1Char('\n');
-    const QString absent = comparison->absentOnBoth == 0
-                               ? QString()
-                               : QStringLiteral(" (%1 of them not on this drive, as on the file's)")
-                                     .arg(comparison->absentOnBoth);
+    const QString absent =
+        comparison->absentOnBoth == 0
+            ? QString()
+            : QStringLiteral("; %1 objects are not on this drive, as not on the file's")
+                  .arg(comparison->absentOnBoth);
     text += comparison->differences.isEmpty()
                 ? QStringLiteral("equal: the drive holds all %1 values of %2%3\n")
-                      .arg(comparison->compared)
+                      .arg(comparison->compared - comparison->absentOnBoth)
                       .arg(path, absent)
                 : QStringLiteral("%1 differences in %2 objects compared\n")
                       .arg(comparison->differences.size())
