@@ -196,7 +196,7 @@ void Compax3ParametersPage::compareWith(const QString& path) {
             const bool otherType = comparison->drive.type() != m_set->drive.type();
             QString text = comparison->differences.isEmpty()
                                ? tr("Equal: the drive holds all %1 values of the file.")
-                                     .arg(comparison->compared)
+                                     .arg(comparison->compared - comparison->absentOnBoth)
                                : tr("%1 of %2 objects differ.")
                                      .arg(comparison->differences.size())
                                      .arg(comparison->compared);
