@@ -97,7 +97,7 @@ int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictio
     const QString absent =
         comparison->absentOnBoth == 0
             ? QString()
-            : QStringLiteral("; %1 objects are not on this drive, as not on the file's")
+            : QStringLiteral("; %1 objects are not on this drive, nor on the file's")
                   .arg(comparison->absentOnBoth);
     text += comparison->differences.isEmpty()
                 ? QStringLiteral("equal: the drive holds all %1 values of %2%3\n")
