@@ -124,13 +124,14 @@ private Q_SLOTS:
             static_cast<Compax3Gui*>(c3->gui())->setDictionary(Compax3Dictionary::builtin());
         }
 
-        // Any object by number: one the drive lacks is refused with its number.
+        // Any object by number: one the drive lacks is "not on this drive", with
+        // the drive's answer.
         objects->readRaw(QStringLiteral("O 4321,1"));
         QVERIFY(QTest::qWaitFor(
             [&] {
                 return model->indexOf({4321, 1}, Compax3ObjectModel::DriveValue)
                            .data()
-                           .toString() == QLatin1String("refused");
+                           .toString() == QLatin1String("not on this drive");
             },
             kDeviceTimeoutMs));
         QVERIFY(model->indexOf({4321, 1}, Compax3ObjectModel::DriveValue)
@@ -281,7 +282,7 @@ private Q_SLOTS:
         });
         motion->moveSet();
         QVERIFY(QTest::qWaitFor([&] { return !question.isEmpty(); }, kDeviceTimeoutMs));
-        QVERIFY2(question.contains(QLatin1String("Velocity: 200 → 5000 (written first)")) &&
+        QVERIFY2(question.contains(QStringLiteral("Velocity: 200 → 5000 (written first)")) &&
                      question.contains(QLatin1String("Target: 300 (as on the drive)")) &&
                      question.contains(QLatin1String("Mode (1905.3): absolute")),
                  qPrintable(question));
