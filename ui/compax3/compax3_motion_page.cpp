@@ -29,6 +29,14 @@ QDoubleSpinBox* numberBox(const char* name, double min, double max, double value
     return box;
 }
 
+// What a motion command changes besides a set: the control word and the
+// drive's state, read again on the Objects page so that it does not keep
+// the state from before as the drive's.
+QList<Compax3ObjectId> statusObjects() {
+    return {comm::kCompax3ControlWord, comm::kCompax3StatusWord, comm::kCompax3LastError,
+            comm::kCompax3Position, comm::kCompax3LastSet};
+}
+
 }  // namespace
 
 Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
@@ -194,7 +202,7 @@ void Compax3MotionPage::finished(const QString& what,
     }
     if (!result->note.isEmpty()) {
         if (result->after) m_axis->setText(capitalised(result->after->summary()));
-        showResult(asSentence(result->note), false);
+        showResult(capitalised(asSentence(result->note)), false);
         return;
     }
     if (result->after) {
@@ -225,7 +233,7 @@ void Compax3MotionPage::runMotion(Compax3Motion motion) {
         [motion](comm::Compax3Device& device, comm::JobContext&) { return device.motion(motion); },
         [this, what](Result<comm::Compax3CommandResult> result) {
             finished(what, result);
-            Q_EMIT objectsWritten({comm::kCompax3ControlWord});
+            Q_EMIT objectsWritten(statusObjects());
         });
 }
 
@@ -269,9 +277,11 @@ void Compax3MotionPage::moveSet() {
         [this, what, set = move.set](Result<comm::Compax3CommandResult> result) {
             finished(what, result);
             readSet();  // what the set holds now
-            Q_EMIT objectsWritten({comm::compax3SetTarget(set), comm::compax3SetVelocity(set),
-                                   comm::compax3SetAcceleration(set),
-                                   comm::compax3SetDeceleration(set), comm::kCompax3ControlWord});
+            Q_EMIT objectsWritten(statusObjects() +
+                                  QList<Compax3ObjectId>{comm::compax3SetTarget(set),
+                                                         comm::compax3SetVelocity(set),
+                                                         comm::compax3SetAcceleration(set),
+                                                         comm::compax3SetDeceleration(set)});
         });
 }
 

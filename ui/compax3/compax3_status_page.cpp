@@ -131,7 +131,7 @@ void Compax3StatusPage::acknowledge() {
             }
             if (!result->note.isEmpty()) {
                 if (result->after) show(*result->after);
-                showResult(asSentence(result->note), false);
+                showResult(capitalised(asSentence(result->note)), false);
                 return;
             }
             if (!result->after) {
