@@ -151,23 +151,29 @@ void Compax3ObjectsPage::read(const QList<Compax3ObjectId>& ids) {
             }
             const QDateTime now = QDateTime::currentDateTime();
             int refused = 0;
+            int absent = 0;
             for (const Compax3Reading& value : *values) {
                 if (!value.refused()) {
                     m_model->setDriveValue(value.id, value.value, now);
                 } else if (comm::compax3RefusalMeansAbsent(value.refusal)) {
                     m_model->setDriveAbsent(value.id, value.refusal.message);
+                    ++absent;
                 } else {
                     m_model->setDriveError(value.id, value.refusal.message);
                     ++refused;
                 }
             }
-            showResult(refused == 0 ? tr("Read %n object(s) at %1.", nullptr, int(values->size()))
-                                          .arg(now.toString(QStringLiteral("HH:mm:ss")))
-                                    : tr("Read %1 objects; the drive refused %2 (hover over "
-                                         "\"refused\" for its answer).")
-                                          .arg(values->size() - refused)
-                                          .arg(refused),
-                       refused == 0);
+            QString text =
+                refused == 0 ? tr("Read %n object(s) at %1.", nullptr, int(values->size()) - absent)
+                                   .arg(now.toString(QStringLiteral("HH:mm:ss")))
+                             : tr("Read %1 objects; the drive refused %2 (hover over "
+                                  "\"refused\" for its answer).")
+                                   .arg(values->size() - refused - absent)
+                                   .arg(refused);
+            if (absent > 0)
+                text += QLatin1Char(' ') +
+                        tr("%n object(s) are not on this drive (greyed).", nullptr, absent);
+            showResult(text, refused == 0);
         });
 }
 
