@@ -4,10 +4,9 @@
 
 #include "ui/family_gui.h"
 
-class QTimer;
-
 namespace cambench {
 
+class LivePollCycle;
 class Mc1AxesPage;
 class Mc1Gui;
 class Mc1MemoryPage;
@@ -57,7 +56,7 @@ private:
     Mc1TrendPage* m_trend;
     Mc1Facts m_facts;
     Mc1Page* m_shown = nullptr;
-    QTimer* m_poll;
+    LivePollCycle* m_poll;
 };
 
 // The MC-1 part of `window` (tests, the tour); nullptr when it has none.
