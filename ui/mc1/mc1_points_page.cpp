@@ -114,7 +114,11 @@ bool Mc1PointsPage::poll() {
     if (points.isEmpty()) return true;
     runPoll<comm::Mc1Device, QList<bool>>(
         tr("Read flags and I/O"),
-        [points](comm::Mc1Device& device, comm::JobContext&) { return device.readPoints(points); },
+        [points](comm::Mc1Device& device, comm::JobContext& job) {
+            // Answers arriving: many points are slow to read, not silent.
+            return device.readPoints(
+                points, [&job](qint64 done, qint64 total) { job.progress(done, total); });
+        },
         [this, points](const QList<bool>& values) {
             int at = 0;
             for (Area& a : m_areas) {

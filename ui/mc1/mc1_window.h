@@ -37,6 +37,8 @@ public:
     Mc1AxesPage* axesPage() const { return m_axes; }
     Mc1MemoryPage* memoryPage() const { return m_memory; }
     Mc1TrendPage* trendPage() const { return m_trend; }
+    // The shown page's poll cycle (tests drive it cycle by cycle).
+    LivePollCycle* pollCycle() const { return m_poll; }
 
     // Device menu: the use cases of comm/mc1/usecases with file dialogs.
     void backupToFile(const QString& path);
