@@ -5,6 +5,7 @@
 // holds the line; Set speed asks; a jog says "jogging"; the trend's colours
 // never repeat and its legend names each value; the Program page says what
 // its buttons do; the watch list comes back in a new window.
+#include "../shell/live_value_checks.h"
 #include "../shell/shell_fixture.h"
 
 #include "ui/device_session.h"
@@ -76,11 +77,6 @@ bool writeOnController(DeviceSession* session, int number, qint64 value) {
             done = true;
         });
     return QTest::qWaitFor([&] { return done; }, kDeviceTimeoutMs) && ok;
-}
-
-bool greyed(const QWidget* widget) {
-    return widget->palette().color(QPalette::WindowText) ==
-           widget->palette().color(QPalette::Disabled, QPalette::WindowText);
 }
 
 }  // namespace

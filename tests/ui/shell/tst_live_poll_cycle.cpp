@@ -7,6 +7,8 @@
 // test: no clock decides anything here.
 #include "shell_fixture.h"
 
+#include "live_value_checks.h"
+
 #include "ui/device_session.h"
 #include "ui/live_device_page.h"
 #include "ui/live_freshness.h"
@@ -72,11 +74,6 @@ public:
     int polls = 0;
     int answers = 0;
 };
-
-bool greyed(const QLabel* label) {
-    return label->palette().color(QPalette::WindowText) ==
-           label->palette().color(QPalette::Disabled, QPalette::WindowText);
-}
 
 }  // namespace
 
