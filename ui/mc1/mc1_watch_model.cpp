@@ -75,8 +75,9 @@ void Mc1WatchModel::setValue(int number, qint64 value, const QDateTime& at) {
     m_entries[row].stale = false;
     m_entries[row].readAt = at;
     m_entries[row].restored = false;
+    // No trend sample: the other values were not read at `at`; the next
+    // poll draws this one with them.
     Q_EMIT dataChanged(index(row, ValueColumn), index(row, StateColumn));
-    Q_EMIT sampled(at);
 }
 
 void Mc1WatchModel::markStale(const QString& note) {

@@ -41,7 +41,7 @@ public:
     void setNames(const QMap<int, QString>& names);
     // Values read at `at`, in the order of numbers().
     void setValues(const QList<qint64>& values, const QDateTime& at);
-    // One value read (after a write): also a sample for the trend.
+    // One value read (after a write).
     void setValue(int number, qint64 value, const QDateTime& at);
     // Every value shown is no longer known to be true; `note` says why
     // ("no answer since 12:03:04", "paused (Back up controller), read ...").
