@@ -50,9 +50,16 @@ void MultiTrendChart::clear() {
 }
 
 QStringList MultiTrendChart::legendNames() const {
+    // A value's first line carries its marker; the markers of the lines
+    // after a gap are hidden.
     QStringList names;
-    for (QLegendMarker* marker : chart()->legend()->markers())
-        if (marker->isVisible()) names << marker->label();
+    QStringList seen;
+    for (const auto& [key, line] : m_series) {
+        if (seen.contains(key)) continue;
+        seen << key;
+        const QLegendMarker* marker = chart()->legend()->markers(line).value(0);
+        if (marker) names << marker->label();
+    }
     return names;
 }
 

@@ -134,20 +134,26 @@ void Mc1AxesPage::factsChanged() {
                                 : tr("Not connected to an MC100/MC200."));
 }
 
+QString Mc1AxesPage::headline(const comm::Mc1AxisState& state) const {
+    const int jog = state.moving ? m_jogging.value(state.axis) : 0;
+    // A jog has no target: the one the controller reports is an earlier move's.
+    return jog != 0 ? tr("axis %1 is jogging %2 (now at %3)")
+                          .arg(state.axis)
+                          .arg(jog > 0 ? QStringLiteral("+") : QStringLiteral("−"))
+                          .arg(state.position)
+                    : state.summary();
+}
+
 void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
     if (!state.moving) m_jogging.remove(state.axis);
     const int jog = m_jogging.value(state.axis);
-    // A jog has no target: the one the controller reports is an earlier move's.
-    const QString direction = jog > 0 ? QStringLiteral("+") : QStringLiteral("−");
-    m_state->setText(jog != 0 ? tr("axis %1 is jogging %2 (now at %3)")
-                                    .arg(state.axis)
-                                    .arg(direction)
-                                    .arg(state.position)
-                              : state.summary());
+    m_state->setText(headline(state));
     m_details->setText(
         tr("Position %1 · %2 · %3 · %4")
             .arg(state.position)
-            .arg(jog != 0 ? tr("jogging %1").arg(direction) : tr("target %1").arg(state.target))
+            .arg(jog != 0
+                     ? tr("jogging %1").arg(jog > 0 ? QStringLiteral("+") : QStringLiteral("−"))
+                     : tr("target %1").arg(state.target))
             .arg(state.homed ? tr("homed") : tr("not homed"))
             .arg(state.error ? tr("axis error") : tr("no error")));
 }
@@ -190,7 +196,7 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
             else if (command != Mc1AxisCommand::SetSpeed)
                 m_jogging.remove(shown);  // another motion, a stop or an acknowledge
             if (shown == axis()) showState(*state);
-            showResult(tr("Sent: %1. Now %2.").arg(what, state->summary()), true);
+            showResult(tr("Sent: %1. Now %2.").arg(what, headline(*state)), true);
         });
 }
 

@@ -36,6 +36,8 @@ protected:
 
 private:
     void showState(const comm::Mc1AxisState& state);
+    // "axis 1 is jogging + (now at 12)" while a jog runs, else the state's summary.
+    QString headline(const comm::Mc1AxisState& state) const;
     // Asks before a command that changes the axis: a motion names the
     // axis and where it goes, Set speed the axis and the speed.
     bool confirmCommand(comm::Mc1AxisCommand command, const QString& what, qint32 value);
