@@ -10,6 +10,52 @@
 
 namespace cambench {
 
+LiveDevicePage::LiveDevicePage(DeviceSession* session, QWidget* parent)
+    : SectionPage(parent), m_session(session), m_freshness(new LiveFreshness(this)) {
+    connect(m_freshness, &LiveFreshness::changed, this, &LiveDevicePage::showFreshness);
+    comm::CommWorker* worker = &session->worker();
+    connect(worker, &comm::CommWorker::jobStarted, this, [this](quint64 id) {
+        if (id == m_pollJob) m_pollOnLine = true;
+    });
+    connect(worker, &comm::CommWorker::jobProgress, this, [this](quint64 id) {
+        if (id == m_pollJob) m_pollProgress = true;
+    });
+    connect(worker, &comm::CommWorker::jobFinished, this, [this](quint64 id) {
+        // Removed from the queue (a STOP's cancel, a reconnect) without an answer.
+        if (id == m_pollJob) m_pollJob = 0;
+    });
+}
+
+LiveDevicePage::PollState LiveDevicePage::pollState() const {
+    if (m_pollJob == 0) return PollState::Idle;
+    return m_pollOnLine ? PollState::OnLine : PollState::Queued;
+}
+
+void LiveDevicePage::pollMissed() {
+    // A long poll (many variables, one telegram each) whose answers keep
+    // coming is slow, not silent.
+    if (m_pollProgress) {
+        m_pollProgress = false;
+        return;
+    }
+    m_freshness->missed();
+    m_session->freshness()->missed();
+}
+
+void LiveDevicePage::pollPaused(const QString& reason) {
+    m_freshness->paused(reason);
+    m_session->freshness()->paused(reason);
+}
+
+void LiveDevicePage::pollStopped() {
+    m_freshness->paused();
+}
+
+void LiveDevicePage::lineLost() {
+    m_freshness->missed();
+    markStale();
+}
+
 bool LiveDevicePage::confirm(const QString& title, const QString& question, const QString& detail) {
     QMessageBox box(QMessageBox::Warning, title, question, QMessageBox::Cancel, this);
     box.setObjectName(QStringLiteral("pageConfirm"));
@@ -21,10 +67,53 @@ bool LiveDevicePage::confirm(const QString& title, const QString& question, cons
 }
 
 void LiveDevicePage::pollAnswered(bool ok) {
-    if (ok)
-        m_session->freshness()->answered(QDateTime::currentDateTime());
-    else
+    if (ok) {
+        const QDateTime now = QDateTime::currentDateTime();
+        m_freshness->answered(now);
+        m_session->freshness()->answered(now);
+    } else {
+        m_freshness->missed();
         m_session->freshness()->missed();
+    }
+}
+
+void LiveDevicePage::addLiveValue(QWidget* widget) {
+    m_liveValues << widget;
+    showFreshness();
+}
+
+QLabel* LiveDevicePage::freshnessLine() {
+    if (!m_freshnessLine) {
+        m_freshnessLine = new QLabel;
+        m_freshnessLine->setObjectName(QStringLiteral("pageFreshness"));
+        showFreshness();
+    }
+    return m_freshnessLine;
+}
+
+void LiveDevicePage::showFreshness() {
+    const bool live = m_freshness->isLive();
+    const QString note = m_freshness->describe();
+    for (QWidget* widget : m_liveValues) {
+        // Greyed through the palette, not disabled: a greyed value stays
+        // selectable and a click on it (an LED) still works. Live: the
+        // inherited palette again (so that a switch to dark reaches it).
+        widget->setPalette(QPalette());
+        if (!live) {
+            QPalette palette = widget->palette();
+            for (QPalette::ColorRole role : {QPalette::WindowText, QPalette::Text})
+                palette.setColor(role, palette.color(QPalette::Disabled, role));
+            widget->setPalette(palette);
+        }
+        widget->setToolTip(live ? QString() : note);
+    }
+    if (m_freshnessLine) {
+        m_freshnessLine->setText(note);
+        QFont font = m_freshnessLine->font();
+        font.setBold(m_freshness->isStale());
+        m_freshnessLine->setFont(font);
+    }
+    freshnessChanged();
 }
 
 QLabel* LiveDevicePage::resultLine() {

@@ -20,8 +20,14 @@ void LiveFreshness::missed() {
     if (m_state != State::Stale) setState(State::Stale);
 }
 
-void LiveFreshness::paused() {
-    if (m_state != State::NoValues) setState(State::Paused);
+void LiveFreshness::paused(const QString& reason) {
+    if (m_state == State::NoValues) return;
+    if (m_state == State::Paused && m_pauseReason == reason) return;
+    m_pauseReason = reason;
+    if (m_state == State::Paused)
+        Q_EMIT changed(m_state);  // paused for another reason now
+    else
+        setState(State::Paused);
 }
 
 void LiveFreshness::reset() {
@@ -51,7 +57,26 @@ QString LiveFreshness::describe() const {
             return m_lastAnswer.isValid() ? tr("No answer since %1").arg(lastAnswerText())
                                           : tr("No answer yet");
         case State::Paused:
-            return tr("Not polled now; values of %1").arg(lastAnswerText());
+            return m_pauseReason.isEmpty()
+                       ? tr("Not polled now; values of %1").arg(lastAnswerText())
+                       : tr("Paused (%1); values of %2").arg(m_pauseReason, lastAnswerText());
+    }
+    return {};
+}
+
+QString LiveFreshness::valueNote() const {
+    switch (m_state) {
+        case State::NoValues:
+            return tr("not read");
+        case State::Live:
+            return tr("live");
+        case State::Stale:
+            return m_lastAnswer.isValid() ? tr("no answer since %1").arg(lastAnswerText())
+                                          : tr("no answer yet");
+        case State::Paused:
+            return m_pauseReason.isEmpty()
+                       ? tr("paused, read %1").arg(lastAnswerText())
+                       : tr("paused (%1), read %2").arg(m_pauseReason, lastAnswerText());
     }
     return {};
 }

@@ -31,7 +31,10 @@ public:
     void answered(const QDateTime& at);
     // A poll came back with an error, or a cycle found the last one unanswered.
     void missed();
-    void paused();
+    // Not polled now. `reason` names what holds the line ("Back up
+    // controller") when polling waits for a long job; empty: the values'
+    // page is not shown or the line is offline.
+    void paused(const QString& reason = {});
     // A new connection: values of the old one mean nothing.
     void reset();
 
@@ -39,6 +42,11 @@ public:
     QString lastAnswerText() const;
     // One line for the monitor and the indicator, e.g. "No answer since 12:03:04".
     QString describe() const;
+    // A few words beside a value: "live", "no answer since 12:03:04",
+    // "paused (Back up controller), read 12:03:04", "not read".
+    QString valueNote() const;
+    // What holds polling while Paused (empty: nothing named).
+    QString pauseReason() const { return m_pauseReason; }
 
 Q_SIGNALS:
     void changed(cambench::LiveFreshness::State state);
@@ -48,6 +56,7 @@ private:
 
     State m_state = State::NoValues;
     QDateTime m_lastAnswer;
+    QString m_pauseReason;
 };
 
 }  // namespace cambench

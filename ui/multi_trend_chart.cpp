@@ -10,6 +10,17 @@ namespace cambench {
 
 namespace {
 constexpr double kWindowSeconds = 60;
+
+// Told apart on a light and a dark background (the chart theme's own
+// colours repeat after five, and a line after a gap took the next one).
+const QList<QColor>& distinctColours() {
+    static const QList<QColor> colours{QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e),
+                                       QColor(0x2c, 0xa0, 0x2c), QColor(0xd6, 0x27, 0x28),
+                                       QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
+                                       QColor(0xe3, 0x77, 0xc2), QColor(0x7f, 0x7f, 0x7f),
+                                       QColor(0xbc, 0xbd, 0x22), QColor(0x17, 0xbe, 0xcf)};
+    return colours;
+}
 }  // namespace
 
 MultiTrendChart::MultiTrendChart(QWidget* parent)
@@ -38,10 +49,47 @@ void MultiTrendChart::clear() {
     m_series.clear();
 }
 
+QStringList MultiTrendChart::legendNames() const {
+    // A value's first line carries its marker; the markers of the lines
+    // after a gap are hidden.
+    QStringList names;
+    QStringList seen;
+    for (const auto& [key, line] : m_series) {
+        if (seen.contains(key)) continue;
+        seen << key;
+        const QLegendMarker* marker = chart()->legend()->markers(line).value(0);
+        if (marker) names << marker->label();
+    }
+    return names;
+}
+
+QList<QColor> MultiTrendChart::valueColours() const {
+    QList<QColor> colours;
+    QStringList seen;
+    for (const auto& [key, line] : m_series) {
+        if (seen.contains(key)) continue;
+        seen << key;
+        colours << line->color();
+    }
+    return colours;
+}
+
+QColor MultiTrendChart::unusedColour() const {
+    const QList<QColor> used = valueColours();
+    for (const QColor& colour : distinctColours())
+        if (!used.contains(colour)) return colour;
+    // More values than colours: hues spread by the golden angle.
+    return QColor::fromHsv(int(used.size() * 137.508) % 360, 200, 220);
+}
+
 QLineSeries* MultiTrendChart::seriesFor(const Sample& sample) {
     QLineSeries* last = nullptr;
-    for (const auto& [key, line] : m_series)
-        if (key == sample.key) last = line;
+    for (const auto& [key, line] : m_series) {
+        if (key != sample.key) continue;
+        last = line;
+        // Renamed meanwhile: the legend says the name it has now.
+        if (line->name() != sample.name) line->setName(sample.name);
+    }
     if (last && !m_gap) return last;
     // A new value, or the first answer after a gap: a new line (none
     // drawn across the time without answers), in the old line's colour.
@@ -53,6 +101,8 @@ QLineSeries* MultiTrendChart::seriesFor(const Sample& sample) {
     if (last) {
         series->setColor(last->color());
         chart()->legend()->markers(series).value(0)->setVisible(false);
+    } else {
+        series->setColor(unusedColour());
     }
     m_series << std::pair<QString, QLineSeries*>{sample.key, series};
     return series;

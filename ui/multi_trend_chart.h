@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QChartView>
+#include <QColor>
 #include <QList>
 #include <QString>
 
@@ -12,7 +13,9 @@ namespace cambench {
 // Live trend of several values (watched variables, drive objects) over the
 // last minute on one value axis. A stretch without answers is a gap: after
 // breakLine() each value starts a new line in the colour of its old one.
-// Follows the palette (light or dark).
+// Each value has a colour no other shown value has, and the legend names
+// each value once (with its latest name). Follows the palette (light or
+// dark).
 class MultiTrendChart : public QChartView {
     Q_OBJECT
 public:
@@ -30,12 +33,17 @@ public:
     void clear();
     int seriesCount() const { return int(m_series.size()); }
     int pointCount() const;
+    // What the legend shows: one name per value, in the order they came.
+    QStringList legendNames() const;
+    // The colour of each value, in the same order.
+    QList<QColor> valueColours() const;
 
 protected:
     void changeEvent(QEvent* event) override;
 
 private:
     QLineSeries* seriesFor(const Sample& sample);
+    QColor unusedColour() const;
     void applyPalette();
 
     QValueAxis* m_time;

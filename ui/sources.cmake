@@ -8,6 +8,8 @@ target_sources(cambench_ui PRIVATE
   live_freshness.cpp
   live_device_page.h
   live_device_page.cpp
+  live_poll_cycle.h
+  live_poll_cycle.cpp
   multi_trend_chart.h
   multi_trend_chart.cpp
   sentence.h

@@ -107,7 +107,10 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     layout->addWidget(m_details);
     layout->addWidget(moves);
     layout->addStretch();
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
+    addLiveValue(m_state);
+    addLiveValue(m_details);
     connect(m_axis, &QSpinBox::valueChanged, this, [this] {
         m_state->setText(QStringLiteral("—"));
         m_details->clear();
@@ -131,65 +134,84 @@ void Mc1AxesPage::factsChanged() {
                                 : tr("Not connected to an MC100/MC200."));
 }
 
+QString Mc1AxesPage::headline(const comm::Mc1AxisState& state) const {
+    const int jog = state.moving ? m_jogging.value(state.axis) : 0;
+    // A jog has no target: the one the controller reports is an earlier move's.
+    return jog != 0 ? tr("axis %1 is jogging %2 (now at %3)")
+                          .arg(state.axis)
+                          .arg(jog > 0 ? QStringLiteral("+") : QStringLiteral("−"))
+                          .arg(state.position)
+                    : state.summary();
+}
+
 void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
-    m_state->setText(state.summary());
-    m_state->setEnabled(true);
-    m_details->setText(tr("Position %1 · target %2 · %3 · %4")
-                           .arg(state.position)
-                           .arg(state.target)
-                           .arg(state.homed ? tr("homed") : tr("not homed"))
-                           .arg(state.error ? tr("axis error") : tr("no error")));
+    if (!state.moving) m_jogging.remove(state.axis);
+    const int jog = m_jogging.value(state.axis);
+    m_state->setText(headline(state));
+    m_details->setText(
+        tr("Position %1 · %2 · %3 · %4")
+            .arg(state.position)
+            .arg(jog != 0
+                     ? tr("jogging %1").arg(jog > 0 ? QStringLiteral("+") : QStringLiteral("−"))
+                     : tr("target %1").arg(state.target))
+            .arg(state.homed ? tr("homed") : tr("not homed"))
+            .arg(state.error ? tr("axis error") : tr("no error")));
 }
 
 bool Mc1AxesPage::poll() {
     if (!facts().known || !facts().has(comm::Mc1Capability::Axes)) return true;
     const int shown = axis();
-    session()->run<comm::Mc1Device, comm::Mc1AxisState>(
-        this, tr("Read axis"),
+    runPoll<comm::Mc1Device, comm::Mc1AxisState>(
+        tr("Read axis"),
         [shown](comm::Mc1Device& device, comm::JobContext&) { return device.axisState(shown); },
-        [this, shown](Result<comm::Mc1AxisState> state) {
-            pollAnswered(state.ok());
-            if (!state)
-                markStale();
-            else if (shown == axis())
-                showState(*state);
+        [this, shown](const comm::Mc1AxisState& state) {
+            if (shown == axis()) showState(state);
         },
-        comm::JobPriority::Poll, QStringLiteral("mc1-axis"));
+        QStringLiteral("mc1-axis"));
     return true;
 }
 
 void Mc1AxesPage::markStale() {
-    m_state->setEnabled(false);
+    // Position, state and details are live values: the page's freshness
+    // greys them and says since when there was no answer.
 }
 
 void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
     const int shown = axis();
     const QString what = comm::mc1AxisCommandText(shown, command, value);
-    if (comm::mc1AxisCommandMoves(command)) {
-        const QString detail =
-            command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus
-                ? tr("The axis moves until STOP (or Escape) is pressed.")
-                : tr("The axis moves at its set speed. STOP (or Escape) stops it.");
-        if (!confirm(
-                tr("Move"),
-                tr("%1 on the %2?").arg(capitalised(what), comm::mc1VariantName(facts().variant)),
-                detail))
-            return;
-    }
+    if (!confirmCommand(command, what, value)) return;
     session()->run<comm::Mc1Device, comm::Mc1AxisState>(
         this, tr("Axis command"),
         [shown, command, value](comm::Mc1Device& device, comm::JobContext&) {
             return device.axisCommand(shown, command, value);
         },
-        [this, what, shown](Result<comm::Mc1AxisState> state) {
+        [this, what, shown, command](Result<comm::Mc1AxisState> state) {
             if (!state) {
                 showResult(asSentence(state.error().message), false);
                 markStale();
                 return;
             }
+            if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
+                m_jogging.insert(shown, command == Mc1AxisCommand::JogPlus ? 1 : -1);
+            else if (command != Mc1AxisCommand::SetSpeed)
+                m_jogging.remove(shown);  // another motion, a stop or an acknowledge
             if (shown == axis()) showState(*state);
-            showResult(tr("Sent: %1. Now %2.").arg(what, state->summary()), true);
+            showResult(tr("Sent: %1. Now %2.").arg(what, headline(*state)), true);
         });
+}
+
+bool Mc1AxesPage::confirmCommand(Mc1AxisCommand command, const QString& what, qint32 value) {
+    const QString controller = comm::mc1VariantName(facts().variant);
+    if (command == Mc1AxisCommand::SetSpeed)
+        return confirm(
+            tr("Set speed"),
+            tr("Set the speed of axis %1 to %2 on the %3?").arg(axis()).arg(value).arg(controller),
+            tr("The controller moves the axis at this speed from now on."));
+    if (!comm::mc1AxisCommandMoves(command)) return true;
+    const QString detail = command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus
+                               ? tr("The axis moves until STOP (or Escape) is pressed.")
+                               : tr("The axis moves at its set speed. STOP (or Escape) stops it.");
+    return confirm(tr("Move"), tr("%1 on the %2?").arg(capitalised(what), controller), detail);
 }
 
 void Mc1AxesPage::stopAll() {

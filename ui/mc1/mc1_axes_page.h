@@ -2,6 +2,8 @@
 
 #include "mc1_page.h"
 
+#include <QMap>
+
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -34,6 +36,11 @@ protected:
 
 private:
     void showState(const comm::Mc1AxisState& state);
+    // "axis 1 is jogging + (now at 12)" while a jog runs, else the state's summary.
+    QString headline(const comm::Mc1AxisState& state) const;
+    // Asks before a command that changes the axis: a motion names the
+    // axis and where it goes, Set speed the axis and the speed.
+    bool confirmCommand(comm::Mc1AxisCommand command, const QString& what, qint32 value);
 
     QSpinBox* m_axis;
     QLabel* m_availability;
@@ -44,6 +51,9 @@ private:
     QSpinBox* m_speed;
     QPushButton* m_stop;
     QList<QWidget*> m_motion;
+    // Axes jogging since a jog this page sent (+1 or -1): their headline
+    // says "jogging", not the target of an earlier move.
+    QMap<int, int> m_jogging;
 };
 
 }  // namespace cambench

@@ -14,14 +14,34 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSpinBox>
+#include <QStyle>
+#include <QStyleOptionSpinBox>
 #include <QVBoxLayout>
 
 namespace cambench {
 
 namespace {
 
+// An address in hex ("0x1000"): never narrower than its widest address
+// with the prefix, in whatever font and language it is shown (a layout
+// squeezed it to "x1000").
+class AddressBox : public QSpinBox {
+public:
+    QSize sizeHint() const override {
+        const QSize hint = QSpinBox::sizeHint();
+        const QString widest =
+            prefix() + textFromValue(maximum()).toUpper() + QStringLiteral("0");  // a margin
+        QStyleOptionSpinBox option;
+        initStyleOption(&option);
+        const QSize content(fontMetrics().horizontalAdvance(widest), hint.height());
+        const QSize needed = style()->sizeFromContents(QStyle::CT_SpinBox, &option, content, this);
+        return {std::max(hint.width(), needed.width()), hint.height()};
+    }
+    QSize minimumSizeHint() const override { return sizeHint(); }
+};
+
 QSpinBox* hexBox(int max) {
-    auto* box = new QSpinBox;
+    auto* box = new AddressBox;
     box->setDisplayIntegerBase(16);
     box->setPrefix(QStringLiteral("0x"));
     box->setRange(0, max);

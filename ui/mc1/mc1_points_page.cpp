@@ -2,6 +2,7 @@
 
 #include "ui/device_session.h"
 #include "ui/led_strip.h"
+#include "ui/live_freshness.h"
 #include "ui/sentence.h"
 
 #include <QGroupBox>
@@ -67,6 +68,7 @@ Mc1PointsPage::Mc1PointsPage(DeviceSession* session, QWidget* parent)
     scroll->setWidget(content);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(scroll, 1);
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
 }
 
@@ -110,19 +112,18 @@ bool Mc1PointsPage::poll() {
     for (const Area& a : m_areas)
         for (int n : a.numbers) points << Mc1Point{a.area, n};
     if (points.isEmpty()) return true;
-    session()->run<comm::Mc1Device, QList<bool>>(
-        this, tr("Read flags and I/O"),
-        [points](comm::Mc1Device& device, comm::JobContext&) { return device.readPoints(points); },
-        [this, points](Result<QList<bool>> values) {
-            pollAnswered(values.ok());
-            if (!values) {
-                markStale();
-                return;
-            }
+    runPoll<comm::Mc1Device, QList<bool>>(
+        tr("Read flags and I/O"),
+        [points](comm::Mc1Device& device, comm::JobContext& job) {
+            // Answers arriving: many points are slow to read, not silent.
+            return device.readPoints(
+                points, [&job](qint64 done, qint64 total) { job.progress(done, total); });
+        },
+        [this, points](const QList<bool>& values) {
             int at = 0;
             for (Area& a : m_areas) {
                 // The flag range may have changed meanwhile: only a match is shown.
-                const QList<bool> part = values->mid(at, a.numbers.size());
+                const QList<bool> part = values.mid(at, a.numbers.size());
                 bool same = at + a.numbers.size() <= points.size();
                 for (int i = 0; same && i < a.numbers.size(); ++i)
                     same = points.at(at + i).area == a.area &&
@@ -133,12 +134,23 @@ bool Mc1PointsPage::poll() {
                 a.strip->setStale(false);
             }
         },
-        comm::JobPriority::Poll, QStringLiteral("mc1-points"));
+        QStringLiteral("mc1-points"));
     return true;
 }
 
 void Mc1PointsPage::markStale() {
-    for (const Area& a : m_areas) a.strip->setStale(true);
+    for (const Area& a : m_areas) {
+        a.strip->setStale(true);
+        a.strip->setToolTip(freshness()->describe());
+    }
+}
+
+void Mc1PointsPage::freshnessChanged() {
+    if (!freshness()->isLive()) {
+        markStale();
+        return;
+    }
+    for (const Area& a : m_areas) a.strip->setToolTip({});
 }
 
 void Mc1PointsPage::toggle(const Mc1Point& point, bool on) {

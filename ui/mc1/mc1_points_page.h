@@ -27,6 +27,7 @@ public:
 
 protected:
     void factsChanged() override;
+    void freshnessChanged() override;
 
 private:
     struct Area {

@@ -1,6 +1,7 @@
 #include "mc1_program_page.h"
 
 #include "ui/device_session.h"
+#include "ui/live_freshness.h"
 #include "ui/sentence.h"
 
 #include <QGridLayout>
@@ -63,8 +64,9 @@ Mc1ProgramPage::Mc1ProgramPage(DeviceSession* session, QWidget* parent)
     auto* statusLayout = new QVBoxLayout(statusBox);
     statusLayout->addWidget(m_status);
     statusLayout->addWidget(m_flags);
-    auto* controlBox = new QGroupBox(tr("Control"));
+    auto* controlBox = new QGroupBox(tr("Control (each asks first)"));
     auto* grid = new QGridLayout(controlBox);
+    grid->setColumnStretch(1, 1);
     const std::tuple<Mc1ProgramCommand, QString, const char*> commands[] = {
         {Mc1ProgramCommand::Start, tr("Start"), "mc1Start"},
         {Mc1ProgramCommand::Stop, tr("Stop"), "mc1Stop"},
@@ -72,12 +74,19 @@ Mc1ProgramPage::Mc1ProgramPage(DeviceSession* session, QWidget* parent)
         {Mc1ProgramCommand::Reset, tr("Reset…"), "mc1Reset"},
         {Mc1ProgramCommand::FlashSave, tr("Save to flash…"), "mc1FlashSave"},
         {Mc1ProgramCommand::FlashLoad, tr("Load from flash…"), "mc1FlashLoad"}};
-    int i = 0;
+    int row = 0;
     for (const auto& [command, text, name] : commands) {
         auto* button = new QPushButton(text);
         button->setObjectName(QLatin1String(name));
-        grid->addWidget(button, i / 3, i % 3);
-        ++i;
+        // What the button does, said before it is pressed (and again in
+        // its confirmation).
+        auto* does = new QLabel(consequence(command));
+        does->setObjectName(QStringLiteral("%1Does").arg(QLatin1String(name)));
+        does->setWordWrap(true);
+        button->setToolTip(consequence(command));
+        grid->addWidget(button, row, 0);
+        grid->addWidget(does, row, 1);
+        ++row;
         m_buttons << button;
         connect(button, &QPushButton::clicked, this, [this, command = command] { run(command); });
     }
@@ -86,7 +95,10 @@ Mc1ProgramPage::Mc1ProgramPage(DeviceSession* session, QWidget* parent)
     layout->addWidget(statusBox);
     layout->addWidget(controlBox);
     layout->addStretch();
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
+    addLiveValue(m_status);
+    addLiveValue(m_flags);
     factsChanged();
 }
 
@@ -107,29 +119,17 @@ void Mc1ProgramPage::factsChanged() {
 
 void Mc1ProgramPage::showStatus(const comm::Mc1ProgramStatus& status) {
     m_status->setText(tr("PLC program: %1").arg(status.summary()));
-    m_status->setEnabled(true);
     m_flags->setText(status.flagTexts().join(QStringLiteral(" · ")));
 }
 
 bool Mc1ProgramPage::poll() {
     if (!facts().known || !facts().has(comm::Mc1Capability::ProgramControl)) return true;
-    session()->run<comm::Mc1Device, comm::Mc1ProgramStatus>(
-        this, tr("Read program status"),
+    runPoll<comm::Mc1Device, comm::Mc1ProgramStatus>(
+        tr("Read program status"),
         [](comm::Mc1Device& device, comm::JobContext&) { return device.programStatus(); },
-        [this](Result<comm::Mc1ProgramStatus> status) {
-            pollAnswered(status.ok());
-            if (status)
-                showStatus(*status);
-            else
-                markStale();
-        },
-        comm::JobPriority::Poll, QStringLiteral("mc1-program"));
+        [this](const comm::Mc1ProgramStatus& status) { showStatus(status); },
+        QStringLiteral("mc1-program"));
     return true;
-}
-
-void Mc1ProgramPage::markStale() {
-    // The last status read is kept, greyed: no longer known to be true.
-    m_status->setEnabled(false);
 }
 
 void Mc1ProgramPage::run(Mc1ProgramCommand command) {
@@ -146,7 +146,8 @@ void Mc1ProgramPage::run(Mc1ProgramCommand command) {
         [this, what](Result<comm::Mc1ProgramStatus> status) {
             if (!status) {
                 showResult(asSentence(status.error().message), false);
-                markStale();
+                // What the program does now is not known: the status shown greys.
+                freshness()->missed();
                 return;
             }
             showStatus(*status);

@@ -17,7 +17,6 @@ public:
 
     QString sectionTitle() const override { return tr("Program"); }
     bool poll() override;
-    void markStale() override;
 
     QLabel* statusLabel() const { return m_status; }
     // Asks (with what it does), then sends `command` and shows the status after.

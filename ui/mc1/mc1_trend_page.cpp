@@ -3,6 +3,7 @@
 #include "mc1_variables_page.h"
 #include "mc1_watch_model.h"
 
+#include "ui/live_freshness.h"
 #include "ui/multi_trend_chart.h"
 
 #include <QLabel>
@@ -18,7 +19,8 @@ Mc1TrendPage::Mc1TrendPage(DeviceSession* session, Mc1VariablesPage* variables, 
     : Mc1Page(session, parent),
       m_variables(variables),
       m_model(variables->model()),
-      m_chart(new MultiTrendChart) {
+      m_chart(new MultiTrendChart),
+      m_freshness(new QLabel) {
     setObjectName(QStringLiteral("mc1TrendPage"));
     m_chart->setObjectName(QStringLiteral("mc1TrendChart"));
     auto* note =
@@ -28,7 +30,21 @@ Mc1TrendPage::Mc1TrendPage(DeviceSession* session, Mc1VariablesPage* variables, 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(note);
     layout->addWidget(m_chart, 1);
+    m_freshness->setObjectName(QStringLiteral("pageFreshness"));
+    layout->addWidget(m_freshness);
     connect(m_model, &Mc1WatchModel::sampled, this, &Mc1TrendPage::sample);
+    // The values drawn are the Variables page's: so is their freshness.
+    LiveFreshness* freshness = m_variables->freshness();
+    const auto showFreshness = [this, freshness] {
+        m_freshness->setText(freshness->describe());
+        if (!freshness->isLive()) m_chart->breakLine();
+    };
+    connect(freshness, &LiveFreshness::changed, this, showFreshness);
+    showFreshness();
+}
+
+LiveDevicePage* Mc1TrendPage::polledPage() {
+    return m_variables;
 }
 
 bool Mc1TrendPage::poll() {

@@ -2,6 +2,8 @@
 
 #include "mc1_page.h"
 
+class QLabel;
+
 namespace cambench {
 
 class MultiTrendChart;
@@ -19,6 +21,9 @@ public:
     QString sectionTitle() const override { return tr("Trend"); }
     bool poll() override;
     void markStale() override;
+    // The Variables page polls what the trend draws.
+    LiveDevicePage* polledPage() override;
+    MultiTrendChart* chart() const { return m_chart; }
     int seriesCount() const;
     int pointCount() const;
 
@@ -28,6 +33,7 @@ private:
     Mc1VariablesPage* m_variables;
     Mc1WatchModel* m_model;
     MultiTrendChart* m_chart;
+    QLabel* m_freshness;
     QDateTime m_start;
 };
 

@@ -1,8 +1,10 @@
 #include "mc1_variables_page.h"
 
+#include "mc1_value_delegate.h"
 #include "mc1_watch_model.h"
 
 #include "ui/device_session.h"
+#include "ui/live_freshness.h"
 #include "ui/sentence.h"
 
 #include <QFile>
@@ -36,6 +38,8 @@ Mc1VariablesPage::Mc1VariablesPage(DeviceSession* session, Mc1WatchModel* model,
                                                       QHeaderView::Stretch);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_table->setItemDelegateForColumn(Mc1WatchModel::ValueColumn,
+                                      new Mc1ValueDelegate(m_model, m_table));
     for (QSpinBox* box : {m_first, m_last}) {
         box->setRange(0, 0xFFFF);
         box->setPrefix(QStringLiteral("V"));
@@ -74,6 +78,7 @@ Mc1VariablesPage::Mc1VariablesPage(DeviceSession* session, Mc1WatchModel* model,
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
     layout->addWidget(m_table, 1);
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
 
     connect(add, &QPushButton::clicked, this, &Mc1VariablesPage::addRange);
@@ -100,6 +105,10 @@ Mc1VariablesPage::Mc1VariablesPage(DeviceSession* session, Mc1WatchModel* model,
         if (!path.isEmpty()) saveList(path);
     });
     connect(m_model, &Mc1WatchModel::writeRequested, this, &Mc1VariablesPage::writeVariable);
+    connect(m_model, &Mc1WatchModel::typedInvalid, this, [this](int number, const QString& typed) {
+        showResult(tr("\"%1\" is not a whole number: V%2 was not written.").arg(typed).arg(number),
+                   false);
+    });
 }
 
 void Mc1VariablesPage::addRange() {
@@ -155,8 +164,8 @@ void Mc1VariablesPage::openList(const QString& path) {
 bool Mc1VariablesPage::poll() {
     if (!facts().known || m_model->rowCount() == 0) return true;
     const QList<int> numbers = m_model->numbers().mid(0, kMaxPolled);
-    session()->run<comm::Mc1Device, QList<qint64>>(
-        this, tr("Read variables"),
+    runPoll<comm::Mc1Device, QList<qint64>>(
+        tr("Read variables"),
         [numbers](comm::Mc1Device& device, comm::JobContext& job) -> Result<QList<qint64>> {
             QList<qint64> values;
             for (int n : numbers) {
@@ -164,32 +173,39 @@ bool Mc1VariablesPage::poll() {
                 const Result<qint64> value = device.readVariable(n);
                 if (!value) return value.error();
                 values << *value;
+                // Answers are arriving: a long list is slow, not silent.
+                job.progress(values.size(), numbers.size());
             }
             return values;
         },
-        [this](Result<QList<qint64>> values) {
-            pollAnswered(values.ok());
-            if (values)
-                m_model->setValues(*values, QDateTime::currentDateTime());
-            else
-                m_model->markStale();
+        [this, numbers](const QList<qint64>& values) {
+            // The list may have changed while the poll ran: only a match is shown.
+            if (m_model->numbers().mid(0, kMaxPolled) == numbers)
+                m_model->setValues(values, QDateTime::currentDateTime());
         },
-        comm::JobPriority::Poll, QStringLiteral("mc1-variables"));
+        QStringLiteral("mc1-variables"));
     return true;
 }
 
 void Mc1VariablesPage::markStale() {
-    m_model->markStale();
+    m_model->markStale(freshness()->valueNote());
 }
 
-void Mc1VariablesPage::writeVariable(int number, qint64 value) {
+void Mc1VariablesPage::freshnessChanged() {
+    if (!freshness()->isLive()) markStale();
+}
+
+void Mc1VariablesPage::writeVariable(int number, qint64 value, const QString& typed) {
     if (!facts().known) {
         showResult(tr("Not connected to an MC100/MC200: nothing was written."), false);
         return;
     }
     const QString controller = comm::mc1VariantName(facts().variant);
     if (!confirm(tr("Write"),
-                 tr("Write V%1 = %2 to the %3?").arg(number).arg(value).arg(controller),
+                 tr("Write V%1 = %2 to the %3?")
+                     .arg(number)
+                     .arg(typed.isEmpty() ? QString::number(value) : typed)
+                     .arg(controller),
                  tr("The controller's PLC program uses this variable at once.")))
         return;
     session()->run<comm::Mc1Device, qint64>(

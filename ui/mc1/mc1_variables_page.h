@@ -24,12 +24,16 @@ public:
 
     Mc1WatchModel* model() const { return m_model; }
     QTableView* table() const { return m_table; }
-    // Asks, then writes `value` to variable `number` and reads it back.
-    void writeVariable(int number, qint64 value);
+    // Asks (naming `typed`, the value as typed; empty: `value`), then
+    // writes `value` to variable `number` and reads it back.
+    void writeVariable(int number, qint64 value, const QString& typed = {});
     void importNames(const QString& path);
     // The watch list (numbers, names, last values) to and from a project file.
     void saveList(const QString& path);
     void openList(const QString& path);
+
+protected:
+    void freshnessChanged() override;
 
 private:
     void addRange();

@@ -27,8 +27,9 @@ int Mc1WatchModel::addRange(int first, int last) {
         if (rowOf(n) < 0) added << n;
     if (added.isEmpty()) return 0;
     beginInsertRows({}, int(m_entries.size()), int(m_entries.size() + added.size() - 1));
-    for (int n : added) m_entries << Entry{n, {}, std::nullopt, false, {}};
+    for (int n : added) m_entries << Entry{n, {}, std::nullopt, false, {}, false};
     endInsertRows();
+    Q_EMIT listChanged();
     return int(added.size());
 }
 
@@ -41,6 +42,8 @@ void Mc1WatchModel::removeRows(const QList<int>& rows) {
         m_entries.removeAt(row);
         endRemoveRows();
     }
+    if (m_editingRow >= m_entries.size()) m_editingRow = -1;
+    Q_EMIT listChanged();
 }
 
 void Mc1WatchModel::setNames(const QMap<int, QString>& names) {
@@ -50,6 +53,7 @@ void Mc1WatchModel::setNames(const QMap<int, QString>& names) {
         m_entries[row].name = it.value();
         Q_EMIT dataChanged(index(row, NameColumn), index(row, NameColumn));
     }
+    Q_EMIT listChanged();
 }
 
 void Mc1WatchModel::setValues(const QList<qint64>& values, const QDateTime& at) {
@@ -57,6 +61,7 @@ void Mc1WatchModel::setValues(const QList<qint64>& values, const QDateTime& at) 
         m_entries[row].value = values.at(row);
         m_entries[row].stale = false;
         m_entries[row].readAt = at;
+        m_entries[row].restored = false;
     }
     if (!m_entries.isEmpty())
         Q_EMIT dataChanged(index(0, ValueColumn), index(rowCount() - 1, StateColumn));
@@ -69,15 +74,28 @@ void Mc1WatchModel::setValue(int number, qint64 value, const QDateTime& at) {
     m_entries[row].value = value;
     m_entries[row].stale = false;
     m_entries[row].readAt = at;
+    m_entries[row].restored = false;
+    // No trend sample: the other values were not read at `at`; the next
+    // poll draws this one with them.
     Q_EMIT dataChanged(index(row, ValueColumn), index(row, StateColumn));
 }
 
-void Mc1WatchModel::markStale() {
-    bool changed = false;
+void Mc1WatchModel::markStale(const QString& note) {
+    bool changed = note != m_staleNote;
+    m_staleNote = note;
     for (Entry& entry : m_entries) {
         if (entry.value && !entry.stale) entry.stale = changed = true;
     }
-    if (changed) Q_EMIT dataChanged(index(0, ValueColumn), index(rowCount() - 1, StateColumn));
+    if (changed && !m_entries.isEmpty())
+        Q_EMIT dataChanged(index(0, ValueColumn), index(rowCount() - 1, StateColumn));
+}
+
+void Mc1WatchModel::setEditingRow(int row) {
+    const int old = m_editingRow;
+    m_editingRow = row;
+    for (int r : {old, row})
+        if (r >= 0 && r < m_entries.size())
+            Q_EMIT dataChanged(index(r, StateColumn), index(r, StateColumn));
 }
 
 Mc1Project Mc1WatchModel::toProject(const QString& variant) const {
@@ -102,7 +120,28 @@ void Mc1WatchModel::setProject(const Mc1Project& project) {
         m_entries << entry;
     }
     m_flags = project.flags;
+    m_editingRow = -1;
     endResetModel();
+    Q_EMIT listChanged();
+}
+
+void Mc1WatchModel::restore(const Mc1Project& project) {
+    Mc1Project names = project;
+    for (Mc1NamedValue& variable : names.variables) variable.value.reset();
+    setProject(names);
+    for (Entry& entry : m_entries) entry.restored = true;
+    if (!m_entries.isEmpty())
+        Q_EMIT dataChanged(index(0, StateColumn), index(rowCount() - 1, StateColumn));
+}
+
+QString Mc1WatchModel::stateText(const Entry& entry) const {
+    if (!entry.value)
+        return entry.restored ? tr("restored from last session, not read yet") : tr("not read");
+    if (entry.stale && !entry.readAt.isValid()) return tr("from the file, not read");
+    if (!entry.stale) return tr("live");
+    return m_staleNote.isEmpty()
+               ? tr("stale, read %1").arg(entry.readAt.toString(QStringLiteral("HH:mm:ss")))
+               : m_staleNote;
 }
 
 int Mc1WatchModel::rowCount(const QModelIndex& parent) const {
@@ -126,11 +165,11 @@ QVariant Mc1WatchModel::data(const QModelIndex& index, int role) const {
                 if (role == Qt::EditRole) return entry.value ? *entry.value : 0;
                 return entry.value ? QString::number(*entry.value) : QStringLiteral("—");
             case StateColumn:
-                if (!entry.value) return tr("not read");
-                if (entry.stale && !entry.readAt.isValid()) return tr("from the file, not read");
-                return entry.stale ? tr("stale, read %1")
-                                         .arg(entry.readAt.toString(QStringLiteral("HH:mm:ss")))
-                                   : tr("live");
+                // Beside an open editor: what the controller holds now,
+                // while the editor keeps what was typed.
+                if (index.row() == m_editingRow && entry.value)
+                    return tr("on the controller: %1 (%2)").arg(*entry.value).arg(stateText(entry));
+                return stateText(entry);
         }
     }
     if (role == Qt::ForegroundRole && entry.stale &&
@@ -170,13 +209,18 @@ bool Mc1WatchModel::setData(const QModelIndex& index, const QVariant& value, int
     if (index.column() == NameColumn) {
         entry.name = value.toString().trimmed();
         Q_EMIT dataChanged(index, index);
+        Q_EMIT listChanged();
         return true;
     }
     if (index.column() == ValueColumn) {
+        const QString typed = value.toString().trimmed();
+        if (typed.isEmpty()) return false;  // nothing typed: nothing to write
         bool ok = false;
-        const qint64 wanted = value.toLongLong(&ok);
-        if (ok && (!entry.value || wanted != *entry.value))
-            Q_EMIT writeRequested(entry.number, wanted);
+        const qint64 wanted = typed.toLongLong(&ok);
+        if (!ok)
+            Q_EMIT typedInvalid(entry.number, typed);
+        else if (!entry.value || wanted != *entry.value)
+            Q_EMIT writeRequested(entry.number, wanted, typed);
         return false;  // the shown value stays what was read
     }
     return false;

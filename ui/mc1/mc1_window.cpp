@@ -11,6 +11,7 @@
 
 #include "comm/mc1/usecases/mc1_backup_restore.h"
 #include "ui/device_session.h"
+#include "ui/live_poll_cycle.h"
 #include "ui/main_window.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
@@ -19,7 +20,6 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QTimer>
 
 namespace cambench {
 
@@ -36,20 +36,16 @@ Mc1Window::Mc1Window(Mc1Gui* gui, MainWindow* window)
       m_axes(new Mc1AxesPage(gui->session())),
       m_memory(new Mc1MemoryPage(gui->session())),
       m_trend(new Mc1TrendPage(gui->session(), m_variables)),
-      m_poll(new QTimer(this)) {
-    m_poll->setInterval(kPollMs);
+      m_poll(new LivePollCycle(gui->session(), kPollMs, this)) {
     // Polls go on all the time a page is shown: not a job for the progress bar.
     for (const QString& title :
          {Mc1VariablesPage::tr("Read variables"), Mc1PointsPage::tr("Read flags and I/O"),
           Mc1ProgramPage::tr("Read program status"), Mc1AxesPage::tr("Read axis")})
         window->addQuietJobTitle(title);
-    connect(m_poll, &QTimer::timeout, this, [this] {
-        if (m_shown && m_mc1->session()->isOnline()) m_shown->poll();
-    });
     connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
         if (m_mc1->session()->isOnline()) return;
         // The line is gone: what the pages show is no longer known to be true.
-        for (Mc1Page* page : mc1Pages()) page->markStale();
+        for (Mc1Page* page : mc1Pages()) page->lineLost();
     });
 }
 
@@ -113,12 +109,9 @@ void Mc1Window::pageShown(SectionPage* page) {
     m_shown = nullptr;
     for (Mc1Page* mine : mc1Pages())
         if (mine == page) m_shown = mine;
-    if (m_shown) {
-        m_shown->poll();
-        m_poll->start();
-    } else {
-        m_poll->stop();
-    }
+    // The trend shows what the Variables page polls: that page's poll
+    // (and its freshness) is the one the cycle keeps.
+    m_poll->setShown(m_shown ? m_shown->polledPage() : nullptr);
 }
 
 void Mc1Window::addMenuEntries(const FamilyMenus& menus) {

@@ -4,10 +4,9 @@
 
 #include "ui/family_gui.h"
 
-class QTimer;
-
 namespace cambench {
 
+class LivePollCycle;
 class Mc1AxesPage;
 class Mc1Gui;
 class Mc1MemoryPage;
@@ -38,6 +37,8 @@ public:
     Mc1AxesPage* axesPage() const { return m_axes; }
     Mc1MemoryPage* memoryPage() const { return m_memory; }
     Mc1TrendPage* trendPage() const { return m_trend; }
+    // The shown page's poll cycle (tests drive it cycle by cycle).
+    LivePollCycle* pollCycle() const { return m_poll; }
 
     // Device menu: the use cases of comm/mc1/usecases with file dialogs.
     void backupToFile(const QString& path);
@@ -57,7 +58,7 @@ private:
     Mc1TrendPage* m_trend;
     Mc1Facts m_facts;
     Mc1Page* m_shown = nullptr;
-    QTimer* m_poll;
+    LivePollCycle* m_poll;
 };
 
 // The MC-1 part of `window` (tests, the tour); nullptr when it has none.

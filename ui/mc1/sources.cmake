@@ -4,6 +4,10 @@ target_sources(cambench_ui PRIVATE
   mc1/mc1_page.h
   mc1/mc1_watch_model.h
   mc1/mc1_watch_model.cpp
+  mc1/mc1_value_delegate.h
+  mc1/mc1_value_delegate.cpp
+  mc1/mc1_settings.h
+  mc1/mc1_settings.cpp
   mc1/mc1_variables_page.h
   mc1/mc1_variables_page.cpp
   mc1/mc1_points_page.h

@@ -90,13 +90,13 @@ private Q_SLOTS:
             },
             kDeviceTimeoutMs));
 
-        // The line goes: values stay, marked stale.
+        // The line goes: values stay, marked stale since the last answer.
         shell->session()->disconnectFromDevice();
         QVERIFY(QTest::qWaitFor([&] { return model->entries().at(1).stale; }, kDeviceTimeoutMs));
         QVERIFY(model->index(1, Mc1WatchModel::StateColumn)
                     .data()
                     .toString()
-                    .startsWith(QLatin1String("stale")));
+                    .startsWith(QLatin1String("no answer since ")));
     }
 
     void anOutputIsSetOnlyAfterYes() {
