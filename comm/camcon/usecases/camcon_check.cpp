@@ -1,0 +1,71 @@
+#include "camcon_check.h"
+
+#include "camcon_check_parts.h"
+
+#include "comm/camcon/ascii/ascii_camcon.h"
+#include "comm/camcon/ascii/catalogue.h"
+#include "comm/camcon/table/rk512.h"
+#include "comm/camcon/table/table_camcon.h"
+
+#include <QCoreApplication>
+
+namespace cambench::usecases {
+
+namespace {
+
+bool isTableProtocol(const QString& protocolId) {
+    return protocolId.startsWith(QLatin1String("3964r"));
+}
+
+// Only what reads: an RK512 read telegram (no data) on the table
+// interface, a query the catalogue knows in the ASCII protocols (Standard,
+// Multiuser, Cam-BUS). Commands, short commands and free text never pass.
+QString refuses(const QString& protocolId, const comm::Request& request) {
+    const QByteArray& message = request.message;
+    if (isTableProtocol(protocolId)) {
+        const bool read = message.size() == comm::table::kRk512RequestHeaderBytes &&
+                          quint8(message.at(2)) == quint8(comm::table::Rk512Order::Read);
+        if (read) return {};
+    } else if (message.startsWith('?') &&
+               comm::matchRequest('?', QByteArrayView(message).sliced(1))) {
+        return {};
+    }
+    return QCoreApplication::translate("cambench::usecases",
+                                       "%1 was not sent: the check only reads")
+        .arg(request.label);
+}
+
+Result<QList<CheckResult>> run(comm::DeviceConnection& connection,
+                               const UseCaseProgress& progress) {
+    if (auto* table = dynamic_cast<comm::table::TableCamCon*>(&connection))
+        return camcon_check::tableAreas(*table, progress);
+    auto* ascii = dynamic_cast<comm::AsciiCamCon*>(&connection);
+    if (!ascii) {
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::usecases", "There is no check for the protocol %1 yet.")
+                                .arg(connection.protocolId()));
+    }
+    Result<QList<CheckResult>> results = camcon_check::catalogueQueries(*ascii, progress);
+    if (!results) return results;
+    // Only what the connection's protocol can try: a Standard line has no
+    // block numbers and no token to listen to.
+    const QString protocol = connection.protocolId();
+    if (protocol == QLatin1String("multiuser")) {
+        const Result<QList<CheckResult>> numbering = camcon_check::multiuserNumbering(*ascii);
+        if (!numbering) return numbering.error();
+        *results << *numbering;
+    } else if (protocol == QLatin1String("cambus")) {
+        const Result<QList<CheckResult>> timing = camcon_check::camBusTiming(*ascii);
+        if (!timing) return timing.error();
+        *results << *timing;
+    }
+    return results;
+}
+
+}  // namespace
+
+void registerCamConCheck(CheckRegistry& registry) {
+    registry.add({QStringLiteral("camcon"), refuses, run});
+}
+
+}  // namespace cambench::usecases
