@@ -45,20 +45,17 @@ Result<QList<CheckResult>> run(comm::DeviceConnection& connection,
                                 "cambench::usecases", "There is no check for the protocol %1 yet.")
                                 .arg(connection.protocolId()));
     }
-    Result<QList<CheckResult>> results = camcon_check::catalogueQueries(*ascii, progress);
-    if (!results) return results;
+    const Result<QList<CheckResult>> queries = camcon_check::catalogueQueries(*ascii, progress);
+    if (!queries) return queries;
+    QList<CheckResult> results = *queries;
     // Only what the connection's protocol can try: a Standard line has no
     // block numbers and no token to listen to.
     const QString protocol = connection.protocolId();
-    if (protocol == QLatin1String("multiuser")) {
-        const Result<QList<CheckResult>> numbering = camcon_check::multiuserNumbering(*ascii);
-        if (!numbering) return numbering.error();
-        *results << *numbering;
-    } else if (protocol == QLatin1String("cambus")) {
-        const Result<QList<CheckResult>> timing = camcon_check::camBusTiming(*ascii);
-        if (!timing) return timing.error();
-        *results << *timing;
-    }
+    Result<QList<CheckResult>> more = QList<CheckResult>();
+    if (protocol == QLatin1String("multiuser")) more = camcon_check::multiuserNumbering(*ascii);
+    if (protocol == QLatin1String("cambus")) more = camcon_check::camBusTiming(*ascii);
+    if (!more) return more.error();
+    results << *more;
     return results;
 }
 

@@ -41,10 +41,6 @@ QString refuses(const QString& protocolId, const comm::Request& request) {
         .arg(request.label);
 }
 
-bool isMc200(comm::Mc1Variant variant) {
-    return variant == comm::Mc1Variant::Mc200V1 || variant == comm::Mc1Variant::Mc200V2;
-}
-
 // Could not tell on a line failure, refuted when the device answered otherwise.
 CheckResult fromError(const QString& id, const QString& reading, const QString& source,
                       const Error& error) {
@@ -86,7 +82,7 @@ CheckResult flagAddressing(Mc1Device& device) {
         "cambench::usecases",
         "flag Mn read by itself and bit n-1 of the flags' external RAM page agree");
     const QString source = QStringLiteral("comm/mc1/mc1_address.cpp (mc1ExternalFlagAt)");
-    const bool mc200 = isMc200(device.variant());
+    const bool mc200 = comm::isMc200(device.variant());
     QList<comm::Mc1Point> points;
     for (int i = 0; i < kComparedFlags; ++i) points << comm::mc1ExternalFlagAt(i, mc200);
     const Result<QList<bool>> single = device.readPoints(points);
