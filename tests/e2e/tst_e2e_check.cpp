@@ -31,6 +31,7 @@ void TestE2eCheck::everyReadingHeld_data() {
     QTest::newRow("mc100v1") << "mc1" << QStringList{"--variant", "mc100v1"}
                              << "held  mc1.flag_addressing";
     QTest::newRow("mc200v2") << "mc1" << QStringList{"--variant", "mc200v2"} << "held  mc1.axes";
+    QTest::newRow("mc100 ascii") << "mc1-ascii" << QStringList() << "held  mc1.variable_width";
     QTest::newRow("compax3") << "compax3" << QStringList() << "held  compax3.separators";
 }
 

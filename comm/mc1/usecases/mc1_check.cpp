@@ -22,7 +22,7 @@ QString refuses(const QString& protocolId, const comm::Request& request) {
     bool reads = false;
     if (protocolId == QLatin1String("mc1-ascii")) {
         const std::optional<comm::Mc1AsciiRequest> parsed =
-            comm::parseMc1AsciiRequest(request.message);
+            comm::parseMc1AsciiRequest(request.message.trimmed());  // without its CR
         reads = parsed && !parsed->value;
     } else {
         bool known = false;
