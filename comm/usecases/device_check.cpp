@@ -7,11 +7,6 @@ namespace cambench::usecases {
 
 namespace {
 
-CheckResult make(QString id, QString reading, QString source, CheckVerdict verdict,
-                 QString observed) {
-    return {std::move(id), std::move(reading), std::move(source), verdict, std::move(observed)};
-}
-
 // The engine's gate for the length of one check; taken off again however
 // the check ends.
 class GateScope {
@@ -42,18 +37,33 @@ QString checkVerdictText(CheckVerdict verdict) {
     return QStringLiteral("could not tell");
 }
 
-CheckResult held(QString id, QString reading, QString source) {
-    return make(std::move(id), std::move(reading), std::move(source), CheckVerdict::Held, {});
+CheckResult Reading::held(QString observed) const {
+    return {id, text, source, CheckVerdict::Held, std::move(observed)};
 }
 
-CheckResult refuted(QString id, QString reading, QString source, QString observed) {
-    return make(std::move(id), std::move(reading), std::move(source), CheckVerdict::Refuted,
-                std::move(observed));
+CheckResult Reading::refuted(QString observed) const {
+    return {id, text, source, CheckVerdict::Refuted, std::move(observed)};
 }
 
-CheckResult couldNotTell(QString id, QString reading, QString source, QString why) {
-    return make(std::move(id), std::move(reading), std::move(source), CheckVerdict::CouldNotTell,
-                std::move(why));
+CheckResult Reading::couldNotTell(QString why) const {
+    return {id, text, source, CheckVerdict::CouldNotTell, std::move(why)};
+}
+
+CheckResult Reading::failed(const Error& error) const {
+    switch (error.kind) {
+        case ErrorKind::DeviceError:
+        case ErrorKind::NotUnderstood:
+        case ErrorKind::InvalidData:
+            return refuted(error.message);
+        default:
+            return couldNotTell(error.message);
+    }
+}
+
+QString notReadingRequest(const comm::Request& request) {
+    return QCoreApplication::translate("cambench::usecases",
+                                       "%1 was not sent: the check only reads")
+        .arg(request.label);
 }
 
 int CheckReport::count(CheckVerdict verdict) const {

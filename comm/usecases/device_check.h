@@ -40,10 +40,22 @@ struct CheckResult {
     QString observed;  // refuted: what the device answered instead; could not tell: why
 };
 
-// A verdict in one call: held, or refuted / could not tell with what was seen.
-CheckResult held(QString id, QString reading, QString source);
-CheckResult refuted(QString id, QString reading, QString source, QString observed);
-CheckResult couldNotTell(QString id, QString reading, QString source, QString why);
+// What one check tries, and its verdict in one call.
+struct Reading {
+    QString id;      // CheckResult::id
+    QString text;    // CheckResult::reading
+    QString source;  // CheckResult::source
+
+    CheckResult held(QString observed = {}) const;
+    CheckResult refuted(QString observed) const;
+    CheckResult couldNotTell(QString why) const;
+    // A request that failed: refused by the device or answered otherwise
+    // than we read (refuted), or no answer that decides it (could not tell).
+    CheckResult failed(const Error& error) const;
+};
+
+// The gate's reason for a request that does not only read.
+QString notReadingRequest(const comm::Request& request);
 
 struct CheckReport {
     QString familyId;

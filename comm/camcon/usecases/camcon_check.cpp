@@ -22,17 +22,15 @@ bool isTableProtocol(const QString& protocolId) {
 // Multiuser, Cam-BUS). Commands, short commands and free text never pass.
 QString refuses(const QString& protocolId, const comm::Request& request) {
     const QByteArray& message = request.message;
+    bool reads = false;
     if (isTableProtocol(protocolId)) {
-        const bool read = message.size() == comm::table::kRk512RequestHeaderBytes &&
-                          quint8(message.at(2)) == quint8(comm::table::Rk512Order::Read);
-        if (read) return {};
-    } else if (message.startsWith('?') &&
-               comm::matchRequest('?', QByteArrayView(message).sliced(1))) {
-        return {};
+        reads = message.size() == comm::table::kRk512RequestHeaderBytes &&
+                quint8(message.at(2)) == quint8(comm::table::Rk512Order::Read);
+    } else {
+        reads = message.startsWith('?') &&
+                comm::matchRequest('?', QByteArrayView(message).sliced(1)) != nullptr;
     }
-    return QCoreApplication::translate("cambench::usecases",
-                                       "%1 was not sent: the check only reads")
-        .arg(request.label);
+    return reads ? QString() : notReadingRequest(request);
 }
 
 Result<QList<CheckResult>> run(comm::DeviceConnection& connection,

@@ -28,7 +28,41 @@ std::optional<comm::Fields> zeroFields(const comm::CommandSpec& spec) {
     return fields;
 }
 
+// What asking `spec` with 0 for its numbers showed; only a cancel fails.
+Result<CheckResult> askedWithZeros(comm::AsciiLink& link, const comm::CommandSpec& spec,
+                                   const Reading& reading, SilentLine& line) {
+    const std::optional<comm::Fields> fields = zeroFields(spec);
+    if (!fields)
+        return reading.couldNotTell(
+            QCoreApplication::translate("cambench::usecases", "it asks with a text"));
+    if (const std::optional<CheckResult> skipped = line.skip(reading)) return *skipped;
+    const Result<comm::Fields> reply = link.call(spec, *fields);
+    line.answered(reply || reply.error().kind != ErrorKind::Communication);
+    if (reply) return reading.held();
+    const Error& error = reply.error();
+    if (error.kind == ErrorKind::Cancelled) return error;
+    if (error.kind == ErrorKind::NotUnderstood) {
+        return reading.refuted(QCoreApplication::translate("cambench::usecases",
+                                                           "the device does not know it (:Z): %1")
+                                   .arg(error.message));
+    }
+    if (error.kind == ErrorKind::DeviceError) {
+        // It knows the command; ERR to the numbers 0 says nothing of the format.
+        return reading.couldNotTell(
+            QCoreApplication::translate("cambench::usecases",
+                                        "it answered ERR %1 when asked with 0")
+                .arg(error.deviceCode));
+    }
+    return reading.failed(error);
+}
+
 }  // namespace
+
+std::optional<CheckResult> SilentLine::skip(const Reading& reading) const {
+    if (m_silent < kGiveUpAfter) return std::nullopt;
+    return reading.couldNotTell(
+        QCoreApplication::translate("cambench::usecases", "the device stopped answering"));
+}
 
 Result<QList<CheckResult>> catalogueQueries(comm::AsciiCamCon& device,
                                             const UseCaseProgress& progress) {
@@ -37,62 +71,22 @@ Result<QList<CheckResult>> catalogueQueries(comm::AsciiCamCon& device,
         if (spec.kind == comm::kQuery) queries << &spec;
     }
     QList<CheckResult> results;
-    int silent = 0;
+    SilentLine line;
     for (const comm::CommandSpec* spec : queries) {
         if (progress.cancelled()) return Error::cancelled();
         const QString name = commandName(*spec);
         progress.report(results.size(), queries.size(), name);
-        const QString id = QStringLiteral("ascii.") + name;
-        const QString reading =
+        const Reading reading{
+            QStringLiteral("ascii.") + name,
             QCoreApplication::translate("cambench::usecases", "%1 is answered as manual %2 reads%3")
                 .arg(name, QLatin1String(spec->section),
                      spec->provisional ? QCoreApplication::translate("cambench::usecases",
                                                                      " (provisional format)")
-                                       : QString());
-        const QString source = QStringLiteral("comm/camcon/ascii/catalogue.cpp: ") + name;
-        const std::optional<comm::Fields> fields = zeroFields(*spec);
-        if (!fields) {
-            results << couldNotTell(
-                id, reading, source,
-                QCoreApplication::translate("cambench::usecases", "it asks with a text"));
-            continue;
-        }
-        if (silent >= kSilentRequestsToGiveUp) {
-            results << couldNotTell(
-                id, reading, source,
-                QCoreApplication::translate("cambench::usecases", "the device stopped answering"));
-            continue;
-        }
-        const Result<comm::Fields> reply = device.link().call(*spec, *fields);
-        silent = reply || reply.error().kind != ErrorKind::Communication ? 0 : silent + 1;
-        if (reply) {
-            results << held(id, reading, source);
-            continue;
-        }
-        const Error& error = reply.error();
-        switch (error.kind) {
-            case ErrorKind::Cancelled:
-                return error;
-            case ErrorKind::NotUnderstood:
-                results << refuted(id, reading, source,
-                                   QCoreApplication::translate(
-                                       "cambench::usecases", "the device does not know it (:Z): %1")
-                                       .arg(error.message));
-                break;
-            case ErrorKind::InvalidData:
-                results << refuted(id, reading, source, error.message);
-                break;
-            case ErrorKind::DeviceError:
-                results << couldNotTell(
-                    id, reading, source,
-                    QCoreApplication::translate("cambench::usecases",
-                                                "it answered ERR %1 when asked with 0")
-                        .arg(error.deviceCode));
-                break;
-            default:
-                results << couldNotTell(id, reading, source, error.message);
-                break;
-        }
+                                       : QString()),
+            QStringLiteral("comm/camcon/ascii/catalogue.cpp: ") + name};
+        const Result<CheckResult> result = askedWithZeros(device.link(), *spec, reading, line);
+        if (!result) return result.error();
+        results << *result;
     }
     return results;
 }
@@ -102,12 +96,13 @@ Result<QList<CheckResult>> multiuserNumbering(comm::AsciiCamCon& device) {
     // repeat of the first must be answered again (with the old reply).
     constexpr int kBlock = 17;
     constexpr int kTurnaroundMs = 100;
-    const QString id = QStringLiteral("multiuser.block_numbers");
-    const QString reading = QCoreApplication::translate(
-        "cambench::usecases",
-        "a request under a new block number is answered, and so is a repeat of that number "
-        "(with the last reply, not executed again)");
-    const QString source = QStringLiteral("comm/camcon/ascii/ascii_backend.h (block numbers)");
+    const Reading reading{
+        QStringLiteral("multiuser.block_numbers"),
+        QCoreApplication::translate("cambench::usecases",
+                                    "a request under a new block number is answered, and so is a "
+                                    "repeat of that number (with the last reply, not executed "
+                                    "again)"),
+        QStringLiteral("comm/camcon/ascii/ascii_backend.h (block numbers)")};
     comm::AsciiLink& link = device.link();
     const int number = link.settings().device;
     QStringList silentAt;
@@ -116,37 +111,34 @@ Result<QList<CheckResult>> multiuserNumbering(comm::AsciiCamCon& device) {
         if (!answered) return answered.error();
         if (!*answered) silentAt << QString::number(block);
     }
-    if (silentAt.isEmpty()) return QList<CheckResult>{held(id, reading, source)};
-    return QList<CheckResult>{
-        couldNotTell(id, reading, source,
-                     QCoreApplication::translate("cambench::usecases",
-                                                 "no answer under block numbers %1 (of %2, %2, %3)")
-                         .arg(silentAt.join(QLatin1String(", ")))
-                         .arg(kBlock)
-                         .arg(kBlock + 1))};
+    if (silentAt.isEmpty()) return QList<CheckResult>{reading.held()};
+    return QList<CheckResult>{reading.couldNotTell(
+        QCoreApplication::translate("cambench::usecases",
+                                    "no answer under block numbers %1 (of %2, %2, %3)")
+            .arg(silentAt.join(QLatin1String(", ")))
+            .arg(kBlock)
+            .arg(kBlock + 1))};
 }
 
 Result<QList<CheckResult>> camBusTiming(comm::AsciiCamCon& device) {
     constexpr int kListenMs = 1000;
-    const QString id = QStringLiteral("cambus.token_round");
-    const QString reading =
+    const Reading reading{
+        QStringLiteral("cambus.token_round"),
         QCoreApplication::translate("cambench::usecases",
                                     "every user in the bus's table gets the token within a second "
-                                    "(P11: each answers within T = 10 ms)");
-    const QString source = QStringLiteral("comm/camcon/cambus/README.md (Timing, P11)");
+                                    "(P11: each answers within T = 10 ms)"),
+        QStringLiteral("comm/camcon/cambus/README.md (Timing, P11)")};
     auto* backend = dynamic_cast<comm::CamBusBackend*>(&device.engine().backend());
     if (!backend)
-        return QList<CheckResult>{
-            couldNotTell(id, reading, source,
-                         QCoreApplication::translate("cambench::usecases", "not a Cam-BUS line"))};
+        return QList<CheckResult>{reading.couldNotTell(
+            QCoreApplication::translate("cambench::usecases", "not a Cam-BUS line"))};
     const comm::CamBusView before = backend->view();
     const Status listened = device.engine().listen(kListenMs);
     if (!listened) return listened.error();
     const comm::CamBusView after = backend->view();
     const qint64 tokens = after.tokens - before.tokens;
     if (tokens <= 0) {
-        return QList<CheckResult>{couldNotTell(
-            id, reading, source,
+        return QList<CheckResult>{reading.couldNotTell(
             QCoreApplication::translate("cambench::usecases", "no token heard in %1 ms")
                 .arg(kListenMs))};
     }
@@ -157,13 +149,8 @@ Result<QList<CheckResult>> camBusTiming(comm::AsciiCamCon& device) {
     const QString heard = QCoreApplication::translate("cambench::usecases", "%1 tokens in %2 ms")
                               .arg(tokens)
                               .arg(kListenMs);
-    if (missed.isEmpty()) {
-        CheckResult result = held(id, reading, source);
-        result.observed = heard;
-        return QList<CheckResult>{result};
-    }
-    return QList<CheckResult>{refuted(
-        id, reading, source,
+    if (missed.isEmpty()) return QList<CheckResult>{reading.held(heard)};
+    return QList<CheckResult>{reading.refuted(
         QCoreApplication::translate("cambench::usecases", "%1; users %2 did not get the token")
             .arg(heard, missed.join(QLatin1String(", "))))};
 }

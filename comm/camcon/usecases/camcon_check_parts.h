@@ -4,6 +4,8 @@
 
 #include "comm/usecases/device_check.h"
 
+#include <optional>
+
 namespace cambench::comm {
 class AsciiCamCon;
 namespace table {
@@ -26,8 +28,18 @@ Result<QList<CheckResult>> camBusTiming(comm::AsciiCamCon& device);
 Result<QList<CheckResult>> tableAreas(comm::table::TableCamCon& device,
                                       const UseCaseProgress& progress);
 
-// After this many silent requests in a row the line is taken for gone: the
+// After a few unanswered requests in a row the line is taken for gone: the
 // rest are "could not tell" without waiting for each.
-inline constexpr int kSilentRequestsToGiveUp = 3;
+class SilentLine {
+public:
+    // Could not tell, without asking, once the line is taken for gone.
+    std::optional<CheckResult> skip(const Reading& reading) const;
+    // Whether the request just made was answered (anything but a line failure).
+    void answered(bool heard) { m_silent = heard ? 0 : m_silent + 1; }
+
+private:
+    static constexpr int kGiveUpAfter = 3;
+    int m_silent = 0;
+};
 
 }  // namespace cambench::usecases::camcon_check

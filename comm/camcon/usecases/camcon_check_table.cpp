@@ -20,25 +20,18 @@ struct Place {
     int area;
 };
 
-QString placeId(const Place& place) {
-    return QStringLiteral("table.%1.%2").arg(place.area).arg(place.entry->firstWord);
-}
-
-QString placeReading(const Place& place) {
-    QString reading =
+Reading placeReading(const Place& place) {
+    QString text =
         QCoreApplication::translate("cambench::usecases", "area %1 word %2 can be read: %3")
             .arg(place.area)
             .arg(place.entry->firstWord)
             .arg(QLatin1String(place.entry->meaning));
     if (place.entry->provisional) {
-        reading += QCoreApplication::translate("cambench::usecases", " (provisional: %1)")
-                       .arg(QLatin1String(place.entry->provisional));
+        text += QCoreApplication::translate("cambench::usecases", " (provisional: %1)")
+                    .arg(QLatin1String(place.entry->provisional));
     }
-    return reading;
-}
-
-QString placeSource(const Place& place) {
-    return QStringLiteral("comm/camcon/table/table_map.cpp: ") + QLatin1String(place.entry->key);
+    return {QStringLiteral("table.%1.%2").arg(place.area).arg(place.entry->firstWord), text,
+            QStringLiteral("comm/camcon/table/table_map.cpp: ") + QLatin1String(place.entry->key)};
 }
 
 bool isAnalogueCamArea(int area) {
@@ -47,29 +40,39 @@ bool isAnalogueCamArea(int area) {
 
 // Area 203 word 38 first: it says which analogue areas exist.
 Result<CheckResult> analogueOutputCount(comm::table::TableCamCon& device, int& count) {
-    const QString id = QStringLiteral("table.analogue_outputs");
-    const QString reading = QCoreApplication::translate(
-        "cambench::usecases",
-        "area 203 word 38 holds the number of analogue outputs (0..14), and only their "
-        "areas 241.. exist");
-    const QString source = QStringLiteral("comm/camcon/table/table_camcon_extras.cpp");
+    const Reading reading{
+        QStringLiteral("table.analogue_outputs"),
+        QCoreApplication::translate("cambench::usecases",
+                                    "area 203 word 38 holds the number of analogue outputs "
+                                    "(0..14), and only their areas 241.. exist"),
+        QStringLiteral("comm/camcon/table/table_camcon_extras.cpp")};
     const Result<int> read = device.readAnalogueOutputCount();
     count = read ? *read : 0;
-    if (read) {
-        CheckResult result = held(id, reading, source);
-        result.observed =
-            QCoreApplication::translate("cambench::usecases", "it says %1").arg(*read);
-        return result;
+    if (read)
+        return reading.held(
+            QCoreApplication::translate("cambench::usecases", "it says %1").arg(*read));
+    if (read.error().kind == ErrorKind::Cancelled) return read.error();
+    return reading.failed(read.error());
+}
+
+// What reading the first word of `place` showed; only a cancel fails.
+Result<CheckResult> readPlace(comm::table::TableLink& link, const Place& place, int analogueOutputs,
+                              SilentLine& line) {
+    const Reading reading = placeReading(place);
+    if (place.entry->firstWord >= link.reachableWords()) {
+        return reading.couldNotTell(QCoreApplication::translate(
+            "cambench::usecases", "this variant of the protocol cannot address the word"));
     }
-    switch (read.error().kind) {
-        case ErrorKind::Cancelled:
-            return read.error();
-        case ErrorKind::InvalidData:
-        case ErrorKind::DeviceError:
-            return refuted(id, reading, source, read.error().message);
-        default:
-            return couldNotTell(id, reading, source, read.error().message);
+    if (isAnalogueCamArea(place.area) && analogueOutputs == 0) {
+        return reading.couldNotTell(QCoreApplication::translate(
+            "cambench::usecases", "this device has no analogue outputs"));
     }
+    if (const std::optional<CheckResult> skipped = line.skip(reading)) return *skipped;
+    const Result<QList<qint32>> words = link.readWords(place.area, place.entry->firstWord, 1);
+    line.answered(words || words.error().kind != ErrorKind::Communication);
+    if (words) return reading.held();
+    if (words.error().kind == ErrorKind::Cancelled) return words.error();
+    return reading.failed(words.error());
 }
 
 }  // namespace
@@ -86,46 +89,14 @@ Result<QList<CheckResult>> tableAreas(comm::table::TableCamCon& device,
     for (const TableEntry& entry : comm::table::tableEntries()) {
         if (comm::table::canRead(entry.access)) places << Place{&entry, entry.firstArea};
     }
-    comm::table::TableLink& link = device.link();
-    int silent = 0;
+    SilentLine line;
     for (qsizetype i = 0; i < places.size(); ++i) {
         if (progress.cancelled()) return Error::cancelled();
-        const Place& place = places.at(i);
-        progress.report(i, places.size(), placeId(place));
-        const QString id = placeId(place);
-        const QString reading = placeReading(place);
-        const QString source = placeSource(place);
-        if (place.entry->firstWord >= link.reachableWords()) {
-            results << couldNotTell(
-                id, reading, source,
-                QCoreApplication::translate(
-                    "cambench::usecases", "this variant of the protocol cannot address the word"));
-            continue;
-        }
-        if (isAnalogueCamArea(place.area) && analogueOutputs == 0) {
-            results << couldNotTell(
-                id, reading, source,
-                QCoreApplication::translate("cambench::usecases",
-                                            "this device has no analogue outputs"));
-            continue;
-        }
-        if (silent >= kSilentRequestsToGiveUp) {
-            results << couldNotTell(
-                id, reading, source,
-                QCoreApplication::translate("cambench::usecases", "the device stopped answering"));
-            continue;
-        }
-        const Result<QList<qint32>> words = link.readWords(place.area, place.entry->firstWord, 1);
-        silent = words || words.error().kind != ErrorKind::Communication ? 0 : silent + 1;
-        if (words) {
-            results << held(id, reading, source);
-        } else if (words.error().kind == ErrorKind::Cancelled) {
-            return words.error();
-        } else if (words.error().kind == ErrorKind::DeviceError) {
-            results << refuted(id, reading, source, words.error().message);
-        } else {
-            results << couldNotTell(id, reading, source, words.error().message);
-        }
+        progress.report(i, places.size(), QLatin1String(places.at(i).entry->key));
+        const Result<CheckResult> result =
+            readPlace(device.link(), places.at(i), analogueOutputs, line);
+        if (!result) return result.error();
+        results << *result;
     }
     return results;
 }

@@ -25,36 +25,29 @@ constexpr int kWrongTypeCode = 0x0006;
 // The serial number: a whole number every drive has (C1).
 const Compax3ObjectId kSerialNumber{1, 4};
 const Compax3ObjectId kActualPosition{680, 5};
+// The info string's fixed length plus some room; the longest value answer.
+constexpr int kLongestAnswer = 48;
 
 // Reads (an object, the info string) pass; writes and functions never.
 QString refuses(const QString&, const comm::Request& request) {
     const std::optional<comm::Compax3Request> parsed =
         comm::parseCompax3Request(comm::compax3Canonical(request.message));
-    if (parsed && parsed->kind != comm::Compax3Request::Write) return {};
-    return QCoreApplication::translate("cambench::usecases",
-                                       "%1 was not sent: the check only reads")
-        .arg(request.label);
-}
-
-CheckResult fromError(const QString& id, const QString& reading, const QString& source,
-                      const Error& error) {
-    if (error.kind == ErrorKind::DeviceError || error.kind == ErrorKind::InvalidData)
-        return refuted(id, reading, source, error.message);
-    return couldNotTell(id, reading, source, error.message);
+    const bool reads = parsed && parsed->kind != comm::Compax3Request::Write;
+    return reads ? QString() : notReadingRequest(request);
 }
 
 CheckResult infoString(Compax3Device& drive) {
-    const QString id = QStringLiteral("compax3.info_string");
-    const QString reading = QCoreApplication::translate(
-        "cambench::usecases",
-        "the info string (_?) starts with \"Compax3\" and its second word is the drive type (C7)");
+    const Reading reading{QStringLiteral("compax3.info_string"),
+                          QCoreApplication::translate("cambench::usecases",
+                                                      "the info string (_?) starts with "
+                                                      "\"Compax3\" and its second word is the "
+                                                      "drive type (C7)"),
+                          kNotesSource};
     const Result<Compax3Identity> identity = drive.identity();
-    if (!identity) return fromError(id, reading, kNotesSource, identity.error());
+    if (!identity) return reading.failed(identity.error());
     if (!identity->info.startsWith(QLatin1String("Compax3")) || identity->type().isEmpty())
-        return refuted(id, reading, kNotesSource, identity->info);
-    CheckResult result = held(id, reading, kNotesSource);
-    result.observed = identity->info;
-    return result;
+        return reading.refuted(identity->info);
+    return reading.held(identity->info);
 }
 
 // One request sent as it is, its answer parsed: for the forms the device
@@ -63,70 +56,71 @@ Result<comm::Compax3Reply> ask(Compax3Device& drive, const QByteArray& command) 
     comm::Request request;
     request.label = QString::fromLatin1(command);
     request.message = command;
-    request.longestReplyBytes = 48;
+    request.longestReplyBytes = kLongestAnswer;
     const Result<QByteArray> answer = drive.engine().send(request);
     if (!answer) return answer.error();
     return comm::parseCompax3Reply(*answer);
 }
 
+QString replyText(const comm::Compax3Reply& reply) {
+    return reply.kind == comm::Compax3Reply::Error
+               ? QStringLiteral("!%1").arg(reply.code, 4, 16, QLatin1Char('0'))
+               : reply.text;
+}
+
 CheckResult separators(Compax3Device& drive) {
-    const QString id = QStringLiteral("compax3.separators");
-    const QString reading = QCoreApplication::translate(
-        "cambench::usecases",
-        "O1.4 and O1,4 name the same object (the manual writes ',', the "
-        "public client '.')");
+    const Reading reading{QStringLiteral("compax3.separators"),
+                          QCoreApplication::translate("cambench::usecases",
+                                                      "O1.4 and O1,4 name the same object (the "
+                                                      "manual writes ',', the public client '.')"),
+                          kNotesSource};
     const Result<comm::Compax3Reply> comma = ask(drive, QByteArrayLiteral("O1,4"));
-    if (!comma) return fromError(id, reading, kNotesSource, comma.error());
+    if (!comma) return reading.failed(comma.error());
     const Result<comm::Compax3Reply> dot = ask(drive, QByteArrayLiteral("O1.4"));
-    if (!dot) return fromError(id, reading, kNotesSource, dot.error());
-    if (comma->kind == dot->kind && comma->text == dot->text && comma->code == dot->code)
-        return held(id, reading, kNotesSource);
-    const auto shown = [](const comm::Compax3Reply& reply) {
-        return reply.kind == comm::Compax3Reply::Error
-                   ? QStringLiteral("!%1").arg(reply.code, 4, 16, QLatin1Char('0'))
-                   : reply.text;
-    };
-    return refuted(
-        id, reading, kNotesSource,
+    if (!dot) return reading.failed(dot.error());
+    if (replyText(*comma) == replyText(*dot)) return reading.held();
+    return reading.refuted(
         QCoreApplication::translate("cambench::usecases", "O1,4 answered %1, O1.4 answered %2")
-            .arg(shown(*comma), shown(*dot)));
+            .arg(replyText(*comma), replyText(*dot)));
 }
 
 CheckResult hexAnswer(Compax3Device& drive) {
-    const QString id = QStringLiteral("compax3.hex_answer");
-    const QString reading = QCoreApplication::translate(
-        "cambench::usecases", "a whole number asked for in hex ($) is answered with its $ (C8)");
+    const Reading reading{
+        QStringLiteral("compax3.hex_answer"),
+        QCoreApplication::translate("cambench::usecases",
+                                    "a whole number asked for in hex ($) is answered with its $ "
+                                    "(C8)"),
+        kNotesSource};
     const Result<QString> value = drive.readObject(kSerialNumber, true);
-    if (!value) return fromError(id, reading, kNotesSource, value.error());
-    if (value->startsWith(QLatin1Char('$'))) return held(id, reading, kNotesSource);
-    return refuted(id, reading, kNotesSource, *value);
+    if (!value) return reading.failed(value.error());
+    return value->startsWith(QLatin1Char('$')) ? reading.held() : reading.refuted(*value);
 }
 
 // The drive's refusal number for a read it must refuse.
-CheckResult refusal(Compax3Device& drive, const QString& id, const QString& reading,
-                    const Compax3ObjectId& object, bool hex, int expected) {
+CheckResult refusal(Compax3Device& drive, const Reading& reading, const Compax3ObjectId& object,
+                    bool hex, int expected) {
     const Result<QString> value = drive.readObject(object, hex);
     if (value)
-        return refuted(
-            id, reading, kNotesSource,
+        return reading.refuted(
             QCoreApplication::translate("cambench::usecases", "answered %1").arg(*value));
-    if (value.error().kind != ErrorKind::DeviceError)
-        return couldNotTell(id, reading, kNotesSource, value.error().message);
-    if (value.error().deviceCode == expected) return held(id, reading, kNotesSource);
-    return refuted(id, reading, kNotesSource, value.error().message);
+    if (value.error().kind != ErrorKind::DeviceError) return reading.failed(value.error());
+    if (value.error().deviceCode == expected) return reading.held();
+    return reading.refuted(value.error().message);
 }
 
 QList<CheckResult> refusals(Compax3Device& drive) {
-    return {refusal(drive, QStringLiteral("compax3.refusal.0002"),
-                    QCoreApplication::translate("cambench::usecases",
-                                                "an object the drive lacks is refused with "
-                                                "!0002 (C5)"),
-                    kNoSuchObject, false, kNoSuchObjectCode),
-            refusal(drive, QStringLiteral("compax3.refusal.0006"),
-                    QCoreApplication::translate("cambench::usecases",
-                                                "a REAL value asked for in hex is refused with "
-                                                "!0006 (C5, C8)"),
-                    kActualPosition, true, kWrongTypeCode)};
+    const Reading noSuchObject{QStringLiteral("compax3.refusal.0002"),
+                               QCoreApplication::translate("cambench::usecases",
+                                                           "an object the drive lacks is refused "
+                                                           "with !0002 (C5)"),
+                               kNotesSource};
+    const Reading wrongType{QStringLiteral("compax3.refusal.0006"),
+                            QCoreApplication::translate("cambench::usecases",
+                                                        "a REAL value asked for in hex is refused "
+                                                        "with !0006 (C5, C8)"),
+                            kNotesSource};
+    return {refusal(drive, noSuchObject, kNoSuchObject, false, kNoSuchObjectCode),
+            refusal(drive, wrongType, kActualPosition, true, kWrongTypeCode)};
 }
 
 // Whether `value` is what an object of `type` answers.
@@ -152,19 +146,19 @@ Result<QList<CheckResult>> dictionaryObjects(Compax3Device& drive,
         const Compax3ObjectInfo& object = objects.at(i);
         progress.report(i, objects.size(), object.id.text());
         if (!object.readable()) continue;  // a function: reading it says nothing
-        const QString id = QStringLiteral("compax3.object.") + object.id.text();
-        const QString reading =
+        const Reading reading{
+            QStringLiteral("compax3.object.") + object.id.text(),
             QCoreApplication::translate("cambench::usecases", "object %1 (%2) exists and is %3")
-                .arg(object.id.text(), object.name, compax3TypeKey(object.type));
+                .arg(object.id.text(), object.name, compax3TypeKey(object.type)),
+            kDictionarySource};
         const Result<QString> value = drive.readObject(object.id);
+        if (!value && value.error().kind == ErrorKind::Cancelled) return value.error();
         if (!value) {
-            if (value.error().kind == ErrorKind::Cancelled) return value.error();
-            results << fromError(id, reading, kDictionarySource, value.error());
+            results << reading.failed(value.error());
         } else if (fitsType(*value, object.type)) {
-            results << held(id, reading, kDictionarySource);
+            results << reading.held();
         } else {
-            results << refuted(
-                id, reading, kDictionarySource,
+            results << reading.refuted(
                 QCoreApplication::translate("cambench::usecases", "answered %1").arg(*value));
         }
     }
