@@ -22,9 +22,10 @@ const QString kDictionarySource = QStringLiteral("model/compax3/compax3-objects.
 const Compax3ObjectId kNoSuchObject{9999, 99};
 constexpr int kNoSuchObjectCode = 0x0002;
 constexpr int kWrongTypeCode = 0x0006;
-// The serial number: a whole number every drive has (C1).
+// The serial number, a text every drive has, and the status word, a whole
+// number (C1).
 const Compax3ObjectId kSerialNumber{1, 4};
-const Compax3ObjectId kActualPosition{680, 5};
+const Compax3ObjectId kStatusWord{1000, 3};
 // The info string's fixed length plus some room; the longest value answer.
 constexpr int kLongestAnswer = 48;
 
@@ -91,7 +92,7 @@ CheckResult hexAnswer(Compax3Device& drive) {
                                     "a whole number asked for in hex ($) is answered with its $ "
                                     "(C8)"),
         kNotesSource};
-    const Result<QString> value = drive.readObject(kSerialNumber, true);
+    const Result<QString> value = drive.readObject(kStatusWord, true);
     if (!value) return reading.failed(value.error());
     return value->startsWith(QLatin1Char('$')) ? reading.held() : reading.refuted(*value);
 }
@@ -116,11 +117,11 @@ QList<CheckResult> refusals(Compax3Device& drive) {
                                kNotesSource};
     const Reading wrongType{QStringLiteral("compax3.refusal.0006"),
                             QCoreApplication::translate("cambench::usecases",
-                                                        "a REAL value asked for in hex is refused "
-                                                        "with !0006 (C5, C8)"),
+                                                        "a text asked for in hex is refused with "
+                                                        "!0006 (C5, C8)"),
                             kNotesSource};
     return {refusal(drive, noSuchObject, kNoSuchObject, false, kNoSuchObjectCode),
-            refusal(drive, wrongType, kActualPosition, true, kWrongTypeCode)};
+            refusal(drive, wrongType, kSerialNumber, true, kWrongTypeCode)};
 }
 
 // Whether `value` is what an object of `type` answers.
