@@ -24,6 +24,9 @@ void TestE2eCheck::everyReadingHeld_data() {
     QTest::addColumn<QStringList>("simArgs");
     QTest::addColumn<QString>("aHeldReading");
     QTest::newRow("camcon standard") << QString() << QStringList() << "held  ascii.?GTEMP";
+    QTest::newRow("camcon multiuser")
+        << "multiuser" << QStringList() << "held  multiuser.block_numbers";
+    QTest::newRow("camcon cambus") << "cambus" << QStringList() << "held  cambus.token_round";
     QTest::newRow("camcon 3964r-n96")
         << "3964r-n96" << QStringList() << "held  table.analogue_outputs";
     QTest::newRow("camcon 3964r-n96 without analogue outputs")

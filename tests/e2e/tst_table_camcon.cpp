@@ -449,7 +449,16 @@ void TestTableCamCon::projectsWithAndWithoutAnalogueOutputs() {
     const Result<usecases::WriteReport> back = usecases::writeItems(
         *bare.device, *bareInfo, usecases::planFromProject(without->project, without->project));
     VERIFY_OK(back);
-    QCOMPARE(back->count(usecases::WriteState::Unchanged), back->total());
+    // The programming program is written once on the way (as on any
+    // table-interface CamCon: the cam reads select their programs).
+    QStringList changed;
+    for (const usecases::OutcomeLine& item : back->lines()) {
+        if (item.state != usecases::WriteState::Unchanged &&
+            item.label != QLatin1String("programming program"))
+            changed << item.text;
+    }
+    QVERIFY(back->analogueCams.isEmpty());
+    QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QLatin1Char('\n'))));
 
     // The other device's analogue cams (and nothing else of its settings).
     Project analogueOnly;
