@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "check_report_dialog.h"
 #include "connection_page.h"
 #include "connection_status.h"
 #include "device_session.h"
@@ -196,6 +197,8 @@ void MainWindow::createMenus() {
     showFamilyPages();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    // Reading only (issue 29): tries our provisional readings on the device.
+    help->addAction(tr("&Check this device…"), this, [this] { runDeviceCheck(m_session, this); });
     help->addAction(tr("&About CamBench"), this, [this] {
         QStringList families;
         for (const comm::FamilyInfo* info : comm::FamilyRegistry::instance().all())

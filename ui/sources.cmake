@@ -3,6 +3,8 @@ target_sources(cambench_ui PRIVATE
   shell_log.cpp
   report_dialog.h
   report_dialog.cpp
+  check_report_dialog.h
+  check_report_dialog.cpp
   change_marker.h
   live_freshness.h
   live_freshness.cpp

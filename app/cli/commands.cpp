@@ -6,6 +6,7 @@ namespace cambench::cli {
 
 int runPorts(CliSession& session, CommandArgs& args);   // port_commands.cpp
 int runDetect(CliSession& session, CommandArgs& args);  // detect_command.cpp
+int runCheck(CliSession& session, CommandArgs& args);   // check_command.cpp
 
 CommandRegistry& CommandRegistry::instance() {
     static CommandRegistry registry;
@@ -50,6 +51,7 @@ QString CommandRegistry::help() const {
 void registerShellCommands(CommandRegistry& registry) {
     registry.add({{}, QStringLiteral("ports"), runPorts});
     registry.add({{}, QStringLiteral("detect"), runDetect});
+    registry.add({{}, QStringLiteral("check"), runCheck});
 }
 
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs) {

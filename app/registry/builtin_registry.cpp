@@ -4,12 +4,15 @@
 #include "comm/camcon/cambus/cambus_protocol.h"
 #include "comm/camcon/camcon_family.h"
 #include "comm/camcon/table/table_protocol.h"
+#include "comm/camcon/usecases/camcon_check.h"
 #include "comm/compax3/compax3_family.h"
 #include "comm/compax3/compax3_protocol.h"
+#include "comm/compax3/usecases/compax3_check.h"
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/mc1/mc1_family.h"
 #include "comm/mc1/mc1_protocol.h"
+#include "comm/mc1/usecases/mc1_check.h"
 #include "comm/sim/camcon/camcon_simulator.h"
 #include "comm/sim/compax3/compax3_simulator.h"
 #include "comm/sim/mc1/mc1_simulator.h"
@@ -39,6 +42,11 @@ void registerBuiltins() {
     comm::registerCamConSimulator(simulators);
     comm::registerMc1Simulator(simulators);
     comm::registerCompax3Simulator(simulators);
+
+    usecases::CheckRegistry& checks = usecases::CheckRegistry::instance();
+    usecases::registerCamConCheck(checks);
+    usecases::registerMc1Check(checks);
+    usecases::registerCompax3Check(checks);
 }
 
 }  // namespace cambench

@@ -78,6 +78,10 @@ Status CamConDevice::writeDeadTimeMode(int, const OutputDeadTime&) {
     return missing(CamConCapability::DeadTimeModes);
 }
 
+Result<int> CamConDevice::readAnalogueOutputCount() {
+    return missing(CamConCapability::AnalogueCams);
+}
+
 Result<AnalogueCamTrack> CamConDevice::readAnalogueCams(int) {
     return missing(CamConCapability::AnalogueCams);
 }

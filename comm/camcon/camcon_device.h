@@ -133,6 +133,10 @@ public:
     // DeadTimeModes: mode and values of outputs 1..outputs.
     virtual Result<DeadTimeModes> readDeadTimeModes(int outputs);
     virtual Status writeDeadTimeMode(int output, const OutputDeadTime& deadTime);
+    // AnalogueCams: how many analogue outputs the device says it has
+    // (0..14): only outputs 1..count exist; a device without any refuses
+    // their areas. Read before the analogue cams, never assumed to be 14.
+    virtual Result<int> readAnalogueOutputCount();
     // AnalogueCams: the base points of analogue output 1..14.
     virtual Result<AnalogueCamTrack> readAnalogueCams(int analogueOutput);
     // Makes the device's base points of `track.output` equal `track.points`.

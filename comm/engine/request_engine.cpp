@@ -79,6 +79,12 @@ int RequestEngine::attemptsFor(const Request& request) const {
 }
 
 Result<QByteArray> RequestEngine::send(const Request& request) {
+    if (m_gate) {
+        if (const QString refused = m_gate(request); !refused.isEmpty()) {
+            ++m_stats.refusedByGate;
+            return Error::usage(refused);
+        }
+    }
     ++m_stats.requests;
     m_lastAttempts = 0;
     m_lastHeardDevice = false;

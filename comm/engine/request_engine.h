@@ -48,6 +48,11 @@ public:
     // not, stale or late (a bus scan hears late answers by their source).
     using IncomingObserver = std::function<void(const Incoming&)>;
     void setIncomingObserver(IncomingObserver observer) { m_observer = std::move(observer); }
+    // Sees every request before it is sent: a request it refuses (its
+    // reason, non-empty) fails with Usage and never reaches the line. A
+    // check that must only read installs one (ReadOnlyGate); none = all go.
+    using RequestGate = std::function<QString(const Request&)>;
+    void setRequestGate(RequestGate gate) { m_gate = std::move(gate); }
     // Tests: a virtual clock (ms) instead of the wall clock; the transport
     // must advance it while it "waits".
     void setClock(std::function<qint64()> nowMs) { m_clockFn = std::move(nowMs); }
@@ -88,6 +93,7 @@ public:
         int probes = 0;
         int silentAttempts = 0;  // attempts that heard nothing at all
         int lateReplies = 0;     // answers to an earlier attempt, dropped after a retry
+        int refusedByGate = 0;   // requests the request gate kept off the line
     };
     const Stats& stats() const { return m_stats; }
     void resetStats() { m_stats = {}; }
@@ -140,6 +146,7 @@ private:
     const std::atomic_bool* m_cancel = nullptr;
     std::function<void(const TrafficEntry&)> m_sink;
     IncomingObserver m_observer;
+    RequestGate m_gate;
     std::function<qint64()> m_clockFn;
     QElapsedTimer m_clock;
     Stats m_stats;

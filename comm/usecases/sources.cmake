@@ -8,4 +8,6 @@ target_sources(cambench_usecases PRIVATE
   item_outcome.cpp
   detect_device.h
   detect_device.cpp
+  device_check.h
+  device_check.cpp
 )

@@ -28,6 +28,7 @@ private Q_SLOTS:
     void projectCarriesTheOtherTableSections();
     void analogueProgrammingAndLockFromTheCli();
     void tableSectionsOverAsciiAreNotSent();
+    void deviceWithoutAnalogueOutputsReadsAndWritesProjects();
 };
 
 void TestE2eTableSections::projectCarriesDeadTimeModesToAnotherDevice() {
@@ -202,4 +203,42 @@ void TestE2eTableSections::tableSectionsOverAsciiAreNotSent() {
 }
 
 QTEST_GUILESS_MAIN(TestE2eTableSections)
+// Issue 29: a CamCon without analogue outputs (area 203 word 38 = 0)
+// refuses the areas 241..254 with RK512 error 20. The number is read first:
+// the project reads and writes, saying the device has no analogue cams,
+// and analogue base points for it are not sent, never an abort.
+void TestE2eTableSections::deviceWithoutAnalogueOutputsReadsAndWritesProjects() {
+    SimSession bare(kTable);
+    START_SIM(bare, {"--analogue-outputs", "0"});
+    const QString file = bare.path(QStringLiteral("project.json"));
+    const CliRun read = bare.cli({"project", "read", "-o", file});
+    VERIFY_EXIT(read, 0);
+    QVERIFY2(read.err.contains(QLatin1String("this device has no analogue outputs")),
+             describe(read).constData());
+    const Result<Project> loaded = loadProject(file);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
+    QVERIFY(loaded->analogueCams.isEmpty());
+    QVERIFY(loaded->readAt.parts.contains(ProjectPart::AnalogueCams));
+    QCOMPARE(loaded->programs.size(), 16);
+
+    const CliRun back = bare.cli({"project", "write", file});
+    VERIFY_EXIT(back, 0);
+    QVERIFY2(!back.out.contains(QLatin1String("analogue output")), qPrintable(back.out));
+
+    // Its analogue read lists none; base points for it are not sent, and say why.
+    const CliRun analogue = bare.cli({"analogue", "read"});
+    VERIFY_EXIT(analogue, 0);
+    QCOMPARE(analogue.out, QStringLiteral("output,position,value\n"));
+    const QString points = bare.path(QStringLiteral("analogue.csv"));
+    QVERIFY(writeBytes(points, "output,position,value\n2,0,100\n2,180,-2000\n3,,\n"));
+    const CliRun refused = bare.cli({"analogue", "write", points});
+    QVERIFY2(refused.exitCode != 0, describe(refused).constData());
+    QVERIFY2(refused.out.contains(QLatin1String("analogue output 2: not sent")) &&
+                 refused.out.contains(QLatin1String("this device has no analogue outputs")),
+             describe(refused).constData());
+    QVERIFY2(refused.out.contains(QLatin1String("analogue output 3: unchanged")),
+             describe(refused).constData());
+    QVERIFY2(!refused.out.contains(QLatin1String(": written")), qPrintable(refused.out));
+}
+
 #include "tst_e2e_table_sections.moc"

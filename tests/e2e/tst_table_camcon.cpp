@@ -8,6 +8,8 @@
 #include "comm/camcon/table/frame_3964r.h"
 #include "comm/camcon/table/short_commands.h"
 #include "comm/camcon/table/table_camcon.h"
+#include "comm/camcon/usecases/read_everything.h"
+#include "comm/camcon/usecases/write_items.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/transport/transport_registry.h"
 #include "model/camcon/cam_validation.h"
@@ -113,6 +115,7 @@ private Q_SLOTS:
     void analogueCamsLockAndProgrammingProgram();
     void linkFaultsAtOnePercentGiveRightResults_data() { variantRows(); }
     void linkFaultsAtOnePercentGiveRightResults();
+    void projectsWithAndWithoutAnalogueOutputs();
 };
 
 void TestTableCamCon::identityAndStatus() {
@@ -413,6 +416,63 @@ void TestTableCamCon::linkFaultsAtOnePercentGiveRightResults() {
     qInfo("%d requests, %d STX sent, %d engine retries", stats.requests, bench.stxSent,
           stats.retries);
     QVERIFY(bench.stxSent > stats.requests);
+}
+
+// Issue 29: the use cases on two CamCons that differ. The one without
+// analogue outputs reads its project (no analogue cams, said so) and takes
+// it back unchanged; the other's analogue base points written to it are
+// not sent and say why, while everything else is written.
+void TestTableCamCon::projectsWithAndWithoutAnalogueOutputs() {
+    Bench full;
+    START(full, QStringLiteral("3964r-n96"));
+    Bench bare;
+    START(bare, QStringLiteral("3964r-n96"),
+          {QStringLiteral("--analogue-outputs"), QStringLiteral("0")});
+    const Result<DeviceInfo> fullInfo = full.device->readInfo();
+    VERIFY_OK(fullInfo);
+    const Result<DeviceInfo> bareInfo = bare.device->readInfo();
+    VERIFY_OK(bareInfo);
+
+    const Result<usecases::ReadEverything> withAnalogue =
+        usecases::readEverything(*full.device, *fullInfo);
+    VERIFY_OK(withAnalogue);
+    QCOMPARE(withAnalogue->project.analogueCams.size(), 14);
+    QCOMPARE(withAnalogue->project.analogueCams.first().points.size(), 3);
+    const Result<usecases::ReadEverything> without =
+        usecases::readEverything(*bare.device, *bareInfo);
+    VERIFY_OK(without);
+    QVERIFY(without->project.analogueCams.isEmpty());
+    QVERIFY2(
+        without->skipped.join(QLatin1Char('\n')).contains(QLatin1String("no analogue outputs")),
+        qPrintable(without->skipped.join(QLatin1Char('\n'))));
+
+    const Result<usecases::WriteReport> back = usecases::writeItems(
+        *bare.device, *bareInfo, usecases::planFromProject(without->project, without->project));
+    VERIFY_OK(back);
+    // The programming program is written once on the way (as on any
+    // table-interface CamCon: the cam reads select their programs).
+    QStringList changed;
+    for (const usecases::OutcomeLine& item : back->lines()) {
+        if (item.state != usecases::WriteState::Unchanged &&
+            item.label != QLatin1String("programming program"))
+            changed << item.text;
+    }
+    QVERIFY(back->analogueCams.isEmpty());
+    QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QLatin1Char('\n'))));
+
+    // The other device's analogue cams (and nothing else of its settings).
+    Project analogueOnly;
+    analogueOnly.analogueCams = withAnalogue->project.analogueCams;
+    const Result<usecases::WriteReport> carried = usecases::writeItems(
+        *bare.device, *bareInfo, usecases::planFromProject(analogueOnly, without->project));
+    VERIFY_OK(carried);
+    QCOMPARE(carried->analogueCams.size(), 14);
+    QCOMPARE(carried->analogueCams.first().state, usecases::WriteState::NotSent);
+    QVERIFY2(
+        carried->analogueCams.first().error.message.contains(QLatin1String("no analogue outputs")),
+        qPrintable(carried->analogueCams.first().error.message));
+    QCOMPARE(carried->analogueCams.at(1).state, usecases::WriteState::Unchanged);
+    QCOMPARE(carried->count(usecases::WriteState::Written), 0);
 }
 
 QTEST_GUILESS_MAIN(TestTableCamCon)

@@ -109,7 +109,16 @@ void AnalogueCamsPage::readFromDevice() {
     const int output = m_output->value();
     runOnCamCon<AnalogueCamTrack>(
         m_session, this, tr("Read analogue cams"),
-        [output](comm::CamConDevice& device, comm::JobContext&) {
+        [output](comm::CamConDevice& device, comm::JobContext&) -> Result<AnalogueCamTrack> {
+            // The device refuses the area of an output it does not have.
+            const Result<int> count = device.readAnalogueOutputCount();
+            if (!count) return count.error();
+            if (output > *count) {
+                return Error::usage(
+                    *count == 0 ? tr("this device has no analogue outputs, so it has no "
+                                     "analogue cams")
+                                : tr("this device has analogue outputs 1..%1 only").arg(*count));
+            }
             return device.readAnalogueCams(output);
         },
         [this](Result<AnalogueCamTrack> track) {

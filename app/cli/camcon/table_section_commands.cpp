@@ -12,6 +12,8 @@
 #include "comm/camcon/usecases/value_text.h"
 #include "model/camcon/csv_io.h"
 
+#include <algorithm>
+
 namespace cambench::cli {
 
 namespace {
@@ -27,8 +29,17 @@ int runAnalogueRead(CliSession& session, CommandArgs& args) {
     return readToOutput<QList<AnalogueCamTrack>>(
         session, args, QStringLiteral("analogue read"),
         [first, last](CamConDevice& device, JobContext& job) -> Result<QList<AnalogueCamTrack>> {
+            // Only the outputs the device says it has: it refuses the others' areas.
+            const Result<int> count = device.readAnalogueOutputCount();
+            if (!count) return count.error();
+            if (*count < last && first == last) {
+                return Error::usage(QStringLiteral("Analogue output %1 does not exist: this "
+                                                   "device has %2 analogue outputs.")
+                                        .arg(first)
+                                        .arg(*count));
+            }
             QList<AnalogueCamTrack> tracks;
-            for (int output = first; output <= last; ++output) {
+            for (int output = first; output <= std::min(last, *count); ++output) {
                 job.progress(output - first, last - first + 1,
                              QStringLiteral("reading analogue output %1").arg(output));
                 Result<AnalogueCamTrack> track = device.readAnalogueCams(output);

@@ -86,6 +86,7 @@ public:
 
     Result<DeadTimeModes> readDeadTimeModes(int outputs) override;
     Status writeDeadTimeMode(int output, const OutputDeadTime& deadTime) override;
+    Result<int> readAnalogueOutputCount() override;
     Result<AnalogueCamTrack> readAnalogueCams(int analogueOutput) override;
     Status writeAnalogueCams(const AnalogueCamTrack& track) override;
     Result<ProgrammingProgram> readProgrammingProgram() override;

@@ -11,6 +11,26 @@
 
 namespace cambench::comm::table {
 
+// Area 203 word 38 (manual 3.4): a device without analogue outputs answers
+// RK512 error 20 for areas 241..254, so their number is read first.
+Result<int> TableCamCon::readAnalogueOutputCount() {
+    const Result<qint32> count = m_link.readWord(kSystemArea, tableWord(u"system.analog_outputs"));
+    if (!count)
+        return inContext(
+            QCoreApplication::translate("cambench::comm", "reading the number of analogue outputs"),
+            count.error());
+    if (*count < 0 || *count > kAnalogueOutputs) {
+        return Error::invalidData(
+            QCoreApplication::translate(
+                "cambench::comm",
+                "The device says it has %1 analogue outputs (area 203 word 38); the "
+                "manual allows 0..%2.")
+                .arg(*count)
+                .arg(kAnalogueOutputs));
+    }
+    return int(*count);
+}
+
 Result<AnalogueCamTrack> TableCamCon::readAnalogueCams(int analogueOutput) {
     const QString what = QCoreApplication::translate(
                              "cambench::comm", "reading the analogue cams of analogue output %1")

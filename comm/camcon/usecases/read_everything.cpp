@@ -176,15 +176,29 @@ private:
         return success();
     }
 
+    // Only the analogue outputs the device says it has: one without any
+    // refuses their areas, which must not end the whole read.
     Status readAnalogueCams() {
         const bool reachable = m_connection.has(CamConCapability::AnalogueCams);
+        int count = 0;
+        if (reachable) {
+            const Result<int> read = m_connection.readAnalogueOutputCount();
+            if (!read) return read.error();
+            count = *read;
+            if (count == 0) {
+                m_result.skipped << QCoreApplication::translate(
+                    "cambench::usecases",
+                    "Analogue cams: this device has no analogue outputs, so it has no "
+                    "analogue cams.");
+            }
+        }
         for (int output = 1; output <= kAnalogueOutputs; ++output) {
             if (const Status ok = step(1, QCoreApplication::translate("cambench::usecases",
                                                                       "reading analogue output %1")
                                               .arg(output));
                 !ok)
                 return ok;
-            if (!reachable) continue;
+            if (output > count) continue;
             Result<AnalogueCamTrack> track = m_connection.readAnalogueCams(output);
             if (!track) return track.error();
             m_result.project.analogueCams << *track;

@@ -20,4 +20,9 @@ target_sources(cambench_usecases PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/line_backup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/short_coupling.h
   ${CMAKE_CURRENT_LIST_DIR}/short_coupling.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_check.h
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_check.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_check_parts.h
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_check_ascii.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_check_table.cpp
 )

@@ -386,6 +386,7 @@ private:
         const QString label = analogueCamsLabel(write.wanted.output);
         if (auto no = unreachable<AnalogueCamTrack>(CamConCapability::AnalogueCams, label))
             return *no;
+        if (auto absent = absentAnalogueOutput(write.wanted, label)) return *absent;
         ValueOps<AnalogueCamTrack> ops;
         ops.read = [this, &write] { return m_connection.readAnalogueCams(write.wanted.output); };
         ops.write = [this, &write](const AnalogueCamTrack&) {
@@ -396,6 +397,43 @@ private:
         };
         ops.text = analogueCamsText;
         return writeItem<AnalogueCamTrack>(label, write.wanted, write.believed, ops);
+    }
+
+    // An analogue output beyond the number the device says it has does not
+    // exist there (its area is refused): nothing is sent for it. A track
+    // without base points is what such an output holds; one with base
+    // points is not written and says why. The number is read once, at the
+    // first analogue item, after the settings (which may change it).
+    std::optional<ItemOutcome<AnalogueCamTrack>> absentAnalogueOutput(
+        const AnalogueCamTrack& wanted, const QString& label) {
+        if (m_stop) return std::nullopt;
+        if (!m_analogueOutputs) {
+            const Result<int> count = m_connection.readAnalogueOutputCount();
+            if (!count) return std::nullopt;  // the item's own read says what failed
+            m_analogueOutputs = *count;
+        }
+        if (wanted.output <= *m_analogueOutputs) return std::nullopt;
+        ItemOutcome<AnalogueCamTrack> outcome;
+        outcome.label = label;
+        m_progress.report(m_done++, m_total, label);
+        const QString absent =
+            *m_analogueOutputs == 0
+                ? QCoreApplication::translate("cambench::usecases",
+                                              "this device has no analogue outputs")
+                : QCoreApplication::translate("cambench::usecases",
+                                              "this device has analogue outputs 1..%1 only")
+                      .arg(*m_analogueOutputs);
+        if (wanted.points.isEmpty()) {
+            outcome.state = WriteState::Unchanged;
+            outcome.actual = wanted;
+            outcome.actualText = analogueCamsText(wanted);
+            outcome.note = absent;
+            return outcome;
+        }
+        outcome.error = Error::usage(
+            QCoreApplication::translate("cambench::usecases", "%1; its base points are not written")
+                .arg(absent));
+        return outcome;  // NotSent
     }
 
     ItemOutcome<ProgrammingProgram> writeProgrammingProgram(const ProgrammingProgramWrite& write) {
@@ -557,10 +595,11 @@ private:
     QList<User> m_users;        // the device's users as known now
     std::optional<DeadTimes> m_deadTimes;
     std::optional<DeadTimeModes> m_deadTimeModes;
-    bool m_lockQuestion = false;          // the protocol has the lock and items are written
-    std::optional<bool> m_lockedAtStart;  // the EEPROM lock before the first item
-    QString m_lockError;                  // why the lock could not be read
-    std::optional<Error> m_stop;          // set: the remaining items are not sent
+    std::optional<int> m_analogueOutputs;  // as the device says, read at the first analogue item
+    bool m_lockQuestion = false;           // the protocol has the lock and items are written
+    std::optional<bool> m_lockedAtStart;   // the EEPROM lock before the first item
+    QString m_lockError;                   // why the lock could not be read
+    std::optional<Error> m_stop;           // set: the remaining items are not sent
     qint64 m_done = 0;
     qint64 m_total = 0;
 };

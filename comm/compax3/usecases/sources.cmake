@@ -5,4 +5,6 @@ target_sources(cambench_usecases PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/compax3_parameters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/compax3_read_objects.h
   ${CMAKE_CURRENT_LIST_DIR}/compax3_read_objects.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_check.h
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_check.cpp
 )

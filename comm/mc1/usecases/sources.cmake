@@ -3,4 +3,6 @@
 target_sources(cambench_usecases PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/mc1_backup_restore.h
   ${CMAKE_CURRENT_LIST_DIR}/mc1_backup_restore.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mc1_check.h
+  ${CMAKE_CURRENT_LIST_DIR}/mc1_check.cpp
 )

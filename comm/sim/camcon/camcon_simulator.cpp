@@ -81,6 +81,10 @@ QList<QCommandLineOption> camConOptions() {
          QStringLiteral("Cam-BUS: a second initialisation phase this long after the start (the "
                         "first device breaks in)."),
          QStringLiteral("ms")},
+        {QStringLiteral("analogue-outputs"),
+         QStringLiteral("Analogue outputs 0..14 (default 14); 0: a CamCon without analogue "
+                        "outputs, which refuses the analogue cam areas 241..254."),
+         QStringLiteral("n")},
         {QStringLiteral("dead-devices"),
          QStringLiteral("These devices of the line never answer, e.g. 5 (the others do)."),
          QStringLiteral("list")},
@@ -177,6 +181,11 @@ Result<SimulatedLine> fromOptions(const QCommandLineParser& parser, const SimHos
             return optionError(QStringLiteral("--%1 needs --protocol cambus and milliseconds.")
                                    .arg(QLatin1String(name)));
         (QByteArray(name) == "silent-after" ? config.silentAfterMs : config.reinitAfterMs) = ms;
+    }
+    if (parser.isSet(QStringLiteral("analogue-outputs"))) {
+        config.analogueOutputs = parser.value(QStringLiteral("analogue-outputs")).toInt(&ok);
+        if (!ok || config.analogueOutputs < 0 || config.analogueOutputs > 14)
+            return optionError(QStringLiteral("--analogue-outputs needs a number 0..14."));
     }
     if (parser.isSet(QStringLiteral("dead-devices"))) {
         Result<QList<int>> dead = parseDeviceList(parser.value(QStringLiteral("dead-devices")));

@@ -47,7 +47,8 @@ void loadDemoState(SimDevice& device) {
     // Only the table interface reaches these.
     SimTableState& table = device.tableState();
     table.deadTimeModes.insert(1, {DeadTimeMode::SeparateOnOff, 0, 80, 150});
-    table.analogueCams.insert(0, {{0, 0}, {max / 2, 16000}, {max, 0}});
+    if (device.profile().analogChannels > 0)
+        table.analogueCams.insert(0, {{0, 0}, {max / 2, 16000}, {max, 0}});
     state.users = {demoUser("Supervisor", "4711", 0xEF, 256),
                    demoUser("Operator", "1234", 0x01, 8)};
     SimPlcNetwork andGate;  // O0 = I1 AND M2
@@ -101,6 +102,7 @@ SimProfile sizedProfile(const SimPortConfig& config, const SimProfile& profile) 
                      : config.tableVariant                             ? 4
                      : config.effectiveFraming() == Framing::Multiuser ? 2
                                                                        : 1;
+    sized.analogChannels = config.analogueOutputs;
     sized.camCapacity =
         std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
     return sized;

@@ -37,6 +37,10 @@ void SimDevice::addHandler(char kind, const QByteArray& name, SimHandler handler
     m_handlers.insert(handlerKey(kind, name), std::move(handler));
 }
 
+void SimDevice::forgetCommand(char kind, const QByteArray& name) {
+    m_handlers.remove(handlerKey(kind, name));
+}
+
 bool SimDevice::hasHandler(char kind, const QByteArray& name) const {
     return m_handlers.contains(handlerKey(kind, name));
 }

@@ -77,6 +77,9 @@ public:
 
     void addHandler(char kind, const QByteArray& name, SimHandler handler);
     bool hasHandler(char kind, const QByteArray& name) const;
+    // A firmware without this command: it answers :Z from now on (tests
+    // of `check`: a device that disagrees with our catalogue).
+    void forgetCommand(char kind, const QByteArray& name);
 
 private:
     QByteArray replyBody(const CommandSpec& spec, const SimResult& result) const;

@@ -11,7 +11,7 @@ const QString kKeys = QStringLiteral(
     "devices, display, pcanswer, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, "
     "lostdle, collision, "
     "linkfaults, "
-    "delay, seed, throttle, fill, users, dead");
+    "delay, seed, throttle, fill, users, analogue, dead");
 
 // The probabilities a key sets.
 QList<double*> probabilitiesOf(SimFaultSettings& faults, const QString& key) {
@@ -86,6 +86,10 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         (key == QLatin1String("delay")  ? config.faults.extraDelayMs
          : key == QLatin1String("fill") ? config.fill
                                         : config.users) = n;
+    } else if (key == QLatin1String("analogue")) {
+        config.analogueOutputs = value.toInt(&ok);
+        if (!ok || config.analogueOutputs < 0 || config.analogueOutputs > 14)
+            return badValue(port, key, value, QStringLiteral("analogue outputs 0..14"));
     } else if (key == QLatin1String("seed")) {
         config.faults.seed = value.toUInt(&ok);
         if (!ok) return badValue(port, key, value, QStringLiteral("a whole number"));

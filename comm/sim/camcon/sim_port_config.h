@@ -32,6 +32,9 @@ struct SimPortConfig {
     bool throttle = true;  // false: bytes arrive at once
     int fill = 0;          // > 0: benchmark cams per track instead of the demo cams
     int users = -1;        // >= 0: this many users instead of the demo's two
+    // Analogue outputs 0..14 (area 203 word 38); 0: a CamCon without any,
+    // whose areas 241..254 answer RK512 error 20.
+    int analogueOutputs = 14;
     SimFaultSettings faults;
     QList<int> deadDevices;  // devices of the line that never answer (cambench-sim --dead-devices)
 
@@ -52,8 +55,8 @@ bool applySimProtocol(SimPortConfig& config, const QString& protocol);
 // (standard|multiuser| 3964r-n96|3964r-e38), baud, corrupt (damaged replies), drop (lost replies),
 // ignore (lost requests), dropfirst (the first reply to a request starting so is lost, e.g.
 // !EE0000), nak, lostdle, collision, linkfaults (corrupt, nak, lostdle and collision at once),
-// delay, seed, throttle (0|1), fill, dead (0|1). The baud rate defaults to `serial.baud`. Fails
-// with Usage on an unknown key or a bad value.
+// delay, seed, throttle (0|1), fill, analogue (0..14 analogue outputs), dead (0|1). The baud rate
+// defaults to `serial.baud`. Fails with Usage on an unknown key or a bad value.
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);
 
 // Device numbers "0,5" -> {0, 5}; each 0..63, no duplicates.

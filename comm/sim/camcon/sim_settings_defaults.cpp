@@ -33,6 +33,8 @@ SimState defaultState(const SimProfile& profile, int deviceNumber) {
         {"AMAX", number(profile.outputs)},
         {"GTZKANZ", number(profile.outputs)},
         {"GSIO", number(profile.protocol)},
+        // Table interface area 203 word 38: the areas 241.. that exist.
+        {"ANOCK", number(profile.analogChannels)},
         {"GNR", number(deviceNumber)},
         {"GONSPS", number(1)},
         {"GESPSMAX", number(16)},

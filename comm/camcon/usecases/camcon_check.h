@@ -1,0 +1,15 @@
+#pragma once
+
+// The CamCon's part of `check` (issue 29): every reading query of the ASCII
+// catalogue, every readable word run of the table map, the Multiuser block
+// numbering and the Cam-BUS token timing, each tried on the device with
+// reading requests only (the gate below keeps anything else off the line).
+
+#include "comm/usecases/device_check.h"
+
+namespace cambench::usecases {
+
+// Registers the CamCon's FamilyCheck (app/registry, one line).
+void registerCamConCheck(CheckRegistry& registry);
+
+}  // namespace cambench::usecases
