@@ -1,5 +1,7 @@
 #include "request_engine.h"
 
+#include "between_requests.h"
+
 #include <QCoreApplication>
 
 #include "engine_logging.h"
@@ -79,6 +81,7 @@ int RequestEngine::attemptsFor(const Request& request) const {
 }
 
 Result<QByteArray> RequestEngine::send(const Request& request) {
+    BetweenRequests::run();
     ++m_stats.requests;
     m_lastAttempts = 0;
     m_lastHeardDevice = false;
