@@ -10,9 +10,9 @@ class QSpinBox;
 namespace cambench {
 
 // Motion: enable/disable, jog + and −, move set n with target, velocity and
-// acceleration; each asks first, saying that the axis will move. STOP is
-// always on the page and Escape presses it from anywhere in the window; it
-// drops what waits for the line first.
+// acceleration; each asks first, saying that the axis will move. Its STOP
+// button is one more way to the shell's STOP (MotionStop), whose Escape
+// works from every page; the page's result line shows its report.
 class Compax3MotionPage : public Compax3Page {
     Q_OBJECT
 public:
@@ -24,6 +24,7 @@ public:
 
     void runMotion(comm::Compax3Motion motion);
     void moveSet();
+    // The shell's STOP.
     void stop();
     QPushButton* stopButton() const { return m_stop; }
     QString axisText() const;

@@ -1,7 +1,9 @@
 #include "mc1_axes_page.h"
 
 #include "ui/device_session.h"
+#include "ui/motion_stop.h"
 #include "ui/sentence.h"
+#include "ui/stop_button.h"
 
 #include "comm/mc1/mc1_parameters.h"
 
@@ -11,7 +13,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QShortcut>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -55,21 +56,17 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     m_state->setFont(big);
     m_availability->setWordWrap(true);
 
-    // STOP: big, red, always on the page, never disabled while connected.
+    // STOP: big, always on the page; the shell's STOP (one implementation),
+    // whose key works from every page.
     m_stop->setObjectName(QStringLiteral("mc1Stop"));
     m_stop->setMinimumHeight(56);
-    // Red only while it can stop something: a disabled STOP must not look armed.
-    m_stop->setStyleSheet(QStringLiteral(
-        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 16pt; }"
-        "QPushButton:disabled { background: palette(mid); color: palette(dark); }"));
     m_stop->setToolTip(
-        tr("Stops every axis with the maximum ramp and drops what waits for the "
-           "line. Escape does the same."));
-    // While the page is shown, Escape stops from anywhere in the window.
-    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    escape->setContext(Qt::WindowShortcut);
-    connect(escape, &QShortcut::activated, this, &Mc1AxesPage::stopAll);
-    connect(m_stop, &QPushButton::clicked, this, &Mc1AxesPage::stopAll);
+        tr("Stops every axis and drops what waits for the line: the STOP above "
+           "every page. Escape does the same."));
+    routeToShellStop(m_stop, session->motionStop(), this, [this](const QString& text, bool ok) {
+        showResult(text, ok);
+        poll();
+    });
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_axis);
@@ -123,7 +120,6 @@ int Mc1AxesPage::axis() const {
 void Mc1AxesPage::factsChanged() {
     const bool can = facts().known && facts().has(comm::Mc1Capability::Axes);
     for (QWidget* widget : m_motion) widget->setEnabled(can);
-    m_stop->setEnabled(can);
     m_availability->setVisible(!can);
     m_availability->setText(facts().known
                                 ? tr("The %1 has no axis telegrams: moving axes needs an MC200 V2.")
@@ -193,34 +189,7 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
 }
 
 void Mc1AxesPage::stopAll() {
-    if (!facts().known) return;
-    // What waits for the line (a poll, a queued move) goes first.
-    session()->worker().cancelAll();
-    const int first = axis();
-    session()->run<comm::Mc1Device, QStringList>(
-        this, tr("STOP"),
-        [first](comm::Mc1Device& device, comm::JobContext&) -> Result<QStringList> {
-            QList<int> axes{first};
-            for (int a = comm::kMc1FirstAxis; a <= comm::kMc1LastAxis; ++a)
-                if (a != first) axes << a;
-            QStringList failed;
-            for (int a : axes) {
-                const Result<comm::Mc1AxisState> stopped =
-                    device.axisCommand(a, Mc1AxisCommand::QuickStop, 0);
-                if (!stopped)
-                    failed << QStringLiteral("%1: %2").arg(a).arg(stopped.error().message);
-            }
-            if (!failed.isEmpty()) return Error::communication(failed.join(QStringLiteral("; ")));
-            return QStringList();
-        },
-        [this](Result<QStringList> done) {
-            showResult(done ? tr("STOP sent to every axis; each acknowledged it.")
-                            : tr("STOP did not reach every axis: %1. Use the machine's "
-                                 "emergency stop.")
-                                  .arg(done.error().message),
-                       done.ok());
-            poll();
-        });
+    session()->motionStop()->stopAll();
 }
 
 }  // namespace cambench
