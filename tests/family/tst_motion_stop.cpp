@@ -97,6 +97,14 @@ QWidget* shownPage(MainWindow* window) {
     return nullptr;
 }
 
+// A shell on the fake device of `port`, every start job answered, the
+// window shown and active; nullptr when any of it failed.
+std::unique_ptr<Shell> startFake(const QString& port) {
+    std::unique_ptr<Shell> shell = startOnSimulator(port, QStringLiteral("fake-line"));
+    if (!shell || !settle(shell->session()) || !activate(shell->window())) return nullptr;
+    return shell;
+}
+
 struct Row {
     QString port;
     QString protocol;
@@ -208,15 +216,13 @@ private Q_SLOTS:
     // Escape is also a spin box's and a cell editor's; the STOP key works
     // there too, and the editor still drops its edit.
     void stopKeyFromSpinBoxAndCellEditor() {
-        std::unique_ptr<Shell> shell = startOnSimulator(QStringLiteral("sim:axes=1"), "fake-line");
+        std::unique_ptr<Shell> shell = startFake(QStringLiteral("sim:axes=1"));
         QVERIFY(shell);
         MainWindow* window = shell->window();
         MotionStop* stop = shell->session()->motionStop();
-        QVERIFY(settle(shell->session()));
         QVERIFY(stop->armed());
-        QWidget* page = window->findChild<QWidget*>(QStringLiteral("fakePage"));
-        window->showPage(static_cast<SectionPage*>(page));
-        QVERIFY(activate(window));
+        auto* page = window->findChild<SectionPage*>(QStringLiteral("fakePage"));
+        window->showPage(page);
         QSignalSpy reports(stop, &MotionStop::stopFinished);
 
         auto* number = page->findChild<QSpinBox*>(QStringLiteral("fakeNumber"));
@@ -239,12 +245,10 @@ private Q_SLOTS:
     // A long job (a backup) is paused for the STOP between two of its
     // requests: the STOP does not wait for its end, and it goes on after.
     void stopDuringALongJobLandsBetweenItsRequests() {
-        std::unique_ptr<Shell> shell = startOnSimulator(QStringLiteral("sim:axes=2"), "fake-line");
+        std::unique_ptr<Shell> shell = startFake(QStringLiteral("sim:axes=2"));
         QVERIFY(shell);
         DeviceSession* session = shell->session();
         MotionStop* stop = session->motionStop();
-        QVERIFY(settle(session));
-        QVERIFY(activate(shell->window()));
         QVERIFY(moveFake(session, 2));
         fake::clearRequestLog();
         QSemaphore gate;
@@ -300,12 +304,10 @@ private Q_SLOTS:
     // keeps everything, "STOP, then …" stops first; nothing moving, nothing
     // is asked.
     void quitOrDisconnectWhileMovingAsks() {
-        std::unique_ptr<Shell> shell = startOnSimulator(QStringLiteral("sim:axes=2"), "fake-line");
+        std::unique_ptr<Shell> shell = startFake(QStringLiteral("sim:axes=2"));
         QVERIFY(shell);
         MainWindow* window = shell->window();
         DeviceSession* session = shell->session();
-        QVERIFY(settle(session));
-        QVERIFY(activate(window));
         QVERIFY(moveFake(session, 2));
 
         QString asked;
@@ -357,9 +359,8 @@ private Q_SLOTS:
 
     // A device that does not answer what moves: "could not tell" is said.
     void couldNotTellIsSaid() {
-        std::unique_ptr<Shell> shell = startOnSimulator(QStringLiteral("sim:axes=1"), "fake-line");
+        std::unique_ptr<Shell> shell = startFake(QStringLiteral("sim:axes=1"));
         QVERIFY(shell);
-        QVERIFY(settle(shell->session()));
         QVERIFY(shell->session()->motionStop()->armed());
         // Cancelled while the question waits for the answer: the worker is
         // busy with a job that holds the line, so no answer comes in time.

@@ -80,6 +80,8 @@ private Q_SLOTS:
 private:
     // Submits a User job that holds the worker until `gate` is released.
     quint64 submitBlocker(CommWorker& worker, QSemaphore& gate, RunLog& log);
+    // The same, once the blocker runs; 0 when it did not start.
+    quint64 holdWorker(CommWorker& worker, QSemaphore& gate, RunLog& log);
 };
 
 quint64 TestCommWorker::submitBlocker(CommWorker& worker, QSemaphore& gate, RunLog& log) {
@@ -87,6 +89,11 @@ quint64 TestCommWorker::submitBlocker(CommWorker& worker, QSemaphore& gate, RunL
         log.add("blocker");
         gate.acquire();
     });
+}
+
+quint64 TestCommWorker::holdWorker(CommWorker& worker, QSemaphore& gate, RunLog& log) {
+    const quint64 blocker = submitBlocker(worker, gate, log);
+    return QTest::qWaitFor([&log] { return log.get().size() == 1; }, kHangBoundMs) ? blocker : 0;
 }
 
 void TestCommWorker::connectingReportsConnectingThenConnected() {
@@ -366,14 +373,13 @@ void TestCommWorker::urgentJobRunsBeforeQueuedJobs() {
     CommWorker worker;
     QSemaphore gate;
     RunLog log;
+    QVERIFY(holdWorker(worker, gate, log) != 0);
     QSignalSpy finished(&worker, &CommWorker::jobFinished);
-    submitBlocker(worker, gate, log);
-    QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 1, kHangBoundMs);
     worker.submit(JobPriority::Poll, "poll", [&log](JobContext&) { log.add("poll"); });
     worker.submit(JobPriority::User, "user", [&log](JobContext&) { log.add("user"); });
     worker.submit(JobPriority::Urgent, "stop", [&log](JobContext&) { log.add("stop"); });
     gate.release();
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 4, kHangBoundMs);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 4, kHangBoundMs);  // the blocker too
     QCOMPARE(log.get(), QStringList({"blocker", "stop", "user", "poll"}));
 }
 
@@ -412,8 +418,8 @@ void TestCommWorker::dropQueuedLeavesTheRunningJobAlone() {
     QSemaphore gate;
     RunLog log;
     QSignalSpy finished(&worker, &CommWorker::jobFinished);
-    const quint64 blocker = submitBlocker(worker, gate, log);
-    QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 1, kHangBoundMs);
+    const quint64 blocker = holdWorker(worker, gate, log);
+    QVERIFY(blocker != 0);
     const quint64 move =
         worker.submit(JobPriority::User, "move", [&log](JobContext&) { log.add("move"); });
     worker.submit(JobPriority::Urgent, "stop", [&log](JobContext& ctx) {
