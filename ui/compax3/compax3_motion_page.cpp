@@ -62,6 +62,9 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
         showResult(text, ok);
         poll();
     });
+    // Moves are offered only while the STOP can reach the device.
+    connect(session->motionStop(), &MotionStop::availabilityChanged, this,
+            &Compax3MotionPage::factsChanged);
 
     auto button = [this](const QString& text, const char* name) {
         auto* b = new QPushButton(text);
@@ -122,8 +125,13 @@ QString Compax3MotionPage::axisText() const {
 
 void Compax3MotionPage::factsChanged() {
     const bool known = facts().known;
-    for (QPushButton* action : m_actions) action->setEnabled(known);
-    if (!known) m_axis->setText(tr("No drive connected."));
+    // A motion is offered only while the STOP can reach the drive.
+    const bool stoppable = session()->motionStop()->armed();
+    for (QPushButton* action : m_actions) action->setEnabled(known && stoppable);
+    if (!known)
+        m_axis->setText(tr("No drive connected."));
+    else if (!stoppable)
+        showResult(tr("Motion is off while the STOP cannot reach the drive."), false);
 }
 
 bool Compax3MotionPage::poll() {

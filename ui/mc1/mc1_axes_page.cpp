@@ -67,6 +67,9 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
         showResult(text, ok);
         poll();
     });
+    // Moves are offered only while the STOP can reach the device.
+    connect(session->motionStop(), &MotionStop::availabilityChanged, this,
+            &Mc1AxesPage::factsChanged);
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_axis);
@@ -118,13 +121,17 @@ int Mc1AxesPage::axis() const {
 }
 
 void Mc1AxesPage::factsChanged() {
-    const bool can = facts().known && facts().has(comm::Mc1Capability::Axes);
+    const bool axes = facts().known && facts().has(comm::Mc1Capability::Axes);
+    // A move is offered only while the STOP can reach the controller.
+    const bool can = axes && session()->motionStop()->armed();
     for (QWidget* widget : m_motion) widget->setEnabled(can);
     m_availability->setVisible(!can);
-    m_availability->setText(facts().known
+    m_availability->setText(!facts().known ? tr("Not connected to an MC100/MC200.")
+                            : !axes
                                 ? tr("The %1 has no axis telegrams: moving axes needs an MC200 V2.")
                                       .arg(comm::mc1VariantName(facts().variant))
-                                : tr("Not connected to an MC100/MC200."));
+                                : tr("Moves are off while the STOP cannot reach the %1.")
+                                      .arg(comm::mc1VariantName(facts().variant)));
 }
 
 void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
