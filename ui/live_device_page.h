@@ -2,7 +2,10 @@
 
 #include "section_page.h"
 
+#include <functional>
+
 class QLabel;
+class QPushButton;
 
 namespace cambench {
 
@@ -34,6 +37,10 @@ protected:
     // ("pageResult").
     QLabel* resultLine();
     void showResult(const QString& text, bool ok);
+    // The page's own STOP `button` as one more way to the shell's STOP: the
+    // result line shows every STOP's report and the values are read again;
+    // `armedChanged` when the STOP can reach the device or no longer can.
+    void useShellStop(QPushButton* button, std::function<void()> armedChanged);
 
 private:
     DeviceSession* m_session;

@@ -13,11 +13,14 @@ void styleAsStop(QPushButton* button) {
 }
 
 void routeToShellStop(QPushButton* button, MotionStop* stop, QObject* context,
-                      std::function<void(const QString& text, bool ok)> showResult) {
+                      std::function<void(const QString& text, bool ok)> showResult,
+                      std::function<void()> armedChanged) {
     styleAsStop(button);
+    button->setMinimumHeight(56);
     const auto update = [button, stop] { button->setEnabled(stop->armed()); };
     update();
     QObject::connect(stop, &MotionStop::availabilityChanged, button, update);
+    QObject::connect(stop, &MotionStop::availabilityChanged, context, std::move(armedChanged));
     QObject::connect(button, &QPushButton::clicked, stop, &MotionStop::stopAll);
     QObject::connect(stop, &MotionStop::stopFinished, context,
                      [showResult](const comm::MotionStopReport& report) {

@@ -3,7 +3,6 @@
 #include "ui/device_session.h"
 #include "ui/motion_stop.h"
 #include "ui/sentence.h"
-#include "ui/stop_button.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -54,17 +53,11 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     // STOP: big, always on the page; the shell's STOP (one implementation),
     // whose key works from every page.
     m_stop->setObjectName(QStringLiteral("compax3Stop"));
-    m_stop->setMinimumHeight(56);
     m_stop->setToolTip(
         tr("Stops the drive and drops what waits for the line: the STOP above "
            "every page. Escape does the same."));
-    routeToShellStop(m_stop, session->motionStop(), this, [this](const QString& text, bool ok) {
-        showResult(text, ok);
-        poll();
-    });
     // Moves are offered only while the STOP can reach the device.
-    connect(session->motionStop(), &MotionStop::availabilityChanged, this,
-            &Compax3MotionPage::factsChanged);
+    useShellStop(m_stop, [this] { factsChanged(); });
 
     auto button = [this](const QString& text, const char* name) {
         auto* b = new QPushButton(text);

@@ -3,7 +3,6 @@
 #include "ui/device_session.h"
 #include "ui/motion_stop.h"
 #include "ui/sentence.h"
-#include "ui/stop_button.h"
 
 #include "comm/mc1/mc1_parameters.h"
 
@@ -59,17 +58,11 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     // STOP: big, always on the page; the shell's STOP (one implementation),
     // whose key works from every page.
     m_stop->setObjectName(QStringLiteral("mc1Stop"));
-    m_stop->setMinimumHeight(56);
     m_stop->setToolTip(
         tr("Stops every axis and drops what waits for the line: the STOP above "
            "every page. Escape does the same."));
-    routeToShellStop(m_stop, session->motionStop(), this, [this](const QString& text, bool ok) {
-        showResult(text, ok);
-        poll();
-    });
     // Moves are offered only while the STOP can reach the device.
-    connect(session->motionStop(), &MotionStop::availabilityChanged, this,
-            &Mc1AxesPage::factsChanged);
+    useShellStop(m_stop, [this] { factsChanged(); });
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_axis);
