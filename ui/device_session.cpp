@@ -1,5 +1,6 @@
 #include "device_session.h"
 
+#include "motion_stop.h"
 #include "shell_log.h"
 
 #include "comm/device/protocol_registry.h"
@@ -12,6 +13,7 @@ DeviceSession::DeviceSession(QObject* parent)
                      ? comm::ProtocolSettingsPtr(
                            comm::ProtocolRegistry::instance().all().value(0)->makeSettings())
                      : nullptr) {
+    m_motionStop = new MotionStop(this);
     m_retry.setInterval(2000);
     connect(&m_retry, &QTimer::timeout, this, [this] {
         qCInfo(shellLog) << "retrying lost connection to" << m_connection.port;
@@ -25,8 +27,20 @@ DeviceSession::~DeviceSession() {
     m_retry.stop();
 }
 
+void DeviceSession::setLeaveCheck(QObject* owner, LeaveCheck check) {
+    m_leaveOwner = owner;
+    m_leaveCheck = std::move(check);
+}
+
+bool DeviceSession::mayLeaveDevice(const QString& action) {
+    // Only a device on the line can say what moves, and be stopped.
+    if (!m_leaveOwner || !m_leaveCheck || !m_motionStop->armed()) return true;
+    return m_leaveCheck(action);
+}
+
 void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
                               const comm::ProtocolSettingsPtr& protocol) {
+    if (!mayLeaveDevice(tr("Connect to %1").arg(connection.port))) return;
     m_connection = connection;
     m_protocol = protocol;
     m_freshness.reset();
@@ -44,6 +58,7 @@ void DeviceSession::reconnect() {
 }
 
 void DeviceSession::disconnectFromDevice() {
+    if (!mayLeaveDevice(tr("Disconnect"))) return;
     m_wantConnected = false;
     m_wasLost = false;
     m_retry.stop();

@@ -5,11 +5,14 @@
 #include "live_freshness.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 
 #include <functional>
 
 namespace cambench {
+
+class MotionStop;
 
 // The GUI's one connection: owns the CommWorker, remembers how to reach the
 // device, and re-establishes a lost connection by itself (periodic connectTo
@@ -22,6 +25,17 @@ public:
     ~DeviceSession() override;
 
     comm::CommWorker& worker() { return m_worker; }
+    // The one STOP of everything the device on the line can move.
+    MotionStop* motionStop() const { return m_motionStop; }
+
+    // Asked before a connect or disconnect takes the line from a device
+    // that can move (`action` says what would happen: "Disconnect"); false
+    // keeps the line as it is. The window sets it (the question names what
+    // moves and offers STOP); without one the line is given up unasked.
+    using LeaveCheck = std::function<bool(const QString& action)>;
+    void setLeaveCheck(QObject* owner, LeaveCheck check);
+    // The same question for a caller that gives up the line itself (quit).
+    bool mayLeaveDevice(const QString& action);
 
     void connectTo(const comm::ConnectionSettings& connection,
                    const comm::ProtocolSettingsPtr& protocol);
@@ -88,6 +102,9 @@ private:
     void onStateChanged(comm::ConnectionState state, const QString& message);
 
     comm::CommWorker m_worker;
+    MotionStop* m_motionStop = nullptr;
+    QPointer<QObject> m_leaveOwner;
+    LeaveCheck m_leaveCheck;
     comm::ConnectionSettings m_connection;
     comm::ProtocolSettingsPtr m_protocol;
     comm::ConnectionState m_state = comm::ConnectionState::Disconnected;

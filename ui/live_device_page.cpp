@@ -2,6 +2,7 @@
 
 #include "device_session.h"
 #include "live_freshness.h"
+#include "stop_button.h"
 
 #include <QDateTime>
 #include <QLabel>
@@ -124,6 +125,16 @@ QLabel* LiveDevicePage::resultLine() {
         m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
     }
     return m_result;
+}
+
+void LiveDevicePage::useShellStop(QPushButton* button, std::function<void()> armedChanged) {
+    routeToShellStop(
+        button, m_session->motionStop(), this,
+        [this](const QString& text, bool ok) {
+            showResult(text, ok);
+            poll();
+        },
+        std::move(armedChanged));
 }
 
 void LiveDevicePage::showResult(const QString& text, bool ok) {

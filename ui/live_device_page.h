@@ -6,6 +6,7 @@
 #include <functional>
 
 class QLabel;
+class QPushButton;
 
 namespace cambench {
 
@@ -88,6 +89,10 @@ protected:
     // ("pageResult").
     QLabel* resultLine();
     void showResult(const QString& text, bool ok);
+    // The page's own STOP `button` as one more way to the shell's STOP: the
+    // result line shows every STOP's report and the values are read again;
+    // `armedChanged` when the STOP can reach the device or no longer can.
+    void useShellStop(QPushButton* button, std::function<void()> armedChanged);
 
 private:
     void showFreshness();

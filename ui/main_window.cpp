@@ -8,8 +8,12 @@
 #include "gui_settings.h"
 #include "language.h"
 #include "last_write_report.h"
+#include "motion_leave_question.h"
+#include "motion_stop.h"
 #include "report_dialog.h"
 #include "sentence.h"
+#include "stop_bar.h"
+#include "stop_shortcut.h"
 #include "theme.h"
 
 #include "comm/device/family_registry.h"
@@ -39,6 +43,8 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
       m_stack(new QStackedWidget),
       m_strip(new ConnectionStrip(session)),
       m_indicator(new ConnectionIndicator(session)),
+      m_stopBar(new StopBar(session->motionStop(),
+                            StopShortcut::key().toString(QKeySequence::NativeText))),
       m_jobLabel(new QLabel),
       m_jobProgress(new QProgressBar),
       m_jobCancel(new QToolButton),
@@ -56,6 +62,10 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
     auto* layout = new QVBoxLayout(central);
     // A lost or silent line is reported where the user looks, with the way back.
     layout->addWidget(m_strip);
+    // STOP above every page while the device can move something; its key
+    // works from every widget of the window.
+    layout->addWidget(m_stopBar);
+    new StopShortcut(session->motionStop(), this);
     layout->addLayout(body, 1);
     setCentralWidget(central);
 
@@ -80,6 +90,10 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
         showMessage(
             tr("Connection re-established. Your edits are unchanged; Compare with "
                "device reads what the device holds now."));
+    });
+    // Quitting is asked in closeEvent; a connect or disconnect asks here.
+    m_session->setLeaveCheck(this, [this](const QString& action) {
+        return askBeforeLeavingMotion(this, *m_session->motionStop(), action);
     });
     m_nav->setCurrentRow(Connection);
     updateConnection();
@@ -228,6 +242,9 @@ void MainWindow::createStatusBar() {
             &MainWindow::updateLastWriteButton);
     updateLastWriteButton();
     comm::CommWorker& worker = m_session->worker();
+    // The STOP reports in its bar; between two requests of a backup it
+    // must not take the backup's place in the status bar.
+    for (const QString& quiet : MotionStop::jobTitles()) addQuietJobTitle(quiet);
     m_jobCancel->setText(tr("Cancel"));
     m_jobCancel->setToolTip(tr("Cancel what the device is doing for you now."));
     m_jobCancel->hide();
@@ -367,6 +384,7 @@ void MainWindow::checkDevice() {
 }
 
 bool MainWindow::confirmClose() {
+    if (!m_session->mayLeaveDevice(tr("Quit"))) return false;
     for (FamilyWindow* family : m_families)
         if (!family->confirmClose()) return false;
     return true;

@@ -21,6 +21,7 @@ class DeviceSession;
 class FamilyGui;
 class FamilyWindow;
 class SectionPage;
+class StopBar;
 
 // The CamBench window: the connection page, then the pages of every
 // registered device family (those of the family the session's protocol
@@ -47,6 +48,8 @@ public:
     ConnectionPage* connectionPage() const { return m_connection; }
     ConnectionStrip* connectionStrip() const { return m_strip; }
     ConnectionIndicator* connectionIndicator() const { return m_indicator; }
+    // The STOP above every page (hidden while the device cannot move).
+    StopBar* stopBar() const { return m_stopBar; }
     // The part of `familyId` ("camcon"), nullptr when not registered.
     FamilyWindow* familyWindow(const QString& familyId) const;
     DeviceSession* session() const { return m_session; }
@@ -65,7 +68,8 @@ public:
     QString lastMessage() const { return m_lastMessage; }
     // A job title the status bar does not show (polls would make it flicker).
     void addQuietJobTitle(const QString& title) { m_quietJobs.insert(title); }
-    // Asks each family before closing (unwritten edits); true = may close.
+    // Asks before closing: what moves (STOP offered), then each family
+    // (unwritten edits); true = may close.
     bool confirmClose();
 
 Q_SIGNALS:
@@ -99,6 +103,7 @@ private:
     QStackedWidget* m_stack;
     ConnectionStrip* m_strip;
     ConnectionIndicator* m_indicator;
+    StopBar* m_stopBar;
     QLabel* m_jobLabel;
     QProgressBar* m_jobProgress;
     QToolButton* m_jobCancel;

@@ -19,6 +19,16 @@ target_sources(cambench_ui PRIVATE
   connection_status.cpp
   device_session.h
   device_session.cpp
+  motion_stop.h
+  motion_stop.cpp
+  motion_leave_question.h
+  motion_leave_question.cpp
+  stop_bar.h
+  stop_bar.cpp
+  stop_shortcut.h
+  stop_shortcut.cpp
+  stop_button.h
+  stop_button.cpp
   camcon/workspace.h
   camcon/workspace.cpp
   camcon/table_section_copies.h

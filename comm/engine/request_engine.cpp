@@ -1,10 +1,13 @@
 #include "request_engine.h"
 
+#include "between_requests.h"
+
 #include <QCoreApplication>
 
 #include "engine_logging.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace cambench::comm {
 
@@ -79,6 +82,13 @@ int RequestEngine::attemptsFor(const Request& request) const {
 }
 
 Result<QByteArray> RequestEngine::send(const Request& request) {
+    {
+        // An urgent job (a STOP) runs here between two requests of the
+        // running job; a read-only check's gate is not for it.
+        RequestGate held = std::exchange(m_gate, {});
+        BetweenRequests::run();
+        m_gate = std::move(held);
+    }
     if (m_gate) {
         if (const QString refused = m_gate(request); !refused.isEmpty()) {
             ++m_stats.refusedByGate;

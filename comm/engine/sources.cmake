@@ -10,4 +10,6 @@ target_sources(cambench_comm PRIVATE
   engine/cr_line_backend.cpp
   engine/request_engine.h
   engine/request_engine.cpp
+  engine/between_requests.h
+  engine/between_requests.cpp
 )

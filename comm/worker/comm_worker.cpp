@@ -46,6 +46,8 @@ CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Im
             Qt::QueuedConnection);
     connect(d->core, &WorkerCore::traffic, this, &CommWorker::traffic, Qt::QueuedConnection);
     d->thread->start();
+    WorkerCore* core = d->core;
+    d->post([core] { core->installOnThread(); });
 }
 
 CommWorker::~CommWorker() {
@@ -99,13 +101,20 @@ quint64 CommWorker::submit(JobPriority priority, const QString& title, JobFn fn,
 }
 
 void CommWorker::cancel(quint64 id) {
-    if (d->queue->cancel(id) == JobQueue::Cancelled::Removed)
-        QMetaObject::invokeMethod(
-            this, [this, id] { Q_EMIT jobFinished(id); }, Qt::QueuedConnection);
+    if (d->queue->cancel(id) == JobQueue::Cancelled::Removed) finishDropped({id});
 }
 
 void CommWorker::cancelAll() {
-    for (const quint64 id : d->queue->cancelAll())
+    finishDropped(d->queue->cancelAll());
+}
+
+void CommWorker::dropQueued() {
+    finishDropped(d->queue->dropQueued());
+}
+
+void CommWorker::finishDropped(const QList<quint64>& ids) {
+    // A job that never runs still finishes, like every job.
+    for (const quint64 id : ids)
         QMetaObject::invokeMethod(
             this, [this, id] { Q_EMIT jobFinished(id); }, Qt::QueuedConnection);
 }

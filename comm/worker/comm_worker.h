@@ -5,6 +5,7 @@
 #include "comm/transport/transport.h"
 #include "job.h"
 
+#include <QList>
 #include <QObject>
 #include <QPointer>
 #include <QThread>
@@ -25,8 +26,12 @@ enum class ConnectionState { Disconnected, Connecting, Connected, Lost };
 // object (see run()). Nothing on the caller's thread waits on the line.
 //
 // A job is a function that uses the link synchronously on the worker
-// thread. Jobs run one at a time; User jobs before Poll jobs; a Poll job
-// with the same key as a queued one replaces it (no pile-up of polls).
+// thread. Jobs run one at a time; Urgent jobs (a STOP) first, then User
+// jobs, then Poll jobs; a Poll job with the same key as a queued one
+// replaces it (no pile-up of polls). An Urgent job submitted while another
+// job runs does not wait for its end: it runs before that job's next
+// request (comm/engine/between_requests.h), so a backup is paused for a
+// STOP, not broken.
 class CommWorker : public QObject {
     Q_OBJECT
 public:
@@ -48,6 +53,9 @@ public:
                    const QString& pollKey = {});
     void cancel(quint64 id);  // running or queued
     void cancelAll();
+    // Drops every queued User and Poll job (a move that waits for the line
+    // must not run after a STOP); the running job and Urgent ones go on.
+    void dropQueued();
 
     // Convenience: runs `work` on the worker thread and `done` with its
     // result on `context`'s thread (queued), unless `context` died.
@@ -66,6 +74,8 @@ Q_SIGNALS:
     void traffic(const cambench::comm::TrafficEntry& entry);
 
 private:
+    void finishDropped(const QList<quint64>& ids);
+
     struct Impl;
     std::unique_ptr<Impl> d;
     std::atomic<ConnectionState> m_state{ConnectionState::Disconnected};

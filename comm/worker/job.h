@@ -51,7 +51,8 @@ private:
     std::function<void(qint64, qint64, const QString&)> m_progress;
 };
 
-// User actions are served before polling (monitor) jobs.
-enum class JobPriority { User = 0, Poll = 1 };
+// Urgent jobs (a STOP) are served first, also between two requests of a
+// running job; user actions are served before polling (monitor) jobs.
+enum class JobPriority { Urgent = 0, User = 1, Poll = 2 };
 
 }  // namespace cambench::comm

@@ -47,6 +47,15 @@ std::optional<QueuedJob> JobQueue::takeNext(quint64 lineChangesDone) {
     return std::nullopt;
 }
 
+std::optional<QueuedJob> JobQueue::takeUrgent(quint64 lineChangesDone) {
+    std::lock_guard lock(m_mutex);
+    auto& urgent = m_queues[int(JobPriority::Urgent)];
+    if (urgent.empty() || urgent.front().lineEpoch > lineChangesDone) return std::nullopt;
+    QueuedJob job = std::move(urgent.front());
+    urgent.pop_front();
+    return job;
+}
+
 void JobQueue::finishRunning() {
     std::lock_guard lock(m_mutex);
     m_runningId = 0;
@@ -81,9 +90,22 @@ QList<quint64> JobQueue::cancelAll() {
     return removed;
 }
 
+QList<quint64> JobQueue::dropQueued() {
+    std::lock_guard lock(m_mutex);
+    QList<quint64> removed;
+    for (const JobPriority priority : {JobPriority::User, JobPriority::Poll}) {
+        auto& queue = m_queues[int(priority)];
+        for (const QueuedJob& job : queue) removed.append(job.id);
+        queue.clear();
+    }
+    return removed;
+}
+
 qsizetype JobQueue::size() const {
     std::lock_guard lock(m_mutex);
-    return qsizetype(m_queues[0].size() + m_queues[1].size());
+    qsizetype queued = 0;
+    for (const auto& queue : m_queues) queued += qsizetype(queue.size());
+    return queued;
 }
 
 }  // namespace cambench::comm

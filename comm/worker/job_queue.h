@@ -30,8 +30,8 @@ struct QueuedJob {
 };
 
 // The worker's pending jobs, shared by the front (any thread) and the worker
-// thread. User jobs come before Poll jobs, first in first out within a
-// priority; a Poll job takes the place of a queued Poll job with the same
+// thread. Urgent jobs come first, then User jobs, then Poll jobs, first in
+// first out within a priority; a Poll job takes the place of a queued Poll job with the same
 // key. Knows which job runs, so that cancel() can reach it.
 class JobQueue {
 public:
@@ -52,18 +52,25 @@ public:
     std::optional<QueuedJob> takeNext(
         quint64 lineChangesDone = std::numeric_limits<quint64>::max());
     void finishRunning();
+    // The next Urgent job that may run now, taken while another job runs
+    // (between two of its requests). It does not become the running job: an
+    // urgent job, once it runs, runs to its end.
+    std::optional<QueuedJob> takeUrgent(quint64 lineChangesDone);
 
     enum class Cancelled { Removed, Signalled, Unknown };
     Cancelled cancel(quint64 id);
     // Removes every queued job (their ids are returned) and signals the
     // running one.
     QList<quint64> cancelAll();
+    // Removes every queued User and Poll job (their ids are returned); the
+    // running one and urgent ones go on.
+    QList<quint64> dropQueued();
 
     qsizetype size() const;
 
 private:
     mutable std::mutex m_mutex;
-    std::deque<QueuedJob> m_queues[2];  // by JobPriority
+    std::deque<QueuedJob> m_queues[3];  // by JobPriority
     quint64 m_nextId = 1;
     quint64 m_lineChanges = 0;
     quint64 m_runningId = 0;

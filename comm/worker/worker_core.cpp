@@ -3,9 +3,12 @@
 #include <QCoreApplication>
 #include <QTimer>
 
+#include <utility>
+
 #include "worker_logging.h"
 
 #include "comm/device/protocol_registry.h"
+#include "comm/engine/between_requests.h"
 #include "comm/transport/transport_registry.h"
 
 namespace cambench::comm {
@@ -16,6 +19,11 @@ constexpr int kServeSliceMs = 20;
 }  // namespace
 
 WorkerCore::WorkerCore(std::shared_ptr<JobQueue> queue) : m_queue(std::move(queue)) {}
+
+void WorkerCore::installOnThread() {
+    // Every request of a job runs on this thread: urgent jobs run between them.
+    BetweenRequests::install([this] { runUrgentJobs(); });
+}
 
 WorkerCore::~WorkerCore() = default;
 
@@ -116,21 +124,40 @@ void WorkerCore::checkLine() {
 void WorkerCore::runNextJob() {
     std::optional<QueuedJob> job = m_queue->takeNext(m_lineChangesDone);
     if (!job) return;
-    const quint64 id = job->id;
-    qCDebug(commWorkerLog) << "job" << id << "started:" << job->title;
-    Q_EMIT jobStarted(id, job->title);
-    if (m_device) m_device->engine().setCancelFlag(job->cancel.get());
-    JobContext context(m_device.get(), m_line.reason(), *job->cancel,
+    runJob(*job);
+    m_queue->finishRunning();
+    checkLine();
+    scheduleLineService();
+}
+
+void WorkerCore::runUrgentJobs() {
+    if (m_inUrgentJob) return;
+    while (std::optional<QueuedJob> job = m_queue->takeUrgent(m_lineChangesDone)) {
+        qCDebug(commWorkerLog) << "urgent job between two requests of the running job";
+        m_inUrgentJob = true;
+        runJob(*job);
+        m_inUrgentJob = false;
+    }
+}
+
+void WorkerCore::runJob(QueuedJob& job) {
+    const quint64 id = job.id;
+    qCDebug(commWorkerLog) << "job" << id << "started:" << job.title;
+    Q_EMIT jobStarted(id, job.title);
+    // An urgent job inside another has its own cancel flag: cancelling the
+    // interrupted backup must not cancel the STOP; the backup's comes back
+    // after it.
+    const std::atomic_bool* interrupted = std::exchange(m_jobCancel, job.cancel.get());
+    if (m_device) m_device->engine().setCancelFlag(m_jobCancel);
+    JobContext context(m_device.get(), m_line.reason(), *job.cancel,
                        [this, id](qint64 done, qint64 total, const QString& text) {
                            Q_EMIT jobProgress(id, done, total, text);
                        });
-    job->fn(context);
-    if (m_device) m_device->engine().setCancelFlag(nullptr);
-    m_queue->finishRunning();
+    job.fn(context);
+    m_jobCancel = interrupted;
+    if (m_device) m_device->engine().setCancelFlag(m_jobCancel);
     qCDebug(commWorkerLog) << "job" << id << "finished";
     Q_EMIT jobFinished(id);
-    checkLine();
-    scheduleLineService();
 }
 
 }  // namespace cambench::comm

@@ -22,6 +22,9 @@ public:
     void connectTo(const ConnectionSettings& connection, const ProtocolSettingsPtr& protocol);
     void disconnectFromDevice();
     void setLinkDevice(int device);
+    // Called on the worker thread once it runs: urgent jobs then run
+    // between two requests of a running job (BetweenRequests).
+    void installOnThread();
     // Runs the next queued job, if any.
     void runNextJob();
 
@@ -39,6 +42,10 @@ private:
     // while no job runs.
     void scheduleLineService();
     void serveLine();
+    // Runs `job` with the device, its own cancel flag on the engine.
+    void runJob(QueuedJob& job);
+    // Between two requests of the running job: the urgent jobs queued.
+    void runUrgentJobs();
 
     std::shared_ptr<JobQueue> m_queue;
     GuardedTransport m_line;
@@ -46,6 +53,8 @@ private:
     quint64 m_lineChangesDone = 0;  // connect, disconnect and device changes carried out
     ConnectionState m_state = ConnectionState::Disconnected;
     bool m_serviceScheduled = false;
+    const std::atomic_bool* m_jobCancel = nullptr;  // the running job's
+    bool m_inUrgentJob = false;                     // its requests run no other urgent job
 };
 
 }  // namespace cambench::comm

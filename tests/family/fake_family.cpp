@@ -16,13 +16,29 @@
 #include <QLabel>
 #include <QMenu>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QSet>
+#include <QSpinBox>
+#include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <mutex>
 
 namespace cambench::fake {
 
 namespace {
 
 QAtomicInt g_requests;
+std::mutex g_logMutex;
+QStringList g_log;
+
+// A number the simulator's port names ("axes=2"), else `fallback`.
+int portNumber(const QString& port, const QString& key, int fallback) {
+    const QRegularExpressionMatch match =
+        QRegularExpression(key + QStringLiteral("=(\\d+)")).match(port);
+    return match.hasMatch() ? match.captured(1).toInt() : fallback;
+}
 
 // One text line per message, ended by '\n'.
 class LineBackend : public comm::FramingBackend {
@@ -70,9 +86,11 @@ public:
     void fromMap(const QVariantMap&) override {}
 };
 
-// The simulated fake device: answers "ID?" and "PING n".
+// The simulated fake device: answers "ID?" (with its number of axes),
+// "PING n", "MOVE n", "STOP n" (not for its deaf axis) and "STATE?".
 class FakeEndpoint : public comm::SimEndpoint {
 public:
+    FakeEndpoint(int axes, int deafAxis) : m_axes(axes), m_deafAxis(deafAxis) {}
     QList<comm::SimOutput> receive(QByteArrayView bytes, qint64) override {
         QList<comm::SimOutput> replies;
         m_input += bytes.toByteArray();
@@ -80,24 +98,50 @@ public:
             const QByteArray request = m_input.left(end);
             m_input.remove(0, end + 1);
             g_requests.fetchAndAddRelaxed(1);
-            if (request == "ID?")
-                replies << comm::SimOutput{"FAKE-1 simulated\n", 1};
-            else if (request.startsWith("PING "))
-                replies << comm::SimOutput{"PONG " + request.mid(5) + '\n', 1};
-            else
-                replies << comm::SimOutput{"ERR\n", 1};
+            {
+                std::lock_guard lock(g_logMutex);
+                g_log << QString::fromLatin1(request);
+            }
+            replies << comm::SimOutput{answer(request) + '\n', 1};
         }
         return replies;
     }
     QString protocolName() const override { return QStringLiteral("fake line"); }
 
 private:
+    QByteArray answer(const QByteArray& request) {
+        const int axis = request.mid(request.indexOf(' ') + 1).toInt();
+        const bool known = axis >= 1 && axis <= m_axes;
+        if (request == "ID?") return "FAKE-1 simulated axes=" + QByteArray::number(m_axes);
+        if (request.startsWith("PING ")) return "PONG " + request.mid(5);
+        if (request.startsWith("MOVE ") && known) {
+            m_moving.insert(axis);
+            return "MOVING " + QByteArray::number(axis);
+        }
+        if (request.startsWith("STOP ") && known && axis != m_deafAxis) {
+            m_moving.remove(axis);
+            return "STOPPED " + QByteArray::number(axis);
+        }
+        if (request == "STATE?") {
+            QList<int> moving = m_moving.values();
+            std::sort(moving.begin(), moving.end());
+            QByteArray state = "STATE";
+            for (int a : moving) state += ' ' + QByteArray::number(a);
+            return state;
+        }
+        return "ERR";
+    }
+
     QByteArray m_input;
+    int m_axes;
+    int m_deafAxis;
+    QSet<int> m_moving;
 };
 
-comm::SimulatedLine fakeLine(const comm::SerialSettings& serial) {
-    return {std::make_unique<FakeEndpoint>(), comm::SimPacer(serial.baud, false),
-            QStringLiteral("fake simulator")};
+comm::SimulatedLine fakeLine(const QString& port, const comm::SerialSettings& serial) {
+    return {std::make_unique<FakeEndpoint>(portNumber(port, QStringLiteral("axes"), 1),
+                                           portNumber(port, QStringLiteral("deaf"), 0)),
+            comm::SimPacer(serial.baud, false), QStringLiteral("fake simulator")};
 }
 
 // The family's one page: a button that pings the device.
@@ -112,6 +156,14 @@ public:
         m_answer->setObjectName(QStringLiteral("fakeAnswer"));
         layout->addWidget(ping);
         layout->addWidget(m_answer);
+        // Widgets that take Escape for themselves: the STOP key must work
+        // from them too.
+        auto* number = new QSpinBox;
+        number->setObjectName(QStringLiteral("fakeNumber"));
+        auto* table = new QTableWidget(2, 2);
+        table->setObjectName(QStringLiteral("fakeTable"));
+        layout->addWidget(number);
+        layout->addWidget(table);
         connect(ping, &QPushButton::clicked, this, [this] {
             m_session->worker().run<Result<QString>>(
                 this, comm::JobPriority::User, QStringLiteral("ping"),
@@ -180,8 +232,11 @@ int runPing(cli::CliSession& session, cli::CommandArgs& args) {
 struct FakeDevice::Impl {
     Impl(comm::Transport& transport, const comm::LineTiming& line)
         : engine(transport, backend, comm::EngineSettings{line, 1, 0}) {}
+    Result<QByteArray> ask(const QByteArray& message,
+                           comm::RetryPolicy retry = comm::RetryPolicy::Idempotent);
     LineBackend backend;
     comm::RequestEngine engine;
+    int axes = 0;  // from the identity; 0 until identified
 };
 
 FakeDevice::FakeDevice(comm::Transport& transport, const comm::LineTiming& line)
@@ -193,30 +248,74 @@ comm::RequestEngine& FakeDevice::engine() {
     return d->engine;
 }
 
-Result<QString> FakeDevice::identify() {
+Result<QByteArray> FakeDevice::Impl::ask(const QByteArray& message, comm::RetryPolicy retry) {
     comm::Request request;
-    request.label = QStringLiteral("ID?");
-    request.message = "ID?";
-    request.longestReplyBytes = 32;
-    const Result<QByteArray> reply = d->engine.send(request);
+    request.label = QString::fromLatin1(message.left(message.indexOf(' ')));
+    request.message = message;
+    request.longestReplyBytes = 40;
+    request.retry = retry;
+    return engine.send(request);
+}
+
+Result<QString> FakeDevice::identify() {
+    const Result<QByteArray> reply = d->ask("ID?");
     if (!reply) return reply.error();
     if (!reply->startsWith("FAKE"))
         return Error::communication(QStringLiteral("not a fake device"));
+    d->axes = portNumber(QString::fromLatin1(*reply), QStringLiteral("axes"), 1);
     return QString::fromLatin1(*reply);
 }
 
 Result<QString> FakeDevice::ping(int n) {
-    comm::Request request;
-    request.label = QStringLiteral("PING");
-    request.message = "PING " + QByteArray::number(n);
-    request.longestReplyBytes = 16;
-    const Result<QByteArray> reply = d->engine.send(request);
+    const Result<QByteArray> reply = d->ask("PING " + QByteArray::number(n));
     if (!reply) return reply.error();
     return QString::fromLatin1(*reply);
 }
 
+Result<QString> FakeDevice::move(int axis) {
+    const Result<QByteArray> reply =
+        d->ask("MOVE " + QByteArray::number(axis), comm::RetryPolicy::Never);
+    if (!reply) return reply.error();
+    if (*reply == "ERR") return Error::communication(QStringLiteral("move refused"));
+    return QString::fromLatin1(*reply);
+}
+
+comm::MotionStopReport FakeDevice::stopAllMotion() {
+    if (d->axes == 0) identify();  // the shell asks after identify(); a job may not have
+    comm::MotionStopReport report;
+    for (int axis = 1; axis <= std::max(d->axes, 1); ++axis) {
+        const Result<QByteArray> reply = d->ask("STOP " + QByteArray::number(axis));
+        const bool acknowledged = reply && reply->startsWith("STOPPED");
+        report.lines << comm::MotionStopLine{
+            QStringLiteral("Axis %1").arg(axis), acknowledged,
+            reply ? (acknowledged ? QString() : QStringLiteral("refused")) : reply.error().message};
+    }
+    return report;
+}
+
+Result<QStringList> FakeDevice::activeMotion() {
+    const Result<QByteArray> reply = d->ask("STATE?");
+    if (!reply) return reply.error();
+    if (!reply->startsWith("STATE")) return Error::communication(QStringLiteral("no state"));
+    QStringList moving;
+    for (const QByteArray& axis : reply->mid(5).trimmed().split(' '))
+        if (!axis.isEmpty())
+            moving << QStringLiteral("axis %1 moves").arg(QString::fromLatin1(axis));
+    return moving;
+}
+
 int requestsReceived() {
     return g_requests.loadRelaxed();
+}
+
+QStringList requestLog() {
+    std::lock_guard lock(g_logMutex);
+    return g_log;
+}
+
+void clearRequestLog() {
+    std::lock_guard lock(g_logMutex);
+    g_log.clear();
 }
 
 void registerFakeFamily() {
@@ -242,11 +341,11 @@ void registerFakeFamily() {
 
     comm::SimulatorRegistry::instance().add(
         {QStringLiteral("fake"),
-         [](const QString&, const comm::SerialSettings& serial,
-            const QString&) -> Result<comm::SimulatedLine> { return fakeLine(serial); },
+         [](const QString& port, const comm::SerialSettings& serial,
+            const QString&) -> Result<comm::SimulatedLine> { return fakeLine(port, serial); },
          [] { return QList<QCommandLineOption>{}; },
          [](const QCommandLineParser&, const comm::SimHostOptions&) -> Result<comm::SimulatedLine> {
-             return fakeLine({});
+             return fakeLine({}, {});
          }});
 
     static bool pagesAdded = false;

@@ -7,14 +7,19 @@
 // from the test alone: the shell must host it without an edit outside.
 
 #include "comm/device/device_connection.h"
+#include "comm/device/motion_control.h"
 #include "comm/engine/framing_backend.h"
 
 #include <QAtomicInt>
+#include <QStringList>
 
 namespace cambench::fake {
 
-// The device interface of the family: what its page and command use.
-class FakeDevice : public comm::DeviceConnection {
+// The device interface of the family: what its page and command use. Its
+// axes (how many, and one that never acknowledges a STOP, come from the
+// simulator's port: "sim:throttle=0,axes=2,deaf=2") move on "MOVE n" until
+// "STOP n": the MotionControl the shell's STOP is tested with.
+class FakeDevice : public comm::DeviceConnection, public comm::MotionControl {
 public:
     FakeDevice(comm::Transport& transport, const comm::LineTiming& line);
     ~FakeDevice() override;
@@ -25,6 +30,12 @@ public:
     Result<QString> identify() override;
     // "PING n" -> "PONG n".
     Result<QString> ping(int n);
+    // Starts axis `axis` (1-based) moving.
+    Result<QString> move(int axis);
+
+    MotionControl* motionControl() override { return this; }
+    comm::MotionStopReport stopAllMotion() override;
+    Result<QStringList> activeMotion() override;
 
 private:
     struct Impl;
@@ -33,6 +44,9 @@ private:
 
 // The requests the simulated fake devices have received (all of them).
 int requestsReceived();
+// Their text, in the order they arrived ("PING 3", "STOP 1"), and a fresh start.
+QStringList requestLog();
+void clearRequestLog();
 
 // Registers family, protocol and simulator (comm), page (GUI) and command
 // group (CLI). Safe to call more than once.

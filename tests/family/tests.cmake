@@ -6,3 +6,12 @@ if(CAMBENCH_GUI AND TARGET cambench_cli_front)
             ui/register_widgets.cpp
     LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
 endif()
+
+# Issue 27: the shell's STOP on every page, its key, ahead of a long job;
+# none for a CamCon; quitting while something moves asks.
+if(CAMBENCH_GUI AND TARGET cambench_cli_front)
+  cambench_add_test(tst_motion_stop
+    SOURCES family/tst_motion_stop.cpp family/fake_family.h family/fake_family.cpp
+            ui/register_widgets.cpp ui/shell/shell_fixture.h
+    LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
+endif()

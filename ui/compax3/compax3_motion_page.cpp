@@ -1,6 +1,7 @@
 #include "compax3_motion_page.h"
 
 #include "ui/device_session.h"
+#include "ui/motion_stop.h"
 #include "ui/sentence.h"
 
 #include <QDoubleSpinBox>
@@ -9,7 +10,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QShortcut>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -59,19 +59,14 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     m_set->setValue(1);
     m_set->setSpecialValueText(tr("0 (homing)"));
 
-    // STOP: big, red, always on the page.
+    // STOP: big, always on the page; the shell's STOP (one implementation),
+    // whose key works from every page.
     m_stop->setObjectName(QStringLiteral("compax3Stop"));
-    m_stop->setMinimumHeight(56);
-    m_stop->setStyleSheet(QStringLiteral(
-        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 16pt; }"
-        "QPushButton:disabled { background: palette(mid); color: palette(dark); }"));
     m_stop->setToolTip(
-        tr("Stops the axis with its ramp (control word 1) and drops what waits "
-           "for the line. Escape does the same."));
-    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    escape->setContext(Qt::WindowShortcut);
-    connect(escape, &QShortcut::activated, this, &Compax3MotionPage::stop);
-    connect(m_stop, &QPushButton::clicked, this, &Compax3MotionPage::stop);
+        tr("Stops the drive and drops what waits for the line: the STOP above "
+           "every page. Escape does the same."));
+    // Moves are offered only while the STOP can reach the device.
+    useShellStop(m_stop, [this] { factsChanged(); });
 
     auto button = [this](const QString& text, const char* name) {
         auto* b = new QPushButton(text);
@@ -135,9 +130,13 @@ QString Compax3MotionPage::axisText() const {
 
 void Compax3MotionPage::factsChanged() {
     const bool known = facts().known;
-    for (QPushButton* action : m_actions) action->setEnabled(known);
-    m_stop->setEnabled(known);
-    if (!known) m_axis->setText(tr("No drive connected."));
+    // A motion is offered only while the STOP can reach the drive.
+    const bool stoppable = session()->motionStop()->armed();
+    for (QPushButton* action : m_actions) action->setEnabled(known && stoppable);
+    if (!known)
+        m_axis->setText(tr("No drive connected."));
+    else if (!stoppable)
+        showResult(tr("Motion is off while the STOP cannot reach the drive."), false);
     m_read.reset();
     m_mode->setText(tr("not read"));
     if (known) readSet();
@@ -286,25 +285,7 @@ void Compax3MotionPage::moveSet() {
 }
 
 void Compax3MotionPage::stop() {
-    if (!facts().known) return;
-    // What waits for the line (a poll, a queued move) goes first.
-    session()->worker().cancelAll();
-    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
-        this, tr("STOP"),
-        [](comm::Compax3Device& device, comm::JobContext&) {
-            return device.motion(Compax3Motion::Stop);
-        },
-        [this](Result<comm::Compax3CommandResult> result) {
-            if (!result) {
-                showResult(tr("STOP did not reach the drive: %1. Use the machine's emergency "
-                              "stop.")
-                               .arg(asSentence(result.error().message)),
-                           false);
-                return;
-            }
-            if (result->after) m_axis->setText(capitalised(result->after->summary()));
-            showResult(tr("STOP acknowledged by the drive; now %1.").arg(result->summary()), true);
-        });
+    session()->motionStop()->stopAll();
 }
 
 }  // namespace cambench

@@ -15,8 +15,8 @@ namespace cambench {
 // acceleration; each asks first, saying that the axis will move. The set's
 // values and mode are read from the drive when a set is chosen; a start
 // writes only what the person changed and the question names each value.
-// STOP is always on the page and Escape presses it from anywhere in the
-// window; it drops what waits for the line first.
+// Its STOP button is one more way to the shell's STOP (MotionStop), whose
+// Escape works from every page; the page's result line shows its report.
 class Compax3MotionPage : public Compax3Page {
     Q_OBJECT
 public:
@@ -31,6 +31,7 @@ public:
     // Reads the chosen set from the drive into the editors.
     void readSet();
     void moveSet();
+    // The shell's STOP.
     void stop();
     QPushButton* stopButton() const { return m_stop; }
     QString axisText() const;

@@ -1,6 +1,7 @@
 #include "mc1_axes_page.h"
 
 #include "ui/device_session.h"
+#include "ui/motion_stop.h"
 #include "ui/sentence.h"
 
 #include "comm/mc1/mc1_parameters.h"
@@ -11,7 +12,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QShortcut>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -55,21 +55,14 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     m_state->setFont(big);
     m_availability->setWordWrap(true);
 
-    // STOP: big, red, always on the page, never disabled while connected.
+    // STOP: big, always on the page; the shell's STOP (one implementation),
+    // whose key works from every page.
     m_stop->setObjectName(QStringLiteral("mc1Stop"));
-    m_stop->setMinimumHeight(56);
-    // Red only while it can stop something: a disabled STOP must not look armed.
-    m_stop->setStyleSheet(QStringLiteral(
-        "QPushButton { background: #c62828; color: white; font-weight: bold; font-size: 16pt; }"
-        "QPushButton:disabled { background: palette(mid); color: palette(dark); }"));
     m_stop->setToolTip(
-        tr("Stops every axis with the maximum ramp and drops what waits for the "
-           "line. Escape does the same."));
-    // While the page is shown, Escape stops from anywhere in the window.
-    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    escape->setContext(Qt::WindowShortcut);
-    connect(escape, &QShortcut::activated, this, &Mc1AxesPage::stopAll);
-    connect(m_stop, &QPushButton::clicked, this, &Mc1AxesPage::stopAll);
+        tr("Stops every axis and drops what waits for the line: the STOP above "
+           "every page. Escape does the same."));
+    // Moves are offered only while the STOP can reach the device.
+    useShellStop(m_stop, [this] { factsChanged(); });
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_axis);
@@ -124,14 +117,17 @@ int Mc1AxesPage::axis() const {
 }
 
 void Mc1AxesPage::factsChanged() {
-    const bool can = facts().known && facts().has(comm::Mc1Capability::Axes);
+    const bool axes = facts().known && facts().has(comm::Mc1Capability::Axes);
+    // A move is offered only while the STOP can reach the controller.
+    const bool can = axes && session()->motionStop()->armed();
     for (QWidget* widget : m_motion) widget->setEnabled(can);
-    m_stop->setEnabled(can);
     m_availability->setVisible(!can);
-    m_availability->setText(facts().known
+    m_availability->setText(!facts().known ? tr("Not connected to an MC100/MC200.")
+                            : !axes
                                 ? tr("The %1 has no axis telegrams: moving axes needs an MC200 V2.")
                                       .arg(comm::mc1VariantName(facts().variant))
-                                : tr("Not connected to an MC100/MC200."));
+                                : tr("Moves are off while the STOP cannot reach the %1.")
+                                      .arg(comm::mc1VariantName(facts().variant)));
 }
 
 QString Mc1AxesPage::headline(const comm::Mc1AxisState& state) const {
@@ -215,34 +211,7 @@ bool Mc1AxesPage::confirmCommand(Mc1AxisCommand command, const QString& what, qi
 }
 
 void Mc1AxesPage::stopAll() {
-    if (!facts().known) return;
-    // What waits for the line (a poll, a queued move) goes first.
-    session()->worker().cancelAll();
-    const int first = axis();
-    session()->run<comm::Mc1Device, QStringList>(
-        this, tr("STOP"),
-        [first](comm::Mc1Device& device, comm::JobContext&) -> Result<QStringList> {
-            QList<int> axes{first};
-            for (int a = comm::kMc1FirstAxis; a <= comm::kMc1LastAxis; ++a)
-                if (a != first) axes << a;
-            QStringList failed;
-            for (int a : axes) {
-                const Result<comm::Mc1AxisState> stopped =
-                    device.axisCommand(a, Mc1AxisCommand::QuickStop, 0);
-                if (!stopped)
-                    failed << QStringLiteral("%1: %2").arg(a).arg(stopped.error().message);
-            }
-            if (!failed.isEmpty()) return Error::communication(failed.join(QStringLiteral("; ")));
-            return QStringList();
-        },
-        [this](Result<QStringList> done) {
-            showResult(done ? tr("STOP sent to every axis; each acknowledged it.")
-                            : tr("STOP did not reach every axis: %1. Use the machine's "
-                                 "emergency stop.")
-                                  .arg(done.error().message),
-                       done.ok());
-            poll();
-        });
+    session()->motionStop()->stopAll();
 }
 
 }  // namespace cambench

@@ -12,9 +12,10 @@ namespace cambench {
 
 // Axes: one axis's position, target and state, live while shown; home,
 // jog, absolute and relative moves and the speed, every motion after a
-// confirmation that names the axis and where it goes. STOP is always
-// visible and Escape presses it: it cancels what waits for the line and
-// stops every axis with the maximum ramp.
+// confirmation that names the axis and where it goes. Its STOP button is
+// one more way to the shell's STOP (MotionStop: every axis, ahead of what
+// waits for the line), whose Escape works from every page; the page's
+// result line shows its report.
 class Mc1AxesPage : public Mc1Page {
     Q_OBJECT
 public:
@@ -29,6 +30,7 @@ public:
     int axis() const;
     // Asks (naming the motion), then sends it and shows the axis after.
     void command(comm::Mc1AxisCommand command, qint32 value = 0);
+    // The shell's STOP.
     void stopAll();
 
 protected:

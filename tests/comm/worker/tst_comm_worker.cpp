@@ -73,10 +73,15 @@ private Q_SLOTS:
     void vanishingPortMakesStateLostAndLaterJobsFailFast();
     void reconnectAfterLostWorks();
     void destructorReturnsWhileJobRuns();
+    void urgentJobRunsBeforeQueuedJobs();
+    void urgentJobRunsBetweenTwoRequestsOfARunningJob();
+    void dropQueuedLeavesTheRunningJobAlone();
 
 private:
     // Submits a User job that holds the worker until `gate` is released.
     quint64 submitBlocker(CommWorker& worker, QSemaphore& gate, RunLog& log);
+    // The same, once the blocker runs; 0 when it did not start.
+    quint64 holdWorker(CommWorker& worker, QSemaphore& gate, RunLog& log);
 };
 
 quint64 TestCommWorker::submitBlocker(CommWorker& worker, QSemaphore& gate, RunLog& log) {
@@ -84,6 +89,11 @@ quint64 TestCommWorker::submitBlocker(CommWorker& worker, QSemaphore& gate, RunL
         log.add("blocker");
         gate.acquire();
     });
+}
+
+quint64 TestCommWorker::holdWorker(CommWorker& worker, QSemaphore& gate, RunLog& log) {
+    const quint64 blocker = submitBlocker(worker, gate, log);
+    return QTest::qWaitFor([&log] { return log.get().size() == 1; }, kHangBoundMs) ? blocker : 0;
 }
 
 void TestCommWorker::connectingReportsConnectingThenConnected() {
@@ -357,6 +367,72 @@ void TestCommWorker::destructorReturnsWhileJobRuns() {
     QTRY_COMPARE_WITH_TIMEOUT(device.requestCount(), 1, kHangBoundMs);
     worker.reset();  // must cancel the job and stop the thread, not wait 8 minutes
     QVERIFY(jobReturned.load());
+}
+
+void TestCommWorker::urgentJobRunsBeforeQueuedJobs() {
+    CommWorker worker;
+    QSemaphore gate;
+    RunLog log;
+    QVERIFY(holdWorker(worker, gate, log) != 0);
+    QSignalSpy finished(&worker, &CommWorker::jobFinished);
+    worker.submit(JobPriority::Poll, "poll", [&log](JobContext&) { log.add("poll"); });
+    worker.submit(JobPriority::User, "user", [&log](JobContext&) { log.add("user"); });
+    worker.submit(JobPriority::Urgent, "stop", [&log](JobContext&) { log.add("stop"); });
+    gate.release();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 4, kHangBoundMs);  // the blocker too
+    QCOMPARE(log.get(), QStringList({"blocker", "stop", "user", "poll"}));
+}
+
+// A long job (a backup) is paused for a STOP between two of its requests,
+// not broken and not waited for; jobs queued before the STOP still wait
+// for the long job's end.
+void TestCommWorker::urgentJobRunsBetweenTwoRequestsOfARunningJob() {
+    CommWorker worker;
+    worker.connectTo(portSettings("sim:throttle=0"), linkSettings(1000, 2));
+    QSemaphore gate;
+    RunLog log;
+    QSignalSpy finished(&worker, &CommWorker::jobFinished);
+    constexpr int kRequests = 6;
+    worker.submit(JobPriority::User, "backup", [&gate, &log](JobContext& ctx) {
+        for (int request = 1; request <= kRequests; ++request) {
+            const Result<Fields> unit = askUnit(ctx);
+            log.add(QStringLiteral("backup %1 %2").arg(request).arg(unit ? "ok" : "failed"));
+            if (request == 3) gate.acquire();  // the test submits the STOP here
+        }
+    });
+    QTRY_COMPARE_WITH_TIMEOUT(log.get().size(), 3, kHangBoundMs);
+    worker.submit(JobPriority::User, "queued", [&log](JobContext&) { log.add("queued"); });
+    worker.submit(JobPriority::Urgent, "stop", [&log](JobContext& ctx) {
+        // Its own request does not run it again.
+        const Result<Fields> unit = askUnit(ctx);
+        log.add(QStringLiteral("stop %1").arg(unit ? "ok" : "failed"));
+    });
+    gate.release();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, kHangBoundMs);
+    QCOMPARE(log.get(), QStringList({"backup 1 ok", "backup 2 ok", "backup 3 ok", "stop ok",
+                                     "backup 4 ok", "backup 5 ok", "backup 6 ok", "queued"}));
+}
+
+void TestCommWorker::dropQueuedLeavesTheRunningJobAlone() {
+    CommWorker worker;
+    QSemaphore gate;
+    RunLog log;
+    QSignalSpy finished(&worker, &CommWorker::jobFinished);
+    const quint64 blocker = holdWorker(worker, gate, log);
+    QVERIFY(blocker != 0);
+    const quint64 move =
+        worker.submit(JobPriority::User, "move", [&log](JobContext&) { log.add("move"); });
+    worker.submit(JobPriority::Urgent, "stop", [&log](JobContext& ctx) {
+        log.add(ctx.cancelled() ? "stop cancelled" : "stop");
+    });
+    worker.dropQueued();
+    gate.release();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, kHangBoundMs);
+    QCOMPARE(log.get(), QStringList({"blocker", "stop"}));
+    QList<quint64> ids;
+    for (const QList<QVariant>& args : finished) ids << args.first().toULongLong();
+    QVERIFY(ids.contains(move));  // a dropped job still finishes
+    QVERIFY(ids.contains(blocker));
 }
 
 QTEST_GUILESS_MAIN(TestCommWorker)

@@ -29,6 +29,9 @@ private Q_SLOTS:
     void cancelSignalsRunningJob();
     void cancelUnknownIdChangesNothing();
     void cancelAllEmptiesQueueAndSignalsRunningJob();
+    void urgentJobsComeFirst();
+    void urgentJobTakenWhileAnotherRunsLeavesItRunning();
+    void dropQueuedKeepsUrgentAndRunningJobs();
 };
 
 void TestJobQueue::userJobsComeBeforePollJobs() {
@@ -108,6 +111,40 @@ void TestJobQueue::cancelAllEmptiesQueueAndSignalsRunningJob() {
     QCOMPARE(removed, QList<quint64>({a.id, b.id}));
     QVERIFY(running->cancel->load());
     QCOMPARE(queue.size(), 0);
+}
+
+void TestJobQueue::urgentJobsComeFirst() {
+    JobQueue queue;
+    queue.push(JobPriority::Poll, "p1", {});
+    queue.push(JobPriority::User, "u1", {});
+    queue.push(JobPriority::Urgent, "stop", {});
+    QCOMPARE(drain(queue), QStringList({"stop", "u1", "p1"}));
+}
+
+void TestJobQueue::urgentJobTakenWhileAnotherRunsLeavesItRunning() {
+    JobQueue queue;
+    const auto backup = queue.push(JobPriority::User, "backup", {});
+    queue.push(JobPriority::User, "write", {});
+    QCOMPARE(queue.takeNext()->title, QString("backup"));
+    QVERIFY(!queue.takeUrgent(0).has_value());  // only urgent jobs come between
+    queue.push(JobPriority::Urgent, "stop", {});
+    QCOMPARE(queue.takeUrgent(0)->title, QString("stop"));
+    // The backup is still the running job: cancel reaches it.
+    QCOMPARE(queue.cancel(backup.id), JobQueue::Cancelled::Signalled);
+}
+
+void TestJobQueue::dropQueuedKeepsUrgentAndRunningJobs() {
+    JobQueue queue;
+    const auto backup = queue.push(JobPriority::User, "backup", {});
+    QVERIFY(queue.takeNext().has_value());
+    const auto move = queue.push(JobPriority::User, "move", {});
+    const auto poll = queue.push(JobPriority::Poll, "poll", {}, "poll");
+    queue.push(JobPriority::Urgent, "stop", {});
+    QCOMPARE(queue.dropQueued(), QList<quint64>({move.id, poll.id}));
+    QCOMPARE(queue.size(), 1);
+    QCOMPARE(queue.cancel(backup.id), JobQueue::Cancelled::Signalled);  // not touched
+    queue.finishRunning();
+    QCOMPARE(drain(queue), QStringList({"stop"}));
 }
 
 QTEST_GUILESS_MAIN(TestJobQueue)

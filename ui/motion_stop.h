@@ -1,0 +1,73 @@
+#pragma once
+
+#include "comm/device/motion_control.h"
+#include "model/result.h"
+
+#include <QDateTime>
+#include <QObject>
+
+namespace cambench {
+
+class DeviceSession;
+
+// The one STOP of the GUI (issue 27): the shell's button and shortcut and
+// the motion pages' own STOP buttons all call stopAll() here, whatever page
+// is shown and whatever job runs. Whether the device on the line can move
+// anything is asked once per connection and identity (the device's
+// MotionControl, nullptr for a CamCon) and kept here.
+class MotionStop : public QObject {
+    Q_OBJECT
+public:
+    explicit MotionStop(DeviceSession* session);
+
+    // The device on the line (or, while the line is lost, the last one) can
+    // move something: a STOP is shown.
+    bool available() const { return m_available; }
+    // A STOP can reach the device now: shown and online.
+    bool armed() const;
+
+    // Stops everything the device can move, without a question: drops what
+    // waits for the line (a queued move must not follow the STOP) and runs
+    // ahead of everything, between two requests of a running job.
+    // stopFinished() reports per axis or drive.
+    void stopAll();
+    bool stopRunning() const { return m_stopRunning; }
+    // The last STOP's report (empty before the first) and when it ended.
+    const comm::MotionStopReport& lastReport() const { return m_lastReport; }
+    QDateTime lastStopTime() const { return m_lastStop; }
+
+    // What moves or is powered, asked from the device; an error when it
+    // cannot tell, also when no answer came within `timeoutMs` (the GUI
+    // waits that long in a local event loop).
+    Result<QStringList> activeMotion(int timeoutMs);
+    // stopAll() and its report, waiting at most `timeoutMs`; an error when
+    // no report came in that time.
+    Result<comm::MotionStopReport> stopAndWait(int timeoutMs);
+
+    // The report for a person: one line per axis or drive, "acknowledged"
+    // or "NOT acknowledged - use the machine's emergency stop".
+    static QString reportText(const comm::MotionStopReport& report);
+    static QString reportSummary(const comm::MotionStopReport& report);
+    // The titles of its jobs: the status bar leaves them out (the STOP
+    // reports in its bar, and must not hide the backup it interrupts).
+    static QStringList jobTitles();
+
+Q_SIGNALS:
+    void availabilityChanged();
+    void stopStarted();
+    void stopFinished(const cambench::comm::MotionStopReport& report);
+
+private:
+    // Asks the worker whether the device on the line has a MotionControl.
+    void askAvailability();
+    void setAvailable(bool available);
+
+    DeviceSession* m_session;
+    bool m_available = false;
+    bool m_stopRunning = false;
+    quint64 m_asked = 0;  // the last availability question; older answers are dropped
+    comm::MotionStopReport m_lastReport;
+    QDateTime m_lastStop;
+};
+
+}  // namespace cambench

@@ -1,0 +1,65 @@
+#include "stop_bar.h"
+
+#include "motion_stop.h"
+#include "stop_button.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+
+namespace cambench {
+
+StopBar::StopBar(MotionStop* stop, const QString& shortcutText, QWidget* parent)
+    : QFrame(parent),
+      m_stop(stop),
+      m_button(new QPushButton(tr("STOP (%1)").arg(shortcutText))),
+      m_report(new QLabel) {
+    setObjectName(QStringLiteral("stopBar"));
+    m_button->setObjectName(QStringLiteral("shellStop"));
+    m_button->setMinimumHeight(48);
+    m_button->setMinimumWidth(200);
+    styleAsStop(m_button);
+    m_button->setToolTip(tr("Stops every axis and drive of the device, without a question, "
+                            "ahead of everything waiting for the line. %1 does the same "
+                            "from every page.")
+                             .arg(shortcutText));
+    m_button->setFocusPolicy(Qt::NoFocus);  // a click leaves the focus where the work is
+    m_report->setObjectName(QStringLiteral("shellStopReport"));
+    m_report->setWordWrap(true);
+    m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_button);
+    layout->addWidget(m_report, 1);
+    connect(m_button, &QPushButton::clicked, stop, &MotionStop::stopAll);
+    connect(stop, &MotionStop::availabilityChanged, this, &StopBar::update);
+    connect(stop, &MotionStop::stopStarted, this, [this] {
+        m_report->setText(tr("STOP sent…"));
+        m_report->setStyleSheet(QString());
+    });
+    connect(stop, &MotionStop::stopFinished, this, &StopBar::showReport);
+    update();
+    if (!stop->lastReport().lines.isEmpty()) showReport();  // a window rebuilt keeps it
+}
+
+QString StopBar::reportText() const {
+    return m_report->text();
+}
+
+void StopBar::update() {
+    setVisible(m_stop->available());
+    m_button->setEnabled(m_stop->armed());
+}
+
+void StopBar::showReport() {
+    const comm::MotionStopReport& report = m_stop->lastReport();
+    m_report->setText(
+        tr("%1 %2\n%3")
+            .arg(QLocale().toString(m_stop->lastStopTime().time(), QLocale::LongFormat),
+                 MotionStop::reportSummary(report), MotionStop::reportText(report)));
+    m_report->setStyleSheet(report.allAcknowledged() ? QString()
+                                                     : QStringLiteral("color: #c62828;"));
+}
+
+}  // namespace cambench
