@@ -1,5 +1,7 @@
 #include "device_session.h"
 
+#include <utility>
+
 #include "shell_log.h"
 
 #include "comm/device/protocol_registry.h"
@@ -30,6 +32,8 @@ void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
     m_connection = connection;
     m_protocol = protocol;
     m_freshness.reset();
+    m_wasLost = false;  // a connect asked for is no re-establishment
+    m_reestablishing = false;
     reconnect();
 }
 
@@ -46,6 +50,7 @@ void DeviceSession::reconnect() {
 void DeviceSession::disconnectFromDevice() {
     m_wantConnected = false;
     m_wasLost = false;
+    m_reestablishing = false;
     m_retry.stop();
     m_worker.cancelAll();
     m_worker.disconnectFromDevice();
@@ -64,9 +69,11 @@ void DeviceSession::setDevice(int device) {
 }
 
 void DeviceSession::setDeviceChecked(bool checked) {
+    const bool other = std::exchange(m_anotherDevice, false);
     if (m_deviceChecked == checked) return;
     m_deviceChecked = checked;
     Q_EMIT deviceCheckedChanged(checked);
+    if (checked && std::exchange(m_reestablishing, false)) Q_EMIT reestablished(!other);
 }
 
 QString DeviceSession::stateText() const {
@@ -112,6 +119,7 @@ void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& m
     Q_EMIT stateChanged(state, message);
     if (state == comm::ConnectionState::Connected && m_wasLost) {
         m_wasLost = false;
+        m_reestablishing = true;
         Q_EMIT reconnected();
     }
 }

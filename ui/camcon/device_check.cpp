@@ -1,6 +1,7 @@
 #include "device_check.h"
 #include "ui/camcon/camcon_jobs.h"
 
+#include "device_change_dialog.h"
 #include "incoming_values.h"
 #include "ui/device_session.h"
 #include "workspace.h"
@@ -22,12 +23,38 @@ struct Answer {
     bool plc = true;
 };
 
-QString identityText(const DeviceInfo& info) {
-    return QCoreApplication::translate("cambench::DeviceCheck",
-                                       "CamCon %1, device number %2, %3 cams programmed")
-        .arg(info.epromDate)
-        .arg(info.deviceNumber)
-        .arg(info.programmedCams);
+QString text(const char* source, int n = -1) {
+    return QCoreApplication::translate("cambench::DeviceCheck", source, nullptr, n);
+}
+
+// Asks what stays when the person had changed values of the old device;
+// without changes the new device's values are taken.
+CarryOver askWhatStays(QWidget* parent, const Workspace& workspace, const DeviceInfo& before,
+                       const DeviceInfo& now) {
+    const QStringList changes = personsChanges(workspace);
+    if (changes.isEmpty()) return CarryOver::Nothing;
+    DeviceChangeDialog dialog(deviceName(before), deviceName(now), changes, parent);
+    dialog.exec();
+    return dialog.choice();
+}
+
+// The banner while anything of the other device could still be looked for.
+QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, const DeviceInfo& now,
+                        int carried) {
+    QString note =
+        text(
+            "Another device answers: %1. The values read from %2 are not shown as this "
+            "device's; the start pages are read from this one, the rest says \"not read\" until "
+            "Read everything or Compare.")
+            .arg(deviceName(now), deviceName(before));
+    if (carry == CarryOver::Changes)
+        note += QLatin1Char(' ') +
+                text("Your %n change(s) stay over this device's values, not written yet.", carried);
+    if (carry == CarryOver::Everything)
+        note += QLatin1Char(' ') +
+                text("The values of %1 are kept as a copy for this device, not written yet.")
+                    .arg(deviceName(before));
+    return note;
 }
 
 }  // namespace
@@ -58,15 +85,10 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             const std::optional<DeviceInfo> before = workspace->copiesFrom();
             const bool other = !workspace->copiesAreFrom(answer.identity);
             if (other && before) {
+                const CarryOver carry = askWhatStays(parent, *workspace, *before, answer.identity);
+                const int changes = workspace->changedCount();
                 workspace->forgetDeviceCopies(
-                    QCoreApplication::translate(
-                        "cambench::DeviceCheck",
-                        "Another device answers (%1) than the one the values shown as on the "
-                        "device were read from (%2). Nothing read from that one is shown as this "
-                        "device's any more: the start pages are read again, the rest says \"not "
-                        "read\" until Read everything or Compare. Your edits are kept and count "
-                        "as not written.")
-                        .arg(identityText(answer.identity), identityText(*before)));
+                    otherDeviceNote(carry, *before, answer.identity, changes), carry);
             }
             if (!answer.users) workspace->forgetDeviceUsers();
             if (!answer.plc) workspace->forgetDevicePlcNetworks();
@@ -74,6 +96,7 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             project.device = answer.identity;
             project.readAt.parts.insert(ProjectPart::Device, QDateTime::currentDateTimeUtc());
             mergeIncoming(*workspace, project, ValueSource::Device, {});
+            if (owner && other && before) owner->noteAnotherDevice();
             if (owner) owner->setDeviceChecked(true);
             if (done) done(success(), other && before);
         },

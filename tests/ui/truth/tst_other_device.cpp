@@ -8,12 +8,14 @@
 #include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/device_change_dialog.h"
 #include "ui/camcon/device_writer.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace cambench;
@@ -57,7 +59,117 @@ private Q_SLOTS:
     void aDeviceChangedBehindThePcIsNotWrittenFromTheOldCopy();
     void theSameDeviceAgainKeepsItsCopies();
     void readProgramRefreshesNamesAndDeadTimes();
+    // Issue 28, point 1: an edit is what the person changed, nothing else.
+    void theNewDevicesValuesAreTheDefault();
+    void keptChangesAreOnlyWhatThePersonChanged();
+    void aCopyOfTheOldDeviceIsWrittenAsACopy();
+    // Issue 28, point 3.
+    void reEstablishedOnlyOnceTheDeviceIdentifiedItself();
 };
+
+namespace {
+
+// Device A (the demo) read, one cam of program 0 output 1 changed, then
+// device B (two cams on every track) on another port: the question is
+// answered with `carry`. Returns the dialog's list of changes.
+struct DeviceChange {
+    QString changes;
+    int replaceQuestions = 0;
+};
+DeviceChange changeDevice(Shell& shell, PtySimulator& other, std::optional<CarryOver> carry) {
+    CamDocument* cams = camConWorkspace(shell)->cams();
+    cams->setCam(0, 1, 0, {25, 60});
+    DeviceChange change;
+    NextDialog<DeviceChangeDialog> question([&](DeviceChangeDialog* dialog) {
+        change.changes = dialog->changesText();
+        if (carry) dialog->choose(*carry);
+        dialog->accept();
+    });
+    const auto replace = answerReplaceEdits(false);
+    connectToPort(shell, other.path());
+    (void)QTest::qWaitFor(
+        [&] {
+            return shell.session()->deviceChecked() &&
+                   camConWorkspace(shell)->readTimes().programs.contains(0) &&
+                   camConWorkspace(shell)->readTimes().parts.contains(ProjectPart::OutputNames);
+        },
+        kDeviceTimeoutMs);
+    change.replaceQuestions = replace->answered();
+    if (question.answered() != 1) change.changes = QStringLiteral("<not asked>");
+    return change;
+}
+
+}  // namespace
+
+void OtherDeviceTest::theNewDevicesValuesAreTheDefault() {
+    PtySimulator demo;
+    auto shell = startOnPty(demo);
+    QVERIFY(shell);
+    PtySimulator other;
+    comm::fillBenchmarkCams(other.device(), 2);
+    const DeviceChange change = changeDevice(*shell, other, std::nullopt);
+    QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: 25–60")),
+             qPrintable(change.changes));
+    QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);  // one change, one line
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    QCOMPARE(cams->track(0, 1).cams, other.track(0, 1));
+    QCOMPARE(cams->track(0, 3).cams, other.track(0, 3));
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
+    QVERIFY(!camConWorkspace(*shell)->carriedFrom());
+}
+
+void OtherDeviceTest::keptChangesAreOnlyWhatThePersonChanged() {
+    PtySimulator demo;
+    auto shell = startOnPty(demo);
+    QVERIFY(shell);
+    PtySimulator other;
+    comm::fillBenchmarkCams(other.device(), 2);
+    const DeviceChange change = changeDevice(*shell, other, CarryOver::Changes);
+    QCOMPARE(change.replaceQuestions, 0);  // decided once, not asked again per read
+    QVERIFY2(!change.changes.contains(QStringLiteral("output 2")), qPrintable(change.changes));
+    Workspace* workspace = camConWorkspace(*shell);
+    CamDocument* cams = workspace->cams();
+    // The change, applied to B's values; every other item is B's.
+    Track expected;
+    expected.cams = {{25, 60}};
+    QCOMPARE(cams->track(0, 1).cams, expected.cams);
+    QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
+    for (int output = 2; output <= workspace->info().outputs; ++output) {
+        QCOMPARE(cams->track(0, output).cams, other.track(0, output));
+        QCOMPARE(cams->trackState(0, output), ChangeState::Unchanged);
+    }
+    QCOMPARE(cams->programName(0), cams->deviceProgram(0)->name);
+    QCOMPARE(workspace->changedCount(), 1);
+    QVERIFY2(stripText(*shell).contains(QStringLiteral("Your 1 change stays")),
+             qPrintable(stripText(*shell)));
+    // A program never read from B holds nothing of A's.
+    QVERIFY(cams->track(1, 1).cams.isEmpty() || cams->track(1, 1).cams == other.track(1, 1));
+}
+
+void OtherDeviceTest::aCopyOfTheOldDeviceIsWrittenAsACopy() {
+    PtySimulator demo;
+    auto shell = startOnPty(demo);
+    QVERIFY(shell);
+    PtySimulator other;
+    comm::fillBenchmarkCams(other.device(), 2);
+    const QList<Cam> demoOutput3 = demo.track(0, 3);
+    QVERIFY(demoOutput3 != other.track(0, 3));
+    const DeviceChange change = changeDevice(*shell, other, CarryOver::Everything);
+    QCOMPARE(change.replaceQuestions, 0);
+    Workspace* workspace = camConWorkspace(*shell);
+    QVERIFY(workspace->carriedFrom().has_value());
+    QCOMPARE(workspace->carriedFrom()->carry, CarryOver::Everything);
+    CamDocument* cams = workspace->cams();
+    QCOMPARE(cams->track(0, 3).cams, demoOutput3);
+    QCOMPARE(cams->trackState(0, 3), ChangeState::Edited);
+    QVERIFY2(stripText(*shell).contains(QStringLiteral("as a copy")),
+             qPrintable(stripText(*shell)));
+    const std::optional<WriteResult> result = writeProgram(*shell, 0);
+    QVERIFY(result.has_value());
+    QVERIFY2(result->ok(), qPrintable(writeSummary(*result)));
+    QCOMPARE(other.track(0, 3), demoOutput3);
+    QCOMPARE(other.track(0, 1), (QList<Cam>{{25, 60}}));
+}
 
 void OtherDeviceTest::anotherPortShowsTheNewDeviceAndWritesOnlyWhatItHolds() {
     PtySimulator demo;
@@ -159,6 +271,37 @@ void OtherDeviceTest::readProgramRefreshesNamesAndDeadTimes() {
     QTRY_COMPARE_WITH_TIMEOUT(workspace->cams()->outputName(2), QStringLiteral("Glue"),
                               kDeviceTimeoutMs);
     QCOMPARE(workspace->deviceDeadTime(2), 35);
+}
+
+void OtherDeviceTest::reEstablishedOnlyOnceTheDeviceIdentifiedItself() {
+    // The port is a name (a symlink, as udev's by-id names are): the device
+    // behind it goes, and another program's device appears under the name.
+    QTemporaryDir dir;
+    const QString port = dir.filePath(QStringLiteral("ttyPLANT"));
+    auto a = std::make_unique<PtySimulator>();
+    QVERIFY(QFile::link(a->path(), port));
+    auto shell = startOnSimulator(port);
+    QVERIFY(shell);
+    DeviceSession* session = shell->session();
+    session->setRetryInterval(100);
+    QSignalSpy reconnected(session, &DeviceSession::reconnected);
+    QSignalSpy reestablished(session, &DeviceSession::reestablished);
+    int reestablishedAtReconnect = -1;
+    connect(session, &DeviceSession::reconnected, this,
+            [&] { reestablishedAtReconnect = int(reestablished.size()); });
+    a->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(session->isRetrying(), kDeviceTimeoutMs);
+    PtySimulator b;
+    comm::fillBenchmarkCams(b.device(), 2);
+    QVERIFY(QFile::remove(port));
+    QVERIFY(QFile::link(b.path(), port));
+    QTRY_VERIFY_WITH_TIMEOUT(reestablished.size() == 1, kDeviceTimeoutMs);
+    QCOMPARE(reconnected.size(), 1);
+    QCOMPARE(reestablishedAtReconnect, 0);  // not said on the bare line
+    QVERIFY(session->deviceChecked());
+    QCOMPARE(reestablished.first().first().toBool(), false);  // another device, said so
+    QTRY_VERIFY2_WITH_TIMEOUT(stripText(*shell).contains(QStringLiteral("Another device answers")),
+                              qPrintable(stripText(*shell)), kDeviceTimeoutMs);
 }
 
 QTEST_MAIN(OtherDeviceTest)
