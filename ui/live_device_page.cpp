@@ -37,6 +37,12 @@ QLabel* LiveDevicePage::resultLine() {
     return m_result;
 }
 
+void LiveDevicePage::clearResult() {
+    if (!m_result) return;
+    m_result->clear();
+    m_result->setStyleSheet(QString());
+}
+
 void LiveDevicePage::showResult(const QString& text, bool ok) {
     resultLine()->setText(text);
     resultLine()->setStyleSheet(ok ? QString() : QStringLiteral("color: #d03030;"));

@@ -23,6 +23,9 @@ public:
     virtual bool poll() { return false; }
     // The line went away or another device came: shown values go stale.
     virtual void markStale() {}
+    // Another device came (or another family's): what the last action did
+    // was done to the device before, and is no longer said.
+    void clearResult();
 
 protected:
     // A warning box: `question` with `detail` below, Cancel the default; a

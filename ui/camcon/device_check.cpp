@@ -21,6 +21,7 @@ struct Answer {
     DeviceInfo identity;
     bool users = true;
     bool plc = true;
+    bool tableSections = true;
 };
 
 QString text(const char* source, int n = -1) {
@@ -74,6 +75,7 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             answer.identity = identity.value();
             answer.users = device.has(comm::CamConCapability::Users);
             answer.plc = device.has(comm::CamConCapability::PlcNetworks);
+            answer.tableSections = device.has(comm::CamConCapability::DeadTimeModes);
             return answer;
         },
         [parent, owner, workspace, done](Result<Answer> result) {
@@ -92,6 +94,9 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             }
             if (!answer.users) workspace->forgetDeviceUsers();
             if (!answer.plc) workspace->forgetDevicePlcNetworks();
+            // An earlier device's dead-time modes are not this one's (a
+            // report of a Cam-BUS device showed a 3964R device's).
+            if (!answer.tableSections) workspace->forgetDeviceTableSections();
             Project project;
             project.device = answer.identity;
             project.readAt.parts.insert(ProjectPart::Device, QDateTime::currentDateTimeUtc());

@@ -443,6 +443,16 @@ void Workspace::forgetDeviceDeadTimeModes(CarryOver carry) {
     Q_EMIT deadTimeModesForgotten(carried);
 }
 
+void Workspace::forgetDeviceTableSections() {
+    forgetDeviceDeadTimeModes(CarryOver::Changes);
+    m_tableSections->forgetDeviceCopies(CarryOver::Changes);
+    for (ProjectPart part :
+         {ProjectPart::AnalogueCams, ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
+        m_readAt.parts.remove(part);
+    Q_EMIT readTimesChanged();
+    notifyChanged();
+}
+
 bool Workspace::awaitsCarried(ProjectPart part) const {
     return m_carriedFrom && !m_readAt.parts.contains(part);
 }

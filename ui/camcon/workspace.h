@@ -157,6 +157,9 @@ public:
     void forgetDeviceUsers(CarryOver carry = CarryOver::Changes);
     void forgetDeviceSettings(CarryOver carry = CarryOver::Changes);
     void forgetDevicePlcNetworks(CarryOver carry = CarryOver::Changes);
+    // The table interface's sections (dead-time modes, analogue cams,
+    // programming program, EEPROM lock) on a protocol without them.
+    void forgetDeviceTableSections();
     // After another device answered: which device the edits were carried
     // from and how (nullopt: no device change, or nothing carried).
     struct CarriedFrom {
