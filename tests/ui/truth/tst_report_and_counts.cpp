@@ -343,10 +343,10 @@ void ReportAndCountsTest::reportShowsOnlyValuesOfTheConnectedDevice() {
                              kDeviceTimeoutMs);
     QVERIFY(workspace->deviceDeadTimeModes().isEmpty());
     const QString text = reportText(*workspace);
-    const QString modes = text.section(QStringLiteral("Dead-time modes"), 1);
-    QVERIFY2(!modes.isEmpty(), qPrintable(text));
-    QCOMPARE(modes.count(QStringLiteral("(device: ")),
-             modes.count(QStringLiteral("(device: not read from this device)")));
+    const QString section = text.section(QStringLiteral("Dead-time modes"), 1);
+    QVERIFY2(!section.isEmpty(), qPrintable(text));
+    QCOMPARE(section.count(QStringLiteral("(device: ")),
+             section.count(QStringLiteral("(device: not read from this device)")));
     // The edit stays, said as not read from this device.
     QVERIFY2(text.contains(QStringLiteral("not read from this device")), qPrintable(text));
 }
