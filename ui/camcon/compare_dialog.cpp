@@ -179,7 +179,7 @@ QList<WorkspaceItem> CompareDialog::uncheckedItems() const {
 QString CompareDialog::copyNote() const {
     const std::optional<Workspace::CarriedFrom>& carried = m_workspace->carriedFrom();
     if (!carried || carried->carry != CarryOver::Everything) return {};
-    return tr("The edits hold a copy of %1's values, made when this device came on the line.")
+    return tr("The edits hold a copy of the values of %1, made when this device came on the line.")
         .arg(deviceName(carried->device));
 }
 

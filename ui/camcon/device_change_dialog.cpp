@@ -8,6 +8,7 @@
 
 #include "ui/camcon/cameditor/cam_document.h"
 
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QLabel>
 #include <QLocale>
@@ -20,10 +21,6 @@ namespace cambench {
 
 namespace {
 
-QString tr(const char* text, int n = -1) {
-    return QCoreApplication::translate("cambench::DeviceChange", text, nullptr, n);
-}
-
 QString tenths(qint32 value) {
     return QLocale().toString(value / 10.0, 'f', 1);
 }
@@ -32,29 +29,40 @@ QString tenths(qint32 value) {
 void addCamChanges(const Workspace& workspace, const QString& from, QStringList& lines) {
     const CamDocument* cams = workspace.cams();
     for (const TrackDifference& d : cams->differences()) {
-        lines << (d.deviceKnown ? tr("Program %1, output %2: %3 (read from %4: %5)")
-                                      .arg(d.program)
-                                      .arg(d.output)
-                                      .arg(camsText(d.editedTrack), from, camsText(d.deviceTrack))
-                                : tr("Program %1, output %2: %3 (not read from a device)")
-                                      .arg(d.program)
-                                      .arg(d.output)
-                                      .arg(camsText(d.editedTrack)));
+        lines << (d.deviceKnown
+                      ? QCoreApplication::translate("cambench::DeviceChange",
+                                                    "Program %1, output %2: %3 (read from %4: %5)")
+                            .arg(d.program)
+                            .arg(d.output)
+                            .arg(camsText(d.editedTrack), from, camsText(d.deviceTrack))
+                      : QCoreApplication::translate(
+                            "cambench::DeviceChange",
+                            "Program %1, output %2: %3 (not read from a device)")
+                            .arg(d.program)
+                            .arg(d.output)
+                            .arg(camsText(d.editedTrack)));
     }
     for (int program : cams->editedPrograms()) {
         const std::optional<CamProgram> device = cams->deviceProgram(program);
         const QString name = cams->programName(program);
         if (device ? device->name != name : !name.isEmpty())
-            lines << tr("Program %1 name: \"%2\"").arg(program).arg(name);
+            lines << QCoreApplication::translate("cambench::DeviceChange",
+                                                 "Program %1 name: \"%2\"")
+                         .arg(program)
+                         .arg(name);
     }
     for (int output = 1; output <= workspace.info().outputs; ++output) {
         const std::optional<QString> deviceName = cams->deviceOutputName(output);
         if (cams->outputName(output) != deviceName.value_or(QString()))
-            lines << tr("Output %1 name: \"%2\"").arg(output).arg(cams->outputName(output));
+            lines << QCoreApplication::translate("cambench::DeviceChange", "Output %1 name: \"%2\"")
+                         .arg(output)
+                         .arg(cams->outputName(output));
         const std::optional<qint32> deviceTime = cams->deviceDeadTime(output);
         if (cams->deadTime(output) != deviceTime.value_or(0))
-            lines
-                << tr("Output %1 dead time: %2 ms").arg(output).arg(tenths(cams->deadTime(output)));
+            lines << QCoreApplication::translate("cambench::DeviceChange",
+                                                 "Output %1 dead time: %2 ms")
+                         .arg(output)
+                         .arg(tenths(cams->deadTime(output)));
     }
 }
 
@@ -62,26 +70,34 @@ void addCamChanges(const Workspace& workspace, const QString& from, QStringList&
 void addSectionChanges(const Workspace& workspace, QStringList& lines) {
     for (const QString& key : workspace.changedSettings()) {
         const SettingSpec* spec = findSetting(key);
-        lines << tr("Setting: %1").arg(spec ? SettingField::labelText(*spec) : key);
+        lines << QCoreApplication::translate("cambench::DeviceChange", "Setting: %1")
+                     .arg(spec ? SettingField::labelText(*spec) : key);
     }
     if (workspace.userEditCount() > 0)
-        lines << tr("Users: %n change(s)", workspace.userEditCount());
+        lines << QCoreApplication::translate("cambench::DeviceChange", "Users: %1 changed")
+                     .arg(workspace.userEditCount());
     for (int key : workspace.changedPlcNetworks())
-        lines << tr("PLC network %1").arg(PlcPage::networkName(key >> 8, key & 0xFF));
+        lines << QCoreApplication::translate("cambench::DeviceChange", "PLC network %1")
+                     .arg(PlcPage::networkName(key >> 8, key & 0xFF));
     for (int output : workspace.changedDeadTimeModes())
-        lines << tr("Output %1 dead-time mode").arg(output);
+        lines << QCoreApplication::translate("cambench::DeviceChange", "Output %1 dead-time mode")
+                     .arg(output);
     const TableSectionCopies* table = workspace.tableSections();
     for (int output : table->changedAnalogueOutputs())
-        lines << tr("Analogue output %1 cams").arg(output);
-    if (table->programmingProgramChanged()) lines << tr("Programming program");
-    if (table->eepromLockChanged()) lines << tr("EEPROM lock");
+        lines << QCoreApplication::translate("cambench::DeviceChange", "Analogue output %1 cams")
+                     .arg(output);
+    if (table->programmingProgramChanged())
+        lines << QCoreApplication::translate("cambench::DeviceChange", "Programming program");
+    if (table->eepromLockChanged())
+        lines << QCoreApplication::translate("cambench::DeviceChange", "EEPROM lock");
 }
 
 }  // namespace
 
 QString deviceName(const DeviceInfo& info) {
     // The programmed cams tell apart two devices of the same firmware.
-    return tr("CamCon %1, device %2, %3 cams programmed")
+    return QCoreApplication::translate("cambench::DeviceChange",
+                                       "CamCon %1, device %2, %3 cams programmed")
         .arg(info.epromDate)
         .arg(info.deviceNumber)
         .arg(info.programmedCams);
@@ -89,8 +105,9 @@ QString deviceName(const DeviceInfo& info) {
 
 QStringList personsChanges(const Workspace& workspace) {
     QStringList lines;
-    const QString from =
-        workspace.copiesFrom() ? deviceName(*workspace.copiesFrom()) : tr("the device");
+    const QString from = workspace.copiesFrom()
+                             ? deviceName(*workspace.copiesFrom())
+                             : QCoreApplication::translate("cambench::DeviceChange", "the device");
     addCamChanges(workspace, from, lines);
     addSectionChanges(workspace, lines);
     return lines;
@@ -103,9 +120,9 @@ DeviceChangeDialog::DeviceChangeDialog(const QString& oldDevice, const QString& 
     setWindowTitle(tr("Another device answers"));
     auto* intro = new QLabel(
         tr("Another device answers: %1. The values shown were read from %2, and you changed "
-           "%n of them. What shall this device's values be?",
-           nullptr, int(changes.size()))
-            .arg(newDevice, oldDevice));
+           "%3 of them. What shall this device's values be?")
+            .arg(newDevice, oldDevice)
+            .arg(changes.size()));
     intro->setWordWrap(true);
     m_options.insert(
         CarryOver::Nothing,

@@ -24,10 +24,6 @@ struct Answer {
     bool tableSections = true;
 };
 
-QString text(const char* source, int n = -1) {
-    return QCoreApplication::translate("cambench::DeviceCheck", source, nullptr, n);
-}
-
 // Asks what stays when the person had changed values of the old device;
 // without changes the new device's values are taken.
 CarryOver askWhatStays(QWidget* parent, const Workspace& workspace, const DeviceInfo& before,
@@ -50,10 +46,15 @@ QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, const DeviceI
             .arg(deviceName(now), deviceName(before));
     if (carry == CarryOver::Changes)
         note += QLatin1Char(' ') +
-                text("Your %n change(s) stay over this device's values, not written yet.", carried);
+                QCoreApplication::translate(
+                    "cambench::DeviceCheck",
+                    "Your changes (%1) stay over this device's values, not written yet.")
+                    .arg(carried);
     if (carry == CarryOver::Everything)
         note += QLatin1Char(' ') +
-                text("The values of %1 are kept as a copy for this device, not written yet.")
+                QCoreApplication::translate(
+                    "cambench::DeviceCheck",
+                    "The values of %1 are kept as a copy for this device, not written yet.")
                     .arg(deviceName(before));
     return note;
 }

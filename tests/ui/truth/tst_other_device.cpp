@@ -140,7 +140,7 @@ void OtherDeviceTest::keptChangesAreOnlyWhatThePersonChanged() {
     }
     QCOMPARE(cams->programName(0), cams->deviceProgram(0)->name);
     QCOMPARE(workspace->changedCount(), 1);
-    QVERIFY2(stripText(*shell).contains(QStringLiteral("Your 1 change stays")),
+    QVERIFY2(stripText(*shell).contains(QStringLiteral("Your changes (1) stay")),
              qPrintable(stripText(*shell)));
     // A program never read from B holds nothing of A's.
     QVERIFY(cams->track(1, 1).cams.isEmpty() || cams->track(1, 1).cams == other.track(1, 1));
