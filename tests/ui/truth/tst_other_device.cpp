@@ -63,6 +63,7 @@ private Q_SLOTS:
     void theNewDevicesValuesAreTheDefault();
     void keptChangesAreOnlyWhatThePersonChanged();
     void aCopyOfTheOldDeviceIsWrittenAsACopy();
+    void aMultiuserNumberChangeCarriesOnlyTheChanges();
     // Issue 28, point 3.
     void reEstablishedOnlyOnceTheDeviceIdentifiedItself();
 };
@@ -77,7 +78,8 @@ struct DeviceChange {
     int replaceQuestions = 0;
     QList<Cam> mine;  // program 0, output 1 as the person changed it
 };
-DeviceChange changeDevice(Shell& shell, PtySimulator& other, std::optional<CarryOver> carry) {
+DeviceChange changeDevice(Shell& shell, const std::function<void()>& toOther,
+                          std::optional<CarryOver> carry) {
     CamDocument* cams = camConWorkspace(shell)->cams();
     cams->setCam(0, 1, 0, {25, 60});
     DeviceChange change;
@@ -88,7 +90,7 @@ DeviceChange changeDevice(Shell& shell, PtySimulator& other, std::optional<Carry
         dialog->accept();
     });
     const auto replace = answerReplaceEdits(false);
-    connectToPort(shell, other.path());
+    toOther();
     (void)QTest::qWaitFor(
         [&] {
             return shell.session()->deviceChecked() &&
@@ -109,7 +111,8 @@ void OtherDeviceTest::theNewDevicesValuesAreTheDefault() {
     QVERIFY(shell);
     PtySimulator other;
     comm::fillBenchmarkCams(other.device(), 2);
-    const DeviceChange change = changeDevice(*shell, other, std::nullopt);
+    const DeviceChange change = changeDevice(
+        *shell, [&] { connectToPort(*shell, other.path()); }, std::nullopt);
     QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: 25–60")),
              qPrintable(change.changes));
     QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);  // one change, one line
@@ -126,7 +129,8 @@ void OtherDeviceTest::keptChangesAreOnlyWhatThePersonChanged() {
     QVERIFY(shell);
     PtySimulator other;
     comm::fillBenchmarkCams(other.device(), 2);
-    const DeviceChange change = changeDevice(*shell, other, CarryOver::Changes);
+    const DeviceChange change = changeDevice(
+        *shell, [&] { connectToPort(*shell, other.path()); }, CarryOver::Changes);
     QCOMPARE(change.replaceQuestions, 0);  // decided once, not asked again per read
     QVERIFY2(!change.changes.contains(QStringLiteral("output 2")), qPrintable(change.changes));
     Workspace* workspace = camConWorkspace(*shell);
@@ -154,7 +158,8 @@ void OtherDeviceTest::aCopyOfTheOldDeviceIsWrittenAsACopy() {
     comm::fillBenchmarkCams(other.device(), 2);
     const QList<Cam> demoOutput3 = demo.track(0, 3);
     QVERIFY(demoOutput3 != other.track(0, 3));
-    const DeviceChange change = changeDevice(*shell, other, CarryOver::Everything);
+    const DeviceChange change = changeDevice(
+        *shell, [&] { connectToPort(*shell, other.path()); }, CarryOver::Everything);
     QCOMPARE(change.replaceQuestions, 0);
     Workspace* workspace = camConWorkspace(*shell);
     QVERIFY(workspace->carriedFrom().has_value());
@@ -271,6 +276,25 @@ void OtherDeviceTest::readProgramRefreshesNamesAndDeadTimes() {
     QTRY_COMPARE_WITH_TIMEOUT(workspace->cams()->outputName(2), QStringLiteral("Glue"),
                               kDeviceTimeoutMs);
     QCOMPARE(workspace->deviceDeadTime(2), 35);
+}
+
+void OtherDeviceTest::aMultiuserNumberChangeCarriesOnlyTheChanges() {
+    PtySimulator line(false, 38400, {0, 5});
+    QVERIFY(line.isOpen());
+    comm::fillBenchmarkCams(line.device(5), 2);
+    auto shell = startOnSimulator(line.path(), QStringLiteral("multiuser"));
+    QVERIFY(shell);
+    const DeviceChange change = changeDevice(
+        *shell, [&] { shell->session()->setDevice(5); }, CarryOver::Changes);
+    QCOMPARE(change.replaceQuestions, 0);
+    QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: ")),
+             qPrintable(change.changes));
+    QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    QCOMPARE(cams->track(0, 1).cams, change.mine);
+    QCOMPARE(cams->track(0, 2).cams, line.track(0, 2, 5));
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 1);
+    QCOMPARE(camConWorkspace(*shell)->info().deviceNumber, 5);
 }
 
 void OtherDeviceTest::reEstablishedOnlyOnceTheDeviceIdentifiedItself() {
