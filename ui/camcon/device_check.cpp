@@ -38,23 +38,20 @@ CarryOver askWhatStays(QWidget* parent, const Workspace& workspace, const Device
 // The banner while anything of the other device could still be looked for.
 QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, const DeviceInfo& now,
                         int carried) {
-    QString note =
-        text(
-            "Another device answers: %1. The values read from %2 are not shown as this "
-            "device's; the start pages are read from this one, the rest says \"not read\" until "
-            "Read everything or Compare.")
-            .arg(deviceName(now), deviceName(before));
+    QString note = QCoreApplication::translate(
+                       "cambench::DeviceCheck",
+                       "Another device answers: %1. Nothing read from %2 is shown as this "
+                       "device's.")
+                       .arg(deviceName(now), deviceName(before));
     if (carry == CarryOver::Changes)
         note += QLatin1Char(' ') +
-                QCoreApplication::translate(
-                    "cambench::DeviceCheck",
-                    "Your changes (%1) stay over this device's values, not written yet.")
+                QCoreApplication::translate("cambench::DeviceCheck",
+                                            "Your changes (%1) stay, not written yet.")
                     .arg(carried);
     if (carry == CarryOver::Everything)
         note += QLatin1Char(' ') +
-                QCoreApplication::translate(
-                    "cambench::DeviceCheck",
-                    "The values of %1 are kept as a copy for this device, not written yet.")
+                QCoreApplication::translate("cambench::DeviceCheck",
+                                            "A copy of the values of %1 waits to be written.")
                     .arg(deviceName(before));
     return note;
 }

@@ -167,7 +167,7 @@ void OtherDeviceTest::aCopyOfTheOldDeviceIsWrittenAsACopy() {
     CamDocument* cams = workspace->cams();
     QCOMPARE(cams->track(0, 3).cams, demoOutput3);
     QCOMPARE(cams->trackState(0, 3), ChangeState::Edited);
-    QVERIFY2(stripText(*shell).contains(QStringLiteral("as a copy")),
+    QVERIFY2(stripText(*shell).contains(QStringLiteral("A copy of the values of")),
              qPrintable(stripText(*shell)));
     const std::optional<WriteResult> result = writeProgram(*shell, 0);
     QVERIFY(result.has_value());
