@@ -103,77 +103,81 @@ DeviceChange changeDevice(Shell& shell, const std::function<void()>& toOther,
     return change;
 }
 
+// Device A (the demo) with the GUI on it, and device B (two cams on every
+// track) on another pseudo-terminal.
+struct TwoDevices {
+    PtySimulator a;
+    PtySimulator b;
+    std::unique_ptr<Shell> shell;
+    TwoDevices() {
+        comm::fillBenchmarkCams(b.device(), 2);
+        shell = startOnPty(a);
+    }
+    DeviceChange toB(std::optional<CarryOver> carry) {
+        return changeDevice(
+            *shell, [this] { connectToPort(*shell, b.path()); }, carry);
+    }
+};
+
 }  // namespace
 
 void OtherDeviceTest::theNewDevicesValuesAreTheDefault() {
-    PtySimulator demo;
-    auto shell = startOnPty(demo);
-    QVERIFY(shell);
-    PtySimulator other;
-    comm::fillBenchmarkCams(other.device(), 2);
-    const DeviceChange change = changeDevice(
-        *shell, [&] { connectToPort(*shell, other.path()); }, std::nullopt);
+    TwoDevices devices;
+    QVERIFY(devices.shell);
+    const DeviceChange change = devices.toB(std::nullopt);
     QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: 25–60")),
              qPrintable(change.changes));
     QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);  // one change, one line
-    CamDocument* cams = camConWorkspace(*shell)->cams();
-    QCOMPARE(cams->track(0, 1).cams, other.track(0, 1));
-    QCOMPARE(cams->track(0, 3).cams, other.track(0, 3));
-    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
-    QVERIFY(!camConWorkspace(*shell)->carriedFrom());
+    CamDocument* cams = camConWorkspace(*devices.shell)->cams();
+    QCOMPARE(cams->track(0, 1).cams, devices.b.track(0, 1));
+    QCOMPARE(cams->track(0, 3).cams, devices.b.track(0, 3));
+    QCOMPARE(camConWorkspace(*devices.shell)->changedCount(), 0);
+    QVERIFY(!camConWorkspace(*devices.shell)->carriedFrom());
 }
 
 void OtherDeviceTest::keptChangesAreOnlyWhatThePersonChanged() {
-    PtySimulator demo;
-    auto shell = startOnPty(demo);
-    QVERIFY(shell);
-    PtySimulator other;
-    comm::fillBenchmarkCams(other.device(), 2);
-    const DeviceChange change = changeDevice(
-        *shell, [&] { connectToPort(*shell, other.path()); }, CarryOver::Changes);
+    TwoDevices devices;
+    QVERIFY(devices.shell);
+    const DeviceChange change = devices.toB(CarryOver::Changes);
     QCOMPARE(change.replaceQuestions, 0);  // decided once, not asked again per read
     QVERIFY2(!change.changes.contains(QStringLiteral("output 2")), qPrintable(change.changes));
-    Workspace* workspace = camConWorkspace(*shell);
+    Workspace* workspace = camConWorkspace(*devices.shell);
     CamDocument* cams = workspace->cams();
     // The change, applied to B's values; every other item is B's.
     QCOMPARE(cams->track(0, 1).cams, change.mine);
     QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
     for (int output = 2; output <= workspace->info().outputs; ++output) {
-        QCOMPARE(cams->track(0, output).cams, other.track(0, output));
+        QCOMPARE(cams->track(0, output).cams, devices.b.track(0, output));
         QCOMPARE(cams->trackState(0, output), ChangeState::Unchanged);
     }
     QCOMPARE(cams->programName(0), cams->deviceProgram(0)->name);
     QCOMPARE(workspace->changedCount(), 1);
-    QVERIFY2(stripText(*shell).contains(QStringLiteral("Your changes (1) stay")),
-             qPrintable(stripText(*shell)));
+    QVERIFY2(stripText(*devices.shell).contains(QStringLiteral("Your changes (1) stay")),
+             qPrintable(stripText(*devices.shell)));
     // A program never read from B holds nothing of A's.
-    QVERIFY(cams->track(1, 1).cams.isEmpty() || cams->track(1, 1).cams == other.track(1, 1));
+    QVERIFY(cams->track(1, 1).cams.isEmpty() || cams->track(1, 1).cams == devices.b.track(1, 1));
 }
 
 void OtherDeviceTest::aCopyOfTheOldDeviceIsWrittenAsACopy() {
-    PtySimulator demo;
-    auto shell = startOnPty(demo);
-    QVERIFY(shell);
-    PtySimulator other;
-    comm::fillBenchmarkCams(other.device(), 2);
-    const QList<Cam> demoOutput3 = demo.track(0, 3);
-    QVERIFY(demoOutput3 != other.track(0, 3));
-    const DeviceChange change = changeDevice(
-        *shell, [&] { connectToPort(*shell, other.path()); }, CarryOver::Everything);
+    TwoDevices devices;
+    QVERIFY(devices.shell);
+    const QList<Cam> demoOutput3 = devices.a.track(0, 3);
+    QVERIFY(demoOutput3 != devices.b.track(0, 3));
+    const DeviceChange change = devices.toB(CarryOver::Everything);
     QCOMPARE(change.replaceQuestions, 0);
-    Workspace* workspace = camConWorkspace(*shell);
+    Workspace* workspace = camConWorkspace(*devices.shell);
     QVERIFY(workspace->carriedFrom().has_value());
     QCOMPARE(workspace->carriedFrom()->carry, CarryOver::Everything);
     CamDocument* cams = workspace->cams();
     QCOMPARE(cams->track(0, 3).cams, demoOutput3);
     QCOMPARE(cams->trackState(0, 3), ChangeState::Edited);
-    QVERIFY2(stripText(*shell).contains(QStringLiteral("A copy of the values of")),
-             qPrintable(stripText(*shell)));
-    const std::optional<WriteResult> result = writeProgram(*shell, 0);
+    QVERIFY2(stripText(*devices.shell).contains(QStringLiteral("A copy of the values of")),
+             qPrintable(stripText(*devices.shell)));
+    const std::optional<WriteResult> result = writeProgram(*devices.shell, 0);
     QVERIFY(result.has_value());
     QVERIFY2(result->ok(), qPrintable(writeSummary(*result)));
-    QCOMPARE(other.track(0, 3), demoOutput3);
-    QCOMPARE(other.track(0, 1), change.mine);
+    QCOMPARE(devices.b.track(0, 3), demoOutput3);
+    QCOMPARE(devices.b.track(0, 1), change.mine);
 }
 
 void OtherDeviceTest::anotherPortShowsTheNewDeviceAndWritesOnlyWhatItHolds() {
