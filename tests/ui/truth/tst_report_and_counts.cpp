@@ -335,9 +335,12 @@ void ReportAndCountsTest::reportShowsOnlyValuesOfTheConnectedDevice() {
     workspace->noteDeadTimeModes(modes, workspace->deviceDeadTimeModes());
     QVERIFY(reportText(*workspace).contains(QStringLiteral("(device: ")));
 
-    const comm::ProtocolInfo* cambus = comm::ProtocolRegistry::instance().find(QStringLiteral("cambus"));
+    const comm::ProtocolInfo* cambus =
+        comm::ProtocolRegistry::instance().find(QStringLiteral("cambus"));
     QVERIFY(cambus);
     comm::ConnectionSettings connection = shell->session()->connection();
+    connection.protocol = cambus->id;
+    connection.serial = cambus->defaultSerial;
     shell->session()->connectTo(connection, comm::ProtocolSettingsPtr(cambus->makeSettings()));
     QTRY_VERIFY_WITH_TIMEOUT(shell->session()->isOnline() && shell->session()->deviceChecked(),
                              kDeviceTimeoutMs);
