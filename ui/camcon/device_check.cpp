@@ -36,13 +36,12 @@ CarryOver askWhatStays(QWidget* parent, const Workspace& workspace, const Device
 }
 
 // The banner while anything of the other device could still be looked for.
-QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, const DeviceInfo& now,
-                        int carried) {
+// (The new device is named on the line above it.)
+QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, int carried) {
     QString note = QCoreApplication::translate(
                        "cambench::DeviceCheck",
-                       "Another device answers: %1. Nothing read from %2 is shown as this "
-                       "device's.")
-                       .arg(deviceName(now), deviceName(before));
+                       "Another device answers: nothing read from %1 is shown as this one's.")
+                       .arg(deviceName(before));
     if (carry == CarryOver::Changes)
         note += QLatin1Char(' ') +
                 QCoreApplication::translate("cambench::DeviceCheck",
@@ -87,8 +86,7 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             if (other && before) {
                 const CarryOver carry = askWhatStays(parent, *workspace, *before, answer.identity);
                 const int changes = workspace->changedCount();
-                workspace->forgetDeviceCopies(
-                    otherDeviceNote(carry, *before, answer.identity, changes), carry);
+                workspace->forgetDeviceCopies(otherDeviceNote(carry, *before, changes), carry);
             }
             if (!answer.users) workspace->forgetDeviceUsers();
             if (!answer.plc) workspace->forgetDevicePlcNetworks();
