@@ -19,10 +19,12 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QStandardItemModel>
 #include <QToolButton>
 
@@ -106,7 +108,14 @@ ConnectionPage::ConnectionPage(DeviceSession* session, QWidget* parent)
     m_detectResult->hide();
     form->addRow(m_detectResult);
 
+    m_deviceHint = new QLabel;
+    m_deviceHint->setObjectName(QStringLiteral("deviceNumberHint"));
+    m_deviceHint->setWordWrap(true);
+    m_deviceHint->hide();
+    form->addRow(m_deviceHint);
+
     auto* bus = new QGroupBox(tr("Devices on the line"));
+    m_bus = bus;
     auto* busLayout = new QVBoxLayout(bus);
     m_scan = new QPushButton(tr("Scan bus"));
     m_scan->setToolTip(
@@ -142,6 +151,9 @@ ConnectionPage::ConnectionPage(DeviceSession* session, QWidget* parent)
     connect(m_connect, &QPushButton::clicked, this,
             [this] { m_session->connectTo(connectionSettings(), protocolSettings()); });
     connect(m_disconnect, &QPushButton::clicked, m_session, &DeviceSession::disconnectFromDevice);
+    // Enter in the port field connects, as the button does.
+    connect(m_port->lineEdit(), &QLineEdit::returnPressed, m_connect, &QPushButton::click);
+    connect(m_port, &QComboBox::currentTextChanged, this, &ConnectionPage::updateButtons);
     connect(m_scan, &QPushButton::clicked, this, &ConnectionPage::scanBus);
     connect(m_devices, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         const int device = item->data(Qt::UserRole).toInt();
@@ -308,6 +320,7 @@ void ConnectionPage::showDetectResult(const Result<usecases::DetectResult>& resu
     }
     m_detectResult->setToolTip({});
     if (const usecases::DetectAttempt* found = result->found()) {
+        m_failure->hide();  // an earlier connect's failure is not this port's state
         setProtocol(found->protocolId);
         m_baud->setCurrentText(QString::number(found->serial.baud));
         m_detectResult->setPalette(QPalette());
@@ -385,15 +398,30 @@ void ConnectionPage::showProtocolWidget() {
     m_protocolBox->addWidget(m_protocolWidget);
     connect(m_protocolWidget, &ProtocolSettingsWidget::protocolRequested, this,
             &ConnectionPage::setProtocol, Qt::QueuedConnection);
+    // A number typed in (the device number) says what it takes to reach it.
+    for (QSpinBox* number : m_protocolWidget->findChildren<QSpinBox*>())
+        connect(number, &QSpinBox::valueChanged, this, &ConnectionPage::updateButtons);
 }
 
 void ConnectionPage::updateButtons() {
     const auto state = m_session->state();
-    const bool idle = state == comm::ConnectionState::Disconnected;
+    // Retrying a lost line is not idle: Disconnect stops the retries.
+    const bool idle = state == comm::ConnectionState::Disconnected && !m_session->isRetrying();
+    // "Reconnect" only for the line in use; another port or protocol is a Connect.
+    const comm::ConnectionSettings shown = connectionSettings();
+    const bool sameLine = !idle && shown.port == m_session->connection().port &&
+                          shown.protocol == m_session->protocol().protocolId();
     m_connect->setEnabled(state != comm::ConnectionState::Connecting);
-    m_connect->setText(idle ? tr("Connect") : tr("Reconnect"));
-    m_disconnect->setEnabled(!idle);
-    m_scan->setEnabled(m_session->isOnline());
+    m_connect->setText(sameLine ? tr("Reconnect") : tr("Connect"));
+    m_disconnect->setEnabled(!idle || m_session->wantsConnection());
+    // A scan only where the protocol has a bus.
+    const comm::ProtocolInfo* info = currentProtocol();
+    m_bus->setVisible(info && info->isBus);
+    m_scan->setEnabled(m_session->isOnline() && sameLine);
+    // A device number typed in is reached by a reconnect: said so.
+    const int wanted = protocolSettings()->device();
+    m_deviceHint->setVisible(sameLine && wanted != m_session->protocol().device());
+    m_deviceHint->setText(tr("Reconnect to reach device %1.").arg(wanted));
 }
 
 void ConnectionPage::scanBus() {

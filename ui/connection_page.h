@@ -97,8 +97,10 @@ private:
     QVBoxLayout* m_identityPanels;
     QMap<QString, QWidget*> m_panels;  // per family
     QGroupBox* m_identity;
-    QLabel* m_failure;  // the last connect that failed: where, what, what to do
-    QLabel* m_simNote;  // on the simulated device: says so, and the way to a real one
+    QLabel* m_failure;               // the last connect that failed: where, what, what to do
+    QLabel* m_simNote;               // on the simulated device: says so, and the way to a real one
+    QLabel* m_deviceHint = nullptr;  // "Reconnect to reach device 5"
+    QGroupBox* m_bus = nullptr;      // the bus scan, only for a protocol with a bus
 };
 
 }  // namespace cambench

@@ -3,6 +3,8 @@
 #include "motion_stop.h"
 #include "shell_log.h"
 
+#include <utility>
+
 #include "comm/device/protocol_registry.h"
 
 namespace cambench {
@@ -44,6 +46,8 @@ void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
     m_connection = connection;
     m_protocol = protocol;
     m_freshness.reset();
+    m_wasLost = false;  // a connect asked for is no re-establishment
+    m_reestablishing = false;
     reconnect();
 }
 
@@ -61,6 +65,7 @@ void DeviceSession::disconnectFromDevice() {
     if (!mayLeaveDevice(tr("Disconnect"))) return;
     m_wantConnected = false;
     m_wasLost = false;
+    m_reestablishing = false;
     m_retry.stop();
     m_worker.cancelAll();
     m_worker.disconnectFromDevice();
@@ -79,9 +84,11 @@ void DeviceSession::setDevice(int device) {
 }
 
 void DeviceSession::setDeviceChecked(bool checked) {
+    const bool other = std::exchange(m_anotherDevice, false);
     if (m_deviceChecked == checked) return;
     m_deviceChecked = checked;
     Q_EMIT deviceCheckedChanged(checked);
+    if (checked && std::exchange(m_reestablishing, false)) Q_EMIT reestablished(!other);
 }
 
 QString DeviceSession::stateText() const {
@@ -127,6 +134,7 @@ void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& m
     Q_EMIT stateChanged(state, message);
     if (state == comm::ConnectionState::Connected && m_wasLost) {
         m_wasLost = false;
+        m_reestablishing = true;
         Q_EMIT reconnected();
     }
 }

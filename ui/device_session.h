@@ -64,6 +64,9 @@ public:
     // banner does not name a device.
     bool deviceChecked() const { return m_deviceChecked; }
     void setDeviceChecked(bool checked);
+    // Said by the family's check before setDeviceChecked(true): the device
+    // that answers is not the one answering before.
+    void noteAnotherDevice() { m_anotherDevice = true; }
 
     // How old the live values are; fed by the monitor's poll cycles, made
     // stale by a lost line, reset by a connect to another device.
@@ -94,6 +97,9 @@ Q_SIGNALS:
     void stateChanged(cambench::comm::ConnectionState state, const QString& message);
     // Connected after having been Lost: the window re-reads the identity.
     void reconnected();
+    // After reconnected(): the device answered and its identity was checked
+    // (`sameDevice`: the one that answered before the line was lost).
+    void reestablished(bool sameDevice);
     // Another device number on the same line (Multiuser): another device.
     void targetChanged();
     void deviceCheckedChanged(bool checked);
@@ -112,6 +118,8 @@ private:
     QTimer m_retry;
     LiveFreshness m_freshness;
     bool m_wasLost = false;
+    bool m_reestablishing = false;  // reconnected, the device not checked yet
+    bool m_anotherDevice = false;
     bool m_wantConnected = false;
     bool m_deviceChecked = false;
 };

@@ -137,6 +137,12 @@ void LiveDevicePage::useShellStop(QPushButton* button, std::function<void()> arm
         std::move(armedChanged));
 }
 
+void LiveDevicePage::clearResult() {
+    if (!m_result) return;
+    m_result->clear();
+    m_result->setStyleSheet(QString());
+}
+
 void LiveDevicePage::showResult(const QString& text, bool ok) {
     resultLine()->setText(text);
     resultLine()->setStyleSheet(ok ? QString() : QStringLiteral("color: #d03030;"));

@@ -33,6 +33,9 @@ public:
     virtual bool poll() { return false; }
     // The line went away or another device came: shown values go stale.
     virtual void markStale() {}
+    // Another device came (or another family's): what the last action did
+    // was done to the device before, and is no longer said.
+    void clearResult();
 
     // The page whose poll fills this one (a trend drawn from another
     // page's values); the poll cycle polls and judges that one.

@@ -86,10 +86,13 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
     connect(m_session, &DeviceSession::targetChanged, this, [this] {
         if (m_session->isOnline()) checkDevice();
     });
-    connect(m_session, &DeviceSession::reconnected, this, [this] {
-        showMessage(
-            tr("Connection re-established. Your edits are unchanged; Compare with "
-               "device reads what the device holds now."));
+    // Said only once the device answered and identified itself.
+    connect(m_session, &DeviceSession::reestablished, this, [this](bool sameDevice) {
+        showMessage(sameDevice ? tr("Connection re-established: the same device answers. Your "
+                                    "edits are unchanged; Compare with device reads what the "
+                                    "device holds now.")
+                               : tr("Connection re-established, but another device answers on "
+                                    "this port: see the note at the top."));
     });
     // Quitting is asked in closeEvent; a connect or disconnect asks here.
     m_session->setLeaveCheck(this, [this](const QString& action) {

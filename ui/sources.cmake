@@ -57,6 +57,9 @@ target_sources(cambench_ui PRIVATE
   camcon/write_plan_builder.cpp
   camcon/device_writer.h
   camcon/device_writer.cpp
+  camcon/carry_over.h
+  camcon/device_change_dialog.h
+  camcon/device_change_dialog.cpp
   camcon/replace_edits_dialog.h
   camcon/replace_edits_dialog.cpp
   camcon/incoming_values.h

@@ -184,7 +184,10 @@ void CamConWindow::checkDevice() {
                 }
                 return;
             }
-            if (other) showMessage(m_workspace->otherDeviceNote());
+            if (other)
+                showMessage(m_workspace->otherDeviceNote() + QLatin1Char(' ') +
+                            tr("The start pages are read from it; the rest says \"not read\" "
+                               "until Read everything or Compare."));
             // Another device: what a technician looks at first is read from it
             // (asking where that would replace edits).
             if (pending >= 0 || other)

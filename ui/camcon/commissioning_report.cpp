@@ -101,6 +101,11 @@ private:
                               : QString();
     }
 
+    // Whether the part was read from the device this report is of (a read
+    // time is kept only for reads of the connected device).
+    bool readFromDevice(ProjectPart part) const { return !readTime(part).isEmpty(); }
+    static QString notRead() { return CommissioningReport::tr("not read from this device"); }
+
     // "Read from the device at …" or why not, for a section.
     QString source(ProjectPart part) const {
         const QString time = readTime(part);
@@ -163,7 +168,9 @@ private:
     QString settings() const {
         QString rows;
         const SystemSettings& edited = m_workspace.settings();
-        const SystemSettings& device = m_workspace.deviceSettings();
+        // A device value only where it was read from the connected device.
+        const SystemSettings device =
+            readFromDevice(ProjectPart::Settings) ? m_workspace.deviceSettings() : SystemSettings{};
         for (const SettingSpec& spec : settingSpecs()) {
             const QString key = QString::fromLatin1(spec.key);
             if (!edited.contains(key)) continue;
@@ -172,9 +179,8 @@ private:
             };
             const bool changed = !device.contains(key) || device.value(key) != edited.value(key);
             rows += row({SettingField::labelText(spec),
-                         marked(text(edited.value(key)), changed && m_workspace.settingsKnown(),
-                                device.contains(key) ? text(device.value(key))
-                                                     : CommissioningReport::tr("not read"))});
+                         marked(text(edited.value(key)), changed,
+                                device.contains(key) ? text(device.value(key)) : notRead())});
         }
         QString html = heading(CommissioningReport::tr("Settings")) + source(ProjectPart::Settings);
         return html + (rows.isEmpty() ? paragraph(CommissioningReport::tr("Settings not read."))
@@ -188,11 +194,15 @@ private:
         const DeviceInfo& info = m_workspace.info();
         // Over the device's outputs; dead times where it has them.
         for (int output = 1; output <= info.outputs; ++output) {
-            const std::optional<QString> deviceName = m_cams.deviceOutputName(output);
+            const std::optional<QString> deviceName = readFromDevice(ProjectPart::OutputNames)
+                                                          ? m_cams.deviceOutputName(output)
+                                                          : std::nullopt;
             const QString name = m_cams.outputName(output);
             QString deadTime = QStringLiteral("—");
             if (output <= info.deadTimeOutputs) {
-                const std::optional<qint32> device = m_cams.deviceDeadTime(output);
+                const std::optional<qint32> device = readFromDevice(ProjectPart::DeadTimes)
+                                                         ? m_cams.deviceDeadTime(output)
+                                                         : std::nullopt;
                 deadTime = marked(millisecondsText(m_cams.deadTime(output)),
                                   device && *device != m_cams.deadTime(output),
                                   device ? millisecondsText(*device) : QString());
@@ -210,7 +220,9 @@ private:
     QString deadTimeModes() const {
         const DeadTimeModes& modes = m_workspace.deadTimeModes();
         if (modes.isEmpty()) return {};
-        const DeadTimeModes& onDevice = m_workspace.deviceDeadTimeModes();
+        const DeadTimeModes onDevice = readFromDevice(ProjectPart::DeadTimeModes)
+                                           ? m_workspace.deviceDeadTimeModes()
+                                           : DeadTimeModes{};
         QString rows =
             headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Mode"),
                        CommissioningReport::tr("Dead time"), CommissioningReport::tr("Switch-on"),
@@ -230,8 +242,7 @@ private:
             const bool known = onDevice.contains(it.key());
             const OutputDeadTime device = onDevice.value(it.key());
             const auto cell = [&](const QString& edited, bool differs, const QString& was) {
-                return marked(edited, !known || differs,
-                              known ? was : CommissioningReport::tr("not read"));
+                return marked(edited, !known || differs, known ? was : notRead());
             };
             rows += row(
                 {QString::number(it.key()),
@@ -254,19 +265,21 @@ private:
         const std::optional<bool> lock = copies.eepromLock();
         if (!programming && !lock) return {};
         QString rows;
-        const QString notRead = CommissioningReport::tr("not read");
         if (programming) {
-            const std::optional<ProgrammingProgram>& device = copies.deviceProgrammingProgram();
+            const std::optional<ProgrammingProgram> device =
+                readFromDevice(ProjectPart::ProgrammingProgram) ? copies.deviceProgrammingProgram()
+                                                                : std::nullopt;
             rows += row({CommissioningReport::tr("Programming program"),
                          marked(usecases::programmingProgramText(*programming),
                                 copies.programmingProgramChanged(),
-                                device ? usecases::programmingProgramText(*device) : notRead)});
+                                device ? usecases::programmingProgramText(*device) : notRead())});
         }
         if (lock) {
-            const std::optional<bool>& device = copies.deviceEepromLock();
+            const std::optional<bool> device =
+                readFromDevice(ProjectPart::EepromLock) ? copies.deviceEepromLock() : std::nullopt;
             rows += row({CommissioningReport::tr("EEPROM lock"),
                          marked(usecases::eepromLockText(*lock), copies.eepromLockChanged(),
-                                device ? usecases::eepromLockText(*device) : notRead)});
+                                device ? usecases::eepromLockText(*device) : notRead())});
         }
         return heading(CommissioningReport::tr("Programming program and EEPROM lock")) +
                source(ProjectPart::ProgrammingProgram) + table(rows);
@@ -281,11 +294,12 @@ private:
             const std::optional<AnalogueCamTrack> track = copies.analogueCams(output);
             if (!track) continue;
             any = true;
-            const std::optional<AnalogueCamTrack> device = copies.deviceAnalogueCams(output);
+            const std::optional<AnalogueCamTrack> device = readFromDevice(ProjectPart::AnalogueCams)
+                                                               ? copies.deviceAnalogueCams(output)
+                                                               : std::nullopt;
             rows += row({QString::number(output),
                          marked(usecases::analogueCamsText(*track), !device || *device != *track,
-                                device ? usecases::analogueCamsText(*device)
-                                       : CommissioningReport::tr("not read"))});
+                                device ? usecases::analogueCamsText(*device) : notRead())});
         }
         if (!any) return {};
         return heading(CommissioningReport::tr("Analogue cams")) +

@@ -1,4 +1,6 @@
 #include "compare_dialog.h"
+
+#include "device_change_dialog.h"
 #include "ui/camcon/camcon_jobs.h"
 
 #include "incoming_values.h"
@@ -161,8 +163,36 @@ void CompareDialog::cancelReading() {
     if (m_readJob != 0) m_session->worker().cancel(m_readJob);
 }
 
+QList<WorkspaceItem> CompareDialog::uncheckedItems() const {
+    QList<WorkspaceItem> items;
+    for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* section = m_tree->topLevelItem(i);
+        for (int j = 0; j < section->childCount(); ++j) {
+            const QVariant data = section->child(j)->data(0, kItemRole);
+            if (data.isValid() && section->child(j)->checkState(0) != Qt::Checked)
+                items << data.value<WorkspaceItem>();
+        }
+    }
+    return items;
+}
+
+QString CompareDialog::copyNote() const {
+    const std::optional<Workspace::CarriedFrom>& carried = m_workspace->carriedFrom();
+    if (!carried || carried->carry != CarryOver::Everything) return {};
+    return tr("The edits hold a copy of the values of %1, made when this device came on the line.")
+        .arg(deviceName(carried->device));
+}
+
 void CompareDialog::showDifferences() {
+    // What the person left unticked stays so (a write of the ticked ones
+    // leaves the others different and unticked).
+    const QList<WorkspaceItem> unchecked = uncheckedItems();
     m_tree->clear();
+    const QString copy = copyNote();
+    m_tree->setHeaderLabels({tr("Item"), tr("On the device"),
+                             copy.isEmpty() ? tr("Edited on this PC") : tr("Copy to write")});
+    if (!copy.isEmpty() && !m_source->text().contains(copy))
+        m_source->setText(m_source->text() + QLatin1Char(' ') + copy);
     if (!m_deviceChanges.isEmpty()) {
         auto* section = new QTreeWidgetItem(
             m_tree,
@@ -185,7 +215,7 @@ void CompareDialog::showDifferences() {
         for (const SectionDifference& d : differences) {
             auto* item = new QTreeWidgetItem(section, {d.label, d.device, d.edited});
             item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
-            item->setCheckState(0, Qt::Checked);
+            item->setCheckState(0, unchecked.contains(d.item) ? Qt::Unchecked : Qt::Checked);
             item->setData(0, kItemRole, QVariant::fromValue(d.item));
             for (int column = 0; column < 3; ++column) item->setToolTip(column, item->text(column));
         }
@@ -258,7 +288,9 @@ void CompareDialog::write(bool onlyChecked) {
     m_report->setPlainText(tr("Writing…"));
     writeToDevice(this, m_session, m_workspace, items, [this](const WriteResult& result) {
         const QString details = writeDetails(result);
-        m_report->setPlainText(writeSummary(result) +
+        const QString copy = copyNote();
+        m_report->setPlainText((copy.isEmpty() ? QString() : copy + QLatin1Char('\n')) +
+                               writeSummary(result) +
                                (details.isEmpty() ? QString() : QLatin1Char('\n') + details));
         m_deviceChanges.clear();
         showDifferences();

@@ -49,6 +49,9 @@ Q_SIGNALS:
 
 private:
     void showDifferences();
+    QList<WorkspaceItem> uncheckedItems() const;
+    // Said where the edits are a copy of another device (empty: they are not).
+    QString copyNote() const;
     void write(bool onlyChecked);
     void setBusy(bool busy);
 

@@ -73,6 +73,15 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
     });
     connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
     connect(m_workspace, &Workspace::deadTimeModesIncoming, this, &DeadTimeModesPage::takeIncoming);
+    // Another device: nothing of the old one stays on the page; what the
+    // person carried waits for the new device's rows.
+    connect(m_workspace, &Workspace::deadTimeModesForgotten, this,
+            [this](const DeadTimeModes& carried) {
+                m_device.clear();
+                m_pending = carried;
+                m_table->setRowCount(0);
+                m_note->setText(tr("Not read from this device yet."));
+            });
     m_note->setText(tr("Not read from the device yet."));
     connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
 }

@@ -1,6 +1,7 @@
 #include "device_check.h"
 #include "ui/camcon/camcon_jobs.h"
 
+#include "device_change_dialog.h"
 #include "incoming_values.h"
 #include "ui/device_session.h"
 #include "workspace.h"
@@ -20,14 +21,38 @@ struct Answer {
     DeviceInfo identity;
     bool users = true;
     bool plc = true;
+    bool tableSections = true;
 };
 
-QString identityText(const DeviceInfo& info) {
-    return QCoreApplication::translate("cambench::DeviceCheck",
-                                       "CamCon %1, device number %2, %3 cams programmed")
-        .arg(info.epromDate)
-        .arg(info.deviceNumber)
-        .arg(info.programmedCams);
+// Asks what stays when the person had changed values of the old device;
+// without changes the new device's values are taken.
+CarryOver askWhatStays(QWidget* parent, const Workspace& workspace, const DeviceInfo& before,
+                       const DeviceInfo& now) {
+    const QStringList changes = personsChanges(workspace);
+    if (changes.isEmpty()) return CarryOver::Nothing;
+    DeviceChangeDialog dialog(deviceName(before), deviceName(now), changes, parent);
+    dialog.exec();
+    return dialog.choice();
+}
+
+// The banner while anything of the other device could still be looked for.
+// (The new device is named on the line above it.)
+QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, int carried) {
+    QString note = QCoreApplication::translate(
+                       "cambench::DeviceCheck",
+                       "Another device answers: nothing read from %1 is shown as this one's.")
+                       .arg(deviceName(before));
+    if (carry == CarryOver::Changes)
+        note += QLatin1Char(' ') +
+                QCoreApplication::translate("cambench::DeviceCheck",
+                                            "Your changes (%1) stay, not written yet.")
+                    .arg(carried);
+    if (carry == CarryOver::Everything)
+        note += QLatin1Char(' ') +
+                QCoreApplication::translate("cambench::DeviceCheck",
+                                            "A copy of the values of %1 waits to be written.")
+                    .arg(deviceName(before));
+    return note;
 }
 
 }  // namespace
@@ -47,6 +72,7 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             answer.identity = identity.value();
             answer.users = device.has(comm::CamConCapability::Users);
             answer.plc = device.has(comm::CamConCapability::PlcNetworks);
+            answer.tableSections = device.has(comm::CamConCapability::DeadTimeModes);
             return answer;
         },
         [parent, owner, workspace, done](Result<Answer> result) {
@@ -58,22 +84,20 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
             const std::optional<DeviceInfo> before = workspace->copiesFrom();
             const bool other = !workspace->copiesAreFrom(answer.identity);
             if (other && before) {
-                workspace->forgetDeviceCopies(
-                    QCoreApplication::translate(
-                        "cambench::DeviceCheck",
-                        "Another device answers (%1) than the one the values shown as on the "
-                        "device were read from (%2). Nothing read from that one is shown as this "
-                        "device's any more: the start pages are read again, the rest says \"not "
-                        "read\" until Read everything or Compare. Your edits are kept and count "
-                        "as not written.")
-                        .arg(identityText(answer.identity), identityText(*before)));
+                const CarryOver carry = askWhatStays(parent, *workspace, *before, answer.identity);
+                const int changes = workspace->changedCount();
+                workspace->forgetDeviceCopies(otherDeviceNote(carry, *before, changes), carry);
             }
             if (!answer.users) workspace->forgetDeviceUsers();
             if (!answer.plc) workspace->forgetDevicePlcNetworks();
+            // An earlier device's dead-time modes are not this one's (a
+            // report of a Cam-BUS device showed a 3964R device's).
+            if (!answer.tableSections) workspace->forgetDeviceTableSections();
             Project project;
             project.device = answer.identity;
             project.readAt.parts.insert(ProjectPart::Device, QDateTime::currentDateTimeUtc());
             mergeIncoming(*workspace, project, ValueSource::Device, {});
+            if (owner && other && before) owner->noteAnotherDevice();
             if (owner) owner->setDeviceChecked(true);
             if (done) done(success(), other && before);
         },

@@ -263,15 +263,35 @@ QMap<EditSection, QStringList> editedItemsReplacedBy(const Workspace& workspace,
     return items;
 }
 
+QSet<EditSection> sectionsAwaitingCarried(const Workspace& workspace, const Project& incoming) {
+    const IncomingParts parts = partsOf(incoming, ValueSource::Device);
+    QSet<EditSection> sections;
+    for (int program : parts.programs) {
+        if (workspace.awaitsCarriedProgram(program)) sections << EditSection::Cams;
+    }
+    if (parts.outputSettings && workspace.awaitsCarried(ProjectPart::DeadTimes) &&
+        workspace.awaitsCarried(ProjectPart::OutputNames))
+        sections << EditSection::OutputSettings;
+    if (parts.settings && workspace.awaitsCarried(ProjectPart::Settings))
+        sections << EditSection::Settings;
+    if (parts.users && workspace.awaitsCarried(ProjectPart::Users)) sections << EditSection::Users;
+    if (parts.plc && workspace.awaitsCarried(ProjectPart::PlcNetworks))
+        sections << EditSection::Plc;
+    return sections;
+}
+
 bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming,
                   ValueSource source) {
-    const QMap<EditSection, int> edits = editsReplacedBy(workspace, partsOf(incoming, source));
+    QMap<EditSection, int> edits = editsReplacedBy(workspace, partsOf(incoming, source));
+    // What the person carried from another device was decided on then.
     QSet<EditSection> keep;
+    if (source == ValueSource::Device) keep = sectionsAwaitingCarried(workspace, incoming);
+    for (EditSection section : keep) edits.remove(section);
     if (!edits.isEmpty()) {
         ReplaceEditsDialog dialog(edits, source, parent);
         dialog.setDetails(editedItemsReplacedBy(workspace, incoming, source));
         if (dialog.exec() != QDialog::Accepted) return false;
-        keep = dialog.keptSections();
+        keep += dialog.keptSections();
     }
     mergeIncoming(workspace, incoming, source, keep);
     return true;

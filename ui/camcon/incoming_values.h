@@ -49,6 +49,10 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
 // Parts the workspace had not read are not listed.
 QStringList deviceChanges(const Workspace& workspace, const Project& incoming);
 
+// Sections of a device read that keep what the person carried from another
+// device without asking (read the first time since; see Workspace::carriedFrom).
+QSet<EditSection> sectionsAwaitingCarried(const Workspace& workspace, const Project& incoming);
+
 // mergeIncoming, after asking (ReplaceEditsDialog) when edits would be
 // replaced. False: the user cancelled, and nothing changed.
 bool takeIncoming(QWidget* parent, Workspace& workspace, const Project& incoming,

@@ -118,8 +118,19 @@ void TableSectionCopies::take(const Project& project, bool fromDevice) {
     Q_EMIT changed();
 }
 
-void TableSectionCopies::forgetDeviceCopies() {
-    // What was shown from the old device is no edit: it goes with it.
+void TableSectionCopies::forgetDeviceCopies(CarryOver carry) {
+    // What was shown from the old device is no edit: it goes with it,
+    // unless the person wants it copied to the new device.
+    if (carry == CarryOver::Nothing) {
+        m_analogueEdits.clear();
+        m_programmingEdit.reset();
+        m_lockEdit.reset();
+    } else if (carry == CarryOver::Everything) {
+        for (const AnalogueCamTrack& track : shownAnalogueCams())
+            m_analogueEdits.insert(track.output, track);
+        m_programmingEdit = programmingProgram();
+        m_lockEdit = eepromLock();
+    }
     m_deviceAnalogue.clear();
     m_deviceProgramming.reset();
     m_deviceLock.reset();

@@ -2,6 +2,7 @@
 
 #include "model/camcon/analogue_cams.h"
 #include "model/camcon/programming_program.h"
+#include "ui/camcon/carry_over.h"
 
 #include <QList>
 #include <QMap>
@@ -56,8 +57,8 @@ public:
     // read of everything, edits stay). Sections the project lacks are left.
     void take(const Project& project, bool fromDevice);
     // Another device, or one without these sections: the device copies
-    // mean nothing now; edits stay.
-    void forgetDeviceCopies();
+    // mean nothing now; the edits `carry` says stay.
+    void forgetDeviceCopies(CarryOver carry = CarryOver::Changes);
     void clear();
     // Drops the edit of one section ("Read from device" on its page).
     void dropAnalogueEdit(int output);

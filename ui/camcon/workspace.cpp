@@ -72,6 +72,7 @@ void Workspace::clear(const DeviceInfo& info) {
     m_devicePlc.clear();
     m_copiesFrom.reset();
     m_fingerprintKnown = false;
+    m_carriedFrom.reset();
     clearOtherDeviceNote();
     setInfo(info, false);
     Q_EMIT settingsChanged();
@@ -409,24 +410,62 @@ bool Workspace::copiesAreFrom(const DeviceInfo& now) const {
     return !m_copiesFrom || sameDevice(*m_copiesFrom, now, m_fingerprintKnown);
 }
 
-void Workspace::forgetDeviceCopies(const QString& note) {
-    m_cams->forgetDeviceCopies();
-    m_tableSections->forgetDeviceCopies();
+void Workspace::forgetDeviceCopies(const QString& note, CarryOver carry) {
+    const std::optional<DeviceInfo> from = m_copiesFrom;
+    m_cams->forgetDeviceCopies(carry);
+    m_tableSections->forgetDeviceCopies(carry);
+    forgetDeviceDeadTimeModes(carry);
     m_readAt = {};
-    forgetDeviceSettings();
-    forgetDeviceUsers();
-    forgetDevicePlcNetworks();
+    forgetDeviceSettings(carry);
+    forgetDeviceUsers(carry);
+    forgetDevicePlcNetworks(carry);
     m_copiesFrom.reset();
     m_fingerprintKnown = false;
+    m_carriedFrom.reset();
+    if (from && carry != CarryOver::Nothing) m_carriedFrom = CarriedFrom{*from, carry};
     m_otherDeviceNote = note;
     Q_EMIT readTimesChanged();
     Q_EMIT otherDeviceNoteChanged();
+    notifyChanged();
 }
 
-void Workspace::forgetDeviceSettings() {
+void Workspace::forgetDeviceDeadTimeModes(CarryOver carry) {
+    DeadTimeModes carried;
+    const QList<int> changed = changedDeadTimeModes();
+    for (auto it = m_deadTimeModes.cbegin(); it != m_deadTimeModes.cend(); ++it) {
+        if (carry == CarryOver::Everything ||
+            (carry == CarryOver::Changes && changed.contains(it.key())))
+            carried.insert(it.key(), *it);
+    }
+    m_deadTimeModes = carried;
+    m_deviceDeadTimeModes.clear();
+    m_readAt.parts.remove(ProjectPart::DeadTimeModes);
+    Q_EMIT deadTimeModesForgotten(carried);
+}
+
+void Workspace::forgetDeviceTableSections() {
+    forgetDeviceDeadTimeModes(CarryOver::Changes);
+    m_tableSections->forgetDeviceCopies(CarryOver::Changes);
+    for (ProjectPart part :
+         {ProjectPart::AnalogueCams, ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
+        m_readAt.parts.remove(part);
+    Q_EMIT readTimesChanged();
+    notifyChanged();
+}
+
+bool Workspace::awaitsCarried(ProjectPart part) const {
+    return m_carriedFrom && !m_readAt.parts.contains(part);
+}
+
+bool Workspace::awaitsCarriedProgram(int program) const {
+    return m_carriedFrom && !m_readAt.programs.contains(program);
+}
+
+void Workspace::forgetDeviceSettings(CarryOver carry) {
     const QStringList edited = changedSettings();
     for (const QString& key : m_settings.keys()) {
-        if (!edited.contains(key)) m_settings.remove(key);
+        if (carry == CarryOver::Nothing || (carry == CarryOver::Changes && !edited.contains(key)))
+            m_settings.remove(key);
     }
     m_deviceSettings.clear();
     m_settingsKnown = false;
@@ -435,11 +474,13 @@ void Workspace::forgetDeviceSettings() {
     notifyChanged();
 }
 
-void Workspace::forgetDeviceUsers() {
+void Workspace::forgetDeviceUsers(CarryOver carry) {
     QList<EditedUser> kept;
-    for (int i = 0; i < m_users.size(); ++i) {
-        // A user's place on the old device means nothing on this one.
-        if (userChanged(i)) kept << EditedUser{m_users.at(i).user, QString()};
+    for (int i = 0; i < m_users.size() && carry != CarryOver::Nothing; ++i) {
+        // A user's place on the old device means nothing on this one: a
+        // carried user is added to it.
+        if (carry == CarryOver::Everything || userChanged(i))
+            kept << EditedUser{m_users.at(i).user, QString()};
     }
     m_users = kept;
     m_deviceUsers.clear();
@@ -449,10 +490,11 @@ void Workspace::forgetDeviceUsers() {
     notifyChanged();
 }
 
-void Workspace::forgetDevicePlcNetworks() {
+void Workspace::forgetDevicePlcNetworks(CarryOver carry) {
     const QList<int> edited = changedPlcNetworks();
     for (const int key : m_plc.keys()) {
-        if (!edited.contains(key)) m_plc.remove(key);
+        if (carry == CarryOver::Nothing || (carry == CarryOver::Changes && !edited.contains(key)))
+            m_plc.remove(key);
     }
     m_devicePlc.clear();
     m_readAt.parts.remove(ProjectPart::PlcNetworks);

@@ -12,6 +12,7 @@
 
 #include <QObject>
 #include "model/camcon/dead_time_modes.h"
+#include "ui/camcon/carry_over.h"
 
 #include <optional>
 
@@ -145,14 +146,31 @@ public:
     // copies were read from (true when there are none to compare with).
     bool copiesAreFrom(const DeviceInfo& now) const;
     // Another device answers: every device copy and read time is forgotten
-    // (see CamDocument::forgetDeviceCopies); edits stay and count as not on
-    // the device. `note` says so until the next read from the device.
-    void forgetDeviceCopies(const QString& note);
+    // (see CamDocument::forgetDeviceCopies), and with them what was only
+    // the old device's; of the edits, what `carry` says stays and counts as
+    // not on the device, and a read of the new device keeps it over its
+    // values without asking (takeIncoming). `note` says so until the next
+    // read of everything.
+    void forgetDeviceCopies(const QString& note, CarryOver carry);
     // A section the connected protocol lacks: its device copy is not this
     // device's state and is forgotten, edits stay.
-    void forgetDeviceUsers();
-    void forgetDeviceSettings();
-    void forgetDevicePlcNetworks();
+    void forgetDeviceUsers(CarryOver carry = CarryOver::Changes);
+    void forgetDeviceSettings(CarryOver carry = CarryOver::Changes);
+    void forgetDevicePlcNetworks(CarryOver carry = CarryOver::Changes);
+    // The table interface's sections (dead-time modes, analogue cams,
+    // programming program, EEPROM lock) on a protocol without them.
+    void forgetDeviceTableSections();
+    // After another device answered: which device the edits were carried
+    // from and how (nullopt: no device change, or nothing carried).
+    struct CarriedFrom {
+        DeviceInfo device;
+        CarryOver carry = CarryOver::Changes;
+    };
+    const std::optional<CarriedFrom>& carriedFrom() const { return m_carriedFrom; }
+    // Whether a section's values are yet to be read from the device since
+    // edits were carried to it: such a read keeps them without asking.
+    bool awaitsCarried(ProjectPart part) const;
+    bool awaitsCarriedProgram(int program) const;
     QString otherDeviceNote() const { return m_otherDeviceNote; }
     void clearOtherDeviceNote();
 
@@ -167,9 +185,13 @@ Q_SIGNALS:
     void otherDeviceNoteChanged();
     // Modes from a project file (edits for the page) or from the device.
     void deadTimeModesIncoming(const DeadTimeModes& modes, bool fromDevice);
+    // Another device: the page forgets its copy and keeps `carried` as edits
+    // for the new device's rows.
+    void deadTimeModesForgotten(const DeadTimeModes& carried);
 
 private:
     void notifyChanged();
+    void forgetDeviceDeadTimeModes(CarryOver carry);
     DeadTimeModes m_deadTimeModes;
     DeadTimeModes m_deviceDeadTimeModes;
     QString deviceNumberFor(const User& user) const;
@@ -193,6 +215,7 @@ private:
     std::optional<DeviceInfo> m_copiesFrom;
     bool m_fingerprintKnown = false;
     QString m_otherDeviceNote;
+    std::optional<CarriedFrom> m_carriedFrom;
 };
 
 }  // namespace cambench

@@ -268,4 +268,12 @@ void Compax3ParametersPage::writeFile(bool selectedOnly) {
         });
 }
 
+void Compax3ParametersPage::factsChanged() {
+    if (facts().known) return;
+    m_file->setText(tr("No file compared yet."));
+    m_table->setRowCount(0);
+    m_set.reset();
+    m_path.clear();
+}
+
 }  // namespace cambench

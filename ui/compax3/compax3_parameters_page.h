@@ -33,6 +33,11 @@ public:
     QCheckBox* forceBox() const { return m_force; }
     QCheckBox* storeBox() const { return m_store; }
 
+protected:
+    // Another drive (or none): an earlier comparison's file header, result
+    // and differences were the drive before's.
+    void factsChanged() override;
+
 private:
     Compax3Gui* m_gui;
     QLabel* m_file;

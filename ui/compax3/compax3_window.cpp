@@ -77,6 +77,8 @@ void Compax3Window::deviceOnLine(bool load) {
     m_compax3->setIdentity({});
     m_compax3->session()->setDeviceChecked(false);
     setFacts({});
+    // Nothing the pages said of the device before is said of this one.
+    for (LiveDevicePage* page : compax3Pages()) page->clearResult();
     m_compax3->session()->run<comm::Compax3Device, Compax3Identity>(
         this, tr("Identify drive"),
         [](comm::Compax3Device& device, comm::JobContext&) { return device.identity(); },

@@ -68,6 +68,8 @@ void Mc1Window::deviceOnLine(bool load) {
     m_mc1->setIdentity({});
     m_mc1->session()->setDeviceChecked(false);
     setFacts({});
+    // Nothing the pages said of the device before is said of this one.
+    for (LiveDevicePage* page : mc1Pages()) page->clearResult();
     struct Found {
         Mc1Facts facts;
         QString identity;

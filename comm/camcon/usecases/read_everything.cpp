@@ -1,6 +1,7 @@
 #include "read_everything.h"
 
 #include "model/camcon/data_validation.h"
+#include "model/camcon/system_settings.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -8,6 +9,21 @@
 namespace cambench::usecases {
 
 namespace {
+
+// "?GTXT1 (key1, key2)", a page the device does not know, as the labels a
+// person sees on the Settings page ("Encoder text 1, Encoder text 2").
+QString settingLabels(const QString& page) {
+    const qsizetype open = page.indexOf(QLatin1Char('('));
+    const qsizetype close = page.lastIndexOf(QLatin1Char(')'));
+    if (open < 0 || close < open) return page;
+    QStringList labels;
+    for (const QString& key : page.mid(open + 1, close - open - 1).split(QStringLiteral(", "))) {
+        const SettingSpec* spec = findSetting(key.trimmed());
+        labels << (spec && *spec->label ? QCoreApplication::translate("Settings", spec->label)
+                                        : key.trimmed());
+    }
+    return labels.join(QStringLiteral(", "));
+}
 
 using comm::CamConCapability;
 using comm::CamConDevice;
@@ -87,9 +103,8 @@ private:
         for (const QString& page : unknown) {
             m_result.skipped << QCoreApplication::translate(
                                     "cambench::usecases",
-                                    "Settings: the device does not know %1; they are "
-                                    "not in the project.")
-                                    .arg(page);
+                                    "Settings the device does not know, not read: %1.")
+                                    .arg(settingLabels(page));
         }
         return success();
     }

@@ -197,7 +197,7 @@ Result<QList<Compax3Write>> checkRestore(const Compax3Identity& drive,
                 "cambench::usecases",
                 "the file is from a drive of type %1 (\"%2\"), the connected drive is of type %3 "
                 "(\"%4\"): nothing was written. Restore it with --force (GUI: \"Write to another "
-                "type\") only if you know the objects mean the same on both")
+                "drive type\") only if you know the objects mean the same on both")
                 .arg(set.drive.type(), set.drive.info, drive.type(), drive.info));
     QSet<Compax3ObjectId> inFile;
     QList<Compax3Write> writes;

@@ -38,18 +38,21 @@ QPushButton* connectButton(ConnectionPage* page) {
     return nullptr;
 }
 
-// Selects the port box's text, types `port`, presses Enter, clicks Connect.
-bool typeAndConnect(Shell& shell, const QString& port) {
+// Selects the port box's text and types `port`.
+bool typePort(Shell& shell, const QString& port) {
     shell.window()->showSection(MainWindow::Connection);
-    ConnectionPage* page = shell.window()->connectionPage();
-    QComboBox* box = portBox(page);
-    QPushButton* connect = connectButton(page);
-    if (!box || !connect) return false;
+    QComboBox* box = portBox(shell.window()->connectionPage());
+    if (!box) return false;
     box->lineEdit()->selectAll();
     QTest::keyClick(box->lineEdit(), Qt::Key_Backspace);
     QTest::keyClicks(box->lineEdit(), port);
-    QTest::keyClick(box->lineEdit(), Qt::Key_Return);
-    QTest::mouseClick(connect, Qt::LeftButton);
+    return true;
+}
+
+// Types `port` and presses Enter: that connects (issue 28, point 5).
+bool typeAndConnect(Shell& shell, const QString& port) {
+    if (!typePort(shell, port)) return false;
+    QTest::keyClick(portBox(shell.window()->connectionPage())->lineEdit(), Qt::Key_Return);
     return true;
 }
 
@@ -77,6 +80,8 @@ private Q_SLOTS:
     void typedDeviceServerAddressConnects();
     void failedConnectIsSaidOnScreen();
     void simulatedDeviceIsSaidOnTheConnectionPage();
+    void theButtonSaysConnectForAnotherPort();
+    void disconnectStopsTheRetries();
 };
 
 void TypedPortTest::typedPtyConnectsAndShowsThatDevice() {
@@ -154,6 +159,41 @@ void TypedPortTest::simulatedDeviceIsSaidOnTheConnectionPage() {
     QVERIFY(typeAndConnect(*shell, other.path()));
     QVERIFY(connectedAndChecked(*shell, other.path()));
     QVERIFY(!note->isVisible());
+}
+
+void TypedPortTest::theButtonSaysConnectForAnotherPort() {
+    PtySimulator first;
+    auto shell = startOnPty(first);
+    QVERIFY(shell);
+    ConnectionPage* page = shell->window()->connectionPage();
+    QVERIFY(typePort(*shell, first.path()));
+    QCOMPARE(connectButton(page)->text(), QStringLiteral("Reconnect"));
+    PtySimulator other;
+    QVERIFY(typePort(*shell, other.path()));
+    QCOMPARE(connectButton(page)->text(), QStringLiteral("Connect"));
+    // Scan bus is not offered on a point-to-point line.
+    QPushButton* scan = nullptr;
+    for (QPushButton* button : page->findChildren<QPushButton*>())
+        if (button->text() == QLatin1String("Scan bus")) scan = button;
+    QVERIFY(scan);
+    QVERIFY(!scan->isVisibleTo(page));
+}
+
+void TypedPortTest::disconnectStopsTheRetries() {
+    auto sim = std::make_unique<PtySimulator>();
+    auto shell = startOnPty(*sim);
+    QVERIFY(shell);
+    shell->session()->setRetryInterval(100);
+    sim->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(shell->session()->isRetrying(), kDeviceTimeoutMs);
+    QPushButton* disconnect = nullptr;
+    for (QPushButton* button : shell->window()->connectionPage()->findChildren<QPushButton*>())
+        if (button->text() == QLatin1String("Disconnect")) disconnect = button;
+    QVERIFY(disconnect);
+    QTRY_VERIFY_WITH_TIMEOUT(disconnect->isEnabled(), kDeviceTimeoutMs);
+    QTest::mouseClick(disconnect, Qt::LeftButton);
+    QVERIFY(!shell->session()->isRetrying());
+    QVERIFY(!shell->session()->wantsConnection());
 }
 
 QTEST_MAIN(TypedPortTest)

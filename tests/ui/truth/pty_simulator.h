@@ -19,8 +19,10 @@ namespace cambench::test {
 // command, fall silent, or pulls the cable.
 class PtySimulator {
 public:
-    explicit PtySimulator(bool throttle = false, int baud = 9600) {
+    // More than one device number: a Multiuser line.
+    explicit PtySimulator(bool throttle = false, int baud = 9600, const QList<int>& devices = {0}) {
         comm::SimPortConfig config;
+        config.devices = devices;
         config.baud = baud;
         config.throttle = throttle;
         m_line = comm::makeSimLine(config);
@@ -34,14 +36,14 @@ public:
     bool isOpen() const { return m_open; }
     QString path() const { return m_path; }
     comm::SimLine& line() { return *m_line; }
-    comm::SimDevice& device() { return *m_line->device(0); }
+    comm::SimDevice& device(int number = 0) { return *m_line->device(number); }
     comm::SimInjections& injections() { return m_line->injections(); }
 
     // Commands ('!') the device received since the log was last cleared.
     int commandsReceived() const { return m_line->injections().commands(); }
     // The device's cams of `output` (1-based) in `program`.
-    QList<Cam> track(int program, int output) {
-        return device().state().cams.track(program, output - 1);
+    QList<Cam> track(int program, int output, int number = 0) {
+        return device(number).state().cams.track(program, output - 1);
     }
 
     // The device stops answering (a cable pulled at the device's end).

@@ -8,12 +8,14 @@
 #include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
+#include "ui/camcon/device_change_dialog.h"
 #include "ui/camcon/device_writer.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace cambench;
@@ -57,7 +59,127 @@ private Q_SLOTS:
     void aDeviceChangedBehindThePcIsNotWrittenFromTheOldCopy();
     void theSameDeviceAgainKeepsItsCopies();
     void readProgramRefreshesNamesAndDeadTimes();
+    // Issue 28, point 1: an edit is what the person changed, nothing else.
+    void theNewDevicesValuesAreTheDefault();
+    void keptChangesAreOnlyWhatThePersonChanged();
+    void aCopyOfTheOldDeviceIsWrittenAsACopy();
+    void aMultiuserNumberChangeCarriesOnlyTheChanges();
+    // Issue 28, point 3.
+    void reEstablishedOnlyOnceTheDeviceIdentifiedItself();
 };
+
+namespace {
+
+// Device A (the demo) read, one cam of program 0 output 1 changed, then
+// device B (two cams on every track) on another port: the question is
+// answered with `carry`. Returns the dialog's list of changes.
+struct DeviceChange {
+    QString changes;
+    int replaceQuestions = 0;
+    QList<Cam> mine;  // program 0, output 1 as the person changed it
+};
+DeviceChange changeDevice(Shell& shell, const std::function<void()>& toOther,
+                          std::optional<CarryOver> carry) {
+    CamDocument* cams = camConWorkspace(shell)->cams();
+    cams->setCam(0, 1, 0, {25, 60});
+    DeviceChange change;
+    change.mine = cams->track(0, 1).cams;
+    NextDialog<DeviceChangeDialog> question([&](DeviceChangeDialog* dialog) {
+        change.changes = dialog->changesText();
+        if (carry) dialog->choose(*carry);
+        dialog->accept();
+    });
+    const auto replace = answerReplaceEdits(false);
+    toOther();
+    (void)QTest::qWaitFor(
+        [&] {
+            return shell.session()->deviceChecked() &&
+                   camConWorkspace(shell)->readTimes().programs.contains(0) &&
+                   camConWorkspace(shell)->readTimes().parts.contains(ProjectPart::OutputNames);
+        },
+        kDeviceTimeoutMs);
+    change.replaceQuestions = replace->answered();
+    if (question.answered() != 1) change.changes = QStringLiteral("<not asked>");
+    return change;
+}
+
+// Device A (the demo) with the GUI on it, and device B (two cams on every
+// track) on another pseudo-terminal.
+struct TwoDevices {
+    PtySimulator a;
+    PtySimulator b;
+    std::unique_ptr<Shell> shell;
+    TwoDevices() {
+        comm::fillBenchmarkCams(b.device(), 2);
+        shell = startOnPty(a);
+    }
+    DeviceChange toB(std::optional<CarryOver> carry) {
+        return changeDevice(
+            *shell, [this] { connectToPort(*shell, b.path()); }, carry);
+    }
+};
+
+}  // namespace
+
+void OtherDeviceTest::theNewDevicesValuesAreTheDefault() {
+    TwoDevices devices;
+    QVERIFY(devices.shell);
+    const DeviceChange change = devices.toB(std::nullopt);
+    QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: 25–60")),
+             qPrintable(change.changes));
+    QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);  // one change, one line
+    CamDocument* cams = camConWorkspace(*devices.shell)->cams();
+    QCOMPARE(cams->track(0, 1).cams, devices.b.track(0, 1));
+    QCOMPARE(cams->track(0, 3).cams, devices.b.track(0, 3));
+    QCOMPARE(camConWorkspace(*devices.shell)->changedCount(), 0);
+    QVERIFY(!camConWorkspace(*devices.shell)->carriedFrom());
+}
+
+void OtherDeviceTest::keptChangesAreOnlyWhatThePersonChanged() {
+    TwoDevices devices;
+    QVERIFY(devices.shell);
+    const DeviceChange change = devices.toB(CarryOver::Changes);
+    QCOMPARE(change.replaceQuestions, 0);  // decided once, not asked again per read
+    QVERIFY2(!change.changes.contains(QStringLiteral("output 2")), qPrintable(change.changes));
+    Workspace* workspace = camConWorkspace(*devices.shell);
+    CamDocument* cams = workspace->cams();
+    // The change, applied to B's values; every other item is B's.
+    QCOMPARE(cams->track(0, 1).cams, change.mine);
+    QCOMPARE(cams->trackState(0, 1), ChangeState::Edited);
+    for (int output = 2; output <= workspace->info().outputs; ++output) {
+        QCOMPARE(cams->track(0, output).cams, devices.b.track(0, output));
+        QCOMPARE(cams->trackState(0, output), ChangeState::Unchanged);
+    }
+    QCOMPARE(cams->programName(0), cams->deviceProgram(0)->name);
+    QCOMPARE(workspace->changedCount(), 1);
+    // The banner's text (the strip shows it while the line answers).
+    QVERIFY2(workspace->otherDeviceNote().contains(QStringLiteral("Your changes (1) stay")),
+             qPrintable(workspace->otherDeviceNote()));
+    // A program never read from B holds nothing of A's.
+    QVERIFY(cams->track(1, 1).cams.isEmpty() || cams->track(1, 1).cams == devices.b.track(1, 1));
+}
+
+void OtherDeviceTest::aCopyOfTheOldDeviceIsWrittenAsACopy() {
+    TwoDevices devices;
+    QVERIFY(devices.shell);
+    const QList<Cam> demoOutput3 = devices.a.track(0, 3);
+    QVERIFY(demoOutput3 != devices.b.track(0, 3));
+    const DeviceChange change = devices.toB(CarryOver::Everything);
+    QCOMPARE(change.replaceQuestions, 0);
+    Workspace* workspace = camConWorkspace(*devices.shell);
+    QVERIFY(workspace->carriedFrom().has_value());
+    QCOMPARE(workspace->carriedFrom()->carry, CarryOver::Everything);
+    CamDocument* cams = workspace->cams();
+    QCOMPARE(cams->track(0, 3).cams, demoOutput3);
+    QCOMPARE(cams->trackState(0, 3), ChangeState::Edited);
+    QVERIFY2(workspace->otherDeviceNote().contains(QStringLiteral("A copy of the values of")),
+             qPrintable(workspace->otherDeviceNote()));
+    const std::optional<WriteResult> result = writeProgram(*devices.shell, 0);
+    QVERIFY(result.has_value());
+    QVERIFY2(result->ok(), qPrintable(writeSummary(*result)));
+    QCOMPARE(devices.b.track(0, 3), demoOutput3);
+    QCOMPARE(devices.b.track(0, 1), change.mine);
+}
 
 void OtherDeviceTest::anotherPortShowsTheNewDeviceAndWritesOnlyWhatItHolds() {
     PtySimulator demo;
@@ -159,6 +281,56 @@ void OtherDeviceTest::readProgramRefreshesNamesAndDeadTimes() {
     QTRY_COMPARE_WITH_TIMEOUT(workspace->cams()->outputName(2), QStringLiteral("Glue"),
                               kDeviceTimeoutMs);
     QCOMPARE(workspace->deviceDeadTime(2), 35);
+}
+
+void OtherDeviceTest::aMultiuserNumberChangeCarriesOnlyTheChanges() {
+    PtySimulator line(false, 38400, {0, 5});
+    QVERIFY(line.isOpen());
+    comm::fillBenchmarkCams(line.device(5), 2);
+    auto shell = startOnSimulator(line.path(), QStringLiteral("multiuser"));
+    QVERIFY(shell);
+    const DeviceChange change = changeDevice(
+        *shell, [&] { shell->session()->setDevice(5); }, CarryOver::Changes);
+    QCOMPARE(change.replaceQuestions, 0);
+    QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: ")),
+             qPrintable(change.changes));
+    QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    QCOMPARE(cams->track(0, 1).cams, change.mine);
+    QCOMPARE(cams->track(0, 2).cams, line.track(0, 2, 5));
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 1);
+    QCOMPARE(camConWorkspace(*shell)->info().deviceNumber, 5);
+}
+
+void OtherDeviceTest::reEstablishedOnlyOnceTheDeviceIdentifiedItself() {
+    // The port is a name (a symlink, as udev's by-id names are): the device
+    // behind it goes, and another program's device appears under the name.
+    QTemporaryDir dir;
+    const QString port = dir.filePath(QStringLiteral("ttyPLANT"));
+    auto a = std::make_unique<PtySimulator>();
+    QVERIFY(QFile::link(a->path(), port));
+    auto shell = startOnSimulator(port);
+    QVERIFY(shell);
+    DeviceSession* session = shell->session();
+    session->setRetryInterval(100);
+    QSignalSpy reconnected(session, &DeviceSession::reconnected);
+    QSignalSpy reestablished(session, &DeviceSession::reestablished);
+    int reestablishedAtReconnect = -1;
+    connect(session, &DeviceSession::reconnected, this,
+            [&] { reestablishedAtReconnect = int(reestablished.size()); });
+    a->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(session->isRetrying(), kDeviceTimeoutMs);
+    PtySimulator b;
+    comm::fillBenchmarkCams(b.device(), 2);
+    QVERIFY(QFile::remove(port));
+    QVERIFY(QFile::link(b.path(), port));
+    QTRY_VERIFY_WITH_TIMEOUT(reestablished.size() == 1, kDeviceTimeoutMs);
+    QCOMPARE(reconnected.size(), 1);
+    QCOMPARE(reestablishedAtReconnect, 0);  // not said on the bare line
+    QVERIFY(session->deviceChecked());
+    QCOMPARE(reestablished.first().first().toBool(), false);  // another device, said so
+    QTRY_VERIFY2_WITH_TIMEOUT(stripText(*shell).contains(QStringLiteral("Another device answers")),
+                              qPrintable(stripText(*shell)), kDeviceTimeoutMs);
 }
 
 QTEST_MAIN(OtherDeviceTest)

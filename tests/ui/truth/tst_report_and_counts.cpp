@@ -22,6 +22,8 @@
 #include <QMessageBox>
 #include <QTemporaryDir>
 #include <QTextBlock>
+#include "comm/device/protocol_registry.h"
+
 #include <QTextDocument>
 #include <QtTest>
 
@@ -61,6 +63,7 @@ private Q_SLOTS:
     void reportDiagramIsDrawnForPrintWithAllOutputs();
     void noHeadingStandsAloneAtAPageFoot();
     void reportMinimumCycleTimeIsInMilliseconds();
+    void reportShowsOnlyValuesOfTheConnectedDevice();
     void deadTimeWriteCountsOverTheDevicesOutputs();
     void userWriteCountsTheUnchangedUsers();
     void backupGivesNoGuessedTimeLeft();
@@ -311,6 +314,44 @@ void ReportAndCountsTest::reportMinimumCycleTimeIsInMilliseconds() {
         return;
     }
     QFAIL("no setting targetCycleTime");
+}
+
+void ReportAndCountsTest::reportShowsOnlyValuesOfTheConnectedDevice() {
+    // Issue 28, point 2: a 3964R device's dead-time modes read, then a
+    // Cam-BUS device on the line: its report shows no device value of the
+    // first, and says the section was not read from this device.
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("3964r-n96"));
+    QVERIFY(shell);
+    Workspace* workspace = camConWorkspace(*shell);
+    QSignalSpy done(camConWindow(shell->window()), &CamConWindow::everythingRead);
+    camConWindow(shell->window())->readEverything(0);
+    QVERIFY(done.wait(kDeviceTimeoutMs));
+    QTRY_VERIFY_WITH_TIMEOUT(!workspace->deviceDeadTimeModes().isEmpty(), kDeviceTimeoutMs);
+    const OutputDeadTime first = workspace->deadTimeModes().value(1);
+    OutputDeadTime edited = first;
+    edited.normal += 10;
+    DeadTimeModes modes = workspace->deadTimeModes();
+    modes.insert(1, edited);
+    workspace->noteDeadTimeModes(modes, workspace->deviceDeadTimeModes());
+    QVERIFY(reportText(*workspace).contains(QStringLiteral("(device: ")));
+
+    const comm::ProtocolInfo* cambus =
+        comm::ProtocolRegistry::instance().find(QStringLiteral("cambus"));
+    QVERIFY(cambus);
+    comm::ConnectionSettings connection = shell->session()->connection();
+    connection.protocol = cambus->id;
+    connection.serial = cambus->defaultSerial;
+    shell->session()->connectTo(connection, comm::ProtocolSettingsPtr(cambus->makeSettings()));
+    QTRY_VERIFY_WITH_TIMEOUT(shell->session()->isOnline() && shell->session()->deviceChecked(),
+                             kDeviceTimeoutMs);
+    QVERIFY(workspace->deviceDeadTimeModes().isEmpty());
+    const QString text = reportText(*workspace);
+    const QString section = text.section(QStringLiteral("Dead-time modes"), 1);
+    QVERIFY2(!section.isEmpty(), qPrintable(text));
+    QCOMPARE(section.count(QStringLiteral("(device: ")),
+             section.count(QStringLiteral("(device: not read from this device)")));
+    // The edit stays, said as not read from this device.
+    QVERIFY2(text.contains(QStringLiteral("not read from this device")), qPrintable(text));
 }
 
 QTEST_MAIN(ReportAndCountsTest)

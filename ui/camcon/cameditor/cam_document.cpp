@@ -64,11 +64,14 @@ void CamDocument::mergeProgram(const CamProgram& incoming, bool fromDevice, bool
     const std::optional<CamProgram> oldDevice = deviceProgram(number);
     const bool hadEdits = programEdited(number);
     CamProgram after = clean;
+    // Items carried from another device: those, and only those, are edits.
+    const bool carried = !oldDevice && carryEdits(number);
     if (keepEdits && hadEdits) {
         // Item by item: what differs from the old device copy is an edit.
         QList<int> outputs = before.tracks.keys() + clean.tracks.keys();
         if (oldDevice) outputs += oldDevice->tracks.keys();
         for (int output : outputs) {
+            if (carried && !carriedTrack(number, output)) continue;
             const Track mine = trackOf(before, output);
             if (oldDevice && mine.cams == trackOf(*oldDevice, output).cams) continue;
             if (mine.cams.isEmpty()) {
@@ -77,7 +80,15 @@ void CamDocument::mergeProgram(const CamProgram& incoming, bool fromDevice, bool
                 after.tracks.insert(output, mine);
             }
         }
-        if (!oldDevice || before.name != oldDevice->name) after.name = before.name;
+        if (carried ? m_carriedProgramNames.contains(number)
+                    : !oldDevice || before.name != oldDevice->name)
+            after.name = before.name;
+    }
+    if (fromDevice || !keepEdits) {
+        // The carried items met this device's values: edits from now on.
+        m_carriedProgramNames.remove(number);
+        for (int output = 1; output <= m_info.outputs; ++output)
+            m_carriedTracks.remove(trackKey(number, output));
     }
     if (fromDevice) {
         m_device.insert(number, clean);
@@ -101,6 +112,10 @@ void CamDocument::clear() {
     m_edited.clear();
     m_device.clear();
     m_unknownTracks.clear();
+    m_carriedTracks.clear();
+    m_carriedProgramNames.clear();
+    m_carriedOutputNames.clear();
+    m_carriedDeadTimes.clear();
     m_names = {};
     m_deadTimes.clear();
     m_deviceOutputNames.clear();
@@ -117,6 +132,7 @@ void CamDocument::clear() {
 }
 
 bool CamDocument::programEdited(int program) const {
+    if (carryEdits(program)) return true;
     if (!m_edited.contains(program)) return false;
     const CamProgram edited = this->program(program);
     if (!m_device.contains(program)) return !edited.tracks.isEmpty() || !edited.name.isEmpty();
@@ -130,10 +146,16 @@ void CamDocument::mergeOutputSettings(const QMap<int, QString>& outputNames,
     DeadTimes times = deadTimes;
     const bool edited = outputSettingsEditCount() > 0;
     for (int output = 1; output <= m_info.outputs; ++output) {
-        const bool nameEdited = m_names.outputs.value(output) != m_deviceOutputNames.value(output);
-        const bool timeEdited = m_deadTimes.value(output) != m_deviceDeadTimes.value(output);
+        const bool nameEdited = m_carriedOutputNames.contains(output) ||
+                                m_names.outputs.value(output) != m_deviceOutputNames.value(output);
+        const bool timeEdited = m_carriedDeadTimes.contains(output) ||
+                                m_deadTimes.value(output) != m_deviceDeadTimes.value(output);
         if (keepEdits && nameEdited) names.insert(output, m_names.outputs.value(output));
         if (keepEdits && timeEdited) times.insert(output, m_deadTimes.value(output));
+    }
+    if (fromDevice || !keepEdits) {
+        m_carriedOutputNames.clear();
+        m_carriedDeadTimes.clear();
     }
     if (fromDevice) {
         m_deviceOutputNames = outputNames;
@@ -258,20 +280,67 @@ void CamDocument::forgetDeviceProgram(int program) {
     notifyChangedCount();
 }
 
-void CamDocument::forgetDeviceCopies() {
-    const QList<int> programs = m_device.keys();
-    for (int program : programs) {
-        if (!programEdited(program)) m_edited.remove(program);
+void CamDocument::forgetDeviceCopies(CarryOver carry) {
+    const bool all = carry == CarryOver::Everything;
+    QMap<int, CamProgram> kept;
+    QSet<quint32> tracks;
+    QSet<int> programNames;
+    for (auto it = m_edited.cbegin(); carry != CarryOver::Nothing && it != m_edited.cend(); ++it) {
+        const int number = it.key();
+        const CamProgram shown = program(number);
+        const bool read = m_device.contains(number);
+        CamProgram carried;
+        carried.number = number;
+        for (int output = 1; output <= m_info.outputs; ++output) {
+            const Track mine = trackOf(shown, output);
+            // Without the device's track, what the program holds is the
+            // person's (typed, or from a project): an empty track is no change.
+            const bool changed = deviceTrackKnown(number, output)
+                                     ? mine.cams != trackOf(m_device.value(number), output).cams
+                                     : !mine.cams.isEmpty();
+            if (!changed && !(all && read)) continue;
+            tracks.insert(trackKey(number, output));
+            if (!mine.cams.isEmpty()) carried.tracks.insert(output, mine);
+        }
+        const bool nameChanged =
+            read ? shown.name != m_device.value(number).name : !shown.name.isEmpty();
+        if (nameChanged || (all && read)) {
+            programNames.insert(number);
+            carried.name = shown.name;
+        }
+        if (!carried.tracks.isEmpty() || !carried.name.isEmpty()) kept.insert(number, carried);
     }
+    QSet<int> outputNames;
+    QSet<int> deadTimes;
+    for (int output = 1; carry != CarryOver::Nothing && output <= m_info.outputs; ++output) {
+        const QString name = m_names.outputs.value(output);
+        const qint32 deadTime = m_deadTimes.value(output);
+        const bool known = m_outputSettingsKnown;
+        if (known ? name != m_deviceOutputNames.value(output) || all : !name.isEmpty())
+            outputNames.insert(output);
+        if (known ? deadTime != m_deviceDeadTimes.value(output) || all : deadTime != 0)
+            deadTimes.insert(output);
+    }
+    QList<int> programs = m_edited.keys() + m_device.keys();
+    std::sort(programs.begin(), programs.end());
+    programs.erase(std::unique(programs.begin(), programs.end()), programs.end());
+    m_undoStack->clear();
+    m_edited = kept;
     m_device.clear();
     m_unknownTracks.clear();
-    if (outputSettingsEditCount() == 0) {
-        m_names.outputs.clear();
-        m_deadTimes.clear();
-    }
+    QMap<int, QString> names;
+    DeadTimes times;
+    for (int output : outputNames) names.insert(output, m_names.outputs.value(output));
+    for (int output : deadTimes) times.insert(output, m_deadTimes.value(output));
+    m_names.outputs = names;
+    m_deadTimes = times;
     m_deviceOutputNames.clear();
     m_deviceDeadTimes.clear();
     m_outputSettingsKnown = false;
+    m_carriedTracks = tracks;
+    m_carriedProgramNames = programNames;
+    m_carriedOutputNames = outputNames;
+    m_carriedDeadTimes = deadTimes;
     for (int program : programs) Q_EMIT programChanged(program);
     for (int output = 1; output <= m_info.outputs; ++output) {
         Q_EMIT outputNameChanged(output);
@@ -279,6 +348,21 @@ void CamDocument::forgetDeviceCopies() {
     }
     Q_EMIT deviceStateChanged();
     notifyChangedCount();
+}
+
+int CamDocument::carriedCount() const {
+    return int(m_carriedTracks.size() + m_carriedProgramNames.size() + m_carriedOutputNames.size() +
+               m_carriedDeadTimes.size());
+}
+
+bool CamDocument::carriedTrack(int program, int output) const {
+    return m_carriedTracks.contains(trackKey(program, output));
+}
+
+bool CamDocument::carryEdits(int program) const {
+    if (m_carriedProgramNames.contains(program)) return true;
+    return std::any_of(m_carriedTracks.cbegin(), m_carriedTracks.cend(),
+                       [program](quint32 key) { return int(key >> 16) == program; });
 }
 
 std::optional<CamProgram> CamDocument::deviceProgram(int program) const {

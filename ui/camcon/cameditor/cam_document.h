@@ -5,6 +5,7 @@
 #include "model/camcon/cam_validation.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
+#include "ui/camcon/carry_over.h"
 
 #include <QList>
 #include <QMap>
@@ -107,10 +108,16 @@ public:
     void forgetDeviceTrack(int program, int output);
     bool deviceTrackKnown(int program, int output) const;
     // Another device is on the line: no device copy is the device's state
-    // any more. What the user edited stays (and now counts as not on the
-    // device); what was only shown as read from the old device goes, so
-    // that it is neither shown nor written as this device's values.
-    void forgetDeviceCopies();
+    // any more, and what was only shown as read from the old device is not
+    // the person's: it goes, so that it is neither shown nor written as this
+    // device's values or as an edit. What stays (`carry`) is "carried": each
+    // such track, program name, output name and dead time, and only those,
+    // keeps its value over the new device's when that is read (mergeProgram,
+    // mergeOutputSettings with keepEdits). The undo history goes with the
+    // values it was made on.
+    void forgetDeviceCopies(CarryOver carry = CarryOver::Changes);
+    // Items carried from another device that wait for this device's values.
+    int carriedCount() const;
     std::optional<CamProgram> deviceProgram(int program) const;
     std::optional<Track> deviceTrack(int program, int output) const;
     bool outputSettingsKnown() const { return m_outputSettingsKnown; }
@@ -193,6 +200,15 @@ private:
         return (quint32(program) << 16) | quint32(output);
     }
     void forgetUnknownTracks(int program);
+    // Whether the item stays over what the device holds (see forgetDeviceCopies).
+    bool carriedTrack(int program, int output) const;
+    bool carryEdits(int program) const;
+    // Items carried from another device (forgetDeviceCopies), dropped once
+    // the new device's value of the item was read.
+    QSet<quint32> m_carriedTracks;
+    QSet<int> m_carriedProgramNames;
+    QSet<int> m_carriedOutputNames;
+    QSet<int> m_carriedDeadTimes;
     bool m_outputSettingsKnown = false;
     QUndoStack* m_undoStack = nullptr;
     quint64 m_lastDragKey = 0;
