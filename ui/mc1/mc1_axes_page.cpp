@@ -1,5 +1,7 @@
 #include "mc1_axes_page.h"
 
+#include "mc1_axis_parameters_box.h"
+
 #include "ui/device_session.h"
 #include "ui/sentence.h"
 
@@ -40,7 +42,9 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
       m_absolute(valueBox("mc1MoveTo")),
       m_relative(valueBox("mc1MoveBy")),
       m_speed(valueBox("mc1Speed")),
-      m_stop(new QPushButton(tr("STOP (Esc)"))) {
+      m_stop(new QPushButton(tr("STOP (Esc)"))),
+      m_parameters(new Mc1AxisParametersBox(session)),
+      m_axesFound(new QLabel) {
     setObjectName(QStringLiteral("mc1AxesPage"));
     m_axis->setObjectName(QStringLiteral("mc1Axis"));
     m_axis->setRange(comm::kMc1FirstAxis, comm::kMc1LastAxis);
@@ -103,12 +107,21 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_stop);
     layout->addWidget(m_availability);
+    layout->addWidget(m_parameters);
+    m_axesFound->setObjectName(QStringLiteral("mc1AxesFound"));
+    layout->addWidget(m_axesFound);
     layout->addLayout(top);
     layout->addWidget(m_details);
     layout->addWidget(moves);
     layout->addStretch();
     layout->addWidget(resultLine());
     connect(m_axis, &QSpinBox::valueChanged, this, [this] {
+        m_state->setText(QStringLiteral("—"));
+        m_details->clear();
+        poll();
+    });
+    // Values read through another table are not the controller's any more.
+    connect(m_parameters, &Mc1AxisParametersBox::tableChanged, this, [this] {
         m_state->setText(QStringLiteral("—"));
         m_details->clear();
         poll();
@@ -129,6 +142,33 @@ void Mc1AxesPage::factsChanged() {
                                 ? tr("The %1 has no axis telegrams: moving axes needs an MC200 V2.")
                                       .arg(comm::mc1VariantName(facts().variant))
                                 : tr("Not connected to an MC100/MC200."));
+    m_parameters->setVisible(can);
+    m_axesFound->setVisible(can);
+    if (can) {
+        m_parameters->controllerOnLine();
+        findAxes();
+    }
+}
+
+void Mc1AxesPage::findAxes() {
+    session()->run<comm::Mc1Device, comm::Mc1Axes>(
+        this, tr("Find axes"),
+        [](comm::Mc1Device& device, comm::JobContext&) { return device.axes(); },
+        [this](Result<comm::Mc1Axes> axes) {
+            if (!axes) {
+                m_axesFound->setText(tr("Which axes the controller has could not be read: %1")
+                                         .arg(axes.error().message));
+                return;
+            }
+            QStringList numbers;
+            for (int n : axes->numbers) numbers << QString::number(n);
+            m_axesFound->setText(
+                numbers.isEmpty()
+                    ? tr("The controller has no axes (%1).").arg(axes->source)
+                    : tr("Axes %1 (%2).").arg(numbers.join(QStringLiteral(", ")), axes->source));
+            if (!axes->numbers.isEmpty())
+                m_axis->setRange(axes->numbers.first(), axes->numbers.last());
+        });
 }
 
 void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
@@ -176,19 +216,30 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
                 detail))
             return;
     }
-    session()->run<comm::Mc1Device, comm::Mc1AxisState>(
+    session()->run<comm::Mc1Device, comm::Mc1AxisDone>(
         this, tr("Axis command"),
         [shown, command, value](comm::Mc1Device& device, comm::JobContext&) {
             return device.axisCommand(shown, command, value);
         },
-        [this, what, shown](Result<comm::Mc1AxisState> state) {
-            if (!state) {
-                showResult(asSentence(state.error().message), false);
+        [this, what, shown](Result<comm::Mc1AxisDone> done) {
+            if (!done) {
+                showResult(asSentence(done.error().message), false);
                 markStale();
                 return;
             }
-            if (shown == axis()) showState(*state);
-            showResult(tr("Sent: %1. Now %2.").arg(what, state->summary()), true);
+            // Acknowledged is done; the read-back is said apart from it.
+            if (!done->after) {
+                markStale();
+                showResult(tr("Done: %1 (the controller acknowledged it). Reading the axis back "
+                              "failed: %2")
+                               .arg(capitalised(what), done->readBackProblem),
+                           true);
+                return;
+            }
+            if (shown == axis()) showState(*done->after);
+            showResult(tr("Done: %1 (the controller acknowledged it). Now %2.")
+                           .arg(capitalised(what), done->after->summary()),
+                       true);
         });
 }
 
@@ -205,8 +256,7 @@ void Mc1AxesPage::stopAll() {
                 if (a != first) axes << a;
             QStringList failed;
             for (int a : axes) {
-                const Result<comm::Mc1AxisState> stopped =
-                    device.axisCommand(a, Mc1AxisCommand::QuickStop, 0);
+                const auto stopped = device.axisCommand(a, Mc1AxisCommand::QuickStop, 0);
                 if (!stopped)
                     failed << QStringLiteral("%1: %2").arg(a).arg(stopped.error().message);
             }

@@ -8,6 +8,8 @@ class QSpinBox;
 
 namespace cambench {
 
+class Mc1AxisParametersBox;
+
 // Axes: one axis's position, target and state, live while shown; home,
 // jog, absolute and relative moves and the speed, every motion after a
 // confirmation that names the axis and where it goes. STOP is always
@@ -23,6 +25,9 @@ public:
     void markStale() override;
 
     QPushButton* stopButton() const { return m_stop; }
+    Mc1AxisParametersBox* parametersBox() const { return m_parameters; }
+    // "Axes 1, 2, 3 (found with RDTABLE)".
+    QLabel* axesLabel() const { return m_axesFound; }
     QLabel* stateLabel() const { return m_state; }
     int axis() const;
     // Asks (naming the motion), then sends it and shows the axis after.
@@ -34,6 +39,8 @@ protected:
 
 private:
     void showState(const comm::Mc1AxisState& state);
+    // Asks the controller which axes it has; the axis box offers those.
+    void findAxes();
 
     QSpinBox* m_axis;
     QLabel* m_availability;
@@ -43,6 +50,8 @@ private:
     QSpinBox* m_relative;
     QSpinBox* m_speed;
     QPushButton* m_stop;
+    Mc1AxisParametersBox* m_parameters;
+    QLabel* m_axesFound;
     QList<QWidget*> m_motion;
 };
 

@@ -3,13 +3,10 @@
 // probed or checked, variables of the right width, flags and I/O by their
 // manual numbers, memory, and what a lost answer to an acting telegram
 // leads to (read back and said, never sent twice).
-#include "comm/mc1/mc1_controller.h"
-#include "comm/mc1/mc1_parameters.h"
-#include "comm/sim/mc1/mc1_simulator.h"
-#include "comm/sim/mc1/sim_mc1_line.h"
-#include "comm/sim/sim_transport.h"
+#include "mc1_test_bench.h"
 
-#include <QElapsedTimer>
+#include "comm/mc1/mc1_parameters.h"
+
 #include <QTest>
 
 using namespace cambench;
@@ -17,40 +14,7 @@ using namespace cambench::comm;
 
 namespace {
 
-// A simulated controller of `variant` behind an Mc1Controller told
-// `given` (none: probe).
-struct Bench {
-    explicit Bench(Mc1Variant variant, std::optional<Mc1Variant> given = std::nullopt,
-                   const SimFaultSettings& faults = {}, int syncMs = 0)
-        : transport(line(variant, faults, syncMs)),
-          controller(transport, settings(given), timing()) {
-        (void)transport.open();
-    }
-    static SimulatedLine line(Mc1Variant variant, const SimFaultSettings& faults, int syncMs) {
-        SimHostOptions shared;
-        shared.throttle = false;
-        shared.faults = faults;
-        return mc1SimulatedLine(variant, 115200, shared, syncMs);
-    }
-    SimMc1Line& simLine() { return static_cast<SimMc1Line&>(transport.line()); }
-    static Mc1Settings settings(std::optional<Mc1Variant> given) {
-        Mc1Settings s;
-        s.variant = given;
-        return s;
-    }
-    static LineTiming timing() {
-        LineTiming t;
-        t.baud = 115200;
-        return t;
-    }
-    SimMc1Controller& sim() { return static_cast<SimMc1Line&>(transport.line()).controller(); }
-    qint64 simNow() const { return clock.elapsed(); }
-
-    SimTransport transport;
-    Mc1Controller controller;
-    Mc1Device& device = controller;  // as jobs see it (with its default arguments)
-    QElapsedTimer clock;
-};
+using Bench = Mc1TestBench;
 
 Mc1Point point(const char* text) {
     return *parseMc1Point(QLatin1String(text));
@@ -176,7 +140,7 @@ private Q_SLOTS:
         SimFaultSettings faults;
         faults.dropFirstReplyTo = QByteArray(1, char(0x9F));  // the first AXIS_DATA's ACK
         Bench bench(Mc1Variant::Mc200V2, std::nullopt, faults);
-        const Result<Mc1AxisState> moved =
+        const Result<Mc1AxisDone> moved =
             bench.device.axisCommand(1, Mc1AxisCommand::MoveRelative, 100);
         QVERIFY(!moved.ok());
         QCOMPARE(moved.error().kind, ErrorKind::Communication);
@@ -244,7 +208,7 @@ private Q_SLOTS:
         // 20 moves by 10: each arrives at most once.
         int confirmed = 0;
         for (int i = 0; i < 20; ++i) {
-            const Result<Mc1AxisState> moved =
+            const Result<Mc1AxisDone> moved =
                 bench.device.axisCommand(2, Mc1AxisCommand::MoveRelative, 10);
             if (moved) ++confirmed;
             waitStill(bench.device, 2);
