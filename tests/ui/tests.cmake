@@ -25,5 +25,6 @@ cambench_add_test(ui_shell_table_page_edits_test SOURCES ui/register_widgets.cpp
 cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
 # Issue 14: the MC-1 pages against the simulated controller.
 cambench_add_test(ui_mc1_pages_test SOURCES ui/register_widgets.cpp ui/mc1/tst_mc1_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
+cambench_add_test(ui_mc1_axes_parameters_test SOURCES ui/register_widgets.cpp ui/mc1/tst_mc1_axes_parameters.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_compax3_pages_test SOURCES ui/register_widgets.cpp ui/compax3/tst_compax3_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_cambus_view_test SOURCES ui/register_widgets.cpp ui/camcon/tst_cambus_view.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
