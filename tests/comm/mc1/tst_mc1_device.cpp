@@ -5,7 +5,9 @@
 // leads to (read back and said, never sent twice).
 #include "mc1_test_bench.h"
 
+#include "comm/mc1/mc1_ascii_controller.h"
 #include "comm/mc1/mc1_parameters.h"
+#include "comm/traffic/traffic_entry.h"
 
 #include <QTest>
 
@@ -161,6 +163,30 @@ private Q_SLOTS:
         const Result<bool> set = bench.device.writePoint(point("M40"), true);
         QVERIFY2(set.ok(), qPrintable(set.error().message));
         QVERIFY(*set);
+    }
+
+    // MC100 ASCII: `A9=1` switches an output; its lost answer is settled by
+    // reading A9 back, never by sending it again (issue 27).
+    void anAsciiOutputWriteIsSentOnce() {
+        SimFaultSettings faults;
+        faults.dropFirstReplyTo = "A9=1";
+        SimHostOptions shared;
+        shared.throttle = false;
+        shared.faults = faults;
+        SimTransport transport(mc1AsciiSimulatedLine(115200, shared));
+        QVERIFY(transport.open().ok());
+        Mc1AsciiController controller(transport, 0, Bench::timing());
+        int sent = 0;
+        controller.engine().setTrafficSink([&sent](const TrafficEntry& entry) {
+            if (entry.outgoing && entry.bytes.startsWith("A9=1")) ++sent;
+        });
+        const Result<bool> set = controller.writePoint(point("A9"), true);
+        QVERIFY2(set.ok(), qPrintable(set.error().message));
+        QVERIFY(*set);
+        QCOMPARE(sent, 1);
+        // A variable write sets an absolute value: its lost answer may be asked again.
+        controller.engine().setTrafficSink({});
+        QVERIFY(controller.writeVariable(3, 42).ok());
     }
 
     // An MC100MA single-FIFO card: a telegram sent blind is lost; once the
