@@ -54,7 +54,10 @@ public:
     // The axis command's telegram alone, no read-back: `maxAttempts` > 0
     // caps its attempts below what its repeat rule allows.
     Status sendAxisCommand(int axis, Mc1AxisCommand command, qint32 value, int maxAttempts = 0);
-    // The axes of a variant with axis telegrams can be stopped from anywhere.
+    // The axes of an MC200 V2 can be stopped from anywhere; nullptr for a
+    // variant without axis telegrams. Identifies the controller first if
+    // that has not happened; when it cannot be identified, a STOP that may
+    // fail is offered unless the settings name a variant without axes.
     MotionControl* motionControl() override;
 
     Result<QByteArray> readMemory(int address, int length, const ProgressFn& progress) override;
