@@ -79,9 +79,13 @@ private:
                                const ProgressFn& progress);
     // Usage error unless `axis` is one of the logical axes 1..8.
     Status checkAxisNumber(int axis) const;
+    // Usage error naming the axes there are unless `present` holds `axis`.
+    Status checkAxisExists(int axis, const Mc1Axes& present) const;
     // One axis value through the parameter table; a refusal names the
     // parameter and, for the built-in guess, what to load.
     Result<qint32> readAxisValue(int axis, Mc1AxisValue value);
+    // The axes given, or those RDTABLE found; none before the search.
+    std::optional<Mc1Axes> knownAxes() const;
     // RDTABLE for every logical axis: those the controller has.
     Result<QList<int>> findAxes();
 

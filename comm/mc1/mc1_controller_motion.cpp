@@ -116,9 +116,14 @@ Result<QList<int>> Mc1Controller::findAxes() {
     return found;
 }
 
-Result<Mc1Axes> Mc1Controller::axes() {
+std::optional<Mc1Axes> Mc1Controller::knownAxes() const {
     if (givenAxes())
         return Mc1Axes{*givenAxes(), QCoreApplication::translate("cambench::comm", "as given")};
+    return m_found;
+}
+
+Result<Mc1Axes> Mc1Controller::axes() {
+    if (const std::optional<Mc1Axes> known = knownAxes()) return *known;
     const Result<Mc1Variant> identified = ensureIdentified();
     if (!identified) return identified.error();
     if (!has(Mc1Capability::Axes))
@@ -127,12 +132,9 @@ Result<Mc1Axes> Mc1Controller::axes() {
             QCoreApplication::translate(
                 "cambench::comm", "none: the %1 has no axis telegrams (they need an MC200 V2)")
                 .arg(mc1VariantName(*identified))};
-    if (!m_found) {
-        const Result<QList<int>> found = findAxes();
-        if (!found) return found.error();
-        m_found =
-            Mc1Axes{*found, QCoreApplication::translate("cambench::comm", "found with RDTABLE")};
-    }
+    const Result<QList<int>> found = findAxes();
+    if (!found) return found.error();
+    m_found = Mc1Axes{*found, QCoreApplication::translate("cambench::comm", "found with RDTABLE")};
     return *m_found;
 }
 
@@ -171,12 +173,30 @@ Result<qint32> Mc1Controller::readAxisValue(int axis, Mc1AxisValue value) {
                   .arg(refused, table.source));
 }
 
+Status Mc1Controller::checkAxisExists(int axis, const Mc1Axes& present) const {
+    if (present.numbers.contains(axis)) return success();
+    QStringList numbers;
+    for (int n : present.numbers) numbers << QString::number(n);
+    return Error::usage(QCoreApplication::translate(
+                            "cambench::comm", "the controller has no axis %1: its axes are %2 (%3)")
+                            .arg(axis)
+                            .arg(numbers.isEmpty()
+                                     ? QCoreApplication::translate("cambench::comm", "none")
+                                     : numbers.join(QStringLiteral(", ")),
+                                 present.source));
+}
+
 Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
     if (const Status ok = require(Mc1Capability::Axes,
                                   QCoreApplication::translate("cambench::comm", "report its axes"));
         !ok)
         return ok.error();
     if (const Status ok = checkAxisNumber(axis); !ok) return ok.error();
+    // Where the axes are known already, one it lacks is not asked for (a
+    // read never starts the search: a STOP reads back while it may fail).
+    const std::optional<Mc1Axes> known = knownAxes();
+    if (known)
+        if (const Status ok = checkAxisExists(axis, *known); !ok) return ok.error();
     qint32 values[3] = {};
     const Mc1AxisValue which[3] = {Mc1AxisValue::Position, Mc1AxisValue::Target,
                                    Mc1AxisValue::Status};
@@ -227,17 +247,7 @@ Result<Mc1AxisDone> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command,
     // Checked before the first byte: an axis the controller lacks gets nothing.
     const Result<Mc1Axes> present = axes();
     if (!present) return present.error();
-    if (!present->numbers.contains(axis)) {
-        QStringList numbers;
-        for (int n : present->numbers) numbers << QString::number(n);
-        return Error::usage(
-            QCoreApplication::translate("cambench::comm",
-                                        "the controller has no axis %1: its axes are %2 (%3)")
-                .arg(axis)
-                .arg(numbers.isEmpty() ? QCoreApplication::translate("cambench::comm", "none")
-                                       : numbers.join(QStringLiteral(", ")),
-                     present->source));
-    }
+    if (const Status ok = checkAxisExists(axis, *present); !ok) return ok.error();
     const Status done = sendAxisCommand(axis, command, value);
     const Result<Mc1AxisState> after = axisState(axis);
     if (!done) {

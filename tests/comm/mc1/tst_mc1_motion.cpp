@@ -121,6 +121,10 @@ private Q_SLOTS:
         QVERIFY2(refused.error().message.contains(QLatin1String("1, 2, 5")),
                  qPrintable(refused.error().message));
         QCOMPARE(receivedOf(three, 0x9F).size(), 1);
+        // Nor is it read: no RDSTAT for axis 4.
+        const qsizetype reads = receivedOf(three, 0xE3).size();
+        QCOMPARE(three.device.axisState(4).error().kind, ErrorKind::Usage);
+        QCOMPARE(receivedOf(three, 0xE3).size(), reads);
     }
 
     void givenAxesReplaceTheSearch() {
