@@ -58,6 +58,7 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     big.setBold(true);
     m_state->setFont(big);
     m_availability->setWordWrap(true);
+    m_details->setWordWrap(true);
 
     // STOP: big, red, always on the page, never disabled while connected.
     m_stop->setObjectName(QStringLiteral("mc1Stop"));
@@ -188,11 +189,22 @@ bool Mc1AxesPage::poll() {
         this, tr("Read axis"),
         [shown](comm::Mc1Device& device, comm::JobContext&) { return device.axisState(shown); },
         [this, shown](Result<comm::Mc1AxisState> state) {
-            pollAnswered(state.ok());
-            if (!state)
+            // A refused read (a parameter number the controller does not
+            // know) is an answer: the line is alive. A read not sent (an
+            // axis it lacks, a number the table lacks) says nothing of it.
+            // Either way the page says what was refused and what to load.
+            const ErrorKind kind = state ? ErrorKind::None : state.error().kind;
+            const bool refused = kind == ErrorKind::DeviceError || kind == ErrorKind::Usage;
+            if (kind != ErrorKind::Usage) pollAnswered(state.ok() || refused);
+            if (!state) {
                 markStale();
-            else if (shown == axis())
+                if (refused) {
+                    m_state->setText(QStringLiteral("—"));
+                    m_details->setText(tr("Not read: %1").arg(state.error().message));
+                }
+            } else if (shown == axis()) {
                 showState(*state);
+            }
         },
         comm::JobPriority::Poll, QStringLiteral("mc1-axis"));
     return true;
@@ -247,19 +259,19 @@ void Mc1AxesPage::stopAll() {
     if (!facts().known) return;
     // What waits for the line (a poll, a queued move) goes first.
     session()->worker().cancelAll();
-    const int first = axis();
     session()->run<comm::Mc1Device, QStringList>(
         this, tr("STOP"),
-        [first](comm::Mc1Device& device, comm::JobContext&) -> Result<QStringList> {
-            QList<int> axes{first};
-            for (int a = comm::kMc1FirstAxis; a <= comm::kMc1LastAxis; ++a)
-                if (a != first) axes << a;
-            QStringList failed;
-            for (int a : axes) {
-                const auto stopped = device.axisCommand(a, Mc1AxisCommand::QuickStop, 0);
-                if (!stopped)
-                    failed << QStringLiteral("%1: %2").arg(a).arg(stopped.error().message);
+        [](comm::Mc1Device& device, comm::JobContext&) -> Result<QStringList> {
+            // Every axis the controller has, the stops back to back.
+            comm::MotionControl* motion = device.motionControl();
+            if (!motion) {
+                const Result<comm::Mc1Axes> axes = device.axes();
+                return Error::usage(axes ? axes->source : axes.error().message);
             }
+            QStringList failed;
+            for (const comm::MotionStopLine& line : motion->stopAllMotion().lines)
+                if (!line.acknowledged)
+                    failed << QStringLiteral("%1: %2").arg(line.what, line.detail);
             if (!failed.isEmpty()) return Error::communication(failed.join(QStringLiteral("; ")));
             return QStringList();
         },
