@@ -10,9 +10,13 @@
 #include "ui/mc1/mc1_axes_page.h"
 #include "ui/mc1/mc1_axis_parameters_box.h"
 #include "ui/mc1/mc1_window.h"
+#include "ui/mc1/protocols/mc1_settings_widget.h"
+
+#include "comm/mc1/mc1_protocol.h"
 
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
@@ -97,6 +101,21 @@ private Q_SLOTS:
         QVERIFY2(!page->stateLabel()->text().contains(QLatin1String("provisional")),
                  qPrintable(page->stateLabel()->text()));
         QCOMPARE(QSettings().value(QStringLiteral("mc1/axisParameterTable")).toString(), good);
+    }
+
+    // The connection page's axes: empty finds them, "1,2" names them.
+    void theConnectionNamesTheAxesOrLeavesThemToBeFound() {
+        Mc1SettingsWidget widget;
+        comm::Mc1ProtocolSettings settings;
+        widget.load(settings);
+        QCOMPARE(widget.axes()->text(), QString());
+        QTest::keyClicks(widget.axes(), QStringLiteral("1,9x2"));  // 9 and x are not taken
+        QCOMPARE(widget.axes()->text(), QStringLiteral("1,2"));
+        widget.store(settings);
+        QCOMPARE(settings.mc1.axes, std::optional<QList<int>>(QList<int>{1, 2}));
+        widget.axes()->clear();
+        widget.store(settings);
+        QVERIFY(!settings.mc1.axes);
     }
 };
 

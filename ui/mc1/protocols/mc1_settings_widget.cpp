@@ -6,6 +6,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpressionValidator>
 
 namespace cambench {
 
@@ -20,6 +21,10 @@ Mc1SettingsWidget::Mc1SettingsWidget(QWidget* parent)
            "chosen here is checked against what answers."));
     m_axes->setObjectName(QStringLiteral("mc1Axes"));
     m_axes->setPlaceholderText(tr("found by asking the controller"));
+    // Logical axes 1..8 and commas only: a list that could not be read
+    // would silently fall back to asking the controller.
+    m_axes->setValidator(
+        new QRegularExpressionValidator(QRegularExpression(QStringLiteral("[1-8,]*")), m_axes));
     m_axes->setToolTip(
         tr("Empty: an MC200 is asked which axes it has (RDTABLE), and STOP goes to each of "
            "them. Axis numbers such as 1,2 name them instead."));
