@@ -160,7 +160,7 @@ Result<Mc1ProgramStatus> Mc1AsciiController::programStatus() {
     return notInAscii(QCoreApplication::translate("cambench::comm", "the program status"));
 }
 
-Result<Mc1ProgramStatus> Mc1AsciiController::programCommand(Mc1ProgramCommand command) {
+Result<Mc1Done<Mc1ProgramStatus>> Mc1AsciiController::programCommand(Mc1ProgramCommand command) {
     return notInAscii(mc1ProgramCommandText(command));
 }
 

@@ -47,7 +47,7 @@ public:
     Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress) override;
 
     Result<Mc1ProgramStatus> programStatus() override;
-    Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) override;
+    Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) override;
     Result<Mc1Axes> axes() override;
     Result<Mc1AxisState> axisState(int axis) override;
     Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;

@@ -55,7 +55,7 @@ Result<Mc1ProgramStatus> Mc1Controller::programStatus() {
     return status;
 }
 
-Result<Mc1ProgramStatus> Mc1Controller::programCommand(Mc1ProgramCommand command) {
+Result<Mc1Done<Mc1ProgramStatus>> Mc1Controller::programCommand(Mc1ProgramCommand command) {
     const QString what = mc1ProgramCommandText(command);
     if (const Status ok = require(Mc1Capability::ProgramControl, what); !ok) return ok.error();
     Result<QByteArray> done = QByteArray();
@@ -89,7 +89,7 @@ Result<Mc1ProgramStatus> Mc1Controller::programCommand(Mc1ProgramCommand command
                                          "cambench::comm", "reading the status failed too: %1")
                                          .arg(after.error().message));
     }
-    return after;
+    return mc1Done(after);
 }
 
 Status Mc1Controller::checkAxisNumber(int axis) const {
@@ -267,12 +267,7 @@ Result<Mc1AxisDone> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command,
                     .arg(what, done.error().message, found));
         return mc1LostAnswer(what, done.error(), found);
     }
-    Mc1AxisDone outcome;
-    if (after)
-        outcome.after = *after;
-    else
-        outcome.readBackProblem = after.error().message;
-    return outcome;
+    return mc1Done(after);
 }
 
 MotionControl* Mc1Controller::motionControl() {

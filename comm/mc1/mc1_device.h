@@ -67,6 +67,16 @@ struct Mc1Done {
     QString readBackProblem;
 };
 using Mc1AxisDone = Mc1Done<Mc1AxisState>;
+// The outcome of an acknowledged command from what reading back gave.
+template <class T>
+Mc1Done<T> mc1Done(const Result<T>& after) {
+    Mc1Done<T> done;
+    if (after)
+        done.after = *after;
+    else
+        done.readBackProblem = after.error().message;
+    return done;
+}
 
 // The axes a controller has and how that is known.
 struct Mc1Axes {
@@ -136,8 +146,9 @@ public:
     virtual Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress = {}) = 0;
 
     virtual Result<Mc1ProgramStatus> programStatus() = 0;
-    // Returns the status read after the command.
-    virtual Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) = 0;
+    // Acknowledged: done, with the status read after it (or why that read
+    // failed, which never makes the command a failure).
+    virtual Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) = 0;
 
     // The axes the controller has: on an MC200 V2 each logical axis
     // RDTABLE answers for (once, then kept), or the ones given with

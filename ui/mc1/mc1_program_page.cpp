@@ -138,19 +138,28 @@ void Mc1ProgramPage::run(Mc1ProgramCommand command) {
     if (!confirm(capitalised(what), tr("%1 on the %2?").arg(capitalised(what), controller),
                  consequence(command)))
         return;
-    session()->run<comm::Mc1Device, comm::Mc1ProgramStatus>(
+    session()->run<comm::Mc1Device, comm::Mc1Done<comm::Mc1ProgramStatus>>(
         this, tr("Program command"),
         [command](comm::Mc1Device& device, comm::JobContext&) {
             return device.programCommand(command);
         },
-        [this, what](Result<comm::Mc1ProgramStatus> status) {
-            if (!status) {
-                showResult(asSentence(status.error().message), false);
+        [this, what](Result<comm::Mc1Done<comm::Mc1ProgramStatus>> done) {
+            if (!done) {
+                showResult(asSentence(done.error().message), false);
                 markStale();
                 return;
             }
-            showStatus(*status);
-            showResult(tr("Done: %1. PLC program %2.").arg(what, status->summary()), true);
+            // Acknowledged is done; the status read afterwards is said apart.
+            if (!done->after) {
+                markStale();
+                showResult(tr("Done: %1 (the controller acknowledged it). Reading the program "
+                              "status back failed: %2")
+                               .arg(what, done->readBackProblem),
+                           true);
+                return;
+            }
+            showStatus(*done->after);
+            showResult(tr("Done: %1. PLC program %2.").arg(what, done->after->summary()), true);
         });
 }
 

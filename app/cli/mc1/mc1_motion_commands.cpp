@@ -141,11 +141,16 @@ int runMc1Program(CliSession& session, CommandArgs& args, const QString& verb) {
                                                   : Mc1ProgramCommand::Reset;
     }
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<comm::Mc1ProgramStatus> status = runOnMc1<comm::Mc1ProgramStatus>(
-        session, QStringLiteral("mc ") + verb,
-        [command](Mc1Device& device, JobContext&) { return device.programCommand(command); });
-    if (!status) return reportError(status.error());
-    printOut(QStringLiteral("program: %1\n").arg(status->summary()));
+    const Result<comm::Mc1Done<comm::Mc1ProgramStatus>> done =
+        runOnMc1<comm::Mc1Done<comm::Mc1ProgramStatus>>(
+            session, QStringLiteral("mc ") + verb,
+            [command](Mc1Device& device, JobContext&) { return device.programCommand(command); });
+    if (!done) return reportError(done.error());
+    // Acknowledged is done; a status that could not be read is said apart.
+    printOut(done->after ? QStringLiteral("program: %1\n").arg(done->after->summary())
+                         : QStringLiteral("done: %1 (acknowledged)\nread-back: failed (the "
+                                          "command itself was acknowledged): %2\n")
+                               .arg(comm::mc1ProgramCommandText(command), done->readBackProblem));
     return ExitOk;
 }
 

@@ -124,16 +124,16 @@ private Q_SLOTS:
 
     void theProgramStartsStepsAndStops() {
         Bench bench(Mc1Variant::Mc200V2);
-        const Result<Mc1ProgramStatus> running =
+        const Result<Mc1Done<Mc1ProgramStatus>> running =
             bench.device.programCommand(Mc1ProgramCommand::Start);
         QVERIFY(running.ok());
-        QVERIFY(running->running());
-        const Result<Mc1ProgramStatus> stopped =
+        QVERIFY(running->after->running());
+        const Result<Mc1Done<Mc1ProgramStatus>> stopped =
             bench.device.programCommand(Mc1ProgramCommand::Stop);
-        QVERIFY(!stopped->running());
-        const Result<Mc1ProgramStatus> stepped =
+        QVERIFY(!stopped->after->running());
+        const Result<Mc1Done<Mc1ProgramStatus>> stepped =
             bench.device.programCommand(Mc1ProgramCommand::Step);
-        QCOMPARE(stepped->programCounter, quint16(stopped->programCounter + 1));
+        QCOMPARE(stepped->after->programCounter, quint16(stopped->after->programCounter + 1));
         Bench mc100(Mc1Variant::Mc100V1);
         QCOMPARE(mc100.device.programStatus().error().kind, ErrorKind::Usage);
     }
