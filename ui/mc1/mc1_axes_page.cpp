@@ -234,24 +234,12 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
             return device.axisCommand(shown, command, value);
         },
         [this, what, shown](Result<comm::Mc1AxisDone> done) {
-            if (!done) {
-                showResult(asSentence(done.error().message), false);
-                markStale();
-                return;
-            }
-            // Acknowledged is done; the read-back is said apart from it.
-            if (!done->after) {
-                markStale();
-                showResult(tr("Done: %1 (the controller acknowledged it). Reading the axis back "
-                              "failed: %2")
-                               .arg(capitalised(what), done->readBackProblem),
+            if (const comm::Mc1AxisState* state = acknowledged(done, what)) {
+                if (shown == axis()) showState(*state);
+                showResult(tr("Done: %1 (the controller acknowledged it). Now %2.")
+                               .arg(capitalised(what), state->summary()),
                            true);
-                return;
             }
-            if (shown == axis()) showState(*done->after);
-            showResult(tr("Done: %1 (the controller acknowledged it). Now %2.")
-                           .arg(capitalised(what), done->after->summary()),
-                       true);
         });
 }
 

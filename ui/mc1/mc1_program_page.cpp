@@ -144,22 +144,10 @@ void Mc1ProgramPage::run(Mc1ProgramCommand command) {
             return device.programCommand(command);
         },
         [this, what](Result<comm::Mc1Done<comm::Mc1ProgramStatus>> done) {
-            if (!done) {
-                showResult(asSentence(done.error().message), false);
-                markStale();
-                return;
+            if (const comm::Mc1ProgramStatus* status = acknowledged(done, what)) {
+                showStatus(*status);
+                showResult(tr("Done: %1. PLC program %2.").arg(what, status->summary()), true);
             }
-            // Acknowledged is done; the status read afterwards is said apart.
-            if (!done->after) {
-                markStale();
-                showResult(tr("Done: %1 (the controller acknowledged it). Reading the program "
-                              "status back failed: %2")
-                               .arg(what, done->readBackProblem),
-                           true);
-                return;
-            }
-            showStatus(*done->after);
-            showResult(tr("Done: %1. PLC program %2.").arg(what, done->after->summary()), true);
         });
 }
 

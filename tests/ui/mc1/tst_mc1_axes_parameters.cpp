@@ -68,7 +68,7 @@ private Q_SLOTS:
         }
         QVERIFY2(result->text().contains(QLatin1String("acknowledged")),
                  qPrintable(result->text()));
-        QVERIFY2(result->text().contains(QLatin1String("Reading the axis back failed")),
+        QVERIFY2(result->text().contains(QLatin1String("Reading back failed")),
                  qPrintable(result->text()));
         QVERIFY2(result->text().contains(QLatin1String("load the controller's parameter table")),
                  qPrintable(result->text()));
