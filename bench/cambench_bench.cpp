@@ -326,6 +326,10 @@ int main(int argc, char** argv) {
                            QStringLiteral("Only MC100/MC200: 1,000 variables and a 32 KiB range "
                                           "of each variant at 9600 baud (about 4 minutes)."));
     parser.addOption(mc1);
+    QCommandLineOption mc1Stop(QStringLiteral("mc1-stop"),
+                               QStringLiteral("Only the MC200's STOP of every axis at 9600 baud "
+                                              "(a few seconds)."));
+    parser.addOption(mc1Stop);
     QCommandLineOption compax3(
         QStringLiteral("compax3"),
         QStringLiteral("Only Compax3: a 500-object parameter set at 115200 and 9600 baud."));
@@ -357,8 +361,8 @@ int main(int argc, char** argv) {
         bench::benchCompax3();
         return 0;
     }
-    if (parser.isSet(mc1)) {
-        bench::benchMc1();
+    if (parser.isSet(mc1) || parser.isSet(mc1Stop)) {
+        bench::benchMc1(parser.isSet(mc1Stop));
         return 0;
     }
     if (parser.isSet(protocols)) {

@@ -5,7 +5,9 @@ namespace cambench::bench {
 // MC100/MC200 (issue 14): 1,000 variables and a 32 KiB range read from the
 // throttled simulator of each variant at 9600 baud, block telegrams
 // (RDBLOCK, RDMEM, RDMEM6) beside single ones (RDBYTE), each as time,
-// wire bytes and the ratio to the wire limit (bytes x 10 / baud).
-void benchMc1();
+// wire bytes and the ratio to the wire limit (bytes x 10 / baud). First
+// STOP of every axis (issue 27): 8 and 3 axes, and 8 with one stop's
+// answer lost, to the last acknowledgement; `stopOnly`: that alone.
+void benchMc1(bool stopOnly = false);
 
 }  // namespace cambench::bench

@@ -58,19 +58,29 @@ protected:
     // A poll of the page's values at Poll priority under `pollKey`, one at
     // a time (none is queued while one is outstanding); `shown` gets what
     // was read, a failure makes the values stale (a cancel does not).
+    // With `notRead`, a refusal is an answer (the line is alive, the values
+    // were not read) and a read refused before it was sent (Usage) says
+    // nothing of the line; `notRead` gets either.
     template <class Device, class T>
     void runPoll(const QString& title, DeviceSession::Work<Device, T> work,
-                 std::function<void(const T&)> shown, const QString& pollKey) {
+                 std::function<void(const T&)> shown, const QString& pollKey,
+                 std::function<void(const Error&)> notRead = {}) {
         if (m_pollJob != 0) return;
         m_pollOnLine = false;
         m_pollProgress = false;
         m_pollJob = m_session->run<Device, T>(
             this, title, std::move(work),
-            [this, shown = std::move(shown)](Result<T> result) {
+            [this, shown = std::move(shown), notRead = std::move(notRead)](Result<T> result) {
                 m_pollJob = 0;
                 if (!result && result.error().kind == ErrorKind::Cancelled) return;
-                pollAnswered(result.ok());
-                if (result) shown(*result);
+                if (result || !notRead) {
+                    pollAnswered(result.ok());
+                    if (result) shown(*result);
+                    return;
+                }
+                const ErrorKind kind = result.error().kind;
+                if (kind != ErrorKind::Usage) pollAnswered(kind == ErrorKind::DeviceError);
+                notRead(result.error());
             },
             comm::JobPriority::Poll, pollKey);
     }

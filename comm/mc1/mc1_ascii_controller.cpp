@@ -22,12 +22,12 @@ QString Mc1AsciiController::variantSource() const {
                                        "ASCII protocol, which looks alike on V1 and V2");
 }
 
-Result<QByteArray> Mc1AsciiController::exchange(const QByteArray& line) {
+Result<QByteArray> Mc1AsciiController::exchange(const QByteArray& line, RetryPolicy retry) {
     Request request;
     request.label = QString::fromLatin1(line.trimmed());
     request.message = line;
     request.longestReplyBytes = kLongestAnswer;
-    request.retry = RetryPolicy::Idempotent;  // every request reads or sets a state
+    request.retry = retry;
     return m_engine.send(request);
 }
 
@@ -113,10 +113,20 @@ Result<bool> Mc1AsciiController::writePoint(const Mc1Point& point, bool on) {
     if (!line) return line.error();
     if (const Result<Mc1Variant> identified = ensureIdentified(); !identified)
         return identified.error();
-    const Result<QByteArray> answer = exchange(*line);
-    if (!answer) return answer.error();
-    if (const Status ok = mc1AsciiOk(*answer); !ok) return ok.error();
+    // It acts (an output switches a machine part): sent once, as WRBIT is.
+    const Result<QByteArray> answer = exchange(*line, RetryPolicy::Never);
     const Result<QList<bool>> back = readPoints({point}, {});
+    if (!answer) {
+        if (answer.error().kind != ErrorKind::Communication) return answer.error();
+        // What the point holds now says whether the write took.
+        if (back && back->first() == on) return on;
+        return mc1LostAnswer(
+            QString::fromLatin1(line->trimmed()), answer.error(),
+            back ? QStringLiteral("%1 = %2").arg(mc1PointText(point)).arg(back->first() ? 1 : 0)
+                 : QCoreApplication::translate("cambench::comm", "reading it failed too: %1")
+                       .arg(back.error().message));
+    }
+    if (const Status ok = mc1AsciiOk(*answer); !ok) return ok.error();
     if (!back) return back.error();
     return back->first();
 }
@@ -150,16 +160,22 @@ Result<Mc1ProgramStatus> Mc1AsciiController::programStatus() {
     return notInAscii(QCoreApplication::translate("cambench::comm", "the program status"));
 }
 
-Result<Mc1ProgramStatus> Mc1AsciiController::programCommand(Mc1ProgramCommand command) {
+Result<Mc1Done<Mc1ProgramStatus>> Mc1AsciiController::programCommand(Mc1ProgramCommand command) {
     return notInAscii(mc1ProgramCommandText(command));
+}
+
+Result<Mc1Axes> Mc1AsciiController::axes() {
+    return Mc1Axes{{},
+                   QCoreApplication::translate(
+                       "cambench::comm", "none: the MC100's ASCII protocol has no axis requests")};
 }
 
 Result<Mc1AxisState> Mc1AsciiController::axisState(int) {
     return notInAscii(QCoreApplication::translate("cambench::comm", "axes"));
 }
 
-Result<Mc1AxisState> Mc1AsciiController::axisCommand(int axis, Mc1AxisCommand command,
-                                                     qint32 value) {
+Result<Mc1AxisDone> Mc1AsciiController::axisCommand(int axis, Mc1AxisCommand command,
+                                                    qint32 value) {
     return notInAscii(mc1AxisCommandText(axis, command, value));
 }
 

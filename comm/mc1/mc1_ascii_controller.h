@@ -11,7 +11,9 @@ namespace cambench::comm {
 // flags, inputs and outputs one line each. It has no program, axis or
 // memory requests; those are refused by name before anything is sent. The
 // protocol cannot tell an MC100 V1 from a V2: the variant is MC100 V1.
-// Every request sets or reads a state, so a lost answer may be asked again.
+// Reads and variable writes may be asked again after a lost answer; a
+// flag or output write (`A9=1`) is sent once, and a lost answer is settled
+// by reading the point back and saying what it holds.
 class Mc1AsciiController : public Mc1Device {
 public:
     Mc1AsciiController(Transport& transport, int timeoutMs, const LineTiming& line);
@@ -33,15 +35,17 @@ public:
     Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress) override;
 
     Result<Mc1ProgramStatus> programStatus() override;
-    Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) override;
+    Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) override;
+    Result<Mc1Axes> axes() override;
     Result<Mc1AxisState> axisState(int axis) override;
-    Result<Mc1AxisState> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
+    Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
     Result<QByteArray> readMemory(int address, int length, const ProgressFn& progress) override;
     Status writeMemory(int address, const QByteArray& bytes, const ProgressFn& progress) override;
 
 private:
-    // One line out, the answer line back.
-    Result<QByteArray> exchange(const QByteArray& line);
+    // One line out, the answer line back; `retry` Never sends it once.
+    Result<QByteArray> exchange(const QByteArray& line,
+                                RetryPolicy retry = RetryPolicy::Idempotent);
     Error notInAscii(const QString& what) const;
 
     Mc1AsciiBackend m_backend;

@@ -7,20 +7,14 @@
 
 namespace cambench::comm {
 
-namespace {
-
-bool isNak(const Error& error) {
-    return error.kind == ErrorKind::DeviceError && error.deviceCode == kMc1Nak;
-}
-
-}  // namespace
-
 Mc1Controller::Mc1Controller(Transport& transport, const Mc1Settings& settings,
                              const LineTiming& line)
     : m_backend(settings.variant.value_or(Mc1Variant::Mc200V2)),
       m_engine(transport, m_backend, mc1EngineSettings(line, settings.retries, settings.timeoutMs)),
       m_link(m_engine, settings.variant.value_or(Mc1Variant::Mc200V2)),
-      m_given(settings.variant) {}
+      m_given(settings.variant) {
+    setGivenAxes(settings.axes);
+}
 
 void Mc1Controller::use(Mc1Variant variant) {
     m_backend.setVariant(variant);
@@ -49,7 +43,7 @@ Result<Mc1Variant> Mc1Controller::probeVariant() {
         mc200 ? m_link.exchange(Mc1Op::ProgramStatus, {})
               : m_link.exchange(Mc1Op::ReadBlock, QByteArray(3, '\0') + mc1LittleEndian(1, 1));
     if (second) return mc200 ? Mc1Variant::Mc200V2 : Mc1Variant::Mc100V2;
-    if (isNak(second.error())) return mc200 ? Mc1Variant::Mc200V1 : Mc1Variant::Mc100V1;
+    if (isMc1Refusal(second.error())) return mc200 ? Mc1Variant::Mc200V1 : Mc1Variant::Mc100V1;
     return second.error();
 }
 
@@ -230,12 +224,8 @@ Result<QList<bool>> Mc1Controller::readPoints(const QList<Mc1Point>& points,
 Result<bool> Mc1Controller::writePoint(const Mc1Point& point, bool on) {
     const Result<Mc1Variant> identified = ensureIdentified();
     if (!identified) return identified.error();
-    if (point.area == Mc1Area::Input)
-        return Error::usage(
-            QCoreApplication::translate("cambench::comm", "%1 is an input: inputs are read-only")
-                .arg(mc1PointText(point)));
+    if (const Status ok = mc1CheckWritable(point, *identified); !ok) return ok.error();
     const Result<Mc1BitAddress> address = mc1BitAddress(point, isMc200(*identified));
-    if (!address) return address.error();
     // 2^bit sets the bit, NOT 2^bit clears it; the page is the flags' own.
     const quint8 flag = on ? address->mask() : quint8(~address->mask());
     const Result<QByteArray> done =
@@ -251,11 +241,11 @@ Result<bool> Mc1Controller::writePoint(const Mc1Point& point, bool on) {
                 ? QStringLiteral("%1 = %2").arg(mc1PointText(point)).arg(readBack->first() ? 1 : 0)
                 : QCoreApplication::translate("cambench::comm", "reading it failed too: %1")
                       .arg(readBack.error().message);
-        return lostAnswer(QCoreApplication::translate("cambench::comm", "%1 %2")
-                              .arg(on ? QCoreApplication::translate("cambench::comm", "set")
-                                      : QCoreApplication::translate("cambench::comm", "clear"),
-                                   mc1PointText(point)),
-                          done.error(), found);
+        return mc1LostAnswer(QCoreApplication::translate("cambench::comm", "%1 %2")
+                                 .arg(on ? QCoreApplication::translate("cambench::comm", "set")
+                                         : QCoreApplication::translate("cambench::comm", "clear"),
+                                      mc1PointText(point)),
+                             done.error(), found);
     }
     if (!readBack) return readBack.error();
     return readBack->first();
@@ -265,16 +255,6 @@ Result<QByteArray> Mc1Controller::readExternalPage(quint8 page, const ProgressFn
     const Result<Mc1Variant> identified = ensureIdentified();
     if (!identified) return identified.error();
     return readRam(true, page, 0, 256, progress);
-}
-
-Error Mc1Controller::lostAnswer(const QString& what, const Error& error,
-                                const QString& readBack) const {
-    return Error::communication(
-        QCoreApplication::translate(
-            "cambench::comm",
-            "the answer to \"%1\" was lost (%2); it was not sent again, because it acts each time "
-            "it arrives. Read back: %3")
-            .arg(what, error.message, readBack));
 }
 
 }  // namespace cambench::comm

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mc1_axis_motion.h"
 #include "mc1_backend.h"
 #include "mc1_device.h"
 #include "mc1_link.h"
@@ -16,7 +17,13 @@ struct Mc1Settings {
     std::optional<Mc1Variant> variant;
     int timeoutMs = 0;
     int retries = 2;
+    // The axes to use instead of finding them with RDTABLE (none: find them).
+    std::optional<QList<int>> axes;
 };
+
+// Whether the telegram of `command` may be sent again after a lost answer
+// (mc1AxisRetry of its opcode and command byte).
+Mc1Retry mc1AxisCommandRetry(Mc1AxisCommand command);
 
 // Mc1Device over the binary MC-1 protocol (RS232, any variant).
 class Mc1Controller : public Mc1Device {
@@ -40,9 +47,18 @@ public:
     Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress) override;
 
     Result<Mc1ProgramStatus> programStatus() override;
-    Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) override;
+    Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) override;
+    Result<Mc1Axes> axes() override;
     Result<Mc1AxisState> axisState(int axis) override;
-    Result<Mc1AxisState> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
+    Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
+    // The axis command's telegram alone, no read-back: `maxAttempts` > 0
+    // caps its attempts below what its repeat rule allows.
+    Status sendAxisCommand(int axis, Mc1AxisCommand command, qint32 value, int maxAttempts = 0);
+    // The axes of an MC200 V2 can be stopped from anywhere; nullptr for a
+    // variant without axis telegrams. Identifies the controller first if
+    // that has not happened; when it cannot be identified, a STOP that may
+    // fail is offered unless the settings name a variant without axes.
+    MotionControl* motionControl() override;
 
     Result<QByteArray> readMemory(int address, int length, const ProgressFn& progress) override;
     Status writeMemory(int address, const QByteArray& bytes, const ProgressFn& progress) override;
@@ -61,8 +77,17 @@ private:
     // page from `address` on.
     Result<QByteArray> readRam(bool external, quint8 page, int address, int count,
                                const ProgressFn& progress);
-    // An acting telegram whose answer was lost: what reading back found.
-    Error lostAnswer(const QString& what, const Error& error, const QString& readBack) const;
+    // Usage error unless `axis` is one of the logical axes 1..8.
+    Status checkAxisNumber(int axis) const;
+    // Usage error naming the axes there are unless `present` holds `axis`.
+    Status checkAxisExists(int axis, const Mc1Axes& present) const;
+    // One axis value through the parameter table; a refusal names the
+    // parameter and, for the built-in guess, what to load.
+    Result<qint32> readAxisValue(int axis, Mc1AxisValue value);
+    // The axes given, or those RDTABLE found; none before the search.
+    std::optional<Mc1Axes> knownAxes() const;
+    // RDTABLE for every logical axis: those the controller has.
+    Result<QList<int>> findAxes();
 
     Mc1Backend m_backend;
     RequestEngine m_engine;
@@ -70,6 +95,8 @@ private:
     std::optional<Mc1Variant> m_given;
     bool m_identified = false;
     QString m_source;
+    std::optional<Mc1Axes> m_found;  // what RDTABLE answered, once
+    Mc1AxisMotion m_motion{*this};
 };
 
 }  // namespace cambench::comm

@@ -55,7 +55,7 @@ Result<Mc1ProgramStatus> Mc1Controller::programStatus() {
     return status;
 }
 
-Result<Mc1ProgramStatus> Mc1Controller::programCommand(Mc1ProgramCommand command) {
+Result<Mc1Done<Mc1ProgramStatus>> Mc1Controller::programCommand(Mc1ProgramCommand command) {
     const QString what = mc1ProgramCommandText(command);
     if (const Status ok = require(Mc1Capability::ProgramControl, what); !ok) return ok.error();
     Result<QByteArray> done = QByteArray();
@@ -82,14 +82,108 @@ Result<Mc1ProgramStatus> Mc1Controller::programCommand(Mc1ProgramCommand command
     const Result<Mc1ProgramStatus> after = programStatus();
     if (!done) {
         if (done.error().kind != ErrorKind::Communication) return done.error();
-        return lostAnswer(what, done.error(),
-                          after ? QCoreApplication::translate("cambench::comm", "PLC program %1")
-                                      .arg(after->summary())
-                                : QCoreApplication::translate("cambench::comm",
-                                                              "reading the status failed too: %1")
-                                      .arg(after.error().message));
+        return mc1LostAnswer(what, done.error(),
+                             after ? QCoreApplication::translate("cambench::comm", "PLC program %1")
+                                         .arg(after->summary())
+                                   : QCoreApplication::translate(
+                                         "cambench::comm", "reading the status failed too: %1")
+                                         .arg(after.error().message));
     }
-    return after;
+    return mc1Done(after);
+}
+
+Status Mc1Controller::checkAxisNumber(int axis) const {
+    if (axis >= kMc1FirstAxis && axis <= kMc1LastAxis) return success();
+    return Error::usage(QCoreApplication::translate("cambench::comm", "axes are %1 to %2, not %3")
+                            .arg(kMc1FirstAxis)
+                            .arg(kMc1LastAxis)
+                            .arg(axis));
+}
+
+Result<QList<int>> Mc1Controller::findAxes() {
+    // RDTABLE (manual 3.12) gives a logical axis's physical coding 0-7 and
+    // its module's type; an axis the controller lacks is refused (NAK).
+    QList<int> found;
+    for (int axis = kMc1FirstAxis; axis <= kMc1LastAxis; ++axis) {
+        const Result<QByteArray> entry = m_link.exchange(
+            Mc1Op::ReadTable, QByteArray(2, '\0') + mc1LittleEndian(axis, 1) + QByteArray(1, '\0'));
+        if (entry) {
+            if (!entry->isEmpty() && quint8(entry->at(0)) <= 7) found << axis;
+            continue;
+        }
+        if (!isMc1Refusal(entry.error())) return entry.error();
+    }
+    return found;
+}
+
+std::optional<Mc1Axes> Mc1Controller::knownAxes() const {
+    if (givenAxes())
+        return Mc1Axes{*givenAxes(), QCoreApplication::translate("cambench::comm", "as given")};
+    return m_found;
+}
+
+Result<Mc1Axes> Mc1Controller::axes() {
+    if (const std::optional<Mc1Axes> known = knownAxes()) return *known;
+    const Result<Mc1Variant> identified = ensureIdentified();
+    if (!identified) return identified.error();
+    if (!has(Mc1Capability::Axes))
+        return Mc1Axes{
+            {},
+            QCoreApplication::translate(
+                "cambench::comm", "none: the %1 has no axis telegrams (they need an MC200 V2)")
+                .arg(mc1VariantName(*identified))};
+    const Result<QList<int>> found = findAxes();
+    if (!found) return found.error();
+    m_found = Mc1Axes{*found, QCoreApplication::translate("cambench::comm", "found with RDTABLE")};
+    return *m_found;
+}
+
+Result<qint32> Mc1Controller::readAxisValue(int axis, Mc1AxisValue value) {
+    const Mc1AxisParameterTable& table = axisParameters();
+    const std::optional<quint16> number = table.number(axis, value);
+    if (!number)
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::comm",
+                                "the parameter table (%1) names no %2 parameter for axis %3: "
+                                "load a table that names it")
+                                .arg(table.source, mc1AxisValueName(value))
+                                .arg(axis));
+    const Result<QByteArray> answer =
+        m_link.exchange(Mc1Op::ReadStatus, mc1LittleEndian(*number, 2));
+    if (answer) return qint32(mc1FromLittleEndian(*answer, true));
+    if (!isMc1Refusal(answer.error())) return answer.error();
+    const QString refused =
+        QCoreApplication::translate("cambench::comm",
+                                    "the controller refused RDSTAT of parameter %1 (0x%2), the %3 "
+                                    "of axis %4")
+            .arg(*number)
+            .arg(*number, 4, 16, QLatin1Char('0'))
+            .arg(mc1AxisValueName(value))
+            .arg(axis);
+    return Error::device(
+        kMc1Nak,
+        table.provisional
+            ? QCoreApplication::translate(
+                  "cambench::comm",
+                  "%1: that number is CamBench's guess, not the controller's; load the "
+                  "controller's parameter table (name,axis,parameter; --parameters FILE, or Load "
+                  "parameter table… on the Axes page)")
+                  .arg(refused)
+            : QCoreApplication::translate("cambench::comm", "%1: check the parameter table %2")
+                  .arg(refused, table.source));
+}
+
+Status Mc1Controller::checkAxisExists(int axis, const Mc1Axes& present) const {
+    if (present.numbers.contains(axis)) return success();
+    QStringList numbers;
+    for (int n : present.numbers) numbers << QString::number(n);
+    return Error::usage(QCoreApplication::translate(
+                            "cambench::comm", "the controller has no axis %1: its axes are %2 (%3)")
+                            .arg(axis)
+                            .arg(numbers.isEmpty()
+                                     ? QCoreApplication::translate("cambench::comm", "none")
+                                     : numbers.join(QStringLiteral(", ")),
+                                 present.source));
 }
 
 Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
@@ -97,20 +191,19 @@ Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
                                   QCoreApplication::translate("cambench::comm", "report its axes"));
         !ok)
         return ok.error();
-    if (axis < kMc1FirstAxis || axis > kMc1LastAxis)
-        return Error::usage(
-            QCoreApplication::translate("cambench::comm", "axes are %1 to %2, not %3")
-                .arg(kMc1FirstAxis)
-                .arg(kMc1LastAxis)
-                .arg(axis));
+    if (const Status ok = checkAxisNumber(axis); !ok) return ok.error();
+    // Where the axes are known already, one it lacks is not asked for (a
+    // read never starts the search: a STOP reads back while it may fail).
+    const std::optional<Mc1Axes> known = knownAxes();
+    if (known)
+        if (const Status ok = checkAxisExists(axis, *known); !ok) return ok.error();
     qint32 values[3] = {};
     const Mc1AxisValue which[3] = {Mc1AxisValue::Position, Mc1AxisValue::Target,
                                    Mc1AxisValue::Status};
     for (int i = 0; i < 3; ++i) {
-        const Result<QByteArray> answer = m_link.exchange(
-            Mc1Op::ReadStatus, mc1LittleEndian(mc1AxisParameter(axis, which[i]), 2));
-        if (!answer) return answer.error();
-        values[i] = qint32(mc1FromLittleEndian(*answer, true));
+        const Result<qint32> value = readAxisValue(axis, which[i]);
+        if (!value) return value.error();
+        values[i] = *value;
     }
     Mc1AxisState state;
     state.axis = axis;
@@ -119,18 +212,20 @@ Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
     state.moving = values[2] & kMc1AxisMoving;
     state.homed = values[2] & kMc1AxisHomed;
     state.error = values[2] & kMc1AxisError;
+    state.provisional = axisParameters().provisional;
     return state;
 }
 
-Result<Mc1AxisState> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command, qint32 value) {
+Mc1Retry mc1AxisCommandRetry(Mc1AxisCommand command) {
+    const AxisTelegram telegram = axisTelegram(command);
+    return mc1AxisRetry(telegram.op, telegram.command);
+}
+
+Status Mc1Controller::sendAxisCommand(int axis, Mc1AxisCommand command, qint32 value,
+                                      int maxAttempts) {
     const QString what = mc1AxisCommandText(axis, command, value);
     if (const Status ok = require(Mc1Capability::Axes, what); !ok) return ok.error();
-    if (axis < kMc1FirstAxis || axis > kMc1LastAxis)
-        return Error::usage(
-            QCoreApplication::translate("cambench::comm", "axes are %1 to %2, not %3")
-                .arg(kMc1FirstAxis)
-                .arg(kMc1LastAxis)
-                .arg(axis));
+    if (const Status ok = checkAxisNumber(axis); !ok) return ok.error();
     if (command == Mc1AxisCommand::SetSpeed && value <= 0)
         return Error::usage(
             QCoreApplication::translate("cambench::comm", "a speed must be more than 0, not %1")
@@ -140,7 +235,20 @@ Result<Mc1AxisState> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command
     if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
         value = command == Mc1AxisCommand::JogPlus ? 1 : 0;
     if (telegram.withValue) parameters += mc1LittleEndian(value, 4);
-    const Result<QByteArray> done = m_link.exchange(telegram.op, parameters);
+    const Result<QByteArray> done = m_link.exchange(telegram.op, parameters, maxAttempts);
+    if (!done) return done.error();
+    return success();
+}
+
+Result<Mc1AxisDone> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command, qint32 value) {
+    const QString what = mc1AxisCommandText(axis, command, value);
+    if (const Status ok = require(Mc1Capability::Axes, what); !ok) return ok.error();
+    if (const Status ok = checkAxisNumber(axis); !ok) return ok.error();
+    // Checked before the first byte: an axis the controller lacks gets nothing.
+    const Result<Mc1Axes> present = axes();
+    if (!present) return present.error();
+    if (const Status ok = checkAxisExists(axis, *present); !ok) return ok.error();
+    const Status done = sendAxisCommand(axis, command, value);
     const Result<Mc1AxisState> after = axisState(axis);
     if (!done) {
         if (done.error().kind != ErrorKind::Communication) return done.error();
@@ -152,9 +260,22 @@ Result<Mc1AxisState> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command
                         .arg(after->summary())
                   : QCoreApplication::translate("cambench::comm", "reading the axis failed too: %1")
                         .arg(after.error().message);
-        return lostAnswer(what, done.error(), found);
+        if (mc1AxisCommandRetry(command) != Mc1Retry::Never)
+            return Error::communication(
+                QCoreApplication::translate("cambench::comm",
+                                            "no answer to \"%1\" (%2). Read back: %3")
+                    .arg(what, done.error().message, found));
+        return mc1LostAnswer(what, done.error(), found);
     }
-    return after;
+    return mc1Done(after);
+}
+
+MotionControl* Mc1Controller::motionControl() {
+    if (!m_identified) (void)ensureIdentified();
+    // Not identified: a STOP that may fail is better than none, unless the
+    // settings name a variant without axis telegrams.
+    if (!m_identified) return !m_given || *m_given == Mc1Variant::Mc200V2 ? &m_motion : nullptr;
+    return has(Mc1Capability::Axes) ? &m_motion : nullptr;
 }
 
 Result<QByteArray> Mc1Controller::readMemory(int address, int length, const ProgressFn& progress) {

@@ -2,9 +2,9 @@
 
 #include <QCoreApplication>
 
-namespace cambench::comm {
+#include <algorithm>
 
-namespace {}  // namespace
+namespace cambench::comm {
 
 QStringList Mc1ProgramStatus::flagTexts() const {
     // Manual table 39, bit by bit.
@@ -60,7 +60,31 @@ QString Mc1AxisState::summary() const {
                                 .arg(axis)
                                 .arg(position);
     if (error) text += QCoreApplication::translate("cambench::comm", ", axis error");
+    if (provisional)
+        text += QCoreApplication::translate("cambench::comm", " (provisional parameter numbers)");
     return text;
+}
+
+Result<QList<int>> parseMc1AxisList(const QString& text) {
+    QList<int> axes;
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        bool ok = false;
+        const int axis = part.trimmed().toInt(&ok);
+        if (!ok || axis < kMc1FirstAxis || axis > kMc1LastAxis)
+            return Error::usage(QCoreApplication::translate(
+                                    "cambench::comm",
+                                    "axes are numbers %1 to %2 separated by commas (1,2,5); "
+                                    "\"%3\" is not one")
+                                    .arg(kMc1FirstAxis)
+                                    .arg(kMc1LastAxis)
+                                    .arg(part.trimmed()));
+        if (!axes.contains(axis)) axes << axis;
+    }
+    if (axes.isEmpty())
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "no axis given: name them like 1,2,5"));
+    std::sort(axes.begin(), axes.end());
+    return axes;
 }
 
 QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value) {
@@ -98,6 +122,25 @@ QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value) {
                 .arg(value);
     }
     return {};
+}
+
+Status mc1CheckWritable(const Mc1Point& point, Mc1Variant variant) {
+    if (point.area == Mc1Area::Input)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm", "%1 is an input: inputs are read-only")
+                .arg(mc1PointText(point)));
+    const Result<Mc1BitAddress> address = mc1BitAddress(point, isMc200(variant));
+    if (!address) return address.error();
+    return success();
+}
+
+Error mc1LostAnswer(const QString& what, const Error& error, const QString& readBack) {
+    return Error::communication(
+        QCoreApplication::translate(
+            "cambench::comm",
+            "the answer to \"%1\" was lost (%2); it was not sent again, because it acts each time "
+            "it arrives. Read back: %3")
+            .arg(what, error.message, readBack));
 }
 
 QString mc1HexLines(int address, const QByteArray& bytes) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mc1_address.h"
+#include "mc1_parameters.h"
 #include "mc1_variant.h"
 
 #include "comm/device/device_connection.h"
@@ -9,6 +10,8 @@
 #include <QByteArray>
 #include <QList>
 #include <QStringList>
+
+#include <optional>
 
 namespace cambench::comm {
 
@@ -38,8 +41,8 @@ enum class Mc1ProgramCommand { Start, Stop, Step, Reset, FlashSave, FlashLoad };
 // "start the PLC program", for messages.
 QString mc1ProgramCommandText(Mc1ProgramCommand command);
 
-// One axis as the controller reports it (provisional parameters,
-// mc1_parameters.h).
+// One axis as the controller reports it, read through a parameter table
+// (mc1_parameters.h).
 struct Mc1AxisState {
     int axis = 1;
     qint32 position = 0;
@@ -47,9 +50,42 @@ struct Mc1AxisState {
     bool moving = false;
     bool homed = false;
     bool error = false;
-    // "axis 1 is moving to 100 (now at 12)" / "axis 1 stands at 0".
+    // Read through CamBench's guessed parameter numbers: not a fact.
+    bool provisional = false;
+    // "axis 1 is moving to 100 (now at 12)" / "axis 1 stands at 0", with
+    // " (provisional parameter numbers)" when provisional.
     QString summary() const;
 };
+
+// What an acknowledged command left on the controller: it is done (the
+// controller acknowledged it); `after` is what reading back found, or
+// `readBackProblem` says why that read failed, which never makes the
+// command a failure.
+template <class T>
+struct Mc1Done {
+    std::optional<T> after;
+    QString readBackProblem;
+};
+using Mc1AxisDone = Mc1Done<Mc1AxisState>;
+// The outcome of an acknowledged command from what reading back gave.
+template <class T>
+Mc1Done<T> mc1Done(const Result<T>& after) {
+    Mc1Done<T> done;
+    if (after)
+        done.after = *after;
+    else
+        done.readBackProblem = after.error().message;
+    return done;
+}
+
+// The axes a controller has and how that is known.
+struct Mc1Axes {
+    QList<int> numbers;  // logical axes, ascending
+    QString source;      // "found with RDTABLE", "as given", ...
+};
+// "1,2,5" (the CLI's --axes, the connection setting): refused naming what
+// is wrong; duplicates and order do not matter.
+Result<QList<int>> parseMc1AxisList(const QString& text);
 
 enum class Mc1AxisCommand {
     Home,
@@ -66,6 +102,14 @@ enum class Mc1AxisCommand {
 QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value);
 // Whether the command sets an axis in motion (and so wants a confirmation).
 bool mc1AxisCommandMoves(Mc1AxisCommand command);
+
+// Whether `point` can be written on `variant`: refused naming it when it is
+// an input or a number the variant lacks. Nothing is sent.
+Status mc1CheckWritable(const Mc1Point& point, Mc1Variant variant);
+
+// An acting command whose answer was lost and which was therefore not sent
+// again: the error says what reading back found.
+Error mc1LostAnswer(const QString& what, const Error& error, const QString& readBack);
 
 // "0x1000: 0a 0b ..." lines of 16 bytes, for memory shown to a person.
 QString mc1HexLines(int address, const QByteArray& bytes);
@@ -102,18 +146,36 @@ public:
     virtual Result<QByteArray> readExternalPage(quint8 page, const ProgressFn& progress = {}) = 0;
 
     virtual Result<Mc1ProgramStatus> programStatus() = 0;
-    // Returns the status read after the command.
-    virtual Result<Mc1ProgramStatus> programCommand(Mc1ProgramCommand command) = 0;
+    // Acknowledged: done, with the status read after it (or why that read
+    // failed, which never makes the command a failure).
+    virtual Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) = 0;
 
+    // The axes the controller has: on an MC200 V2 each logical axis
+    // RDTABLE answers for (once, then kept), or the ones given with
+    // setGivenAxes; none where the variant has no axis telegrams.
+    virtual Result<Mc1Axes> axes() = 0;
     virtual Result<Mc1AxisState> axisState(int axis) = 0;
-    // Returns the axis as read after the command.
-    virtual Result<Mc1AxisState> axisCommand(int axis, Mc1AxisCommand command,
-                                             qint32 value = 0) = 0;
+    // Acknowledged: done, with the axis as read after it (or why that read
+    // failed). A refusal is an error; a lost answer too, saying what
+    // reading back found (an acting command is not sent again).
+    virtual Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value = 0) = 0;
+
+    // The axes to use instead of finding them (none: find them).
+    void setGivenAxes(const std::optional<QList<int>>& axes) { m_givenAxes = axes; }
+    const std::optional<QList<int>>& givenAxes() const { return m_givenAxes; }
+    // The RDSTAT parameter numbers of the axes' values; the provisional
+    // built-in table until the controller's own is set.
+    void setAxisParameters(const Mc1AxisParameterTable& table) { m_parameters = table; }
+    const Mc1AxisParameterTable& axisParameters() const { return m_parameters; }
 
     virtual Result<QByteArray> readMemory(int address, int length,
                                           const ProgressFn& progress = {}) = 0;
     virtual Status writeMemory(int address, const QByteArray& bytes,
                                const ProgressFn& progress = {}) = 0;
+
+private:
+    std::optional<QList<int>> m_givenAxes;
+    Mc1AxisParameterTable m_parameters = mc1ProvisionalAxisParameters();
 };
 
 }  // namespace cambench::comm

@@ -7,7 +7,11 @@ EngineSettings mc1EngineSettings(LineTiming line, int retries, int timeoutMs) {
     return EngineSettings{line, retries, timeoutMs};
 }
 
-Result<QByteArray> Mc1Link::exchange(Mc1Op op, const QByteArray& parameters) {
+bool isMc1Refusal(const Error& error) {
+    return error.kind == ErrorKind::DeviceError && error.deviceCode == kMc1Nak;
+}
+
+Result<QByteArray> Mc1Link::exchange(Mc1Op op, const QByteArray& parameters, int maxAttempts) {
     const Mc1Telegram* telegram = mc1Find(m_variant, op);
     if (!telegram)
         return Error::usage(QStringLiteral("the %1 does not know this telegram; check the "
@@ -23,6 +27,7 @@ Result<QByteArray> Mc1Link::exchange(Mc1Op op, const QByteArray& parameters) {
     request.message = *message;
     request.longestReplyBytes = mc1ExpectedAnswer(*telegram, parameters).length;
     request.retry = retry == Mc1Retry::Never ? RetryPolicy::Never : RetryPolicy::Idempotent;
+    request.maxAttempts = maxAttempts;
     const Result<QByteArray> answer = m_engine.send(request);
     if (!answer) return answer.error();
     if (answer->size() == 1 && quint8(answer->at(0)) == kMc1Nak)

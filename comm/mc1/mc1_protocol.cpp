@@ -15,10 +15,14 @@ QStringList Mc1ProtocolSettings::variantKeys() const {
 }
 
 QVariantMap Mc1ProtocolSettings::toMap() const {
+    QStringList axes;
+    for (int axis : mc1.axes.value_or(QList<int>())) axes << QString::number(axis);
     return {{QStringLiteral("variant"),
              mc1.variant ? mc1VariantKey(*mc1.variant) : QStringLiteral("auto")},
             {QStringLiteral("timeoutMs"), mc1.timeoutMs},
-            {QStringLiteral("retries"), mc1.retries}};
+            {QStringLiteral("retries"), mc1.retries},
+            // "" finds them (RDTABLE); "1,2" uses those.
+            {QStringLiteral("axes"), axes.join(QLatin1Char(','))}};
 }
 
 void Mc1ProtocolSettings::fromMap(const QVariantMap& map) {
@@ -26,6 +30,12 @@ void Mc1ProtocolSettings::fromMap(const QVariantMap& map) {
         mc1.variant = mc1VariantFromKey(map.value(QStringLiteral("variant")).toString());
     mc1.timeoutMs = qMax(0, map.value(QStringLiteral("timeoutMs"), mc1.timeoutMs).toInt());
     mc1.retries = qBound(0, map.value(QStringLiteral("retries"), mc1.retries).toInt(), 10);
+    if (map.contains(QStringLiteral("axes"))) {
+        // A list that does not parse finds the axes rather than guessing.
+        const Result<QList<int>> axes =
+            parseMc1AxisList(map.value(QStringLiteral("axes")).toString());
+        mc1.axes = axes ? std::optional<QList<int>>(*axes) : std::nullopt;
+    }
 }
 
 std::unique_ptr<ProtocolSettings> Mc1AsciiProtocolSettings::clone() const {

@@ -9,7 +9,8 @@
 namespace cambench::comm {
 
 // The connection settings of the MC-1 protocol ("mc1"): the variant
-// ("auto" probes it) and the user's fixed timeout.
+// ("auto" probes it), the user's fixed timeout and the axes ("axes": ""
+// finds them with RDTABLE, "1,2" uses those).
 class Mc1ProtocolSettings : public ProtocolSettings {
 public:
     Mc1Settings mc1;

@@ -35,6 +35,8 @@ target_sources(cambench_comm PRIVATE
   mc1/mc1_controller.h
   mc1/mc1_controller.cpp
   mc1/mc1_controller_motion.cpp
+  mc1/mc1_axis_motion.h
+  mc1/mc1_axis_motion.cpp
   mc1/mc1_protocol.h
   mc1/mc1_protocol.cpp
   mc1/mc1_ascii_backend.h

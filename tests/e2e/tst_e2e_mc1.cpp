@@ -151,6 +151,97 @@ private Q_SLOTS:
         VERIFY_EXIT(wrong, 2);
         QVERIFY2(wrong.err.contains(QLatin1String("MC100 V1")), qPrintable(wrong.err));
     }
+
+    // Issue 27: `mc axis all stop` on two controllers that differ (axes 1,
+    // 2, 5 and all eight): one line per axis it has, exit 0 when every stop
+    // was acknowledged; the stops go out before any read-back.
+    void stopOfEveryAxis() {
+        SimSession three(QStringLiteral("mc1"));
+        START_SIM(three, {"--axes", "1,2,5"});
+        VERIFY_EXIT(three.cli({"mc", "axis", "5", "jog", "+"}), 0);
+        const QString log = three.path(QStringLiteral("stop.log"));
+        const CliRun stop = three.cli({"--log", log, "mc", "axis", "all", "stop"});
+        VERIFY_EXIT(stop, 0);
+        const QStringList lines = stop.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3);
+        QVERIFY2(lines.at(2).startsWith(QLatin1String("Axis 5: acknowledged; axis 5 stands at")),
+                 qPrintable(stop.out));
+        // Every stop (9B) before the first read-back (RDSTAT E3).
+        QList<QByteArray> sent;
+        for (const QByteArray& line : readBytes(log).split('\n'))
+            if (line.contains(" > ")) sent << line.mid(line.indexOf(" > ") + 3, 2);
+        const qsizetype lastStop = sent.lastIndexOf("9B");
+        const qsizetype firstRead = sent.indexOf("E3");
+        QCOMPARE(sent.count("9B"), 3);
+        QVERIFY2(lastStop >= 0 && lastStop < firstRead, readBytes(log).constData());
+
+        SimSession eight(QStringLiteral("mc1"));
+        START_SIM(eight);
+        const CliRun all = eight.cli({"mc", "axis", "all", "stop"});
+        VERIFY_EXIT(all, 0);
+        QCOMPARE(all.out.count(QLatin1String(": acknowledged;")), 8);
+    }
+
+    // A controller whose axis parameters are not CamBench's guess: the move
+    // is acknowledged (exit 0, said as done) and the refused read-back is
+    // said apart, naming the parameter and what to load; with the
+    // controller's table loaded the axis is read, not provisional; a
+    // malformed table is refused naming its line and nothing is sent.
+    void anAcknowledgedMoveIsDoneWhateverItsReadBack() {
+        SimSession session(QStringLiteral("mc1"));
+        START_SIM(session, {"--parameter-base", "0x2000"});
+        const CliRun moved = session.cli({"mc", "axis", "1", "move", "--rel", "100"});
+        VERIFY_EXIT(moved, 0);
+        QVERIFY2(moved.out.startsWith(QLatin1String("done: move axis 1 by 100 (acknowledged)\n")),
+                 qPrintable(moved.out));
+        QVERIFY2(moved.out.contains(QLatin1String("read-back: failed")), qPrintable(moved.out));
+        QVERIFY2(moved.out.contains(QLatin1String("load the controller's parameter table")),
+                 qPrintable(moved.out));
+
+        const QString table = session.path(QStringLiteral("mc200.csv"));
+        QVERIFY(writeBytes(table,
+                           "name,axis,parameter\nposition,1,0x2010\ntarget,1,0x2011\n"
+                           "status,1,0x2012\n"));
+        const CliRun status = session.cli({"mc", "axis", "1", "status", "--parameters", table});
+        VERIFY_EXIT(status, 0);
+        QVERIFY2(status.out.contains(QLatin1String("position: 100\n")) ||
+                     status.out.contains(QLatin1String("moving: 1\n")),
+                 qPrintable(status.out));
+        QVERIFY2(status.out.contains(QStringLiteral("parameters: %1\n").arg(table)),
+                 qPrintable(status.out));
+        QVERIFY2(!status.out.contains(QLatin1String("provisional")), qPrintable(status.out));
+
+        const CliRun guessed = session.cli({"mc", "axis", "2", "status"});
+        VERIFY_EXIT(guessed, 1);  // refused by the controller, said by name
+        QVERIFY2(guessed.err.contains(QLatin1String("parameter 4128 (0x1020)")),
+                 qPrintable(guessed.err));
+
+        const QString bad = session.path(QStringLiteral("bad.csv"));
+        QVERIFY(writeBytes(bad, "position,1,0x2010\nposition,one,5\n"));
+        const QString log = session.path(QStringLiteral("bad.log"));
+        const CliRun refused = session.cli(
+            {"--log", log, "mc", "axis", "1", "move", "--rel", "5", "--parameters", bad});
+        VERIFY_EXIT(refused, 4);
+        QVERIFY2(refused.err.contains(QLatin1String("line 2: the axis must be 1 to 8")),
+                 qPrintable(refused.err));
+        QVERIFY2(!readBytes(log).contains(" > "), readBytes(log).constData());
+    }
+
+    // Every item of a multi-item write is checked before the first byte:
+    // M99999 does not exist, so M2 is not written either.
+    void aFlagWriteChecksEveryItemFirst() {
+        SimSession session(QStringLiteral("mc1"));
+        START_SIM(session);
+        const QString log = session.path(QStringLiteral("flags.log"));
+        const CliRun refused = session.cli({"--log", log, "mc", "flag", "set", "M2", "M99999"});
+        VERIFY_EXIT(refused, 2);
+        QVERIFY2(refused.err.contains(QLatin1String("nothing was written")),
+                 qPrintable(refused.err));
+        for (const QByteArray& line : readBytes(log).split('\n'))
+            QVERIFY2(!line.contains(" > 3B ") && !line.contains(" > BB "), line.constData());
+        const CliRun read = session.cli({"mc", "flag", "read", "M2"});
+        QCOMPARE(read.out, QStringLiteral("M2 = 0\n"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestE2eMc1)

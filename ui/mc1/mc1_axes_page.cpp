@@ -1,5 +1,7 @@
 #include "mc1_axes_page.h"
 
+#include "mc1_axis_parameters_box.h"
+
 #include "ui/device_session.h"
 #include "ui/motion_stop.h"
 #include "ui/sentence.h"
@@ -40,7 +42,9 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
       m_absolute(valueBox("mc1MoveTo")),
       m_relative(valueBox("mc1MoveBy")),
       m_speed(valueBox("mc1Speed")),
-      m_stop(new QPushButton(tr("STOP (Esc)"))) {
+      m_stop(new QPushButton(tr("STOP (Esc)"))),
+      m_parameters(new Mc1AxisParametersBox(session)),
+      m_axesFound(new QLabel) {
     setObjectName(QStringLiteral("mc1AxesPage"));
     m_axis->setObjectName(QStringLiteral("mc1Axis"));
     m_axis->setRange(comm::kMc1FirstAxis, comm::kMc1LastAxis);
@@ -54,6 +58,7 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     big.setBold(true);
     m_state->setFont(big);
     m_availability->setWordWrap(true);
+    m_details->setWordWrap(true);
 
     // STOP: big, always on the page; the shell's STOP (one implementation),
     // whose key works from every page.
@@ -96,6 +101,9 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_stop);
     layout->addWidget(m_availability);
+    layout->addWidget(m_parameters);
+    m_axesFound->setObjectName(QStringLiteral("mc1AxesFound"));
+    layout->addWidget(m_axesFound);
     layout->addLayout(top);
     layout->addWidget(m_details);
     layout->addWidget(moves);
@@ -105,6 +113,12 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     addLiveValue(m_state);
     addLiveValue(m_details);
     connect(m_axis, &QSpinBox::valueChanged, this, [this] {
+        m_state->setText(QStringLiteral("—"));
+        m_details->clear();
+        poll();
+    });
+    // Values read through another table are not the controller's any more.
+    connect(m_parameters, &Mc1AxisParametersBox::tableChanged, this, [this] {
         m_state->setText(QStringLiteral("—"));
         m_details->clear();
         poll();
@@ -128,6 +142,12 @@ void Mc1AxesPage::factsChanged() {
                                       .arg(comm::mc1VariantName(facts().variant))
                                 : tr("Moves are off while the STOP cannot reach the %1.")
                                       .arg(comm::mc1VariantName(facts().variant)));
+    m_parameters->setVisible(axes);
+    m_axesFound->setVisible(axes);
+    if (axes) {
+        m_parameters->controllerOnLine();
+        findAxes();
+    }
 }
 
 QString Mc1AxesPage::headline(const comm::Mc1AxisState& state) const {
@@ -138,6 +158,27 @@ QString Mc1AxesPage::headline(const comm::Mc1AxisState& state) const {
                           .arg(jog > 0 ? QStringLiteral("+") : QStringLiteral("−"))
                           .arg(state.position)
                     : state.summary();
+}
+
+void Mc1AxesPage::findAxes() {
+    session()->run<comm::Mc1Device, comm::Mc1Axes>(
+        this, tr("Find axes"),
+        [](comm::Mc1Device& device, comm::JobContext&) { return device.axes(); },
+        [this](Result<comm::Mc1Axes> axes) {
+            if (!axes) {
+                m_axesFound->setText(tr("Which axes the controller has could not be read: %1")
+                                         .arg(axes.error().message));
+                return;
+            }
+            QStringList numbers;
+            for (int n : axes->numbers) numbers << QString::number(n);
+            m_axesFound->setText(
+                numbers.isEmpty()
+                    ? tr("The controller has no axes (%1).").arg(axes->source)
+                    : tr("Axes %1 (%2).").arg(numbers.join(QStringLiteral(", ")), axes->source));
+            if (!axes->numbers.isEmpty())
+                m_axis->setRange(axes->numbers.first(), axes->numbers.last());
+        });
 }
 
 void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
@@ -163,7 +204,14 @@ bool Mc1AxesPage::poll() {
         [this, shown](const comm::Mc1AxisState& state) {
             if (shown == axis()) showState(state);
         },
-        QStringLiteral("mc1-axis"));
+        QStringLiteral("mc1-axis"),
+        // A refused read (a parameter number the controller does not know)
+        // or one not sent (an axis it lacks, a number the table lacks):
+        // the page says what was refused and what to load.
+        [this](const Error& error) {
+            m_state->setText(QStringLiteral("—"));
+            m_details->setText(tr("Not read: %1").arg(error.message));
+        });
     return true;
 }
 
@@ -176,23 +224,25 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
     const int shown = axis();
     const QString what = comm::mc1AxisCommandText(shown, command, value);
     if (!confirmCommand(command, what, value)) return;
-    session()->run<comm::Mc1Device, comm::Mc1AxisState>(
+    session()->run<comm::Mc1Device, comm::Mc1AxisDone>(
         this, tr("Axis command"),
         [shown, command, value](comm::Mc1Device& device, comm::JobContext&) {
             return device.axisCommand(shown, command, value);
         },
-        [this, what, shown, command](Result<comm::Mc1AxisState> state) {
-            if (!state) {
-                showResult(asSentence(state.error().message), false);
-                markStale();
-                return;
+        [this, what, shown, command](Result<comm::Mc1AxisDone> done) {
+            // Acknowledged: the jog runs whether or not its read-back came.
+            if (done) {
+                if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
+                    m_jogging.insert(shown, command == Mc1AxisCommand::JogPlus ? 1 : -1);
+                else if (command != Mc1AxisCommand::SetSpeed)
+                    m_jogging.remove(shown);  // another motion, a stop or an acknowledge
             }
-            if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
-                m_jogging.insert(shown, command == Mc1AxisCommand::JogPlus ? 1 : -1);
-            else if (command != Mc1AxisCommand::SetSpeed)
-                m_jogging.remove(shown);  // another motion, a stop or an acknowledge
-            if (shown == axis()) showState(*state);
-            showResult(tr("Sent: %1. Now %2.").arg(what, headline(*state)), true);
+            if (const comm::Mc1AxisState* state = acknowledged(done, what)) {
+                if (shown == axis()) showState(*state);
+                showResult(tr("Done: %1 (the controller acknowledged it). Now %2.")
+                               .arg(capitalised(what), headline(*state)),
+                           true);
+            }
         });
 }
 

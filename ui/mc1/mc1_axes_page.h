@@ -10,6 +10,8 @@ class QSpinBox;
 
 namespace cambench {
 
+class Mc1AxisParametersBox;
+
 // Axes: one axis's position, target and state, live while shown; home,
 // jog, absolute and relative moves and the speed, every motion after a
 // confirmation that names the axis and where it goes. Its STOP button is
@@ -26,6 +28,9 @@ public:
     void markStale() override;
 
     QPushButton* stopButton() const { return m_stop; }
+    Mc1AxisParametersBox* parametersBox() const { return m_parameters; }
+    // "Axes 1, 2, 3 (found with RDTABLE)".
+    QLabel* axesLabel() const { return m_axesFound; }
     QLabel* stateLabel() const { return m_state; }
     int axis() const;
     // Asks (naming the motion), then sends it and shows the axis after.
@@ -43,6 +48,8 @@ private:
     // Asks before a command that changes the axis: a motion names the
     // axis and where it goes, Set speed the axis and the speed.
     bool confirmCommand(comm::Mc1AxisCommand command, const QString& what, qint32 value);
+    // Asks the controller which axes it has; the axis box offers those.
+    void findAxes();
 
     QSpinBox* m_axis;
     QLabel* m_availability;
@@ -52,6 +59,8 @@ private:
     QSpinBox* m_relative;
     QSpinBox* m_speed;
     QPushButton* m_stop;
+    Mc1AxisParametersBox* m_parameters;
+    QLabel* m_axesFound;
     QList<QWidget*> m_motion;
     // Axes jogging since a jog this page sent (+1 or -1): their headline
     // says "jogging", not the target of an earlier move.

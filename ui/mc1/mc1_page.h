@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/live_device_page.h"
+#include "ui/sentence.h"
 
 #include "comm/mc1/mc1_device.h"
 
@@ -33,6 +34,29 @@ public:
 
 protected:
     virtual void factsChanged() {}
+
+    // The outcome of an acting command for a person: a failure (the page's
+    // values go stale), or done - the controller acknowledged it - with,
+    // apart, why reading back failed. The state read back, when there is one.
+    template <class T>
+    const T* acknowledged(const Result<comm::Mc1Done<T>>& done, const QString& what) {
+        if (!done) {
+            showResult(asSentence(done.error().message), false);
+            // What the device does now is not known: the values shown grey.
+            freshness()->missed();
+            markStale();
+            return nullptr;
+        }
+        if (!done->after) {
+            freshness()->missed();
+            markStale();
+            showResult(tr("Done: %1 (the controller acknowledged it). Reading back failed: %2")
+                           .arg(capitalised(what), done->readBackProblem),
+                       true);
+            return nullptr;
+        }
+        return &*done->after;
+    }
 
 private:
     Mc1Facts m_facts;

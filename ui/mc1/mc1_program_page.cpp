@@ -138,20 +138,16 @@ void Mc1ProgramPage::run(Mc1ProgramCommand command) {
     if (!confirm(capitalised(what), tr("%1 on the %2?").arg(capitalised(what), controller),
                  consequence(command)))
         return;
-    session()->run<comm::Mc1Device, comm::Mc1ProgramStatus>(
+    session()->run<comm::Mc1Device, comm::Mc1Done<comm::Mc1ProgramStatus>>(
         this, tr("Program command"),
         [command](comm::Mc1Device& device, comm::JobContext&) {
             return device.programCommand(command);
         },
-        [this, what](Result<comm::Mc1ProgramStatus> status) {
-            if (!status) {
-                showResult(asSentence(status.error().message), false);
-                // What the program does now is not known: the status shown greys.
-                freshness()->missed();
-                return;
+        [this, what](Result<comm::Mc1Done<comm::Mc1ProgramStatus>> done) {
+            if (const comm::Mc1ProgramStatus* status = acknowledged(done, what)) {
+                showStatus(*status);
+                showResult(tr("Done: %1. PLC program %2.").arg(what, status->summary()), true);
             }
-            showStatus(*status);
-            showResult(tr("Done: %1. PLC program %2.").arg(what, status->summary()), true);
         });
 }
 

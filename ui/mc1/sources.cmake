@@ -16,6 +16,8 @@ target_sources(cambench_ui PRIVATE
   mc1/mc1_program_page.cpp
   mc1/mc1_axes_page.h
   mc1/mc1_axes_page.cpp
+  mc1/mc1_axis_parameters_box.h
+  mc1/mc1_axis_parameters_box.cpp
   mc1/mc1_memory_page.h
   mc1/mc1_memory_page.cpp
   mc1/mc1_trend_page.h

@@ -5,6 +5,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -28,6 +29,9 @@ QString mc1Help() {
         "  mc run|stop|step|reset           the PLC program (MC200 V2), then its status\n"
         "  mc flash save|load               the controller's flash (MC200 V2)\n"
         "  mc axis N status|home|stop|quickstop|ack [--json]\n"
+        "  mc axis all stop                 every axis the controller has: the stops first,\n"
+        "                                   then one line each: acknowledged, what reading\n"
+        "                                   back found; exit 0 when every stop was acknowledged\n"
         "  mc axis N move --abs V | --rel V   starts a move (MC200 V2), prints the axis\n"
         "  mc axis N jog +|-                moves until `mc axis N stop`\n"
         "  mc axis N speed V                units per second\n"
@@ -38,11 +42,59 @@ QString mc1Help() {
         "  mc verify FILE                   exit 0 equal, 1 the controller differs\n"
         "  mc restore FILE                  checks FILE against the controller, writes only the\n"
         "                                   differences: written/unchanged/failed per item\n"
+        "  Options of every mc command:\n"
+        "  --axes 1,2        the axes to use instead of finding them (MC200: RDTABLE per\n"
+        "                    logical axis; an MC100 has no axis telegrams, so none)\n"
+        "  --parameters FILE the controller's axis parameter numbers for RDSTAT, a CSV of\n"
+        "                    name,axis,parameter lines (name position, target or status);\n"
+        "                    without it CamBench's provisional guess is used and said\n"
         "  A command that acts (WRBIT, start, step, a move) is sent once: when its answer is\n"
-        "  lost it exits 3 and says what reading back found.\n");
+        "  lost it exits 3 and says what reading back found. An acknowledged command is done\n"
+        "  (exit 0) even when reading back fails; the output says so. A command of several\n"
+        "  items (mc flag set M1 M2) checks them all before it sends anything.\n");
+}
+
+// --axes and --parameters: checked (the file read and parsed) before the
+// connection opens, then handed to the device without a byte on the line.
+Status applyMc1Options(CliSession& session, CommandArgs& args) {
+    const Result<QString> axesText = args.takeOption(QStringLiteral("--axes"));
+    if (!axesText) return axesText.error();
+    const Result<QString> parametersPath = args.takeOption(QStringLiteral("--parameters"));
+    if (!parametersPath) return parametersPath.error();
+    std::optional<QList<int>> axes;
+    if (!axesText->isEmpty()) {
+        const Result<QList<int>> parsed = comm::parseMc1AxisList(*axesText);
+        if (!parsed) return Error::usage(QStringLiteral("--axes: %1").arg(parsed.error().message));
+        axes = *parsed;
+    }
+    std::optional<comm::Mc1AxisParameterTable> table;
+    if (!parametersPath->isEmpty()) {
+        QFile file(*parametersPath);
+        if (!file.open(QIODevice::ReadOnly))
+            return Error::invalidData(QStringLiteral("--parameters: cannot read %1: %2")
+                                          .arg(*parametersPath, file.errorString()));
+        const Result<comm::Mc1AxisParameterTable> parsed =
+            comm::parseMc1AxisParameterTable(file.readAll(), *parametersPath);
+        if (!parsed)
+            return Error::invalidData(QStringLiteral("--parameters %1 was not loaded: %2")
+                                          .arg(*parametersPath, parsed.error().message));
+        table = *parsed;
+    }
+    if (!axes && !table) return success();
+    const Result<bool> applied =
+        runOnMc1<bool>(session, QStringLiteral("mc options"),
+                       [axes, table](Mc1Device& device, JobContext&) -> Result<bool> {
+                           if (axes) device.setGivenAxes(axes);
+                           if (table) device.setAxisParameters(*table);
+                           return true;
+                       });
+    if (!applied) return applied.error();
+    return success();
 }
 
 int runMc(CliSession& session, CommandArgs& args) {
+    if (const Status applied = applyMc1Options(session, args); !applied)
+        return reportError(applied.error());
     const Result<QString> verb =
         takeVerb(args, {QStringLiteral("info"), QStringLiteral("var"), QStringLiteral("flag"),
                         QStringLiteral("io"), QStringLiteral("run"), QStringLiteral("stop"),
@@ -278,24 +330,41 @@ int runMc1Points(CliSession& session, CommandArgs& args, bool io) {
         return printPoints(read->points, read->values, json);
     }
     const bool on = *verb == QLatin1String("set");
-    QString text;
-    for (const Mc1Point& point : points) {
-        const Result<bool> back = runOnMc1<bool>(
-            session, QStringLiteral("mc flag"),
-            [point, on](Mc1Device& device, JobContext&) { return device.writePoint(point, on); });
-        if (!back) {
-            printOut(text);
-            return reportError(back.error());
-        }
-        text += pointLine(point, *back);
-        if (*back != on) {
-            printOut(text);
-            return reportError(Error::device(0, QStringLiteral("%1 reads back %2 after the write")
-                                                    .arg(comm::mc1PointText(point))
-                                                    .arg(*back ? 1 : 0)));
-        }
-    }
-    printOut(text);
+    // Every point is checked against the controller before the first one
+    // is written; then they are written in order until one fails.
+    struct Written {
+        QString text;
+        std::optional<Error> error;
+    };
+    const Result<Written> written = runOnMc1<Written>(
+        session, QStringLiteral("mc flag"),
+        [points, on](Mc1Device& device, JobContext&) -> Result<Written> {
+            const Result<comm::Mc1Variant> variant = device.ensureIdentified();
+            if (!variant) return variant.error();
+            for (const Mc1Point& point : points)
+                if (const Status ok = comm::mc1CheckWritable(point, *variant); !ok)
+                    return Error::usage(
+                        QStringLiteral("%1; nothing was written").arg(ok.error().message));
+            Written done;
+            for (const Mc1Point& point : points) {
+                const Result<bool> back = device.writePoint(point, on);
+                if (!back) {
+                    done.error = back.error();
+                    return done;
+                }
+                done.text += pointLine(point, *back);
+                if (*back != on) {
+                    done.error = Error::device(0, QStringLiteral("%1 reads back %2 after the write")
+                                                      .arg(comm::mc1PointText(point))
+                                                      .arg(*back ? 1 : 0));
+                    return done;
+                }
+            }
+            return done;
+        });
+    if (!written) return reportError(written.error());
+    printOut(written->text);
+    if (written->error) return reportError(*written->error);
     return ExitOk;
 }
 

@@ -20,24 +20,98 @@ using comm::Mc1AxisState;
 using comm::Mc1Device;
 using comm::Mc1ProgramCommand;
 
-int printAxis(const Mc1AxisState& state, bool json) {
-    if (json)
-        return printJson(QJsonDocument(QJsonObject{{QStringLiteral("axis"), state.axis},
-                                                   {QStringLiteral("position"), state.position},
-                                                   {QStringLiteral("target"), state.target},
-                                                   {QStringLiteral("moving"), state.moving},
-                                                   {QStringLiteral("homed"), state.homed},
-                                                   {QStringLiteral("error"), state.error}}));
-    printOut(QStringLiteral("axis: %1\nposition: %2\ntarget: %3\nmoving: %4\nhomed: %5\nerror: "
-                            "%6\nstate: %7\n")
-                 .arg(state.axis)
-                 .arg(state.position)
-                 .arg(state.target)
-                 .arg(state.moving ? 1 : 0)
-                 .arg(state.homed ? 1 : 0)
-                 .arg(state.error ? 1 : 0)
-                 .arg(state.summary()));
+QJsonObject axisJson(const Mc1AxisState& state) {
+    return QJsonObject{{QStringLiteral("axis"), state.axis},
+                       {QStringLiteral("position"), state.position},
+                       {QStringLiteral("target"), state.target},
+                       {QStringLiteral("moving"), state.moving},
+                       {QStringLiteral("homed"), state.homed},
+                       {QStringLiteral("error"), state.error},
+                       {QStringLiteral("provisional"), state.provisional}};
+}
+
+QString axisLines(const Mc1AxisState& state, const QString& parameters) {
+    return QStringLiteral(
+               "axis: %1\nposition: %2\ntarget: %3\nmoving: %4\nhomed: %5\nerror: %6\n"
+               "state: %7\nparameters: %8\n")
+        .arg(state.axis)
+        .arg(state.position)
+        .arg(state.target)
+        .arg(state.moving ? 1 : 0)
+        .arg(state.homed ? 1 : 0)
+        .arg(state.error ? 1 : 0)
+        .arg(state.summary(), parameters);
+}
+
+// What was read and through which parameter numbers, or what an
+// acknowledged command did and, separately, what reading back found.
+struct AxisAnswer {
+    std::optional<QString> done;  // a command: its text (it was acknowledged)
+    comm::Mc1AxisDone axis;
+    QString parameters;  // "provisional: CamBench's built-in guess ..." / the file
+};
+
+int printAxis(const AxisAnswer& answer, bool json) {
+    const comm::Mc1AxisDone& axis = answer.axis;
+    if (json) {
+        QJsonObject object =
+            axis.after ? axisJson(*axis.after)
+                       : QJsonObject{{QStringLiteral("readBackError"), axis.readBackProblem}};
+        if (answer.done) {
+            object.insert(QStringLiteral("command"), *answer.done);
+            object.insert(QStringLiteral("acknowledged"), true);
+        }
+        object.insert(QStringLiteral("parameters"), answer.parameters);
+        return printJson(QJsonDocument(object));
+    }
+    QString text;
+    if (answer.done) text += QStringLiteral("done: %1 (acknowledged)\n").arg(*answer.done);
+    if (axis.after)
+        text += axisLines(*axis.after, answer.parameters);
+    else
+        text += QStringLiteral("read-back: failed (the command itself was acknowledged): %1\n")
+                    .arg(axis.readBackProblem);
+    printOut(text);
     return ExitOk;
+}
+
+QString parametersText(const comm::Mc1AxisParameterTable& table) {
+    return table.provisional ? QStringLiteral(
+                                   "provisional: %1; load the controller's own with "
+                                   "--parameters FILE")
+                                   .arg(table.source)
+                             : table.source;
+}
+
+// `mc axis all stop`: every axis the controller has, stops first,
+// read-backs after; one line each.
+int runMc1StopAll(CliSession& session, CommandArgs& args) {
+    if (const Result<QString> verb = takeVerb(args, {QStringLiteral("stop")}); !verb)
+        return reportError(verb.error());
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    const Result<comm::MotionStopReport> report = runOnMc1<comm::MotionStopReport>(
+        session, QStringLiteral("mc axis all stop"),
+        [](Mc1Device& device, JobContext&) -> Result<comm::MotionStopReport> {
+            comm::MotionControl* motion = device.motionControl();
+            if (!motion) {
+                const Result<comm::Mc1Axes> axes = device.axes();
+                return Error::usage(QStringLiteral("this connection moves no axis: %1")
+                                        .arg(axes ? axes->source : axes.error().message));
+            }
+            return motion->stopAllMotion();
+        });
+    if (!report) return reportError(report.error());
+    QString text;
+    for (const comm::MotionStopLine& line : report->lines)
+        text += QStringLiteral("%1: %2; %3\n")
+                    .arg(line.what,
+                         line.acknowledged ? QStringLiteral("acknowledged")
+                                           : QStringLiteral("NOT acknowledged"),
+                         line.detail);
+    printOut(text);
+    if (report->allAcknowledged()) return ExitOk;
+    return reportError(Error::communication(
+        QStringLiteral("not every stop was acknowledged: use the machine's emergency stop")));
 }
 
 Result<qint32> parseValue(const QString& text, const QString& what) {
@@ -67,17 +141,24 @@ int runMc1Program(CliSession& session, CommandArgs& args, const QString& verb) {
                                                   : Mc1ProgramCommand::Reset;
     }
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<comm::Mc1ProgramStatus> status = runOnMc1<comm::Mc1ProgramStatus>(
-        session, QStringLiteral("mc ") + verb,
-        [command](Mc1Device& device, JobContext&) { return device.programCommand(command); });
-    if (!status) return reportError(status.error());
-    printOut(QStringLiteral("program: %1\n").arg(status->summary()));
+    const Result<comm::Mc1Done<comm::Mc1ProgramStatus>> done =
+        runOnMc1<comm::Mc1Done<comm::Mc1ProgramStatus>>(
+            session, QStringLiteral("mc ") + verb,
+            [command](Mc1Device& device, JobContext&) { return device.programCommand(command); });
+    if (!done) return reportError(done.error());
+    // Acknowledged is done; a status that could not be read is said apart.
+    printOut(done->after ? QStringLiteral("program: %1\n").arg(done->after->summary())
+                         : QStringLiteral("done: %1 (acknowledged)\nread-back: failed (the "
+                                          "command itself was acknowledged): %2\n")
+                               .arg(comm::mc1ProgramCommandText(command), done->readBackProblem));
     return ExitOk;
 }
 
 int runMc1Axis(CliSession& session, CommandArgs& args) {
-    const Result<QString> axisText = args.takeRequiredPositional(QStringLiteral("an axis N"));
+    const Result<QString> axisText =
+        args.takeRequiredPositional(QStringLiteral("an axis N or all"));
     if (!axisText) return reportError(axisText.error());
+    if (*axisText == QLatin1String("all")) return runMc1StopAll(session, args);
     const Result<int> axis = parseIntArgument(*axisText, QStringLiteral("axis"),
                                               comm::kMc1FirstAxis, comm::kMc1LastAxis);
     if (!axis) return reportError(axis.error());
@@ -127,13 +208,25 @@ int runMc1Axis(CliSession& session, CommandArgs& args) {
                                                    : Mc1AxisCommand::QuickStop;
     }
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<Mc1AxisState> state = runOnMc1<Mc1AxisState>(
+    const Result<AxisAnswer> answer = runOnMc1<AxisAnswer>(
         session, QStringLiteral("mc axis"),
-        [axis = *axis, command, value](Mc1Device& device, JobContext&) {
-            return command ? device.axisCommand(axis, *command, value) : device.axisState(axis);
+        [axis = *axis, command, value](Mc1Device& device, JobContext&) -> Result<AxisAnswer> {
+            AxisAnswer answer;
+            answer.parameters = parametersText(device.axisParameters());
+            if (!command) {
+                const Result<Mc1AxisState> state = device.axisState(axis);
+                if (!state) return state.error();
+                answer.axis.after = *state;
+                return answer;
+            }
+            const Result<comm::Mc1AxisDone> done = device.axisCommand(axis, *command, value);
+            if (!done) return done.error();
+            answer.done = comm::mc1AxisCommandText(axis, *command, value);
+            answer.axis = *done;
+            return answer;
         });
-    if (!state) return reportError(state.error());
-    return printAxis(*state, json);
+    if (!answer) return reportError(answer.error());
+    return printAxis(*answer, json);
 }
 
 }  // namespace cambench::cli

@@ -4,6 +4,7 @@
 #include "sim_mc1_line.h"
 
 #include "comm/mc1/mc1_address.h"
+#include "comm/mc1/mc1_device.h"
 
 namespace cambench::comm {
 
@@ -50,6 +51,28 @@ Result<int> syncFrom(const QString& text, Mc1Variant variant) {
 
 const QLatin1String kAsciiProtocol("mc1-ascii");
 
+// axes= / --axes: the logical axes the simulated MC200 has.
+Status axesFrom(const QString& text, Mc1SimAxes& axes) {
+    const Result<QList<int>> parsed = parseMc1AxisList(text);
+    if (!parsed) return parsed.error();
+    axes.axes = *parsed;
+    return success();
+}
+
+// parameters= / --parameter-base: where its axis parameters start.
+Status parameterBaseFrom(const QString& text, Mc1SimAxes& axes) {
+    bool ok = false;
+    const uint base = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
+                          ? text.mid(2).toUInt(&ok, 16)
+                          : text.toUInt(&ok, 10);
+    if (!ok || base + 0x10 * kMc1LastAxis + 2 > 0xFFFF)
+        return Error::usage(
+            QStringLiteral("the parameter base must be a number below 0xFF00, not \"%1\"")
+                .arg(text));
+    axes.parameterBase = quint16(base);
+    return success();
+}
+
 // The ASCII protocol is the MC100's (V1 and V2 alike), without the
 // single-FIFO synchronisation.
 Status checkAscii(Mc1Variant variant, int syncMs) {
@@ -72,9 +95,13 @@ SimulatedLine mc1AsciiSimulatedLine(int baud, const SimHostOptions& shared) {
 }
 
 SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared,
-                               int syncMs) {
+                               int syncMs, const Mc1SimAxes& axes) {
     auto line = std::make_unique<SimMc1Line>(variant, shared.faults);
     line->setSync(syncMs);
+    if (axes.axes) line->controller().setAxes(*axes.axes);
+    if (axes.parameterBase)
+        line->controller().setAxisParameters(mc1AxisParametersFrom(
+            *axes.parameterBase, QStringLiteral("the simulated controller's own")));
     addDemoState(line->controller());
     const QString description =
         QStringLiteral("simulator (%1, %2 baud%3)")
@@ -93,6 +120,7 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
                        const QString& protocol) -> Result<SimulatedLine> {
         Mc1Variant variant = kDefaultVariant;
         QString sync;
+        Mc1SimAxes axes;
         const QString options = port.section(QLatin1Char(':'), 1);
         for (const QString& option : options.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
             const QString key = option.section(QLatin1Char('='), 0, 0).trimmed();
@@ -101,10 +129,16 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
                 sync = value;
                 continue;
             }
+            if (key == QLatin1String("axes") || key == QLatin1String("parameters")) {
+                const Status ok = key == QLatin1String("axes") ? axesFrom(value, axes)
+                                                               : parameterBaseFrom(value, axes);
+                if (!ok) return ok.error();
+                continue;
+            }
             if (key != QLatin1String("variant"))
                 return Error::usage(
-                    QStringLiteral("the MC-1 simulator's port takes variant=… and sync=…, not "
-                                   "\"%1\"")
+                    QStringLiteral("the MC-1 simulator's port takes variant=…, sync=…, axes=… "
+                                   "and parameters=…, not \"%1\"")
                         .arg(option));
             const Result<Mc1Variant> parsed = variantFrom(value);
             if (!parsed) return parsed.error();
@@ -122,7 +156,7 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
             if (const Status ascii = checkAscii(variant, syncMs); !ascii) return ascii.error();
             return mc1AsciiSimulatedLine(serial.baud, shared);
         }
-        return mc1SimulatedLine(variant, serial.baud, shared, syncMs);
+        return mc1SimulatedLine(variant, serial.baud, shared, syncMs, axes);
     };
     info.options = [] {
         return QList<QCommandLineOption>{
@@ -137,6 +171,15 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
              QStringLiteral("MC-1, MC100 V1: an MC100MA single-FIFO card sending 0xFF every 5 or "
                             "10 ms; telegrams outside the window after one are lost."),
              QStringLiteral("ms")},
+            {QStringLiteral("axes"),
+             QStringLiteral("MC-1, MC200: the logical axes it has, e.g. 1,3 (default 1-8); "
+                            "commands for others are refused."),
+             QStringLiteral("list")},
+            {QStringLiteral("parameter-base"),
+             QStringLiteral("MC-1, MC200: its axis parameters are base + 0x10 x axis + 0 "
+                            "(position), 1 (target), 2 (status); default 0x1000, CamBench's "
+                            "built-in guess."),
+             QStringLiteral("number")},
         };
     };
     info.fromOptions = [](const QCommandLineParser& parser,
@@ -160,13 +203,22 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
             if (!parsed) return Error::usage(QStringLiteral("--%1").arg(parsed.error().message));
             syncMs = *parsed;
         }
+        Mc1SimAxes axes;
+        if (parser.isSet(QStringLiteral("axes")))
+            if (const Status ok = axesFrom(parser.value(QStringLiteral("axes")), axes); !ok)
+                return Error::usage(QStringLiteral("--axes: %1").arg(ok.error().message));
+        if (parser.isSet(QStringLiteral("parameter-base")))
+            if (const Status ok =
+                    parameterBaseFrom(parser.value(QStringLiteral("parameter-base")), axes);
+                !ok)
+                return Error::usage(QStringLiteral("--parameter-base: %1").arg(ok.error().message));
         if (shared.protocol == kAsciiProtocol) {
             if (const Status ascii = checkAscii(variant, syncMs); !ascii)
                 return Error::usage(
                     QStringLiteral("--protocol mc1-ascii: %1").arg(ascii.error().message));
             return mc1AsciiSimulatedLine(baud, shared);
         }
-        return mc1SimulatedLine(variant, baud, shared, syncMs);
+        return mc1SimulatedLine(variant, baud, shared, syncMs, axes);
     };
     registry.add(info);
 }

@@ -5,18 +5,26 @@
 
 namespace cambench::comm {
 
+// How a simulated MC200's axes differ from the default (axes 1..8, the
+// parameter numbers CamBench guesses).
+struct Mc1SimAxes {
+    std::optional<QList<int>> axes;        // the logical axes it has
+    std::optional<quint16> parameterBase;  // its numbers: base + 0x10 × axis + 0, 1, 2
+};
+
 // A simulated MC100/MC200 of `variant` on its line at `baud`, with demo
 // values (variables, flags, outputs) so that a first look shows something;
 // `syncMs` 5 or 10: an MC100MA single-FIFO card's 0xFF synchronisation.
 SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOptions& shared,
-                               int syncMs = 0);
+                               int syncMs = 0, const Mc1SimAxes& axes = {});
 
 // A simulated MC100 that speaks its ASCII protocol ("mc1-ascii").
 SimulatedLine mc1AsciiSimulatedLine(int baud, const SimHostOptions& shared);
 
-// The MC-1 simulator: "sim" / "sim:variant=mc100v1;sync=10" ports when the
-// PC speaks mc1, and cambench-sim --family mc1 [--variant V] [--sync MS]
-// [--baud B].
+// The MC-1 simulator: "sim" / "sim:variant=mc100v1;sync=10" /
+// "sim:axes=1,3;parameters=0x2000" ports when the PC speaks mc1, and
+// cambench-sim --family mc1 [--variant V] [--sync MS] [--baud B]
+// [--axes 1,3] [--parameter-base 0x2000].
 void registerMc1Simulator(SimulatorRegistry& registry);
 
 }  // namespace cambench::comm

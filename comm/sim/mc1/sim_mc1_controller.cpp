@@ -4,6 +4,7 @@
 #include "comm/mc1/mc1_catalogue.h"
 #include "comm/mc1/mc1_parameters.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cambench::comm {
@@ -77,7 +78,13 @@ int SimMc1Controller::requestLength(const QByteArray& bytes) const {
     return bytes.size() < 5 ? 0 : 5 + at(bytes, 4);
 }
 
+void SimMc1Controller::setAxes(const QList<int>& logical) {
+    m_presentAxes = logical;
+    std::sort(m_presentAxes.begin(), m_presentAxes.end());
+}
+
 QByteArray SimMc1Controller::handle(const QByteArray& request, qint64 nowMs) {
+    m_received << request;
     if (request.size() < 2 || requestLength(request) != request.size() ||
         mc1Checksum(request) != at(request, 1))
         return nak();
@@ -151,17 +158,21 @@ QByteArray SimMc1Controller::answer(const QByteArray& request, qint64 nowMs) {
             m_memory.replace(address, n, p.mid(3, n));
             return ack();
         }
-        case Mc1Op::ReadStatus:
-            return reply(mc1LittleEndian(statusParameter(u16(0), nowMs), 4));
+        case Mc1Op::ReadStatus: {
+            const std::optional<qint32> value = statusParameter(u16(0), nowMs);
+            if (!value) return nak();
+            return reply(mc1LittleEndian(*value, 4));
+        }
         case Mc1Op::WriteStatus:
             m_status.insert(u16(0), qint32(mc1FromLittleEndian(p.mid(2, 4), true)));
             return ack();
         case Mc1Op::ReadTable: {
-            // Logical axis n is physical axis n-1, a servo (type 1): provisional.
-            const int axis = at(p, 2);
-            if (axis < 1 || axis > int(m_axes.size())) return nak();
+            // The axes present fill the physical slots in order, servos
+            // (type 1): provisional; an axis it lacks is refused.
+            const int slot = int(m_presentAxes.indexOf(at(p, 2)));
+            if (slot < 0) return nak();
             QByteArray data;
-            data.append(char(axis - 1));
+            data.append(char(slot));
             data.append(char(1));
             return reply(data);
         }
@@ -230,7 +241,7 @@ void SimMc1Controller::startMove(int axis, double target, qint64 nowMs) {
 
 QByteArray SimMc1Controller::axisCommand(int logical, quint8 command, qint32 value, bool withValue,
                                          qint64 nowMs) {
-    if (logical < 1 || logical > int(m_axes.size())) return nak();
+    if (!m_presentAxes.contains(logical)) return nak();
     const int i = logical - 1;
     Axis& a = m_axes[i];
     const double here = axisPosition(logical, nowMs);
@@ -299,17 +310,19 @@ quint16 SimMc1Controller::programCounter(qint64 nowMs) const {
     return quint16((m_pc + (nowMs - m_runStartMs)) % kProgramLength);
 }
 
-qint32 SimMc1Controller::statusParameter(int parameter, qint64 nowMs) const {
-    // The axes' parameters (provisional numbers, mc1_parameters.h).
-    for (int axis = kMc1FirstAxis; axis <= kMc1LastAxis; ++axis) {
+std::optional<qint32> SimMc1Controller::statusParameter(int parameter, qint64 nowMs) const {
+    // The axes' parameters, by its own table.
+    for (int axis : m_presentAxes) {
         const Axis& a = m_axes.at(axis - 1);
-        if (parameter == mc1AxisParameter(axis, Mc1AxisValue::Position))
+        if (parameter == m_parameters.number(axis, Mc1AxisValue::Position))
             return axisPosition(axis, nowMs);
-        if (parameter == mc1AxisParameter(axis, Mc1AxisValue::Target))
+        if (parameter == m_parameters.number(axis, Mc1AxisValue::Target))
             return qint32(std::lround(a.target));
-        if (parameter == mc1AxisParameter(axis, Mc1AxisValue::Status))
+        if (parameter == m_parameters.number(axis, Mc1AxisValue::Status))
             return (axisMoving(axis, nowMs) ? kMc1AxisMoving : 0) | (a.homed ? kMc1AxisHomed : 0);
     }
+    // Others as written before; one never written it does not know.
+    if (!m_status.contains(parameter)) return std::nullopt;
     return m_status.value(parameter);
 }
 

@@ -1,21 +1,26 @@
 #pragma once
 
 #include "comm/mc1/mc1_address.h"
+#include "comm/mc1/mc1_parameters.h"
 #include "comm/mc1/mc1_variant.h"
 
 #include <QByteArray>
+#include <QList>
 #include <QMap>
 
 #include <array>
+#include <optional>
 
 namespace cambench::comm {
 
 // A simulated MC100 or MC200 of one variant: what a complete request
 // telegram does to it and the answer it gives (an empty answer: none).
 // Variables, internal RAM, external RAM pages, memory, status parameters,
-// the PLC program's state and eight axes that move with time. Like the
-// real one it checks neither variable numbers nor write addresses, and it
-// NAKs an opcode its variant lacks, a bad checksum or a bad length.
+// the PLC program's state and up to eight axes that move with time. Like
+// the real one it checks neither variable numbers nor write addresses, and
+// it NAKs an opcode its variant lacks, a bad checksum or a bad length, an
+// axis command or RDTABLE for an axis it lacks and RDSTAT of a parameter it
+// does not know.
 class SimMc1Controller {
 public:
     explicit SimMc1Controller(Mc1Variant variant);
@@ -27,6 +32,15 @@ public:
     // there to tell (WRMEM carries its n); 0 while unknown; -1 for a first
     // byte that starts no telegram of this variant.
     int requestLength(const QByteArray& bytes) const;
+
+    // The logical axes it has (1..8 by default), each on the next physical
+    // slot; commands for others are refused (NAK).
+    void setAxes(const QList<int>& logical);
+    const QList<int>& axes() const { return m_presentAxes; }
+    // Its own axis parameter numbers (by default CamBench's guess).
+    void setAxisParameters(const Mc1AxisParameterTable& table) { m_parameters = table; }
+    // Every whole telegram it received, in order (tests count them).
+    const QList<QByteArray>& received() const { return m_received; }
 
     // State, for tests and the demo.
     qint64 variable(int number) const { return m_variables.value(number); }
@@ -54,7 +68,7 @@ private:
     void startMove(int axis, double target, qint64 nowMs);
     QByteArray& page(quint8 page);
     // RDSTAT: the axes' parameters from their motion, others as written.
-    qint32 statusParameter(int parameter, qint64 nowMs) const;
+    std::optional<qint32> statusParameter(int parameter, qint64 nowMs) const;
     quint8 flagPage() const;
 
     Mc1Variant m_variant;
@@ -69,6 +83,9 @@ private:
     qint64 m_runStartMs = 0;
     QMap<int, qint64> m_flashedVariables;
     std::array<Axis, 8> m_axes{};
+    QList<int> m_presentAxes{1, 2, 3, 4, 5, 6, 7, 8};
+    Mc1AxisParameterTable m_parameters = mc1ProvisionalAxisParameters();
+    QList<QByteArray> m_received;
 };
 
 }  // namespace cambench::comm

@@ -3,13 +3,12 @@
 // probed or checked, variables of the right width, flags and I/O by their
 // manual numbers, memory, and what a lost answer to an acting telegram
 // leads to (read back and said, never sent twice).
-#include "comm/mc1/mc1_controller.h"
-#include "comm/mc1/mc1_parameters.h"
-#include "comm/sim/mc1/mc1_simulator.h"
-#include "comm/sim/mc1/sim_mc1_line.h"
-#include "comm/sim/sim_transport.h"
+#include "mc1_test_bench.h"
 
-#include <QElapsedTimer>
+#include "comm/mc1/mc1_ascii_controller.h"
+#include "comm/mc1/mc1_parameters.h"
+#include "comm/traffic/traffic_entry.h"
+
 #include <QTest>
 
 using namespace cambench;
@@ -17,40 +16,7 @@ using namespace cambench::comm;
 
 namespace {
 
-// A simulated controller of `variant` behind an Mc1Controller told
-// `given` (none: probe).
-struct Bench {
-    explicit Bench(Mc1Variant variant, std::optional<Mc1Variant> given = std::nullopt,
-                   const SimFaultSettings& faults = {}, int syncMs = 0)
-        : transport(line(variant, faults, syncMs)),
-          controller(transport, settings(given), timing()) {
-        (void)transport.open();
-    }
-    static SimulatedLine line(Mc1Variant variant, const SimFaultSettings& faults, int syncMs) {
-        SimHostOptions shared;
-        shared.throttle = false;
-        shared.faults = faults;
-        return mc1SimulatedLine(variant, 115200, shared, syncMs);
-    }
-    SimMc1Line& simLine() { return static_cast<SimMc1Line&>(transport.line()); }
-    static Mc1Settings settings(std::optional<Mc1Variant> given) {
-        Mc1Settings s;
-        s.variant = given;
-        return s;
-    }
-    static LineTiming timing() {
-        LineTiming t;
-        t.baud = 115200;
-        return t;
-    }
-    SimMc1Controller& sim() { return static_cast<SimMc1Line&>(transport.line()).controller(); }
-    qint64 simNow() const { return clock.elapsed(); }
-
-    SimTransport transport;
-    Mc1Controller controller;
-    Mc1Device& device = controller;  // as jobs see it (with its default arguments)
-    QElapsedTimer clock;
-};
+using Bench = Mc1TestBench;
 
 Mc1Point point(const char* text) {
     return *parseMc1Point(QLatin1String(text));
@@ -158,16 +124,16 @@ private Q_SLOTS:
 
     void theProgramStartsStepsAndStops() {
         Bench bench(Mc1Variant::Mc200V2);
-        const Result<Mc1ProgramStatus> running =
+        const Result<Mc1Done<Mc1ProgramStatus>> running =
             bench.device.programCommand(Mc1ProgramCommand::Start);
         QVERIFY(running.ok());
-        QVERIFY(running->running());
-        const Result<Mc1ProgramStatus> stopped =
+        QVERIFY(running->after->running());
+        const Result<Mc1Done<Mc1ProgramStatus>> stopped =
             bench.device.programCommand(Mc1ProgramCommand::Stop);
-        QVERIFY(!stopped->running());
-        const Result<Mc1ProgramStatus> stepped =
+        QVERIFY(!stopped->after->running());
+        const Result<Mc1Done<Mc1ProgramStatus>> stepped =
             bench.device.programCommand(Mc1ProgramCommand::Step);
-        QCOMPARE(stepped->programCounter, quint16(stopped->programCounter + 1));
+        QCOMPARE(stepped->after->programCounter, quint16(stopped->after->programCounter + 1));
         Bench mc100(Mc1Variant::Mc100V1);
         QCOMPARE(mc100.device.programStatus().error().kind, ErrorKind::Usage);
     }
@@ -176,7 +142,7 @@ private Q_SLOTS:
         SimFaultSettings faults;
         faults.dropFirstReplyTo = QByteArray(1, char(0x9F));  // the first AXIS_DATA's ACK
         Bench bench(Mc1Variant::Mc200V2, std::nullopt, faults);
-        const Result<Mc1AxisState> moved =
+        const Result<Mc1AxisDone> moved =
             bench.device.axisCommand(1, Mc1AxisCommand::MoveRelative, 100);
         QVERIFY(!moved.ok());
         QCOMPARE(moved.error().kind, ErrorKind::Communication);
@@ -197,6 +163,30 @@ private Q_SLOTS:
         const Result<bool> set = bench.device.writePoint(point("M40"), true);
         QVERIFY2(set.ok(), qPrintable(set.error().message));
         QVERIFY(*set);
+    }
+
+    // MC100 ASCII: `A9=1` switches an output; its lost answer is settled by
+    // reading A9 back, never by sending it again (issue 27).
+    void anAsciiOutputWriteIsSentOnce() {
+        SimFaultSettings faults;
+        faults.dropFirstReplyTo = "A9=1";
+        SimHostOptions shared;
+        shared.throttle = false;
+        shared.faults = faults;
+        SimTransport transport(mc1AsciiSimulatedLine(115200, shared));
+        QVERIFY(transport.open().ok());
+        Mc1AsciiController controller(transport, 0, Bench::timing());
+        int sent = 0;
+        controller.engine().setTrafficSink([&sent](const TrafficEntry& entry) {
+            if (entry.outgoing && entry.bytes.startsWith("A9=1")) ++sent;
+        });
+        const Result<bool> set = controller.writePoint(point("A9"), true);
+        QVERIFY2(set.ok(), qPrintable(set.error().message));
+        QVERIFY(*set);
+        QCOMPARE(sent, 1);
+        // A variable write sets an absolute value: its lost answer may be asked again.
+        controller.engine().setTrafficSink({});
+        QVERIFY(controller.writeVariable(3, 42).ok());
     }
 
     // An MC100MA single-FIFO card: a telegram sent blind is lost; once the
@@ -244,7 +234,7 @@ private Q_SLOTS:
         // 20 moves by 10: each arrives at most once.
         int confirmed = 0;
         for (int i = 0; i < 20; ++i) {
-            const Result<Mc1AxisState> moved =
+            const Result<Mc1AxisDone> moved =
                 bench.device.axisCommand(2, Mc1AxisCommand::MoveRelative, 10);
             if (moved) ++confirmed;
             waitStill(bench.device, 2);
