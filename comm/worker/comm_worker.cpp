@@ -23,7 +23,7 @@ struct CommWorker::Impl {
     }
 };
 
-CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Impl>()) {
+CommWorker::CommWorker(QObject* parent) : JobRunner(parent), d(std::make_unique<Impl>()) {
     qRegisterMetaType<ConnectionState>();
     qRegisterMetaType<TrafficEntry>();
 
@@ -46,6 +46,10 @@ CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Im
             Qt::QueuedConnection);
     connect(d->core, &WorkerCore::traffic, this, &CommWorker::traffic, Qt::QueuedConnection);
     d->thread->start();
+}
+
+std::unique_ptr<JobRunner> makeCommWorker(QObject* parent) {
+    return std::make_unique<CommWorker>(parent);
 }
 
 CommWorker::~CommWorker() {

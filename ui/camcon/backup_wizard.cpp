@@ -52,7 +52,7 @@ BackupWizard::BackupWizard(DeviceSession* session, Workspace* workspace, QWidget
     setPage(CheckPage, createCheckPage());
     m_progress->setCommitPage(false);
     setPage(RunPage, m_progress);
-    connect(&m_session->worker(), &comm::CommWorker::jobProgress, this,
+    connect(&m_session->worker(), &comm::JobRunner::jobProgress, this,
             [this](quint64 id, qint64 done, qint64 total, const QString&) {
                 if (id == m_job) m_progress->setProgress(done, total);
             });
