@@ -124,9 +124,6 @@ void BackupWizard::setPath(const QString& path) {
 void BackupWizard::setSafetyBackupPath(const QString& path) {
     m_safetyPath->setText(path);
 }
-void BackupWizard::setForceRestore(bool force) {
-    m_force->setChecked(force);
-}
 BackupWizard::Mode BackupWizard::mode() const {
     return m_backup->isChecked() ? Mode::Backup : Mode::Restore;
 }
@@ -312,7 +309,6 @@ void BackupWizard::runRestore() {
 void BackupWizard::finishWork(bool ok, const QString& report) {
     m_job = 0;
     m_progress->finish(ok, report);
-    Q_EMIT finishedWork(ok);
 }
 
 void BackupWizard::reject() {

@@ -208,10 +208,6 @@ QString MonitorPage::rateNote() const {
     return m_rateNote->text();
 }
 
-void MonitorPage::setPaused(bool paused) {
-    m_pause->setChecked(paused);
-}
-
 int MonitorPage::trendSamples() const {
     return m_trend->sampleCount();
 }

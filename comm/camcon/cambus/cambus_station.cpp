@@ -69,10 +69,6 @@ void CamBusStation::cancelUnsent(int destination) {
     }
 }
 
-bool CamBusStation::isQueued(quint64 id) const {
-    return std::any_of(m_tx.begin(), m_tx.end(), [id](const Outgoing& o) { return o.id == id; });
-}
-
 int CamBusStation::fullQueueAnswers(quint64 id) const {
     for (const Outgoing& block : m_tx)
         if (block.id == id) return block.fullQueueAnswers;

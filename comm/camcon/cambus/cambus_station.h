@@ -65,7 +65,6 @@ public:
     // Drops block `id` unless it has started to leave; false when it has
     // (its outcome will come as a Delivery) or is not queued.
     bool cancel(quint64 id);
-    bool isQueued(quint64 id) const;
     // How often the destination answered block `id`'s TO with a full
     // receive queue (80+D): no failure, but worth saying when it goes on.
     int fullQueueAnswers(quint64 id) const;
