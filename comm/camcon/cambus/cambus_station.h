@@ -12,7 +12,7 @@
 
 namespace cambench::comm {
 
-// How one user behaves on the bus (PROTOCOL-NOTES §8 and its P-lines).
+// How one user behaves on the bus (docs/protocols/cambus.md and its P-lines).
 struct CamBusStationConfig {
     int number = kCamBusDefaultPcNumber;  // 0..63
     int baud = 38400;
@@ -27,10 +27,10 @@ struct CamBusStationConfig {
     int ridRunWithoutNew = 130;  // P3: RIDs in a row without a new user end the search
     int maxSilentTurns = 3;      // P9
     int masterGapMs = 0;         // P1: the master's pause before the next token (0: none)
-    // The PC's rule (§8 "PC"): no block before this run answered its own RID,
-    // so that no block bit left from an earlier run swallows the first
-    // block; it breaks in (an initialisation phase) when polled before, or
-    // when a whole token round went by without it (see README, CB1).
+    // The PC's rule (docs/protocols/cambus.md, "The PC"): no block before this run answered its own
+    // RID, so that no block bit left from an earlier run swallows the first block; it breaks in (an
+    // initialisation phase) when polled before, or when a whole token round went by without it (see
+    // README, CB1).
     bool joinBeforeFirstBlock = false;
     // Takes part in starting initialisation phases when not polled. A
     // user that falls silent (simulator fault) does not.
