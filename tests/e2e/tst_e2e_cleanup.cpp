@@ -92,14 +92,16 @@ DyingTestRun runDyingTest(const QString& function, bool kill) {
 }
 
 // Bounded: the kernel's SIGKILL reaches the simulator at once, its end
-// takes as long as the process needs to be torn down. An ended simulator is
-// reaped (it is this process's orphan now).
+// takes as long as the process needs to be torn down. The simulator is
+// reaped (it is this process's orphan now); one that outlived its test is
+// killed first, so that a failing run leaves nothing behind either.
 bool simulatorEnds(qint64 pid) {
     const QDeadlineTimer deadline(hangBoundMs(10000));
     while (!processEnded(pid) && !deadline.hasExpired()) QThread::msleep(20);
-    if (!processEnded(pid)) return false;
-    waitpid(pid_t(pid), nullptr, WNOHANG);
-    return true;
+    const bool ended = processEnded(pid);
+    if (!ended) kill(pid_t(pid), SIGKILL);
+    waitpid(pid_t(pid), nullptr, ended ? WNOHANG : 0);
+    return ended;
 }
 
 }  // namespace
