@@ -303,10 +303,6 @@ void ConnectionPage::detect() {
         [this](Result<usecases::DetectResult> result) { showDetectResult(result); });
 }
 
-QString ConnectionPage::detectText() const {
-    return m_detectResult->isVisible() ? m_detectResult->text() : QString();
-}
-
 void ConnectionPage::showDetectResult(const Result<usecases::DetectResult>& result) {
     m_detect->setEnabled(true);
     QPalette alarm = m_detectResult->palette();

@@ -57,7 +57,6 @@ public:
     // Tries each family's protocols on the chosen port (closing the
     // connection first) and fills in what answered.
     void detect();
-    QString detectText() const;
 
 Q_SIGNALS:
     // The user picked another device of the bus: read its identity.

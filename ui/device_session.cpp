@@ -11,6 +11,7 @@ namespace cambench {
 
 DeviceSession::DeviceSession(QObject* parent)
     : QObject(parent),
+      m_worker(comm::makeCommWorker()),
       m_protocol(comm::ProtocolRegistry::instance().all().value(0)
                      ? comm::ProtocolSettingsPtr(
                            comm::ProtocolRegistry::instance().all().value(0)->makeSettings())
@@ -19,9 +20,9 @@ DeviceSession::DeviceSession(QObject* parent)
     m_retry.setInterval(2000);
     connect(&m_retry, &QTimer::timeout, this, [this] {
         qCInfo(shellLog) << "retrying lost connection to" << m_connection.port;
-        m_worker.connectTo(m_connection, m_protocol);
+        m_worker->connectTo(m_connection, m_protocol);
     });
-    connect(&m_worker, &comm::CommWorker::connectionStateChanged, this,
+    connect(m_worker.get(), &comm::JobRunner::connectionStateChanged, this,
             &DeviceSession::onStateChanged, Qt::QueuedConnection);
 }
 
@@ -53,8 +54,8 @@ void DeviceSession::connectTo(const comm::ConnectionSettings& connection,
 
 void DeviceSession::reconnect() {
     m_wantConnected = true;
-    m_worker.cancelAll();
-    m_worker.connectTo(m_connection, m_protocol);
+    m_worker->cancelAll();
+    m_worker->connectTo(m_connection, m_protocol);
     // From now on the line may reach another device: nothing may show the
     // last one's identity as this port's until the worker has connected
     // and the device has identified itself.
@@ -67,8 +68,8 @@ void DeviceSession::disconnectFromDevice() {
     m_wasLost = false;
     m_reestablishing = false;
     m_retry.stop();
-    m_worker.cancelAll();
-    m_worker.disconnectFromDevice();
+    m_worker->cancelAll();
+    m_worker->disconnectFromDevice();
     m_freshness.paused();
 }
 
@@ -77,7 +78,7 @@ void DeviceSession::setDevice(int device) {
     std::unique_ptr<comm::ProtocolSettings> changed = m_protocol->clone();
     changed->setDevice(device);
     m_protocol = std::move(changed);
-    m_worker.setLinkDevice(device);
+    m_worker->setLinkDevice(device);
     if (!another) return;  // the same device addressed again (after a line backup)
     setDeviceChecked(false);
     Q_EMIT targetChanged();

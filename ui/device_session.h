@@ -1,7 +1,8 @@
 #pragma once
 
+#include "comm/device/connection_settings.h"
+#include "comm/device/job_runner.h"
 #include "comm/device/protocol_settings.h"
-#include "comm/worker/comm_worker.h"
 #include "live_freshness.h"
 
 #include <QObject>
@@ -9,12 +10,14 @@
 #include <QTimer>
 
 #include <functional>
+#include <memory>
 
 namespace cambench {
 
 class MotionStop;
 
-// The GUI's one connection: owns the CommWorker, remembers how to reach the
+// The GUI's one connection: owns the job runner (a CommWorker, seen only as
+// comm::JobRunner), remembers how to reach the
 // device, and re-establishes a lost connection by itself (periodic connectTo
 // while Lost) so that a replugged adapter comes back without a click. It
 // never touches edited data: the workspace keeps it across reconnects.
@@ -24,7 +27,7 @@ public:
     explicit DeviceSession(QObject* parent = nullptr);
     ~DeviceSession() override;
 
-    comm::CommWorker& worker() { return m_worker; }
+    comm::JobRunner& worker() { return *m_worker; }
     // The one STOP of everything the device on the line can move.
     MotionStop* motionStop() const { return m_motionStop; }
 
@@ -83,7 +86,7 @@ public:
     quint64 run(QObject* context, const QString& title, Work<Device, T> work,
                 std::function<void(Result<T>)> done,
                 comm::JobPriority priority = comm::JobPriority::User, const QString& pollKey = {}) {
-        return m_worker.run<Result<T>>(
+        return m_worker->run<Result<T>>(
             context, priority, title,
             [work = std::move(work)](comm::JobContext& job) -> Result<T> {
                 Result<Device*> device = job.family<Device>();
@@ -107,7 +110,7 @@ Q_SIGNALS:
 private:
     void onStateChanged(comm::ConnectionState state, const QString& message);
 
-    comm::CommWorker m_worker;
+    std::unique_ptr<comm::JobRunner> m_worker;
     MotionStop* m_motionStop = nullptr;
     QPointer<QObject> m_leaveOwner;
     LeaveCheck m_leaveCheck;

@@ -14,14 +14,14 @@ namespace cambench {
 LiveDevicePage::LiveDevicePage(DeviceSession* session, QWidget* parent)
     : SectionPage(parent), m_session(session), m_freshness(new LiveFreshness(this)) {
     connect(m_freshness, &LiveFreshness::changed, this, &LiveDevicePage::showFreshness);
-    comm::CommWorker* worker = &session->worker();
-    connect(worker, &comm::CommWorker::jobStarted, this, [this](quint64 id) {
+    comm::JobRunner* worker = &session->worker();
+    connect(worker, &comm::JobRunner::jobStarted, this, [this](quint64 id) {
         if (id == m_pollJob) m_pollOnLine = true;
     });
-    connect(worker, &comm::CommWorker::jobProgress, this, [this](quint64 id) {
+    connect(worker, &comm::JobRunner::jobProgress, this, [this](quint64 id) {
         if (id == m_pollJob) m_pollProgress = true;
     });
-    connect(worker, &comm::CommWorker::jobFinished, this, [this](quint64 id) {
+    connect(worker, &comm::JobRunner::jobFinished, this, [this](quint64 id) {
         // Removed from the queue (a STOP's cancel, a reconnect) without an answer.
         if (id == m_pollJob) m_pollJob = 0;
     });

@@ -9,7 +9,7 @@ LivePollCycle::LivePollCycle(DeviceSession* session, int intervalMs, QObject* pa
     : QObject(parent), m_session(session) {
     m_timer.setInterval(intervalMs);
     connect(&m_timer, &QTimer::timeout, this, &LivePollCycle::tick);
-    connect(&session->worker(), &comm::CommWorker::jobStarted, this,
+    connect(&session->worker(), &comm::JobRunner::jobStarted, this,
             [this](quint64, const QString& title) { m_lineJob = title; });
 }
 

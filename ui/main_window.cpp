@@ -244,7 +244,7 @@ void MainWindow::createStatusBar() {
     connect(&LastWriteReport::instance(), &LastWriteReport::changed, this,
             &MainWindow::updateLastWriteButton);
     updateLastWriteButton();
-    comm::CommWorker& worker = m_session->worker();
+    comm::JobRunner& worker = m_session->worker();
     // The STOP reports in its bar; between two requests of a backup it
     // must not take the backup's place in the status bar.
     for (const QString& quiet : MotionStop::jobTitles()) addQuietJobTitle(quiet);
@@ -255,7 +255,7 @@ void MainWindow::createStatusBar() {
     connect(m_jobCancel, &QToolButton::clicked, this, [this] {
         if (m_runningJob != 0) m_session->worker().cancel(m_runningJob);
     });
-    connect(&worker, &comm::CommWorker::jobStarted, this, [this](quint64 id, const QString& title) {
+    connect(&worker, &comm::JobRunner::jobStarted, this, [this](quint64 id, const QString& title) {
         if (m_quietJobs.contains(title)) return;
         m_runningJob = id;
         m_jobLabel->setText(title);
@@ -263,13 +263,13 @@ void MainWindow::createStatusBar() {
         m_jobProgress->show();
         m_jobCancel->show();
     });
-    connect(&worker, &comm::CommWorker::jobProgress, this,
+    connect(&worker, &comm::JobRunner::jobProgress, this,
             [this](quint64 id, qint64 done, qint64 total, const QString&) {
                 if (id != m_runningJob || total <= 0) return;
                 m_jobProgress->setRange(0, 1000);
                 m_jobProgress->setValue(int(done * 1000 / total));
             });
-    connect(&worker, &comm::CommWorker::jobFinished, this, [this](quint64 id) {
+    connect(&worker, &comm::JobRunner::jobFinished, this, [this](quint64 id) {
         if (id != m_runningJob) return;
         m_runningJob = 0;
         m_jobLabel->clear();

@@ -71,13 +71,6 @@ void ReportDialog::present(QWidget* parent, QMessageBox::Icon icon, const QStrin
     dialog.exec();
 }
 
-void ReportDialog::presentText(QWidget* parent, QMessageBox::Icon icon, const QString& title,
-                               const QString& text) {
-    const qsizetype newline = text.indexOf(QLatin1Char('\n'));
-    present(parent, icon, title, newline < 0 ? text : text.left(newline),
-            newline < 0 ? QString() : text.mid(newline + 1));
-}
-
 void ReportDialog::presentTally(QWidget* parent, const QString& title,
                                 const usecases::OutcomeTally& tally) {
     QStringList lines;

@@ -31,9 +31,6 @@ public:
     // that was not unchanged with its outcome; a warning unless complete.
     static void presentTally(QWidget* parent, const QString& title,
                              const usecases::OutcomeTally& tally);
-    // The summary is the first line of `text`, the rest the details.
-    static void presentText(QWidget* parent, QMessageBox::Icon icon, const QString& title,
-                            const QString& text);
 
 private:
     QLabel* m_summary;

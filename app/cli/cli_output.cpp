@@ -4,7 +4,6 @@
 #include "exit_codes.h"
 
 #include "model/atomic_file.h"
-#include "model/file_read.h"
 
 #include <cstdio>
 
@@ -42,21 +41,6 @@ Status writeOutput(const QString& path, const QByteArray& data) {
         return success();
     }
     return writeFileAtomically(path, data);
-}
-
-Error invalidFileError(const QString& path, const QStringList& problems) {
-    constexpr int kShown = 5;  // enough to see the pattern, short enough to read
-    QStringList shown = problems.mid(0, kShown);
-    if (problems.size() > kShown) {
-        shown.append(QStringLiteral("and %1 more").arg(problems.size() - kShown));
-    }
-    return Error::invalidData(QStringLiteral("%1 does not fit the device: %2; fix the file and "
-                                             "run the command again (the device was not changed)")
-                                  .arg(path, shown.join(QLatin1String("; "))));
-}
-
-Result<QByteArray> readInputFile(const QString& path) {
-    return readFileBytes(path);
 }
 
 }  // namespace cambench::cli

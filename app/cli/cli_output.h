@@ -20,11 +20,5 @@ int printJson(const QJsonDocument& document);
 
 // Writes `data` to `path` atomically, or to stdout when `path` is empty or "-".
 Status writeOutput(const QString& path, const QByteArray& data);
-// "FILE does not fit the device: <first problems>; ..." as InvalidData,
-// saying that the device was left unchanged.
-Error invalidFileError(const QString& path, const QStringList& problems);
-
-// Reads a whole input file; a missing or unreadable file is InvalidData.
-Result<QByteArray> readInputFile(const QString& path);
 
 }  // namespace cambench::cli

@@ -1,4 +1,4 @@
-// Compax3Drive: the motion sequence of PROTOCOL-NOTES §12 (control word
+// Compax3Drive: the motion sequence of docs/protocols/compax3.md (control word
 // 1100.3), each command that moves the axis sent once; and the drive as the
 // shell's MotionControl (STOP of everything, what moves before quitting).
 #include "compax3_drive.h"

@@ -1,7 +1,7 @@
 #pragma once
 
-// The objects and bits CamBench itself uses on a Compax3 (PROTOCOL-NOTES
-// §12). All of them come from a public client, not from Parker's manual:
+// The objects and bits CamBench itself uses on a Compax3
+// (docs/protocols/compax3.md). All of them come from a public client, not from Parker's manual:
 // provisional, and kept here in one place (the table in README.md says
 // the same).
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// The Compax3 ASCII protocol's text (PROTOCOL-NOTES §12): requests as
+// The Compax3 ASCII protocol's text (docs/protocols/compax3.md): requests as
 // CamBench sends them and answers as the drive gives them. No line, no
 // timing: the backend and the simulator both use this.
 

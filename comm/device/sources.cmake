@@ -5,6 +5,8 @@ target_sources(cambench_comm PRIVATE
   device/device_connection.h
   device/motion_control.h
   device/progress.h
+  device/job.h
+  device/job_runner.h
   device/error_context.h
   device/protocol_settings.h
   device/protocol_registry.h

@@ -7,7 +7,7 @@
 
 namespace cambench::comm {
 
-// The one place of the MC-1 address arithmetic (PROTOCOL-NOTES §11,
+// The one place of the MC-1 address arithmetic (docs/protocols/mc1.md,
 // "Memory"; manual chapters 4 and 5): where a flag (M), input (E) or output
 // (A) of its manual number lives, read with RDBYTE and written with WRBIT.
 enum class Mc1Area { Flag, Input, Output };

@@ -10,7 +10,7 @@
 
 namespace cambench::comm {
 
-// The MC100's ASCII protocol (PROTOCOL-NOTES §11, "ASCII"): one line each
+// The MC100's ASCII protocol (docs/protocols/mc1.md, "ASCII"): one line each
 // way, ended by CR (LF ignored). `Vn=?` → the value in decimal; `Vn=v` →
 // OK; `Mn=?`, `An=?`, `En=?` → 1 or 0; `Mn=0|1`, `An=0|1` → OK; every
 // error → ERR. Variables are signed 24 bit; inputs cannot be written. A

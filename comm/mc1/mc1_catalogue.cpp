@@ -31,7 +31,7 @@ const char* const kP1 = "P1: 16-bit memory address as the tables print (the leng
 const char* const kP2 = "P2: WRBYTE layout (only the opcode is printed)";
 const char* const kP3 = "P3: CE on an MC200 sign-extends the 24-bit value";
 
-// Manual chapter 3 and PROTOCOL-NOTES §11. Columns: variants | op, name,
+// Manual chapter 3 and docs/protocols/mc1.md. Columns: variants | op, name,
 // opcode, command byte, request data, answer opcode, answer data, retry,
 // length exception, provisional point.
 const Row kRows[] = {

@@ -10,7 +10,7 @@
 
 namespace cambench::comm {
 
-// Every MC-1 telegram the client sends (PROTOCOL-NOTES §11, chapter 3 of
+// Every MC-1 telegram the client sends (docs/protocols/mc1.md, chapter 3 of
 // the manual), one row each in mc1_catalogue.cpp with the variants that
 // know it. RDBIT_INT/EXT are left out: nothing about them is printed but
 // the opcodes, and RDBYTE does the same.
@@ -64,7 +64,7 @@ struct Mc1Telegram {
     int answerData;       // bytes after the answer's opcode and checksum; -1: the n asked for
     Mc1Retry retry;
     bool lengthException;     // the telegram breaks the (opcode & 7) + 1 rule, as printed
-    const char* provisional;  // PROTOCOL-NOTES §11 provisional point, or nullptr
+    const char* provisional;  // docs/protocols/mc1.md provisional point, or nullptr
 };
 
 // The telegrams `variant` knows.

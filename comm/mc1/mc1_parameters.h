@@ -13,7 +13,7 @@
 namespace cambench::comm {
 
 // Numbers the MC-1 protocol manual leaves to the MC-1B programming manual,
-// which we lack (PROTOCOL-NOTES §11): every guess is provisional and lives
+// which we lack (docs/protocols/mc1.md): every one is provisional and lives
 // here only, one line each in comm/mc1/README.md.
 
 // Variables a backup saves by default: V1..V1000 on every variant.

@@ -6,7 +6,7 @@
 
 namespace cambench::comm {
 
-// MC-1 telegrams (PROTOCOL-NOTES §11): opcode, checksum, data, both ways;
+// MC-1 telegrams (docs/protocols/mc1.md): opcode, checksum, data, both ways;
 // multi-byte values little-endian. The checksum is the 8-bit sum of every
 // byte but the second (itself), not inverted.
 constexpr quint8 kMc1Ack = 0x80;

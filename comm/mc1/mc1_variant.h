@@ -7,7 +7,7 @@
 
 namespace cambench::comm {
 
-// The four MC-1 dialects (PROTOCOL-NOTES §11, "Variants"). They differ in
+// The four MC-1 dialects (docs/protocols/mc1.md, "Variants"). They differ in
 // which telegrams exist and in what some opcodes mean: D5 is RDBLOCK on an
 // MC100 V2 but RDMEM6 on an MC200; RDVAR answers 24 bits on an MC100 and
 // 32 bits on an MC200.

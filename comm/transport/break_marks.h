@@ -9,7 +9,7 @@ namespace cambench::comm {
 // reads FF 00 00 and a data byte FF reads FF FF. A protocol that sends and
 // hears breaks (Cam-BUS) speaks this encoding on every transport; a real
 // serial port turns it into real breaks (SerialSettings::inBandBreaks), a
-// pseudo-terminal or the simulator carry it as it is (PROTOCOL-NOTES §8 P12).
+// pseudo-terminal or the simulator carry it as it is (docs/protocols/cambus.md P12).
 
 // Data bytes in the encoding: every FF doubled.
 QByteArray escapeBreakMarks(const QByteArray& bytes);

@@ -259,7 +259,7 @@ bool SerialTransport::lineGone() {
 
 Status SerialTransport::writeWithBreaks(const QByteArray& bytes) {
     QByteArray pending = bytes;
-    // A break: the line at 0 for 2 character times, then idle for 2 (§8).
+    // A break: the line at 0 for 2 character times, then idle for 2 (docs/protocols/cambus.md).
     const int charUs = int(10 * 1000000LL / std::max(1, m_settings.baud));
     for (const MarkedRead& piece : takeBreakMarked(pending)) {
         if (piece.kind == MarkedRead::Data) {

@@ -1,8 +1,8 @@
 #include "detect_device.h"
 
 #include "comm/device/family_registry.h"
+#include "comm/device/job.h"
 #include "comm/transport/transport_registry.h"
-#include "comm/worker/job.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #include "use_case_progress.h"
 
-#include "comm/worker/job.h"
+#include "comm/device/job.h"
 
 namespace cambench::usecases {
 

@@ -23,7 +23,7 @@ struct CommWorker::Impl {
     }
 };
 
-CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Impl>()) {
+CommWorker::CommWorker(QObject* parent) : JobRunner(parent), d(std::make_unique<Impl>()) {
     qRegisterMetaType<ConnectionState>();
     qRegisterMetaType<TrafficEntry>();
 
@@ -48,6 +48,10 @@ CommWorker::CommWorker(QObject* parent) : QObject(parent), d(std::make_unique<Im
     d->thread->start();
     WorkerCore* core = d->core;
     d->post([core] { core->installOnThread(); });
+}
+
+std::unique_ptr<JobRunner> makeCommWorker(QObject* parent) {
+    return std::make_unique<CommWorker>(parent);
 }
 
 CommWorker::~CommWorker() {

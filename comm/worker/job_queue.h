@@ -1,6 +1,6 @@
 #pragma once
 
-#include "job.h"
+#include "comm/device/job.h"
 
 #include <QList>
 #include <QString>

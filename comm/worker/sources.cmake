@@ -1,5 +1,4 @@
 target_sources(cambench_comm PRIVATE
-  worker/job.h
   worker/comm_worker.h
   worker/comm_worker.cpp
   worker/worker_logging.h

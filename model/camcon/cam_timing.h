@@ -61,9 +61,9 @@ struct OutputTiming {
 };
 
 // `deadTime` as the output's mode uses it; `positionsPerSecond` >= 0;
-// `minPulseMs` 0 = no minimum. Path-time mode (provisional, PROTOCOL-NOTES
-// §3 names no formula): the switch-on edge moves by the switch-on dead time
-// and the output stays on for the switching time, whatever the off point.
+// `minPulseMs` 0 = no minimum. Path-time mode (provisional,
+// docs/protocols/camcon-ascii.md names no formula): the switch-on edge moves by the switch-on dead
+// time and the output stays on for the switching time, whatever the off point.
 OutputTiming timeTrack(const Track& track, const OutputDeadTime& deadTime,
                        double positionsPerSecond, const Axis& axis, double minPulseMs = 0);
 

@@ -452,10 +452,6 @@ Result<QList<AnalogueCamTrack>> loadAnalogueCamsCsv(const QString& path) {
     return loadCsv(path, &analogueCamsFromCsv);
 }
 
-Status saveNamesCsv(const QString& path, const Names& names) {
-    return writeFileAtomically(path, namesToCsv(names));
-}
-
 Result<Names> loadNamesCsv(const QString& path) {
     return loadCsv(path, &namesFromCsv);
 }

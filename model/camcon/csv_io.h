@@ -60,7 +60,6 @@ Status saveDeadTimesCsv(const QString& path, const DeadTimes& deadTimes);
 Result<DeadTimes> loadDeadTimesCsv(const QString& path);
 Result<DeadTimeTable> loadDeadTimeTableCsv(const QString& path);
 Result<QList<AnalogueCamTrack>> loadAnalogueCamsCsv(const QString& path);
-Status saveNamesCsv(const QString& path, const Names& names);
 Result<Names> loadNamesCsv(const QString& path);
 
 }  // namespace cambench

@@ -2,7 +2,6 @@
 
 #include <QCoreApplication>
 
-#include "model/atomic_file.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 
@@ -74,10 +73,6 @@ Result<SystemSettings> settingsFileFromJson(const QByteArray& bytes) {
     SystemSettings settings = settingsFromJson(reader, reader.object(*root, {}, key), key);
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     return settings;
-}
-
-Status saveSettingsFile(const QString& path, const SystemSettings& settings) {
-    return writeFileAtomically(path, settingsFileToJson(settings));
 }
 
 Result<SystemSettings> loadSettingsFile(const QString& path) {

@@ -24,7 +24,6 @@ SystemSettings settingsFromJson(JsonReader& reader, const QJsonObject& object, c
 
 QByteArray settingsFileToJson(const SystemSettings& settings);
 Result<SystemSettings> settingsFileFromJson(const QByteArray& bytes);
-Status saveSettingsFile(const QString& path, const SystemSettings& settings);
 // Errors start with the file's path.
 Result<SystemSettings> loadSettingsFile(const QString& path);
 

@@ -7,7 +7,7 @@
 // form, the project file and validation all follow from it; the command
 // catalogue in comm/ maps the same keys to commands. Special-encoder pages
 // whose manual pages are missing follow the provisional table of
-// PROTOCOL-NOTES.md section 3; their ranges are the field widths.
+// docs/protocols/camcon-ascii.md; their ranges are the field widths.
 
 namespace cambench {
 

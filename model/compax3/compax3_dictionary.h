@@ -54,7 +54,7 @@ struct Compax3ObjectInfo {
 };
 
 // The objects CamBench knows by name: the shipped file (the objects of
-// PROTOCOL-NOTES §12, every meaning provisional) or a larger one the user
+// docs/protocols/compax3.md, every meaning provisional) or a larger one the user
 // loads. Objects not in it are still read and written by number.
 //
 // File: {"format":"cambench-compax3-dictionary","version":1,

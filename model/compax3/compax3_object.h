@@ -7,7 +7,7 @@
 namespace cambench {
 
 // A Compax3 object by its number: index and subindex ("680.5"). The drive
-// speaks of objects this way in its ASCII protocol (PROTOCOL-NOTES §12).
+// speaks of objects this way in its ASCII protocol (docs/protocols/compax3.md).
 struct Compax3ObjectId {
     int index = 0;     // 0..65535
     int subindex = 0;  // 0..255

@@ -10,7 +10,7 @@ cambench_add_test(tst_link_traffic SOURCES comm/link/tst_traffic.cpp LIBS camben
 cambench_add_test(tst_sim_device SOURCES comm/sim/tst_sim_device.cpp comm/sim/sim_test_client.h comm/sim/sim_test_client.cpp LIBS cambench_sim)
 cambench_add_test(tst_sim_line SOURCES comm/sim/tst_sim_line.cpp comm/sim/sim_test_client.h comm/sim/sim_test_client.cpp LIBS cambench_sim)
 cambench_add_test(tst_sim_table_line SOURCES comm/sim/tst_sim_table_line.cpp LIBS cambench_sim)
-cambench_add_test(tst_sim_executable SOURCES comm/sim/tst_sim_executable.cpp LIBS cambench_comm Qt6::SerialPort Qt6::Network)
+cambench_add_test(tst_sim_executable SOURCES comm/sim/tst_sim_executable.cpp e2e/child_process.h e2e/child_process.cpp LIBS cambench_comm Qt6::SerialPort Qt6::Network)
 target_compile_definitions(tst_sim_executable PRIVATE CAMBENCH_SIM_EXECUTABLE="$<TARGET_FILE:cambench-sim>")
 add_dependencies(tst_sim_executable cambench-sim)
 cambench_add_test(tst_worker_job_queue SOURCES comm/worker/tst_job_queue.cpp LIBS cambench_sim)

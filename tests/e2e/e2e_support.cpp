@@ -1,8 +1,19 @@
 #include "e2e_support.h"
 
+#include "test_pace.h"
+
 #include <QFile>
 
+#include <algorithm>
+
 namespace cambench::e2e {
+
+namespace {
+
+constexpr int kQuietPcAnswerMs = 60;
+constexpr int kMostPcAnswerMs = 1000;
+
+}  // namespace
 
 QStringList SimSession::protocolArgs() const {
     if (m_protocol.isEmpty()) return {};
@@ -12,9 +23,12 @@ QStringList SimSession::protocolArgs() const {
 bool SimSession::start(const QStringList& simArgs) {
     QStringList busArgs;
     // The bus waits 10 ms for the PC's answers; a loaded test machine (two
-    // test processes, sanitizers) can take longer to schedule the cli.
+    // test processes, sanitizers) can take longer to schedule the cli: 60 ms
+    // on a quiet machine, stretched by the measured pace (the sim takes 1000
+    // at most).
     if (m_protocol == QLatin1String("cambus"))
-        busArgs = {QStringLiteral("--pc-answer-ms"), QStringLiteral("60")};
+        busArgs = {QStringLiteral("--pc-answer-ms"),
+                   QString::number(std::min(hangBoundMs(kQuietPcAnswerMs), kMostPcAnswerMs))};
     return m_dir.isValid() && m_sim.start(QStringList{QStringLiteral("--baud"), kFastBaud} +
                                               protocolArgs() + busArgs + simArgs,
                                           m_dir.filePath(QStringLiteral("sim-stderr.log")));

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "child_process.h"
 #include "sim_process.h"
+#include "test_pace.h"
 
 #include <QByteArray>
 #include <QString>
@@ -29,8 +31,10 @@ public:
     bool start(const QStringList& simArgs = {});
     QString errorText() const { return m_sim.errorText(); }
     QString ptyPath() const { return m_sim.ptyPath(); }
+    qint64 simulatorPid() const { return m_sim.processId(); }
 
-    // cambench-cli with --port <pty> --baud 115200 and then `args`.
+    // cambench-cli with --port <pty> --baud 115200 and then `args`; `timeoutMs`
+    // as runCli's.
     CliRun cli(const QStringList& args, int timeoutMs = 120000) const;
     // The same with the Multiuser protocol.
     CliRun cliMultiuser(const QStringList& args) const;

@@ -1,12 +1,15 @@
 #include "sim_process.h"
 
+#include "child_process.h"
+#include "test_pace.h"
+
 #include <QDeadlineTimer>
 
 namespace cambench::e2e {
 
 namespace {
 
-constexpr int kStartBoundMs = 20000;
+constexpr int kQuietStartBoundMs = 20000;
 
 }  // namespace
 
@@ -20,12 +23,14 @@ bool SimProcess::start(const QStringList& args, const QString& stderrLog) {
     // Nobody reads the simulator's log while a test runs: a pipe could fill
     // up and stall it, so its stderr goes to a file (or nowhere).
     m_process.setStandardErrorFile(stderrLog.isEmpty() ? QProcess::nullDevice() : stderrLog);
+    endWithThisTest(m_process);
+    const int startBoundMs = hangBoundMs(kQuietStartBoundMs);
     m_process.start();
-    if (!m_process.waitForStarted(kStartBoundMs)) {
+    if (!m_process.waitForStarted(startBoundMs)) {
         m_error = QStringLiteral("cambench-sim did not start: %1").arg(m_process.errorString());
         return false;
     }
-    const QDeadlineTimer deadline(kStartBoundMs);
+    const QDeadlineTimer deadline(startBoundMs);
     while (!m_process.canReadLine()) {
         if (deadline.hasExpired() || m_process.state() != QProcess::Running) {
             m_error = QStringLiteral("cambench-sim printed no pty path (arguments: %1)")
@@ -49,9 +54,11 @@ CliRun runCli(const QStringList& args, int timeoutMs) {
     QProcess process;
     process.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
     process.setArguments(args);
+    endWithThisTest(process);
     process.start();
     CliRun run;
-    run.finished = process.waitForStarted(10000) && process.waitForFinished(timeoutMs);
+    run.finished = process.waitForStarted(hangBoundMs(10000)) &&
+                   process.waitForFinished(hangBoundMs(timeoutMs));
     if (!run.finished) {
         process.kill();
         process.waitForFinished(5000);

@@ -7,7 +7,8 @@
 namespace cambench::e2e {
 
 // The real `cambench-sim` executable serving a pseudo-terminal. Killed when
-// this object dies, so every test ends with its simulator gone.
+// this object dies, and by the kernel when the test process dies (a timeout,
+// a crash: endWithThisTest), so every test ends with its simulator gone.
 class SimProcess {
 public:
     SimProcess() = default;
@@ -22,6 +23,7 @@ public:
     void stop();
 
     QString ptyPath() const { return m_ptyPath; }
+    qint64 processId() const { return m_process.processId(); }
     QString errorText() const { return m_error; }
 
 private:
@@ -38,8 +40,8 @@ struct CliRun {
     QString err;
 };
 
-// Runs cambench-cli with `args`, bounded by `timeoutMs` (a hang bound, not a
-// performance limit).
+// Runs cambench-cli with `args`, bounded by `timeoutMs` on a quiet machine
+// (a hang bound, not a performance limit), stretched by testPace().
 CliRun runCli(const QStringList& args, int timeoutMs = 120000);
 
 }  // namespace cambench::e2e

@@ -7,7 +7,8 @@ cambench_add_test(tst_operations_camcon_client
 # The end-to-end tests start both executables as subprocesses.
 function(cambench_add_e2e_test name)
   cambench_add_test(${name} SOURCES ${ARGN} e2e/sim_process.h e2e/sim_process.cpp
-                    e2e/e2e_support.h e2e/e2e_support.cpp LIBS cambench_model)
+                    e2e/e2e_support.h e2e/e2e_support.cpp e2e/child_process.h
+                    e2e/child_process.cpp e2e/test_pace.h e2e/test_pace.cpp LIBS cambench_model)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
   target_compile_definitions(${name} PRIVATE
     CAMBENCH_SIM_EXE="$<TARGET_FILE:cambench-sim>"
@@ -31,8 +32,7 @@ add_test(NAME tst_e2e_cli_cambus COMMAND tst_e2e_cli
   camsWriteRejectsOverlapAndLeavesDeviceUntouched deadTimesRoundTrip settingsChangeOneValue
   plcRoundTrip camBusScanListsEveryUser camBusDeviceOptionReachesThatDevice
   camBusBackupRestoreVerify)
-set_tests_properties(tst_e2e_cli_cambus PROPERTIES TIMEOUT 1200
-  ENVIRONMENT "QT_QPA_PLATFORM=offscreen;CAMBENCH_E2E_CAMBUS=1")
+cambench_bound_test(tst_e2e_cli_cambus 1200 ENVIRONMENT CAMBENCH_E2E_CAMBUS=1)
 cambench_add_e2e_test(tst_e2e_eeprom e2e/tst_e2e_eeprom.cpp)
 cambench_add_e2e_test(tst_e2e_faults e2e/tst_e2e_faults.cpp)
 cambench_add_e2e_test(tst_e2e_line e2e/tst_e2e_line.cpp)
@@ -45,3 +45,5 @@ cambench_add_e2e_test(tst_e2e_diff e2e/tst_e2e_diff.cpp)
 cambench_add_e2e_test(tst_e2e_mc1 e2e/tst_e2e_mc1.cpp)
 cambench_add_e2e_test(tst_e2e_compax3 e2e/tst_e2e_compax3.cpp)
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
+# A test that dies (aborted, killed) takes its simulator with it.
+cambench_add_e2e_test(tst_e2e_cleanup e2e/tst_e2e_cleanup.cpp)

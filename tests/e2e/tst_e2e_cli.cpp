@@ -526,9 +526,10 @@ void TestE2eCli::guiHelpNeedsNoDisplay() {
     for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
         env.remove(QString::fromLatin1(name));
     gui.setProcessEnvironment(env);
+    endWithThisTest(gui);
     for (const QString& option : {QStringLiteral("--help"), QStringLiteral("--version")}) {
         gui.start(QStringLiteral(CAMBENCH_GUI_EXE), {option});
-        QVERIFY(gui.waitForFinished(30000));
+        QVERIFY(gui.waitForFinished(hangBoundMs(30000)));
         QCOMPARE(gui.exitStatus(), QProcess::NormalExit);
         QCOMPARE(gui.exitCode(), 0);
         const QString out = QString::fromUtf8(gui.readAllStandardOutput());

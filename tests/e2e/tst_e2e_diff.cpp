@@ -23,8 +23,9 @@ const QByteArray kHeader = "output,cam,on,off\n";
 std::optional<QString> git(const QString& dir, const QStringList& args) {
     QProcess process;
     process.setWorkingDirectory(dir);
+    endWithThisTest(process);
     process.start(QStringLiteral("git"), args);
-    if (!process.waitForFinished(60000) || process.exitCode() != 0) {
+    if (!process.waitForFinished(hangBoundMs(60000)) || process.exitCode() != 0) {
         qWarning() << "git" << args << process.readAllStandardError();
         return std::nullopt;
     }

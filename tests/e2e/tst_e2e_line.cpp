@@ -117,10 +117,11 @@ void TestE2eLine::resumeAfterACutRunSkipsSavedDevices() {
     cut.setArguments(
         QStringList{"--port", session.ptyPath(), "--baud", kFastBaud, "--protocol", "multiuser"} +
         args);
+    endWithThisTest(cut);
     cut.start();
-    QVERIFY(cut.waitForStarted(10000));
+    QVERIFY(cut.waitForStarted(hangBoundMs(10000)));
     // Bounded wait for the manifest to name the first device as saved.
-    const QDeadlineTimer deadline(60000);
+    const QDeadlineTimer deadline(hangBoundMs(60000));
     while (manifestDevices(dir).isEmpty() && !deadline.hasExpired() &&
            cut.state() == QProcess::Running)
         QThread::msleep(20);

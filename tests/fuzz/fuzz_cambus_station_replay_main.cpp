@@ -15,7 +15,7 @@ constexpr char kInteresting[] = {'\xA5', '\x37', '\x3F', '\x03', '\x43', '\x83',
 
 QList<QByteArray> seedCorpus() {
     return {
-        // §8's worked example as the PC 63 hears it: RID 63, its token, 3's
+        // docs/protocols/cambus.md's worked example as the PC 63 hears it: RID 63, its token, 3's
         // room and acknowledgement, then 3's reply block.
         QByteArray::fromHex("3f01ffff20a5373f3f204320832"
                             "0a5370303433f20083a474e5230333742020520"),

@@ -52,7 +52,7 @@ BackupWizard::BackupWizard(DeviceSession* session, Workspace* workspace, QWidget
     setPage(CheckPage, createCheckPage());
     m_progress->setCommitPage(false);
     setPage(RunPage, m_progress);
-    connect(&m_session->worker(), &comm::CommWorker::jobProgress, this,
+    connect(&m_session->worker(), &comm::JobRunner::jobProgress, this,
             [this](quint64 id, qint64 done, qint64 total, const QString&) {
                 if (id == m_job) m_progress->setProgress(done, total);
             });
@@ -123,9 +123,6 @@ void BackupWizard::setPath(const QString& path) {
 }
 void BackupWizard::setSafetyBackupPath(const QString& path) {
     m_safetyPath->setText(path);
-}
-void BackupWizard::setForceRestore(bool force) {
-    m_force->setChecked(force);
 }
 BackupWizard::Mode BackupWizard::mode() const {
     return m_backup->isChecked() ? Mode::Backup : Mode::Restore;
@@ -312,7 +309,6 @@ void BackupWizard::runRestore() {
 void BackupWizard::finishWork(bool ok, const QString& report) {
     m_job = 0;
     m_progress->finish(ok, report);
-    Q_EMIT finishedWork(ok);
 }
 
 void BackupWizard::reject() {

@@ -33,7 +33,6 @@ public:
     void setMode(Mode mode);
     void setPath(const QString& path);
     void setSafetyBackupPath(const QString& path);
-    void setForceRestore(bool force);
     Mode mode() const;
     ProgressPage* progressPage() const { return m_progress; }
     QString checkText() const;
@@ -46,7 +45,6 @@ public:
 Q_SIGNALS:
     // The device's content was replaced: everything read before is stale.
     void restored();
-    void finishedWork(bool ok);
 
 private:
     QWizardPage* createChoosePage();

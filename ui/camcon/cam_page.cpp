@@ -61,7 +61,7 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
 void CamPage::showStatus(const DeviceStatus& status) {
     m_editor->diagram()->setLivePosition(status.position);
     m_editor->diagram()->setOutputStates(status.outputs);
-    // ?BSPEED read as positions per second (provisional, PROTOCOL-NOTES §3).
+    // ?BSPEED read as positions per second (provisional, docs/protocols/camcon-ascii.md).
     m_timing->setLiveSpeed(double(status.speed));
 }
 

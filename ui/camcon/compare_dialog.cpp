@@ -77,7 +77,7 @@ CompareDialog::CompareDialog(DeviceSession* session, Workspace* workspace,
     connect(m_writeAll, &QPushButton::clicked, this, &CompareDialog::writeAll);
     connect(m_refresh, &QPushButton::clicked, this, &CompareDialog::refresh);
     connect(m_cancel, &QPushButton::clicked, this, &CompareDialog::cancelReading);
-    connect(&m_session->worker(), &comm::CommWorker::jobProgress, this,
+    connect(&m_session->worker(), &comm::JobRunner::jobProgress, this,
             [this](quint64 id, qint64 done, qint64 total, const QString& text) {
                 if (id != m_readJob || total <= 0) return;
                 m_progress->setRange(0, 1000);

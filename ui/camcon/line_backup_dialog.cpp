@@ -97,9 +97,6 @@ void LineBackupDialog::setDirectory(const QString& directory) {
 void LineBackupDialog::setDevices(const QString& devices) {
     m_devices->setText(devices);
 }
-void LineBackupDialog::setResume(bool resume) {
-    m_resume->setChecked(resume);
-}
 QString LineBackupDialog::reportText() const {
     return m_report->toPlainText();
 }

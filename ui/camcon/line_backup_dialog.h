@@ -29,7 +29,6 @@ public:
     void setDirectory(const QString& directory);
     // "0,5,7" or empty (scan the line).
     void setDevices(const QString& devices);
-    void setResume(bool resume);
     void start();
     bool isRunning() const { return m_job != 0; }
     // One line per device after the run, and the summary.

@@ -148,11 +148,11 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     });
     connect(m_session, &DeviceSession::stateChanged, this, &MonitorPage::updateRunning);
     connect(m_session->freshness(), &LiveFreshness::changed, this, &MonitorPage::showFreshness);
-    comm::CommWorker* worker = &m_session->worker();
-    connect(worker, &comm::CommWorker::jobStarted, this, [this](quint64 id) {
+    comm::JobRunner* worker = &m_session->worker();
+    connect(worker, &comm::JobRunner::jobStarted, this, [this](quint64 id) {
         if (id == m_pollJob) m_lineClock.start();
     });
-    connect(worker, &comm::CommWorker::jobFinished, this, [this](quint64 id) {
+    connect(worker, &comm::JobRunner::jobFinished, this, [this](quint64 id) {
         // Removed from the queue (cancel, reconnect) without an answer.
         if (id == m_pollJob) m_pollJob = 0;
     });
@@ -206,10 +206,6 @@ void MonitorPage::setLiveInterval(int ms) {
 
 QString MonitorPage::rateNote() const {
     return m_rateNote->text();
-}
-
-void MonitorPage::setPaused(bool paused) {
-    m_pause->setChecked(paused);
 }
 
 int MonitorPage::trendSamples() const {

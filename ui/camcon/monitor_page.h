@@ -46,7 +46,6 @@ public:
     int pollInterval() const { return m_timer.interval(); }
     // Why the interval differs from the one asked for (empty when it does not).
     QString rateNote() const;
-    void setPaused(bool paused);
     int trendSamples() const;
     TrendChart* trend() const { return m_trend; }
     QString freshnessText() const;

@@ -157,9 +157,4 @@ void TableSectionCopies::dropProgrammingEdit() {
     Q_EMIT changed();
 }
 
-void TableSectionCopies::dropLockEdit() {
-    m_lockEdit.reset();
-    Q_EMIT changed();
-}
-
 }  // namespace cambench

@@ -63,7 +63,6 @@ public:
     // Drops the edit of one section ("Read from device" on its page).
     void dropAnalogueEdit(int output);
     void dropProgrammingEdit();
-    void dropLockEdit();
 
 Q_SIGNALS:
     void changed();

@@ -84,7 +84,7 @@ TerminalPage::TerminalPage(DeviceSession* session, QWidget* parent)
         const Status saved = saveLog(path);
         if (!saved) QMessageBox::warning(this, tr("Save traffic log"), saved.error().message);
     });
-    connect(&m_session->worker(), &comm::CommWorker::traffic, this, &TerminalPage::appendTraffic,
+    connect(&m_session->worker(), &comm::JobRunner::traffic, this, &TerminalPage::appendTraffic,
             Qt::QueuedConnection);
 }
 

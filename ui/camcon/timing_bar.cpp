@@ -125,10 +125,6 @@ void TimingBar::setSpeed(double speed) {
     m_speed->setValue(speed);
 }
 
-bool TimingBar::followsDevice() const {
-    return m_follow->isChecked();
-}
-
 void TimingBar::setFollowDevice(bool follow) {
     m_follow->setChecked(follow && m_follow->isEnabled());
 }

@@ -32,7 +32,6 @@ public:
     // In the axis's unit (1/min rotary, pos/s linear).
     double speed() const;
     void setSpeed(double speed);
-    bool followsDevice() const;
     void setFollowDevice(bool follow);
     // The device's speed in positions per second while it is live (the
     // monitor's ?BSPEED), none when it is not.

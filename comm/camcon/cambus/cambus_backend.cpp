@@ -81,7 +81,7 @@ void CamBusBackend::beginRequest(const Request& request) {
 BackendStep CamBusBackend::startAttempt(const Request& request, int attempt, qint64 nowMs) {
     Q_UNUSED(attempt);
     CamBusStation& station = stationAt(nowMs);
-    // One request per device (§8): an earlier attempt's block that has not
+    // One request per device (docs/protocols/cambus.md): an earlier attempt's block that has not
     // left yet goes.
     station.cancelUnsent(m_device);
     BackendStep step;

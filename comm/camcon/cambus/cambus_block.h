@@ -1,6 +1,6 @@
 #pragma once
 
-// Cam-BUS on the wire (PROTOCOL-NOTES §8): the byte kinds, the token, the
+// Cam-BUS on the wire (docs/protocols/cambus.md): the byte kinds, the token, the
 // data block with its 15-bit sum and block bit, and the pseudo-terminal's
 // encoding of breaks (P12). Pure functions: the bus state machine
 // (listening, mastership, turns) builds on them.

@@ -46,7 +46,7 @@ void registerCamConCamBus(ProtocolRegistry& registry) {
     info.id = camBusId();
     info.familyId = QStringLiteral("camcon");
     info.title = QCoreApplication::translate("cambench::comm", "CamCon Cam-BUS (RS485 token bus)");
-    info.defaultSerial.baud = 38400;  // §8: 38400 8N1
+    info.defaultSerial.baud = 38400;  // docs/protocols/cambus.md: 38400 8N1
     info.defaultSerial.inBandBreaks = true;
     info.isBus = true;
     info.listeningProbe = true;

@@ -69,10 +69,6 @@ void CamBusStation::cancelUnsent(int destination) {
     }
 }
 
-bool CamBusStation::isQueued(quint64 id) const {
-    return std::any_of(m_tx.begin(), m_tx.end(), [id](const Outgoing& o) { return o.id == id; });
-}
-
 int CamBusStation::fullQueueAnswers(quint64 id) const {
     for (const Outgoing& block : m_tx)
         if (block.id == id) return block.fullQueueAnswers;
@@ -433,7 +429,7 @@ void CamBusStation::breakIn(qint64 nowMs) {
     QByteArray breaks;
     for (int i = 0; i < m_config.breaks; ++i) breaks += kBreak;
     m_out += breaks;
-    // A break: the line at 0 for 2 character times, idle for 2 (§8).
+    // A break: the line at 0 for 2 character times, idle for 2 (docs/protocols/cambus.md).
     m_lineFreeAt = start + wireMs(4 * m_config.breaks);
     // While our breaks hold the line, what others sent is lost in them.
     m_deafUntil = m_lineFreeAt;

@@ -12,7 +12,7 @@
 
 namespace cambench::comm {
 
-// How one user behaves on the bus (PROTOCOL-NOTES §8 and its P-lines).
+// How one user behaves on the bus (docs/protocols/cambus.md and its P-lines).
 struct CamBusStationConfig {
     int number = kCamBusDefaultPcNumber;  // 0..63
     int baud = 38400;
@@ -27,10 +27,10 @@ struct CamBusStationConfig {
     int ridRunWithoutNew = 130;  // P3: RIDs in a row without a new user end the search
     int maxSilentTurns = 3;      // P9
     int masterGapMs = 0;         // P1: the master's pause before the next token (0: none)
-    // The PC's rule (§8 "PC"): no block before this run answered its own RID,
-    // so that no block bit left from an earlier run swallows the first
-    // block; it breaks in (an initialisation phase) when polled before, or
-    // when a whole token round went by without it (see README, CB1).
+    // The PC's rule (docs/protocols/cambus.md, "The PC"): no block before this run answered its own
+    // RID, so that no block bit left from an earlier run swallows the first block; it breaks in (an
+    // initialisation phase) when polled before, or when a whole token round went by without it (see
+    // README, CB1).
     bool joinBeforeFirstBlock = false;
     // Takes part in starting initialisation phases when not polled. A
     // user that falls silent (simulator fault) does not.
@@ -65,7 +65,6 @@ public:
     // Drops block `id` unless it has started to leave; false when it has
     // (its outcome will come as a Delivery) or is not queued.
     bool cancel(quint64 id);
-    bool isQueued(quint64 id) const;
     // How often the destination answered block `id`'s TO with a full
     // receive queue (80+D): no failure, but worth saying when it goes on.
     int fullQueueAnswers(quint64 id) const;

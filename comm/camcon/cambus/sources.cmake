@@ -1,4 +1,4 @@
-# Cam-BUS, the CamCon's token bus (PROTOCOL-NOTES §8): the wire format, one
+# Cam-BUS, the CamCon's token bus (docs/protocols/cambus.md): the wire format, one
 # bus user's state machine (the PC's and every simulated user's), the
 # framing backend that carries CamCon ASCII frames in blocks, the CamCon
 # over it and the protocol's registration.

@@ -10,7 +10,7 @@
 
 namespace cambench::comm {
 
-// A simulated Parker Compax3 (PROTOCOL-NOTES §12): the shipped object
+// A simulated Parker Compax3 (docs/protocols/compax3.md): the shipped object
 // dictionary with types, ranges and read-only objects, the status word, and
 // an axis that moves when a set is started or a jog runs. Its answers to a
 // request are the drive's: a value, '>', or '!xxxx' (the emulator's

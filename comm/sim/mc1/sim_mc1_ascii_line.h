@@ -8,7 +8,7 @@
 namespace cambench::comm {
 
 // A simulated MC100 set to its ASCII protocol: each CR-ended line is one
-// request (PROTOCOL-NOTES §11, "ASCII"); the answer is the value, 1 or 0,
+// request (docs/protocols/mc1.md, "ASCII"); the answer is the value, 1 or 0,
 // OK, or ERR for anything it refuses (a line it cannot read, a number it
 // lacks, a value out of 24 bits, an input written).
 class SimMc1AsciiLine : public SimEndpoint {

@@ -1,4 +1,4 @@
-// Issue 16: Cam-BUS on the wire: §8's worked example byte for byte (the
+// Issue 16: Cam-BUS on the wire: docs/protocols/cambus.md's worked example byte for byte (the
 // PC 63 asks CamCon 3 ?GNR and gets its reply), the block bit, damaged
 // blocks, and the pseudo-terminal's encoding of breaks (P12).
 #include "comm/camcon/cambus/cambus_block.h"

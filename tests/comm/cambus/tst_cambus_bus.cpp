@@ -196,7 +196,7 @@ private Q_SLOTS:
     }
 
     void theWorkedExampleFromThePcsSide() {
-        // §8: PC 63 asks CamCon 3 (master) ?GNR, byte for byte.
+        // docs/protocols/cambus.md: PC 63 asks CamCon 3 (master) ?GNR, byte for byte.
         CamBusStationConfig config;
         config.number = 63;
         config.joinBeforeFirstBlock = true;

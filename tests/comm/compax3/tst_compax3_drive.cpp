@@ -279,7 +279,7 @@ private Q_SLOTS:
 
     // Issue 27: each acting request's bytes as the manual writes a command
     // (`O index,subindex=value`, `$` for hexadecimal; the control word's
-    // bits as PROTOCOL-NOTES §12 reads them), counted at the drive.
+    // bits as docs/protocols/compax3.md reads them), counted at the drive.
     void actingRequestsAreTheManualsBytes() {
         Bench bench;
         const qsizetype start = bench.sim().requests().size();

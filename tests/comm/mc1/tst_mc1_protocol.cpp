@@ -1,5 +1,5 @@
 // Issue 14, point 1 and 3: MC-1 telegrams of the four variants, answers and
-// the address arithmetic, against PROTOCOL-NOTES §11's test vectors (worked
+// the address arithmetic, against docs/protocols/mc1.md's test vectors (worked
 // by hand from the manual's chapter 5 examples) and tables 47 and 48.
 #include "comm/engine/cr_line_backend.h"
 #include "comm/mc1/mc1_address.h"

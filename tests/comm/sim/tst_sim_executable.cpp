@@ -3,6 +3,7 @@
 
 #include "comm/camcon/ascii/command_codec.h"
 #include "comm/camcon/ascii/stream_decoder.h"
+#include "tests/e2e/child_process.h"
 
 #include <QProcess>
 #include <QSerialPort>
@@ -15,8 +16,10 @@ namespace {
 
 const QByteArray kEpromRequest = encodeFrame(Frame{kQuery, "EPROM", std::nullopt, true});
 
-// Starts cambench-sim and returns the first line it prints.
+// Starts cambench-sim and returns the first line it prints. The simulator
+// ends with this test, also when the test is killed.
 QString start(QProcess& process, const QStringList& arguments) {
+    cambench::e2e::endWithThisTest(process);
     process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE), arguments);
     if (!process.waitForStarted(10000)) return {};
     while (!process.canReadLine()) {
@@ -96,6 +99,7 @@ void TestSimExecutable::answersOverTcp() {
 
 void TestSimExecutable::rejectsBadOptions() {
     QProcess process;
+    cambench::e2e::endWithThisTest(process);
     process.start(QStringLiteral(CAMBENCH_SIM_EXECUTABLE),
                   {QStringLiteral("--devices"), QStringLiteral("0,99")});
     QVERIFY(process.waitForFinished(10000));

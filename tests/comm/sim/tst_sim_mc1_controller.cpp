@@ -1,5 +1,5 @@
 // Issue 14, point 7 (first part): the simulated MC100/MC200 answers the
-// client's own telegrams (comm/mc1) as PROTOCOL-NOTES §11 says a real one
+// client's own telegrams (comm/mc1) as docs/protocols/mc1.md says a real one
 // does, for each variant.
 #include "comm/mc1/mc1_address.h"
 #include "comm/mc1/mc1_catalogue.h"

@@ -167,7 +167,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitFor(
             [&] { return mc1->facts().known && stateOf(model, 0) == QLatin1String("live"); },
             kDeviceTimeoutMs));
-        QSignalSpy started(&shell->session()->worker(), &comm::CommWorker::jobStarted);
+        QSignalSpy started(&shell->session()->worker(), &comm::JobRunner::jobStarted);
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("backup.json"));
         mc1->backupToFile(path);

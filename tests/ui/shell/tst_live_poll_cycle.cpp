@@ -143,7 +143,7 @@ private Q_SLOTS:
             QTest::qWaitFor([&] { return page.pollState() == LiveDevicePage::PollState::OnLine; },
                             kDeviceTimeoutMs));
         // Progress of the poll since the last cycle: not a missed cycle.
-        QSignalSpy progress(&shell->session()->worker(), &comm::CommWorker::jobProgress);
+        QSignalSpy progress(&shell->session()->worker(), &comm::JobRunner::jobProgress);
         QVERIFY(progress.wait(kDeviceTimeoutMs));
         QCoreApplication::processEvents();
         cycle.tick();
@@ -166,7 +166,7 @@ private Q_SLOTS:
         // A long job holds the line: the next poll waits behind it.
         Gate backup;
         bool backupDone = false;
-        QSignalSpy started(&session->worker(), &comm::CommWorker::jobStarted);
+        QSignalSpy started(&session->worker(), &comm::JobRunner::jobStarted);
         session->run<comm::DeviceConnection, int>(
             &page, QStringLiteral("Back up controller"),
             [open = backup.flag()](comm::DeviceConnection&, comm::JobContext&) -> Result<int> {

@@ -218,7 +218,7 @@ void ReportAndCountsTest::backupGivesNoGuessedTimeLeft() {
     wizard->setMode(BackupWizard::Mode::Backup);
     wizard->setPath(dir.filePath(QStringLiteral("backup.json")));
     QStringList seen;
-    connect(&shell->session()->worker(), &comm::CommWorker::jobProgress, this,
+    connect(&shell->session()->worker(), &comm::JobRunner::jobProgress, this,
             [&] { seen << wizard->progressPage()->etaLabelText(); });
     wizard->next();
     QTRY_VERIFY_WITH_TIMEOUT(wizard->progressPage()->isComplete(), kDeviceTimeoutMs);

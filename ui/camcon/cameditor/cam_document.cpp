@@ -214,15 +214,6 @@ void CamDocument::setMinimumPulses(const MinimumPulses& pulses) {
     Q_EMIT minimumPulsesChanged();
 }
 
-void CamDocument::setDeviceOutputSettings(const QMap<int, QString>& outputNames,
-                                          const DeadTimes& deadTimes) {
-    m_deviceOutputNames = outputNames;
-    m_deviceDeadTimes = deadTimes;
-    m_outputSettingsKnown = true;
-    Q_EMIT deviceStateChanged();
-    notifyChangedCount();
-}
-
 void CamDocument::setDeviceTrack(int program, const Track& track) {
     if (!m_device.contains(program)) return;
     Track clean = normalized(track);
@@ -271,13 +262,6 @@ void CamDocument::forgetUnknownTracks(int program) {
 
 bool CamDocument::deviceTrackKnown(int program, int output) const {
     return m_device.contains(program) && !m_unknownTracks.contains(trackKey(program, output));
-}
-
-void CamDocument::forgetDeviceProgram(int program) {
-    forgetUnknownTracks(program);
-    if (m_device.remove(program) == 0) return;
-    Q_EMIT deviceStateChanged();
-    notifyChangedCount();
 }
 
 void CamDocument::forgetDeviceCopies(CarryOver carry) {

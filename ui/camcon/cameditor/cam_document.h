@@ -92,16 +92,12 @@ public:
     int outputSettingsEditCount() const;
     // Only the device copy ("keep mine"): edits stay and now compare with it.
     void setDeviceProgram(const CamProgram& program);
-    void setDeviceOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes);
     // After a write: what the device holds now, item by item. A track or a
     // program name of a program whose device copy is unknown stays unknown.
     void setDeviceTrack(int program, const Track& track);
     void setDeviceProgramName(int program, const QString& name);
     void setDeviceDeadTime(int output, qint32 deadTime);
     void setDeviceOutputName(int output, const QString& name);
-    // The device copy of a program is no longer known (a write whose
-    // outcome could not be read back).
-    void forgetDeviceProgram(int program);
     // One track's state on the device is no longer known (its write was cut
     // off): that output shows "not read" and is written again; the rest of
     // the program keeps what the device was seen to hold.
