@@ -376,6 +376,11 @@ void MainWindow::reportLoaded(bool ok) {
 }
 
 void MainWindow::checkDevice() {
+    // One reset for every family, not only the one of the new device: the
+    // pages of a family switched away from would otherwise keep what they
+    // said of their last device ("STOP sent to every axis", a compared
+    // file) until a device of theirs comes again.
+    for (FamilyWindow* part : m_families) part->forgetDevice();
     FamilyWindow* family = sessionWindow();
     const bool load = std::exchange(m_loadPending, false);
     if (family) {
