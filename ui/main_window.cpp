@@ -345,6 +345,12 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateConnection() {
     const comm::ConnectionState state = m_session->state();
+    // A connect a person asked for may reach another device, of this
+    // family or another: from now on no page and no title speaks of the
+    // one before, also when nothing answers (a retry of a lost line keeps
+    // the stale values).
+    if (state == comm::ConnectionState::Connecting && !m_session->isRetrying())
+        for (FamilyWindow* part : m_families) part->forgetDevice();
     if (state == comm::ConnectionState::Lost)
         showMessage(tr("Connection lost: %1").arg(asSentence(m_session->lastMessage())));
     showFamilyPages();

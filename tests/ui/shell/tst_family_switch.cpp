@@ -23,6 +23,7 @@
 #include "comm/mc1/mc1_variant.h"
 
 #include <QLabel>
+#include <QPushButton>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -115,6 +116,32 @@ private Q_SLOTS:
         QVERIFY(!mc1->facts().known);
         QVERIFY(mc1->gui()->identityLine().isEmpty());
         QCOMPARE(c3->facts().identity.type(), QStringLiteral("S150V4"));
+
+        // A connect to another controller where nothing answers: offline,
+        // the title and the pages no longer speak of the drive.
+        const QString drive = c3->gui()->windowSubject();
+        QVERIFY(!drive.isEmpty());
+        QVERIFY2(window->windowTitle().contains(drive), qPrintable(window->windowTitle()));
+        window->showPage(objects);
+        QVERIFY(model->setData(model->indexOf(target, Compax3ObjectModel::NewValue),
+                               QStringLiteral("12,5")));
+        QVERIFY(!resultOf(objects).isEmpty());
+        ConnectionPage* page = window->connectionPage();
+        page->setPort(QStringLiteral("/dev/cambench-no-such-port"));
+        page->setProtocol(QStringLiteral("mc1"));
+        window->connectAndLoad();
+        QTRY_VERIFY_WITH_TIMEOUT(shell->session()->state() == comm::ConnectionState::Disconnected,
+                                 kDeviceTimeoutMs);
+        QVERIFY2(!window->windowTitle().contains(drive), qPrintable(window->windowTitle()));
+        QVERIFY2(resultsShown(window).isEmpty(), qPrintable(resultsShown(window).join('\n')));
+        QVERIFY(!c3->facts().known);
+        // The connection controls stay, whatever the family.
+        for (const char* button : {"Connect", "Disconnect"}) {
+            bool found = false;
+            for (const QPushButton* b : page->findChildren<QPushButton*>())
+                found = found || (b->text() == QLatin1String(button) && !b->isHidden());
+            QVERIFY2(found, button);
+        }
     }
 
     // "is lost. the port …": each sentence of a composed message starts
