@@ -85,7 +85,7 @@ void ConnectionStrip::update() {
     if (lost) {
         text = tr("The connection to %1 is lost.").arg(port);
         if (!m_session->lastMessage().isEmpty())
-            text += QLatin1Char(' ') + asSentence(m_session->lastMessage());
+            text += QLatin1Char(' ') + capitalised(asSentence(m_session->lastMessage()));
         text += QLatin1Char('\n') + tr("CamBench tries again by itself; your edits are kept.");
     } else if (silent(m_session)) {
         text = tr("The device on %1 has not answered since %2.")

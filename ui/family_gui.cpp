@@ -2,6 +2,7 @@
 
 #include "device_session.h"
 #include "main_window.h"
+#include "section_page.h"
 #include "sentence.h"
 
 #include "comm/device/protocol_registry.h"
@@ -40,6 +41,11 @@ void FamilyWindow::deviceOnLine(bool load) {
                                             .arg(asSentence(identity.error().message)));
             if (load) m_window->reportLoaded(identity.ok());
         });
+}
+
+void FamilyWindow::forgetDevice() {
+    m_gui->setIdentity({});
+    for (SectionPage* page : pages()) page->forgetDevice();
 }
 
 FamilyGuiRegistry& FamilyGuiRegistry::instance() {

@@ -94,6 +94,11 @@ public:
     // what a person looks at first; then window()->reportLoaded(ok).
     // The default asks the device to identify itself.
     virtual void deviceOnLine(bool load);
+    // A device came on the line (this family's or another's): the shell
+    // asks every family first to forget the one before. The default drops
+    // the identity and has each page forget (SectionPage::forgetDevice);
+    // a family that keeps more of its device (facts) drops that too.
+    virtual void forgetDevice();
     // Another page became current (live values poll only where shown).
     virtual void pageShown(SectionPage* page) { Q_UNUSED(page); }
     // Asked before the window closes; false keeps it open.

@@ -2,6 +2,7 @@
 
 #include "device_session.h"
 #include "live_freshness.h"
+#include "sentence.h"
 #include "stop_button.h"
 
 #include <QDateTime>
@@ -143,10 +144,18 @@ void LiveDevicePage::clearResult() {
     m_result->setStyleSheet(QString());
 }
 
+void LiveDevicePage::forgetDevice() {
+    clearResult();
+    markStale();
+}
+
 void LiveDevicePage::showResult(const QString& text, bool ok) {
-    resultLine()->setText(text);
+    // The line starts a sentence, also when it is a message from comm/
+    // ("no reply from the drive") shown as it came.
+    const QString sentence = capitalised(text);
+    resultLine()->setText(sentence);
     resultLine()->setStyleSheet(ok ? QString() : QStringLiteral("color: #d03030;"));
-    Q_EMIT statusMessage(text);
+    Q_EMIT statusMessage(sentence);
 }
 
 }  // namespace cambench

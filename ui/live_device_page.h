@@ -36,6 +36,8 @@ public:
     // Another device came (or another family's): what the last action did
     // was done to the device before, and is no longer said.
     void clearResult();
+    // The result line goes and the values shown are no longer live.
+    void forgetDevice() override;
 
     // The page whose poll fills this one (a trend drawn from another
     // page's values); the poll cycle polls and judges that one.

@@ -345,6 +345,12 @@ void MainWindow::updateTitle() {
 
 void MainWindow::updateConnection() {
     const comm::ConnectionState state = m_session->state();
+    // A connect a person asked for may reach another device, of this
+    // family or another: from now on no page and no title speaks of the
+    // one before, also when nothing answers (a retry of a lost line keeps
+    // the stale values).
+    if (state == comm::ConnectionState::Connecting && !m_session->isRetrying())
+        for (FamilyWindow* part : m_families) part->forgetDevice();
     if (state == comm::ConnectionState::Lost)
         showMessage(tr("Connection lost: %1").arg(asSentence(m_session->lastMessage())));
     showFamilyPages();
@@ -376,6 +382,11 @@ void MainWindow::reportLoaded(bool ok) {
 }
 
 void MainWindow::checkDevice() {
+    // One reset for every family, not only the one of the new device: the
+    // pages of a family switched away from would otherwise keep what they
+    // said of their last device ("STOP sent to every axis", a compared
+    // file) until a device of theirs comes again.
+    for (FamilyWindow* part : m_families) part->forgetDevice();
     FamilyWindow* family = sessionWindow();
     const bool load = std::exchange(m_loadPending, false);
     if (family) {

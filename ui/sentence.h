@@ -5,11 +5,33 @@
 
 namespace cambench {
 
+// `text` with every sentence after its first starting with a capital:
+// comm/ composes its messages from lower-case parts ("no reply. the port
+// is gone"), which on the screen read as sentences. A full stop after an
+// abbreviation ("e.g.", "etc.") does not end a sentence.
+inline QString withSentenceCapitals(const QString& text) {
+    static const QRegularExpression sentenceStart(QStringLiteral(R"((\S*)([.!?])\s+(\p{Ll}))"),
+                                                  QRegularExpression::UseUnicodePropertiesOption);
+    static const QRegularExpression abbreviation(
+        QStringLiteral(R"(^\(?(e\.g|i\.e|etc|cf|vs|approx|Min|Max|No)$)"));
+    QString result = text;
+    QRegularExpressionMatchIterator it = sentenceStart.globalMatch(text);
+    while (it.hasNext()) {
+        const QRegularExpressionMatch match = it.next();
+        if (match.captured(2) == QLatin1String(".") &&
+            abbreviation.match(match.captured(1)).hasMatch())
+            continue;
+        result[match.capturedStart(3)] = match.captured(3).at(0).toUpper();
+    }
+    return result;
+}
+
 // A message as one sentence: ends with a full stop unless it already ends
 // with punctuation (device and line messages come both ways), so that two
-// messages in a row never run together.
+// messages in a row never run together; the sentences inside it start
+// with a capital.
 inline QString asSentence(const QString& text) {
-    const QString trimmed = text.trimmed();
+    const QString trimmed = withSentenceCapitals(text.trimmed());
     if (trimmed.isEmpty()) return trimmed;
     const QChar last = trimmed.back();
     if (last == QLatin1Char('.') || last == QLatin1Char('!') || last == QLatin1Char('?') ||

@@ -36,7 +36,8 @@ CarryOver askWhatStays(QWidget* parent, const Workspace& workspace, const Device
 }
 
 // The banner while anything of the other device could still be looked for.
-// (The new device is named on the line above it.)
+// (The new device is named on the line above it; the old one once, so
+// that the banner fits whole.)
 QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, int carried) {
     QString note = QCoreApplication::translate(
                        "cambench::DeviceCheck",
@@ -50,8 +51,7 @@ QString otherDeviceNote(CarryOver carry, const DeviceInfo& before, int carried) 
     if (carry == CarryOver::Everything)
         note += QLatin1Char(' ') +
                 QCoreApplication::translate("cambench::DeviceCheck",
-                                            "A copy of the values of %1 waits to be written.")
-                    .arg(deviceName(before));
+                                            "A copy of that device's values waits to be written.");
     return note;
 }
 

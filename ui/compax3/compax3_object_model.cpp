@@ -5,6 +5,7 @@
 
 #include <QBrush>
 #include <QFont>
+#include <QRegularExpression>
 
 namespace cambench {
 
@@ -15,6 +16,13 @@ namespace {
 // editor puts the model's text back into it (what is typed must stay).
 void setRole(QStandardItem* item, int role, const QVariant& value) {
     if (item->data(role) != value) item->setData(value, role);
+}
+
+// The dictionary names the drive's user unit in English ("unit/s²"): said
+// in the person's language ("Einheit/s²").
+QString shownUnit(const QString& unit) {
+    static const QRegularExpression word(QStringLiteral("\\bunit\\b"));
+    return QString(unit).replace(word, Compax3ObjectModel::tr("unit"));
 }
 
 }  // namespace
@@ -49,7 +57,7 @@ QList<QStandardItem*> Compax3ObjectModel::rowFor(const Compax3ObjectInfo& info, 
     row[Object]->setText(info.id.text());
     const QString language = currentLanguage();
     row[Name]->setText(known ? info.nameIn(language) : tr("(not in the dictionary)"));
-    row[Unit]->setText(info.unit);
+    row[Unit]->setText(shownUnit(info.unit));
     QString range = info.range.text();
     if (info.access == Compax3Access::ReadOnly) range = tr("read-only");
     if (info.access == Compax3Access::WriteOnly) range = tr("function (written only)");

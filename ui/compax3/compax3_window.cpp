@@ -73,12 +73,14 @@ void Compax3Window::setFacts(const Compax3Facts& facts) {
     for (Compax3Page* page : compax3Pages()) page->setFacts(facts);
 }
 
-void Compax3Window::deviceOnLine(bool load) {
-    m_compax3->setIdentity({});
-    m_compax3->session()->setDeviceChecked(false);
+void Compax3Window::forgetDevice() {
+    FamilyWindow::forgetDevice();
     setFacts({});
-    // Nothing the pages said of the device before is said of this one.
-    for (LiveDevicePage* page : compax3Pages()) page->clearResult();
+}
+
+void Compax3Window::deviceOnLine(bool load) {
+    // The shell had every family forget the device before (forgetDevice).
+    m_compax3->session()->setDeviceChecked(false);
     m_compax3->session()->run<comm::Compax3Device, Compax3Identity>(
         this, tr("Identify drive"),
         [](comm::Compax3Device& device, comm::JobContext&) { return device.identity(); },

@@ -26,6 +26,8 @@ public:
 
     QList<SectionPage*> pages() const override;
     void deviceOnLine(bool load) override;
+    // Also the facts (variant, type) the pages act on.
+    void forgetDevice() override;
     void pageShown(SectionPage* page) override;
     bool confirmClose() override;
     QList<TourStop> tourStops(const QString& directory) override;

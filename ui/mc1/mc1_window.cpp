@@ -64,12 +64,14 @@ void Mc1Window::setFacts(const Mc1Facts& facts) {
     for (Mc1Page* page : mc1Pages()) page->setFacts(facts);
 }
 
-void Mc1Window::deviceOnLine(bool load) {
-    m_mc1->setIdentity({});
-    m_mc1->session()->setDeviceChecked(false);
+void Mc1Window::forgetDevice() {
+    FamilyWindow::forgetDevice();
     setFacts({});
-    // Nothing the pages said of the device before is said of this one.
-    for (LiveDevicePage* page : mc1Pages()) page->clearResult();
+}
+
+void Mc1Window::deviceOnLine(bool load) {
+    // The shell had every family forget the device before (forgetDevice).
+    m_mc1->session()->setDeviceChecked(false);
     struct Found {
         Mc1Facts facts;
         QString identity;

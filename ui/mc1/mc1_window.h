@@ -27,6 +27,8 @@ public:
     QList<SectionPage*> pages() const override;
     void addMenuEntries(const FamilyMenus& menus) override;
     void deviceOnLine(bool load) override;
+    // Also the facts (variant, type) the pages act on.
+    void forgetDevice() override;
     void pageShown(SectionPage* page) override;
     QList<TourStop> tourStops(const QString& directory) override;
 

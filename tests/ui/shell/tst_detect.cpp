@@ -105,6 +105,31 @@ private Q_SLOTS:
         QCOMPARE(shell->session()->protocol().protocolId(), QStringLiteral("3964r-n96"));
     }
 
+    // Issue 28 item 4: the red failure of an earlier connect is not the
+    // state of a port where Detect found a device: it goes, and the
+    // result is not red.
+    void aConnectFailureGoesWhenDetectFinds() {
+        PtyDevice device(QStringLiteral("3964r-n96"));
+        QVERIFY(device.isOpen());
+        std::unique_ptr<Shell> shell = startOnSimulator();
+        QVERIFY(shell);
+        ConnectionPage* page = shell->window()->connectionPage();
+        auto* failure = page->findChild<QLabel*>(QStringLiteral("connectFailure"));
+        QVERIFY(failure);
+        page->setPort(QStringLiteral("/dev/cambench-no-such-port"));
+        shell->window()->connectAndLoad();
+        QTRY_VERIFY_WITH_TIMEOUT(failure->isVisible(), kDeviceTimeoutMs);
+        NextDialog<QMessageBox> yes(
+            [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+        page->setPort(device.path());
+        page->detect();
+        const QString text = waitForDetect(page);
+        QVERIFY2(text.contains(QLatin1String("Found on")), qPrintable(text));
+        QVERIFY(!failure->isVisible());
+        const auto* result = page->findChild<QLabel*>(QStringLiteral("detectResult"));
+        QVERIFY(result->palette().color(QPalette::WindowText) != QColor(0xd0, 0x30, 0x20));
+    }
+
     // Nothing answers: every protocol tried is named, and what to check.
     void nothingAnswersNamesEveryTry() {
         PtyDevice device(QStringLiteral("standard"), true);

@@ -172,8 +172,11 @@ void OtherDeviceTest::aCopyOfTheOldDeviceIsWrittenAsACopy() {
     CamDocument* cams = workspace->cams();
     QCOMPARE(cams->track(0, 3).cams, demoOutput3);
     QCOMPARE(cams->trackState(0, 3), ChangeState::Edited);
-    QVERIFY2(workspace->otherDeviceNote().contains(QStringLiteral("A copy of the values of")),
+    // The old device named once: the banner fits whole.
+    QVERIFY2(workspace->otherDeviceNote().contains(
+                 QStringLiteral("A copy of that device's values waits to be written.")),
              qPrintable(workspace->otherDeviceNote()));
+    QCOMPARE(workspace->otherDeviceNote().count(QLatin1String("CamCon")), 1);
     const std::optional<WriteResult> result = writeProgram(*devices.shell, 0);
     QVERIFY(result.has_value());
     QVERIFY2(result->ok(), qPrintable(writeSummary(*result)));
