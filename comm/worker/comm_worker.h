@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 
 namespace cambench::comm {
 
@@ -48,17 +49,21 @@ public:
 
     // Queues `fn`; returns the job id. `pollKey` (Poll jobs only) collapses
     // repeated polls. If the link is not connected the job still runs and
-    // its calls fail with a Communication error.
+    // its calls fail with a Communication error. `dropped` is called (on
+    // the thread that calls dropQueued()) when a STOP drops the job unrun.
     quint64 submit(JobPriority priority, const QString& title, JobFn fn,
-                   const QString& pollKey = {});
+                   const QString& pollKey = {}, std::function<void()> dropped = {});
     void cancel(quint64 id);  // running or queued
     void cancelAll();
     // Drops every queued User and Poll job (a move that waits for the line
     // must not run after a STOP); the running job and Urgent ones go on.
+    // Each dropped job ends: its `dropped` is called, then jobFinished.
     void dropQueued();
 
     // Convenience: runs `work` on the worker thread and `done` with its
-    // result on `context`'s thread (queued), unless `context` died.
+    // result on `context`'s thread (queued), unless `context` died. A
+    // result that can hold an Error (a Result<>) also comes back when a
+    // STOP drops the job unrun: Cancelled, droppedByStop().
     template <class T>
     quint64 run(QObject* context, JobPriority priority, const QString& title,
                 std::function<T(JobContext&)> work, std::function<void(T)> done,
@@ -87,6 +92,14 @@ quint64 CommWorker::run(QObject* context, JobPriority priority, const QString& t
                         std::function<T(JobContext&)> work, std::function<void(T)> done,
                         const QString& pollKey) {
     QPointer<QObject> guard(context);
+    std::function<void()> dropped;
+    if constexpr (std::is_constructible_v<T, Error>) {
+        dropped = [guard, done] {
+            if (!guard) return;
+            QMetaObject::invokeMethod(
+                guard.data(), [done]() { done(T(droppedByStop())); }, Qt::QueuedConnection);
+        };
+    }
     return submit(
         priority, title,
         [guard, work = std::move(work), done = std::move(done)](JobContext& ctx) {
@@ -96,7 +109,7 @@ quint64 CommWorker::run(QObject* context, JobPriority priority, const QString& t
                 guard.data(), [done, result = std::move(result)]() { done(result); },
                 Qt::QueuedConnection);
         },
-        pollKey);
+        pollKey, std::move(dropped));
 }
 
 }  // namespace cambench::comm
