@@ -280,8 +280,9 @@ void ConnectionPage::detect() {
             QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
         if (answer != QMessageBox::Yes) return;
     }
-    // Also a connect on its way to the worker lets go of the port first.
-    m_session->disconnectFromDevice();
+    // Also a connect on its way to the worker lets go of the port first;
+    // cancelled at the question before leaving a moving device: nothing more.
+    if (!m_session->disconnectFromDevice()) return;
     m_detect->setEnabled(false);
     m_detectResult->setText(tr("Detecting on %1…").arg(where.port));
     m_detectResult->setPalette(QPalette());

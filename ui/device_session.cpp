@@ -62,8 +62,8 @@ void DeviceSession::reconnect() {
     onStateChanged(comm::ConnectionState::Connecting, m_connection.port);
 }
 
-void DeviceSession::disconnectFromDevice() {
-    if (!mayLeaveDevice(tr("Disconnect"))) return;
+bool DeviceSession::disconnectFromDevice() {
+    if (!mayLeaveDevice(tr("Disconnect"))) return false;
     m_wantConnected = false;
     m_wasLost = false;
     m_reestablishing = false;
@@ -71,6 +71,7 @@ void DeviceSession::disconnectFromDevice() {
     m_worker->cancelAll();
     m_worker->disconnectFromDevice();
     m_freshness.paused();
+    return true;
 }
 
 void DeviceSession::setDevice(int device) {

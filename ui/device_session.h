@@ -43,7 +43,9 @@ public:
     void connectTo(const comm::ConnectionSettings& connection,
                    const comm::ProtocolSettingsPtr& protocol);
     void reconnect();  // with the last settings
-    void disconnectFromDevice();
+    // False: the question before leaving a device that can move was
+    // cancelled, and the line is kept as it is.
+    bool disconnectFromDevice();
     void setDevice(int device);  // bus address after a bus scan
 
     comm::ConnectionState state() const { return m_state; }

@@ -55,4 +55,11 @@ private:
 // running job; user actions are served before polling (monitor) jobs.
 enum class JobPriority { Urgent = 0, User = 1, Poll = 2 };
 
+// The result of a job a STOP took from the queue before it ran: nothing of
+// it reached the device.
+inline Error droppedByStop() {
+    return {ErrorKind::Cancelled,
+            QCoreApplication::translate("cambench::comm", "not sent: dropped by STOP"), 0};
+}
+
 }  // namespace cambench::comm

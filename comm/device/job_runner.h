@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <type_traits>
 
 namespace cambench::comm {
 
@@ -37,19 +38,23 @@ public:
 
     // Queues `fn`; returns the job id. `pollKey` (Poll jobs only) collapses
     // repeated polls. If the link is not connected the job still runs and
-    // its calls fail with a Communication error.
+    // its calls fail with a Communication error. `dropped` is called (on
+    // the thread that calls dropQueued()) when a STOP drops the job unrun.
     virtual quint64 submit(JobPriority priority, const QString& title, JobFn fn,
-                           const QString& pollKey = {}) = 0;
+                           const QString& pollKey = {}, std::function<void()> dropped = {}) = 0;
     virtual void cancel(quint64 id) = 0;  // running or queued
     virtual void cancelAll() = 0;
     // Drops every queued User and Poll job (a move that waits for the line
     // must not run after a STOP); the running job and Urgent ones go on.
+    // Each dropped job ends: its `dropped` is called, then jobFinished.
     virtual void dropQueued() = 0;
 
     virtual ConnectionState state() const = 0;
 
     // Convenience: runs `work` on the worker thread and `done` with its
-    // result on `context`'s thread (queued), unless `context` died.
+    // result on `context`'s thread (queued), unless `context` died. A
+    // result that can hold an Error (a Result<>) also comes back when a
+    // STOP drops the job unrun: Cancelled, droppedByStop().
     template <class T>
     quint64 run(QObject* context, JobPriority priority, const QString& title,
                 std::function<T(JobContext&)> work, std::function<void(T)> done,
@@ -68,6 +73,14 @@ quint64 JobRunner::run(QObject* context, JobPriority priority, const QString& ti
                        std::function<T(JobContext&)> work, std::function<void(T)> done,
                        const QString& pollKey) {
     QPointer<QObject> guard(context);
+    std::function<void()> dropped;
+    if constexpr (std::is_constructible_v<T, Error>) {
+        dropped = [guard, done] {
+            if (!guard) return;
+            QMetaObject::invokeMethod(
+                guard.data(), [done]() { done(T(droppedByStop())); }, Qt::QueuedConnection);
+        };
+    }
     return submit(
         priority, title,
         [guard, work = std::move(work), done = std::move(done)](JobContext& ctx) {
@@ -77,7 +90,7 @@ quint64 JobRunner::run(QObject* context, JobPriority priority, const QString& ti
                 guard.data(), [done, result = std::move(result)]() { done(result); },
                 Qt::QueuedConnection);
         },
-        pollKey);
+        pollKey, std::move(dropped));
 }
 
 // A new CommWorker, its thread running (defined in comm/worker/comm_worker.cpp).

@@ -90,8 +90,9 @@ void CommWorker::setLinkDevice(int device) {
 }
 
 quint64 CommWorker::submit(JobPriority priority, const QString& title, JobFn fn,
-                           const QString& pollKey) {
-    const JobQueue::Pushed pushed = d->queue->push(priority, title, std::move(fn), pollKey);
+                           const QString& pollKey, std::function<void()> dropped) {
+    const JobQueue::Pushed pushed =
+        d->queue->push(priority, title, std::move(fn), pollKey, std::move(dropped));
     if (pushed.replaced != 0) {
         // The replaced poll never runs; it still finishes, like every job.
         QMetaObject::invokeMethod(
@@ -113,7 +114,13 @@ void CommWorker::cancelAll() {
 }
 
 void CommWorker::dropQueued() {
-    finishDropped(d->queue->dropQueued());
+    QList<quint64> ids;
+    for (const QueuedJob& job : d->queue->dropQueued()) {
+        // Its caller hears first that it was not sent, then it finishes.
+        if (job.dropped) job.dropped();
+        ids << job.id;
+    }
+    finishDropped(ids);
 }
 
 void CommWorker::finishDropped(const QList<quint64>& ids) {

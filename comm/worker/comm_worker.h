@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 
 namespace cambench::comm {
 
@@ -40,7 +41,7 @@ public:
     void setLinkDevice(int device) override;
 
     quint64 submit(JobPriority priority, const QString& title, JobFn fn,
-                   const QString& pollKey = {}) override;
+                   const QString& pollKey = {}, std::function<void()> dropped = {}) override;
     void cancel(quint64 id) override;
     void cancelAll() override;
     void dropQueued() override;

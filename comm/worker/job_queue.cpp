@@ -4,7 +4,8 @@
 
 namespace cambench::comm {
 
-JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, QString pollKey) {
+JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, QString pollKey,
+                                std::function<void()> dropped) {
     std::lock_guard lock(m_mutex);
     QueuedJob job;
     job.id = m_nextId++;
@@ -13,6 +14,7 @@ JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, Q
     job.fn = std::move(fn);
     job.pollKey = priority == JobPriority::Poll ? std::move(pollKey) : QString();
     job.lineEpoch = m_lineChanges;
+    job.dropped = std::move(dropped);
 
     auto& queue = m_queues[int(priority)];
     if (!job.pollKey.isEmpty()) {
@@ -90,12 +92,12 @@ QList<quint64> JobQueue::cancelAll() {
     return removed;
 }
 
-QList<quint64> JobQueue::dropQueued() {
+QList<QueuedJob> JobQueue::dropQueued() {
     std::lock_guard lock(m_mutex);
-    QList<quint64> removed;
+    QList<QueuedJob> removed;
     for (const JobPriority priority : {JobPriority::User, JobPriority::Poll}) {
         auto& queue = m_queues[int(priority)];
-        for (const QueuedJob& job : queue) removed.append(job.id);
+        for (QueuedJob& job : queue) removed.append(std::move(job));
         queue.clear();
     }
     return removed;

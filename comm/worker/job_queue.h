@@ -27,6 +27,9 @@ struct QueuedJob {
     // posted when the job was submitted: it runs only after all of them.
     quint64 lineEpoch = 0;
     std::shared_ptr<std::atomic_bool> cancel = std::make_shared<std::atomic_bool>(false);
+    // Called when a STOP drops the job before it ran (dropQueued()), so
+    // that whoever waits for it hears that it was not sent.
+    std::function<void()> dropped;
 };
 
 // The worker's pending jobs, shared by the front (any thread) and the worker
@@ -39,7 +42,8 @@ public:
         quint64 id = 0;
         quint64 replaced = 0;  // the id of the Poll job it replaced, else 0
     };
-    Pushed push(JobPriority priority, QString title, JobFn fn, QString pollKey = {});
+    Pushed push(JobPriority priority, QString title, JobFn fn, QString pollKey = {},
+                std::function<void()> dropped = {});
 
     // A connect, disconnect or device change is posted to the worker: jobs
     // pushed from now on wait until it has been carried out.
@@ -62,9 +66,9 @@ public:
     // Removes every queued job (their ids are returned) and signals the
     // running one.
     QList<quint64> cancelAll();
-    // Removes every queued User and Poll job (their ids are returned); the
-    // running one and urgent ones go on.
-    QList<quint64> dropQueued();
+    // Removes every queued User and Poll job and returns them (their
+    // `dropped` to be called); the running one and urgent ones go on.
+    QList<QueuedJob> dropQueued();
 
     qsizetype size() const;
 

@@ -1,6 +1,7 @@
 #include "compax3_motion_page.h"
 
 #include "ui/device_session.h"
+#include "ui/live_freshness.h"
 #include "ui/motion_stop.h"
 #include "ui/sentence.h"
 
@@ -119,6 +120,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     layout->addWidget(jog);
     layout->addWidget(set);
     layout->addWidget(note);
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
     layout->addStretch(1);
     factsChanged();
@@ -179,16 +181,12 @@ bool Compax3MotionPage::poll() {
     });
 }
 
-void Compax3MotionPage::markStale() {
-    showFreshness(LiveFreshness::State::Stale, tr("stale: the connection was lost"));
-}
-
-void Compax3MotionPage::showFreshness(LiveFreshness::State state, const QString& text) {
-    if (state != LiveFreshness::State::Stale && state != LiveFreshness::State::Paused) return;
-    if (!facts().known || !m_shown) return;
-    // The motion state is never shown as live when it is not.
+void Compax3MotionPage::freshnessChanged() {
+    if (freshness()->isLive() || !facts().known || !m_shown) return;
+    // The motion state is never shown as live when it is not: a missed
+    // cycle, a lost line, a backup holding the line.
     m_stale = true;
-    m_axis->setText(tr("%1 (%2)").arg(capitalised(m_shown->summary()), text.toLower()));
+    m_axis->setText(tr("%1 (%2)").arg(capitalised(m_shown->summary()), freshness()->valueNote()));
     m_axis->setStyleSheet(QStringLiteral("color: gray;"));
 }
 

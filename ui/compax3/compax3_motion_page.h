@@ -24,8 +24,6 @@ public:
 
     QString sectionTitle() const override { return tr("Motion"); }
     bool poll() override;
-    void markStale() override;
-    void showFreshness(LiveFreshness::State state, const QString& text) override;
 
     void runMotion(comm::Compax3Motion motion);
     // Reads the chosen set from the drive into the editors.
@@ -38,6 +36,7 @@ public:
 
 protected:
     void factsChanged() override;
+    void freshnessChanged() override;
 
 private:
     void finished(const QString& what, const Result<comm::Compax3CommandResult>& result);

@@ -1,7 +1,6 @@
 #pragma once
 
 #include "ui/live_device_page.h"
-#include "ui/live_freshness.h"
 
 #include "comm/compax3/compax3_device.h"
 
@@ -29,13 +28,6 @@ public:
         factsChanged();
     }
 
-    // The live values' freshness changed: a page greys what it shows with
-    // `text` ("No answer since 12:03:04", "Paused") unless `state` is Live.
-    virtual void showFreshness(LiveFreshness::State state, const QString& text) {
-        Q_UNUSED(state);
-        Q_UNUSED(text);
-    }
-
 Q_SIGNALS:
     // This page changed these objects on the drive: the pages that show
     // them read them again, so that every page shows the drive's value.
@@ -43,8 +35,8 @@ Q_SIGNALS:
 
 protected:
     virtual void factsChanged() {}
-    // One poll of the drive's status (a Poll job; a poll already waiting is
-    // not queued twice); `show` gets what was read.
+    // One poll of the drive's status on the shell's poll cycle (runPoll: a
+    // poll already waiting is not queued twice); `show` gets what was read.
     bool pollStatus(std::function<void(const comm::Compax3DriveStatus&)> show);
 
 private:

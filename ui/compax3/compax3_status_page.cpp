@@ -1,6 +1,7 @@
 #include "compax3_status_page.h"
 
 #include "ui/device_session.h"
+#include "ui/live_freshness.h"
 #include "ui/sentence.h"
 
 #include <QDateTime>
@@ -52,6 +53,7 @@ Compax3StatusPage::Compax3StatusPage(DeviceSession* session, QWidget* parent)
     layout->addLayout(lamps);
     layout->addLayout(form);
     layout->addWidget(m_acknowledge, 0, Qt::AlignLeft);
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
     layout->addStretch(1);
 }
@@ -89,23 +91,18 @@ bool Compax3StatusPage::poll() {
     return pollStatus([this](const comm::Compax3DriveStatus& status) { show(status); });
 }
 
-void Compax3StatusPage::markStale() {
-    greyOut(tr("stale: the connection was lost"));
-}
-
-void Compax3StatusPage::showFreshness(LiveFreshness::State state, const QString& text) {
-    if (state == LiveFreshness::State::Stale || state == LiveFreshness::State::Paused)
-        greyOut(text);
+void Compax3StatusPage::freshnessChanged() {
+    // A missed cycle, a lost line, a backup holding the line: grey, and why.
+    if (!freshness()->isLive()) greyOut(freshness()->valueNote());
 }
 
 void Compax3StatusPage::greyOut(const QString& why) {
     if (!m_shown) return;
     m_stale = true;
     paintLamps();
-    m_error->setText(
-        tr("%1 (%2)").arg(comm::compax3LastErrorText(m_shown->lastError), why.toLower()));
+    m_error->setText(tr("%1 (%2)").arg(comm::compax3LastErrorText(m_shown->lastError), why));
     m_error->setStyleSheet(QStringLiteral("color: gray;"));
-    m_axis->setText(tr("%1 (%2)").arg(m_shown->summary(), why.toLower()));
+    m_axis->setText(tr("%1 (%2)").arg(m_shown->summary(), why));
     m_axis->setStyleSheet(QStringLiteral("color: gray;"));
 }
 

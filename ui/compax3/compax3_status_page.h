@@ -20,12 +20,13 @@ public:
 
     QString sectionTitle() const override { return tr("Status"); }
     bool poll() override;
-    void markStale() override;
-    void showFreshness(LiveFreshness::State state, const QString& text) override;
     void acknowledge();
     // Bit `bit` of the status word as last read.
     bool bitOn(int bit) const { return m_word & (1u << bit); }
     QString errorText() const;
+
+protected:
+    void freshnessChanged() override;
 
 private:
     void show(const comm::Compax3DriveStatus& status);

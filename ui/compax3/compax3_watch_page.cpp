@@ -5,6 +5,7 @@
 #include "comm/compax3/usecases/compax3_read_objects.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
+#include "ui/live_freshness.h"
 #include "ui/multi_trend_chart.h"
 #include "ui/sentence.h"
 
@@ -67,6 +68,7 @@ Compax3WatchPage::Compax3WatchPage(DeviceSession* session, Compax3Gui* gui, QWid
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addWidget(split, 1);
+    layout->addWidget(freshnessLine());
     layout->addWidget(resultLine());
     rebuildTable();
 }
@@ -105,16 +107,13 @@ bool Compax3WatchPage::poll() {
     if (!facts().known || m_gui->watchList().isEmpty()) return false;
     const QList<Compax3ObjectId> ids = m_gui->watchList();
     using usecases::Compax3Reading;
-    session()->run<comm::Compax3Device, QList<Compax3Reading>>(
-        this, tr("Read watched objects"),
+    runPoll<comm::Compax3Device, QList<Compax3Reading>>(
+        tr("Read watched objects"),
         [ids](comm::Compax3Device& device, comm::JobContext&) {
             return usecases::readCompax3Objects(device, ids);
         },
-        [this](Result<QList<Compax3Reading>> values) {
-            pollAnswered(values.ok());
-            if (values) show(*values);
-        },
-        comm::JobPriority::Poll, QStringLiteral("compax3-watch"));
+        [this](const QList<Compax3Reading>& values) { show(values); },
+        QStringLiteral("compax3-watch"));
     return true;
 }
 
@@ -143,13 +142,9 @@ void Compax3WatchPage::show(const QList<usecases::Compax3Reading>& values) {
     m_chart->addSamples(m_start.msecsTo(now) / 1000.0, samples);
 }
 
-void Compax3WatchPage::markStale() {
-    greyOut(tr("Stale: the connection was lost after this was read."));
-}
-
-void Compax3WatchPage::showFreshness(LiveFreshness::State state, const QString& text) {
-    if (state == LiveFreshness::State::Stale || state == LiveFreshness::State::Paused)
-        greyOut(text);
+void Compax3WatchPage::freshnessChanged() {
+    // A missed cycle, a lost line, a backup holding the line: grey, and why.
+    if (!freshness()->isLive()) greyOut(freshness()->describe());
 }
 
 void Compax3WatchPage::greyOut(const QString& why) {

@@ -26,12 +26,13 @@ public:
 
     QString sectionTitle() const override { return tr("Watch"); }
     bool poll() override;
-    void markStale() override;
-    void showFreshness(LiveFreshness::State state, const QString& text) override;
     // "680.5" or "O 680,5"; false with a message when it is no object.
     bool addObject(const QString& text);
     QTableWidget* table() const { return m_table; }
     MultiTrendChart* chart() const { return m_chart; }
+
+protected:
+    void freshnessChanged() override;
 
 private:
     void rebuildTable();

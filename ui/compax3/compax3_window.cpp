@@ -9,12 +9,12 @@
 #include "compax3_watch_page.h"
 
 #include "ui/device_session.h"
+#include "ui/live_poll_cycle.h"
 #include "ui/main_window.h"
 #include "ui/sentence.h"
 
 #include <QMessageBox>
 #include <QPushButton>
-#include <QTimer>
 
 namespace cambench {
 
@@ -30,31 +30,20 @@ Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
       m_motion(new Compax3MotionPage(gui->session())),
       m_watch(new Compax3WatchPage(gui->session(), gui)),
       m_parameters(new Compax3ParametersPage(gui->session(), gui)),
-      m_poll(new QTimer(this)) {
-    m_poll->setInterval(kPollMs);
+      m_poll(new LivePollCycle(gui->session(), kPollMs, this)) {
     // Polls go on all the time a page is shown: not a job for the progress bar.
     for (const QString& title :
          {Compax3Page::tr("Read drive status"), Compax3WatchPage::tr("Read watched objects")})
         window->addQuietJobTitle(title);
-    connect(m_poll, &QTimer::timeout, this, [this] {
-        if (m_shown && m_compax3->session()->isOnline()) m_shown->poll();
-    });
     // One copy of each drive value: what one page wrote, the Objects page
     // reads again and shows as the drive's.
     for (Compax3Page* page : compax3Pages())
         connect(page, &Compax3Page::objectsWritten, m_objects,
                 [this](const QList<Compax3ObjectId>& ids) { m_objects->read(ids); });
-    // A missed poll cycle or polling paused (a backup): every page greys
-    // its live values and says why.
-    connect(gui->session()->freshness(), &LiveFreshness::changed, this,
-            [this](LiveFreshness::State state) {
-                const QString text = m_compax3->session()->freshness()->describe();
-                for (Compax3Page* page : compax3Pages()) page->showFreshness(state, text);
-            });
     connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
         if (m_compax3->session()->isOnline()) return;
         // The line is gone: what the pages show is no longer known to be true.
-        for (Compax3Page* page : compax3Pages()) page->markStale();
+        for (Compax3Page* page : compax3Pages()) page->lineLost();
     });
 }
 
@@ -104,11 +93,9 @@ void Compax3Window::pageShown(SectionPage* page) {
     m_shown = nullptr;
     for (Compax3Page* mine : compax3Pages())
         if (mine == page) m_shown = mine;
-    if (m_shown && m_shown->poll()) {
-        m_poll->start();
-    } else {
-        m_poll->stop();
-    }
+    // A missed cycle makes the shown page's values stale, a cycle spent
+    // behind a long job (a backup) pauses them: the shell's poll cycle.
+    m_poll->setShown(m_shown);
 }
 
 bool Compax3Window::confirmClose() {

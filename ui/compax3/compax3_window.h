@@ -4,10 +4,9 @@
 
 #include "ui/family_gui.h"
 
-class QTimer;
-
 namespace cambench {
 
+class LivePollCycle;
 class Compax3Gui;
 class Compax3MotionPage;
 class Compax3ObjectsPage;
@@ -38,6 +37,8 @@ public:
     Compax3MotionPage* motionPage() const { return m_motion; }
     Compax3WatchPage* watchPage() const { return m_watch; }
     Compax3ParametersPage* parametersPage() const { return m_parameters; }
+    // The shown page's polls and their freshness (tests drive its cycles).
+    LivePollCycle* pollCycle() const { return m_poll; }
 
 private:
     void setFacts(const Compax3Facts& facts);
@@ -51,7 +52,7 @@ private:
     Compax3ParametersPage* m_parameters;
     Compax3Facts m_facts;
     Compax3Page* m_shown = nullptr;
-    QTimer* m_poll;
+    LivePollCycle* m_poll;
 };
 
 // The Compax3 part of `window` (tests, the tour); nullptr when it has none.

@@ -76,6 +76,7 @@ private Q_SLOTS:
     void urgentJobRunsBeforeQueuedJobs();
     void urgentJobRunsBetweenTwoRequestsOfARunningJob();
     void dropQueuedLeavesTheRunningJobAlone();
+    void aJobDroppedByStopEndsAsNotSent();
 
 private:
     // Submits a User job that holds the worker until `gate` is released.
@@ -433,6 +434,44 @@ void TestCommWorker::dropQueuedLeavesTheRunningJobAlone() {
     for (const QList<QVariant>& args : finished) ids << args.first().toULongLong();
     QVERIFY(ids.contains(move));  // a dropped job still finishes
     QVERIFY(ids.contains(blocker));
+}
+
+// A caller waiting for a queued job hears that a STOP dropped it: once,
+// Cancelled, "not sent", and its work never ran (the running job goes on).
+void TestCommWorker::aJobDroppedByStopEndsAsNotSent() {
+    CommWorker worker;
+    QSemaphore gate;
+    RunLog log;
+    QSignalSpy finished(&worker, &CommWorker::jobFinished);
+    QVERIFY(holdWorker(worker, gate, log) != 0);
+    QObject context;
+    QList<Result<int>> moveDone;
+    QList<Result<int>> pollDone;
+    worker.run<Result<int>>(
+        &context, JobPriority::User, "move",
+        [&log](JobContext&) -> Result<int> {
+            log.add("move");
+            return 1;
+        },
+        [&moveDone](Result<int> result) { moveDone << result; });
+    worker.run<Result<int>>(
+        &context, JobPriority::Poll, "poll",
+        [&log](JobContext&) -> Result<int> {
+            log.add("poll");
+            return 2;
+        },
+        [&pollDone](Result<int> result) { pollDone << result; }, QStringLiteral("poll"));
+    worker.dropQueued();
+    gate.release();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, kHangBoundMs);
+    QTRY_COMPARE_WITH_TIMEOUT(moveDone.size() + pollDone.size(), 2, kHangBoundMs);
+    QCOMPARE(log.get(), QStringList({"blocker"}));
+    for (const QList<Result<int>>* done : {&moveDone, &pollDone}) {
+        QCOMPARE(done->size(), 1);
+        QVERIFY(!done->first().ok());
+        QCOMPARE(done->first().error().kind, ErrorKind::Cancelled);
+        QCOMPARE(done->first().error().message, QStringLiteral("not sent: dropped by STOP"));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCommWorker)

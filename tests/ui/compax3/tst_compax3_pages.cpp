@@ -3,7 +3,8 @@
 // at once and written only after Yes (what fails stays typed in), the
 // status lamps, motion only after a confirmation, STOP and Escape, the
 // watch list with its trend, the parameter file compared and written back,
-// and a lost line making the values stale.
+// and a lost line making the values stale; the pages on the shell's poll
+// cycle (paused behind a backup) and a read a STOP dropped (issue 27).
 #include "../shell/shell_fixture.h"
 
 #include "ui/compax3/compax3_gui.h"
@@ -15,6 +16,9 @@
 #include "ui/compax3/compax3_watch_page.h"
 #include "ui/compax3/compax3_window.h"
 #include "ui/device_session.h"
+#include "ui/live_freshness.h"
+#include "ui/live_poll_cycle.h"
+#include "ui/motion_stop.h"
 #include "ui/multi_trend_chart.h"
 #include "ui/report_dialog.h"
 
@@ -27,6 +31,9 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScopeGuard>
+#include <QSemaphore>
+#include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -44,6 +51,19 @@ std::unique_ptr<Shell> startCompax3() {
 
 QString resultOf(QWidget* page) {
     return page->findChild<QLabel*>(QStringLiteral("pageResult"))->text();
+}
+
+// The Status page's lamp of `bit` drawn grey (not live).
+bool lampGrey(QWidget* page, int bit) {
+    return page->findChild<QLabel*>(QStringLiteral("compax3Bit%1").arg(bit))
+        ->text()
+        .contains(QLatin1String("color:gray"));
+}
+
+bool jobStarted(const QSignalSpy& started, const QString& title) {
+    for (const QList<QVariant>& job : started)
+        if (job.at(1).toString() == title) return true;
+    return false;
 }
 
 }  // namespace
@@ -358,6 +378,94 @@ private Q_SLOTS:
                             kDeviceTimeoutMs));
         QCOMPARE(parameters->differences()->rowCount(), 0);
         QCOMPARE(report, QStringLiteral("Write"));
+    }
+
+    // Issue 27: the pages on the shell's poll cycle. A parameter backup
+    // from the Parameters page holds the line: the Status page's lamps and
+    // values say "paused" and name it; the line lost, "no answer since".
+    void statusSaysPausedDuringABackupAndNoAnswerSinceWhenTheLineIsLost() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        Compax3StatusPage* status = c3->statusPage();
+        shell->window()->showPage(status);
+        QVERIFY(QTest::qWaitFor([&] { return status->freshness()->isLive(); }, kDeviceTimeoutMs));
+        const auto* line = status->findChild<QLabel*>(QStringLiteral("pageFreshness"));
+        const auto* axis = status->findChild<QLabel*>(QStringLiteral("compax3AxisLine"));
+        QVERIFY2(line->text().startsWith(QLatin1String("Live")), qPrintable(line->text()));
+        QVERIFY(!lampGrey(status, 10));
+
+        QSignalSpy started(&shell->session()->worker(), &comm::CommWorker::jobStarted);
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("drive.json"));
+        Compax3ParametersPage* parameters = c3->parametersPage();
+        parameters->saveToFile(file);
+        const QString backup = QStringLiteral("Save drive parameters");
+        QVERIFY(QTest::qWaitFor([&] { return jobStarted(started, backup); }, kDeviceTimeoutMs));
+        QCoreApplication::processEvents();
+        // Two cycles (driven here, not waited for): a poll queued, then a
+        // whole cycle spent behind the backup.
+        c3->pollCycle()->tick();
+        c3->pollCycle()->tick();
+        QCOMPARE(status->freshness()->state(), LiveFreshness::State::Paused);
+        QVERIFY2(line->text().startsWith(QLatin1String("Paused (Save drive parameters)")),
+                 qPrintable(line->text()));
+        const QString paused = QStringLiteral("(paused (Save drive parameters), read ");
+        QVERIFY2(axis->text().contains(paused), qPrintable(axis->text()));
+        QVERIFY2(status->errorText().contains(paused), qPrintable(status->errorText()));
+        for (int bit : {0, 10}) QVERIFY(lampGrey(status, bit));
+        // The backup done, the values are live again.
+        QVERIFY(QTest::qWaitFor([&] { return QFile::exists(file); }, kDeviceTimeoutMs));
+        QVERIFY(QTest::qWaitFor([&] { return status->freshness()->isLive(); }, kDeviceTimeoutMs));
+        QVERIFY(!axis->text().contains(QLatin1String("paused")));
+        QVERIFY(!lampGrey(status, 10));
+
+        // The line goes: the values stay, grey, "no answer since".
+        shell->session()->disconnectFromDevice();
+        QVERIFY(QTest::qWaitFor([&] { return status->freshness()->isStale(); }, kDeviceTimeoutMs));
+        const QString since = status->freshness()->lastAnswerText();
+        QCOMPARE(line->text(), QStringLiteral("No answer since %1").arg(since));
+        QVERIFY2(axis->text().endsWith(QStringLiteral("(no answer since %1)").arg(since)),
+                 qPrintable(axis->text()));
+        QVERIFY(lampGrey(status, 10));
+    }
+
+    // A job waiting for the line when STOP is pressed is dropped; the page
+    // that waits for it hears that it was not sent.
+    void aReadDroppedByStopSaysNotSent() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        Compax3MotionPage* motion = compax3Window(shell->window())->motionPage();
+        shell->window()->showPage(motion);
+        QVERIFY(
+            QTest::qWaitFor([&] { return motion->stopButton()->isEnabled(); }, kDeviceTimeoutMs));
+        // A job of the test's own holds the line, so that the read waits
+        // (released also when a check fails, so that the worker can stop).
+        QSemaphore gate;
+        auto release = qScopeGuard([&gate] { gate.release(); });
+        QSignalSpy started(&shell->session()->worker(), &comm::CommWorker::jobStarted);
+        shell->session()->worker().submit(comm::JobPriority::User, QStringLiteral("hold"),
+                                          [&gate](comm::JobContext&) { gate.acquire(); });
+        QVERIFY(QTest::qWaitFor([&] { return jobStarted(started, QStringLiteral("hold")); },
+                                kDeviceTimeoutMs));
+        started.clear();  // the reads of the page's start are done
+        QSignalSpy said(motion, &SectionPage::statusMessage);
+        motion->readSet();
+        motion->stopButton()->click();
+        const QString dropped = QStringLiteral("Set 1 not read: not sent: dropped by STOP.");
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                for (const QList<QVariant>& message : said)
+                    if (message.first().toString() == dropped) return true;
+                return false;
+            },
+            kDeviceTimeoutMs));
+        QVERIFY(!jobStarted(started, QStringLiteral("Read set 1")));
+        release.dismiss();
+        gate.release();
+        QVERIFY(QTest::qWaitFor([&] { return !shell->session()->motionStop()->stopRunning(); },
+                                kDeviceTimeoutMs));
+        QVERIFY(!jobStarted(started, QStringLiteral("Read set 1")));  // never sent afterwards
     }
 };
 

@@ -4,6 +4,7 @@
 #include "shell_fixture.h"
 
 #include "ui/device_session.h"
+#include "ui/motion_stop.h"
 
 #include "comm/sim/camcon/sim_demo.h"
 #include "comm/sim/sim_pacer.h"
@@ -162,6 +163,39 @@ private Q_SLOTS:
                                      "mc1", "mc1-ascii", "compax3", "compax3-rs485"})
             QVERIFY2(details.contains(QLatin1String(protocol)), qPrintable(details));
         QVERIFY(text.contains(QLatin1String("Check the cable")));
+    }
+
+    // A drive that can move is on the line: Detect asks its own question,
+    // then the one before leaving a moving device. Cancelled there, Detect
+    // stops: the line stays, nothing is sent, no detection starts.
+    void detectStopsWhenLeavingTheMovingDeviceIsCancelled() {
+        std::unique_ptr<Shell> shell =
+            startOnSimulator(QStringLiteral("sim"), QStringLiteral("compax3"));
+        QVERIFY(shell);
+        DeviceSession* session = shell->session();
+        QVERIFY(QTest::qWaitFor([session] { return session->motionStop()->armed(); },
+                                kDeviceTimeoutMs));
+        QStringList asked;
+        session->setLeaveCheck(this, [&asked](const QString& action) {
+            asked << action;
+            return false;  // the person cancels
+        });
+        ConnectionPage* page = shell->window()->connectionPage();
+        NextDialog<QMessageBox> yes(
+            [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+        QSignalSpy started(&session->worker(), &comm::CommWorker::jobStarted);
+        page->findChild<QPushButton*>(QStringLiteral("detectButton"))->click();
+        QCOMPARE(yes.answered(), 1);
+        QCOMPARE(asked, QStringList({QStringLiteral("Disconnect")}));
+        // What the click queued (if anything) would have reached the worker by now.
+        QTest::qWait(0);
+        QCOMPARE(session->state(), comm::ConnectionState::Connected);
+        QVERIFY(session->wantsConnection());
+        QVERIFY(page->detectText().isEmpty());
+        QVERIFY(page->findChild<QPushButton*>(QStringLiteral("detectButton"))->isEnabled());
+        for (const QList<QVariant>& job : started)
+            QVERIFY2(!job.at(1).toString().startsWith(QLatin1String("Detect")),
+                     qPrintable(job.at(1).toString()));
     }
 };
 
