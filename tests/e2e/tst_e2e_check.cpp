@@ -109,32 +109,33 @@ void TestE2eCheck::compax3DictionaryGivenWordsTheRefusals() {
     SimSession session(QStringLiteral("compax3"));
     START_SIM(session);
     const QString file = session.path(QStringLiteral("own.json"));
-    QVERIFY(writeBytes(
-        file, R"({"format":"cambench-compax3-dictionary","version":1,
-"refusals":[{"code":"0002","meaning":"not in this firmware (own words)","absent":true
-},
-            {"code":"0006","meaning":"asked in the wrong type (own words)"}],
-"objects":[{"object":"680.5","name":"Actual position","type":"real","access":"ro",
-            "group":"Status"}]
-})"));
+    const QByteArray own =
+        "{\"format\":\"cambench-compax3-dictionary\",\"version\":1,\"refusals\":["
+        "{\"code\":\"0002\",\"meaning\":\"not in this firmware (own words)\",\"absent\":true},"
+        "{\"code\":\"0006\",\"meaning\":\"asked in the wrong type (own words)\"}],"
+        "\"objects\":[{\"object\":\"680.5\",\"name\":\"Actual position\",\"type\":\"real\","
+        "\"access\":\"ro\",\"group\":\"Status\"}]}";
+    QVERIFY(writeBytes(file, own));
     const CliRun read = session.cli({"c3", "--dictionary", file, "read", "9999.99"});
-QVERIFY2(read.err.contains(QLatin1String("not in this firmware (own words)")) ||
-             read.out.contains(QLatin1String("not in this firmware (own words)")),
-         describe(read).constData());
-const CliRun check = session.cli({"check", "--dictionary", file});
-VERIFY_EXIT(check, 0);
-QVERIFY2(check.out.contains(QLatin1String("held  compax3.refusal.0002")), qPrintable(check.out));
-QVERIFY2(check.out.contains(QLatin1String("not in this firmware (own words)")),
-         qPrintable(check.out));
-QVERIFY2(check.out.contains(QLatin1String("held  compax3.object.680.5")), qPrintable(check.out));
-QVERIFY2(!check.out.contains(QLatin1String("compax3.object.1.4")), qPrintable(check.out));
-QVERIFY2(check.out.contains(QStringLiteral("[%1]").arg(file)), qPrintable(check.out));
-// Without it: the shipped words, said as provisional.
-const CliRun shipped = session.cli({"check"});
-VERIFY_EXIT(shipped, 0);
-QVERIFY2(shipped.out.contains(QLatin1String("no such object")), qPrintable(shipped.out));
-QVERIFY2(shipped.out.contains(QLatin1String("[provisional: shipped dictionary")),
-         qPrintable(shipped.out));
+    QVERIFY2(read.err.contains(QLatin1String("not in this firmware (own words)")) ||
+                 read.out.contains(QLatin1String("not in this firmware (own words)")),
+             describe(read).constData());
+    const CliRun check = session.cli({"check", "--dictionary", file});
+    VERIFY_EXIT(check, 0);
+    QVERIFY2(check.out.contains(QLatin1String("held  compax3.refusal.0002")),
+             qPrintable(check.out));
+    QVERIFY2(check.out.contains(QLatin1String("not in this firmware (own words)")),
+             qPrintable(check.out));
+    QVERIFY2(check.out.contains(QLatin1String("held  compax3.object.680.5")),
+             qPrintable(check.out));
+    QVERIFY2(!check.out.contains(QLatin1String("compax3.object.1.4")), qPrintable(check.out));
+    QVERIFY2(check.out.contains(QStringLiteral("[%1]").arg(file)), qPrintable(check.out));
+    // Without it: the shipped words, said as provisional.
+    const CliRun shipped = session.cli({"check"});
+    VERIFY_EXIT(shipped, 0);
+    QVERIFY2(shipped.out.contains(QLatin1String("no such object")), qPrintable(shipped.out));
+    QVERIFY2(shipped.out.contains(QLatin1String("[provisional: shipped dictionary")),
+             qPrintable(shipped.out));
 }
 
 void TestE2eCheck::aTableOfAnotherFamilyIsRefusedBeforeTheCheck() {
