@@ -17,12 +17,25 @@ int runCheck(CliSession& session, CommandArgs& args) {
     const Result<QString> path =
         args.takeOption(QStringLiteral("--output-file"), QStringLiteral("-o"));
     if (!path) return reportError(path.error());
+    // The families' table files (--parameters, --dictionary), read and
+    // parsed before the connection opens.
+    const usecases::CheckRegistry& checks = usecases::CheckRegistry::instance();
+    QList<usecases::CheckTable> tables;
+    for (const QString& option : checks.tableOptions()) {
+        const Result<QString> file = args.takeOption(option);
+        if (!file) return reportError(file.error());
+        if (file->isEmpty()) continue;
+        const Result<usecases::CheckTable> table = checks.loadTable(option, *file);
+        if (!table) return reportError(table.error());
+        tables << *table;
+    }
     if (const Status done = args.finish(); !done) return reportError(done.error());
     session.setShowProgress(true);
     const Result<usecases::CheckReport> report =
         session.run<comm::DeviceConnection, usecases::CheckReport>(
-            QStringLiteral("check"), [](comm::DeviceConnection& device, comm::JobContext& job) {
-                return usecases::checkDevice(device, usecases::UseCaseProgress::of(job));
+            QStringLiteral("check"),
+            [tables](comm::DeviceConnection& device, comm::JobContext& job) {
+                return usecases::checkDevice(device, usecases::UseCaseProgress::of(job), tables);
             });
     if (!report) return reportError(report.error());
     const QByteArray bytes =

@@ -3,6 +3,7 @@
 #include "compax3_objects.h"
 
 #include "comm/device/device_connection.h"
+#include "model/compax3/compax3_dictionary.h"
 #include "model/compax3/compax3_parameter_file.h"
 #include "model/result.h"
 
@@ -103,6 +104,15 @@ public:
     // Writes what `move` sets and the drive does not hold yet into the set
     // (each value checked before the first byte), then starts it.
     virtual Result<Compax3CommandResult> moveSet(const Compax3SetMove& move) = 0;
+
+    // The object dictionary in use (the shipped one until the person loads
+    // their own): its refusal meanings word the drive's "!xxxx" answers,
+    // and `check` tries its objects.
+    void setDictionary(const Compax3Dictionary& dictionary) { m_dictionary = dictionary; }
+    const Compax3Dictionary& dictionary() const { return m_dictionary; }
+
+private:
+    Compax3Dictionary m_dictionary = Compax3Dictionary::builtin();
 };
 
 }  // namespace cambench::comm

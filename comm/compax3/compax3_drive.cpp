@@ -47,7 +47,8 @@ Result<Compax3Reply> Compax3Drive::exchange(const QByteArray& command, RetryPoli
         return Error::communication(
             QCoreApplication::translate("cambench::comm", "%1 answered %2: %3")
                 .arg(m_backend.describe(), QString::fromLatin1(command), reply.error().message));
-    if (reply->kind == Compax3Reply::Error) return compax3RefusalError(command, reply->code);
+    if (reply->kind == Compax3Reply::Error)
+        return compax3RefusalError(command, reply->code, dictionary().refusals());
     return reply;
 }
 

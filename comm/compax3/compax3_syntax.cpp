@@ -68,12 +68,23 @@ QString compax3ErrorMeaning(int code) {
 }
 
 bool compax3RefusalMeansAbsent(const cambench::Error& error) {
-    return error.kind == ErrorKind::DeviceError && compax3RefusalSaysAbsent(error.deviceCode);
+    return compax3RefusalMeansAbsent(error, compax3Refusals());
+}
+
+bool compax3RefusalMeansAbsent(const cambench::Error& error,
+                               const cambench::Compax3RefusalTable& table) {
+    return error.kind == ErrorKind::DeviceError &&
+           compax3RefusalSaysAbsent(table, error.deviceCode);
 }
 
 cambench::Error compax3RefusalError(const QByteArray& command, int code) {
+    return compax3RefusalError(command, code, compax3Refusals());
+}
+
+cambench::Error compax3RefusalError(const QByteArray& command, int code,
+                                    const cambench::Compax3RefusalTable& table) {
     const QString number = QStringLiteral("!%1").arg(code, 4, 16, QLatin1Char('0')).toUpper();
-    const QString meaning = compax3ErrorMeaning(code);
+    const QString meaning = compax3RefusalMeaning(table, code);
     const QString text =
         meaning.isEmpty()
             ? QCoreApplication::translate("cambench::comm",

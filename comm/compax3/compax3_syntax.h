@@ -5,6 +5,7 @@
 // timing: the backend and the simulator both use this.
 
 #include "model/compax3/compax3_object.h"
+#include "model/compax3/compax3_refusals.h"
 #include "model/result.h"
 
 #include <QByteArray>
@@ -51,9 +52,15 @@ QString compax3ErrorMeaning(int code);
 // Whether a refusal says the drive does not have the object (!0002 "no
 // such object" in the table of refusals, provisional): the object is "not on this drive", which a
 // backup records instead of failing.
+// Without a table: the shipped one; with one: the dictionary's in use.
 bool compax3RefusalMeansAbsent(const cambench::Error& error);
-// "the drive refused O1901,1=5 with !0004 (the value is outside …)".
+bool compax3RefusalMeansAbsent(const cambench::Error& error,
+                               const cambench::Compax3RefusalTable& table);
+// "the drive refused O1901,1=5 with !0004 (the value is outside …)", the
+// meaning from `table` (the dictionary in use; without one the shipped).
 cambench::Error compax3RefusalError(const QByteArray& command, int code);
+cambench::Error compax3RefusalError(const QByteArray& command, int code,
+                                    const cambench::Compax3RefusalTable& table);
 
 // A request as the drive reads it: upper case, no spaces outside "…"
 // (what the drive does to every line before it looks at it).

@@ -174,6 +174,10 @@ Result<Mc1AxisState> Mc1AsciiController::axisState(int) {
     return notInAscii(QCoreApplication::translate("cambench::comm", "axes"));
 }
 
+Result<qint32> Mc1AsciiController::axisValue(int, Mc1AxisValue) {
+    return notInAscii(QCoreApplication::translate("cambench::comm", "axes"));
+}
+
 Result<Mc1AxisDone> Mc1AsciiController::axisCommand(int axis, Mc1AxisCommand command,
                                                     qint32 value) {
     return notInAscii(mc1AxisCommandText(axis, command, value));

@@ -38,6 +38,7 @@ public:
     Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) override;
     Result<Mc1Axes> axes() override;
     Result<Mc1AxisState> axisState(int axis) override;
+    Result<qint32> axisValue(int axis, Mc1AxisValue value) override;
     Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
     Result<QByteArray> readMemory(int address, int length, const ProgressFn& progress) override;
     Status writeMemory(int address, const QByteArray& bytes, const ProgressFn& progress) override;

@@ -50,6 +50,7 @@ public:
     Result<Mc1Done<Mc1ProgramStatus>> programCommand(Mc1ProgramCommand command) override;
     Result<Mc1Axes> axes() override;
     Result<Mc1AxisState> axisState(int axis) override;
+    Result<qint32> axisValue(int axis, Mc1AxisValue value) override;
     Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
     // The axis command's telegram alone, no read-back: `maxAttempts` > 0
     // caps its attempts below what its repeat rule allows.
@@ -77,6 +78,8 @@ private:
     // page from `address` on.
     Result<QByteArray> readRam(bool external, quint8 page, int address, int count,
                                const ProgressFn& progress);
+    // Usage error unless the variant has axes and `axis` is one of 1..8.
+    Status canReadAxis(int axis);
     // Usage error unless `axis` is one of the logical axes 1..8.
     Status checkAxisNumber(int axis) const;
     // Usage error naming the axes there are unless `present` holds `axis`.

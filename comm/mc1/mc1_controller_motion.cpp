@@ -173,6 +173,19 @@ Result<qint32> Mc1Controller::readAxisValue(int axis, Mc1AxisValue value) {
                   .arg(refused, table.source));
 }
 
+Status Mc1Controller::canReadAxis(int axis) {
+    if (const Status ok = require(Mc1Capability::Axes,
+                                  QCoreApplication::translate("cambench::comm", "report its axes"));
+        !ok)
+        return ok.error();
+    return checkAxisNumber(axis);
+}
+
+Result<qint32> Mc1Controller::axisValue(int axis, Mc1AxisValue value) {
+    if (const Status ok = canReadAxis(axis); !ok) return ok.error();
+    return readAxisValue(axis, value);
+}
+
 Status Mc1Controller::checkAxisExists(int axis, const Mc1Axes& present) const {
     if (present.numbers.contains(axis)) return success();
     QStringList numbers;
@@ -187,11 +200,7 @@ Status Mc1Controller::checkAxisExists(int axis, const Mc1Axes& present) const {
 }
 
 Result<Mc1AxisState> Mc1Controller::axisState(int axis) {
-    if (const Status ok = require(Mc1Capability::Axes,
-                                  QCoreApplication::translate("cambench::comm", "report its axes"));
-        !ok)
-        return ok.error();
-    if (const Status ok = checkAxisNumber(axis); !ok) return ok.error();
+    if (const Status ok = canReadAxis(axis); !ok) return ok.error();
     // Where the axes are known already, one it lacks is not asked for (a
     // read never starts the search: a STOP reads back while it may fail).
     const std::optional<Mc1Axes> known = knownAxes();

@@ -155,6 +155,9 @@ public:
     // setGivenAxes; none where the variant has no axis telegrams.
     virtual Result<Mc1Axes> axes() = 0;
     virtual Result<Mc1AxisState> axisState(int axis) = 0;
+    // One value of an axis read (RDSTAT) through the parameter table in
+    // use, nothing else: a refusal names the parameter's number.
+    virtual Result<qint32> axisValue(int axis, Mc1AxisValue value) = 0;
     // Acknowledged: done, with the axis as read after it (or why that read
     // failed). A refusal is an error; a lost answer too, saying what
     // reading back found (an acting command is not sent again).

@@ -1,5 +1,7 @@
 #include "mc1_parameters.h"
 
+#include "model/file_read.h"
+
 #include <QCoreApplication>
 
 namespace cambench::comm {
@@ -122,6 +124,12 @@ Result<Mc1AxisParameterTable> parseMc1AxisParameterTable(const QByteArray& text,
         return Error::invalidData(QCoreApplication::translate(
             "cambench::comm", "no name,axis,parameter line: the file holds no parameter"));
     return table;
+}
+
+Result<Mc1AxisParameterTable> loadMc1AxisParameterTable(const QString& path) {
+    const Result<QByteArray> bytes = readFileBytes(path);
+    if (!bytes) return bytes.error();
+    return parseMc1AxisParameterTable(*bytes, path);
 }
 
 }  // namespace cambench::comm

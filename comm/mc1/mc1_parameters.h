@@ -65,6 +65,8 @@ Mc1AxisParameterTable mc1AxisParametersFrom(quint16 base, const QString& source)
 // file, naming the line and what is wrong.
 Result<Mc1AxisParameterTable> parseMc1AxisParameterTable(const QByteArray& text,
                                                          const QString& source);
+// The file at `path` read and parsed, its path the table's source.
+Result<Mc1AxisParameterTable> loadMc1AxisParameterTable(const QString& path);
 
 // Memory (RDMEM, WRMEM: 16-bit addresses, provisional P1).
 constexpr int kMc1MemorySize = 0x10000;

@@ -131,14 +131,47 @@ const FamilyCheck* CheckRegistry::find(const QString& familyId) const {
     return nullptr;
 }
 
-Result<CheckReport> checkDevice(comm::DeviceConnection& connection,
-                                const UseCaseProgress& progress) {
+QStringList CheckRegistry::tableOptions() const {
+    QStringList options;
+    for (const FamilyCheck& check : m_checks)
+        for (const CheckTableOption& table : check.tables) options << table.option;
+    return options;
+}
+
+Result<CheckTable> CheckRegistry::loadTable(const QString& option, const QString& path) const {
+    for (const FamilyCheck& check : m_checks) {
+        for (const CheckTableOption& table : check.tables) {
+            if (table.option != option) continue;
+            const Result<CheckTable> loaded = table.load(path);
+            if (!loaded)
+                return Error::invalidData(
+                    QCoreApplication::translate("cambench::usecases", "%1 %2 was not loaded: %3")
+                        .arg(option, path, loaded.error().message));
+            return CheckTable{check.familyId, option, loaded->use};
+        }
+    }
+    return Error::usage(
+        QCoreApplication::translate("cambench::usecases", "no family's check takes %1")
+            .arg(option));
+}
+
+Result<CheckReport> checkDevice(comm::DeviceConnection& connection, const UseCaseProgress& progress,
+                                const QList<CheckTable>& tables) {
     const FamilyCheck* check = CheckRegistry::instance().find(connection.familyId());
     if (!check) {
         return Error::usage(QCoreApplication::translate("cambench::usecases",
                                                         "There is no check for %1 devices yet.")
                                 .arg(connection.familyId()));
     }
+    for (const CheckTable& table : tables) {
+        if (table.familyId != connection.familyId())
+            return Error::usage(QCoreApplication::translate(
+                                    "cambench::usecases",
+                                    "%1 is a table of %2 devices; the device connected is a %3 "
+                                    "device: leave the option out")
+                                    .arg(table.option, table.familyId, connection.familyId()));
+    }
+    for (const CheckTable& table : tables) table.use(connection);
     CheckReport report;
     report.familyId = connection.familyId();
     report.protocolId = connection.protocolId();

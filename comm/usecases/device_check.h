@@ -76,15 +76,34 @@ QString checkReportText(const CheckReport& report);
 // The report to send back: family, protocol, device, the verdicts.
 QJsonObject checkReportJson(const CheckReport& report);
 
+// A table the check tries instead of the one the device holds: read and
+// parsed before anything is sent, handed to the connection (of `familyId`)
+// just before the check runs.
+struct CheckTable {
+    QString familyId;
+    QString option;  // "--parameters", for the message of a wrong family
+    std::function<void(comm::DeviceConnection& connection)> use;
+};
+
+// A file option of a family's check ("--parameters FILE": the MC-1's axis
+// parameter table): `load` reads and parses the file, or says why not.
+struct CheckTableOption {
+    QString option;
+    std::function<Result<CheckTable>(const QString& path)> load;
+};
+
 // One family's checks. `refuses` is the gate: a non-empty reason for any
 // request of `protocolId` that is not a reading one; `run` gets the
-// connection only after the gate is on its engine.
+// connection only after the gate is on its engine. The tables a check
+// tries are those the connection holds (what the person loaded, or the
+// built-in provisional ones); `tables` name the files that replace them.
 struct FamilyCheck {
     QString familyId;
     std::function<QString(const QString& protocolId, const comm::Request& request)> refuses;
     std::function<Result<QList<CheckResult>>(comm::DeviceConnection& connection,
                                              const UseCaseProgress& progress)>
         run;
+    QList<CheckTableOption> tables = {};
 };
 
 // The families' checks, registered once at start (app/registry).
@@ -93,6 +112,11 @@ public:
     static CheckRegistry& instance();
     void add(FamilyCheck check);
     const FamilyCheck* find(const QString& familyId) const;
+    // Every family's table options ("--parameters", "--dictionary").
+    QStringList tableOptions() const;
+    // The file given with `option` read and parsed (nothing sent): an
+    // invalid file is an InvalidData error naming it.
+    Result<CheckTable> loadTable(const QString& option, const QString& path) const;
 
 private:
     QList<FamilyCheck> m_checks;
@@ -101,7 +125,10 @@ private:
 // Runs the check of the connection's family (inside a worker job), with
 // the gate on the engine for its whole run. A family without checks is a
 // Usage error naming it.
+// `tables` replace the connection's own before anything is sent; a table
+// of another family is a Usage error naming its option.
 Result<CheckReport> checkDevice(comm::DeviceConnection& connection,
-                                const UseCaseProgress& progress = {});
+                                const UseCaseProgress& progress = {},
+                                const QList<CheckTable>& tables = {});
 
 }  // namespace cambench::usecases

@@ -153,6 +153,9 @@ Result<Compax3Dictionary> Compax3Dictionary::fromJson(const QByteArray& bytes) {
         dictionary.m_objects << info;
     }
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
+    dictionary.m_refusals = compax3RefusalsFromJson(bytes);
+    // A file of objects only keeps the shipped meanings.
+    if (dictionary.m_refusals.isEmpty()) dictionary.m_refusals = compax3Refusals();
     return dictionary;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "compax3_object.h"
+#include "compax3_refusals.h"
 #include "compax3_value.h"
 
 #include "model/result.h"
@@ -76,12 +77,16 @@ public:
     QStringList groups() const;
     // The objects a parameter file holds by default: every read-write one.
     QList<Compax3ObjectId> parameters() const;
+    // What the drive's "!xxxx" answers mean: the file's "refusals", or
+    // the shipped ones when the file has none.
+    const Compax3RefusalTable& refusals() const { return m_refusals; }
     // Where the dictionary came from, for a person: "built in" or a path.
     const QString& source() const { return m_source; }
 
 private:
     QList<Compax3ObjectInfo> m_objects;
     QHash<Compax3ObjectId, int> m_index;
+    Compax3RefusalTable m_refusals;
     QString m_source;
 };
 

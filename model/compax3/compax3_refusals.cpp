@@ -11,9 +11,17 @@ namespace cambench {
 
 namespace {
 
+const Compax3RefusalMeaning* find(const Compax3RefusalTable& table, int code) {
+    for (const Compax3RefusalMeaning& entry : table)
+        if (entry.code == code) return &entry;
+    return nullptr;
+}
+
+}  // namespace
+
 // {"refusals":[{"code":"0002","meaning":"…","de":"…","absent":true},…]}
-QList<Compax3RefusalMeaning> readRefusals(const QByteArray& json) {
-    QList<Compax3RefusalMeaning> table;
+Compax3RefusalTable compax3RefusalsFromJson(const QByteArray& json) {
+    Compax3RefusalTable table;
     const QJsonArray refusals =
         QJsonDocument::fromJson(json).object().value(QStringLiteral("refusals")).toArray();
     for (const QJsonValue& value : refusals) {
@@ -28,21 +36,17 @@ QList<Compax3RefusalMeaning> readRefusals(const QByteArray& json) {
     return table;
 }
 
-const Compax3RefusalMeaning* find(int code) {
-    for (const Compax3RefusalMeaning& entry : compax3Refusals())
-        if (entry.code == code) return &entry;
-    return nullptr;
-}
-
-}  // namespace
-
-const QList<Compax3RefusalMeaning>& compax3Refusals() {
-    static const QList<Compax3RefusalMeaning> table = readRefusals(compax3BuiltinObjectsJson());
+const Compax3RefusalTable& compax3Refusals() {
+    static const Compax3RefusalTable table = compax3RefusalsFromJson(compax3BuiltinObjectsJson());
     return table;
 }
 
 QString compax3RefusalMeaning(int code) {
-    const Compax3RefusalMeaning* entry = find(code);
+    return compax3RefusalMeaning(compax3Refusals(), code);
+}
+
+QString compax3RefusalMeaning(const Compax3RefusalTable& table, int code) {
+    const Compax3RefusalMeaning* entry = find(table, code);
     if (!entry) return {};
     // The UI's language is the one its installed translation is in (a
     // German PC's locale alone does not make the English CLI German).
@@ -53,7 +57,11 @@ QString compax3RefusalMeaning(int code) {
 }
 
 bool compax3RefusalSaysAbsent(int code) {
-    const Compax3RefusalMeaning* entry = find(code);
+    return compax3RefusalSaysAbsent(compax3Refusals(), code);
+}
+
+bool compax3RefusalSaysAbsent(const Compax3RefusalTable& table, int code) {
+    const Compax3RefusalMeaning* entry = find(table, code);
     return entry && entry->absent;
 }
 

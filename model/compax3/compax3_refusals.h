@@ -16,12 +16,20 @@ struct Compax3RefusalMeaning {
     bool absent = false;
 };
 
+using Compax3RefusalTable = QList<Compax3RefusalMeaning>;
+
+// The "refusals" of a dictionary file's JSON (empty when it has none);
+// entries whose code is no hex number are left out.
+Compax3RefusalTable compax3RefusalsFromJson(const QByteArray& json);
 // The shipped table, read once from the built-in dictionary file.
-const QList<Compax3RefusalMeaning>& compax3Refusals();
+const Compax3RefusalTable& compax3Refusals();
 // The meaning of `code` in the UI's language (German when the German
 // translation is installed), empty for a number the table does not hold.
+// Without a table: the shipped one.
 QString compax3RefusalMeaning(int code);
+QString compax3RefusalMeaning(const Compax3RefusalTable& table, int code);
 // Whether `code` says the drive does not have the object.
 bool compax3RefusalSaysAbsent(int code);
+bool compax3RefusalSaysAbsent(const Compax3RefusalTable& table, int code);
 
 }  // namespace cambench

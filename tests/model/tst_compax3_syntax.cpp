@@ -149,6 +149,27 @@ private Q_SLOTS:
         QVERIFY(compax3LastErrorText(12345).contains(QLatin1String("$3039")));
     }
 
+    // A loaded dictionary's own "refusals" word the drive's answers and say
+    // which means absent; a dictionary without them keeps the shipped ones.
+    void aLoadedDictionaryBringsItsRefusals() {
+        const Result<Compax3Dictionary> own = Compax3Dictionary::fromJson(
+            "{\"format\":\"cambench-compax3-dictionary\",\"version\":1,\"refusals\":["
+            "{\"code\":\"0007\",\"meaning\":\"not in this firmware\",\"absent\":true}],"
+            "\"objects\":[]}");
+        QVERIFY2(own.ok(), qPrintable(own.error().message));
+        QCOMPARE(own->refusals().size(), 1);
+        const Error refused = compax3RefusalError("O1904,1", 7, own->refusals());
+        QVERIFY2(refused.message.contains(QLatin1String("!0007 (not in this firmware)")),
+                 qPrintable(refused.message));
+        QVERIFY(compax3RefusalMeansAbsent(refused, own->refusals()));
+        QVERIFY(!compax3RefusalMeansAbsent(refused));
+        QVERIFY(!compax3RefusalMeansAbsent(compax3RefusalError("O1,9", 2), own->refusals()));
+        const Result<Compax3Dictionary> objectsOnly = Compax3Dictionary::fromJson(
+            "{\"format\":\"cambench-compax3-dictionary\",\"version\":1,\"objects\":[]}");
+        QVERIFY2(objectsOnly.ok(), qPrintable(objectsOnly.error().message));
+        QCOMPARE(objectsOnly->refusals().size(), compax3Refusals().size());
+    }
+
     void theShippedDictionaryHoldsSection12() {
         const Compax3Dictionary& dictionary = Compax3Dictionary::builtin();
         QVERIFY(dictionary.objects().size() > 190);

@@ -23,6 +23,7 @@ private Q_SLOTS:
     void everyReadingHeldOnTheSimulator();
     void aQueryTheDeviceLacksIsRefuted();
     void theGateKeepsCommandsOffTheLine();
+    void aProvisionalFormatNamesItsReading();
 };
 
 void TestCheck::initTestCase() {
@@ -80,6 +81,28 @@ void TestCheck::theGateKeepsCommandsOffTheLine() {
     QCOMPARE(bench.link->stats().refusedByGate, 1);
     QCOMPARE(bench.commandsSent(), 0);
     QVERIFY(bench.link->call('?', "GTEMP").ok());
+}
+
+// Each guessed format's verdict names its reading (comm/camcon/README.md),
+// a confirmed one only its catalogue line.
+void TestCheck::aProvisionalFormatNamesItsReading() {
+    SimBench bench;
+    const Result<CheckReport> report = checkDevice(*bench.client);
+    QVERIFY2(report.ok(), qPrintable(report.error().message));
+    const auto source = [&](const QString& id) {
+        for (const CheckResult& result : report->results)
+            if (result.id == id) return result.source;
+        return QString();
+    };
+    QVERIFY2(
+        source(QStringLiteral("ascii.?BSPEED")).startsWith(QLatin1String("provisional: P-ASCII-2")),
+        qPrintable(source(QStringLiteral("ascii.?BSPEED"))));
+    QVERIFY(source(QStringLiteral("ascii.?TZK")).contains(QLatin1String("P-ASCII-6")));
+    QVERIFY(source(QStringLiteral("ascii.?GSTYP")).contains(QLatin1String("P-ASCII-8")));
+    QCOMPARE(source(QStringLiteral("ascii.?NF")),
+             QStringLiteral("comm/camcon/ascii/catalogue.cpp: ?NF"));
+    QVERIFY(checkReportText(*report).contains(
+        QLatin1String("[provisional: P-ASCII-2, our reading, see comm/camcon/README.md")));
 }
 
 QTEST_GUILESS_MAIN(TestCheck)

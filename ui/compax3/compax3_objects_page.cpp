@@ -155,7 +155,8 @@ void Compax3ObjectsPage::read(const QList<Compax3ObjectId>& ids) {
             for (const Compax3Reading& value : *values) {
                 if (!value.refused()) {
                     m_model->setDriveValue(value.id, value.value, now);
-                } else if (comm::compax3RefusalMeansAbsent(value.refusal)) {
+                } else if (comm::compax3RefusalMeansAbsent(value.refusal,
+                                                           m_gui->dictionary().refusals())) {
                     m_model->setDriveAbsent(value.id, value.refusal.message);
                     ++absent;
                 } else {

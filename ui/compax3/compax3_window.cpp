@@ -72,7 +72,11 @@ void Compax3Window::deviceOnLine(bool load) {
     m_compax3->session()->setDeviceChecked(false);
     m_compax3->session()->run<comm::Compax3Device, Compax3Identity>(
         this, tr("Identify drive"),
-        [](comm::Compax3Device& device, comm::JobContext&) { return device.identity(); },
+        // The dictionary in use words its refusals from the first request.
+        [dictionary = m_compax3->dictionary()](comm::Compax3Device& device, comm::JobContext&) {
+            device.setDictionary(dictionary);
+            return device.identity();
+        },
         [this, load](Result<Compax3Identity> identity) {
             QString line;
             if (identity) {

@@ -57,6 +57,17 @@ int runC3(CliSession& session, CommandArgs& args) {
                         QStringLiteral("jog"), QStringLiteral("move"), QStringLiteral("backup"),
                         QStringLiteral("verify"), QStringLiteral("restore")});
     if (!verb) return reportError(verb.error());
+    // The drive's refusals are worded by the dictionary given (scan talks
+    // to several drives and reads only their identity).
+    if (!dictionaryPath->isEmpty() && *verb != QLatin1String("scan")) {
+        const Result<bool> used = runOnCompax3<bool>(
+            session, QStringLiteral("c3 dictionary"),
+            [dictionary](comm::Compax3Device& device, comm::JobContext&) -> Result<bool> {
+                device.setDictionary(dictionary);
+                return true;
+            });
+        if (!used) return reportError(used.error());
+    }
     if (*verb == QLatin1String("info")) return runCompax3Info(session, args);
     if (*verb == QLatin1String("read")) return runCompax3Read(session, args, dictionary);
     if (*verb == QLatin1String("write")) return runCompax3Write(session, args, dictionary);

@@ -5,7 +5,6 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -69,12 +68,8 @@ Status applyMc1Options(CliSession& session, CommandArgs& args) {
     }
     std::optional<comm::Mc1AxisParameterTable> table;
     if (!parametersPath->isEmpty()) {
-        QFile file(*parametersPath);
-        if (!file.open(QIODevice::ReadOnly))
-            return Error::invalidData(QStringLiteral("--parameters: cannot read %1: %2")
-                                          .arg(*parametersPath, file.errorString()));
         const Result<comm::Mc1AxisParameterTable> parsed =
-            comm::parseMc1AxisParameterTable(file.readAll(), *parametersPath);
+            comm::loadMc1AxisParameterTable(*parametersPath);
         if (!parsed)
             return Error::invalidData(QStringLiteral("--parameters %1 was not loaded: %2")
                                           .arg(*parametersPath, parsed.error().message));

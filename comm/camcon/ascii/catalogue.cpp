@@ -49,8 +49,23 @@ CommandSpec command(const char* name, QList<FieldSpec> request, const char* sect
     return {kCommand, name, std::move(request), ReplyKind::Ok, {}, section};
 }
 
-CommandSpec provisional(CommandSpec spec) {
-    spec.provisional = true;
+// The provisional readings, one id each (comm/camcon/README.md lists them
+// with what they guess): what `check` names when a device refutes one.
+constexpr const char* kPStatusName =
+    "provisional: P-ASCII-1, our reading, see comm/camcon/README.md";
+constexpr const char* kPSpeed = "provisional: P-ASCII-2, our reading, see comm/camcon/README.md";
+constexpr const char* kPActual = "provisional: P-ASCII-3, our reading, see comm/camcon/README.md";
+constexpr const char* kPProgram = "provisional: P-ASCII-4, our reading, see comm/camcon/README.md";
+constexpr const char* kPNc = "provisional: P-ASCII-5, our reading, see comm/camcon/README.md";
+constexpr const char* kPDeadTime = "provisional: P-ASCII-6, our reading, see comm/camcon/README.md";
+constexpr const char* kPOutputName =
+    "provisional: P-ASCII-7, our reading, see comm/camcon/README.md";
+constexpr const char* kPEncoder = "provisional: P-ASCII-8, our reading, see comm/camcon/README.md";
+constexpr const char* kPMemoryName =
+    "provisional: P-ASCII-9, our reading, see comm/camcon/README.md";
+
+CommandSpec provisional(CommandSpec spec, const char* source) {
+    spec.provisional = source;
     return spec;
 }
 CommandSpec slow(CommandSpec spec) {
@@ -159,18 +174,20 @@ QList<CommandSpec> buildCatalogue() {
         command("GVSPSTAB", kStatusTable, "5.1.5.6"),
         // The manual prints 5.1.5.7 (S inputs) as a second ?GVSPSTAB; the
         // name follows ?GSSPSMAX and is a guess.
-        provisional(query("GSSPSTAB", kNone, kStatusTable, "5.1.5.7")),
-        provisional(query("BSPEED", kNone, signedValue(), "5.1.6.1")),
-        provisional(query("SPEED", kNone, textValue(kFormat), "5.1.6.2")),
-        provisional(query("IGWG", kNone, signedValue(), "5.1.7.1")),
-        provisional(query("IFGWG", kNone, textValue(kFormat), "5.1.7.2")),
-        provisional(query("IREE", kNone, signedValue(), "5.1.7.3")),
-        provisional(query("PAU", kNone, value(kProgram), "5.1.8.1")),
-        provisional(command("PAU", value(kProgram), "5.1.8.2")),
+        provisional(query("GSSPSTAB", kNone, kStatusTable, "5.1.5.7"), kPStatusName),
+        provisional(query("BSPEED", kNone, signedValue(), "5.1.6.1"), kPSpeed),
+        provisional(query("SPEED", kNone, textValue(kFormat), "5.1.6.2"), kPSpeed),
+        provisional(query("IGWG", kNone, signedValue(), "5.1.7.1"), kPActual),
+        provisional(query("IFGWG", kNone, textValue(kFormat), "5.1.7.2"), kPActual),
+        provisional(query("IREE", kNone, signedValue(), "5.1.7.3"), kPActual),
+        provisional(query("PAU", kNone, value(kProgram), "5.1.8.1"), kPProgram),
+        provisional(command("PAU", value(kProgram), "5.1.8.2"), kPProgram),
         provisional(query("PNAME", {hex("program", kProgram)},
-                          {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.3")),
+                          {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.3"),
+                    kPProgram),
         provisional(
-            command("PNAME", {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.4")),
+            command("PNAME", {hex("program", kProgram), text("text", kTextLine)}, "5.1.8.4"),
+            kPProgram),
         // 5.1.9 is missing, but 5.4.3.5 describes ?UNIT: an empty reply.
         query("UNIT", kNone, kNone, "5.4.3.5"),
 
@@ -190,13 +207,18 @@ QList<CommandSpec> buildCatalogue() {
         actsTwice(provisional(command("NC",
                                       {hex("program", kProgram), hex("output", kSmall),
                                        signedHex("oldOn"), signedHex("on"), signedHex("off")},
-                                      "5.2.1.8"))),
+                                      "5.2.1.8"),
+                              kPNc)),
         provisional(query("TZK", {hex("output", kSmall)},
-                          {hex("output", kSmall), hex("value", kLong)}, "5.2.2.1")),
-        provisional(command("TZK", {hex("output", kSmall), hex("value", kLong)}, "5.2.2.2")),
+                          {hex("output", kSmall), hex("value", kLong)}, "5.2.2.1"),
+                    kPDeadTime),
+        provisional(command("TZK", {hex("output", kSmall), hex("value", kLong)}, "5.2.2.2"),
+                    kPDeadTime),
         provisional(query("ANAME", {hex("output", kSmall)},
-                          {hex("output", kSmall), text("text", kTextLine)}, "5.2.3")),
-        provisional(command("ANAME", {hex("output", kSmall), text("text", kTextLine)}, "5.2.4")),
+                          {hex("output", kSmall), text("text", kTextLine)}, "5.2.3"),
+                    kPOutputName),
+        provisional(command("ANAME", {hex("output", kSmall), text("text", kTextLine)}, "5.2.4"),
+                    kPOutputName),
         command("PDEL", {hex("program", kProgram)}, "5.2.5"),
         command("PCPY", {hex("target", kProgram), hex("source", kProgram)}, "5.2.6"),
         command("PACPY", {hex("program", kProgram), hex("target", kSmall), hex("source", kSmall)},
@@ -218,17 +240,17 @@ QList<CommandSpec> buildCatalogue() {
         command("IDIV", signedValue(), "5.3.1.12"),
         query("IFOR", kNone, textValue(kFormat), "5.3.1.13"),
         command("IFOR", textValue(kFormat), "5.3.1.14"),
-        provisional(query("GSTYP", kNone, value(kSmall), "5.3.1.15.1")),
-        provisional(query("GSSSI", kNone, kSsi, "5.3.1.15.2")),
-        provisional(command("GSSSI", encoderWrite(kSsi), "5.3.1.15.3")),
-        provisional(query("GSPAR", kNone, kParallel, "5.3.1.15.4")),
-        provisional(command("GSPAR", encoderWrite(kParallel), "5.3.1.15.5")),
-        provisional(query("GSINK", kNone, kIncremental, "5.3.1.15.6")),
-        provisional(command("GSINK", encoderWrite(kIncremental), "5.3.1.15.7")),
-        provisional(query("GSMULTI", kNone, kMultiturn, "5.3.1.15.8")),
-        provisional(command("GSMULTI", encoderWrite(kMultiturn), "5.3.1.15.9")),
-        provisional(query("GSPLL", kNone, kPll, "5.3.1.15.10")),
-        provisional(command("GSPLL", encoderWrite(kPll), "5.3.1.15.11")),
+        provisional(query("GSTYP", kNone, value(kSmall), "5.3.1.15.1"), kPEncoder),
+        provisional(query("GSSSI", kNone, kSsi, "5.3.1.15.2"), kPEncoder),
+        provisional(command("GSSSI", encoderWrite(kSsi), "5.3.1.15.3"), kPEncoder),
+        provisional(query("GSPAR", kNone, kParallel, "5.3.1.15.4"), kPEncoder),
+        provisional(command("GSPAR", encoderWrite(kParallel), "5.3.1.15.5"), kPEncoder),
+        provisional(query("GSINK", kNone, kIncremental, "5.3.1.15.6"), kPEncoder),
+        provisional(command("GSINK", encoderWrite(kIncremental), "5.3.1.15.7"), kPEncoder),
+        provisional(query("GSMULTI", kNone, kMultiturn, "5.3.1.15.8"), kPEncoder),
+        provisional(command("GSMULTI", encoderWrite(kMultiturn), "5.3.1.15.9"), kPEncoder),
+        provisional(query("GSPLL", kNone, kPll, "5.3.1.15.10"), kPEncoder),
+        provisional(command("GSPLL", encoderWrite(kPll), "5.3.1.15.11"), kPEncoder),
         query("GSTIM", kNone, kTimer, "5.3.1.15.12"),
         command("GSTIM", encoderWrite(kTimer), "5.3.1.15.13"),
 
@@ -366,8 +388,10 @@ QList<CommandSpec> buildCatalogue() {
         query("MRAMMAX", kNone, value(kLong), "5.4.7.7"),
         query("MRAMFREE", kNone, value(kLong), "5.4.7.8"),
         // Titled ?MEES/?MPEE, printed ?MSE/?MPE (notes 10): accept either reply.
-        provisional(withReplyAlias(query("MEES", kNone, value(kLong), "5.4.7.9"), "MSE")),
-        provisional(withReplyAlias(query("MPEE", kNone, value(kLong), "5.4.7.10"), "MPE")),
+        provisional(withReplyAlias(query("MEES", kNone, value(kLong), "5.4.7.9"), "MSE"),
+                    kPMemoryName),
+        provisional(withReplyAlias(query("MPEE", kNone, value(kLong), "5.4.7.10"), "MPE"),
+                    kPMemoryName),
         query("IMIN", kNone, signedValue(), "5.4.7.11"),
         query("IMAX", kNone, signedValue(), "5.4.7.12"),
         query("GPRGMAX", kNone, value(kProgram), "5.4.7.13"),

@@ -40,9 +40,11 @@ struct CommandSpec {
     const char* name;          // command letters, e.g. "NF"
     QList<FieldSpec> request;  // data after the name
     ReplyKind replyKind;
-    QList<FieldSpec> reply;    // for ReplyKind::Data
-    const char* section;       // manual section, e.g. "5.2.1.1"
-    bool provisional = false;  // format guessed (notes 3), one line to correct
+    QList<FieldSpec> reply;  // for ReplyKind::Data
+    const char* section;     // manual section, e.g. "5.2.1.1"
+    // Where a guessed format comes from ("provisional: P-ASCII-2, …", the
+    // ids of comm/camcon/README.md); nullptr for a manual page's format.
+    const char* provisional = nullptr;
     TimeoutClass timeout = TimeoutClass::Normal;
     QList<QByteArray> replyAliases{};  // other names the reply may carry (?MEES -> :MSE)
     bool okOptional = false;           // the reply may lack "OK" (!GTZKANZ, notes 10)

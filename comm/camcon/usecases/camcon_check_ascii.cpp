@@ -56,6 +56,14 @@ Result<CheckResult> askedWithZeros(comm::AsciiLink& link, const comm::CommandSpe
     return reading.failed(error);
 }
 
+// The catalogue line to correct; a guessed format names its reading first
+// ("provisional: P-ASCII-2, …"), so that the report says which one.
+QString catalogueSource(const comm::CommandSpec& spec, const QString& name) {
+    const QString line = QStringLiteral("comm/camcon/ascii/catalogue.cpp: ") + name;
+    if (!spec.provisional) return line;
+    return QLatin1String(spec.provisional) + QStringLiteral("; ") + line;
+}
+
 }  // namespace
 
 std::optional<CheckResult> SilentLine::skip(const Reading& reading) const {
@@ -83,7 +91,7 @@ Result<QList<CheckResult>> catalogueQueries(comm::AsciiCamCon& device,
                      spec->provisional ? QCoreApplication::translate("cambench::usecases",
                                                                      " (provisional format)")
                                        : QString()),
-            QStringLiteral("comm/camcon/ascii/catalogue.cpp: ") + name};
+            catalogueSource(*spec, name)};
         const Result<CheckResult> result = askedWithZeros(device.link(), *spec, reading, line);
         if (!result) return result.error();
         results << *result;

@@ -17,7 +17,6 @@ namespace {
 using comm::Compax3Device;
 
 const QString kNotesSource = QStringLiteral("comm/compax3/README.md");
-const QString kDictionarySource = QStringLiteral("model/compax3/compax3-objects.json");
 // An object no drive has: its read must be refused as "no such object".
 const Compax3ObjectId kNoSuchObject{9999, 99};
 constexpr int kNoSuchObjectCode = 0x0002;
@@ -97,7 +96,18 @@ CheckResult hexAnswer(Compax3Device& drive) {
     return value->startsWith(QLatin1Char('$')) ? reading.held() : reading.refuted(*value);
 }
 
-// The drive's refusal number for a read it must refuse.
+// Where the dictionary in use comes from: the shipped file (provisional
+// meanings) or the one the person loaded.
+QString dictionarySource(const Compax3Dictionary& dictionary) {
+    return dictionary.source() == Compax3Dictionary::builtin().source()
+               ? QStringLiteral(
+                     "provisional: shipped dictionary, "
+                     "model/compax3/compax3-objects.json")
+               : dictionary.source();
+}
+
+// The drive's refusal number for a read it must refuse; held shows the
+// meaning the dictionary in use gives it.
 CheckResult refusal(Compax3Device& drive, const Reading& reading, const Compax3ObjectId& object,
                     bool hex, int expected) {
     const Result<QString> value = drive.readObject(object, hex);
@@ -105,22 +115,37 @@ CheckResult refusal(Compax3Device& drive, const Reading& reading, const Compax3O
         return reading.refuted(
             QCoreApplication::translate("cambench::usecases", "answered %1").arg(*value));
     if (value.error().kind != ErrorKind::DeviceError) return reading.failed(value.error());
-    if (value.error().deviceCode == expected) return reading.held();
+    if (value.error().deviceCode == expected) return reading.held(value.error().message);
     return reading.refuted(value.error().message);
 }
 
+// The refusal a missing object gets: the one the dictionary's table says
+// means "not on this drive", else the manual's !0002.
+int noSuchObjectCode(const Compax3RefusalTable& table) {
+    for (const Compax3RefusalMeaning& entry : table)
+        if (entry.absent) return entry.code;
+    return kNoSuchObjectCode;
+}
+
+QString codeText(int code) {
+    return QStringLiteral("%1").arg(code, 4, 16, QLatin1Char('0')).toUpper();
+}
+
 QList<CheckResult> refusals(Compax3Device& drive) {
-    const Reading noSuchObject{QStringLiteral("compax3.refusal.0002"),
-                               QCoreApplication::translate("cambench::usecases",
-                                                           "an object the drive lacks is refused "
-                                                           "with !0002 (C5)"),
-                               kNotesSource};
+    const QString source = dictionarySource(drive.dictionary());
+    const int absentCode = noSuchObjectCode(drive.dictionary().refusals());
+    const Reading noSuchObject{
+        QStringLiteral("compax3.refusal.") + codeText(absentCode),
+        QCoreApplication::translate("cambench::usecases",
+                                    "an object the drive lacks is refused with !%1 (C5)")
+            .arg(codeText(absentCode)),
+        source};
     const Reading wrongType{QStringLiteral("compax3.refusal.0006"),
                             QCoreApplication::translate("cambench::usecases",
                                                         "a text asked for in hex is refused with "
                                                         "!0006 (C5, C8)"),
-                            kNotesSource};
-    return {refusal(drive, noSuchObject, kNoSuchObject, false, kNoSuchObjectCode),
+                            source};
+    return {refusal(drive, noSuchObject, kNoSuchObject, false, absentCode),
             refusal(drive, wrongType, kSerialNumber, true, kWrongTypeCode)};
 }
 
@@ -141,7 +166,8 @@ bool fitsType(const QString& value, Compax3Type type) {
 Result<QList<CheckResult>> dictionaryObjects(Compax3Device& drive,
                                              const UseCaseProgress& progress) {
     QList<CheckResult> results;
-    const QList<Compax3ObjectInfo>& objects = Compax3Dictionary::builtin().objects();
+    const QString source = dictionarySource(drive.dictionary());
+    const QList<Compax3ObjectInfo>& objects = drive.dictionary().objects();
     for (qsizetype i = 0; i < objects.size(); ++i) {
         if (progress.cancelled()) return Error::cancelled();
         const Compax3ObjectInfo& object = objects.at(i);
@@ -151,7 +177,7 @@ Result<QList<CheckResult>> dictionaryObjects(Compax3Device& drive,
             QStringLiteral("compax3.object.") + object.id.text(),
             QCoreApplication::translate("cambench::usecases", "object %1 (%2) exists and is %3")
                 .arg(object.id.text(), object.name, compax3TypeKey(object.type)),
-            kDictionarySource};
+            source};
         const Result<QString> value = drive.readObject(object.id);
         if (!value && value.error().kind == ErrorKind::Cancelled) return value.error();
         if (!value) {
@@ -178,10 +204,23 @@ Result<QList<CheckResult>> run(comm::DeviceConnection& connection,
     return results;
 }
 
+// --dictionary FILE: the person's own object dictionary (and refusals).
+Result<CheckTable> dictionaryFile(const QString& path) {
+    const Result<Compax3Dictionary> dictionary = Compax3Dictionary::load(path);
+    if (!dictionary) return dictionary.error();
+    return CheckTable{{}, {}, [dictionary = *dictionary](comm::DeviceConnection& connection) {
+                          if (auto* drive = dynamic_cast<Compax3Device*>(&connection))
+                              drive->setDictionary(dictionary);
+                      }};
+}
+
 }  // namespace
 
 void registerCompax3Check(CheckRegistry& registry) {
-    registry.add({QStringLiteral("compax3"), refuses, run});
+    registry.add({QStringLiteral("compax3"),
+                  refuses,
+                  run,
+                  {CheckTableOption{QStringLiteral("--dictionary"), dictionaryFile}}});
 }
 
 }  // namespace cambench::usecases

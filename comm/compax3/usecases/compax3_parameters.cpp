@@ -83,7 +83,7 @@ Result<Compax3Backup> takeCompax3Parameters(Compax3Device& device,
         const Result<QString> value = readAgreed(device, id);
         if (value)
             backup.set.values << Compax3ParameterValue{id, *value};
-        else if (comm::compax3RefusalMeansAbsent(value.error()))
+        else if (comm::compax3RefusalMeansAbsent(value.error(), device.dictionary().refusals()))
             backup.set.absent << id;
         else if (value.error().kind == ErrorKind::DeviceError)
             backup.refused << Compax3Refusal{id, value.error().message};
@@ -142,8 +142,9 @@ Result<Compax3Comparison> compareCompax3Parameters(Compax3Device& device,
                 wanted.id,
                 wanted.value,
                 {},
-                comm::compax3RefusalMeansAbsent(value.error()) ? notOnThisDrive()
-                                                               : value.error().message};
+                comm::compax3RefusalMeansAbsent(value.error(), device.dictionary().refusals())
+                    ? notOnThisDrive()
+                    : value.error().message};
         else if (!compax3SameValue(*value, wanted.value))
             comparison.differences << Compax3Difference{wanted.id, wanted.value, *value, {}};
         progress.report(i + 1, total,
@@ -154,7 +155,8 @@ Result<Compax3Comparison> compareCompax3Parameters(Compax3Device& device,
         if (progress.cancelled()) return Error::cancelled();
         const Compax3ObjectId& id = set.absent.at(i);
         const Result<QString> value = device.readObject(id, false);
-        if (!value && !comm::compax3RefusalMeansAbsent(value.error())) {
+        if (!value &&
+            !comm::compax3RefusalMeansAbsent(value.error(), device.dictionary().refusals())) {
             if (value.error().kind != ErrorKind::DeviceError) return value.error();
             comparison.differences << Compax3Difference{id, {}, {}, value.error().message, true};
         } else if (value) {
@@ -298,7 +300,7 @@ OutcomeTally writeCompax3Objects(Compax3Device& device, const QList<Compax3Write
         const Result<QString> old = readConfirmed(device, wanted.id, wanted.value);
         if (!old) {
             const Error why =
-                comm::compax3RefusalMeansAbsent(old.error())
+                comm::compax3RefusalMeansAbsent(old.error(), device.dictionary().refusals())
                     ? Error::device(old.error().deviceCode,
                                     QCoreApplication::translate(
                                         "cambench::usecases", "not on this drive (%1): not written")

@@ -109,67 +109,130 @@ CheckResult ioAddressing(Mc1Device& device) {
     return read ? reading.held() : reading.failed(read.error());
 }
 
+// The axes RDTABLE finds (their values are the parameter table's check).
 CheckResult axes(Mc1Device& device) {
     const Reading reading{
         QStringLiteral("mc1.axes"),
         QCoreApplication::translate("cambench::usecases",
-                                    "axes 1..8 answer their state (RDSTAT 0x1000 + 0x10 x "
-                                    "axis; logical n is physical n-1)"),
+                                    "RDTABLE answers for each logical axis 1..8 the controller "
+                                    "has (logical n is physical n-1)"),
         QStringLiteral("comm/mc1/mc1_parameters.h (kMc1FirstAxis..)")};
     if (!device.has(comm::Mc1Capability::Axes))
         return reading.couldNotTell(QCoreApplication::translate(
             "cambench::usecases", "this variant has no axis telegrams"));
-    // A controller with fewer axes may refuse the others: the first
-    // refusal ends the list, a line failure decides nothing.
-    QStringList answered;
-    QString refusal;
-    for (int axis = comm::kMc1FirstAxis; axis <= comm::kMc1LastAxis && refusal.isEmpty(); ++axis) {
-        const Result<comm::Mc1AxisState> state = device.axisState(axis);
-        if (state) {
-            answered << QString::number(axis);
-        } else if (reading.failed(state.error()).verdict == CheckVerdict::Refuted) {
-            refusal = state.error().message;
-        } else {
-            return reading.failed(state.error());
-        }
-    }
-    if (answered.isEmpty()) return reading.refuted(refusal);
-    QString observed = QCoreApplication::translate("cambench::usecases", "axes %1 answered")
-                           .arg(answered.join(QLatin1String(", ")));
-    if (!refusal.isEmpty()) observed += QStringLiteral("; ") + refusal;
-    return reading.held(observed);
+    const Result<comm::Mc1Axes> present = device.axes();
+    if (!present) return reading.failed(present.error());
+    QStringList numbers;
+    for (const int axis : present->numbers) numbers << QString::number(axis);
+    if (numbers.isEmpty()) return reading.refuted(present->source);
+    return reading.held(QCoreApplication::translate("cambench::usecases", "axes %1 (%2)")
+                            .arg(numbers.join(QLatin1String(", ")), present->source));
 }
 
-// TODO(lead): the axis parameter table read from a file (the MC-1
-// branch's work) gets its check here once both are merged.
-CheckResult axisParameterTable(Mc1Device&) {
-    const Reading reading{
+// Where the table in use comes from, for the report: the built-in guess
+// (marked provisional) or the file it was loaded from.
+QString tableSource(const comm::Mc1AxisParameterTable& table) {
+    return table.provisional ? QStringLiteral(
+                                   "provisional: built-in guess, comm/mc1/mc1_parameters.cpp "
+                                   "(comm/mc1/README.md)")
+                             : table.source;
+}
+
+// Each parameter of the table in use read on each axis the controller
+// has, one verdict each: answered is held, refused is refuted (naming the
+// number). A line failure decides nothing and ends the table's check.
+QList<CheckResult> axisParameterTable(Mc1Device& device) {
+    const comm::Mc1AxisParameterTable& table = device.axisParameters();
+    const QString source = tableSource(table);
+    const Reading whole{
         QStringLiteral("mc1.axis_parameter_table"),
-        QCoreApplication::translate("cambench::usecases",
-                                    "the axis parameter table (the MC-1B manual's numbers)"),
-        QStringLiteral("comm/mc1/mc1_parameters.h")};
-    return reading.couldNotTell(QCoreApplication::translate("cambench::usecases", "not built yet"));
+        QCoreApplication::translate("cambench::usecases", "the axis parameter table in use (%1)")
+            .arg(table.source),
+        source};
+    if (!device.has(comm::Mc1Capability::Axes))
+        return {whole.couldNotTell(QCoreApplication::translate(
+            "cambench::usecases", "this variant has no axis telegrams"))};
+    const Result<comm::Mc1Axes> present = device.axes();
+    if (!present) return {whole.failed(present.error())};
+    if (present->numbers.isEmpty())
+        return {whole.couldNotTell(
+            QCoreApplication::translate("cambench::usecases", "the controller has no axes (%1)")
+                .arg(present->source))};
+    QList<CheckResult> results;
+    for (const int axis : present->numbers) {
+        for (const comm::Mc1AxisValue value :
+             {comm::Mc1AxisValue::Position, comm::Mc1AxisValue::Target,
+              comm::Mc1AxisValue::Status}) {
+            const QString name = comm::mc1AxisValueName(value);
+            const std::optional<quint16> number = table.number(axis, value);
+            const Reading reading{
+                QStringLiteral("mc1.axis_parameter.%1.%2").arg(axis).arg(name),
+                number ? QCoreApplication::translate("cambench::usecases",
+                                                     "the %1 of axis %2 is RDSTAT parameter %3 "
+                                                     "(0x%4)")
+                             .arg(name)
+                             .arg(axis)
+                             .arg(*number)
+                             .arg(*number, 4, 16, QLatin1Char('0'))
+                       : QCoreApplication::translate("cambench::usecases",
+                                                     "the %1 of axis %2 (the table names no "
+                                                     "parameter for it)")
+                             .arg(name)
+                             .arg(axis),
+                source};
+            if (!number) {
+                results << reading.couldNotTell(QCoreApplication::translate(
+                    "cambench::usecases", "not in the table, not read"));
+                continue;
+            }
+            const Result<qint32> answered = device.axisValue(axis, value);
+            const CheckResult result =
+                answered
+                    ? reading.held(QCoreApplication::translate("cambench::usecases", "answered %1")
+                                       .arg(*answered))
+                    : reading.failed(answered.error());
+            results << result;
+            if (result.verdict == CheckVerdict::CouldNotTell) return results;
+        }
+    }
+    return results;
 }
 
 Result<QList<CheckResult>> run(comm::DeviceConnection& connection,
                                const UseCaseProgress& progress) {
     auto* device = dynamic_cast<Mc1Device*>(&connection);
     if (!device) return Error::usage(QStringLiteral("not an MC-1 connection"));
-    const QList<CheckResult (*)(Mc1Device&)> checks{
-        variantProbe, variableWidth, flagAddressing, ioAddressing, axes, axisParameterTable};
+    const QList<CheckResult (*)(Mc1Device&)> checks{variantProbe, variableWidth, flagAddressing,
+                                                    ioAddressing, axes};
     QList<CheckResult> results;
     for (const auto check : checks) {
         if (progress.cancelled()) return Error::cancelled();
-        progress.report(results.size(), checks.size());
+        progress.report(results.size(), checks.size() + 1);
         results << check(*device);
     }
+    if (progress.cancelled()) return Error::cancelled();
+    progress.report(checks.size(), checks.size() + 1);
+    results << axisParameterTable(*device);
     return results;
+}
+
+// --parameters FILE: the controller's own axis parameter table.
+Result<CheckTable> parametersFile(const QString& path) {
+    const Result<comm::Mc1AxisParameterTable> table = comm::loadMc1AxisParameterTable(path);
+    if (!table) return table.error();
+    return CheckTable{{}, {}, [table = *table](comm::DeviceConnection& connection) {
+                          if (auto* device = dynamic_cast<Mc1Device*>(&connection))
+                              device->setAxisParameters(table);
+                      }};
 }
 
 }  // namespace
 
 void registerMc1Check(CheckRegistry& registry) {
-    registry.add({QStringLiteral("mc1"), refuses, run});
+    registry.add({QStringLiteral("mc1"),
+                  refuses,
+                  run,
+                  {CheckTableOption{QStringLiteral("--parameters"), parametersFile}}});
 }
 
 }  // namespace cambench::usecases
