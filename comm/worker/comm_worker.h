@@ -12,7 +12,6 @@
 #include <functional>
 #include <memory>
 #include <mutex>
-#include <type_traits>
 
 namespace cambench::comm {
 
