@@ -1123,6 +1123,14 @@
         <source>Analogue output %1</source>
         <translation>Analogausgang %1</translation>
     </message>
+    <message>
+        <source>this device has no analogue outputs, so it has no analogue cams</source>
+        <translation>dieses Gerät hat keine Analogausgänge, also auch keine Analognocken</translation>
+    </message>
+    <message>
+        <source>this device has analogue outputs 1..%1 only</source>
+        <translation>dieses Gerät hat nur die Analogausgänge 1..%1</translation>
+    </message>
 </context>
 <context>
     <name>cambench::AsciiSettingsWidget</name>
@@ -1702,6 +1710,10 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Timing tables at the speed (%1); 0 leaves them out:</source>
         <translation>Schaltzeit-Tabellen bei der Geschwindigkeit (%1); 0 lässt sie weg:</translation>
     </message>
+    <message>
+        <source>The start pages are read from it; the rest says &quot;not read&quot; until Read everything or Compare.</source>
+        <translation>Die Startseiten werden von ihm gelesen; der Rest zeigt „nicht gelesen“ bis Alles lesen oder Mit Gerät vergleichen.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDiagramWidget</name>
@@ -2152,6 +2164,33 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::CheckReportDialog</name>
+    <message>
+        <source>%1 held, %2 refuted, %3 could not tell (%4 requests sent, all reading). Save the report and send it back, so that our tables can be corrected.</source>
+        <translation>%1 bestätigt, %2 widerlegt, %3 nicht entscheidbar (%4 Anfragen gesendet, alle lesend). Speichern Sie den Bericht und senden Sie ihn uns, damit wir unsere Tabellen korrigieren können.</translation>
+    </message>
+    <message>
+        <source>Check this device</source>
+        <translation>Dieses Gerät prüfen</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Save the check report</source>
+        <translation>Prüfbericht speichern</translation>
+    </message>
+    <message>
+        <source>Check report (*.json)</source>
+        <translation>Prüfbericht (*.json)</translation>
+    </message>
+    <message>
+        <source>The check did not run to its end: %1</source>
+        <translation>Die Prüfung lief nicht bis zum Ende: %1</translation>
+    </message>
+</context>
+<context>
     <name>cambench::CommissioningReport</name>
     <message>
         <source>Commissioning report</source>
@@ -2271,10 +2310,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>0 … %1</source>
         <translation>0 … %1</translation>
-    </message>
-    <message>
-        <source>not read</source>
-        <translation>nicht gelesen</translation>
     </message>
     <message>
         <source>Not read from the device: its content is unknown.</source>
@@ -2440,6 +2475,10 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Warnings at this speed: %1</source>
         <translation>Warnungen bei dieser Geschwindigkeit: %1</translation>
     </message>
+    <message>
+        <source>not read from this device</source>
+        <translation>nicht von diesem Gerät gelesen</translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -2530,6 +2569,14 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Changed on the device since it was last read (%1)</source>
         <translation>Im Gerät geändert seit dem letzten Lesen (%1)</translation>
+    </message>
+    <message>
+        <source>The edits hold a copy of the values of %1, made when this device came on the line.</source>
+        <translation>Die Bearbeitungen enthalten eine Kopie der Werte von %1, angelegt, als dieses Gerät an die Leitung kam.</translation>
+    </message>
+    <message>
+        <source>Copy to write</source>
+        <translation>Zu schreibende Kopie</translation>
     </message>
 </context>
 <context>
@@ -2738,6 +2785,13 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Compax3Gui</name>
+    <message>
+        <source>Use dictionary</source>
+        <translation>Objektverzeichnis verwenden</translation>
+    </message>
+</context>
+<context>
     <name>cambench::Compax3MotionPage</name>
     <message>
         <source>Motion</source>
@@ -2750,10 +2804,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>0 (homing)</source>
         <translation>0 (Referenzfahrt)</translation>
-    </message>
-    <message>
-        <source>Stops the axis with its ramp (control word 1) and drops what waits for the line. Escape does the same.</source>
-        <translation>Hält die Achse mit ihrer Rampe an (Steuerwort 1) und verwirft, was auf die Leitung wartet. Escape tut dasselbe.</translation>
     </message>
     <message>
         <source>Enable…</source>
@@ -2812,10 +2862,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Kein Antrieb verbunden.</translation>
     </message>
     <message>
-        <source>%1 (stale: the connection was lost)</source>
-        <translation>%1 (veraltet: die Verbindung ging verloren)</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2840,18 +2886,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Die Achse fährt mit der Geschwindigkeit des Satzes zu seinem Ziel. STOPP (oder Escape) hält sie an. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
     </message>
     <message>
-        <source>STOP</source>
-        <translation>STOPP</translation>
-    </message>
-    <message>
-        <source>STOP did not reach the drive: %1. Use the machine&apos;s emergency stop.</source>
-        <translation>STOPP hat den Antrieb nicht erreicht: %1. Benutzen Sie den Not-Halt der Maschine.</translation>
-    </message>
-    <message>
-        <source>STOP acknowledged by the drive; now %1.</source>
-        <translation>STOPP vom Antrieb bestätigt; jetzt %1.</translation>
-    </message>
-    <message>
         <source>Enable</source>
         <translation>Freigeben</translation>
     </message>
@@ -2862,6 +2896,66 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Start</source>
         <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Stops the drive and drops what waits for the line: the STOP above every page. Escape does the same.</source>
+        <translation>Stoppt den Antrieb und verwirft, was auf die Leitung wartet: der STOPP über jeder Seite. Escape tut dasselbe.</translation>
+    </message>
+    <message>
+        <source>Mode (1905.n):</source>
+        <translation>Modus (1905.n):</translation>
+    </message>
+    <message>
+        <source>Motion is off while the STOP cannot reach the drive.</source>
+        <translation>Bewegung ist gesperrt, solange der STOPP den Antrieb nicht erreicht.</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Read set %1</source>
+        <translation>Satz %1 lesen</translation>
+    </message>
+    <message>
+        <source>Set %1 not read: %2</source>
+        <translation>Satz %1 nicht gelesen: %2</translation>
+    </message>
+    <message>
+        <source>%1 (as on the drive)</source>
+        <translation>%1 (wie auf dem Antrieb)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Set %1 is not read from the drive yet: reading it; start it then.</source>
+        <translation>Satz %1 ist noch nicht vom Antrieb gelesen: er wird gelesen; danach starten.</translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3 (written first)</source>
+        <translation>%1: %2 → %3 (wird zuerst geschrieben)</translation>
+    </message>
+    <message>
+        <source>%1: %2 (as on the drive)</source>
+        <translation>%1: %2 (wie auf dem Antrieb)</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Acceleration and deceleration</source>
+        <translation>Beschleunigung und Verzögerung</translation>
+    </message>
+    <message>
+        <source>Mode (1905.%1): %2 (as on the drive)</source>
+        <translation>Modus (1905.%1): %2 (wie auf dem Antrieb)</translation>
     </message>
 </context>
 <context>
@@ -2933,6 +3027,22 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Type a new value (decimal point: 12.5)</source>
         <translation>Neuen Wert eingeben (Dezimalpunkt: 12.5)</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>not on this drive</source>
+        <translation>nicht auf diesem Antrieb</translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: %1</source>
+        <translation>Der Antrieb hat dieses Objekt nicht: %1</translation>
+    </message>
+    <message>
+        <source>Typed in, but the dictionary in use refuses it: %1</source>
+        <translation>Eingetippt, aber das benutzte Wörterbuch lehnt es ab: %1</translation>
     </message>
 </context>
 <context>
@@ -3091,6 +3201,27 @@ Jetzt löschen und wiederherstellen?</translation>
             <numerusform>%n Werte eingegeben, noch nicht im Antrieb: „Änderungen schreiben“ sendet sie.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The loaded dictionary refuses %n typed value(s); they stay typed in and are not written until corrected: %1</source>
+        <translation>
+            <numerusform>Das geladene Wörterbuch lehnt %n eingetippten Wert ab; er bleibt eingetippt und wird erst nach der Korrektur geschrieben: %1</numerusform>
+            <numerusform>Das geladene Wörterbuch lehnt %n eingetippte Werte ab; sie bleiben eingetippt und werden erst nach der Korrektur geschrieben: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n object(s) are not on this drive (greyed).</source>
+        <translation>
+            <numerusform>%n Objekt ist nicht auf diesem Antrieb (grau).</numerusform>
+            <numerusform>%n Objekte sind nicht auf diesem Antrieb (grau).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Nothing was written: the dictionary in use refuses %n typed value(s) (they stay typed in; correct or clear them): %1</source>
+        <translation>
+            <numerusform>Nichts wurde geschrieben: das benutzte Wörterbuch lehnt %n eingetippten Wert ab (er bleibt eingetippt; korrigieren oder leeren): %1</numerusform>
+            <numerusform>Nichts wurde geschrieben: das benutzte Wörterbuch lehnt %n eingetippte Werte ab (sie bleiben eingetippt; korrigieren oder leeren): %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::Compax3Page</name>
@@ -3112,10 +3243,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Write to another drive type</source>
         <translation>In einen anderen Antriebstyp schreiben</translation>
-    </message>
-    <message>
-        <source>Store the sets in the drive&apos;s flash afterwards (1904.1 = $32)</source>
-        <translation>Die Sätze danach im Flash des Antriebs speichern (1904.1 = $32)</translation>
     </message>
     <message>
         <source>Save drive to file…</source>
@@ -3255,6 +3382,26 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>To replace a drive: save the old drive&apos;s parameters to a file (or take one saved before), connect the new drive, compare it with the file, then write the differences and store the sets.</source>
         <translation>Einen Antrieb tauschen: die Parameter des alten Antriebs in eine Datei sichern (oder eine früher gesicherte nehmen), den neuen Antrieb verbinden, ihn mit der Datei vergleichen, dann die Unterschiede schreiben und die Sätze speichern.</translation>
     </message>
+    <message>
+        <source>Store the written sets in the drive&apos;s flash afterwards (1904.n = $32)</source>
+        <translation>Die geschriebenen Sätze danach im Flash des Antriebs speichern (1904.n = $32)</translation>
+    </message>
+    <message>
+        <source>Not on this drive (recorded in the file as absent): %1.</source>
+        <translation>Nicht auf diesem Antrieb (in der Datei als fehlend vermerkt): %1.</translation>
+    </message>
+    <message>
+        <source>Never saved, being control words or functions: %1.</source>
+        <translation>Nie gespeichert, da Steuerwörter oder Funktionen: %1.</translation>
+    </message>
+    <message>
+        <source>not on the file&apos;s drive</source>
+        <translation>nicht auf dem Antrieb der Datei</translation>
+    </message>
+    <message>
+        <source>Not compared, being control words or functions a file never writes: %1.</source>
+        <translation>Nicht verglichen, da Steuerwörter oder Funktionen, die eine Datei nie schreibt: %1.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::Compax3SettingsWidget</name>
@@ -3302,10 +3449,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Achse:</translation>
     </message>
     <message>
-        <source>%1 (stale: the connection was lost)</source>
-        <translation>%1 (veraltet: die Verbindung ging verloren)</translation>
-    </message>
-    <message>
         <source>Acknowledge</source>
         <translation>Quittieren</translation>
     </message>
@@ -3314,16 +3457,24 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Den Fehler quittieren und die Achse des Antriebs %1 bestromen?</translation>
     </message>
     <message>
-        <source>The drive is switched off and on again; it holds its position with power afterwards. Make sure nobody is at the axis.</source>
-        <translation>Der Antrieb wird aus- und wieder eingeschaltet; danach hält er seine Position bestromt. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
-    </message>
-    <message>
         <source>Not acknowledged: %1</source>
         <translation>Nicht quittiert: %1</translation>
     </message>
     <message>
         <source>Acknowledged; last error now: %1.</source>
         <translation>Quittiert; letzter Fehler jetzt: %1.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>A powerless drive is switched off and on again; it holds its position with power afterwards. A powered drive is left as it is (nothing is sent). Make sure nobody is at the axis.</source>
+        <translation>Ein stromloser Antrieb wird aus- und wieder eingeschaltet; danach hält er seine Position bestromt. Ein bestromter Antrieb bleibt, wie er ist (nichts wird gesendet). Stellen Sie sicher, dass niemand an der Achse ist.</translation>
+    </message>
+    <message>
+        <source>Acknowledged by the drive; %1</source>
+        <translation>Vom Antrieb quittiert; %1</translation>
     </message>
 </context>
 <context>
@@ -3371,10 +3522,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>refused</source>
         <translation>abgelehnt</translation>
-    </message>
-    <message>
-        <source>Stale: the connection was lost after this was read.</source>
-        <translation>Veraltet: die Verbindung ging verloren, nachdem dies gelesen wurde.</translation>
     </message>
 </context>
 <context>
@@ -3629,6 +3776,10 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Cam-BUS (RS485 token bus)</source>
         <translation>Cam-BUS (RS485-Token-Bus)</translation>
     </message>
+    <message>
+        <source>Reconnect to reach device %1.</source>
+        <translation>Neu verbinden, um Gerät %1 zu erreichen.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -3767,6 +3918,10 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Largest dead time: %1</source>
         <translation>Größte Totzeit: %1</translation>
     </message>
+    <message>
+        <source>Not read from this device yet.</source>
+        <translation>Noch nicht von diesem Gerät gelesen.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::DeadTimesModel</name>
@@ -3851,6 +4006,92 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     </message>
 </context>
 <context>
+    <name>cambench::DeviceChange</name>
+    <message>
+        <source>Program %1, output %2: %3 (read from %4: %5)</source>
+        <translation>Programm %1, Ausgang %2: %3 (gelesen von %4: %5)</translation>
+    </message>
+    <message>
+        <source>Program %1, output %2: %3 (not read from a device)</source>
+        <translation>Programm %1, Ausgang %2: %3 (von keinem Gerät gelesen)</translation>
+    </message>
+    <message>
+        <source>Program %1 name: &quot;%2&quot;</source>
+        <translation>Name von Programm %1: „%2“</translation>
+    </message>
+    <message>
+        <source>Output %1 name: &quot;%2&quot;</source>
+        <translation>Name von Ausgang %1: „%2“</translation>
+    </message>
+    <message>
+        <source>Output %1 dead time: %2 ms</source>
+        <translation>Totzeit von Ausgang %1: %2 ms</translation>
+    </message>
+    <message>
+        <source>Setting: %1</source>
+        <translation>Einstellung: %1</translation>
+    </message>
+    <message>
+        <source>Users: %1 changed</source>
+        <translation>Benutzer: %1 geändert</translation>
+    </message>
+    <message>
+        <source>PLC network %1</source>
+        <translation>SPS-Netzwerk %1</translation>
+    </message>
+    <message>
+        <source>Output %1 dead-time mode</source>
+        <translation>Totzeitmodus von Ausgang %1</translation>
+    </message>
+    <message>
+        <source>Analogue output %1 cams</source>
+        <translation>Nocken von Analogausgang %1</translation>
+    </message>
+    <message>
+        <source>Programming program</source>
+        <translation>Programmierprogramm</translation>
+    </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation>EEPROM-Sperre</translation>
+    </message>
+    <message>
+        <source>CamCon %1, device %2, %3 cams programmed</source>
+        <translation>CamCon %1, Gerät %2, %3 Nocken programmiert</translation>
+    </message>
+    <message>
+        <source>the device</source>
+        <translation>dem Gerät</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeviceChangeDialog</name>
+    <message>
+        <source>Another device answers</source>
+        <translation>Ein anderes Gerät antwortet</translation>
+    </message>
+    <message>
+        <source>Another device answers: %1. The values shown were read from %2, and you changed %3 of them. What shall this device&apos;s values be?</source>
+        <translation>Ein anderes Gerät antwortet: %1. Die angezeigten Werte wurden von %2 gelesen, und Sie haben %3 davon geändert. Welche Werte soll dieses Gerät bekommen?</translation>
+    </message>
+    <message>
+        <source>Take the values of %1 (your changes are dropped)</source>
+        <translation>Die Werte von %1 übernehmen (Ihre Änderungen werden verworfen)</translation>
+    </message>
+    <message>
+        <source>Keep my changes, each applied to the values of %1</source>
+        <translation>Meine Änderungen behalten, jede auf die Werte von %1 angewandt</translation>
+    </message>
+    <message>
+        <source>Copy the programs and sections of %1 (with your changes) to %2: written only when you write</source>
+        <translation>Die Programme und Bereiche von %1 (mit Ihren Änderungen) nach %2 kopieren: geschrieben wird erst, wenn Sie schreiben</translation>
+    </message>
+    <message>
+        <source>Your changes:</source>
+        <translation>Ihre Änderungen:</translation>
+    </message>
+</context>
+<context>
     <name>cambench::DeviceChanges</name>
     <message>
         <source>%1: %2 → %3</source>
@@ -3884,16 +4125,20 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
 <context>
     <name>cambench::DeviceCheck</name>
     <message>
-        <source>CamCon %1, device number %2, %3 cams programmed</source>
-        <translation>CamCon %1, Gerätenummer %2, %3 Nocken programmiert</translation>
-    </message>
-    <message>
         <source>Check which device answers</source>
         <translation>Prüfen, welches Gerät antwortet</translation>
     </message>
     <message>
-        <source>Another device answers (%1) than the one the values shown as on the device were read from (%2). Nothing read from that one is shown as this device&apos;s any more: the start pages are read again, the rest says &quot;not read&quot; until Read everything or Compare. Your edits are kept and count as not written.</source>
-        <translation>Es antwortet ein anderes Gerät (%1) als das, von dem die als „auf dem Gerät“ gezeigten Werte gelesen wurden (%2). Nichts davon wird mehr als Wert dieses Geräts gezeigt: Die Startseiten werden neu gelesen, der Rest zeigt „nicht gelesen“ bis „Alles lesen“ oder „Mit Gerät vergleichen“. Ihre Änderungen bleiben erhalten und gelten als nicht geschrieben.</translation>
+        <source>Another device answers: nothing read from %1 is shown as this one&apos;s.</source>
+        <translation>Ein anderes Gerät antwortet: nichts von %1 Gelesenes wird als Wert dieses Geräts gezeigt.</translation>
+    </message>
+    <message>
+        <source>Your changes (%1) stay, not written yet.</source>
+        <translation>Ihre Änderungen (%1) bleiben, noch nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>A copy of that device&apos;s values waits to be written.</source>
+        <translation>Eine Kopie der Werte jenes Geräts wartet darauf, geschrieben zu werden.</translation>
     </message>
 </context>
 <context>
@@ -3952,6 +4197,14 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>Connected to %1</source>
         <translation>Verbunden mit %1</translation>
+    </message>
+    <message>
+        <source>Connect to %1</source>
+        <translation>Verbinden mit %1</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
     </message>
 </context>
 <context>
@@ -4177,6 +4430,34 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>Not polled now; values of %1</source>
         <translation>Derzeit nicht abgefragt; Werte von %1</translation>
     </message>
+    <message>
+        <source>Paused (%1); values of %2</source>
+        <translation>Pausiert (%1); Werte von %2</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>aktuell</translation>
+    </message>
+    <message>
+        <source>no answer since %1</source>
+        <translation>keine Antwort seit %1</translation>
+    </message>
+    <message>
+        <source>no answer yet</source>
+        <translation>noch keine Antwort</translation>
+    </message>
+    <message>
+        <source>paused, read %1</source>
+        <translation>pausiert, gelesen %1</translation>
+    </message>
+    <message>
+        <source>paused (%1), read %2</source>
+        <translation>pausiert (%1), gelesen %2</translation>
+    </message>
 </context>
 <context>
     <name>cambench::MainWindow</name>
@@ -4248,10 +4529,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Nicht verbunden: %1</translation>
     </message>
     <message>
-        <source>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</source>
-        <translation>Verbindung wiederhergestellt. Ihre Änderungen sind unverändert; „Mit Gerät vergleichen“ liest den jetzigen Inhalt des Geräts.</translation>
-    </message>
-    <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -4311,6 +4588,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
+    <message>
+        <source>Connection re-established: the same device answers. Your edits are unchanged; Compare with device reads what the device holds now.</source>
+        <translation>Verbindung wiederhergestellt: dasselbe Gerät antwortet. Ihre Bearbeitungen sind unverändert; Mit Gerät vergleichen liest, was das Gerät jetzt enthält.</translation>
+    </message>
+    <message>
+        <source>Connection re-established, but another device answers on this port: see the note at the top.</source>
+        <translation>Verbindung wiederhergestellt, aber an diesem Anschluss antwortet ein anderes Gerät: siehe den Hinweis oben.</translation>
+    </message>
+    <message>
+        <source>&amp;Check this device…</source>
+        <translation>Dieses Gerät &amp;prüfen…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1AxesPage</name>
@@ -4325,10 +4618,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Axis </source>
         <translation>Achse </translation>
-    </message>
-    <message>
-        <source>Stops every axis with the maximum ramp and drops what waits for the line. Escape does the same.</source>
-        <translation>Hält jede Achse mit der maximalen Rampe an und verwirft, was auf die Leitung wartet. Escape tut dasselbe.</translation>
     </message>
     <message>
         <source>Move (each asks first)</source>
@@ -4371,10 +4660,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Nicht mit einer MC100/MC200 verbunden.</translation>
     </message>
     <message>
-        <source>Position %1 · target %2 · %3 · %4</source>
-        <translation>Position %1 · Ziel %2 · %3 · %4</translation>
-    </message>
-    <message>
         <source>homed</source>
         <translation>referenziert</translation>
     </message>
@@ -4415,20 +4700,100 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Achsbefehl</translation>
     </message>
     <message>
-        <source>Sent: %1. Now %2.</source>
-        <translation>Gesendet: %1. Jetzt: %2.</translation>
+        <source>Stops every axis and drops what waits for the line: the STOP above every page. Escape does the same.</source>
+        <translation>Stoppt jede Achse und verwirft, was auf die Leitung wartet: der STOPP über jeder Seite. Escape tut dasselbe.</translation>
     </message>
     <message>
-        <source>STOP</source>
-        <translation>STOPP</translation>
+        <source>Moves are off while the STOP cannot reach the %1.</source>
+        <translation>Verfahren ist gesperrt, solange der STOPP %1 nicht erreicht.</translation>
     </message>
     <message>
-        <source>STOP sent to every axis; each acknowledged it.</source>
-        <translation>STOPP an jede Achse gesendet; jede hat ihn bestätigt.</translation>
+        <source>axis %1 is jogging %2 (now at %3)</source>
+        <translation>Achse %1 tippt %2 (jetzt bei %3)</translation>
     </message>
     <message>
-        <source>STOP did not reach every axis: %1. Use the machine&apos;s emergency stop.</source>
-        <translation>STOPP hat nicht jede Achse erreicht: %1. Benutzen Sie den Not-Halt der Maschine.</translation>
+        <source>Find axes</source>
+        <translation>Achsen suchen</translation>
+    </message>
+    <message>
+        <source>Which axes the controller has could not be read: %1</source>
+        <translation>Welche Achsen die Steuerung hat, war nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <source>The controller has no axes (%1).</source>
+        <translation>Die Steuerung hat keine Achsen (%1).</translation>
+    </message>
+    <message>
+        <source>Axes %1 (%2).</source>
+        <translation>Achsen %1 (%2).</translation>
+    </message>
+    <message>
+        <source>Position %1 · %2 · %3 · %4</source>
+        <translation>Position %1 · %2 · %3 · %4</translation>
+    </message>
+    <message>
+        <source>jogging %1</source>
+        <translation>tippt %1</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>Ziel %1</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>Done: %1 (the controller acknowledged it). Now %2.</source>
+        <translation>Erledigt: %1 (die Steuerung hat es quittiert). Jetzt %2.</translation>
+    </message>
+    <message>
+        <source>Set the speed of axis %1 to %2 on the %3?</source>
+        <translation>%3: Geschwindigkeit der Achse %1 auf %2 setzen?</translation>
+    </message>
+    <message>
+        <source>The controller moves the axis at this speed from now on.</source>
+        <translation>Die Steuerung fährt die Achse ab jetzt mit dieser Geschwindigkeit.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1AxisParametersBox</name>
+    <message>
+        <source>Load parameter table…</source>
+        <translation>Parametertabelle laden…</translation>
+    </message>
+    <message>
+        <source>A CSV file of name,axis,parameter lines (name: position, target or status) from the controller&apos;s MC-1B manual: the RDSTAT parameter numbers of its axes.</source>
+        <translation>Eine CSV-Datei mit Zeilen name,axis,parameter (name: position, target oder status) aus dem MC-1B-Handbuch der Steuerung: die RDSTAT-Parameternummern ihrer Achsen.</translation>
+    </message>
+    <message>
+        <source>Load parameter table</source>
+        <translation>Parametertabelle laden</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>%1 was not loaded: %2
+The table in use stays: %3</source>
+        <translation>%1 wurde nicht geladen: %2\nDie verwendete Tabelle bleibt: %3</translation>
+    </message>
+    <message>
+        <source>The table loaded last (%1) could not be read again: %2</source>
+        <translation>Die zuletzt geladene Tabelle (%1) ließ sich nicht erneut lesen: %2</translation>
+    </message>
+    <message>
+        <source>Use parameter table</source>
+        <translation>Parametertabelle verwenden</translation>
+    </message>
+    <message>
+        <source>Axis parameter numbers: provisional (%1). Positions and states read through them are not facts: load the controller&apos;s parameter table.</source>
+        <translation>Achsparameternummern: vorläufig (%1). Damit gelesene Positionen und Zustände sind keine Tatsachen: laden Sie die Parametertabelle der Steuerung.</translation>
+    </message>
+    <message>
+        <source>Axis parameter numbers: from %1.</source>
+        <translation>Achsparameternummern: aus %1.</translation>
     </message>
 </context>
 <context>
@@ -4503,6 +4868,13 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Written at %1, but the bytes read back differ.</source>
         <translation>An %1 geschrieben, aber die zurückgelesenen Bytes weichen ab.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1Page</name>
+    <message>
+        <source>Done: %1 (the controller acknowledged it). Reading back failed: %2</source>
+        <translation>Erledigt: %1 (die Steuerung hat es quittiert). Das Zurücklesen ist fehlgeschlagen: %2</translation>
     </message>
 </context>
 <context>
@@ -4607,10 +4979,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Status</translation>
     </message>
     <message>
-        <source>Control</source>
-        <translation>Steuern</translation>
-    </message>
-    <message>
         <source>Start</source>
         <translation>Start</translation>
     </message>
@@ -4662,6 +5030,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>Done: %1. PLC program %2.</source>
         <translation>Ausgeführt: %1. SPS-Programm %2.</translation>
     </message>
+    <message>
+        <source>Control (each asks first)</source>
+        <translation>Steuerung (jede Aktion fragt vorher)</translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1SettingsWidget</name>
@@ -4680,6 +5052,18 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Controller:</source>
         <translation>Steuerung:</translation>
+    </message>
+    <message>
+        <source>found by asking the controller</source>
+        <translation>von der Steuerung erfragt</translation>
+    </message>
+    <message>
+        <source>Empty: an MC200 is asked which axes it has (RDTABLE), and STOP goes to each of them. Axis numbers such as 1,2 name them instead.</source>
+        <translation>Leer: eine MC200 wird gefragt, welche Achsen sie hat (RDTABLE), und STOPP geht an jede davon. Achsnummern wie 1,2 nennen sie stattdessen.</translation>
+    </message>
+    <message>
+        <source>Axes:</source>
+        <translation>Achsen:</translation>
     </message>
 </context>
 <context>
@@ -4836,6 +5220,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
             <numerusform>%n Variablen aus %1; Werte wie in der Datei, bis sie gelesen sind.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is not a whole number: V%2 was not written.</source>
+        <translation>„%1“ ist keine ganze Zahl: V%2 wurde nicht geschrieben.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1WatchModel</name>
@@ -4882,6 +5270,14 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>from the file, not read</source>
         <translation>aus der Datei, nicht gelesen</translation>
+    </message>
+    <message>
+        <source>restored from last session, not read yet</source>
+        <translation>aus der letzten Sitzung wiederhergestellt, noch nicht gelesen</translation>
+    </message>
+    <message>
+        <source>on the controller: %1 (%2)</source>
+        <translation>in der Steuerung: %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -5139,6 +5535,90 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>unknown now; at %1: %2</source>
         <translation>jetzt unbekannt; um %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MotionLeaveQuestion</name>
+    <message>
+        <source>On the device something moves or is powered:</source>
+        <translation>Auf dem Gerät bewegt sich etwas oder ist bestromt:</translation>
+    </message>
+    <message>
+        <source>CamBench could not tell whether something on the device moves or is powered.</source>
+        <translation>CamBench konnte nicht feststellen, ob sich auf dem Gerät etwas bewegt oder bestromt ist.</translation>
+    </message>
+    <message>
+        <source>STOP, then %1</source>
+        <translation>STOPP, dann %1</translation>
+    </message>
+    <message>
+        <source>%1 without stopping</source>
+        <translation>%1 ohne Stoppen</translation>
+    </message>
+    <message>
+        <source>The STOP was not acknowledged everywhere, so CamBench stays connected and STOP can be pressed again. Use the machine&apos;s emergency stop.
+
+%1</source>
+        <translation>Der STOPP wurde nicht überall quittiert; CamBench bleibt deshalb verbunden, und STOPP kann erneut gedrückt werden. Betätigen Sie den Not-Halt der Maschine.\n\n%1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MotionStop</name>
+    <message>
+        <source>STOP</source>
+        <translation>STOPP</translation>
+    </message>
+    <message>
+        <source>Ask what moves</source>
+        <translation>Fragen, was sich bewegt</translation>
+    </message>
+    <message>
+        <source>The device</source>
+        <translation>Das Gerät</translation>
+    </message>
+    <message>
+        <source>not connected: the STOP was not sent</source>
+        <translation>nicht verbunden: der STOPP wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>it has nothing CamBench can stop</source>
+        <translation>es hat nichts, was CamBench stoppen kann</translation>
+    </message>
+    <message>
+        <source>the device is not connected</source>
+        <translation>das Gerät ist nicht verbunden</translation>
+    </message>
+    <message>
+        <source>the device has nothing CamBench can stop</source>
+        <translation>das Gerät hat nichts, was CamBench stoppen kann</translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>keine Antwort innerhalb von %1 s</translation>
+    </message>
+    <message>
+        <source>no report of the STOP within %1 s</source>
+        <translation>keine Meldung des STOPPs innerhalb von %1 s</translation>
+    </message>
+    <message>
+        <source>STOP acknowledged by every axis and drive.</source>
+        <translation>STOPP von jeder Achse und jedem Antrieb quittiert.</translation>
+    </message>
+    <message>
+        <source>STOP NOT acknowledged everywhere – use the machine&apos;s emergency stop.</source>
+        <translation>STOPP NICHT überall quittiert – benutzen Sie den Not-Halt der Maschine.</translation>
+    </message>
+    <message>
+        <source>%1: acknowledged</source>
+        <translation>%1: quittiert</translation>
+    </message>
+    <message>
+        <source>%1: NOT acknowledged – use the machine&apos;s emergency stop</source>
+        <translation>%1: NICHT quittiert – benutzen Sie den Not-Halt der Maschine</translation>
+    </message>
+    <message>
+        <source>Nothing answered the STOP – use the machine&apos;s emergency stop</source>
+        <translation>Nichts hat auf den STOPP geantwortet – benutzen Sie den Not-Halt der Maschine</translation>
     </message>
 </context>
 <context>
@@ -5829,6 +6309,26 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Encoder &amp; system</source>
         <translation>Geber &amp; System</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::StopBar</name>
+    <message>
+        <source>STOP (%1)</source>
+        <translation>STOPP (%1)</translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 does the same from every page.</source>
+        <translation>Stoppt jede Achse und jeden Antrieb des Geräts ohne Rückfrage, vor allem, was auf die Leitung wartet. %1 tut dasselbe auf jeder Seite.</translation>
+    </message>
+    <message>
+        <source>STOP sent…</source>
+        <translation>STOPP gesendet…</translation>
+    </message>
+    <message>
+        <source>%1 %2
+%3</source>
+        <translation>%1 %2\n%3</translation>
     </message>
 </context>
 <context>
@@ -7765,30 +8265,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>die Antwort ist eine leere Zeile</translation>
     </message>
     <message>
-        <source>syntax error</source>
-        <translation>Syntaxfehler</translation>
-    </message>
-    <message>
-        <source>no such object</source>
-        <translation>kein solches Objekt</translation>
-    </message>
-    <message>
-        <source>the object is read-only</source>
-        <translation>das Objekt ist nur lesbar</translation>
-    </message>
-    <message>
-        <source>the value is outside the object&apos;s range</source>
-        <translation>der Wert liegt außerhalb des Bereichs des Objekts</translation>
-    </message>
-    <message>
-        <source>not possible in the drive&apos;s state</source>
-        <translation>im Zustand des Antriebs nicht möglich</translation>
-    </message>
-    <message>
-        <source>the value has the wrong type</source>
-        <translation>der Wert hat den falschen Typ</translation>
-    </message>
-    <message>
         <source>the drive refused %1 with %2 (an error number CamBench does not know: see the drive&apos;s manual)</source>
         <translation>der Antrieb lehnte %1 mit %2 ab (eine Fehlernummer, die CamBench nicht kennt: siehe Handbuch des Antriebs)</translation>
     </message>
@@ -8091,6 +8567,182 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>device %1&apos;s receive queue stayed full for %2 s (it refused the request %3 times); the request was not sent</source>
         <translation>die Empfangswarteschlange von Gerät %1 blieb %2 s lang voll (es hat die Anfrage %3-mal abgewiesen); die Anfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>not sent: dropped by STOP</source>
+        <translation>nicht gesendet: durch STOPP verworfen</translation>
+    </message>
+    <message>
+        <source>reading the number of analogue outputs</source>
+        <translation>beim Lesen der Anzahl der Analogausgänge</translation>
+    </message>
+    <message>
+        <source>The device says it has %1 analogue outputs (area 203 word 38); the manual allows 0..%2.</source>
+        <translation>Das Gerät meldet %1 Analogausgänge (Bereich 203, Wort 38); das Handbuch erlaubt 0..%2.</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>CamBench&apos;s built-in guess (comm/mc1/README.md), not the controller&apos;s</source>
+        <translation>von CamBench eingebaute Vermutung (comm/mc1/README.md), nicht die der Steuerung</translation>
+    </message>
+    <message>
+        <source>expected name,axis,parameter (3 fields), found %1</source>
+        <translation>erwartet name,axis,parameter (3 Felder), gefunden %1</translation>
+    </message>
+    <message>
+        <source>the name must be position, target or status, not &quot;%1&quot;</source>
+        <translation>der Name muss position, target oder status sein, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>the axis must be %1 to %2, not &quot;%3&quot;</source>
+        <translation>die Achse muss %1 bis %2 sein, nicht „%3“</translation>
+    </message>
+    <message>
+        <source>the parameter must be 0 to 65535 (or 0x0000 to 0xFFFF), not &quot;%1&quot;</source>
+        <translation>der Parameter muss 0 bis 65535 (oder 0x0000 bis 0xFFFF) sein, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>the %1 of axis %2 is named a second time</source>
+        <translation>%1 der Achse %2 ist ein zweites Mal genannt</translation>
+    </message>
+    <message>
+        <source>no name,axis,parameter line: the file holds no parameter</source>
+        <translation>keine Zeile name,axis,parameter: die Datei enthält keinen Parameter</translation>
+    </message>
+    <message>
+        <source> (provisional parameter numbers)</source>
+        <translation> (vorläufige Parameternummern)</translation>
+    </message>
+    <message>
+        <source>axes are numbers %1 to %2 separated by commas (1,2,5); &quot;%3&quot; is not one</source>
+        <translation>Achsen sind Nummern von %1 bis %2, durch Kommas getrennt (1,2,5); „%3“ ist keine</translation>
+    </message>
+    <message>
+        <source>no axis given: name them like 1,2,5</source>
+        <translation>keine Achse angegeben: nennen Sie sie wie 1,2,5</translation>
+    </message>
+    <message>
+        <source>as given</source>
+        <translation>wie angegeben</translation>
+    </message>
+    <message>
+        <source>none: the %1 has no axis telegrams (they need an MC200 V2)</source>
+        <translation>keine: die %1 hat keine Achstelegramme (sie brauchen eine MC200 V2)</translation>
+    </message>
+    <message>
+        <source>found with RDTABLE</source>
+        <translation>mit RDTABLE gefunden</translation>
+    </message>
+    <message>
+        <source>the parameter table (%1) names no %2 parameter for axis %3: load a table that names it</source>
+        <translation>die Parametertabelle (%1) nennt keinen Parameter %2 für Achse %3: laden Sie eine Tabelle, die ihn nennt</translation>
+    </message>
+    <message>
+        <source>the controller refused RDSTAT of parameter %1 (0x%2), the %3 of axis %4</source>
+        <translation>die Steuerung hat RDSTAT von Parameter %1 (0x%2) abgelehnt, %3 der Achse %4</translation>
+    </message>
+    <message>
+        <source>%1: that number is CamBench&apos;s guess, not the controller&apos;s; load the controller&apos;s parameter table (name,axis,parameter; --parameters FILE, or Load parameter table… on the Axes page)</source>
+        <translation>%1: diese Nummer ist CamBenchs Vermutung, nicht die der Steuerung; laden Sie die Parametertabelle der Steuerung (name,axis,parameter; --parameters DATEI oder „Parametertabelle laden…“ auf der Seite Achsen)</translation>
+    </message>
+    <message>
+        <source>%1: check the parameter table %2</source>
+        <translation>%1: prüfen Sie die Parametertabelle %2</translation>
+    </message>
+    <message>
+        <source>the controller has no axis %1: its axes are %2 (%3)</source>
+        <translation>die Steuerung hat keine Achse %1: ihre Achsen sind %2 (%3)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>no answer to &quot;%1&quot; (%2). Read back: %3</source>
+        <translation>keine Antwort auf „%1“ (%2). Zurückgelesen: %3</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <source>no stop was sent: %1</source>
+        <translation>kein Stopp wurde gesendet: %1</translation>
+    </message>
+    <message>
+        <source>reading the axis back failed: %1</source>
+        <translation>das Zurücklesen der Achse ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Achse %1</translation>
+    </message>
+    <message>
+        <source> (the controller&apos;s axes could not be read: %1; it may have no axis %2)</source>
+        <translation> (die Achsen der Steuerung waren nicht lesbar: %1; sie hat vielleicht keine Achse %2)</translation>
+    </message>
+    <message>
+        <source>not acknowledged: %1; %2</source>
+        <translation>nicht quittiert: %1; %2</translation>
+    </message>
+    <message>
+        <source>the controller has no axes (%1): nothing to stop</source>
+        <translation>die Steuerung hat keine Achsen (%1): nichts zu stoppen</translation>
+    </message>
+    <message>
+        <source>axis %1 moves (provisional parameter numbers)</source>
+        <translation>Achse %1 fährt (vorläufige Parameternummern)</translation>
+    </message>
+    <message>
+        <source>axis %1 moves</source>
+        <translation>Achse %1 fährt</translation>
+    </message>
+    <message>
+        <source>none: the MC100&apos;s ASCII protocol has no axis requests</source>
+        <translation>keine: das ASCII-Protokoll der MC100 hat keine Achsanfragen</translation>
+    </message>
+    <message>
+        <source>absolute</source>
+        <translation>absolut</translation>
+    </message>
+    <message>
+        <source>relative</source>
+        <translation>relativ</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation>Modus %1</translation>
+    </message>
+    <message>
+        <source>the state could not be read back afterwards: %1</source>
+        <translation>der Zustand ließ sich danach nicht zurücklesen: %1</translation>
+    </message>
+    <message>
+        <source>the drive is powered already: nothing was sent</source>
+        <translation>der Antrieb ist schon bestromt: nichts wurde gesendet</translation>
+    </message>
+    <message>
+        <source>the drive is powered with an error pending (%1): nothing was sent, because acknowledging it drops power; stop the axis, Disable, then Enable</source>
+        <translation>der Antrieb ist bestromt und hat einen Fehler (%1): nichts wurde gesendet, denn das Quittieren schaltet ihn stromlos; Achse anhalten, Abschalten, dann Freigeben</translation>
+    </message>
+    <message>
+        <source>Compax3 drive</source>
+        <translation>Compax3-Antrieb</translation>
+    </message>
+    <message>
+        <source>Compax3 drive at address %1</source>
+        <translation>Compax3-Antrieb an Adresse %1</translation>
+    </message>
+    <message>
+        <source>%1: the axis moves (%2)</source>
+        <translation>%1: die Achse fährt (%2)</translation>
+    </message>
+    <message>
+        <source>%1: the axis is powered</source>
+        <translation>%1: die Achse ist bestromt</translation>
     </message>
 </context>
 <context>
@@ -8923,6 +9575,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>not an object of name, group and help</source>
         <translation>kein Objekt aus name, group und help</translation>
     </message>
+    <message>
+        <source>%1 is a control word: a file never starts or stops the axis (use the Motion page or c3 enable/jog/move/stop)</source>
+        <translation>%1 ist ein Steuerwort: eine Datei startet oder stoppt die Achse nie (Seite Bewegung oder c3 enable/jog/move/stop benutzen)</translation>
+    </message>
+    <message>
+        <source>%1 is a function, not a value: a file never triggers it</source>
+        <translation>%1 ist eine Funktion, kein Wert: eine Datei löst sie nie aus</translation>
+    </message>
+    <message>
+        <source>language of the Compax3 refusals: en</source>
+        <translation>de</translation>
+    </message>
+    <message>
+        <source>object %1 both with a value and absent</source>
+        <translation>Objekt %1 zugleich mit Wert und als fehlend</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -9186,10 +9854,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>read everything</source>
         <translation>alles gelesen</translation>
-    </message>
-    <message>
-        <source>Settings: the device does not know %1; they are not in the project.</source>
-        <translation>Einstellungen: das Gerät kennt %1 nicht; sie sind nicht im Projekt.</translation>
     </message>
     <message>
         <source>reading program %1</source>
@@ -9587,10 +10251,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Objekte werden verglichen</translation>
     </message>
     <message>
-        <source>the file is from a drive of type %1 (&quot;%2&quot;), the connected drive is of type %3 (&quot;%4&quot;): nothing was written. Restore it with --force (GUI: &quot;Write to another type&quot;) only if you know the objects mean the same on both</source>
-        <translation>die Datei stammt von einem Antrieb des Typs %1 („%2“), der verbundene Antrieb ist vom Typ %3 („%4“): nichts wurde geschrieben. Stellen Sie sie mit --force (GUI: „In einen anderen Antriebstyp schreiben“) nur wieder her, wenn Sie wissen, dass die Objekte in beiden dasselbe bedeuten</translation>
-    </message>
-    <message>
         <source>the file&apos;s value of %1 cannot be written: %2. Nothing was written</source>
         <translation>der Wert von %1 in der Datei kann nicht geschrieben werden: %2. Nichts wurde geschrieben</translation>
     </message>
@@ -9611,12 +10271,232 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Geschrieben</translation>
     </message>
     <message>
-        <source>store the sets in the drive&apos;s flash (1904.1 = $32)</source>
-        <translation>die Sätze im Flash des Antriebs speichern (1904.1 = $32)</translation>
-    </message>
-    <message>
         <source>not stored, because not every object was written</source>
         <translation>nicht gespeichert, weil nicht jedes Objekt geschrieben wurde</translation>
+    </message>
+    <message>
+        <source>%1 was not sent: the check only reads</source>
+        <translation>%1 wurde nicht gesendet: die Prüfung liest nur</translation>
+    </message>
+    <message>
+        <source>%1 %2 was not loaded: %3</source>
+        <translation>%1 %2 wurde nicht geladen: %3</translation>
+    </message>
+    <message>
+        <source>no family&apos;s check takes %1</source>
+        <translation>die Prüfung keiner Gerätefamilie nimmt %1</translation>
+    </message>
+    <message>
+        <source>There is no check for %1 devices yet.</source>
+        <translation>Für %1-Geräte gibt es noch keine Prüfung.</translation>
+    </message>
+    <message>
+        <source>%1 is a table of %2 devices; the device connected is a %3 device: leave the option out</source>
+        <translation>%1 ist eine Tabelle für %2-Geräte; das verbundene Gerät ist ein %3-Gerät: lassen Sie die Option weg</translation>
+    </message>
+    <message>
+        <source>this device has no analogue outputs</source>
+        <translation>dieses Gerät hat keine Analogausgänge</translation>
+    </message>
+    <message>
+        <source>this device has analogue outputs 1..%1 only</source>
+        <translation>dieses Gerät hat nur die Analogausgänge 1..%1</translation>
+    </message>
+    <message>
+        <source>%1; its base points are not written</source>
+        <translation>%1; seine Stützpunkte werden nicht geschrieben</translation>
+    </message>
+    <message>
+        <source>Settings the device does not know, not read: %1.</source>
+        <translation>Einstellungen, die das Gerät nicht kennt, nicht gelesen: %1.</translation>
+    </message>
+    <message>
+        <source>Analogue cams: this device has no analogue outputs, so it has no analogue cams.</source>
+        <translation>Analognocken: Dieses Gerät hat keine Analogausgänge, also auch keine Analognocken.</translation>
+    </message>
+    <message>
+        <source>There is no check for the protocol %1 yet.</source>
+        <translation>Für das Protokoll %1 gibt es noch keine Prüfung.</translation>
+    </message>
+    <message>
+        <source>it asks with a text</source>
+        <translation>es fragt mit einem Text</translation>
+    </message>
+    <message>
+        <source>the device does not know it (:Z): %1</source>
+        <translation>das Gerät kennt es nicht (:Z): %1</translation>
+    </message>
+    <message>
+        <source>it answered ERR %1 when asked with 0</source>
+        <translation>es antwortete ERR %1 auf die Frage mit 0</translation>
+    </message>
+    <message>
+        <source>the device stopped answering</source>
+        <translation>das Gerät antwortet nicht mehr</translation>
+    </message>
+    <message>
+        <source>%1 is answered as manual %2 reads%3</source>
+        <translation>%1 wird so beantwortet, wie wir Handbuch %2 lesen%3</translation>
+    </message>
+    <message>
+        <source> (provisional format)</source>
+        <translation> (vorläufiges Format)</translation>
+    </message>
+    <message>
+        <source>a request under a new block number is answered, and so is a repeat of that number (with the last reply, not executed again)</source>
+        <translation>eine Anfrage mit neuer Blocknummer wird beantwortet, ebenso eine Wiederholung dieser Nummer (mit der letzten Antwort, nicht noch einmal ausgeführt)</translation>
+    </message>
+    <message>
+        <source>no answer under block numbers %1 (of %2, %2, %3)</source>
+        <translation>keine Antwort unter den Blocknummern %1 (von %2, %2, %3)</translation>
+    </message>
+    <message>
+        <source>every user in the bus&apos;s table gets the token within a second (P11: each answers within T = 10 ms)</source>
+        <translation>jeder Teilnehmer in der Tabelle des Busses erhält das Token innerhalb einer Sekunde (P11: jeder antwortet innerhalb T = 10 ms)</translation>
+    </message>
+    <message>
+        <source>not a Cam-BUS line</source>
+        <translation>keine Cam-BUS-Leitung</translation>
+    </message>
+    <message>
+        <source>no token heard in %1 ms</source>
+        <translation>in %1 ms kein Token gehört</translation>
+    </message>
+    <message>
+        <source>%1 tokens in %2 ms</source>
+        <translation>%1 Token in %2 ms</translation>
+    </message>
+    <message>
+        <source>%1; users %2 did not get the token</source>
+        <translation>%1; die Teilnehmer %2 erhielten das Token nicht</translation>
+    </message>
+    <message>
+        <source>area %1 word %2 can be read: %3</source>
+        <translation>Bereich %1 Wort %2 ist lesbar: %3</translation>
+    </message>
+    <message>
+        <source> (provisional: %1)</source>
+        <translation> (vorläufig: %1)</translation>
+    </message>
+    <message>
+        <source>area 203 word 38 holds the number of analogue outputs (0..14), and only their areas 241.. exist</source>
+        <translation>Bereich 203 Wort 38 enthält die Anzahl der Analogausgänge (0..14), und nur deren Bereiche ab 241 gibt es</translation>
+    </message>
+    <message>
+        <source>it says %1</source>
+        <translation>es meldet %1</translation>
+    </message>
+    <message>
+        <source>this variant of the protocol cannot address the word</source>
+        <translation>diese Variante des Protokolls kann das Wort nicht adressieren</translation>
+    </message>
+    <message>
+        <source>the variant shows in RDVAR&apos;s width, then in SYSDATA or RDBLOCK being answered</source>
+        <translation>die Variante zeigt sich an der Breite von RDVAR, dann daran, ob SYSDATA oder RDBLOCK beantwortet wird</translation>
+    </message>
+    <message>
+        <source>RDVAR answers 24 bits on an MC100 and 32 bits on an MC200, two&apos;s complement (P3)</source>
+        <translation>RDVAR antwortet auf einer MC100 mit 24 Bit, auf einer MC200 mit 32 Bit, im Zweierkomplement (P3)</translation>
+    </message>
+    <message>
+        <source>flag Mn read by itself and bit n-1 of the flags&apos; external RAM page agree</source>
+        <translation>Merker Mn einzeln gelesen und Bit n-1 der externen RAM-Seite der Merker stimmen überein</translation>
+    </message>
+    <message>
+        <source>read by themselves, %1 differ from the page (or changed between the reads)</source>
+        <translation>einzeln gelesen weichen %1 von der Seite ab (oder änderten sich zwischen den Lesevorgängen)</translation>
+    </message>
+    <message>
+        <source>inputs E1..E8 and outputs A1..A8 are read at the addresses of tables 47/48 and answered</source>
+        <translation>die Eingänge E1..E8 und Ausgänge A1..A8 werden an den Adressen der Tabellen 47/48 gelesen und beantwortet</translation>
+    </message>
+    <message>
+        <source>RDTABLE answers for each logical axis 1..8 the controller has (logical n is physical n-1)</source>
+        <translation>RDTABLE antwortet für jede logische Achse 1..8, die die Steuerung hat (logisch n ist physisch n-1)</translation>
+    </message>
+    <message>
+        <source>this variant has no axis telegrams</source>
+        <translation>diese Variante hat keine Achstelegramme</translation>
+    </message>
+    <message>
+        <source>axes %1 (%2)</source>
+        <translation>Achsen %1 (%2)</translation>
+    </message>
+    <message>
+        <source>the axis parameter table in use (%1)</source>
+        <translation>die verwendete Achsparametertabelle (%1)</translation>
+    </message>
+    <message>
+        <source>the controller has no axes (%1)</source>
+        <translation>die Steuerung hat keine Achsen (%1)</translation>
+    </message>
+    <message>
+        <source>the %1 of axis %2 is RDSTAT parameter %3 (0x%4)</source>
+        <translation>der Wert %1 der Achse %2 ist RDSTAT-Parameter %3 (0x%4)</translation>
+    </message>
+    <message>
+        <source>the %1 of axis %2 (the table names no parameter for it)</source>
+        <translation>der Wert %1 der Achse %2 (die Tabelle nennt keinen Parameter dafür)</translation>
+    </message>
+    <message>
+        <source>not in the table, not read</source>
+        <translation>nicht in der Tabelle, nicht gelesen</translation>
+    </message>
+    <message>
+        <source>answered %1</source>
+        <translation>antwortete %1</translation>
+    </message>
+    <message>
+        <source>%1: file: not on the drive it was read from, drive %2 (left as it is)</source>
+        <translation>%1: Datei: nicht auf dem Antrieb, von dem sie gelesen wurde, Antrieb %2 (bleibt, wie er ist)</translation>
+    </message>
+    <message>
+        <source>not on this drive</source>
+        <translation>nicht auf diesem Antrieb</translation>
+    </message>
+    <message>
+        <source>the file is from a drive of type %1 (&quot;%2&quot;), the connected drive is of type %3 (&quot;%4&quot;): nothing was written. Restore it with --force (GUI: &quot;Write to another drive type&quot;) only if you know the objects mean the same on both</source>
+        <translation>die Datei stammt von einem Antrieb des Typs %1 („%2“), der verbundene Antrieb ist vom Typ %3 („%4“): nichts wurde geschrieben. Stellen Sie sie mit --force (GUI: „In einen anderen Antriebstyp schreiben“) nur wieder her, wenn Sie wissen, dass die Objekte in beiden dasselbe bedeuten</translation>
+    </message>
+    <message>
+        <source>store set %1 in the drive&apos;s flash (1904.%1 = $32)</source>
+        <translation>Satz %1 im Flash des Antriebs speichern (1904.%1 = $32)</translation>
+    </message>
+    <message>
+        <source>not on this drive (%1): not written</source>
+        <translation>nicht auf diesem Antrieb (%1): nicht geschrieben</translation>
+    </message>
+    <message>
+        <source>store the sets in the drive&apos;s flash (1904.n = $32)</source>
+        <translation>die Sätze im Flash des Antriebs speichern (1904.n = $32)</translation>
+    </message>
+    <message>
+        <source>the info string (_?) starts with &quot;Compax3&quot; and its second word is the drive type (C7)</source>
+        <translation>der Info-String (_?) beginnt mit &quot;Compax3&quot;, und sein zweites Wort ist der Gerätetyp (C7)</translation>
+    </message>
+    <message>
+        <source>O1.4 and O1,4 name the same object (the manual writes &apos;,&apos;, the public client &apos;.&apos;)</source>
+        <translation>O1.4 und O1,4 bezeichnen dasselbe Objekt (das Handbuch schreibt &apos;,&apos;, der öffentliche Client &apos;.&apos;)</translation>
+    </message>
+    <message>
+        <source>O1,4 answered %1, O1.4 answered %2</source>
+        <translation>O1,4 antwortete %1, O1.4 antwortete %2</translation>
+    </message>
+    <message>
+        <source>a whole number asked for in hex ($) is answered with its $ (C8)</source>
+        <translation>eine hexadezimal ($) erfragte ganze Zahl wird mit ihrem $ beantwortet (C8)</translation>
+    </message>
+    <message>
+        <source>an object the drive lacks is refused with !%1 (C5)</source>
+        <translation>ein Objekt, das der Antrieb nicht hat, wird mit !%1 abgelehnt (C5)</translation>
+    </message>
+    <message>
+        <source>a text asked for in hex is refused with !0006 (C5, C8)</source>
+        <translation>ein hexadezimal erfragter Text wird mit !0006 abgelehnt (C5, C8)</translation>
+    </message>
+    <message>
+        <source>object %1 (%2) exists and is %3</source>
+        <translation>Objekt %1 (%2) existiert und ist %3</translation>
     </message>
 </context>
 </TS>

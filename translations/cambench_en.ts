@@ -1123,6 +1123,14 @@
         <source>Analogue output %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>this device has no analogue outputs, so it has no analogue cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this device has analogue outputs 1..%1 only</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::AsciiSettingsWidget</name>
@@ -1702,6 +1710,10 @@ Erase and restore now?</translation>
         <source>Timing tables at the speed (%1); 0 leaves them out:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The start pages are read from it; the rest says &quot;not read&quot; until Read everything or Compare.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CamDiagramWidget</name>
@@ -2152,6 +2164,33 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::CheckReportDialog</name>
+    <message>
+        <source>%1 held, %2 refuted, %3 could not tell (%4 requests sent, all reading). Save the report and send it back, so that our tables can be corrected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check this device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the check report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check report (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The check did not run to its end: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::CommissioningReport</name>
     <message>
         <source>Commissioning report</source>
@@ -2271,10 +2310,6 @@ Erase and restore now?</translation>
     <message>
         <source>0 … %1</source>
         <translation>0 … %1</translation>
-    </message>
-    <message>
-        <source>not read</source>
-        <translation>not read</translation>
     </message>
     <message>
         <source>Not read from the device: its content is unknown.</source>
@@ -2440,6 +2475,10 @@ Erase and restore now?</translation>
         <source>Warnings at this speed: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>not read from this device</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::CompareDialog</name>
@@ -2530,6 +2569,14 @@ Erase and restore now?</translation>
     <message>
         <source>Changed on the device since it was last read (%1)</source>
         <translation>Changed on the device since it was last read (%1)</translation>
+    </message>
+    <message>
+        <source>The edits hold a copy of the values of %1, made when this device came on the line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copy to write</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2738,6 +2785,13 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Compax3Gui</name>
+    <message>
+        <source>Use dictionary</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::Compax3MotionPage</name>
     <message>
         <source>Motion</source>
@@ -2749,10 +2803,6 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>0 (homing)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stops the axis with its ramp (control word 1) and drops what waits for the line. Escape does the same.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2812,10 +2862,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (stale: the connection was lost)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation type="unfinished">%1: %2</translation>
     </message>
@@ -2840,18 +2886,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>STOP</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>STOP did not reach the drive: %1. Use the machine&apos;s emergency stop.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>STOP acknowledged by the drive; now %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Enable</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2861,6 +2895,66 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stops the drive and drops what waits for the line: the STOP above every page. Escape does the same.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode (1905.n):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion is off while the STOP cannot reach the drive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
+    </message>
+    <message>
+        <source>Read set %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set %1 not read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (as on the drive)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished">%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Set %1 is not read from the drive yet: reading it; start it then.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3 (written first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 (as on the drive)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration and deceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode (1905.%1): %2 (as on the drive)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2932,6 +3026,22 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>Type a new value (decimal point: 12.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not on this drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typed in, but the dictionary in use refuses it: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3091,6 +3201,27 @@ Erase and restore now?</translation>
             <numerusform>%n values typed in, not on the drive yet: Write changes sends them.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The loaded dictionary refuses %n typed value(s); they stay typed in and are not written until corrected: %1</source>
+        <translation>
+            <numerusform>The loaded dictionary refuses %n typed value; it stays typed in and is not written until corrected: %1</numerusform>
+            <numerusform>The loaded dictionary refuses %n typed values; they stay typed in and are not written until corrected: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n object(s) are not on this drive (greyed).</source>
+        <translation>
+            <numerusform>%n object is not on this drive (greyed).</numerusform>
+            <numerusform>%n objects are not on this drive (greyed).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Nothing was written: the dictionary in use refuses %n typed value(s) (they stay typed in; correct or clear them): %1</source>
+        <translation>
+            <numerusform>Nothing was written: the dictionary in use refuses %n typed value (it stays typed in; correct or clear it): %1</numerusform>
+            <numerusform>Nothing was written: the dictionary in use refuses %n typed values (they stay typed in; correct or clear them): %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::Compax3Page</name>
@@ -3111,10 +3242,6 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>Write to another drive type</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Store the sets in the drive&apos;s flash afterwards (1904.1 = $32)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3255,6 +3382,26 @@ Erase and restore now?</translation>
         <source>To replace a drive: save the old drive&apos;s parameters to a file (or take one saved before), connect the new drive, compare it with the file, then write the differences and store the sets.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Store the written sets in the drive&apos;s flash afterwards (1904.n = $32)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not on this drive (recorded in the file as absent): %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Never saved, being control words or functions: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not on the file&apos;s drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not compared, being control words or functions a file never writes: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::Compax3SettingsWidget</name>
@@ -3302,10 +3449,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (stale: the connection was lost)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Acknowledge</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3314,15 +3457,23 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The drive is switched off and on again; it holds its position with power afterwards. Make sure nobody is at the axis.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Not acknowledged: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Acknowledged; last error now: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished">%1 (%2)</translation>
+    </message>
+    <message>
+        <source>A powerless drive is switched off and on again; it holds its position with power afterwards. A powered drive is left as it is (nothing is sent). Make sure nobody is at the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledged by the drive; %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3370,10 +3521,6 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>refused</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stale: the connection was lost after this was read.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3628,6 +3775,10 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Cam-BUS (RS485 token bus)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Reconnect to reach device %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -3766,6 +3917,10 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Largest dead time: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Not read from this device yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::DeadTimesModel</name>
@@ -3850,6 +4005,92 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     </message>
 </context>
 <context>
+    <name>cambench::DeviceChange</name>
+    <message>
+        <source>Program %1, output %2: %3 (read from %4: %5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program %1, output %2: %3 (not read from a device)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program %1 name: &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 name: &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output %1 dead time: %2 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Setting: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Users: %1 changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC network %1</source>
+        <translation type="unfinished">PLC network %1</translation>
+    </message>
+    <message>
+        <source>Output %1 dead-time mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue output %1 cams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EEPROM lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamCon %1, device %2, %3 cams programmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device</source>
+        <translation type="unfinished">the device</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DeviceChangeDialog</name>
+    <message>
+        <source>Another device answers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another device answers: %1. The values shown were read from %2, and you changed %3 of them. What shall this device&apos;s values be?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take the values of %1 (your changes are dropped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep my changes, each applied to the values of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copy the programs and sections of %1 (with your changes) to %2: written only when you write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Your changes:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::DeviceChanges</name>
     <message>
         <source>%1: %2 → %3</source>
@@ -3883,15 +4124,19 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
 <context>
     <name>cambench::DeviceCheck</name>
     <message>
-        <source>CamCon %1, device number %2, %3 cams programmed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Check which device answers</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Another device answers (%1) than the one the values shown as on the device were read from (%2). Nothing read from that one is shown as this device&apos;s any more: the start pages are read again, the rest says &quot;not read&quot; until Read everything or Compare. Your edits are kept and count as not written.</source>
+        <source>Another device answers: nothing read from %1 is shown as this one&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Your changes (%1) stay, not written yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A copy of that device&apos;s values waits to be written.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3951,6 +4196,14 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     <message>
         <source>Connected to %1</source>
         <translation>Connected to %1</translation>
+    </message>
+    <message>
+        <source>Connect to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation type="unfinished">Disconnect</translation>
     </message>
 </context>
 <context>
@@ -4175,6 +4428,34 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>Not polled now; values of %1</source>
         <translation>Not polled now; values of %1</translation>
     </message>
+    <message>
+        <source>Paused (%1); values of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation type="unfinished">not read</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer since %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paused, read %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paused (%1), read %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::MainWindow</name>
@@ -4246,10 +4527,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation>Not connected: %1</translation>
     </message>
     <message>
-        <source>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</source>
-        <translation>Connection re-established. Your edits are unchanged; Compare with device reads what the device holds now.</translation>
-    </message>
-    <message>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -4309,6 +4586,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>&amp;Tools</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Connection re-established: the same device answers. Your edits are unchanged; Compare with device reads what the device holds now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connection re-established, but another device answers on this port: see the note at the top.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Check this device…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1AxesPage</name>
@@ -4322,10 +4615,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Axis </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stops every axis with the maximum ramp and drops what waits for the line. Escape does the same.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4369,10 +4658,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Position %1 · target %2 · %3 · %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>homed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4413,19 +4698,99 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Sent: %1. Now %2.</source>
+        <source>Stops every axis and drops what waits for the line: the STOP above every page. Escape does the same.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>STOP</source>
+        <source>Moves are off while the STOP cannot reach the %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>STOP sent to every axis; each acknowledged it.</source>
+        <source>axis %1 is jogging %2 (now at %3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>STOP did not reach every axis: %1. Use the machine&apos;s emergency stop.</source>
+        <source>Find axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Which axes the controller has could not be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller has no axes (%1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axes %1 (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position %1 · %2 · %3 · %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jogging %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation type="unfinished">Not read: %1</translation>
+    </message>
+    <message>
+        <source>Done: %1 (the controller acknowledged it). Now %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the speed of axis %1 to %2 on the %3?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller moves the axis at this speed from now on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1AxisParametersBox</name>
+    <message>
+        <source>Load parameter table…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A CSV file of name,axis,parameter lines (name: position, target or status) from the controller&apos;s MC-1B manual: the RDSTAT parameter numbers of its axes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load parameter table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was not loaded: %2
+The table in use stays: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The table loaded last (%1) could not be read again: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use parameter table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis parameter numbers: provisional (%1). Positions and states read through them are not facts: load the controller&apos;s parameter table.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis parameter numbers: from %1.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4500,6 +4865,13 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Written at %1, but the bytes read back differ.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::Mc1Page</name>
+    <message>
+        <source>Done: %1 (the controller acknowledged it). Reading back failed: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4605,10 +4977,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Control</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Start</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4660,6 +5028,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>Done: %1. PLC program %2.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Control (each asks first)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1SettingsWidget</name>
@@ -4677,6 +5049,18 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Controller:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>found by asking the controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Empty: an MC200 is asked which axes it has (RDTABLE), and STOP goes to each of them. Axis numbers such as 1,2 name them instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axes:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4834,6 +5218,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
             <numerusform>%n variables from %1; values shown as in the file until read.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is not a whole number: V%2 was not written.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::Mc1WatchModel</name>
@@ -4879,6 +5267,14 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>from the file, not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>restored from last session, not read yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on the controller: %1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5137,6 +5533,90 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>unknown now; at %1: %2</source>
         <translation>unknown now; at %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MotionLeaveQuestion</name>
+    <message>
+        <source>On the device something moves or is powered:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamBench could not tell whether something on the device moves or is powered.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP, then %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 without stopping</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The STOP was not acknowledged everywhere, so CamBench stays connected and STOP can be pressed again. Use the machine&apos;s emergency stop.
+
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MotionStop</name>
+    <message>
+        <source>STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ask what moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not connected: the STOP was not sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it has nothing CamBench can stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device is not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device has nothing CamBench can stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no report of the STOP within %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP acknowledged by every axis and drive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP NOT acknowledged everywhere – use the machine&apos;s emergency stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: acknowledged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: NOT acknowledged – use the machine&apos;s emergency stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing answered the STOP – use the machine&apos;s emergency stop</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -5827,6 +6307,27 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>Encoder &amp; system</source>
         <translation>Encoder &amp; system</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::StopBar</name>
+    <message>
+        <source>STOP (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 does the same from every page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP sent…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2
+%3</source>
+        <translation type="unfinished">%1 %2
+%3</translation>
     </message>
 </context>
 <context>
@@ -7763,30 +8264,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>syntax error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no such object</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the object is read-only</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the value is outside the object&apos;s range</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not possible in the drive&apos;s state</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the value has the wrong type</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>the drive refused %1 with %2 (an error number CamBench does not know: see the drive&apos;s manual)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -8088,6 +8565,182 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>device %1&apos;s receive queue stayed full for %2 s (it refused the request %3 times); the request was not sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not sent: dropped by STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the number of analogue outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device says it has %1 analogue outputs (area 203 word 38); the manual allows 0..%2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamBench&apos;s built-in guess (comm/mc1/README.md), not the controller&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected name,axis,parameter (3 fields), found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the name must be position, target or status, not &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis must be %1 to %2, not &quot;%3&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the parameter must be 0 to 65535 (or 0x0000 to 0xFFFF), not &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 of axis %2 is named a second time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no name,axis,parameter line: the file holds no parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (provisional parameter numbers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axes are numbers %1 to %2 separated by commas (1,2,5); &quot;%3&quot; is not one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no axis given: name them like 1,2,5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>as given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none: the %1 has no axis telegrams (they need an MC200 V2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>found with RDTABLE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the parameter table (%1) names no %2 parameter for axis %3: load a table that names it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller refused RDSTAT of parameter %1 (0x%2), the %3 of axis %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: that number is CamBench&apos;s guess, not the controller&apos;s; load the controller&apos;s parameter table (name,axis,parameter; --parameters FILE, or Load parameter table… on the Axes page)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: check the parameter table %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller has no axis %1: its axes are %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">none</translation>
+    </message>
+    <message>
+        <source>no answer to &quot;%1&quot; (%2). Read back: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no stop was sent: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the axis back failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (the controller&apos;s axes could not be read: %1; it may have no axis %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not acknowledged: %1; %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller has no axes (%1): nothing to stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1 moves (provisional parameter numbers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1 moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none: the MC100&apos;s ASCII protocol has no axis requests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>absolute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the state could not be read back afterwards: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive is powered already: nothing was sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive is powered with an error pending (%1): nothing was sent, because acknowledging it drops power; stop the axis, Disable, then Enable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compax3 drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compax3 drive at address %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the axis moves (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the axis is powered</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -8921,6 +9574,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>not an object of name, group and help</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 is a control word: a file never starts or stops the axis (use the Motion page or c3 enable/jog/move/stop)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a function, not a value: a file never triggers it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>language of the Compax3 refusals: en</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>object %1 both with a value and absent</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -9184,10 +9853,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>read everything</source>
         <translation>read everything</translation>
-    </message>
-    <message>
-        <source>Settings: the device does not know %1; they are not in the project.</source>
-        <translation>Settings: the device does not know %1; they are not in the project.</translation>
     </message>
     <message>
         <source>reading program %1</source>
@@ -9585,10 +10250,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>the file is from a drive of type %1 (&quot;%2&quot;), the connected drive is of type %3 (&quot;%4&quot;): nothing was written. Restore it with --force (GUI: &quot;Write to another type&quot;) only if you know the objects mean the same on both</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>the file&apos;s value of %1 cannot be written: %2. Nothing was written</source>
         <translation type="unfinished"></translation>
     </message>
@@ -9609,11 +10270,231 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>store the sets in the drive&apos;s flash (1904.1 = $32)</source>
+        <source>not stored, because not every object was written</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>not stored, because not every object was written</source>
+        <source>%1 was not sent: the check only reads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 was not loaded: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no family&apos;s check takes %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no check for %1 devices yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a table of %2 devices; the device connected is a %3 device: leave the option out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this device has no analogue outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this device has analogue outputs 1..%1 only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; its base points are not written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settings the device does not know, not read: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analogue cams: this device has no analogue outputs, so it has no analogue cams.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no check for the protocol %1 yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it asks with a text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device does not know it (:Z): %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it answered ERR %1 when asked with 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device stopped answering</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is answered as manual %2 reads%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (provisional format)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a request under a new block number is answered, and so is a repeat of that number (with the last reply, not executed again)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer under block numbers %1 (of %2, %2, %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every user in the bus&apos;s table gets the token within a second (P11: each answers within T = 10 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Cam-BUS line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no token heard in %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 tokens in %2 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; users %2 did not get the token</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>area %1 word %2 can be read: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (provisional: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>area 203 word 38 holds the number of analogue outputs (0..14), and only their areas 241.. exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it says %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this variant of the protocol cannot address the word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the variant shows in RDVAR&apos;s width, then in SYSDATA or RDBLOCK being answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RDVAR answers 24 bits on an MC100 and 32 bits on an MC200, two&apos;s complement (P3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flag Mn read by itself and bit n-1 of the flags&apos; external RAM page agree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read by themselves, %1 differ from the page (or changed between the reads)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inputs E1..E8 and outputs A1..A8 are read at the addresses of tables 47/48 and answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RDTABLE answers for each logical axis 1..8 the controller has (logical n is physical n-1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this variant has no axis telegrams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axes %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis parameter table in use (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller has no axes (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 of axis %2 is RDSTAT parameter %3 (0x%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 of axis %2 (the table names no parameter for it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in the table, not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>answered %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: file: not on the drive it was read from, drive %2 (left as it is)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not on this drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is from a drive of type %1 (&quot;%2&quot;), the connected drive is of type %3 (&quot;%4&quot;): nothing was written. Restore it with --force (GUI: &quot;Write to another drive type&quot;) only if you know the objects mean the same on both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>store set %1 in the drive&apos;s flash (1904.%1 = $32)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not on this drive (%1): not written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>store the sets in the drive&apos;s flash (1904.n = $32)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the info string (_?) starts with &quot;Compax3&quot; and its second word is the drive type (C7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>O1.4 and O1,4 name the same object (the manual writes &apos;,&apos;, the public client &apos;.&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>O1,4 answered %1, O1.4 answered %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a whole number asked for in hex ($) is answered with its $ (C8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an object the drive lacks is refused with !%1 (C5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a text asked for in hex is refused with !0006 (C5, C8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>object %1 (%2) exists and is %3</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
