@@ -4777,7 +4777,8 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>%1 was not loaded: %2
 The table in use stays: %3</source>
-        <translation>%1 wurde nicht geladen: %2\nDie verwendete Tabelle bleibt: %3</translation>
+        <translation>%1 wurde nicht geladen: %2
+Die verwendete Tabelle bleibt: %3</translation>
     </message>
     <message>
         <source>The table loaded last (%1) could not be read again: %2</source>
@@ -5559,7 +5560,9 @@ The table in use stays: %3</source>
         <source>The STOP was not acknowledged everywhere, so CamBench stays connected and STOP can be pressed again. Use the machine&apos;s emergency stop.
 
 %1</source>
-        <translation>Der STOPP wurde nicht überall quittiert; CamBench bleibt deshalb verbunden, und STOPP kann erneut gedrückt werden. Betätigen Sie den Not-Halt der Maschine.\n\n%1</translation>
+        <translation>Der STOPP wurde nicht überall quittiert; CamBench bleibt deshalb verbunden, und STOPP kann erneut gedrückt werden. Betätigen Sie den Not-Halt der Maschine.
+
+%1</translation>
     </message>
 </context>
 <context>
@@ -6328,7 +6331,8 @@ The table in use stays: %3</source>
     <message>
         <source>%1 %2
 %3</source>
-        <translation>%1 %2\n%3</translation>
+        <translation>%1 %2
+%3</translation>
     </message>
 </context>
 <context>

@@ -395,7 +395,7 @@ private Q_SLOTS:
         QVERIFY2(line->text().startsWith(QLatin1String("Live")), qPrintable(line->text()));
         QVERIFY(!lampGrey(status, 10));
 
-        QSignalSpy started(&shell->session()->worker(), &comm::CommWorker::jobStarted);
+        QSignalSpy started(&shell->session()->worker(), &comm::JobRunner::jobStarted);
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("drive.json"));
         Compax3ParametersPage* parameters = c3->parametersPage();
@@ -443,7 +443,7 @@ private Q_SLOTS:
         // (released also when a check fails, so that the worker can stop).
         QSemaphore gate;
         auto release = qScopeGuard([&gate] { gate.release(); });
-        QSignalSpy started(&shell->session()->worker(), &comm::CommWorker::jobStarted);
+        QSignalSpy started(&shell->session()->worker(), &comm::JobRunner::jobStarted);
         shell->session()->worker().submit(comm::JobPriority::User, QStringLiteral("hold"),
                                           [&gate](comm::JobContext&) { gate.acquire(); });
         QVERIFY(QTest::qWaitFor([&] { return jobStarted(started, QStringLiteral("hold")); },

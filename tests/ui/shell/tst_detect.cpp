@@ -183,7 +183,7 @@ private Q_SLOTS:
         ConnectionPage* page = shell->window()->connectionPage();
         NextDialog<QMessageBox> yes(
             [](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
-        QSignalSpy started(&session->worker(), &comm::CommWorker::jobStarted);
+        QSignalSpy started(&session->worker(), &comm::JobRunner::jobStarted);
         page->findChild<QPushButton*>(QStringLiteral("detectButton"))->click();
         QCOMPARE(yes.answered(), 1);
         QCOMPARE(asked, QStringList({QStringLiteral("Disconnect")}));
@@ -191,7 +191,7 @@ private Q_SLOTS:
         QTest::qWait(0);
         QCOMPARE(session->state(), comm::ConnectionState::Connected);
         QVERIFY(session->wantsConnection());
-        QVERIFY(page->detectText().isEmpty());
+        QVERIFY(page->findChild<QLabel*>(QStringLiteral("detectResult"))->text().isEmpty());
         QVERIFY(page->findChild<QPushButton*>(QStringLiteral("detectButton"))->isEnabled());
         for (const QList<QVariant>& job : started)
             QVERIFY2(!job.at(1).toString().startsWith(QLatin1String("Detect")),
