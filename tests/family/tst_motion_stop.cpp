@@ -365,8 +365,14 @@ private Q_SLOTS:
         // Cancelled while the question waits for the answer: the worker is
         // busy with a job that holds the line, so no answer comes in time.
         QSemaphore gate;
+        QSemaphore holding;
         shell->session()->worker().submit(comm::JobPriority::User, QStringLiteral("hold"),
-                                          [&gate](comm::JobContext&) { gate.acquire(); });
+                                          [&gate, &holding](comm::JobContext&) {
+                                              holding.release();
+                                              gate.acquire();
+                                          });
+        // Queued, an Urgent question would go ahead of it: wait until it runs.
+        QVERIFY(holding.tryAcquire(1, kTimeoutMs));
         QString asked;
         NextDialog<QMessageBox> cancel([&asked](QMessageBox* box) {
             asked = box->text();

@@ -59,6 +59,7 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     m_state->setFont(big);
     m_availability->setWordWrap(true);
     m_details->setWordWrap(true);
+    m_details->setObjectName(QStringLiteral("axisDetails"));
 
     // STOP: big, always on the page; the shell's STOP (one implementation),
     // whose key works from every page.

@@ -145,7 +145,12 @@ private Q_SLOTS:
         Mc1AxesPage* axes = mc1->axesPage();
         shell->window()->showPage(axes);
         QVERIFY(QTest::qWaitFor([&] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs));
-        QVERIFY(axes->stateLabel()->text().contains(QLatin1String("stands at")));
+        // The first poll waits behind the search for the controller's axes.
+        QVERIFY2(
+            QTest::qWaitFor(
+                [&] { return axes->stateLabel()->text().contains(QLatin1String("stands at")); },
+                kDeviceTimeoutMs),
+            qPrintable(axes->stateLabel()->text()));
         QVERIFY(!greyed(axes->stateLabel()));
         const auto* freshnessLine = axes->findChild<QLabel*>(QStringLiteral("pageFreshness"));
         QVERIFY(freshnessLine->text().startsWith(QLatin1String("Live")));
