@@ -130,9 +130,12 @@ BackendStep CamBusBackend::poll(qint64 nowMs) {
         return step;
     }
     if (m_blockId && m_turnLimit >= 0 && nowMs >= m_turnLimit) {
-        m_turnLimit = -1;
         const int full = station.fullQueueAnswers(*m_blockId);
-        if (!station.cancel(*m_blockId)) return step;  // it is leaving: its outcome comes
+        // It is leaving: its outcome comes. The limit stays armed, since a
+        // device whose queue is still full sends it back to the queue, and
+        // then the next poll takes it off.
+        if (!station.cancel(*m_blockId)) return step;
+        m_turnLimit = -1;
         m_blockId.reset();
         step.linkFailure = noTurnMessage(full, station.view().users.isEmpty());
     }
