@@ -68,7 +68,7 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
         tr("Stops every axis and drops what waits for the line: the STOP above "
            "every page. Escape does the same."));
     // Moves are offered only while the STOP can reach the device.
-    useShellStop(m_stop, [this] { factsChanged(); });
+    useShellStop(m_stop, [this] { offerMotion(); });
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_axis);
@@ -131,7 +131,7 @@ int Mc1AxesPage::axis() const {
     return m_axis->value();
 }
 
-void Mc1AxesPage::factsChanged() {
+void Mc1AxesPage::offerMotion() {
     const bool axes = facts().known && facts().has(comm::Mc1Capability::Axes);
     // A move is offered only while the STOP can reach the controller.
     const bool can = axes && session()->motionStop()->armed();
@@ -143,6 +143,11 @@ void Mc1AxesPage::factsChanged() {
                                       .arg(comm::mc1VariantName(facts().variant))
                                 : tr("Moves are off while the STOP cannot reach the %1.")
                                       .arg(comm::mc1VariantName(facts().variant)));
+}
+
+void Mc1AxesPage::factsChanged() {
+    offerMotion();
+    const bool axes = facts().known && facts().has(comm::Mc1Capability::Axes);
     m_parameters->setVisible(axes);
     m_axesFound->setVisible(axes);
     if (axes) {

@@ -50,6 +50,9 @@ private:
     bool confirmCommand(comm::Mc1AxisCommand command, const QString& what, qint32 value);
     // Asks the controller which axes it has; the axis box offers those.
     void findAxes();
+    // Moves offered only while the controller has axes and the STOP can
+    // reach it (called again whenever the STOP's reach changes).
+    void offerMotion();
 
     QSpinBox* m_axis;
     QLabel* m_availability;
