@@ -5,6 +5,7 @@
 #include "pty_simulator.h"
 
 #include "comm/sim/camcon/sim_demo.h"
+#include "comm/sim/sim_tcp_server.h"
 #include "ui/camcon/cam_page.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
@@ -64,6 +65,7 @@ private Q_SLOTS:
     void keptChangesAreOnlyWhatThePersonChanged();
     void aCopyOfTheOldDeviceIsWrittenAsACopy();
     void aMultiuserNumberChangeCarriesOnlyTheChanges();
+    void aDeviceServerWithAnotherCamConBehindIt();
     // Issue 28, point 3.
     void reEstablishedOnlyOnceTheDeviceIdentifiedItself();
 };
@@ -303,6 +305,58 @@ void OtherDeviceTest::aMultiuserNumberChangeCarriesOnlyTheChanges() {
     QCOMPARE(cams->track(0, 2).cams, line.track(0, 2, 5));
     QCOMPARE(camConWorkspace(*shell)->changedCount(), 1);
     QCOMPARE(camConWorkspace(*shell)->info().deviceNumber, 5);
+}
+
+void OtherDeviceTest::aDeviceServerWithAnotherCamConBehindIt() {
+    // The same TCP address (a serial device server) before and after: the
+    // CamCon behind it was replaced by one with another firmware, 16 outputs
+    // and other cams. The line drops, the GUI reconnects to the address by
+    // itself, and the new device's values are the default.
+    comm::SimPortConfig config;
+    config.throttle = false;
+    comm::SimPacer pacer(config.baud, false);
+    std::unique_ptr<comm::SimLine> lineA = comm::makeSimLine(config);
+    auto serverA = std::make_unique<comm::SimTcpServer>(*lineA, pacer);
+    QVERIFY(serverA->listen(0).ok());
+    const quint16 port = serverA->port();
+    const QString address = QStringLiteral("tcp://127.0.0.1:%1").arg(port);
+    auto shell = startOnSimulator(address);
+    QVERIFY(shell);
+    DeviceSession* session = shell->session();
+    session->setRetryInterval(100);
+    QVERIFY(waitForSections(*shell));
+    QCOMPARE(camConWorkspace(*shell)->info().outputs, 32);
+
+    comm::SimProfile replacement;
+    replacement.epromDate = "03.05.2001";
+    replacement.outputs = 16;
+    std::unique_ptr<comm::SimLine> lineB = comm::makeSimLine(config, replacement);
+    comm::fillBenchmarkCams(*lineB->device(0), 2);
+    std::unique_ptr<comm::SimTcpServer> serverB;
+    bool listening = false;
+    const DeviceChange change = changeDevice(
+        *shell,
+        [&] {
+            serverA.reset();  // the device server drops the connection
+            (void)QTest::qWaitFor([session] { return session->isRetrying(); }, kDeviceTimeoutMs);
+            serverB = std::make_unique<comm::SimTcpServer>(*lineB, pacer);
+            listening = serverB->listen(port).ok();
+        },
+        std::nullopt);
+    QVERIFY2(listening, "port taken again by the second device server");
+    QTRY_COMPARE_WITH_TIMEOUT(camConWorkspace(*shell)->info().outputs, 16, kDeviceTimeoutMs);
+    QVERIFY2(change.changes.startsWith(QStringLiteral("Program 0, output 1: 25–60")),
+             qPrintable(change.changes));
+    QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);
+    CamDocument* cams = camConWorkspace(*shell)->cams();
+    QTRY_COMPARE_WITH_TIMEOUT(cams->track(0, 1).cams,
+                              lineB->device(0)->state().cams.track(0, 0), kDeviceTimeoutMs);
+    QCOMPARE(cams->track(0, 16).cams, lineB->device(0)->state().cams.track(0, 15));
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
+    QCOMPARE(session->connection().port, address);
+    QTRY_VERIFY2_WITH_TIMEOUT(stripText(*shell).contains(QStringLiteral("Another device answers")),
+                              qPrintable(stripText(*shell)), kDeviceTimeoutMs);
+    QVERIFY2(stripText(*shell).contains(QStringLiteral("03.05.2001")), qPrintable(stripText(*shell)));
 }
 
 void OtherDeviceTest::reEstablishedOnlyOnceTheDeviceIdentifiedItself() {
