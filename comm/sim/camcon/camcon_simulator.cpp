@@ -85,6 +85,13 @@ QList<QCommandLineOption> camConOptions() {
          QStringLiteral("Analogue outputs 0..14 (default 14); 0: a CamCon without analogue "
                         "outputs, which refuses the analogue cam areas 241..254."),
          QStringLiteral("n")},
+        {QStringLiteral("eprom"),
+         QStringLiteral("Another identity: the firmware date ?EPROM answers (dd.mm.yyyy, default "
+                        "11.10.1994)."),
+         QStringLiteral("date")},
+        {QStringLiteral("outputs"),
+         QStringLiteral("Another size: this many outputs and cam tracks (1..64, default 32)."),
+         QStringLiteral("n")},
         {QStringLiteral("dead-devices"),
          QStringLiteral("These devices of the line never answer, e.g. 5 (the others do)."),
          QStringLiteral("list")},
@@ -186,6 +193,14 @@ Result<SimulatedLine> fromOptions(const QCommandLineParser& parser, const SimHos
         config.analogueOutputs = parser.value(QStringLiteral("analogue-outputs")).toInt(&ok);
         if (!ok || config.analogueOutputs < 0 || config.analogueOutputs > 14)
             return optionError(QStringLiteral("--analogue-outputs needs a number 0..14."));
+    }
+    for (const char* name : {"eprom", "outputs"}) {
+        if (!parser.isSet(QLatin1String(name))) continue;
+        QString expected;
+        const QString value = parser.value(QLatin1String(name));
+        if (!(QByteArray(name) == "eprom" ? applyEpromDate(config, value, &expected)
+                                          : applyOutputs(config, value, &expected)))
+            return optionError(QStringLiteral("--%1 needs %2.").arg(QLatin1String(name), expected));
     }
     if (parser.isSet(QStringLiteral("dead-devices"))) {
         Result<QList<int>> dead = parseDeviceList(parser.value(QStringLiteral("dead-devices")));

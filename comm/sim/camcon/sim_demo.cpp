@@ -103,8 +103,10 @@ SimProfile sizedProfile(const SimPortConfig& config, const SimProfile& profile) 
                      : config.effectiveFraming() == Framing::Multiuser ? 2
                                                                        : 1;
     sized.analogChannels = config.analogueOutputs;
+    if (!config.epromDate.isEmpty()) sized.epromDate = config.epromDate;
+    if (config.outputs > 0) sized.outputs = config.outputs;
     sized.camCapacity =
-        std::max<qint32>(profile.camCapacity, profile.programs * profile.outputs * config.fill);
+        std::max<qint32>(profile.camCapacity, profile.programs * sized.outputs * config.fill);
     return sized;
 }
 

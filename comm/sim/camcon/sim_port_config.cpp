@@ -1,5 +1,6 @@
 #include "sim_port_config.h"
 
+#include <QRegularExpression>
 #include <QStringList>
 
 namespace cambench::comm {
@@ -11,7 +12,7 @@ const QString kKeys = QStringLiteral(
     "devices, display, pcanswer, framing, protocol, baud, corrupt, drop, ignore, dropfirst, nak, "
     "lostdle, collision, "
     "linkfaults, "
-    "delay, seed, throttle, fill, users, analogue, dead");
+    "delay, seed, throttle, fill, users, analogue, dead, eprom, outputs");
 
 // The probabilities a key sets.
 QList<double*> probabilitiesOf(SimFaultSettings& faults, const QString& key) {
@@ -90,6 +91,11 @@ std::optional<Error> applyKey(SimPortConfig& config, const QString& port, const 
         config.analogueOutputs = value.toInt(&ok);
         if (!ok || config.analogueOutputs < 0 || config.analogueOutputs > 14)
             return badValue(port, key, value, QStringLiteral("analogue outputs 0..14"));
+    } else if (key == QLatin1String("eprom") || key == QLatin1String("outputs")) {
+        QString expected;
+        if (!(key == QLatin1String("eprom") ? applyEpromDate(config, value, &expected)
+                                            : applyOutputs(config, value, &expected)))
+            return badValue(port, key, value, expected);
     } else if (key == QLatin1String("seed")) {
         config.faults.seed = value.toUInt(&ok);
         if (!ok) return badValue(port, key, value, QStringLiteral("a whole number"));
@@ -138,6 +144,28 @@ bool applySimProtocol(SimPortConfig& config, const QString& protocol) {
     } else {
         return false;
     }
+    return true;
+}
+
+bool applyEpromDate(SimPortConfig& config, const QString& date, QString* expected) {
+    // The form ?EPROM answers (the manual's example 11.10.1994).
+    static const QRegularExpression form(QStringLiteral("^\\d\\d\\.\\d\\d\\.\\d{4}$"));
+    if (!form.match(date).hasMatch()) {
+        *expected = QStringLiteral("a firmware date dd.mm.yyyy such as 03.05.2001");
+        return false;
+    }
+    config.epromDate = date.toLatin1();
+    return true;
+}
+
+bool applyOutputs(SimPortConfig& config, const QString& outputs, QString* expected) {
+    bool ok = false;
+    const int n = outputs.toInt(&ok);
+    if (!ok || n < 1 || n > 64) {
+        *expected = QStringLiteral("outputs 1..64");
+        return false;
+    }
+    config.outputs = n;
     return true;
 }
 

@@ -35,6 +35,11 @@ struct SimPortConfig {
     // Analogue outputs 0..14 (area 203 word 38); 0: a CamCon without any,
     // whose areas 241..254 answer RK512 error 20.
     int analogueOutputs = 14;
+    // Another identity than the demo device's, for the two different devices
+    // a test or a walk needs: the firmware date (?EPROM, dd.mm.yyyy) and the
+    // number of outputs (?AMAX, cam tracks). Empty / 0: the profile's.
+    QByteArray epromDate;
+    int outputs = 0;
     SimFaultSettings faults;
     QList<int> deadDevices;  // devices of the line that never answer (cambench-sim --dead-devices)
 
@@ -55,11 +60,18 @@ bool applySimProtocol(SimPortConfig& config, const QString& protocol);
 // (standard|multiuser| 3964r-n96|3964r-e38), baud, corrupt (damaged replies), drop (lost replies),
 // ignore (lost requests), dropfirst (the first reply to a request starting so is lost, e.g.
 // !EE0000), nak, lostdle, collision, linkfaults (corrupt, nak, lostdle and collision at once),
-// delay, seed, throttle (0|1), fill, analogue (0..14 analogue outputs), dead (0|1). The baud rate
+// delay, seed, throttle (0|1), fill, analogue (0..14 analogue outputs), dead (0|1), eprom
+// (the firmware date dd.mm.yyyy), outputs (1..64). The baud rate
 // defaults to `serial.baud`. Fails with Usage on an unknown key or a bad value.
 Result<SimPortConfig> parseSimPort(const QString& port, const SerialSettings& serial);
 
 // Device numbers "0,5" -> {0, 5}; each 0..63, no duplicates.
 Result<QList<int>> parseDeviceList(const QString& text);
+
+// Another identity (cambench-sim --eprom/--outputs, sim:eprom=;outputs=):
+// a firmware date "dd.mm.yyyy" and 1..64 outputs; false with the expected
+// form in `expected` otherwise.
+bool applyEpromDate(SimPortConfig& config, const QString& date, QString* expected);
+bool applyOutputs(SimPortConfig& config, const QString& outputs, QString* expected);
 
 }  // namespace cambench::comm

@@ -231,6 +231,14 @@ void TestSimLine::portStringKeys() {
         parseSimPort(QStringLiteral("sim:framing=multiuser;devices=9"), serial);
     QVERIFY(single.ok());
     QCOMPARE(single->effectiveFraming(), Framing::Multiuser);
+
+    // Another identity: the device on the line says it (?EPROM, ?AMAX).
+    Result<SimPortConfig> other =
+        parseSimPort(QStringLiteral("sim:eprom=03.05.2001;outputs=16;throttle=0"), serial);
+    QVERIFY2(other.ok(), qPrintable(other.error().message));
+    const std::unique_ptr<SimLine> line = makeSimLine(*other);
+    QCOMPARE(line->device(0)->profile().epromDate, QByteArray("03.05.2001"));
+    QCOMPARE(line->device(0)->profile().outputs, 16);
 }
 
 void TestSimLine::portStringErrors_data() {
@@ -248,6 +256,10 @@ void TestSimLine::portStringErrors_data() {
                                  << "standard or multiuser";
     QTest::newRow("two devices standard") << "sim:framing=standard;devices=1,2"
                                           << "one device";
+    QTest::newRow("bad firmware date") << "sim:eprom=2001-05-03"
+                                       << "dd.mm.yyyy";
+    QTest::newRow("too many outputs") << "sim:outputs=65"
+                                      << "outputs 1..64";
     QTest::newRow("not sim") << "simulator"
                              << "not a simulator port";
 }

@@ -349,14 +349,15 @@ void OtherDeviceTest::aDeviceServerWithAnotherCamConBehindIt() {
              qPrintable(change.changes));
     QCOMPARE(change.changes.count(QLatin1Char('\n')), 0);
     CamDocument* cams = camConWorkspace(*shell)->cams();
-    QTRY_COMPARE_WITH_TIMEOUT(cams->track(0, 1).cams,
-                              lineB->device(0)->state().cams.track(0, 0), kDeviceTimeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(cams->track(0, 1).cams, lineB->device(0)->state().cams.track(0, 0),
+                              kDeviceTimeoutMs);
     QCOMPARE(cams->track(0, 16).cams, lineB->device(0)->state().cams.track(0, 15));
     QCOMPARE(camConWorkspace(*shell)->changedCount(), 0);
     QCOMPARE(session->connection().port, address);
     QTRY_VERIFY2_WITH_TIMEOUT(stripText(*shell).contains(QStringLiteral("Another device answers")),
                               qPrintable(stripText(*shell)), kDeviceTimeoutMs);
-    QVERIFY2(stripText(*shell).contains(QStringLiteral("03.05.2001")), qPrintable(stripText(*shell)));
+    QVERIFY2(stripText(*shell).contains(QStringLiteral("03.05.2001")),
+             qPrintable(stripText(*shell)));
 }
 
 void OtherDeviceTest::reEstablishedOnlyOnceTheDeviceIdentifiedItself() {
