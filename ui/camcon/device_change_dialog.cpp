@@ -118,22 +118,28 @@ DeviceChangeDialog::DeviceChangeDialog(const QString& oldDevice, const QString& 
     : QDialog(parent) {
     setObjectName(QStringLiteral("deviceChangeDialog"));
     setWindowTitle(tr("Another device answers"));
+    // The two devices are named once, here; the options speak of "the new"
+    // and "the old device" so that each fits on a line (a radio button's
+    // text does not wrap, and the German names made the dialog wider than
+    // the screen).
     auto* intro = new QLabel(
-        tr("Another device answers: %1. The values shown were read from %2, and you changed "
-           "%3 of them. What shall this device's values be?")
-            .arg(newDevice, oldDevice)
+        tr("Another device answers.<br>New device, on the line now: <b>%1</b><br>Old device, "
+           "the values shown were read from it: <b>%2</b><br>You changed %3 of those values. "
+           "What shall the new device's values be?")
+            .arg(newDevice.toHtmlEscaped(), oldDevice.toHtmlEscaped())
             .arg(changes.size()));
+    intro->setTextFormat(Qt::RichText);
     intro->setWordWrap(true);
     m_options.insert(
         CarryOver::Nothing,
-        new QRadioButton(tr("Take the values of %1 (your changes are dropped)").arg(newDevice)));
+        new QRadioButton(tr("Take the new device's values (your changes are dropped)")));
     m_options.insert(
         CarryOver::Changes,
-        new QRadioButton(tr("Keep my changes, each applied to the values of %1").arg(newDevice)));
-    m_options.insert(CarryOver::Everything,
-                     new QRadioButton(tr("Copy the programs and sections of %1 (with your changes) "
-                                         "to %2: written only when you write")
-                                          .arg(oldDevice, newDevice)));
+        new QRadioButton(tr("Keep my changes, each applied to the new device's values")));
+    m_options.insert(
+        CarryOver::Everything,
+        new QRadioButton(tr("Copy the old device's programs and sections (with your "
+                            "changes): written to the new device only when you write")));
     m_options.value(CarryOver::Nothing)->setChecked(true);
     auto* list = new QPlainTextEdit;
     list->setReadOnly(true);
