@@ -67,7 +67,11 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
         tr("Stops the drive and drops what waits for the line: the STOP above "
            "every page. Escape does the same."));
     // Moves are offered only while the STOP can reach the device.
-    useShellStop(m_stop, [this] { factsChanged(); });
+    // A change of the STOP's reach re-decides only whether motions are
+    // offered; the set is read when the drive's facts change. (Reading it
+    // on every change of the STOP's reach sent a Compax3 request to the
+    // CamCon a family switch had just connected.)
+    useShellStop(m_stop, [this] { offerMotion(); });
 
     auto button = [this](const QString& text, const char* name) {
         auto* b = new QPushButton(text);
@@ -130,7 +134,7 @@ QString Compax3MotionPage::axisText() const {
     return m_axis->text();
 }
 
-void Compax3MotionPage::factsChanged() {
+void Compax3MotionPage::offerMotion() {
     const bool known = facts().known;
     // A motion is offered only while the STOP can reach the drive.
     const bool stoppable = session()->motionStop()->armed();
@@ -139,6 +143,11 @@ void Compax3MotionPage::factsChanged() {
         m_axis->setText(tr("No drive connected."));
     else if (!stoppable)
         showResult(tr("Motion is off while the STOP cannot reach the drive."), false);
+}
+
+void Compax3MotionPage::factsChanged() {
+    const bool known = facts().known;
+    offerMotion();
     m_read.reset();
     m_mode->setText(tr("not read"));
     if (known) readSet();

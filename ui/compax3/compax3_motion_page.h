@@ -39,6 +39,8 @@ protected:
     void freshnessChanged() override;
 
 private:
+    // Enables the motions while the drive is known and the STOP reaches it.
+    void offerMotion();
     void finished(const QString& what, const Result<comm::Compax3CommandResult>& result);
     void showSet(const comm::Compax3SetValues& values);
 

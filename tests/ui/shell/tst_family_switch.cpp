@@ -24,6 +24,7 @@
 
 #include <QLabel>
 #include <QPushButton>
+#include <QStatusBar>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -147,6 +148,47 @@ private Q_SLOTS:
                 found = found || (b->text() == QLatin1String(button) && !b->isHidden());
             QVERIFY2(found, button);
         }
+    }
+
+    // From a drive to the CamCon on the same simulated port: the drive's
+    // pages send nothing once another family is chosen (the Motion page
+    // read its set when the STOP's reach changed, as soon as the family
+    // was picked on the connection page, and said "Set 1 not read: the
+    // connection speaks standard" under the CamCon's pages).
+    void aSwitchToTheCamConAsksNothingOfIt() {  // from a Compax3 drive, then from an MC200
+        std::unique_ptr<Shell> shell =
+            startOnSimulator(QStringLiteral("sim"), QStringLiteral("compax3"));
+        QVERIFY(shell);
+        MainWindow* window = shell->window();
+        Compax3Window* c3 = compax3Window(window);
+        QVERIFY(c3 && c3->facts().known);
+        // Every message the status bar showed, also those a later one hid.
+        QStringList messages;
+        connect(window->statusBar(), &QStatusBar::messageChanged, this,
+                [&messages](const QString& message) { messages << message; });
+        const auto nothingSaid = [window, &messages] {
+            const QStringList notRead = messages.filter(QStringLiteral("not read"));
+            QVERIFY2(notRead.isEmpty(), qPrintable(notRead.join('\n')));
+            QVERIFY2(saying(window, QStringLiteral("not read")).isEmpty(),
+                     qPrintable(saying(window, QStringLiteral("not read")).join('\n')));
+        };
+        // The family picked, not yet connected.
+        window->connectionPage()->setProtocol(QStringLiteral("standard"));
+        QTest::qWait(500);  // what a drive page might send has come back
+        nothingSaid();
+        QVERIFY(switchTo(*shell, QStringLiteral("sim"), QStringLiteral("standard")));
+        QTest::qWait(500);
+        QVERIFY(!c3->facts().known);
+        nothingSaid();
+        // The same from an MC200 with its axes.
+        QVERIFY(switchTo(*shell, QStringLiteral("sim:variant=mc200v2"), QStringLiteral("mc1")));
+        messages.clear();
+        window->connectionPage()->setProtocol(QStringLiteral("standard"));
+        QTest::qWait(500);
+        nothingSaid();
+        QVERIFY(switchTo(*shell, QStringLiteral("sim"), QStringLiteral("standard")));
+        QTest::qWait(500);
+        nothingSaid();
     }
 
     // "is lost. the port …": each sentence of a composed message starts
