@@ -6,6 +6,8 @@ target_sources(cambench_model PRIVATE
   result.h
   walked_list.h
   walked_list.cpp
+  machine/machine_file.h
+  machine/machine_file.cpp
   camcon/cam_program.h
   camcon/device_info.h
   camcon/device_info.cpp

@@ -4,9 +4,10 @@
 
 namespace cambench::cli {
 
-int runPorts(CliSession& session, CommandArgs& args);   // port_commands.cpp
-int runDetect(CliSession& session, CommandArgs& args);  // detect_command.cpp
-int runCheck(CliSession& session, CommandArgs& args);   // check_command.cpp
+int runPorts(CliSession& session, CommandArgs& args);    // port_commands.cpp
+int runDetect(CliSession& session, CommandArgs& args);   // detect_command.cpp
+int runCheck(CliSession& session, CommandArgs& args);    // check_command.cpp
+int runMachine(CliSession& session, CommandArgs& args);  // machine_command.cpp
 
 CommandRegistry& CommandRegistry::instance() {
     static CommandRegistry registry;
@@ -52,6 +53,7 @@ void registerShellCommands(CommandRegistry& registry) {
     registry.add({{}, QStringLiteral("ports"), runPorts});
     registry.add({{}, QStringLiteral("detect"), runDetect});
     registry.add({{}, QStringLiteral("check"), runCheck});
+    registry.add({{}, QStringLiteral("machine"), runMachine});
 }
 
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs) {

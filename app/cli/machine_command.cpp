@@ -1,0 +1,112 @@
+// `machine status FILE`: each device of a machine file (model/machine/
+// machine_file.h) reached with its own options, as `cambench-cli --family F
+// --port P ...` would reach it, and asked who it is. Names no family: the
+// device's family and protocol come from the file, checked by the same
+// option parser as the command line's.
+#include "cli_output.h"
+#include "commands.h"
+#include "exit_codes.h"
+
+#include "comm/device/device_connection.h"
+#include "model/file_read.h"
+#include "model/machine/machine_file.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace cambench::cli {
+
+namespace {
+
+struct DeviceStatus {
+    QString name;
+    QString family;
+    QString where;
+    Result<QString> identity = QString();
+};
+
+// The options of `device` as the command line parses them; a wrong family,
+// protocol or value is said naming the device.
+Result<GlobalOptions> deviceOptions(const MachineDevice& device, const QString& file) {
+    Result<GlobalOptions> options =
+        parseGlobalOptions(device.arguments() << QStringLiteral("machine"));
+    if (!options)
+        return Error::invalidData(QStringLiteral("Machine file %1, device %2: %3")
+                                      .arg(file, device.name, options.error().message));
+    return options;
+}
+
+DeviceStatus statusOf(const MachineDevice& device, const GlobalOptions& options) {
+    CliSession session(options);
+    DeviceStatus status{device.name, device.family, session.where()};
+    status.identity = session.run<comm::DeviceConnection, QString>(
+        QStringLiteral("identify %1").arg(device.name),
+        [](comm::DeviceConnection& connection, comm::JobContext&) {
+            return connection.identify();
+        });
+    return status;
+}
+
+QJsonObject statusJson(const DeviceStatus& status) {
+    QJsonObject entry{{QStringLiteral("name"), status.name},
+                      {QStringLiteral("family"), status.family},
+                      {QStringLiteral("port"), status.where}};
+    if (status.identity)
+        entry.insert(QStringLiteral("identity"), *status.identity);
+    else
+        entry.insert(QStringLiteral("error"), status.identity.error().message);
+    return entry;
+}
+
+int runStatus(const MachineFile& machine, const QList<GlobalOptions>& options, bool json) {
+    QList<DeviceStatus> statuses;
+    // One device after the other: an identification is short, and a
+    // silent device's retries say which one it was.
+    for (int i = 0; i < machine.devices.size(); ++i)
+        statuses << statusOf(machine.devices.at(i), options.at(i));
+    bool allAnswered = true;
+    for (const DeviceStatus& status : statuses) allAnswered = allAnswered && status.identity.ok();
+    if (json) {
+        QJsonArray devices;
+        for (const DeviceStatus& status : statuses) devices << statusJson(status);
+        printOut(QString::fromUtf8(
+            QJsonDocument(QJsonObject{{QStringLiteral("machine"), machine.machine},
+                                      {QStringLiteral("devices"), devices}})
+                .toJson(QJsonDocument::Indented)));
+    } else {
+        printOut(QStringLiteral("%1\n").arg(machine.machine));
+        for (const DeviceStatus& status : statuses)
+            printOut(QStringLiteral("%1\t%2\t%3\t%4\n")
+                         .arg(status.name, status.family, status.where,
+                              status.identity ? *status.identity
+                                              : QStringLiteral("NOT REACHED: %1")
+                                                    .arg(status.identity.error().message)));
+    }
+    return allAnswered ? ExitOk : ExitCommunication;
+}
+
+}  // namespace
+
+int runMachine(CliSession&, CommandArgs& args) {
+    const Result<QString> verb = takeVerb(args, {QStringLiteral("status")});
+    if (!verb) return reportError(verb.error());
+    const Result<QString> path = args.takeRequiredPositional(QStringLiteral("the machine file"));
+    if (!path) return reportError(path.error());
+    const bool json = args.takeFlag(QStringLiteral("--json"));
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    const Result<QByteArray> bytes = readFileBytes(*path);
+    if (!bytes) return reportError(bytes.error());
+    const Result<MachineFile> machine = parseMachineFile(*bytes, *path);
+    if (!machine) return reportError(machine.error());
+    // Every device's options are checked before the first device is asked.
+    QList<GlobalOptions> options;
+    for (const MachineDevice& device : machine->devices) {
+        const Result<GlobalOptions> parsed = deviceOptions(device, *path);
+        if (!parsed) return reportError(parsed.error());
+        options << *parsed;
+    }
+    return runStatus(*machine, options, json);
+}
+
+}  // namespace cambench::cli

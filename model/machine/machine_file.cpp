@@ -1,0 +1,152 @@
+#include "machine_file.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QSet>
+
+#include <cmath>
+
+namespace cambench {
+
+namespace {
+
+Error refused(const QString& where, const QString& what) {
+    return Error::invalidData(QStringLiteral("Machine file %1: %2").arg(where, what));
+}
+
+// "device 2 (feed)" or "device 2" while its name is not known yet.
+QString deviceLabel(int index, const QString& name) {
+    return name.isEmpty() ? QStringLiteral("device %1").arg(index + 1)
+                          : QStringLiteral("device %1 (%2)").arg(index + 1).arg(name);
+}
+
+// Text, or a whole number written as text; empty with `ok` false otherwise.
+QString optionText(const QJsonValue& value, bool* ok) {
+    *ok = true;
+    if (value.isString()) return value.toString();
+    if (value.isDouble()) {
+        const double number = value.toDouble();
+        if (std::floor(number) == number && std::abs(number) < 1e9)
+            return QString::number(qint64(number));
+    }
+    *ok = false;
+    return {};
+}
+
+Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QString& where) {
+    if (!value.isObject())
+        return refused(where, QStringLiteral("%1 is not an object {\"name\": ..., \"family\": "
+                                             "...}.")
+                                  .arg(deviceLabel(index, {})));
+    const QJsonObject object = value.toObject();
+    MachineDevice device;
+    device.name = object.value(QStringLiteral("name")).toString().trimmed();
+    if (device.name.isEmpty())
+        return refused(where, QStringLiteral("%1 has no \"name\"; give every device a name.")
+                                  .arg(deviceLabel(index, {})));
+    const QString label = deviceLabel(index, device.name);
+    device.family = object.value(QStringLiteral("family")).toString();
+    if (device.family.isEmpty())
+        return refused(
+            where, QStringLiteral("%1 has no \"family\" (camcon, mc1, compax3, ...).").arg(label));
+    const QStringList keys = machineDeviceKeys();
+    // The file's order is lost in QJsonObject (sorted keys); the command
+    // line does not depend on the order, and sorted is stable.
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (it.key() == QLatin1String("name") || it.key() == QLatin1String("family")) continue;
+        if (!keys.contains(it.key()))
+            return refused(where, QStringLiteral("%1: unknown key \"%2\"; a device's keys are "
+                                                 "name, family, %3.")
+                                      .arg(label, it.key(), keys.join(QLatin1String(", "))));
+        bool ok = false;
+        const QString text = optionText(it.value(), &ok);
+        if (!ok || text.isEmpty())
+            return refused(
+                where,
+                QStringLiteral("%1: \"%2\" must be text or a whole number.").arg(label, it.key()));
+        device.options.append({it.key(), text});
+    }
+    if (device.option(QStringLiteral("port")).isEmpty())
+        return refused(where, QStringLiteral("%1 has no \"port\" (e.g. /dev/ttyUSB0, "
+                                             "tcp://host:4001, sim).")
+                                  .arg(label));
+    return device;
+}
+
+}  // namespace
+
+QString MachineDevice::option(const QString& key) const {
+    for (const auto& [name, value] : options)
+        if (name == key) return value;
+    return {};
+}
+
+QStringList MachineDevice::arguments() const {
+    QStringList args{QStringLiteral("--family"), family};
+    for (const auto& [name, value] : options) args << QStringLiteral("--") + name << value;
+    return args;
+}
+
+const MachineDevice* MachineFile::device(const QString& name) const {
+    for (const MachineDevice& device : devices)
+        if (device.name == name) return &device;
+    return nullptr;
+}
+
+QStringList machineDeviceKeys() {
+    return {QStringLiteral("port"),     QStringLiteral("protocol"), QStringLiteral("device"),
+            QStringLiteral("address"),  QStringLiteral("variant"),  QStringLiteral("baud"),
+            QStringLiteral("pc-number")};
+}
+
+Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& where) {
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(bytes, &error);
+    if (error.error != QJsonParseError::NoError)
+        return refused(
+            where,
+            QStringLiteral("not JSON at byte %1 (%2).").arg(error.offset).arg(error.errorString()));
+    if (!document.isObject())
+        return refused(where, QStringLiteral("not a machine file: expected {\"machine\": ..., "
+                                             "\"devices\": [...]}."));
+    const QJsonObject root = document.object();
+    for (auto it = root.begin(); it != root.end(); ++it) {
+        if (it.key() != QLatin1String("machine") && it.key() != QLatin1String("devices") &&
+            it.key() != QLatin1String("shaft"))
+            return refused(where, QStringLiteral("unknown key \"%1\"; a machine file has machine, "
+                                                 "devices and shaft.")
+                                      .arg(it.key()));
+    }
+    MachineFile machine;
+    machine.machine = root.value(QStringLiteral("machine")).toString().trimmed();
+    if (machine.machine.isEmpty()) return refused(where, QStringLiteral("no \"machine\" name."));
+    const QJsonArray devices = root.value(QStringLiteral("devices")).toArray();
+    if (devices.isEmpty())
+        return refused(where, QStringLiteral("no \"devices\": list the machine's devices."));
+    QSet<QString> names;
+    for (int i = 0; i < devices.size(); ++i) {
+        Result<MachineDevice> device = parseDevice(devices.at(i), i, where);
+        if (!device) return device.error();
+        if (names.contains(device->name))
+            return refused(where, QStringLiteral("%1: the name is given twice; each device needs "
+                                                 "its own.")
+                                      .arg(deviceLabel(i, device->name)));
+        names.insert(device->name);
+        machine.devices << *device;
+    }
+    if (root.contains(QStringLiteral("shaft"))) {
+        const QJsonObject shaft = root.value(QStringLiteral("shaft")).toObject();
+        machine.shaftFrom = shaft.value(QStringLiteral("from")).toString();
+        machine.shaftTo = shaft.value(QStringLiteral("to")).toString();
+        for (const QString& end : {machine.shaftFrom, machine.shaftTo})
+            if (!machine.device(end))
+                return refused(where, QStringLiteral("the shaft's \"from\" and \"to\" must name "
+                                                     "devices of the file (not \"%1\").")
+                                          .arg(end));
+    }
+    return machine;
+}
+
+}  // namespace cambench

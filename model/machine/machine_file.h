@@ -1,0 +1,49 @@
+#pragma once
+
+#include "model/result.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QPair>
+#include <QString>
+#include <QStringList>
+
+namespace cambench {
+
+// One device of a machine: its name, its family and how to reach it, in
+// the command line's own option names ("port", "protocol", "device",
+// "address", "variant", "baud", "pc-number"), in the file's order.
+struct MachineDevice {
+    QString name;
+    QString family;
+    QList<QPair<QString, QString>> options;
+
+    QString option(const QString& key) const;
+    // The options as command-line arguments: --family F --port P ...
+    QStringList arguments() const;
+};
+
+// A machine file: a press with a CamCon, an MC200 and a drive, say.
+//   {"machine": "Press 7", "devices": [{"name": "cams", "family": "camcon",
+//    "port": "/dev/ttyUSB0", "protocol": "standard"}, ...]}
+// Optionally "shaft": {"from": DEVICE, "to": DEVICE} for the simulated
+// machine (the CamCon's position follows a drive's).
+struct MachineFile {
+    QString machine;
+    QList<MachineDevice> devices;
+    QString shaftFrom;
+    QString shaftTo;
+
+    const MachineDevice* device(const QString& name) const;
+};
+
+// The option names a device may carry besides "name" and "family".
+QStringList machineDeviceKeys();
+
+// Parses a machine file. `where` names it in messages (its path). A wrong
+// key, a duplicate or missing name, a value that is neither text nor a
+// whole number is refused naming the device ("device 2 (feed)"); whether
+// the family and the options fit together is the command line's check.
+Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& where);
+
+}  // namespace cambench

@@ -1,0 +1,93 @@
+// Issue 30, item 1: the machine file. A device's keys are the command
+// line's own option names; a wrong key, a duplicate or missing name, a
+// value that is neither text nor a whole number is refused naming the
+// device; the devices keep the file's order.
+#include "model/machine/machine_file.h"
+
+#include <QtTest>
+
+using namespace cambench;
+
+namespace {
+
+// JSON written with ' for " (readable here; moc skips a file with raw strings).
+QByteArray json(const char* text) {
+    return QByteArray(text).replace('\'', '"');
+}
+
+}  // namespace
+
+class TestMachineFile : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void thePressOfTheIssue() {
+        const QByteArray text = json(
+            "{'machine': 'Press 7', 'devices': ["
+            "            {'name': 'cams', 'family': 'camcon', 'port': '/dev/ttyUSB0', 'protocol': "
+            "'standard'},"
+            "            {'name': 'press-plc', 'family': 'mc1', 'port': '/dev/ttyUSB1', 'variant': "
+            "'mc200v2'},"
+            "            {'name': 'feed', 'family': 'compax3', 'port': 'tcp://press7-ds:4001', "
+            "'address': 3}],"
+            "            'shaft': {'from': 'feed', 'to': 'cams'}}");
+        const Result<MachineFile> machine = parseMachineFile(text, QStringLiteral("press7.json"));
+        QVERIFY2(machine.ok(), qPrintable(machine.error().message));
+        QCOMPARE(machine->machine, QStringLiteral("Press 7"));
+        QCOMPARE(machine->devices.size(), 3);
+        QCOMPARE(machine->devices.at(0).name, QStringLiteral("cams"));
+        QCOMPARE(machine->devices.at(2).name, QStringLiteral("feed"));
+        QCOMPARE(machine->devices.at(2).option(QStringLiteral("address")), QStringLiteral("3"));
+        QCOMPARE(machine->devices.at(2).arguments(),
+                 QStringList(
+                     {"--family", "compax3", "--address", "3", "--port", "tcp://press7-ds:4001"}));
+        QCOMPARE(machine->shaftFrom, QStringLiteral("feed"));
+        QCOMPARE(machine->shaftTo, QStringLiteral("cams"));
+    }
+
+    void refusedNamingTheDevice_data() {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<QString>("says");
+        const QByteArray ok = json("{'name': 'cams', 'family': 'camcon', 'port': 'sim'}");
+        QTest::newRow("unknown key")
+            << QByteArray(
+                   json("{'machine': 'P', 'devices': [") + ok +
+                   json(", {'name': 'feed', 'family': 'compax3', 'port': 'sim', 'adress': 3}]}"))
+            << "device 2 (feed): unknown key \"adress\"";
+        QTest::newRow("duplicate name")
+            << QByteArray(json("{'machine': 'P', 'devices': [") + ok + "," + ok + "]}")
+            << "device 2 (cams): the name is given twice";
+        QTest::newRow("no name") << QByteArray(
+                                        json("{'machine': 'P', 'devices': [{'family': 'mc1'}]}"))
+                                 << "device 1 has no \"name\"";
+        QTest::newRow("no port")
+            << QByteArray(json("{'machine': 'P', 'devices': [{'name': 'a', 'family': 'mc1'}]}"))
+            << "device 1 (a) has no \"port\"";
+        QTest::newRow("fraction") << QByteArray(
+                                         json("{'machine': 'P', 'devices': [{'name': 'a', "
+                                              "'family': 'mc1', 'port': 'sim', 'baud': 9600.5}]}"))
+                                  << "device 1 (a): \"baud\" must be text or a whole number";
+        QTest::newRow("shaft to nobody")
+            << QByteArray(json("{'machine': 'P', 'devices': [") + ok +
+                          json("], 'shaft': {'from': 'feed', 'to': 'cams'}}"))
+            << "(not \"feed\")";
+        QTest::newRow("no devices")
+            << QByteArray(json("{'machine': 'P', 'devices': []}")) << "no \"devices\"";
+        QTest::newRow("not json") << QByteArray("{\"machine\": ") << "not JSON at byte";
+        QTest::newRow("unknown top key")
+            << QByteArray(json("{'machine': 'P', 'device': []}")) << "unknown key \"device\"";
+    }
+
+    void refusedNamingTheDevice() {
+        QFETCH(QByteArray, text);
+        QFETCH(QString, says);
+        const Result<MachineFile> machine = parseMachineFile(text, QStringLiteral("m.json"));
+        QVERIFY(!machine.ok());
+        QCOMPARE(machine.error().kind, ErrorKind::InvalidData);
+        QVERIFY2(machine.error().message.startsWith(QLatin1String("Machine file m.json: ")),
+                 qPrintable(machine.error().message));
+        QVERIFY2(machine.error().message.contains(says), qPrintable(machine.error().message));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMachineFile)
+#include "tst_machine_file.moc"
