@@ -1,8 +1,10 @@
-// `machine status FILE`: each device of a machine file (model/machine/
-// machine_file.h) reached with its own options, as `cambench-cli --family F
-// --port P ...` would reach it, and asked who it is. Names no family: the
-// device's family and protocol come from the file, checked by the same
-// option parser as the command line's.
+// `machine status FILE` and the dispatch of the machine commands: each
+// device of a machine file (model/machine/machine_file.h) is reached with its
+// own options, as `cambench-cli --family F --port P ...` would reach it.
+// Names no family: the device's family and protocol come from the file,
+// checked by the same option parser as the command line's.
+#include "machine_command.h"
+
 #include "cli_output.h"
 #include "commands.h"
 #include "exit_codes.h"
@@ -59,7 +61,23 @@ QJsonObject statusJson(const DeviceStatus& status) {
     return entry;
 }
 
-int runStatus(const MachineFile& machine, const QList<GlobalOptions>& options, bool json) {
+}  // namespace
+
+Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where) {
+    Result<MachineFile> machine = parseMachineFile(bytes, where);
+    if (!machine) return machine.error();
+    MachineSetup setup{*machine, {}};
+    for (const MachineDevice& device : setup.machine.devices) {
+        const Result<GlobalOptions> parsed = deviceOptions(device, where);
+        if (!parsed) return parsed.error();
+        setup.options << *parsed;
+    }
+    return setup;
+}
+
+int runMachineStatus(const MachineSetup& setup, bool json) {
+    const MachineFile& machine = setup.machine;
+    const QList<GlobalOptions>& options = setup.options;
     QList<DeviceStatus> statuses;
     // One device after the other: an identification is short, and a
     // silent device's retries say which one it was.
@@ -86,27 +104,43 @@ int runStatus(const MachineFile& machine, const QList<GlobalOptions>& options, b
     return allAnswered ? ExitOk : ExitCommunication;
 }
 
-}  // namespace
-
 int runMachine(CliSession&, CommandArgs& args) {
-    const Result<QString> verb = takeVerb(args, {QStringLiteral("status")});
+    const Result<QString> verb =
+        takeVerb(args, {QStringLiteral("status"), QStringLiteral("backup"),
+                        QStringLiteral("verify"), QStringLiteral("restore")});
     if (!verb) return reportError(verb.error());
-    const Result<QString> path = args.takeRequiredPositional(QStringLiteral("the machine file"));
+    const bool onFolder = *verb == QLatin1String("verify") || *verb == QLatin1String("restore");
+    const Result<QString> path =
+        args.takeRequiredPositional(onFolder ? QStringLiteral("the machine's backup folder")
+                                             : QStringLiteral("the machine file"));
     if (!path) return reportError(path.error());
-    const bool json = args.takeFlag(QStringLiteral("--json"));
+    const bool json = *verb == QLatin1String("status") && args.takeFlag(QStringLiteral("--json"));
+    const bool resume =
+        *verb == QLatin1String("backup") && args.takeFlag(QStringLiteral("--resume"));
+    Result<QString> dir = QString();
+    if (*verb == QLatin1String("backup")) {
+        dir = args.takeOption(QStringLiteral("--output"), QStringLiteral("-o"));
+        if (dir && dir->isEmpty())
+            dir = Error::usage(QStringLiteral("machine backup needs -o DIR, the folder to fill"));
+    }
+    if (!dir) return reportError(dir.error());
+    Result<QString> only = QString();
+    if (*verb == QLatin1String("restore")) only = args.takeOption(QStringLiteral("--only"));
+    if (!only) return reportError(only.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
+
+    if (onFolder) {
+        return *verb == QLatin1String("verify")
+                   ? runMachineVerify(*path)
+                   : runMachineRestore(*path, only->split(QLatin1Char(','), Qt::SkipEmptyParts));
+    }
     const Result<QByteArray> bytes = readFileBytes(*path);
     if (!bytes) return reportError(bytes.error());
-    const Result<MachineFile> machine = parseMachineFile(*bytes, *path);
-    if (!machine) return reportError(machine.error());
     // Every device's options are checked before the first device is asked.
-    QList<GlobalOptions> options;
-    for (const MachineDevice& device : machine->devices) {
-        const Result<GlobalOptions> parsed = deviceOptions(device, *path);
-        if (!parsed) return reportError(parsed.error());
-        options << *parsed;
-    }
-    return runStatus(*machine, options, json);
+    const Result<MachineSetup> setup = loadMachine(*bytes, *path);
+    if (!setup) return reportError(setup.error());
+    return *verb == QLatin1String("status") ? runMachineStatus(*setup, json)
+                                            : runMachineBackup(*setup, *bytes, *dir, resume);
 }
 
 }  // namespace cambench::cli

@@ -23,7 +23,9 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/port_commands.cpp
   cli/detect_command.cpp
   cli/check_command.cpp
+  cli/machine_command.h
   cli/machine_command.cpp
+  cli/machine_backup.cpp
 )
 target_include_directories(cambench_cli_front PUBLIC ${PROJECT_SOURCE_DIR})
 target_link_libraries(cambench_cli_front PUBLIC cambench_usecases cambench_comm cambench_model Qt6::Core)

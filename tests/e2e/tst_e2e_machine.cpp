@@ -69,6 +69,65 @@ private Q_SLOTS:
         QVERIFY(devices.at(2).toObject().contains(QStringLiteral("error")));
     }
 
+    // Backup, a change on one device, verify names it, restore of that one,
+    // verify equal; then another CamCon behind the port: its restore is
+    // refused naming the device, and nothing is written to it.
+    void backupVerifyRestoreByEachFamilysOwnCommands() {
+        SimSession cams;
+        START_SIM(cams, {"--eprom", "03.05.2001", "--outputs", "16"});
+        SimSession feed(QStringLiteral("compax3"));
+        START_SIM(feed, {"--drive-type", "S150V4"});
+        const QByteArray machine = machineFile(cams.ptyPath(), feed.ptyPath(), "compax3");
+        const QString file = cams.path(QStringLiteral("press7.json"));
+        // Without the spare: every device must answer for exit 0.
+        const QJsonObject root = QJsonDocument::fromJson(machine).object();
+        QJsonArray devices = root.value("devices").toArray();
+        devices.removeLast();
+        QJsonObject two = root;
+        two.insert(QStringLiteral("devices"), devices);
+        QVERIFY(writeBytes(file, QJsonDocument(two).toJson()));
+        const QString dir = cams.path(QStringLiteral("press7-backup"));
+
+        const CliRun backup = runCli({"machine", "backup", file, "-o", dir});
+        VERIFY_EXIT(backup, 0);
+        QVERIFY2(backup.out.contains(QLatin1String("2 of 2 devices saved")),
+                 qPrintable(backup.out));
+        const QJsonObject manifest =
+            QJsonDocument::fromJson(readBytes(dir + QStringLiteral("/manifest.json"))).object();
+        const QJsonArray saved = manifest.value("devices").toArray();
+        QCOMPARE(saved.size(), 2);
+        QVERIFY(saved.at(0).toObject().value("identity").toString().contains("03.05.2001"));
+        QCOMPARE(saved.at(1).toObject().value("sha256").toString().size(), 64);
+        VERIFY_EXIT(runCli({"machine", "verify", dir}), 0);
+
+        // The CamCon's program 0 changes at its panel: verify names it.
+        const QString one = cams.path(QStringLiteral("one.csv"));
+        QVERIFY(writeBytes(one, "output,cam,on,off\n1,1,100,120\n"));
+        VERIFY_EXIT(cams.cli({"cams", "write", "--program", "0", one}), 0);
+        const CliRun differs = runCli({"machine", "verify", dir});
+        VERIFY_EXIT(differs, 1);
+        QVERIFY2(differs.out.contains(QLatin1String("cams: DIFFERS\nfeed: equal")),
+                 qPrintable(differs.out));
+
+        const CliRun restore = runCli({"machine", "restore", dir, "--only", "cams"});
+        VERIFY_EXIT(restore, 0);
+        QVERIFY2(restore.out.contains(QLatin1String("cams: restored")), qPrintable(restore.out));
+        QVERIFY(!restore.out.contains(QLatin1String("feed:")));
+        VERIFY_EXIT(runCli({"machine", "verify", dir}), 0);
+
+        // Another CamCon where the cams were: refused, named, left alone.
+        SimSession other;
+        START_SIM(other, {"--eprom", "11.10.1994"});
+        QByteArray moved = readBytes(dir + QStringLiteral("/machine.json"));
+        moved.replace(cams.ptyPath().toUtf8(), other.ptyPath().toUtf8());
+        QVERIFY(writeBytes(dir + QStringLiteral("/machine.json"), moved));
+        const CliRun refused = runCli({"machine", "restore", dir, "--only", "cams"});
+        QVERIFY2(refused.exitCode != 0, describe(refused).constData());
+        QVERIFY2(refused.out.contains(QLatin1String("cams: NOT RESTORED")),
+                 describe(refused).constData());
+        VERIFY_EXIT(other.cli({"verify", dir + QStringLiteral("/cams.json")}), 1);
+    }
+
     void aWrongFamilyIsRefusedBeforeAnyDeviceIsAsked() {
         SimSession cams;
         START_SIM(cams);
