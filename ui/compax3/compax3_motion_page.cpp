@@ -47,8 +47,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
       m_target(numberBox("compax3Target", -1000000, 1000000, 100)),
       m_velocity(numberBox("compax3Velocity", 0, 100000, 100)),
       m_acceleration(numberBox("compax3Acceleration", 0, 10000000, 1000)),
-      m_mode(new QLabel),
-      m_stop(new QPushButton(tr("STOP (Esc)"))) {
+      m_mode(new QLabel) {
     setObjectName(QStringLiteral("compax3MotionPage"));
     m_axis->setObjectName(QStringLiteral("compax3MotionAxis"));
     QFont big = m_axis->font();
@@ -62,12 +61,11 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
 
     // STOP: big, always on the page; the shell's STOP (one implementation),
     // whose key works from every page.
-    m_stop->setObjectName(QStringLiteral("compax3Stop"));
-    m_stop->setToolTip(
-        tr("Stops the drive and drops what waits for the line: the STOP above "
-           "every page. Escape does the same."));
     // Moves are offered only while the STOP can reach the device.
-    useShellStop(m_stop, [this] { factsChanged(); });
+    m_stop = makeShellStop(QStringLiteral("compax3Stop"),
+                           tr("Stops the drive and drops what waits for the line: the STOP "
+                              "above every page. Escape does the same."),
+                           [this] { factsChanged(); });
 
     auto button = [this](const QString& text, const char* name) {
         auto* b = new QPushButton(text);
@@ -280,10 +278,6 @@ void Compax3MotionPage::moveSet() {
                                                          comm::compax3SetAcceleration(set),
                                                          comm::compax3SetDeceleration(set)});
         });
-}
-
-void Compax3MotionPage::stop() {
-    session()->motionStop()->stopAll();
 }
 
 }  // namespace cambench

@@ -2,11 +2,10 @@
 
 #include "mc1_page.h"
 
-#include "ui/family_gui.h"
+#include "ui/live_family_window.h"
 
 namespace cambench {
 
-class LivePollCycle;
 class Mc1AxesPage;
 class Mc1Gui;
 class Mc1MemoryPage;
@@ -17,19 +16,17 @@ class Mc1VariablesPage;
 
 // The MC-1 family's part of the main window: Variables, Flags & I/O,
 // Program, Axes, Memory and Trend; backup, verify and restore in the Device
-// menu; the controller identified when it comes on the line, and the
-// shown page's live values polled.
-class Mc1Window : public FamilyWindow {
+// menu; the controller identified when it comes on the line (the shown
+// page's polls and the line's loss: LiveFamilyWindow).
+class Mc1Window : public LiveFamilyWindow {
     Q_OBJECT
 public:
     Mc1Window(Mc1Gui* gui, MainWindow* window);
 
-    QList<SectionPage*> pages() const override;
     void addMenuEntries(const FamilyMenus& menus) override;
     void deviceOnLine(bool load) override;
     // Also the facts (variant, type) the pages act on.
     void forgetDevice() override;
-    void pageShown(SectionPage* page) override;
     QList<TourStop> tourStops(const QString& directory) override;
 
     const Mc1Facts& facts() const { return m_facts; }
@@ -39,8 +36,6 @@ public:
     Mc1AxesPage* axesPage() const { return m_axes; }
     Mc1MemoryPage* memoryPage() const { return m_memory; }
     Mc1TrendPage* trendPage() const { return m_trend; }
-    // The shown page's poll cycle (tests drive it cycle by cycle).
-    LivePollCycle* pollCycle() const { return m_poll; }
 
     // Device menu: the use cases of comm/mc1/usecases with file dialogs.
     void backupToFile(const QString& path);
@@ -59,8 +54,6 @@ private:
     Mc1MemoryPage* m_memory;
     Mc1TrendPage* m_trend;
     Mc1Facts m_facts;
-    Mc1Page* m_shown = nullptr;
-    LivePollCycle* m_poll;
 };
 
 // The MC-1 part of `window` (tests, the tour); nullptr when it has none.
