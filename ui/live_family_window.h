@@ -32,6 +32,7 @@ public:
 protected:
     // The family's pages in the window's order; once, from its constructor.
     void setLivePages(const QList<LiveDevicePage*>& pages);
+    const QList<LiveDevicePage*>& livePages() const { return m_pages; }
     // The page shown now, when it is one of this family's.
     LiveDevicePage* shownPage() const { return m_shown; }
 

@@ -17,7 +17,7 @@
 namespace cambench {
 
 Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
-    : LiveFamilyWindow(
+    : FactsWindow(
           gui, window,
           {Compax3Page::tr("Read drive status"), Compax3WatchPage::tr("Read watched objects")}),
       m_compax3(gui),
@@ -26,7 +26,7 @@ Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
       m_motion(new Compax3MotionPage(gui->session())),
       m_watch(new Compax3WatchPage(gui->session(), gui)),
       m_parameters(new Compax3ParametersPage(gui->session(), gui)) {
-    setLivePages({m_objects, m_status, m_motion, m_watch, m_parameters});
+    setFactsPages({m_objects, m_status, m_motion, m_watch, m_parameters});
     // One copy of each drive value: what one page wrote, the Objects page
     // reads again and shows as the drive's.
     for (Compax3Page* page : compax3Pages())
@@ -36,16 +36,6 @@ Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
 
 QList<Compax3Page*> Compax3Window::compax3Pages() const {
     return {m_objects, m_status, m_motion, m_watch, m_parameters};
-}
-
-void Compax3Window::setFacts(const Compax3Facts& facts) {
-    m_facts = facts;
-    for (Compax3Page* page : compax3Pages()) page->setFacts(facts);
-}
-
-void Compax3Window::forgetDevice() {
-    FamilyWindow::forgetDevice();
-    setFacts({});
 }
 
 void Compax3Window::deviceOnLine(bool load) {
@@ -87,17 +77,17 @@ QList<TourStop> Compax3Window::tourStops(const QString&) {
         {QStringLiteral("31-compax3-objects"),
          [this] { window()->showPage(m_objects); },
          [this] {
-             return m_facts.known &&
+             return facts().known &&
                     m_objects->model()->driveValue(comm::kCompax3Position).has_value();
          },
          {}},
         {QStringLiteral("32-compax3-status"),
          [this] { window()->showPage(m_status); },
-         [this] { return m_facts.known && !m_status->errorText().isEmpty(); },
+         [this] { return facts().known && !m_status->errorText().isEmpty(); },
          {}},
         {QStringLiteral("33-compax3-motion"),
          [this] { window()->showPage(m_motion); },
-         [this] { return m_facts.known; },
+         [this] { return facts().known; },
          {}},
     };
 }

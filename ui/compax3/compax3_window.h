@@ -2,7 +2,7 @@
 
 #include "compax3_page.h"
 
-#include "ui/live_family_window.h"
+#include "ui/device_facts.h"
 
 namespace cambench {
 
@@ -16,18 +16,15 @@ class Compax3WatchPage;
 // The Compax3 family's part of the main window: Objects, Status, Motion,
 // Watch and Parameters; the drive identified when it comes on the line
 // (the shown page's polls and the line's loss: LiveFamilyWindow).
-class Compax3Window : public LiveFamilyWindow {
+class Compax3Window : public FactsWindow<Compax3Facts> {
     Q_OBJECT
 public:
     Compax3Window(Compax3Gui* gui, MainWindow* window);
 
     void deviceOnLine(bool load) override;
-    // Also the facts (variant, type) the pages act on.
-    void forgetDevice() override;
     bool confirmClose() override;
     QList<TourStop> tourStops(const QString& directory) override;
 
-    const Compax3Facts& facts() const { return m_facts; }
     Compax3ObjectsPage* objectsPage() const { return m_objects; }
     Compax3StatusPage* statusPage() const { return m_status; }
     Compax3MotionPage* motionPage() const { return m_motion; }
@@ -35,7 +32,6 @@ public:
     Compax3ParametersPage* parametersPage() const { return m_parameters; }
 
 private:
-    void setFacts(const Compax3Facts& facts);
     QList<Compax3Page*> compax3Pages() const;
 
     Compax3Gui* m_compax3;
@@ -44,7 +40,6 @@ private:
     Compax3MotionPage* m_motion;
     Compax3WatchPage* m_watch;
     Compax3ParametersPage* m_parameters;
-    Compax3Facts m_facts;
 };
 
 // The Compax3 part of `window` (tests, the tour); nullptr when it has none.

@@ -23,10 +23,9 @@
 namespace cambench {
 
 Mc1Window::Mc1Window(Mc1Gui* gui, MainWindow* window)
-    : LiveFamilyWindow(
-          gui, window,
-          {Mc1VariablesPage::tr("Read variables"), Mc1PointsPage::tr("Read flags and I/O"),
-           Mc1ProgramPage::tr("Read program status"), Mc1AxesPage::tr("Read axis")}),
+    : FactsWindow(gui, window,
+                  {Mc1VariablesPage::tr("Read variables"), Mc1PointsPage::tr("Read flags and I/O"),
+                   Mc1ProgramPage::tr("Read program status"), Mc1AxesPage::tr("Read axis")}),
       m_mc1(gui),
       m_variables(new Mc1VariablesPage(gui->session(), gui->watchList())),
       m_points(new Mc1PointsPage(gui->session())),
@@ -34,21 +33,7 @@ Mc1Window::Mc1Window(Mc1Gui* gui, MainWindow* window)
       m_axes(new Mc1AxesPage(gui->session())),
       m_memory(new Mc1MemoryPage(gui->session())),
       m_trend(new Mc1TrendPage(gui->session(), m_variables)) {
-    setLivePages({m_variables, m_points, m_program, m_axes, m_memory, m_trend});
-}
-
-QList<Mc1Page*> Mc1Window::mc1Pages() const {
-    return {m_variables, m_points, m_program, m_axes, m_memory, m_trend};
-}
-
-void Mc1Window::setFacts(const Mc1Facts& facts) {
-    m_facts = facts;
-    for (Mc1Page* page : mc1Pages()) page->setFacts(facts);
-}
-
-void Mc1Window::forgetDevice() {
-    FamilyWindow::forgetDevice();
-    setFacts({});
+    setFactsPages({m_variables, m_points, m_program, m_axes, m_memory, m_trend});
 }
 
 void Mc1Window::deviceOnLine(bool load) {
@@ -205,16 +190,16 @@ QList<TourStop> Mc1Window::tourStops(const QString&) {
         {QStringLiteral("21-mc1-variables"),
          [this] { window()->showPage(m_variables); },
          [this] {
-             return m_facts.known && m_mc1->watchList()->entries().value(0).value.has_value();
+             return facts().known && m_mc1->watchList()->entries().value(0).value.has_value();
          },
          {}},
         {QStringLiteral("22-mc1-flags-io"),
          [this] { window()->showPage(m_points); },
-         [this] { return m_facts.known; },
+         [this] { return facts().known; },
          {}},
         {QStringLiteral("23-mc1-axes"),
          [this] { window()->showPage(m_axes); },
-         [this] { return m_facts.known; },
+         [this] { return facts().known; },
          {}},
     };
 }

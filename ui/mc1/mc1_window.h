@@ -2,7 +2,7 @@
 
 #include "mc1_page.h"
 
-#include "ui/live_family_window.h"
+#include "ui/device_facts.h"
 
 namespace cambench {
 
@@ -18,18 +18,15 @@ class Mc1VariablesPage;
 // Program, Axes, Memory and Trend; backup, verify and restore in the Device
 // menu; the controller identified when it comes on the line (the shown
 // page's polls and the line's loss: LiveFamilyWindow).
-class Mc1Window : public LiveFamilyWindow {
+class Mc1Window : public FactsWindow<Mc1Facts> {
     Q_OBJECT
 public:
     Mc1Window(Mc1Gui* gui, MainWindow* window);
 
     void addMenuEntries(const FamilyMenus& menus) override;
     void deviceOnLine(bool load) override;
-    // Also the facts (variant, type) the pages act on.
-    void forgetDevice() override;
     QList<TourStop> tourStops(const QString& directory) override;
 
-    const Mc1Facts& facts() const { return m_facts; }
     Mc1VariablesPage* variablesPage() const { return m_variables; }
     Mc1PointsPage* pointsPage() const { return m_points; }
     Mc1ProgramPage* programPage() const { return m_program; }
@@ -43,9 +40,6 @@ public:
     void restoreFile(const QString& path);
 
 private:
-    void setFacts(const Mc1Facts& facts);
-    QList<Mc1Page*> mc1Pages() const;
-
     Mc1Gui* m_mc1;
     Mc1VariablesPage* m_variables;
     Mc1PointsPage* m_points;
@@ -53,7 +47,6 @@ private:
     Mc1AxesPage* m_axes;
     Mc1MemoryPage* m_memory;
     Mc1TrendPage* m_trend;
-    Mc1Facts m_facts;
 };
 
 // The MC-1 part of `window` (tests, the tour); nullptr when it has none.
