@@ -59,9 +59,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     m_set->setValue(1);
     m_set->setSpecialValueText(tr("0 (homing)"));
 
-    // STOP: big, always on the page; the shell's STOP (one implementation),
-    // whose key works from every page.
-    // Moves are offered only while the STOP can reach the device.
+    // Big, always on the page; moves are offered only while it can reach the device.
     m_stop = makeShellStop(QStringLiteral("compax3Stop"),
                            tr("Stops the drive and drops what waits for the line: the STOP "
                               "above every page. Escape does the same."),

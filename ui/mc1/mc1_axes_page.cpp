@@ -60,9 +60,7 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     m_details->setWordWrap(true);
     m_details->setObjectName(QStringLiteral("axisDetails"));
 
-    // STOP: big, always on the page; the shell's STOP (one implementation),
-    // whose key works from every page.
-    // Moves are offered only while the STOP can reach the device.
+    // Big, always on the page; moves are offered only while it can reach the device.
     m_stop = makeShellStop(QStringLiteral("mc1Stop"),
                            tr("Stops every axis and drops what waits for the line: the STOP "
                               "above every page. Escape does the same."),
