@@ -2,6 +2,7 @@
 
 #include "device_session.h"
 #include "live_freshness.h"
+#include "motion_stop.h"
 #include "sentence.h"
 #include "stop_button.h"
 
@@ -128,7 +129,11 @@ QLabel* LiveDevicePage::resultLine() {
     return m_result;
 }
 
-void LiveDevicePage::useShellStop(QPushButton* button, std::function<void()> armedChanged) {
+QPushButton* LiveDevicePage::makeShellStop(const QString& objectName, const QString& toolTip,
+                                           std::function<void()> armedChanged) {
+    auto* button = new QPushButton(tr("STOP (Esc)"), this);
+    button->setObjectName(objectName);
+    button->setToolTip(toolTip);
     routeToShellStop(
         button, m_session->motionStop(), this,
         [this](const QString& text, bool ok) {
@@ -136,6 +141,11 @@ void LiveDevicePage::useShellStop(QPushButton* button, std::function<void()> arm
             poll();
         },
         std::move(armedChanged));
+    return button;
+}
+
+void LiveDevicePage::stopAll() {
+    m_session->motionStop()->stopAll();
 }
 
 void LiveDevicePage::clearResult() {

@@ -55,6 +55,8 @@ public:
     void pollStopped();
     // The line is gone: the values are stale now, whatever the cycle says.
     void lineLost();
+    // What the page's STOP does: the shell's STOP (MotionStop::stopAll).
+    void stopAll();
 
 protected:
     // A poll of the page's values at Poll priority under `pollKey`, one at
@@ -104,10 +106,13 @@ protected:
     // ("pageResult").
     QLabel* resultLine();
     void showResult(const QString& text, bool ok);
-    // The page's own STOP `button` as one more way to the shell's STOP: the
-    // result line shows every STOP's report and the values are read again;
-    // `armedChanged` when the STOP can reach the device or no longer can.
-    void useShellStop(QPushButton* button, std::function<void()> armedChanged);
+    // The page's own STOP ("STOP (Esc)", named `objectName`, `toolTip`
+    // says what it stops) as one more way to the shell's STOP: the result
+    // line shows every STOP's report and the values are read again;
+    // `armedChanged` when the STOP can reach the device or no longer can
+    // (a page offers its moves only while it can). The page places it.
+    QPushButton* makeShellStop(const QString& objectName, const QString& toolTip,
+                               std::function<void()> armedChanged);
 
 private:
     void showFreshness();

@@ -12,6 +12,9 @@ target_sources(cambench_ui PRIVATE
   live_device_page.cpp
   live_poll_cycle.h
   live_poll_cycle.cpp
+  live_family_window.h
+  device_facts.h
+  live_family_window.cpp
   multi_trend_chart.h
   multi_trend_chart.cpp
   sentence.h

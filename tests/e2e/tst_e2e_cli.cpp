@@ -52,6 +52,7 @@ private Q_SLOTS:
     void camsWriteRejectsOverlapAndLeavesDeviceUntouched_data() { protocolRows(); }
     void camsWriteRejectsOverlapAndLeavesDeviceUntouched();
     void camsWriteForBiggerDeviceSendsNoWriteCommand();
+    void programOutsideTheDeviceReadsNoCams();
     void writeReportsEveryItem();
     void projectReadThenWriteChangesNothing();
     void deadTimesRoundTrip_data() { protocolRows(); }
@@ -184,6 +185,30 @@ void TestE2eCli::camsWriteForBiggerDeviceSendsNoWriteCommand() {
         readBytes(session.path(QStringLiteral("sim-stderr.log"))).split('\n');
     QVERIFY(log.size() > 5);
     for (const QByteArray& line : log) QVERIFY2(!line.contains("<- !"), line.constData());
+}
+
+// Issue 31, item 6: every command that reads program N checks it against
+// the device with the same words (usecases::checkProgramNumber), before
+// any cam is asked for.
+void TestE2eCli::programOutsideTheDeviceReadsNoCams() {
+    SimSession session;
+    START_SIM(session, {"--verbose"});
+    const QString refusal = QStringLiteral(
+        "program 16 does not exist on the device (it has programs 0 to 15): choose one of those");
+    for (const QStringList& args : {QStringList{"cams", "read", "--program", "16"},
+                                    QStringList{"diff", "device", "/dev/null", "--program", "16"},
+                                    QStringList{"timing", "--program", "16", "--speed", "100"}}) {
+        const CliRun run = session.cli(args);
+        VERIFY_EXIT(run, 2);
+        QVERIFY2(run.err.contains(refusal),
+                 qPrintable(args.join(u' ') + QLatin1String(": ") + run.err));
+    }
+    // The identity was read each time (?EPROM), no cam and no program name.
+    const QByteArray log = readBytes(session.path(QStringLiteral("sim-stderr.log")));
+    QCOMPARE(log.count("<- ? EPROM"), 3);
+    QVERIFY2(!log.contains("<- ? NF"), log.constData());
+    QVERIFY2(!log.contains("<- ? PNAME"), log.constData());
+    QVERIFY2(!log.contains("<- !"), log.constData());
 }
 
 void TestE2eCli::writeReportsEveryItem() {

@@ -6,17 +6,22 @@ namespace cambench::tests {
 
 using namespace comm;
 
-SimBench::SimBench(QList<int> devices, std::optional<Framing> framing) {
-    SimPortConfig config;
-    config.devices = devices;
-    config.framing = framing;
+SimBench::SimBench(QList<int> devices, std::optional<Framing> framing)
+    : SimBench([&] {
+          SimPortConfig config;
+          config.devices = devices;
+          config.framing = framing;
+          return config;
+      }()) {}
+
+SimBench::SimBench(SimPortConfig config) {
     config.throttle = false;
     transport = std::make_unique<SimTransport>(camConSimulatedLine(config));
     const Status opened = transport->open();
     if (!opened) qFatal("%s", qPrintable(opened.error().message));
     AsciiSettings settings;
     settings.framing = config.effectiveFraming();
-    settings.device = devices.first();
+    settings.device = config.devices.first();
     // Short: a dead device is declared dead quickly (a hang bound, not a
     // performance limit).
     settings.timeoutMs = 200;

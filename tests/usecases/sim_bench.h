@@ -15,6 +15,9 @@ namespace cambench::tests {
 // arrive at once. The simulator logs every command its devices receive.
 struct SimBench {
     explicit SimBench(QList<int> devices = {0}, std::optional<comm::Framing> framing = {});
+    // Another device than the demo's (config.outputs, config.epromDate);
+    // bytes arrive at once whatever config.throttle says.
+    explicit SimBench(comm::SimPortConfig config);
 
     // The bench always builds an ASCII line (see the constructor).
     comm::SimLine& line() { return dynamic_cast<comm::SimLine&>(transport->line()); }

@@ -50,29 +50,24 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
                       "line (with interpolation on). Positions must rise from point to "
                       "point."));
     intro->setWordWrap(true);
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write changes"));
     auto* add = new QPushButton(tr("Add point"));
     auto* remove = new QPushButton(tr("Remove point"));
-    auto* top = new QHBoxLayout;
-    top->addWidget(new QLabel(tr("Analogue output:")));
-    top->addWidget(m_output);
-    top->addWidget(read);
-    top->addWidget(write);
-    top->addStretch();
-    top->addWidget(add);
-    top->addWidget(remove);
+    ReadWriteBar bar(
+        [this] {
+            const bool edited =
+                m_workspace->tableSections()->changedAnalogueOutputs().contains(m_output->value());
+            if (mayReplaceEdits(this, tr("Analogue cams"), edited ? 1 : 0)) readFromDevice();
+        },
+        [this] { writeChanges(); });
+    bar.before = {new QLabel(tr("Analogue output:")), m_output};
+    bar.right = {add, remove};
+    QHBoxLayout* top = readWriteBar(bar);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(top);
     layout->addWidget(m_state);
     layout->addWidget(m_table);
     layout->addWidget(m_problems);
-    connect(read, &QPushButton::clicked, this, [this] {
-        const bool edited =
-            m_workspace->tableSections()->changedAnalogueOutputs().contains(m_output->value());
-        if (mayReplaceEdits(this, tr("Analogue cams"), edited ? 1 : 0)) readFromDevice();
-    });
     // Another output: the edits of this one stay in the workspace.
     connect(m_output, &QSpinBox::valueChanged, this, [this](int output) {
         if (!m_workspace->tableSections()->analogueCams(output) && m_session->isOnline())
@@ -92,7 +87,6 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
         takeTable();
     });
     connect(m_table, &QTableWidget::itemChanged, this, &AnalogueCamsPage::takeTable);
-    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     // A project opened, a write's outcome, another device: shown at once.
     connect(m_workspace->tableSections(), &TableSectionCopies::changed, this, [this] {
         const std::optional<AnalogueCamTrack> track =

@@ -71,21 +71,15 @@ void CamPage::clearLive() {
 }
 
 void CamPage::readProgram(int program, std::function<void(const Status&)> done) {
-    Q_EMIT statusMessage(tr("Reading program %1…").arg(program));
-    devicereads::readProgram(
-        this, m_session, m_workspace, program, [this, program, done](const Status& status) {
-            if (status) {
-                Q_EMIT statusMessage(tr("Program %1 read.").arg(program));
-            } else if (status.error().kind == ErrorKind::Cancelled) {
-                Q_EMIT statusMessage(
-                    tr("Program %1 read, not taken: your edits are unchanged.").arg(program));
-            } else {
-                Q_EMIT statusMessage(tr("Program %1 not read: %2 Your edits are kept.")
-                                         .arg(program)
-                                         .arg(status.error().message));
-            }
-            if (done) done(status);
-        });
+    const auto report = reportRead(
+        tr("Reading program %1…").arg(program),
+        [program] { return tr("Program %1 read.").arg(program); },
+        tr("Program %1 not read: %2 Your edits are kept.").arg(program).arg(QStringLiteral("%1")));
+    devicereads::readProgram(this, m_session, m_workspace, program,
+                             [report, done](const Status& status) {
+                                 report(status);
+                                 if (done) done(status);
+                             });
 }
 
 void CamPage::writeProgram(int program, std::function<void(const WriteResult&)> done) {

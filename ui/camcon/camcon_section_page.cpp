@@ -2,7 +2,45 @@
 
 #include "ui/sentence.h"
 
+#include <QHBoxLayout>
+#include <QPointer>
+#include <QPushButton>
+
 namespace cambench {
+
+QHBoxLayout* CamConSectionPage::readWriteBar(const ReadWriteBar& bar) {
+    auto* layout = new QHBoxLayout;
+    for (QWidget* widget : bar.before) layout->addWidget(widget);
+    auto* read =
+        new QPushButton(bar.readText.isEmpty() ? tr("Read from device") : bar.readText, this);
+    connect(read, &QPushButton::clicked, this, bar.read);
+    layout->addWidget(read);
+    if (bar.write) {
+        auto* write = new QPushButton(tr("Write changes"), this);
+        connect(write, &QPushButton::clicked, this, bar.write);
+        layout->addWidget(write);
+    }
+    for (QWidget* widget : bar.actions) layout->addWidget(widget);
+    layout->addStretch();
+    for (QWidget* widget : bar.right) layout->addWidget(widget);
+    return layout;
+}
+
+std::function<void(const Status&)> CamConSectionPage::reportRead(const QString& reading,
+                                                                 std::function<QString()> done,
+                                                                 const QString& failed) {
+    Q_EMIT statusMessage(reading);
+    QPointer<CamConSectionPage> page(this);
+    return [page, done = std::move(done), failed](const Status& status) {
+        if (!page) return;
+        if (status)
+            Q_EMIT page->statusMessage(done());
+        else if (status.error().kind == ErrorKind::Cancelled)
+            Q_EMIT page->statusMessage(status.error().message);
+        else
+            Q_EMIT page->statusMessage(failed.arg(status.error().message));
+    };
+}
 
 void CamConSectionPage::writeDifferences(DeviceSession* session, Workspace* workspace,
                                          std::function<void(const WriteResult&)> done) {

@@ -4,6 +4,12 @@
 #include "ui/camcon/workspace_item.h"
 #include "ui/section_page.h"
 
+#include "model/result.h"
+
+#include <functional>
+
+class QHBoxLayout;
+
 namespace cambench {
 
 class DeviceSession;
@@ -32,6 +38,32 @@ public:
     virtual int itemCount() const { return int(differences().size()); }
 
 protected:
+    // The bar at the top of a section page, the same on every page:
+    // `before` (what the read is of: an output, a network), the read button
+    // ("Read from device" unless `readText` says otherwise), "Write
+    // changes" where the page writes with it, the page's own `actions`, a
+    // stretch, then `right` (a note, the limits).
+    struct ReadWriteBar {
+        // `write` empty: no "Write changes".
+        ReadWriteBar(std::function<void()> read, std::function<void()> write)
+            : read(std::move(read)), write(std::move(write)) {}
+        std::function<void()> read;
+        std::function<void()> write;
+        QString readText;
+        QList<QWidget*> before;
+        QList<QWidget*> actions;
+        QList<QWidget*> right;
+    };
+    QHBoxLayout* readWriteBar(const ReadWriteBar& bar);
+
+    // What a page's read says in the status bar: `reading` now, then
+    // `done()` once the values came, the reason when the person kept the
+    // edits (the read was not taken), or `failed` with why (%1). Given to
+    // a devicereads function as its `done`.
+    std::function<void(const Status&)> reportRead(const QString& reading,
+                                                  std::function<QString()> done,
+                                                  const QString& failed);
+
     // "Write changes" of a page: every difference of this section through
     // the one write path; the summary in the status bar, the items not
     // written in a dialog; then `done`.

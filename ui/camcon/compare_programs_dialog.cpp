@@ -5,6 +5,7 @@
 #include "program_diff_view.h"
 #include "workspace.h"
 
+#include "comm/camcon/usecases/program_read.h"
 #include "model/camcon/csv_io.h"
 #include "model/camcon/program_diff.h"
 #include "model/camcon/project_file.h"
@@ -206,26 +207,14 @@ void CompareProgramsDialog::load(int side, std::function<void(Result<Loaded>)> d
             ++m_reading;
             runOnCamCon<CamProgram>(
                 m_session, this, tr("Read program %1").arg(number),
+                // The device's identity read now: the program is checked
+                // against the device on the line, not against what was read
+                // of it before.
                 [number](comm::CamConDevice& device, comm::JobContext& job) -> Result<CamProgram> {
-                    const Result<DeviceInfo> info = device.readInfo();
-                    if (!info) return info.error();
-                    if (number >= info->programs)
-                        return Error::usage(
-                            tr("The device has programs 0 to %1 only.").arg(info->programs - 1));
-                    Result<CamProgram> read = device.readProgram(
-                        number, info->outputs,
-                        [&job](qint64 n, qint64 total) { job.progress(n, total); });
+                    Result<usecases::ProgramRead> read = usecases::readIdentityAndProgram(
+                        device, number, usecases::UseCaseProgress::of(job));
                     if (!read) return read.error();
-                    CamProgram program = std::move(read).value();
-                    program.number = number;
-                    // With its name, so that the program is the device's whole
-                    // (the write of checked differences makes it the PC's copy).
-                    if (device.has(comm::CamConCapability::OutputNames)) {
-                        const Result<QString> name = device.readProgramName(number);
-                        if (!name) return name.error();
-                        program.name = *name;
-                    }
-                    return program;
+                    return std::move(read->program);
                 },
                 [this, number, done](Result<CamProgram> program) {
                     --m_reading;

@@ -56,21 +56,18 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
            "switch-off point each have their own. Path-time: the output switches on early by "
            "the switch-on dead time and stays on for the switching time."));
     intro->setWordWrap(true);
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write changes"));
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(read);
-    buttons->addWidget(write);
-    buttons->addStretch();
-    buttons->addWidget(m_note);
+    ReadWriteBar bar(
+        [this] {
+            if (mayReplaceEdits(this, tr("Dead-time modes"), int(differences().size())))
+                readFromDevice();
+        },
+        [this] { writeChanges(); });
+    bar.right = {m_note};
+    QHBoxLayout* buttons = readWriteBar(bar);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(buttons);
     layout->addWidget(m_table);
-    connect(read, &QPushButton::clicked, this, [this] {
-        if (mayReplaceEdits(this, tr("Dead-time modes"), int(differences().size())))
-            readFromDevice();
-    });
     connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
     connect(m_workspace, &Workspace::deadTimeModesIncoming, this, &DeadTimeModesPage::takeIncoming);
     // Another device: nothing of the old one stays on the page; what the
@@ -83,7 +80,6 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
                 m_note->setText(tr("Not read from this device yet."));
             });
     m_note->setText(tr("Not read from the device yet."));
-    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
 }
 
 void DeadTimeModesPage::readFromDevice() {

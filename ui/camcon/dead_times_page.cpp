@@ -43,13 +43,9 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
     m_view->setEditTriggers(QAbstractItemView::AllEditTriggers);
     m_view->setAlternatingRowColors(true);
 
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write changes"));
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(read);
-    buttons->addWidget(write);
-    buttons->addStretch();
-    buttons->addWidget(m_limits);
+    ReadWriteBar bar([this] { readFromDevice(); }, [this] { writeChanges(); });
+    bar.right = {m_limits};
+    QHBoxLayout* buttons = readWriteBar(bar);
 
     auto* layout = new QVBoxLayout(this);
     auto* intro =
@@ -61,8 +57,6 @@ DeadTimesPage::DeadTimesPage(DeviceSession* session, Workspace* workspace, QWidg
     layout->addLayout(buttons);
     layout->addWidget(m_view);
 
-    connect(read, &QPushButton::clicked, this, &DeadTimesPage::readFromDevice);
-    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(m_workspace, &Workspace::infoChanged, this, &DeadTimesPage::showLimits);
     showLimits();
 }
@@ -73,16 +67,11 @@ void DeadTimesPage::showLimits() {
 }
 
 void DeadTimesPage::readFromDevice() {
-    Q_EMIT statusMessage(tr("Reading dead times…"));
-    devicereads::readOutputSettings(this, m_session, m_workspace, [this](const Status& status) {
-        if (status) {
-            Q_EMIT statusMessage(tr("Dead times read."));
-        } else if (status.error().kind == ErrorKind::Cancelled) {
-            Q_EMIT statusMessage(status.error().message);
-        } else {
-            Q_EMIT statusMessage(tr("Reading dead times failed: %1").arg(status.error().message));
-        }
-    });
+    devicereads::readOutputSettings(
+        this, m_session, m_workspace,
+        reportRead(
+            tr("Reading dead times…"), [] { return tr("Dead times read."); },
+            tr("Reading dead times failed: %1")));
 }
 
 int DeadTimesPage::itemCount() const {

@@ -5,6 +5,7 @@
 #include "ui/device_session.h"
 #include "workspace.h"
 
+#include "comm/camcon/usecases/program_read.h"
 #include "comm/camcon/usecases/read_everything.h"
 
 #include <QCoreApplication>
@@ -64,18 +65,19 @@ quint64 readIdentity(QWidget* context, DeviceSession* session, Workspace* worksp
 
 quint64 readProgram(QWidget* context, DeviceSession* session, Workspace* workspace, int program,
                     Done done) {
-    const int outputs = workspace->info().outputs;
+    // The identity read when the device came on the line (the workspace
+    // follows the connected device): no second identity read per program.
+    const DeviceInfo device = workspace->info();
     return readPart<CamProgram>(
         context, session, workspace,
         QCoreApplication::translate("cambench::DeviceReads", "Read program %1").arg(program),
-        [program, outputs](comm::CamConDevice& device, comm::JobContext& job) {
-            return device.readProgram(
-                program, outputs, [&job](qint64 done, qint64 total) { job.progress(done, total); });
+        [program, device](comm::CamConDevice& connection, comm::JobContext& job) {
+            return usecases::readProgram(connection, device, program,
+                                         usecases::UseCaseProgress::of(job));
         },
         [program](const CamProgram& read) {
             Project project;
             project.programs << read;
-            project.programs.last().number = program;
             project.readAt.programs.insert(program, now());
             return project;
         },

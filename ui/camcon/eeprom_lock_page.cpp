@@ -34,12 +34,10 @@ EepromLockPage::EepromLockPage(DeviceSession* session, Workspace* workspace, QWi
     m_warning->setWordWrap(true);
     m_warning->setStyleSheet(QStringLiteral("QLabel { color: #b03a2e; font-weight: bold; }"));
     m_wanted->setWordWrap(true);
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(read);
-    buttons->addWidget(m_lock);
-    buttons->addWidget(m_unlock);
-    buttons->addStretch();
+    // Lock and Unlock write at once: no "Write changes".
+    ReadWriteBar bar([this] { readFromDevice(); }, {});
+    bar.actions = {m_lock, m_unlock};
+    QHBoxLayout* buttons = readWriteBar(bar);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addWidget(m_state);
@@ -47,7 +45,6 @@ EepromLockPage::EepromLockPage(DeviceSession* session, Workspace* workspace, QWi
     layout->addWidget(m_warning);
     layout->addLayout(buttons);
     layout->addStretch();
-    connect(read, &QPushButton::clicked, this, &EepromLockPage::readFromDevice);
     connect(m_lock, &QPushButton::clicked, this, [this] { setLocked(true); });
     connect(m_unlock, &QPushButton::clicked, this, [this] { setLocked(false); });
     connect(m_workspace->tableSections(), &TableSectionCopies::changed, this,

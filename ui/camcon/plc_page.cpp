@@ -59,16 +59,10 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     m_area->addItem(tr("M – flags"), int(PlcNetwork::M));
     m_area->addItem(tr("X – X flags"), int(PlcNetwork::X));
     m_number->setRange(1, kMaxNumber);
-    auto* read = new QPushButton(tr("Read network"));
-    auto* write = new QPushButton(tr("Write changes"));
-    auto* top = new QHBoxLayout;
-    top->addWidget(new QLabel(tr("Area:")));
-    top->addWidget(m_area);
-    top->addWidget(new QLabel(tr("Number:")));
-    top->addWidget(m_number);
-    top->addWidget(read);
-    top->addWidget(write);
-    top->addStretch();
+    ReadWriteBar bar([this] { readNetwork(); }, [this] { writeChanges(); });
+    bar.readText = tr("Read network");
+    bar.before = {new QLabel(tr("Area:")), m_area, new QLabel(tr("Number:")), m_number};
+    QHBoxLayout* top = readWriteBar(bar);
 
     m_value->setRange(std::numeric_limits<qint32>::min(), std::numeric_limits<qint32>::max());
     m_value->setToolTip(tr("Preset of a timer or counter driving this output."));
@@ -123,8 +117,6 @@ PlcPage::PlcPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     };
     connect(m_area, &QComboBox::currentIndexChanged, this, select);
     connect(m_number, &QSpinBox::valueChanged, this, select);
-    connect(read, &QPushButton::clicked, this, &PlcPage::readNetwork);
-    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(m_value, &QSpinBox::valueChanged, this, &PlcPage::editFields);
     connect(m_reset, &QLineEdit::textEdited, this, &PlcPage::editFields);
     connect(m_networks, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
@@ -185,17 +177,12 @@ void PlcPage::fillList() {
 void PlcPage::readNetwork() {
     const int area = m_model->area();
     const int number = m_model->number();
+    const QString name = networkName(area, number);
     devicereads::readPlcNetwork(
-        this, m_session, m_workspace, area, number, [this, area, number](const Status& status) {
-            if (status) {
-                Q_EMIT statusMessage(tr("%1 read.").arg(networkName(area, number)));
-            } else if (status.error().kind == ErrorKind::Cancelled) {
-                Q_EMIT statusMessage(status.error().message);
-            } else {
-                Q_EMIT statusMessage(tr("Reading %1 failed: %2")
-                                         .arg(networkName(area, number), status.error().message));
-            }
-        });
+        this, m_session, m_workspace, area, number,
+        reportRead(
+            tr("Reading %1…").arg(name), [name] { return tr("%1 read.").arg(name); },
+            tr("Reading %1 failed: %2").arg(name, QStringLiteral("%1"))));
 }
 
 int PlcPage::itemCount() const {

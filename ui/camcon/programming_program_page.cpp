@@ -47,12 +47,12 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     form->addRow(tr("Program:"), m_program);
     form->addRow(tr("Program selection:"), m_mode);
     form->addRow(tr("Selection actual value:"), m_switchValue);
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write changes"));
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(read);
-    buttons->addWidget(write);
-    buttons->addStretch();
+    QHBoxLayout* buttons = readWriteBar(ReadWriteBar(
+        [this] {
+            const bool changed = m_workspace->tableSections()->programmingProgramChanged();
+            if (mayReplaceEdits(this, sectionTitle(), changed ? 1 : 0)) readFromDevice();
+        },
+        [this] { writeToDevice(); }));
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(form);
@@ -60,11 +60,6 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     layout->addLayout(buttons);
     layout->addWidget(m_problems);
     layout->addStretch();
-    connect(read, &QPushButton::clicked, this, [this] {
-        const bool changed = m_workspace->tableSections()->programmingProgramChanged();
-        if (mayReplaceEdits(this, sectionTitle(), changed ? 1 : 0)) readFromDevice();
-    });
-    connect(write, &QPushButton::clicked, this, [this] { writeToDevice(); });
     connect(m_program, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::takeFields);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &ProgrammingProgramPage::takeFields);
     connect(m_switchValue, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::takeFields);

@@ -77,12 +77,8 @@ SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget
       m_workspace(workspace),
       m_groups(new QListWidget),
       m_pages(new QStackedWidget) {
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write changes"));
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(read);
-    buttons->addWidget(write);
-    buttons->addStretch();
+    QHBoxLayout* buttons =
+        readWriteBar(ReadWriteBar([this] { readFromDevice(); }, [this] { writeChanges(); }));
 
     m_groups->setMaximumWidth(220);
     auto* body = new QHBoxLayout;
@@ -96,8 +92,6 @@ SettingsPage::SettingsPage(DeviceSession* session, Workspace* workspace, QWidget
     buildForm();
     connect(m_groups, &QListWidget::currentRowChanged, m_pages, &QStackedWidget::setCurrentIndex);
     m_groups->setCurrentRow(0);
-    connect(read, &QPushButton::clicked, this, &SettingsPage::readFromDevice);
-    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(m_workspace, &Workspace::settingsChanged, this, &SettingsPage::showValues);
     showValues();
 }
@@ -160,16 +154,10 @@ void SettingsPage::showValues() {
 }
 
 void SettingsPage::readFromDevice() {
-    Q_EMIT statusMessage(tr("Reading settings…"));
-    devicereads::readSettings(this, m_session, m_workspace, [this](const Status& status) {
-        if (status) {
-            Q_EMIT statusMessage(tr("Settings read."));
-        } else if (status.error().kind == ErrorKind::Cancelled) {
-            Q_EMIT statusMessage(status.error().message);
-        } else {
-            Q_EMIT statusMessage(tr("Reading settings failed: %1").arg(status.error().message));
-        }
-    });
+    devicereads::readSettings(this, m_session, m_workspace,
+                              reportRead(
+                                  tr("Reading settings…"), [] { return tr("Settings read."); },
+                                  tr("Reading settings failed: %1")));
 }
 
 int SettingsPage::itemCount() const {

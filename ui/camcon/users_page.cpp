@@ -36,17 +36,13 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
       m_number(new QLineEdit),
       m_allOutputs(new QCheckBox(tr("May change all outputs"))),
       m_editor(new QWidget) {
-    auto* read = new QPushButton(tr("Read from device"));
-    auto* write = new QPushButton(tr("Write changes"));
     auto* add = new QPushButton(tr("Add user"));
     auto* remove = new QPushButton(tr("Remove user"));
     m_show->setToolTip(tr("User numbers are access codes. They stay hidden unless you show them."));
-    auto* buttons = new QHBoxLayout;
-    for (QWidget* w : {static_cast<QWidget*>(read), static_cast<QWidget*>(write),
-                       static_cast<QWidget*>(add), static_cast<QWidget*>(remove)})
-        buttons->addWidget(w);
-    buttons->addStretch();
-    buttons->addWidget(m_show);
+    ReadWriteBar bar([this] { readFromDevice(); }, [this] { writeChanges(); });
+    bar.actions = {add, remove};
+    bar.right = {m_show};
+    QHBoxLayout* buttons = readWriteBar(bar);
 
     m_view->setModel(m_model);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -106,8 +102,6 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
     layout->addLayout(buttons);
     layout->addLayout(body, 1);
 
-    connect(read, &QPushButton::clicked, this, &UsersPage::readFromDevice);
-    connect(write, &QPushButton::clicked, this, [this] { writeChanges(); });
     connect(add, &QPushButton::clicked, this, [this] {
         User user;
         user.name = tr("New user");
@@ -176,17 +170,14 @@ void UsersPage::editUser() {
 }
 
 void UsersPage::readFromDevice() {
-    Q_EMIT statusMessage(tr("Reading users…"));
-    devicereads::readUsers(this, m_session, m_workspace, [this](const Status& status) {
-        if (status) {
-            Q_EMIT statusMessage(
-                tr("%n user(s) read.", nullptr, int(m_workspace->deviceUsers().size())));
-        } else if (status.error().kind == ErrorKind::Cancelled) {
-            Q_EMIT statusMessage(status.error().message);
-        } else {
-            Q_EMIT statusMessage(tr("Reading users failed: %1").arg(status.error().message));
-        }
-    });
+    devicereads::readUsers(this, m_session, m_workspace,
+                           reportRead(
+                               tr("Reading users…"),
+                               [this] {
+                                   return tr("%n user(s) read.", nullptr,
+                                             int(m_workspace->deviceUsers().size()));
+                               },
+                               tr("Reading users failed: %1")));
 }
 
 int UsersPage::itemCount() const {

@@ -47,8 +47,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
       m_target(numberBox("compax3Target", -1000000, 1000000, 100)),
       m_velocity(numberBox("compax3Velocity", 0, 100000, 100)),
       m_acceleration(numberBox("compax3Acceleration", 0, 10000000, 1000)),
-      m_mode(new QLabel),
-      m_stop(new QPushButton(tr("STOP (Esc)"))) {
+      m_mode(new QLabel) {
     setObjectName(QStringLiteral("compax3MotionPage"));
     m_axis->setObjectName(QStringLiteral("compax3MotionAxis"));
     QFont big = m_axis->font();
@@ -60,18 +59,15 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     m_set->setValue(1);
     m_set->setSpecialValueText(tr("0 (homing)"));
 
-    // STOP: big, always on the page; the shell's STOP (one implementation),
-    // whose key works from every page.
-    m_stop->setObjectName(QStringLiteral("compax3Stop"));
-    m_stop->setToolTip(
-        tr("Stops the drive and drops what waits for the line: the STOP above "
-           "every page. Escape does the same."));
-    // Moves are offered only while the STOP can reach the device.
-    // A change of the STOP's reach re-decides only whether motions are
-    // offered; the set is read when the drive's facts change. (Reading it
-    // on every change of the STOP's reach sent a Compax3 request to the
+    // Big, always on the page; moves are offered only while it can reach the
+    // device. A change of the STOP's reach re-decides only whether motions
+    // are offered; the set is read when the drive's facts change. (Reading
+    // it on every change of the STOP's reach sent a Compax3 request to the
     // CamCon a family switch had just connected.)
-    useShellStop(m_stop, [this] { offerMotion(); });
+    m_stop = makeShellStop(QStringLiteral("compax3Stop"),
+                           tr("Stops the drive and drops what waits for the line: the STOP "
+                              "above every page. Escape does the same."),
+                           [this] { offerMotion(); });
 
     auto button = [this](const QString& text, const char* name) {
         auto* b = new QPushButton(text);
@@ -289,10 +285,6 @@ void Compax3MotionPage::moveSet() {
                                                          comm::compax3SetAcceleration(set),
                                                          comm::compax3SetDeceleration(set)});
         });
-}
-
-void Compax3MotionPage::stop() {
-    session()->motionStop()->stopAll();
 }
 
 }  // namespace cambench

@@ -29,8 +29,6 @@ public:
     // Reads the chosen set from the drive into the editors.
     void readSet();
     void moveSet();
-    // The shell's STOP.
-    void stop();
     QPushButton* stopButton() const { return m_stop; }
     QString axisText() const;
 

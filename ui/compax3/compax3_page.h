@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/live_device_page.h"
+#include "ui/device_facts.h"
 
 #include "comm/compax3/compax3_device.h"
 
@@ -17,16 +17,10 @@ struct Compax3Facts {
 
 // A page of the Compax3 family: told which drive is connected, polled while
 // shown, able to ask before it acts.
-class Compax3Page : public LiveDevicePage {
+class Compax3Page : public FactsPage<Compax3Facts> {
     Q_OBJECT
 public:
-    using LiveDevicePage::LiveDevicePage;
-
-    const Compax3Facts& facts() const { return m_facts; }
-    void setFacts(const Compax3Facts& facts) {
-        m_facts = facts;
-        factsChanged();
-    }
+    using FactsPage::FactsPage;
 
 Q_SIGNALS:
     // This page changed these objects on the drive: the pages that show
@@ -34,13 +28,9 @@ Q_SIGNALS:
     void objectsWritten(const QList<cambench::Compax3ObjectId>& ids);
 
 protected:
-    virtual void factsChanged() {}
     // One poll of the drive's status on the shell's poll cycle (runPoll: a
     // poll already waiting is not queued twice); `show` gets what was read.
     bool pollStatus(std::function<void(const comm::Compax3DriveStatus&)> show);
-
-private:
-    Compax3Facts m_facts;
 };
 
 }  // namespace cambench

@@ -9,67 +9,37 @@
 #include "compax3_watch_page.h"
 
 #include "ui/device_session.h"
-#include "ui/live_poll_cycle.h"
 #include "ui/main_window.h"
-#include "ui/sentence.h"
 
 #include <QMessageBox>
 #include <QPushButton>
 
 namespace cambench {
 
-namespace {
-constexpr int kPollMs = 500;
-}  // namespace
-
 Compax3Window::Compax3Window(Compax3Gui* gui, MainWindow* window)
-    : FamilyWindow(gui, window),
+    : FactsWindow(
+          gui, window,
+          {Compax3Page::tr("Read drive status"), Compax3WatchPage::tr("Read watched objects")}),
       m_compax3(gui),
       m_objects(new Compax3ObjectsPage(gui->session(), gui)),
       m_status(new Compax3StatusPage(gui->session())),
       m_motion(new Compax3MotionPage(gui->session())),
       m_watch(new Compax3WatchPage(gui->session(), gui)),
-      m_parameters(new Compax3ParametersPage(gui->session(), gui)),
-      m_poll(new LivePollCycle(gui->session(), kPollMs, this)) {
-    // Polls go on all the time a page is shown: not a job for the progress bar.
-    for (const QString& title :
-         {Compax3Page::tr("Read drive status"), Compax3WatchPage::tr("Read watched objects")})
-        window->addQuietJobTitle(title);
+      m_parameters(new Compax3ParametersPage(gui->session(), gui)) {
+    setFactsPages({m_objects, m_status, m_motion, m_watch, m_parameters});
     // One copy of each drive value: what one page wrote, the Objects page
     // reads again and shows as the drive's.
     for (Compax3Page* page : compax3Pages())
         connect(page, &Compax3Page::objectsWritten, m_objects,
                 [this](const QList<Compax3ObjectId>& ids) { m_objects->read(ids); });
-    connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
-        if (m_compax3->session()->isOnline()) return;
-        // The line is gone: what the pages show is no longer known to be true.
-        for (Compax3Page* page : compax3Pages()) page->lineLost();
-    });
 }
 
 QList<Compax3Page*> Compax3Window::compax3Pages() const {
     return {m_objects, m_status, m_motion, m_watch, m_parameters};
 }
 
-QList<SectionPage*> Compax3Window::pages() const {
-    QList<SectionPage*> pages;
-    for (Compax3Page* page : compax3Pages()) pages << page;
-    return pages;
-}
-
-void Compax3Window::setFacts(const Compax3Facts& facts) {
-    m_facts = facts;
-    for (Compax3Page* page : compax3Pages()) page->setFacts(facts);
-}
-
-void Compax3Window::forgetDevice() {
-    FamilyWindow::forgetDevice();
-    setFacts({});
-}
-
 void Compax3Window::deviceOnLine(bool load) {
-    // The shell had every family forget the device before (forgetDevice).
-    m_compax3->session()->setDeviceChecked(false);
+    identifying();
     m_compax3->session()->run<comm::Compax3Device, Compax3Identity>(
         this, tr("Identify drive"),
         // The dictionary in use words its refusals from the first request.
@@ -78,28 +48,14 @@ void Compax3Window::deviceOnLine(bool load) {
             return device.identity();
         },
         [this, load](Result<Compax3Identity> identity) {
-            QString line;
-            if (identity) {
-                line = tr("%1, serial number %2").arg(identity->info, identity->serial);
-                m_compax3->setIdentity(line);
-                m_compax3->session()->setDeviceChecked(true);
-                setFacts({true, *identity});
-            }
-            window()->showMessage(identity ? tr("Connected: %1").arg(line)
-                                           : tr("No Compax3 identified itself: %1")
-                                                 .arg(asSentence(identity.error().message)));
-            if (load) window()->reportLoaded(identity.ok());
-            if (m_shown) m_shown->poll();
+            if (identity) setFacts({true, *identity});
+            identified(load,
+                       identity
+                           ? Result<QString>(
+                                 tr("%1, serial number %2").arg(identity->info, identity->serial))
+                           : identity.error(),
+                       tr("No Compax3 identified itself: %1"));
         });
-}
-
-void Compax3Window::pageShown(SectionPage* page) {
-    m_shown = nullptr;
-    for (Compax3Page* mine : compax3Pages())
-        if (mine == page) m_shown = mine;
-    // A missed cycle makes the shown page's values stale, a cycle spent
-    // behind a long job (a backup) pauses them: the shell's poll cycle.
-    m_poll->setShown(m_shown);
 }
 
 bool Compax3Window::confirmClose() {
@@ -121,17 +77,17 @@ QList<TourStop> Compax3Window::tourStops(const QString&) {
         {QStringLiteral("31-compax3-objects"),
          [this] { window()->showPage(m_objects); },
          [this] {
-             return m_facts.known &&
+             return facts().known &&
                     m_objects->model()->driveValue(comm::kCompax3Position).has_value();
          },
          {}},
         {QStringLiteral("32-compax3-status"),
          [this] { window()->showPage(m_status); },
-         [this] { return m_facts.known && !m_status->errorText().isEmpty(); },
+         [this] { return facts().known && !m_status->errorText().isEmpty(); },
          {}},
         {QStringLiteral("33-compax3-motion"),
          [this] { window()->showPage(m_motion); },
-         [this] { return m_facts.known; },
+         [this] { return facts().known; },
          {}},
     };
 }

@@ -2,11 +2,10 @@
 
 #include "compax3_page.h"
 
-#include "ui/family_gui.h"
+#include "ui/device_facts.h"
 
 namespace cambench {
 
-class LivePollCycle;
 class Compax3Gui;
 class Compax3MotionPage;
 class Compax3ObjectsPage;
@@ -15,33 +14,24 @@ class Compax3StatusPage;
 class Compax3WatchPage;
 
 // The Compax3 family's part of the main window: Objects, Status, Motion,
-// Watch and Parameters; the drive identified when it comes on the line,
-// the shown page's live values polled, everything marked stale when the
-// line goes.
-class Compax3Window : public FamilyWindow {
+// Watch and Parameters; the drive identified when it comes on the line
+// (the shown page's polls and the line's loss: LiveFamilyWindow).
+class Compax3Window : public FactsWindow<Compax3Facts> {
     Q_OBJECT
 public:
     Compax3Window(Compax3Gui* gui, MainWindow* window);
 
-    QList<SectionPage*> pages() const override;
     void deviceOnLine(bool load) override;
-    // Also the facts (variant, type) the pages act on.
-    void forgetDevice() override;
-    void pageShown(SectionPage* page) override;
     bool confirmClose() override;
     QList<TourStop> tourStops(const QString& directory) override;
 
-    const Compax3Facts& facts() const { return m_facts; }
     Compax3ObjectsPage* objectsPage() const { return m_objects; }
     Compax3StatusPage* statusPage() const { return m_status; }
     Compax3MotionPage* motionPage() const { return m_motion; }
     Compax3WatchPage* watchPage() const { return m_watch; }
     Compax3ParametersPage* parametersPage() const { return m_parameters; }
-    // The shown page's polls and their freshness (tests drive its cycles).
-    LivePollCycle* pollCycle() const { return m_poll; }
 
 private:
-    void setFacts(const Compax3Facts& facts);
     QList<Compax3Page*> compax3Pages() const;
 
     Compax3Gui* m_compax3;
@@ -50,9 +40,6 @@ private:
     Compax3MotionPage* m_motion;
     Compax3WatchPage* m_watch;
     Compax3ParametersPage* m_parameters;
-    Compax3Facts m_facts;
-    Compax3Page* m_shown = nullptr;
-    LivePollCycle* m_poll;
 };
 
 // The Compax3 part of `window` (tests, the tour); nullptr when it has none.

@@ -42,7 +42,6 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
       m_absolute(valueBox("mc1MoveTo")),
       m_relative(valueBox("mc1MoveBy")),
       m_speed(valueBox("mc1Speed")),
-      m_stop(new QPushButton(tr("STOP (Esc)"))),
       m_parameters(new Mc1AxisParametersBox(session)),
       m_axesFound(new QLabel) {
     setObjectName(QStringLiteral("mc1AxesPage"));
@@ -61,14 +60,11 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     m_details->setWordWrap(true);
     m_details->setObjectName(QStringLiteral("axisDetails"));
 
-    // STOP: big, always on the page; the shell's STOP (one implementation),
-    // whose key works from every page.
-    m_stop->setObjectName(QStringLiteral("mc1Stop"));
-    m_stop->setToolTip(
-        tr("Stops every axis and drops what waits for the line: the STOP above "
-           "every page. Escape does the same."));
-    // Moves are offered only while the STOP can reach the device.
-    useShellStop(m_stop, [this] { offerMotion(); });
+    // Big, always on the page; moves are offered only while it can reach the device.
+    m_stop = makeShellStop(QStringLiteral("mc1Stop"),
+                           tr("Stops every axis and drops what waits for the line: the STOP "
+                              "above every page. Escape does the same."),
+                           [this] { offerMotion(); });
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_axis);
@@ -264,10 +260,6 @@ bool Mc1AxesPage::confirmCommand(Mc1AxisCommand command, const QString& what, qi
                                ? tr("The axis moves until STOP (or Escape) is pressed.")
                                : tr("The axis moves at its set speed. STOP (or Escape) stops it.");
     return confirm(tr("Move"), tr("%1 on the %2?").arg(capitalised(what), controller), detail);
-}
-
-void Mc1AxesPage::stopAll() {
-    session()->motionStop()->stopAll();
 }
 
 }  // namespace cambench

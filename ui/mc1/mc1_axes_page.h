@@ -35,8 +35,6 @@ public:
     int axis() const;
     // Asks (naming the motion), then sends it and shows the axis after.
     void command(comm::Mc1AxisCommand command, qint32 value = 0);
-    // The shell's STOP.
-    void stopAll();
 
 protected:
     void factsChanged() override;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/live_device_page.h"
+#include "ui/device_facts.h"
 #include "ui/sentence.h"
 
 #include "comm/mc1/mc1_device.h"
@@ -21,20 +21,12 @@ struct Mc1Facts {
 
 // A page of the MC-1 family: told what the controller is, polled while
 // shown (live values), and able to ask before it acts.
-class Mc1Page : public LiveDevicePage {
+class Mc1Page : public FactsPage<Mc1Facts> {
     Q_OBJECT
 public:
-    using LiveDevicePage::LiveDevicePage;
-
-    const Mc1Facts& facts() const { return m_facts; }
-    void setFacts(const Mc1Facts& facts) {
-        m_facts = facts;
-        factsChanged();
-    }
+    using FactsPage::FactsPage;
 
 protected:
-    virtual void factsChanged() {}
-
     // The outcome of an acting command for a person: a failure (the page's
     // values go stale), or done - the controller acknowledged it - with,
     // apart, why reading back failed. The state read back, when there is one.
@@ -57,9 +49,6 @@ protected:
         }
         return &*done->after;
     }
-
-private:
-    Mc1Facts m_facts;
 };
 
 }  // namespace cambench

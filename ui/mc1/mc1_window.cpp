@@ -11,7 +11,6 @@
 
 #include "comm/mc1/usecases/mc1_backup_restore.h"
 #include "ui/device_session.h"
-#include "ui/live_poll_cycle.h"
 #include "ui/main_window.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
@@ -23,55 +22,22 @@
 
 namespace cambench {
 
-namespace {
-constexpr int kPollMs = 500;
-}  // namespace
-
 Mc1Window::Mc1Window(Mc1Gui* gui, MainWindow* window)
-    : FamilyWindow(gui, window),
+    : FactsWindow(gui, window,
+                  {Mc1VariablesPage::tr("Read variables"), Mc1PointsPage::tr("Read flags and I/O"),
+                   Mc1ProgramPage::tr("Read program status"), Mc1AxesPage::tr("Read axis")}),
       m_mc1(gui),
       m_variables(new Mc1VariablesPage(gui->session(), gui->watchList())),
       m_points(new Mc1PointsPage(gui->session())),
       m_program(new Mc1ProgramPage(gui->session())),
       m_axes(new Mc1AxesPage(gui->session())),
       m_memory(new Mc1MemoryPage(gui->session())),
-      m_trend(new Mc1TrendPage(gui->session(), m_variables)),
-      m_poll(new LivePollCycle(gui->session(), kPollMs, this)) {
-    // Polls go on all the time a page is shown: not a job for the progress bar.
-    for (const QString& title :
-         {Mc1VariablesPage::tr("Read variables"), Mc1PointsPage::tr("Read flags and I/O"),
-          Mc1ProgramPage::tr("Read program status"), Mc1AxesPage::tr("Read axis")})
-        window->addQuietJobTitle(title);
-    connect(gui->session(), &DeviceSession::stateChanged, this, [this] {
-        if (m_mc1->session()->isOnline()) return;
-        // The line is gone: what the pages show is no longer known to be true.
-        for (Mc1Page* page : mc1Pages()) page->lineLost();
-    });
-}
-
-QList<Mc1Page*> Mc1Window::mc1Pages() const {
-    return {m_variables, m_points, m_program, m_axes, m_memory, m_trend};
-}
-
-QList<SectionPage*> Mc1Window::pages() const {
-    QList<SectionPage*> pages;
-    for (Mc1Page* page : mc1Pages()) pages << page;
-    return pages;
-}
-
-void Mc1Window::setFacts(const Mc1Facts& facts) {
-    m_facts = facts;
-    for (Mc1Page* page : mc1Pages()) page->setFacts(facts);
-}
-
-void Mc1Window::forgetDevice() {
-    FamilyWindow::forgetDevice();
-    setFacts({});
+      m_trend(new Mc1TrendPage(gui->session(), m_variables)) {
+    setFactsPages({m_variables, m_points, m_program, m_axes, m_memory, m_trend});
 }
 
 void Mc1Window::deviceOnLine(bool load) {
-    // The shell had every family forget the device before (forgetDevice).
-    m_mc1->session()->setDeviceChecked(false);
+    identifying();
     struct Found {
         Mc1Facts facts;
         QString identity;
@@ -96,26 +62,10 @@ void Mc1Window::deviceOnLine(bool load) {
             return found;
         },
         [this, load](Result<Found> found) {
-            if (found) {
-                setFacts(found->facts);
-                m_mc1->setIdentity(found->identity);
-                m_mc1->session()->setDeviceChecked(true);
-            }
-            window()->showMessage(found ? tr("Connected: %1").arg(found->identity)
-                                        : tr("No MC100/MC200 identified itself: %1")
-                                              .arg(asSentence(found.error().message)));
-            if (load) window()->reportLoaded(found.ok());
-            if (m_shown) m_shown->poll();
+            if (found) setFacts(found->facts);
+            identified(load, found ? Result<QString>(found->identity) : found.error(),
+                       tr("No MC100/MC200 identified itself: %1"));
         });
-}
-
-void Mc1Window::pageShown(SectionPage* page) {
-    m_shown = nullptr;
-    for (Mc1Page* mine : mc1Pages())
-        if (mine == page) m_shown = mine;
-    // The trend shows what the Variables page polls: that page's poll
-    // (and its freshness) is the one the cycle keeps.
-    m_poll->setShown(m_shown ? m_shown->polledPage() : nullptr);
 }
 
 void Mc1Window::addMenuEntries(const FamilyMenus& menus) {
@@ -231,7 +181,7 @@ void Mc1Window::restoreFile(const QString& path) {
                 return;
             }
             ReportDialog::presentTally(window(), tr("Restore"), *tally);
-            if (m_shown) m_shown->poll();
+            if (shownPage()) shownPage()->poll();
         });
 }
 
@@ -240,16 +190,16 @@ QList<TourStop> Mc1Window::tourStops(const QString&) {
         {QStringLiteral("21-mc1-variables"),
          [this] { window()->showPage(m_variables); },
          [this] {
-             return m_facts.known && m_mc1->watchList()->entries().value(0).value.has_value();
+             return facts().known && m_mc1->watchList()->entries().value(0).value.has_value();
          },
          {}},
         {QStringLiteral("22-mc1-flags-io"),
          [this] { window()->showPage(m_points); },
-         [this] { return m_facts.known; },
+         [this] { return facts().known; },
          {}},
         {QStringLiteral("23-mc1-axes"),
          [this] { window()->showPage(m_axes); },
-         [this] { return m_facts.known; },
+         [this] { return facts().known; },
          {}},
     };
 }

@@ -2,11 +2,10 @@
 
 #include "mc1_page.h"
 
-#include "ui/family_gui.h"
+#include "ui/device_facts.h"
 
 namespace cambench {
 
-class LivePollCycle;
 class Mc1AxesPage;
 class Mc1Gui;
 class Mc1MemoryPage;
@@ -17,30 +16,23 @@ class Mc1VariablesPage;
 
 // The MC-1 family's part of the main window: Variables, Flags & I/O,
 // Program, Axes, Memory and Trend; backup, verify and restore in the Device
-// menu; the controller identified when it comes on the line, and the
-// shown page's live values polled.
-class Mc1Window : public FamilyWindow {
+// menu; the controller identified when it comes on the line (the shown
+// page's polls and the line's loss: LiveFamilyWindow).
+class Mc1Window : public FactsWindow<Mc1Facts> {
     Q_OBJECT
 public:
     Mc1Window(Mc1Gui* gui, MainWindow* window);
 
-    QList<SectionPage*> pages() const override;
     void addMenuEntries(const FamilyMenus& menus) override;
     void deviceOnLine(bool load) override;
-    // Also the facts (variant, type) the pages act on.
-    void forgetDevice() override;
-    void pageShown(SectionPage* page) override;
     QList<TourStop> tourStops(const QString& directory) override;
 
-    const Mc1Facts& facts() const { return m_facts; }
     Mc1VariablesPage* variablesPage() const { return m_variables; }
     Mc1PointsPage* pointsPage() const { return m_points; }
     Mc1ProgramPage* programPage() const { return m_program; }
     Mc1AxesPage* axesPage() const { return m_axes; }
     Mc1MemoryPage* memoryPage() const { return m_memory; }
     Mc1TrendPage* trendPage() const { return m_trend; }
-    // The shown page's poll cycle (tests drive it cycle by cycle).
-    LivePollCycle* pollCycle() const { return m_poll; }
 
     // Device menu: the use cases of comm/mc1/usecases with file dialogs.
     void backupToFile(const QString& path);
@@ -48,9 +40,6 @@ public:
     void restoreFile(const QString& path);
 
 private:
-    void setFacts(const Mc1Facts& facts);
-    QList<Mc1Page*> mc1Pages() const;
-
     Mc1Gui* m_mc1;
     Mc1VariablesPage* m_variables;
     Mc1PointsPage* m_points;
@@ -58,9 +47,6 @@ private:
     Mc1AxesPage* m_axes;
     Mc1MemoryPage* m_memory;
     Mc1TrendPage* m_trend;
-    Mc1Facts m_facts;
-    Mc1Page* m_shown = nullptr;
-    LivePollCycle* m_poll;
 };
 
 // The MC-1 part of `window` (tests, the tour); nullptr when it has none.

@@ -4,6 +4,7 @@
 #include "app/cli/exit_codes.h"
 #include "write_output.h"
 
+#include "comm/camcon/usecases/program_read.h"
 #include "model/camcon/csv_io.h"
 
 namespace cambench::cli {
@@ -14,14 +15,6 @@ using comm::CamConDevice;
 using comm::JobContext;
 
 constexpr int kMaxProgramNumber = 32767;  // 4 hex digits, manual 5.2.1.1
-
-Status checkProgram(int program, const DeviceInfo& info) {
-    if (program < info.programs) return success();
-    return Error::usage(QStringLiteral("program %1 does not exist on the device (programs 0..%2); "
-                                       "choose another --program")
-                            .arg(program)
-                            .arg(info.programs - 1));
-}
 
 int readCams(CliSession& session, CommandArgs& args) {
     const Result<int> program =
@@ -44,7 +37,7 @@ int readCams(CliSession& session, CommandArgs& args) {
         [p, o](CamConDevice& client, JobContext& job) -> Result<Tracks> {
             const Result<DeviceInfo> info = client.readInfo();
             if (!info) return info.error();
-            if (const Status ok = checkProgram(p, *info); !ok) return ok.error();
+            if (const Status ok = usecases::checkProgramNumber(p, *info); !ok) return ok.error();
             if (o > 0) {
                 if (o > info->outputs) {
                     return Error::usage(QStringLiteral("output %1 does not exist on the device "
@@ -59,9 +52,7 @@ int readCams(CliSession& session, CommandArgs& args) {
                 return one;
             }
             const Result<CamProgram> read =
-                client.readProgram(p, info->outputs, [&job](qint64 done, qint64 total) {
-                    job.progress(done, total, QStringLiteral("reading cams"));
-                });
+                usecases::readProgram(client, *info, p, usecases::UseCaseProgress::of(job));
             if (!read) return read.error();
             return read->tracks;
         });

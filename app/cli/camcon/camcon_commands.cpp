@@ -75,21 +75,6 @@ QString camConHelp() {
 
 }  // namespace
 
-Result<CamProgram> readDeviceProgram(comm::CamConDevice& device, comm::JobContext& job, int program,
-                                     DeviceInfo* info) {
-    const Result<DeviceInfo> identity = device.readInfo();
-    if (!identity) return identity.error();
-    if (info) *info = *identity;
-    if (program >= identity->programs)
-        return Error::usage(QStringLiteral("program %1 does not exist on the device (programs "
-                                           "0..%2); choose another --program")
-                                .arg(program)
-                                .arg(identity->programs - 1));
-    return device.readProgram(program, identity->outputs, [&job](qint64 done, qint64 total) {
-        job.progress(done, total, QStringLiteral("reading cams"));
-    });
-}
-
 void registerCamConCommands(CommandRegistry& registry) {
     const QString family = QStringLiteral("camcon");
     const std::pair<const char*, int (*)(CliSession&, CommandArgs&)> groups[] = {

@@ -15,11 +15,6 @@ Result<T> runOnCamCon(CliSession& session, const QString& title, CamConWork<T> w
     return session.run<comm::CamConDevice, T>(title, std::move(work));
 }
 
-// Program `program` of the device, its identity read first (into `info`
-// when given): a program the device lacks is refused naming the ones it has.
-Result<CamProgram> readDeviceProgram(comm::CamConDevice& device, comm::JobContext& job, int program,
-                                     DeviceInfo* info = nullptr);
-
 // The CamCon's command groups and its part of --help.
 void registerCamConCommands(CommandRegistry& registry);
 

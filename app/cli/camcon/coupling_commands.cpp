@@ -11,6 +11,7 @@
 #include "write_output.h"
 
 #include "comm/camcon/table/short_client.h"
+#include "comm/camcon/usecases/program_read.h"
 #include "comm/camcon/usecases/short_coupling.h"
 #include "model/camcon/cam_validation.h"
 #include "model/camcon/csv_io.h"
@@ -96,13 +97,6 @@ Status checkOutput(int output, const DeviceInfo& info) {
                             .arg(info.outputs));
 }
 
-Status checkProgram(int program, const DeviceInfo& info) {
-    if (program >= 0 && program < info.programs) return success();
-    return Error::usage(QStringLiteral("program %1 does not exist: this device has programs 0..%2")
-                            .arg(program)
-                            .arg(info.programs - 1));
-}
-
 // The device's identity, once `output` is known to exist on it.
 Result<DeviceInfo> infoWithOutput(CamConDevice& device, int output) {
     Result<DeviceInfo> info = device.readInfo();
@@ -126,7 +120,8 @@ int runProgramChange(CliSession& session, CommandArgs& args) {
         [program](ShortClient& client, CamConDevice& device) -> Result<usecases::OutcomeLine> {
             const Result<DeviceInfo> info = device.readInfo();
             if (!info) return info.error();
-            if (const Status fits = checkProgram(program, *info); !fits) return fits.error();
+            if (const Status fits = usecases::checkProgramNumber(program, *info); !fits)
+                return fits.error();
             return usecases::shortChangeProgram(client, program);
         }));
 }
@@ -149,22 +144,22 @@ int runTrackRead(CliSession& session, CommandArgs& args) {
     const Result<int> program = args.takeIntOption(QStringLiteral("--program"), -1, 0, 65535);
     if (!program) return reportError(program.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<Track> track =
-        runShort<Track>(session, QStringLiteral("short track read"),
-                        [output = *output, program = *program](
-                            ShortClient& client, CamConDevice& device) -> Result<Track> {
-                            const Result<DeviceInfo> info = infoWithOutput(device, output);
-                            if (!info) return info.error();
-                            int chosen = program;
-                            if (chosen < 0) {
-                                const Result<ShortStatus> status = client.status();
-                                if (!status) return status.error();
-                                chosen = status->program;
-                            }
-                            if (const Status fits = checkProgram(chosen, *info); !fits)
-                                return fits.error();
-                            return client.readTrack(chosen, output);
-                        });
+    const Result<Track> track = runShort<Track>(
+        session, QStringLiteral("short track read"),
+        [output = *output, program = *program](ShortClient& client,
+                                               CamConDevice& device) -> Result<Track> {
+            const Result<DeviceInfo> info = infoWithOutput(device, output);
+            if (!info) return info.error();
+            int chosen = program;
+            if (chosen < 0) {
+                const Result<ShortStatus> status = client.status();
+                if (!status) return status.error();
+                chosen = status->program;
+            }
+            if (const Status fits = usecases::checkProgramNumber(chosen, *info); !fits)
+                return fits.error();
+            return client.readTrack(chosen, output);
+        });
     if (!track) return reportError(track.error());
     printOut(QString::fromUtf8(camsToCsv(Tracks{{*output, *track}})));
     return ExitOk;
@@ -206,7 +201,8 @@ int runTrackWrite(CliSession& session, CommandArgs& args) {
                                      CamConDevice& device) -> Result<usecases::OutcomeLine> {
             const Result<DeviceInfo> info = infoWithOutput(device, wanted.output);
             if (!info) return info.error();
-            if (const Status fits = checkProgram(program, *info); !fits) return fits.error();
+            if (const Status fits = usecases::checkProgramNumber(program, *info); !fits)
+                return fits.error();
             const Result<QVariant> axisType = device.readSetting(QStringLiteral("axisType"));
             if (!axisType) return axisType.error();
             const bool rotary = axisType->toLongLong() == 0;

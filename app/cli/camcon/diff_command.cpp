@@ -6,6 +6,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 
+#include "comm/camcon/usecases/program_read.h"
 #include "model/camcon/csv_io.h"
 #include "model/camcon/program_diff.h"
 #include "model/camcon/project_file.h"
@@ -65,14 +66,10 @@ Result<Side> readDevice(CliSession& session, int program) {
     const Result<CamProgram> read = runOnCamCon<CamProgram>(
         session, QStringLiteral("diff"),
         [program](CamConDevice& device, JobContext& job) -> Result<CamProgram> {
-            Result<CamProgram> cams = readDeviceProgram(device, job, program);
-            if (!cams) return cams.error();
-            const Result<QString> name = device.readProgramName(program);
-            if (!name) return name.error();
-            CamProgram read = std::move(cams).value();
-            read.number = program;
-            read.name = *name;
-            return read;
+            Result<usecases::ProgramRead> fetched = usecases::readIdentityAndProgram(
+                device, program, usecases::UseCaseProgress::of(job));
+            if (!fetched) return fetched.error();
+            return std::move(fetched->program);
         });
     if (!read) return read.error();
     Side side;

@@ -6,6 +6,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 
+#include "comm/camcon/usecases/program_read.h"
 #include "model/camcon/cam_timing.h"
 #include "model/camcon/project_file.h"
 
@@ -62,10 +63,11 @@ Result<TimingInput> fromDevice(CliSession& session, int number) {
         session, QStringLiteral("timing"),
         [number](CamConDevice& device, JobContext& job) -> Result<TimingInput> {
             TimingInput input;
-            DeviceInfo identity;
-            Result<CamProgram> program = readDeviceProgram(device, job, number, &identity);
-            if (!program) return program.error();
-            input.program = std::move(program).value();
+            Result<usecases::ProgramRead> fetched = usecases::readIdentityAndProgram(
+                device, number, usecases::UseCaseProgress::of(job));
+            if (!fetched) return fetched.error();
+            const DeviceInfo identity = fetched->device;
+            input.program = std::move(fetched->program);
             DeadTimeModes modes;
             if (device.has(comm::CamConCapability::DeadTimeModes)) {
                 Result<DeadTimeModes> read = device.readDeadTimeModes(identity.deadTimeOutputs);

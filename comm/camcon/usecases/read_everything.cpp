@@ -1,4 +1,5 @@
 #include "read_everything.h"
+#include "program_read.h"
 
 #include "model/camcon/data_validation.h"
 #include "model/camcon/system_settings.h"
@@ -111,11 +112,8 @@ private:
 
     Status readProgram(int program) {
         if (m_progress.cancelled()) return Error::cancelled();
-        const QString text =
-            QCoreApplication::translate("cambench::usecases", "reading program %1").arg(program);
         const UseCaseProgress part = m_progress.slice(m_done, m_device.outputs, m_total);
-        Result<CamProgram> read =
-            m_connection.readProgram(program, m_device.outputs, part.forDevice(text));
+        Result<CamProgram> read = usecases::readProgram(m_connection, m_device, program, part);
         if (!read) return read.error();
         m_done += m_device.outputs;
         m_result.project.programs << *read;

@@ -14,6 +14,8 @@ target_sources(cambench_usecases PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/write_items.cpp
   ${CMAKE_CURRENT_LIST_DIR}/read_everything.h
   ${CMAKE_CURRENT_LIST_DIR}/read_everything.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/program_read.h
+  ${CMAKE_CURRENT_LIST_DIR}/program_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/backup_restore.h
   ${CMAKE_CURRENT_LIST_DIR}/backup_restore.cpp
   ${CMAKE_CURRENT_LIST_DIR}/line_backup.h
