@@ -185,7 +185,7 @@ private:
 };
 
 // The family's part of the window: its page, one Device menu entry and
-// one screenshot-tour stop.
+// one screenshot-tour visit with one stop.
 class FakeWindow : public FamilyWindow {
 public:
     FakeWindow(FamilyGui* gui, MainWindow* window)
@@ -196,7 +196,11 @@ public:
                                                 [this] { window()->showPage(m_page); });
         ping->setObjectName(QStringLiteral("fakePingAction"));
     }
-    QList<TourStop> tourStops(const QString&) override {
+    QList<TourVisit> tourVisits() const override {
+        return {{QStringLiteral("fake"), QStringLiteral("sim:throttle=0"),
+                 QStringLiteral("fake-line")}};
+    }
+    QList<TourStop> tourStops(const TourVisit&, const QString&) override {
         return {{QStringLiteral("01-fake"),
                  [this] { window()->showPage(m_page); },
                  [] { return true; },

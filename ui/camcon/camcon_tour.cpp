@@ -1,18 +1,25 @@
-// The screenshot tour's stops on a CamCon (`cambench --screenshots DIR`).
+// The screenshot tour's stops on a CamCon (`cambench --screenshots DIR`):
+// the Standard protocol's pages and dialogs, the table interface's own
+// sections and its PLC coupling, and the Cam-BUS as the PC hears it.
 
 #include "camcon_window.h"
 
 #include "backup_wizard.h"
 #include "cam_page.h"
+#include "capability_gate.h"
 #include "compare_dialog.h"
 #include "compare_programs_dialog.h"
 #include "monitor_page.h"
+#include "plc_coupling_page.h"
 #include "plc_page.h"
+#include "table_section_copies.h"
 #include "terminal_page.h"
 #include "timing_bar.h"
 #include "users_page.h"
 #include "workspace.h"
 
+#include "ui/camcon/cambus/cambus_settings_widget.h"
+#include "ui/camcon/cambus/cambus_view_widget.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/connection_page.h"
@@ -27,7 +34,95 @@
 
 namespace cambench {
 
-QList<TourStop> CamConWindow::tourStops(const QString& directory) {
+namespace {
+const QString kStandard = QStringLiteral("standard");
+const QString kTable = QStringLiteral("3964r-n96");
+const QString kCamBus = QStringLiteral("cambus");
+}  // namespace
+
+QList<TourVisit> CamConWindow::tourVisits() const {
+    // Compare reads the whole device: a fast simulated line keeps the tour
+    // short; the Cam-BUS keeps its own pace. Each reaches a CamCon of the
+    // same identity (device 0), so that no page says another device
+    // answered. Standard comes last: its stops edit (Compare needs a
+    // difference), and a CamCon coming on the line after edits asks
+    // whether to replace them.
+    return {
+        {QStringLiteral("camcon-3964r-n96"), QStringLiteral("sim:protocol=3964r-n96;baud=115200"),
+         kTable},
+        {QStringLiteral("camcon-cambus"), QStringLiteral("sim:protocol=cambus;devices=0,7"),
+         kCamBus, 0},
+        {QStringLiteral("camcon-standard"), QStringLiteral("sim:baud=115200"), kStandard},
+    };
+}
+
+QList<TourStop> CamConWindow::tourStops(const TourVisit& visit, const QString& directory) {
+    if (visit.protocol == kTable) return tableTourStops();
+    if (visit.protocol == kCamBus) return camBusTourStops();
+    return standardTourStops(directory);
+}
+
+QList<TourStop> CamConWindow::tableTourStops() {
+    MainWindow* w = window();
+    Workspace* ws = m_workspace;
+    TableSectionCopies* copies = ws->tableSections();
+    auto* coupling = qobject_cast<PlcCouplingPage*>(
+        qobject_cast<CapabilityGate*>(sectionPage(PlcCoupling))->page());
+    return {
+        {QStringLiteral("01-connection"),
+         [w] { w->showSection(MainWindow::Connection); },
+         [] { return true; },
+         {}},
+        {QStringLiteral("02-dead-time-modes"),
+         [this] { showSection(DeadTimeModes); },
+         [ws] { return !ws->deviceDeadTimeModes().isEmpty(); },
+         {}},
+        {QStringLiteral("03-analogue-cams"),
+         [this] { showSection(AnalogueCams); },
+         [copies] { return copies->deviceAnalogueCams(1).has_value(); },
+         {}},
+        {QStringLiteral("04-programming-program"),
+         [this] { showSection(ProgrammingProgram); },
+         [copies] { return copies->deviceProgrammingProgram().has_value(); },
+         {}},
+        {QStringLiteral("05-eeprom-lock"),
+         [this] { showSection(EepromLock); },
+         [copies] { return copies->deviceEepromLock().has_value(); },
+         {}},
+        {QStringLiteral("06-plc-coupling"),
+         [this, coupling] {
+             showSection(PlcCoupling);
+             // What a PLC's function block would see: the status, then
+             // the cams of the output shown.
+             coupling->readStatus();
+             coupling->readTrack();
+         },
+         [coupling] {
+             return !coupling->statusInWords().isEmpty() && !coupling->lastOutcome().isEmpty();
+         },
+         {}},
+    };
+}
+
+QList<TourStop> CamConWindow::camBusTourStops() {
+    MainWindow* w = window();
+    Workspace* ws = m_workspace;
+    auto* bus = w->connectionPage()->findChild<CamBusSettingsWidget*>();
+    return {
+        {QStringLiteral("01-connection"),
+         [w] { w->showSection(MainWindow::Connection); },
+         // The bus view has heard both CamCons and this PC (without a
+         // scan: that asks all 64 numbers, most of them silent).
+         [bus] { return bus && bus->busView()->shownUsers().size() >= 3; },
+         {}},
+        {QStringLiteral("02-cam-editor"),
+         [this] { showSection(Cams); },
+         [ws] { return ws->infoFromDevice() && ws->cams()->hasDeviceCopy(0); },
+         {}},
+    };
+}
+
+QList<TourStop> CamConWindow::standardTourStops(const QString& directory) {
     MainWindow* w = window();
     Workspace* ws = m_workspace;
     // The dialog a stop opened, drawn over the window and closed by the next.

@@ -29,7 +29,8 @@ public:
     void forgetDevice() override;
     void pageShown(SectionPage* page) override;
     bool confirmClose() override;
-    QList<TourStop> tourStops(const QString& directory) override;
+    QList<TourVisit> tourVisits() const override;
+    QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) override;
 
     const Compax3Facts& facts() const { return m_facts; }
     Compax3ObjectsPage* objectsPage() const { return m_objects; }

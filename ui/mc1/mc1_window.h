@@ -30,7 +30,8 @@ public:
     // Also the facts (variant, type) the pages act on.
     void forgetDevice() override;
     void pageShown(SectionPage* page) override;
-    QList<TourStop> tourStops(const QString& directory) override;
+    QList<TourVisit> tourVisits() const override;
+    QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) override;
 
     const Mc1Facts& facts() const { return m_facts; }
     Mc1VariablesPage* variablesPage() const { return m_variables; }
