@@ -123,6 +123,9 @@ public:
         Q_UNUSED(directory);
         return {};
     }
+    // After the last stop of `visit`: puts back what its stops changed on
+    // the PC (edits), so that the next device is met as a person would.
+    virtual void tourVisitDone(const TourVisit& visit) { Q_UNUSED(visit); }
 
 private:
     FamilyGui* m_gui;

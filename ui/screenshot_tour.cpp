@@ -16,7 +16,6 @@ namespace cambench {
 
 namespace {
 const QSize kWindowSize(1280, 800);
-constexpr int kStepTimeoutMs = 60000;
 constexpr int kPollMs = 100;
 
 // The name of a stop's PNG without ".png": "camcon-cambus-01-connection".
@@ -87,7 +86,7 @@ void ScreenshotTour::runVisit(int index) {
     m_loadWait = connect(window, &MainWindow::loaded, this, &ScreenshotTour::visitLoaded,
                          Qt::SingleShotConnection);
     window->connectAndLoad();
-    QTimer::singleShot(kStepTimeoutMs, this, [this, index] {
+    QTimer::singleShot(m_patienceMs, this, [this, index] {
         if (m_visit != index || !m_steps.isEmpty() || !m_loadWait) return;
         disconnect(m_loadWait);
         visitLoaded(false);
@@ -120,6 +119,8 @@ void ScreenshotTour::visitLoaded(bool ok) {
 
 void ScreenshotTour::runStep(int index) {
     if (index >= m_steps.size()) {
+        const Visit& visit = m_visits[m_visit];
+        visit.family->tourVisitDone(visit.device);
         runVisit(m_visit + 1);
         return;
     }
@@ -129,15 +130,15 @@ void ScreenshotTour::runStep(int index) {
 
 void ScreenshotTour::waitFor(int index, int waitedMs) {
     const TourStop& step = m_steps[index];
-    if (!step.ready() && waitedMs < kStepTimeoutMs) {
+    if (!step.ready() && waitedMs < m_patienceMs) {
         QTimer::singleShot(kPollMs, this,
                            [this, index, waitedMs] { waitFor(index, waitedMs + kPollMs); });
         return;
     }
-    if (waitedMs >= kStepTimeoutMs) {
+    if (waitedMs >= m_patienceMs) {
         m_failures << QStringLiteral("%1: its data did not arrive within %2 s (%3)")
                           .arg(stopName(index))
-                          .arg(kStepTimeoutMs / 1000)
+                          .arg(m_patienceMs / 1000.0)
                           .arg(m_shell->window()->lastMessage());
     }
     // One more round of the event loop so the page paints what arrived.

@@ -27,6 +27,9 @@ public:
     void keepOnly(const QStringList& visits) { m_only = visits; }
     // The PNGs the tour takes, by file name in order, without connecting.
     QStringList plannedFiles() const;
+    // How long a device may take to load, or a stop's data to arrive,
+    // before it counts as not reached (tests shorten it).
+    void setPatience(int ms) { m_patienceMs = ms; }
 
     void start();
     QStringList failures() const { return m_failures; }
@@ -52,6 +55,7 @@ private:
     Shell* m_shell;
     QString m_directory;
     QStringList m_only;
+    int m_patienceMs = 60000;
     QList<Visit> m_visits;
     int m_visit = -1;
     QList<TourStop> m_steps;

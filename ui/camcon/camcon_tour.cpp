@@ -29,6 +29,7 @@
 #include <QDir>
 #include <QListWidget>
 #include <QPointer>
+#include <QUndoStack>
 
 #include <memory>
 
@@ -44,15 +45,14 @@ QList<TourVisit> CamConWindow::tourVisits() const {
     // Compare reads the whole device: a fast simulated line keeps the tour
     // short; the Cam-BUS keeps its own pace. Each reaches a CamCon of the
     // same identity (device 0), so that no page says another device
-    // answered. Standard comes last: its stops edit (Compare needs a
-    // difference), and a CamCon coming on the line after edits asks
-    // whether to replace them.
+    // answered, and Standard comes first, so that its Monitor's trend holds
+    // only its own device's samples.
     return {
+        {QStringLiteral("camcon-standard"), QStringLiteral("sim:baud=115200"), kStandard},
         {QStringLiteral("camcon-3964r-n96"), QStringLiteral("sim:protocol=3964r-n96;baud=115200"),
          kTable},
         {QStringLiteral("camcon-cambus"), QStringLiteral("sim:protocol=cambus;devices=0,7"),
          kCamBus, 0},
-        {QStringLiteral("camcon-standard"), QStringLiteral("sim:baud=115200"), kStandard},
     };
 }
 
@@ -60,6 +60,16 @@ QList<TourStop> CamConWindow::tourStops(const TourVisit& visit, const QString& d
     if (visit.protocol == kTable) return tableTourStops();
     if (visit.protocol == kCamBus) return camBusTourStops();
     return standardTourStops(directory);
+}
+
+void CamConWindow::tourVisitDone(const TourVisit& visit) {
+    if (visit.protocol != kStandard) return;
+    // The Standard stops edited (a cam, a dead time, a minimum pulse, the
+    // timing shown): undone, or the next CamCon would ask whether its
+    // values may replace them. The tour starts with nothing to undo.
+    m_workspace->cams()->undoStack()->setIndex(0);
+    m_workspace->cams()->setMinimumPulse(2, 0);
+    m_cams->timingBar()->setTimingShown(false);
 }
 
 QList<TourStop> CamConWindow::tableTourStops() {

@@ -61,6 +61,7 @@ public:
     bool confirmClose() override;
     QList<TourVisit> tourVisits() const override;
     QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) override;
+    void tourVisitDone(const TourVisit& visit) override;
 
     void showSection(Section section);
     // The page of `section` as listed (a CapabilityGate where the protocol
