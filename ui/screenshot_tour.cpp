@@ -9,6 +9,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QListWidget>
 #include <QPainter>
 #include <QTimer>
 
@@ -23,6 +24,19 @@ QString shotName(const TourVisit& visit, const TourStop& stop) {
     return visit.name + u'-' + stop.name;
 }
 }  // namespace
+
+TourStop scannedConnectionStop(MainWindow* window, std::function<bool()> ready) {
+    auto* devices = window->connectionPage()->findChild<QListWidget*>();
+    return {QStringLiteral("01-connection"),
+            [window] {
+                window->showSection(MainWindow::Connection);
+                window->connectionPage()->scanBus();
+            },
+            [devices, ready = std::move(ready)] {
+                return devices && devices->count() > 0 && (!ready || ready());
+            },
+            {}};
+}
 
 ScreenshotTour::ScreenshotTour(Shell* shell, const QString& directory, QObject* parent)
     : QObject(parent), m_shell(shell), m_directory(directory) {}

@@ -9,7 +9,12 @@
 
 namespace cambench {
 
+class MainWindow;
 class Shell;
+
+// The stop "01-connection" after a bus scan (point to point: the device
+// identified): ready once a device is listed and `ready` (if given) holds.
+TourStop scannedConnectionStop(MainWindow* window, std::function<bool()> ready = {});
 
 // `cambench --screenshots DIR`: connects to every device the registered
 // families name for the tour (each family's protocols on their in-process

@@ -25,9 +25,9 @@
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
 #include "ui/progress_page.h"
+#include "ui/screenshot_tour.h"
 
 #include <QDir>
-#include <QListWidget>
 #include <QPointer>
 #include <QUndoStack>
 
@@ -143,15 +143,8 @@ QList<TourStop> CamConWindow::standardTourStops(const QString& directory) {
     };
     const QString backupPath = QDir(directory).filePath(QStringLiteral("screenshot-backup.json"));
     const auto loaded = [ws] { return ws->infoFromDevice() && ws->cams()->hasDeviceCopy(0); };
-    auto* devices = w->connectionPage()->findChild<QListWidget*>();
     return {
-        {QStringLiteral("01-connection"),
-         [w] {
-             w->showSection(MainWindow::Connection);
-             w->connectionPage()->scanBus();
-         },
-         [loaded, devices] { return loaded() && devices && devices->count() > 0; },
-         {}},
+        scannedConnectionStop(w, loaded),
         {QStringLiteral("02-cam-editor"), [this] { showSection(Cams); }, loaded, {}},
         {QStringLiteral("03-dead-times"),
          [this] { showSection(DeadTimes); },

@@ -11,15 +11,14 @@
 #include "compax3_watch_page.h"
 
 #include "model/compax3/compax3_parameter_file.h"
-#include "ui/connection_page.h"
 #include "ui/main_window.h"
 #include "ui/multi_trend_chart.h"
+#include "ui/screenshot_tour.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
-#include <QListWidget>
 #include <QTableWidget>
 
 #include <memory>
@@ -56,16 +55,8 @@ QList<TourVisit> Compax3Window::tourVisits() const {
 
 QList<TourStop> Compax3Window::tourStops(const TourVisit& visit, const QString& directory) {
     if (visit.protocol == kRs485) {
-        MainWindow* w = window();
-        auto* devices = w->connectionPage()->findChild<QListWidget*>();
         return {
-            {QStringLiteral("01-connection"),
-             [w] {
-                 w->showSection(MainWindow::Connection);
-                 w->connectionPage()->scanBus();
-             },
-             [devices] { return devices && devices->count() > 0; },
-             {}},
+            scannedConnectionStop(window()),
             {QStringLiteral("02-status"),
              [this] { window()->showPage(m_status); },
              [this] { return m_facts.known && !m_status->errorText().isEmpty(); },
