@@ -55,10 +55,20 @@ private:
     QString m_identity;
 };
 
+// One device `cambench --screenshots DIR` connects to for a family's pages:
+// one of its protocols on the in-process simulated device. The PNGs of its
+// stops are named "<name>-<stop>.png".
+struct TourVisit {
+    QString name;      // family and protocol: "camcon-3964r-n96", "mc1-ascii"
+    QString port;      // "sim:protocol=3964r-n96;baud=115200"
+    QString protocol;  // a registry id: "3964r-n96"
+    int device = -1;   // on a bus: the device addressed (-1: the protocol's default)
+};
+
 // One stop of `cambench --screenshots DIR`: what to show, when its data has
 // arrived, and a dialog drawn over the window.
 struct TourStop {
-    QString name;  // the PNG's name: "02-cam-editor"
+    QString name;  // the PNG's name after the visit's: "02-cam-editor"
     std::function<void()> prepare;
     std::function<bool()> ready;
     std::function<QWidget*()> overlay;
@@ -103,11 +113,19 @@ public:
     virtual void pageShown(SectionPage* page) { Q_UNUSED(page); }
     // Asked before the window closes; false keeps it open.
     virtual bool confirmClose() { return true; }
-    // The screenshot tour's stops while a device of this family is connected.
-    virtual QList<TourStop> tourStops(const QString& directory) {
+    // The devices the screenshot tour connects to for this family: one per
+    // protocol that shows pages or views of its own.
+    virtual QList<TourVisit> tourVisits() const { return {}; }
+    // The tour's stops on `visit` (one of tourVisits()) once its device is
+    // on the line and loaded; a stop may write files into `directory`.
+    virtual QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) {
+        Q_UNUSED(visit);
         Q_UNUSED(directory);
         return {};
     }
+    // After the last stop of `visit`: puts back what its stops changed on
+    // the PC (edits), so that the next device is met as a person would.
+    virtual void tourVisitDone(const TourVisit& visit) { Q_UNUSED(visit); }
 
 private:
     FamilyGui* m_gui;

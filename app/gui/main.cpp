@@ -13,6 +13,7 @@
 #include <QCommandLineParser>
 #include <QSettings>
 #include <QTemporaryDir>
+#include <QTimer>
 
 #include <cstdio>
 
@@ -36,8 +37,9 @@ struct CommandLine {
                        "(default: the connection page's choice)."),
         QStringLiteral("protocol")};
     const QCommandLineOption shots{QStringLiteral("screenshots"),
-                                   QStringLiteral("Visit every screen on the simulated device, "
-                                                  "save one PNG each into DIR, and exit."),
+                                   QStringLiteral("Visit every screen of every family and "
+                                                  "protocol on its simulated device, save one "
+                                                  "PNG each into DIR, and exit."),
                                    QStringLiteral("DIR")};
 
     CommandLine() {
@@ -112,14 +114,13 @@ int main(int argc, char* argv[]) {
     cambench::applyTheme(parser.isSet(dark) || cambench::guisettings::dark().value_or(false));
 
     // The port given, else the last connection that worked (empty: the
-    // shell takes it), else the simulated device with its demo program.
+    // shell takes it), else the simulated device with its demo program. The
+    // screenshot tour connects to its devices itself (and, with its own
+    // empty settings, the shell to nothing).
     QString startPort = parser.value(port);
-    if (parser.isSet(shots)) {
-        // Compare reads the whole device: a fast simulated line keeps the tour short.
-        startPort = QStringLiteral("sim:baud=115200");
-    } else if (startPort.isEmpty() && !cambench::guisettings::loadConnection()) {
+    if (!parser.isSet(shots) && startPort.isEmpty() && !cambench::guisettings::loadConnection())
         startPort = QStringLiteral("sim");
-    }
+    if (parser.isSet(shots)) startPort.clear();
     const QString startProtocol = parser.value(protocol);
     if (!startProtocol.isEmpty() &&
         !cambench::comm::ProtocolRegistry::instance().find(startProtocol)) {
@@ -138,9 +139,7 @@ int main(int argc, char* argv[]) {
                 std::fprintf(stderr, "cambench: %s\n", qPrintable(failure));
             QCoreApplication::exit(ok ? 0 : 1);
         });
-        QObject::connect(
-            shell.window(), &cambench::MainWindow::loaded, tour, [tour] { tour->start(); },
-            Qt::SingleShotConnection);
+        QTimer::singleShot(0, tour, [tour] { tour->start(); });
     }
     return app.exec();
 }

@@ -185,7 +185,7 @@ private:
 };
 
 // The family's part of the window: its page, one Device menu entry and
-// one screenshot-tour stop.
+// screenshot-tour visits (one never reached) with one stop each.
 class FakeWindow : public FamilyWindow {
 public:
     FakeWindow(FamilyGui* gui, MainWindow* window)
@@ -196,7 +196,14 @@ public:
                                                 [this] { window()->showPage(m_page); });
         ping->setObjectName(QStringLiteral("fakePingAction"));
     }
-    QList<TourStop> tourStops(const QString&) override {
+    QList<TourVisit> tourVisits() const override {
+        // The second is never reached: the tour must say so.
+        return {
+            {QStringLiteral("fake"), QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line")},
+            {QStringLiteral("fake-unreachable"), QStringLiteral("/dev/cambench-no-such-port"),
+             QStringLiteral("fake-line")}};
+    }
+    QList<TourStop> tourStops(const TourVisit&, const QString&) override {
         return {{QStringLiteral("01-fake"),
                  [this] { window()->showPage(m_page); },
                  [] { return true; },

@@ -17,10 +17,12 @@
 #include <QAction>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDir>
 #include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardItemModel>
@@ -142,18 +144,86 @@ private Q_SLOTS:
         QCOMPARE(window->connectionPage()->family(), QStringLiteral("camcon"));
     }
 
+    // The tour connects to each device a family names for it and saves
+    // "<visit>-<stop>.png"; the shell names no family.
     void screenshotTourVisitsTheFamilysStops() {
+        QSettings().clear();  // no connection remembered: the tour connects itself
         Shell shell;
-        shell.start(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
-        QSignalSpy loaded(shell.window(), &MainWindow::loaded);
-        QVERIFY(loaded.wait(kTimeoutMs));
+        shell.start(QString());
         QTemporaryDir dir;
         ScreenshotTour tour(&shell, dir.path());
+        tour.keepOnly({QStringLiteral("fake")});
+        QCOMPARE(tour.plannedFiles(), QStringList{QStringLiteral("fake-01-fake.png")});
         QSignalSpy finished(&tour, &ScreenshotTour::finished);
         tour.start();
         QVERIFY(finished.wait(kTimeoutMs));
         QVERIFY2(finished.first().first().toBool(), qPrintable(tour.failures().join('\n')));
-        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("01-fake.png"))));
+        QCOMPARE(tour.saved(), QStringList{QStringLiteral("fake-01-fake.png")});
+        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("fake-01-fake.png"))));
+        QCOMPARE(shell.window()->connectionPage()->family(), QStringLiteral("fake"));
+    }
+
+    // A device the tour cannot reach fails it, naming each stop not taken.
+    void screenshotTourFailsNamingWhatItCouldNotReach() {
+        QSettings().clear();
+        Shell shell;
+        shell.start(QString());
+        QTemporaryDir dir;
+        ScreenshotTour tour(&shell, dir.path());
+        tour.keepOnly({QStringLiteral("fake-unreachable")});
+        tour.setPatience(1000);  // the tour's patience, not a pass/fail time
+        QSignalSpy finished(&tour, &ScreenshotTour::finished);
+        tour.start();
+        QVERIFY(finished.wait(kTimeoutMs));
+        QCOMPARE(finished.first().first().toBool(), false);
+        QVERIFY(tour.saved().isEmpty());
+        QCOMPARE(tour.failures().size(), 1);
+        QVERIFY2(tour.failures().first().contains(QStringLiteral("fake-unreachable-01-fake")),
+                 qPrintable(tour.failures().first()));
+    }
+
+    // Every family and protocol with pages of its own is visited, each
+    // page once, under a name that says family, protocol and page.
+    void screenshotTourPlansEveryFamilysPages() {
+        Shell shell;
+        shell.start(QString());
+        ScreenshotTour tour(&shell, QDir::tempPath());
+        QMap<QString, QStringList> planned;  // visit -> its stops
+        for (const QString& file : tour.plannedFiles()) {
+            const qsizetype stop = file.indexOf(QRegularExpression(QStringLiteral("-\\d\\d-")));
+            QVERIFY2(stop > 0 && file.endsWith(QStringLiteral(".png")), qPrintable(file));
+            planned[file.left(stop)] << file.mid(stop + 1).chopped(4);
+        }
+        const QMap<QString, QStringList> expected{
+            {QStringLiteral("camcon-standard"),
+             {QStringLiteral("01-connection"), QStringLiteral("02-cam-editor"),
+              QStringLiteral("03-dead-times"), QStringLiteral("04-settings"),
+              QStringLiteral("05-users"), QStringLiteral("06-plc"), QStringLiteral("07-monitor"),
+              QStringLiteral("08-compare"), QStringLiteral("09-backup-wizard"),
+              QStringLiteral("10-terminal"), QStringLiteral("11-compare-programs"),
+              QStringLiteral("12-timing-at-speed")}},
+            {QStringLiteral("camcon-3964r-n96"),
+             {QStringLiteral("01-connection"), QStringLiteral("02-dead-time-modes"),
+              QStringLiteral("03-analogue-cams"), QStringLiteral("04-programming-program"),
+              QStringLiteral("05-eeprom-lock"), QStringLiteral("06-plc-coupling")}},
+            {QStringLiteral("camcon-cambus"),
+             {QStringLiteral("01-connection"), QStringLiteral("02-cam-editor")}},
+            {QStringLiteral("mc1"),
+             {QStringLiteral("01-variables"), QStringLiteral("02-flags-io"),
+              QStringLiteral("03-program"), QStringLiteral("04-axes"), QStringLiteral("05-memory"),
+              QStringLiteral("06-trend")}},
+            {QStringLiteral("mc1-ascii"),
+             {QStringLiteral("01-variables"), QStringLiteral("02-flags-io")}},
+            {QStringLiteral("compax3"),
+             {QStringLiteral("01-objects"), QStringLiteral("02-status"),
+              QStringLiteral("03-motion"), QStringLiteral("04-watch"),
+              QStringLiteral("05-parameters")}},
+            {QStringLiteral("compax3-rs485"),
+             {QStringLiteral("01-connection"), QStringLiteral("02-status")}},
+            {QStringLiteral("fake"), {QStringLiteral("01-fake")}},
+            {QStringLiteral("fake-unreachable"), {QStringLiteral("01-fake")}},
+        };
+        QCOMPARE(planned, expected);
     }
 
     void cliHostsTheFamily() {

@@ -1,33 +1,138 @@
-// The screenshot tour's stops on a CamCon (`cambench --screenshots DIR`).
+// The screenshot tour's stops on a CamCon (`cambench --screenshots DIR`):
+// the Standard protocol's pages and dialogs, the table interface's own
+// sections and its PLC coupling, and the Cam-BUS as the PC hears it.
 
 #include "camcon_window.h"
 
 #include "backup_wizard.h"
 #include "cam_page.h"
+#include "capability_gate.h"
 #include "compare_dialog.h"
 #include "compare_programs_dialog.h"
 #include "monitor_page.h"
+#include "plc_coupling_page.h"
 #include "plc_page.h"
+#include "table_section_copies.h"
 #include "terminal_page.h"
 #include "timing_bar.h"
 #include "users_page.h"
 #include "workspace.h"
 
+#include "ui/camcon/cambus/cambus_settings_widget.h"
+#include "ui/camcon/cambus/cambus_view_widget.h"
 #include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
 #include "ui/progress_page.h"
+#include "ui/screenshot_tour.h"
 
 #include <QDir>
-#include <QListWidget>
 #include <QPointer>
+#include <QUndoStack>
 
 #include <memory>
 
 namespace cambench {
 
-QList<TourStop> CamConWindow::tourStops(const QString& directory) {
+namespace {
+const QString kStandard = QStringLiteral("standard");
+const QString kTable = QStringLiteral("3964r-n96");
+const QString kCamBus = QStringLiteral("cambus");
+}  // namespace
+
+QList<TourVisit> CamConWindow::tourVisits() const {
+    // Compare reads the whole device: a fast simulated line keeps the tour
+    // short; the Cam-BUS keeps its own pace. Each reaches a CamCon of the
+    // same identity (device 0), so that no page says another device
+    // answered, and Standard comes first, so that its Monitor's trend holds
+    // only its own device's samples.
+    return {
+        {QStringLiteral("camcon-standard"), QStringLiteral("sim:baud=115200"), kStandard},
+        {QStringLiteral("camcon-3964r-n96"), QStringLiteral("sim:protocol=3964r-n96;baud=115200"),
+         kTable},
+        {QStringLiteral("camcon-cambus"), QStringLiteral("sim:protocol=cambus;devices=0,7"),
+         kCamBus, 0},
+    };
+}
+
+QList<TourStop> CamConWindow::tourStops(const TourVisit& visit, const QString& directory) {
+    if (visit.protocol == kTable) return tableTourStops();
+    if (visit.protocol == kCamBus) return camBusTourStops();
+    return standardTourStops(directory);
+}
+
+void CamConWindow::tourVisitDone(const TourVisit& visit) {
+    if (visit.protocol != kStandard) return;
+    // The Standard stops edited (a cam, a dead time, a minimum pulse, the
+    // timing shown): undone, or the next CamCon would ask whether its
+    // values may replace them. The tour starts with nothing to undo.
+    m_workspace->cams()->undoStack()->setIndex(0);
+    m_workspace->cams()->setMinimumPulse(2, 0);
+    m_cams->timingBar()->setTimingShown(false);
+}
+
+QList<TourStop> CamConWindow::tableTourStops() {
+    MainWindow* w = window();
+    Workspace* ws = m_workspace;
+    TableSectionCopies* copies = ws->tableSections();
+    auto* coupling = qobject_cast<PlcCouplingPage*>(
+        qobject_cast<CapabilityGate*>(sectionPage(PlcCoupling))->page());
+    return {
+        {QStringLiteral("01-connection"),
+         [w] { w->showSection(MainWindow::Connection); },
+         [] { return true; },
+         {}},
+        {QStringLiteral("02-dead-time-modes"),
+         [this] { showSection(DeadTimeModes); },
+         [ws] { return !ws->deviceDeadTimeModes().isEmpty(); },
+         {}},
+        {QStringLiteral("03-analogue-cams"),
+         [this] { showSection(AnalogueCams); },
+         [copies] { return copies->deviceAnalogueCams(1).has_value(); },
+         {}},
+        {QStringLiteral("04-programming-program"),
+         [this] { showSection(ProgrammingProgram); },
+         [copies] { return copies->deviceProgrammingProgram().has_value(); },
+         {}},
+        {QStringLiteral("05-eeprom-lock"),
+         [this] { showSection(EepromLock); },
+         [copies] { return copies->deviceEepromLock().has_value(); },
+         {}},
+        {QStringLiteral("06-plc-coupling"),
+         [this, coupling] {
+             showSection(PlcCoupling);
+             // What a PLC's function block would see: the status, then
+             // the cams of the output shown.
+             coupling->readStatus();
+             coupling->readTrack();
+         },
+         [coupling] {
+             return !coupling->statusInWords().isEmpty() && !coupling->lastOutcome().isEmpty();
+         },
+         {}},
+    };
+}
+
+QList<TourStop> CamConWindow::camBusTourStops() {
+    MainWindow* w = window();
+    Workspace* ws = m_workspace;
+    auto* bus = w->connectionPage()->findChild<CamBusSettingsWidget*>();
+    return {
+        {QStringLiteral("01-connection"),
+         [w] { w->showSection(MainWindow::Connection); },
+         // The bus view has heard both CamCons and this PC (without a
+         // scan: that asks all 64 numbers, most of them silent).
+         [bus] { return bus && bus->busView()->shownUsers().size() >= 3; },
+         {}},
+        {QStringLiteral("02-cam-editor"),
+         [this] { showSection(Cams); },
+         [ws] { return ws->infoFromDevice() && ws->cams()->hasDeviceCopy(0); },
+         {}},
+    };
+}
+
+QList<TourStop> CamConWindow::standardTourStops(const QString& directory) {
     MainWindow* w = window();
     Workspace* ws = m_workspace;
     // The dialog a stop opened, drawn over the window and closed by the next.
@@ -38,15 +143,8 @@ QList<TourStop> CamConWindow::tourStops(const QString& directory) {
     };
     const QString backupPath = QDir(directory).filePath(QStringLiteral("screenshot-backup.json"));
     const auto loaded = [ws] { return ws->infoFromDevice() && ws->cams()->hasDeviceCopy(0); };
-    auto* devices = w->connectionPage()->findChild<QListWidget*>();
     return {
-        {QStringLiteral("01-connection"),
-         [w] {
-             w->showSection(MainWindow::Connection);
-             w->connectionPage()->scanBus();
-         },
-         [loaded, devices] { return loaded() && devices && devices->count() > 0; },
-         {}},
+        scannedConnectionStop(w, loaded),
         {QStringLiteral("02-cam-editor"), [this] { showSection(Cams); }, loaded, {}},
         {QStringLiteral("03-dead-times"),
          [this] { showSection(DeadTimes); },

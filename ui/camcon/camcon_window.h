@@ -59,7 +59,9 @@ public:
     void deviceOnLine(bool load) override;
     void pageShown(SectionPage* page) override;
     bool confirmClose() override;
-    QList<TourStop> tourStops(const QString& directory) override;
+    QList<TourVisit> tourVisits() const override;
+    QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) override;
+    void tourVisitDone(const TourVisit& visit) override;
 
     void showSection(Section section);
     // The page of `section` as listed (a CapabilityGate where the protocol
@@ -105,6 +107,10 @@ private:
     void checkDevice();
     void readStartSections(int program);
     void showMessage(const QString& text);
+    // The screenshot tour's stops per protocol (camcon_tour.cpp).
+    QList<TourStop> standardTourStops(const QString& directory);
+    QList<TourStop> tableTourStops();
+    QList<TourStop> camBusTourStops();
     // File menu (camcon_window_files.cpp).
     void addFileEntries(QMenu* file);
     void fillRecentFiles();

@@ -152,6 +152,10 @@ void Compax3ObjectsPage::read(const QList<Compax3ObjectId>& ids) {
             const QDateTime now = QDateTime::currentDateTime();
             int refused = 0;
             int absent = 0;
+            // The columns fit their contents once, after all values: fitted
+            // after each of ~200 values, the window stood still for seconds.
+            QHeaderView* header = m_tree->header();
+            header->setSectionResizeMode(QHeaderView::Interactive);
             for (const Compax3Reading& value : *values) {
                 if (!value.refused()) {
                     m_model->setDriveValue(value.id, value.value, now);
@@ -164,6 +168,7 @@ void Compax3ObjectsPage::read(const QList<Compax3ObjectId>& ids) {
                     ++refused;
                 }
             }
+            header->setSectionResizeMode(QHeaderView::ResizeToContents);
             QString text =
                 refused == 0 ? tr("Read %n object(s) at %1.", nullptr, int(values->size()) - absent)
                                    .arg(now.toString(QStringLiteral("HH:mm:ss")))

@@ -72,26 +72,6 @@ bool Compax3Window::confirmClose() {
     return ask.clickedButton() == close;
 }
 
-QList<TourStop> Compax3Window::tourStops(const QString&) {
-    return {
-        {QStringLiteral("31-compax3-objects"),
-         [this] { window()->showPage(m_objects); },
-         [this] {
-             return facts().known &&
-                    m_objects->model()->driveValue(comm::kCompax3Position).has_value();
-         },
-         {}},
-        {QStringLiteral("32-compax3-status"),
-         [this] { window()->showPage(m_status); },
-         [this] { return facts().known && !m_status->errorText().isEmpty(); },
-         {}},
-        {QStringLiteral("33-compax3-motion"),
-         [this] { window()->showPage(m_motion); },
-         [this] { return facts().known; },
-         {}},
-    };
-}
-
 Compax3Window* compax3Window(const MainWindow* window) {
     return window ? window->findChild<Compax3Window*>() : nullptr;
 }

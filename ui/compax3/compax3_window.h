@@ -23,7 +23,8 @@ public:
 
     void deviceOnLine(bool load) override;
     bool confirmClose() override;
-    QList<TourStop> tourStops(const QString& directory) override;
+    QList<TourVisit> tourVisits() const override;
+    QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) override;
 
     Compax3ObjectsPage* objectsPage() const { return m_objects; }
     Compax3StatusPage* statusPage() const { return m_status; }

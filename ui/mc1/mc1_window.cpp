@@ -185,25 +185,6 @@ void Mc1Window::restoreFile(const QString& path) {
         });
 }
 
-QList<TourStop> Mc1Window::tourStops(const QString&) {
-    return {
-        {QStringLiteral("21-mc1-variables"),
-         [this] { window()->showPage(m_variables); },
-         [this] {
-             return facts().known && m_mc1->watchList()->entries().value(0).value.has_value();
-         },
-         {}},
-        {QStringLiteral("22-mc1-flags-io"),
-         [this] { window()->showPage(m_points); },
-         [this] { return facts().known; },
-         {}},
-        {QStringLiteral("23-mc1-axes"),
-         [this] { window()->showPage(m_axes); },
-         [this] { return facts().known; },
-         {}},
-    };
-}
-
 Mc1Window* mc1Window(const MainWindow* window) {
     return window ? window->findChild<Mc1Window*>() : nullptr;
 }

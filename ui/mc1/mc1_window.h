@@ -25,7 +25,8 @@ public:
 
     void addMenuEntries(const FamilyMenus& menus) override;
     void deviceOnLine(bool load) override;
-    QList<TourStop> tourStops(const QString& directory) override;
+    QList<TourVisit> tourVisits() const override;
+    QList<TourStop> tourStops(const TourVisit& visit, const QString& directory) override;
 
     Mc1VariablesPage* variablesPage() const { return m_variables; }
     Mc1PointsPage* pointsPage() const { return m_points; }

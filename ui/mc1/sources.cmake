@@ -26,6 +26,7 @@ target_sources(cambench_ui PRIVATE
   mc1/mc1_gui.cpp
   mc1/mc1_window.h
   mc1/mc1_window.cpp
+  mc1/mc1_tour.cpp
   mc1/protocols/mc1_settings_widget.h
   mc1/protocols/mc1_settings_widget.cpp
 )
