@@ -31,9 +31,7 @@ add_executable(cambench-cli
   cli/main.cpp
   cli/cli_families.cpp
 )
-# The CamCon's command groups.
-include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/mc1/sources.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/compax3/sources.cmake)
+# Each family's command groups, listed in its folder.
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} sources.cmake)
 target_link_libraries(cambench-cli PRIVATE cambench_cli_front cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix
