@@ -8,52 +8,28 @@
 # Prints each violation as "FILE:LINE: ..." and fails when there is one.
 #
 # The rule, read on each line of a shell list with its comment cut off: a
-# word with a folder named after a family (camcon/, mc1/, compax3/, as the
-# first folder of the word or after a slash) that ends in a file name with
-# an extension ("camcon/sim_axis.cpp", "${X}/mc1/sources.cmake"). A folder
-# alone (add_subdirectory) and a file whose name merely holds a family's
-# name (fuzz/mc1_decoder.cmake) are no violation. A path built from
+# word with a folder named after a family (CAMBENCH_FAMILIES of
+# cmake/families.cmake; for a family xy: xy/, as the first folder of the
+# word or after a slash) that ends in a file name with an extension
+# ("xy/sim_xy.cpp", "${X}/xy/sources.cmake"). A folder alone
+# (add_subdirectory) and a file whose name merely holds a family's name
+# (fuzz/xy_decoder.cmake) are no violation. A path built from
 # variables that hold a family folder is not seen. The checks' own scripts
 # (tests/layering/) name family files as what they plant: not lists of
 # sources, not checked.
 cmake_minimum_required(VERSION 3.25)
+include("${CMAKE_CURRENT_LIST_DIR}/tree_checks.cmake")
 
-if(NOT ROOT)
-  message(FATAL_ERROR "family_sources: pass -DROOT=<source dir>")
-endif()
-include("${ROOT}/cmake/families.cmake")
-string(JOIN "|" family_names ${CAMBENCH_FAMILIES})
+set(family_names "${CAMBENCH_FAMILY_NAMES}")
 set(family_file "(^|[ \t(\"/])(${family_names})/[^ \t()\"]*\\.[A-Za-z0-9_]+")
 
-# The lists of the tree: every folder but build trees and hidden ones.
-file(GLOB top RELATIVE "${ROOT}" "${ROOT}/*")
-set(lists)
-foreach(entry IN LISTS top)
-  if(entry MATCHES "^(\\.|build)")
-    continue()
-  endif()
-  if(IS_DIRECTORY "${ROOT}/${entry}")
-    file(GLOB_RECURSE found RELATIVE "${ROOT}" "${ROOT}/${entry}/CMakeLists.txt"
-         "${ROOT}/${entry}/*.cmake")
-    list(APPEND lists ${found})
-  elseif(entry MATCHES "(^CMakeLists\\.txt|\\.cmake)$")
-    list(APPEND lists "${entry}")
-  endif()
-endforeach()
-list(SORT lists)
+cambench_tree_files(lists GLOBS CMakeLists.txt *.cmake)
 
 set(violations 0)
 set(checked 0)
 foreach(list_file IN LISTS lists)
-  string(REPLACE "/" ";" parts "${list_file}")
-  list(POP_BACK parts)
-  set(in_family FALSE)
-  foreach(part IN LISTS parts)
-    if(part IN_LIST CAMBENCH_FAMILIES)
-      set(in_family TRUE)
-    endif()
-  endforeach()
-  if(in_family OR list_file MATCHES "^tests/layering/")
+  cambench_family_of("${list_file}" family)
+  if(family OR list_file MATCHES "^tests/layering/")
     continue()
   endif()
   math(EXPR checked "${checked} + 1")

@@ -10,37 +10,15 @@ file(COPY "${ROOT}/" DESTINATION "${SCRATCH}" FILES_MATCHING
      PATTERN "CMakeLists.txt" PATTERN "*.cmake"
      PATTERN ".*" EXCLUDE PATTERN "build*" EXCLUDE)
 
-function(run_check out_rc out_text)
-  execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${SCRATCH} -P ${CHECK}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(${out_rc} ${rc} PARENT_SCOPE)
-  set(${out_text} "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-run_check(rc text)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "the untouched copy of the lists fails the check:\n${text}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/run_check.cmake)
+expect_untouched_passes()
 
 # Appends LINE to LIST (a path under SCRATCH), runs the check, restores the
 # list; EXPECT is "caught" or "passes".
 function(plant list line expect why)
-  set(path "${SCRATCH}/${list}")
-  file(READ "${path}" original)
-  string(REGEX MATCHALL "\n" newlines "${original}")
-  list(LENGTH newlines count)
-  math(EXPR number "${count} + 1")
-  file(APPEND "${path}" "${line}\n")
-  run_check(rc text)
-  file(WRITE "${path}" "${original}")
+  run_check_planted("${list}" "${line}" rc text number)
   if(expect STREQUAL "caught")
-    if(rc EQUAL 0)
-      message(SEND_ERROR "not caught (${why}): ${list} with \"${line}\"")
-    elseif(NOT text MATCHES "${list}:${number}: names")
-      message(SEND_ERROR "caught, but not as ${list}:${number} (${why}):\n${text}")
-    else()
-      message(STATUS "caught (${why}): ${list}:${number}")
-    endif()
+    expect_caught(${rc} "${text}" "${list}:${number}: names" "${list}:${number}" "${why}")
   elseif(NOT rc EQUAL 0)
     message(SEND_ERROR "refused though allowed (${why}): ${list} with \"${line}\":\n${text}")
   else()

@@ -15,3 +15,5 @@ cambench_add_test(tst_mc1_project_file SOURCES model/tst_mc1_project_file.cpp LI
 cambench_add_test(tst_compax3_syntax SOURCES model/tst_compax3_syntax.cpp LIBS cambench_comm)
 # Also under a German C locale: numbers must still go out with a point.
 cambench_bound_test(tst_compax3_syntax 300 ENVIRONMENT "LC_ALL=de_DE.UTF-8;LANG=de_DE.UTF-8")
+# Each family's tests of this area, listed in its folder (tests/model/<family>/).
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

@@ -8,3 +8,5 @@ cambench_add_usecase_test(tst_usecase_write_items usecases/tst_write_items.cpp)
 cambench_add_usecase_test(tst_usecase_read_everything usecases/tst_read_everything.cpp)
 cambench_add_usecase_test(tst_usecase_backup usecases/tst_backup.cpp)
 cambench_add_usecase_test(tst_usecase_check usecases/tst_check.cpp)
+# Each family's tests of this area, listed in its folder (tests/usecases/<family>/).
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)
