@@ -20,3 +20,6 @@ cambench_add_tree_check(layering plant_includes catches_planted_includes)
 # Each family lists its own sources (issue 31, item 2): no shell CMake list
 # names a file inside a family folder.
 cambench_add_tree_check(family_sources plant_family_sources catches_planted_names)
+# docs/architecture.md's list of the files outside the family folders that
+# name a family is the tree's (issue 31, item 4).
+cambench_add_tree_check(architecture_doc plant_architecture_doc catches_differences)
