@@ -9,10 +9,11 @@
 #  - ui/ reaches the device through comm's device interfaces and use cases,
 #    never a transport, engine, worker or simulator header (comm/transport,
 #    comm/engine, comm/worker, comm/sim), and includes nothing of app/;
-#  - the family folders (camcon, mc1, compax3, wherever they sit) never
-#    include each other;
-#  - the shell (everything outside the family folders) names no family,
-#    except the registration places listed in kRegistrationPlaces.
+#  - the family folders (named as CAMBENCH_FAMILIES of cmake/families.cmake,
+#    wherever they sit) never include each other;
+#  - the shell (everything outside the family folders) includes no family
+#    header, except the one registration place, kRegistrationPlace
+#    (app/registry/builtin_registry.cpp: one line per family).
 #
 # An include is resolved as the compiler does for quotes: beside the
 # including file first, then from the source root. Includes that resolve to
@@ -20,42 +21,20 @@
 # not checked.
 
 cmake_minimum_required(VERSION 3.25)
-
-if(NOT ROOT)
-  message(FATAL_ERROR "layering: pass -DROOT=<source dir>")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/tree_checks.cmake")
 
 set(kLayers model comm ui app)
-set(kFamilies camcon mc1 compax3)
-# The only shell files that may name a family: where families are registered.
-set(kRegistrationPlaces
-  "^app/registry/"
-  "^app/gui/gui_registry\\.cpp$"
-  "^app/cli/cli_families\\.cpp$")
+# The only shell file that may include a family's header: the list of the
+# built-in families, each through its parts file (app/registry/<family>/).
+set(kRegistrationPlace "^app/registry/builtin_registry\\.cpp$")
 # What ui/ must not reach into: the device is behind comm's interfaces.
 set(kUiForbidden "^comm/(transport|engine|worker|sim)/")
 
-# The family a path lies in (a folder named after one), or "" for the shell.
-function(layering_family path out)
-  set(family "")
-  string(REPLACE "/" ";" parts "${path}")
-  list(POP_BACK parts)  # the file name itself names no folder
-  foreach(part IN LISTS parts)
-    if(part IN_LIST kFamilies)
-      set(family "${part}")
-      break()
-    endif()
-  endforeach()
-  set(${out} "${family}" PARENT_SCOPE)
-endfunction()
-
 function(layering_is_registration_place path out)
   set(result FALSE)
-  foreach(pattern IN LISTS kRegistrationPlaces)
-    if(path MATCHES "${pattern}")
-      set(result TRUE)
-    endif()
-  endforeach()
+  if(path MATCHES "${kRegistrationPlace}")
+    set(result TRUE)
+  endif()
   set(${out} ${result} PARENT_SCOPE)
 endfunction()
 
@@ -81,7 +60,7 @@ set(violations 0)
 foreach(file IN LISTS files)
   string(REGEX MATCH "^[^/]+" layer "${file}")
   get_filename_component(folder "${file}" DIRECTORY)
-  layering_family("${file}" family)
+  cambench_family_of("${file}" family)
   layering_is_registration_place("${file}" registers)
   file(STRINGS "${ROOT}/${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[^\"]+\"")
   foreach(include_line IN LISTS includes)
@@ -95,7 +74,7 @@ foreach(file IN LISTS files)
     endif()
     cmake_path(NORMAL_PATH target)
     string(REGEX MATCH "^[^/]+" target_layer "${target}")
-    layering_family("${target}" target_family)
+    cambench_family_of("${target}" target_family)
 
     set(broken "")
     if(layer STREQUAL "model" AND target_layer MATCHES "^(comm|ui|app)$")
@@ -110,7 +89,7 @@ foreach(file IN LISTS files)
     elseif(family AND target_family AND NOT family STREQUAL target_family)
       set(broken "the ${family} family includes nothing of the ${target_family} family")
     elseif(NOT family AND target_family AND NOT registers)
-      set(broken "the shell names no family (only the registration places do); "
+      set(broken "the shell names no family (only app/registry/builtin_registry.cpp does); "
                  "this includes the ${target_family} family")
     endif()
     if(broken)

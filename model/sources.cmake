@@ -1,65 +1,17 @@
 target_sources(cambench_model PRIVATE
-  mc1/mc1_backup_file.h
-  mc1/mc1_backup_file.cpp
-  mc1/mc1_project_file.h
-  mc1/mc1_project_file.cpp
   result.h
   walked_list.h
   walked_list.cpp
   machine/machine_file.h
   machine/machine_file.cpp
-  camcon/cam_program.h
-  camcon/device_info.h
-  camcon/device_info.cpp
-  camcon/dead_times.h
-  camcon/dead_time_modes.h
-  camcon/dead_time_modes.cpp
-  camcon/analogue_cams.h
-  camcon/analogue_cams.cpp
-  camcon/programming_program.h
-  camcon/programming_program.cpp
-  camcon/user.h
-  camcon/plc_network.h
-  camcon/plc_network.cpp
-  camcon/eeprom_image.h
-  camcon/eeprom_image.cpp
-  camcon/system_settings.h
-  camcon/system_settings.cpp
-  camcon/settings_validation.cpp
   model_log.h
   model_log.cpp
   atomic_file.h
   atomic_file.cpp
   file_read.h
   file_read.cpp
-  camcon/cam_validation.h
-  camcon/cam_validation.cpp
-  camcon/program_diff.h
-  camcon/program_diff.cpp
-  camcon/cam_axis.h
-  camcon/cam_axis.cpp
-  camcon/cam_timing.h
-  camcon/cam_timing.cpp
-  camcon/data_validation.h
-  camcon/data_validation.cpp
   json_reader.h
   json_reader.cpp
   json_file.h
   json_file.cpp
-  camcon/device_info_json.h
-  camcon/device_info_json.cpp
-  camcon/project_file.h
-  camcon/project_file.cpp
-  camcon/eeprom_image_file.h
-  camcon/eeprom_image_file.cpp
-  camcon/csv_io.h
-  camcon/csv_io.cpp
-  camcon/settings_file.h
-  camcon/settings_file.cpp
-  camcon/plc_file.h
-  camcon/plc_file.cpp
-  camcon/table_sections_json.h
-  camcon/table_sections_json.cpp
-  camcon/line_manifest.h
-  camcon/line_manifest.cpp
 )

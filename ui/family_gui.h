@@ -132,7 +132,7 @@ private:
     MainWindow* m_window;
 };
 
-// A family's GUI, registered from app/gui (one line per family).
+// A family's GUI, registered by the GUI part of its FamilyParts (app/registry).
 struct FamilyGuiInfo {
     QString familyId;
     std::function<FamilyGui*(DeviceSession* session, QObject* parent)> create;

@@ -32,132 +32,31 @@ target_sources(cambench_ui PRIVATE
   stop_shortcut.cpp
   stop_button.h
   stop_button.cpp
-  camcon/workspace.h
-  camcon/workspace.cpp
-  camcon/table_section_copies.h
-  camcon/table_section_copies.cpp
-  camcon/workspace_item.h
   section_page.h
-  camcon/camcon_section_page.h
-  camcon/camcon_section_page.cpp
-  camcon/camcon_gui.h
-  camcon/camcon_gui.cpp
-  camcon/camcon_window.h
-  camcon/camcon_window.cpp
-  camcon/camcon_window_files.cpp
-  camcon/camcon_tour.cpp
-  camcon/camcon_identity_panel.h
-  camcon/camcon_identity_panel.cpp
-  camcon/program_diff_view.h
-  camcon/program_diff_view.cpp
-  camcon/compare_programs_dialog.h
-  camcon/compare_programs_dialog.cpp
   family_gui.h
   family_gui.cpp
   replace_edits_question.h
   replace_edits_question.cpp
-  camcon/write_plan_builder.h
-  camcon/write_plan_builder.cpp
-  camcon/device_writer.h
-  camcon/device_writer.cpp
-  camcon/carry_over.h
-  camcon/device_change_dialog.h
-  camcon/device_change_dialog.cpp
-  camcon/replace_edits_dialog.h
-  camcon/replace_edits_dialog.cpp
-  camcon/incoming_values.h
-  camcon/incoming_values.cpp
-  camcon/device_check.h
-  camcon/device_check.cpp
   last_write_report.h
   last_write_report.cpp
-  camcon/device_reads.h
-  camcon/device_reads.cpp
-  camcon/camcon_jobs.h
-  camcon/capability_gate.h
-  camcon/capability_gate.cpp
-  camcon/dead_time_modes_page.h
-  camcon/dead_time_modes_page.cpp
-  camcon/analogue_cams_page.h
-  camcon/analogue_cams_page.cpp
-  camcon/eeprom_lock_page.h
-  camcon/eeprom_lock_page.cpp
-  camcon/milliseconds_text.h
-  camcon/plc_coupling_page.h
-  camcon/plc_coupling_page.cpp
-  camcon/programming_program_page.h
-  camcon/programming_program_page.cpp
   protocols/protocol_settings_widget.h
   protocols/protocol_settings_widget.cpp
-  camcon/protocols/ascii_settings_widget.h
-  camcon/protocols/ascii_settings_widget.cpp
-  camcon/protocols/table_settings_widget.h
-  camcon/protocols/table_settings_widget.cpp
-  camcon/cambus/cambus_settings_widget.h
-  camcon/cambus/cambus_settings_widget.cpp
-  camcon/cambus/cambus_view_widget.h
-  camcon/cambus/cambus_view_widget.cpp
   connection_page.h
   connection_page.cpp
-  camcon/dead_times_model.h
-  camcon/dead_times_model.cpp
-  camcon/dead_times_page.h
-  camcon/dead_times_page.cpp
   wheel_guard.h
   wheel_guard.cpp
-  camcon/setting_field.h
-  camcon/setting_field.cpp
-  camcon/settings_page.h
-  camcon/settings_page.cpp
   led_strip.h
   led_strip.cpp
   trend_chart.h
   trend_chart.cpp
-  camcon/monitor_page.h
-  camcon/monitor_page.cpp
-  camcon/terminal_page.h
-  camcon/terminal_page.cpp
-  camcon/users_model.h
-  camcon/users_model.cpp
-  camcon/access_grid_model.h
-  camcon/access_grid_model.cpp
-  camcon/users_page.h
-  camcon/users_page.cpp
-  camcon/plc_symbol.h
-  camcon/plc_symbol.cpp
-  camcon/plc_matrix_model.h
-  camcon/plc_matrix_model.cpp
-  camcon/plc_page.h
-  camcon/plc_page.cpp
-  camcon/cam_page.h
-  camcon/cam_page.cpp
-  camcon/timing_bar.cpp
-  camcon/timing_bar.h
-  camcon/compare_dialog.h
-  camcon/compare_dialog.cpp
   progress_page.h
   progress_page.cpp
-  camcon/backup_wizard.h
-  camcon/backup_wizard.cpp
-  camcon/line_backup_dialog.h
-  camcon/line_backup_dialog.cpp
-  camcon/backup_page.h
-  camcon/backup_page.cpp
   gui_settings.h
   gui_settings.cpp
   theme.h
   theme.cpp
   language.h
   language.cpp
-  camcon/project_io.h
-  camcon/project_io.cpp
-  camcon/new_project_dialog.h
-  camcon/new_project_dialog.cpp
-  camcon/print_diagram.h
-  camcon/print_diagram.cpp
-  camcon/cam_text.h
-  camcon/commissioning_report.h
-  camcon/commissioning_report.cpp
   report_pages.h
   report_pages.cpp
   main_window.h

@@ -28,8 +28,8 @@ struct MachineVerbs {
 };
 
 // The command groups of cambench-cli: the shell's own (ports, detect) and
-// each family's, registered from app/cli/cli_families.cpp (one line per
-// family), with the family's part of --help. Nothing else lists them.
+// each family's, registered by its FamilyParts (app/registry/<family>/),
+// with the family's part of --help. Nothing else lists them.
 class CommandRegistry {
 public:
     static CommandRegistry& instance();
@@ -57,8 +57,6 @@ private:
 
 // The shell's own groups: ports, detect.
 void registerShellCommands(CommandRegistry& registry);
-// Registers the shell's groups and each built family's (cli_families.cpp).
-void registerCliCommands();
 
 // "read" or "write" after a group name; a usage error for anything else.
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs);

@@ -1,4 +1,5 @@
 #include "app/registry/builtin_registry.h"
+#include "app/registry/family_parts.h"
 #include "cambench_version.h"
 #include "command_line.h"
 #include "commands.h"
@@ -8,7 +9,9 @@
 
 int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
-    cambench::cli::registerCliCommands();
+    cambench::cli::registerShellCommands(cambench::cli::CommandRegistry::instance());
+    if (!cambench::familiesComplete(cambench::Program::Cli, "cambench-cli"))
+        return 70;  // EX_SOFTWARE: this build lacks a family's part
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));

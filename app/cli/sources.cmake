@@ -32,11 +32,13 @@ target_link_libraries(cambench_cli_front PUBLIC cambench_usecases cambench_comm 
 
 add_executable(cambench-cli
   cli/main.cpp
-  cli/cli_families.cpp
 )
-# The CamCon's command groups.
-include(${CMAKE_CURRENT_LIST_DIR}/camcon/sources.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/mc1/sources.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/compax3/sources.cmake)
-target_link_libraries(cambench-cli PRIVATE cambench_cli_front cambench_registry cambench_usecases cambench_comm cambench_model Qt6::Core)
+# Each family's command groups, listed in its folder.
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} sources.cmake)
+# The registrations with each family's CLI part (app/registry/sources.cmake):
+# objects of cambench-cli itself, whose command groups they name.
+add_library(cambench_cli_registry OBJECT ${CAMBENCH_FAMILY_PARTS})
+target_compile_definitions(cambench_cli_registry PRIVATE CAMBENCH_PARTS_CLI)
+target_link_libraries(cambench_cli_registry PUBLIC cambench_cli_front cambench_family_parts)
+target_link_libraries(cambench-cli PRIVATE cambench_cli_registry cambench_cli_front cambench_family_parts cambench_usecases cambench_comm cambench_model Qt6::Core)
 install(TARGETS cambench-cli)  # to bin/ under the install prefix

@@ -1,5 +1,5 @@
-#include "app/gui/gui_registry.h"
 #include "app/registry/builtin_registry.h"
+#include "app/registry/family_parts.h"
 #include "cambench_version.h"
 #include "comm/device/protocol_registry.h"
 #include "ui/gui_settings.h"
@@ -74,6 +74,8 @@ void nameApplication() {
 
 int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
+    if (!cambench::familiesComplete(cambench::Program::Gui, "cambench"))
+        return 70;  // EX_SOFTWARE: this build lacks a family's part
     if (onlyText(argc, argv)) {
         QCoreApplication text(argc, argv);
         nameApplication();
@@ -81,7 +83,6 @@ int main(int argc, char* argv[]) {
         commandLine.parser.process(text);  // prints and exits
         return 0;
     }
-    cambench::registerGuiParts();
     QApplication app(argc, argv);
     nameApplication();
 

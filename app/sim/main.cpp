@@ -5,6 +5,7 @@
 // reads its own.
 
 #include "app/registry/builtin_registry.h"
+#include "app/registry/family_parts.h"
 #include "cambench_version.h"
 #include "signal_quitter.h"
 
@@ -157,6 +158,8 @@ void addOptions(QCommandLineParser& parser) {
 
 int main(int argc, char* argv[]) {
     cambench::registerBuiltins();
+    if (!cambench::familiesComplete(cambench::Program::Simulator, "cambench-sim"))
+        return 70;  // EX_SOFTWARE: this build lacks a family's part
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("cambench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));

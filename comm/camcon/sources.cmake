@@ -5,3 +5,8 @@ target_sources(cambench_comm PRIVATE
   camcon/camcon_family.h
   camcon/camcon_family.cpp
 )
+# Its protocols: ASCII (Standard, Multiuser), the table interface (3964R),
+# the Cam-BUS.
+include(${CMAKE_CURRENT_LIST_DIR}/ascii/sources.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/table/sources.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/cambus/sources.cmake)

@@ -1,92 +1,25 @@
 # The simulator host (in-process port, pseudo-terminal and TCP servers,
-# pacing, shared faults, the registry of family simulators) and, in
-# camcon/, the simulated CamCon.
+# pacing, shared faults, the registry of family simulators). Each family's
+# simulated device is listed in its own folder (<family>/sources.cmake).
 target_sources(cambench_sim PRIVATE
-  camcon/sim_axis.cpp
-  mc1/sim_mc1_controller.cpp
-  mc1/sim_mc1_controller.h
-  mc1/sim_mc1_line.cpp
-  mc1/sim_mc1_line.h
-  mc1/mc1_simulator.cpp
-  mc1/mc1_simulator.h
-  mc1/sim_mc1_ascii_line.cpp
-  mc1/sim_mc1_ascii_line.h
-  compax3/sim_compax3_drive.h
-  compax3/sim_compax3_drive.cpp
-  compax3/sim_compax3_line.h
-  compax3/sim_compax3_line.cpp
-  compax3/compax3_simulator.h
-  compax3/compax3_simulator.cpp
-  camcon/cambus/sim_cambus_medium.h
-  camcon/cambus/sim_cambus_medium.cpp
-  camcon/cambus/sim_cambus_users.h
-  camcon/cambus/sim_cambus_users.cpp
-  camcon/cambus/sim_cambus_line.h
-  camcon/cambus/sim_cambus_line.cpp
-  camcon/sim_axis.h
-  camcon/sim_cam_handlers.cpp
-  camcon/sim_cam_store.cpp
-  camcon/sim_cam_store.h
-  camcon/sim_demo.cpp
-  camcon/sim_demo.h
-  camcon/sim_device.cpp
-  camcon/sim_device.h
-  camcon/sim_eeprom.cpp
-  camcon/sim_eeprom.h
-  camcon/sim_eeprom_format.cpp
-  camcon/sim_eeprom_format.h
-  camcon/sim_eeprom_handlers.cpp
   sim_endpoint.h
   sim_faults.cpp
   sim_faults.h
-  camcon/sim_handler_util.cpp
-  camcon/sim_handler_util.h
-  camcon/sim_handlers.h
-  camcon/sim_info_handlers.cpp
   sim_injections.cpp
   sim_injections.h
-  camcon/sim_line.cpp
-  camcon/sim_line.h
   sim_log.cpp
   sim_log.h
-  camcon/sim_name_handlers.cpp
   sim_output.h
   sim_pacer.cpp
   sim_pacer.h
-  camcon/sim_plc_handlers.cpp
-  camcon/sim_port_config.cpp
-  camcon/sim_port_config.h
-  camcon/sim_profile.h
   sim_pty_server.cpp
   sim_pty_server.h
   sim_reply_scheduler.cpp
   sim_reply_scheduler.h
-  camcon/sim_result.h
-  camcon/sim_settings_defaults.cpp
-  camcon/sim_settings_handlers.cpp
-  camcon/sim_state.cpp
-  camcon/sim_state.h
-  camcon/sim_status_handlers.cpp
   sim_tcp_server.cpp
   sim_tcp_server.h
   sim_transport.cpp
   sim_transport.h
   simulator_registry.cpp
   simulator_registry.h
-  camcon/camcon_simulator.cpp
-  camcon/camcon_simulator.h
-  camcon/sim_camcon_endpoint.h
-  camcon/sim_user_handlers.cpp
-  camcon/table/sim_table_areas.h
-  camcon/table/sim_table_areas.cpp
-  camcon/table/sim_table_device.h
-  camcon/table/sim_table_device.cpp
-  camcon/table/sim_table_line.h
-  camcon/table/sim_table_line.cpp
-  camcon/table/sim_table_plc_words.cpp
-  camcon/table/sim_table_setting_words.cpp
-  camcon/table/sim_table_short_commands.cpp
-  camcon/table/sim_table_state.h
-  camcon/table/sim_table_status_words.cpp
-  camcon/table/sim_table_track_words.cpp
 )

@@ -50,7 +50,8 @@ Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QStr
     device.family = object.value(QStringLiteral("family")).toString();
     if (device.family.isEmpty())
         return refused(
-            where, QStringLiteral("%1 has no \"family\" (camcon, mc1, compax3, ...).").arg(label));
+            where,
+            QStringLiteral("%1 has no \"family\" (`cambench-cli --help` lists them).").arg(label));
     const QStringList keys = machineDeviceKeys();
     // The file's order is lost in QJsonObject (sorted keys); the command
     // line does not depend on the order, and sorted is stable.

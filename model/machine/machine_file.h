@@ -23,9 +23,10 @@ struct MachineDevice {
     QStringList arguments() const;
 };
 
-// A machine file: a press with a CamCon, an MC200 and a drive, say.
-//   {"machine": "Press 7", "devices": [{"name": "cams", "family": "camcon",
-//    "port": "/dev/ttyUSB0", "protocol": "standard"}, ...]}
+// A machine file: a press with a cam controller, a motion controller and a
+// drive, say (README, "A machine of several devices"):
+//   {"machine": "Press 7", "devices": [{"name": "cams", "family": ...,
+//    "port": "/dev/ttyUSB0", "protocol": ...}, ...]}
 // Optionally "shaft": {"from": DEVICE, "to": DEVICE} for the simulated
 // machine (the CamCon's position follows a drive's).
 struct MachineFile {

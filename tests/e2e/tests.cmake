@@ -48,3 +48,5 @@ cambench_add_e2e_test(tst_e2e_compax3 e2e/tst_e2e_compax3.cpp)
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
 # A test that dies (aborted, killed) takes its simulator with it.
 cambench_add_e2e_test(tst_e2e_cleanup e2e/tst_e2e_cleanup.cpp)
+# Each family's tests of this area, listed in its folder (tests/e2e/<family>/).
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

@@ -3,10 +3,12 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
+#include "app/registry/family_parts.h"
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/engine/request_engine.h"
 #include "comm/sim/simulator_registry.h"
+#include "comm/usecases/device_check.h"
 #include "ui/device_session.h"
 #include "ui/family_gui.h"
 #include "ui/main_window.h"
@@ -234,6 +236,23 @@ int runPing(cli::CliSession& session, cli::CommandArgs& args) {
     return cli::ExitOk;
 }
 
+// The family's check: only its identity query goes out.
+QString refusesAllButIdentity(const QString&, const comm::Request& request) {
+    return request.message == "ID?" ? QString() : QStringLiteral("only ID? reads");
+}
+
+Result<QList<usecases::CheckResult>> checkIdentity(comm::DeviceConnection& connection,
+                                                   const usecases::UseCaseProgress&) {
+    const Result<QString> identity = connection.identify();
+    usecases::CheckResult result;
+    result.id = QStringLiteral("fake.id");
+    result.reading = QStringLiteral("ID? answers FAKE-1");
+    result.source = QStringLiteral("tests/family/fake_family.cpp");
+    result.verdict = identity ? usecases::CheckVerdict::Held : usecases::CheckVerdict::CouldNotTell;
+    result.observed = identity ? QString() : identity.error().message;
+    return QList<usecases::CheckResult>{result};
+}
+
 }  // namespace
 
 struct FakeDevice::Impl {
@@ -325,47 +344,60 @@ void clearRequestLog() {
     g_log.clear();
 }
 
-void registerFakeFamily() {
-    comm::FamilyInfo family;
-    family.id = QStringLiteral("fake");
-    family.title = QStringLiteral("Fake test device");
-    family.defaultProtocol = QStringLiteral("fake-line");
-    family.built = true;
-    comm::FamilyRegistry::instance().add(family);
-
-    comm::ProtocolInfo protocol;
-    protocol.id = QStringLiteral("fake-line");
-    protocol.familyId = QStringLiteral("fake");
-    protocol.title = QStringLiteral("Fake line protocol");
-    protocol.makeSettings = [] { return std::make_unique<FakeSettings>(); };
-    protocol.connect =
-        [](comm::Transport& transport, const comm::ProtocolSettings&,
-           const comm::LineTiming& line) -> Result<std::unique_ptr<comm::DeviceConnection>> {
-        return std::unique_ptr<comm::DeviceConnection>(
-            std::make_unique<FakeDevice>(transport, line));
+// Every part of the family, named in one place as a built-in family's are
+// (app/registry/<family>/<family>_parts.cpp), and registered the same way.
+FamilyParts fakeParts() {
+    FamilyParts parts;
+    parts.id = QStringLiteral("fake");
+    parts.family = [](comm::FamilyRegistry& registry) {
+        comm::FamilyInfo family;
+        family.id = QStringLiteral("fake");
+        family.title = QStringLiteral("Fake test device");
+        family.defaultProtocol = QStringLiteral("fake-line");
+        family.built = true;
+        registry.add(family);
     };
-    comm::ProtocolRegistry::instance().add(protocol);
-
-    comm::SimulatorRegistry::instance().add(
-        {QStringLiteral("fake"),
-         [](const QString& port, const comm::SerialSettings& serial,
-            const QString&) -> Result<comm::SimulatedLine> { return fakeLine(port, serial); },
-         [] { return QList<QCommandLineOption>{}; },
-         [](const QCommandLineParser&, const comm::SimHostOptions&) -> Result<comm::SimulatedLine> {
-             return fakeLine({}, {});
-         }});
-
-    static bool pagesAdded = false;
-    if (!pagesAdded) {
-        pagesAdded = true;
+    parts.protocols = [](comm::ProtocolRegistry& registry) {
+        comm::ProtocolInfo protocol;
+        protocol.id = QStringLiteral("fake-line");
+        protocol.familyId = QStringLiteral("fake");
+        protocol.title = QStringLiteral("Fake line protocol");
+        protocol.makeSettings = [] { return std::make_unique<FakeSettings>(); };
+        protocol.connect =
+            [](comm::Transport& transport, const comm::ProtocolSettings&,
+               const comm::LineTiming& line) -> Result<std::unique_ptr<comm::DeviceConnection>> {
+            return std::unique_ptr<comm::DeviceConnection>(
+                std::make_unique<FakeDevice>(transport, line));
+        };
+        registry.add(protocol);
+    };
+    parts.simulator = [](comm::SimulatorRegistry& registry) {
+        registry.add({QStringLiteral("fake"),
+                      [](const QString& port, const comm::SerialSettings& serial, const QString&)
+                          -> Result<comm::SimulatedLine> { return fakeLine(port, serial); },
+                      [] { return QList<QCommandLineOption>{}; },
+                      [](const QCommandLineParser&, const comm::SimHostOptions&)
+                          -> Result<comm::SimulatedLine> { return fakeLine({}, {}); }});
+    };
+    parts.checks = [](usecases::CheckRegistry& registry) {
+        registry.add({QStringLiteral("fake"), refusesAllButIdentity, checkIdentity});
+    };
+    parts.gui = [] {
         FamilyGuiRegistry::instance().add(
             {QStringLiteral("fake"),
              [](DeviceSession* session, QObject* parent) { return new FakeGui(session, parent); }});
+    };
+    parts.cli = [] {
         cli::CommandRegistry::instance().add(
             {QStringLiteral("fake"), QStringLiteral("ping"), runPing});
         cli::CommandRegistry::instance().addHelp(QStringLiteral("fake"),
                                                  QStringLiteral("  ping N    answers PONG N\n"));
-    }
+    };
+    return parts;
+}
+
+void registerFakeFamily() {
+    registerFamily(fakeParts());
 }
 
 }  // namespace cambench::fake

@@ -6,6 +6,7 @@
 // It is registered into the same registries the built-in families use,
 // from the test alone: the shell must host it without an edit outside.
 
+#include "app/registry/family_parts.h"
 #include "comm/device/device_connection.h"
 #include "comm/device/motion_control.h"
 #include "comm/engine/framing_backend.h"
@@ -48,8 +49,11 @@ int requestsReceived();
 QStringList requestLog();
 void clearRequestLog();
 
-// Registers family, protocol and simulator (comm), page (GUI) and command
-// group (CLI). Safe to call more than once.
+// Every part of the family: family, protocol, simulator and check (comm),
+// page (GUI) and command group (CLI).
+FamilyParts fakeParts();
+// Registers them (registerFamily, as the built-in families are). Safe to
+// call more than once.
 void registerFakeFamily();
 
 }  // namespace cambench::fake

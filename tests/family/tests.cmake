@@ -5,6 +5,8 @@ if(CAMBENCH_GUI AND TARGET cambench_cli_front)
     SOURCES family/tst_fake_family.cpp family/fake_family.h family/fake_family.cpp
             ui/register_widgets.cpp
     LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
+  # It counts the files outside tests/family/ that name the fake family.
+  target_compile_definitions(tst_fake_family PRIVATE CAMBENCH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # Issue 27: the shell's STOP on every page, its key, ahead of a long job;
@@ -15,3 +17,6 @@ if(CAMBENCH_GUI AND TARGET cambench_cli_front)
             ui/register_widgets.cpp ui/shell/shell_fixture.h
     LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
 endif()
+
+# Issue 31, item 1: the startup check names a family lacking a part.
+cambench_add_test(tst_family_parts SOURCES family/tst_family_parts.cpp)

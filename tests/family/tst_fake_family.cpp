@@ -6,6 +6,7 @@
 #include "fake_family.h"
 
 #include "app/cli/command_line.h"
+#include "app/registry/family_parts.h"
 #include "comm/device/family_registry.h"
 #include "ui/connection_page.h"
 #include "ui/connection_status.h"
@@ -18,6 +19,8 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
+#include <QDirIterator>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
@@ -72,6 +75,46 @@ private Q_SLOTS:
         comm::FamilyRegistry::instance().add(
             comm::FamilyInfo::announced(QStringLiteral("coming"), QStringLiteral("Coming Drive"),
                                         QStringLiteral("coming-line")));
+    }
+
+    // Registered through its FamilyParts as a built-in family is, it has
+    // every part the GUI and the CLI must have (this test links both).
+    void theFamilyIsComplete() {
+        const QString fake = QStringLiteral("family \"fake\"");
+        QCOMPARE(missingFamilyParts(Program::Gui).filter(fake), QStringList());
+        QCOMPARE(missingFamilyParts(Program::Cli).filter(fake), QStringList());
+    }
+
+    // Adding this family touched one file outside its folder, tests/family/:
+    // tests/CMakeLists.txt, whose one line includes family/tests.cmake. Its
+    // registration place is its own (fakeParts, registered by the test).
+    void addingItTouchedOneFileOutsideItsFolder() {
+        const QString root = QStringLiteral(CAMBENCH_SOURCE_DIR);
+        // What using the family takes: its header, its parts, its list.
+        const QStringList names{QStringLiteral("fake_family.h"), QStringLiteral("fakeParts"),
+                                QStringLiteral("registerFakeFamily"),
+                                QStringLiteral("family/tests.cmake")};
+        QStringList touched;
+        QDirIterator it(root,
+                        {QStringLiteral("*.cpp"), QStringLiteral("*.h"), QStringLiteral("*.cmake"),
+                         QStringLiteral("CMakeLists.txt")},
+                        QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString path = QDir(root).relativeFilePath(it.next());
+            if (path.startsWith(QLatin1String("tests/family/")) ||
+                path.startsWith(QLatin1String("build")) || path.startsWith(QLatin1Char('.')))
+                continue;
+            QFile file(it.filePath());
+            if (!file.open(QIODevice::ReadOnly)) continue;
+            const QString text = QString::fromUtf8(file.readAll());
+            for (const QString& name : names) {
+                if (text.contains(name)) {
+                    touched << path;
+                    break;
+                }
+            }
+        }
+        QCOMPARE(touched, QStringList{QStringLiteral("tests/CMakeLists.txt")});
     }
 
     // An announced family is shown greyed with the reason, never hidden, and

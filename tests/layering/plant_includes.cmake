@@ -12,17 +12,8 @@ foreach(layer model comm ui app)
   file(COPY "${ROOT}/${layer}" DESTINATION "${SCRATCH}")
 endforeach()
 
-function(run_check out_rc out_text)
-  execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${SCRATCH} -P ${CHECK}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(${out_rc} ${rc} PARENT_SCOPE)
-  set(${out_text} "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-run_check(rc text)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "the untouched copy of the tree fails the check:\n${text}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/run_check.cmake)
+expect_untouched_passes()
 
 set(failures 0)
 # FILE, the include planted at its end, and why it is wrong.
@@ -32,20 +23,9 @@ function(expect_violation file include why)
     message(SEND_ERROR "${file} is gone from the tree: pick another file for \"${why}\"")
     return()
   endif()
-  file(READ "${path}" original)
-  string(REGEX MATCHALL "\n" newlines "${original}")
-  list(LENGTH newlines count)
-  math(EXPR line "${count} + 1")
-  file(APPEND "${path}" "#include \"${include}\"\n")
-  run_check(rc text)
-  file(WRITE "${path}" "${original}")
-  if(rc EQUAL 0)
-    message(SEND_ERROR "not caught (${why}): ${file} including \"${include}\"")
-  elseif(NOT text MATCHES "${file}:${line}: includes \"${include}\"")
-    message(SEND_ERROR "caught, but not as ${file}:${line} (${why}):\n${text}")
-  else()
-    message(STATUS "caught (${why}): ${file}:${line}")
-  endif()
+  run_check_planted("${file}" "#include \"${include}\"" rc text line)
+  expect_caught(${rc} "${text}" "${file}:${line}: includes \"${include}\"" "${file}:${line}"
+                "${why}")
 endfunction()
 
 expect_violation(model/atomic_file.h comm/device/progress.h "model includes comm")
@@ -59,6 +39,10 @@ expect_violation(comm/mc1/mc1_address.h comm/camcon/camcon_device.h "a family in
 expect_violation(comm/mc1/mc1_address.h ../compax3/compax3_device.h
                  "a family includes another by a relative path")
 expect_violation(ui/main_window.cpp ui/camcon/backup_page.h "the shell names a family")
+expect_violation(app/cli/main.cpp app/cli/camcon/camcon_commands.h
+                 "a program's main names a family's part")
+expect_violation(app/registry/family_parts.cpp app/registry/mc1/mc1_parts.h
+                 "the registration frame names a family")
 
 run_check(rc text)
 if(NOT rc EQUAL 0)

@@ -16,3 +16,5 @@ cambench_add_test(tst_compax3_syntax SOURCES model/tst_compax3_syntax.cpp LIBS c
 # Also under a German C locale: numbers must still go out with a point.
 cambench_bound_test(tst_compax3_syntax 300 ENVIRONMENT "LC_ALL=de_DE.UTF-8;LANG=de_DE.UTF-8")
 cambench_add_test(tst_machine_file SOURCES model/tst_machine_file.cpp LIBS cambench_model)
+# Each family's tests of this area, listed in its folder (tests/model/<family>/).
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

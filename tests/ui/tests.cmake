@@ -23,15 +23,9 @@ cambench_add_test(ui_shell_plc_coupling_test SOURCES ui/register_widgets.cpp ui/
 cambench_add_test(ui_shell_table_page_edits_test SOURCES ui/register_widgets.cpp ui/shell/tst_table_page_edits.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 13: the connection page's family choice and Detect on a pty.
 cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
-# Issue 14: the MC-1 pages against the simulated controller.
-cambench_add_test(ui_mc1_pages_test SOURCES ui/register_widgets.cpp ui/mc1/tst_mc1_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-# Issue 27: typed stays typed, stale and paused, Set speed, jogging, trend, the kept watch list.
-cambench_add_test(ui_mc1_live_pages_test SOURCES ui/register_widgets.cpp ui/mc1/tst_mc1_live_pages.cpp ui/shell/shell_fixture.h ui/shell/live_value_checks.h LIBS cambench_ui cambench_gui_registry)
 # Issue 27: the shell's poll cycle (stale after a missed cycle, paused behind a long job).
 cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp ui/shell/tst_live_poll_cycle.cpp ui/shell/shell_fixture.h ui/shell/live_value_checks.h LIBS cambench_ui cambench_gui_registry)
-# Issue 27: the axes found, the axis parameter table (provisional or loaded), done vs read back.
-cambench_add_test(ui_mc1_axes_parameters_test SOURCES ui/register_widgets.cpp ui/mc1/tst_mc1_axes_parameters.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 28 item 4: a family switch or another device leaves nothing of the one before.
 cambench_add_test(ui_shell_family_switch_test SOURCES ui/register_widgets.cpp ui/shell/tst_family_switch.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_compax3_pages_test SOURCES ui/register_widgets.cpp ui/compax3/tst_compax3_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_cambus_view_test SOURCES ui/register_widgets.cpp ui/camcon/tst_cambus_view.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
+# Each family's GUI tests, listed in its folder.
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

@@ -9,3 +9,5 @@ cambench_add_usecase_test(tst_usecase_read_everything usecases/tst_read_everythi
 cambench_add_usecase_test(tst_usecase_backup usecases/tst_backup.cpp)
 cambench_add_usecase_test(tst_usecase_check usecases/tst_check.cpp)
 cambench_add_usecase_test(tst_usecase_program_read usecases/tst_program_read.cpp)
+# Each family's tests of this area, listed in its folder (tests/usecases/<family>/).
+cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

@@ -28,8 +28,8 @@ Q_SIGNALS:
     void protocolRequested(const QString& protocolId);
 };
 
-// Which widget each protocol brings, by registry id. Filled from app/ (one
-// line per protocol, app/gui/gui_registry.cpp).
+// Which widget each protocol brings, by registry id. Filled by the GUI part
+// of each family's FamilyParts (app/registry/<family>/), one line a protocol.
 class ProtocolWidgetRegistry {
 public:
     using Factory = std::function<ProtocolSettingsWidget*(const QString& protocolId)>;

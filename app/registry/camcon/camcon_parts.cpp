@@ -1,0 +1,53 @@
+// Every part of the Digitronic CamCon family, named in this one place. The
+// GUI's and the CLI's part are compiled in only where the program links
+// them (CAMBENCH_PARTS_GUI, CAMBENCH_PARTS_CLI: app/registry/sources.cmake).
+#include "camcon_parts.h"
+
+#include "app/cli/camcon/camcon_commands.h"
+#include "comm/camcon/ascii/ascii_protocol.h"
+#include "comm/camcon/cambus/cambus_protocol.h"
+#include "comm/camcon/camcon_family.h"
+#include "comm/camcon/table/table_protocol.h"
+#include "comm/camcon/usecases/camcon_check.h"
+#include "comm/device/protocol_registry.h"
+#include "comm/sim/camcon/camcon_simulator.h"
+
+#ifdef CAMBENCH_PARTS_GUI
+#include "ui/camcon/cambus/cambus_settings_widget.h"
+#include "ui/camcon/camcon_gui.h"
+#include "ui/camcon/protocols/ascii_settings_widget.h"
+#include "ui/camcon/protocols/table_settings_widget.h"
+
+// The GUI's part: a settings widget per protocol (the ASCII one with or
+// without the Multiuser numbers, one for both table variants), the
+// CamCon's workspace and pages.
+static void registerCamConGui() {
+    using namespace cambench;
+    ProtocolWidgetRegistry& widgets = ProtocolWidgetRegistry::instance();
+    widgets.add(QStringLiteral("standard"),
+                [](const QString&) { return new AsciiSettingsWidget(false); });
+    widgets.add(QStringLiteral("multiuser"),
+                [](const QString&) { return new AsciiSettingsWidget(true); });
+    widgets.add(QStringLiteral("cambus"), [](const QString&) { return new CamBusSettingsWidget; });
+    for (const char* id : {"3964r-n96", "3964r-e38"}) {
+        widgets.add(QLatin1String(id),
+                    [](const QString& protocol) { return new TableSettingsWidget(protocol); });
+    }
+    addFamilyGui<CamConGui>(QStringLiteral("camcon"));
+}
+#endif
+
+// Its protocols: ASCII (Standard, Multiuser), the table interface (two
+// 3964R variants), the Cam-BUS.
+static void registerCamConProtocols(cambench::comm::ProtocolRegistry& protocols) {
+    cambench::comm::registerCamConAscii(protocols);
+    cambench::comm::registerCamConTable(protocols);
+    cambench::comm::registerCamConCamBus(protocols);
+}
+
+cambench::FamilyParts cambench::camconParts() {
+    return FamilyParts(QStringLiteral("camcon"), comm::registerCamConFamily,
+                       registerCamConProtocols, comm::registerCamConSimulator,
+                       usecases::registerCamConCheck, CAMBENCH_GUI_PART(registerCamConGui),
+                       CAMBENCH_CLI_PART(cli::registerCamConCommands));
+}

@@ -1,0 +1,34 @@
+// Every part of the Parker Compax3 family, named in this one place. The
+// GUI's and the CLI's part are compiled in only where the program links
+// them (CAMBENCH_PARTS_GUI, CAMBENCH_PARTS_CLI: app/registry/sources.cmake).
+#include "compax3_parts.h"
+
+#include "app/cli/compax3/compax3_commands.h"
+#include "comm/compax3/compax3_family.h"
+#include "comm/compax3/compax3_protocol.h"
+#include "comm/compax3/usecases/compax3_check.h"
+#include "comm/sim/compax3/compax3_simulator.h"
+
+#ifdef CAMBENCH_PARTS_GUI
+#include "ui/compax3/compax3_gui.h"
+#include "ui/compax3/protocols/compax3_settings_widget.h"
+
+// The GUI's part: one settings widget for RS232 and RS485 (with the
+// address), the pages.
+static void registerCompax3Gui() {
+    using cambench::Compax3SettingsWidget;
+    cambench::ProtocolWidgetRegistry& widgets = cambench::ProtocolWidgetRegistry::instance();
+    widgets.add(QStringLiteral("compax3"),
+                [](const QString&) { return new Compax3SettingsWidget(false); });
+    widgets.add(QStringLiteral("compax3-rs485"),
+                [](const QString&) { return new Compax3SettingsWidget(true); });
+    cambench::addFamilyGui<cambench::Compax3Gui>(QStringLiteral("compax3"));
+}
+#endif
+
+cambench::FamilyParts cambench::compax3Parts() {
+    return FamilyParts(QStringLiteral("compax3"), comm::registerCompax3Family,
+                       comm::registerCompax3Protocol, comm::registerCompax3Simulator,
+                       usecases::registerCompax3Check, CAMBENCH_GUI_PART(registerCompax3Gui),
+                       CAMBENCH_CLI_PART(cli::registerCompax3Commands));
+}

@@ -1,0 +1,112 @@
+#pragma once
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <utility>
+
+#ifdef CAMBENCH_PARTS_GUI
+#include "ui/family_gui.h"
+#endif
+
+namespace cambench {
+
+namespace comm {
+class FamilyRegistry;
+class ProtocolRegistry;
+class SimulatorRegistry;
+}  // namespace comm
+namespace usecases {
+class CheckRegistry;
+}  // namespace usecases
+
+// Every part of one device family, named in one place: for a built-in
+// family its app/registry/<family>/<family>_parts.cpp, listed once in
+// app/registry/builtin_registry.cpp; the tests' fake family names its own
+// (tests/family/). Each part is a function that registers it in the
+// registry the shell reads it from. The GUI's and the CLI's part are null
+// in a program that does not link them (the GUI in cambench-cli).
+//
+// Not parts yet, because nothing registers them today: a family's file
+// formats and its backup/verify/restore use cases are called directly by
+// its own pages and commands (comm/<family>/usecases/, model/<family>/).
+struct FamilyParts {
+    using Register = void (*)();
+    FamilyParts() = default;
+    // Every part in the order of the members below.
+    FamilyParts(QString id, void (*family)(comm::FamilyRegistry&),
+                void (*protocols)(comm::ProtocolRegistry&),
+                void (*simulator)(comm::SimulatorRegistry&),
+                void (*checks)(usecases::CheckRegistry&), Register gui, Register cli)
+        : id(std::move(id)),
+          family(family),
+          protocols(protocols),
+          simulator(simulator),
+          checks(checks),
+          gui(gui),
+          cli(cli) {}
+
+    QString id;  // its FamilyInfo::id (the --family value)
+    // Its FamilyInfo (id, title, default protocol).
+    void (*family)(comm::FamilyRegistry& registry) = nullptr;
+    // Every protocol of the family.
+    void (*protocols)(comm::ProtocolRegistry& registry) = nullptr;
+    // Its simulated device (the in-process `sim` port, cambench-sim --family).
+    void (*simulator)(comm::SimulatorRegistry& registry) = nullptr;
+    // Its checks and their gate (cambench-cli check, Help -> Check this device).
+    void (*checks)(usecases::CheckRegistry& registry) = nullptr;
+    // The GUI's part: its protocols' settings widgets (ProtocolWidgetRegistry)
+    // and its FamilyGui (FamilyGuiRegistry).
+    Register gui = nullptr;
+    // The CLI's part: its command groups and their part of --help
+    // (cli::CommandRegistry).
+    Register cli = nullptr;
+};
+
+// A part of the GUI or the CLI in a family's parts file: the function
+// where the program links that part (its registration is compiled with
+// CAMBENCH_PARTS_GUI or CAMBENCH_PARTS_CLI, app/registry/sources.cmake),
+// else null.
+#ifdef CAMBENCH_PARTS_GUI
+#define CAMBENCH_GUI_PART(function) function
+// Registers Gui, a FamilyGui, as family `id`'s (a GUI part's last line).
+template <class Gui>
+void addFamilyGui(const QString& id) {
+    FamilyGuiRegistry::instance().add(
+        {id, [](DeviceSession* session, QObject* parent) { return new Gui(session, parent); }});
+}
+#else
+#define CAMBENCH_GUI_PART(function) nullptr
+#endif
+#ifdef CAMBENCH_PARTS_CLI
+#define CAMBENCH_CLI_PART(function) [] { function(cli::CommandRegistry::instance()); }
+#else
+#define CAMBENCH_CLI_PART(function) nullptr
+#endif
+
+// The programs, for what each must have of every family it hosts.
+enum class Program {
+    Simulator,  // cambench-sim: family, protocols, simulator
+    Cli,        // cambench-cli: those, its checks and its command groups
+    Gui,        // cambench: those, its checks and its GUI part
+};
+
+// Registers each part `parts` has (a null one is left out). A family
+// registered before (by id) is left as it is: safe to call more than once.
+void registerFamily(const FamilyParts& parts);
+// The families registered through registerFamily, in that order.
+QList<FamilyParts> registeredFamilies();
+
+// The startup check: every family the FamilyRegistry holds as built must
+// have been registered through its FamilyParts, with a protocol (its
+// default one among them) and a simulator registered, and with the checks
+// and the GUI or CLI part `program` needs. One sentence per missing part,
+// naming the family and the part; empty when every family is complete.
+QStringList missingFamilyParts(Program program);
+
+// For main(): prints each missing part to stderr after `programName` and
+// returns false when there is one (the program then stops).
+bool familiesComplete(Program program, const char* programName);
+
+}  // namespace cambench

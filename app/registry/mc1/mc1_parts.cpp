@@ -1,0 +1,29 @@
+// Every part of the MICRO DESIGN MC-1 family, named in this one place. The
+// GUI's and the CLI's part are compiled in only where the program links
+// them (CAMBENCH_PARTS_GUI, CAMBENCH_PARTS_CLI: app/registry/sources.cmake).
+#include "mc1_parts.h"
+
+#include "app/cli/mc1/mc1_commands.h"
+#include "comm/mc1/mc1_family.h"
+#include "comm/mc1/mc1_protocol.h"
+#include "comm/mc1/usecases/mc1_check.h"
+#include "comm/sim/mc1/mc1_simulator.h"
+
+#ifdef CAMBENCH_PARTS_GUI
+#include "ui/mc1/mc1_gui.h"
+#include "ui/mc1/protocols/mc1_settings_widget.h"
+
+// The GUI's part: the variant choice of the protocol, the pages.
+static void registerMc1Gui() {
+    cambench::ProtocolWidgetRegistry::instance().add(
+        QStringLiteral("mc1"), [](const QString&) { return new cambench::Mc1SettingsWidget; });
+    cambench::addFamilyGui<cambench::Mc1Gui>(QStringLiteral("mc1"));
+}
+#endif
+
+cambench::FamilyParts cambench::mc1Parts() {
+    return FamilyParts(QStringLiteral("mc1"), comm::registerMc1Family, comm::registerMc1Protocol,
+                       comm::registerMc1Simulator, usecases::registerMc1Check,
+                       CAMBENCH_GUI_PART(registerMc1Gui),
+                       CAMBENCH_CLI_PART(cli::registerMc1Commands));
+}

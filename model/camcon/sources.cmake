@@ -1,0 +1,49 @@
+# The CamCon's data and files: cam programs, settings, dead times, users,
+# PLC, EEPROM images, project, CSV, line manifest, program diff and timing;
+# paths relative to model/.
+target_sources(cambench_model PRIVATE
+  camcon/cam_program.h
+  camcon/device_info.h
+  camcon/device_info.cpp
+  camcon/dead_times.h
+  camcon/dead_time_modes.h
+  camcon/dead_time_modes.cpp
+  camcon/analogue_cams.h
+  camcon/analogue_cams.cpp
+  camcon/programming_program.h
+  camcon/programming_program.cpp
+  camcon/user.h
+  camcon/plc_network.h
+  camcon/plc_network.cpp
+  camcon/eeprom_image.h
+  camcon/eeprom_image.cpp
+  camcon/system_settings.h
+  camcon/system_settings.cpp
+  camcon/settings_validation.cpp
+  camcon/cam_validation.h
+  camcon/cam_validation.cpp
+  camcon/program_diff.h
+  camcon/program_diff.cpp
+  camcon/cam_axis.h
+  camcon/cam_axis.cpp
+  camcon/cam_timing.h
+  camcon/cam_timing.cpp
+  camcon/data_validation.h
+  camcon/data_validation.cpp
+  camcon/device_info_json.h
+  camcon/device_info_json.cpp
+  camcon/project_file.h
+  camcon/project_file.cpp
+  camcon/eeprom_image_file.h
+  camcon/eeprom_image_file.cpp
+  camcon/csv_io.h
+  camcon/csv_io.cpp
+  camcon/settings_file.h
+  camcon/settings_file.cpp
+  camcon/plc_file.h
+  camcon/plc_file.cpp
+  camcon/table_sections_json.h
+  camcon/table_sections_json.cpp
+  camcon/line_manifest.h
+  camcon/line_manifest.cpp
+)
