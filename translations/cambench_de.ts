@@ -1068,10 +1068,6 @@
         <translation>Zwischen zwei Stützpunkten folgt der Analogausgang einer Geraden (bei eingeschalteter Interpolation). Die Positionen müssen von Punkt zu Punkt steigen.</translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
         <source>Add point</source>
         <translation>Punkt hinzufügen</translation>
     </message>
@@ -1098,10 +1094,6 @@
     <message>
         <source>no such point</source>
         <translation>kein solcher Punkt</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
     </message>
     <message>
         <source>not read</source>
@@ -1529,6 +1521,14 @@ Jetzt löschen und wiederherstellen?</translation>
             <numerusform>%n weiteres Element dieses Bereichs war bereits wie im Gerät und wurde nicht gesendet.</numerusform>
             <numerusform>%n weitere Elemente dieses Bereichs waren bereits wie im Gerät und wurden nicht gesendet.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Read from device</source>
+        <translation>Aus Gerät lesen</translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation>Änderungen schreiben</translation>
     </message>
 </context>
 <context>
@@ -2107,10 +2107,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Programm %1 wurde nicht gelesen. Ihre Änderungen bleiben erhalten.</translation>
     </message>
     <message>
-        <source>Program %1 read, not taken: your edits are unchanged.</source>
-        <translation>Programm %1 gelesen, aber nicht übernommen: Ihre Änderungen sind unverändert.</translation>
-    </message>
-    <message>
         <source>Program %1: nothing to write, the device holds what you see.</source>
         <translation>Programm %1: nichts zu schreiben, das Gerät enthält, was Sie sehen.</translation>
     </message>
@@ -2674,10 +2670,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Programm %1 lesen</translation>
     </message>
     <message>
-        <source>The device has programs 0 to %1 only.</source>
-        <translation>Das Gerät hat nur die Programme 0 bis %1.</translation>
-    </message>
-    <message>
         <source>the device, program %1, read at %2</source>
         <translation>das Gerät, Programm %1, gelesen um %2</translation>
     </message>
@@ -2796,10 +2788,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Motion</source>
         <translation>Bewegung</translation>
-    </message>
-    <message>
-        <source>STOP (Esc)</source>
-        <translation>STOPP (Esc)</translation>
     </message>
     <message>
         <source>0 (homing)</source>
@@ -3535,10 +3523,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>%1, Seriennummer %2</translation>
     </message>
     <message>
-        <source>Connected: %1</source>
-        <translation>Verbunden: %1</translation>
-    </message>
-    <message>
         <source>No Compax3 identified itself: %1</source>
         <translation>Kein Compax3 hat sich zu erkennen gegeben: %1</translation>
     </message>
@@ -3863,14 +3847,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Normal: eine Totzeit verschiebt beide Schaltpunkte. Ein/Aus: Einschalt- und Ausschaltpunkt haben je eine eigene. Weg-Zeit: der Ausgang schaltet um die Einschalttotzeit früher ein und bleibt für die Schaltzeit eingeschaltet.</translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
-    </message>
-    <message>
         <source>Reading dead-time modes…</source>
         <translation>Totzeit-Modi werden gelesen…</translation>
     </message>
@@ -3960,14 +3936,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
 </context>
 <context>
     <name>cambench::DeadTimesPage</name>
-    <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
-    </message>
     <message>
         <source>The dead time makes an output switch earlier by the time its actuator needs, at every speed. It belongs to the output, not to a program.</source>
         <translation>Die Totzeit lässt einen Ausgang um die Zeit früher schalten, die sein Stellglied braucht, bei jeder Geschwindigkeit. Sie gehört zum Ausgang, nicht zu einem Programm.</translation>
@@ -4071,24 +4039,24 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Ein anderes Gerät antwortet</translation>
     </message>
     <message>
-        <source>Another device answers: %1. The values shown were read from %2, and you changed %3 of them. What shall this device&apos;s values be?</source>
-        <translation>Ein anderes Gerät antwortet: %1. Die angezeigten Werte wurden von %2 gelesen, und Sie haben %3 davon geändert. Welche Werte soll dieses Gerät bekommen?</translation>
-    </message>
-    <message>
-        <source>Take the values of %1 (your changes are dropped)</source>
-        <translation>Die Werte von %1 übernehmen (Ihre Änderungen werden verworfen)</translation>
-    </message>
-    <message>
-        <source>Keep my changes, each applied to the values of %1</source>
-        <translation>Meine Änderungen behalten, jede auf die Werte von %1 angewandt</translation>
-    </message>
-    <message>
-        <source>Copy the programs and sections of %1 (with your changes) to %2: written only when you write</source>
-        <translation>Die Programme und Bereiche von %1 (mit Ihren Änderungen) nach %2 kopieren: geschrieben wird erst, wenn Sie schreiben</translation>
-    </message>
-    <message>
         <source>Your changes:</source>
         <translation>Ihre Änderungen:</translation>
+    </message>
+    <message>
+        <source>Another device answers.&lt;br&gt;New device, on the line now: &lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Old device, the values shown were read from it: &lt;b&gt;%2&lt;/b&gt;&lt;br&gt;You changed %3 of those values. What shall the new device&apos;s values be?</source>
+        <translation>Ein anderes Gerät antwortet.&lt;br&gt;Neues Gerät, jetzt an der Leitung: &lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Altes Gerät, von ihm stammen die angezeigten Werte: &lt;b&gt;%2&lt;/b&gt;&lt;br&gt;Sie haben %3 dieser Werte geändert. Welche Werte soll das neue Gerät bekommen?</translation>
+    </message>
+    <message>
+        <source>Take the new device&apos;s values (your changes are dropped)</source>
+        <translation>Die Werte des neuen Geräts übernehmen (Ihre Änderungen werden verworfen)</translation>
+    </message>
+    <message>
+        <source>Keep my changes, each applied to the new device&apos;s values</source>
+        <translation>Meine Änderungen behalten, jede auf die Werte des neuen Geräts angewandt</translation>
+    </message>
+    <message>
+        <source>Copy the old device&apos;s programs and sections (with your changes): written to the new device only when you write</source>
+        <translation>Programme und Bereiche des alten Geräts kopieren (mit Ihren Änderungen): auf das neue Gerät geschrieben erst, wenn Sie schreiben</translation>
     </message>
 </context>
 <context>
@@ -4266,10 +4234,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Werden dieselben Werte immer wieder geschrieben (von einer SPS, in jedem Zyklus), nutzt sich das EEPROM des Geräts ab. Sperren Sie es vorher: Änderungen bleiben dann nur im RAM. Ein vollständiges Löschen des Geräts hebt die Sperre auf.</translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
         <source>Read the EEPROM lock</source>
         <translation>EEPROM-Sperre lesen</translation>
     </message>
@@ -4406,6 +4370,20 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 says the same.</source>
         <translation>%1 von %2 Geräten gesichert; %3 NICHT gesichert (siehe unten). Das Verzeichnis in %4 sagt dasselbe.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LiveDevicePage</name>
+    <message>
+        <source>STOP (Esc)</source>
+        <translation>STOPP (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LiveFamilyWindow</name>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Verbunden: %1</translation>
     </message>
 </context>
 <context>
@@ -4610,10 +4588,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Axes</source>
         <translation>Achsen</translation>
-    </message>
-    <message>
-        <source>STOP (Esc)</source>
-        <translation>STOPP (Esc)</translation>
     </message>
     <message>
         <source>Axis </source>
@@ -5288,10 +5262,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Steuerung erkennen</translation>
     </message>
     <message>
-        <source>Connected: %1</source>
-        <translation>Verbunden: %1</translation>
-    </message>
-    <message>
         <source>No MC100/MC200 identified itself: %1</source>
         <translation>Keine MC100/MC200 hat sich zu erkennen gegeben: %1</translation>
     </message>
@@ -5887,10 +5857,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Netzwerk lesen</translation>
     </message>
     <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
-    </message>
-    <message>
         <source>Area:</source>
         <translation>Bereich:</translation>
     </message>
@@ -5946,6 +5912,10 @@ Die verwendete Tabelle bleibt: %3</translation>
         <source>PLC</source>
         <translation>SPS</translation>
     </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ProgrammingProgramPage</name>
@@ -5982,10 +5952,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Istwert für die Anwahl:</translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
         <source>Read the programming program</source>
         <translation>Programmierprogramm lesen</translation>
     </message>
@@ -6016,10 +5982,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>not read</source>
         <translation>nicht gelesen</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
     </message>
 </context>
 <context>
@@ -6284,14 +6246,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>Language</source>
         <translation>Sprache</translation>
-    </message>
-    <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
     </message>
     <message>
         <source>Reading settings…</source>
@@ -6597,14 +6551,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>May change all outputs</source>
         <translation>Darf alle Ausgänge ändern</translation>
-    </message>
-    <message>
-        <source>Read from device</source>
-        <translation>Aus Gerät lesen</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Änderungen schreiben</translation>
     </message>
     <message>
         <source>Add user</source>
@@ -10501,6 +10447,14 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>object %1 (%2) exists and is %3</source>
         <translation>Objekt %1 (%2) existiert und ist %3</translation>
+    </message>
+    <message>
+        <source>program %1 does not exist: the device reports no programs; read its identity again or check the connection</source>
+        <translation>Programm %1 gibt es nicht: Das Gerät meldet keine Programme; lesen Sie seine Kennung erneut oder prüfen Sie die Verbindung</translation>
+    </message>
+    <message>
+        <source>program %1 does not exist on the device (it has programs 0 to %2): choose one of those</source>
+        <translation>Programm %1 gibt es auf dem Gerät nicht (es hat die Programme 0 bis %2): wählen Sie eines davon</translation>
     </message>
 </context>
 </TS>

@@ -1068,10 +1068,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation type="unfinished">Read from device</translation>
-    </message>
-    <message>
         <source>Add point</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1098,10 +1094,6 @@
     <message>
         <source>no such point</source>
         <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation type="unfinished">Write changes</translation>
     </message>
     <message>
         <source>not read</source>
@@ -1529,6 +1521,14 @@ Erase and restore now?</translation>
             <numerusform>%n other item of this section was already as on the device and not sent.</numerusform>
             <numerusform>%n other items of this section were already as on the device and not sent.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Read from device</source>
+        <translation type="unfinished">Read from device</translation>
+    </message>
+    <message>
+        <source>Write changes</source>
+        <translation type="unfinished">Write changes</translation>
     </message>
 </context>
 <context>
@@ -2107,10 +2107,6 @@ Erase and restore now?</translation>
         <translation>Program %1 was not read. Your edits are kept.</translation>
     </message>
     <message>
-        <source>Program %1 read, not taken: your edits are unchanged.</source>
-        <translation>Program %1 read, not taken: your edits are unchanged.</translation>
-    </message>
-    <message>
         <source>Program %1: nothing to write, the device holds what you see.</source>
         <translation>Program %1: nothing to write, the device holds what you see.</translation>
     </message>
@@ -2674,10 +2670,6 @@ Erase and restore now?</translation>
         <translation type="unfinished">Read program %1</translation>
     </message>
     <message>
-        <source>The device has programs 0 to %1 only.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>the device, program %1, read at %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2795,10 +2787,6 @@ Erase and restore now?</translation>
     <name>cambench::Compax3MotionPage</name>
     <message>
         <source>Motion</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>STOP (Esc)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3535,10 +3523,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Connected: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>No Compax3 identified itself: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3862,14 +3846,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation type="unfinished">Read from device</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation type="unfinished">Write changes</translation>
-    </message>
-    <message>
         <source>Reading dead-time modes…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3959,14 +3935,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
 </context>
 <context>
     <name>cambench::DeadTimesPage</name>
-    <message>
-        <source>Read from device</source>
-        <translation>Read from device</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Write changes</translation>
-    </message>
     <message>
         <source>The dead time makes an output switch earlier by the time its actuator needs, at every speed. It belongs to the output, not to a program.</source>
         <translation>The dead time makes an output switch earlier by the time its actuator needs, at every speed. It belongs to the output, not to a program.</translation>
@@ -4070,23 +4038,23 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Another device answers: %1. The values shown were read from %2, and you changed %3 of them. What shall this device&apos;s values be?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Take the values of %1 (your changes are dropped)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Keep my changes, each applied to the values of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Copy the programs and sections of %1 (with your changes) to %2: written only when you write</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Your changes:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another device answers.&lt;br&gt;New device, on the line now: &lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Old device, the values shown were read from it: &lt;b&gt;%2&lt;/b&gt;&lt;br&gt;You changed %3 of those values. What shall the new device&apos;s values be?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take the new device&apos;s values (your changes are dropped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep my changes, each applied to the new device&apos;s values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copy the old device&apos;s programs and sections (with your changes): written to the new device only when you write</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4264,10 +4232,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation type="unfinished">Read from device</translation>
-    </message>
-    <message>
         <source>Read the EEPROM lock</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4404,6 +4368,20 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 says the same.</source>
         <translation>%1 of %2 devices saved; %3 NOT saved (see below). The manifest in %4 says the same.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LiveDevicePage</name>
+    <message>
+        <source>STOP (Esc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::LiveFamilyWindow</name>
+    <message>
+        <source>Connected: %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4607,10 +4585,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <name>cambench::Mc1AxesPage</name>
     <message>
         <source>Axes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>STOP (Esc)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -5285,10 +5259,6 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Connected: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>No MC100/MC200 identified itself: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5882,10 +5852,6 @@ The table in use stays: %3</source>
         <translation>Read network</translation>
     </message>
     <message>
-        <source>Write changes</source>
-        <translation>Write changes</translation>
-    </message>
-    <message>
         <source>Area:</source>
         <translation>Area:</translation>
     </message>
@@ -5941,6 +5907,10 @@ The table in use stays: %3</source>
         <source>PLC</source>
         <translation>PLC</translation>
     </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ProgrammingProgramPage</name>
@@ -5977,10 +5947,6 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Read from device</source>
-        <translation type="unfinished">Read from device</translation>
-    </message>
-    <message>
         <source>Read the programming program</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6011,10 +5977,6 @@ The table in use stays: %3</source>
     <message>
         <source>not read</source>
         <translation type="unfinished">not read</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation type="unfinished">Write changes</translation>
     </message>
 </context>
 <context>
@@ -6279,14 +6241,6 @@ The table in use stays: %3</source>
     <message>
         <source>Language</source>
         <translation>Language</translation>
-    </message>
-    <message>
-        <source>Read from device</source>
-        <translation>Read from device</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Write changes</translation>
     </message>
     <message>
         <source>Reading settings…</source>
@@ -6592,14 +6546,6 @@ The table in use stays: %3</source>
     <message>
         <source>May change all outputs</source>
         <translation>May change all outputs</translation>
-    </message>
-    <message>
-        <source>Read from device</source>
-        <translation>Read from device</translation>
-    </message>
-    <message>
-        <source>Write changes</source>
-        <translation>Write changes</translation>
     </message>
     <message>
         <source>Add user</source>
@@ -10495,6 +10441,14 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>object %1 (%2) exists and is %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1 does not exist: the device reports no programs; read its identity again or check the connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1 does not exist on the device (it has programs 0 to %2): choose one of those</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
