@@ -59,7 +59,7 @@ private:
 // one of its protocols on the in-process simulated device. The PNGs of its
 // stops are named "<name>-<stop>.png".
 struct TourVisit {
-    QString name;      // family and protocol: "camcon-3964r-n96", "mc1-ascii"
+    QString name;      // family and protocol: "<family>-<protocol>", e.g. "fake-line"
     QString port;      // "sim:protocol=3964r-n96;baud=115200"
     QString protocol;  // a registry id: "3964r-n96"
     int device = -1;   // on a bus: the device addressed (-1: the protocol's default)

@@ -19,7 +19,7 @@ namespace {
 const QSize kWindowSize(1280, 800);
 constexpr int kPollMs = 100;
 
-// The name of a stop's PNG without ".png": "camcon-cambus-01-connection".
+// The name of a stop's PNG without ".png": "<visit>-<number>-<stop>".
 QString shotName(const TourVisit& visit, const TourStop& stop) {
     return visit.name + u'-' + stop.name;
 }
