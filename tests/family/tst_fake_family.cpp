@@ -69,6 +69,10 @@ private Q_SLOTS:
         QCoreApplication::setOrganizationName(QStringLiteral("CamBench"));
         QCoreApplication::setApplicationName(QStringLiteral("CamBench-tests"));
         QStandardPaths::setTestModeEnabled(true);
+        // Its own settings file: tests running beside it (ctest -j2) keep theirs.
+        QVERIFY(m_settings.isValid());
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settings.path());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
         QSettings().clear();
         fake::registerFakeFamily();
         // A family known by name whose code is not built yet.
@@ -282,6 +286,9 @@ private Q_SLOTS:
                      {QStringLiteral("--family"), QStringLiteral("fake"), QStringLiteral("info")}),
                  2);
     }
+
+private:
+    QTemporaryDir m_settings;
 };
 
 QTEST_MAIN(TestFakeFamily)

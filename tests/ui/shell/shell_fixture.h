@@ -19,6 +19,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -36,6 +37,13 @@ inline void useTestSettings() {
     QCoreApplication::setOrganizationName(QStringLiteral("CamBench"));
     QCoreApplication::setApplicationName(QStringLiteral("CamBench-tests"));
     QStandardPaths::setTestModeEnabled(true);
+    // Each test process its own settings file: under `ctest -j2` two GUI
+    // tests shared ~/.qttest's, and one's clear() at its start emptied what
+    // the other had just remembered (ui_mc1_axes_parameters_test under
+    // AddressSanitizer read back "" for the table it had loaded).
+    static const QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
     QSettings().clear();
 }
 
