@@ -8,6 +8,10 @@ set(CAMBENCH_COMPAX3_REPLY_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/compax3_backend.cpp
   ${CMAKE_CURRENT_LIST_DIR}/../engine/cr_line_backend.cpp
   ${PROJECT_SOURCE_DIR}/model/compax3/compax3_object.cpp
+  ${PROJECT_SOURCE_DIR}/model/compax3/compax3_refusals.cpp
+  # The built-in dictionary the refusal table reads (configure_file in
+  # model/compax3/sources.cmake).
+  ${PROJECT_BINARY_DIR}/model/compax3_builtin_objects.cpp
 )
 set_property(GLOBAL PROPERTY CAMBENCH_COMPAX3_REPLY_SOURCES ${CAMBENCH_COMPAX3_REPLY_SOURCES})
 
