@@ -12,7 +12,6 @@
 #include "commands.h"
 #include "exit_codes.h"
 
-#include "comm/device/device_connection.h"
 #include "model/atomic_file.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
@@ -127,10 +126,7 @@ QJsonObject backUp(const MachineDevice& device, const GlobalOptions& options, co
                      QStringLiteral("failed: the %1 family has no backup").arg(device.family));
         return entry;
     }
-    const Result<QString> identity = session.run<comm::DeviceConnection, QString>(
-        QStringLiteral("identify"), [](comm::DeviceConnection& connection, comm::JobContext&) {
-            return connection.identify();
-        });
+    const Result<QString> identity = identifyMachineDevice(session, device.name);
     if (!identity) {
         reportError(identity.error());
         entry.insert(QStringLiteral("result"),

@@ -42,11 +42,7 @@ Result<GlobalOptions> deviceOptions(const MachineDevice& device, const QString& 
 DeviceStatus statusOf(const MachineDevice& device, const GlobalOptions& options) {
     CliSession session(options);
     DeviceStatus status{device.name, device.family, session.where()};
-    status.identity = session.run<comm::DeviceConnection, QString>(
-        QStringLiteral("identify %1").arg(device.name),
-        [](comm::DeviceConnection& connection, comm::JobContext&) {
-            return connection.identify();
-        });
+    status.identity = identifyMachineDevice(session, device.name);
     return status;
 }
 
@@ -62,6 +58,14 @@ QJsonObject statusJson(const DeviceStatus& status) {
 }
 
 }  // namespace
+
+Result<QString> identifyMachineDevice(CliSession& session, const QString& name) {
+    return session.run<comm::DeviceConnection, QString>(
+        QStringLiteral("identify %1").arg(name),
+        [](comm::DeviceConnection& connection, comm::JobContext&) {
+            return connection.identify();
+        });
+}
 
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where) {
     Result<MachineFile> machine = parseMachineFile(bytes, where);

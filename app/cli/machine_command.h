@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cli_options.h"
+#include "cli_session.h"
 
 #include "model/machine/machine_file.h"
 
@@ -21,6 +22,10 @@ struct MachineSetup {
 // `where` names the file in messages. A device whose options do not fit
 // (a wrong family, a protocol of another family) is refused naming it.
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where);
+
+// Who the device on `session` is (its family's identify()), for status and
+// the backup's manifest alike.
+Result<QString> identifyMachineDevice(CliSession& session, const QString& name);
 
 // machine status / backup / verify / restore; each returns the exit code.
 int runMachineStatus(const MachineSetup& setup, bool json);
