@@ -11,9 +11,12 @@
 
 #include <QAbstractItemModelTester>
 #include <QBrush>
+#include <QFont>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
+
+#include <algorithm>
 
 using namespace cambench;
 
@@ -50,6 +53,7 @@ private Q_SLOTS:
     void camTableFollowsInsertAndDelete();
     void trackTableShowsDeadTimeAndState();
     void trackTableEditsNameAndDeadTime();
+    void editedDeadTimeOrNameMarksTheRowEdited();
 };
 
 void CamDocumentTest::setCamChangesTrackAndUndoRestoresIt() {
@@ -453,6 +457,46 @@ void CamDocumentTest::trackTableEditsNameAndDeadTime() {
     QCOMPARE(document.deadTime(2), 45);
     QVERIFY(!model.setData(model.index(1, TrackTableModel::DeadTimeColumn), 5000.0));
     QCOMPARE(document.undoStack()->count(), 2);
+}
+
+// The row's state is the output's as a whole: an edited dead time (or name)
+// beside cams equal to the device's is "edited" (it will be written), and
+// the tooltip says which part; writing it back makes the row "unchanged".
+void CamDocumentTest::editedDeadTimeOrNameMarksTheRowEdited() {
+    CamDocument document;
+    test::loadDemo(document);
+    document.setDeviceProgram(document.program(0));
+    document.loadOutputSettingsFromDevice({{2, QStringLiteral("Knife")}}, {{2, 40}});
+    TrackTableModel model(&document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    const QModelIndex state = model.index(1, TrackTableModel::StateColumn);
+    QCOMPARE(state.data().toString(), QStringLiteral("unchanged"));
+    QCOMPARE(state.data(Qt::ToolTipRole).toString(),
+             QStringLiteral("Output 2 is the same as on the device."));
+
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    QVERIFY(model.setData(model.index(1, TrackTableModel::DeadTimeColumn), 4.5));
+    QCOMPARE(state.data().toString(), QStringLiteral("edited"));
+    QVERIFY(
+        state.data(Qt::ToolTipRole).toString().contains(QStringLiteral("dead time of output 2")));
+    QVERIFY(
+        model.index(1, TrackTableModel::DeadTimeColumn).data(Qt::FontRole).value<QFont>().bold());
+    QVERIFY(!model.index(1, TrackTableModel::NameColumn).data(Qt::FontRole).value<QFont>().bold());
+    // The view hears of the state column too, not only of the dead time cell.
+    const bool stateAnnounced =
+        std::any_of(changed.cbegin(), changed.cend(), [](const QList<QVariant>& args) {
+            return args.at(1).toModelIndex().column() >= TrackTableModel::StateColumn;
+        });
+    QVERIFY(stateAnnounced);
+    // Another output stays as it was.
+    QCOMPARE(model.index(2, TrackTableModel::StateColumn).data().toString(),
+             QStringLiteral("unchanged"));
+
+    document.setDeviceDeadTime(2, 45);
+    QCOMPARE(state.data().toString(), QStringLiteral("unchanged"));
+    QVERIFY(model.setData(model.index(1, TrackTableModel::NameColumn), QStringLiteral("Glue")));
+    QCOMPARE(state.data().toString(), QStringLiteral("edited"));
+    QVERIFY(state.data(Qt::ToolTipRole).toString().contains(QStringLiteral("name of output 2")));
 }
 
 QTEST_MAIN(CamDocumentTest)

@@ -371,6 +371,16 @@ std::optional<QString> CamDocument::deviceOutputName(int output) const {
     return m_deviceOutputNames.value(output);
 }
 
+ChangeState CamDocument::outputNameState(int output) const {
+    const std::optional<QString> device = deviceOutputName(output);
+    return compare(device.has_value(), device == outputName(output));
+}
+
+ChangeState CamDocument::deadTimeState(int output) const {
+    const std::optional<qint32> device = deviceDeadTime(output);
+    return compare(device.has_value(), device == deadTime(output));
+}
+
 ChangeState CamDocument::programState(int program) const {
     return compare(m_device.contains(program), this->program(program) == m_device.value(program));
 }

@@ -126,6 +126,10 @@ public:
     ChangeState programState(int program) const;
     ChangeState trackState(int program, int output) const;
     ChangeState camState(int program, int output, int index) const;
+    // An output's name and dead time against the device's copy (NotRead
+    // while the device's output settings were not read).
+    ChangeState outputNameState(int output) const;
+    ChangeState deadTimeState(int output) const;
     QList<TrackDifference> differences() const;
     // What is wrong with a track of the edited state (model/cam_validation.h).
     QList<CamProblem> problems(int program, int output) const;

@@ -8,6 +8,7 @@
 #include <QBrush>
 #include <QFont>
 #include <QLocale>
+#include <QStringList>
 
 namespace cambench {
 
@@ -34,9 +35,9 @@ TrackTableModel::TrackTableModel(CamDocument* document, QObject* parent)
         }
     });
     connect(document, &CamDocument::outputNameChanged, this,
-            [this](int output) { outputChanged(output, NameColumn, NameColumn); });
+            [this](int output) { outputChanged(output, NameColumn, StateColumn); });
     connect(document, &CamDocument::deadTimeChanged, this,
-            [this](int output) { outputChanged(output, DeadTimeColumn, DeadTimeColumn); });
+            [this](int output) { outputChanged(output, DeadTimeColumn, StateColumn); });
     connect(document, &CamDocument::minimumPulsesChanged, this, [this] {
         if (m_rows > 0)
             Q_EMIT dataChanged(index(0, MinimumPulseColumn), index(m_rows - 1, MinimumPulseColumn));
@@ -86,6 +87,10 @@ QVariant TrackTableModel::data(const QModelIndex& index, int role) const {
             if (role == Qt::DisplayRole || role == Qt::EditRole) {
                 return m_document->outputName(output);
             }
+            if (role == Qt::FontRole &&
+                m_document->outputNameState(output) == ChangeState::Edited) {
+                return editedFont();
+            }
             return {};
         case DeadTimeColumn:
             return deadTimeData(output, role);
@@ -103,6 +108,10 @@ QVariant TrackTableModel::data(const QModelIndex& index, int role) const {
 QVariant TrackTableModel::deadTimeData(int output, int role) const {
     const qint32 steps = m_document->deadTime(output);
     if (role == Qt::DisplayRole) return tr("%1 ms").arg(QLocale().toString(steps / 10.0, 'f', 1));
+    if (role == Qt::FontRole) {
+        return m_document->deadTimeState(output) == ChangeState::Edited ? QVariant(editedFont())
+                                                                        : QVariant();
+    }
     return millisecondsEditData(steps, m_document->deviceInfo().maxDeadTime / 10.0, role);
 }
 
@@ -142,8 +151,16 @@ QVariant TrackTableModel::camCountData(int output, int role) const {
     }
 }
 
+// A row's state is its cams', its name's and its dead time's together: an
+// edited dead time on a track whose cams equal the device's is "edited",
+// not "unchanged" (each edit is written, so each must show).
 QVariant TrackTableModel::stateData(int output, int role) const {
-    const ChangeState state = m_document->trackState(m_program, output);
+    const ChangeState cams = m_document->trackState(m_program, output);
+    const ChangeState name = m_document->outputNameState(output);
+    const ChangeState deadTime = m_document->deadTimeState(output);
+    const bool edited = cams == ChangeState::Edited || name == ChangeState::Edited ||
+                        deadTime == ChangeState::Edited;
+    const ChangeState state = edited ? ChangeState::Edited : cams;
     switch (role) {
         case Qt::DisplayRole:
             switch (state) {
@@ -157,28 +174,49 @@ QVariant TrackTableModel::stateData(int output, int role) const {
             return {};
         case Qt::ToolTipRole:
         case Qt::StatusTipRole:
-            switch (state) {
-                case ChangeState::Unchanged:
-                    return tr("Output %1 is the same as on the device.").arg(output);
-                case ChangeState::Edited:
-                    return tr("Output %1 was changed and is not yet written to the device.")
-                        .arg(output);
-                case ChangeState::NotRead:
-                    return tr("Program %1 was not read from the device: what the device holds is "
-                              "unknown. The cams shown exist on this PC.")
-                        .arg(m_program);
-            }
-            return {};
+            return stateText(output, cams, name, deadTime);
         case Qt::FontRole:
-            if (state == ChangeState::Edited) {
-                QFont font;
-                font.setBold(true);
-                return font;
-            }
-            return {};
+            return state == ChangeState::Edited ? QVariant(editedFont()) : QVariant();
         default:
             return {};
     }
+}
+
+QString TrackTableModel::stateText(int output, ChangeState cams, ChangeState name,
+                                   ChangeState deadTime) const {
+    QStringList lines;
+    if (cams == ChangeState::Edited) {
+        lines << tr("The cams of output %1 were changed and are not yet written to the device.")
+                     .arg(output);
+    }
+    if (name == ChangeState::Edited) {
+        lines << tr("The name of output %1 was changed and is not yet written to the device.")
+                     .arg(output);
+    }
+    if (deadTime == ChangeState::Edited) {
+        lines << tr("The dead time of output %1 was changed and is not yet written to the "
+                    "device.")
+                     .arg(output);
+    }
+    if (cams == ChangeState::NotRead) {
+        lines << tr("Program %1 was not read from the device: what the device holds is "
+                    "unknown. The cams shown exist on this PC.")
+                     .arg(m_program);
+    }
+    if (lines.isEmpty()) {
+        const bool settingsRead = name != ChangeState::NotRead && deadTime != ChangeState::NotRead;
+        return settingsRead ? tr("Output %1 is the same as on the device.").arg(output)
+                            : tr("The cams of output %1 are the same as on the device. Its "
+                                 "name and dead time were not read from it.")
+                                  .arg(output);
+    }
+    return lines.join(QLatin1Char(' '));
+}
+
+QFont TrackTableModel::editedFont() {
+    QFont font;
+    font.setBold(true);
+    return font;
 }
 
 bool TrackTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {

@@ -1,14 +1,16 @@
 #pragma once
 
 #include <QAbstractTableModel>
+#include <QFont>
 
 namespace cambench {
 
 class CamDocument;
+enum class ChangeState;
 
 // The outputs 1..N of one program: name, dead time, the user's minimum
 // pulse (PC only, for the timing check), number of cams and whether the
-// track differs from the device. Name, dead time and minimum pulse are
+// track, name or dead time differs from the device. Name, dead time and minimum pulse are
 // editable; name and dead time edits go through the document's undo stack.
 class TrackTableModel : public QAbstractTableModel {
     Q_OBJECT
@@ -45,6 +47,8 @@ private:
     QVariant deadTimeData(int output, int role) const;
     QVariant minimumPulseData(int output, int role) const;
     QVariant stateData(int output, int role) const;
+    QString stateText(int output, ChangeState cams, ChangeState name, ChangeState deadTime) const;
+    static QFont editedFont();
     QVariant camCountData(int output, int role) const;
 
     CamDocument* m_document;
