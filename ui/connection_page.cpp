@@ -469,8 +469,13 @@ void ConnectionPage::showScanResult(const Result<QList<int>>& devices) {
     const comm::FamilyInfo* family =
         comm::FamilyRegistry::instance().find(sessionFamily(*m_session));
     const QString title = family ? family->title : QString();
+    const comm::ProtocolInfo* protocol =
+        comm::ProtocolRegistry::instance().find(m_session->protocol().protocolId());
+    const bool addresses = protocol && protocol->numbersAreAddresses;
     for (int device : devices.value()) {
-        auto* item = new QListWidgetItem(tr("%1, device number %2").arg(title).arg(device));
+        auto* item =
+            new QListWidgetItem(addresses ? tr("%1, address %2").arg(title).arg(device)
+                                          : tr("%1, device number %2").arg(title).arg(device));
         item->setData(Qt::UserRole, device);
         m_devices->addItem(item);
     }

@@ -36,6 +36,7 @@ ProtocolInfo compax3Protocol(bool rs485) {
     info.defaultSerial.flowControl = 'H';  // RTS/CTS, as Parker's tools connect
     info.isBus = rs485;
     info.lastDevice = rs485 ? kCompax3LastAddress : 0;
+    info.numbersAreAddresses = rs485;
     info.makeSettings = [rs485] { return std::make_unique<Compax3ProtocolSettings>(rs485); };
     info.connect = [rs485, id = info.id](
                        Transport& transport, const ProtocolSettings& settings,

@@ -27,6 +27,9 @@ struct ProtocolInfo {
     SerialSettings defaultSerial;
     bool isBus = false;  // devices are addressed by number (and may be scanned)
     int lastDevice = 0;  // a bus: the highest device number (CamCon Multiuser: 63)
+    // A bus whose devices a person knows by their address (a Compax3 on
+    // RS485), not by a device number: lists and messages say "address".
+    bool numbersAreAddresses = false;
     // Its probe only listens (a token bus, whose users other protocols'
     // bytes would disturb): Detect tries it before the others.
     bool listeningProbe = false;

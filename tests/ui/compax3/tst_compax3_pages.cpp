@@ -37,6 +37,9 @@
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QTableWidget>
+#include "ui/connection_page.h"
+
+#include <QListWidget>
 #include <QTemporaryDir>
 #include <QTreeView>
 
@@ -72,6 +75,32 @@ class Compax3PagesTest : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase() { useTestSettings(); }
+
+    // On RS485 a drive is known by its address (the number set on the
+    // drive): the scan list says "address", not the CamCon's "device number".
+    void busScanListsDrivesByAddress() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        ConnectionPage* page = shell->window()->connectionPage();
+        page->setPort(QStringLiteral("sim:address=7"));
+        page->setProtocol(QStringLiteral("compax3-rs485"));
+        std::unique_ptr<comm::ProtocolSettings> settings = page->protocolSettings()->clone();
+        settings->setDevice(7);
+        page->showConnection(page->connectionSettings(), *settings);
+        QSignalSpy loaded(shell->window(), &MainWindow::loaded);
+        shell->window()->connectAndLoad();
+        QVERIFY(loaded.wait(kDeviceTimeoutMs));
+        QVERIFY(loaded.first().first().toBool());
+        auto* devices = page->findChild<QListWidget*>();
+        QVERIFY(devices);
+        page->scanBus();
+        QVERIFY(QTest::qWaitFor([&] { return devices->count() > 0; }, 4 * kDeviceTimeoutMs));
+        for (int row = 0; row < devices->count(); ++row) {
+            const QString text = devices->item(row)->text();
+            QVERIFY2(text.contains(QLatin1String(", address ")), qPrintable(text));
+            QVERIFY2(!text.contains(QLatin1String("device number")), qPrintable(text));
+        }
+    }
 
     void objectsShowTheDriveAndWriteOnlyAfterYes() {
         std::unique_ptr<Shell> shell = startCompax3();
