@@ -47,6 +47,7 @@ void MultiTrendChart::clear() {
         delete series;
     }
     m_series.clear();
+    m_origin = QDateTime();
 }
 
 QStringList MultiTrendChart::legendNames() const {
@@ -108,7 +109,10 @@ QLineSeries* MultiTrendChart::seriesFor(const Sample& sample) {
     return series;
 }
 
-void MultiTrendChart::addSamples(double t, const QList<Sample>& samples) {
+void MultiTrendChart::addSamples(const QDateTime& at, const QList<Sample>& samples) {
+    if (samples.isEmpty()) return;
+    if (!m_origin.isValid()) m_origin = at;
+    const double t = m_origin.msecsTo(at) / 1000.0;
     QList<QLineSeries*> lines;
     for (const Sample& sample : samples) lines << seriesFor(sample);
     for (int i = 0; i < samples.size(); ++i) lines.at(i)->append(t, samples.at(i).value);

@@ -2,6 +2,7 @@
 
 #include <QChartView>
 #include <QColor>
+#include <QDateTime>
 #include <QList>
 #include <QString>
 
@@ -27,9 +28,12 @@ public:
 
     explicit MultiTrendChart(QWidget* parent = nullptr);
 
-    // The values read at `seconds` (since the first sample).
-    void addSamples(double seconds, const QList<Sample>& samples);
+    // The values read at `at`. The time axis counts from the first call
+    // with a value in it (since the last clear()): a poll that brought no
+    // number does not start the clock, so the first point is at 0 s.
+    void addSamples(const QDateTime& at, const QList<Sample>& samples);
     void breakLine() { m_gap = true; }
+    // Forgets every line and the time origin (another device, another line).
     void clear();
     int seriesCount() const { return int(m_series.size()); }
     int pointCount() const;
@@ -50,6 +54,7 @@ private:
     QValueAxis* m_values;
     QList<std::pair<QString, QLineSeries*>> m_series;  // key, its line (several after gaps)
     bool m_gap = false;
+    QDateTime m_origin;  // the first sample's time; invalid until then
 };
 
 }  // namespace cambench

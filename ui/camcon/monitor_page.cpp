@@ -138,7 +138,6 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     layout->addWidget(m_trend, 1);
 
     m_timer.setInterval(kDefaultIntervalMs);
-    m_clock.start();
     connect(&m_timer, &QTimer::timeout, this, &MonitorPage::pollCycle);
     connect(m_rate, &QSpinBox::valueChanged, this, [this](int ms) {
         if (ms == m_liveInterval) return;  // our own adjustment
@@ -190,6 +189,11 @@ MonitorPage::MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* 
     m_reset->setEnabled(false);
     showFreshness();
     updateRunning();
+}
+
+void MonitorPage::forgetDevice() {
+    m_trend->clear();
+    m_clock.invalidate();
 }
 
 void MonitorPage::setPollInterval(int ms) {
@@ -335,6 +339,9 @@ void MonitorPage::showStatus(const DeviceStatus& status) {
     if (!status.inputs.isEmpty()) m_inputs->setStates(status.inputs);
     showFreshness();
     if (!m_pause->isChecked()) {
+        // The time axis counts from the first sample shown (0 s), not from
+        // when the page was made.
+        if (!m_clock.isValid()) m_clock.start();
         m_trend->addSample(m_clock.elapsed() / 1000.0,
                            plotted(status.positionText, status.position),
                            plotted(status.speedText, status.speed));

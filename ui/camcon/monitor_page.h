@@ -30,6 +30,9 @@ public:
     MonitorPage(DeviceSession* session, Workspace* workspace, QWidget* parent = nullptr);
 
     QString sectionTitle() const override { return tr("Monitor"); }
+    // Every connect may reach another device: its trend is not the old one's
+    // continued (a device of the same identity on another port included).
+    void forgetDevice() override;
 
     // One poll cycle: what the timer does every interval. Public so tests
     // drive cycles instead of waiting for the clock.

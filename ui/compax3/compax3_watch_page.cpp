@@ -119,7 +119,6 @@ bool Compax3WatchPage::poll() {
 
 void Compax3WatchPage::show(const QList<usecases::Compax3Reading>& values) {
     const QDateTime now = QDateTime::currentDateTime();
-    if (!m_start.isValid()) m_start = now;
     QList<MultiTrendChart::Sample> samples;
     for (const usecases::Compax3Reading& reading : values) {
         const Compax3ObjectId& id = reading.id;
@@ -139,7 +138,7 @@ void Compax3WatchPage::show(const QList<usecases::Compax3Reading>& values) {
                 name.isEmpty() ? id.text() : QStringLiteral("%1 %2").arg(id.text(), name), *number};
         }
     }
-    m_chart->addSamples(m_start.msecsTo(now) / 1000.0, samples);
+    m_chart->addSamples(now, samples);
 }
 
 void Compax3WatchPage::freshnessChanged() {
@@ -155,6 +154,11 @@ void Compax3WatchPage::greyOut(const QString& why) {
                 item->setForeground(Qt::gray);
                 item->setToolTip(why);
             }
+}
+
+void Compax3WatchPage::forgetDevice() {
+    LiveDevicePage::forgetDevice();
+    m_chart->clear();
 }
 
 }  // namespace cambench

@@ -33,6 +33,8 @@ public:
 
 protected:
     void freshnessChanged() override;
+    // Another connect, maybe another device: its trend starts anew.
+    void forgetDevice() override;
 
 private:
     void rebuildTable();
@@ -44,7 +46,6 @@ private:
     QLineEdit* m_add;
     QTableWidget* m_table;
     MultiTrendChart* m_chart;
-    QDateTime m_start;
 };
 
 }  // namespace cambench

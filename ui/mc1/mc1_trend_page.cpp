@@ -64,7 +64,6 @@ int Mc1TrendPage::pointCount() const {
 }
 
 void Mc1TrendPage::sample(const QDateTime& at) {
-    if (!m_start.isValid()) m_start = at;
     QList<MultiTrendChart::Sample> samples;
     const QList<Mc1WatchModel::Entry>& entries = m_model->entries();
     for (int i = 0; i < entries.size() && i < kMaxSeries; ++i) {
@@ -75,7 +74,12 @@ void Mc1TrendPage::sample(const QDateTime& at) {
             key, entry.name.isEmpty() ? key : QStringLiteral("%1 %2").arg(key, entry.name),
             double(*entry.value)};
     }
-    m_chart->addSamples(m_start.msecsTo(at) / 1000.0, samples);
+    m_chart->addSamples(at, samples);
+}
+
+void Mc1TrendPage::forgetDevice() {
+    LiveDevicePage::forgetDevice();
+    m_chart->clear();
 }
 
 }  // namespace cambench

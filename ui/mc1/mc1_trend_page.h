@@ -21,6 +21,8 @@ public:
     QString sectionTitle() const override { return tr("Trend"); }
     bool poll() override;
     void markStale() override;
+    // Another connect, maybe another device: its trend starts anew.
+    void forgetDevice() override;
     // The Variables page polls what the trend draws.
     LiveDevicePage* polledPage() override;
     MultiTrendChart* chart() const { return m_chart; }
@@ -34,7 +36,6 @@ private:
     Mc1WatchModel* m_model;
     MultiTrendChart* m_chart;
     QLabel* m_freshness;
-    QDateTime m_start;
 };
 
 }  // namespace cambench

@@ -9,6 +9,7 @@
 #include "ui/camcon/cameditor/cam_diagram_widget.h"
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/camcon/monitor_page.h"
+#include "ui/connection_page.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
@@ -54,6 +55,7 @@ private Q_SLOTS:
     void pollRateReturnsOnceTheLineCarriesItAgain();
     void pollRateTheLineCannotCarryIsAdjustedWithAWord();
     void speedTrendPlotsTheValueTheReadoutShows();
+    void trendStartsAnewOnAnotherPortWithTheSameIdentity();
 };
 
 void FreshnessTest::silentDeviceTurnsIndicatorAndMonitorStaleWithinOnePollCycle() {
@@ -211,6 +213,31 @@ void FreshnessTest::speedTrendPlotsTheValueTheReadoutShows() {
     // The simulated axis: 36 units/s raw (?BSPEED), shown as 6.0 (?SPEED).
     QVERIFY(status->speed != 6);
     QCOMPARE(monitor->trend()->speedPoints().last().y(), status->speedText.trimmed().toDouble());
+}
+
+// Two simulated CamCons of the same identity behind different ports: the
+// second one's trend does not continue the first one's line (its samples are
+// not this device's history), and the time axis starts at 0 s with the
+// first sample, not when the page was made.
+void FreshnessTest::trendStartsAnewOnAnotherPortWithTheSameIdentity() {
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"));
+    QVERIFY(shell);
+    MonitorPage* monitor = monitorOnCycles(*shell);
+    monitor->pollCycle();
+    QTRY_COMPARE_WITH_TIMEOUT(monitor->trendSamples(), 1, kDeviceTimeoutMs);
+    monitor->pollCycle();
+    QTRY_COMPARE_WITH_TIMEOUT(monitor->trendSamples(), 2, kDeviceTimeoutMs);
+    QCOMPARE(monitor->trend()->speedPoints().first().x(), 0.0);
+
+    MainWindow* window = shell->window();
+    window->connectionPage()->setPort(QStringLiteral("sim"));
+    QSignalSpy loaded(window, &MainWindow::loaded);
+    window->connectAndLoad();
+    QVERIFY(loaded.wait(kDeviceTimeoutMs));
+    QCOMPARE(monitor->trendSamples(), 0);
+    monitor->pollCycle();
+    QTRY_COMPARE_WITH_TIMEOUT(monitor->trendSamples(), 1, kDeviceTimeoutMs);
+    QCOMPARE(monitor->trend()->speedPoints().first().x(), 0.0);
 }
 
 QTEST_MAIN(FreshnessTest)
