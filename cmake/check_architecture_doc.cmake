@@ -9,12 +9,11 @@
 # a family when its path or a line of it holds a family's id (the
 # CAMBENCH_FAMILIES of cmake/families.cmake) as a word: in lower case, with
 # no letter or digit on either side (for a family xy: "comm/sim/xy/",
-# "xy_bench", "--family xy"; not "XyDevice", not "xyParts"). Not read: docs/
-# (the doc itself and the pictures), tests/ and bench/ (the existing
-# families' tests and benchmark outside family folders: a new family's go
-# to tests/<area>/<family>/; the CMake lists there are held by
-# `family_sources`), translations/*.ts (written by lupdate), build trees and
-# hidden folders but .ci/.
+# "xy_bench", "--family xy"; not "XyDevice", not "xyParts"). tests/ and
+# bench/ are read like the rest (a family's tests sit in
+# tests/<area>/<family>/). Not read: docs/ (the doc itself and the
+# pictures), translations/*.ts (written by lupdate), build trees and hidden
+# folders but .ci/.
 cmake_minimum_required(VERSION 3.25)
 include("${CMAKE_CURRENT_LIST_DIR}/tree_checks.cmake")
 
@@ -22,7 +21,7 @@ set(word "(^|[^A-Za-z0-9])(${CAMBENCH_FAMILY_NAMES})([^A-Za-z0-9]|$)")
 set(doc "docs/architecture.md")
 
 # The tree's files in the rule's scope.
-cambench_tree_files(files SKIP docs tests bench)
+cambench_tree_files(files SKIP docs)
 
 set(tree)
 foreach(file IN LISTS files)

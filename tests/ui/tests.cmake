@@ -1,22 +1,7 @@
-cambench_add_test(cameditor_document_test SOURCES ui/register_widgets.cpp ui/cameditor/tst_cam_document.cpp ui/cameditor/cam_test_support.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(cameditor_widget_test SOURCES ui/register_widgets.cpp ui/cameditor/tst_cam_editor_widget.cpp ui/cameditor/cam_test_support.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_main_window_test SOURCES ui/register_widgets.cpp ui/shell/tst_main_window.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_pages_test SOURCES ui/register_widgets.cpp ui/shell/tst_shell_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 
-# Issue 6 ("what CamBench says about a device must be true"): the GUI on
-# real widgets against the simulator, one file per group of points.
-function(cambench_add_truth_test name)
-  cambench_add_test(${name} SOURCES ${ARGN} ui/register_widgets.cpp ui/truth/pty_simulator.h ui/shell/shell_fixture.h
-                    LIBS cambench_ui cambench_gui_registry cambench_sim)
-endfunction()
-cambench_add_truth_test(ui_truth_write_test ui/truth/tst_write_truth.cpp)
-cambench_add_truth_test(ui_truth_unwritten_edits_test ui/truth/tst_unwritten_edits.cpp)
-cambench_add_truth_test(ui_truth_freshness_test ui/truth/tst_freshness.cpp)
-cambench_add_truth_test(ui_truth_whole_device_test ui/truth/tst_whole_device.cpp)
-cambench_add_truth_test(ui_truth_report_and_counts_test ui/truth/tst_report_and_counts.cpp)
-cambench_add_truth_test(ui_truth_other_device_test ui/truth/tst_other_device.cpp)
 cambench_add_test(ui_shell_small_faults_test SOURCES ui/register_widgets.cpp ui/shell/tst_small_faults.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_truth_test(ui_shell_typed_port_test ui/shell/tst_typed_port.cpp)
 cambench_add_test(ui_shell_gui_settings_test SOURCES ui/register_widgets.cpp ui/shell/tst_gui_settings.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_line_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_line_backup.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 cambench_add_test(ui_shell_plc_coupling_test SOURCES ui/register_widgets.cpp ui/shell/tst_plc_coupling.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)

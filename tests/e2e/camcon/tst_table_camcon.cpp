@@ -2,7 +2,7 @@
 // with the real QSerialPort against the real cambench-sim, for both
 // variants: cams up to the variant's reach, dead-time modes, settings,
 // status, PLC links, short commands, and link faults at 1 %.
-#include "sim_process.h"
+#include "../sim_process.h"
 
 #include "comm/camcon/table/cam_track_words.h"
 #include "comm/camcon/table/frame_3964r.h"

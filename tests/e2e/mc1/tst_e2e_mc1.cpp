@@ -2,7 +2,7 @@
 // on a pseudo-terminal, for each MC100/MC200 variant: identification,
 // variables, flags, I/O, memory, and backup → change → verify → restore →
 // verify with honest counts.
-#include "e2e_support.h"
+#include "../e2e_support.h"
 
 #include <QTest>
 

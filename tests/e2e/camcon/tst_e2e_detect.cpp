@@ -3,7 +3,7 @@
 // line settings until one identifies the device; a silent line names
 // everything tried. And the family-neutral command front: a family's
 // commands are its own group.
-#include "e2e_support.h"
+#include "../e2e_support.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,6 +1,6 @@
 // AsciiLink over a real pseudo-terminal: QSerialPort on the slave side,
 // a scripted device on the master side.
-#include "pty_device.h"
+#include "../../link/pty_device.h"
 
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/command_codec.h"

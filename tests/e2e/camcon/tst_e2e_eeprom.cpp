@@ -1,6 +1,6 @@
 // backup / verify / restore with the real executables, and the restore's
 // refusal of damaged, truncated and foreign images.
-#include "e2e_support.h"
+#include "../e2e_support.h"
 
 #include "model/camcon/eeprom_image_file.h"
 

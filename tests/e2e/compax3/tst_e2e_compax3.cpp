@@ -4,7 +4,7 @@
 // number, RS485 addressing and scan, the motion sequence, watch, and the
 // parameter set workflow (backup → change → verify differs → restore →
 // verify equal; another drive type refused unless forced).
-#include "e2e_support.h"
+#include "../e2e_support.h"
 
 #include <QTest>
 

@@ -1,7 +1,7 @@
 // Issue 12, points 6 and 3: a port is typed as a person types it (a pty, a
 // tcp:// device server), Enter, Connect; the GUI connects there and shows
 // that device. A connect that fails is said on screen, not on stderr.
-#include "../truth/pty_simulator.h"
+#include "pty_simulator.h"
 
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_tcp_server.h"

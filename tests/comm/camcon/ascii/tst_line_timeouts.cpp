@@ -2,7 +2,7 @@
 // from the line: enough for its longest reply at the baud rate plus the
 // turnaround, short enough that a lost reply costs little, and the long
 // class (with its probe) where the device works first.
-#include "scripted_line.h"
+#include "../../engine/scripted_line.h"
 
 #include "comm/camcon/ascii/ascii_link.h"
 

@@ -3,7 +3,7 @@
 #include "comm/camcon/ascii/ascii_link.h"
 #include "comm/camcon/ascii/settings_commands.h"
 #include "comm/sim/sim_transport.h"
-#include "tests/usecases/sim_bench.h"
+#include "tests/usecases/camcon/sim_bench.h"
 
 #include <QLoggingCategory>
 #include <QSet>

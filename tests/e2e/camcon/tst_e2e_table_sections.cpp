@@ -4,7 +4,7 @@
 // device carries them to another, `deadtimes read` prints the mode columns
 // and `deadtimes write` writes them, each reported per item; over a protocol
 // without them they are reported as not sent, never as written.
-#include "e2e_support.h"
+#include "../e2e_support.h"
 
 #include "model/camcon/project_file.h"
 

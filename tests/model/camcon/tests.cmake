@@ -1,0 +1,11 @@
+# The camcon family's model tests (paths relative to tests/).
+cambench_add_test(tst_cam_validation SOURCES model/camcon/tst_cam_validation.cpp LIBS cambench_model)
+cambench_add_test(tst_data_validation SOURCES model/camcon/tst_data_validation.cpp LIBS cambench_model)
+cambench_add_test(tst_system_settings SOURCES model/camcon/tst_system_settings.cpp LIBS cambench_model)
+cambench_add_test(tst_project_file SOURCES model/camcon/tst_project_file.cpp LIBS cambench_model)
+cambench_add_test(tst_eeprom_image_file SOURCES model/camcon/tst_eeprom_image_file.cpp LIBS cambench_model)
+cambench_add_test(tst_csv_io SOURCES model/camcon/tst_csv_io.cpp LIBS cambench_model)
+cambench_add_test(tst_settings_plc_files SOURCES model/camcon/tst_settings_plc_files.cpp LIBS cambench_model)
+cambench_add_test(tst_line_manifest SOURCES model/camcon/tst_line_manifest.cpp LIBS cambench_model)
+cambench_add_test(tst_program_diff SOURCES model/camcon/tst_program_diff.cpp LIBS cambench_model)
+cambench_add_test(tst_cam_timing SOURCES model/camcon/tst_cam_timing.cpp LIBS cambench_model)

@@ -1,0 +1,11 @@
+# The camcon family's use cases against its in-process simulator (paths
+# relative to tests/).
+function(cambench_add_usecase_test name)
+  cambench_add_test(${name} SOURCES ${ARGN} usecases/camcon/sim_bench.h usecases/camcon/sim_bench.cpp
+                    LIBS cambench_usecases cambench_sim)
+endfunction()
+cambench_add_usecase_test(tst_usecase_write_items usecases/camcon/tst_write_items.cpp)
+cambench_add_usecase_test(tst_usecase_read_everything usecases/camcon/tst_read_everything.cpp)
+cambench_add_usecase_test(tst_usecase_backup usecases/camcon/tst_backup.cpp)
+cambench_add_usecase_test(tst_usecase_check usecases/camcon/tst_check.cpp)
+cambench_add_usecase_test(tst_usecase_program_read usecases/camcon/tst_program_read.cpp)
