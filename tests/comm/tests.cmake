@@ -16,6 +16,10 @@ add_dependencies(tst_sim_executable cambench-sim)
 cambench_add_test(tst_worker_job_queue SOURCES comm/worker/tst_job_queue.cpp LIBS cambench_sim)
 cambench_add_test(tst_worker_comm_worker SOURCES comm/worker/tst_comm_worker.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
 cambench_add_test(tst_sim_mc1_controller SOURCES comm/sim/tst_sim_mc1_controller.cpp LIBS cambench_sim)
+# Issue 30: the simulated machine's shaft, its port keys, two in-process ports on one.
+cambench_add_test(tst_sim_shaft SOURCES comm/sim/tst_sim_shaft.cpp LIBS cambench_sim)
+target_compile_definitions(tst_sim_shaft PRIVATE
+  CAMBENCH_DEMO_MACHINE="${PROJECT_SOURCE_DIR}/docs/demo-machine.json")
 include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/mc1_decoder.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/../fuzz/compax3_reply.cmake)
 cambench_add_test(tst_cambus_block SOURCES comm/cambus/tst_cambus_block.cpp LIBS cambench_comm)

@@ -43,6 +43,10 @@ cambench_add_e2e_test(tst_e2e_table_sections e2e/tst_e2e_table_sections.cpp)
 cambench_add_e2e_test(tst_e2e_detect e2e/tst_e2e_detect.cpp)
 cambench_add_e2e_test(tst_e2e_diff e2e/tst_e2e_diff.cpp)
 cambench_add_e2e_test(tst_e2e_machine e2e/tst_e2e_machine.cpp)
+# cambench-sim --machine: every device of a machine file, and its shaft.
+cambench_add_e2e_test(tst_e2e_sim_machine e2e/tst_e2e_sim_machine.cpp)
+target_compile_definitions(tst_e2e_sim_machine PRIVATE
+  CAMBENCH_DEMO_MACHINE="${PROJECT_SOURCE_DIR}/docs/demo-machine.json")
 cambench_add_e2e_test(tst_e2e_mc1 e2e/tst_e2e_mc1.cpp)
 cambench_add_e2e_test(tst_e2e_compax3 e2e/tst_e2e_compax3.cpp)
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
