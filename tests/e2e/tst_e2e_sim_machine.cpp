@@ -13,9 +13,12 @@
 #include <QMap>
 #include <QProcess>
 #include <QSet>
+#include <QTcpServer>
 #include <QTest>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 using namespace cambench::e2e;
 
@@ -100,6 +103,26 @@ const QStringList kMc1{QStringLiteral("--family"), QStringLiteral("mc1"),
                        QStringLiteral("--variant"), QStringLiteral("mc200v2")};
 const QStringList kCompax3{QStringLiteral("--family"), QStringLiteral("compax3")};
 
+// The first of `count` consecutive TCP ports that are free now (0: none
+// found); a machine's devices take them one after the other.
+quint16 freePorts(int count) {
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        QTcpServer probe;
+        if (!probe.listen(QHostAddress::LocalHost, 0)) return 0;
+        const quint16 base = probe.serverPort();
+        if (base > 65535 - count) continue;
+        probe.close();
+        std::vector<std::unique_ptr<QTcpServer>> held;
+        bool free = true;
+        for (int i = 0; i < count && free; ++i) {
+            held.push_back(std::make_unique<QTcpServer>());
+            free = held.back()->listen(QHostAddress::Any, quint16(base + i));
+        }
+        if (free) return base;
+    }
+    return 0;
+}
+
 // The number `key` of a --json answer; NaN when it is not there.
 double jsonNumber(const CliRun& run, const char* key) {
     const QJsonValue value =
@@ -158,23 +181,37 @@ private Q_SLOTS:
         QCOMPARE(jsonNumber(cams, "position"), 0.0);  // on the feed's shaft, standing
     }
 
-    // --tcp 0: each device on a free TCP port, "NAME tcp://127.0.0.1:PORT".
+    // --tcp BASE: the devices on BASE, BASE+1, BASE+2 in the file's order,
+    // "NAME tcp://127.0.0.1:PORT"; each answers there.
     void servesEveryDeviceOnItsOwnTcpPort() {
         SimSession scratch;
         const QString file = scratch.path(QStringLiteral("press7.json"));
         QVERIFY(writeBytes(file, pressFile()));
+        const quint16 base = freePorts(3);
+        QVERIFY(base != 0);
         MachineSim sim;
-        QVERIFY2(sim.start({"--machine", file, "--tcp", "0"}, 3), qPrintable(sim.errorText()));
-        for (const QString& name : sim.names())
-            QVERIFY2(sim.path(name).startsWith(QLatin1String("tcp://127.0.0.1:")),
-                     qPrintable(sim.path(name)));
-        QCOMPARE(QSet<QString>({sim.path("cams"), sim.path("press-plc"), sim.path("feed")}).size(),
-                 3);
+        QVERIFY2(sim.start({"--machine", file, "--tcp", QString::number(base)}, 3),
+                 qPrintable(sim.errorText()));
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(sim.path(sim.names().at(i)),
+                     QStringLiteral("tcp://127.0.0.1:%1").arg(base + i));
         const CliRun feed = cliOn(sim.path("feed"), kCompax3, {"c3", "info"});
         VERIFY_EXIT(feed, 0);
         QVERIFY2(feed.out.contains(QLatin1String("S025V2")), qPrintable(feed.out));
         const CliRun cams = cliOn(sim.path("cams"), kCamCon, {"info"});
         VERIFY_EXIT(cams, 0);
+    }
+
+    // --tcp 0: each on a free port of its own.
+    void tcpZeroTakesFreePorts() {
+        SimSession scratch;
+        const QString file = scratch.path(QStringLiteral("press7.json"));
+        QVERIFY(writeBytes(file, pressFile()));
+        MachineSim sim;
+        QVERIFY2(sim.start({"--machine", file, "--tcp", "0"}, 3), qPrintable(sim.errorText()));
+        QCOMPARE(QSet<QString>({sim.path("cams"), sim.path("press-plc"), sim.path("feed")}).size(),
+                 3);
+        VERIFY_EXIT(cliOn(sim.path("press-plc"), kMc1, {"mc", "info"}), 0);
     }
 
     // Each kind of mistake: exit 2, the device named, nothing served.

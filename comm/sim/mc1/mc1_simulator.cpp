@@ -193,7 +193,8 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
         Mc1Variant variant = kDefaultVariant;
         if (parser.isSet(QStringLiteral("variant"))) {
             const Result<Mc1Variant> parsed = variantFrom(parser.value(QStringLiteral("variant")));
-            if (!parsed) return Error::usage(QStringLiteral("--%1").arg(parsed.error().message));
+            if (!parsed)
+                return Error::usage(QStringLiteral("--variant: %1").arg(parsed.error().message));
             variant = *parsed;
         }
         int baud = kDefaultBaud;
