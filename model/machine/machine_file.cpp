@@ -77,6 +77,10 @@ Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QStr
 // "shaft": {"from", "to", "axis", "per-turn"} into `machine`.
 Status parseShaft(const QJsonValue& value, MachineFile& machine, const QString& where) {
     const QJsonObject shaft = value.toObject();
+    if (!shaft.contains(QStringLiteral("from")) || !shaft.contains(QStringLiteral("to")))
+        return refused(where, QStringLiteral("the shaft is {\"from\": DEVICE, \"to\": DEVICE}: "
+                                             "the device whose axis drives it and the one that "
+                                             "follows."));
     for (auto it = shaft.begin(); it != shaft.end(); ++it) {
         static const QStringList keys{QStringLiteral("from"), QStringLiteral("to"),
                                       QStringLiteral("axis"), QStringLiteral("per-turn")};

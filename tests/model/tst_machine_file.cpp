@@ -89,6 +89,8 @@ private Q_SLOTS:
         QTest::newRow("shaft to itself")
             << QByteArray(two + json("'shaft': {'from': 'feed', 'to': 'feed'}}"))
             << "runs from \"feed\" to itself";
+        QTest::newRow("shaft not an object")
+            << QByteArray(two + json("'shaft': 'feed'}")) << "the shaft is {\"from\": DEVICE";
         QTest::newRow("shaft key")
             << QByteArray(two + json("'shaft': {'from': 'feed', 'to': 'cams', 'ratio': 2}}"))
             << "the shaft has an unknown key \"ratio\"";
