@@ -1,13 +1,15 @@
 // cambench-sim: a simulated device of any registered family on a
-// pseudo-terminal (default) or a TCP port, for the tool, its tests and
-// demos without hardware. The options every family shares (protocol,
-// faults, pacing, where to serve) are read here; the family's simulator
-// reads its own.
+// pseudo-terminal (default) or a TCP port, or every device of a machine
+// file at once (--machine), for the tool, its tests and demos without
+// hardware. The options every family shares (protocol, faults, pacing,
+// where to serve) are read here; the family's simulator reads its own.
 
 #include "app/registry/builtin_registry.h"
 #include "app/registry/family_parts.h"
 #include "cambench_version.h"
 #include "signal_quitter.h"
+#include "sim_machine.h"
+#include "sim_options.h"
 
 #include "comm/device/family_registry.h"
 #include "comm/device/protocol_registry.h"
@@ -18,7 +20,6 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QLoggingCategory>
-#include <QSet>
 #include <QTextStream>
 
 #include <cstdio>
@@ -30,13 +31,6 @@ using namespace cambench::comm;
 
 namespace {
 
-struct Options {
-    const SimulatorInfo* simulator = nullptr;
-    SimHostOptions shared;
-    std::optional<quint16> tcpPort;
-    bool verbose = false;
-};
-
 int fail(const QString& message) {
     QTextStream(stderr) << "cambench-sim: " << message << Qt::endl;
     return 2;
@@ -44,7 +38,8 @@ int fail(const QString& message) {
 
 // The family's simulator: --family, else the family of --protocol, else the
 // default family (the first registered).
-QString chooseSimulator(const QCommandLineParser& parser, Options& options) {
+QString chooseSimulator(const QCommandLineParser& parser, SimCommandLine& options,
+                        const SimulatorInfo** simulator) {
     const FamilyRegistry& families = FamilyRegistry::instance();
     QString familyId = families.all().value(0) ? families.all().value(0)->id : QString();
     const QString protocol = parser.value(QStringLiteral("protocol"));
@@ -56,102 +51,51 @@ QString chooseSimulator(const QCommandLineParser& parser, Options& options) {
     } else if (const ProtocolInfo* info = ProtocolRegistry::instance().find(protocol)) {
         familyId = info->familyId;
     }
-    options.simulator = SimulatorRegistry::instance().find(familyId);
-    if (!options.simulator)
+    *simulator = SimulatorRegistry::instance().find(familyId);
+    if (!*simulator)
         return QStringLiteral("no simulator of family %1 is built into this CamBench.")
             .arg(familyId);
     options.shared.protocol = protocol;
     return {};
 }
 
-// Empty on success, else what is wrong.
-QString readSharedOptions(const QCommandLineParser& parser, Options& options) {
-    bool ok = true;
-    if (parser.isSet(QStringLiteral("tcp"))) {
-        const uint port = parser.value(QStringLiteral("tcp")).toUInt(&ok);
-        if (!ok || port > 65535) return QStringLiteral("--tcp needs a port number 0..65535.");
-        options.tcpPort = quint16(port);
-    }
-    SimFaultSettings& faults = options.shared.faults;
-    const QList<std::pair<const char*, double*>> probabilities{
-        {"corrupt", &faults.corruptProbability},
-        {"drop", &faults.dropProbability},
-        {"ignore", &faults.ignoreProbability},
-    };
-    for (const auto& [name, target] : probabilities) {
-        if (!parser.isSet(QLatin1String(name))) continue;
-        const auto p = parseProbability(parser.value(QLatin1String(name)));
-        if (!p) return QStringLiteral("--%1 needs a probability 0..1.").arg(QLatin1String(name));
-        *target = *p;
-    }
-    if (parser.isSet(QStringLiteral("drop-first")))
-        faults.dropFirstReplyTo = parser.value(QStringLiteral("drop-first")).toLatin1();
-    if (parser.isSet(QStringLiteral("delay"))) {
-        faults.extraDelayMs = parser.value(QStringLiteral("delay")).toInt(&ok);
-        if (!ok || faults.extraDelayMs < 0)
-            return QStringLiteral("--delay needs a whole number of 0 or more.");
-    }
-    if (parser.isSet(QStringLiteral("seed"))) {
-        faults.seed = parser.value(QStringLiteral("seed")).toUInt(&ok);
-        if (!ok) return QStringLiteral("--seed needs a whole number.");
-    }
-    options.shared.throttle = !parser.isSet(QStringLiteral("no-throttle"));
-    faults.dead = parser.isSet(QStringLiteral("dead"));
-    options.verbose = parser.isSet(QStringLiteral("verbose"));
+// --machine takes each device's family and options from the file: the same
+// on the command line would be ignored, so it is refused.
+QString deviceOptionOnCommandLine(const QCommandLineParser& parser) {
+    QStringList names{QStringLiteral("family"), QStringLiteral("protocol")};
+    for (const SimulatorInfo* simulator : SimulatorRegistry::instance().all())
+        for (const QCommandLineOption& option : simulator->options()) names << option.names();
+    for (const QString& name : names)
+        if (parser.isSet(name))
+            return QStringLiteral(
+                       "--%1 is a device's option: with --machine give it in the "
+                       "device's entry of the machine file.")
+                .arg(name);
     return {};
 }
 
-void addOptions(QCommandLineParser& parser) {
-    QStringList families;
-    for (const FamilyInfo* family : FamilyRegistry::instance().all())
-        families << (family->built ? family->id
-                                   : QStringLiteral("%1 (not built yet)").arg(family->id));
-    parser.setApplicationDescription(
-        QStringLiteral("A simulated device of one family (see --family). Without --tcp it serves a "
-                       "pseudo-terminal and prints its path as the first line on stdout."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addOptions({
-        {QStringLiteral("family"),
-         QStringLiteral("The device family: %1 (default: the protocol's family, else the first).")
-             .arg(families.join(QStringLiteral(", "))),
-         QStringLiteral("family")},
-        {QStringLiteral("protocol"),
-         QStringLiteral("A protocol of the family: %1 (default: the family's).")
-             .arg(ProtocolRegistry::instance().idList()),
-         QStringLiteral("protocol")},
-        {QStringLiteral("tcp"),
-         QStringLiteral("Serve TCP on this port instead of a pseudo-terminal."),
-         QStringLiteral("port")},
-        {QStringLiteral("corrupt"), QStringLiteral("Probability of a corrupted reply byte."),
-         QStringLiteral("p")},
-        {QStringLiteral("drop"),
-         QStringLiteral("Probability of a lost reply (the request was executed)."),
-         QStringLiteral("p")},
-        {QStringLiteral("ignore"),
-         QStringLiteral("Probability of a lost request (not executed, as if damaged)."),
-         QStringLiteral("p")},
-        {QStringLiteral("drop-first"),
-         QStringLiteral("Lose the first reply to a request that starts so, e.g. !EE0000."),
-         QStringLiteral("request")},
-        {QStringLiteral("delay"), QStringLiteral("Extra delay before every reply."),
-         QStringLiteral("ms")},
-        {QStringLiteral("seed"), QStringLiteral("Seed of the fault generator (default 1)."),
-         QStringLiteral("n")},
-        {QStringLiteral("no-throttle"),
-         QStringLiteral("Send replies at once instead of at the baud rate.")},
-        {QStringLiteral("dead"), QStringLiteral("Never answer.")},
-        {QStringLiteral("verbose"), QStringLiteral("Log requests to stderr.")},
-    });
-    // Each family's own options (a name two families share is added once).
-    QSet<QString> added;
-    for (const SimulatorInfo* simulator : SimulatorRegistry::instance().all()) {
-        for (const QCommandLineOption& option : simulator->options()) {
-            if (added.contains(option.names().first())) continue;
-            added.insert(option.names().first());
-            parser.addOption(option);
-        }
-    }
+void quietUnless(bool verbose) {
+    QLoggingCategory::setFilterRules(
+        verbose ? QStringLiteral("cambench.comm.sim.debug=true")
+                : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
+}
+
+// --machine FILE: every device, one "NAME PATH" line each, until a signal.
+int serveMachine(QCoreApplication& app, const QCommandLineParser& parser,
+                 const SimCommandLine& options) {
+    if (QString problem = deviceOptionOnCommandLine(parser); !problem.isEmpty())
+        return fail(problem);
+    Result<std::unique_ptr<SimMachine>> machine =
+        SimMachine::build(parser.value(QStringLiteral("machine")), options.shared);
+    if (!machine) return fail(machine.error().message);
+    quietUnless(options.verbose);
+    SignalQuitter quitter;
+    if (!quitter.isValid()) return fail(QStringLiteral("cannot watch for SIGTERM/SIGINT."));
+    const Result<QStringList> served = (*machine)->serve(options.tcpPort);
+    if (!served) return fail(served.error().message);
+    for (const QString& line : *served) std::printf("%s\n", qPrintable(line));
+    std::fflush(stdout);
+    return app.exec();
 }
 
 }  // namespace
@@ -164,20 +108,19 @@ int main(int argc, char* argv[]) {
     QCoreApplication::setApplicationName(QStringLiteral("cambench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CAMBENCH_VERSION_TEXT));
     QCommandLineParser parser;
-    addOptions(parser);
+    addSimOptions(parser);
     parser.process(app);
-    Options options;
-    if (QString problem = chooseSimulator(parser, options); !problem.isEmpty())
+    SimCommandLine options;
+    if (QString problem = readSharedSimOptions(parser, options); !problem.isEmpty())
         return fail(problem);
-    if (QString problem = readSharedOptions(parser, options); !problem.isEmpty())
+    if (parser.isSet(QStringLiteral("machine"))) return serveMachine(app, parser, options);
+    const SimulatorInfo* simulator = nullptr;
+    if (QString problem = chooseSimulator(parser, options, &simulator); !problem.isEmpty())
         return fail(problem);
-    Result<SimulatedLine> made = options.simulator->fromOptions(parser, options.shared);
+    Result<SimulatedLine> made = simulator->fromOptions(parser, options.shared);
     if (!made) return fail(made.error().message);
     SimulatedLine& line = made.value();
-    QLoggingCategory::setFilterRules(
-        options.verbose
-            ? QStringLiteral("cambench.comm.sim.debug=true")
-            : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
+    quietUnless(options.verbose);
 
     SignalQuitter quitter;
     if (!quitter.isValid()) return fail(QStringLiteral("cannot watch for SIGTERM/SIGINT."));

@@ -75,8 +75,16 @@ Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
                                                     const QString& protocol) {
     const SimulatorInfo* simulator = SimulatorRegistry::instance().forProtocol(protocol);
     if (!simulator) return Error::usage(QStringLiteral("no simulator is built into this CamBench"));
-    Result<SimulatedLine> line = simulator->fromPort(port, serial, protocol);
+    // The shaft keys are the host's; the family reads the rest.
+    const Result<SimPortWithShaft> split = takeSimShaftKeys(port);
+    if (!split) return split.error();
+    Result<SimulatedLine> line = simulator->fromPort(split->port, serial, protocol);
     if (!line) return line.error();
+    if (split->seat) {
+        const QString who = QStringLiteral("Simulator port \"%1\"").arg(port);
+        if (const Status seated = seatOnShaft(line->shaft, *split->seat, who); !seated)
+            return seated.error();
+    }
     return std::unique_ptr<Transport>(std::make_unique<SimTransport>(std::move(line).value()));
 }
 

@@ -3,6 +3,7 @@
 #include "sim_endpoint.h"
 #include "sim_faults.h"
 #include "sim_pacer.h"
+#include "sim_shaft.h"
 
 #include "comm/device/id_registry.h"
 #include "comm/transport/transport.h"
@@ -25,6 +26,8 @@ struct SimulatedLine {
     std::unique_ptr<SimEndpoint> endpoint;
     SimPacer pacer;
     QString description;
+    // Whether and how its device drives or follows a shaft (sim_shaft.h).
+    SimShaftPlug shaft{};
 };
 
 // What cambench-sim reads for every family: the protocol asked for (empty:

@@ -16,6 +16,8 @@ target_sources(cambench_sim PRIVATE
   sim_pty_server.h
   sim_reply_scheduler.cpp
   sim_reply_scheduler.h
+  sim_shaft.cpp
+  sim_shaft.h
   sim_tcp_server.cpp
   sim_tcp_server.h
   sim_transport.cpp

@@ -16,10 +16,8 @@ Error refused(const QString& where, const QString& what) {
     return Error::invalidData(QStringLiteral("Machine file %1: %2").arg(where, what));
 }
 
-// "device 2 (feed)" or "device 2" while its name is not known yet.
 QString deviceLabel(int index, const QString& name) {
-    return name.isEmpty() ? QStringLiteral("device %1").arg(index + 1)
-                          : QStringLiteral("device %1 (%2)").arg(index + 1).arg(name);
+    return machineDeviceLabel(index, name);
 }
 
 // Text, or a whole number written as text; empty with `ok` false otherwise.
@@ -76,7 +74,57 @@ Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QStr
     return device;
 }
 
+// "shaft": {"from", "to", "axis", "per-turn"} into `machine`.
+Status parseShaft(const QJsonValue& value, MachineFile& machine, const QString& where) {
+    const QJsonObject shaft = value.toObject();
+    if (!shaft.contains(QStringLiteral("from")) || !shaft.contains(QStringLiteral("to")))
+        return refused(where, QStringLiteral("the shaft is {\"from\": DEVICE, \"to\": DEVICE}: "
+                                             "the device whose axis drives it and the one that "
+                                             "follows."));
+    for (auto it = shaft.begin(); it != shaft.end(); ++it) {
+        static const QStringList keys{QStringLiteral("from"), QStringLiteral("to"),
+                                      QStringLiteral("axis"), QStringLiteral("per-turn")};
+        if (!keys.contains(it.key()))
+            return refused(where, QStringLiteral("the shaft has an unknown key \"%1\"; its keys "
+                                                 "are from, to, axis and per-turn.")
+                                      .arg(it.key()));
+    }
+    machine.shaftFrom = shaft.value(QStringLiteral("from")).toString();
+    machine.shaftTo = shaft.value(QStringLiteral("to")).toString();
+    for (const QString& end : {machine.shaftFrom, machine.shaftTo})
+        if (!machine.device(end))
+            return refused(where, QStringLiteral("the shaft's \"from\" and \"to\" must name "
+                                                 "devices of the file (not \"%1\").")
+                                      .arg(end));
+    if (machine.shaftFrom == machine.shaftTo)
+        return refused(where, QStringLiteral("the shaft runs from \"%1\" to itself; \"to\" "
+                                             "names the device that follows.")
+                                  .arg(machine.shaftFrom));
+    if (shaft.contains(QStringLiteral("axis"))) {
+        const double axis = shaft.value(QStringLiteral("axis")).toDouble(-1);
+        if (axis < 1 || axis > 64 || std::floor(axis) != axis)
+            return refused(where, QStringLiteral("the shaft's \"axis\" is the driving axis of "
+                                                 "\"%1\": a whole number 1, 2, ...")
+                                      .arg(machine.shaftFrom));
+        machine.shaftAxis = int(axis);
+    }
+    if (shaft.contains(QStringLiteral("per-turn"))) {
+        const double perTurn = shaft.value(QStringLiteral("per-turn")).toDouble(-1);
+        if (!(perTurn > 0) || !std::isfinite(perTurn))
+            return refused(where, QStringLiteral("the shaft's \"per-turn\" is how many units of "
+                                                 "\"%1\" turn \"%2\" once: a number above 0.")
+                                      .arg(machine.shaftFrom, machine.shaftTo));
+        machine.shaftPerTurn = perTurn;
+    }
+    return success();
+}
+
 }  // namespace
+
+QString machineDeviceLabel(int index, const QString& name) {
+    return name.isEmpty() ? QStringLiteral("device %1").arg(index + 1)
+                          : QStringLiteral("device %1 (%2)").arg(index + 1).arg(name);
+}
 
 QString MachineDevice::option(const QString& key) const {
     for (const auto& [name, value] : options)
@@ -137,16 +185,10 @@ Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& whe
         names.insert(device->name);
         machine.devices << *device;
     }
-    if (root.contains(QStringLiteral("shaft"))) {
-        const QJsonObject shaft = root.value(QStringLiteral("shaft")).toObject();
-        machine.shaftFrom = shaft.value(QStringLiteral("from")).toString();
-        machine.shaftTo = shaft.value(QStringLiteral("to")).toString();
-        for (const QString& end : {machine.shaftFrom, machine.shaftTo})
-            if (!machine.device(end))
-                return refused(where, QStringLiteral("the shaft's \"from\" and \"to\" must name "
-                                                     "devices of the file (not \"%1\").")
-                                          .arg(end));
-    }
+    if (root.contains(QStringLiteral("shaft")))
+        if (const Status shaft = parseShaft(root.value(QStringLiteral("shaft")), machine, where);
+            !shaft)
+            return shaft.error();
     return machine;
 }
 

@@ -8,6 +8,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
+
 namespace cambench {
 
 // One device of a machine: its name, its family and how to reach it, in
@@ -28,15 +30,23 @@ struct MachineDevice {
 //   {"machine": "Press 7", "devices": [{"name": "cams", "family": ...,
 //    "port": "/dev/ttyUSB0", "protocol": ...}, ...]}
 // Optionally "shaft": {"from": DEVICE, "to": DEVICE} for the simulated
-// machine (the CamCon's position follows a drive's).
+// machine (the CamCon's position follows a drive's), with "axis": N (the
+// driving device's axis, 1-based; default 1) and "per-turn": U (the
+// driving axis's units per turn of the follower; default the simulator's,
+// 360).
 struct MachineFile {
     QString machine;
     QList<MachineDevice> devices;
     QString shaftFrom;
     QString shaftTo;
+    std::optional<int> shaftAxis;
+    std::optional<double> shaftPerTurn;
 
     const MachineDevice* device(const QString& name) const;
 };
+
+// "device 2 (feed)": how messages name the device at `index` (0-based).
+QString machineDeviceLabel(int index, const QString& name);
 
 // The option names a device may carry besides "name" and "family".
 QStringList machineDeviceKeys();

@@ -51,8 +51,12 @@ void SimProcess::stop() {
 }
 
 CliRun runCli(const QStringList& args, int timeoutMs) {
+    return runProgram(QStringLiteral(CAMBENCH_CLI_EXE), args, timeoutMs);
+}
+
+CliRun runProgram(const QString& program, const QStringList& args, int timeoutMs) {
     QProcess process;
-    process.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+    process.setProgram(program);
     process.setArguments(args);
     endWithThisTest(process);
     process.start();

@@ -36,6 +36,10 @@ cambench_add_e2e_test(tst_e2e_recovery e2e/tst_e2e_recovery.cpp)
 cambench_add_e2e_test(tst_e2e_short e2e/tst_e2e_short.cpp)
 cambench_add_e2e_test(tst_e2e_diff e2e/tst_e2e_diff.cpp)
 cambench_add_e2e_test(tst_e2e_machine e2e/tst_e2e_machine.cpp)
+# cambench-sim --machine: every device of a machine file, and its shaft.
+cambench_add_e2e_test(tst_e2e_sim_machine e2e/tst_e2e_sim_machine.cpp)
+target_compile_definitions(tst_e2e_sim_machine PRIVATE
+  CAMBENCH_DEMO_MACHINE="${PROJECT_SOURCE_DIR}/docs/demo-machine.json")
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
 # A test that dies (aborted, killed) takes its simulator with it.
 cambench_add_e2e_test(tst_e2e_cleanup e2e/tst_e2e_cleanup.cpp)

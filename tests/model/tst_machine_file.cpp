@@ -42,6 +42,20 @@ private Q_SLOTS:
                      {"--family", "compax3", "--address", "3", "--port", "tcp://press7-ds:4001"}));
         QCOMPARE(machine->shaftFrom, QStringLiteral("feed"));
         QCOMPARE(machine->shaftTo, QStringLiteral("cams"));
+        QVERIFY(!machine->shaftAxis && !machine->shaftPerTurn);  // the simulator's defaults
+    }
+
+    // The shaft's driving axis and its units per turn of the follower.
+    void aShaftWithItsAxisAndUnitsPerTurn() {
+        const QByteArray text = json(
+            "{'machine': 'P', 'devices': ["
+            "{'name': 'cams', 'family': 'camcon', 'port': 'sim'},"
+            "{'name': 'plc', 'family': 'mc1', 'port': 'sim'}],"
+            "'shaft': {'from': 'plc', 'to': 'cams', 'axis': 2, 'per-turn': 1000.5}}");
+        const Result<MachineFile> machine = parseMachineFile(text, QStringLiteral("m.json"));
+        QVERIFY2(machine.ok(), qPrintable(machine.error().message));
+        QCOMPARE(machine->shaftAxis.value_or(0), 2);
+        QCOMPARE(machine->shaftPerTurn.value_or(0), 1000.5);
     }
 
     void refusedNamingTheDevice_data() {
@@ -70,6 +84,22 @@ private Q_SLOTS:
             << QByteArray(json("{'machine': 'P', 'devices': [") + ok +
                           json("], 'shaft': {'from': 'feed', 'to': 'cams'}}"))
             << "(not \"feed\")";
+        const QByteArray two = json("{'machine': 'P', 'devices': [") + ok +
+                               json(", {'name': 'feed', 'family': 'compax3', 'port': 'sim'}], ");
+        QTest::newRow("shaft to itself")
+            << QByteArray(two + json("'shaft': {'from': 'feed', 'to': 'feed'}}"))
+            << "runs from \"feed\" to itself";
+        QTest::newRow("shaft not an object")
+            << QByteArray(two + json("'shaft': 'feed'}")) << "the shaft is {\"from\": DEVICE";
+        QTest::newRow("shaft key")
+            << QByteArray(two + json("'shaft': {'from': 'feed', 'to': 'cams', 'ratio': 2}}"))
+            << "the shaft has an unknown key \"ratio\"";
+        QTest::newRow("shaft axis")
+            << QByteArray(two + json("'shaft': {'from': 'feed', 'to': 'cams', 'axis': 0}}"))
+            << "the driving axis of \"feed\"";
+        QTest::newRow("shaft per turn")
+            << QByteArray(two + json("'shaft': {'from': 'feed', 'to': 'cams', 'per-turn': -5}}"))
+            << "how many units of \"feed\" turn \"cams\" once";
         QTest::newRow("no devices")
             << QByteArray(json("{'machine': 'P', 'devices': []}")) << "no \"devices\"";
         QTest::newRow("not json") << QByteArray("{\"machine\": ") << "not JSON at byte";

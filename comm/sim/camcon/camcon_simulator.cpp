@@ -1,6 +1,7 @@
 #include "camcon_simulator.h"
 
 #include "sim_demo.h"
+#include "sim_device.h"
 #include "sim_line.h"
 
 #include "comm/sim/sim_transport.h"
@@ -36,8 +37,9 @@ Result<SimPortConfig> configForPort(const QString& port, const SerialSettings& s
 
 QList<QCommandLineOption> camConOptions() {
     return {
-        {QStringLiteral("devices"), QStringLiteral("Device numbers 0..63, e.g. 0,5 (default 0)."),
-         QStringLiteral("list")},
+        // --device: the command line's name (a machine file's "device").
+        {QStringList{QStringLiteral("devices"), QStringLiteral("device")},
+         QStringLiteral("Device numbers 0..63, e.g. 0,5 (default 0)."), QStringLiteral("list")},
         {QStringLiteral("baud"),
          QStringLiteral("Baud rate for the timing (default 9600, Multiuser and 3964r-e38 "
                         "38400)."),
@@ -216,8 +218,21 @@ Result<SimulatedLine> fromOptions(const QCommandLineParser& parser, const SimHos
 }  // namespace
 
 SimulatedLine camConSimulatedLine(const SimPortConfig& config) {
-    return {makeSimEndpoint(config), SimPacer(config.baud, config.throttle, config.bitsPerByte()),
-            describe(config)};
+    std::unique_ptr<SimCamConEndpoint> endpoint = makeSimEndpoint(config);
+    SimCamConEndpoint* devices = endpoint.get();
+    SimulatedLine line{std::move(endpoint),
+                       SimPacer(config.baud, config.throttle, config.bitsPerByte()),
+                       describe(config),
+                       {}};
+    // On a simulated machine the position of every CamCon of the line
+    // follows the machine's shaft (issue 30).
+    line.shaft.follow = [devices, numbers = config.devices](const std::shared_ptr<SimShaft>& shaft,
+                                                            double perTurn) -> Status {
+        for (int number : numbers)
+            if (SimDevice* device = devices->device(number)) device->axis().follow(shaft, perTurn);
+        return success();
+    };
+    return line;
 }
 
 Result<std::unique_ptr<Transport>> makeCamConSimTransport(const QString& port,

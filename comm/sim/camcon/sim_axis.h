@@ -1,14 +1,17 @@
 #pragma once
 
+#include "comm/sim/sim_shaft.h"
+
 #include <QElapsedTimer>
 
 #include <functional>
+#include <memory>
 
 namespace cambench::comm {
 
 // The simulated rotary axis: the actual value advances with time at a fixed
 // speed and wraps from the maximum to the minimum. Stopped while the device
-// is erased.
+// is erased. On a simulated machine's shaft it turns with the shaft instead.
 class SimAxis {
 public:
     using Clock = std::function<qint64()>;  // milliseconds, monotonic
@@ -21,11 +24,16 @@ public:
     qint32 position() const;
     // Revolutions per minute, for the formatted speed display.
     double rpm() const;
-    double unitsPerSecond() const { return m_running ? m_unitsPerSecond : 0.0; }
+    double unitsPerSecond() const;
 
     bool running() const { return m_running; }
     void setRunning(bool running);
     void setPosition(qint32 position);
+
+    // From now on the position follows `shaft` (its own motion yields):
+    // `perTurn` shaft units turn it once through min..max, shaft position 0
+    // being the minimum; a standing shaft holds it.
+    void follow(std::shared_ptr<const SimShaft> shaft, double perTurn);
 
 private:
     qint64 now() const { return m_clock ? m_clock() : m_timer.elapsed(); }
@@ -39,6 +47,8 @@ private:
     QElapsedTimer m_timer;
     qint64 m_baseMs = 0;
     qint32 m_basePosition;
+    std::shared_ptr<const SimShaft> m_shaft;
+    double m_perTurn = kSimShaftPerTurn;
 };
 
 }  // namespace cambench::comm

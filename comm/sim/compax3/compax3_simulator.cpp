@@ -34,14 +34,28 @@ SimulatedLine lineFor(const DriveOptions& options, const SimHostOptions& shared)
     for (const Compax3ObjectId& id : options.lacks) drive.removeObject(id);
     for (const Compax3ObjectId& id : options.refuses) drive.refuseReads(id);
     auto line = std::make_unique<SimCompax3Line>(options.address, std::move(drive), shared.faults);
+    SimCompax3Line* drivesShaft = line.get();
     const QString where = options.address < 0
                               ? QStringLiteral("RS232")
                               : QStringLiteral("RS485 address %1").arg(options.address);
-    return {std::move(line), SimPacer(options.baud, shared.throttle, 10),
-            QStringLiteral("simulator (Compax3 %1, %2, %3 baud%4)")
-                .arg(options.type, where)
-                .arg(options.baud)
-                .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled"))};
+    SimulatedLine simulated{std::move(line),
+                            SimPacer(options.baud, shared.throttle, 10),
+                            QStringLiteral("simulator (Compax3 %1, %2, %3 baud%4)")
+                                .arg(options.type, where)
+                                .arg(options.baud)
+                                .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled")),
+                            {}};
+    // On a simulated machine its one axis drives the shaft (issue 30).
+    simulated.shaft.drive = [drivesShaft](const std::shared_ptr<SimShaft>& shaft,
+                                          int axis) -> Status {
+        if (axis != 1)
+            return Error::usage(
+                QStringLiteral("a Compax3 has one axis; the shaft's axis must be 1, not %1")
+                    .arg(axis));
+        drivesShaft->driveShaft(shaft);
+        return success();
+    };
+    return simulated;
 }
 
 }  // namespace

@@ -82,6 +82,13 @@ void SimCompax3Drive::advance(qint64 nowMs) {
     }
 }
 
+SimShaftMotion SimCompax3Drive::motion() const {
+    if (m_jog != 0)
+        return {m_position, m_jog * kJogVelocity, std::copysign(kEndLimit, double(m_jog))};
+    if (m_moving) return {m_position, m_target >= m_position ? m_velocity : -m_velocity, m_target};
+    return {m_position, 0.0, std::nullopt};
+}
+
 quint16 SimCompax3Drive::statusWord() const {
     quint16 word = 0x05;  // inputs I0 and I2
     if (m_error == 1) word |= 0x0100;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "comm/sim/sim_shaft.h"
 #include "model/compax3/compax3_dictionary.h"
 
 #include <QByteArray>
@@ -30,6 +31,9 @@ public:
     void setValue(const Compax3ObjectId& id, const QString& value) { m_values.insert(id, value); }
     double position() const { return m_position; }
     bool moving() const { return m_moving || m_jog != 0; }
+    // How the axis moves as of the last request (a simulated machine's
+    // shaft follows it between requests).
+    SimShaftMotion motion() const;
     QString infoString() const;
     // A fault the drive reports in 550.1 (and clears on acknowledge).
     void raiseError(int code) { m_error = code; }

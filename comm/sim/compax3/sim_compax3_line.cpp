@@ -10,6 +10,11 @@ QString SimCompax3Line::protocolName() const {
                          : QStringLiteral("Compax3 RS485 address %1").arg(m_address);
 }
 
+void SimCompax3Line::driveShaft(std::shared_ptr<SimShaft> shaft) {
+    m_shaft = std::make_unique<SimShaftDriver>(std::move(shaft));
+    m_shaft->publish(m_drive.motion());
+}
+
 QList<SimOutput> SimCompax3Line::receive(QByteArrayView bytes, qint64 nowMs) {
     QList<SimOutput> out;
     m_pending.append(bytes.toByteArray());
@@ -25,6 +30,7 @@ QList<SimOutput> SimCompax3Line::receive(QByteArrayView bytes, qint64 nowMs) {
         }
         if (m_faults.settings().dead || m_faults.ignoresRequest()) continue;
         QByteArray reply = m_drive.answer(command, nowMs);
+        if (m_shaft) m_shaft->publish(m_drive.motion());
         if (m_address >= 0) reply.prepend(kCompax3Rs485Mark);
         if (std::optional<SimOutput> sent =
                 m_faults.apply(SimOutput{reply + kCompax3End, 1}, command))

@@ -5,6 +5,8 @@
 #include "comm/sim/sim_endpoint.h"
 #include "comm/sim/sim_faults.h"
 
+#include <memory>
+
 namespace cambench::comm {
 
 // A Compax3 on its line: RS232 (no address: every line is for it) or RS485
@@ -17,6 +19,8 @@ public:
         : m_address(address), m_drive(std::move(drive)), m_faults(faults) {}
 
     SimCompax3Drive& drive() { return m_drive; }
+    // A simulated machine: the drive's axis drives `shaft` from now on.
+    void driveShaft(std::shared_ptr<SimShaft> shaft);
     QList<SimOutput> receive(QByteArrayView bytes, qint64 nowMs) override;
     QString protocolName() const override;
 
@@ -25,6 +29,7 @@ private:
     SimCompax3Drive m_drive;
     SimFaults m_faults;
     QByteArray m_pending;
+    std::unique_ptr<SimShaftDriver> m_shaft;
 };
 
 }  // namespace cambench::comm

@@ -103,13 +103,19 @@ SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOption
         line->controller().setAxisParameters(mc1AxisParametersFrom(
             *axes.parameterBase, QStringLiteral("the simulated controller's own")));
     addDemoState(line->controller());
+    SimMc1Line* drivesShaft = line.get();
     const QString description =
         QStringLiteral("simulator (%1, %2 baud%3)")
             .arg(mc1VariantName(variant))
             .arg(baud)
             .arg(shared.throttle ? QString() : QStringLiteral(", unthrottled"))
             .append(syncMs ? QStringLiteral(", 0xFF every %1 ms").arg(syncMs) : QString());
-    return {std::move(line), SimPacer(baud, shared.throttle, 10), description};
+    SimulatedLine simulated{std::move(line), SimPacer(baud, shared.throttle, 10), description, {}};
+    // On a simulated machine one of its axes drives the shaft (issue 30).
+    simulated.shaft.drive = [drivesShaft](const std::shared_ptr<SimShaft>& shaft, int axis) {
+        return drivesShaft->driveShaft(shaft, axis);
+    };
+    return simulated;
 }
 
 void registerMc1Simulator(SimulatorRegistry& registry) {
@@ -187,7 +193,8 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
         Mc1Variant variant = kDefaultVariant;
         if (parser.isSet(QStringLiteral("variant"))) {
             const Result<Mc1Variant> parsed = variantFrom(parser.value(QStringLiteral("variant")));
-            if (!parsed) return Error::usage(QStringLiteral("--%1").arg(parsed.error().message));
+            if (!parsed)
+                return Error::usage(QStringLiteral("--variant: %1").arg(parsed.error().message));
             variant = *parsed;
         }
         int baud = kDefaultBaud;

@@ -335,6 +335,14 @@ qint32 SimMc1Controller::axisPosition(int logical, qint64 nowMs) const {
     return qint32(std::lround(a.from + (distance > 0 ? travelled : -travelled)));
 }
 
+SimShaftMotion SimMc1Controller::axisMotion(int logical, qint64 nowMs) const {
+    const Axis& a = m_axes.at(logical - 1);
+    const double here = axisPosition(logical, nowMs);
+    if (a.continuous) return {here, a.direction * a.speed, std::nullopt};
+    if (!axisMoving(logical, nowMs)) return {here, 0.0, std::nullopt};
+    return {here, a.target >= here ? a.speed : -a.speed, a.target};
+}
+
 bool SimMc1Controller::axisMoving(int logical, qint64 nowMs) const {
     const Axis& a = m_axes.at(logical - 1);
     return a.continuous || axisPosition(logical, nowMs) != qint32(std::lround(a.target));

@@ -3,6 +3,7 @@
 #include "comm/mc1/mc1_address.h"
 #include "comm/mc1/mc1_parameters.h"
 #include "comm/mc1/mc1_variant.h"
+#include "comm/sim/sim_shaft.h"
 
 #include <QByteArray>
 #include <QList>
@@ -52,6 +53,9 @@ public:
     quint16 programCounter(qint64 nowMs) const;
     qint32 axisPosition(int axis, qint64 nowMs) const;
     bool axisMoving(int axis, qint64 nowMs) const;
+    // How logical axis `axis` moves at `nowMs` (a simulated machine's shaft
+    // follows it between telegrams).
+    SimShaftMotion axisMotion(int axis, qint64 nowMs) const;
 
 private:
     struct Axis {

@@ -2,6 +2,8 @@
 
 #include "comm/mc1/mc1_telegram.h"
 
+#include <QStringList>
+
 namespace cambench::comm {
 
 namespace {
@@ -18,6 +20,21 @@ qint64 SimMc1Line::nextTimerMs() const {
     if (m_syncPeriod > 0)
         next = next < 0 ? std::max<qint64>(0, m_nextSync) : std::min(next, m_nextSync);
     return next;
+}
+
+Status SimMc1Line::driveShaft(std::shared_ptr<SimShaft> shaft, int axis) {
+    if (!m_controller.axes().contains(axis)) {
+        QStringList axes;
+        for (int present : m_controller.axes()) axes << QString::number(present);
+        return Error::usage(QStringLiteral("the simulated MC-1 has no axis %1 to drive the shaft "
+                                           "(its axes: %2)")
+                                .arg(axis)
+                                .arg(axes.join(QLatin1String(", "))));
+    }
+    m_shaftAxis = axis;
+    m_shaft = std::make_unique<SimShaftDriver>(std::move(shaft));
+    m_shaft->publish(m_controller.axisMotion(axis, 0));
+    return success();
 }
 
 QList<SimOutput> SimMc1Line::receive(QByteArrayView bytes, qint64 nowMs) {
@@ -44,6 +61,7 @@ QList<SimOutput> SimMc1Line::receive(QByteArrayView bytes, qint64 nowMs) {
         m_pending.remove(0, length);
         if (m_faults.settings().dead || m_faults.ignoresRequest()) continue;
         const QByteArray answer = m_controller.handle(telegram, nowMs);
+        if (m_shaft) m_shaft->publish(m_controller.axisMotion(m_shaftAxis, nowMs));
         if (answer.isEmpty()) continue;
         if (std::optional<SimOutput> sent = m_faults.apply(SimOutput{answer, 0}, telegram))
             out << *sent;

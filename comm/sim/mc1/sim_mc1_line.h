@@ -5,6 +5,8 @@
 #include "comm/sim/sim_endpoint.h"
 #include "comm/sim/sim_faults.h"
 
+#include <memory>
+
 namespace cambench::comm {
 
 // One simulated MC100/MC200 on its RS232 line: bytes collect until a whole
@@ -19,6 +21,9 @@ public:
         : m_controller(variant), m_faults(faults) {}
 
     SimMc1Controller& controller() { return m_controller; }
+    // A simulated machine: logical axis `axis` drives `shaft` from now on;
+    // a Usage error when the controller lacks it.
+    Status driveShaft(std::shared_ptr<SimShaft> shaft, int axis);
     const SimFaults& faults() const { return m_faults; }
     // An MC100MA single-FIFO card: 0xFF every `periodMs` (5 or 10; 0 off),
     // and a telegram is taken only when its first byte comes within 2 or
@@ -40,6 +45,8 @@ private:
     qint64 m_lastSync = -1;
     bool m_windowOpen = false;
     int m_outsideWindow = 0;
+    std::unique_ptr<SimShaftDriver> m_shaft;
+    int m_shaftAxis = 1;
 };
 
 }  // namespace cambench::comm
