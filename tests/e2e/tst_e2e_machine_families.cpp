@@ -1,0 +1,178 @@
+// Issue 30, items 3 and 6: a machine of three families on three
+// pseudo-terminals - a CamCon, an MC200 (mc200v2) and a Compax3, each a real
+// cambench-sim - backed up, verified and restored by `cambench-cli machine`,
+// which takes devices on different ports at once. Each device's lines come
+// whole and in the file's order; one value changed on each device behind
+// CamBench's back makes verify exit 1 naming all three; a drive that refuses
+// one object midway its backup leaves the others saved, and --resume then
+// asks only that drive (the CamCon's simulator logs every request: none).
+#include "e2e_support.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+using namespace cambench::e2e;
+
+namespace {
+
+// JSON written with ' for " (readable here; moc skips a file with raw strings).
+QByteArray json(const char* text) {
+    return QByteArray(text).replace('\'', '"');
+}
+
+QByteArray machineFile(const QString& cams, const QString& plc, const QString& feed) {
+    return QString::fromUtf8(
+               json("{'machine': 'Press 7', 'devices': ["
+                    " {'name': 'cams', 'family': 'camcon', 'port': '%1', 'baud': 115200},"
+                    " {'name': 'plc', 'family': 'mc1', 'port': '%2', 'protocol': 'mc1',"
+                    "  'variant': 'mc200v2', 'baud': 115200},"
+                    " {'name': 'feed', 'family': 'compax3', 'port': '%3', 'baud': 115200}]}"))
+        .arg(cams, plc, feed)
+        .toUtf8();
+}
+
+QJsonArray manifestDevices(const QString& dir) {
+    return QJsonDocument::fromJson(readBytes(dir + QStringLiteral("/manifest.json")))
+        .object()
+        .value(QStringLiteral("devices"))
+        .toArray();
+}
+
+QJsonObject entryOf(const QJsonArray& devices, const QString& name) {
+    for (const QJsonValue& value : devices)
+        if (value.toObject().value(QStringLiteral("name")).toString() == name)
+            return value.toObject();
+    return {};
+}
+
+// Requests the CamCon simulator logged (--verbose: one "<-" line each).
+int camconRequests(const SimSession& session) {
+    return int(readBytes(session.path(QStringLiteral("sim-stderr.log"))).count("<-"));
+}
+
+// Each device's block starts with "== NAME": the blocks in the file's order.
+bool inFileOrder(const QString& out, const QStringList& names) {
+    qsizetype last = -1;
+    for (const QString& name : names) {
+        const qsizetype at = out.indexOf(QStringLiteral("== %1").arg(name));
+        if (at <= last) return false;
+        last = at;
+    }
+    return true;
+}
+
+}  // namespace
+
+class TestE2eMachineFamilies : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void threeFamiliesBackupVerifyRestore() {
+        SimSession cams;
+        START_SIM(cams, {"--eprom", "03.05.2001", "--outputs", "16"});
+        SimSession plc(QStringLiteral("mc1"));
+        START_SIM(plc, {"--variant", "mc200v2"});
+        SimSession feed(QStringLiteral("compax3"));
+        START_SIM(feed, {"--drive-type", "S150V4"});
+        const QString file = cams.path(QStringLiteral("press7.json"));
+        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        const QString dir = cams.path(QStringLiteral("press7-backup"));
+
+        const CliRun status = runCli({"machine", "status", file});
+        VERIFY_EXIT(status, 0);
+        const QStringList lines = status.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 4);
+        QVERIFY2(lines.at(1).startsWith(QStringLiteral("cams\tcamcon\t")) &&
+                     lines.at(1).contains(QLatin1String("03.05.2001")),
+                 qPrintable(status.out));
+        QVERIFY2(lines.at(2).startsWith(QStringLiteral("plc\tmc1\t")) &&
+                     lines.at(2).contains(QLatin1String("MC200")),
+                 qPrintable(status.out));
+        QVERIFY2(lines.at(3).startsWith(QStringLiteral("feed\tcompax3\t")) &&
+                     lines.at(3).contains(QLatin1String("S150V4")),
+                 qPrintable(status.out));
+
+        const CliRun backup = runCli({"machine", "backup", file, "-o", dir});
+        VERIFY_EXIT(backup, 0);
+        QVERIFY2(backup.out.contains(QLatin1String("3 of 3 devices saved")),
+                 describe(backup).constData());
+        QVERIFY2(inFileOrder(backup.out, {"cams", "plc", "feed"}), qPrintable(backup.out));
+        const QJsonArray saved = manifestDevices(dir);
+        QCOMPARE(saved.size(), 3);
+        for (const QJsonValue& entry : saved)
+            QCOMPARE(entry.toObject().value("result").toString(), QStringLiteral("saved"));
+        VERIFY_EXIT(runCli({"machine", "verify", dir}), 0);
+
+        // One value on each device changes behind CamBench's back.
+        const QString one = cams.path(QStringLiteral("one.csv"));
+        QVERIFY(writeBytes(one, "output,cam,on,off\n1,1,100,120\n"));
+        VERIFY_EXIT(cams.cli({"cams", "write", "--program", "0", one}), 0);
+        VERIFY_EXIT(plc.cli({"mc", "var", "write", "12", "77"}), 0);
+        VERIFY_EXIT(feed.cli({"c3", "write", "1901.1=12.5"}), 0);
+        const CliRun differs = runCli({"machine", "verify", dir});
+        VERIFY_EXIT(differs, 1);
+        QVERIFY2(differs.out.contains(QLatin1String("cams: DIFFERS\nplc: DIFFERS\nfeed: DIFFERS")),
+                 qPrintable(differs.out));
+        QVERIFY2(inFileOrder(differs.out, {"cams", "plc", "feed"}), qPrintable(differs.out));
+
+        const CliRun restore = runCli({"machine", "restore", dir});
+        VERIFY_EXIT(restore, 0);
+        QVERIFY2(
+            restore.out.contains(QLatin1String("cams: restored\nplc: restored\nfeed: restored")),
+            qPrintable(restore.out));
+        const CliRun equal = runCli({"machine", "verify", dir});
+        VERIFY_EXIT(equal, 0);
+        QVERIFY2(equal.out.contains(QLatin1String("cams: equal\nplc: equal\nfeed: equal")),
+                 qPrintable(equal.out));
+    }
+
+    // The drive refuses one object of its parameter set (!0005) midway its
+    // backup: the CamCon and the MC200 are saved all the same, the drive is
+    // named. A drive that answers then: --resume asks only it.
+    void aDeviceFailingMidwayIsTheOnlyOneResumed() {
+        SimSession cams;
+        START_SIM(cams, {"--eprom", "03.05.2001", "--verbose"});
+        SimSession plc(QStringLiteral("mc1"));
+        START_SIM(plc, {"--variant", "mc200v2"});
+        SimSession refusing(QStringLiteral("compax3"));
+        START_SIM(refusing, {"--drive-type", "S150V4", "--refuse", "1901.1"});
+        const QString file = cams.path(QStringLiteral("press7.json"));
+        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), refusing.ptyPath())));
+        const QString dir = cams.path(QStringLiteral("press7-backup"));
+
+        const CliRun failed = runCli({"machine", "backup", file, "-o", dir});
+        VERIFY_EXIT(failed, 3);
+        QVERIFY2(failed.out.contains(QLatin1String("2 of 3 devices saved")) &&
+                     failed.out.contains(QLatin1String("NOT SAVED: feed: failed: exit 1")),
+                 describe(failed).constData());
+        const QJsonArray first = manifestDevices(dir);
+        QCOMPARE(first.size(), 3);
+        QCOMPARE(entryOf(first, "cams").value("result").toString(), QStringLiteral("saved"));
+        QCOMPARE(entryOf(first, "plc").value("result").toString(), QStringLiteral("saved"));
+        QVERIFY(entryOf(first, "feed").value("result").toString().startsWith("failed"));
+        const int camsAsked = camconRequests(cams);
+        QVERIFY(camsAsked > 0);
+
+        SimSession feed(QStringLiteral("compax3"));
+        START_SIM(feed, {"--drive-type", "S150V4"});
+        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        const CliRun resumed = runCli({"machine", "backup", file, "-o", dir, "--resume"});
+        VERIFY_EXIT(resumed, 0);
+        QVERIFY2(resumed.out.contains(QLatin1String("== cams: kept from the earlier run")) &&
+                     resumed.out.contains(QLatin1String("== plc: kept from the earlier run")) &&
+                     resumed.out.contains(QLatin1String("== feed (compax3")) &&
+                     resumed.out.contains(QLatin1String("3 of 3 devices saved")),
+                 describe(resumed).constData());
+        QCOMPARE(camconRequests(cams), camsAsked);  // the CamCon was not asked again
+        const QJsonArray second = manifestDevices(dir);
+        QCOMPARE(second.size(), 3);
+        for (const char* kept : {"cams", "plc"})  // the earlier run's entries, as they were
+            QCOMPARE(entryOf(second, kept), entryOf(first, kept));
+        QCOMPARE(entryOf(second, "feed").value("result").toString(), QStringLiteral("saved"));
+        VERIFY_EXIT(runCli({"machine", "verify", dir}), 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestE2eMachineFamilies)
+#include "tst_e2e_machine_families.moc"
