@@ -17,20 +17,17 @@ using namespace cambench::e2e;
 
 namespace {
 
-// JSON written with ' for " (readable here; moc skips a file with raw strings).
-QByteArray json(const char* text) {
-    return QByteArray(text).replace('\'', '"');
+QJsonObject deviceAt(const QString& name, const QString& family, const QString& port) {
+    return {{"name", name}, {"family", family}, {"port", port}, {"baud", 115200}};
 }
 
 QByteArray machineFile(const QString& cams, const QString& plc, const QString& feed) {
-    return QString::fromUtf8(
-               json("{'machine': 'Press 7', 'devices': ["
-                    " {'name': 'cams', 'family': 'camcon', 'port': '%1', 'baud': 115200},"
-                    " {'name': 'plc', 'family': 'mc1', 'port': '%2', 'protocol': 'mc1',"
-                    "  'variant': 'mc200v2', 'baud': 115200},"
-                    " {'name': 'feed', 'family': 'compax3', 'port': '%3', 'baud': 115200}]}"))
-        .arg(cams, plc, feed)
-        .toUtf8();
+    QJsonObject mc200 = deviceAt("plc", "mc1", plc);
+    mc200.insert("protocol", "mc1");
+    mc200.insert("variant", "mc200v2");
+    const QJsonArray devices{deviceAt("cams", "camcon", cams), mc200,
+                             deviceAt("feed", "compax3", feed)};
+    return QJsonDocument(QJsonObject{{"machine", "Press 7"}, {"devices", devices}}).toJson();
 }
 
 QJsonArray manifestDevices(const QString& dir) {
@@ -67,14 +64,23 @@ bool inFileOrder(const QString& out, const QStringList& names) {
 
 class TestE2eMachineFamilies : public QObject {
     Q_OBJECT
+
+    // The press: a CamCon (EPROM 03.05.2001), an MC200 V2 and a Compax3
+    // S150V4, each with `camsArgs` / `feedArgs` added.
+    static void startPress(SimSession& cams, SimSession& plc, SimSession& feed,
+                           const QStringList& camsArgs, const QStringList& feedArgs) {
+        START_SIM(cams, QStringList{"--eprom", "03.05.2001"} + camsArgs);
+        START_SIM(plc, {"--variant", "mc200v2"});
+        START_SIM(feed, QStringList{"--drive-type", "S150V4"} + feedArgs);
+    }
+
 private Q_SLOTS:
     void threeFamiliesBackupVerifyRestore() {
         SimSession cams;
-        START_SIM(cams, {"--eprom", "03.05.2001", "--outputs", "16"});
         SimSession plc(QStringLiteral("mc1"));
-        START_SIM(plc, {"--variant", "mc200v2"});
         SimSession feed(QStringLiteral("compax3"));
-        START_SIM(feed, {"--drive-type", "S150V4"});
+        startPress(cams, plc, feed, {"--outputs", "16"}, {});
+        if (QTest::currentTestFailed()) return;
         const QString file = cams.path(QStringLiteral("press7.json"));
         QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
         const QString dir = cams.path(QStringLiteral("press7-backup"));
@@ -132,11 +138,10 @@ private Q_SLOTS:
     // named. A drive that answers then: --resume asks only it.
     void aDeviceFailingMidwayIsTheOnlyOneResumed() {
         SimSession cams;
-        START_SIM(cams, {"--eprom", "03.05.2001", "--verbose"});
         SimSession plc(QStringLiteral("mc1"));
-        START_SIM(plc, {"--variant", "mc200v2"});
         SimSession refusing(QStringLiteral("compax3"));
-        START_SIM(refusing, {"--drive-type", "S150V4", "--refuse", "1901.1"});
+        startPress(cams, plc, refusing, {"--verbose"}, {"--refuse", "1901.1"});
+        if (QTest::currentTestFailed()) return;
         const QString file = cams.path(QStringLiteral("press7.json"));
         QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), refusing.ptyPath())));
         const QString dir = cams.path(QStringLiteral("press7-backup"));
