@@ -6,8 +6,11 @@
 // CamBench's back makes verify exit 1 naming all three; a drive that refuses
 // one object midway its backup leaves the others saved, and --resume then
 // asks only that drive (the CamCon's simulator logs every request: none).
+// Two names for one port (a path and a link to it) are asked one after the
+// other.
 #include "e2e_support.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -176,6 +179,35 @@ private Q_SLOTS:
             QCOMPARE(entryOf(second, kept), entryOf(first, kept));
         QCOMPARE(entryOf(second, "feed").value("result").toString(), QStringLiteral("saved"));
         VERIFY_EXIT(runCli({"machine", "verify", dir}), 0);
+    }
+
+    // Two names for one CamCon on one pty - its path and a link to it - and a
+    // drive on another: the two on the one port are asked one after the
+    // other (at once, the second open of the pty or the mixed requests
+    // would fail one of them), the drive meanwhile; all three answer.
+    void devicesSharingAPortAreAskedOneAfterTheOther() {
+        SimSession cams;
+        START_SIM(cams, {"--eprom", "03.05.2001"});
+        SimSession feed(QStringLiteral("compax3"));
+        START_SIM(feed, {"--drive-type", "S150V4"});
+        const QString link = cams.path(QStringLiteral("ttyCams"));
+        QVERIFY(QFile::link(cams.ptyPath(), link));
+        const QJsonArray devices{deviceAt("cams", "camcon", cams.ptyPath()),
+                                 deviceAt("feed", "compax3", feed.ptyPath()),
+                                 deviceAt("cams-again", "camcon", link)};
+        const QString file = cams.path(QStringLiteral("press7.json"));
+        QVERIFY(writeBytes(
+            file,
+            QJsonDocument(QJsonObject{{"machine", "Press 7"}, {"devices", devices}}).toJson()));
+
+        const CliRun status = runCli({"machine", "status", file});
+        VERIFY_EXIT(status, 0);
+        const QStringList lines = status.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 4);
+        QVERIFY2(lines.at(1).startsWith(QStringLiteral("cams\tcamcon\t")) &&
+                     lines.at(3).startsWith(QStringLiteral("cams-again\tcamcon\t") + link) &&
+                     lines.at(3).contains(QLatin1String("03.05.2001")),
+                 qPrintable(status.out));
     }
 };
 
