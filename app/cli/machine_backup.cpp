@@ -2,10 +2,10 @@
 // each device of the machine by its family's own command (the verbs each
 // family registers: the CamCon's EEPROM image, the MC-1 backup, the Compax3
 // parameter set), devices on different ports at once (machine_parallel.h),
-// each device's lines printed whole in the file's order. DIR holds the machine file as
-// given (machine.json), one file per device and manifest.json, rewritten
-// after each device: machine, and per device its name, family, identity,
-// file, SHA-256, time and result. Names no family.
+// each device's lines printed whole in the file's order. DIR holds the
+// machine file as given (machine.json), one file per device and
+// manifest.json, rewritten after each device: machine, and per device its
+// name, family, identity, file, SHA-256, time and result. Names no family.
 #include "machine_command.h"
 
 #include "cli_output.h"
@@ -182,12 +182,16 @@ int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, c
     };
     // Rewritten after each device, one at a time, with every device finished
     // so far in the file's order: an interrupted backup says what it has.
+    // Only finished devices' slots are read here: the others are still being
+    // written by their threads.
     Status manifest = success();
     QJsonArray devices;
-    const auto recordDone = [&](int) {
+    std::vector<bool> finished(size_t(all.size()), false);
+    const auto recordDone = [&](int done) {
+        finished[size_t(done)] = true;
         devices = {};
-        for (const std::optional<QJsonObject>& entry : entries)
-            if (entry) devices << *entry;
+        for (size_t i = 0; i < entries.size(); ++i)
+            if (finished[i]) devices << *entries[i];
         if (manifest) manifest = writeManifest(dir, setup.machine.machine, devices);
     };
     runDevicesByPort(setup.options, indices, backUpOrKeep, recordDone);
