@@ -6,15 +6,21 @@
 // CamBench's back makes verify exit 1 naming all three; a drive that refuses
 // one object midway its backup leaves the others saved, and --resume then
 // asks only that drive (the CamCon's simulator logs every request: none).
+// A CamCon whose simulator is killed midway is the only one resumed too.
 // Two names for one port (a path and a link to it) are asked one after the
 // other.
 #include "e2e_support.h"
 
+#include <QDeadlineTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTest>
+
+#include <sys/types.h>
+#include <csignal>
 
 using namespace cambench::e2e;
 
@@ -179,6 +185,59 @@ private Q_SLOTS:
             QCOMPARE(entryOf(second, kept), entryOf(first, kept));
         QCOMPARE(entryOf(second, "feed").value("result").toString(), QStringLiteral("saved"));
         VERIFY_EXIT(runCli({"machine", "verify", dir}), 0);
+    }
+
+    // The CamCon's simulator is killed midway its EEPROM backup (after its
+    // tenth request): the CamCon is named not saved, the MC200 and the drive
+    // are saved all the same. Another CamCon simulator then: --resume asks
+    // only it, the others' entries stay as the first run wrote them.
+    void aLineDyingMidwayLeavesTheOthersSaved() {
+        SimSession cams;
+        SimSession plc(QStringLiteral("mc1"));
+        SimSession feed(QStringLiteral("compax3"));
+        startPress(cams, plc, feed, {"--fill", "1", "--verbose"}, {});
+        if (QTest::currentTestFailed()) return;
+        const QString file = cams.path(QStringLiteral("press7.json"));
+        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        const QString dir = cams.path(QStringLiteral("press7-backup"));
+
+        QProcess backup;
+        backup.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+        backup.setArguments({"machine", "backup", file, "-o", dir});
+        endWithThisTest(backup);
+        backup.start();
+        QVERIFY(backup.waitForStarted(hangBoundMs(10000)));
+        QDeadlineTimer bound(hangBoundMs(60000));
+        while (camconRequests(cams) < 10 && backup.state() == QProcess::Running &&
+               !bound.hasExpired())
+            backup.waitForFinished(10);
+        QVERIFY2(camconRequests(cams) >= 10, "the CamCon's backup did not start");
+        QCOMPARE(::kill(pid_t(cams.simulatorPid()), SIGKILL), 0);
+        QVERIFY(backup.waitForFinished(hangBoundMs(120000)));
+        const QString out = QString::fromUtf8(backup.readAllStandardOutput());
+        QCOMPARE(backup.exitCode(), 3);
+        QVERIFY2(out.contains(QLatin1String("2 of 3 devices saved")) &&
+                     out.contains(QLatin1String("NOT SAVED: cams: failed")),
+                 qPrintable(out));
+        const QJsonArray first = manifestDevices(dir);
+        QCOMPARE(first.size(), 3);
+        QCOMPARE(entryOf(first, "plc").value("result").toString(), QStringLiteral("saved"));
+        QCOMPARE(entryOf(first, "feed").value("result").toString(), QStringLiteral("saved"));
+
+        SimSession again;
+        START_SIM(again, {"--eprom", "03.05.2001", "--verbose"});
+        QVERIFY(writeBytes(file, machineFile(again.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        const CliRun resumed = runCli({"machine", "backup", file, "-o", dir, "--resume"});
+        VERIFY_EXIT(resumed, 0);
+        QVERIFY2(resumed.out.contains(QLatin1String("== plc: kept from the earlier run")) &&
+                     resumed.out.contains(QLatin1String("== feed: kept from the earlier run")) &&
+                     resumed.out.contains(QLatin1String("3 of 3 devices saved")),
+                 describe(resumed).constData());
+        QVERIFY(camconRequests(again) > 0);
+        const QJsonArray second = manifestDevices(dir);
+        for (const char* kept : {"plc", "feed"})
+            QCOMPARE(entryOf(second, kept), entryOf(first, kept));
+        QCOMPARE(entryOf(second, "cams").value("result").toString(), QStringLiteral("saved"));
     }
 
     // Two names for one CamCon on one pty - its path and a link to it - and a
