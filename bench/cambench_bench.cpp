@@ -6,6 +6,7 @@
 
 #include "cambus_bench.h"
 #include "compax3_bench.h"
+#include "machine_bench.h"
 #include "mc1_bench.h"
 #include "protocol_bench.h"
 
@@ -339,6 +340,11 @@ int main(int argc, char** argv) {
         QStringLiteral("Only Cam-BUS: an EEPROM backup and a program read of one CamCon at 38400 "
                        "baud while two displays poll."));
     parser.addOption(cambus);
+    QCommandLineOption machine(
+        QStringLiteral("machine"),
+        QStringLiteral("Only a machine: `cambench-cli machine backup` of a CamCon, an MC200 and "
+                       "a Compax3 on three ptys at 38400 baud, each alone and all at once."));
+    parser.addOption(machine);
     QCommandLineOption repeat(QStringLiteral("repeat"),
                               QStringLiteral("Runs per row, with seeds 7, 8, ...; the median time "
                                              "is printed (default 1)."),
@@ -355,6 +361,10 @@ int main(int argc, char** argv) {
         parser.isSet(quick) ? QList<Line>{multiuser} : QList<Line>{standard, multiuser};
     if (parser.isSet(cambus)) {
         bench::benchCamBus();
+        return 0;
+    }
+    if (parser.isSet(machine)) {
+        bench::benchMachine(38400, g_repeat);
         return 0;
     }
     if (parser.isSet(compax3)) {

@@ -9,24 +9,62 @@
 
 namespace cambench::cli {
 
+namespace {
+
+thread_local OutputBlock* t_capture = nullptr;
+
+void writeRaw(bool toStderr, const QByteArray& bytes) {
+    std::FILE* stream = toStderr ? stderr : stdout;
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
+    std::fflush(stream);
+}
+
+// Every line the cli prints passes here: to the stream, or to this
+// thread's captured block.
+void write(bool toStderr, const QByteArray& bytes) {
+    if (t_capture)
+        t_capture->append(toStderr, bytes);
+    else
+        writeRaw(toStderr, bytes);
+}
+
+}  // namespace
+
+void OutputBlock::append(bool toStderr, const QByteArray& bytes) {
+    if (!m_pieces.isEmpty() && m_pieces.last().first == toStderr)
+        m_pieces.last().second += bytes;
+    else
+        m_pieces.append({toStderr, bytes});
+}
+
+void OutputBlock::print() const {
+    for (const auto& [toStderr, bytes] : m_pieces) writeRaw(toStderr, bytes);
+}
+
+CaptureOutput::CaptureOutput(OutputBlock& block) : m_previous(t_capture) {
+    t_capture = &block;
+}
+
+CaptureOutput::~CaptureOutput() {
+    t_capture = m_previous;
+}
+
+bool outputCaptured() {
+    return t_capture != nullptr;
+}
+
 void printError(const QString& message) {
-    std::fprintf(stderr, "cambench-cli: %s\n", message.toUtf8().constData());
-    std::fflush(stderr);
+    write(true, QStringLiteral("cambench-cli: %1\n").arg(message).toUtf8());
 }
 
 int reportError(const Error& error) {
     printError(error.message);
-    if (error.kind == ErrorKind::Usage) {
-        std::fputs("\n", stderr);
-        std::fputs(usageText().toUtf8().constData(), stderr);
-    }
+    if (error.kind == ErrorKind::Usage) write(true, "\n" + usageText().toUtf8());
     return exitCodeFor(error.kind);
 }
 
 void printOut(const QString& text) {
-    const QByteArray bytes = text.toUtf8();
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stdout);
-    std::fflush(stdout);
+    write(false, text.toUtf8());
 }
 
 int printJson(const QJsonDocument& document) {
@@ -36,8 +74,7 @@ int printJson(const QJsonDocument& document) {
 
 Status writeOutput(const QString& path, const QByteArray& data) {
     if (path.isEmpty() || path == QLatin1String("-")) {
-        std::fwrite(data.constData(), 1, size_t(data.size()), stdout);
-        std::fflush(stdout);
+        write(false, data);
         return success();
     }
     return writeFileAtomically(path, data);

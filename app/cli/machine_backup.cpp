@@ -1,16 +1,18 @@
 // `machine backup FILE -o DIR`, `machine verify DIR`, `machine restore DIR`:
 // each device of the machine by its family's own command (the verbs each
 // family registers: the CamCon's EEPROM image, the MC-1 backup, the Compax3
-// parameter set), one device after the other. DIR holds the machine file as
-// given (machine.json), one file per device and manifest.json, rewritten
-// after each device: machine, and per device its name, family, identity,
-// file, SHA-256, time and result. Names no family.
+// parameter set), devices on different ports at once (machine_parallel.h),
+// each device's lines printed whole in the file's order. DIR holds the
+// machine file as given (machine.json), one file per device and
+// manifest.json, rewritten after each device: machine, and per device its
+// name, family, identity, file, SHA-256, time and result. Names no family.
 #include "machine_command.h"
 
 #include "cli_output.h"
 #include "cli_session.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "machine_parallel.h"
 
 #include "model/atomic_file.h"
 #include "model/file_read.h"
@@ -24,6 +26,8 @@
 #include <QRegularExpression>
 
 #include <functional>
+#include <optional>
+#include <vector>
 
 namespace cambench::cli {
 
@@ -162,25 +166,40 @@ int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, c
     if (const Status saved = writeFileAtomically(QDir(dir).filePath(kMachineFileName), machineFile);
         !saved)
         return reportError(saved.error());
-    QJsonArray devices;
-    int saved = 0;
-    for (int i = 0; i < setup.machine.devices.size(); ++i) {
-        const MachineDevice& device = setup.machine.devices.at(i);
-        const QJsonObject before = earlier.value(device.name);
+    const QList<MachineDevice>& all = setup.machine.devices;
+    std::vector<std::optional<QJsonObject>> entries(size_t(all.size()));  // a slot per thread
+    QList<int> indices;
+    for (int i = 0; i < all.size(); ++i) indices << i;
+    const auto backUpOrKeep = [&](int i) {
+        const QJsonObject before = earlier.value(all.at(i).name);
         if (resume && stillSaved(before, dir)) {
             printOut(QStringLiteral("== %1: kept from the earlier run (%2)\n")
-                         .arg(device.name, before.value(QStringLiteral("time")).toString()));
-            devices << before;
+                         .arg(all.at(i).name, before.value(QStringLiteral("time")).toString()));
+            entries[size_t(i)] = before;
         } else {
-            devices << backUp(device, setup.options.at(i), dir);
+            entries[size_t(i)] = backUp(all.at(i), setup.options.at(i), dir);
         }
-        if (devices.last().toObject().value(QStringLiteral("result")).toString() ==
-            QLatin1String("saved"))
+    };
+    // Rewritten after each device, one at a time, with every device finished
+    // so far in the file's order: an interrupted backup says what it has.
+    // Only finished devices' slots are read here: the others are still being
+    // written by their threads.
+    Status manifest = success();
+    QJsonArray devices;
+    std::vector<bool> finished(size_t(all.size()), false);
+    const auto recordDone = [&](int done) {
+        finished[size_t(done)] = true;
+        devices = {};
+        for (size_t i = 0; i < entries.size(); ++i)
+            if (finished[i]) devices << *entries[i];
+        if (manifest) manifest = writeManifest(dir, setup.machine.machine, devices);
+    };
+    runDevicesByPort(setup.options, indices, backUpOrKeep, recordDone);
+    if (!manifest) return reportError(manifest.error());
+    int saved = 0;
+    for (const QJsonValue& value : devices)
+        if (value.toObject().value(QStringLiteral("result")).toString() == QLatin1String("saved"))
             ++saved;
-        // Rewritten after each device: an interrupted backup says what it has.
-        if (const Status written = writeManifest(dir, setup.machine.machine, devices); !written)
-            return reportError(written.error());
-    }
     printOut(QStringLiteral("%1: %2 of %3 devices saved in %4\n")
                  .arg(setup.machine.machine)
                  .arg(saved)
@@ -209,30 +228,43 @@ int forEachSaved(const QString& dir, const QStringList& only, QStringList Machin
         if (!folder->setup.machine.device(name))
             return reportError(Error::usage(
                 QStringLiteral("--only %1: the machine has no device of that name").arg(name)));
-    QList<int> codes;
-    QStringList lines;
-    for (int i = 0; i < folder->setup.machine.devices.size(); ++i) {
-        const MachineDevice& device = folder->setup.machine.devices.at(i);
+    const QList<MachineDevice>& all = folder->setup.machine.devices;
+    std::vector<int> codes(size_t(all.size()), ExitOk);  // a slot per thread
+    std::vector<QString> lines(size_t(all.size()));
+    QList<int> saved;  // the devices to run, in the file's order
+    for (int i = 0; i < all.size(); ++i) {
+        const MachineDevice& device = all.at(i);
         if (!only.isEmpty() && !only.contains(device.name)) continue;
-        const QJsonObject entry = folder->entries.value(device.name);
-        const MachineVerbs* verbs = CommandRegistry::instance().machineVerbs(device.family);
-        if (!stillSaved(entry, dir) || !verbs) {
-            lines << QStringLiteral("%1: not in the backup or its file changed since")
-                         .arg(device.name);
-            codes << ExitInvalidData;
+        if (!stillSaved(folder->entries.value(device.name), dir) ||
+            !CommandRegistry::instance().machineVerbs(device.family)) {
+            lines[size_t(i)] =
+                QStringLiteral("%1: not in the backup or its file changed since").arg(device.name);
+            codes[size_t(i)] = ExitInvalidData;
             continue;
         }
+        saved << i;
+    }
+    runDevicesByPort(folder->setup.options, saved, [&](int i) {
+        const MachineDevice& device = all.at(i);
         CliSession session(folder->setup.options.at(i));
         printOut(
             QStringLiteral("== %1 (%2, %3)\n").arg(device.name, device.family, session.where()));
-        const int code =
-            runFamilyVerb(session, device.family, (*verbs).*verb,
-                          QDir(dir).filePath(entry.value(QStringLiteral("file")).toString()));
-        codes << code;
-        lines << QStringLiteral("%1: %2").arg(device.name, says(code));
+        const QString file =
+            folder->entries.value(device.name).value(QStringLiteral("file")).toString();
+        codes[size_t(i)] = runFamilyVerb(
+            session, device.family, CommandRegistry::instance().machineVerbs(device.family)->*verb,
+            QDir(dir).filePath(file));
+        lines[size_t(i)] = QStringLiteral("%1: %2").arg(device.name, says(codes[size_t(i)]));
+    });
+    QStringList summary;
+    QList<int> outcomes;
+    for (int i = 0; i < all.size(); ++i) {
+        if (lines[size_t(i)].isEmpty()) continue;  // not asked for (--only)
+        summary << lines[size_t(i)];
+        outcomes << codes[size_t(i)];
     }
-    printOut(QStringLiteral("%1:\n%2\n").arg(folder->setup.machine.machine, lines.join('\n')));
-    return exitFor(codes);
+    printOut(QStringLiteral("%1:\n%2\n").arg(folder->setup.machine.machine, summary.join('\n')));
+    return exitFor(outcomes);
 }
 
 }  // namespace

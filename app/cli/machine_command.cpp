@@ -8,6 +8,7 @@
 #include "cli_output.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "machine_parallel.h"
 
 #include "comm/device/device_connection.h"
 #include "model/file_read.h"
@@ -16,6 +17,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+
+#include <vector>
 
 namespace cambench::cli {
 
@@ -82,11 +85,14 @@ Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where) 
 int runMachineStatus(const MachineSetup& setup, bool json) {
     const MachineFile& machine = setup.machine;
     const QList<GlobalOptions>& options = setup.options;
-    QList<DeviceStatus> statuses;
-    // One device after the other: an identification is short, and a
-    // silent device's retries say which one it was.
-    for (int i = 0; i < machine.devices.size(); ++i)
-        statuses << statusOf(machine.devices.at(i), options.at(i));
+    // Devices on different ports are asked at once: a silent device's
+    // retries hold up only the devices on its own port.
+    std::vector<DeviceStatus> statuses(size_t(machine.devices.size()));  // a slot per thread
+    QList<int> all;
+    for (int i = 0; i < machine.devices.size(); ++i) all << i;
+    runDevicesByPort(options, all, [&](int i) {
+        statuses[size_t(i)] = statusOf(machine.devices.at(i), options.at(i));
+    });
     bool allAnswered = true;
     for (const DeviceStatus& status : statuses) allAnswered = allAnswered && status.identity.ok();
     if (json) {

@@ -1,5 +1,7 @@
 #include "progress_bar.h"
 
+#include "cli_output.h"
+
 #include <cstdio>
 
 #ifdef Q_OS_WIN
@@ -14,7 +16,8 @@
 
 namespace cambench::cli {
 
-ProgressBar::ProgressBar() : m_enabled(CAMBENCH_ISATTY(CAMBENCH_FILENO(stderr)) != 0) {}
+ProgressBar::ProgressBar()
+    : m_enabled(CAMBENCH_ISATTY(CAMBENCH_FILENO(stderr)) != 0 && !outputCaptured()) {}
 
 ProgressBar::~ProgressBar() {
     finish();

@@ -26,6 +26,8 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/machine_command.h
   cli/machine_command.cpp
   cli/machine_backup.cpp
+  cli/machine_parallel.h
+  cli/machine_parallel.cpp
 )
 target_include_directories(cambench_cli_front PUBLIC ${PROJECT_SOURCE_DIR})
 target_link_libraries(cambench_cli_front PUBLIC cambench_usecases cambench_comm cambench_model Qt6::Core)

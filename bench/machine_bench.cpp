@@ -1,0 +1,164 @@
+#include "machine_bench.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTextStream>
+
+#ifdef Q_OS_LINUX
+#include <sys/prctl.h>
+#include <csignal>
+#endif
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+namespace cambench::bench {
+
+namespace {
+
+struct Device {
+    QString name;
+    QString family;
+    QStringList simArgs;  // besides --baud
+    QJsonObject entry;    // its machine file entry, the port filled in once started
+};
+
+QList<Device> devices(int baud) {
+    const auto entry = [baud](const QString& name, const QString& family) {
+        return QJsonObject{{QStringLiteral("name"), name},
+                           {QStringLiteral("family"), family},
+                           {QStringLiteral("baud"), baud}};
+    };
+    QJsonObject plc = entry(QStringLiteral("plc"), QStringLiteral("mc1"));
+    plc.insert(QStringLiteral("protocol"), QStringLiteral("mc1"));
+    plc.insert(QStringLiteral("variant"), QStringLiteral("mc200v2"));
+    return {{QStringLiteral("cams"),
+             QStringLiteral("camcon"),
+             {QStringLiteral("--eprom"), QStringLiteral("03.05.2001"), QStringLiteral("--fill"),
+              QStringLiteral("1")},
+             entry(QStringLiteral("cams"), QStringLiteral("camcon"))},
+            {QStringLiteral("plc"),
+             QStringLiteral("mc1"),
+             {QStringLiteral("--protocol"), QStringLiteral("mc1"), QStringLiteral("--variant"),
+              QStringLiteral("mc200v2")},
+             plc},
+            {QStringLiteral("feed"),
+             QStringLiteral("compax3"),
+             {QStringLiteral("--protocol"), QStringLiteral("compax3"),
+              QStringLiteral("--drive-type"), QStringLiteral("S150V4")},
+             entry(QStringLiteral("feed"), QStringLiteral("compax3"))}};
+}
+
+// Each program the benchmark starts dies with it, however it ends.
+void dieWithBenchmark(QProcess& process) {
+#ifdef Q_OS_LINUX
+    process.setChildProcessModifier([] { prctl(PR_SET_PDEATHSIG, SIGKILL); });
+#else
+    Q_UNUSED(process);
+#endif
+}
+
+// A simulator that dies with the benchmark; its pty path, or a fatal error.
+QString startSim(QProcess& sim, const QStringList& args) {
+    sim.setProgram(QStringLiteral(CAMBENCH_SIM_EXE));
+    sim.setArguments(args);
+    sim.setProcessChannelMode(QProcess::SeparateChannels);
+    dieWithBenchmark(sim);
+    sim.start();
+    while (!sim.canReadLine() && sim.waitForReadyRead(10000)) {
+    }
+    const QString path = QString::fromUtf8(sim.readLine()).trimmed();
+    if (path.isEmpty())
+        qFatal("cambench-sim %s did not start: %s", qPrintable(args.join(' ')),
+               sim.readAllStandardError().constData());
+    return path;
+}
+
+// Seconds of one `machine backup` of `entries`; a failed backup is fatal
+// (a figure of a failed run would say nothing).
+double timeBackup(const QTemporaryDir& dir, const QString& name, const QJsonArray& entries) {
+    const QString file = dir.filePath(name + QStringLiteral(".json"));
+    QFile out(file);
+    if (!out.open(QIODevice::WriteOnly) ||
+        out.write(QJsonDocument(QJsonObject{{QStringLiteral("machine"), name},
+                                            {QStringLiteral("devices"), entries}})
+                      .toJson()) <= 0)
+        qFatal("cannot write %s", qPrintable(file));
+    out.close();
+    QProcess cli;
+    cli.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+    cli.setArguments({QStringLiteral("machine"), QStringLiteral("backup"), file,
+                      QStringLiteral("-o"), dir.filePath(name + QStringLiteral("-backup"))});
+    dieWithBenchmark(cli);
+    QElapsedTimer timer;
+    timer.start();
+    cli.start();
+    if (!cli.waitForFinished(-1) || cli.exitStatus() != QProcess::NormalExit || cli.exitCode() != 0)
+        qFatal("machine backup of %s failed: %s%s", qPrintable(name),
+               cli.readAllStandardOutput().constData(), cli.readAllStandardError().constData());
+    return timer.nsecsElapsed() / 1e9;
+}
+
+double median(QList<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.at(values.size() / 2);
+}
+
+}  // namespace
+
+void benchMachine(int baud, int repeat) {
+    QTextStream out(stdout);
+    QTemporaryDir dir;
+    QList<Device> all = devices(baud);
+    std::vector<std::unique_ptr<QProcess>> sims;
+    for (Device& device : all) {
+        sims.push_back(std::make_unique<QProcess>());
+        device.entry.insert(
+            QStringLiteral("port"),
+            startSim(*sims.back(), QStringList{QStringLiteral("--baud"), QString::number(baud)} +
+                                       device.simArgs));
+    }
+    out << QStringLiteral("median of %1 run(s) each, %2 baud, throttled simulators on ptys\n\n")
+               .arg(repeat)
+               .arg(baud)
+        << "| backup | devices | time |\n| --- | ---: | ---: |\n";
+    out.flush();
+    double slowest = 0;
+    double sum = 0;  // what the machine took before, one device after the other
+    QJsonArray machine;
+    for (const Device& device : all) {
+        QList<double> times;
+        for (int i = 0; i < repeat; ++i)
+            times << timeBackup(dir, device.name, QJsonArray{device.entry});
+        const double alone = median(times);
+        slowest = std::max(slowest, alone);
+        sum += alone;
+        machine << device.entry;
+        out << QStringLiteral("| %1 (%2) alone | 1 | %3 s |\n")
+                   .arg(device.name, device.family)
+                   .arg(alone, 0, 'f', 2);
+        out.flush();
+    }
+    QList<double> times;
+    for (int i = 0; i < repeat; ++i) times << timeBackup(dir, QStringLiteral("machine"), machine);
+    const double together = median(times);
+    out << QStringLiteral("| the machine, 3 ports at once | 3 | %1 s |\n\n")
+               .arg(together, 0, 'f', 2)
+        << QStringLiteral(
+               "machine / slowest alone: %1 (target <= 1.2); the devices one after "
+               "the other would take their sum, %2 s\n")
+               .arg(together / slowest, 0, 'f', 2)
+               .arg(sum, 0, 'f', 2);
+    for (const std::unique_ptr<QProcess>& sim : sims) {
+        sim->kill();
+        sim->waitForFinished(5000);
+    }
+}
+
+}  // namespace cambench::bench
