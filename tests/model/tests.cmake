@@ -8,6 +8,7 @@ cambench_add_test(tst_atomic_file SOURCES model/tst_atomic_file.cpp LIBS cambenc
 cambench_add_test(tst_settings_plc_files SOURCES model/tst_settings_plc_files.cpp LIBS cambench_model)
 cambench_add_test(tst_line_manifest SOURCES model/tst_line_manifest.cpp LIBS cambench_model)
 cambench_add_test(tst_walked_list SOURCES model/tst_walked_list.cpp LIBS cambench_model)
+cambench_add_test(tst_section_copies SOURCES model/tst_section_copies.cpp LIBS cambench_model)
 cambench_add_test(tst_program_diff SOURCES model/tst_program_diff.cpp LIBS cambench_model)
 cambench_add_test(tst_cam_timing SOURCES model/tst_cam_timing.cpp LIBS cambench_model)
 cambench_add_test(tst_mc1_backup_file SOURCES model/tst_mc1_backup_file.cpp LIBS cambench_model)

@@ -26,7 +26,6 @@ target_sources(cambench_ui PRIVATE
   camcon/write_plan_builder.cpp
   camcon/device_writer.h
   camcon/device_writer.cpp
-  camcon/carry_over.h
   camcon/device_change_dialog.h
   camcon/device_change_dialog.cpp
   camcon/replace_edits_dialog.h

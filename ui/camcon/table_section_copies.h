@@ -2,7 +2,7 @@
 
 #include "model/camcon/analogue_cams.h"
 #include "model/camcon/programming_program.h"
-#include "ui/camcon/carry_over.h"
+#include "model/camcon/carry_over.h"
 
 #include <QList>
 #include <QMap>

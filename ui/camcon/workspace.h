@@ -12,7 +12,7 @@
 
 #include <QObject>
 #include "model/camcon/dead_time_modes.h"
-#include "ui/camcon/carry_over.h"
+#include "model/camcon/carry_over.h"
 
 #include <optional>
 
