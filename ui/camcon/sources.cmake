@@ -5,8 +5,6 @@ include(${CMAKE_CURRENT_LIST_DIR}/cameditor/sources.cmake)
 target_sources(cambench_ui PRIVATE
   camcon/workspace.h
   camcon/workspace.cpp
-  camcon/table_section_copies.h
-  camcon/table_section_copies.cpp
   camcon/workspace_item.h
   camcon/camcon_section_page.h
   camcon/camcon_section_page.cpp
