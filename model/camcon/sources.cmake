@@ -8,6 +8,8 @@ target_sources(cambench_model PRIVATE
   camcon/dead_times.h
   camcon/dead_time_modes.h
   camcon/dead_time_modes.cpp
+  camcon/carry_over.h
+  camcon/section_copies.h
   camcon/analogue_cams.h
   camcon/analogue_cams.cpp
   camcon/programming_program.h

@@ -1,7 +1,6 @@
 #include "analogue_cams_page.h"
 #include "ui/camcon/camcon_jobs.h"
 
-#include "table_section_copies.h"
 #include "ui/change_marker.h"
 #include "ui/device_session.h"
 #include "ui/replace_edits_question.h"
@@ -55,7 +54,7 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     ReadWriteBar bar(
         [this] {
             const bool edited =
-                m_workspace->tableSections()->changedAnalogueOutputs().contains(m_output->value());
+                m_workspace->analogueCams().changedKeys().contains(m_output->value());
             if (mayReplaceEdits(this, tr("Analogue cams"), edited ? 1 : 0)) readFromDevice();
         },
         [this] { writeChanges(); });
@@ -70,7 +69,7 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     layout->addWidget(m_problems);
     // Another output: the edits of this one stay in the workspace.
     connect(m_output, &QSpinBox::valueChanged, this, [this](int output) {
-        if (!m_workspace->tableSections()->analogueCams(output) && m_session->isOnline())
+        if (!m_workspace->analogueCams().value(output) && m_session->isOnline())
             readFromDevice();
         else
             showOutput();
@@ -88,9 +87,9 @@ AnalogueCamsPage::AnalogueCamsPage(DeviceSession* session, Workspace* workspace,
     });
     connect(m_table, &QTableWidget::itemChanged, this, &AnalogueCamsPage::takeTable);
     // A project opened, a write's outcome, another device: shown at once.
-    connect(m_workspace->tableSections(), &TableSectionCopies::changed, this, [this] {
+    connect(m_workspace, &Workspace::tableSectionsChanged, this, [this] {
         const std::optional<AnalogueCamTrack> track =
-            m_workspace->tableSections()->analogueCams(m_output->value());
+            m_workspace->analogueCams().value(m_output->value());
         if (!track || *track != edited())
             showOutput();
         else
@@ -121,9 +120,9 @@ void AnalogueCamsPage::readFromDevice() {
                     tr("Reading analogue cams failed: %1").arg(track.error().message));
                 return;
             }
-            TableSectionCopies* copies = m_workspace->tableSections();
-            copies->dropAnalogueEdit(track->output);
-            copies->setDeviceAnalogueCams(*track);
+            // The person chose to replace their edit of this output.
+            m_workspace->analogueCams().merge({{track->output, *track}}, ValueSource::Device,
+                                              false);
             m_workspace->setReadTime(ProjectPart::AnalogueCams, QDateTime::currentDateTimeUtc());
             Q_EMIT statusMessage(tr("Analogue cams of output %1 read.").arg(track->output));
         });
@@ -135,7 +134,7 @@ void AnalogueCamsPage::writeChanges(std::function<void(const WriteResult&)> done
 
 void AnalogueCamsPage::showOutput() {
     const std::optional<AnalogueCamTrack> track =
-        m_workspace->tableSections()->analogueCams(m_output->value());
+        m_workspace->analogueCams().value(m_output->value());
     {
         const QSignalBlocker blocker(m_table);
         const QList<AnaloguePoint> points = track ? track->points : QList<AnaloguePoint>();
@@ -165,18 +164,19 @@ void AnalogueCamsPage::setEdited(const AnalogueCamTrack& track) {
         const QSignalBlocker blocker(m_output);
         m_output->setValue(track.output);
     }
-    m_workspace->tableSections()->editAnalogueCams(track);
+    m_workspace->analogueCams().edit(track.output, track);
     showOutput();
 }
 
 AnalogueCamTrack AnalogueCamsPage::onDevice() const {
-    return m_workspace->tableSections()
-        ->deviceAnalogueCams(m_output->value())
+    return m_workspace->analogueCams()
+        .deviceValue(m_output->value())
         .value_or(AnalogueCamTrack{m_output->value(), {}});
 }
 
 void AnalogueCamsPage::takeTable() {
-    m_workspace->tableSections()->editAnalogueCams(edited());
+    const AnalogueCamTrack track = edited();
+    m_workspace->analogueCams().edit(track.output, track);
     refreshMarks();
 }
 
@@ -184,7 +184,7 @@ void AnalogueCamsPage::refreshMarks() {
     const QSignalBlocker blocker(m_table);
     const AnalogueCamTrack now = edited();
     const std::optional<AnalogueCamTrack> device =
-        m_workspace->tableSections()->deviceAnalogueCams(now.output);
+        m_workspace->analogueCams().deviceValue(now.output);
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const bool onDevice = device && row < device->points.size();
         const AnaloguePoint point = onDevice ? device->points.at(row) : AnaloguePoint{};
@@ -210,12 +210,12 @@ void AnalogueCamsPage::refreshMarks() {
 
 QList<SectionDifference> AnalogueCamsPage::differences() const {
     QList<SectionDifference> list;
-    const TableSectionCopies& copies = *m_workspace->tableSections();
-    for (int output : copies.changedAnalogueOutputs()) {
-        const std::optional<AnalogueCamTrack> device = copies.deviceAnalogueCams(output);
+    for (int output : m_workspace->analogueCams().changedKeys()) {
+        const std::optional<AnalogueCamTrack> device =
+            m_workspace->analogueCams().deviceValue(output);
         list.append({WorkspaceItem::analogueCams(output), tr("Analogue output %1").arg(output),
                      device ? usecases::analogueCamsText(*device) : tr("not read"),
-                     usecases::analogueCamsText(*copies.analogueCams(output))});
+                     usecases::analogueCamsText(*m_workspace->analogueCams().value(output))});
     }
     return list;
 }

@@ -15,7 +15,7 @@ class Workspace;
 
 // Analogue cams (table interface, areas 241..254): the base points of one
 // analogue output at a time, a value at each position. The values live in
-// the workspace (TableSectionCopies): edits of every output stay when
+// the workspace (Workspace::analogueCams): edits of every output stay when
 // another one is shown, are saved with the project, listed in Compare with
 // device and written through the one write path.
 class AnalogueCamsPage : public CamConSectionPage {

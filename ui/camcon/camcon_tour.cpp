@@ -12,7 +12,6 @@
 #include "monitor_page.h"
 #include "plc_coupling_page.h"
 #include "plc_page.h"
-#include "table_section_copies.h"
 #include "terminal_page.h"
 #include "timing_bar.h"
 #include "users_page.h"
@@ -75,7 +74,6 @@ void CamConWindow::tourVisitDone(const TourVisit& visit) {
 QList<TourStop> CamConWindow::tableTourStops() {
     MainWindow* w = window();
     Workspace* ws = m_workspace;
-    TableSectionCopies* copies = ws->tableSections();
     auto* coupling = qobject_cast<PlcCouplingPage*>(
         qobject_cast<CapabilityGate*>(sectionPage(PlcCoupling))->page());
     return {
@@ -85,19 +83,19 @@ QList<TourStop> CamConWindow::tableTourStops() {
          {}},
         {QStringLiteral("02-dead-time-modes"),
          [this] { showSection(DeadTimeModes); },
-         [ws] { return !ws->deviceDeadTimeModes().isEmpty(); },
+         [ws] { return !ws->deadTimeModes().device().isEmpty(); },
          {}},
         {QStringLiteral("03-analogue-cams"),
          [this] { showSection(AnalogueCams); },
-         [copies] { return copies->deviceAnalogueCams(1).has_value(); },
+         [ws] { return ws->analogueCams().deviceValue(1).has_value(); },
          {}},
         {QStringLiteral("04-programming-program"),
          [this] { showSection(ProgrammingProgram); },
-         [copies] { return copies->deviceProgrammingProgram().has_value(); },
+         [ws] { return ws->programmingProgram().deviceValue().has_value(); },
          {}},
         {QStringLiteral("05-eeprom-lock"),
          [this] { showSection(EepromLock); },
-         [copies] { return copies->deviceEepromLock().has_value(); },
+         [ws] { return ws->eepromLock().deviceValue().has_value(); },
          {}},
         {QStringLiteral("06-plc-coupling"),
          [this, coupling] {
@@ -152,7 +150,7 @@ QList<TourStop> CamConWindow::standardTourStops(const QString& directory) {
          {}},
         {QStringLiteral("04-settings"),
          [this] { showSection(Settings); },
-         [ws] { return ws->settingsKnown(); },
+         [ws] { return ws->settings().known(); },
          {}},
         {QStringLiteral("05-users"),
          [this] { showSection(Users); },
@@ -168,7 +166,7 @@ QList<TourStop> CamConWindow::standardTourStops(const QString& directory) {
              m_plc->showNetwork(PlcNetwork::O, 0);
              m_plc->readNetwork();
          },
-         [ws] { return ws->devicePlcNetworks().contains(Workspace::plcKey(PlcNetwork::O, 0)); },
+         [ws] { return ws->plc().deviceValue(Workspace::plcKey(PlcNetwork::O, 0)).has_value(); },
          {}},
         {QStringLiteral("07-monitor"),
          [this] { showSection(Monitor); },

@@ -6,7 +6,6 @@
 #include "plc_symbol.h"
 #include "print_diagram.h"
 #include "setting_field.h"
-#include "table_section_copies.h"
 #include "ui/change_marker.h"
 #include "ui/report_pages.h"
 #include "users_model.h"
@@ -167,10 +166,11 @@ private:
 
     QString settings() const {
         QString rows;
-        const SystemSettings& edited = m_workspace.settings();
+        const SystemSettings edited = m_workspace.settings().shown();
         // A device value only where it was read from the connected device.
-        const SystemSettings device =
-            readFromDevice(ProjectPart::Settings) ? m_workspace.deviceSettings() : SystemSettings{};
+        const SystemSettings device = readFromDevice(ProjectPart::Settings)
+                                          ? m_workspace.settings().device()
+                                          : SystemSettings{};
         for (const SettingSpec& spec : settingSpecs()) {
             const QString key = QString::fromLatin1(spec.key);
             if (!edited.contains(key)) continue;
@@ -218,10 +218,10 @@ private:
 
     // Table interface only: absent when neither read nor in the project.
     QString deadTimeModes() const {
-        const DeadTimeModes& modes = m_workspace.deadTimeModes();
+        const DeadTimeModes modes = m_workspace.deadTimeModes().shown();
         if (modes.isEmpty()) return {};
         const DeadTimeModes onDevice = readFromDevice(ProjectPart::DeadTimeModes)
-                                           ? m_workspace.deviceDeadTimeModes()
+                                           ? m_workspace.deadTimeModes().device()
                                            : DeadTimeModes{};
         QString rows =
             headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Mode"),
@@ -260,43 +260,46 @@ private:
     // The programming program and the EEPROM lock (table interface only):
     // absent when neither read nor in the project.
     QString tableSettings() const {
-        const TableSectionCopies& copies = *m_workspace.tableSections();
-        const std::optional<ProgrammingProgram> programming = copies.programmingProgram();
-        const std::optional<bool> lock = copies.eepromLock();
+        const std::optional<ProgrammingProgram> programming =
+            m_workspace.programmingProgram().value();
+        const std::optional<bool> lock = m_workspace.eepromLock().value();
         if (!programming && !lock) return {};
         QString rows;
         if (programming) {
             const std::optional<ProgrammingProgram> device =
-                readFromDevice(ProjectPart::ProgrammingProgram) ? copies.deviceProgrammingProgram()
-                                                                : std::nullopt;
+                readFromDevice(ProjectPart::ProgrammingProgram)
+                    ? m_workspace.programmingProgram().deviceValue()
+                    : std::nullopt;
             rows += row({CommissioningReport::tr("Programming program"),
                          marked(usecases::programmingProgramText(*programming),
-                                copies.programmingProgramChanged(),
+                                m_workspace.programmingProgram().isChanged(),
                                 device ? usecases::programmingProgramText(*device) : notRead())});
         }
         if (lock) {
-            const std::optional<bool> device =
-                readFromDevice(ProjectPart::EepromLock) ? copies.deviceEepromLock() : std::nullopt;
-            rows += row({CommissioningReport::tr("EEPROM lock"),
-                         marked(usecases::eepromLockText(*lock), copies.eepromLockChanged(),
-                                device ? usecases::eepromLockText(*device) : notRead())});
+            const std::optional<bool> device = readFromDevice(ProjectPart::EepromLock)
+                                                   ? m_workspace.eepromLock().deviceValue()
+                                                   : std::nullopt;
+            rows +=
+                row({CommissioningReport::tr("EEPROM lock"),
+                     marked(usecases::eepromLockText(*lock), m_workspace.eepromLock().isChanged(),
+                            device ? usecases::eepromLockText(*device) : notRead())});
         }
         return heading(CommissioningReport::tr("Programming program and EEPROM lock")) +
                source(ProjectPart::ProgrammingProgram) + table(rows);
     }
 
     QString analogueCams() const {
-        const TableSectionCopies& copies = *m_workspace.tableSections();
         QString rows = headerRow(
             {CommissioningReport::tr("Analogue output"), CommissioningReport::tr("Base points")});
         bool any = false;
         for (int output = 1; output <= kAnalogueOutputs; ++output) {
-            const std::optional<AnalogueCamTrack> track = copies.analogueCams(output);
+            const std::optional<AnalogueCamTrack> track = m_workspace.analogueCams().value(output);
             if (!track) continue;
             any = true;
-            const std::optional<AnalogueCamTrack> device = readFromDevice(ProjectPart::AnalogueCams)
-                                                               ? copies.deviceAnalogueCams(output)
-                                                               : std::nullopt;
+            const std::optional<AnalogueCamTrack> device =
+                readFromDevice(ProjectPart::AnalogueCams)
+                    ? m_workspace.analogueCams().deviceValue(output)
+                    : std::nullopt;
             rows += row({QString::number(output),
                          marked(usecases::analogueCamsText(*track), !device || *device != *track,
                                 device ? usecases::analogueCamsText(*device) : notRead())});
@@ -357,9 +360,9 @@ private:
         if (!m_options.timingSpeed) return {};
         const Axis axis = m_cams.axis();
         const double v = toPositionsPerSecond(*m_options.timingSpeed, axis);
-        const QList<OutputTiming> outputs =
-            timeProgram(program, deadTimesAsModes(m_cams.deadTimes(), m_workspace.deadTimeModes()),
-                        v, axis, m_cams.minimumPulses());
+        const QList<OutputTiming> outputs = timeProgram(
+            program, deadTimesAsModes(m_cams.deadTimes(), m_workspace.deadTimeModes().shown()), v,
+            axis, m_cams.minimumPulses());
         QString rows = headerRow(
             {CommissioningReport::tr("Output"), CommissioningReport::tr("Dead time on / off"),
              CommissioningReport::tr("Shift on / off"), CommissioningReport::tr("Shortest cam"),
@@ -422,7 +425,7 @@ private:
     QString plc() const {
         QString html =
             heading(CommissioningReport::tr("PLC networks")) + source(ProjectPart::PlcNetworks);
-        const auto& networks = m_workspace.plcNetworks();
+        const QMap<int, PlcNetwork> networks = m_workspace.plc().shown();
         if (networks.isEmpty())
             return html + paragraph(CommissioningReport::tr("No PLC networks read or edited."));
         QString rows = headerRow(
@@ -440,7 +443,7 @@ private:
                 paths << symbols.join(QLatin1Char(' '));
             }
             const QString name = PlcPage::networkName(it->area, it->number);
-            rows += row({m_workspace.isPlcNetworkChanged(it.key()) ? changedMarker() + name : name,
+            rows += row({m_workspace.plc().isChanged(it.key()) ? changedMarker() + name : name,
                          QString::number(it->value), plcsymbol::editText(it->reset),
                          paths.join(QStringLiteral(" | "))});
         }

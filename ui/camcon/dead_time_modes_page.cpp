@@ -68,18 +68,12 @@ DeadTimeModesPage::DeadTimeModesPage(DeviceSession* session, Workspace* workspac
     layout->addWidget(intro);
     layout->addLayout(buttons);
     layout->addWidget(m_table);
-    connect(m_table, &QTableWidget::itemChanged, this, &DeadTimeModesPage::refreshEdits);
-    connect(m_workspace, &Workspace::deadTimeModesIncoming, this, &DeadTimeModesPage::takeIncoming);
-    // Another device: nothing of the old one stays on the page; what the
-    // person carried waits for the new device's rows.
-    connect(m_workspace, &Workspace::deadTimeModesForgotten, this,
-            [this](const DeadTimeModes& carried) {
-                m_device.clear();
-                m_pending = carried;
-                m_table->setRowCount(0);
-                m_note->setText(tr("Not read from this device yet."));
-            });
-    m_note->setText(tr("Not read from the device yet."));
+    connect(m_table, &QTableWidget::itemChanged, this,
+            [this](QTableWidgetItem* item) { takeRow(item->row()); });
+    connect(m_workspace, &Workspace::deadTimeModesChanged, this, &DeadTimeModesPage::showModes);
+    // Another device answered: the note says the rows are not this one's.
+    connect(m_workspace, &Workspace::otherDeviceNoteChanged, this, &DeadTimeModesPage::showModes);
+    showModes();
 }
 
 void DeadTimeModesPage::readFromDevice() {
@@ -96,76 +90,63 @@ void DeadTimeModesPage::readFromDevice() {
                     tr("Reading dead-time modes failed: %1").arg(modes.error().message));
                 return;
             }
-            m_device = modes.value();
+            // The person chose to replace their edits (if any); what waits
+            // for the first read (a project's, or carried from another
+            // device) stays.
+            auto& copies = m_workspace->deadTimeModes();
+            m_workspace->mergeDeadTimeModes(modes.value(), ValueSource::Device, !copies.known());
             m_workspace->setReadTime(ProjectPart::DeadTimeModes, QDateTime::currentDateTimeUtc());
-            showModes(m_device);
             Q_EMIT statusMessage(tr("Dead-time modes read."));
         });
 }
 
-void DeadTimeModesPage::showModes(const DeadTimeModes& modes) {
+void DeadTimeModesPage::showModes() {
+    const DeadTimeModes& device = onDevice();
     {
-        // Filled row by row: the edits are looked at once all rows are there.
+        // Filled row by row: the edits are marked once all rows are there.
         const QSignalBlocker blocker(m_table);
-        m_table->setRowCount(int(modes.size()));
-        int row = 0;
-        for (auto it = modes.begin(); it != modes.end(); ++it, ++row) {
-            auto* output = new QTableWidgetItem(QString::number(it.key()));
-            output->setFlags(Qt::ItemIsEnabled);
-            output->setData(Qt::UserRole, it.key());
-            m_table->setItem(row, OutputColumn, output);
-            auto* mode = new QComboBox;
-            mode->addItem(tr("Normal"), int(DeadTimeMode::Normal));
-            mode->addItem(tr("On/off"), int(DeadTimeMode::SeparateOnOff));
-            mode->addItem(tr("Path-time"), int(DeadTimeMode::PathTime));
-            connect(mode, &QComboBox::currentIndexChanged, this, &DeadTimeModesPage::refreshEdits);
-            m_table->setCellWidget(row, ModeColumn, mode);
-            m_table->setItem(row, NormalColumn, msItem(0));
-            m_table->setItem(row, OnColumn, msItem(0));
-            m_table->setItem(row, OffColumn, msItem(0));
+        if (shownOutputs() != device.keys()) {
+            m_table->setRowCount(0);
+            m_table->setRowCount(int(device.size()));
+            int row = 0;
+            for (auto it = device.begin(); it != device.end(); ++it, ++row) {
+                auto* output = new QTableWidgetItem(QString::number(it.key()));
+                output->setFlags(Qt::ItemIsEnabled);
+                output->setData(Qt::UserRole, it.key());
+                m_table->setItem(row, OutputColumn, output);
+                auto* mode = new QComboBox;
+                mode->addItem(tr("Normal"), int(DeadTimeMode::Normal));
+                mode->addItem(tr("On/off"), int(DeadTimeMode::SeparateOnOff));
+                mode->addItem(tr("Path-time"), int(DeadTimeMode::PathTime));
+                connect(mode, &QComboBox::currentIndexChanged, this,
+                        [this, output] { takeRow(output->row()); });
+                m_table->setCellWidget(row, ModeColumn, mode);
+                m_table->setItem(row, NormalColumn, msItem(0));
+                m_table->setItem(row, OnColumn, msItem(0));
+                m_table->setItem(row, OffColumn, msItem(0));
+            }
         }
-        for (auto it = modes.begin(); it != modes.end(); ++it) setEdited(it.key(), it.value());
-        // A project opened before the device was read: its modes are edits.
-        for (auto it = m_pending.cbegin(); it != m_pending.cend(); ++it)
-            if (modes.contains(it.key())) setEdited(it.key(), *it);
-        m_pending.clear();
+        for (auto it = device.begin(); it != device.end(); ++it)
+            fillRow(rowOf(it.key()), edited(it.key()));
     }
-    m_note->setText(
-        tr("Largest dead time: %1").arg(millisecondsText(m_workspace->info().maxDeadTime)));
-    refreshEdits();
+    if (!device.isEmpty())
+        m_note->setText(
+            tr("Largest dead time: %1").arg(millisecondsText(m_workspace->info().maxDeadTime)));
+    else if (m_workspace->otherDeviceNote().isEmpty())
+        m_note->setText(tr("Not read from the device yet."));
+    else
+        m_note->setText(tr("Not read from this device yet."));
+    markEdits();
 }
 
-void DeadTimeModesPage::takeIncoming(const DeadTimeModes& modes, bool fromDevice) {
-    if (fromDevice) {
-        // The device's values as read with everything else; edits stay.
-        const DeadTimeModes edits = [this] {
-            DeadTimeModes edited;
-            for (const SectionDifference& difference : differences())
-                edited.insert(difference.item.number, this->edited(difference.item.number));
-            return edited;
-        }();
-        m_device = modes;
-        showModes(m_device);
-        for (auto it = edits.cbegin(); it != edits.cend(); ++it) setEdited(it.key(), *it);
-        refreshEdits();
-        return;
-    }
-    if (m_table->rowCount() == 0) {
-        m_pending = modes;
-        return;
-    }
-    for (auto it = modes.cbegin(); it != modes.cend(); ++it) setEdited(it.key(), *it);
-    refreshEdits();
-}
-
-void DeadTimeModesPage::refreshEdits() {
+void DeadTimeModesPage::markEdits() {
     // Setting a font changes the item: no recursion through itemChanged.
     const QSignalBlocker blocker(m_table);
     for (int row = 0; row < m_table->rowCount(); ++row) {
         QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
         if (!outputItem) continue;
         const int output = outputItem->data(Qt::UserRole).toInt();
-        const OutputDeadTime device = m_device.value(output);
+        const OutputDeadTime device = onDevice().value(output);
         const OutputDeadTime now = edited(output);
         auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
         if (!mode) continue;  // the row is being filled
@@ -187,31 +168,50 @@ void DeadTimeModesPage::refreshEdits() {
         markEdited(outputItem, any, QString());
         outputItem->setToolTip(any ? tr("Edited, not written to the device") : QString());
     }
-    // The values as edited go into a project saved now.
-    DeadTimeModes shown;
-    for (auto it = m_device.cbegin(); it != m_device.cend(); ++it)
-        shown.insert(it.key(), edited(it.key()));
-    if (!shown.isEmpty() || m_pending.isEmpty()) m_workspace->noteDeadTimeModes(shown, m_device);
 }
 
-OutputDeadTime DeadTimeModesPage::edited(int output) const {
-    const int row = rowOf(output);
-    if (row < 0) return m_device.value(output);
+void DeadTimeModesPage::takeRow(int row) {
+    const QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
     const auto* mode = qobject_cast<const QComboBox*>(m_table->cellWidget(row, ModeColumn));
-    if (!mode) return m_device.value(output);  // the row is being filled
-    return OutputDeadTime{
-        DeadTimeMode(mode->currentData().toInt()), tenthsOf(m_table->item(row, NormalColumn)),
-        tenthsOf(m_table->item(row, OnColumn)), tenthsOf(m_table->item(row, OffColumn))};
+    if (!outputItem || !mode) return;  // the row is being filled
+    m_workspace->deadTimeModes().edit(outputItem->data(Qt::UserRole).toInt(),
+                                      OutputDeadTime{DeadTimeMode(mode->currentData().toInt()),
+                                                     tenthsOf(m_table->item(row, NormalColumn)),
+                                                     tenthsOf(m_table->item(row, OnColumn)),
+                                                     tenthsOf(m_table->item(row, OffColumn))});
 }
 
-void DeadTimeModesPage::setEdited(int output, const OutputDeadTime& deadTime) {
-    const int row = rowOf(output);
-    if (row < 0) return;
+void DeadTimeModesPage::fillRow(int row, const OutputDeadTime& deadTime) {
     auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
-    mode->setCurrentIndex(mode->findData(int(deadTime.mode)));
+    if (!mode) return;
+    {
+        const QSignalBlocker blocker(mode);
+        mode->setCurrentIndex(mode->findData(int(deadTime.mode)));
+    }
     m_table->item(row, NormalColumn)->setData(Qt::EditRole, deadTime.normal / kTenthsPerMs);
     m_table->item(row, OnColumn)->setData(Qt::EditRole, deadTime.on / kTenthsPerMs);
     m_table->item(row, OffColumn)->setData(Qt::EditRole, deadTime.off / kTenthsPerMs);
+}
+
+OutputDeadTime DeadTimeModesPage::edited(int output) const {
+    return m_workspace->deadTimeModes().value(output).value_or(OutputDeadTime{});
+}
+
+void DeadTimeModesPage::setEdited(int output, const OutputDeadTime& deadTime) {
+    if (onDevice().contains(output)) m_workspace->deadTimeModes().edit(output, deadTime);
+}
+
+const DeadTimeModes& DeadTimeModesPage::onDevice() const {
+    return m_workspace->deadTimeModes().device();
+}
+
+QList<int> DeadTimeModesPage::shownOutputs() const {
+    QList<int> outputs;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const QTableWidgetItem* item = m_table->item(row, OutputColumn);
+        outputs << (item ? item->data(Qt::UserRole).toInt() : 0);
+    }
+    return outputs;
 }
 
 int DeadTimeModesPage::rowOf(int output) const {
@@ -224,9 +224,9 @@ int DeadTimeModesPage::rowOf(int output) const {
 
 QList<SectionDifference> DeadTimeModesPage::differences() const {
     QList<SectionDifference> list;
-    for (auto it = m_device.begin(); it != m_device.end(); ++it) {
+    for (auto it = onDevice().begin(); it != onDevice().end(); ++it) {
+        if (!m_workspace->deadTimeModes().isChanged(it.key())) continue;
         const OutputDeadTime now = edited(it.key());
-        if (now == it.value()) continue;
         list.append({WorkspaceItem::deadTimeMode(it.key()),
                      tr("Output %1 dead-time mode").arg(it.key()),
                      usecases::deadTimeModeText(it.value()), usecases::deadTimeModeText(now)});
@@ -237,7 +237,7 @@ QList<SectionDifference> DeadTimeModesPage::differences() const {
 void DeadTimeModesPage::writeChanges(std::function<void(const WriteResult&)> done) {
     // Checked against the connected device before the first byte, written
     // and read back item by item; the device copy follows the report
-    // (Workspace::setDeviceDeadTimeMode).
+    // (Workspace::deadTimeModes().setDevice).
     writeDifferences(m_session, m_workspace, std::move(done));
 }
 

@@ -26,7 +26,7 @@ public:
     // What is edited and differs from the device, for Compare with device;
     // written through the one write path like every section.
     QList<SectionDifference> differences() const override;
-    int itemCount() const override { return int(m_device.size()); }
+    int itemCount() const override { return int(onDevice().size()); }
     void writeChanges(std::function<void(const WriteResult&)> done = {});
     void deviceConnected() override { readFromDevice(); }
 
@@ -34,25 +34,25 @@ public:
     QTableWidget* table() const { return m_table; }
     // The values shown for `output` (1-based), as edited.
     OutputDeadTime edited(int output) const;
+    // An edit of an output the device has (as typing into its row does).
     void setEdited(int output, const OutputDeadTime& deadTime);
-    const DeadTimeModes& onDevice() const { return m_device; }
+    const DeadTimeModes& onDevice() const;
 
 private:
-    void showModes(const DeadTimeModes& modes);
-    // Marks every edited cell and output and tells the workspace how many
-    // outputs differ from the device.
-    void refreshEdits();
-    // Modes from a project file become edits of the rows shown (or of the
-    // rows once the device is read); a device's become the page's copy.
-    void takeIncoming(const DeadTimeModes& modes, bool fromDevice);
-    int rowOf(int output) const;  // -1 when the output is not shown
+    // The table is a view of the workspace's section: a row for each output
+    // the device has, showing the values as edited, edits marked.
+    void showModes();
+    void markEdits();
+    // A cell or mode changed: the row's values become the output's edit.
+    void takeRow(int row);
+    void fillRow(int row, const OutputDeadTime& deadTime);
+    int rowOf(int output) const;      // -1 when the output is not shown
+    QList<int> shownOutputs() const;  // in the order of the rows
 
     DeviceSession* m_session;
     Workspace* m_workspace;
     QTableWidget* m_table;
     QLabel* m_note;
-    DeadTimeModes m_device;   // as last read or written
-    DeadTimeModes m_pending;  // from a project file, waiting for the device's rows
 };
 
 }  // namespace cambench

@@ -3,7 +3,6 @@
 #include "cam_text.h"
 #include "plc_page.h"
 #include "setting_field.h"
-#include "table_section_copies.h"
 #include "workspace.h"
 
 #include "ui/camcon/cameditor/cam_document.h"
@@ -68,7 +67,7 @@ void addCamChanges(const Workspace& workspace, const QString& from, QStringList&
 
 // The changed items of the other sections.
 void addSectionChanges(const Workspace& workspace, QStringList& lines) {
-    for (const QString& key : workspace.changedSettings()) {
+    for (const QString& key : workspace.settings().changedKeys()) {
         const SettingSpec* spec = findSetting(key);
         lines << QCoreApplication::translate("cambench::DeviceChange", "Setting: %1")
                      .arg(spec ? SettingField::labelText(*spec) : key);
@@ -76,19 +75,18 @@ void addSectionChanges(const Workspace& workspace, QStringList& lines) {
     if (workspace.userEditCount() > 0)
         lines << QCoreApplication::translate("cambench::DeviceChange", "Users: %1 changed")
                      .arg(workspace.userEditCount());
-    for (int key : workspace.changedPlcNetworks())
+    for (int key : workspace.plc().changedKeys())
         lines << QCoreApplication::translate("cambench::DeviceChange", "PLC network %1")
                      .arg(PlcPage::networkName(key >> 8, key & 0xFF));
-    for (int output : workspace.changedDeadTimeModes())
+    for (int output : workspace.deadTimeModes().changedKeys())
         lines << QCoreApplication::translate("cambench::DeviceChange", "Output %1 dead-time mode")
                      .arg(output);
-    const TableSectionCopies* table = workspace.tableSections();
-    for (int output : table->changedAnalogueOutputs())
+    for (int output : workspace.analogueCams().changedKeys())
         lines << QCoreApplication::translate("cambench::DeviceChange", "Analogue output %1 cams")
                      .arg(output);
-    if (table->programmingProgramChanged())
+    if (workspace.programmingProgram().isChanged())
         lines << QCoreApplication::translate("cambench::DeviceChange", "Programming program");
-    if (table->eepromLockChanged())
+    if (workspace.eepromLock().isChanged())
         lines << QCoreApplication::translate("cambench::DeviceChange", "EEPROM lock");
 }
 

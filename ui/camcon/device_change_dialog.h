@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/camcon/carry_over.h"
+#include "model/camcon/carry_over.h"
 
 #include <QDialog>
 #include <QMap>

@@ -88,8 +88,8 @@ quint64 checkConnectedDevice(QWidget* context, DeviceSession* session, Workspace
                 const int changes = workspace->changedCount();
                 workspace->forgetDeviceCopies(otherDeviceNote(carry, *before, changes), carry);
             }
-            if (!answer.users) workspace->forgetDeviceUsers();
-            if (!answer.plc) workspace->forgetDevicePlcNetworks();
+            if (!answer.users) workspace->forgetDeviceSection(ProjectPart::Users);
+            if (!answer.plc) workspace->forgetDeviceSection(ProjectPart::PlcNetworks);
             // An earlier device's dead-time modes are not this one's (a
             // report of a Cam-BUS device showed a 3964R device's).
             if (!answer.tableSections) workspace->forgetDeviceTableSections();

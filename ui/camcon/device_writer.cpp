@@ -1,7 +1,6 @@
 #include "device_writer.h"
 #include "ui/camcon/camcon_jobs.h"
 
-#include "table_section_copies.h"
 #include "ui/last_write_report.h"
 
 #include "ui/device_session.h"
@@ -87,18 +86,18 @@ void applyTableSections(Workspace& workspace, const usecases::WritePlan& plan,
     for (int i = 0; i < plan.deadTimeModes.size() && i < report.deadTimeModes.size(); ++i) {
         const auto& actual = report.deadTimeModes.at(i).actual;
         if (!actual) continue;
-        workspace.setDeviceDeadTimeMode(plan.deadTimeModes.at(i).output, *actual);
+        workspace.deadTimeModes().setDevice(plan.deadTimeModes.at(i).output, *actual);
         // Word 0 is the dead time of mode Normal, the one Dead times shows.
         workspace.cams()->setDeviceDeadTime(plan.deadTimeModes.at(i).output, actual->normal);
     }
-    TableSectionCopies& table = *workspace.tableSections();
     for (const auto& outcome : report.analogueCams) {
-        if (outcome.actual) table.setDeviceAnalogueCams(*outcome.actual);
+        if (outcome.actual)
+            workspace.analogueCams().setDevice(outcome.actual->output, *outcome.actual);
     }
     if (report.programmingProgram && report.programmingProgram->actual)
-        table.setDeviceProgrammingProgram(*report.programmingProgram->actual);
+        workspace.programmingProgram().setDevice(*report.programmingProgram->actual);
     if (report.eepromLock && report.eepromLock->actual)
-        table.setDeviceEepromLock(*report.eepromLock->actual);
+        workspace.eepromLock().setDevice(*report.eepromLock->actual);
 }
 
 }  // namespace
@@ -108,7 +107,9 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
     const usecases::WritePlan& plan = planned.plan;
     CamDocument& cams = *workspace.cams();
     for (const auto& outcome : report.settings) {
-        if (outcome.actual) workspace.setDeviceSettings(*outcome.actual);
+        if (!outcome.actual) continue;
+        for (auto it = outcome.actual->cbegin(); it != outcome.actual->cend(); ++it)
+            workspace.settings().setDevice(it.key(), *it);
     }
     applyTracks(cams, planned, report);
     for (int i = 0; i < plan.deadTimes.size() && i < report.deadTimes.size(); ++i) {
@@ -128,8 +129,8 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
                                 *outcome.actual);
     }
     for (int i = 0; i < plan.plcNetworks.size() && i < report.plcNetworks.size(); ++i) {
-        if (report.plcNetworks.at(i).actual)
-            workspace.setDevicePlcNetwork(*report.plcNetworks.at(i).actual);
+        if (const auto& actual = report.plcNetworks.at(i).actual)
+            workspace.plc().setDevice(Workspace::plcKey(actual->area, actual->number), *actual);
     }
     applyTableSections(workspace, plan, report);
 }

@@ -1,7 +1,6 @@
 #include "eeprom_lock_page.h"
 #include "ui/camcon/camcon_jobs.h"
 
-#include "table_section_copies.h"
 #include "ui/change_marker.h"
 #include "ui/device_session.h"
 #include "workspace.h"
@@ -47,8 +46,7 @@ EepromLockPage::EepromLockPage(DeviceSession* session, Workspace* workspace, QWi
     layout->addStretch();
     connect(m_lock, &QPushButton::clicked, this, [this] { setLocked(true); });
     connect(m_unlock, &QPushButton::clicked, this, [this] { setLocked(false); });
-    connect(m_workspace->tableSections(), &TableSectionCopies::changed, this,
-            &EepromLockPage::showLock);
+    connect(m_workspace, &Workspace::tableSectionsChanged, this, &EepromLockPage::showLock);
     connect(m_session, &DeviceSession::stateChanged, this, &EepromLockPage::showLock);
     showLock();
 }
@@ -64,13 +62,13 @@ void EepromLockPage::readFromDevice() {
                     tr("Reading the EEPROM lock failed: %1").arg(locked.error().message));
                 return;
             }
-            m_workspace->tableSections()->setDeviceEepromLock(*locked);
+            m_workspace->eepromLock().setDevice(*locked);
             m_workspace->setReadTime(ProjectPart::EepromLock, QDateTime::currentDateTimeUtc());
         });
 }
 
 void EepromLockPage::setLocked(bool locked) {
-    m_workspace->tableSections()->editEepromLock(locked);
+    m_workspace->eepromLock().edit(locked);
     const QString title = locked ? tr("Lock the EEPROM") : tr("Unlock the EEPROM");
     // What the device holds afterwards comes from the write's read-back.
     writeToDevice(this, m_session, m_workspace, {WorkspaceItem::eepromLock()},
@@ -85,7 +83,7 @@ void EepromLockPage::setLocked(bool locked) {
 }
 
 std::optional<bool> EepromLockPage::locked() const {
-    return m_workspace->tableSections()->deviceEepromLock();
+    return m_workspace->eepromLock().deviceValue();
 }
 
 QString EepromLockPage::warningText() const {
@@ -97,8 +95,7 @@ bool EepromLockPage::warningShown() const {
 }
 
 void EepromLockPage::showLock() {
-    const TableSectionCopies& copies = *m_workspace->tableSections();
-    const std::optional<bool> locked = copies.deviceEepromLock();
+    const std::optional<bool> locked = m_workspace->eepromLock().deviceValue();
     if (!locked) {
         m_state->setText(tr("State of the EEPROM lock: not read"));
     } else if (*locked) {
@@ -106,10 +103,10 @@ void EepromLockPage::showLock() {
     } else {
         m_state->setText(tr("The EEPROM is not locked: changes are stored permanently."));
     }
-    m_wanted->setVisible(copies.eepromLockChanged());
-    if (copies.eepromLockChanged()) {
+    m_wanted->setVisible(m_workspace->eepromLock().isChanged());
+    if (m_workspace->eepromLock().isChanged()) {
         m_wanted->setText(changedMarker() +
-                          (*copies.eepromLock()
+                          (*m_workspace->eepromLock().value()
                                ? tr("The project wants the EEPROM locked; not written yet.")
                                : tr("The project wants the EEPROM unlocked; not written yet.")));
     }
@@ -122,12 +119,11 @@ void EepromLockPage::showLock() {
 }
 
 QList<SectionDifference> EepromLockPage::differences() const {
-    const TableSectionCopies& copies = *m_workspace->tableSections();
-    if (!copies.eepromLockChanged()) return {};
-    const std::optional<bool>& device = copies.deviceEepromLock();
+    if (!m_workspace->eepromLock().isChanged()) return {};
+    const std::optional<bool>& device = m_workspace->eepromLock().deviceValue();
     return {{WorkspaceItem::eepromLock(), sectionTitle(),
              device ? usecases::eepromLockText(*device) : tr("not read"),
-             usecases::eepromLockText(*copies.eepromLock())}};
+             usecases::eepromLockText(*m_workspace->eepromLock().value())}};
 }
 
 }  // namespace cambench

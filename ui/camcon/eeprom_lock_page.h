@@ -15,7 +15,7 @@ class Workspace;
 // The EEPROM lock of the table interface (area 205 word 4): while the
 // EEPROM is locked every change written is kept in RAM only and is lost
 // when the device is switched off. The page says so plainly. The state
-// lives in the workspace (TableSectionCopies): a project carries it, and a
+// lives in the workspace (Workspace::eepromLock): a project carries it, and a
 // project that wants another state shows here and in Compare as an edit.
 class EepromLockPage : public CamConSectionPage {
     Q_OBJECT

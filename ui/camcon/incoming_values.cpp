@@ -3,7 +3,6 @@
 #include "cam_text.h"
 #include "plc_page.h"
 #include "setting_field.h"
-#include "table_section_copies.h"
 #include "ui/camcon/replace_edits_dialog.h"
 
 #include "ui/camcon/cameditor/cam_document.h"
@@ -52,12 +51,12 @@ QMap<EditSection, int> editsReplacedBy(const Workspace& workspace, const Incomin
     if (camEdits > 0) edits.insert(EditSection::Cams, camEdits);
     if (parts.outputSettings && workspace.outputSettingsEditCount() > 0)
         edits.insert(EditSection::OutputSettings, workspace.outputSettingsEditCount());
-    if (parts.settings && !workspace.changedSettings().isEmpty())
-        edits.insert(EditSection::Settings, int(workspace.changedSettings().size()));
+    if (parts.settings && workspace.settings().changedCount() > 0)
+        edits.insert(EditSection::Settings, workspace.settings().changedCount());
     if (parts.users && workspace.userEditCount() > 0)
         edits.insert(EditSection::Users, workspace.userEditCount());
-    if (parts.plc && !workspace.changedPlcNetworks().isEmpty())
-        edits.insert(EditSection::Plc, int(workspace.changedPlcNetworks().size()));
+    if (parts.plc && workspace.plc().changedCount() > 0)
+        edits.insert(EditSection::Plc, workspace.plc().changedCount());
     return edits;
 }
 
@@ -84,8 +83,12 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
         parts.programs.size() >= workspace.info().programs)
         workspace.clearOtherDeviceNote();
     if (parts.settings) {
-        workspace.mergeSettings(incoming.settings, source,
-                                keepEdits.contains(EditSection::Settings));
+        // A device's settings are its whole section; a file's name theirs.
+        const bool keep = keepEdits.contains(EditSection::Settings);
+        if (fromDevice)
+            workspace.settings().mergeWhole(incoming.settings, keep);
+        else
+            workspace.settings().merge(incoming.settings, source, keep);
         if (fromDevice) stamp(workspace, read, ProjectPart::Settings);
     }
     for (const CamProgram& program : incoming.programs) {
@@ -108,19 +111,24 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
         if (fromDevice) stamp(workspace, read, ProjectPart::Users);
     }
     if (parts.plc) {
-        workspace.mergePlcNetworks(incoming.plcNetworks, source,
-                                   keepEdits.contains(EditSection::Plc));
+        workspace.plc().merge(Workspace::plcByKey(incoming.plcNetworks), source,
+                              keepEdits.contains(EditSection::Plc));
         if (fromDevice) stamp(workspace, read, ProjectPart::PlcNetworks);
     }
-    // Table interface only: the Dead-time modes page takes them (a file's
-    // as edits, which it marks and counts, a device's as its copy).
+    // Table interface only: a file's are edits (replacing the edits of the
+    // outputs it names), a device's its copy (edits stay).
     if (!incoming.deadTimeModes.isEmpty()) {
-        workspace.takeDeadTimeModes(incoming.deadTimeModes, fromDevice);
+        workspace.mergeDeadTimeModes(incoming.deadTimeModes, source, fromDevice);
         if (fromDevice) stamp(workspace, read, ProjectPart::DeadTimeModes);
     }
     // Analogue cams, programming program, EEPROM lock: a file's are edits,
     // a device's the copies (edits stay).
-    workspace.tableSections()->take(incoming, fromDevice);
+    QMap<int, AnalogueCamTrack> analogue;
+    for (const AnalogueCamTrack& track : incoming.analogueCams)
+        analogue.insert(track.output, track);
+    workspace.analogueCams().merge(analogue, source, fromDevice);
+    workspace.programmingProgram().merge(incoming.programmingProgram, source, fromDevice);
+    workspace.eepromLock().merge(incoming.eepromLock, source, fromDevice);
     if (fromDevice) {
         for (ProjectPart part :
              {ProjectPart::AnalogueCams, ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
@@ -181,9 +189,9 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
                     oldName, incoming.names.outputs.value(output));
         }
     }
-    if (parts.settings && workspace.settingsKnown()) {
+    if (parts.settings && workspace.settings().known()) {
         for (auto it = incoming.settings.cbegin(); it != incoming.settings.cend(); ++it) {
-            const QVariant old = workspace.deviceSettings().value(it.key());
+            const QVariant old = workspace.settings().deviceValue(it.key()).value_or(QVariant());
             const SettingSpec* spec = findSetting(it.key());
             if (spec && old.isValid() && old != it.value())
                 changes << change(SettingField::labelText(*spec),
@@ -197,8 +205,8 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
     if (parts.plc) {
         for (const PlcNetwork& network : incoming.plcNetworks) {
             const int key = Workspace::plcKey(network.area, network.number);
-            if (workspace.devicePlcNetworks().contains(key) &&
-                !(workspace.devicePlcNetworks().value(key) == network))
+            const std::optional<PlcNetwork> old = workspace.plc().deviceValue(key);
+            if (old && !(*old == network))
                 changes << QCoreApplication::translate("cambench::DeviceChanges",
                                                        "PLC network %1 changed.")
                                .arg(PlcPage::networkName(network.area, network.number));

@@ -34,9 +34,9 @@ QVariant PlcMatrixModel::data(const QModelIndex& index, int role) const {
     const int slot = index.row() * PlcNetwork::kSymbolsPerPath + index.column();
     const quint16 word = m_workspace->plcNetwork(m_area, m_number).symbols[slot];
     const int key = Workspace::plcKey(m_area, m_number);
-    const auto& device = m_workspace->devicePlcNetworks();
-    const bool changed = !device.contains(key) ? m_workspace->plcNetworks().contains(key)
-                                               : device.value(key).symbols[slot] != word;
+    const std::optional<PlcNetwork> device = m_workspace->plc().deviceValue(key);
+    const bool changed =
+        device ? device->symbols[slot] != word : m_workspace->plc().value(key).has_value();
     switch (role) {
         case Qt::DisplayRole:
             return (changed ? changedMarker() : QString()) + plcsymbol::display(word);
@@ -66,7 +66,7 @@ bool PlcMatrixModel::setData(const QModelIndex& index, const QVariant& value, in
     }
     PlcNetwork network = m_workspace->plcNetwork(m_area, m_number);
     network.symbols[index.row() * PlcNetwork::kSymbolsPerPath + index.column()] = *word;
-    m_workspace->setPlcNetwork(network);
+    m_workspace->plc().edit(Workspace::plcKey(m_area, m_number), network);
     return true;
 }
 

@@ -158,14 +158,14 @@ void PlcPage::editFields() {
     bool ok = false;
     const uint reset = m_reset->text().toUInt(&ok, 16);
     if (ok) network.reset = quint16(reset);
-    m_workspace->setPlcNetwork(network);
+    m_workspace->plc().edit(Workspace::plcKey(network.area, network.number), network);
 }
 
 void PlcPage::fillList() {
     m_networks->clear();
-    const auto& networks = m_workspace->plcNetworks();
+    const QMap<int, PlcNetwork> networks = m_workspace->plc().shown();
     for (auto it = networks.cbegin(); it != networks.cend(); ++it) {
-        const bool changed = m_workspace->isPlcNetworkChanged(it.key());
+        const bool changed = m_workspace->plc().isChanged(it.key());
         auto* item = new QListWidgetItem((changed ? changedMarker() : QString()) +
                                          networkName(it->area, it->number));
         item->setData(Qt::UserRole, it.key());
@@ -186,18 +186,17 @@ void PlcPage::readNetwork() {
 }
 
 int PlcPage::itemCount() const {
-    return int(m_workspace->plcNetworks().size());
+    return int(m_workspace->plc().shown().size());
 }
 
 QList<SectionDifference> PlcPage::differences() const {
     QList<SectionDifference> list;
-    for (int key : m_workspace->changedPlcNetworks()) {
-        const PlcNetwork edited = m_workspace->plcNetworks().value(key);
-        const auto& device = m_workspace->devicePlcNetworks();
+    for (int key : m_workspace->plc().changedKeys()) {
+        const PlcNetwork edited = m_workspace->plc().value(key).value_or(PlcNetwork{});
+        const std::optional<PlcNetwork> device = m_workspace->plc().deviceValue(key);
         list.append({WorkspaceItem::plcNetwork(key),
                      tr("Network %1").arg(networkName(edited.area, edited.number)),
-                     device.contains(key) ? networkText(device.value(key)) : tr("not read"),
-                     networkText(edited)});
+                     device ? networkText(*device) : tr("not read"), networkText(edited)});
     }
     return list;
 }

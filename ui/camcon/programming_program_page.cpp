@@ -1,7 +1,6 @@
 #include "programming_program_page.h"
 #include "ui/camcon/camcon_jobs.h"
 
-#include "table_section_copies.h"
 #include "ui/change_marker.h"
 #include "ui/device_session.h"
 #include "ui/replace_edits_question.h"
@@ -49,7 +48,7 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     form->addRow(tr("Selection actual value:"), m_switchValue);
     QHBoxLayout* buttons = readWriteBar(ReadWriteBar(
         [this] {
-            const bool changed = m_workspace->tableSections()->programmingProgramChanged();
+            const bool changed = m_workspace->programmingProgram().isChanged();
             if (mayReplaceEdits(this, sectionTitle(), changed ? 1 : 0)) readFromDevice();
         },
         [this] { writeToDevice(); }));
@@ -63,22 +62,21 @@ ProgrammingProgramPage::ProgrammingProgramPage(DeviceSession* session, Workspace
     connect(m_program, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::takeFields);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &ProgrammingProgramPage::takeFields);
     connect(m_switchValue, &QSpinBox::valueChanged, this, &ProgrammingProgramPage::takeFields);
-    connect(m_workspace->tableSections(), &TableSectionCopies::changed, this,
+    connect(m_workspace, &Workspace::tableSectionsChanged, this,
             &ProgrammingProgramPage::showCopies);
     showCopies();
 }
 
 void ProgrammingProgramPage::takeFields() {
     // Fields never read or loaded are not a value anybody wants.
-    if (m_workspace->tableSections()->programmingProgram())
-        m_workspace->tableSections()->editProgrammingProgram(edited());
+    if (m_workspace->programmingProgram().value())
+        m_workspace->programmingProgram().edit(edited());
     else
         refreshMarks();
 }
 
 void ProgrammingProgramPage::showCopies() {
-    const std::optional<ProgrammingProgram> shown =
-        m_workspace->tableSections()->programmingProgram();
+    const std::optional<ProgrammingProgram> shown = m_workspace->programmingProgram().value();
     if (shown && !(*shown == edited())) {
         const QSignalBlocker program(m_program);
         const QSignalBlocker mode(m_mode);
@@ -91,7 +89,7 @@ void ProgrammingProgramPage::showCopies() {
 void ProgrammingProgramPage::refreshMarks() {
     const ProgrammingProgram now = edited();
     const std::optional<ProgrammingProgram>& device =
-        m_workspace->tableSections()->deviceProgrammingProgram();
+        m_workspace->programmingProgram().deviceValue();
     const auto mark = [](QWidget* field, bool changed, const QString& onDevice) {
         QFont font = field->font();
         font.setBold(changed);
@@ -103,7 +101,7 @@ void ProgrammingProgramPage::refreshMarks() {
     if (!device) {
         // Values never read are not the device's: say so instead of
         // showing the fields' zeros as if they were.
-        m_state->setText(m_workspace->tableSections()->programmingProgramChanged()
+        m_state->setText(m_workspace->programmingProgram().isChanged()
                              ? changedMarker() + tr("From the project, not read from the "
                                                     "device: write it or read the device.")
                              : tr("Not read from the device yet: the values shown are not the "
@@ -142,9 +140,8 @@ void ProgrammingProgramPage::readFromDevice() {
                                          .arg(programming.error().message));
                 return;
             }
-            TableSectionCopies* copies = m_workspace->tableSections();
-            copies->dropProgrammingEdit();
-            copies->setDeviceProgrammingProgram(*programming);
+            // The person chose to replace their edit.
+            m_workspace->programmingProgram().merge(*programming, ValueSource::Device, false);
             m_workspace->setReadTime(ProjectPart::ProgrammingProgram,
                                      QDateTime::currentDateTimeUtc());
         });
@@ -155,12 +152,12 @@ void ProgrammingProgramPage::writeToDevice(std::function<void(const WriteResult&
 }
 
 QList<SectionDifference> ProgrammingProgramPage::differences() const {
-    const TableSectionCopies& copies = *m_workspace->tableSections();
-    if (!copies.programmingProgramChanged()) return {};
-    const std::optional<ProgrammingProgram>& device = copies.deviceProgrammingProgram();
+    if (!m_workspace->programmingProgram().isChanged()) return {};
+    const std::optional<ProgrammingProgram>& device =
+        m_workspace->programmingProgram().deviceValue();
     return {{WorkspaceItem::programmingProgram(), sectionTitle(),
              device ? usecases::programmingProgramText(*device) : tr("not read"),
-             usecases::programmingProgramText(*copies.programmingProgram())}};
+             usecases::programmingProgramText(*m_workspace->programmingProgram().value())}};
 }
 
 }  // namespace cambench

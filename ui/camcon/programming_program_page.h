@@ -18,7 +18,7 @@ class Workspace;
 // The programming program of the table interface (area 201 words 70..73):
 // the program whose cams the table's areas 1..200 read and write, and how
 // the device changes to it. The values live in the workspace
-// (TableSectionCopies), so a project saves them and Compare lists them.
+// (Workspace::programmingProgram), so a project saves them and Compare lists them.
 class ProgrammingProgramPage : public CamConSectionPage {
     Q_OBJECT
 public:

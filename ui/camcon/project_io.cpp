@@ -1,6 +1,5 @@
 #include "project_io.h"
 
-#include "table_section_copies.h"
 #include "workspace.h"
 
 #include "ui/camcon/cameditor/cam_document.h"
@@ -30,31 +29,31 @@ Project projectFromWorkspace(const Workspace& workspace) {
                 project.readAt.parts.insert(part, read.parts.value(part));
         }
     }
-    project.settings = workspace.settings();
-    if (workspace.changedSettings().isEmpty() && read.parts.contains(ProjectPart::Settings))
+    project.settings = workspace.settings().shown();
+    if (workspace.settings().changedCount() == 0 && read.parts.contains(ProjectPart::Settings))
         project.readAt.parts.insert(ProjectPart::Settings, read.parts.value(ProjectPart::Settings));
     for (const Workspace::EditedUser& user : workspace.users()) project.users.append(user.user);
     if (workspace.userEditCount() == 0 && read.parts.contains(ProjectPart::Users))
         project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
-    project.plcNetworks = workspace.plcNetworks().values();
-    // As the Dead-time modes page has them, edits included.
-    project.deadTimeModes = workspace.deadTimeModes();
-    if (!workspace.deadTimeModesEdited() && read.parts.contains(ProjectPart::DeadTimeModes))
+    project.plcNetworks = workspace.plc().shown().values();
+    // As the Dead-time modes page shows them, edits included.
+    project.deadTimeModes = workspace.deadTimeModes().shown();
+    if (workspace.deadTimeModes().changedCount() == 0 &&
+        read.parts.contains(ProjectPart::DeadTimeModes))
         project.readAt.parts.insert(ProjectPart::DeadTimeModes,
                                     read.parts.value(ProjectPart::DeadTimeModes));
-    // The other table-interface sections, as their pages show them.
-    const TableSectionCopies& table = *workspace.tableSections();
-    project.analogueCams = table.shownAnalogueCams();
-    project.programmingProgram = table.programmingProgram();
-    project.eepromLock = table.eepromLock();
+    // The other table-interface sections, as their pages show them.    project.analogueCams =
+    // workspace.analogueCams().shown().values();
+    project.programmingProgram = workspace.programmingProgram().value();
+    project.eepromLock = workspace.eepromLock().value();
     const auto stampIf = [&](ProjectPart part, bool edited) {
         if (!edited && read.parts.contains(part))
             project.readAt.parts.insert(part, read.parts.value(part));
     };
-    stampIf(ProjectPart::AnalogueCams, !table.changedAnalogueOutputs().isEmpty());
-    stampIf(ProjectPart::ProgrammingProgram, table.programmingProgramChanged());
-    stampIf(ProjectPart::EepromLock, table.eepromLockChanged());
-    if (workspace.changedPlcNetworks().isEmpty() && read.parts.contains(ProjectPart::PlcNetworks))
+    stampIf(ProjectPart::AnalogueCams, !workspace.analogueCams().changedKeys().isEmpty());
+    stampIf(ProjectPart::ProgrammingProgram, workspace.programmingProgram().isChanged());
+    stampIf(ProjectPart::EepromLock, workspace.eepromLock().isChanged());
+    if (workspace.plc().changedCount() == 0 && read.parts.contains(ProjectPart::PlcNetworks))
         project.readAt.parts.insert(ProjectPart::PlcNetworks,
                                     read.parts.value(ProjectPart::PlcNetworks));
     return project;

@@ -125,7 +125,10 @@ void SettingsPage::buildForm() {
                 const QString key = QString::fromLatin1(spec->key);
                 m_fields.insert(key, field);
                 m_pageOfKey.insert(key, m_pages->count());
-                connect(field, &SettingField::valueEdited, m_workspace, &Workspace::setSetting);
+                connect(field, &SettingField::valueEdited, m_workspace,
+                        [this](const QString& key, const QVariant& value) {
+                            m_workspace->settings().edit(key, value);
+                        });
             }
             column->addWidget(box);
         }
@@ -143,8 +146,8 @@ void SettingsPage::showSetting(const QString& key) {
 }
 
 void SettingsPage::showValues() {
-    const SystemSettings& settings = m_workspace->settings();
-    const SystemSettings& device = m_workspace->deviceSettings();
+    const SystemSettings settings = m_workspace->settings().shown();
+    const SystemSettings& device = m_workspace->settings().device();
     for (auto it = m_fields.cbegin(); it != m_fields.cend(); ++it) {
         const QVariant value = settings.value(it.key());
         if (value.isValid() && value != it.value()->value()) it.value()->setValue(value);
@@ -161,19 +164,20 @@ void SettingsPage::readFromDevice() {
 }
 
 int SettingsPage::itemCount() const {
-    return int(m_workspace->settings().size());
+    return int(m_workspace->settings().shown().size());
 }
 
 QList<SectionDifference> SettingsPage::differences() const {
     QList<SectionDifference> list;
-    const SystemSettings& device = m_workspace->deviceSettings();
-    for (const QString& key : m_workspace->changedSettings()) {
+    const SystemSettings& device = m_workspace->settings().device();
+    for (const QString& key : m_workspace->settings().changedKeys()) {
         const SettingSpec* spec = findSetting(key);
         if (!spec) continue;
         list.append({WorkspaceItem::setting(key), SettingField::labelText(*spec),
                      device.contains(key) ? SettingField::displayText(*spec, device.value(key))
                                           : tr("not read"),
-                     SettingField::displayText(*spec, m_workspace->settings().value(key))});
+                     SettingField::displayText(
+                         *spec, m_workspace->settings().value(key).value_or(QVariant()))});
     }
     return list;
 }

@@ -5,8 +5,6 @@ include(${CMAKE_CURRENT_LIST_DIR}/cameditor/sources.cmake)
 target_sources(cambench_ui PRIVATE
   camcon/workspace.h
   camcon/workspace.cpp
-  camcon/table_section_copies.h
-  camcon/table_section_copies.cpp
   camcon/workspace_item.h
   camcon/camcon_section_page.h
   camcon/camcon_section_page.cpp
@@ -26,7 +24,6 @@ target_sources(cambench_ui PRIVATE
   camcon/write_plan_builder.cpp
   camcon/device_writer.h
   camcon/device_writer.cpp
-  camcon/carry_over.h
   camcon/device_change_dialog.h
   camcon/device_change_dialog.cpp
   camcon/replace_edits_dialog.h

@@ -157,10 +157,12 @@ Axis TimingBar::axis() const {
 double TimingBar::sliderTop() const {
     double top =
         axis().rotary ? kDefaultRotaryTop : kLinearAxisLengthsPerSecond * double(axis().span());
-    if (m_workspace->settingsKnown()) {
+    if (m_workspace->settings().known()) {
         bool ok = false;
-        const double hundredPercent =
-            m_workspace->settings().value(QStringLiteral("speed100Percent")).toDouble(&ok);
+        const double hundredPercent = m_workspace->settings()
+                                          .value(QStringLiteral("speed100Percent"))
+                                          .value_or(QVariant())
+                                          .toDouble(&ok);
         if (ok && hundredPercent > 0) top = hundredPercent;
     }
     return std::max(top, m_speed->value());
@@ -186,9 +188,10 @@ void TimingBar::recompute() {
     const CamDocument* cams = m_workspace->cams();
     const Axis a = axis();
     const double v = toPositionsPerSecond(m_speed->value(), a);
-    m_timing = timeProgram(cams->program(m_editor->currentProgram()),
-                           deadTimesAsModes(cams->deadTimes(), m_workspace->deadTimeModes()), v, a,
-                           cams->minimumPulses());
+    m_timing =
+        timeProgram(cams->program(m_editor->currentProgram()),
+                    deadTimesAsModes(cams->deadTimes(), m_workspace->deadTimeModes().shown()), v, a,
+                    cams->minimumPulses());
     diagram->setTiming(m_timing, speedText(v, a));
     const QString text = summary();
     m_summary->setText(text);

@@ -1,7 +1,5 @@
 #include "workspace.h"
 
-#include "table_section_copies.h"
-
 #include "ui/camcon/cameditor/cam_document.h"
 
 #include <algorithm>
@@ -26,19 +24,32 @@ const User* findByName(const QList<User>& users, const QString& name) {
 
 }  // namespace
 
-Workspace::Workspace(QObject* parent)
-    : QObject(parent),
-      m_cams(new CamDocument(this)),
-      m_tableSections(new TableSectionCopies(this)) {
+template <class Self, class Visit>
+void Workspace::forEachSection(Self& self, Visit visit) {
+    visit(self.m_settings, ProjectPart::Settings, &Workspace::settingsChanged);
+    visit(self.m_plc, ProjectPart::PlcNetworks, &Workspace::plcChanged);
+    visit(self.m_deadTimeModes, ProjectPart::DeadTimeModes, &Workspace::deadTimeModesChanged);
+    visit(self.m_analogueCams, ProjectPart::AnalogueCams, &Workspace::tableSectionsChanged);
+    visit(self.m_programmingProgram, ProjectPart::ProgrammingProgram,
+          &Workspace::tableSectionsChanged);
+    visit(self.m_eepromLock, ProjectPart::EepromLock, &Workspace::tableSectionsChanged);
+}
+
+Workspace::Workspace(QObject* parent) : QObject(parent), m_cams(new CamDocument(this)) {
     m_cams->setLimits(m_info, true);
     connect(m_cams, &CamDocument::changedCountChanged, this, &Workspace::notifyChanged);
+    forEachSection(*this, [this](auto& section, ProjectPart, auto signal) {
+        section.onChange = [this, signal] {
+            Q_EMIT(this->*signal)();
+            notifyChanged();
+        };
+    });
     // The editor draws and checks cams on the axis the settings describe:
     // a linear axis has no wrapping cams.
     connect(this, &Workspace::settingsChanged, this, [this] {
-        if (m_cams->isRotary() != isRotaryAxis(m_settings))
-            m_cams->setLimits(m_info, isRotaryAxis(m_settings));
+        const bool rotary = isRotaryAxis(m_settings.shown());
+        if (m_cams->isRotary() != rotary) m_cams->setLimits(m_info, rotary);
     });
-    connect(m_tableSections, &TableSectionCopies::changed, this, &Workspace::notifyChanged);
 }
 
 Workspace::~Workspace() = default;
@@ -46,7 +57,7 @@ Workspace::~Workspace() = default;
 void Workspace::setInfo(const DeviceInfo& info, bool fromDevice) {
     m_info = info;
     m_infoFromDevice = fromDevice;
-    m_cams->setLimits(info, isRotaryAxis(m_settings));
+    m_cams->setLimits(info, isRotaryAxis(m_settings.shown()));
     Q_EMIT infoChanged();
 }
 
@@ -58,26 +69,17 @@ void Workspace::setProjectPath(const QString& path) {
 
 void Workspace::clear(const DeviceInfo& info) {
     m_cams->clear();
-    m_tableSections->clear();
-    m_deadTimeModes.clear();
-    m_deviceDeadTimeModes.clear();
+    forEachSection(*this, [](auto& section, ProjectPart, auto) { section.clear(); });
     m_readAt = {};
-    m_settings.clear();
-    m_deviceSettings.clear();
-    m_settingsKnown = false;
     m_users.clear();
     m_deviceUsers.clear();
     m_usersKnown = false;
-    m_plc.clear();
-    m_devicePlc.clear();
     m_copiesFrom.reset();
     m_fingerprintKnown = false;
     m_carriedFrom.reset();
     clearOtherDeviceNote();
     setInfo(info, false);
-    Q_EMIT settingsChanged();
     Q_EMIT usersChanged();
-    Q_EMIT plcChanged();
     Q_EMIT readTimesChanged();
     notifyChanged();
 }
@@ -132,52 +134,6 @@ void Workspace::mergeOutputSettings(const QMap<int, QString>& names, const DeadT
 
 int Workspace::outputSettingsEditCount() const {
     return m_cams->outputSettingsEditCount();
-}
-
-// --- settings
-
-void Workspace::mergeSettings(const SystemSettings& settings, ValueSource source, bool keepEdits) {
-    const QStringList edited = changedSettings();
-    if (source == ValueSource::Device) {
-        // A key this device did not give (another protocol's, such as the
-        // encoder texts only the ASCII protocol reaches) that only copied an
-        // earlier read is no edit and not this device's state: it goes.
-        // An edit stays, counted, for the write to refuse or send.
-        for (const QString& key : m_settings.keys()) {
-            if (!settings.contains(key) && !edited.contains(key)) m_settings.remove(key);
-        }
-        m_deviceSettings = settings;
-        m_settingsKnown = true;
-    }
-    for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
-        if (keepEdits && edited.contains(it.key())) continue;
-        m_settings.insert(it.key(), it.value());
-    }
-    Q_EMIT settingsChanged();
-    notifyChanged();
-}
-
-void Workspace::setSetting(const QString& key, const QVariant& value) {
-    if (m_settings.value(key) == value) return;
-    m_settings.insert(key, value);
-    Q_EMIT settingsChanged();
-    notifyChanged();
-}
-
-void Workspace::setDeviceSettings(const SystemSettings& values) {
-    for (auto it = values.cbegin(); it != values.cend(); ++it)
-        m_deviceSettings.insert(it.key(), it.value());
-    Q_EMIT settingsChanged();
-    notifyChanged();
-}
-
-QStringList Workspace::changedSettings() const {
-    QStringList keys;
-    for (auto it = m_settings.cbegin(); it != m_settings.cend(); ++it) {
-        if (!m_deviceSettings.contains(it.key()) || m_deviceSettings.value(it.key()) != it.value())
-            keys << it.key();
-    }
-    return keys;
 }
 
 // --- users
@@ -320,83 +276,44 @@ void Workspace::setDeviceUser(int index, const QString& deviceNumber,
 
 // --- PLC
 
+QMap<int, PlcNetwork> Workspace::plcByKey(const QList<PlcNetwork>& networks) {
+    QMap<int, PlcNetwork> byKey;
+    for (const PlcNetwork& network : networks)
+        byKey.insert(plcKey(network.area, network.number), network);
+    return byKey;
+}
+
 PlcNetwork Workspace::plcNetwork(int area, int number) const {
     PlcNetwork empty;
     empty.area = area;
     empty.number = number;
-    return m_plc.value(plcKey(area, number), empty);
-}
-
-void Workspace::mergePlcNetworks(const QList<PlcNetwork>& networks, ValueSource source,
-                                 bool keepEdits) {
-    const QList<int> edited = changedPlcNetworks();
-    for (const PlcNetwork& network : networks) {
-        const int key = plcKey(network.area, network.number);
-        if (source == ValueSource::Device) m_devicePlc.insert(key, network);
-        if (!(keepEdits && edited.contains(key))) m_plc.insert(key, network);
-    }
-    Q_EMIT plcChanged();
-    notifyChanged();
-}
-
-void Workspace::setPlcNetwork(const PlcNetwork& network) {
-    const int key = plcKey(network.area, network.number);
-    if (m_plc.contains(key) && m_plc.value(key) == network) return;
-    m_plc.insert(key, network);
-    Q_EMIT plcChanged();
-    notifyChanged();
-}
-
-bool Workspace::isPlcNetworkChanged(int key) const {
-    return !m_devicePlc.contains(key) || !(m_devicePlc.value(key) == m_plc.value(key));
-}
-
-QList<int> Workspace::changedPlcNetworks() const {
-    QList<int> keys;
-    for (auto it = m_plc.cbegin(); it != m_plc.cend(); ++it) {
-        if (isPlcNetworkChanged(it.key())) keys << it.key();
-    }
-    return keys;
-}
-
-void Workspace::setDevicePlcNetwork(const PlcNetwork& network) {
-    m_devicePlc.insert(plcKey(network.area, network.number), network);
-    Q_EMIT plcChanged();
-    notifyChanged();
+    return m_plc.value(plcKey(area, number)).value_or(empty);
 }
 
 // --- totals
 
 int Workspace::changedCount() const {
-    return m_cams->changedCount() + int(changedSettings().size()) + userEditCount() +
-           int(changedPlcNetworks().size()) + int(changedDeadTimeModes().size()) +
-           m_tableSections->changedCount();
+    int count = m_cams->changedCount() + userEditCount();
+    forEachSection(*this, [&count](const auto& section, ProjectPart, auto) {
+        count += section.changedCount();
+    });
+    return count;
 }
 
-void Workspace::takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice) {
-    if (!fromDevice) m_deadTimeModes = modes;
-    Q_EMIT deadTimeModesIncoming(modes, fromDevice);
-}
-
-void Workspace::setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime) {
-    m_deviceDeadTimeModes.insert(output, deadTime);
-    // The page keeps the device's copy and its edits: it takes it from here.
-    Q_EMIT deadTimeModesIncoming(m_deviceDeadTimeModes, true);
-}
-
-void Workspace::noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice) {
-    m_deadTimeModes = edited;
-    m_deviceDeadTimeModes = onDevice;
-    notifyChanged();
-}
-
-QList<int> Workspace::changedDeadTimeModes() const {
-    QList<int> outputs;
-    for (auto it = m_deadTimeModes.cbegin(); it != m_deadTimeModes.cend(); ++it) {
-        const auto device = m_deviceDeadTimeModes.constFind(it.key());
-        if (device == m_deviceDeadTimeModes.cend() || *device != *it) outputs << it.key();
+void Workspace::mergeDeadTimeModes(const DeadTimeModes& modes, ValueSource source, bool keepEdits) {
+    if (source == ValueSource::Device) {
+        for (const int output : m_deadTimeModes.changedKeys()) {
+            if (!modes.contains(output)) m_deadTimeModes.dropEdit(output);
+        }
+        m_deadTimeModes.mergeWhole(modes, keepEdits);
+        return;
     }
-    return outputs;
+    const DeadTimeModes& device = m_deadTimeModes.device();
+    DeadTimeModes shown = modes;
+    for (const int output : modes.keys()) {
+        if (!device.isEmpty() && !device.contains(output)) shown.remove(output);
+    }
+    m_deadTimeModes.merge(shown, source, keepEdits);
 }
 
 // --- which device the copies are from
@@ -413,12 +330,10 @@ bool Workspace::copiesAreFrom(const DeviceInfo& now) const {
 void Workspace::forgetDeviceCopies(const QString& note, CarryOver carry) {
     const std::optional<DeviceInfo> from = m_copiesFrom;
     m_cams->forgetDeviceCopies(carry);
-    m_tableSections->forgetDeviceCopies(carry);
-    forgetDeviceDeadTimeModes(carry);
-    m_readAt = {};
-    forgetDeviceSettings(carry);
+    forEachSection(*this,
+                   [carry](auto& section, ProjectPart, auto) { section.forgetDevice(carry); });
     forgetDeviceUsers(carry);
-    forgetDevicePlcNetworks(carry);
+    m_readAt = {};
     m_copiesFrom.reset();
     m_fingerprintKnown = false;
     m_carriedFrom.reset();
@@ -429,28 +344,19 @@ void Workspace::forgetDeviceCopies(const QString& note, CarryOver carry) {
     notifyChanged();
 }
 
-void Workspace::forgetDeviceDeadTimeModes(CarryOver carry) {
-    DeadTimeModes carried;
-    const QList<int> changed = changedDeadTimeModes();
-    for (auto it = m_deadTimeModes.cbegin(); it != m_deadTimeModes.cend(); ++it) {
-        if (carry == CarryOver::Everything ||
-            (carry == CarryOver::Changes && changed.contains(it.key())))
-            carried.insert(it.key(), *it);
-    }
-    m_deadTimeModes = carried;
-    m_deviceDeadTimeModes.clear();
-    m_readAt.parts.remove(ProjectPart::DeadTimeModes);
-    Q_EMIT deadTimeModesForgotten(carried);
+void Workspace::forgetDeviceSection(ProjectPart part) {
+    if (part == ProjectPart::Users) forgetDeviceUsers(CarryOver::Changes);
+    forEachSection(*this, [part](auto& section, ProjectPart its, auto) {
+        if (its == part) section.forgetDevice(CarryOver::Changes);
+    });
+    m_readAt.parts.remove(part);
+    Q_EMIT readTimesChanged();
 }
 
 void Workspace::forgetDeviceTableSections() {
-    forgetDeviceDeadTimeModes(CarryOver::Changes);
-    m_tableSections->forgetDeviceCopies(CarryOver::Changes);
-    for (ProjectPart part :
-         {ProjectPart::AnalogueCams, ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
-        m_readAt.parts.remove(part);
-    Q_EMIT readTimesChanged();
-    notifyChanged();
+    for (ProjectPart part : {ProjectPart::DeadTimeModes, ProjectPart::AnalogueCams,
+                             ProjectPart::ProgrammingProgram, ProjectPart::EepromLock})
+        forgetDeviceSection(part);
 }
 
 bool Workspace::awaitsCarried(ProjectPart part) const {
@@ -459,19 +365,6 @@ bool Workspace::awaitsCarried(ProjectPart part) const {
 
 bool Workspace::awaitsCarriedProgram(int program) const {
     return m_carriedFrom && !m_readAt.programs.contains(program);
-}
-
-void Workspace::forgetDeviceSettings(CarryOver carry) {
-    const QStringList edited = changedSettings();
-    for (const QString& key : m_settings.keys()) {
-        if (carry == CarryOver::Nothing || (carry == CarryOver::Changes && !edited.contains(key)))
-            m_settings.remove(key);
-    }
-    m_deviceSettings.clear();
-    m_settingsKnown = false;
-    m_readAt.parts.remove(ProjectPart::Settings);
-    Q_EMIT settingsChanged();
-    notifyChanged();
 }
 
 void Workspace::forgetDeviceUsers(CarryOver carry) {
@@ -487,18 +380,6 @@ void Workspace::forgetDeviceUsers(CarryOver carry) {
     m_usersKnown = false;
     m_readAt.parts.remove(ProjectPart::Users);
     Q_EMIT usersChanged();
-    notifyChanged();
-}
-
-void Workspace::forgetDevicePlcNetworks(CarryOver carry) {
-    const QList<int> edited = changedPlcNetworks();
-    for (const int key : m_plc.keys()) {
-        if (carry == CarryOver::Nothing || (carry == CarryOver::Changes && !edited.contains(key)))
-            m_plc.remove(key);
-    }
-    m_devicePlc.clear();
-    m_readAt.parts.remove(ProjectPart::PlcNetworks);
-    Q_EMIT plcChanged();
     notifyChanged();
 }
 

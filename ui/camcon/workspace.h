@@ -1,39 +1,36 @@
 #pragma once
 
+#include "model/camcon/analogue_cams.h"
+#include "model/camcon/dead_time_modes.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
 #include "model/camcon/plc_network.h"
+#include "model/camcon/programming_program.h"
 #include "model/camcon/project_file.h"
+#include "model/camcon/section_copies.h"
 #include "model/camcon/system_settings.h"
 #include "model/camcon/user.h"
 
 #include <QList>
 #include <QMap>
-
 #include <QObject>
-#include "model/camcon/dead_time_modes.h"
-#include "ui/camcon/carry_over.h"
 
 #include <optional>
 
 namespace cambench {
 
 class CamDocument;
-class TableSectionCopies;
-
-// Where values that replace the workspace's come from. A device read also
-// replaces the device copy; a file (a project) only the edited state.
-enum class ValueSource { Device, File };
 
 // Everything the user works on for one device, beside what the device holds
 // (the copy last read from or written to it). Lives outside the main window,
 // so a reconnect, a language switch (which rebuilds the window) or a failed
 // read never loses an unwritten edit. Cam programs, names and dead times are
-// in the cam editor's CamDocument; settings, users and PLC networks here.
+// in the cam editor's CamDocument; settings, users, PLC networks and the
+// table interface's sections here.
 //
 // One rule for values that arrive (a read, an opened project): with
 // `keepEdits`, an item the user edited keeps the edit and every other item
-// takes the new value; without, every item takes it.
+// takes the new value; without, every item takes it (SectionCopies::merge).
 class Workspace : public QObject {
     Q_OBJECT
 public:
@@ -69,15 +66,13 @@ public:
                              ValueSource source, bool keepEdits);
     int outputSettingsEditCount() const;
 
-    // --- Encoder & system settings (keys of settingSpecs())
-    const SystemSettings& settings() const { return m_settings; }
-    const SystemSettings& deviceSettings() const { return m_deviceSettings; }
-    bool settingsKnown() const { return m_settingsKnown; }
-    void mergeSettings(const SystemSettings& settings, ValueSource source, bool keepEdits);
-    void setSetting(const QString& key, const QVariant& value);
-    // After a write: the device holds these values now.
-    void setDeviceSettings(const SystemSettings& values);
-    QStringList changedSettings() const;
+    // --- The sections with an edited copy beside the device's, one shape
+    // each (SectionCopies); a change of one emits its signal below.
+    // Encoder & system settings, key = a key of settingSpecs(). A device's
+    // values are its whole section (mergeWhole).
+    using SettingsCopies = SectionCopies<QString, QVariant>;
+    SettingsCopies& settings() { return m_settings; }
+    const SettingsCopies& settings() const { return m_settings; }
 
     // --- Users. Each edited user remembers the number it has on the device
     // (empty for a user not yet written); a device user without an edited
@@ -103,33 +98,35 @@ public:
 
     // --- PLC networks, key = plcKey(area, number)
     static int plcKey(int area, int number) { return (area << 8) | number; }
-    const QMap<int, PlcNetwork>& plcNetworks() const { return m_plc; }
-    const QMap<int, PlcNetwork>& devicePlcNetworks() const { return m_devicePlc; }
+    using PlcCopies = SectionCopies<int, PlcNetwork>;
+    PlcCopies& plc() { return m_plc; }
+    const PlcCopies& plc() const { return m_plc; }
+    static QMap<int, PlcNetwork> plcByKey(const QList<PlcNetwork>& networks);
+    // As shown, or an empty network of that place.
     PlcNetwork plcNetwork(int area, int number) const;
-    void mergePlcNetworks(const QList<PlcNetwork>& networks, ValueSource source, bool keepEdits);
-    void setPlcNetwork(const PlcNetwork& network);
-    bool isPlcNetworkChanged(int key) const;
-    QList<int> changedPlcNetworks() const;
-    void setDevicePlcNetwork(const PlcNetwork& network);
 
-    // --- Dead-time modes (table interface). The Dead-time modes page holds
-    // the device's copy and the edits; the workspace holds the values as
-    // edited, so that a project saves them, and passes modes that arrive
-    // from a project file (or a read of everything) to the page.
-    const DeadTimeModes& deadTimeModes() const { return m_deadTimeModes; }
-    void takeDeadTimeModes(const DeadTimeModes& modes, bool fromDevice);
-    // The page's values as edited and its copy of the device's.
-    void noteDeadTimeModes(const DeadTimeModes& edited, const DeadTimeModes& onDevice);
-    const DeadTimeModes& deviceDeadTimeModes() const { return m_deviceDeadTimeModes; }
-    bool deadTimeModesEdited() const { return m_deadTimeModes != m_deviceDeadTimeModes; }
-    // Outputs whose mode as edited differs from the device's copy (or whose
-    // device value is not known).
-    QList<int> changedDeadTimeModes() const;
-    // After a write: the device holds `deadTime` for `output` now.
-    void setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime);
+    // --- Dead-time modes (table interface), key = output (1-based). The
+    // Dead-time modes page shows and edits them here.
+    using DeadTimeModeCopies = SectionCopies<int, OutputDeadTime>;
+    DeadTimeModeCopies& deadTimeModes() { return m_deadTimeModes; }
+    const DeadTimeModeCopies& deadTimeModes() const { return m_deadTimeModes; }
+    // Modes that arrive, by merge()'s rule; a device's are its whole
+    // section. Only outputs the device has keep or take an edit once it was
+    // read (the page has no row to show another in).
+    void mergeDeadTimeModes(const DeadTimeModes& modes, ValueSource source, bool keepEdits);
 
-    // --- Analogue cams, programming program, EEPROM lock (table interface).
-    TableSectionCopies* tableSections() const { return m_tableSections; }
+    // --- The table interface's other sections; a change of any emits
+    // tableSectionsChanged. Analogue cams, key = analogue output 1..14.
+    using AnalogueCamCopies = SectionCopies<int, AnalogueCamTrack>;
+    AnalogueCamCopies& analogueCams() { return m_analogueCams; }
+    const AnalogueCamCopies& analogueCams() const { return m_analogueCams; }
+    SingleCopy<ProgrammingProgram>& programmingProgram() { return m_programmingProgram; }
+    const SingleCopy<ProgrammingProgram>& programmingProgram() const {
+        return m_programmingProgram;
+    }
+    // true: locked.
+    SingleCopy<bool>& eepromLock() { return m_eepromLock; }
+    const SingleCopy<bool>& eepromLock() const { return m_eepromLock; }
 
     // Every item that differs from the device, across all sections.
     int changedCount() const;
@@ -153,10 +150,8 @@ public:
     // read of everything.
     void forgetDeviceCopies(const QString& note, CarryOver carry);
     // A section the connected protocol lacks: its device copy is not this
-    // device's state and is forgotten, edits stay.
-    void forgetDeviceUsers(CarryOver carry = CarryOver::Changes);
-    void forgetDeviceSettings(CarryOver carry = CarryOver::Changes);
-    void forgetDevicePlcNetworks(CarryOver carry = CarryOver::Changes);
+    // device's state and is forgotten with its read time, edits stay.
+    void forgetDeviceSection(ProjectPart part);
     // The table interface's sections (dead-time modes, analogue cams,
     // programming program, EEPROM lock) on a protocol without them.
     void forgetDeviceTableSections();
@@ -180,20 +175,20 @@ Q_SIGNALS:
     void settingsChanged();
     void usersChanged();
     void plcChanged();
+    void deadTimeModesChanged();
+    void tableSectionsChanged();
     void readTimesChanged();
     void changedCountChanged(int count);
     void otherDeviceNoteChanged();
-    // Modes from a project file (edits for the page) or from the device.
-    void deadTimeModesIncoming(const DeadTimeModes& modes, bool fromDevice);
-    // Another device: the page forgets its copy and keeps `carried` as edits
-    // for the new device's rows.
-    void deadTimeModesForgotten(const DeadTimeModes& carried);
 
 private:
     void notifyChanged();
-    void forgetDeviceDeadTimeModes(CarryOver carry);
-    DeadTimeModes m_deadTimeModes;
-    DeadTimeModes m_deviceDeadTimeModes;
+    void forgetDeviceUsers(CarryOver carry);
+    // Calls visit(section, the part its read time is kept under, its
+    // signal) for each of the sections in the one shape (self: this
+    // workspace, const or not).
+    template <class Self, class Visit>
+    static void forEachSection(Self& self, Visit visit);
     QString deviceNumberFor(const User& user) const;
     void mergeUsersFromFile(const QList<User>& users, bool keepEdits);
 
@@ -201,16 +196,16 @@ private:
     QString m_projectPath;
     bool m_infoFromDevice = false;
     CamDocument* m_cams;
-    TableSectionCopies* m_tableSections;
     ProjectReadTimes m_readAt;
-    SystemSettings m_settings;
-    SystemSettings m_deviceSettings;
-    bool m_settingsKnown = false;
+    SettingsCopies m_settings;
     QList<EditedUser> m_users;
     QList<User> m_deviceUsers;
     bool m_usersKnown = false;
-    QMap<int, PlcNetwork> m_plc;
-    QMap<int, PlcNetwork> m_devicePlc;
+    PlcCopies m_plc;
+    DeadTimeModeCopies m_deadTimeModes;
+    AnalogueCamCopies m_analogueCams;
+    SingleCopy<ProgrammingProgram> m_programmingProgram;
+    SingleCopy<bool> m_eepromLock;
     int m_lastCount = 0;
     std::optional<DeviceInfo> m_copiesFrom;
     bool m_fingerprintKnown = false;

@@ -1,6 +1,5 @@
 #include "write_plan_builder.h"
 
-#include "table_section_copies.h"
 #include "workspace.h"
 
 #include "ui/camcon/cameditor/cam_document.h"
@@ -41,7 +40,8 @@ QList<WorkspaceItem> expanded(const Workspace& workspace, const QList<WorkspaceI
 
 QList<WorkspaceItem> changedItems(const Workspace& workspace) {
     QList<WorkspaceItem> items;
-    for (const QString& key : workspace.changedSettings()) items << WorkspaceItem::setting(key);
+    for (const QString& key : workspace.settings().changedKeys())
+        items << WorkspaceItem::setting(key);
     const CamDocument* cams = workspace.cams();
     for (int program : cams->editedPrograms()) {
         const std::optional<CamProgram> device = cams->deviceProgram(program);
@@ -65,19 +65,18 @@ QList<WorkspaceItem> changedItems(const Workspace& workspace) {
     }
     for (const QString& number : workspace.deletedUserNumbers())
         items << WorkspaceItem::deletedUser(number);
-    for (int key : workspace.changedPlcNetworks()) items << WorkspaceItem::plcNetwork(key);
-    for (int output : workspace.changedDeadTimeModes())
+    for (int key : workspace.plc().changedKeys()) items << WorkspaceItem::plcNetwork(key);
+    for (int output : workspace.deadTimeModes().changedKeys())
         items << WorkspaceItem::deadTimeMode(output);
-    const TableSectionCopies& table = *workspace.tableSections();
-    for (int output : table.changedAnalogueOutputs()) items << WorkspaceItem::analogueCams(output);
-    if (table.programmingProgramChanged()) items << WorkspaceItem::programmingProgram();
-    if (table.eepromLockChanged()) items << WorkspaceItem::eepromLock();
+    for (int output : workspace.analogueCams().changedKeys())
+        items << WorkspaceItem::analogueCams(output);
+    if (workspace.programmingProgram().isChanged()) items << WorkspaceItem::programmingProgram();
+    if (workspace.eepromLock().isChanged()) items << WorkspaceItem::eepromLock();
     return items;
 }
 
 PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>& chosen) {
     const CamDocument* cams = workspace.cams();
-    const TableSectionCopies& table = *workspace.tableSections();
     PlannedWrite planned;
     usecases::WritePlan& plan = planned.plan;
     SystemSettings settings;
@@ -106,7 +105,8 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
                                                         cams->deviceOutputName(item.number)};
                 break;
             case WorkspaceItem::Kind::Setting:
-                settings.insert(item.key, workspace.settings().value(item.key));
+                settings.insert(item.key,
+                                workspace.settings().value(item.key).value_or(QVariant()));
                 break;
             case WorkspaceItem::Kind::User: {
                 if (item.number < 0 || item.number >= workspace.users().size()) break;
@@ -120,41 +120,37 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
                 planned.userIndex << -1;
                 break;
             case WorkspaceItem::Kind::DeadTimeMode: {
-                const DeadTimeModes& device = workspace.deviceDeadTimeModes();
+                const Workspace::DeadTimeModeCopies& modes = workspace.deadTimeModes();
                 plan.deadTimeModes << usecases::DeadTimeModeWrite{
-                    item.number, workspace.deadTimeModes().value(item.number),
-                    device.contains(item.number)
-                        ? std::optional<OutputDeadTime>(device.value(item.number))
-                        : std::nullopt};
+                    item.number, modes.value(item.number).value_or(OutputDeadTime{}),
+                    modes.deviceValue(item.number)};
                 break;
             }
             case WorkspaceItem::Kind::AnalogueCams:
-                if (const auto wanted = table.analogueCams(item.number))
+                if (const auto wanted = workspace.analogueCams().value(item.number))
                     plan.analogueCams << usecases::AnalogueCamWrite{
-                        *wanted, table.deviceAnalogueCams(item.number)};
+                        *wanted, workspace.analogueCams().deviceValue(item.number)};
                 break;
             case WorkspaceItem::Kind::ProgrammingProgram:
-                if (const auto wanted = table.programmingProgram())
+                if (const auto wanted = workspace.programmingProgram().value())
                     plan.programmingProgram = usecases::ProgrammingProgramWrite{
-                        *wanted, table.deviceProgrammingProgram()};
+                        *wanted, workspace.programmingProgram().deviceValue()};
                 break;
             case WorkspaceItem::Kind::EepromLock:
-                if (const auto wanted = table.eepromLock())
-                    plan.eepromLock = usecases::EepromLockWrite{*wanted, table.deviceEepromLock()};
+                if (const auto wanted = workspace.eepromLock().value())
+                    plan.eepromLock =
+                        usecases::EepromLockWrite{*wanted, workspace.eepromLock().deviceValue()};
                 break;
             case WorkspaceItem::Kind::PlcNetwork: {
-                const PlcNetwork wanted = workspace.plcNetworks().value(item.number);
-                const auto& device = workspace.devicePlcNetworks();
                 plan.plcNetworks << usecases::PlcWrite{
-                    wanted, device.contains(item.number)
-                                ? std::optional<PlcNetwork>(device.value(item.number))
-                                : std::nullopt};
+                    workspace.plc().value(item.number).value_or(PlcNetwork{}),
+                    workspace.plc().deviceValue(item.number)};
                 break;
             }
         }
     }
     if (!settings.isEmpty()) plan.settings = usecases::settingsGroups(settings);
-    if (workspace.settingsKnown()) plan.settingsOnDevice = workspace.deviceSettings();
+    if (workspace.settings().known()) plan.settingsOnDevice = workspace.settings().device();
     if (workspace.usersKnown()) plan.usersOnDevice = workspace.deviceUsers();
     return planned;
 }

@@ -15,3 +15,4 @@ cambench_add_truth_test(ui_truth_whole_device_test ui/camcon/truth/tst_whole_dev
 cambench_add_truth_test(ui_truth_report_and_counts_test ui/camcon/truth/tst_report_and_counts.cpp)
 cambench_add_truth_test(ui_truth_other_device_test ui/camcon/truth/tst_other_device.cpp)
 cambench_add_truth_test(ui_shell_typed_port_test ui/camcon/truth/tst_typed_port.cpp)
+cambench_add_test(ui_workspace_sections_test SOURCES ui/register_widgets.cpp ui/camcon/tst_workspace_sections.cpp LIBS cambench_ui cambench_gui_registry)

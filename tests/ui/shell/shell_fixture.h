@@ -77,7 +77,7 @@ inline bool waitForSections(Shell& shell) {
     CapabilityGate* users = gateOf(shell.window(), camConWindow(shell.window())->usersPage());
     return QTest::qWaitFor(
         [ws, users] {
-            return ws->outputSettingsKnown() && ws->settingsKnown() &&
+            return ws->outputSettingsKnown() && ws->settings().known() &&
                    (!users->isAvailable() || !ws->users().isEmpty());
         },
         kDeviceTimeoutMs);

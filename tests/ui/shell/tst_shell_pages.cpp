@@ -131,8 +131,8 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     const SettingSpec* spec = nullptr;
     for (const SettingSpec& s : settingSpecs()) {
         if (s.kind == SettingKind::Integer && !s.readOnly &&
-            ws->deviceSettings().contains(QString::fromLatin1(s.key)) &&
-            ws->deviceSettings().value(QString::fromLatin1(s.key)).toLongLong() < s.max) {
+            ws->settings().deviceValue(QString::fromLatin1(s.key)).value_or(s.max).toLongLong() <
+                s.max) {
             spec = &s;
             break;
         }
@@ -143,7 +143,7 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     auto* spin = qobject_cast<QSpinBox*>(field->editor());
     QVERIFY(spin);
     spin->setValue(spin->value() + 1);
-    QCOMPARE(ws->changedSettings(), QStringList{key});
+    QCOMPARE(ws->settings().changedKeys(), QStringList{key});
     QVERIFY(field->label()->text().startsWith(QStringLiteral("● ")));
 
     std::optional<WriteResult> result;
@@ -151,7 +151,7 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
     QVERIFY2(result->ok() && result->value().complete(), qPrintable(writeSummary(*result)));
     QCOMPARE(result->value().count(usecases::WriteState::Written), 1);
-    QVERIFY(ws->changedSettings().isEmpty());
+    QVERIFY(ws->settings().changedKeys().isEmpty());
     QVERIFY(!field->label()->text().startsWith(QStringLiteral("● ")));
 }
 
@@ -196,7 +196,7 @@ void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
     network.area = PlcNetwork::X;
     network.number = 2;
     network.symbols[0] = 0x0A00;
-    workspace.mergePlcNetworks({network}, ValueSource::Device, false);
+    workspace.plc().merge(Workspace::plcByKey({network}), ValueSource::Device, false);
     PlcMatrixModel model(&workspace);
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
     model.setNetwork(PlcNetwork::X, 2);
@@ -204,7 +204,7 @@ void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
     QVERIFY(model.setData(model.index(4, 5), QStringLiteral("ABCD")));
     QCOMPARE(workspace.plcNetwork(PlcNetwork::X, 2).symbols[29], quint16(0xABCD));
     QVERIFY(model.index(4, 5).data().toString().startsWith(QStringLiteral("● ")));
-    QCOMPARE(workspace.changedPlcNetworks(), QList<int>{Workspace::plcKey(PlcNetwork::X, 2)});
+    QCOMPARE(workspace.plc().changedKeys(), QList<int>{Workspace::plcKey(PlcNetwork::X, 2)});
 }
 
 void ShellPagesTest::languageSwitchShowsGermanLabels() {
@@ -281,7 +281,7 @@ void ShellPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
     offline.setInfo(saved.device, false);
     mergeIncoming(offline, saved, ValueSource::File, {});
     QCOMPARE(offline.cams()->program(0).tracks, camConWorkspace(*shell)->cams()->program(0).tracks);
-    QCOMPARE(offline.settings(), camConWorkspace(*shell)->settings());
+    QCOMPARE(offline.settings().shown(), camConWorkspace(*shell)->settings().shown());
     // Nothing of a loaded project is on a device yet.
     QVERIFY(offline.changedCount() > 0);
     // The same values; no read times: nothing of it was read from a device here.

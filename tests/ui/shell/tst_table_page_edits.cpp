@@ -13,7 +13,6 @@
 #include "ui/camcon/dead_time_modes_page.h"
 #include "ui/camcon/eeprom_lock_page.h"
 #include "ui/camcon/programming_program_page.h"
-#include "ui/camcon/table_section_copies.h"
 #include "ui/camcon/workspace.h"
 #include "ui/change_marker.h"
 #include "ui/language.h"
@@ -215,8 +214,9 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
     auto* lock = shell->window()->findChild<EepromLockPage*>();
     QTRY_VERIFY_WITH_TIMEOUT(lock->locked().has_value(), kDeviceTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(!camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
-    TableSectionCopies* copies = camConWorkspace(*shell)->tableSections();
-    QTRY_VERIFY_WITH_TIMEOUT(copies->deviceProgrammingProgram().has_value(), kDeviceTimeoutMs);
+    Workspace* workspace = camConWorkspace(*shell);
+    QTRY_VERIFY_WITH_TIMEOUT(workspace->programmingProgram().deviceValue().has_value(),
+                             kDeviceTimeoutMs);
 
     // A project that wants other analogue points, programming program and lock.
     QTemporaryDir dir;
@@ -234,9 +234,9 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
     QVERIFY(saveProject(path, wanted).ok());
     const auto keep = answerReplaceEdits(false);
     camConWindow(shell->window())->openProjectFile(path);
-    QVERIFY(copies->changedAnalogueOutputs().contains(7));
-    QVERIFY(copies->programmingProgramChanged());
-    QVERIFY(copies->eepromLockChanged());
+    QVERIFY(workspace->analogueCams().changedKeys().contains(7));
+    QVERIFY(workspace->programmingProgram().isChanged());
+    QVERIFY(workspace->eepromLock().isChanged());
 
     CompareDialog* compare = camConWindow(shell->window())->openCompare();
     QTRY_VERIFY_WITH_TIMEOUT(!compare->isReading(), kDeviceTimeoutMs);
@@ -262,11 +262,11 @@ void TablePageEditsTest::compareListsAndWritesTheTableSections() {
     // The lock came last: nothing before it was kept in RAM only.
     QVERIFY2(!compare->reportText().contains(QLatin1String("RAM only")),
              qPrintable(compare->reportText()));
-    QVERIFY(copies->changedAnalogueOutputs().isEmpty());
-    QVERIFY(!copies->programmingProgramChanged());
-    QVERIFY(!copies->eepromLockChanged());
+    QVERIFY(workspace->analogueCams().changedKeys().isEmpty());
+    QVERIFY(!workspace->programmingProgram().isChanged());
+    QVERIFY(!workspace->eepromLock().isChanged());
     QCOMPARE(lock->locked(), std::optional<bool>(true));
-    QCOMPARE(copies->deviceAnalogueCams(7),
+    QCOMPARE(workspace->analogueCams().deviceValue(7),
              std::optional<AnalogueCamTrack>(wanted.analogueCams.first()));
 
     // The report prints what the device holds now.
@@ -286,13 +286,13 @@ void TablePageEditsTest::settingsOfAnotherProtocolAreNoEdits() {
     const SystemSettings ascii{{QStringLiteral("encoderText1"), QStringLiteral("Main axis")},
                                {QStringLiteral("speedFactor"), 100000},
                                {QStringLiteral("actualValueFormat"), 1}};
-    workspace.mergeSettings(ascii, ValueSource::Device, true);
-    workspace.setSetting(QStringLiteral("actualValueFormat"), 2);  // edited by hand
-    QCOMPARE(workspace.changedSettings(), QStringList{QStringLiteral("actualValueFormat")});
+    workspace.settings().mergeWhole(ascii, true);
+    workspace.settings().edit(QStringLiteral("actualValueFormat"), 2);  // edited by hand
+    QCOMPARE(workspace.settings().changedKeys(), QStringList{QStringLiteral("actualValueFormat")});
     // The table interface has neither encoder texts nor the value format.
-    workspace.mergeSettings({{QStringLiteral("speedFactor"), 100000}}, ValueSource::Device, true);
-    QCOMPARE(workspace.changedSettings(), QStringList{QStringLiteral("actualValueFormat")});
-    QVERIFY(!workspace.settings().contains(QStringLiteral("encoderText1")));
+    workspace.settings().mergeWhole({{QStringLiteral("speedFactor"), 100000}}, true);
+    QCOMPARE(workspace.settings().changedKeys(), QStringList{QStringLiteral("actualValueFormat")});
+    QVERIFY(!workspace.settings().value(QStringLiteral("encoderText1")));
 }
 
 QTEST_MAIN(TablePageEditsTest)

@@ -5,7 +5,7 @@
 #include "model/camcon/cam_validation.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
-#include "ui/camcon/carry_over.h"
+#include "model/camcon/carry_over.h"
 
 #include <QList>
 #include <QMap>

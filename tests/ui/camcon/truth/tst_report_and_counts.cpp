@@ -326,13 +326,11 @@ void ReportAndCountsTest::reportShowsOnlyValuesOfTheConnectedDevice() {
     QSignalSpy done(camConWindow(shell->window()), &CamConWindow::everythingRead);
     camConWindow(shell->window())->readEverything(0);
     QVERIFY(done.wait(kDeviceTimeoutMs));
-    QTRY_VERIFY_WITH_TIMEOUT(!workspace->deviceDeadTimeModes().isEmpty(), kDeviceTimeoutMs);
-    const OutputDeadTime first = workspace->deadTimeModes().value(1);
+    QTRY_VERIFY_WITH_TIMEOUT(!workspace->deadTimeModes().device().isEmpty(), kDeviceTimeoutMs);
+    const OutputDeadTime first = workspace->deadTimeModes().value(1).value_or(OutputDeadTime{});
     OutputDeadTime edited = first;
     edited.normal += 10;
-    DeadTimeModes modes = workspace->deadTimeModes();
-    modes.insert(1, edited);
-    workspace->noteDeadTimeModes(modes, workspace->deviceDeadTimeModes());
+    workspace->deadTimeModes().edit(1, edited);
     QVERIFY(reportText(*workspace).contains(QStringLiteral("(device: ")));
 
     const comm::ProtocolInfo* cambus =
@@ -344,7 +342,7 @@ void ReportAndCountsTest::reportShowsOnlyValuesOfTheConnectedDevice() {
     shell->session()->connectTo(connection, comm::ProtocolSettingsPtr(cambus->makeSettings()));
     QTRY_VERIFY_WITH_TIMEOUT(shell->session()->isOnline() && shell->session()->deviceChecked(),
                              kDeviceTimeoutMs);
-    QVERIFY(workspace->deviceDeadTimeModes().isEmpty());
+    QVERIFY(workspace->deadTimeModes().device().isEmpty());
     const QString text = reportText(*workspace);
     const QString section = text.section(QStringLiteral("Dead-time modes"), 1);
     QVERIFY2(!section.isEmpty(), qPrintable(text));

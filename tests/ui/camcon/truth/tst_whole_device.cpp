@@ -98,7 +98,7 @@ void WholeDeviceTest::saveRightAfterStartWorksOnTheDemoDevice() {
     const Result<Project> loaded = loadProject(path);
     QVERIFY2(loaded.ok(), qPrintable(loaded.error().message));
     QVERIFY(!validateProject(*loaded).isEmpty());  // warned about, not refused
-    QCOMPARE(loaded->settings, camConWorkspace(*shell)->deviceSettings());
+    QCOMPARE(loaded->settings, camConWorkspace(*shell)->settings().device());
     QVERIFY(!loaded->users.isEmpty());
     QVERIFY(shell->window()->lastMessage().contains(QStringLiteral("outside")));
 }
@@ -153,20 +153,20 @@ void WholeDeviceTest::deviceValueOutsideTheRangeIsShownAsItIs() {
     for (const SettingSpec& spec : settingSpecs()) {
         const QString candidate = QString::fromLatin1(spec.key);
         if ((spec.kind == SettingKind::Integer || spec.kind == SettingKind::Fixed) &&
-            !spec.readOnly && ws->deviceSettings().contains(candidate) &&
-            ws->deviceSettings().value(candidate).toLongLong() < spec.min) {
+            !spec.readOnly &&
+            ws->settings().deviceValue(candidate).value_or(spec.min).toLongLong() < spec.min) {
             key = candidate;
             break;
         }
     }
     QVERIFY2(!key.isEmpty(), "the demo device holds a setting below its minimum");
     SettingField* field = camConWindow(shell->window())->settingsPage()->field(key);
-    QCOMPARE(field->value(), ws->deviceSettings().value(key));  // not clamped
-    QVERIFY(!field->problem().isEmpty());                       // flagged
+    QCOMPARE(field->value(), ws->settings().deviceValue(key).value_or(QVariant()));  // not clamped
+    QVERIFY(!field->problem().isEmpty());                                            // flagged
     QVERIFY(field->label()->text().contains(QStringLiteral("⚠")));
     QVERIFY(!field->isMarkedChanged());  // not an edit
     QVERIFY(!field->label()->text().startsWith(QStringLiteral("● ")));
-    QVERIFY(!ws->changedSettings().contains(key));
+    QVERIFY(!ws->settings().isChanged(key));
     QCOMPARE(ws->changedCount(), 0);
     QVERIFY(field->editor()->toolTip().contains(QStringLiteral("outside")));
 }
