@@ -15,6 +15,8 @@ target_sources(cambench_model PRIVATE
   camcon/programming_program.h
   camcon/programming_program.cpp
   camcon/user.h
+  camcon/user_copies.h
+  camcon/user_copies.cpp
   camcon/plc_network.h
   camcon/plc_network.cpp
   camcon/eeprom_image.h

@@ -52,7 +52,7 @@ QVariant AccessGridModel::data(const QModelIndex& index, int role) const {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
     const int output = outputAt(index);
     if (output == 0) return {};
-    const User& user = m_workspace->users().at(m_user).user;
+    const User user = m_workspace->users().row(m_user).user;
     switch (role) {
         case Qt::DisplayRole:
             return output;
@@ -73,16 +73,16 @@ bool AccessGridModel::setData(const QModelIndex& index, const QVariant& value, i
         return false;
     const int output = outputAt(index);
     if (output == 0) return false;
-    User user = m_workspace->users().at(m_user).user;
+    User user = m_workspace->users().row(m_user).user;
     if (user.outputAccess.size() < kAccessBits) user.outputAccess.resize(kAccessBits);
     user.outputAccess[output - 1] = value.toInt() == Qt::Checked;
-    m_workspace->setUser(m_user, user);
+    m_workspace->users().set(m_user, user);
     return true;
 }
 
 Qt::ItemFlags AccessGridModel::flags(const QModelIndex& index) const {
     if (!index.isValid() || outputAt(index) == 0) return Qt::NoItemFlags;
-    const bool all = m_workspace->users().at(m_user).user.allOutputs;
+    const bool all = m_workspace->users().row(m_user).user.allOutputs;
     return Qt::ItemIsEnabled | Qt::ItemIsSelectable |
            (all ? Qt::NoItemFlags : Qt::ItemIsUserCheckable);
 }

@@ -155,7 +155,7 @@ QList<TourStop> CamConWindow::standardTourStops(const QString& directory) {
         {QStringLiteral("05-users"),
          [this] { showSection(Users); },
          [this, ws] {
-             if (ws->users().isEmpty()) return false;
+             if (ws->users().size() == 0) return false;
              m_users->selectUser(0);
              return true;
          },

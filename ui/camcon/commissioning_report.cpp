@@ -401,7 +401,7 @@ private:
 
     QString users() const {
         QString html = heading(CommissioningReport::tr("Users")) + source(ProjectPart::Users);
-        if (m_workspace.users().isEmpty() && m_workspace.deletedUserNumbers().isEmpty())
+        if (m_workspace.users().size() == 0 && m_workspace.users().deletedNumbers().isEmpty())
             return html + paragraph(CommissioningReport::tr("No users."));
         html += paragraph(
             CommissioningReport::tr("User numbers are access codes: they are not printed."));
@@ -409,13 +409,13 @@ private:
             headerRow({CommissioningReport::tr("Name"), CommissioningReport::tr("Number"),
                        CommissioningReport::tr("Rights")});
         for (int i = 0; i < m_workspace.users().size(); ++i) {
-            const User& user = m_workspace.users().at(i).user;
+            const User user = m_workspace.users().row(i).user;
             const QString name =
-                m_workspace.userChanged(i) ? changedMarker() + user.name : user.name;
+                m_workspace.users().isChanged(i) ? changedMarker() + user.name : user.name;
             rows += row({name, user.maskedNumber(), UsersModel::rightsText(user.rights)});
         }
-        for (const QString& number : m_workspace.deletedUserNumbers()) {
-            if (const User* user = m_workspace.deviceUser(number))
+        for (const QString& number : m_workspace.users().deletedNumbers()) {
+            if (const std::optional<User> user = m_workspace.users().deviceUser(number))
                 rows += row({changedMarker() + user->name, user->maskedNumber(),
                              CommissioningReport::tr("deleted on this PC, still on the device")});
         }

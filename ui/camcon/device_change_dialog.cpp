@@ -72,9 +72,9 @@ void addSectionChanges(const Workspace& workspace, QStringList& lines) {
         lines << QCoreApplication::translate("cambench::DeviceChange", "Setting: %1")
                      .arg(spec ? SettingField::labelText(*spec) : key);
     }
-    if (workspace.userEditCount() > 0)
+    if (workspace.users().changedCount() > 0)
         lines << QCoreApplication::translate("cambench::DeviceChange", "Users: %1 changed")
-                     .arg(workspace.userEditCount());
+                     .arg(workspace.users().changedCount());
     for (int key : workspace.plc().changedKeys())
         lines << QCoreApplication::translate("cambench::DeviceChange", "PLC network %1")
                      .arg(PlcPage::networkName(key >> 8, key & 0xFF));

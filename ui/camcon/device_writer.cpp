@@ -125,8 +125,8 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
     for (int i = 0; i < plan.users.size() && i < report.users.size(); ++i) {
         const auto& outcome = report.users.at(i);
         if (!knownAfter(outcome.state) || !outcome.actual) continue;
-        workspace.setDeviceUser(planned.userIndex.value(i, -1), plan.users.at(i).deviceNumber,
-                                *outcome.actual);
+        workspace.users().setDevice(planned.userIndex.value(i, -1), plan.users.at(i).deviceNumber,
+                                    *outcome.actual);
     }
     for (int i = 0; i < plan.plcNetworks.size() && i < report.plcNetworks.size(); ++i) {
         if (const auto& actual = report.plcNetworks.at(i).actual)

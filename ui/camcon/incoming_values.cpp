@@ -53,8 +53,8 @@ QMap<EditSection, int> editsReplacedBy(const Workspace& workspace, const Incomin
         edits.insert(EditSection::OutputSettings, workspace.outputSettingsEditCount());
     if (parts.settings && workspace.settings().changedCount() > 0)
         edits.insert(EditSection::Settings, workspace.settings().changedCount());
-    if (parts.users && workspace.userEditCount() > 0)
-        edits.insert(EditSection::Users, workspace.userEditCount());
+    if (parts.users && workspace.users().changedCount() > 0)
+        edits.insert(EditSection::Users, workspace.users().changedCount());
     if (parts.plc && workspace.plc().changedCount() > 0)
         edits.insert(EditSection::Plc, workspace.plc().changedCount());
     return edits;
@@ -107,7 +107,7 @@ void mergeIncoming(Workspace& workspace, const Project& incoming, ValueSource so
         }
     }
     if (parts.users) {
-        workspace.mergeUsers(incoming.users, source, keepEdits.contains(EditSection::Users));
+        workspace.users().merge(incoming.users, source, keepEdits.contains(EditSection::Users));
         if (fromDevice) stamp(workspace, read, ProjectPart::Users);
     }
     if (parts.plc) {
@@ -199,7 +199,7 @@ QStringList deviceChanges(const Workspace& workspace, const Project& incoming) {
                                   SettingField::displayText(*spec, it.value()));
         }
     }
-    if (parts.users && workspace.usersKnown() && !(workspace.deviceUsers() == incoming.users))
+    if (parts.users && workspace.users().known() && !(workspace.users().device() == incoming.users))
         changes << QCoreApplication::translate("cambench::DeviceChanges",
                                                "Users: the device's list of users changed.");
     if (parts.plc) {

@@ -32,8 +32,9 @@ Project projectFromWorkspace(const Workspace& workspace) {
     project.settings = workspace.settings().shown();
     if (workspace.settings().changedCount() == 0 && read.parts.contains(ProjectPart::Settings))
         project.readAt.parts.insert(ProjectPart::Settings, read.parts.value(ProjectPart::Settings));
-    for (const Workspace::EditedUser& user : workspace.users()) project.users.append(user.user);
-    if (workspace.userEditCount() == 0 && read.parts.contains(ProjectPart::Users))
+    for (const UserCopies::EditedUser& user : workspace.users().rows())
+        project.users.append(user.user);
+    if (workspace.users().changedCount() == 0 && read.parts.contains(ProjectPart::Users))
         project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
     project.plcNetworks = workspace.plc().shown().values();
     // As the Dead-time modes page shows them, edits included.

@@ -48,8 +48,8 @@ QString UsersModel::rightsText(quint32 rights) {
 
 QVariant UsersModel::data(const QModelIndex& index, int role) const {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
-    const User& user = m_workspace->users().at(index.row()).user;
-    const bool changed = m_workspace->userChanged(index.row());
+    const User user = m_workspace->users().row(index.row()).user;
+    const bool changed = m_workspace->users().isChanged(index.row());
     if (role == Qt::FontRole && changed) return changedFont();
     if (role == Qt::ToolTipRole && changed) return tr("Edited, not yet written to the device.");
     if (role != Qt::DisplayRole) return {};

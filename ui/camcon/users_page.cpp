@@ -106,10 +106,10 @@ UsersPage::UsersPage(DeviceSession* session, Workspace* workspace, QWidget* pare
         User user;
         user.name = tr("New user");
         user.outputAccess.resize(256);
-        selectUser(m_workspace->addUser(user));
+        selectUser(m_workspace->users().add(user));
     });
     connect(remove, &QPushButton::clicked, this, [this] {
-        if (currentUser() >= 0) m_workspace->removeUser(currentUser());
+        if (currentUser() >= 0) m_workspace->users().remove(currentUser());
     });
     connect(m_show, &QCheckBox::toggled, this, &UsersPage::setNumbersShown);
     connect(m_view->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
@@ -141,7 +141,7 @@ void UsersPage::showUser() {
     m_access->setUser(index);
     m_editor->setEnabled(index >= 0);
     m_updating = true;
-    const User user = index >= 0 ? m_workspace->users().at(index).user : User();
+    const User user = index >= 0 ? m_workspace->users().row(index).user : User();
     m_name->setText(user.name);
     // Hidden numbers are not even in the field (a password field would
     // still tell their length); they can be edited once shown.
@@ -158,7 +158,7 @@ void UsersPage::showUser() {
 void UsersPage::editUser() {
     const int index = currentUser();
     if (m_updating || index < 0) return;
-    User user = m_workspace->users().at(index).user;
+    User user = m_workspace->users().row(index).user;
     user.name = m_name->text();
     if (m_model->numbersRevealed()) user.number = m_number->text();
     user.allOutputs = m_allOutputs->isChecked();
@@ -166,7 +166,7 @@ void UsersPage::editUser() {
     for (const auto& [bit, box] : m_rights) {
         if (box->isChecked()) user.rights |= bit;
     }
-    m_workspace->setUser(index, user);
+    m_workspace->users().set(index, user);
 }
 
 void UsersPage::readFromDevice() {
@@ -175,39 +175,34 @@ void UsersPage::readFromDevice() {
                                tr("Reading users…"),
                                [this] {
                                    return tr("%n user(s) read.", nullptr,
-                                             int(m_workspace->deviceUsers().size()));
+                                             int(m_workspace->users().device().size()));
                                },
                                tr("Reading users failed: %1")));
 }
 
 int UsersPage::itemCount() const {
-    return int(m_workspace->users().size() + m_workspace->deletedUserNumbers().size());
+    return int(m_workspace->users().size() + m_workspace->users().deletedNumbers().size());
 }
 
 QList<SectionDifference> UsersPage::differences() const {
     QList<SectionDifference> list;
-    const auto& users = m_workspace->users();
+    const UserCopies& users = m_workspace->users();
     const auto described = [this](const User& user) {
         return tr("%1, number %2, rights: %3")
             .arg(user.name, m_model->numbersRevealed() ? user.number : user.maskedNumber(),
                  UsersModel::rightsText(user.rights));
     };
     for (int i = 0; i < users.size(); ++i) {
-        if (!m_workspace->userChanged(i)) continue;
-        QString device = tr("absent");
-        for (const User& d : m_workspace->deviceUsers()) {
-            if (!users[i].deviceNumber.isEmpty() && d.number == users[i].deviceNumber)
-                device = described(d);
-        }
-        list.append({WorkspaceItem::user(i), tr("User \"%1\"").arg(users[i].user.name), device,
-                     described(users[i].user)});
+        if (!users.isChanged(i)) continue;
+        const UserCopies::EditedUser edited = users.row(i);
+        const std::optional<User> device = users.deviceUser(edited.deviceNumber);
+        list.append({WorkspaceItem::user(i), tr("User \"%1\"").arg(edited.user.name),
+                     device ? described(*device) : tr("absent"), described(edited.user)});
     }
-    for (const QString& number : m_workspace->deletedUserNumbers()) {
-        for (const User& d : m_workspace->deviceUsers()) {
-            if (d.number == number)
-                list.append({WorkspaceItem::deletedUser(number), tr("User \"%1\"").arg(d.name),
-                             described(d), tr("deleted")});
-        }
+    for (const QString& number : users.deletedNumbers()) {
+        if (const std::optional<User> device = users.deviceUser(number))
+            list.append({WorkspaceItem::deletedUser(number), tr("User \"%1\"").arg(device->name),
+                         described(*device), tr("deleted")});
     }
     return list;
 }

@@ -6,27 +6,10 @@
 
 namespace cambench {
 
-namespace {
-
-const User* findByNumber(const QList<User>& users, const QString& number) {
-    for (const User& user : users) {
-        if (!number.isEmpty() && user.number == number) return &user;
-    }
-    return nullptr;
-}
-
-const User* findByName(const QList<User>& users, const QString& name) {
-    for (const User& user : users) {
-        if (user.name == name) return &user;
-    }
-    return nullptr;
-}
-
-}  // namespace
-
 template <class Self, class Visit>
 void Workspace::forEachSection(Self& self, Visit visit) {
     visit(self.m_settings, ProjectPart::Settings, &Workspace::settingsChanged);
+    visit(self.m_users, ProjectPart::Users, &Workspace::usersChanged);
     visit(self.m_plc, ProjectPart::PlcNetworks, &Workspace::plcChanged);
     visit(self.m_deadTimeModes, ProjectPart::DeadTimeModes, &Workspace::deadTimeModesChanged);
     visit(self.m_analogueCams, ProjectPart::AnalogueCams, &Workspace::tableSectionsChanged);
@@ -71,15 +54,11 @@ void Workspace::clear(const DeviceInfo& info) {
     m_cams->clear();
     forEachSection(*this, [](auto& section, ProjectPart, auto) { section.clear(); });
     m_readAt = {};
-    m_users.clear();
-    m_deviceUsers.clear();
-    m_usersKnown = false;
     m_copiesFrom.reset();
     m_fingerprintKnown = false;
     m_carriedFrom.reset();
     clearOtherDeviceNote();
     setInfo(info, false);
-    Q_EMIT usersChanged();
     Q_EMIT readTimesChanged();
     notifyChanged();
 }
@@ -136,144 +115,6 @@ int Workspace::outputSettingsEditCount() const {
     return m_cams->outputSettingsEditCount();
 }
 
-// --- users
-
-QString Workspace::deviceNumberFor(const User& user) const {
-    // A project may hold users without their numbers: the device's user
-    // of the same name is the one meant.
-    if (const User* device = findByNumber(m_deviceUsers, user.number)) return device->number;
-    if (user.number.isEmpty()) {
-        if (const User* device = findByName(m_deviceUsers, user.name)) return device->number;
-    }
-    return {};
-}
-
-void Workspace::mergeUsers(const QList<User>& users, ValueSource source, bool keepEdits) {
-    if (source == ValueSource::File) {
-        mergeUsersFromFile(users, keepEdits);
-        return;
-    }
-    QList<EditedUser> kept;  // edited users that keep their edit
-    QStringList deleted;
-    if (keepEdits) {
-        for (int i = 0; i < m_users.size(); ++i) {
-            if (userChanged(i)) kept << m_users.at(i);
-        }
-        deleted = deletedUserNumbers();
-    }
-    m_deviceUsers = users;
-    m_usersKnown = true;
-    // The device's list, with the user's edits in place of their users.
-    QList<EditedUser> result;
-    for (const User& user : users) {
-        if (deleted.contains(user.number)) continue;
-        const auto mine = std::find_if(kept.begin(), kept.end(), [&](const EditedUser& e) {
-            return e.deviceNumber == user.number;
-        });
-        if (mine != kept.end()) {
-            result << *mine;
-            kept.erase(mine);
-        } else {
-            result << EditedUser{user, user.number};
-        }
-    }
-    // Edited users the device does not have (new ones, or gone from it).
-    for (EditedUser& edited : kept) {
-        if (!findByNumber(m_deviceUsers, edited.deviceNumber)) edited.deviceNumber.clear();
-        result << edited;
-    }
-    m_users = result;
-    Q_EMIT usersChanged();
-    notifyChanged();
-}
-
-void Workspace::mergeUsersFromFile(const QList<User>& users, bool keepEdits) {
-    // A project names the users it wants; users it does not name are left
-    // as they are (as the CLI's write of a project leaves them).
-    for (User user : users) {
-        if (user.number.isEmpty()) {
-            // Saved without numbers: the device's user of the same name is meant.
-            if (const User* device = findByName(m_deviceUsers, user.name))
-                user.number = device->number;
-        }
-        const QString deviceNumber = deviceNumberFor(user);
-        const auto same = std::find_if(m_users.begin(), m_users.end(), [&](const EditedUser& e) {
-            return deviceNumber.isEmpty() ? e.deviceNumber.isEmpty() && e.user.name == user.name
-                                          : e.deviceNumber == deviceNumber;
-        });
-        if (same == m_users.end()) {
-            m_users << EditedUser{user, deviceNumber};
-        } else if (!(keepEdits && userChanged(int(same - m_users.begin())))) {
-            same->user = user;
-        }
-    }
-    Q_EMIT usersChanged();
-    notifyChanged();
-}
-
-void Workspace::setUser(int index, const User& user) {
-    if (index < 0 || index >= m_users.size() || m_users[index].user == user) return;
-    m_users[index].user = user;
-    Q_EMIT usersChanged();
-    notifyChanged();
-}
-
-int Workspace::addUser(const User& user) {
-    m_users.append({user, QString()});
-    Q_EMIT usersChanged();
-    notifyChanged();
-    return int(m_users.size()) - 1;
-}
-
-void Workspace::removeUser(int index) {
-    if (index < 0 || index >= m_users.size()) return;
-    m_users.removeAt(index);
-    Q_EMIT usersChanged();
-    notifyChanged();
-}
-
-const User* Workspace::deviceUser(const QString& number) const {
-    return findByNumber(m_deviceUsers, number);
-}
-
-bool Workspace::userChanged(int index) const {
-    const EditedUser& edited = m_users.at(index);
-    if (edited.deviceNumber.isEmpty()) return true;
-    const User* device = findByNumber(m_deviceUsers, edited.deviceNumber);
-    return !device || !(*device == edited.user);
-}
-
-QStringList Workspace::deletedUserNumbers() const {
-    QStringList numbers;
-    for (const User& device : m_deviceUsers) {
-        const bool kept = std::any_of(m_users.cbegin(), m_users.cend(), [&](const EditedUser& e) {
-            return e.deviceNumber == device.number;
-        });
-        if (!kept) numbers << device.number;
-    }
-    return numbers;
-}
-
-int Workspace::userEditCount() const {
-    int count = int(deletedUserNumbers().size());
-    for (int i = 0; i < m_users.size(); ++i) count += userChanged(i) ? 1 : 0;
-    return count;
-}
-
-void Workspace::setDeviceUser(int index, const QString& deviceNumber,
-                              const std::optional<User>& actual) {
-    m_deviceUsers.erase(
-        std::remove_if(
-            m_deviceUsers.begin(), m_deviceUsers.end(),
-            [&](const User& u) { return !deviceNumber.isEmpty() && u.number == deviceNumber; }),
-        m_deviceUsers.end());
-    if (actual) m_deviceUsers.append(*actual);
-    if (index >= 0 && index < m_users.size())
-        m_users[index].deviceNumber = actual ? actual->number : QString();
-    Q_EMIT usersChanged();
-    notifyChanged();
-}
-
 // --- PLC
 
 QMap<int, PlcNetwork> Workspace::plcByKey(const QList<PlcNetwork>& networks) {
@@ -293,7 +134,7 @@ PlcNetwork Workspace::plcNetwork(int area, int number) const {
 // --- totals
 
 int Workspace::changedCount() const {
-    int count = m_cams->changedCount() + userEditCount();
+    int count = m_cams->changedCount();
     forEachSection(*this, [&count](const auto& section, ProjectPart, auto) {
         count += section.changedCount();
     });
@@ -332,7 +173,6 @@ void Workspace::forgetDeviceCopies(const QString& note, CarryOver carry) {
     m_cams->forgetDeviceCopies(carry);
     forEachSection(*this,
                    [carry](auto& section, ProjectPart, auto) { section.forgetDevice(carry); });
-    forgetDeviceUsers(carry);
     m_readAt = {};
     m_copiesFrom.reset();
     m_fingerprintKnown = false;
@@ -345,7 +185,6 @@ void Workspace::forgetDeviceCopies(const QString& note, CarryOver carry) {
 }
 
 void Workspace::forgetDeviceSection(ProjectPart part) {
-    if (part == ProjectPart::Users) forgetDeviceUsers(CarryOver::Changes);
     forEachSection(*this, [part](auto& section, ProjectPart its, auto) {
         if (its == part) section.forgetDevice(CarryOver::Changes);
     });
@@ -365,22 +204,6 @@ bool Workspace::awaitsCarried(ProjectPart part) const {
 
 bool Workspace::awaitsCarriedProgram(int program) const {
     return m_carriedFrom && !m_readAt.programs.contains(program);
-}
-
-void Workspace::forgetDeviceUsers(CarryOver carry) {
-    QList<EditedUser> kept;
-    for (int i = 0; i < m_users.size() && carry != CarryOver::Nothing; ++i) {
-        // A user's place on the old device means nothing on this one: a
-        // carried user is added to it.
-        if (carry == CarryOver::Everything || userChanged(i))
-            kept << EditedUser{m_users.at(i).user, QString()};
-    }
-    m_users = kept;
-    m_deviceUsers.clear();
-    m_usersKnown = false;
-    m_readAt.parts.remove(ProjectPart::Users);
-    Q_EMIT usersChanged();
-    notifyChanged();
 }
 
 void Workspace::clearOtherDeviceNote() {

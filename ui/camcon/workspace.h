@@ -9,7 +9,7 @@
 #include "model/camcon/project_file.h"
 #include "model/camcon/section_copies.h"
 #include "model/camcon/system_settings.h"
-#include "model/camcon/user.h"
+#include "model/camcon/user_copies.h"
 
 #include <QList>
 #include <QMap>
@@ -74,27 +74,10 @@ public:
     SettingsCopies& settings() { return m_settings; }
     const SettingsCopies& settings() const { return m_settings; }
 
-    // --- Users. Each edited user remembers the number it has on the device
-    // (empty for a user not yet written); a device user without an edited
-    // counterpart is to be deleted.
-    struct EditedUser {
-        User user;
-        QString deviceNumber;
-    };
-    const QList<EditedUser>& users() const { return m_users; }
-    const QList<User>& deviceUsers() const { return m_deviceUsers; }
-    bool usersKnown() const { return m_usersKnown; }
-    void mergeUsers(const QList<User>& users, ValueSource source, bool keepEdits);
-    void setUser(int index, const User& user);
-    int addUser(const User& user);
-    void removeUser(int index);
-    bool userChanged(int index) const;
-    QStringList deletedUserNumbers() const;
-    const User* deviceUser(const QString& number) const;
-    int userEditCount() const;
-    // After a write: the device's user `deviceNumber` is now `actual` (or
-    // gone, when empty); the edited user `index` (-1: a deletion) follows.
-    void setDeviceUser(int index, const QString& deviceNumber, const std::optional<User>& actual);
+    // --- Users, in the same shape with the list the users page shows
+    // (UserCopies); a change emits usersChanged.
+    UserCopies& users() { return m_users; }
+    const UserCopies& users() const { return m_users; }
 
     // --- PLC networks, key = plcKey(area, number)
     static int plcKey(int area, int number) { return (area << 8) | number; }
@@ -183,14 +166,11 @@ Q_SIGNALS:
 
 private:
     void notifyChanged();
-    void forgetDeviceUsers(CarryOver carry);
     // Calls visit(section, the part its read time is kept under, its
     // signal) for each of the sections in the one shape (self: this
     // workspace, const or not).
     template <class Self, class Visit>
     static void forEachSection(Self& self, Visit visit);
-    QString deviceNumberFor(const User& user) const;
-    void mergeUsersFromFile(const QList<User>& users, bool keepEdits);
 
     DeviceInfo m_info;
     QString m_projectPath;
@@ -198,9 +178,7 @@ private:
     CamDocument* m_cams;
     ProjectReadTimes m_readAt;
     SettingsCopies m_settings;
-    QList<EditedUser> m_users;
-    QList<User> m_deviceUsers;
-    bool m_usersKnown = false;
+    UserCopies m_users;
     PlcCopies m_plc;
     DeadTimeModeCopies m_deadTimeModes;
     AnalogueCamCopies m_analogueCams;

@@ -61,9 +61,9 @@ QList<WorkspaceItem> changedItems(const Workspace& workspace) {
             items << WorkspaceItem::outputName(output);
     }
     for (int i = 0; i < workspace.users().size(); ++i) {
-        if (workspace.userChanged(i)) items << WorkspaceItem::user(i);
+        if (workspace.users().isChanged(i)) items << WorkspaceItem::user(i);
     }
-    for (const QString& number : workspace.deletedUserNumbers())
+    for (const QString& number : workspace.users().deletedNumbers())
         items << WorkspaceItem::deletedUser(number);
     for (int key : workspace.plc().changedKeys()) items << WorkspaceItem::plcNetwork(key);
     for (int output : workspace.deadTimeModes().changedKeys())
@@ -110,7 +110,7 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
                 break;
             case WorkspaceItem::Kind::User: {
                 if (item.number < 0 || item.number >= workspace.users().size()) break;
-                const Workspace::EditedUser& edited = workspace.users().at(item.number);
+                const UserCopies::EditedUser edited = workspace.users().row(item.number);
                 plan.users << usecases::UserWrite{edited.deviceNumber, edited.user};
                 planned.userIndex << item.number;
                 break;
@@ -151,7 +151,7 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
     }
     if (!settings.isEmpty()) plan.settings = usecases::settingsGroups(settings);
     if (workspace.settings().known()) plan.settingsOnDevice = workspace.settings().device();
-    if (workspace.usersKnown()) plan.usersOnDevice = workspace.deviceUsers();
+    if (workspace.users().known()) plan.usersOnDevice = workspace.users().device();
     return planned;
 }
 

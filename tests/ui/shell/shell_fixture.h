@@ -78,7 +78,7 @@ inline bool waitForSections(Shell& shell) {
     return QTest::qWaitFor(
         [ws, users] {
             return ws->outputSettingsKnown() && ws->settings().known() &&
-                   (!users->isAvailable() || !ws->users().isEmpty());
+                   (!users->isAvailable() || ws->users().size() > 0);
         },
         kDeviceTimeoutMs);
 }

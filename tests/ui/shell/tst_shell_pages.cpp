@@ -75,13 +75,13 @@ void ShellPagesTest::modelsPassTheModelTester() {
     access.setUser(0);
     QCOMPARE(access.rowCount(), 6);
     QVERIFY(access.setData(access.index(0, 3), Qt::Checked, Qt::CheckStateRole) ||
-            ws->users().at(0).user.allOutputs);
+            ws->users().row(0).user.allOutputs);
     User user;
     user.name = QStringLiteral("Night shift");
     user.number = QStringLiteral("4711");
-    ws->addUser(user);
+    ws->users().add(user);
     QCOMPARE(users.rowCount(), int(ws->users().size()));
-    ws->removeUser(int(ws->users().size()) - 1);
+    ws->users().remove(int(ws->users().size()) - 1);
     plc.setNetwork(PlcNetwork::M, 4);
     QVERIFY(plc.setData(plc.index(1, 2), QStringLiteral("M11")));
     QVERIFY(!plc.setData(plc.index(1, 2), QStringLiteral("not a symbol")));
@@ -160,7 +160,7 @@ void ShellPagesTest::userNumbersMaskedUntilRevealed() {
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
     UsersPage* page = camConWindow(shell->window())->usersPage();
-    const QString number = camConWorkspace(*shell)->users().first().user.number;
+    const QString number = camConWorkspace(*shell)->users().row(0).user.number;
     QVERIFY(!number.isEmpty());
     const QModelIndex cell = page->model()->index(0, UsersModel::NumberColumn);
     page->selectUser(0);

@@ -79,7 +79,7 @@ void ReportAndCountsTest::reportHoldsEverySectionOfTheDevice() {
         QVERIFY2(text.contains(QStringLiteral("Program %1").arg(program)),
                  qPrintable(QString::number(program)));
     QVERIFY(text.contains(QStringLiteral("Format A4")));  // program 1's name
-    for (const Workspace::EditedUser& user : ws.users()) {
+    for (const UserCopies::EditedUser& user : ws.users().rows()) {
         QVERIFY(text.contains(user.user.name));
         QVERIFY2(!text.contains(user.user.number), "user numbers are access codes: never printed");
     }
@@ -194,9 +194,9 @@ void ReportAndCountsTest::userWriteCountsTheUnchangedUsers() {
     Workspace* ws = camConWorkspace(*shell);
     const int users = int(ws->users().size());
     QVERIFY(users >= 2);
-    User renamed = ws->users().first().user;
+    User renamed = ws->users().row(0).user;
     renamed.name += QStringLiteral("X");
-    ws->setUser(0, renamed);
+    ws->users().set(0, renamed);
     std::optional<WriteResult> result;
     camConWindow(shell->window())->usersPage()->writeChanges([&](const WriteResult& r) {
         result = r;
