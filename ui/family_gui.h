@@ -143,6 +143,10 @@ public:
     static FamilyGuiRegistry& instance();
 };
 
+// Each registered family's part for `session`, in registration order (what
+// one device's window shows: the shell's, or one device's of a machine).
+QList<FamilyGui*> createFamilyGuis(DeviceSession* session, QObject* parent);
+
 // The family of the protocol `session` connects (or last connected) with.
 QString sessionFamily(const DeviceSession& session);
 
