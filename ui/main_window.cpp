@@ -187,8 +187,8 @@ void MainWindow::createMenus() {
     device->addSeparator();
     QAction* lastWrite =
         device->addAction(tr("&Last write report…"), this, &MainWindow::showLastWriteReport);
-    lastWrite->setEnabled(!LastWriteReport::instance().isEmpty());
-    connect(&LastWriteReport::instance(), &LastWriteReport::changed, lastWrite,
+    lastWrite->setEnabled(!m_session->lastWriteReport().isEmpty());
+    connect(&m_session->lastWriteReport(), &LastWriteReport::changed, lastWrite,
             [lastWrite] { lastWrite->setEnabled(true); });
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -260,7 +260,7 @@ void MainWindow::createStatusBar() {
     m_lastWrite->setAutoRaise(true);
     statusBar()->insertPermanentWidget(0, m_lastWrite);
     connect(m_lastWrite, &QToolButton::clicked, this, &MainWindow::showLastWriteReport);
-    connect(&LastWriteReport::instance(), &LastWriteReport::changed, this,
+    connect(&m_session->lastWriteReport(), &LastWriteReport::changed, this,
             &MainWindow::updateLastWriteButton);
     updateLastWriteButton();
     comm::JobRunner& worker = m_session->worker();
@@ -319,7 +319,7 @@ int MainWindow::currentSection() const {
 }
 
 void MainWindow::updateLastWriteButton() {
-    const LastWriteReport& report = LastWriteReport::instance();
+    const LastWriteReport& report = m_session->lastWriteReport();
     m_lastWrite->setVisible(!report.isEmpty());
     if (report.isEmpty()) return;
     m_lastWrite->setText(
@@ -332,7 +332,7 @@ void MainWindow::updateLastWriteButton() {
 }
 
 void MainWindow::showLastWriteReport() {
-    const LastWriteReport& report = LastWriteReport::instance();
+    const LastWriteReport& report = m_session->lastWriteReport();
     if (report.isEmpty()) return;
     ReportDialog::present(
         this, report.complete() ? QMessageBox::Information : QMessageBox::Warning, report.title(),

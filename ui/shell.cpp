@@ -60,7 +60,7 @@ MainWindow* Shell::createWindow() {
     auto* window = new MainWindow(m_session, m_families);
     connect(window, &MainWindow::languageRequested, this, &Shell::switchLanguage,
             Qt::QueuedConnection);
-    connect(window, &MainWindow::openMachineRequested, this, &Shell::openMachineFile);
+    connect(window, &MainWindow::openMachineRequested, this, &Shell::askForMachineFile);
     connect(window, &MainWindow::newMachineRequested, this, &Shell::newMachine);
     connect(window, &MainWindow::demoMachineRequested, this, &Shell::openDemoMachine);
     return window;
@@ -119,16 +119,18 @@ Machine* Shell::openMachine(const MachineFile& file, const QString& path) {
     return machine;
 }
 
-void Shell::openMachineFile() {
+Result<Machine*> Shell::openMachineFile(const QString& path) {
+    const Result<MachineFile> file = readMachineFile(path);
+    if (!file) return file.error();
+    return openMachine(*file, path);
+}
+
+void Shell::askForMachineFile() {
     const QString path =
         QFileDialog::getOpenFileName(m_window, tr("Open machine"), {}, tr("Machine file (*.json)"));
     if (path.isEmpty()) return;
-    const Result<MachineFile> file = readMachineFile(path);
-    if (!file) {
-        QMessageBox::warning(m_window, tr("Open machine"), file.error().message);
-        return;
-    }
-    openMachine(*file, path);
+    const Result<Machine*> machine = openMachineFile(path);
+    if (!machine) QMessageBox::warning(m_window, tr("Open machine"), machine.error().message);
 }
 
 void Shell::openDemoMachine() {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/result.h"
+
 #include <QList>
 #include <QObject>
 #include <QPointer>
@@ -38,13 +40,15 @@ public:
     // device of `file` on its own line. `path`: where it was read from.
     Machine* openMachine(const MachineFile& file, const QString& path);
     QList<Machine*> machines() const;
+    // The machine of the file at `path`; an error names what is wrong.
+    Result<Machine*> openMachineFile(const QString& path);
 
 Q_SIGNALS:
     void windowRebuilt(cambench::MainWindow* window);
 
 private:
     MainWindow* createWindow();
-    void openMachineFile();
+    void askForMachineFile();
     void openDemoMachine();
     // A machine whose first device is this window's connection.
     void newMachine();

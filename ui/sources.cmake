@@ -72,6 +72,8 @@ target_sources(cambench_ui PRIVATE
   machine/machine.cpp
   machine/machine_window.h
   machine/machine_window.cpp
+  machine/machine_report.h
+  machine/machine_report.cpp
   machine/demo_machine.h
   machine/demo_machine.cpp
   shell.h

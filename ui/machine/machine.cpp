@@ -34,6 +34,10 @@ MachineUnit* Machine::createUnit(const MachineDevice& device) {
     return unit;
 }
 
+MachineWindow* Machine::window() const {
+    return m_window;
+}
+
 MachineUnit* Machine::unit(const QString& name) const {
     for (MachineUnit* unit : m_units)
         if (unit->name() == name) return unit;

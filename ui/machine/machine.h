@@ -29,7 +29,7 @@ public:
     QList<MachineUnit*> units() const { return m_units; }
     MachineUnit* unit(const QString& name) const;
     MachineStop* stop() const { return m_stop; }
-    MachineWindow* window() const { return m_window; }
+    MachineWindow* window() const;
     // The machine file of the devices as they are now.
     MachineFile file() const;
 

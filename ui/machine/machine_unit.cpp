@@ -35,6 +35,10 @@ MachineUnit::~MachineUnit() {
     delete m_window;
 }
 
+MainWindow* MachineUnit::window() const {
+    return m_window;
+}
+
 MainWindow* MachineUnit::createWindow() {
     delete m_window;
     m_window = new MainWindow(m_session, m_families, m_machineStop);

@@ -29,7 +29,7 @@ public:
     QString name() const { return m_device.name; }
     DeviceSession* session() const { return m_session; }
     QList<FamilyGui*> families() const { return m_families; }
-    MainWindow* window() const { return m_window; }
+    MainWindow* window() const;
 
     // A new window of its pages (the one before is deleted): at the start
     // and after a language switch. Owned by whoever shows it.

@@ -1,6 +1,7 @@
 #include "machine_window.h"
 
 #include "machine.h"
+#include "machine_report.h"
 #include "machine_stop.h"
 #include "machine_unit.h"
 
@@ -30,21 +31,10 @@ namespace {
 // The lamp of a device's row: green on the line, amber while connecting,
 // red when gone, grey while offline.
 QIcon lampIcon(MachineUnit::Lamp lamp) {
-    QColor color;
-    switch (lamp) {
-        case MachineUnit::Lamp::Connected:
-            color = QColor(0x2e, 0x7d, 0x32);
-            break;
-        case MachineUnit::Lamp::Connecting:
-            color = QColor(0xf9, 0xa8, 0x25);
-            break;
-        case MachineUnit::Lamp::Gone:
-            color = QColor(0xc6, 0x28, 0x28);
-            break;
-        case MachineUnit::Lamp::Offline:
-            color = QColor(0x9e, 0x9e, 0x9e);
-            break;
-    }
+    // In the order of MachineUnit::Lamp.
+    static const QColor colors[] = {QColor(0x2e, 0x7d, 0x32), QColor(0xf9, 0xa8, 0x25),
+                                    QColor(0xc6, 0x28, 0x28), QColor(0x9e, 0x9e, 0x9e)};
+    const QColor color = colors[int(lamp)];
     QPixmap pixmap(14, 14);
     pixmap.fill(Qt::transparent);
     QPainter painter(&pixmap);
@@ -105,6 +95,7 @@ void MachineWindow::createMenus() {
     QMenu* menu = menuBar()->addMenu(tr("&Machine"));
     menu->addAction(tr("&Add device…"), this, &MachineWindow::addDevice);
     menu->addAction(tr("&Save machine as…"), this, &MachineWindow::saveAs);
+    menu->addAction(tr("Machine &report…"), this, &MachineWindow::writeReport);
     menu->addSeparator();
     menu->addAction(tr("&Close machine"), this, &QWidget::close);
 }
@@ -187,6 +178,18 @@ void MachineWindow::saveAs() {
         return;
     }
     showMessage(tr("Machine saved to %1.").arg(QFileInfo(path).fileName()));
+}
+
+void MachineWindow::writeReport() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Machine report"), m_machine->name() + QStringLiteral(".pdf"), tr("PDF (*.pdf)"));
+    if (path.isEmpty()) return;
+    const Status written = MachineReport::write(path, *m_machine);
+    if (!written) {
+        QMessageBox::warning(this, tr("Machine report"), written.error().message);
+        return;
+    }
+    showMessage(tr("Machine report written to %1.").arg(QFileInfo(path).fileName()));
 }
 
 void MachineWindow::addDevice() {

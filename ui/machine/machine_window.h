@@ -47,6 +47,7 @@ private:
     void updateRow(MachineUnit* unit);
     void updateTitle();
     void saveAs();
+    void writeReport();
     void addDevice();
     QTreeWidgetItem* rowOf(const MachineUnit* unit) const;
 

@@ -13,6 +13,7 @@
 #include "ui/machine/demo_machine.h"
 #include "ui/machine/machine.h"
 #include "ui/machine/machine_connection.h"
+#include "ui/machine/machine_report.h"
 #include "ui/machine/machine_stop.h"
 #include "ui/machine/machine_unit.h"
 #include "ui/machine/machine_window.h"
@@ -24,6 +25,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QStatusBar>
+#include <QTextDocument>
 #include <QTreeWidget>
 
 using namespace cambench;
@@ -63,6 +65,22 @@ bool waitIdentified(const Machine& machine) {
         kDeviceTimeoutMs);
 }
 
+// The CamCon and the MC200 open in a machine's window, both identified.
+struct CamsAndPlc {
+    Shell shell;
+    Machine* machine = nullptr;
+    MachineUnit* cams = nullptr;
+    MachineUnit* plc = nullptr;
+};
+std::unique_ptr<CamsAndPlc> openCamsAndPlc() {
+    auto open = std::make_unique<CamsAndPlc>();
+    open->machine = open->shell.openMachine(camsAndPlc(), {});
+    if (!waitIdentified(*open->machine)) return nullptr;
+    open->cams = open->machine->unit(QStringLiteral("cams"));
+    open->plc = open->machine->unit(QStringLiteral("press-plc"));
+    return open;
+}
+
 QTreeWidgetItem* row(const Machine& machine, const QString& name) {
     QTreeWidget* list = machine.window()->deviceList();
     for (int i = 0; i < list->topLevelItemCount(); ++i)
@@ -78,11 +96,11 @@ private Q_SLOTS:
     void initTestCase() { useTestSettings(); }
 
     void twoDevicesOfTwoFamiliesAtOnceAndOneGoesAway() {
-        Shell shell;
-        Machine* machine = shell.openMachine(camsAndPlc(), {});
-        QVERIFY(waitIdentified(*machine));
-        MachineUnit* cams = machine->unit(QStringLiteral("cams"));
-        MachineUnit* plc = machine->unit(QStringLiteral("press-plc"));
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        MachineUnit* plc = open->plc;
         // Each its own connection and worker.
         QVERIFY(cams->session() != plc->session());
         QVERIFY(&cams->session()->worker() != &plc->session()->worker());
@@ -121,11 +139,11 @@ private Q_SLOTS:
     }
 
     void stopOnAnyPageStopsTheAxisThatMoves() {
-        Shell shell;
-        Machine* machine = shell.openMachine(camsAndPlc(), {});
-        QVERIFY(waitIdentified(*machine));
-        MachineUnit* cams = machine->unit(QStringLiteral("cams"));
-        MachineUnit* plc = machine->unit(QStringLiteral("press-plc"));
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        MachineUnit* plc = open->plc;
         // The CamCon moves nothing, yet its page shows the machine's STOP.
         QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
         QVERIFY(!cams->session()->motionStop()->available());
@@ -136,14 +154,13 @@ private Q_SLOTS:
         Mc1AxesPage* axes = mc1Window(plc->window())->axesPage();
         plc->window()->showPage(axes);
         QVERIFY(QTest::qWaitFor([&] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs));
-        {
-            auto yes = answerConfirmation(true);
-            axes->command(comm::Mc1AxisCommand::JogPlus);
-            QCOMPARE(yes->answered(), 1);
-        }
-        QVERIFY(QTest::qWaitFor(
-            [&] { return axes->stateLabel()->text().contains(QLatin1String("jogging +")); },
-            kDeviceTimeoutMs));
+        const auto yes = answerConfirmation(true);
+        axes->findChild<QPushButton*>(QStringLiteral("mc1JogPlus"))->click();
+        QCOMPARE(yes->answered(), 1);
+        const auto says = [axes](const char* what) {
+            return axes->stateLabel()->text().contains(QLatin1String(what));
+        };
+        QVERIFY(QTest::qWaitFor([&] { return says("jogging +"); }, kDeviceTimeoutMs));
 
         // STOP on the CamCon's page.
         machine->window()->showDevice(QStringLiteral("cams"));
@@ -161,9 +178,7 @@ private Q_SLOTS:
         QVERIFY2(message.contains(QLatin1String("STOP acknowledged by press-plc")),
                  qPrintable(message));
         QVERIFY2(!message.contains(QLatin1String("cams")), qPrintable(message));
-        QVERIFY(QTest::qWaitFor(
-            [&] { return axes->stateLabel()->text().contains(QLatin1String("stands at")); },
-            kDeviceTimeoutMs));
+        QVERIFY(QTest::qWaitFor([&] { return says("stands at"); }, kDeviceTimeoutMs));
 
         // A device that can move but is not on the line is named as not reached.
         QVERIFY(plc->session()->disconnectFromDevice());
@@ -231,6 +246,28 @@ private Q_SLOTS:
         QVERIFY(row(*machine, QStringLiteral("press-plc"))
                     ->text(MachineWindow::State)
                     .contains(QLatin1String("not opened: press-plc: the protocol")));
+    }
+
+    void theReportHasTheMachineAndEachDevice() {
+        Shell shell;
+        Machine* machine = shell.openMachine(camsAndPlc(), {});
+        QVERIFY(waitIdentified(*machine));
+        QTextDocument document;
+        MachineReport::build(document, *machine);
+        const QString text = document.toPlainText();
+        QVERIFY(text.contains(QLatin1String("Machine report: Test press")));
+        for (const MachineUnit* unit : machine->units())
+            QVERIFY2(text.contains(unit->name() + QLatin1String(" (")), qPrintable(unit->name()));
+        // Each device's identity as its family gave it, and the CamCon's own report.
+        QVERIFY2(text.contains(QLatin1String("MC200")), qPrintable(text));
+        QVERIFY(text.contains(QLatin1String("Commissioning report")));
+        QVERIFY(text.contains(QLatin1String("Edits on this PC not written to the device: 0")));
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
+        QVERIFY(MachineReport::write(pdf, *machine));
+        QFile file(pdf);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.read(5) == "%PDF-");
     }
 
     void theDemoMachineIsBuiltIn() {
