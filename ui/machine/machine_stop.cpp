@@ -89,7 +89,7 @@ void MachineStop::finishRound(const QList<Answer>& answers) {
     }
     QStringList parts;
     const QString separator = QStringLiteral(", ");
-    if (!stopped.isEmpty()) parts << tr("STOP acknowledged by %1").arg(stopped.join(separator));
+    if (!stopped.isEmpty()) parts << tr("acknowledged by %1").arg(stopped.join(separator));
     if (!notAcknowledged.isEmpty())
         parts << tr("NOT acknowledged by %1 – use the machine's emergency stop")
                      .arg(notAcknowledged.join(separator));

@@ -65,11 +65,13 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
     m_list->setHeaderLabels(
         {tr("Device"), tr("Family"), tr("Port"), tr("State"), tr("Not written")});
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_list->setMinimumWidth(260);
+    // Wide enough for the lamp and its words beside name, family and port.
+    m_list->setMinimumWidth(420);
     auto* splitter = new QSplitter;
     splitter->addWidget(m_list);
     splitter->addWidget(m_stack);
     splitter->setStretchFactor(1, 1);
+    splitter->setSizes({560, 1100});
     setCentralWidget(splitter);
     createMenus();
     for (MachineUnit* unit : machine->units()) addRow(unit);
@@ -88,7 +90,7 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
             [this] { showMessage(tr("STOP: %1").arg(m_machine->stop()->lastSummary())); });
     showDevice({});
     updateTitle();
-    resize(1480, 860);
+    resize(1600, 900);
 }
 
 void MachineWindow::createMenus() {

@@ -175,7 +175,7 @@ private Q_SLOTS:
         for (const comm::MotionStopLine& line : report.lines)
             QVERIFY2(line.what.startsWith(QLatin1String("press-plc: ")), qPrintable(line.what));
         const QString message = machine->window()->statusBar()->currentMessage();
-        QVERIFY2(message.contains(QLatin1String("STOP acknowledged by press-plc")),
+        QVERIFY2(message.contains(QLatin1String("STOP: acknowledged by press-plc.")),
                  qPrintable(message));
         QVERIFY2(!message.contains(QLatin1String("cams")), qPrintable(message));
         QVERIFY(QTest::qWaitFor([&] { return says("stands at"); }, kDeviceTimeoutMs));
