@@ -13,6 +13,7 @@
 
 #include "comm/device/protocol_registry.h"
 
+#include <QApplication>
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QMessageBox>
@@ -86,8 +87,19 @@ void Shell::start(const QString& port, const QString& protocol) {
 void Shell::switchLanguage(const QString& language) {
     setLanguage(language);
     guisettings::setLanguage(currentLanguage());
-    for (Machine* machine : machines()) machine->rebuildWindow();
-    if (!m_window) return;
+    // The window the switch was asked in stays in front.
+    Machine* inFront = nullptr;
+    for (Machine* machine : machines()) {
+        if (QApplication::activeWindow() == static_cast<QWidget*>(machine->window()))
+            inFront = machine;
+        machine->rebuildWindow();
+    }
+    const auto raiseMachine = [inFront] {
+        if (!inFront) return;
+        inFront->window()->raise();
+        inFront->window()->activateWindow();
+    };
+    if (!m_window) return raiseMachine();
     MainWindow* old = m_window;
     MainWindow* window = createWindow();
     window->setGeometry(old->geometry());
@@ -98,6 +110,7 @@ void Shell::switchLanguage(const QString& language) {
     // the shell may be gone before a deferred delete would run. The switch
     // arrives through a queued call, never from inside the old window.
     delete old;
+    raiseMachine();
     Q_EMIT windowRebuilt(window);
 }
 

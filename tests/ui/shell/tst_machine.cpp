@@ -200,6 +200,34 @@ private Q_SLOTS:
         QCOMPARE(stopped.size(), 1);  // once, not once per device window
     }
 
+    // A language switch rebuilds the machine's window and each device's;
+    // the lines, the identities and the STOP stay.
+    void aLanguageSwitchKeepsEveryLine() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        QSignalSpy camsLine(open->cams->session(), &DeviceSession::stateChanged);
+        QSignalSpy plcLine(open->plc->session(), &DeviceSession::stateChanged);
+        const MachineWindow* before = open->machine->window();
+        open->machine->window()->showDevice(QStringLiteral("press-plc"));
+        open->shell.switchLanguage(QStringLiteral("en"));
+        QVERIFY(open->machine->window() != before);
+        QCOMPARE(open->machine->window()->currentDevice(), QStringLiteral("press-plc"));
+        QCOMPARE(open->machine->window()->deviceList()->topLevelItemCount(), 2);
+        QCOMPARE(camsLine.size(), 0);
+        QCOMPARE(plcLine.size(), 0);
+        // A window built on a line asks its device who it is again.
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return open->plc->window()->connectionStrip()->text().contains(
+                    QLatin1String("MC200"));
+            },
+            kDeviceTimeoutMs));
+        QVERIFY(open->cams->window()->stopBar()->isVisibleTo(open->cams->window()));
+        QSignalSpy stopped(open->machine->stop(), &StopControl::stopFinished);
+        open->cams->window()->stopBar()->button()->click();
+        QVERIFY(stopped.wait(kDeviceTimeoutMs));
+    }
+
     void savedAndOpenedAgainListsTheSameDevices() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("press.json"));
