@@ -256,6 +256,38 @@ private Q_SLOTS:
             QStringLiteral("mc200v2"));
     }
 
+    // Add device: its Connection page says how; the machine file takes
+    // what it connected with.
+    void anAddedDeviceIsConnectedOnItsPageAndSaved() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        MachineDevice feed;
+        feed.name = QStringLiteral("feed");
+        const Result<MachineUnit*> added = open->machine->addDevice(feed);
+        QVERIFY(added);
+        MachineUnit* unit = *added;
+        QCOMPARE(open->machine->window()->currentDevice(), QStringLiteral("feed"));
+        QCOMPARE(unit->lamp(), MachineUnit::Lamp::Offline);
+        QVERIFY(!unit->session()->wantsConnection());
+        QVERIFY(row(*open->machine, QStringLiteral("feed"))
+                    ->text(MachineWindow::State)
+                    .startsWith(QLatin1String("not connected yet")));
+        QVERIFY(!open->machine->addDevice(feed));  // the name is taken
+        ConnectionPage* page = unit->window()->connectionPage();
+        page->setFamily(QStringLiteral("compax3"));
+        page->setPort(QStringLiteral("sim"));
+        unit->window()->connectAndLoad();
+        QVERIFY(
+            QTest::qWaitFor([&] { return unit->session()->deviceChecked(); }, kDeviceTimeoutMs));
+        const MachineFile file = open->machine->file();
+        QCOMPARE(file.devices.size(), 3);
+        QCOMPARE(file.devices.at(2).family, QStringLiteral("compax3"));
+        QCOMPARE(file.devices.at(2).option(QStringLiteral("port")), QStringLiteral("sim"));
+        QCOMPARE(row(*open->machine, QStringLiteral("feed"))->text(MachineWindow::Port),
+                 QStringLiteral("sim"));
+        QCOMPARE(open->cams->lamp(), MachineUnit::Lamp::Connected);
+    }
+
     void aWrongDeviceIsRefusedNamingItAndTheOthersConnect() {
         MachineFile file = camsAndPlc();
         file.devices[1].options[1].second = QStringLiteral("standard");  // a CamCon protocol
