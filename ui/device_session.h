@@ -3,6 +3,7 @@
 #include "comm/device/connection_settings.h"
 #include "comm/device/job_runner.h"
 #include "comm/device/protocol_settings.h"
+#include "last_write_report.h"
 #include "live_freshness.h"
 
 #include <QObject>
@@ -76,6 +77,8 @@ public:
     // How old the live values are; fed by the monitor's poll cycles, made
     // stale by a lost line, reset by a connect to another device.
     LiveFreshness* freshness() { return &m_freshness; }
+    // The last write to a device over this connection, for the window.
+    LastWriteReport& lastWriteReport() { return m_lastWrite; }
 
     // A job written for one family's device interface (CamConDevice, ...).
     template <class Device, class T>
@@ -122,6 +125,7 @@ private:
     QString m_message;
     QTimer m_retry;
     LiveFreshness m_freshness;
+    LastWriteReport m_lastWrite;
     bool m_wasLost = false;
     bool m_reestablishing = false;  // reconnected, the device not checked yet
     bool m_anotherDevice = false;

@@ -53,6 +53,13 @@ FamilyGuiRegistry& FamilyGuiRegistry::instance() {
     return registry;
 }
 
+QList<FamilyGui*> createFamilyGuis(DeviceSession* session, QObject* parent) {
+    QList<FamilyGui*> families;
+    for (const FamilyGuiInfo* info : FamilyGuiRegistry::instance().all())
+        families << info->create(session, parent);
+    return families;
+}
+
 QString sessionFamily(const DeviceSession& session) {
     const comm::ProtocolInfo* info =
         comm::ProtocolRegistry::instance().find(session.protocol().protocolId());

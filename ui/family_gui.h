@@ -9,6 +9,7 @@
 #include <functional>
 
 class QMenu;
+class QTextDocument;
 class QWidget;
 
 namespace cambench {
@@ -41,6 +42,15 @@ public:
     virtual QString windowSubject() const { return {}; }
     // Edits on this PC that are not on the device.
     virtual int unwrittenCount() const { return 0; }
+    // The family's section of a machine's report (HTML; pictures added to
+    // `document` under names that begin with `resourcePrefix`): what the
+    // PC holds of the device and when it was read. Empty: the family has
+    // no report of its own (the section has the shell's lines only).
+    virtual QString reportSection(QTextDocument& document, const QString& resourcePrefix) const {
+        Q_UNUSED(document);
+        Q_UNUSED(resourcePrefix);
+        return {};
+    }
     // A family that keeps no identity of its own stores what identify() said.
     void setIdentity(const QString& identity);
 
@@ -142,6 +152,10 @@ class FamilyGuiRegistry : public comm::IdRegistry<FamilyGuiInfo, &FamilyGuiInfo:
 public:
     static FamilyGuiRegistry& instance();
 };
+
+// Each registered family's part for `session`, in registration order (what
+// one device's window shows: the shell's, or one device's of a machine).
+QList<FamilyGui*> createFamilyGuis(DeviceSession* session, QObject* parent);
 
 // The family of the protocol `session` connects (or last connected) with.
 QString sessionFamily(const DeviceSession& session);

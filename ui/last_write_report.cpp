@@ -2,11 +2,6 @@
 
 namespace cambench {
 
-LastWriteReport& LastWriteReport::instance() {
-    static LastWriteReport report;
-    return report;
-}
-
 void LastWriteReport::record(const QString& title, const QString& summary, const QString& details,
                              bool complete) {
     m_title = title;

@@ -9,10 +9,11 @@ namespace cambench {
 // The last write's report, kept after its dialog and its status line are
 // gone: a technician who looked away must still be able to read what the
 // last write did (Device → Last write report, and the status bar button).
+// One per connection (DeviceSession): a machine's devices each have theirs.
 class LastWriteReport : public QObject {
     Q_OBJECT
 public:
-    static LastWriteReport& instance();
+    using QObject::QObject;
 
     void record(const QString& title, const QString& summary, const QString& details,
                 bool complete);
@@ -27,8 +28,6 @@ Q_SIGNALS:
     void changed();
 
 private:
-    LastWriteReport() = default;
-
     QString m_title;
     QString m_summary;
     QString m_details;

@@ -30,25 +30,28 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QToolButton>
 
 namespace cambench {
 
-MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families, QWidget* parent)
+MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families,
+                       StopControl* machineStop, QWidget* parent)
     : QMainWindow(parent),
       m_session(session),
       m_nav(new QListWidget),
       m_stack(new QStackedWidget),
       m_strip(new ConnectionStrip(session)),
       m_indicator(new ConnectionIndicator(session)),
-      m_stopBar(new StopBar(session->motionStop(),
+      m_stopBar(new StopBar(machineStop ? machineStop : session->motionStop(),
                             StopShortcut::key().toString(QKeySequence::NativeText))),
       m_jobLabel(new QLabel),
       m_jobProgress(new QProgressBar),
       m_jobCancel(new QToolButton),
-      m_lastWrite(new QToolButton) {
+      m_lastWrite(new QToolButton),
+      m_inMachine(machineStop != nullptr) {
     createPages(families);
     createMenus();
     createStatusBar();
@@ -65,7 +68,13 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
     // STOP above every page while the device can move something; its key
     // works from every widget of the window.
     layout->addWidget(m_stopBar);
-    new StopShortcut(session->motionStop(), this);
+    if (m_inMachine)
+        m_stopBar->button()->setToolTip(
+            tr("Stops every axis and drive of every device of the machine, without a question. "
+               "%1 does the same from every page.")
+                .arg(StopShortcut::key().toString(QKeySequence::NativeText)));
+    else
+        new StopShortcut(session->motionStop(), this);
     layout->addLayout(body, 1);
     setCentralWidget(central);
 
@@ -171,13 +180,15 @@ void MainWindow::createMenus() {
                     m_familyActions.append({action, family->gui()->familyId()});
         }
     }
+    if (!m_inMachine) addMachineEntries(file);
     file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    // Inside a machine's window: quits that window (asking every device).
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, [this] { window()->close(); });
     device->addSeparator();
     QAction* lastWrite =
         device->addAction(tr("&Last write report…"), this, &MainWindow::showLastWriteReport);
-    lastWrite->setEnabled(!LastWriteReport::instance().isEmpty());
-    connect(&LastWriteReport::instance(), &LastWriteReport::changed, lastWrite,
+    lastWrite->setEnabled(!m_session->lastWriteReport().isEmpty());
+    connect(&m_session->lastWriteReport(), &LastWriteReport::changed, lastWrite,
             [lastWrite] { lastWrite->setEnabled(true); });
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -228,6 +239,14 @@ void MainWindow::createMenus() {
     });
 }
 
+void MainWindow::addMachineEntries(QMenu* file) {
+    // The machine: several devices at once, each in its own connection.
+    file->addSeparator();
+    file->addAction(tr("Open &machine…"), this, &MainWindow::openMachineRequested);
+    file->addAction(tr("New mac&hine…"), this, &MainWindow::newMachineRequested);
+    file->addAction(tr("Open &demo machine"), this, &MainWindow::demoMachineRequested);
+}
+
 void MainWindow::createStatusBar() {
     m_jobProgress->setMaximumWidth(180);
     m_jobProgress->setTextVisible(false);
@@ -241,7 +260,7 @@ void MainWindow::createStatusBar() {
     m_lastWrite->setAutoRaise(true);
     statusBar()->insertPermanentWidget(0, m_lastWrite);
     connect(m_lastWrite, &QToolButton::clicked, this, &MainWindow::showLastWriteReport);
-    connect(&LastWriteReport::instance(), &LastWriteReport::changed, this,
+    connect(&m_session->lastWriteReport(), &LastWriteReport::changed, this,
             &MainWindow::updateLastWriteButton);
     updateLastWriteButton();
     comm::JobRunner& worker = m_session->worker();
@@ -300,7 +319,7 @@ int MainWindow::currentSection() const {
 }
 
 void MainWindow::updateLastWriteButton() {
-    const LastWriteReport& report = LastWriteReport::instance();
+    const LastWriteReport& report = m_session->lastWriteReport();
     m_lastWrite->setVisible(!report.isEmpty());
     if (report.isEmpty()) return;
     m_lastWrite->setText(
@@ -313,7 +332,7 @@ void MainWindow::updateLastWriteButton() {
 }
 
 void MainWindow::showLastWriteReport() {
-    const LastWriteReport& report = LastWriteReport::instance();
+    const LastWriteReport& report = m_session->lastWriteReport();
     if (report.isEmpty()) return;
     ReportDialog::present(
         this, report.complete() ? QMessageBox::Information : QMessageBox::Warning, report.title(),
@@ -406,7 +425,8 @@ bool MainWindow::confirmClose() {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (confirmClose()) {
-        guisettings::saveWindow(*this, currentSection());
+        // The layout remembered is the single device's window's.
+        if (!m_inMachine) guisettings::saveWindow(*this, currentSection());
         event->accept();
     } else {
         event->ignore();

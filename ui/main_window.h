@@ -22,6 +22,7 @@ class FamilyGui;
 class FamilyWindow;
 class SectionPage;
 class StopBar;
+class StopControl;
 
 // The CamBench window: the connection page, then the pages of every
 // registered device family (those of the family the session's protocol
@@ -34,8 +35,11 @@ public:
     // The shell's own page comes first; the families' follow.
     enum Section { Connection = 0 };
 
+    // `machineStop`: the window is one device's of a machine (shown inside
+    // the machine's window): its STOP is the machine's, the machine's
+    // window has the STOP key and the machine entries of the File menu.
     MainWindow(DeviceSession* session, const QList<FamilyGui*>& families,
-               QWidget* parent = nullptr);
+               StopControl* machineStop = nullptr, QWidget* parent = nullptr);
     ~MainWindow() override;
 
     // A page by its row in the list (saved and restored between runs).
@@ -74,6 +78,10 @@ public:
 
 Q_SIGNALS:
     void languageRequested(const QString& language);
+    // File → Open machine… / New machine… / Open demo machine.
+    void openMachineRequested();
+    void newMachineRequested();
+    void demoMachineRequested();
     void darkRequested(bool dark);
     // The identity (and the first sections) arrived after connectAndLoad.
     void loaded(bool ok);
@@ -85,6 +93,7 @@ private:
     void createPages(const QList<FamilyGui*>& families);
     void addPage(SectionPage* page, const QString& familyId);
     void createMenus();
+    void addMachineEntries(QMenu* file);
     void createStatusBar();
     void updateLivePolling();
     void updateTitle();
@@ -117,6 +126,7 @@ private:
     QSet<QString> m_quietJobs;
     QString m_lastMessage;
     bool m_loadPending = false;  // connectAndLoad() waits for its family's reads
+    bool m_inMachine = false;    // one device's window inside a machine's
 };
 
 }  // namespace cambench

@@ -30,7 +30,7 @@ QStringList MotionStop::jobTitles() {
     return {stopTitle(), askTitle(), kAvailabilityTitle};
 }
 
-MotionStop::MotionStop(DeviceSession* session) : QObject(session), m_session(session) {
+MotionStop::MotionStop(DeviceSession* session) : StopControl(session), m_session(session) {
     connect(session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         switch (state) {
             case comm::ConnectionState::Connected:
@@ -89,6 +89,14 @@ void MotionStop::askAvailability() {
 }
 
 void MotionStop::stopAll() {
+    if (m_machine) {
+        m_machine->stopAll();
+        return;
+    }
+    stopThisDevice();
+}
+
+void MotionStop::stopThisDevice() {
     if (!m_available) return;
     qCInfo(shellLog) << "STOP pressed";
     // A move that waits for the line must not run after the STOP; the
@@ -111,10 +119,8 @@ void MotionStop::stopAll() {
         },
         [this](MotionStopReport report) {
             m_stopRunning = false;
-            m_lastReport = report;
-            m_lastStop = QDateTime::currentDateTime();
             qCInfo(shellLog) << "STOP done:" << reportText(report);
-            Q_EMIT stopFinished(report);
+            finishStop(report);
         });
 }
 

@@ -1,10 +1,9 @@
 #pragma once
 
-#include "comm/device/motion_control.h"
 #include "model/result.h"
+#include "stop_control.h"
 
-#include <QDateTime>
-#include <QObject>
+#include <QPointer>
 
 namespace cambench {
 
@@ -14,27 +13,30 @@ class DeviceSession;
 // the motion pages' own STOP buttons all call stopAll() here, whatever page
 // is shown and whatever job runs. Whether the device on the line can move
 // anything is asked once per connection and identity (the device's
-// MotionControl, nullptr for a CamCon) and kept here.
-class MotionStop : public QObject {
+// MotionControl, nullptr for a CamCon) and kept here. A device of a machine
+// hands its STOP to the machine's (joinMachine), which stops every device.
+class MotionStop : public StopControl {
     Q_OBJECT
 public:
     explicit MotionStop(DeviceSession* session);
 
     // The device on the line (or, while the line is lost, the last one) can
     // move something: a STOP is shown.
-    bool available() const { return m_available; }
+    bool available() const override { return m_available; }
     // A STOP can reach the device now: shown and online.
-    bool armed() const;
+    bool armed() const override;
 
     // Stops everything the device can move, without a question: drops what
     // waits for the line (a queued move must not follow the STOP) and runs
     // ahead of everything, between two requests of a running job.
-    // stopFinished() reports per axis or drive.
-    void stopAll();
+    // stopFinished() reports per axis or drive. In a machine: the
+    // machine's STOP, every device's.
+    void stopAll() override;
+    // The STOP of this device alone (what stopAll() does outside a machine).
+    void stopThisDevice();
     bool stopRunning() const { return m_stopRunning; }
-    // The last STOP's report (empty before the first) and when it ended.
-    const comm::MotionStopReport& lastReport() const { return m_lastReport; }
-    QDateTime lastStopTime() const { return m_lastStop; }
+    // From now on every STOP of this device is `machine`'s (nullptr: its own).
+    void joinMachine(StopControl* machine) { m_machine = machine; }
 
     // What moves or is powered, asked from the device; an error when it
     // cannot tell, also when no answer came within `timeoutMs` (the GUI
@@ -52,11 +54,6 @@ public:
     // reports in its bar, and must not hide the backup it interrupts).
     static QStringList jobTitles();
 
-Q_SIGNALS:
-    void availabilityChanged();
-    void stopStarted();
-    void stopFinished(const cambench::comm::MotionStopReport& report);
-
 private:
     // Asks the worker whether the device on the line has a MotionControl.
     void askAvailability();
@@ -66,8 +63,7 @@ private:
     bool m_available = false;
     bool m_stopRunning = false;
     quint64 m_asked = 0;  // the last availability question; older answers are dropped
-    comm::MotionStopReport m_lastReport;
-    QDateTime m_lastStop;
+    QPointer<StopControl> m_machine;
 };
 
 }  // namespace cambench

@@ -1,8 +1,12 @@
 #include "report_pages.h"
 
 #include <QAbstractTextDocumentLayout>
+#include <QCoreApplication>
+#include <QPageSize>
 #include <QPagedPaintDevice>
 #include <QPainter>
+#include <QPdfWriter>
+#include <QSaveFile>
 #include <QTextBlock>
 #include <QTextCursor>
 #include <QTextDocument>
@@ -55,6 +59,29 @@ void printWithPageNumbers(QTextDocument& document, QPagedPaintDevice& device,
         painter.drawText(QRectF(0, pageHeight, width, footer), Qt::AlignCenter,
                          pageText.arg(page + 1).arg(pages));
     }
+}
+
+Status writeReportPdf(const QString& path, QTextDocument& document, const QString& title,
+                      const QString& pageText) {
+    // QPdfWriter writes straight into its target: render into a QSaveFile.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return Error::invalidData(QCoreApplication::translate("cambench::CommissioningReport",
+                                                              "Cannot write the report to %1: %2")
+                                      .arg(path, file.errorString()));
+    {
+        QPdfWriter writer(&file);
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setTitle(title);
+        writer.setCreator(QStringLiteral("CamBench"));
+        writer.setResolution(150);
+        printWithPageNumbers(document, writer, pageText);
+    }
+    if (!file.commit())
+        return Error::invalidData(QCoreApplication::translate("cambench::CommissioningReport",
+                                                              "Cannot write the report to %1: %2")
+                                      .arg(path, file.errorString()));
+    return success();
 }
 
 }  // namespace cambench

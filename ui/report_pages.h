@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/result.h"
+
 #include <QString>
 
 class QPagedPaintDevice;
@@ -17,5 +19,10 @@ int keepHeadingsWithText(QTextDocument& document);
 // the translated "Page %1 of %2".
 void printWithPageNumbers(QTextDocument& document, QPagedPaintDevice& device,
                           const QString& pageText);
+
+// Writes `document` as an A4 PDF titled `title` to `path`, page-numbered
+// with `pageText`, or leaves `path` untouched; the error names the file.
+Status writeReportPdf(const QString& path, QTextDocument& document, const QString& title,
+                      const QString& pageText);
 
 }  // namespace cambench

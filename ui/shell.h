@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/result.h"
+
 #include <QList>
 #include <QObject>
 #include <QPointer>
@@ -8,7 +10,9 @@ namespace cambench {
 
 class DeviceSession;
 class FamilyGui;
+class Machine;
 class MainWindow;
+struct MachineFile;
 
 // The application around the window: one session and each registered
 // family's GUI part (with what it holds on the PC) for the whole run, and a
@@ -32,16 +36,28 @@ public:
     void start(const QString& port, const QString& protocol = {});
     void switchLanguage(const QString& language);
 
+    // A machine's window beside this one (File → Open machine…): every
+    // device of `file` on its own line. `path`: where it was read from.
+    Machine* openMachine(const MachineFile& file, const QString& path);
+    QList<Machine*> machines() const;
+    // The machine of the file at `path`; an error names what is wrong.
+    Result<Machine*> openMachineFile(const QString& path);
+
 Q_SIGNALS:
     void windowRebuilt(cambench::MainWindow* window);
 
 private:
     MainWindow* createWindow();
+    void askForMachineFile();
+    void openDemoMachine();
+    // A machine whose first device is this window's connection.
+    void newMachine();
     static void showFitting(MainWindow& window, bool restored);
 
     DeviceSession* m_session;
     QList<FamilyGui*> m_families;
     QPointer<MainWindow> m_window;
+    QList<QPointer<Machine>> m_machines;
 };
 
 }  // namespace cambench

@@ -26,6 +26,7 @@ target_sources(cambench_ui PRIVATE
   motion_stop.cpp
   motion_leave_question.h
   motion_leave_question.cpp
+  stop_control.h
   stop_bar.h
   stop_bar.cpp
   stop_shortcut.h
@@ -61,6 +62,20 @@ target_sources(cambench_ui PRIVATE
   report_pages.cpp
   main_window.h
   main_window.cpp
+  machine/machine_connection.h
+  machine/machine_connection.cpp
+  machine/machine_stop.h
+  machine/machine_stop.cpp
+  machine/machine_unit.h
+  machine/machine_unit.cpp
+  machine/machine.h
+  machine/machine.cpp
+  machine/machine_window.h
+  machine/machine_window.cpp
+  machine/machine_report.h
+  machine/machine_report.cpp
+  machine/demo_machine.h
+  machine/demo_machine.cpp
   shell.h
   shell.cpp
   screenshot_tour.h

@@ -10,7 +10,7 @@
 
 namespace cambench {
 
-StopBar::StopBar(MotionStop* stop, const QString& shortcutText, QWidget* parent)
+StopBar::StopBar(StopControl* stop, const QString& shortcutText, QWidget* parent)
     : QFrame(parent),
       m_stop(stop),
       m_button(new QPushButton(tr("STOP (%1)").arg(shortcutText))),
@@ -32,13 +32,13 @@ StopBar::StopBar(MotionStop* stop, const QString& shortcutText, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_button);
     layout->addWidget(m_report, 1);
-    connect(m_button, &QPushButton::clicked, stop, &MotionStop::stopAll);
-    connect(stop, &MotionStop::availabilityChanged, this, &StopBar::update);
-    connect(stop, &MotionStop::stopStarted, this, [this] {
+    connect(m_button, &QPushButton::clicked, stop, &StopControl::stopAll);
+    connect(stop, &StopControl::availabilityChanged, this, &StopBar::update);
+    connect(stop, &StopControl::stopStarted, this, [this] {
         m_report->setText(tr("STOP sent…"));
         m_report->setStyleSheet(QString());
     });
-    connect(stop, &MotionStop::stopFinished, this, &StopBar::showReport);
+    connect(stop, &StopControl::stopFinished, this, &StopBar::showReport);
     update();
     if (!stop->lastReport().lines.isEmpty()) showReport();  // a window rebuilt keeps it
 }

@@ -7,16 +7,16 @@ class QPushButton;
 
 namespace cambench {
 
-class MotionStop;
+class StopControl;
 
-// The shell's STOP, above every page while the device on the line can move
-// something: a big button, red while it can reach the device and grey
-// (never looking armed) while it cannot, and the last STOP's report beside
-// it, one line per axis or drive.
+// The shell's STOP, above every page while the device on the line (or, in
+// a machine, a device of the machine) can move something: a big button,
+// red while it can reach the device and grey (never looking armed) while it
+// cannot, and the last STOP's report beside it, one line per axis or drive.
 class StopBar : public QFrame {
     Q_OBJECT
 public:
-    StopBar(MotionStop* stop, const QString& shortcutText, QWidget* parent = nullptr);
+    StopBar(StopControl* stop, const QString& shortcutText, QWidget* parent = nullptr);
 
     QPushButton* button() const { return m_button; }
     QString reportText() const;
@@ -25,7 +25,7 @@ private:
     void update();
     void showReport();
 
-    MotionStop* m_stop;
+    StopControl* m_stop;
     QPushButton* m_button;
     QLabel* m_report;
 };

@@ -1,6 +1,6 @@
 #include "stop_shortcut.h"
 
-#include "motion_stop.h"
+#include "stop_control.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -9,7 +9,7 @@
 
 namespace cambench {
 
-StopShortcut::StopShortcut(MotionStop* stop, QWidget* window)
+StopShortcut::StopShortcut(StopControl* stop, QWidget* window)
     : QObject(window), m_stop(stop), m_window(window) {
     qApp->installEventFilter(this);
 }

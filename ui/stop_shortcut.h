@@ -7,7 +7,7 @@ class QWidget;
 
 namespace cambench {
 
-class MotionStop;
+class StopControl;
 
 // The window-wide STOP key (Escape) from every widget of `window`: also
 // from a table's cell editor and a spin box, which take Escape for
@@ -18,7 +18,7 @@ class MotionStop;
 class StopShortcut : public QObject {
     Q_OBJECT
 public:
-    StopShortcut(MotionStop* stop, QWidget* window);
+    StopShortcut(StopControl* stop, QWidget* window);
     ~StopShortcut() override;
 
     static QKeySequence key() { return QKeySequence(Qt::Key_Escape); }
@@ -27,7 +27,7 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    MotionStop* m_stop;
+    StopControl* m_stop;
     QWidget* m_window;
     // One key press reaches the filter once per widget it travels through
     // (the focus widget, then its parents): it stops once.

@@ -36,6 +36,11 @@ struct CommandLine {
         QStringLiteral("With --port: a protocol id, as `cambench-cli --help` lists them "
                        "(default: the connection page's choice)."),
         QStringLiteral("protocol")};
+    const QCommandLineOption machine{
+        QStringLiteral("machine"),
+        QStringLiteral("Open the machine of this machine file beside the window (as File → Open "
+                       "machine… does)."),
+        QStringLiteral("FILE")};
     const QCommandLineOption shots{QStringLiteral("screenshots"),
                                    QStringLiteral("Visit every screen of every family and "
                                                   "protocol on its simulated device, save one "
@@ -48,7 +53,7 @@ struct CommandLine {
                            "Version " CAMBENCH_VERSION_TEXT "."));
         parser.addHelpOption();
         parser.addVersionOption();
-        parser.addOptions({lang, dark, port, protocol, shots});
+        parser.addOptions({lang, dark, port, protocol, machine, shots});
     }
 };
 
@@ -93,6 +98,7 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption& port = commandLine.port;
     const QCommandLineOption& protocol = commandLine.protocol;
     const QCommandLineOption& shots = commandLine.shots;
+    const QCommandLineOption& machine = commandLine.machine;
     parser.process(app);
 
     // The screenshot tour shows the program as first started and must not
@@ -132,6 +138,14 @@ int main(int argc, char* argv[]) {
     }
     cambench::Shell shell;
     shell.start(startPort, startProtocol);
+    if (parser.isSet(machine)) {
+        const cambench::Result<cambench::Machine*> opened =
+            shell.openMachineFile(parser.value(machine));
+        if (!opened) {
+            std::fprintf(stderr, "cambench: %s\n", qPrintable(opened.error().message));
+            return 2;
+        }
+    }
 
     if (parser.isSet(shots)) {
         auto* tour = new cambench::ScreenshotTour(&shell, parser.value(shots), &shell);

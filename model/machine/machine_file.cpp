@@ -150,6 +150,42 @@ QStringList machineDeviceKeys() {
             QStringLiteral("pc-number")};
 }
 
+namespace {
+
+// A JSON string or, for a whole number, the number.
+QByteArray jsonValue(const QString& text, bool numberAllowed) {
+    bool number = false;
+    const qint64 value = text.toLongLong(&number);
+    if (numberAllowed && number && QString::number(value) == text) return text.toUtf8();
+    // QJsonDocument writes the escapes; the array's brackets are dropped.
+    const QByteArray array = QJsonDocument(QJsonArray{text}).toJson(QJsonDocument::Compact);
+    return array.mid(1, array.size() - 2);
+}
+
+QByteArray deviceJson(const MachineDevice& device) {
+    // The options the command line takes as numbers; a port stays text.
+    static const QStringList numericKeys{QStringLiteral("address"), QStringLiteral("baud"),
+                                         QStringLiteral("device"), QStringLiteral("pc-number")};
+    QByteArrayList members{"\"name\": " + jsonValue(device.name, false),
+                           "\"family\": " + jsonValue(device.family, false)};
+    for (const auto& [key, value] : device.options)
+        members << jsonValue(key, false) + ": " + jsonValue(value, numericKeys.contains(key));
+    return "{" + members.join(", ") + "}";
+}
+
+}  // namespace
+
+QByteArray machineFileJson(const MachineFile& machine) {
+    QByteArrayList devices;
+    for (const MachineDevice& device : machine.devices) devices << "    " + deviceJson(device);
+    QByteArray text = "{\n  \"machine\": " + jsonValue(machine.machine, false) +
+                      ",\n  \"devices\": [\n" + devices.join(",\n") + "\n  ]";
+    if (!machine.shaftFrom.isEmpty() || !machine.shaftTo.isEmpty())
+        text += ",\n  \"shaft\": {\"from\": " + jsonValue(machine.shaftFrom, false) +
+                ", \"to\": " + jsonValue(machine.shaftTo, false) + "}";
+    return text + "\n}\n";
+}
+
 Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& where) {
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &error);

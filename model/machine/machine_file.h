@@ -57,4 +57,10 @@ QStringList machineDeviceKeys();
 // the family and the options fit together is the command line's check.
 Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& where);
 
+// The file's text: "machine", "devices" (each "name", "family", then its
+// options in their order; whole numbers as numbers) and "shaft", in that
+// order, one device a line: saving twice gives the same bytes, and a
+// changed device is one changed line. parseMachineFile() reads it back.
+QByteArray machineFileJson(const MachineFile& machine);
+
 }  // namespace cambench

@@ -50,7 +50,7 @@ CamPage::CamPage(DeviceSession* session, Workspace* workspace, QWidget* parent)
     });
     connect(m_editor, &CamEditorWidget::writeProgramRequested, this, [this](int program) {
         writeProgram(program, [this, program](const WriteResult& result) {
-            presentWriteResult(this, tr("Write program %1").arg(program), result);
+            presentWriteResult(this, m_session, tr("Write program %1").arg(program), result);
         });
     });
     const auto online = [this] { m_editor->setOnline(m_session->isOnline()); };

@@ -1,6 +1,7 @@
 #include "camcon_gui.h"
 
 #include "camcon_window.h"
+#include "commissioning_report.h"
 #include "workspace.h"
 
 #include "ui/main_window.h"
@@ -43,6 +44,13 @@ QString CamConGui::windowSubject() const {
 
 int CamConGui::unwrittenCount() const {
     return m_workspace->changedCount();
+}
+
+QString CamConGui::reportSection(QTextDocument& document, const QString& resourcePrefix) const {
+    // The commissioning report, whole: what was read, when, and what is not written.
+    CommissioningReport::Options options;
+    options.resourcePrefix = resourcePrefix;
+    return CommissioningReport::html(document, *m_workspace, options);
 }
 
 Workspace* camConWorkspace(const Shell& shell) {

@@ -21,6 +21,7 @@ public:
     QString identityLine() const override;
     QString windowSubject() const override;
     int unwrittenCount() const override;
+    QString reportSection(QTextDocument& document, const QString& resourcePrefix) const override;
 
 private:
     Workspace* m_workspace;

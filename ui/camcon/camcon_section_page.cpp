@@ -53,18 +53,19 @@ void CamConSectionPage::writeDifferences(DeviceSession* session, Workspace* work
     }
     Q_EMIT statusMessage(tr("%1: writing…").arg(title));
     const int others = std::max(0, itemCount() - int(items.size()));
-    writeToDevice(
-        this, session, workspace, items, [this, title, others, done](const WriteResult& result) {
-            QString summary = tr("%1: %2").arg(title, writeSummary(result));
-            if (result && others > 0)
-                summary = asSentence(summary) + QLatin1Char(' ') +
-                          tr("%n other item(s) of this section were already as on the device "
-                             "and not sent.",
-                             nullptr, others);
-            Q_EMIT statusMessage(summary);
-            presentWriteResult(this, title, result);
-            if (done) done(result);
-        });
+    writeToDevice(this, session, workspace, items,
+                  [this, session, title, others, done](const WriteResult& result) {
+                      QString summary = tr("%1: %2").arg(title, writeSummary(result));
+                      if (result && others > 0)
+                          summary =
+                              asSentence(summary) + QLatin1Char(' ') +
+                              tr("%n other item(s) of this section were already as on the device "
+                                 "and not sent.",
+                                 nullptr, others);
+                      Q_EMIT statusMessage(summary);
+                      presentWriteResult(this, session, title, result);
+                      if (done) done(result);
+                  });
 }
 
 }  // namespace cambench

@@ -150,7 +150,7 @@ Status CamConWindow::saveProjectTo(const QString& path) {
 }
 
 Status CamConWindow::exportReport(const QString& path, std::optional<double> timingSpeed) {
-    return CommissioningReport::write(path, *m_workspace, {timingSpeed});
+    return CommissioningReport::write(path, *m_workspace, {timingSpeed, {}});
 }
 
 void CamConWindow::exportReportInteractive() {

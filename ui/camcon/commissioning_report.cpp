@@ -18,9 +18,6 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QLocale>
-#include <QPageSize>
-#include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 #include <QUrl>
 
@@ -334,7 +331,10 @@ private:
         const int outputs = m_workspace.info().outputs;
         for (int first = 1; first <= outputs; first += kOutputsPerDiagram) {
             const int last = std::min(outputs, first + kOutputsPerDiagram - 1);
-            const QString resource = QStringLiteral("diagram-%1-%2.png").arg(number).arg(first);
+            const QString resource = QStringLiteral("%1diagram-%2-%3.png")
+                                         .arg(m_options.resourcePrefix)
+                                         .arg(number)
+                                         .arg(first);
             m_document.addResource(QTextDocument::ImageResource, QUrl(resource),
                                    printDiagram(m_cams, number, first, last, kDiagramWidth));
             html += QStringLiteral("<p><img src='%1' width='%2'></p>")
@@ -467,23 +467,12 @@ Status CommissioningReport::write(const QString& path, const Workspace& workspac
                                   const Options& options) {
     QTextDocument document;
     build(document, workspace, options);
-    // QPdfWriter writes straight into its target: render into a QSaveFile.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return Error::invalidData(
-            tr("Cannot write the report to %1: %2").arg(path, file.errorString()));
-    {
-        QPdfWriter writer(&file);
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setTitle(tr("Commissioning report"));
-        writer.setCreator(QStringLiteral("CamBench"));
-        writer.setResolution(150);
-        printWithPageNumbers(document, writer, tr("Page %1 of %2"));
-    }
-    if (!file.commit())
-        return Error::invalidData(
-            tr("Cannot write the report to %1: %2").arg(path, file.errorString()));
-    return success();
+    return writeReportPdf(path, document, tr("Commissioning report"), tr("Page %1 of %2"));
+}
+
+QString CommissioningReport::html(QTextDocument& document, const Workspace& workspace,
+                                  const Options& options) {
+    return Builder(document, workspace, options).build();
 }
 
 }  // namespace cambench

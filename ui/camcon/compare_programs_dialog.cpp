@@ -441,7 +441,7 @@ void CompareProgramsDialog::applyChecked() {
     writeToDevice(this, m_session, m_workspace, items, [this, number](const WriteResult& result) {
         --m_applying;
         m_applyResult = tr("Program %1: %2").arg(number).arg(writeSummary(result));
-        presentWriteResult(this, tr("Write checked differences"), result);
+        presentWriteResult(this, m_session, tr("Write checked differences"), result);
         Q_EMIT applied(result && result->complete());
         // Read again: the list shows what the device holds now.
         m_pendingNote = m_applyResult;

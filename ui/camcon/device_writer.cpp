@@ -189,9 +189,11 @@ QString writeDetails(const WriteResult& result) {
     return text;
 }
 
-void presentWriteResult(QWidget* parent, const QString& title, const WriteResult& result) {
+void presentWriteResult(QWidget* parent, DeviceSession* session, const QString& title,
+                        const WriteResult& result) {
     const bool complete = result && result->complete();
-    LastWriteReport::instance().record(title, writeSummary(result), writeDetails(result), complete);
+    // The device's own: in a machine, another device's window never shows it.
+    session->lastWriteReport().record(title, writeSummary(result), writeDetails(result), complete);
     // Complete, yet with something to know (written to RAM only, ...): said
     // where it cannot be missed, not only in the status bar.
     const bool notes = result && !result->notes.isEmpty();

@@ -41,7 +41,8 @@ quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* works
 QString writeSummary(const WriteResult& result);
 // ... and, when not everything was written, a dialog that lists every item
 // not written with what the device holds now.
-void presentWriteResult(QWidget* parent, const QString& title, const WriteResult& result);
+void presentWriteResult(QWidget* parent, DeviceSession* session, const QString& title,
+                        const WriteResult& result);
 // The lines that dialog lists (items not written first).
 QString writeDetails(const WriteResult& result);
 

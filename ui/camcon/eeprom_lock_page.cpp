@@ -78,7 +78,7 @@ void EepromLockPage::setLocked(bool locked) {
                       if (this->locked().value_or(false))
                           text += QLatin1Char(' ') + m_warning->text();
                       Q_EMIT statusMessage(text);
-                      presentWriteResult(this, title, result);
+                      presentWriteResult(this, m_session, title, result);
                   });
 }
 

@@ -99,7 +99,7 @@ void ReportAndCountsTest::reportHoldsEverySectionOfTheDevice() {
     // that speed and in its unit.
     {
         QTextDocument timed;
-        CommissioningReport::build(timed, ws, {60.0});
+        CommissioningReport::build(timed, ws, {60.0, {}});
         const QString withTiming = timed.toPlainText();
         QVERIFY2(withTiming.contains(QStringLiteral("Timing at 60.0 1/min")),
                  qPrintable(withTiming.right(2000)));

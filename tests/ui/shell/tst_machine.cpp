@@ -1,0 +1,346 @@
+// Issue 30 items 2 and 4: the machine in the GUI. Real widgets, each device
+// on its own in-process simulated device through its own worker: two
+// devices of different families at once, each with its own identity; one
+// going away leaves the other as it was; the STOP of any device's page
+// stops the device that moves and the status bar names it; a machine file
+// saved and opened again lists the same devices.
+#include "shell_fixture.h"
+
+#include "model/machine/machine_file.h"
+#include "ui/connection_status.h"
+#include "ui/device_session.h"
+#include "ui/family_gui.h"
+#include "ui/machine/demo_machine.h"
+#include "ui/machine/machine.h"
+#include "ui/machine/machine_connection.h"
+#include "ui/machine/machine_report.h"
+#include "ui/machine/machine_stop.h"
+#include "ui/machine/machine_unit.h"
+#include "ui/machine/machine_window.h"
+#include "ui/mc1/mc1_axes_page.h"
+#include "ui/mc1/mc1_window.h"
+#include "ui/motion_stop.h"
+#include "ui/stop_bar.h"
+
+#include <QLabel>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTextDocument>
+#include <QTreeWidget>
+
+using namespace cambench;
+using namespace cambench::test;
+
+namespace {
+
+MachineDevice device(const QString& name, const QString& family,
+                     const QList<QPair<QString, QString>>& options) {
+    return MachineDevice{name, family, options};
+}
+
+// A CamCon and an MC200 V2, each on its own simulated device, unthrottled.
+MachineFile camsAndPlc() {
+    MachineFile file;
+    file.machine = QStringLiteral("Test press");
+    file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
+                           {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
+                            {QStringLiteral("protocol"), QStringLiteral("standard")}})
+                 << device(QStringLiteral("press-plc"), QStringLiteral("mc1"),
+                           {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
+                            {QStringLiteral("protocol"), QStringLiteral("mc1")},
+                            {QStringLiteral("variant"), QStringLiteral("mc200v2")}});
+    return file;
+}
+
+// Every device on the line and identified (its family's start reads done).
+bool waitIdentified(const Machine& machine) {
+    return QTest::qWaitFor(
+        [&machine] {
+            for (const MachineUnit* unit : machine.units())
+                if (!unit->session()->deviceChecked() ||
+                    unit->lamp() != MachineUnit::Lamp::Connected)
+                    return false;
+            return true;
+        },
+        kDeviceTimeoutMs);
+}
+
+// The CamCon and the MC200 open in a machine's window, both identified.
+struct CamsAndPlc {
+    Shell shell;
+    Machine* machine = nullptr;
+    MachineUnit* cams = nullptr;
+    MachineUnit* plc = nullptr;
+};
+std::unique_ptr<CamsAndPlc> openCamsAndPlc() {
+    auto open = std::make_unique<CamsAndPlc>();
+    open->machine = open->shell.openMachine(camsAndPlc(), {});
+    if (!waitIdentified(*open->machine)) return nullptr;
+    open->cams = open->machine->unit(QStringLiteral("cams"));
+    open->plc = open->machine->unit(QStringLiteral("press-plc"));
+    return open;
+}
+
+QTreeWidgetItem* row(const Machine& machine, const QString& name) {
+    QTreeWidget* list = machine.window()->deviceList();
+    for (int i = 0; i < list->topLevelItemCount(); ++i)
+        if (list->topLevelItem(i)->text(MachineWindow::Name) == name) return list->topLevelItem(i);
+    return nullptr;
+}
+
+}  // namespace
+
+class TestMachine : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { useTestSettings(); }
+
+    void twoDevicesOfTwoFamiliesAtOnceAndOneGoesAway() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        MachineUnit* plc = open->plc;
+        // Each its own connection and worker.
+        QVERIFY(cams->session() != plc->session());
+        QVERIFY(&cams->session()->worker() != &plc->session()->worker());
+        // Each window names its own device.
+        const QString camsIdentity = cams->window()->connectionStrip()->text();
+        const QString plcIdentity = plc->window()->connectionStrip()->text();
+        QVERIFY2(camsIdentity.contains(QLatin1String("CamCon")), qPrintable(camsIdentity));
+        QVERIFY2(plcIdentity.contains(QLatin1String("MC200")), qPrintable(plcIdentity));
+        QVERIFY(!camsIdentity.contains(QLatin1String("MC200")));
+        // The list: name, family, port, lamp in words.
+        QCOMPARE(machine->window()->deviceList()->topLevelItemCount(), 2);
+        QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::Port),
+                 QStringLiteral("sim:variant=mc200v2"));
+        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+                 QStringLiteral("connected"));
+        // Switching shows the other device's pages.
+        machine->window()->showDevice(QStringLiteral("press-plc"));
+        QCOMPARE(machine->window()->currentDevice(), QStringLiteral("press-plc"));
+        QVERIFY(plc->window()->isVisibleTo(machine->window()));
+        QVERIFY(!cams->window()->isVisibleTo(machine->window()));
+
+        // The MC200 goes away: its row says so, the CamCon stays as it was.
+        QSignalSpy camsLine(cams->session(), &DeviceSession::stateChanged);
+        QVERIFY(plc->session()->disconnectFromDevice());
+        QVERIFY(QTest::qWaitFor([&] { return plc->lamp() == MachineUnit::Lamp::Offline; },
+                                kDeviceTimeoutMs));
+        QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
+                 QStringLiteral("offline"));
+        QTest::qWait(200);
+        QCOMPARE(cams->lamp(), MachineUnit::Lamp::Connected);
+        QVERIFY(cams->session()->deviceChecked());
+        QCOMPARE(cams->window()->connectionStrip()->text(), camsIdentity);
+        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+                 QStringLiteral("connected"));
+        QCOMPARE(camsLine.size(), 0);  // the CamCon's line was not touched
+    }
+
+    void stopOnAnyPageStopsTheAxisThatMoves() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        MachineUnit* plc = open->plc;
+        // The CamCon moves nothing, yet its page shows the machine's STOP.
+        QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
+        QVERIFY(!cams->session()->motionStop()->available());
+        QVERIFY(cams->window()->stopBar()->isVisibleTo(cams->window()));
+
+        // A jog through the MC-1 page's own confirmation.
+        machine->window()->showDevice(QStringLiteral("press-plc"));
+        Mc1AxesPage* axes = mc1Window(plc->window())->axesPage();
+        plc->window()->showPage(axes);
+        QVERIFY(QTest::qWaitFor([&] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs));
+        const auto yes = answerConfirmation(true);
+        axes->findChild<QPushButton*>(QStringLiteral("mc1JogPlus"))->click();
+        QCOMPARE(yes->answered(), 1);
+        const auto says = [axes](const char* what) {
+            return axes->stateLabel()->text().contains(QLatin1String(what));
+        };
+        QVERIFY(QTest::qWaitFor([&] { return says("jogging +"); }, kDeviceTimeoutMs));
+
+        // STOP on the CamCon's page.
+        machine->window()->showDevice(QStringLiteral("cams"));
+        QSignalSpy plcStopped(plc->session()->motionStop(), &StopControl::stopFinished);
+        QSignalSpy machineStopped(machine->stop(), &StopControl::stopFinished);
+        cams->window()->stopBar()->button()->click();
+        QVERIFY(machineStopped.wait(kDeviceTimeoutMs));
+        QCOMPARE(plcStopped.size(), 1);  // the MC200's own STOP, once
+        const auto report = machineStopped.first().first().value<comm::MotionStopReport>();
+        QVERIFY(report.allAcknowledged());
+        QVERIFY(!report.lines.isEmpty());
+        for (const comm::MotionStopLine& line : report.lines)
+            QVERIFY2(line.what.startsWith(QLatin1String("press-plc: ")), qPrintable(line.what));
+        const QString message = machine->window()->statusBar()->currentMessage();
+        QVERIFY2(message.contains(QLatin1String("STOP: acknowledged by press-plc.")),
+                 qPrintable(message));
+        QVERIFY2(!message.contains(QLatin1String("cams")), qPrintable(message));
+        QVERIFY(QTest::qWaitFor([&] { return says("stands at"); }, kDeviceTimeoutMs));
+
+        // A device that can move but is not on the line is named as not reached.
+        QVERIFY(plc->session()->disconnectFromDevice());
+        QVERIFY(QTest::qWaitFor([&] { return !plc->session()->isOnline(); }, kDeviceTimeoutMs));
+        // (Offline by the person's own disconnect: nothing left that can move.)
+        QVERIFY(!machine->stop()->armed());
+    }
+
+    void theStopKeyStopsFromEveryDevice() {
+        Shell shell;
+        Machine* machine = shell.openMachine(camsAndPlc(), {});
+        QVERIFY(waitIdentified(*machine));
+        QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
+        machine->window()->showDevice(QStringLiteral("cams"));
+        machine->window()->activateWindow();
+        QSignalSpy stopped(machine->stop(), &StopControl::stopFinished);
+        QTest::keyClick(machine->window()->deviceList(), Qt::Key_Escape);
+        QVERIFY(stopped.wait(kDeviceTimeoutMs));
+        QCOMPARE(stopped.size(), 1);  // once, not once per device window
+    }
+
+    // A language switch rebuilds the machine's window and each device's;
+    // the lines, the identities and the STOP stay.
+    void aLanguageSwitchKeepsEveryLine() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        QSignalSpy camsLine(open->cams->session(), &DeviceSession::stateChanged);
+        QSignalSpy plcLine(open->plc->session(), &DeviceSession::stateChanged);
+        const MachineWindow* before = open->machine->window();
+        open->machine->window()->showDevice(QStringLiteral("press-plc"));
+        open->shell.switchLanguage(QStringLiteral("en"));
+        QVERIFY(open->machine->window() != before);
+        QCOMPARE(open->machine->window()->currentDevice(), QStringLiteral("press-plc"));
+        QCOMPARE(open->machine->window()->deviceList()->topLevelItemCount(), 2);
+        QCOMPARE(camsLine.size(), 0);
+        QCOMPARE(plcLine.size(), 0);
+        // A window built on a line asks its device who it is again.
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return open->plc->window()->connectionStrip()->text().contains(
+                    QLatin1String("MC200"));
+            },
+            kDeviceTimeoutMs));
+        QVERIFY(open->cams->window()->stopBar()->isVisibleTo(open->cams->window()));
+        QSignalSpy stopped(open->machine->stop(), &StopControl::stopFinished);
+        open->cams->window()->stopBar()->button()->click();
+        QVERIFY(stopped.wait(kDeviceTimeoutMs));
+    }
+
+    void savedAndOpenedAgainListsTheSameDevices() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("press.json"));
+        Shell shell;
+        Machine* machine = shell.openMachine(camsAndPlc(), {});
+        QVERIFY(waitIdentified(*machine));
+        QVERIFY(machine->save(path));
+        const QByteArray first = machineFileJson(machine->file());
+        QCOMPARE(machineFileJson(machine->file()), first);  // stable
+        const Result<MachineFile> read = readMachineFile(path);
+        QVERIFY2(read, read ? "" : qPrintable(read.error().message));
+        QCOMPARE(read->machine, QStringLiteral("Test press"));
+        QCOMPARE(read->devices.size(), 2);
+        Machine* again = shell.openMachine(*read, path);
+        QVERIFY(waitIdentified(*again));
+        QTreeWidget* list = again->window()->deviceList();
+        QCOMPARE(list->topLevelItemCount(), 2);
+        for (int i = 0; i < 2; ++i) {
+            QTreeWidgetItem* before = machine->window()->deviceList()->topLevelItem(i);
+            QTreeWidgetItem* after = list->topLevelItem(i);
+            for (int column : {MachineWindow::Name, MachineWindow::Family, MachineWindow::Port})
+                QCOMPARE(after->text(column), before->text(column));
+        }
+        QCOMPARE(
+            again->unit(QStringLiteral("press-plc"))->device().option(QStringLiteral("variant")),
+            QStringLiteral("mc200v2"));
+    }
+
+    // Add device: its Connection page says how; the machine file takes
+    // what it connected with.
+    void anAddedDeviceIsConnectedOnItsPageAndSaved() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        MachineDevice feed;
+        feed.name = QStringLiteral("feed");
+        const Result<MachineUnit*> added = open->machine->addDevice(feed);
+        QVERIFY(added);
+        MachineUnit* unit = *added;
+        QCOMPARE(open->machine->window()->currentDevice(), QStringLiteral("feed"));
+        QCOMPARE(unit->lamp(), MachineUnit::Lamp::Offline);
+        QVERIFY(!unit->session()->wantsConnection());
+        QVERIFY(row(*open->machine, QStringLiteral("feed"))
+                    ->text(MachineWindow::State)
+                    .startsWith(QLatin1String("not connected yet")));
+        QVERIFY(!open->machine->addDevice(feed));  // the name is taken
+        ConnectionPage* page = unit->window()->connectionPage();
+        page->setFamily(QStringLiteral("compax3"));
+        page->setPort(QStringLiteral("sim"));
+        unit->window()->connectAndLoad();
+        QVERIFY(
+            QTest::qWaitFor([&] { return unit->session()->deviceChecked(); }, kDeviceTimeoutMs));
+        const MachineFile file = open->machine->file();
+        QCOMPARE(file.devices.size(), 3);
+        QCOMPARE(file.devices.at(2).family, QStringLiteral("compax3"));
+        QCOMPARE(file.devices.at(2).option(QStringLiteral("port")), QStringLiteral("sim"));
+        QCOMPARE(row(*open->machine, QStringLiteral("feed"))->text(MachineWindow::Port),
+                 QStringLiteral("sim"));
+        QCOMPARE(open->cams->lamp(), MachineUnit::Lamp::Connected);
+    }
+
+    void aWrongDeviceIsRefusedNamingItAndTheOthersConnect() {
+        MachineFile file = camsAndPlc();
+        file.devices[1].options[1].second = QStringLiteral("standard");  // a CamCon protocol
+        const Result<MachineConnection> refused = machineConnection(file.devices[1]);
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().message.startsWith(QLatin1String("press-plc: ")),
+                 qPrintable(refused.error().message));
+        Shell shell;
+        Machine* machine = shell.openMachine(file, {});
+        MachineUnit* cams = machine->unit(QStringLiteral("cams"));
+        MachineUnit* plc = machine->unit(QStringLiteral("press-plc"));
+        QVERIFY(
+            QTest::qWaitFor([&] { return cams->session()->deviceChecked(); }, kDeviceTimeoutMs));
+        QCOMPARE(plc->lamp(), MachineUnit::Lamp::Gone);
+        QVERIFY(!plc->session()->wantsConnection());  // no line opened for it
+        QVERIFY(row(*machine, QStringLiteral("press-plc"))
+                    ->text(MachineWindow::State)
+                    .contains(QLatin1String("not opened: press-plc: the protocol")));
+    }
+
+    void theReportHasTheMachineAndEachDevice() {
+        Shell shell;
+        Machine* machine = shell.openMachine(camsAndPlc(), {});
+        QVERIFY(waitIdentified(*machine));
+        QTextDocument document;
+        MachineReport::build(document, *machine);
+        const QString text = document.toPlainText();
+        QVERIFY(text.contains(QLatin1String("Machine report: Test press")));
+        for (const MachineUnit* unit : machine->units())
+            QVERIFY2(text.contains(unit->name() + QLatin1String(" (")), qPrintable(unit->name()));
+        // Each device's identity as its family gave it, and the CamCon's own report.
+        QVERIFY2(text.contains(QLatin1String("MC200")), qPrintable(text));
+        QVERIFY(text.contains(QLatin1String("Commissioning report")));
+        QVERIFY(text.contains(QLatin1String("Edits on this PC not written to the device: 0")));
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
+        QVERIFY(MachineReport::write(pdf, *machine));
+        QFile file(pdf);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.read(5) == "%PDF-");
+    }
+
+    void theDemoMachineIsBuiltIn() {
+        const Result<MachineFile> demo = demoMachineFile();
+        QVERIFY2(demo, demo ? "" : qPrintable(demo.error().message));
+        QCOMPARE(demo->devices.size(), 3);
+        for (const MachineDevice& device : demo->devices) {
+            const Result<MachineConnection> connection = machineConnection(device);
+            QVERIFY2(connection, connection ? "" : qPrintable(connection.error().message));
+            QVERIFY(connection->connection.port.startsWith(QLatin1String("sim")));
+        }
+    }
+};
+
+QTEST_MAIN(TestMachine)
+#include "tst_machine.moc"

@@ -1,0 +1,104 @@
+#include "machine_stop.h"
+
+#include "ui/motion_stop.h"
+#include "ui/shell_log.h"
+
+#include <memory>
+
+namespace cambench {
+
+MachineStop::MachineStop(QObject* parent) : StopControl(parent) {}
+
+void MachineStop::addDevice(const QString& name, MotionStop* stop) {
+    m_members.append({name, stop});
+    stop->joinMachine(this);
+    connect(stop, &StopControl::availabilityChanged, this, &StopControl::availabilityChanged);
+    Q_EMIT availabilityChanged();
+}
+
+bool MachineStop::available() const {
+    for (const Member& member : m_members)
+        if (member.stop && member.stop->available()) return true;
+    return false;
+}
+
+bool MachineStop::armed() const {
+    for (const Member& member : m_members)
+        if (member.stop && member.stop->armed()) return true;
+    return false;
+}
+
+void MachineStop::stopAll() {
+    if (!available()) return;
+    qCInfo(shellLog) << "machine STOP pressed";
+    // A STOP pressed again while one runs is sent again (never held back);
+    // the answers of the one before no longer count.
+    delete m_round;
+    m_round = new QObject(this);
+    auto answers = std::make_shared<QList<Answer>>();
+    for (const Member& member : m_members)
+        if (member.stop && member.stop->available())
+            answers->append({member.name, member.stop->armed(), false, {}});
+    Q_EMIT stopStarted();
+    const auto finishIfAllAnswered = [this, answers] {
+        for (const Answer& answer : *answers)
+            if (answer.reached && !answer.answered) return;
+        delete std::exchange(m_round, nullptr);
+        finishRound(*answers);
+    };
+    int index = 0;
+    for (const Member& member : m_members) {
+        if (!member.stop || !member.stop->available()) continue;
+        const int at = index++;
+        if (!member.stop->armed()) continue;
+        // Each device's STOP runs on its own worker; its answer comes when
+        // that device has acknowledged, whatever the others do.
+        connect(member.stop, &StopControl::stopFinished, m_round,
+                [answers, at, finishIfAllAnswered](const comm::MotionStopReport& report) {
+                    Answer& answer = (*answers)[at];
+                    if (answer.answered) return;
+                    answer.answered = true;
+                    answer.report = report;
+                    finishIfAllAnswered();
+                });
+    }
+    for (const Member& member : m_members)
+        if (member.stop && member.stop->armed()) member.stop->stopThisDevice();
+    // Answers come through the event loop: done now only when no device
+    // could be reached.
+    finishIfAllAnswered();
+}
+
+void MachineStop::finishRound(const QList<Answer>& answers) {
+    comm::MotionStopReport report;
+    QStringList stopped;
+    QStringList notAcknowledged;
+    QStringList notReached;
+    for (const Answer& answer : answers) {
+        if (!answer.reached) {
+            notReached << answer.name;
+            report.lines << comm::MotionStopLine{answer.name, false,
+                                                 tr("not connected: the STOP was not sent")};
+            continue;
+        }
+        (answer.report.allAcknowledged() ? stopped : notAcknowledged) << answer.name;
+        for (comm::MotionStopLine line : answer.report.lines) {
+            line.what = QStringLiteral("%1: %2").arg(answer.name, line.what);
+            report.lines << line;
+        }
+    }
+    QStringList parts;
+    const QString separator = QStringLiteral(", ");
+    if (!stopped.isEmpty()) parts << tr("acknowledged by %1").arg(stopped.join(separator));
+    if (!notAcknowledged.isEmpty())
+        parts << tr("NOT acknowledged by %1 – use the machine's emergency stop")
+                     .arg(notAcknowledged.join(separator));
+    if (!notReached.isEmpty())
+        parts << tr("could not reach %1 – use the machine's emergency stop")
+                     .arg(notReached.join(separator));
+    m_summary = parts.join(QStringLiteral("; ")) + QLatin1Char('.');
+    qCInfo(shellLog) << "machine STOP done:" << m_summary;
+    finishStop(report);
+}
+
+}  // namespace cambench
