@@ -180,9 +180,16 @@ QByteArray machineFileJson(const MachineFile& machine) {
     for (const MachineDevice& device : machine.devices) devices << "    " + deviceJson(device);
     QByteArray text = "{\n  \"machine\": " + jsonValue(machine.machine, false) +
                       ",\n  \"devices\": [\n" + devices.join(",\n") + "\n  ]";
-    if (!machine.shaftFrom.isEmpty() || !machine.shaftTo.isEmpty())
+    if (!machine.shaftFrom.isEmpty() || !machine.shaftTo.isEmpty()) {
         text += ",\n  \"shaft\": {\"from\": " + jsonValue(machine.shaftFrom, false) +
-                ", \"to\": " + jsonValue(machine.shaftTo, false) + "}";
+                ", \"to\": " + jsonValue(machine.shaftTo, false);
+        // Written only when given, so that a file read and saved again
+        // keeps the defaults it had (axis 1, 360 units a turn).
+        if (machine.shaftAxis) text += ", \"axis\": " + QByteArray::number(*machine.shaftAxis);
+        if (machine.shaftPerTurn)
+            text += ", \"per-turn\": " + QByteArray::number(*machine.shaftPerTurn, 'g', 15);
+        text += "}";
+    }
     return text + "\n}\n";
 }
 

@@ -153,6 +153,20 @@ private Q_SLOTS:
         QCOMPARE(read->devices.at(0).option(QStringLiteral("port")), QStringLiteral("5"));
         QCOMPARE(read->devices.at(1).option(QStringLiteral("address")), QStringLiteral("3"));
         QCOMPARE(machineFileJson(*read), text);
+
+        // The shaft's axis and units a turn, when given, are saved too.
+        machine.shaftAxis = 2;
+        machine.shaftPerTurn = 1000.5;
+        const QByteArray withShaft = machineFileJson(machine);
+        QVERIFY2(
+            withShaft.contains("\"shaft\": {\"from\": \"feed\", \"to\": \"cams\", \"axis\": 2, "
+                               "\"per-turn\": 1000.5}"),
+            withShaft.constData());
+        const Result<MachineFile> again = parseMachineFile(withShaft, QStringLiteral("m.json"));
+        QVERIFY2(again.ok(), qPrintable(again.error().message));
+        QCOMPARE(again->shaftAxis, std::optional<int>(2));
+        QCOMPARE(again->shaftPerTurn, std::optional<double>(1000.5));
+        QCOMPARE(machineFileJson(*again), withShaft);
     }
 };
 
