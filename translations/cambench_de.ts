@@ -3764,6 +3764,10 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Reconnect to reach device %1.</source>
         <translation>Neu verbinden, um Gerät %1 zu erreichen.</translation>
     </message>
+    <message>
+        <source>%1, address %2</source>
+        <translation>%1, Adresse %2</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -4438,6 +4442,240 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
+    <name>cambench::Machine</name>
+    <message>
+        <source>The machine has a device named &quot;%1&quot; already; give this one another name.</source>
+        <translation>Die Maschine hat schon ein Gerät namens „%1“; geben Sie diesem einen anderen Namen.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineReport</name>
+    <message>
+        <source>not identified</source>
+        <translation>nicht erkannt</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>nie</translation>
+    </message>
+    <message>
+        <source>Machine report: %1</source>
+        <translation>Maschinenbericht: %1</translation>
+    </message>
+    <message>
+        <source>Made %1 by CamBench.</source>
+        <translation>Erstellt am %1 von CamBench.</translation>
+    </message>
+    <message>
+        <source>Machine file: %1</source>
+        <translation>Maschinendatei: %1</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>Familie</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Schnittstelle</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Leitung</translation>
+    </message>
+    <message>
+        <source>Identity</source>
+        <translation>Identität</translation>
+    </message>
+    <message>
+        <source>Not written</source>
+        <translation>Nicht geschrieben</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Identity: %1</source>
+        <translation>Identität: %1</translation>
+    </message>
+    <message>
+        <source>Line: %1 on %2</source>
+        <translation>Leitung: %1 an %2</translation>
+    </message>
+    <message>
+        <source>Its live values last answered: %1</source>
+        <translation>Live-Werte zuletzt beantwortet: %1</translation>
+    </message>
+    <message>
+        <source>Edits on this PC not written to the device: %1</source>
+        <translation>Änderungen auf diesem PC, nicht ins Gerät geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>Machine report</source>
+        <translation>Maschinenbericht</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineStop</name>
+    <message>
+        <source>not connected: the STOP was not sent</source>
+        <translation>nicht verbunden: der STOP wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>acknowledged by %1</source>
+        <translation>quittiert von %1</translation>
+    </message>
+    <message>
+        <source>NOT acknowledged by %1 – use the machine&apos;s emergency stop</source>
+        <translation>NICHT quittiert von %1 – benutzen Sie den Not-Halt der Maschine</translation>
+    </message>
+    <message>
+        <source>could not reach %1 – use the machine&apos;s emergency stop</source>
+        <translation>%1 nicht erreicht – benutzen Sie den Not-Halt der Maschine</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineUnit</name>
+    <message>
+        <source>not opened: %1</source>
+        <translation>nicht geöffnet: %1</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>connected, identifying…</source>
+        <translation>verbunden, Gerät wird erkannt…</translation>
+    </message>
+    <message>
+        <source>connecting…</source>
+        <translation>verbinde…</translation>
+    </message>
+    <message>
+        <source>gone, retrying: %1</source>
+        <translation>weg, neuer Versuch läuft: %1</translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation>nicht verbunden: %1</translation>
+    </message>
+    <message>
+        <source>not connected yet: choose its port on its Connection page</source>
+        <translation>noch nicht verbunden: Schnittstelle auf seiner Seite Verbindung wählen</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>offline</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineWindow</name>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Not written</source>
+        <translation>Nicht geschrieben</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>Familie</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Schnittstelle</translation>
+    </message>
+    <message>
+        <source>STOP: %1</source>
+        <translation>STOP: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Maschine</translation>
+    </message>
+    <message>
+        <source>&amp;Add device…</source>
+        <translation>Gerät &amp;hinzufügen…</translation>
+    </message>
+    <message>
+        <source>&amp;Save machine as…</source>
+        <translation>Maschine &amp;speichern unter…</translation>
+    </message>
+    <message>
+        <source>Machine &amp;report…</source>
+        <translation>Maschinen&amp;bericht…</translation>
+    </message>
+    <message>
+        <source>&amp;Close machine</source>
+        <translation>Maschine s&amp;chließen</translation>
+    </message>
+    <message>
+        <source>%1: connection lost (%2); the other devices are not affected.</source>
+        <translation>%1: Verbindung verloren (%2); die anderen Geräte sind nicht betroffen.</translation>
+    </message>
+    <message>
+        <source>CamBench – machine %1</source>
+        <translation>CamBench – Maschine %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>[%n change(s) not written]</source>
+        <translation>
+            <numerusform>[%n Änderung nicht geschrieben]</numerusform>
+            <numerusform>[%n Änderungen nicht geschrieben]</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save machine</source>
+        <translation>Maschine speichern</translation>
+    </message>
+    <message>
+        <source>Machine file (*.json)</source>
+        <translation>Maschinendatei (*.json)</translation>
+    </message>
+    <message>
+        <source>Machine saved to %1.</source>
+        <translation>Maschine in %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Machine report</source>
+        <translation>Maschinenbericht</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Machine report written to %1.</source>
+        <translation>Maschinenbericht in %1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation>Gerät hinzufügen</translation>
+    </message>
+    <message>
+        <source>Name of the device in this machine (e.g. feed):</source>
+        <translation>Name des Geräts in dieser Maschine (z. B. vorschub):</translation>
+    </message>
+    <message>
+        <source>%1: choose its port on its Connection page (Detect finds the protocol), then Connect.</source>
+        <translation>%1: Schnittstelle auf seiner Seite Verbindung wählen (Gerät suchen findet das Protokoll), dann Verbinden.</translation>
+    </message>
+</context>
+<context>
     <name>cambench::MainWindow</name>
     <message>
         <source>&amp;File</source>
@@ -4581,6 +4819,22 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Quit</source>
         <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive of every device of the machine, without a question. %1 does the same from every page.</source>
+        <translation>Stoppt jede Achse und jeden Antrieb jedes Geräts der Maschine, ohne Rückfrage. %1 tut dasselbe auf jeder Seite.</translation>
+    </message>
+    <message>
+        <source>Open &amp;machine…</source>
+        <translation>&amp;Maschine öffnen…</translation>
+    </message>
+    <message>
+        <source>New mac&amp;hine…</source>
+        <translation>Neue Masc&amp;hine…</translation>
+    </message>
+    <message>
+        <source>Open &amp;demo machine</source>
+        <translation>&amp;Demo-Maschine öffnen</translation>
     </message>
 </context>
 <context>
@@ -6269,6 +6523,33 @@ Die verwendete Tabelle bleibt: %3</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Shell</name>
+    <message>
+        <source>Open machine</source>
+        <translation>Maschine öffnen</translation>
+    </message>
+    <message>
+        <source>Machine file (*.json)</source>
+        <translation>Maschinendatei (*.json)</translation>
+    </message>
+    <message>
+        <source>Open demo machine</source>
+        <translation>Demo-Maschine öffnen</translation>
+    </message>
+    <message>
+        <source>New machine</source>
+        <translation>Neue Maschine</translation>
+    </message>
+    <message>
+        <source>Name of the machine:</source>
+        <translation>Name der Maschine:</translation>
+    </message>
+    <message>
+        <source>Add the machine&apos;s devices: Machine → Add device…</source>
+        <translation>Fügen Sie die Geräte der Maschine hinzu: Maschine → Gerät hinzufügen…</translation>
+    </message>
+</context>
+<context>
     <name>cambench::StopBar</name>
     <message>
         <source>STOP (%1)</source>
@@ -6436,10 +6717,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Ausgang %1 ist wie im Gerät.</translation>
     </message>
     <message>
-        <source>Output %1 was changed and is not yet written to the device.</source>
-        <translation>Ausgang %1 wurde geändert und ist noch nicht ins Gerät geschrieben.</translation>
-    </message>
-    <message>
         <source>Output</source>
         <translation>Ausgang</translation>
     </message>
@@ -6474,6 +6751,22 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>Min. pulse</source>
         <translation>Min.-Impuls</translation>
+    </message>
+    <message>
+        <source>The cams of output %1 were changed and are not yet written to the device.</source>
+        <translation>Die Nocken von Ausgang %1 wurden geändert und sind noch nicht ins Gerät geschrieben.</translation>
+    </message>
+    <message>
+        <source>The name of output %1 was changed and is not yet written to the device.</source>
+        <translation>Der Name von Ausgang %1 wurde geändert und ist noch nicht ins Gerät geschrieben.</translation>
+    </message>
+    <message>
+        <source>The dead time of output %1 was changed and is not yet written to the device.</source>
+        <translation>Die Totzeit von Ausgang %1 wurde geändert und ist noch nicht ins Gerät geschrieben.</translation>
+    </message>
+    <message>
+        <source>The cams of output %1 are the same as on the device. Its name and dead time were not read from it.</source>
+        <translation>Die Nocken von Ausgang %1 sind dieselben wie im Gerät. Sein Name und seine Totzeit wurden nicht aus dem Gerät gelesen.</translation>
     </message>
 </context>
 <context>

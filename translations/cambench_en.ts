@@ -3763,6 +3763,10 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Reconnect to reach device %1.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1, address %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -4436,6 +4440,240 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
+    <name>cambench::Machine</name>
+    <message>
+        <source>The machine has a device named &quot;%1&quot; already; give this one another name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineReport</name>
+    <message>
+        <source>not identified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine report: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Made %1 by CamBench.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine file: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation type="unfinished">Device</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation type="unfinished">Line</translation>
+    </message>
+    <message>
+        <source>Identity</source>
+        <translation type="unfinished">Identity</translation>
+    </message>
+    <message>
+        <source>Not written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished">%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Identity: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line: %1 on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its live values last answered: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edits on this PC not written to the device: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineStop</name>
+    <message>
+        <source>not connected: the STOP was not sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acknowledged by %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT acknowledged by %1 – use the machine&apos;s emergency stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>could not reach %1 – use the machine&apos;s emergency stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineUnit</name>
+    <message>
+        <source>not opened: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected, identifying…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gone, retrying: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation type="unfinished">not connected: %1</translation>
+    </message>
+    <message>
+        <source>not connected yet: choose its port on its Connection page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation type="unfinished">offline</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineWindow</name>
+    <message>
+        <source>Device</source>
+        <translation type="unfinished">Device</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished">State</translation>
+    </message>
+    <message>
+        <source>Not written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Add device…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save machine as…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine &amp;report…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Close machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: connection lost (%2); the other devices are not affected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CamBench – machine %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>[%n change(s) not written]</source>
+        <translation>
+            <numerusform>[%n change not written]</numerusform>
+            <numerusform>[%n changes not written]</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine file (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine saved to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine report written to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name of the device in this machine (e.g. feed):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: choose its port on its Connection page (Detect finds the protocol), then Connect.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::MainWindow</name>
     <message>
         <source>&amp;File</source>
@@ -4578,6 +4816,22 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive of every device of the machine, without a question. %1 does the same from every page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;machine…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New mac&amp;hine…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;demo machine</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -6264,6 +6518,33 @@ The table in use stays: %3</source>
     </message>
 </context>
 <context>
+    <name>cambench::Shell</name>
+    <message>
+        <source>Open machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine file (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open demo machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name of the machine:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the machine&apos;s devices: Machine → Add device…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::StopBar</name>
     <message>
         <source>STOP (%1)</source>
@@ -6431,10 +6712,6 @@ The table in use stays: %3</source>
         <translation>Output %1 is the same as on the device.</translation>
     </message>
     <message>
-        <source>Output %1 was changed and is not yet written to the device.</source>
-        <translation>Output %1 was changed and is not yet written to the device.</translation>
-    </message>
-    <message>
         <source>Output</source>
         <translation>Output</translation>
     </message>
@@ -6468,6 +6745,22 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>Min. pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The cams of output %1 were changed and are not yet written to the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The name of output %1 was changed and is not yet written to the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The dead time of output %1 was changed and is not yet written to the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The cams of output %1 are the same as on the device. Its name and dead time were not read from it.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -63,7 +63,7 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
     m_list->setRootIsDecorated(false);
     m_list->setColumnCount(5);
     m_list->setHeaderLabels(
-        {tr("Device"), tr("Family"), tr("Port"), tr("State"), tr("Not written")});
+        {tr("Device"), tr("State"), tr("Not written"), tr("Family"), tr("Port")});
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     // Wide enough for the lamp and its words beside name, family and port.
     m_list->setMinimumWidth(420);

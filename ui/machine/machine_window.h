@@ -33,7 +33,9 @@ public:
     bool confirmClose();
 
     // The columns of the device list.
-    enum Column { Name = 0, Family, Port, State, Unwritten };
+    // State and unwritten edits first: a long port or family name must not
+    // push them out of sight.
+    enum Column { Name = 0, State, Unwritten, Family, Port };
 
 Q_SIGNALS:
     void closed();
