@@ -10,6 +10,7 @@
 #include "machine/machine_connection.h"
 #include "machine/machine_window.h"
 #include "main_window.h"
+#include "window_fit.h"
 
 #include "comm/device/protocol_registry.h"
 
@@ -17,7 +18,6 @@
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QMessageBox>
-#include <QScreen>
 
 namespace cambench {
 
@@ -35,20 +35,6 @@ Shell::Shell(QObject* parent)
 Shell::~Shell() {
     for (Machine* machine : machines()) delete machine;
     delete m_window;
-}
-
-void Shell::showFitting(MainWindow& window, bool restored) {
-    // The first time: 1280 x 800, or the whole screen where that would put
-    // the status bar (and its connection indicator) below the screen's edge.
-    const QScreen* screen = window.screen();
-    constexpr int kFrameAllowance = 60;  // title bar and borders of the window manager
-    if (!restored && screen &&
-        (screen->availableGeometry().height() < window.height() + kFrameAllowance ||
-         screen->availableGeometry().width() < window.width())) {
-        window.showMaximized();
-        return;
-    }
-    window.show();
 }
 
 FamilyGui* Shell::family(const QString& familyId) const {

@@ -52,7 +52,6 @@ private:
     void openDemoMachine();
     // A machine whose first device is this window's connection.
     void newMachine();
-    static void showFitting(MainWindow& window, bool restored);
 
     DeviceSession* m_session;
     QList<FamilyGui*> m_families;

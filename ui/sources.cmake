@@ -78,6 +78,8 @@ target_sources(cambench_ui PRIVATE
   machine/demo_machine.cpp
   shell.h
   shell.cpp
+  window_fit.h
+  window_fit.cpp
   screenshot_tour.h
   screenshot_tour.cpp
 )

@@ -3,6 +3,7 @@
 #include "machine_stop.h"
 #include "machine_unit.h"
 #include "machine_window.h"
+#include "ui/window_fit.h"
 
 #include "model/atomic_file.h"
 #include "ui/device_session.h"
@@ -60,7 +61,7 @@ void Machine::createWindow() {
 
 void Machine::open() {
     createWindow();
-    m_window->show();
+    showFitting(*m_window, false);
     for (MachineUnit* unit : m_units) unit->connectDevice();
 }
 

@@ -65,13 +65,14 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
     m_list->setHeaderLabels(
         {tr("Device"), tr("State"), tr("Not written"), tr("Family"), tr("Port")});
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    // Wide enough for the lamp and its words beside name, family and port.
-    m_list->setMinimumWidth(420);
+    // Wide enough for the name, the lamp and its words and the count; family
+    // and port scroll into view where the screen is narrow.
+    m_list->setMinimumWidth(280);
     auto* splitter = new QSplitter;
     splitter->addWidget(m_list);
     splitter->addWidget(m_stack);
     splitter->setStretchFactor(1, 1);
-    splitter->setSizes({560, 1100});
+    splitter->setSizes({380, 1220});
     setCentralWidget(splitter);
     createMenus();
     for (MachineUnit* unit : machine->units()) addRow(unit);
