@@ -5,6 +5,7 @@
 #include <QPageSize>
 #include <QPagedPaintDevice>
 #include <QPainter>
+#include <QPalette>
 #include <QPdfWriter>
 #include <QSaveFile>
 #include <QTextBlock>
@@ -54,6 +55,12 @@ void printWithPageNumbers(QTextDocument& document, QPagedPaintDevice& device,
         painter.setClipRect(shown);
         QAbstractTextDocumentLayout::PaintContext context;
         context.clip = shown;
+        // Paper is white whatever the screen's theme: the layout's default
+        // palette is the application's, whose text is light grey in dark
+        // mode (the report came out nearly blank).
+        context.palette.setColor(QPalette::Text, Qt::black);
+        context.palette.setColor(QPalette::WindowText, Qt::black);
+        context.palette.setColor(QPalette::Link, Qt::blue);
         document.documentLayout()->draw(&painter, context);
         painter.restore();
         painter.drawText(QRectF(0, pageHeight, width, footer), Qt::AlignCenter,
