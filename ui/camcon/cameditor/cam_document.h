@@ -3,9 +3,9 @@
 #include "model/camcon/cam_axis.h"
 #include "model/camcon/cam_program.h"
 #include "model/camcon/cam_validation.h"
+#include "model/camcon/carry_over.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
-#include "model/camcon/carry_over.h"
 
 #include <QList>
 #include <QMap>
