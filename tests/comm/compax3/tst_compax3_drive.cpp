@@ -441,6 +441,7 @@ private Q_SLOTS:
         Bench bench;
         Compax3ParameterSet set;
         set.drive.info = bench.sim().infoString();
+        set.drive.serial = *bench.device.readObject(kCompax3Serial);  // this drive's own set
         set.values = {{kCompax3ControlWord, QStringLiteral("$6103")},
                       {compax3StoreSet(1), QStringLiteral("$32")},
                       {compax3SetTarget(1), QStringLiteral("55")}};
@@ -501,6 +502,7 @@ private Q_SLOTS:
         QCOMPARE(differs->differences.first().error, QStringLiteral("not on this drive"));
         Compax3RestoreOptions forced;
         forced.force = true;  // the types differ
+        forced.replacement = ReplacementConsent::any();  // and so the drives
         const qsizetype from = lacking.sim().requests().size();
         const Result<OutcomeTally> restored = restoreCompax3Parameters(
             lacking.device, other->set, Compax3Dictionary::builtin(), forced);
