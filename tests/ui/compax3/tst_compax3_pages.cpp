@@ -487,7 +487,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitFor([&] { return questions.size() == 1; }, kDeviceTimeoutMs));
         QVERIFY2(questions.at(0).contains(QLatin1String("not the one")), qPrintable(questions[0]));
         QVERIFY2(questions.at(0).contains(
-                     QLatin1String("serial: backup C3-9999, this device C3-2002  ← differs")),
+                     QStringLiteral("serial: backup C3-9999, this device C3-2002  ← differs")),
                  qPrintable(questions.at(0)));
         QVERIFY2(questions.at(0).contains(QLatin1String("type: S025V2 (the same)")),
                  qPrintable(questions.at(0)));
