@@ -1,5 +1,7 @@
 target_sources(cambench_model PRIVATE
   result.h
+  device_identity.h
+  device_identity.cpp
   walked_list.h
   walked_list.cpp
   machine/machine_file.h

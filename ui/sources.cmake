@@ -37,6 +37,8 @@ target_sources(cambench_ui PRIVATE
   family_gui.h
   family_gui.cpp
   replace_edits_question.h
+  replacement_question.h
+  replacement_question.cpp
   replace_edits_question.cpp
   last_write_report.h
   last_write_report.cpp

@@ -25,6 +25,9 @@ struct MachineVerbs {
     QStringList backup;   // {"backup", "-o", "{file}"}
     QStringList verify;   // {"verify", "{file}"}: exit 0 equal, 1 differs
     QStringList restore;  // {"restore", "{file}"}
+    // Added to restore when the person accepted the device answering as the
+    // replacement of the one the file was taken from: {"--replacement"}.
+    QStringList replacement;
 };
 
 // The command groups of cambench-cli: the shell's own (ports, detect) and

@@ -3,9 +3,14 @@
 // family registers: the CamCon's EEPROM image, the MC-1 backup, the Compax3
 // parameter set), devices on different ports at once (machine_parallel.h),
 // each device's lines printed whole in the file's order. DIR holds the
-// machine file as given (machine.json), one file per device and
-// manifest.json, rewritten after each device: machine, and per device its
-// name, family, identity, file, SHA-256, time and result. Names no family.
+// machine file (machine.json; at the end with each saved device's identity),
+// one file per device and manifest.json, rewritten after each device:
+// machine, and per device its name, family, identity (to compare) and what
+// it said of itself (device), file, SHA-256, time and result. Each device
+// is first asked who it is: another one than the machine file or the
+// backup records is said ("another device answers: expected ..., found
+// ...") and nothing is saved from it, verified or written to it unless the
+// person named it with --replacement. Names no family.
 #include "machine_command.h"
 
 #include "cli_output.h"
@@ -118,7 +123,27 @@ bool stillSaved(const QJsonObject& entry, const QString& dir) {
                entry.value(QStringLiteral("sha256")).toString();
 }
 
-QJsonObject backUp(const MachineDevice& device, const GlobalOptions& options, const QString& dir) {
+// The identity an entry of the manifest records; not known in a manifest
+// older than that record (it held identify()'s text there).
+DeviceIdentity recordedIdentity(const QJsonObject& entry) {
+    const Result<DeviceIdentity> identity =
+        DeviceIdentity::fromJson(entry.value(QStringLiteral("identity")), QString());
+    return identity ? *identity : DeviceIdentity();
+}
+
+// "another device answers: ... Nothing was ... NAME." on stderr, as the
+// device's own lines say it; the text for its summary line.
+QString sayAnotherDevice(const QString& name, const DeviceIdentity& expected,
+                         const DeviceIdentity& found, const QString& nothing) {
+    const QString another = anotherDeviceText(expected, found);
+    reportError(Error::invalidData(
+        QStringLiteral("%1: %2. %3. Only if it replaces that device, add --replacement %1.")
+            .arg(name, another, nothing)));
+    return another;
+}
+
+QJsonObject backUp(const MachineDevice& device, const GlobalOptions& options, const QString& dir,
+                   bool replacement) {
     QJsonObject entry{{QStringLiteral("name"), device.name},
                       {QStringLiteral("family"), device.family},
                       {QStringLiteral("file"), fileNameOf(device)}};
@@ -130,14 +155,23 @@ QJsonObject backUp(const MachineDevice& device, const GlobalOptions& options, co
                      QStringLiteral("failed: the %1 family has no backup").arg(device.family));
         return entry;
     }
-    const Result<QString> identity = identifyMachineDevice(session, device.name);
+    const Result<MachineDeviceIdentity> identity = identifyMachineDevice(session, device.name);
     if (!identity) {
         reportError(identity.error());
         entry.insert(QStringLiteral("result"),
                      QStringLiteral("failed: not reached: %1").arg(identity.error().message));
         return entry;
     }
-    entry.insert(QStringLiteral("identity"), *identity);
+    entry.insert(QStringLiteral("identity"), identity->identity.toJson());
+    entry.insert(QStringLiteral("device"), identity->text);
+    if (device.identity.known() && device.identity != identity->identity && !replacement) {
+        // Saved under this name, its file would later be restored into the
+        // device the machine file names.
+        const QString another = sayAnotherDevice(device.name, device.identity, identity->identity,
+                                                 QStringLiteral("Nothing was saved from it"));
+        entry.insert(QStringLiteral("result"), QStringLiteral("failed: %1").arg(another));
+        return entry;
+    }
     const QString path = QDir(dir).filePath(fileNameOf(device));
     const int code = runFamilyVerb(session, device.family, verbs->backup, path);
     entry.insert(QStringLiteral("time"),
@@ -153,8 +187,50 @@ QJsonObject backUp(const MachineDevice& device, const GlobalOptions& options, co
 
 }  // namespace
 
-int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, const QString& dir,
-                     bool resume) {
+namespace {
+
+// The machine file with the identity each saved device answered with.
+MachineFile withIdentities(MachineFile machine, const QJsonArray& devices) {
+    for (const QJsonValue& value : devices) {
+        const QJsonObject entry = value.toObject();
+        if (entry.value(QStringLiteral("result")).toString() != QLatin1String("saved")) continue;
+        for (MachineDevice& device : machine.devices)
+            if (device.name == entry.value(QStringLiteral("name")).toString())
+                device.identity = recordedIdentity(entry);
+    }
+    return machine;
+}
+
+// Records in the person's machine file each identity first seen (and the
+// replacements accepted): the next status, backup or verify says when
+// another device answers there. A file that cannot be written is said, and
+// the backup is not failed for it.
+void recordIdentities(const MachineFile& given, const MachineFile& now, const QString& path,
+                      const QStringList& replacements) {
+    MachineFile updated = given;
+    QStringList recorded;
+    for (int i = 0; i < updated.devices.size(); ++i) {
+        MachineDevice& device = updated.devices[i];
+        const DeviceIdentity& seen = now.devices.at(i).identity;
+        if (!seen.known() || device.identity == seen) continue;
+        if (device.identity.known() && !replacements.contains(device.name)) continue;
+        device.identity = seen;
+        recorded << device.name;
+    }
+    if (recorded.isEmpty()) return;
+    if (const Status written = writeFileAtomically(path, machineFileJson(updated)); !written) {
+        printError(QStringLiteral("note: the identities of %1 were not recorded in %2: %3")
+                       .arg(recorded.join(QLatin1String(", ")), path, written.error().message));
+        return;
+    }
+    printOut(QStringLiteral("%1 records the identity of %2 now\n")
+                 .arg(path, recorded.join(QLatin1String(", "))));
+}
+
+}  // namespace
+
+int runMachineBackup(const MachineSetup& setup, const QString& machinePath, const QString& dir,
+                     bool resume, const QStringList& replacements) {
     if (!QDir().mkpath(dir))
         return reportError(Error::communication(
             QStringLiteral("cannot make the folder %1; check the path and its rights").arg(dir)));
@@ -163,7 +239,9 @@ int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, c
         const Result<MachineFolder> folder = loadFolder(dir);
         if (folder) earlier = folder->entries;
     }
-    if (const Status saved = writeFileAtomically(QDir(dir).filePath(kMachineFileName), machineFile);
+    // The machine file as given first: an interrupted backup still holds it.
+    const QString folderMachine = QDir(dir).filePath(kMachineFileName);
+    if (const Status saved = writeFileAtomically(folderMachine, machineFileJson(setup.machine));
         !saved)
         return reportError(saved.error());
     const QList<MachineDevice>& all = setup.machine.devices;
@@ -177,7 +255,8 @@ int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, c
                          .arg(all.at(i).name, before.value(QStringLiteral("time")).toString()));
             entries[size_t(i)] = before;
         } else {
-            entries[size_t(i)] = backUp(all.at(i), setup.options.at(i), dir);
+            entries[size_t(i)] =
+                backUp(all.at(i), setup.options.at(i), dir, replacements.contains(all.at(i).name));
         }
     };
     // Rewritten after each device, one at a time, with every device finished
@@ -196,6 +275,11 @@ int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, c
     };
     runDevicesByPort(setup.options, indices, backUpOrKeep, recordDone);
     if (!manifest) return reportError(manifest.error());
+    const MachineFile identified = withIdentities(setup.machine, devices);
+    if (const Status saved = writeFileAtomically(folderMachine, machineFileJson(identified));
+        !saved)
+        return reportError(saved.error());
+    recordIdentities(setup.machine, identified, machinePath, replacements);
     int saved = 0;
     for (const QJsonValue& value : devices)
         if (value.toObject().value(QStringLiteral("result")).toString() == QLatin1String("saved"))
@@ -217,29 +301,65 @@ int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, c
 
 namespace {
 
+// What became of one device in a verify or a restore: its exit code and its
+// summary line.
+struct DeviceOutcome {
+    int code = ExitOk;
+    QString line;
+};
+
+// Asks the device who it is and, when it is the one the backup recorded or
+// the person accepted it (`accepted`), runs `words`; `says(code)` words the
+// outcome of a family command that ran. A manifest older than the identity
+// record leaves the check to the family's command (a restore refuses a
+// file that records no identity unless accepted).
+DeviceOutcome runChecked(CliSession& session, const MachineDevice& device, const QJsonObject& entry,
+                         bool accepted, const QStringList& words, const QString& file,
+                         const QString& nothing, const std::function<QString(int)>& says) {
+    const DeviceIdentity expected = recordedIdentity(entry);
+    if (expected.known()) {
+        const Result<MachineDeviceIdentity> found = identifyMachineDevice(session, device.name);
+        if (!found) {
+            reportError(found.error());
+            return {
+                exitCodeFor(found.error().kind),
+                QStringLiteral("%1: %2").arg(device.name, says(exitCodeFor(found.error().kind)))};
+        }
+        if (found->identity != expected && !accepted) {
+            const QString another =
+                sayAnotherDevice(device.name, expected, found->identity, nothing);
+            return {ExitInvalidData,
+                    QStringLiteral("%1: ANOTHER DEVICE: %2").arg(device.name, another)};
+        }
+    }
+    const int code = runFamilyVerb(session, device.family, words, file);
+    return {code, QStringLiteral("%1: %2").arg(device.name, says(code))};
+}
+
 // Runs `verb` of each device the folder saved (and `only` names, when
-// given); `says(code)` words each device's outcome. The worst exit code.
-int forEachSaved(const QString& dir, const QStringList& only, QStringList MachineVerbs::*verb,
+// given), each after asking it who it is (runChecked); `says(code)` words
+// each device's outcome. The worst exit code.
+int forEachSaved(const QString& dir, const QStringList& only, const QStringList& replacements,
+                 QStringList MachineVerbs::*verb, const QString& nothing,
                  const std::function<QString(int)>& says,
                  const std::function<int(const QList<int>&)>& exitFor) {
     const Result<MachineFolder> folder = loadFolder(dir);
     if (!folder) return reportError(folder.error());
-    for (const QString& name : only)
-        if (!folder->setup.machine.device(name))
-            return reportError(Error::usage(
-                QStringLiteral("--only %1: the machine has no device of that name").arg(name)));
+    for (const auto& [names, option] : {std::pair{only, QStringLiteral("--only")},
+                                        std::pair{replacements, QStringLiteral("--replacement")}})
+        if (const Status known = checkDeviceNames(folder->setup.machine, names, option); !known)
+            return reportError(known.error());
     const QList<MachineDevice>& all = folder->setup.machine.devices;
-    std::vector<int> codes(size_t(all.size()), ExitOk);  // a slot per thread
-    std::vector<QString> lines(size_t(all.size()));
+    std::vector<DeviceOutcome> outcomes(size_t(all.size()));  // a slot per thread
     QList<int> saved;  // the devices to run, in the file's order
     for (int i = 0; i < all.size(); ++i) {
         const MachineDevice& device = all.at(i);
         if (!only.isEmpty() && !only.contains(device.name)) continue;
         if (!stillSaved(folder->entries.value(device.name), dir) ||
             !CommandRegistry::instance().machineVerbs(device.family)) {
-            lines[size_t(i)] =
-                QStringLiteral("%1: not in the backup or its file changed since").arg(device.name);
-            codes[size_t(i)] = ExitInvalidData;
+            outcomes[size_t(i)] = {
+                ExitInvalidData,
+                QStringLiteral("%1: not in the backup or its file changed since").arg(device.name)};
             continue;
         }
         saved << i;
@@ -249,29 +369,31 @@ int forEachSaved(const QString& dir, const QStringList& only, QStringList Machin
         CliSession session(folder->setup.options.at(i));
         printOut(
             QStringLiteral("== %1 (%2, %3)\n").arg(device.name, device.family, session.where()));
-        const QString file =
-            folder->entries.value(device.name).value(QStringLiteral("file")).toString();
-        codes[size_t(i)] = runFamilyVerb(
-            session, device.family, CommandRegistry::instance().machineVerbs(device.family)->*verb,
-            QDir(dir).filePath(file));
-        lines[size_t(i)] = QStringLiteral("%1: %2").arg(device.name, says(codes[size_t(i)]));
+        const QJsonObject entry = folder->entries.value(device.name);
+        const MachineVerbs& verbs = *CommandRegistry::instance().machineVerbs(device.family);
+        const bool accepted = replacements.contains(device.name);
+        QStringList words = verbs.*verb;
+        if (accepted && verb == &MachineVerbs::restore) words << verbs.replacement;
+        outcomes[size_t(i)] = runChecked(
+            session, device, entry, accepted, words,
+            QDir(dir).filePath(entry.value(QStringLiteral("file")).toString()), nothing, says);
     });
     QStringList summary;
-    QList<int> outcomes;
-    for (int i = 0; i < all.size(); ++i) {
-        if (lines[size_t(i)].isEmpty()) continue;  // not asked for (--only)
-        summary << lines[size_t(i)];
-        outcomes << codes[size_t(i)];
+    QList<int> codes;
+    for (const DeviceOutcome& outcome : outcomes) {
+        if (outcome.line.isEmpty()) continue;  // not asked for (--only)
+        summary << outcome.line;
+        codes << outcome.code;
     }
     printOut(QStringLiteral("%1:\n%2\n").arg(folder->setup.machine.machine, summary.join('\n')));
-    return exitFor(outcomes);
+    return exitFor(codes);
 }
 
 }  // namespace
 
-int runMachineVerify(const QString& dir) {
+int runMachineVerify(const QString& dir, const QStringList& replacements) {
     return forEachSaved(
-        dir, {}, &MachineVerbs::verify,
+        dir, {}, replacements, &MachineVerbs::verify, QStringLiteral("It was not verified"),
         [](int code) {
             return code == ExitOk       ? QStringLiteral("equal")
                    : code == ExitDevice ? QStringLiteral("DIFFERS")
@@ -286,9 +408,11 @@ int runMachineVerify(const QString& dir) {
         });
 }
 
-int runMachineRestore(const QString& dir, const QStringList& only) {
+int runMachineRestore(const QString& dir, const QStringList& only,
+                      const QStringList& replacements) {
     return forEachSaved(
-        dir, only, &MachineVerbs::restore,
+        dir, only, replacements, &MachineVerbs::restore,
+        QStringLiteral("Nothing was written to it"),
         [](int code) {
             return code == ExitOk ? QStringLiteral("restored")
                                   : QStringLiteral("NOT RESTORED (%1)").arg(exitText(code));

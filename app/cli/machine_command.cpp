@@ -28,7 +28,10 @@ struct DeviceStatus {
     QString name;
     QString family;
     QString where;
-    Result<QString> identity = QString();
+    Result<MachineDeviceIdentity> identity = MachineDeviceIdentity{};
+    // "another device answers: expected ..., found ..." when the file
+    // records another identity than the one that answered.
+    QString another;
 };
 
 // The options of `device` as the command line parses them; a wrong family,
@@ -44,30 +47,60 @@ Result<GlobalOptions> deviceOptions(const MachineDevice& device, const QString& 
 
 DeviceStatus statusOf(const MachineDevice& device, const GlobalOptions& options) {
     CliSession session(options);
-    DeviceStatus status{device.name, device.family, session.where()};
+    DeviceStatus status;
+    status.name = device.name;
+    status.family = device.family;
+    status.where = session.where();
     status.identity = identifyMachineDevice(session, device.name);
+    if (status.identity && device.identity.known() && status.identity->identity != device.identity)
+        status.another = anotherDeviceText(device.identity, status.identity->identity);
     return status;
+}
+
+// What the status line says of the device.
+QString statusText(const DeviceStatus& status) {
+    if (!status.identity)
+        return QStringLiteral("NOT REACHED: %1").arg(status.identity.error().message);
+    if (!status.another.isEmpty())
+        return QStringLiteral("ANOTHER DEVICE: %1 (%2)").arg(status.another, status.identity->text);
+    return status.identity->text;
 }
 
 QJsonObject statusJson(const DeviceStatus& status) {
     QJsonObject entry{{QStringLiteral("name"), status.name},
                       {QStringLiteral("family"), status.family},
                       {QStringLiteral("port"), status.where}};
-    if (status.identity)
-        entry.insert(QStringLiteral("identity"), *status.identity);
-    else
+    if (status.identity) {
+        entry.insert(QStringLiteral("identity"), status.identity->text);
+        entry.insert(QStringLiteral("recorded"), status.identity->identity.toJson());
+        if (!status.another.isEmpty()) entry.insert(QStringLiteral("error"), status.another);
+    } else {
         entry.insert(QStringLiteral("error"), status.identity.error().message);
+    }
     return entry;
 }
 
 }  // namespace
 
-Result<QString> identifyMachineDevice(CliSession& session, const QString& name) {
-    return session.run<comm::DeviceConnection, QString>(
+Result<MachineDeviceIdentity> identifyMachineDevice(CliSession& session, const QString& name) {
+    return session.run<comm::DeviceConnection, MachineDeviceIdentity>(
         QStringLiteral("identify %1").arg(name),
-        [](comm::DeviceConnection& connection, comm::JobContext&) {
-            return connection.identify();
+        [](comm::DeviceConnection& connection, comm::JobContext&) -> Result<MachineDeviceIdentity> {
+            const Result<QString> text = connection.identify();
+            if (!text) return text.error();
+            const Result<DeviceIdentity> identity = connection.readIdentity();
+            if (!identity) return identity.error();
+            return MachineDeviceIdentity{*text, *identity};
         });
+}
+
+Status checkDeviceNames(const MachineFile& machine, const QStringList& names,
+                        const QString& option) {
+    for (const QString& name : names)
+        if (!machine.device(name))
+            return Error::usage(
+                QStringLiteral("%1 %2: the machine has no device of that name").arg(option, name));
+    return success();
 }
 
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where) {
@@ -94,7 +127,11 @@ int runMachineStatus(const MachineSetup& setup, bool json) {
         statuses[size_t(i)] = statusOf(machine.devices.at(i), options.at(i));
     });
     bool allAnswered = true;
-    for (const DeviceStatus& status : statuses) allAnswered = allAnswered && status.identity.ok();
+    bool anyOther = false;
+    for (const DeviceStatus& status : statuses) {
+        allAnswered = allAnswered && status.identity.ok();
+        anyOther = anyOther || !status.another.isEmpty();
+    }
     if (json) {
         QJsonArray devices;
         for (const DeviceStatus& status : statuses) devices << statusJson(status);
@@ -106,12 +143,10 @@ int runMachineStatus(const MachineSetup& setup, bool json) {
         printOut(QStringLiteral("%1\n").arg(machine.machine));
         for (const DeviceStatus& status : statuses)
             printOut(QStringLiteral("%1\t%2\t%3\t%4\n")
-                         .arg(status.name, status.family, status.where,
-                              status.identity ? *status.identity
-                                              : QStringLiteral("NOT REACHED: %1")
-                                                    .arg(status.identity.error().message)));
+                         .arg(status.name, status.family, status.where, statusText(status)));
     }
-    return allAnswered ? ExitOk : ExitCommunication;
+    // Another device where the file records one: the file's check failed.
+    return !allAnswered ? ExitCommunication : anyOther ? ExitInvalidData : ExitOk;
 }
 
 int runMachine(CliSession&, CommandArgs& args) {
@@ -137,20 +172,31 @@ int runMachine(CliSession&, CommandArgs& args) {
     Result<QString> only = QString();
     if (*verb == QLatin1String("restore")) only = args.takeOption(QStringLiteral("--only"));
     if (!only) return reportError(only.error());
+    Result<QString> replacement = QString();
+    if (*verb != QLatin1String("status"))
+        replacement = args.takeOption(QStringLiteral("--replacement"));
+    if (!replacement) return reportError(replacement.error());
+    const QStringList replacements = replacement->split(QLatin1Char(','), Qt::SkipEmptyParts);
     if (const Status done = args.finish(); !done) return reportError(done.error());
 
     if (onFolder) {
         return *verb == QLatin1String("verify")
-                   ? runMachineVerify(*path)
-                   : runMachineRestore(*path, only->split(QLatin1Char(','), Qt::SkipEmptyParts));
+                   ? runMachineVerify(*path, replacements)
+                   : runMachineRestore(*path, only->split(QLatin1Char(','), Qt::SkipEmptyParts),
+                                       replacements);
     }
     const Result<QByteArray> bytes = readFileBytes(*path);
     if (!bytes) return reportError(bytes.error());
     // Every device's options are checked before the first device is asked.
     const Result<MachineSetup> setup = loadMachine(*bytes, *path);
     if (!setup) return reportError(setup.error());
-    return *verb == QLatin1String("status") ? runMachineStatus(*setup, json)
-                                            : runMachineBackup(*setup, *bytes, *dir, resume);
+    if (const Status names =
+            checkDeviceNames(setup->machine, replacements, QStringLiteral("--replacement"));
+        !names)
+        return reportError(names.error());
+    return *verb == QLatin1String("status")
+               ? runMachineStatus(*setup, json)
+               : runMachineBackup(*setup, *path, *dir, resume, replacements);
 }
 
 }  // namespace cambench::cli

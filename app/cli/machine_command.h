@@ -23,15 +23,28 @@ struct MachineSetup {
 // (a wrong family, a protocol of another family) is refused naming it.
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where);
 
-// Who the device on `session` is (its family's identify()), for status and
-// the backup's manifest alike.
-Result<QString> identifyMachineDevice(CliSession& session, const QString& name);
+// Who the device on `session` is: its family's identify() for a person and
+// its identity (DeviceConnection::readIdentity) to compare, for status,
+// the backup's manifest, verify and restore alike.
+struct MachineDeviceIdentity {
+    QString text;
+    DeviceIdentity identity;
+};
+Result<MachineDeviceIdentity> identifyMachineDevice(CliSession& session, const QString& name);
+
+// The devices `names` (--replacement a,b) are: refused naming the one the
+// machine lacks.
+Status checkDeviceNames(const MachineFile& machine, const QStringList& names,
+                        const QString& option);
 
 // machine status / backup / verify / restore; each returns the exit code.
+// `replacements`: the devices the person accepts in place of the ones
+// recorded (machine backup records their new identity; machine restore
+// writes their backup into them).
 int runMachineStatus(const MachineSetup& setup, bool json);
-int runMachineBackup(const MachineSetup& setup, const QByteArray& machineFile, const QString& dir,
-                     bool resume);
-int runMachineVerify(const QString& dir);
-int runMachineRestore(const QString& dir, const QStringList& only);
+int runMachineBackup(const MachineSetup& setup, const QString& machinePath, const QString& dir,
+                     bool resume, const QStringList& replacements);
+int runMachineVerify(const QString& dir, const QStringList& replacements);
+int runMachineRestore(const QString& dir, const QStringList& only, const QStringList& replacements);
 
 }  // namespace cambench::cli

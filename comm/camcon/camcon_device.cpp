@@ -117,4 +117,10 @@ Result<QString> CamConDevice::identify() {
         .arg(info->programs);
 }
 
+Result<DeviceIdentity> CamConDevice::readIdentity() {
+    const Result<DeviceInfo> info = readInfo();
+    if (!info) return info.error();
+    return camConIdentity(*info);
+}
+
 }  // namespace cambench::comm

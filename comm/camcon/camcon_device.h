@@ -71,6 +71,8 @@ public:
     virtual Result<DeviceInfo> readInfo() = 0;
     // The identity readInfo() gives, in one line.
     Result<QString> identify() override;
+    // camConIdentity() of readInfo().
+    Result<DeviceIdentity> readIdentity() override;
     virtual Result<DeviceStatus> readStatus(int outputs, int inputs) = 0;
     virtual Status resetError() = 0;
     virtual Status selectProgram(int program) = 0;

@@ -66,4 +66,10 @@ bool compax3MotionMoves(Compax3Motion motion) {
     return motion == Compax3Motion::JogPlus || motion == Compax3Motion::JogMinus;
 }
 
+Result<DeviceIdentity> Compax3Device::readIdentity() {
+    const Result<Compax3Identity> drive = identity();
+    if (!drive) return drive.error();
+    return drive->deviceIdentity();
+}
+
 }  // namespace cambench::comm

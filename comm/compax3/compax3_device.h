@@ -87,6 +87,8 @@ public:
 
     // The info string (`_?`) and serial number (1.4).
     virtual Result<Compax3Identity> identity() = 0;
+    // Serial number and type (Compax3Identity::deviceIdentity).
+    Result<DeviceIdentity> readIdentity() override;
     // The value as the drive answers it ("12.5", "Compax3 …"); `hex`: asks
     // for hexadecimal ("$1A").
     virtual Result<QString> readObject(const Compax3ObjectId& id, bool hex = false) = 0;

@@ -4,6 +4,7 @@
 #include "progress.h"
 
 #include "comm/engine/request_engine.h"
+#include "model/device_identity.h"
 #include "model/result.h"
 
 #include <QCoreApplication>
@@ -32,6 +33,17 @@ public:
     // sends it to a device it does not know yet. Fails when nothing of this
     // family answers.
     virtual Result<QString> identify() = 0;
+    // What tells this device apart from others of its family
+    // (model/device_identity.h), read with queries only: what a restore
+    // compares with its backup's and a machine with its file's. A family
+    // that knows nothing better records what identify() says.
+    virtual Result<DeviceIdentity> readIdentity() {
+        const Result<QString> text = identify();
+        if (!text) return text.error();
+        DeviceIdentity identity;
+        identity.set(QStringLiteral("device"), *text);
+        return identity;
+    }
     // identify() as a quick probe of a line that may hold anything: no
     // retries, the shortest waits the protocol allows. The connection is
     // used for nothing else afterwards.

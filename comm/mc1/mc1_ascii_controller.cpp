@@ -59,6 +59,14 @@ Result<QString> Mc1AsciiController::identify() {
     return QCoreApplication::translate("cambench::comm", "MC100 (ASCII protocol)");
 }
 
+Result<DeviceIdentity> Mc1AsciiController::readIdentity() {
+    const Result<Mc1Variant> identified = ensureIdentified();
+    if (!identified) return identified.error();
+    DeviceIdentity identity;
+    identity.set(QStringLiteral("variant"), QStringLiteral("mc100"));
+    return identity;
+}
+
 Result<qint64> Mc1AsciiController::readVariable(int number) {
     if (const Result<Mc1Variant> identified = ensureIdentified(); !identified)
         return identified.error();

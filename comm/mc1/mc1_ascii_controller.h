@@ -21,6 +21,8 @@ public:
     QString protocolId() const override { return QStringLiteral("mc1-ascii"); }
     RequestEngine& engine() override { return m_engine; }
     Result<QString> identify() override;
+    // "variant": "mc100": the protocol cannot tell V1 from V2.
+    Result<DeviceIdentity> readIdentity() override;
 
     Mc1Variant variant() const override { return Mc1Variant::Mc100V1; }
     QString variantSource() const override;

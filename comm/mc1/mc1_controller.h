@@ -33,6 +33,9 @@ public:
     QString protocolId() const override { return QStringLiteral("mc1"); }
     RequestEngine& engine() override { return m_engine; }
     Result<QString> identify() override;
+    // The variant, RDTABLE's axis table (MC200) and the UDB address
+    // (MC200 V2): mc1_controller_identity.cpp.
+    Result<DeviceIdentity> readIdentity() override;
 
     Mc1Variant variant() const override { return m_link.variant(); }
     QString variantSource() const override { return m_source; }

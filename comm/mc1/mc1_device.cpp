@@ -124,6 +124,14 @@ QString mc1AxisCommandText(int axis, Mc1AxisCommand command, qint32 value) {
     return {};
 }
 
+Result<DeviceIdentity> Mc1Device::readIdentity() {
+    const Result<Mc1Variant> identified = ensureIdentified();
+    if (!identified) return identified.error();
+    DeviceIdentity identity;
+    identity.set(QStringLiteral("variant"), mc1VariantKey(*identified));
+    return identity;
+}
+
 Status mc1CheckWritable(const Mc1Point& point, Mc1Variant variant) {
     if (point.area == Mc1Area::Input)
         return Error::usage(

@@ -130,6 +130,13 @@ public:
     virtual QString variantSource() const = 0;
     virtual Result<Mc1Variant> ensureIdentified() = 0;
     virtual bool has(Mc1Capability capability) const = 0;
+    // The protocol offers no serial number. What tells two controllers
+    // apart: the variant ("variant": "mc200v2"); over the binary protocol
+    // on an MC200 also the axis table RDTABLE answers ("axes": "1:0/1 2:1/1",
+    // logical axis: physical coding/type) and, on an MC200 V2, where its
+    // PLC program's data block starts ("program udb": SYSDATA 08, which
+    // moves with the program loaded; provisional, comm/mc1/README.md).
+    Result<DeviceIdentity> readIdentity() override;
 
     // Variables, signed, of the variant's width (24 or 32 bits).
     virtual Result<qint64> readVariable(int number) = 0;

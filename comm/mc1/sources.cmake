@@ -35,6 +35,7 @@ target_sources(cambench_comm PRIVATE
   mc1/mc1_controller.h
   mc1/mc1_controller.cpp
   mc1/mc1_controller_motion.cpp
+  mc1/mc1_controller_identity.cpp
   mc1/mc1_axis_motion.h
   mc1/mc1_axis_motion.cpp
   mc1/mc1_protocol.h

@@ -14,15 +14,29 @@ bool operator==(const DeviceInfo& a, const DeviceInfo& b) {
            a.serialEepromSize == b.serialEepromSize && a.parallelEepromSize == b.parallelEepromSize;
 }
 
+DeviceIdentity camConIdentity(const DeviceInfo& info) {
+    DeviceIdentity identity;
+    const auto number = [&](const char* key, qint64 value) {
+        identity.set(QLatin1String(key), QString::number(value));
+    };
+    identity.set(QStringLiteral("eprom"), info.epromDate);
+    number("device", info.deviceNumber);
+    number("outputs", info.outputs);
+    number("inputs", info.inputs);
+    number("dead-time outputs", info.deadTimeOutputs);
+    number("programs", info.programs);
+    identity.set(QStringLiteral("actual values"),
+                 QStringLiteral("%1..%2").arg(info.minPosition).arg(info.maxPosition));
+    number("max dead time", info.maxDeadTime);
+    number("cpu clock", info.cpuClock);
+    number("ram", info.ramSize);
+    number("serial eeprom", info.serialEepromSize);
+    number("parallel eeprom", info.parallelEepromSize);
+    return identity;
+}
+
 bool sameDevice(const DeviceInfo& before, const DeviceInfo& now, bool compareContents) {
-    const bool identity =
-        before.epromDate == now.epromDate && before.deviceNumber == now.deviceNumber &&
-        before.outputs == now.outputs && before.inputs == now.inputs &&
-        before.deadTimeOutputs == now.deadTimeOutputs && before.programs == now.programs &&
-        before.minPosition == now.minPosition && before.maxPosition == now.maxPosition &&
-        before.maxDeadTime == now.maxDeadTime && before.cpuClock == now.cpuClock &&
-        before.ramSize == now.ramSize && before.serialEepromSize == now.serialEepromSize &&
-        before.parallelEepromSize == now.parallelEepromSize;
+    const bool identity = camConIdentity(before) == camConIdentity(now);
     if (!identity || !compareContents) return identity;
     return before.freeCams == now.freeCams && before.programmedCams == now.programmedCams &&
            before.programmedDeadTimes == now.programmedDeadTimes;

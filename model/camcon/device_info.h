@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/device_identity.h"
+
 #include <QList>
 #include <QString>
 
@@ -32,13 +34,17 @@ struct DeviceInfo {
     friend bool operator==(const DeviceInfo& a, const DeviceInfo& b);
 };
 
+// What tells two CamCons apart (the protocols offer no serial number): the
+// EPROM date, the device number, the capacities and the memory sizes -
+// nothing that a write of cams, programs or settings changes. A restore
+// compares it with the image's (comm/camcon/usecases/backup_restore.h).
+DeviceIdentity camConIdentity(const DeviceInfo& info);
+
 // Whether `now` (read on a connect) is the device `before` was read from.
-// The identity (EPROM date, device number, capacities, memory sizes) must
-// agree; with `compareContents`, also the cheap fingerprint of what it holds
-// (programmed cams, free cams, programmed dead times), which tells apart two
-// devices of the same kind and a device changed by someone else. Callers
-// skip the fingerprint after their own writes changed it. Temperature and
-// free RAM change by themselves and are not compared.
+// The identity (camConIdentity) must agree; with `compareContents`, also the cheap fingerprint of
+// what it holds (programmed cams, free cams, programmed dead times), which tells apart two devices
+// of the same kind and a device changed by someone else. Callers skip the fingerprint after their
+// own writes changed it. Temperature and free RAM change by themselves and are not compared.
 bool sameDevice(const DeviceInfo& before, const DeviceInfo& now, bool compareContents);
 
 // What `status` shows (manual 5.1 and the provisional 5.1.6..5.1.8).

@@ -21,10 +21,11 @@ constexpr int kEepromBasicBlockBytes = 128;
 // a nibble of 0 invalid). The message names the offending block.
 Status checkImageBlocks(const QList<EepromBlock>& blocks);
 
-// Differences between the device an image was taken from and the device
-// it is about to be restored to (EPROM date, outputs, programs, actual
-// value range), one sentence each; empty when they match. A restore over a
-// difference must be forced explicitly.
+// Differences between the identity (camConIdentity) of the device an image
+// was taken from and of the device it is about to be restored to, one
+// sentence each ("outputs: image 48, device 32."); empty when they match. A
+// restore over a difference needs the person's word that this device
+// replaces that one.
 QStringList identityMismatch(const DeviceInfo& image, const DeviceInfo& device);
 
 // {"format":"cambench-eeprom-image","version":1,"device":{...},"taken":ISO UTC,

@@ -31,6 +31,14 @@ QString Compax3Identity::type() const {
     return words.size() > 1 ? words.at(1) : QString();
 }
 
+DeviceIdentity Compax3Identity::deviceIdentity() const {
+    DeviceIdentity identity;
+    if (serial.isEmpty()) return identity;
+    identity.set(QStringLiteral("serial"), serial);
+    identity.set(QStringLiteral("type"), type());
+    return identity;
+}
+
 QByteArray compax3ParametersToJson(const Compax3ParameterSet& set) {
     QJsonObject root = jsonFileHeader(kParameterFile);
     root.insert(key("drive"), QJsonObject{{key("info"), set.drive.info},

@@ -2,6 +2,7 @@
 
 #include "compax3_object.h"
 
+#include "model/device_identity.h"
 #include "model/result.h"
 
 #include <QDateTime>
@@ -19,6 +20,9 @@ struct Compax3Identity {
     // The drive type the info string names ("S025V2"): a set is for
     // drives of this type; another type's set is refused unless forced.
     QString type() const;
+    // What tells this drive apart from others: its serial number and type
+    // ({"serial", "type"}); not known without a serial number.
+    DeviceIdentity deviceIdentity() const;
 };
 
 // One object's value as the drive answered it ("12.5", "\"Axis 1\"").

@@ -55,10 +55,19 @@ Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QStr
     // line does not depend on the order, and sorted is stable.
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (it.key() == QLatin1String("name") || it.key() == QLatin1String("family")) continue;
+        if (it.key() == QLatin1String("identity")) {
+            const Result<DeviceIdentity> identity =
+                DeviceIdentity::fromJson(it.value(), QStringLiteral("%1: identity").arg(label));
+            if (!identity) return refused(where, identity.error().message);
+            device.identity = *identity;
+            continue;
+        }
         if (!keys.contains(it.key()))
             return refused(where, QStringLiteral("%1: unknown key \"%2\"; a device's keys are "
                                                  "name, family, %3.")
-                                      .arg(label, it.key(), keys.join(QLatin1String(", "))));
+                                      .arg(label, it.key(),
+                                           (keys + QStringList{QStringLiteral("identity")})
+                                               .join(QLatin1String(", "))));
         bool ok = false;
         const QString text = optionText(it.value(), &ok);
         if (!ok || text.isEmpty())
@@ -170,6 +179,12 @@ QByteArray deviceJson(const MachineDevice& device) {
                            "\"family\": " + jsonValue(device.family, false)};
     for (const auto& [key, value] : device.options)
         members << jsonValue(key, false) + ": " + jsonValue(value, numericKeys.contains(key));
+    if (device.identity.known()) {
+        QByteArrayList parts;
+        for (auto it = device.identity.values().begin(); it != device.identity.values().end(); ++it)
+            parts << jsonValue(it.key(), false) + ": " + jsonValue(it.value(), false);
+        members << "\"identity\": {" + parts.join(", ") + "}";
+    }
     return "{" + members.join(", ") + "}";
 }
 

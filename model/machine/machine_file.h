@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/device_identity.h"
 #include "model/result.h"
 
 #include <QByteArray>
@@ -14,11 +15,15 @@ namespace cambench {
 
 // One device of a machine: its name, its family and how to reach it, in
 // the command line's own option names ("port", "protocol", "device",
-// "address", "variant", "baud", "pc-number"), in the file's order.
+// "address", "variant", "baud", "pc-number"), in the file's order; and,
+// once known, its identity ("identity": {"serial": ..., "type": ...}): the
+// device that belongs there, so that another one answering is said
+// (`machine status`, `machine backup`; issue 36).
 struct MachineDevice {
     QString name;
     QString family;
     QList<QPair<QString, QString>> options;
+    DeviceIdentity identity;
 
     QString option(const QString& key) const;
     // The options as command-line arguments: --family F --port P ...
@@ -58,7 +63,8 @@ QStringList machineDeviceKeys();
 Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& where);
 
 // The file's text: "machine", "devices" (each "name", "family", then its
-// options in their order; whole numbers as numbers) and "shaft", in that
+// options in their order, whole numbers as numbers, then its "identity"
+// when known) and "shaft", in that
 // order, one device a line: saving twice gives the same bytes, and a
 // changed device is one changed line. parseMachineFile() reads it back.
 QByteArray machineFileJson(const MachineFile& machine);

@@ -94,6 +94,7 @@ void readMemory(JsonReader& reader, const QJsonArray& array, Mc1Backup& backup) 
 QByteArray mc1BackupToJson(const Mc1Backup& backup) {
     QJsonObject root = jsonFileHeader(kBackupFile);
     root.insert(key("variant"), backup.variant);
+    if (backup.identity.known()) root.insert(key("identity"), backup.identity.toJson());
     root.insert(key("taken"), backup.taken.toUTC().toString(Qt::ISODateWithMs));
     root.insert(key("tool"), kToolPrefix + backup.toolVersion);
     QJsonArray variables;
@@ -127,6 +128,12 @@ Result<Mc1Backup> mc1BackupFromJson(const QByteArray& bytes) {
                     QCoreApplication::translate(
                         "cambench::model", "\"%1\" is none of mc100v1, mc100v2, mc200v1, mc200v2")
                         .arg(backup.variant));
+    if (root.contains(key("identity"))) {
+        const Result<DeviceIdentity> identity =
+            DeviceIdentity::fromJson(root.value(key("identity")), key("identity"));
+        if (!identity) return identity.error();
+        backup.identity = *identity;
+    }
     const QString taken = reader.string(
         root, {}, key("taken"), QCoreApplication::translate("cambench::model", "time taken"));
     backup.taken = QDateTime::fromString(taken, Qt::ISODateWithMs).toUTC();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/device_identity.h"
 #include "model/result.h"
 
 #include <QByteArray>
@@ -22,6 +23,9 @@ struct Mc1MemoryRange {
 // page, memory ranges.
 struct Mc1Backup {
     QString variant;  // "mc200v2" (comm/mc1/mc1_variant.h keys)
+    // The controller it was taken from (Mc1Device::readIdentity); not known
+    // in a backup older than that record.
+    DeviceIdentity identity;
     QDateTime taken;
     QString toolVersion;
     QMap<int, qint64> variables;  // number -> value
@@ -34,14 +38,15 @@ struct Mc1Backup {
 };
 
 // {"format":"cambench-mc1-backup","version":1,"family":"mc1",
-//  "variant":"mc200v2","taken":ISO UTC,"tool":"CamBench x.y.z",
+//  "variant":"mc200v2","identity":{"variant":"mc200v2","axes":…,…},
+//  "taken":ISO UTC,"tool":"CamBench x.y.z",
 //  "variables":[[1,-250],[2,-150],...],"flagPage":0,"flags":"<hex>",
 //  "memory":[{"address":4096,"data":"<hex>"}],"sha256":"<hex>"}, sha256
 // over the compact JSON of the same object without "sha256".
 QByteArray mc1BackupToJson(const Mc1Backup& backup);
 // Checks format, version, family, the hash (a mismatch: changed or
-// damaged), the variant, every value against its width, the page size and
-// the memory ranges (inside 0x0000–0xFFFF, not overlapping).
+// damaged), the variant, the identity (optional: older backups lack it), every value against its
+// width, the page size and the memory ranges (inside 0x0000–0xFFFF, not overlapping).
 Result<Mc1Backup> mc1BackupFromJson(const QByteArray& bytes);
 
 Status saveMc1Backup(const QString& path, const Mc1Backup& backup);

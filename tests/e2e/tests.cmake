@@ -36,6 +36,8 @@ cambench_add_e2e_test(tst_e2e_recovery e2e/tst_e2e_recovery.cpp)
 cambench_add_e2e_test(tst_e2e_short e2e/tst_e2e_short.cpp)
 cambench_add_e2e_test(tst_e2e_diff e2e/tst_e2e_diff.cpp)
 cambench_add_e2e_test(tst_e2e_machine e2e/tst_e2e_machine.cpp)
+# Issue 35, item 8: swapped ports, a restore goes only to its own device.
+cambench_add_e2e_test(tst_e2e_machine_identity e2e/tst_e2e_machine_identity.cpp)
 # cambench-sim --machine: every device of a machine file, and its shaft.
 cambench_add_e2e_test(tst_e2e_sim_machine e2e/tst_e2e_sim_machine.cpp)
 target_compile_definitions(tst_e2e_sim_machine PRIVATE

@@ -118,6 +118,36 @@ private Q_SLOTS:
         QVERIFY2(machine.error().message.contains(says), qPrintable(machine.error().message));
     }
 
+    // Issue 36, item 6: a device's identity, once known, is recorded in the
+    // file (after its options, on its line) and read back as it was.
+    void identityRecordedAndReadBack() {
+        const QByteArray text = json(
+            "{'machine': 'P', 'devices': [{'name': 'feed', 'family': 'compax3', 'port': "
+            "'sim', 'identity': {'type': 'S025V2', 'serial': 'C3-1001'}}]}");
+        const Result<MachineFile> machine = parseMachineFile(text, QStringLiteral("m.json"));
+        QVERIFY2(machine.ok(), qPrintable(machine.error().message));
+        const DeviceIdentity& identity = machine->devices.at(0).identity;
+        QCOMPARE(identity.value(QStringLiteral("serial")), QStringLiteral("C3-1001"));
+        QCOMPARE(identity.text(), QStringLiteral("serial C3-1001, type S025V2"));
+        QCOMPARE(machine->devices.at(0).arguments(),
+                 QStringList({"--family", "compax3", "--port", "sim"}));  // no option
+        const QByteArray written = machineFileJson(*machine);
+        QVERIFY2(written.contains(json("'port': 'sim', 'identity': {'serial': 'C3-1001', "
+                                       "'type': 'S025V2'}}")),
+                 written.constData());
+        QCOMPARE(parseMachineFile(written, QStringLiteral("m.json"))->devices.at(0).identity,
+                 identity);
+        // Not an object of texts: refused naming the device.
+        const Result<MachineFile> wrong = parseMachineFile(
+            json("{'machine': 'P', 'devices': [{'name': 'feed', 'family': 'compax3', 'port': "
+                 "'sim', 'identity': {'serial': 1001}}]}"),
+            QStringLiteral("m.json"));
+        QVERIFY(!wrong.ok());
+        QVERIFY2(wrong.error().message.contains(QLatin1String("device 1 (feed): identity: "
+                                                              "\"serial\" must be a text")),
+                 qPrintable(wrong.error().message));
+    }
+
     // The GUI's Save machine: name and family first, numbers as numbers, a
     // port that looks like a number stays text, one device a line; read
     // back it is the same machine, and written again the same bytes.
@@ -127,12 +157,14 @@ private Q_SLOTS:
         machine.devices << MachineDevice{QStringLiteral("cams"),
                                          QStringLiteral("camcon"),
                                          {{QStringLiteral("port"), QStringLiteral("5")},
-                                          {QStringLiteral("protocol"), QStringLiteral("standard")}}}
+                                          {QStringLiteral("protocol"), QStringLiteral("standard")}},
+                                         {}}
                         << MachineDevice{
                                QStringLiteral("feed"),
                                QStringLiteral("compax3"),
                                {{QStringLiteral("address"), QStringLiteral("3")},
-                                {QStringLiteral("port"), QStringLiteral("tcp://ds:4001")}}};
+                                {QStringLiteral("port"), QStringLiteral("tcp://ds:4001")}},
+                               {}};
         machine.shaftFrom = QStringLiteral("feed");
         machine.shaftTo = QStringLiteral("cams");
         const QByteArray text = machineFileJson(machine);

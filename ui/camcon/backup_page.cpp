@@ -12,7 +12,8 @@ BackupPage::BackupPage(QWidget* parent) : CamConSectionPage(parent) {
            "<p>A <b>backup</b> copies the whole EEPROM of the device (cam programs, dead times, "
            "settings, users, PLC) block by block into a file.</p>"
            "<p>A <b>restore</b> erases the device and writes such a file back. CamBench checks the "
-           "file first, asks for a confirmation when it comes from a different device, and saves "
+           "file first, restores it only to the device it was taken from (or to its replacement "
+           "when you say so), and saves "
            "what the device holds now into a safety backup before it erases anything.</p>"
            "<p>If a restore is interrupted, the device stays erased and does not run until an "
            "image is restored completely: keep the safety backup.</p>"));

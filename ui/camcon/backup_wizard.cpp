@@ -3,6 +3,7 @@
 
 #include "ui/device_session.h"
 #include "ui/progress_page.h"
+#include "ui/replacement_question.h"
 #include "workspace.h"
 
 #include "comm/camcon/usecases/backup_restore.h"
@@ -103,13 +104,11 @@ QWizardPage* BackupWizard::createCheckPage() {
     m_check = new QLabel;
     m_check->setWordWrap(true);
     m_check->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_force = new QCheckBox(tr("Restore although the image comes from a different device"));
     m_safetyPath = new QLineEdit;
     auto* form = new QFormLayout;
     form->addRow(tr("Safety backup:"), m_safetyPath);
     auto* layout = new QVBoxLayout(page);
     layout->addWidget(m_check);
-    layout->addWidget(m_force);
     layout->addLayout(form);
     layout->addStretch();
     return page;
@@ -165,12 +164,16 @@ bool BackupWizard::validateCurrentPage() {
         }
     }
     if (currentId() == CheckPage) {
-        if (!m_mismatch.isEmpty() && !m_force->isChecked()) {
-            QMessageBox::warning(
-                this, windowTitle(),
-                tr("The image comes from a different device. Confirm that you want to "
-                   "restore it anyway, or choose another file."));
-            return false;
+        // Another device than the image's: only as its replacement, which
+        // the person says with both identities in front of them; the restore
+        // then goes only to exactly this device.
+        m_consent = {};
+        if (!m_mismatch.isEmpty()) {
+            const DeviceIdentity device = camConIdentity(m_workspace->info());
+            if (!acceptsReplacement(this, windowTitle(), m_path->text(),
+                                    camConIdentity(m_image->device), device))
+                return false;
+            m_consent = ReplacementConsent::of(device);
         }
         if (m_safetyPath->text().trimmed().isEmpty()) {
             QMessageBox::warning(this, windowTitle(), tr("Choose where the safety backup goes."));
@@ -213,7 +216,6 @@ void BackupWizard::initializePage(int id) {
                     QLatin1Char('\n') + m_mismatch.join(QLatin1Char('\n'));
         }
         m_check->setText(text);
-        m_force->setVisible(!m_mismatch.isEmpty());
         if (m_safetyPath->text().isEmpty()) {
             // The same name the command line gives it: next to the image, with the time.
             m_safetyPath->setText(
@@ -265,7 +267,7 @@ void BackupWizard::runRestore() {
     const QString imagePath = m_path->text();
     const EepromImage image = *m_image;
     usecases::RestoreOptions options;
-    options.force = m_force->isChecked();
+    options.replacement = m_consent;
     options.safetyBackupPath = m_safetyPath->text();
     // Step 1 (the safety backup) has no known size: no time left is given.
     m_progress->start(

@@ -7,7 +7,6 @@
 
 #include <optional>
 
-class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QRadioButton;
@@ -19,8 +18,10 @@ class ProgressPage;
 class Workspace;
 
 // Backup and restore of the whole EEPROM, following the safety rules: the
-// image is checked by the model's loader, a different device needs an
-// explicit confirmation, a safety backup of the device is taken first, and
+// image is checked by the model's loader, a different device (another
+// identity, camConIdentity) only as the replacement of the image's, which
+// the person says in a question showing both (acceptsReplacement), a safety
+// backup of the device is taken first, and
 // the report says plainly when a failed restore left the device erased.
 class BackupWizard : public QWizard {
     Q_OBJECT
@@ -60,11 +61,11 @@ private:
     QRadioButton* m_restore;
     QLineEdit* m_path;
     QLabel* m_check;
-    QCheckBox* m_force;
     QLineEdit* m_safetyPath;
     ProgressPage* m_progress;
     std::optional<EepromImage> m_image;
     QStringList m_mismatch;
+    ReplacementConsent m_consent;  // the replacement the person accepted
     quint64 m_job = 0;
 };
 

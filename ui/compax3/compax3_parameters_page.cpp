@@ -5,6 +5,7 @@
 #include "comm/compax3/usecases/compax3_parameters.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
+#include "ui/replacement_question.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
 
@@ -235,6 +236,19 @@ void Compax3ParametersPage::writeFile(bool selectedOnly) {
             return;
         }
     }
+    // Only to the drive the file was read from, or to the one the person
+    // accepts as its replacement.
+    askRestoreTarget(session(), this, window(), tr("Write"), m_path, m_set->drive.deviceIdentity(),
+                     [this, selectedOnly, options](const ReplacementConsent& consent) {
+                         usecases::Compax3RestoreOptions accepted = options;
+                         accepted.replacement = consent;
+                         writeChecked(selectedOnly, accepted);
+                     });
+}
+
+void Compax3ParametersPage::writeChecked(bool selectedOnly,
+                                         const usecases::Compax3RestoreOptions& options) {
+    if (!m_set) return;
     const QString what =
         selectedOnly ? tr("%n selected object(s)", nullptr, int(options.only.size()))
                      : tr("the whole file (%n object(s))", nullptr, int(m_set->values.size()));

@@ -10,13 +10,19 @@ class QTableWidget;
 
 namespace cambench {
 
+namespace usecases {
+struct Compax3RestoreOptions;
+}
+
 class Compax3Gui;
 
 // Parameters, the "replace a broken drive" workflow: save the drive's
 // parameters to a file, compare a file with the drive (the differences in
 // a table, each with a box to write it), write all or the selected
-// differences with written/unchanged/failed per object; a file of another
-// drive type only when "Write to another drive type" is ticked; the sets
+// differences with written/unchanged/failed per object; to another drive
+// than the file's only when the person accepts it as the replacement (the
+// question shows both); a file of another drive type only when "Write to
+// another drive type" is ticked; the sets
 // stored in flash afterwards when asked.
 class Compax3ParametersPage : public Compax3Page {
     Q_OBJECT
@@ -39,6 +45,10 @@ protected:
     void factsChanged() override;
 
 private:
+    // writeFile once the drive is known to be the file's or its accepted
+    // replacement.
+    void writeChecked(bool selectedOnly, const usecases::Compax3RestoreOptions& options);
+
     Compax3Gui* m_gui;
     QLabel* m_file;
     QTableWidget* m_table;

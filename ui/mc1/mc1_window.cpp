@@ -12,6 +12,7 @@
 #include "comm/mc1/usecases/mc1_backup_restore.h"
 #include "ui/device_session.h"
 #include "ui/main_window.h"
+#include "ui/replacement_question.h"
 #include "ui/report_dialog.h"
 #include "ui/sentence.h"
 
@@ -156,10 +157,20 @@ void Mc1Window::restoreFile(const QString& path) {
             tr("Nothing was written: %1").arg(asSentence(backup.error().message)));
         return;
     }
+    // Only to the controller the file was taken from, or to the one the
+    // person accepts as its replacement.
+    askRestoreTarget(m_mc1->session(), this, window(), tr("Restore"), path, backup->identity,
+                     [this, path, b = *backup](const ReplacementConsent& consent) {
+                         restoreTo(path, b, consent);
+                     });
+}
+
+void Mc1Window::restoreTo(const QString& path, const Mc1Backup& backup,
+                          const ReplacementConsent& consent) {
     QMessageBox ask(
         QMessageBox::Warning, tr("Restore"),
         tr("Restore %1 (taken %2) to the controller?")
-            .arg(path, backup->taken.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))),
+            .arg(path, backup.taken.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))),
         QMessageBox::Cancel, window());
     ask.setInformativeText(
         tr("It is checked against the controller first; then only the "
@@ -171,8 +182,9 @@ void Mc1Window::restoreFile(const QString& path) {
     if (ask.clickedButton() != yes) return;
     m_mc1->session()->run<comm::Mc1Device, usecases::OutcomeTally>(
         this, tr("Restore controller"),
-        [b = *backup](comm::Mc1Device& device, comm::JobContext& job) {
-            return usecases::restoreMc1Backup(device, b, usecases::UseCaseProgress::of(job));
+        [backup, consent](comm::Mc1Device& device, comm::JobContext& job) {
+            return usecases::restoreMc1Backup(device, backup, consent,
+                                              usecases::UseCaseProgress::of(job));
         },
         [this](Result<usecases::OutcomeTally> tally) {
             if (!tally) {

@@ -2,6 +2,8 @@
 
 #include "mc1_page.h"
 
+#include "model/device_identity.h"
+#include "model/mc1/mc1_backup_file.h"
 #include "ui/device_facts.h"
 
 namespace cambench {
@@ -38,9 +40,13 @@ public:
     // Device menu: the use cases of comm/mc1/usecases with file dialogs.
     void backupToFile(const QString& path);
     void verifyFile(const QString& path);
+    // Asks first when another controller answers than the file's
+    // (askRestoreTarget), then whether to restore.
     void restoreFile(const QString& path);
 
 private:
+    void restoreTo(const QString& path, const Mc1Backup& backup, const ReplacementConsent& consent);
+
     Mc1Gui* m_mc1;
     Mc1VariablesPage* m_variables;
     Mc1PointsPage* m_points;

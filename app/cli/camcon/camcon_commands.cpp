@@ -33,8 +33,11 @@ QString camConHelp() {
         "                                   cam, the speed above which cams vanish or merge;\n"
         "                                   --min-pulse 12 | 3=12,4=8.5 | 5,3=12 (ms)\n"
         "  backup -o FILE                   whole EEPROM image\n"
-        "  restore FILE [--force] [--no-safety-backup]\n"
-        "                                   checks FILE, matches it against the device, saves a\n"
+        "  restore FILE [--replacement] [--no-safety-backup]\n"
+        "                                   checks FILE, matches it against the device (only the\n"
+        "                                   device it was taken from, else nothing is written,\n"
+        "                                   exit 4; --replacement, formerly --force: this device\n"
+        "                                   replaces that one), saves a\n"
         "                                   safety backup FILE.safety-<UTC time>.json, then "
         "erases\n"
         "                                   and writes\n"
@@ -104,8 +107,10 @@ void registerCamConCommands(CommandRegistry& registry) {
     for (const auto& [name, run] : groups) registry.add({family, QLatin1String(name), run});
     registry.addHelp(family, camConHelp());
     // A machine backup holds the CamCon's whole EEPROM image.
-    registry.setMachineVerbs(
-        family, {{"backup", "-o", "{file}"}, {"verify", "{file}"}, {"restore", "{file}"}});
+    registry.setMachineVerbs(family, {{"backup", "-o", "{file}"},
+                                      {"verify", "{file}"},
+                                      {"restore", "{file}"},
+                                      {"--replacement"}});
 }
 
 }  // namespace cambench::cli

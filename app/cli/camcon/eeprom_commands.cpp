@@ -35,7 +35,12 @@ int runBackup(CliSession& session, CommandArgs& args) {
 
 int runRestore(CliSession& session, CommandArgs& args) {
     usecases::RestoreOptions options;
-    options.force = args.takeFlag(QStringLiteral("--force"));
+    // --force is the older name of --replacement (it was "restore over an
+    // identity mismatch"): both accept the device answering in place of the
+    // image's.
+    const bool replacement = args.takeFlag(QStringLiteral("--replacement"));
+    if (args.takeFlag(QStringLiteral("--force")) || replacement)
+        options.replacement = ReplacementConsent::any();
     options.safetyBackup = !args.takeFlag(QStringLiteral("--no-safety-backup"));
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("an image FILE"));
     if (!path) return reportError(path.error());
@@ -61,8 +66,6 @@ int runRestore(CliSession& session, CommandArgs& args) {
     }
     if (!report->ok()) {
         Error error = report->error;
-        if (!report->identityMismatch.isEmpty() && !options.force)
-            error.message += QStringLiteral(" Add --force to restore it anyway.");
         if (report->state == usecases::RestoredState::ErasedOrPartial)
             error.message += QStringLiteral(" Nothing else was changed.");
         return reportError(error);

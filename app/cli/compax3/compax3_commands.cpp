@@ -30,7 +30,10 @@ QString compax3Help() {
         "                                   it (exit 0); control words and functions are\n"
         "                                   never saved\n"
         "  c3 verify FILE                   exit 0 equal, 1 the drive differs\n"
-        "  c3 restore FILE [--force] [--only LIST] [--store]\n"
+        "  c3 restore FILE [--replacement] [--force] [--only LIST] [--store]\n"
+        "                                   only to the drive FILE was read from (serial number\n"
+        "                                   and type), else nothing is written (exit 4);\n"
+        "                                   --replacement: this drive replaces that one;\n"
         "                                   writes what differs: written/unchanged/failed per\n"
         "                                   object; --force: a file of another drive type;\n"
         "                                   --store: then stores each set (1904.n = $32);\n"
@@ -113,7 +116,8 @@ void registerCompax3Commands(CommandRegistry& registry) {
     // The drive's parameter set.
     registry.setMachineVerbs(QStringLiteral("compax3"), {{"c3", "backup", "-o", "{file}"},
                                                          {"c3", "verify", "{file}"},
-                                                         {"c3", "restore", "{file}"}});
+                                                         {"c3", "restore", "{file}"},
+                                                         {"--replacement"}});
 }
 
 }  // namespace cambench::cli

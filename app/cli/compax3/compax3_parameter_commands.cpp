@@ -112,6 +112,8 @@ int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictio
 
 int runCompax3Restore(CliSession& session, CommandArgs& args, const Compax3Dictionary& dictionary) {
     usecases::Compax3RestoreOptions options;
+    if (args.takeFlag(QStringLiteral("--replacement")))
+        options.replacement = ReplacementConsent::any();
     options.force = args.takeFlag(QStringLiteral("--force"));
     options.store = args.takeFlag(QStringLiteral("--store"));
     const Result<QList<Compax3ObjectId>> only = takeObjectList(args, QStringLiteral("--only"));

@@ -180,13 +180,17 @@ int runMc1Verify(CliSession& session, CommandArgs& args) {
 }
 
 int runMc1Restore(CliSession& session, CommandArgs& args) {
+    const ReplacementConsent replacement = args.takeFlag(QStringLiteral("--replacement"))
+                                               ? ReplacementConsent::any()
+                                               : ReplacementConsent{};
     QString path;
     const Result<Mc1Backup> backup = takeBackupFile(args, path);
     if (!backup) return reportError(backup.error());
     session.setShowProgress(true);
     const Result<usecases::OutcomeTally> tally = runOnMc1<usecases::OutcomeTally>(
-        session, QStringLiteral("mc restore"), [b = *backup](Mc1Device& device, JobContext& job) {
-            return usecases::restoreMc1Backup(device, b, UseCaseProgress::of(job));
+        session, QStringLiteral("mc restore"),
+        [b = *backup, replacement](Mc1Device& device, JobContext& job) {
+            return usecases::restoreMc1Backup(device, b, replacement, UseCaseProgress::of(job));
         });
     if (!tally) return reportError(tally.error());
     return printOutcomeTally(*tally);

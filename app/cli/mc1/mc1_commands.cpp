@@ -39,8 +39,11 @@ QString mc1Help() {
         "  mc backup -o FILE [--vars N-M] [--no-flags] [--mem ADDR:LEN]…\n"
         "                                   default: variables V1–V1000 and every external flag\n"
         "  mc verify FILE                   exit 0 equal, 1 the controller differs\n"
-        "  mc restore FILE                  checks FILE against the controller, writes only the\n"
-        "                                   differences: written/unchanged/failed per item\n"
+        "  mc restore FILE [--replacement]  checks FILE against the controller, writes only the\n"
+        "                                   differences: written/unchanged/failed per item;\n"
+        "                                   only to the controller FILE was taken from (variant,\n"
+        "                                   axes, PLC program), else nothing is written (exit 4);\n"
+        "                                   --replacement: this controller replaces that one\n"
         "  Options of every mc command:\n"
         "  --axes 1,2        the axes to use instead of finding them (MC200: RDTABLE per\n"
         "                    logical axis; an MC100 has no axis telegrams, so none)\n"
@@ -368,7 +371,8 @@ void registerMc1Commands(CommandRegistry& registry) {
     registry.addHelp(QStringLiteral("mc1"), mc1Help());
     registry.setMachineVerbs(QStringLiteral("mc1"), {{"mc", "backup", "-o", "{file}"},
                                                      {"mc", "verify", "{file}"},
-                                                     {"mc", "restore", "{file}"}});
+                                                     {"mc", "restore", "{file}"},
+                                                     {"--replacement"}});
 }
 
 }  // namespace cambench::cli

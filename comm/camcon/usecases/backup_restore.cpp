@@ -79,16 +79,13 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
                 .arg(device.error().message));
         return report;
     }
-    report.identityMismatch = identityMismatch(image.device, *device);
-    if (!report.identityMismatch.isEmpty() && !options.force) {
-        report.error = Error::invalidData(
-            QCoreApplication::translate(
-                "cambench::usecases",
-                "%1 was taken from another kind of device: %2 It must be forced to be "
-                "restored here. The device was not changed.")
-                .arg(imagePath, report.identityMismatch.join(QLatin1Char(' '))));
+    if (const Status target = checkRestoreTarget(
+            camConIdentity(image.device), camConIdentity(*device), options.replacement, imagePath);
+        !target) {
+        report.error = target.error();
         return report;
     }
+    report.identityMismatch = identityMismatch(image.device, *device);
 
     const qint64 steps = options.safetyBackup ? 2 : 1;
     if (options.safetyBackup) {

@@ -4,8 +4,9 @@
 // GUI's wizard and the CLI.
 //
 // Restore: the image was checked when loaded (hash, version, blocks); the
-// connected device's identity is compared with the image's (a mismatch
-// refuses unless forced); a safety backup of what the device holds now is
+// connected device's identity (camConIdentity) is compared with the image's
+// (another device is refused unless the person accepted it as the
+// replacement of the image's); a safety backup of what the device holds now is
 // saved first, named by safetyBackupPath(); then the device is erased and
 // written. The report says what state the device is in.
 
@@ -34,7 +35,9 @@ Result<EepromImage> backupToFile(comm::CamConDevice& connection, const QString& 
                                  const UseCaseProgress& progress = {});
 
 struct RestoreOptions {
-    bool force = false;        // restore over an identity mismatch
+    // The person's word that the device answering replaces the one the
+    // image was taken from (a restore to another device is refused without).
+    ReplacementConsent replacement;
     bool safetyBackup = true;  // false: no safety backup (the user said so)
     QString safetyBackupPath;  // empty: safetyBackupPath(imagePath, now)
 };
@@ -49,7 +52,7 @@ struct RestoreReport {
     RestoredState state = RestoredState::Unchanged;
     QString safetyBackupPath;      // where the safety backup is; empty when none was taken
     int blocks = 0;                // blocks of the image
-    QStringList identityMismatch;  // differences that were forced over
+    QStringList identityMismatch;  // differences the person accepted (a replacement)
     Error error;                   // kind None when restored; the message says the device's state
     bool ok() const { return state == RestoredState::Restored; }
 };

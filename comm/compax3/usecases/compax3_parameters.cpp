@@ -349,6 +349,11 @@ Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compa
                                               const UseCaseProgress& progress) {
     const Result<Compax3Identity> identity = device.identity();
     if (!identity) return identity.error();
+    if (const Status target = checkRestoreTarget(
+            set.drive.deviceIdentity(), identity->deviceIdentity(), options.replacement,
+            QCoreApplication::translate("cambench::usecases", "The parameter set"));
+        !target)
+        return target.error();
     QList<Compax3Write> writes;
     {
         const Result<QList<Compax3Write>> checked =

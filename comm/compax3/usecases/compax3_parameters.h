@@ -99,6 +99,9 @@ OutcomeTally writeCompax3Objects(comm::Compax3Device& device, const QList<Compax
                                  const UseCaseProgress& progress = {});
 
 struct Compax3RestoreOptions {
+    // The person's word that the drive answering replaces the one the set
+    // was read from (serial number or type differ).
+    ReplacementConsent replacement;
     bool force = false;  // a set of another drive type
     // Only these objects (empty: every differing one of the file).
     QList<Compax3ObjectId> only;
@@ -107,7 +110,9 @@ struct Compax3RestoreOptions {
     bool store = false;
 };
 
-// Checks before the first byte: the drive's type (refused unless forced),
+// Checks before the first byte: the drive's identity (serial number and
+// type: another drive is refused unless accepted as the replacement), its
+// type (another type's set is refused unless forced),
 // every value against the dictionary (range, type, read-only). Then writes
 // what differs, reads each object back and reports it written, unchanged
 // or failed; after a line failure the rest is "not sent".

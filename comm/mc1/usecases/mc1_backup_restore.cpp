@@ -103,6 +103,8 @@ Result<Mc1Backup> takeMc1Backup(Mc1Device& device, const Mc1BackupScope& scope,
                                 const UseCaseProgress& progress) {
     const Result<comm::Mc1Variant> variant = device.ensureIdentified();
     if (!variant) return variant.error();
+    const Result<DeviceIdentity> identity = device.readIdentity();
+    if (!identity) return identity.error();
     if (!scope.memory.isEmpty() && !device.has(Mc1Capability::MemoryRead))
         return Error::usage(QCoreApplication::translate(
                                 "cambench::usecases",
@@ -119,6 +121,7 @@ Result<Mc1Backup> takeMc1Backup(Mc1Device& device, const Mc1BackupScope& scope,
     const Result<Mc1Backup> read = readLike(device, like, progress);
     if (!read) return read.error();
     Mc1Backup backup = *read;
+    backup.identity = *identity;
     backup.toolVersion = QStringLiteral(CAMBENCH_VERSION);
     return backup;
 }
@@ -172,7 +175,15 @@ Result<Mc1VerifyReport> verifyMc1Backup(Mc1Device& device, const Mc1Backup& back
 }
 
 Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup,
+                                      const ReplacementConsent& replacement,
                                       const UseCaseProgress& progress) {
+    const Result<DeviceIdentity> identity = device.readIdentity();
+    if (!identity) return identity.error();
+    if (const Status target =
+            checkRestoreTarget(backup.identity, *identity, replacement,
+                               QCoreApplication::translate("cambench::usecases", "The backup"));
+        !target)
+        return target.error();
     if (const Status fits = checkFits(device, backup); !fits) return fits.error();
     const Result<Mc1Backup> now = readLike(device, backup, progress.slice(0, 1, 2));
     if (!now) return now.error();

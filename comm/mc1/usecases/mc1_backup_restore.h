@@ -5,7 +5,9 @@
 // inside a worker job.
 //
 // Restore checks the file against the connected controller before the
-// first byte (MC100 or MC200, the flags' page, memory writable), reads what
+// first byte (its identity: the controller the file was taken from or its
+// accepted replacement; MC100 or MC200, the flags' page, memory writable),
+// reads what
 // the controller holds, writes only the differences and reports every item
 // as written, unchanged or failed with what was read back.
 
@@ -30,6 +32,7 @@ struct Mc1BackupScope {
 // The default scope: every variable of the controller and its flags.
 Mc1BackupScope defaultMc1BackupScope(comm::Mc1Variant variant);
 
+// With the controller's identity (Mc1Device::readIdentity) in the backup.
 Result<Mc1Backup> takeMc1Backup(comm::Mc1Device& device, const Mc1BackupScope& scope,
                                 const UseCaseProgress& progress = {});
 
@@ -41,9 +44,13 @@ struct Mc1VerifyReport {
 Result<Mc1VerifyReport> verifyMc1Backup(comm::Mc1Device& device, const Mc1Backup& backup,
                                         const UseCaseProgress& progress = {});
 
-// An error (nothing written) when the file does not fit the controller;
-// otherwise one line per variable, differing flag and memory chunk.
+// An error (nothing written) when the file does not fit the controller or
+// another controller answers than the one it was taken from (unless
+// `replacement` accepts it; a file that records no identity is refused the
+// same way); otherwise one line per variable, differing flag and memory
+// chunk.
 Result<OutcomeTally> restoreMc1Backup(comm::Mc1Device& device, const Mc1Backup& backup,
+                                      const ReplacementConsent& replacement = {},
                                       const UseCaseProgress& progress = {});
 
 }  // namespace cambench::usecases

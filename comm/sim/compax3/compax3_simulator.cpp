@@ -16,6 +16,7 @@ const QLatin1String kDefaultType("S025V2");
 struct DriveOptions {
     int address = -1;  // -1: RS232
     QString type = kDefaultType;
+    QString serial;  // empty: the simulated drive's own (C3-4711-0815)
     int baud = kDefaultBaud;
     QList<Compax3ObjectId> lacks;    // a firmware without these objects
     QList<Compax3ObjectId> refuses;  // reads answered !0005
@@ -30,7 +31,9 @@ Result<int> addressFrom(const QString& text) {
 }
 
 SimulatedLine lineFor(const DriveOptions& options, const SimHostOptions& shared) {
-    SimCompax3Drive drive(options.type);
+    SimCompax3Drive drive = options.serial.isEmpty()
+                                ? SimCompax3Drive(options.type)
+                                : SimCompax3Drive(options.type, options.serial);
     for (const Compax3ObjectId& id : options.lacks) drive.removeObject(id);
     for (const Compax3ObjectId& id : options.refuses) drive.refuseReads(id);
     auto line = std::make_unique<SimCompax3Line>(options.address, std::move(drive), shared.faults);
@@ -74,6 +77,8 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
             const QString value = option.section(QLatin1Char('='), 1).trimmed();
             if (key == QLatin1String("type") && !value.isEmpty()) {
                 options.type = value;
+            } else if (key == QLatin1String("serial") && !value.isEmpty()) {
+                options.serial = value;
             } else if (key == QLatin1String("lacks") || key == QLatin1String("refuse")) {
                 // "sim:lacks=1901.0,1902.0": a drive whose firmware lacks
                 // them; "refuse=1000.3": reads of it answer !0005.
@@ -90,8 +95,8 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
                 options.address = *address;
             } else {
                 return Error::usage(
-                    QStringLiteral("the Compax3 simulator's port takes type=…, lacks=…, refuse=… "
-                                   "and (RS485) address=…, not \"%1\"")
+                    QStringLiteral("the Compax3 simulator's port takes type=…, serial=…, "
+                                   "lacks=…, refuse=… and (RS485) address=…, not \"%1\"")
                         .arg(option));
             }
         }
@@ -112,6 +117,9 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
              QStringLiteral("Compax3: the device type its info string names (default %1).")
                  .arg(kDefaultType),
              QStringLiteral("type")},
+            {QStringLiteral("serial"),
+             QStringLiteral("Compax3: its serial number, object 1.4 (default C3-4711-0815)."),
+             QStringLiteral("text")},
             {QStringLiteral("baud"),
              QStringLiteral("Baud rate for the timing (default: the protocol's)."),
              QStringLiteral("rate")},
@@ -139,6 +147,8 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
         }
         if (parser.isSet(QStringLiteral("drive-type")))
             options.type = parser.value(QStringLiteral("drive-type")).trimmed();
+        if (parser.isSet(QStringLiteral("serial")))
+            options.serial = parser.value(QStringLiteral("serial")).trimmed();
         for (const auto& [name, into] :
              {std::pair{"lacks", &options.lacks}, std::pair{"refuse", &options.refuses}})
             for (const QString& object :

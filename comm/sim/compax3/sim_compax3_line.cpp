@@ -2,6 +2,7 @@
 #include "comm/engine/cr_line_backend.h"
 
 #include "comm/compax3/compax3_syntax.h"
+#include "comm/sim/sim_log.h"
 
 namespace cambench::comm {
 
@@ -29,6 +30,8 @@ QList<SimOutput> SimCompax3Line::receive(QByteArrayView bytes, qint64 nowMs) {
             command.remove(0, digits);
         }
         if (m_faults.settings().dead || m_faults.ignoresRequest()) continue;
+        // --verbose: every request, so that a test counts what reached it.
+        qCDebug(commSimLog).noquote() << "<-" << QString::fromLatin1(command);
         QByteArray reply = m_drive.answer(command, nowMs);
         if (m_shaft) m_shaft->publish(m_drive.motion());
         if (m_address >= 0) reply.prepend(kCompax3Rs485Mark);

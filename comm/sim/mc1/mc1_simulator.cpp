@@ -73,6 +73,20 @@ Status parameterBaseFrom(const QString& text, Mc1SimAxes& axes) {
     return success();
 }
 
+// udb= / --udb: where its PLC program's data block starts.
+Status udbFrom(const QString& text, Mc1SimAxes& axes) {
+    bool ok = false;
+    const uint address = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
+                             ? text.mid(2).toUInt(&ok, 16)
+                             : text.toUInt(&ok, 10);
+    if (!ok)
+        return Error::usage(
+            QStringLiteral("the UDB address must be a number such as 0x12000, not \"%1\"")
+                .arg(text));
+    axes.udbAddress = quint32(address);
+    return success();
+}
+
 // The ASCII protocol is the MC100's (V1 and V2 alike), without the
 // single-FIFO synchronisation.
 Status checkAscii(Mc1Variant variant, int syncMs) {
@@ -102,6 +116,7 @@ SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOption
     if (axes.parameterBase)
         line->controller().setAxisParameters(mc1AxisParametersFrom(
             *axes.parameterBase, QStringLiteral("the simulated controller's own")));
+    if (axes.udbAddress) line->controller().setUdbAddress(*axes.udbAddress);
     addDemoState(line->controller());
     SimMc1Line* drivesShaft = line.get();
     const QString description =
@@ -135,16 +150,19 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
                 sync = value;
                 continue;
             }
-            if (key == QLatin1String("axes") || key == QLatin1String("parameters")) {
+            if (key == QLatin1String("axes") || key == QLatin1String("parameters") ||
+                key == QLatin1String("udb")) {
                 const Status ok = key == QLatin1String("axes") ? axesFrom(value, axes)
-                                                               : parameterBaseFrom(value, axes);
+                                  : key == QLatin1String("parameters")
+                                      ? parameterBaseFrom(value, axes)
+                                      : udbFrom(value, axes);
                 if (!ok) return ok.error();
                 continue;
             }
             if (key != QLatin1String("variant"))
                 return Error::usage(
-                    QStringLiteral("the MC-1 simulator's port takes variant=…, sync=…, axes=… "
-                                   "and parameters=…, not \"%1\"")
+                    QStringLiteral("the MC-1 simulator's port takes variant=…, sync=…, axes=…, "
+                                   "parameters=… and udb=…, not \"%1\"")
                         .arg(option));
             const Result<Mc1Variant> parsed = variantFrom(value);
             if (!parsed) return parsed.error();
@@ -186,6 +204,10 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
                             "(position), 1 (target), 2 (status); default 0x1000, CamBench's "
                             "built-in guess."),
              QStringLiteral("number")},
+            {QStringLiteral("udb"),
+             QStringLiteral("MC-1, MC200 V2: where its PLC program's data block starts (SYSDATA "
+                            "08; default 0x10000); another program, another address."),
+             QStringLiteral("address")},
         };
     };
     info.fromOptions = [](const QCommandLineParser& parser,
@@ -219,6 +241,9 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
                     parameterBaseFrom(parser.value(QStringLiteral("parameter-base")), axes);
                 !ok)
                 return Error::usage(QStringLiteral("--parameter-base: %1").arg(ok.error().message));
+        if (parser.isSet(QStringLiteral("udb")))
+            if (const Status ok = udbFrom(parser.value(QStringLiteral("udb")), axes); !ok)
+                return Error::usage(QStringLiteral("--udb: %1").arg(ok.error().message));
         if (shared.protocol == kAsciiProtocol) {
             if (const Status ascii = checkAscii(variant, syncMs); !ascii)
                 return Error::usage(

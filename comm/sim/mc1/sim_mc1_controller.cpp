@@ -14,7 +14,6 @@ namespace {
 constexpr int kMemorySize = kMc1MemorySize;
 constexpr int kMaxBlock = kMc1MaxBlockRead;
 constexpr int kMaxRead = kMc1MaxMemoryRead;
-constexpr quint32 kUdbAddress = 0x00010000;
 constexpr int kProgramLength = 0x400;
 
 QByteArray ack() {
@@ -204,7 +203,7 @@ QByteArray SimMc1Controller::answer(const QByteArray& request, qint64 nowMs) {
             m_pc = 0;
             return ack();
         case Mc1Op::UdbAddress:
-            return reply(mc1LittleEndian(kUdbAddress, 4));
+            return reply(mc1LittleEndian(m_udbAddress, 4));
         case Mc1Op::Reset:
             m_running = false;
             m_pc = 0;

@@ -38,6 +38,8 @@ public:
     // slot; commands for others are refused (NAK).
     void setAxes(const QList<int>& logical);
     const QList<int>& axes() const { return m_presentAxes; }
+    // Where its PLC program's data block starts (SYSDATA 08).
+    void setUdbAddress(quint32 address) { m_udbAddress = address; }
     // Its own axis parameter numbers (by default CamBench's guess).
     void setAxisParameters(const Mc1AxisParameterTable& table) { m_parameters = table; }
     // Every whole telegram it received, in order (tests count them).
@@ -88,6 +90,7 @@ private:
     QMap<int, qint64> m_flashedVariables;
     std::array<Axis, 8> m_axes{};
     QList<int> m_presentAxes{1, 2, 3, 4, 5, 6, 7, 8};
+    quint32 m_udbAddress = 0x00010000;
     Mc1AxisParameterTable m_parameters = mc1ProvisionalAxisParameters();
     QList<QByteArray> m_received;
 };

@@ -1,6 +1,7 @@
 #include "sim_mc1_line.h"
 
 #include "comm/mc1/mc1_telegram.h"
+#include "comm/sim/sim_log.h"
 
 #include <QStringList>
 
@@ -60,6 +61,8 @@ QList<SimOutput> SimMc1Line::receive(QByteArrayView bytes, qint64 nowMs) {
         const QByteArray telegram = m_pending.left(length);
         m_pending.remove(0, length);
         if (m_faults.settings().dead || m_faults.ignoresRequest()) continue;
+        // --verbose: every telegram, so that a test counts what reached it.
+        qCDebug(commSimLog).noquote() << "<-" << QString::fromLatin1(telegram.toHex(' '));
         const QByteArray answer = m_controller.handle(telegram, nowMs);
         if (m_shaft) m_shaft->publish(m_controller.axisMotion(m_shaftAxis, nowMs));
         if (answer.isEmpty()) continue;

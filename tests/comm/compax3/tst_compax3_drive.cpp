@@ -257,13 +257,23 @@ private Q_SLOTS:
         Bench bench(-1, -1, {}, QStringLiteral("S150V4"));
         Compax3ParameterSet set;
         set.drive.info = QStringLiteral("Compax3 S025V2 F10 I10 T40 V04.02");
+        set.drive.serial = QStringLiteral("C3-0001");
         set.values = {{compax3SetTarget(1), QStringLiteral("77")}};
         const Result<OutcomeTally> refused =
             restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), {});
         QVERIFY(!refused.ok());
-        QVERIFY(refused.error().message.contains(QLatin1String("nothing was written")));
+        QVERIFY2(refused.error().message.contains(QLatin1String("Nothing was written")),
+                 qPrintable(refused.error().message));
         QCOMPARE(bench.sim().value(compax3SetTarget(1)), QStringLiteral("100"));
+        // The replacement accepted, another type still needs --force.
         Compax3RestoreOptions forced;
+        forced.replacement = ReplacementConsent::any();
+        const Result<OutcomeTally> otherType =
+            restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), forced);
+        QVERIFY(!otherType.ok());
+        QVERIFY2(otherType.error().message.contains(QLatin1String("of type S025V2")),
+                 qPrintable(otherType.error().message));
+        QCOMPARE(bench.sim().value(compax3SetTarget(1)), QStringLiteral("100"));
         forced.force = true;
         QVERIFY(restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), forced)
                     ->complete());
@@ -275,6 +285,38 @@ private Q_SLOTS:
             restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), forced);
         QVERIFY(badValue.error().message.contains(QLatin1String("1905.1")));
         QCOMPARE(bench.sim().value(compax3SetTarget(2)), QStringLiteral("200"));
+    }
+
+    // Issue 35, item 8: a set goes only to the drive it was read from (its
+    // serial number, 1.4, and type): another drive of the same type is
+    // refused naming both, with no write on the line, until accepted.
+    void aSetOfAnotherDriveIsRefusedUntilAcceptedAsItsReplacement() {
+        using namespace cambench::usecases;
+        Bench bench;
+        const Result<Compax3Identity> drive = bench.device.identity();
+        QVERIFY(drive.ok());
+        Compax3ParameterSet set;
+        set.drive = *drive;
+        set.drive.serial = QStringLiteral("C3-0001");
+        set.values = {{compax3SetTarget(1), QStringLiteral("77")}};
+        const qsizetype before = bench.sim().requests().size();
+        const Result<OutcomeTally> refused =
+            restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), {});
+        QVERIFY(!refused.ok());
+        QCOMPARE(refused.error().kind, ErrorKind::InvalidData);
+        QVERIFY2(refused.error().message.contains(
+                     QStringLiteral("another device answers: expected serial C3-0001, found "
+                                    "serial %1")
+                         .arg(drive->serial)),
+                 qPrintable(refused.error().message));
+        for (const QByteArray& request : bench.sim().requests().mid(before))
+            QVERIFY2(!request.contains('='), request.constData());  // reads only
+        QCOMPARE(bench.sim().value(compax3SetTarget(1)), QStringLiteral("100"));
+        Compax3RestoreOptions accepted;
+        accepted.replacement = ReplacementConsent::of(drive->deviceIdentity());
+        QVERIFY(restoreCompax3Parameters(bench.device, set, Compax3Dictionary::builtin(), accepted)
+                    ->complete());
+        QCOMPARE(bench.sim().value(compax3SetTarget(1)), QStringLiteral("77"));
     }
 
     // Issue 27: each acting request's bytes as the manual writes a command
@@ -399,6 +441,7 @@ private Q_SLOTS:
         Bench bench;
         Compax3ParameterSet set;
         set.drive.info = bench.sim().infoString();
+        set.drive.serial = *bench.device.readObject(kCompax3Serial);  // this drive's own set
         set.values = {{kCompax3ControlWord, QStringLiteral("$6103")},
                       {compax3StoreSet(1), QStringLiteral("$32")},
                       {compax3SetTarget(1), QStringLiteral("55")}};
@@ -459,6 +502,7 @@ private Q_SLOTS:
         QCOMPARE(differs->differences.first().error, QStringLiteral("not on this drive"));
         Compax3RestoreOptions forced;
         forced.force = true;  // the types differ
+        forced.replacement = ReplacementConsent::any();  // and so the drives
         const qsizetype from = lacking.sim().requests().size();
         const Result<OutcomeTally> restored = restoreCompax3Parameters(
             lacking.device, other->set, Compax3Dictionary::builtin(), forced);

@@ -114,9 +114,12 @@ void TestE2eEeprom::restoreOfOtherDeviceNeedsForce() {
 
     const CliRun refused = session.cli({"restore", foreign});
     VERIFY_EXIT(refused, 4);
-    QVERIFY2(refused.err.contains(QLatin1String("--force")), qPrintable(refused.err));
+    QVERIFY2(refused.err.contains(QLatin1String("another device answers: expected outputs 64")),
+             qPrintable(refused.err));
+    QVERIFY2(refused.err.contains(QLatin1String("--replacement")), qPrintable(refused.err));
     VERIFY_EXIT(session.cli({"verify", changed}), 0);  // untouched
 
+    // --force: the older name of --replacement.
     VERIFY_EXIT(session.cli({"restore", "--force", "--no-safety-backup", foreign}), 0);
     VERIFY_EXIT(session.cli({"verify", path}), 0);
 }

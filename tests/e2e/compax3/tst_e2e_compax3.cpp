@@ -196,9 +196,15 @@ private Q_SLOTS:
         START_SIM(other, {"--drive-type", "S150V4"});
         const CliRun refused = other.cli({"c3", "restore", file});
         VERIFY_EXIT(refused, 4);
-        QVERIFY2(refused.err.contains(QLatin1String("nothing was written")),
+        QVERIFY2(refused.err.contains(QLatin1String("another device answers: expected type "
+                                                    "S025V2, found type S150V4")),
                  qPrintable(refused.err));
-        VERIFY_EXIT(other.cli({"c3", "restore", file, "--force"}), 0);
+        // Accepted as the replacement, another type still needs --force.
+        const CliRun otherType = other.cli({"c3", "restore", file, "--replacement"});
+        VERIFY_EXIT(otherType, 4);
+        QVERIFY2(otherType.err.contains(QLatin1String("nothing was written")),
+                 qPrintable(otherType.err));
+        VERIFY_EXIT(other.cli({"c3", "restore", file, "--replacement", "--force"}), 0);
 
         QByteArray tampered = readBytes(file);
         tampered.replace("\"400\"", "\"401\"");

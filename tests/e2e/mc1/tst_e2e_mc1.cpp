@@ -144,8 +144,14 @@ private Q_SLOTS:
         START_SIM(mc100, {"--variant", "mc100v1"});
         const CliRun refused = mc100.cli({"mc", "restore", file});
         VERIFY_EXIT(refused, 4);
-        QVERIFY2(refused.err.contains(QLatin1String("nothing was written")),
+        QVERIFY2(refused.err.contains(QLatin1String("another device answers")) &&
+                     refused.err.contains(QLatin1String("variant mc200v2")) &&
+                     refused.err.contains(QLatin1String("Nothing was written")),
                  qPrintable(refused.err));
+        // Accepted as the replacement, the other widths still refuse it.
+        const CliRun other = mc100.cli({"mc", "restore", file, "--replacement"});
+        VERIFY_EXIT(other, 4);
+        QVERIFY2(other.err.contains(QLatin1String("nothing was written")), qPrintable(other.err));
         // A variant named that does not answer so: refused, naming what answers.
         const CliRun wrong = mc100.cli({"--variant", "mc200v2", "mc", "var", "read", "1"});
         VERIFY_EXIT(wrong, 2);

@@ -212,17 +212,20 @@ private Q_SLOTS:
         const DeviceInfo image = sampleImage().device;
         QVERIFY(identityMismatch(image, image).isEmpty());
         DeviceInfo device = image;
-        device.deviceNumber = 9;  // not part of the identity
-        device.ramFree = 1000;
+        device.ramFree = 1000;  // changes by itself: not part of the identity
+        device.temperature = 40;
+        device.programmedCams = 7;  // the content, which a restore replaces
         QVERIFY(identityMismatch(image, device).isEmpty());
         device.epromDate = QStringLiteral("01.02.1999");
         device.outputs = 32;
         device.maxPosition = 359;
+        device.deviceNumber = 9;  // another device on the bus
         const QStringList differences = identityMismatch(image, device);
-        QCOMPARE(differences.size(), 3);
-        QVERIFY(differences.at(0).contains(QStringLiteral("01.02.1999")));
-        QVERIFY(differences.at(1).contains(QStringLiteral("Outputs: image 48, device 32")));
-        QVERIFY(differences.at(2).contains(QStringLiteral("3599")));
+        QCOMPARE(differences.size(), 4);  // in the identity's key order
+        QVERIFY2(differences.at(0).contains(QStringLiteral("3599")), qPrintable(differences.at(0)));
+        QVERIFY(differences.at(1).contains(QStringLiteral("device: image ")));
+        QVERIFY(differences.at(2).contains(QStringLiteral("01.02.1999")));
+        QVERIFY(differences.at(3).contains(QStringLiteral("outputs: image 48, device 32")));
     }
 };
 

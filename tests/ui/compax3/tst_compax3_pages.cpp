@@ -23,7 +23,9 @@
 #include "ui/report_dialog.h"
 
 #include "comm/compax3/compax3_objects.h"
+#include "model/compax3/compax3_parameter_file.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -37,6 +39,7 @@
 #include <QSortFilterProxyModel>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QTimer>
 #include "ui/connection_page.h"
 
 #include <QListWidget>
@@ -61,6 +64,15 @@ bool lampGrey(QWidget* page, int bit) {
     return page->findChild<QLabel*>(QStringLiteral("compax3Bit%1").arg(bit))
         ->text()
         .contains(QLatin1String("color:gray"));
+}
+
+// The confirmation's action: the first button that is not Cancel.
+void answerYes(QMessageBox* box) {
+    for (QAbstractButton* button : box->buttons())
+        if (box->buttonRole(button) != QMessageBox::RejectRole) {
+            button->click();
+            return;
+        }
 }
 
 bool jobStarted(const QSignalSpy& started, const QString& title) {
@@ -407,6 +419,95 @@ private Q_SLOTS:
                             kDeviceTimeoutMs));
         QCOMPARE(parameters->differences()->rowCount(), 0);
         QCOMPARE(report, QStringLiteral("Write"));
+    }
+
+    // Issue 35, item 8: a parameter file goes only to the drive it was read
+    // from. A file of another drive (serial number C3-9999) asks first,
+    // showing both identities; declined, nothing is written and no further
+    // question comes; accepted, the drive answering takes the file.
+    void anotherDrivesFileAsksWhetherThisOneReplacesIt() {
+        std::unique_ptr<Shell> shell =
+            startOnSimulator(QStringLiteral("sim:serial=C3-2002"), QStringLiteral("compax3"));
+        QVERIFY(shell);
+        Compax3Window* c3 = compax3Window(shell->window());
+        QCOMPARE(c3->facts().identity.serial, QStringLiteral("C3-2002"));
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("old-drive.json"));
+        Compax3ParametersPage* parameters = c3->parametersPage();
+        shell->window()->showPage(parameters);
+        parameters->saveToFile(file);
+        QVERIFY(
+            QTest::qWaitFor([&] { return resultOf(parameters).startsWith(QLatin1String("Saved")); },
+                            kDeviceTimeoutMs));
+        // The file as if read from the drive this one replaces, with a
+        // velocity this drive does not hold.
+        Result<Compax3ParameterSet> set = loadCompax3Parameters(file);
+        QVERIFY(set.ok());
+        Compax3ParameterSet old = *set;
+        old.drive.serial = QStringLiteral("C3-9999");
+        for (Compax3ParameterValue& value : old.values)
+            if (value.id == comm::compax3SetVelocity(4)) value.value = QStringLiteral("77");
+        QVERIFY(saveCompax3Parameters(file, old).ok());
+        parameters->compareWith(file);
+        QVERIFY(QTest::qWaitFor([&] { return parameters->differences()->rowCount() == 1; },
+                                kDeviceTimeoutMs));
+
+        // Every dialog in turn: the question (answered as `accept` says),
+        // the confirmation (yes), the report (closed).
+        QStringList questions;
+        int confirmations = 0;
+        int reports = 0;
+        bool accept = false;
+        QTimer answer;
+        answer.setInterval(10);
+        connect(&answer, &QTimer::timeout, this, [&] {
+            QWidget* modal = QApplication::activeModalWidget();
+            if (auto* report = qobject_cast<ReportDialog*>(modal)) {
+                ++reports;
+                report->accept();
+                return;
+            }
+            auto* box = qobject_cast<QMessageBox*>(modal);
+            if (!box) return;
+            if (box->objectName() != QLatin1String("replacementQuestion")) {
+                ++confirmations;
+                answerYes(box);
+                return;
+            }
+            questions << box->text() + QLatin1Char('\n') + box->informativeText();
+            QAbstractButton* replace =
+                box->findChild<QAbstractButton*>(QStringLiteral("acceptReplacement"));
+            QVERIFY(replace);
+            QCOMPARE(box->defaultButton(), box->button(QMessageBox::Cancel));
+            (accept ? replace : box->button(QMessageBox::Cancel))->click();
+        });
+        answer.start();
+
+        parameters->writeFile(false);
+        QVERIFY(QTest::qWaitFor([&] { return questions.size() == 1; }, kDeviceTimeoutMs));
+        QVERIFY2(questions.at(0).contains(QLatin1String("not the one")), qPrintable(questions[0]));
+        QVERIFY2(questions.at(0).contains(
+                     QStringLiteral("serial: backup C3-9999, this device C3-2002  ← differs")),
+                 qPrintable(questions.at(0)));
+        QVERIFY2(questions.at(0).contains(QLatin1String("type: S025V2 (the same)")),
+                 qPrintable(questions.at(0)));
+        QTest::qWait(200);
+        QCOMPARE(confirmations, 0);  // declined: not even asked whether to write
+        // The drive still holds its own velocity.
+        parameters->differences()->setRowCount(0);
+        parameters->compareWith(file);
+        QVERIFY(QTest::qWaitFor([&] { return parameters->differences()->rowCount() == 1; },
+                                kDeviceTimeoutMs));
+        QVERIFY(parameters->differences()->item(0, 3)->text() != QLatin1String("77"));
+
+        accept = true;
+        parameters->writeFile(false);
+        QVERIFY(
+            QTest::qWaitFor([&] { return resultOf(parameters).startsWith(QLatin1String("Equal")); },
+                            kDeviceTimeoutMs));
+        QCOMPARE(questions.size(), 2);
+        QCOMPARE(confirmations, 1);
+        QCOMPARE(reports, 1);
     }
 
     // Issue 27: the pages on the shell's poll cycle. A parameter backup

@@ -29,6 +29,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 
 using namespace cambench;
@@ -59,6 +60,7 @@ private Q_SLOTS:
     void tablePageAsksBeforeAReadReplacesEdits();
     void lockedEepromIsShownAsAPlainWarning();
     void backupAndRestoreThroughWizard();
+    void wizardRestoresAnotherDevicesImageOnlyAsItsReplacement();
     void restoreRefusesDamagedImage();
     void failedReadOnDeadLineKeepsEditsAndSaysWhy();
     void closingWithUnwrittenChangesCountsThem();
@@ -335,6 +337,76 @@ void MainWindowTest::backupAndRestoreThroughWizard() {
     QVERIFY(report.contains(QStringLiteral("0 failed")));
     QCOMPARE(restored.size(), 1);
     QVERIFY(loadEepromImage(safety).ok());
+    restore->close();
+}
+
+// Issue 35, item 8: an image of another device (here device number 5) is
+// restored only when the person says this device replaces that one; the
+// question shows both identities. Declined, the wizard stays and nothing is
+// erased; accepted, the erase question follows and the restore runs.
+void MainWindowTest::wizardRestoresAnotherDevicesImageOnlyAsItsReplacement() {
+    auto shell = startOnSimulator();
+    QVERIFY(shell);
+    QTemporaryDir dir;
+    const QString image = dir.filePath(QStringLiteral("other.json"));
+    BackupWizard* backup = camConWindow(shell->window())->openBackupWizard();
+    backup->setMode(BackupWizard::Mode::Backup);
+    backup->setPath(image);
+    backup->next();
+    QTRY_VERIFY_WITH_TIMEOUT(backup->progressPage()->isComplete(), kDeviceTimeoutMs);
+    backup->close();
+    Result<EepromImage> taken = loadEepromImage(image);
+    QVERIFY(taken.ok());
+    EepromImage other = *taken;
+    other.device.deviceNumber = 5;
+    QVERIFY(saveEepromImage(image, other).ok());
+
+    BackupWizard* restore = camConWindow(shell->window())->openBackupWizard();
+    QSignalSpy restored(restore, &BackupWizard::restored);
+    restore->setMode(BackupWizard::Mode::Restore);
+    restore->setPath(image);
+    restore->next();
+    QCOMPARE(restore->currentId(), int(BackupWizard::CheckPage));
+    QVERIFY(restore->checkText().contains(QStringLiteral("does NOT match")));
+    restore->setSafetyBackupPath(dir.filePath(QStringLiteral("safety.json")));
+    QString question;
+    {
+        NextDialog<QMessageBox> decline([&question](QMessageBox* box) {
+            question = box->objectName() + QLatin1Char('\n') + box->informativeText();
+            box->button(QMessageBox::Cancel)->click();
+        });
+        restore->next();
+        QCOMPARE(decline.answered(), 1);
+    }
+    QVERIFY2(question.startsWith(QStringLiteral("replacementQuestion")), qPrintable(question));
+    QVERIFY2(question.contains(QStringLiteral("device: backup 5, this device 0  ← differs")),
+             qPrintable(question));
+    QCOMPARE(restore->currentId(), int(BackupWizard::CheckPage));
+    QCOMPARE(restored.size(), 0);
+
+    // Accepted: then the erase question, then the restore.
+    QStringList asked;
+    QTimer answer;
+    answer.setInterval(10);
+    connect(&answer, &QTimer::timeout, this, [&asked] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) return;
+        asked << box->objectName();
+        for (QAbstractButton* button : box->buttons())
+            if (box->buttonRole(button) == QMessageBox::DestructiveRole) {
+                button->click();
+                return;
+            }
+    });
+    answer.start();
+    restore->next();
+    answer.stop();
+    QCOMPARE(asked.size(), 2);
+    QCOMPARE(asked.at(0), QStringLiteral("replacementQuestion"));
+    QTRY_VERIFY_WITH_TIMEOUT(restore->progressPage()->isComplete(), kDeviceTimeoutMs);
+    QVERIFY2(restore->progressPage()->reportText().contains(QStringLiteral("Restore complete")),
+             qPrintable(restore->progressPage()->reportText()));
+    QCOMPARE(restored.size(), 1);
     restore->close();
 }
 

@@ -32,7 +32,7 @@ private Q_SLOTS:
     void initTestCase();
     void safetyBackupIsNamedAfterTheImageAndTime();
     void restoreTakesSafetyBackupThenRestores();
-    void restoreOfForeignImageIsRefusedUnlessForced();
+    void restoreOfForeignImageIsRefusedUnlessAcceptedAsReplacement();
     void failedRestoreSaysTheDeviceIsErased();
     void lineBackupGoesOnPastADeadDevice();
     void verifyLineComparesEverySavedDevice();
@@ -80,11 +80,15 @@ void TestBackup::restoreTakesSafetyBackupThenRestores() {
     QVERIFY(verifyImage(*bench.client, *image)->equal);
 }
 
-void TestBackup::restoreOfForeignImageIsRefusedUnlessForced() {
+void TestBackup::restoreOfForeignImageIsRefusedUnlessAcceptedAsReplacement() {
+    // Issue 35, item 8: an image goes only to the device it was taken from
+    // (camConIdentity: EPROM date, device number, capacities, memories).
     SimBench bench;
     Result<EepromImage> image = backupDevice(*bench.client);
     QVERIFY(image.ok());
+    const DeviceIdentity device = camConIdentity(image->device);
     image.value().device.outputs = 64;
+    image.value().device.deviceNumber = 5;
     bench.commandsSent();
     RestoreOptions options;
     options.safetyBackup = false;
@@ -92,13 +96,27 @@ void TestBackup::restoreOfForeignImageIsRefusedUnlessForced() {
         restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
     QCOMPARE(refused.state, RestoredState::Unchanged);
     QCOMPARE(refused.error.kind, ErrorKind::InvalidData);
-    QVERIFY(refused.error.message.contains(QLatin1String("was not changed")));
-    QCOMPARE(bench.commandsSent(), 0);
-    options.force = true;
-    const RestoreReport forced =
+    // Both identities named, the differing values side by side.
+    QVERIFY2(refused.error.message.contains(
+                 QStringLiteral("another device answers: expected device 5, outputs 64, found "
+                                "device %1, outputs %2")
+                     .arg(device.value(QStringLiteral("device")),
+                          device.value(QStringLiteral("outputs")))),
+             qPrintable(refused.error.message));
+    QVERIFY(refused.error.message.contains(QLatin1String("Nothing was written")));
+    QVERIFY(refused.error.message.contains(QLatin1String("--replacement")));
+    QCOMPARE(bench.commandsSent(), 0);  // no command: queries only
+    // Accepted for another device than the one answering: refused too.
+    DeviceIdentity other = device;
+    other.set(QStringLiteral("ram"), QStringLiteral("1"));
+    options.replacement = ReplacementConsent::of(other);
+    QCOMPARE(restoreImage(*bench.client, *image, QStringLiteral("x.json"), options).state,
+             RestoredState::Unchanged);
+    options.replacement = ReplacementConsent::of(device);
+    const RestoreReport accepted =
         restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
-    QVERIFY2(forced.ok(), qPrintable(forced.error.message));
-    QVERIFY(!forced.identityMismatch.isEmpty());
+    QVERIFY2(accepted.ok(), qPrintable(accepted.error.message));
+    QCOMPARE(accepted.identityMismatch.size(), 2);
 }
 
 void TestBackup::failedRestoreSaysTheDeviceIsErased() {

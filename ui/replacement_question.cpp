@@ -1,0 +1,89 @@
+#include "replacement_question.h"
+
+#include "device_session.h"
+#include "report_dialog.h"
+#include "sentence.h"
+
+#include "comm/device/device_connection.h"
+
+#include <QCoreApplication>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSet>
+
+namespace cambench {
+
+namespace {
+
+QString tr(const char* text) {
+    return QCoreApplication::translate("ReplacementQuestion", text);
+}
+
+// One line per value: "serial: C3-1 (backup), C3-2 (this device)  ← differs".
+QString comparison(const DeviceIdentity& backup, const DeviceIdentity& found) {
+    QSet<QString> keys;
+    for (const QString& key : backup.values().keys()) keys.insert(key);
+    for (const QString& key : found.values().keys()) keys.insert(key);
+    QStringList sorted(keys.begin(), keys.end());
+    sorted.sort();
+    QStringList lines;
+    for (const QString& key : sorted) {
+        const QString was = backup.values().value(key, tr("not recorded"));
+        const QString now = found.values().value(key, tr("none"));
+        lines << (was == now ? tr("%1: %2 (the same)").arg(key, now)
+                             : tr("%1: backup %2, this device %3  ← differs").arg(key, was, now));
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+}  // namespace
+
+bool acceptsReplacement(QWidget* parent, const QString& title, const QString& backupName,
+                        const DeviceIdentity& backup, const DeviceIdentity& found) {
+    QMessageBox ask(
+        QMessageBox::Warning, title,
+        backup.known()
+            ? tr("The device answering is not the one %1 was taken from.").arg(backupName)
+            : tr("%1 records no identity of the device it was taken from (an older "
+                 "backup): CamBench cannot tell whether the device answering is "
+                 "that device.")
+                  .arg(backupName),
+        QMessageBox::Cancel, parent);
+    ask.setObjectName(QStringLiteral("replacementQuestion"));
+    // Both identities in full sight, not behind "Show Details".
+    ask.setInformativeText(
+        tr("%1\n\nRestore it here only if this device replaces the one the backup was taken "
+           "from (or, for an older backup, is that device). Nothing has been written yet.")
+            .arg(comparison(backup, found)));
+    QPushButton* replace =
+        ask.addButton(tr("It replaces that device: restore"), QMessageBox::DestructiveRole);
+    replace->setObjectName(QStringLiteral("acceptReplacement"));
+    ask.setDefaultButton(QMessageBox::Cancel);
+    ask.exec();
+    return ask.clickedButton() == replace;
+}
+
+void askRestoreTarget(DeviceSession* session, QObject* context, QWidget* parent,
+                      const QString& title, const QString& backupName, const DeviceIdentity& backup,
+                      std::function<void(const ReplacementConsent&)> go) {
+    session->run<comm::DeviceConnection, DeviceIdentity>(
+        context, tr("Check which device answers"),
+        [](comm::DeviceConnection& device, comm::JobContext&) { return device.readIdentity(); },
+        [parent, title, backupName, backup, go = std::move(go)](Result<DeviceIdentity> found) {
+            if (!found) {
+                ReportDialog::present(parent, QMessageBox::Warning, title,
+                                      tr("Nothing was written: which device answers could not "
+                                         "be read: %1")
+                                          .arg(asSentence(found.error().message)));
+                return;
+            }
+            if (backup.known() && backup == *found) {
+                go({});
+                return;
+            }
+            if (acceptsReplacement(parent, title, backupName, backup, *found))
+                go(ReplacementConsent::of(*found));
+        });
+}
+
+}  // namespace cambench
