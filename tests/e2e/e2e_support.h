@@ -13,7 +13,14 @@
 // (the run's output in the message when it differs).
 #define START_SIM(session, ...) \
     QVERIFY2((session).start(__VA_ARGS__), qPrintable((session).errorText()))
-#define VERIFY_EXIT(run, code) QVERIFY2((run).exitCode == (code), describe(run).constData())
+// The run is evaluated once: Qt 6.4's QVERIFY2 evaluates its message also
+// when the check holds, so a command named twice there ran twice (and a
+// restore or write in it acted twice).
+#define VERIFY_EXIT(run, code)                                                         \
+    do {                                                                               \
+        const auto& verifiedRun_ = (run);                                              \
+        QVERIFY2(verifiedRun_.exitCode == (code), describe(verifiedRun_).constData()); \
+    } while (false)
 
 namespace cambench::e2e {
 
