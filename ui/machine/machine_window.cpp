@@ -8,7 +8,6 @@
 #include "comm/device/family_registry.h"
 #include "ui/device_session.h"
 #include "ui/main_window.h"
-#include "ui/stop_shortcut.h"
 
 #include <QCloseEvent>
 #include <QCoreApplication>
@@ -85,8 +84,6 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
         if (MachineUnit* unit = m_machine->unit(item->text(Name)))
             m_stack->setCurrentWidget(unit->window());
     });
-    // The STOP key from every widget of this window: every device's STOP.
-    new StopShortcut(machine->stop(), this);
     connect(machine->stop(), &MachineStop::stopFinished, this,
             [this] { showMessage(tr("STOP: %1").arg(m_machine->stop()->lastSummary())); });
     showDevice({});

@@ -5,8 +5,11 @@
 // stops the device that moves and the status bar names it; a machine file
 // saved and opened again lists the same devices.
 #include "shell_fixture.h"
+#include "stop_reach_checks.h"
 
 #include "model/machine/machine_file.h"
+#include "ui/camcon/backup_wizard.h"
+#include "ui/camcon/compare_programs_dialog.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/family_gui.h"
@@ -79,6 +82,31 @@ std::unique_ptr<CamsAndPlc> openCamsAndPlc() {
     open->cams = open->machine->unit(QStringLiteral("cams"));
     open->plc = open->machine->unit(QStringLiteral("press-plc"));
     return open;
+}
+
+// The MC200's axis 1 jogs (confirmed on its Axes page); then its window
+// shows its Connection page (no poll: the line is quiet but for the test)
+// unless `keepPolling`, and the machine shows the CamCon's pages.
+bool jogThePlc(const CamsAndPlc& open, bool keepPolling = false) {
+    MainWindow* plc = open.plc->window();
+    open.machine->window()->showDevice(QStringLiteral("press-plc"));
+    Mc1AxesPage* axes = mc1Window(plc)->axesPage();
+    plc->showPage(axes);
+    if (!QTest::qWaitFor([axes] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs))
+        return false;
+    {
+        const auto yes = answerConfirmation(true);
+        axes->findChild<QPushButton*>(QStringLiteral("mc1JogPlus"))->click();
+    }
+    if (!QTest::qWaitFor(
+            [axes] { return axes->stateLabel()->text().contains(QLatin1String("jogging +")); },
+            kDeviceTimeoutMs))
+        return false;
+    if (keepPolling) return true;
+    plc->showSection(MainWindow::Connection);
+    open.machine->window()->showDevice(QStringLiteral("cams"));
+    return QTest::qWaitFor([axes] { return axes->pollState() == LiveDevicePage::PollState::Idle; },
+                           kDeviceTimeoutMs);
 }
 
 QTreeWidgetItem* row(const Machine& machine, const QString& name) {
@@ -198,6 +226,53 @@ private Q_SLOTS:
         QTest::keyClick(machine->window()->deviceList(), Qt::Key_Escape);
         QVERIFY(stopped.wait(kDeviceTimeoutMs));
         QCOMPARE(stopped.size(), 1);  // once, not once per device window
+    }
+
+    // Issue 35 item 4: in a machine, no device's dialog blocks another
+    // device's STOP. With the MC200 jogging, Escape in the CamCon's dialogs
+    // (its own and Qt's) and in the machine's menus and dialogs stops the
+    // MC200 - the machine's STOP, once, its telegrams and nothing else -
+    // and cancels the dialog.
+    void escapeInAnotherDevicesDialogStopsTheMachine() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MainWindow* cams = open->cams->window();
+        DeviceSession* plc = open->plc->session();
+        QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
+        QVERIFY(jogThePlc(*open));
+        const QList<QByteArray> reference = referenceStop(plc, cams->stopBar(), machine->stop());
+        QVERIFY(!reference.isEmpty());
+
+        QList<StopPlace> places;
+        places << StopPlace{
+            QStringLiteral("CamCon's Compare programs"),
+            menuEntry(cams, QStringLiteral("&Tools"), QStringLiteral("Compare &programs…")),
+            &openDialog<CompareProgramsDialog>};
+        places << StopPlace{
+            QStringLiteral("CamCon's backup wizard"),
+            menuEntry(cams, QStringLiteral("&Device"), QStringLiteral("&Backup and restore…")),
+            &openDialog<BackupWizard>};
+        places << StopPlace{
+            QStringLiteral("CamCon's Open project (file dialog)"),
+            menuEntry(cams, QStringLiteral("&File"), QStringLiteral("&Open project…"))};
+        places << StopPlace{
+            QStringLiteral("CamCon's check report"),
+            menuEntry(cams, QStringLiteral("&Help"), QStringLiteral("&Check this device…"))};
+        places << openMenu(cams, QStringLiteral("&Edit"));
+        places << openMenu(machine->window(), QStringLiteral("&Machine"));
+        places << StopPlace{QStringLiteral("machine's Add device (input dialog)"),
+                            menuEntry(machine->window(), QStringLiteral("&Machine"),
+                                      QStringLiteral("&Add device…"))};
+        for (const StopPlace& place : places) {
+            QVERIFY2(jogThePlc(*open), qPrintable(place.name));
+            escapeStopsFrom(place, plc, machine->stop(), reference);
+            if (QTest::currentTestFailed()) return;
+            QString said;
+            QVERIFY2(nothingMoves(open->plc->session()->motionStop(), &said),
+                     qPrintable(place.name + QLatin1String(": ") + said));
+        }
+        QCOMPARE(machine->units().size(), 2);  // Add device was cancelled
     }
 
     // A language switch rebuilds the machine's window and each device's;

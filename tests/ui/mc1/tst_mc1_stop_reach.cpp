@@ -1,0 +1,128 @@
+// Issue 35 item 4 on an MC200 V2 (the in-process simulator): with an axis
+// jogging, Escape inside every kind of dialog and menu - and the STOP every
+// dialog shows - stops it with exactly the STOP's telegrams and nothing
+// else, the dialog cancelled.
+#include "../shell/stop_reach_checks.h"
+
+#include "ui/mc1/mc1_axes_page.h"
+#include "ui/mc1/mc1_window.h"
+
+#include <QLabel>
+#include <QMessageBox>
+
+using namespace cambench;
+using namespace cambench::test;
+
+namespace {
+
+struct Mc1Shell {
+    std::unique_ptr<Shell> shell;
+    Mc1AxesPage* axes = nullptr;
+};
+
+Mc1Shell startMc200() {
+    Mc1Shell started;
+    started.shell = startOnSimulator(QStringLiteral("sim:variant=mc200v2"), QStringLiteral("mc1"));
+    if (!started.shell) return started;
+    started.axes = mc1Window(started.shell->window())->axesPage();
+    MotionStop* stop = started.shell->session()->motionStop();
+    if (!QTest::qWaitFor([stop] { return stop->armed(); }, kDeviceTimeoutMs)) started.shell.reset();
+    return started;
+}
+
+// Jogs axis 1 (confirmed as a person does), then shows the Connection page:
+// no page polls, the line is quiet but for what the test does.
+bool jog(const Mc1Shell& mc1) {
+    MainWindow* window = mc1.shell->window();
+    Mc1AxesPage* axes = mc1.axes;
+    window->showPage(axes);
+    if (!QTest::qWaitFor([axes] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs))
+        return false;
+    {
+        const auto yes = answerConfirmation(true);
+        axes->findChild<QPushButton*>(QStringLiteral("mc1JogPlus"))->click();
+    }
+    if (!QTest::qWaitFor(
+            [axes] { return axes->stateLabel()->text().contains(QLatin1String("jogging +")); },
+            kDeviceTimeoutMs))
+        return false;
+    window->showSection(MainWindow::Connection);
+    return QTest::qWaitFor([axes] { return axes->pollState() == LiveDevicePage::PollState::Idle; },
+                           kDeviceTimeoutMs);
+}
+
+}  // namespace
+
+class TestMc1StopReach : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() {
+        useTestSettings();
+        qRegisterMetaType<comm::MotionStopReport>();
+    }
+
+    void escapeInEveryDialogAndMenuStopsTheJog() {
+        const Mc1Shell mc1 = startMc200();
+        QVERIFY(mc1.shell);
+        MainWindow* window = mc1.shell->window();
+        DeviceSession* session = mc1.shell->session();
+        MotionStop* stop = session->motionStop();
+        // A platform's file dialog would never pass Escape on.
+        QVERIFY(QCoreApplication::testAttribute(Qt::AA_DontUseNativeDialogs));
+
+        QVERIFY(jog(mc1));
+        const QList<QByteArray> reference = referenceStop(session, window->stopBar(), stop);
+        QVERIFY(!reference.isEmpty());
+        QString said;
+        QVERIFY2(nothingMoves(stop, &said), qPrintable(said));
+
+        QList<StopPlace> places = shellStopPlaces(window);
+        // A move's confirmation: cancelled, the jog − is not sent.
+        Mc1AxesPage* axes = mc1.axes;
+        places << StopPlace{QStringLiteral("move confirmation"),
+                            [axes] { axes->command(comm::Mc1AxisCommand::JogMinus); }};
+        for (const StopPlace& place : places) {
+            QVERIFY2(jog(mc1), qPrintable(place.name));
+            escapeStopsFrom(place, session, stop, reference);
+            if (QTest::currentTestFailed()) return;
+            QVERIFY2(nothingMoves(stop, &said),
+                     qPrintable(place.name + QLatin1String(": ") + said));
+        }
+    }
+
+    // The STOP a dialog shows works while the dialog stays open (a modal
+    // dialog blocks the window's STOP bar).
+    void theStopInADialogStopsAndLeavesItOpen() {
+        const Mc1Shell mc1 = startMc200();
+        QVERIFY(mc1.shell);
+        DeviceSession* session = mc1.shell->session();
+        MotionStop* stop = session->motionStop();
+        QVERIFY(jog(mc1));
+        QSignalSpy reports(stop, &StopControl::stopFinished);
+        bool openAfter = false;
+        QString why;
+        NextDialog<QMessageBox> inside([&](QMessageBox* box) {
+            DialogStop* row = DialogStop::of(box);
+            if (!row) {
+                why = QStringLiteral("no STOP in the confirmation");
+                box->reject();
+                return;
+            }
+            row->button()->click();
+            (void)QTest::qWaitFor([&] { return reports.size() == 1; }, kDeviceTimeoutMs);
+            openAfter = box->isVisible();
+            why = row->reportText();
+            box->reject();
+        });
+        mc1.axes->command(comm::Mc1AxisCommand::JogMinus);
+        QCOMPARE(inside.answered(), 1);
+        QCOMPARE(reports.size(), 1);
+        QVERIFY(openAfter);
+        QVERIFY2(why.contains(QLatin1String("STOP acknowledged")), qPrintable(why));
+        QString said;
+        QVERIFY2(nothingMoves(stop, &said), qPrintable(said));
+    }
+};
+
+QTEST_MAIN(TestMc1StopReach)
+#include "tst_mc1_stop_reach.moc"
