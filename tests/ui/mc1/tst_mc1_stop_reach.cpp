@@ -1,7 +1,8 @@
-// Issue 35 item 4 on an MC200 V2 (the in-process simulator): with an axis
-// jogging, Escape inside every kind of dialog and menu - and the STOP every
-// dialog shows - stops it with exactly the STOP's telegrams and nothing
-// else, the dialog cancelled.
+// Issue 35 items 4 and 10 on an MC200 V2 (the in-process simulator): with
+// an axis jogging, Escape inside every kind of dialog and menu - and the
+// STOP every dialog shows - stops it with exactly the STOP's telegrams and
+// nothing else, the dialog cancelled; a STOP's report moves no button of
+// the Axes page.
 #include "../shell/stop_reach_checks.h"
 
 #include "ui/mc1/mc1_axes_page.h"
@@ -9,6 +10,7 @@
 
 #include <QLabel>
 #include <QMessageBox>
+#include <QSpinBox>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -49,6 +51,16 @@ bool jog(const Mc1Shell& mc1) {
     window->showSection(MainWindow::Connection);
     return QTest::qWaitFor([axes] { return axes->pollState() == LiveDevicePage::PollState::Idle; },
                            kDeviceTimeoutMs);
+}
+
+// Where each widget a person clicks on the page sits in the window.
+QList<QRect> clickablePlaces(QWidget* page, QWidget* window) {
+    QList<QRect> places;
+    for (QWidget* widget : page->findChildren<QWidget*>()) {
+        if (!qobject_cast<QPushButton*>(widget) && !qobject_cast<QSpinBox*>(widget)) continue;
+        places << QRect(widget->mapTo(window, QPoint(0, 0)), widget->size());
+    }
+    return places;
 }
 
 }  // namespace
@@ -121,6 +133,30 @@ private Q_SLOTS:
         QVERIFY2(why.contains(QLatin1String("STOP acknowledged")), qPrintable(why));
         QString said;
         QVERIFY2(nothingMoves(stop, &said), qPrintable(said));
+    }
+
+    // Item 10: the STOP's report (a line per axis) moves nothing a person
+    // clicks on the page; the bar keeps its height.
+    void aStopReportMovesNoButton() {
+        const Mc1Shell mc1 = startMc200();
+        QVERIFY(mc1.shell);
+        MainWindow* window = mc1.shell->window();
+        MotionStop* stop = mc1.shell->session()->motionStop();
+        window->showPage(mc1.axes);
+        QVERIFY(QTest::qWaitFor([&] { return mc1.axes->freshness()->isLive(); }, kDeviceTimeoutMs));
+        QTest::qWait(50);  // laid out
+        const QList<QRect> before = clickablePlaces(mc1.axes, window);
+        const int barHeight = window->stopBar()->height();
+        QVERIFY(!before.isEmpty());
+        QSignalSpy reports(stop, &StopControl::stopFinished);
+        window->stopBar()->button()->click();
+        QVERIFY(reports.wait(kDeviceTimeoutMs));
+        QVERIFY(QTest::qWaitFor([&] { return mc1.axes->freshness()->isLive(); }, kDeviceTimeoutMs));
+        QTest::qWait(50);
+        const QString report = window->stopBar()->reportText();
+        QVERIFY2(report.count(QLatin1Char('\n')) >= 2, qPrintable(report));  // several lines
+        QCOMPARE(window->stopBar()->height(), barHeight);
+        QCOMPARE(clickablePlaces(mc1.axes, window), before);
     }
 };
 

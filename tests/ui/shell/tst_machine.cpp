@@ -27,6 +27,7 @@
 
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
 #include <QStatusBar>
 #include <QTextDocument>
 #include <QTreeWidget>
@@ -273,6 +274,56 @@ private Q_SLOTS:
                      qPrintable(place.name + QLatin1String(": ") + said));
         }
         QCOMPARE(machine->units().size(), 2);  // Add device was cancelled
+    }
+
+    // Item 10: the list shows the device that moves as moving (its own
+    // live status), then what the STOP did; the window stays on the screen.
+    void theListShowsTheDeviceThatMoves() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
+        QTreeWidgetItem* plcRow = row(*machine, QStringLiteral("press-plc"));
+        QCOMPARE(plcRow->text(MachineWindow::State), QStringLiteral("connected"));
+        QVERIFY(jogThePlc(*open, true));
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         return plcRow->text(MachineWindow::State)
+                             .startsWith(QLatin1String("connected, moving (axis 1 is jogging +"));
+                     },
+                     kDeviceTimeoutMs),
+                 qPrintable(plcRow->text(MachineWindow::State)));
+        QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Moving);
+        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+                 QStringLiteral("connected"));
+
+        // Another page shown: the status is no longer read, only "may move".
+        open->plc->window()->showSection(MainWindow::Connection);
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         return plcRow->text(MachineWindow::State)
+                             .startsWith(QLatin1String("connected, may move"));
+                     },
+                     kDeviceTimeoutMs),
+                 qPrintable(plcRow->text(MachineWindow::State)));
+        QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Connected);
+
+        QSignalSpy stopped(machine->stop(), &StopControl::stopFinished);
+        machine->window()->showDevice(QStringLiteral("cams"));
+        open->cams->window()->stopBar()->button()->click();
+        QVERIFY(stopped.wait(kDeviceTimeoutMs));
+        QVERIFY2(plcRow->text(MachineWindow::State)
+                     .startsWith(QLatin1String("connected, STOP acknowledged at")),
+                 qPrintable(plcRow->text(MachineWindow::State)));
+        // The report (a line per axis) does not make the window grow.
+        QTest::qWait(50);
+        const QRect screen = machine->window()->screen()->availableGeometry();
+        QVERIFY2(
+            machine->window()->height() <= screen.height(),
+            qPrintable(
+                QStringLiteral("%1 > %2").arg(machine->window()->height()).arg(screen.height())));
+        QCOMPARE(open->cams->window()->stopBar()->height(),
+                 open->cams->window()->stopBar()->minimumHeight());
     }
 
     // A language switch rebuilds the machine's window and each device's;
