@@ -56,10 +56,7 @@ bool jog(const Compax3Shell& c3) {
     }
     if (!QTest::qWaitFor([motion] { return says(motion, "Moving"); }, kDeviceTimeoutMs))
         return false;
-    window->showSection(MainWindow::Connection);
-    return QTest::qWaitFor(
-        [motion] { return motion->pollState() == LiveDevicePage::PollState::Idle; },
-        kDeviceTimeoutMs);
+    return leaveForQuietPage(window, motion);
 }
 
 }  // namespace
@@ -75,28 +72,12 @@ private Q_SLOTS:
     void escapeInEveryDialogAndMenuStopsTheJog() {
         const Compax3Shell c3 = startDrive(QStringLiteral("sim"), QStringLiteral("compax3"));
         QVERIFY(c3.shell);
-        MainWindow* window = c3.shell->window();
-        DeviceSession* session = c3.shell->session();
-        MotionStop* stop = session->motionStop();
-
-        QVERIFY(jog(c3));
-        const QList<QByteArray> reference = referenceStop(session, window->stopBar(), stop);
-        QVERIFY(!reference.isEmpty());
-        QString said;
-        QVERIFY2(nothingMoves(stop, &said), qPrintable(said));
-
-        QList<StopPlace> places = shellStopPlaces(window);
         // A jog's confirmation: cancelled, the jog − is not sent.
         Compax3MotionPage* motion = c3.motion;
-        places << StopPlace{QStringLiteral("jog confirmation"),
-                            [motion] { motion->runMotion(comm::Compax3Motion::JogMinus); }};
-        for (const StopPlace& place : places) {
-            QVERIFY2(jog(c3), qPrintable(place.name));
-            escapeStopsFrom(place, session, stop, reference);
-            if (QTest::currentTestFailed()) return;
-            QVERIFY2(nothingMoves(stop, &said),
-                     qPrintable(place.name + QLatin1String(": ") + said));
-        }
+        escapeStopsEverywhereIn(c3.shell->window(),
+                                {QStringLiteral("jog confirmation"),
+                                 [motion] { motion->runMotion(comm::Compax3Motion::JogMinus); }},
+                                [&c3] { return jog(c3); });
     }
 
     // Item 5: a double click on another address while the drive jogs asks

@@ -4,6 +4,7 @@
 // nothing else, the dialog cancelled; a STOP's report moves no button of
 // the Axes page.
 #include "../shell/stop_reach_checks.h"
+#include "mc1_jog.h"
 
 #include "ui/mc1/mc1_axes_page.h"
 #include "ui/mc1/mc1_window.h"
@@ -32,25 +33,11 @@ Mc1Shell startMc200() {
     return started;
 }
 
-// Jogs axis 1 (confirmed as a person does), then shows the Connection page:
-// no page polls, the line is quiet but for what the test does.
+// Jogs axis 1, then shows the Connection page: the line is quiet but for
+// what the test does.
 bool jog(const Mc1Shell& mc1) {
-    MainWindow* window = mc1.shell->window();
-    Mc1AxesPage* axes = mc1.axes;
-    window->showPage(axes);
-    if (!QTest::qWaitFor([axes] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs))
-        return false;
-    {
-        const auto yes = answerConfirmation(true);
-        axes->findChild<QPushButton*>(QStringLiteral("mc1JogPlus"))->click();
-    }
-    if (!QTest::qWaitFor(
-            [axes] { return axes->stateLabel()->text().contains(QLatin1String("jogging +")); },
-            kDeviceTimeoutMs))
-        return false;
-    window->showSection(MainWindow::Connection);
-    return QTest::qWaitFor([axes] { return axes->pollState() == LiveDevicePage::PollState::Idle; },
-                           kDeviceTimeoutMs);
+    return jogPlus(mc1.shell->window(), mc1.axes) &&
+           leaveForQuietPage(mc1.shell->window(), mc1.axes);
 }
 
 // Where each widget a person clicks on the page sits in the window.
@@ -76,30 +63,12 @@ private Q_SLOTS:
     void escapeInEveryDialogAndMenuStopsTheJog() {
         const Mc1Shell mc1 = startMc200();
         QVERIFY(mc1.shell);
-        MainWindow* window = mc1.shell->window();
-        DeviceSession* session = mc1.shell->session();
-        MotionStop* stop = session->motionStop();
-        // A platform's file dialog would never pass Escape on.
-        QVERIFY(QCoreApplication::testAttribute(Qt::AA_DontUseNativeDialogs));
-
-        QVERIFY(jog(mc1));
-        const QList<QByteArray> reference = referenceStop(session, window->stopBar(), stop);
-        QVERIFY(!reference.isEmpty());
-        QString said;
-        QVERIFY2(nothingMoves(stop, &said), qPrintable(said));
-
-        QList<StopPlace> places = shellStopPlaces(window);
         // A move's confirmation: cancelled, the jog − is not sent.
         Mc1AxesPage* axes = mc1.axes;
-        places << StopPlace{QStringLiteral("move confirmation"),
-                            [axes] { axes->command(comm::Mc1AxisCommand::JogMinus); }};
-        for (const StopPlace& place : places) {
-            QVERIFY2(jog(mc1), qPrintable(place.name));
-            escapeStopsFrom(place, session, stop, reference);
-            if (QTest::currentTestFailed()) return;
-            QVERIFY2(nothingMoves(stop, &said),
-                     qPrintable(place.name + QLatin1String(": ") + said));
-        }
+        escapeStopsEverywhereIn(mc1.shell->window(),
+                                {QStringLiteral("move confirmation"),
+                                 [axes] { axes->command(comm::Mc1AxisCommand::JogMinus); }},
+                                [&mc1] { return jog(mc1); });
     }
 
     // The STOP a dialog shows works while the dialog stays open (a modal

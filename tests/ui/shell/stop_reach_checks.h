@@ -10,6 +10,7 @@
 #include "ui/connection_page.h"
 #include "ui/device_session.h"
 #include "ui/dialog_stop.h"
+#include "ui/live_device_page.h"
 #include "ui/main_window.h"
 #include "ui/motion_stop.h"
 #include "ui/program_stop.h"
@@ -61,6 +62,14 @@ inline bool waitQuiet(DeviceSession* session) {
     QObject::connect(&session->worker(), &comm::JobRunner::traffic, &context,
                      [&quiet] { quiet.restart(); });
     return QTest::qWaitFor([&quiet] { return quiet.elapsed() >= kQuietMs; }, kDeviceTimeoutMs);
+}
+
+// `window` shows its Connection page instead of `page`: no page polls, and
+// once `page`'s last poll has come back the line is the test's.
+inline bool leaveForQuietPage(MainWindow* window, LiveDevicePage* page) {
+    window->showSection(MainWindow::Connection);
+    return QTest::qWaitFor([page] { return page->pollState() == LiveDevicePage::PollState::Idle; },
+                           kDeviceTimeoutMs);
 }
 
 // A place Escape is pressed in: how a person opens it, and what shows that
@@ -220,6 +229,38 @@ inline bool nothingMoves(MotionStop* stop, QString* said = nullptr) {
     for (const QString& line : *moving)
         if (line.contains(QLatin1String("moves"))) return false;
     return true;
+}
+
+// For each place: the device set moving by `startMotion`, Escape inside
+// the place (escapeStopsFrom), and then nothing of `device` moves.
+inline void escapeStopsFromEach(const QList<StopPlace>& places, DeviceSession* session,
+                                StopControl* stop, MotionStop* device,
+                                const QList<QByteArray>& reference,
+                                const std::function<bool()>& startMotion) {
+    for (const StopPlace& place : places) {
+        QVERIFY2(startMotion(), qPrintable(place.name));
+        escapeStopsFrom(place, session, stop, reference);
+        if (QTest::currentTestFailed()) return;
+        QString said;
+        QVERIFY2(nothingMoves(device, &said), qPrintable(place.name + QLatin1String(": ") + said));
+    }
+}
+
+// One device's window: Escape in each of the shell's places and in the
+// family's `ownPlace`, each while `startMotion` has the device moving.
+inline void escapeStopsEverywhereIn(MainWindow* window, const StopPlace& ownPlace,
+                                    const std::function<bool()>& startMotion) {
+    DeviceSession* session = window->session();
+    MotionStop* stop = session->motionStop();
+    // A platform's file dialog would never pass Escape on.
+    QVERIFY(QCoreApplication::testAttribute(Qt::AA_DontUseNativeDialogs));
+    QVERIFY(startMotion());
+    const QList<QByteArray> reference = referenceStop(session, window->stopBar(), stop);
+    QVERIFY(!reference.isEmpty());
+    QString said;
+    QVERIFY2(nothingMoves(stop, &said), qPrintable(said));
+    escapeStopsFromEach(shellStopPlaces(window) << ownPlace, session, stop, stop, reference,
+                        startMotion);
 }
 
 }  // namespace cambench::test

@@ -7,6 +7,8 @@
 #include "shell_fixture.h"
 #include "stop_reach_checks.h"
 
+#include "../mc1/mc1_jog.h"
+
 #include "model/machine/machine_file.h"
 #include "ui/camcon/backup_wizard.h"
 #include "ui/camcon/compare_programs_dialog.h"
@@ -92,22 +94,10 @@ bool jogThePlc(const CamsAndPlc& open, bool keepPolling = false) {
     MainWindow* plc = open.plc->window();
     open.machine->window()->showDevice(QStringLiteral("press-plc"));
     Mc1AxesPage* axes = mc1Window(plc)->axesPage();
-    plc->showPage(axes);
-    if (!QTest::qWaitFor([axes] { return axes->freshness()->isLive(); }, kDeviceTimeoutMs))
-        return false;
-    {
-        const auto yes = answerConfirmation(true);
-        axes->findChild<QPushButton*>(QStringLiteral("mc1JogPlus"))->click();
-    }
-    if (!QTest::qWaitFor(
-            [axes] { return axes->stateLabel()->text().contains(QLatin1String("jogging +")); },
-            kDeviceTimeoutMs))
-        return false;
+    if (!jogPlus(plc, axes)) return false;
     if (keepPolling) return true;
-    plc->showSection(MainWindow::Connection);
     open.machine->window()->showDevice(QStringLiteral("cams"));
-    return QTest::qWaitFor([axes] { return axes->pollState() == LiveDevicePage::PollState::Idle; },
-                           kDeviceTimeoutMs);
+    return leaveForQuietPage(plc, axes);
 }
 
 QTreeWidgetItem* row(const Machine& machine, const QString& name) {
@@ -265,14 +255,8 @@ private Q_SLOTS:
         places << StopPlace{QStringLiteral("machine's Add device (input dialog)"),
                             menuEntry(machine->window(), QStringLiteral("&Machine"),
                                       QStringLiteral("&Add device…"))};
-        for (const StopPlace& place : places) {
-            QVERIFY2(jogThePlc(*open), qPrintable(place.name));
-            escapeStopsFrom(place, plc, machine->stop(), reference);
-            if (QTest::currentTestFailed()) return;
-            QString said;
-            QVERIFY2(nothingMoves(open->plc->session()->motionStop(), &said),
-                     qPrintable(place.name + QLatin1String(": ") + said));
-        }
+        escapeStopsFromEach(places, plc, machine->stop(), plc->motionStop(), reference,
+                            [&open] { return jogThePlc(*open); });
         QCOMPARE(machine->units().size(), 2);  // Add device was cancelled
     }
 
@@ -286,12 +270,12 @@ private Q_SLOTS:
         QTreeWidgetItem* plcRow = row(*machine, QStringLiteral("press-plc"));
         QCOMPARE(plcRow->text(MachineWindow::State), QStringLiteral("connected"));
         QVERIFY(jogThePlc(*open, true));
-        QVERIFY2(QTest::qWaitFor(
-                     [&] {
-                         return plcRow->text(MachineWindow::State)
-                             .startsWith(QLatin1String("connected, moving (axis 1 is jogging +"));
-                     },
-                     kDeviceTimeoutMs),
+        const auto rowSays = [plcRow](const char* start) {
+            return QTest::qWaitFor(
+                [&] { return plcRow->text(MachineWindow::State).startsWith(QLatin1String(start)); },
+                kDeviceTimeoutMs);
+        };
+        QVERIFY2(rowSays("connected, moving (axis 1 is jogging +"),
                  qPrintable(plcRow->text(MachineWindow::State)));
         QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Moving);
         QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
@@ -299,13 +283,7 @@ private Q_SLOTS:
 
         // Another page shown: the status is no longer read, only "may move".
         open->plc->window()->showSection(MainWindow::Connection);
-        QVERIFY2(QTest::qWaitFor(
-                     [&] {
-                         return plcRow->text(MachineWindow::State)
-                             .startsWith(QLatin1String("connected, may move"));
-                     },
-                     kDeviceTimeoutMs),
-                 qPrintable(plcRow->text(MachineWindow::State)));
+        QVERIFY2(rowSays("connected, may move"), qPrintable(plcRow->text(MachineWindow::State)));
         QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Connected);
 
         QSignalSpy stopped(machine->stop(), &StopControl::stopFinished);
