@@ -4,6 +4,7 @@
 #include "shell_log.h"
 
 #include <QEventLoop>
+#include <QLocale>
 #include <QTimer>
 
 #include <memory>
@@ -32,6 +33,8 @@ QStringList MotionStop::jobTitles() {
 
 MotionStop::MotionStop(DeviceSession* session) : StopControl(session), m_session(session) {
     connect(session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
+        // What was known of the motion was the device's on the line before.
+        if (state != comm::ConnectionState::Connected) setMotion(Motion::Unknown, {});
         switch (state) {
             case comm::ConnectionState::Connected:
                 askAvailability();
@@ -55,7 +58,62 @@ MotionStop::MotionStop(DeviceSession* session) : StopControl(session), m_session
     connect(session, &DeviceSession::deviceCheckedChanged, this, [this](bool checked) {
         if (checked) askAvailability();
     });
-    connect(session, &DeviceSession::targetChanged, this, &MotionStop::askAvailability);
+    connect(session, &DeviceSession::targetChanged, this, [this] {
+        setMotion(Motion::Unknown, {});
+        askAvailability();
+    });
+    connect(this, &StopControl::stopFinished, this, [this](const MotionStopReport& report) {
+        const QString at = QLocale().toString(lastStopTime().time(), QLocale::LongFormat);
+        if (report.allAcknowledged())
+            setMotion(Motion::Unknown, tr("STOP acknowledged at %1").arg(at));
+        else
+            setMotion(Motion::MayMove, tr("may move: STOP NOT acknowledged at %1").arg(at));
+    });
+}
+
+void MotionStop::setMotion(Motion motion, const QString& text) {
+    if (m_motion == motion && m_motionText == text) return;
+    m_motion = motion;
+    m_motionText = text;
+    Q_EMIT motionChanged();
+}
+
+void MotionStop::noteLiveStatus(const QObject* page, Motion motion, const QString& what) {
+    m_liveFrom = page;
+    m_liveAt = QTime::currentTime();
+    switch (motion) {
+        case Motion::Moving:
+            setMotion(motion, tr("moving (%1)").arg(what));
+            break;
+        case Motion::Standing:
+            setMotion(motion, tr("standing (%1)").arg(what));
+            break;
+        case Motion::Unknown:
+            // A "moving" read before is no longer known; a STOP's or a
+            // move's note stays until a status says more.
+            if (m_motion == Motion::Moving || m_motion == Motion::Standing)
+                setMotion(Motion::Unknown, {});
+            break;
+        case Motion::MayMove:
+            setMotion(motion, tr("may move (%1)").arg(what));
+            break;
+    }
+}
+
+void MotionStop::noteLiveStatusOld(const QObject* page) {
+    if (page != m_liveFrom) return;
+    const QString at = QLocale().toString(m_liveAt, QLocale::LongFormat);
+    if (m_motion == Motion::Moving)
+        setMotion(Motion::MayMove, tr("may move: moving when last read at %1").arg(at));
+    else if (m_motion == Motion::Standing)
+        setMotion(Motion::Unknown, {});
+}
+
+void MotionStop::noteMotionSent(const QString& what) {
+    if (m_motion == Motion::Moving) return;  // the live status says more
+    setMotion(Motion::MayMove,
+              tr("may move: %1 sent at %2")
+                  .arg(what, QLocale().toString(QTime::currentTime(), QLocale::LongFormat)));
 }
 
 bool MotionStop::armed() const {

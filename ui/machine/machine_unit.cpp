@@ -6,6 +6,7 @@
 #include "ui/device_session.h"
 #include "ui/family_gui.h"
 #include "ui/main_window.h"
+#include "ui/motion_stop.h"
 
 namespace cambench {
 
@@ -24,6 +25,7 @@ MachineUnit::MachineUnit(MachineDevice device, StopControl* machineStop, QObject
         Q_EMIT changed();
     });
     connect(m_session, &DeviceSession::deviceCheckedChanged, this, &MachineUnit::changed);
+    connect(m_session->motionStop(), &MotionStop::motionChanged, this, &MachineUnit::changed);
     for (FamilyGui* family : m_families) {
         connect(family, &FamilyGui::titleChanged, this, &MachineUnit::changed);
         connect(family, &FamilyGui::identityChanged, this, &MachineUnit::changed);
@@ -68,7 +70,9 @@ MachineUnit::Lamp MachineUnit::lamp() const {
     if (!m_problem.isEmpty()) return Lamp::Gone;
     switch (m_session->state()) {
         case comm::ConnectionState::Connected:
-            return Lamp::Connected;
+            return m_session->motionStop()->motion() == MotionStop::Motion::Moving
+                       ? Lamp::Moving
+                       : Lamp::Connected;
         case comm::ConnectionState::Connecting:
             return m_session->isRetrying() ? Lamp::Gone : Lamp::Connecting;
         case comm::ConnectionState::Lost:
@@ -84,7 +88,11 @@ QString MachineUnit::stateText() const {
     if (!m_problem.isEmpty()) return tr("not opened: %1").arg(m_problem);
     switch (lamp()) {
         case Lamp::Connected:
-            return m_session->deviceChecked() ? tr("connected") : tr("connected, identifying…");
+        case Lamp::Moving: {
+            if (!m_session->deviceChecked()) return tr("connected, identifying…");
+            const QString motion = m_session->motionStop()->motionText();
+            return motion.isEmpty() ? tr("connected") : tr("connected, %1").arg(motion);
+        }
         case Lamp::Connecting:
             return tr("connecting…");
         case Lamp::Gone:

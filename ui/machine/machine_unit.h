@@ -39,9 +39,11 @@ public:
     // (problem() says why).
     void connectDevice();
 
-    enum class Lamp { Connected, Connecting, Gone, Offline };
+    // Moving: connected, and its own live status says that it moves.
+    enum class Lamp { Connected, Connecting, Gone, Offline, Moving };
     Lamp lamp() const;
-    // The lamp in words: "connected", "connection lost: ...", ...
+    // The lamp in words: "connected", "connected, moving (...)",
+    // "connected, may move: jog + sent at ...", "connection lost: ...", ...
     QString stateText() const;
     QString problem() const { return m_problem; }
     int unwrittenCount() const;

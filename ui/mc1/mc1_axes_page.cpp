@@ -57,6 +57,11 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     big.setBold(true);
     m_state->setFont(big);
     m_availability->setWordWrap(true);
+    // Said while the moves are off; its place stays when they come on again,
+    // so that they do not jump up under the pointer.
+    QSizePolicy keepPlace = m_availability->sizePolicy();
+    keepPlace.setRetainSizeWhenHidden(true);
+    m_availability->setSizePolicy(keepPlace);
     m_details->setWordWrap(true);
     m_details->setObjectName(QStringLiteral("axisDetails"));
 
@@ -187,6 +192,8 @@ void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
     if (!state.moving) m_jogging.remove(state.axis);
     const int jog = m_jogging.value(state.axis);
     m_state->setText(headline(state));
+    // One axis standing says nothing of the others.
+    reportMotion(state.moving, false, headline(state));
     m_details->setText(
         tr("Position %1 · %2 · %3 · %4")
             .arg(state.position)
@@ -234,6 +241,7 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
         [this, what, shown, command](Result<comm::Mc1AxisDone> done) {
             // Acknowledged: the jog runs whether or not its read-back came.
             if (done) {
+                if (comm::mc1AxisCommandMoves(command)) reportMotionSent(what);
                 if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
                     m_jogging.insert(shown, command == Mc1AxisCommand::JogPlus ? 1 : -1);
                 else if (command != Mc1AxisCommand::SetSpeed)
