@@ -217,15 +217,30 @@ MotionStopReport Compax3Drive::stopAllMotion() {
 }
 
 Result<QStringList> Compax3Drive::activeMotion() {
+    // The status word's number and bits are a public client's, not Parker's
+    // manual's (reading C2): what they say is shown as read that way, and
+    // "nothing moves" read through them is no fact to leave a drive on.
     const Result<Compax3DriveStatus> now = status();
     if (!now) return now.error();
     if (now->moving())
-        return QStringList{QCoreApplication::translate("cambench::comm", "%1: the axis moves (%2)")
-                               .arg(driveName(), now->summary())};
+        return QStringList{
+            QCoreApplication::translate(
+                "cambench::comm",
+                "%1: the axis moves (%2, as read through provisional object numbers)")
+                .arg(driveName(), now->summary())};
     if (!now->status.powerless())
-        return QStringList{QCoreApplication::translate("cambench::comm", "%1: the axis is powered")
-                               .arg(driveName())};
-    return QStringList();
+        return QStringList{
+            QCoreApplication::translate(
+                "cambench::comm",
+                "%1: the axis is powered (as read through provisional object numbers)")
+                .arg(driveName())};
+    return Error::communication(
+        QCoreApplication::translate(
+            "cambench::comm",
+            "%1 reads as %2, but through the status word 1000.3, whose number and bits are "
+            "provisional (a public client's, not Parker's manual's): whether the axis stands "
+            "cannot be told from it")
+            .arg(driveName(), now->summary()));
 }
 
 }  // namespace cambench::comm
