@@ -7,6 +7,7 @@
 #include <QLocale>
 #include <QTimer>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -240,6 +241,11 @@ Result<MotionStopReport> MotionStop::stopAndWait(int timeoutMs) {
 }
 
 QString MotionStop::reportSummary(const MotionStopReport& report) {
+    const bool noneSent =
+        std::all_of(report.lines.cbegin(), report.lines.cend(),
+                    [](const MotionStopLine& line) { return line.nothingToStop; });
+    if (report.allAcknowledged() && noneSent)
+        return tr("Nothing to stop: nothing was powered, and nothing was sent.");
     if (report.allAcknowledged()) return tr("STOP acknowledged by every axis and drive.");
     return tr("STOP NOT acknowledged everywhere – use the machine's emergency stop.");
 }
@@ -251,6 +257,7 @@ QString MotionStop::reportText(const MotionStopReport& report) {
             line.acknowledged
                 ? tr("%1: acknowledged").arg(line.what)
                 : tr("%1: NOT acknowledged – use the machine's emergency stop").arg(line.what);
+        if (line.nothingToStop) text = tr("%1: not powered, nothing to stop").arg(line.what);
         if (!line.detail.isEmpty()) text += QStringLiteral(" – ") + line.detail;
         lines << text;
     }

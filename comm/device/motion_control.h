@@ -13,6 +13,9 @@ struct MotionStopLine {
     QString what;               // "Axis 2", "Drive at address 3"
     bool acknowledged = false;  // the device acknowledged the stop command
     QString detail;             // what the read-back found, or why it failed
+    // Nothing was sent, because nothing there can move (a powerless drive):
+    // stopped, without a command.
+    bool nothingToStop = false;
 };
 
 // What a STOP of everything did.
@@ -20,7 +23,7 @@ struct MotionStopReport {
     QList<MotionStopLine> lines;
     bool allAcknowledged() const {
         for (const MotionStopLine& line : lines)
-            if (!line.acknowledged) return false;
+            if (!line.acknowledged && !line.nothingToStop) return false;
         return !lines.isEmpty();
     }
 };

@@ -93,7 +93,11 @@ public:
         int probes = 0;
         int silentAttempts = 0;  // attempts that heard nothing at all
         int lateReplies = 0;     // answers to an earlier attempt, dropped after a retry
-        int refusedByGate = 0;   // requests the request gate kept off the line
+        // A protocol with a late-answer window (FramingBackend::lateAnswerWindowMs):
+        int lateAnswerWaits = 0;   // silent attempts followed by a wait for their answer
+        int lateAnswersTaken = 0;  // answers that came in such a wait
+        int settles = 0;           // waits for a quiet line before a request
+        int refusedByGate = 0;     // requests the request gate kept off the line
     };
     const Stats& stats() const { return m_stats; }
     void resetStats() { m_stats = {}; }
@@ -126,8 +130,14 @@ private:
     // have been an answer (Message, Damaged).
     Result<int> consume(BackendStep&& step);
     // Reads until `untilMs`, or until `enough` answers (Message, Damaged)
-    // went by when `enough` > 0; nothing is judged.
-    Status drain(qint64 untilMs, int enough);
+    // went by when `enough` > 0; nothing is judged. `quietMs` > 0: also
+    // until the line has been quiet that long (what arrives moves the end).
+    Status drain(qint64 untilMs, int enough, int quietMs = 0);
+    // The late-answer window that applies to `request` (0: none).
+    int lateAnswerWindowMs(const Request& request) const;
+    // Before anything is sent while an answer to an earlier request may
+    // still come: reads until the line has been quiet for the window.
+    Status settleLine();
     // What asking a silent device with the request's probe showed.
     struct Probe {
         enum Kind { StillBusy, AnswerLost, LateAnswer } kind = StillBusy;
@@ -153,6 +163,8 @@ private:
     int m_lastAttempts = 0;
     bool m_lastHeardDevice = false;
     bool m_sent = false;
+    // An answer to an earlier request may still come (late-answer window).
+    bool m_unsettled = false;
 };
 
 }  // namespace cambench::comm
