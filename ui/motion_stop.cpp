@@ -96,7 +96,14 @@ void MotionStop::stopAll() {
     stopThisDevice();
 }
 
+void MotionStop::raiseStopGeneration() {
+    m_session->worker().raiseStopGeneration();
+}
+
 void MotionStop::stopThisDevice() {
+    // At once, before anything else: no motion of a job asked before now
+    // leaves, also while the STOP's own job waits for the line.
+    raiseStopGeneration();
     if (!m_available) return;
     qCInfo(shellLog) << "STOP pressed";
     // A move that waits for the line must not run after the STOP; the

@@ -8,6 +8,7 @@
 #include "model/compax3/compax3_dictionary.h"
 
 #include <QCoreApplication>
+#include <QScopedValueRollback>
 
 namespace cambench::comm {
 
@@ -87,6 +88,8 @@ Result<Compax3CommandResult> Compax3Drive::enable(const QString& what) {
 }
 
 Result<Compax3CommandResult> Compax3Drive::motion(Compax3Motion motion) {
+    const QScopedValueRollback<bool> stopping(m_stopping,
+                                              m_stopping || motion == Compax3Motion::Stop);
     const QString what = compax3MotionText(motion);
     switch (motion) {
         case Compax3Motion::Enable:
@@ -180,6 +183,7 @@ QString Compax3Drive::driveName() const {
 }
 
 MotionStopReport Compax3Drive::stopAllMotion() {
+    const QScopedValueRollback<bool> stopping(m_stopping, true);
     // One drive, one axis: the Motion page's STOP (1100.3 = 1), repeated by
     // the engine when its answer is lost.
     MotionStopLine line;

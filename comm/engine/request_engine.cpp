@@ -89,6 +89,11 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         BetweenRequests::run();
         m_gate = std::move(held);
     }
+    // After a STOP nothing of a job asked before it moves.
+    if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+        ++m_stats.refusedByStop;
+        return *std::move(stopped);
+    }
     if (m_gate) {
         if (const QString refused = m_gate(request); !refused.isEmpty()) {
             ++m_stats.refusedByGate;
@@ -111,6 +116,11 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         if (cancelled()) return Error::cancelled();
         m_lastAttempts = attempt;
         if (attempt > 1) {
+            // A STOP while the first attempt waited: no motion goes out again.
+            if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+                ++m_stats.refusedByStop;
+                return *std::move(stopped);
+            }
             ++m_stats.retries;
             qCDebug(commLinkLog) << "retrying" << request.label << "attempt" << attempt << "after"
                                  << problem;
