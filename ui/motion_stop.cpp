@@ -196,6 +196,10 @@ QString MotionStop::reportSummary(const MotionStopReport& report) {
 QString MotionStop::reportText(const MotionStopReport& report) {
     QStringList lines;
     for (const MotionStopLine& line : report.lines) {
+        if (line.absent) {  // no alarm: there is nothing to stop
+            lines << tr("%1: %2").arg(line.what, line.detail);
+            continue;
+        }
         QString text =
             line.acknowledged
                 ? tr("%1: acknowledged").arg(line.what)
