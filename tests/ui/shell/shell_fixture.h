@@ -122,6 +122,18 @@ inline std::unique_ptr<NextDialog<ReplaceEditsDialog>> cancelReplaceEdits() {
         [](ReplaceEditsDialog* dialog) { dialog->reject(); });
 }
 
+// The question before leaving a device that may move (a disconnect, a
+// quit; ui/motion_leave_question): presses its button named `button`
+// ("leaveWithoutStop", "stopThenLeave"), else cancels it.
+inline std::unique_ptr<NextDialog<QMessageBox>> answerLeaveQuestion(const QString& button) {
+    return std::make_unique<NextDialog<QMessageBox>>([button](QMessageBox* box) {
+        if (auto* pressed = box->findChild<QAbstractButton*>(button))
+            pressed->click();
+        else
+            box->reject();
+    });
+}
+
 // The rows of a test that runs once per CamCon protocol.
 inline void protocolRows() {
     QTest::addColumn<QString>("protocol");

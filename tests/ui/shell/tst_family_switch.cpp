@@ -54,6 +54,9 @@ bool switchTo(Shell& shell, const QString& port, const QString& protocol) {
     page->setPort(port);
     page->setProtocol(protocol);
     QSignalSpy loaded(shell.window(), &MainWindow::loaded);
+    // Leaving an MC200 asks first: "not moving" read through the guessed
+    // parameter numbers is no fact (issue 35).
+    auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
     shell.window()->connectAndLoad();
     return loaded.wait(kDeviceTimeoutMs) && loaded.first().first().toBool();
 }
