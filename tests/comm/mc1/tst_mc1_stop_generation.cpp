@@ -162,9 +162,7 @@ class TestMc1StopGeneration : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void aStopInsideEveryStepOfEveryMotionJobLetsNothingMoveAfterIt_data() {
-        QTest::addColumn<int>("job");
-        const QList<MotionJobUnderTest> jobs = motionJobs();
-        for (int i = 0; i < jobs.size(); ++i) QTest::newRow(qPrintable(jobs.at(i).name)) << i;
+        motionJobRows(motionJobs());
     }
     void aStopInsideEveryStepOfEveryMotionJobLetsNothingMoveAfterIt() {
         QFETCH(int, job);

@@ -143,6 +143,12 @@ struct MotionJobUnderTest {
     std::function<bool(const QByteArray&)> movesOrWrites;
 };
 
+// The rows of a test that runs once per motion job: column "job", its index.
+inline void motionJobRows(const QList<MotionJobUnderTest>& jobs) {
+    QTest::addColumn<int>("job");
+    for (int i = 0; i < jobs.size(); ++i) QTest::newRow(qPrintable(jobs.at(i).name)) << i;
+}
+
 // Runs `job` without a STOP, then once with a STOP after each of its
 // requests (and before the first): no request of the job that moves or
 // writes leaves after the STOP; where the job had not moved yet it ends
