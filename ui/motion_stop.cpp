@@ -155,7 +155,14 @@ void MotionStop::stopAll() {
     stopThisDevice();
 }
 
+void MotionStop::raiseStopGeneration() {
+    m_session->worker().raiseStopGeneration();
+}
+
 void MotionStop::stopThisDevice() {
+    // At once, before anything else: no motion of a job asked before now
+    // leaves, also while the STOP's own job waits for the line.
+    raiseStopGeneration();
     if (!m_available) return;
     qCInfo(shellLog) << "STOP pressed";
     // A move that waits for the line must not run after the STOP; the
@@ -253,6 +260,10 @@ QString MotionStop::reportSummary(const MotionStopReport& report) {
 QString MotionStop::reportText(const MotionStopReport& report) {
     QStringList lines;
     for (const MotionStopLine& line : report.lines) {
+        if (line.absent) {  // no alarm: there is nothing to stop
+            lines << tr("%1: %2").arg(line.what, line.detail);
+            continue;
+        }
         QString text =
             line.acknowledged
                 ? tr("%1: acknowledged").arg(line.what)

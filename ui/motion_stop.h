@@ -34,6 +34,9 @@ public:
     void stopAll() override;
     // The STOP of this device alone (what stopAll() does outside a machine).
     void stopThisDevice();
+    // What a STOP does first, at once: no motion request of a job asked
+    // before now leaves (comm::JobRunner::raiseStopGeneration).
+    void raiseStopGeneration();
     bool stopRunning() const { return m_stopRunning; }
     // From now on every STOP of this device is `machine`'s (nullptr: its own).
     void joinMachine(StopControl* machine) { m_machine = machine; }

@@ -16,6 +16,8 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/traffic_log_file.cpp
   cli/cli_session.h
   cli/cli_session.cpp
+  cli/interrupt_watch.h
+  cli/interrupt_watch.cpp
   cli/commands.h
   cli/commands.cpp
   cli/command_line.h

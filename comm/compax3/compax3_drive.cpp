@@ -33,6 +33,10 @@ Result<Compax3Reply> Compax3Drive::exchange(const QByteArray& command, RetryPoli
     request.longestReplyBytes = longestReply;
     request.retry = retry;
     request.maxAttempts = maxAttempts;
+    // Every write can move the axis or change its power (a set's objects,
+    // select and start, a jog, enable, disable, a restore's objects): none
+    // of a job a STOP overtook leaves. The stop's own writes are no motion.
+    request.motion = command.contains('=') && !m_stopping;
     // An answer with bytes no Compax3 sends was damaged on the line: this
     // attempt failed (a request that may be repeated is sent again).
     request.judge = [](const QByteArray& reply, QString& problem) {

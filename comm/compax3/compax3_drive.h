@@ -60,6 +60,7 @@ private:
     QString m_protocolId;
     Compax3Backend m_backend;
     RequestEngine m_engine;
+    bool m_stopping = false;  // the stop's writes are going out: no Request::motion
 };
 
 }  // namespace cambench::comm

@@ -8,6 +8,7 @@
 #include "model/compax3/compax3_dictionary.h"
 
 #include <QCoreApplication>
+#include <QScopedValueRollback>
 
 namespace cambench::comm {
 
@@ -88,6 +89,8 @@ Result<Compax3CommandResult> Compax3Drive::enable(const QString& what) {
 }
 
 Result<Compax3CommandResult> Compax3Drive::motion(Compax3Motion motion) {
+    const QScopedValueRollback<bool> stopping(m_stopping,
+                                              m_stopping || motion == Compax3Motion::Stop);
     const QString what = compax3MotionText(motion);
     switch (motion) {
         case Compax3Motion::Enable:

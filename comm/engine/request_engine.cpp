@@ -97,6 +97,11 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         BetweenRequests::run();
         m_gate = std::move(held);
     }
+    // After a STOP nothing of a job asked before it moves.
+    if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+        ++m_stats.refusedByStop;
+        return *std::move(stopped);
+    }
     if (m_gate) {
         if (const QString refused = m_gate(request); !refused.isEmpty()) {
             ++m_stats.refusedByGate;
@@ -122,6 +127,12 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
     QString problem;
     for (int attempt = 1; attempt <= attempts; ++attempt) {
         if (cancelled()) return Error::cancelled();
+        // A STOP while the line settled or an earlier attempt waited: no
+        // motion goes out (the check above ran before those waits).
+        if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+            ++m_stats.refusedByStop;
+            return *std::move(stopped);
+        }
         m_lastAttempts = attempt;
         if (attempt > 1) {
             ++m_stats.retries;

@@ -4,6 +4,7 @@
 #include "framing_backend.h"
 #include "line_timing.h"
 #include "request.h"
+#include "stop_generation.h"
 
 #include "comm/transport/transport.h"
 #include "model/result.h"
@@ -53,6 +54,11 @@ public:
     // check that must only read installs one (ReadOnlyGate); none = all go.
     using RequestGate = std::function<QString(const Request&)>;
     void setRequestGate(RequestGate gate) { m_gate = std::move(gate); }
+    // The line's STOP generation (the worker's) and the running job's mark:
+    // a motion request of a job asked before the last STOP is refused, and
+    // nothing more of that job is sent (stop_generation.h). None: no check.
+    void setStopGeneration(const StopGeneration* stops) { m_stops = stops; }
+    void setJobStopMark(JobStopMark* mark) { m_jobStop = mark; }
     // Tests: a virtual clock (ms) instead of the wall clock; the transport
     // must advance it while it "waits".
     void setClock(std::function<qint64()> nowMs) { m_clockFn = std::move(nowMs); }
@@ -98,6 +104,7 @@ public:
         int lateAnswersTaken = 0;  // answers that came in such a wait
         int settles = 0;           // waits for a quiet line before a request
         int refusedByGate = 0;     // requests the request gate kept off the line
+        int refusedByStop = 0;     // requests of a job a STOP overtook, kept off the line
     };
     const Stats& stats() const { return m_stats; }
     void resetStats() { m_stats = {}; }
@@ -157,6 +164,8 @@ private:
     std::function<void(const TrafficEntry&)> m_sink;
     IncomingObserver m_observer;
     RequestGate m_gate;
+    const StopGeneration* m_stops = nullptr;
+    JobStopMark* m_jobStop = nullptr;
     std::function<qint64()> m_clockFn;
     QElapsedTimer m_clock;
     Stats m_stats;

@@ -265,7 +265,8 @@ void Compax3MotionPage::runMotion(Compax3Motion motion) {
                      detail))
             return;
     }
-    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
+    // Only when the line is free: motion never waits in a queue.
+    session()->runMotion<comm::Compax3Device, comm::Compax3CommandResult>(
         this, what,
         [motion](comm::Compax3Device& device, comm::JobContext&) { return device.motion(motion); },
         [this, what](Result<comm::Compax3CommandResult> result) {
@@ -317,7 +318,8 @@ void Compax3MotionPage::moveSet() {
                      tr("The axis moves to the set's target at its velocity. STOP (or Escape) "
                         "stops it. Make sure nobody is at the axis.")))
         return;
-    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
+    // Only when the line is free: motion never waits in a queue.
+    session()->runMotion<comm::Compax3Device, comm::Compax3CommandResult>(
         this, what,
         [move](comm::Compax3Device& device, comm::JobContext&) { return device.moveSet(move); },
         [this, what, set = move.set](Result<comm::Compax3CommandResult> result) {

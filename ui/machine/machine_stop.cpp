@@ -27,6 +27,10 @@ bool MachineStop::armed() const {
 }
 
 void MachineStop::stopAll() {
+    // Every device first, each its own generation: no motion asked before
+    // now leaves on any line, whatever STOP runs first.
+    for (const Member& member : m_members)
+        if (member.stop) member.stop->raiseStopGeneration();
     if (!available()) return;
     qCInfo(shellLog) << "machine STOP pressed";
     // A STOP pressed again while one runs is sent again (never held back);

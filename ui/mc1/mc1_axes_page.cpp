@@ -233,11 +233,11 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
     const int shown = axis();
     const QString what = comm::mc1AxisCommandText(shown, command, value);
     if (!confirmCommand(command, what, value)) return;
-    session()->run<comm::Mc1Device, comm::Mc1AxisDone>(
-        this, tr("Axis command"),
+    DeviceSession::Work<comm::Mc1Device, comm::Mc1AxisDone> work =
         [shown, command, value](comm::Mc1Device& device, comm::JobContext&) {
             return device.axisCommand(shown, command, value);
-        },
+        };
+    std::function<void(Result<comm::Mc1AxisDone>)> answer =
         [this, what, shown, command](Result<comm::Mc1AxisDone> done) {
             // Acknowledged: the jog runs whether or not its read-back came.
             if (done) {
@@ -253,7 +253,13 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
                                .arg(capitalised(what), headline(*state)),
                            true);
             }
-        });
+        };
+    // A stop goes to the line whatever runs; everything else that acts on
+    // an axis only when the line is free (motion never waits in a queue).
+    if (command == Mc1AxisCommand::Stop || command == Mc1AxisCommand::QuickStop)
+        session()->run(this, tr("Axis command"), std::move(work), std::move(answer));
+    else
+        session()->runMotion(this, tr("Axis command"), std::move(work), std::move(answer));
 }
 
 bool Mc1AxesPage::confirmCommand(Mc1AxisCommand command, const QString& what, qint32 value) {

@@ -2,7 +2,15 @@
 // on a pseudo-terminal, for each MC100/MC200 variant: identification,
 // variables, flags, I/O, memory, and backup → change → verify → restore →
 // verify with honest counts.
+#include "../child_process.h"
 #include "../e2e_support.h"
+#include "../test_pace.h"
+
+#include <QProcess>
+
+#include <csignal>
+
+#include <signal.h>
 
 #include <QTest>
 
@@ -159,8 +167,12 @@ private Q_SLOTS:
     }
 
     // Issue 27: `mc axis all stop` on two controllers that differ (axes 1,
-    // 2, 5 and all eight): one line per axis it has, exit 0 when every stop
-    // was acknowledged; the stops go out before any read-back.
+    // 2, 5 and all eight): one line per axis, exit 0 when every stop was
+    // acknowledged; the stops go out before anything else. Issue 35: a
+    // fresh `cambench-cli` knows neither the controller nor its axes, so
+    // every axis an MC200 can have gets its stop, first - no probe, no
+    // RDTABLE before them -, and the axes it lacks say "no such axis";
+    // `--axes` names the axes instead.
     void stopOfEveryAxis() {
         SimSession three(QStringLiteral("mc1"));
         START_SIM(three, {"--axes", "1,2,5"});
@@ -169,17 +181,24 @@ private Q_SLOTS:
         const CliRun stop = three.cli({"--log", log, "mc", "axis", "all", "stop"});
         VERIFY_EXIT(stop, 0);
         const QStringList lines = stop.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-        QCOMPARE(lines.size(), 3);
-        QVERIFY2(lines.at(2).startsWith(QLatin1String("Axis 5: acknowledged; axis 5 stands at")),
+        QCOMPARE(lines.size(), 8);
+        QVERIFY2(lines.at(4).startsWith(QLatin1String("Axis 5: acknowledged; axis 5 stands at")),
                  qPrintable(stop.out));
-        // Every stop (9B) before the first read-back (RDSTAT E3).
+        QVERIFY2(
+            lines.at(2) == QLatin1String("Axis 3: no such axis: the controller refused its stop"),
+            qPrintable(stop.out));
+        QCOMPARE(stop.out.count(QLatin1String(": no such axis")), 5);
+        // Every stop (9B) first: the first telegrams are the eight stops.
         QList<QByteArray> sent;
         for (const QByteArray& line : readBytes(log).split('\n'))
             if (line.contains(" > ")) sent << line.mid(line.indexOf(" > ") + 3, 2);
-        const qsizetype lastStop = sent.lastIndexOf("9B");
-        const qsizetype firstRead = sent.indexOf("E3");
-        QCOMPARE(sent.count("9B"), 3);
-        QVERIFY2(lastStop >= 0 && lastStop < firstRead, readBytes(log).constData());
+        QVERIFY2(sent.size() > 8, readBytes(log).constData());
+        QCOMPARE(sent.mid(0, 8), QList<QByteArray>(8, "9B"));
+        QVERIFY(!sent.contains("E5"));  // no RDTABLE
+
+        const CliRun named = three.cli({"mc", "axis", "all", "stop", "--axes", "1,2,5"});
+        VERIFY_EXIT(named, 0);
+        QCOMPARE(named.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts).size(), 3);
 
         SimSession eight(QStringLiteral("mc1"));
         START_SIM(eight);
@@ -247,6 +266,47 @@ private Q_SLOTS:
             QVERIFY2(!line.contains(" > 3B ") && !line.contains(" > BB "), line.constData());
         const CliRun read = session.cli({"mc", "flag", "read", "M2"});
         QCOMPARE(read.out, QStringLiteral("M2 = 0\n"));
+    }
+
+    // Issue 35: SIGINT while `mc restore` writes. Decided: the signal is
+    // not a STOP, but nothing that writes or moves leaves after it; the
+    // write on the wire when it came is the last; stderr says what the
+    // signal did; exit 130. The simulator answers after 400 ms, so the
+    // signal lands while the first write waits for its answer.
+    void anInterruptedRestoreSendsNoMoreWrites() {
+        SimSession changed(QStringLiteral("mc1"));
+        START_SIM(changed);
+        for (int v = 1; v <= 5; ++v)
+            VERIFY_EXIT(
+                changed.cli({"mc", "var", "write", QString::number(v), QString::number(1000 + v)}),
+                0);
+        const QString file = changed.path(QStringLiteral("backup.json"));
+        VERIFY_EXIT(changed.cli({"mc", "backup", "-o", file, "--vars", "1-5", "--no-flags"}), 0);
+
+        SimSession slow(QStringLiteral("mc1"));
+        START_SIM(slow, {"--delay", "400", "--verbose"});
+        QProcess cli;
+        cli.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+        cli.setArguments({"--port", slow.ptyPath(), "--baud", "115200", "--protocol", "mc1", "mc",
+                          "restore", file});
+        endWithThisTest(cli);
+        cli.start();
+        QVERIFY(cli.waitForStarted());
+        const QString simLog = slow.path(QStringLiteral("sim-stderr.log"));
+        // WRVAR (32 bit, CF) arrived at the controller: its answer comes in 400 ms.
+        QVERIFY2(QTest::qWaitFor([&] { return readBytes(simLog).contains("<- cf"); },
+                                 hangBoundMs(60000)),
+                 readBytes(simLog).constData());
+        QCOMPARE(::kill(pid_t(cli.processId()), SIGINT), 0);
+        QVERIFY(cli.waitForFinished(hangBoundMs(60000)));
+        const QByteArray err = cli.readAllStandardError();
+        const QByteArray out = cli.readAllStandardOutput();
+        QCOMPARE(cli.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(cli.exitCode() == 130, (out + err).constData());
+        QVERIFY2(err.contains("SIGINT: nothing that moves or writes is sent from now on"),
+                 err.constData());
+        QTest::qWait(500);  // what the simulator received is all in its log
+        QCOMPARE(readBytes(simLog).count("<- cf"), 1);
     }
 };
 

@@ -54,8 +54,9 @@ bool switchTo(Shell& shell, const QString& port, const QString& protocol) {
     page->setPort(port);
     page->setProtocol(protocol);
     QSignalSpy loaded(shell.window(), &MainWindow::loaded);
-    // Leaving a drive whose motion cannot be told is asked first (issue 35).
-    auto leave = answerLeaveQuestion();
+    // Leaving a drive, or an MC200 read through the guessed parameter
+    // numbers, asks first: "not moving" is no fact there (issue 35).
+    auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
     shell.window()->connectAndLoad();
     return loaded.wait(kDeviceTimeoutMs) && loaded.first().first().toBool();
 }

@@ -143,7 +143,13 @@ private Q_SLOTS:
 
         // The MC200 goes away: its row says so, the CamCon stays as it was.
         QSignalSpy camsLine(cams->session(), &DeviceSession::stateChanged);
-        QVERIFY(plc->session()->disconnectFromDevice());
+        {
+            // "Not moving" read through the guessed parameter numbers is no
+            // fact: the disconnect asks (issue 35).
+            auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
+            QVERIFY(plc->session()->disconnectFromDevice());
+            QCOMPARE(leave->answered(), 1);
+        }
         QVERIFY(QTest::qWaitFor([&] { return plc->lamp() == MachineUnit::Lamp::Offline; },
                                 kDeviceTimeoutMs));
         QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
@@ -200,7 +206,13 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitFor([&] { return says("stands at"); }, kDeviceTimeoutMs));
 
         // A device that can move but is not on the line is named as not reached.
-        QVERIFY(plc->session()->disconnectFromDevice());
+        {
+            // "Not moving" read through the guessed parameter numbers is no
+            // fact: the disconnect asks (issue 35).
+            auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
+            QVERIFY(plc->session()->disconnectFromDevice());
+            QCOMPARE(leave->answered(), 1);
+        }
         QVERIFY(QTest::qWaitFor([&] { return !plc->session()->isOnline(); }, kDeviceTimeoutMs));
         // (Offline by the person's own disconnect: nothing left that can move.)
         QVERIFY(!machine->stop()->armed());
