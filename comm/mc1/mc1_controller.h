@@ -72,7 +72,7 @@ private:
     Result<Mc1Variant> probeVariant();
     // The identified variant, once `variable` is a number RDVAR/WRVAR carry.
     Result<Mc1Variant> identifiedFor(int variable);
-    // A usage error unless the identified variant has `capability`.
+    // An Unsupported error unless the identified variant has `capability`.
     Status require(Mc1Capability capability, const QString& what);
     // `bytes` bytes of internal RAM (`external` false) or of an external
     // page from `address` on.
