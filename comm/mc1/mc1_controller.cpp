@@ -121,6 +121,17 @@ Result<QString> Mc1Controller::identify() {
     return text;
 }
 
+Result<QString> Mc1Controller::probe() {
+    const EngineSettings usual = m_engine.settings();
+    const Result<QString> first = Mc1Device::probe();
+    if (first || !m_backend.synchronised()) return first;
+    // Reading the identity is safe to ask again, with the usual retries:
+    // a telegram that missed the card's few milliseconds after a 0xFF (a
+    // busy PC) is lost as silently as the first.
+    m_engine.setSettings(usual);
+    return identify();
+}
+
 Result<Mc1Variant> Mc1Controller::identifiedFor(int variable) {
     if (variable < 0 || variable > 0xFFFF)
         return Error::usage(

@@ -33,6 +33,11 @@ public:
     QString protocolId() const override { return QStringLiteral("mc1"); }
     RequestEngine& engine() override { return m_engine; }
     Result<QString> identify() override;
+    // identify() without retries, but for one: an MC100MA single-FIFO card
+    // loses the first telegram, sent before the line was heard; when its
+    // 0xFF was heard meanwhile, the identification is asked again, in step
+    // with the 0xFF and with the usual retries (reads only).
+    Result<QString> probe() override;
 
     Mc1Variant variant() const override { return m_link.variant(); }
     QString variantSource() const override { return m_source; }

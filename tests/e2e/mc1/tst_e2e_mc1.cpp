@@ -101,6 +101,21 @@ private Q_SLOTS:
                  qPrintable(detect.out));
     }
 
+    // Issue 39, item 3: an MC100MA single-FIFO card (0xFF every 10 ms, a
+    // telegram taken only right after one) is found by Detect as `mc info`
+    // finds it, and by the same probe in the desktop application.
+    void detectFindsAnMc100maCard() {
+        SimProcess sim;
+        QVERIFY2(sim.start({"--family", "mc1", "--variant", "mc100v1", "--sync", "10"}),
+                 qPrintable(sim.errorText()));
+        const CliRun info = runCli({"--port", sim.ptyPath(), "mc", "info"});
+        VERIFY_EXIT(info, 0);
+        const CliRun detect = runCli({"--port", sim.ptyPath(), "detect"});
+        VERIFY_EXIT(detect, 0);
+        QVERIFY2(detect.out.contains(QLatin1String("mc1: MC100 V1 (probed)")),
+                 qPrintable(detect.out));
+    }
+
     // An MC100 set to its ASCII protocol: variables, flags, a backup and a
     // restore of the differences; what ASCII lacks is refused by name; Detect
     // finds it after the binary protocols have been tried.
