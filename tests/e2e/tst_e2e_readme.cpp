@@ -21,6 +21,7 @@
 
 #include <QDeadlineTimer>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QMap>
 #include <QProcess>
@@ -256,27 +257,6 @@ QString startSim(RunningSim& sim, const QStringList& args, const QString& folder
     return {};
 }
 
-// Runs cambench-cli with `args` in `folder` (a hang bound, not a limit).
-CliRun runIn(const QString& folder, const QStringList& args) {
-    QProcess process;
-    process.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
-    process.setArguments(args);
-    process.setWorkingDirectory(folder);
-    endWithThisTest(process);
-    process.start();
-    CliRun run;
-    run.finished =
-        process.waitForStarted(hangBoundMs(10000)) && process.waitForFinished(hangBoundMs(120000));
-    if (!run.finished) {
-        process.kill();
-        process.waitForFinished(5000);
-    }
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    return run;
-}
-
 bool isSimPort(const QString& port) {
     return port == QLatin1String("sim") || port.startsWith(QLatin1String("sim:"));
 }
@@ -350,7 +330,11 @@ void TestE2eReadme::everyExampleExitsAsTheReadmeSays() {
             }
             args[portAt + 1] = pty;
         }
-        const CliRun run = runIn(folder.path(), args);
+        QElapsedTimer took;
+        took.start();
+        const CliRun run =
+            runProgram(QStringLiteral(CAMBENCH_CLI_EXE), args, 120000, folder.path());
+        qInfo("README.md:%d: %lld ms", example.line, took.elapsed());
         if (!run.finished || run.exitCode != example.exitCode)
             failures << QStringLiteral("%1\nexpected exit %2; %3")
                             .arg(where)
