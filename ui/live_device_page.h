@@ -83,7 +83,10 @@ protected:
                     return;
                 }
                 const ErrorKind kind = result.error().kind;
-                if (kind != ErrorKind::Usage) pollAnswered(kind == ErrorKind::DeviceError);
+                // A request this device or protocol lacks, or a wrong
+                // argument, says nothing about the line.
+                if (kind != ErrorKind::Usage && kind != ErrorKind::Unsupported)
+                    pollAnswered(kind == ErrorKind::DeviceError);
                 notRead(result.error());
             },
             comm::JobPriority::Poll, pollKey);

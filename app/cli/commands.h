@@ -16,6 +16,17 @@ struct CommandGroup {
     QString familyId;  // the family whose device it works on; empty: any family
     QString name;
     int (*run)(CliSession& session, CommandArgs& args) = nullptr;
+    // The protocol it speaks when neither --protocol nor the port names one
+    // (a command for a bus: backup-line); empty: the family's default.
+    QString defaultProtocol = {};
+};
+
+// An option of a family's commands that says something of the device
+// (--axes, --dictionary): taken before or after COMMAND, handed to the
+// command's arguments, and naming its family as the command does.
+struct FamilyOption {
+    QString familyId;
+    QString name;  // "--axes"; it takes a value
 };
 
 // How the machine commands back up, verify and restore a device of one
@@ -44,9 +55,19 @@ public:
     // The group `name` for a device of `familyId` (its own, or one of any
     // family); null when there is none.
     const CommandGroup* find(const QString& familyId, const QString& name) const;
-    // The families that have a group `name` ("mc1" for `mc1 ...`).
+    // The families that have a group `name` ("mc1" for `mc ...`).
     QStringList familiesWith(const QString& name) const;
+    // Whether any family (or the shell) has a group `name`.
+    bool isCommand(const QString& name) const;
     QString help() const;
+    // The lines of --help about `name` (a command group): its family's
+    // whole part when the family has this one group, else its own lines;
+    // empty for an unknown name.
+    QString helpFor(const QString& name) const;
+
+    void addOption(FamilyOption option);
+    // Null when no family declared `name`.
+    const FamilyOption* option(const QString& name) const;
 
     void setMachineVerbs(const QString& familyId, MachineVerbs verbs);
     // Null for a family whose devices a machine backup cannot take.
@@ -54,11 +75,12 @@ public:
 
 private:
     QList<CommandGroup> m_groups;
+    QList<FamilyOption> m_options;
     QHash<QString, MachineVerbs> m_machineVerbs;
     QList<std::pair<QString, QString>> m_help;
 };
 
-// The shell's own groups: ports, detect.
+// The shell's own groups: ports, detect, check, machine, help.
 void registerShellCommands(CommandRegistry& registry);
 
 // "read" or "write" after a group name; a usage error for anything else.

@@ -25,6 +25,7 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/port_commands.cpp
   cli/detect_command.cpp
   cli/check_command.cpp
+  cli/help_command.cpp
   cli/machine_command.h
   cli/machine_command.cpp
   cli/machine_backup.cpp

@@ -161,11 +161,11 @@ Result<QByteArray> Mc1AsciiController::readExternalPage(quint8 page, const Progr
 }
 
 Error Mc1AsciiController::notInAscii(const QString& what) const {
-    return Error::usage(QCoreApplication::translate(
-                            "cambench::comm",
-                            "the MC100's ASCII protocol has no requests for %1; an MC200 V2 "
-                            "over the binary protocol (mc1) has")
-                            .arg(what));
+    return Error::unsupported(QCoreApplication::translate(
+                                  "cambench::comm",
+                                  "the MC100's ASCII protocol has no requests for %1; an MC200 V2 "
+                                  "over the binary protocol (mc1) has")
+                                  .arg(what));
 }
 
 Result<Mc1ProgramStatus> Mc1AsciiController::programStatus() {

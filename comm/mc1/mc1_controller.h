@@ -36,6 +36,11 @@ public:
     // The variant, RDTABLE's axis table (MC200) and the UDB address
     // (MC200 V2): mc1_controller_identity.cpp.
     Result<DeviceIdentity> readIdentity() override;
+    // identify() without retries, but for one: an MC100MA single-FIFO card
+    // loses the first telegram, sent before the line was heard; when its
+    // 0xFF was heard meanwhile, the identification is asked again, in step
+    // with the 0xFF and with the usual retries (reads only).
+    Result<QString> probe() override;
 
     Mc1Variant variant() const override { return m_link.variant(); }
     QString variantSource() const override { return m_source; }
@@ -78,7 +83,7 @@ private:
     Result<Mc1Variant> probeVariant();
     // The identified variant, once `variable` is a number RDVAR/WRVAR carry.
     Result<Mc1Variant> identifiedFor(int variable);
-    // A usage error unless the identified variant has `capability`.
+    // An Unsupported error unless the identified variant has `capability`.
     Status require(Mc1Capability capability, const QString& what);
     // `bytes` bytes of internal RAM (`external` false) or of an external
     // page from `address` on.

@@ -14,9 +14,9 @@ bool isMc1Refusal(const Error& error) {
 Result<QByteArray> Mc1Link::exchange(Mc1Op op, const QByteArray& parameters, int maxAttempts) {
     const Mc1Telegram* telegram = mc1Find(m_variant, op);
     if (!telegram)
-        return Error::usage(QStringLiteral("the %1 does not know this telegram; check the "
-                                           "controller's variant")
-                                .arg(mc1VariantName(m_variant)));
+        return Error::unsupported(QStringLiteral("the %1 does not know this telegram; check the "
+                                                 "controller's variant")
+                                      .arg(mc1VariantName(m_variant)));
     const Result<QByteArray> message = mc1Request(*telegram, parameters);
     if (!message) return message.error();
     const quint8 command = parameters.size() > 1 ? quint8(parameters.at(1)) : 0;

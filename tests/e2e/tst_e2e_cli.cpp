@@ -75,8 +75,8 @@ private Q_SLOTS:
     void rawPrintsReplyBody();
     void portsListsSerialPortsWithoutADevice();
     void guiHelpNeedsNoDisplay();
-    void asciiOnlyCommandsExitTwoNamingTheProtocol_data();
-    void asciiOnlyCommandsExitTwoNamingTheProtocol();
+    void asciiOnlyCommandsExitOneNamingTheProtocol_data();
+    void asciiOnlyCommandsExitOneNamingTheProtocol();
 };
 
 void TestE2eCli::infoPrintsIdentityAndCapacities() {
@@ -198,8 +198,9 @@ void TestE2eCli::programOutsideTheDeviceReadsNoCams() {
     for (const QStringList& args : {QStringList{"cams", "read", "--program", "16"},
                                     QStringList{"diff", "device", "/dev/null", "--program", "16"},
                                     QStringList{"timing", "--program", "16", "--speed", "100"}}) {
+        // A program the device does not have: data that does not fit it (4).
         const CliRun run = session.cli(args);
-        VERIFY_EXIT(run, 2);
+        VERIFY_EXIT(run, 4);
         QVERIFY2(run.err.contains(refusal),
                  qPrintable(args.join(u' ') + QLatin1String(": ") + run.err));
     }
@@ -437,11 +438,14 @@ void TestE2eCli::scanNeedsMultiuser() {
     QFETCH(QString, protocol);
     SimSession session(protocol);
     START_SIM(session);
+    // The protocol has no bus: the device's side, not the command line's (1).
     const CliRun run = session.cli({"scan"});
-    VERIFY_EXIT(run, 2);
+    VERIFY_EXIT(run, 1);
     QVERIFY(run.err.contains(QLatin1String("--protocol multiuser")));
 }
 
+// Issue 39, item 4: a usage error is the error and one line saying where
+// the help is, never the whole help; `help COMMAND` prints that command's lines.
 void TestE2eCli::usageErrorsExitTwoWithUsage() {
     for (const QStringList& args :
          {QStringList{"frobnicate"}, QStringList{"cams", "read"},
@@ -449,8 +453,26 @@ void TestE2eCli::usageErrorsExitTwoWithUsage() {
         const CliRun run = runCli(args, 30000);
         VERIFY_EXIT(run, 2);
         QVERIFY2(run.err.startsWith(QLatin1String("cambench-cli: ")), qPrintable(run.err));
-        QVERIFY(run.err.contains(QLatin1String("Usage: cambench-cli")));
+        QVERIFY2(!run.err.contains(QLatin1String("Usage: cambench-cli")), qPrintable(run.err));
+        QCOMPARE(run.err.count(u'\n'), 2);
+        QVERIFY2(run.err.contains(QLatin1String("Help: `cambench-cli ")), qPrintable(run.err));
     }
+    const CliRun cams = runCli({"cams", "read"}, 30000);
+    QVERIFY2(cams.err.endsWith(QLatin1String(
+                 "Help: `cambench-cli help cams`, or `cambench-cli --help` for everything\n")),
+             qPrintable(cams.err));
+    const CliRun camsHelp = runCli({"help", "cams"}, 30000);
+    VERIFY_EXIT(camsHelp, 0);
+    QVERIFY2(camsHelp.out.contains(QLatin1String("  cams read --program P")) &&
+                 camsHelp.out.contains(QLatin1String("  cams write --program P FILE")) &&
+                 !camsHelp.out.contains(QLatin1String("deadtimes")),
+             qPrintable(camsHelp.out));
+    const CliRun mcHelp = runCli({"help", "mc"}, 30000);
+    VERIFY_EXIT(mcHelp, 0);
+    QVERIFY2(mcHelp.out.contains(QLatin1String("  mc axis N speed V")) &&
+                 mcHelp.out.contains(QLatin1String("--parameters FILE")),
+             qPrintable(mcHelp.out));
+    VERIFY_EXIT(runCli({"help", "frobnicate"}, 30000), 2);
     const CliRun help = runCli({"--help"}, 30000);
     VERIFY_EXIT(help, 0);
     QVERIFY(help.out.contains(QLatin1String("exit 0 when equal")));
@@ -470,7 +492,8 @@ void TestE2eCli::familyOptionNamesTheFamilies() {
              qPrintable(unknown.err));
     const CliRun other = runCli({"--family", "compax3", "info"}, 30000);
     VERIFY_EXIT(other, 2);
-    QVERIFY2(other.err.contains(QLatin1String("\"info\" is a command of the camcon family")),
+    QVERIFY2(other.err.contains(QLatin1String("\"info\" is a command of the camcon family")) &&
+                 other.err.contains(QLatin1String("--family compax3")),
              qPrintable(other.err));
     const CliRun help = runCli({"--help"}, 30000);
     QVERIFY2(help.out.contains(QLatin1String("--family")), qPrintable(help.out));
@@ -484,7 +507,7 @@ void TestE2eCli::rawPrintsReplyBody() {
     QCOMPARE(run.out, QStringLiteral("GPRGMAX0010\n"));
 }
 
-void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol_data() {
+void TestE2eCli::asciiOnlyCommandsExitOneNamingTheProtocol_data() {
     QTest::addColumn<QString>("protocol");
     QTest::addColumn<QStringList>("command");
     QTest::addColumn<QString>("capability");
@@ -504,7 +527,9 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol_data() {
     }
 }
 
-void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
+// What the protocol lacks is the device side's (exit 1), not a command line
+// that cannot be understood (2); nothing is sent.
+void TestE2eCli::asciiOnlyCommandsExitOneNamingTheProtocol() {
     QFETCH(QString, protocol);
     QFETCH(QStringList, command);
     QFETCH(QString, capability);
@@ -518,7 +543,7 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
     SimSession session(protocol);
     START_SIM(session);
     const CliRun run = session.cli(command);
-    VERIFY_EXIT(run, 2);
+    VERIFY_EXIT(run, 1);
     QVERIFY2(run.err.contains(capability), qPrintable(run.err));
     QVERIFY2(run.err.contains(QLatin1String("ASCII protocol (Standard or Multiuser)")),
              qPrintable(run.err));

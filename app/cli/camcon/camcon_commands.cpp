@@ -104,7 +104,14 @@ void registerCamConCommands(CommandRegistry& registry) {
         {"diff", runDiff},
         {"timing", runTiming},
     };
-    for (const auto& [name, run] : groups) registry.add({family, QLatin1String(name), run});
+    // The line commands are for a bus: without --protocol (or a port that
+    // names one) they speak Multiuser.
+    const QStringList lineCommands = {QStringLiteral("backup-line"), QStringLiteral("verify-line")};
+    for (const auto& [name, run] : groups) {
+        const QString command = QLatin1String(name);
+        registry.add({family, command, run,
+                      lineCommands.contains(command) ? QStringLiteral("multiuser") : QString()});
+    }
     registry.addHelp(family, camConHelp());
     // A machine backup holds the CamCon's whole EEPROM image.
     registry.setMachineVerbs(family, {{"backup", "-o", "{file}"},

@@ -114,6 +114,8 @@ Result<QList<Compax3ObjectId>> parseCompax3Objects(const QStringList& words) {
 
 void registerCompax3Commands(CommandRegistry& registry) {
     registry.add({QStringLiteral("compax3"), QStringLiteral("c3"), runC3});
+    // runC3 takes it, wherever it stood on the line.
+    registry.addOption({QStringLiteral("compax3"), QStringLiteral("--dictionary")});
     registry.addHelp(QStringLiteral("compax3"), compax3Help());
     // The drive's parameter set.
     registry.setMachineVerbs(QStringLiteral("compax3"), {{"c3", "backup", "-o", "{file}"},

@@ -430,7 +430,7 @@ private:
             outcome.note = absent;
             return outcome;
         }
-        outcome.error = Error::usage(
+        outcome.error = Error::unsupported(
             QCoreApplication::translate("cambench::usecases", "%1; its base points are not written")
                 .arg(absent));
         return outcome;  // NotSent

@@ -196,7 +196,7 @@ void TestTableCamCon::deadTimesAndModes() {
     QCOMPARE(bench.device->has(CamConCapability::DeadTimeModes), bench.n96());
     if (!bench.n96()) {
         const Result<DeadTimeModes> modes = bench.device->readDeadTimeModes(2);
-        QCOMPARE(modes.error().kind, ErrorKind::Usage);
+        QCOMPARE(modes.error().kind, ErrorKind::Unsupported);
         QVERIFY2(modes.error().message.contains(QLatin1String("3964r-n96")),
                  qPrintable(modes.error().message));
         return;
