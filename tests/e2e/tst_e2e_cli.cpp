@@ -478,7 +478,7 @@ void TestE2eCli::camBusBackupRestoreVerify() {
     VERIFY_EXIT(session.cli({"--device", "7", "backup", "-o", image}), 0);
     // Device 3 gets 7's EEPROM; then it equals the file.
     const CliRun differs = session.cli({"--device", "3", "verify", image});
-    QVERIFY2(differs.exitCode == 1, describe(differs).constData());
+    VERIFY_EXIT(differs, 1);
     const CliRun restored =
         session.cli({"--device", "3", "restore", image, "--force", "--no-safety-backup"});
     VERIFY_EXIT(restored, 0);
