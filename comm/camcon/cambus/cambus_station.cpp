@@ -232,16 +232,10 @@ void CamBusStation::hearByte(quint8 byte, qint64 nowMs) {
                 endTurn(nowMs);
             } else {
                 // Another user's byte instead of the answer to our TO: the
-                // others had gone on, our TO came too late.
-                if (m_tokenUser == number()) {
-                    ++m_view.lateAnswers;
-                    senderTurnFailed(
-                        QCoreApplication::translate("cambench::comm",
-                                                    "%2 came instead of user %1's answer to the "
-                                                    "PC's TO, which came too late")
-                            .arg(m_destination)
-                            .arg(byte, 2, 16, QLatin1Char('0')));
-                }
+                // others had gone on, our TO came too late. The turn was
+                // ours to lose, not the destination's silence (P9): the
+                // block goes at our next token (CB8).
+                if (m_tokenUser == number()) ++m_view.lateAnswers;
                 endTurn(nowMs);
                 hearByte(byte, nowMs);
             }
