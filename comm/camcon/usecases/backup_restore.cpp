@@ -1,6 +1,7 @@
 #include "backup_restore.h"
 
 #include "model/camcon/eeprom_image_file.h"
+#include "model/camcon/link_settings.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -32,6 +33,26 @@ QStringList differingBlocks(const QList<EepromBlock>& device, const QList<Eeprom
 Error withMessage(Error error, const QString& message) {
     error.message = message;
     return error;
+}
+
+SystemSettings linkOf(const DeviceInfo& device) {
+    return {{QStringLiteral("deviceNumber"), qint64(device.deviceNumber)},
+            {QStringLiteral("protocol"), qint64(device.protocol)}};
+}
+
+// Issue 39: an image is a byte image of the device it was taken from, its
+// communication settings included (the blocks are opaque: nothing can be
+// left out of them). A restore puts the device back as it was, those
+// settings too; when the device uses others now, the person must know that
+// the next connection needs the image's.
+QString linkNote(const DeviceInfo& image, const DeviceInfo& now) {
+    if (image.protocol == now.protocol && image.deviceNumber == now.deviceNumber) return {};
+    return QCoreApplication::translate(
+               "cambench::usecases",
+               "The image holds the communication settings the device had when it was taken, "
+               "%1 (it uses %2 now). A restore puts them back with everything else: the next "
+               "connection to the device needs %1.")
+        .arg(linkSettingsText(linkOf(image)), linkSettingsText(linkOf(now)));
 }
 
 }  // namespace
@@ -87,6 +108,7 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
     }
     report.identityMismatch = identityMismatch(image.device, *device);
 
+    report.linkNote = linkNote(image.device, *device);
     const qint64 steps = options.safetyBackup ? 2 : 1;
     if (options.safetyBackup) {
         const QString path = options.safetyBackupPath.isEmpty()
