@@ -119,11 +119,6 @@ void registerCamConCommands(CommandRegistry& registry) {
                       lineCommands.contains(command) ? QStringLiteral("multiuser") : QString()});
     }
     registry.addHelp(family, camConHelp());
-    // A machine backup holds the CamCon's whole EEPROM image.
-    registry.setMachineVerbs(family, {{"backup", "-o", "{file}"},
-                                      {"verify", "{file}"},
-                                      {"restore", "{file}"},
-                                      {"--replacement"}});
 }
 
 }  // namespace cambench::cli
