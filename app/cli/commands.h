@@ -42,7 +42,7 @@ public:
     // The group `name` for a device of `familyId` (its own, or one of any
     // family); null when there is none.
     const CommandGroup* find(const QString& familyId, const QString& name) const;
-    // The families that have a group `name` ("mc1" for `mc ...`).
+    // The families that have a group `name` ("mc1" for `mc1 ...`).
     QStringList familiesWith(const QString& name) const;
     // Whether any family (or the shell) has a group `name`.
     bool isCommand(const QString& name) const;
