@@ -181,11 +181,11 @@ QStringList simulatorFor(const QStringList& words) {
     const QString family = optionValue(words, QStringLiteral("--family"));
     const QString address = optionValue(words, QStringLiteral("--address"));
     if (protocol == QLatin1String("cambus")) {
-        const int pcAnswerMs = std::min(hangBoundMs(kQuietPcAnswerMs), kMostPcAnswerMs);
-        return {QStringLiteral("--protocol"),     protocol,
-                QStringLiteral("--devices"),      QStringLiteral("3,7"),
-                QStringLiteral("--display"),      QStringLiteral("12"),
-                QStringLiteral("--pc-answer-ms"), QString::number(pcAnswerMs)};
+        // The bus at its own rate and timing (T = 10 ms), a display polling.
+        return {QStringLiteral("--protocol"), protocol,
+                QStringLiteral("--baud"),     kCamBusBaud,
+                QStringLiteral("--devices"),  QStringLiteral("3,7"),
+                QStringLiteral("--display"),  QStringLiteral("12")};
     }
     if (!address.isEmpty() || protocol == QLatin1String("compax3-rs485"))
         return {QStringLiteral("--family"),
@@ -335,6 +335,13 @@ void TestE2eReadme::everyExampleExitsAsTheReadmeSays() {
         const CliRun run =
             runProgram(QStringLiteral(CAMBENCH_CLI_EXE), args, 120000, folder.path());
         qInfo("README.md:%d: %lld ms", example.line, took.elapsed());
+        // A Cam-BUS example this machine could not answer in time is said,
+        // not failed: the bus is not widened for a slow machine (issue 39).
+        if (run.exitCode != example.exitCode && tooSlowForTheBus(run)) {
+            qWarning("%s: this machine is too slow for the Cam-BUS's timing: %s", qPrintable(where),
+                     qPrintable(tooSlowForTheBusText(run)));
+            continue;
+        }
         if (!run.finished || run.exitCode != example.exitCode)
             failures << QStringLiteral("%1\nexpected exit %2; %3")
                             .arg(where)
