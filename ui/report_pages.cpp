@@ -2,6 +2,7 @@
 
 #include <QAbstractTextDocumentLayout>
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QPageSize>
 #include <QPagedPaintDevice>
 #include <QPainter>
@@ -19,6 +20,10 @@ namespace {
 // A heading that starts below this part of its page moves to the next page.
 constexpr double kHeadingFoot = 0.8;
 }  // namespace
+
+QString reportTime(const QDateTime& time) {
+    return time.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
+}
 
 int keepHeadingsWithText(QTextDocument& document) {
     const qreal pageHeight = document.pageSize().height();

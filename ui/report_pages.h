@@ -4,10 +4,15 @@
 
 #include <QString>
 
+class QDateTime;
 class QPagedPaintDevice;
 class QTextDocument;
 
 namespace cambench {
+
+// A time as every printed report writes it, in every language the same:
+// "2025-11-29 14:03" (local time) - one format on a page.
+QString reportTime(const QDateTime& time);
 
 // Pages of a printed report. A heading in the last part of a page starts
 // the next one instead, so that it never stands alone at a page's foot;

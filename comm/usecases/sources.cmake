@@ -1,6 +1,6 @@
 # The use-case frame every family shares: progress and cancel, the outcome
 # of one written item and the tally of a write, and Detect (which family
-# answers on a port).
+# answers on a port), who answers on a device's line.
 target_sources(cambench_usecases PRIVATE
   use_case_progress.h
   use_case_progress.cpp
@@ -10,4 +10,6 @@ target_sources(cambench_usecases PRIVATE
   detect_device.cpp
   device_check.h
   device_check.cpp
+  line_answer.h
+  line_answer.cpp
 )

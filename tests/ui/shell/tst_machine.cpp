@@ -13,6 +13,7 @@
 #include "ui/machine/demo_machine.h"
 #include "ui/machine/machine.h"
 #include "ui/machine/machine_connection.h"
+#include "ui/machine/machine_progress.h"
 #include "ui/machine/machine_report.h"
 #include "ui/machine/machine_stop.h"
 #include "ui/machine/machine_unit.h"
@@ -23,7 +24,9 @@
 #include "ui/stop_bar.h"
 
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTextDocument>
 #include <QTreeWidget>
@@ -308,26 +311,60 @@ private Q_SLOTS:
                     .contains(QLatin1String("not opened: press-plc: the protocol")));
     }
 
+    // Issue 36 item 5: every device's section of its family, read from the
+    // device before printing (a bar per device), one date format.
     void theReportHasTheMachineAndEachDevice() {
+        MachineFile file = camsAndPlc();
+        file.devices << device(QStringLiteral("feed"), QStringLiteral("compax3"),
+                               {{QStringLiteral("port"), QStringLiteral("sim")}});
         Shell shell;
-        Machine* machine = shell.openMachine(camsAndPlc(), {});
+        Machine* machine = shell.openMachine(file, {});
         QVERIFY(waitIdentified(*machine));
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
+        MachineProgress* progress = machine->window()->writeReportTo(pdf);
+        QCOMPARE(progress->names(),
+                 (QList<QString>{QStringLiteral("cams"), QStringLiteral("press-plc"),
+                                 QStringLiteral("feed")}));
+        QVERIFY(progress->bar(QStringLiteral("feed")));
+        QSignalSpy finished(progress, &MachineProgress::finished);
+        QVERIFY(finished.wait(kDeviceTimeoutMs));
+        for (const QString& name : progress->names())
+            QCOMPARE(progress->resultLine(name), QStringLiteral("read"));
+        QVERIFY(QTest::qWaitFor([&] { return QFile::exists(pdf); }, kDeviceTimeoutMs));
+        QFile written(pdf);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        QVERIFY(written.read(5) == "%PDF-");
+
         QTextDocument document;
         MachineReport::build(document, *machine);
         const QString text = document.toPlainText();
         QVERIFY(text.contains(QLatin1String("Machine report: Test press")));
         for (const MachineUnit* unit : machine->units())
             QVERIFY2(text.contains(unit->name() + QLatin1String(" (")), qPrintable(unit->name()));
-        // Each device's identity as its family gave it, and the CamCon's own report.
-        QVERIFY2(text.contains(QLatin1String("MC200")), qPrintable(text));
+        // The CamCon's own report, every program read first.
         QVERIFY(text.contains(QLatin1String("Commissioning report")));
+        QVERIFY2(!text.contains(QLatin1String("Not read from the device: its content is "
+                                              "unknown.")),
+                 qPrintable(text));
+        // The MC200's: controller, program, axes through the table in use,
+        // variables and flags.
+        for (const char* part : {"MC200", "PLC program", "Axes", "Parameter table in use",
+                                 "Variables", "External flags", "variables read (V1 to V"})
+            QVERIFY2(text.contains(QLatin1String(part)), part);
+        // The Compax3's: identity, status and last error, the set with names.
+        for (const char* part : {"Serial number C3-4711-0815", "Last error (550.1)",
+                                 "Parameter set", "Set 1 velocity", "Read from the drive at"})
+            QVERIFY2(text.contains(QLatin1String(part)), part);
+        QVERIFY(!text.contains(QLatin1String("last answered: never")));
         QVERIFY(text.contains(QLatin1String("Edits on this PC not written to the device: 0")));
-        QTemporaryDir dir;
-        const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
-        QVERIFY(MachineReport::write(pdf, *machine));
-        QFile file(pdf);
-        QVERIFY(file.open(QIODevice::ReadOnly));
-        QVERIFY(file.read(5) == "%PDF-");
+        // One date format on the page: 2025-11-29 14:03, nothing else.
+        static const QRegularExpression other(QStringLiteral(
+            "\\d{1,2}/\\d{1,2}/\\d{2}|\\d{1,2}\\.\\d{1,2}\\.\\d{2}(?!\\d)|[AP]M\\b"));
+        const QRegularExpressionMatch found = other.match(text);
+        QVERIFY2(!found.hasMatch(), qPrintable(found.captured()));
+        static const QRegularExpression iso(QStringLiteral("\\d{4}-\\d{2}-\\d{2} \\d{2}:\\d{2}"));
+        QVERIFY(iso.match(text).hasMatch());
     }
 
     void theDemoMachineIsBuiltIn() {
