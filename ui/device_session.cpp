@@ -81,6 +81,8 @@ void DeviceSession::setDevice(int device) {
     m_protocol = std::move(changed);
     m_worker->setLinkDevice(device);
     if (!another) return;  // the same device addressed again (after a line backup)
+    // Another device: what the last one answered (or did not) says nothing of it.
+    m_freshness.reset();
     setDeviceChecked(false);
     Q_EMIT targetChanged();
 }

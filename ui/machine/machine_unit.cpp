@@ -83,6 +83,8 @@ MainWindow* MachineUnit::createWindow() {
     m_window = new MainWindow(m_session, m_families, m_machineStop);
     // A part of the machine's window, not a window of its own.
     m_window->setWindowFlags(Qt::Widget);
+    // The machine file names the device on a bus: never another number.
+    m_window->connectionPage()->setFindsBusDevice(false);
     connect(m_window, &MainWindow::languageRequested, this, &MachineUnit::languageRequested,
             Qt::QueuedConnection);
     return m_window;

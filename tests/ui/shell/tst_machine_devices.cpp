@@ -301,6 +301,18 @@ private Q_SLOTS:
             }
             // Nothing out of sight to the right.
             QCOMPARE(list->horizontalScrollBar()->maximum(), 0);
+            // The drive's objects carry their units in the language in use.
+            for (FamilyGui* family : machine->unit(QStringLiteral("feed"))->families())
+                if (auto* c3 = qobject_cast<Compax3Gui*>(family)) {
+                    const QString unit =
+                        c3->objects()
+                            ->indexOf(comm::compax3SetVelocity(1), Compax3ObjectModel::Unit)
+                            .data()
+                            .toString();
+                    QCOMPARE(unit, QString::fromLatin1(language) == QLatin1String("de")
+                                       ? QStringLiteral("Einheit/s")
+                                       : QStringLiteral("unit/s"));
+                }
         }
         shell.switchLanguage(QStringLiteral("en"));
     }
