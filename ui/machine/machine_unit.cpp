@@ -21,6 +21,10 @@ QString familyTitle(const QString& familyId) {
                 : familyId;
 }
 
+QString watchTitle() {
+    return MachineUnit::tr("Watch the line");
+}
+
 // "14:03:07": the time of day, to the second (a cycle is half of one).
 QString answerTime(const QDateTime& at) {
     return at.isValid() ? at.toString(QStringLiteral("HH:mm:ss")) : MachineUnit::tr("the connect");
@@ -85,6 +89,8 @@ MainWindow* MachineUnit::createWindow() {
     m_window->setWindowFlags(Qt::Widget);
     // The machine file names the device on a bus: never another number.
     m_window->connectionPage()->setFindsBusDevice(false);
+    // The line's watch runs all the time: not a job for the progress bar.
+    m_window->addQuietJobTitle(watchTitle());
     connect(m_window, &MainWindow::languageRequested, this, &MachineUnit::languageRequested,
             Qt::QueuedConnection);
     return m_window;
@@ -185,7 +191,7 @@ void MachineUnit::watchLine() {
     m_watchOnLine = false;
     const quint64 ticket = ++m_watchTicket;
     m_watchJob = m_session->worker().run<Result<LineAnswer>>(
-        this, comm::JobPriority::Poll, tr("Watch the line"),
+        this, comm::JobPriority::Poll, watchTitle(),
         [](comm::JobContext& context) -> Result<LineAnswer> {
             if (!context.device()) return Error::communication(tr("not connected"));
             return usecases::lineAnswer(*context.device(), false);

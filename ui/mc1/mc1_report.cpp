@@ -10,32 +10,6 @@ namespace cambench {
 
 namespace {
 
-QString paragraph(const QString& text) {
-    return QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped());
-}
-
-QString heading(const QString& text) {
-    return QStringLiteral("<h2>%1</h2>").arg(text.toHtmlEscaped());
-}
-
-// A table of `columns` cells a row; the head row first when given.
-QString table(const QStringList& head, const QList<QStringList>& rows) {
-    QString html = QStringLiteral("<table border='1' cellspacing='0' cellpadding='3'>");
-    if (!head.isEmpty()) {
-        html += QStringLiteral("<tr>");
-        for (const QString& cell : head)
-            html += QStringLiteral("<th>%1</th>").arg(cell.toHtmlEscaped());
-        html += QStringLiteral("</tr>");
-    }
-    for (const QStringList& row : rows) {
-        html += QStringLiteral("<tr>");
-        for (const QString& cell : row)
-            html += QStringLiteral("<td>%1</td>").arg(cell.toHtmlEscaped());
-        html += QStringLiteral("</tr>");
-    }
-    return html + QStringLiteral("</table>");
-}
-
 // "V12 = 4711" cells, eight a row: the variables that are not 0.
 QString variables(const Mc1Backup& values) {
     constexpr int kPerRow = 8;
@@ -49,35 +23,37 @@ QString variables(const Mc1Backup& values) {
         if (rows.isEmpty() || rows.last().size() == kPerRow) rows.append(QStringList());
         rows.last() << QStringLiteral("V%1 = %2").arg(it.key()).arg(it.value());
     }
-    QString html = paragraph(Mc1Report::tr("%1 variables read (V%2 to V%3); %4 of them are 0 and "
-                                           "not listed.")
-                                 .arg(values.variables.size())
-                                 .arg(values.variables.isEmpty() ? 0 : values.variables.firstKey())
-                                 .arg(values.variables.isEmpty() ? 0 : values.variables.lastKey())
-                                 .arg(zero));
-    if (!rows.isEmpty()) html += table({}, rows);
+    QString html =
+        reportParagraph(Mc1Report::tr("%1 variables read (V%2 to V%3); %4 of them are 0 and "
+                                      "not listed.")
+                            .arg(values.variables.size())
+                            .arg(values.variables.isEmpty() ? 0 : values.variables.firstKey())
+                            .arg(values.variables.isEmpty() ? 0 : values.variables.lastKey())
+                            .arg(zero));
+    if (!rows.isEmpty()) html += reportTable({}, rows);
     return html;
 }
 
 // The external flags that are set, by their manual names.
 QString flags(const Mc1Backup& values) {
-    if (values.flags.isEmpty()) return paragraph(Mc1Report::tr("The flags were not read."));
+    if (values.flags.isEmpty()) return reportParagraph(Mc1Report::tr("The flags were not read."));
     QStringList set;
     const int count = int(values.flags.size()) * 8;
     for (int bit = 0; bit < count; ++bit)
         if (quint8(values.flags.at(bit >> 3)) & (1u << (bit & 7)))
             set << comm::mc1PointText(comm::mc1ExternalFlagAt(bit, values.mc200()));
     if (set.isEmpty())
-        return paragraph(Mc1Report::tr("All %1 external flags are clear.").arg(count));
-    return paragraph(Mc1Report::tr("Of %1 external flags, these %2 are set: %3. All others are "
-                                   "clear.")
-                         .arg(count)
-                         .arg(set.size())
-                         .arg(set.join(QStringLiteral(", "))));
+        return reportParagraph(Mc1Report::tr("All %1 external flags are clear.").arg(count));
+    return reportParagraph(
+        Mc1Report::tr("Of %1 external flags, these %2 are set: %3. All others are "
+                      "clear.")
+            .arg(count)
+            .arg(set.size())
+            .arg(set.join(QStringLiteral(", "))));
 }
 
 QString parameterTable(const comm::Mc1AxisParameterTable& parameters) {
-    QString html = paragraph(
+    QString html = reportParagraph(
         parameters.provisional
             ? Mc1Report::tr("Parameter table in use: %1 - PROVISIONAL parameter numbers (a guess, "
                             "not from the controller's documentation): the axis values above are "
@@ -90,8 +66,8 @@ QString parameterTable(const comm::Mc1AxisParameterTable& parameters) {
                             comm::mc1AxisValueName(it.key().second),
                             QStringLiteral("0x%1").arg(it.value(), 4, 16, QLatin1Char('0'))};
     if (!rows.isEmpty())
-        html += table({Mc1Report::tr("Axis"), Mc1Report::tr("Value"), Mc1Report::tr("Parameter")},
-                      rows);
+        html += reportTable(
+            {Mc1Report::tr("Axis"), Mc1Report::tr("Value"), Mc1Report::tr("Parameter")}, rows);
     return html;
 }
 
@@ -155,20 +131,21 @@ void Mc1Report::read(DeviceSession* session, QObject* context,
 
 QString Mc1Report::html(const std::optional<Mc1ReportReading>& reading) {
     if (!reading || !reading->read.isValid())
-        return paragraph(tr("Not read from the controller for this report."));
+        return reportParagraph(tr("Not read from the controller for this report."));
     const Mc1ReportReading& r = *reading;
-    QString html = paragraph(tr("Read from the controller at %1.").arg(reportTime(r.read)));
-    html += heading(tr("Controller"));
-    html += paragraph(r.controller);
+    QString html = reportParagraph(tr("Read from the controller at %1.").arg(reportTime(r.read)));
+    html += reportHeading(tr("Controller"));
+    html += reportParagraph(r.controller);
     if (r.values && r.values->identity.known())
-        html += paragraph(tr("Identity: %1").arg(r.values->identity.text()));
-    html += heading(tr("PLC program"));
-    html += paragraph(r.program ? r.program->summary() : tr("Not read: %1").arg(r.programNote));
+        html += reportParagraph(tr("Identity: %1").arg(r.values->identity.text()));
+    html += reportHeading(tr("PLC program"));
+    html +=
+        reportParagraph(r.program ? r.program->summary() : tr("Not read: %1").arg(r.programNote));
     if (r.program && !r.program->flagTexts().isEmpty())
-        html += paragraph(r.program->flagTexts().join(QStringLiteral(", ")));
-    html += heading(tr("Axes"));
+        html += reportParagraph(r.program->flagTexts().join(QStringLiteral(", ")));
+    html += reportHeading(tr("Axes"));
     if (r.axes.isEmpty()) {
-        html += paragraph(tr("No axis read: %1").arg(r.axesNote));
+        html += reportParagraph(tr("No axis read: %1").arg(r.axesNote));
     } else {
         QList<QStringList> rows;
         for (const comm::Mc1AxisState& axis : r.axes)
@@ -178,14 +155,15 @@ QString Mc1Report::html(const std::optional<Mc1ReportReading>& reading) {
                                 : axis.moving ? tr("moving")
                                               : tr("standing"),
                                 axis.homed ? tr("yes") : tr("no")};
-        html += table({tr("Axis"), tr("Position"), tr("Target"), tr("State"), tr("Homed")}, rows);
-        html += paragraph(tr("Axes: %1.").arg(r.axesNote));
+        html +=
+            reportTable({tr("Axis"), tr("Position"), tr("Target"), tr("State"), tr("Homed")}, rows);
+        html += reportParagraph(tr("Axes: %1.").arg(r.axesNote));
     }
     html += parameterTable(r.parameters);
-    html += heading(tr("Variables"));
-    html += r.values ? variables(*r.values) : paragraph(tr("Not read: %1").arg(r.valuesNote));
-    html += heading(tr("External flags"));
-    html += r.values ? flags(*r.values) : paragraph(tr("Not read: %1").arg(r.valuesNote));
+    html += reportHeading(tr("Variables"));
+    html += r.values ? variables(*r.values) : reportParagraph(tr("Not read: %1").arg(r.valuesNote));
+    html += reportHeading(tr("External flags"));
+    html += r.values ? flags(*r.values) : reportParagraph(tr("Not read: %1").arg(r.valuesNote));
     return html;
 }
 

@@ -4,6 +4,7 @@
 // going away leaves the other as it was; the STOP of any device's page
 // stops the device that moves and the status bar names it; a machine file
 // saved and opened again lists the same devices.
+#include "machine_fixture.h"
 #include "shell_fixture.h"
 
 #include "model/machine/machine_file.h"
@@ -36,22 +37,17 @@ using namespace cambench::test;
 
 namespace {
 
-MachineDevice device(const QString& name, const QString& family,
-                     const QList<QPair<QString, QString>>& options) {
-    return MachineDevice{name, family, options, {}};
-}
-
 // A CamCon and an MC200 V2, each on its own simulated device, unthrottled.
 MachineFile camsAndPlc() {
     MachineFile file;
     file.machine = QStringLiteral("Test press");
-    file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
-                           {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
-                            {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                 << device(QStringLiteral("press-plc"), QStringLiteral("mc1"),
-                           {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
-                            {QStringLiteral("protocol"), QStringLiteral("mc1")},
-                            {QStringLiteral("variant"), QStringLiteral("mc200v2")}});
+    file.devices << machineDevice(QStringLiteral("cams"), QStringLiteral("camcon"),
+                                  {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
+                                   {QStringLiteral("protocol"), QStringLiteral("standard")}})
+                 << machineDevice(QStringLiteral("press-plc"), QStringLiteral("mc1"),
+                                  {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
+                                   {QStringLiteral("protocol"), QStringLiteral("mc1")},
+                                   {QStringLiteral("variant"), QStringLiteral("mc200v2")}});
     return file;
 }
 
@@ -84,13 +80,6 @@ std::unique_ptr<CamsAndPlc> openCamsAndPlc() {
     return open;
 }
 
-QTreeWidgetItem* row(const Machine& machine, const QString& name) {
-    QTreeWidget* list = machine.window()->deviceList();
-    for (int i = 0; i < list->topLevelItemCount(); ++i)
-        if (list->topLevelItem(i)->text(MachineWindow::Name) == name) return list->topLevelItem(i);
-    return nullptr;
-}
-
 }  // namespace
 
 class TestMachine : public QObject {
@@ -115,9 +104,9 @@ private Q_SLOTS:
         QVERIFY(!camsIdentity.contains(QLatin1String("MC200")));
         // The list: name, family, port, lamp in words.
         QCOMPARE(machine->window()->deviceList()->topLevelItemCount(), 2);
-        QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::Port),
+        QCOMPARE(machineRow(*machine, QStringLiteral("press-plc"))->text(MachineWindow::Port),
                  QStringLiteral("sim:variant=mc200v2"));
-        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
                  QStringLiteral("connected"));
         // Switching shows the other device's pages.
         machine->window()->showDevice(QStringLiteral("press-plc"));
@@ -130,13 +119,13 @@ private Q_SLOTS:
         QVERIFY(plc->session()->disconnectFromDevice());
         QVERIFY(QTest::qWaitFor([&] { return plc->lamp() == MachineUnit::Lamp::Offline; },
                                 kDeviceTimeoutMs));
-        QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
                  QStringLiteral("offline"));
         QTest::qWait(200);
         QCOMPARE(cams->lamp(), MachineUnit::Lamp::Connected);
         QVERIFY(cams->session()->deviceChecked());
         QCOMPARE(cams->window()->connectionStrip()->text(), camsIdentity);
-        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
                  QStringLiteral("connected"));
         QCOMPARE(camsLine.size(), 0);  // the CamCon's line was not touched
     }
@@ -272,7 +261,7 @@ private Q_SLOTS:
         QCOMPARE(open->machine->window()->currentDevice(), QStringLiteral("feed"));
         QCOMPARE(unit->lamp(), MachineUnit::Lamp::Offline);
         QVERIFY(!unit->session()->wantsConnection());
-        QVERIFY(row(*open->machine, QStringLiteral("feed"))
+        QVERIFY(machineRow(*open->machine, QStringLiteral("feed"))
                     ->text(MachineWindow::State)
                     .startsWith(QLatin1String("not connected yet")));
         QVERIFY(!open->machine->addDevice(feed));  // the name is taken
@@ -286,7 +275,7 @@ private Q_SLOTS:
         QCOMPARE(file.devices.size(), 3);
         QCOMPARE(file.devices.at(2).family, QStringLiteral("compax3"));
         QCOMPARE(file.devices.at(2).option(QStringLiteral("port")), QStringLiteral("sim"));
-        QCOMPARE(row(*open->machine, QStringLiteral("feed"))->text(MachineWindow::Port),
+        QCOMPARE(machineRow(*open->machine, QStringLiteral("feed"))->text(MachineWindow::Port),
                  QStringLiteral("sim"));
         QCOMPARE(open->cams->lamp(), MachineUnit::Lamp::Connected);
     }
@@ -306,7 +295,7 @@ private Q_SLOTS:
             QTest::qWaitFor([&] { return cams->session()->deviceChecked(); }, kDeviceTimeoutMs));
         QCOMPARE(plc->lamp(), MachineUnit::Lamp::Gone);
         QVERIFY(!plc->session()->wantsConnection());  // no line opened for it
-        QVERIFY(row(*machine, QStringLiteral("press-plc"))
+        QVERIFY(machineRow(*machine, QStringLiteral("press-plc"))
                     ->text(MachineWindow::State)
                     .contains(QLatin1String("not opened: press-plc: the protocol")));
     }
@@ -315,8 +304,8 @@ private Q_SLOTS:
     // device before printing (a bar per device), one date format.
     void theReportHasTheMachineAndEachDevice() {
         MachineFile file = camsAndPlc();
-        file.devices << device(QStringLiteral("feed"), QStringLiteral("compax3"),
-                               {{QStringLiteral("port"), QStringLiteral("sim")}});
+        file.devices << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
+                                      {{QStringLiteral("port"), QStringLiteral("sim")}});
         Shell shell;
         Machine* machine = shell.openMachine(file, {});
         QVERIFY(waitIdentified(*machine));

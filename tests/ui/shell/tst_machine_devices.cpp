@@ -4,6 +4,7 @@
 // while no page of its device polls) and the unwritten edits of every
 // family, one menu bar, columns that fit in both languages. Real widgets,
 // the real QSerialPort, each simulator on its own pty.
+#include "machine_fixture.h"
 #include "shell_fixture.h"
 
 #include "comm/compax3/compax3_objects.h"
@@ -55,18 +56,6 @@ private:
     bool m_open = false;
 };
 
-MachineDevice device(const QString& name, const QString& family,
-                     const QList<QPair<QString, QString>>& options) {
-    return MachineDevice{name, family, options, {}};
-}
-
-QTreeWidgetItem* row(const Machine& machine, const QString& name) {
-    QTreeWidget* list = machine.window()->deviceList();
-    for (int i = 0; i < list->topLevelItemCount(); ++i)
-        if (list->topLevelItem(i)->text(MachineWindow::Name) == name) return list->topLevelItem(i);
-    return nullptr;
-}
-
 bool waitLamp(const MachineUnit* unit, MachineUnit::Lamp lamp) {
     return QTest::qWaitFor([&] { return unit->lamp() == lamp; }, kDeviceTimeoutMs);
 }
@@ -106,15 +95,15 @@ private Q_SLOTS:
         MachineFile file;
         file.machine = QStringLiteral("Swapped press");
         // "cams" on the MC200's pty, "press-plc" on the CamCon's.
-        file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
-                               {{QStringLiteral("port"), mc200.path()},
-                                {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                     << device(QStringLiteral("press-plc"), QStringLiteral("mc1"),
-                               {{QStringLiteral("port"), camcon.path()},
-                                {QStringLiteral("protocol"), QStringLiteral("mc1")},
-                                {QStringLiteral("variant"), QStringLiteral("mc200v2")}})
-                     << device(QStringLiteral("feed"), QStringLiteral("compax3"),
-                               {{QStringLiteral("port"), drive.path()}});
+        file.devices << machineDevice(QStringLiteral("cams"), QStringLiteral("camcon"),
+                                      {{QStringLiteral("port"), mc200.path()},
+                                       {QStringLiteral("protocol"), QStringLiteral("standard")}})
+                     << machineDevice(QStringLiteral("press-plc"), QStringLiteral("mc1"),
+                                      {{QStringLiteral("port"), camcon.path()},
+                                       {QStringLiteral("protocol"), QStringLiteral("mc1")},
+                                       {QStringLiteral("variant"), QStringLiteral("mc200v2")}})
+                     << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
+                                      {{QStringLiteral("port"), drive.path()}});
         // The drive the machine file records is another one than answers.
         file.devices[2].identity.set(QStringLiteral("serial"), QStringLiteral("C3-0001"));
         file.devices[2].identity.set(QStringLiteral("type"), QStringLiteral("S025V2"));
@@ -126,7 +115,8 @@ private Q_SLOTS:
         MachineUnit* cams = machine->unit(QStringLiteral("cams"));
         MachineUnit* plc = machine->unit(QStringLiteral("press-plc"));
         QVERIFY(waitLamp(feed, MachineUnit::Lamp::AnotherDevice));
-        const QString said = row(*machine, QStringLiteral("feed"))->text(MachineWindow::State);
+        const QString said =
+            machineRow(*machine, QStringLiteral("feed"))->text(MachineWindow::State);
         QVERIFY2(said.startsWith(QLatin1String("another device answers: expected serial "
                                                "C3-0001")) &&
                      said.contains(QLatin1String("found serial C3-0002")),
@@ -140,7 +130,7 @@ private Q_SLOTS:
                          },
                          kDeviceTimeoutMs),
                      qPrintable(unit->name() + QLatin1String(": ") + unit->stateText()));
-            const QString text = row(*machine, unit->name())->text(MachineWindow::State);
+            const QString text = machineRow(*machine, unit->name())->text(MachineWindow::State);
             QVERIFY2(text.startsWith(QLatin1String("another device answers")) ||
                          text.startsWith(QLatin1String("no answer")) ||
                          text.startsWith(QLatin1String("did not identify itself")),
@@ -174,11 +164,11 @@ private Q_SLOTS:
         QVERIFY(camcon.isOpen() && drive.isOpen());
         MachineFile file;
         file.machine = QStringLiteral("Press");
-        file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
-                               {{QStringLiteral("port"), camcon.path()},
-                                {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                     << device(QStringLiteral("feed"), QStringLiteral("compax3"),
-                               {{QStringLiteral("port"), drive.path()}});
+        file.devices << machineDevice(QStringLiteral("cams"), QStringLiteral("camcon"),
+                                      {{QStringLiteral("port"), camcon.path()},
+                                       {QStringLiteral("protocol"), QStringLiteral("standard")}})
+                     << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
+                                      {{QStringLiteral("port"), drive.path()}});
         Shell shell;
         Machine* machine = shell.openMachine(file, {});
         MachineUnit* feed = machine->unit(QStringLiteral("feed"));
@@ -192,7 +182,7 @@ private Q_SLOTS:
         drive.kill();
         QVERIFY(QTest::qWaitFor(
             [&] {
-                return row(*machine, QStringLiteral("feed"))
+                return machineRow(*machine, QStringLiteral("feed"))
                     ->text(MachineWindow::State)
                     .startsWith(QLatin1String("gone"));
             },
@@ -208,8 +198,8 @@ private Q_SLOTS:
     void aCompax3EditCountsInTheListAndTitle() {
         MachineFile file;
         file.machine = QStringLiteral("Feed line");
-        file.devices << device(QStringLiteral("feed"), QStringLiteral("compax3"),
-                               {{QStringLiteral("port"), QStringLiteral("sim")}});
+        file.devices << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
+                                      {{QStringLiteral("port"), QStringLiteral("sim")}});
         Shell shell;
         Machine* machine = shell.openMachine(file, {});
         MachineUnit* feed = machine->unit(QStringLiteral("feed"));
@@ -221,7 +211,7 @@ private Q_SLOTS:
         QVERIFY(gui);
         QVERIFY(gui->objects()->setEdit(comm::compax3SetVelocity(1), QStringLiteral("321")));
         QCOMPARE(feed->unwrittenCount(), 1);
-        QCOMPARE(row(*machine, QStringLiteral("feed"))->text(MachineWindow::Unwritten),
+        QCOMPARE(machineRow(*machine, QStringLiteral("feed"))->text(MachineWindow::Unwritten),
                  QStringLiteral("1"));
         QVERIFY(machine->window()->isWindowModified());
         QVERIFY2(machine->window()->windowTitle().contains(QLatin1String("not written")),
@@ -235,10 +225,11 @@ private Q_SLOTS:
         // A language switch rebuilds the windows; the typed value stays.
         shell.switchLanguage(QStringLiteral("en"));
         QCOMPARE(feed->unwrittenCount(), 1);
-        QCOMPARE(row(*machine, QStringLiteral("feed"))->text(MachineWindow::Unwritten),
+        QCOMPARE(machineRow(*machine, QStringLiteral("feed"))->text(MachineWindow::Unwritten),
                  QStringLiteral("1"));
         gui->objects()->clearEdits();
-        QCOMPARE(row(*machine, QStringLiteral("feed"))->text(MachineWindow::Unwritten), QString());
+        QCOMPARE(machineRow(*machine, QStringLiteral("feed"))->text(MachineWindow::Unwritten),
+                 QString());
         QVERIFY(!machine->window()->isWindowModified());
     }
 
@@ -247,11 +238,11 @@ private Q_SLOTS:
     void oneMenuBarWithTheShownDevicesMenus() {
         MachineFile file;
         file.machine = QStringLiteral("Two");
-        file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
-                               {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
-                                {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                     << device(QStringLiteral("feed"), QStringLiteral("compax3"),
-                               {{QStringLiteral("port"), QStringLiteral("sim")}});
+        file.devices << machineDevice(QStringLiteral("cams"), QStringLiteral("camcon"),
+                                      {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
+                                       {QStringLiteral("protocol"), QStringLiteral("standard")}})
+                     << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
+                                      {{QStringLiteral("port"), QStringLiteral("sim")}});
         Shell shell;
         Machine* machine = shell.openMachine(file, {});
         MachineWindow* window = machine->window();
@@ -271,15 +262,16 @@ private Q_SLOTS:
     void theListsColumnsFitInBothLanguages() {
         MachineFile file;
         file.machine = QStringLiteral("Three");
-        file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
-                               {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
-                                {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                     << device(QStringLiteral("press-plc"), QStringLiteral("mc1"),
-                               {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
-                                {QStringLiteral("protocol"), QStringLiteral("mc1")},
-                                {QStringLiteral("variant"), QStringLiteral("mc200v2")}})
-                     << device(QStringLiteral("feed"), QStringLiteral("compax3"),
-                               {{QStringLiteral("port"), QStringLiteral("sim")}});
+        file.devices << machineDevice(QStringLiteral("cams"), QStringLiteral("camcon"),
+                                      {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
+                                       {QStringLiteral("protocol"), QStringLiteral("standard")}})
+                     << machineDevice(
+                            QStringLiteral("press-plc"), QStringLiteral("mc1"),
+                            {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
+                             {QStringLiteral("protocol"), QStringLiteral("mc1")},
+                             {QStringLiteral("variant"), QStringLiteral("mc200v2")}})
+                     << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
+                                      {{QStringLiteral("port"), QStringLiteral("sim")}});
         Shell shell;
         Machine* machine = shell.openMachine(file, {});
         for (const char* language : {"en", "de"}) {
