@@ -38,15 +38,6 @@ QStringList CommandRegistry::familiesWith(const QString& name) const {
     return families;
 }
 
-void CommandRegistry::setMachineVerbs(const QString& familyId, MachineVerbs verbs) {
-    m_machineVerbs.insert(familyId, std::move(verbs));
-}
-
-const MachineVerbs* CommandRegistry::machineVerbs(const QString& familyId) const {
-    const auto it = m_machineVerbs.constFind(familyId);
-    return it == m_machineVerbs.cend() ? nullptr : &*it;
-}
-
 QString CommandRegistry::help() const {
     QString text;
     for (const auto& [familyId, lines] : m_help) {

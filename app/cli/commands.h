@@ -3,7 +3,6 @@
 #include "cli_options.h"
 #include "cli_session.h"
 
-#include <QHash>
 #include <QList>
 #include <QString>
 
@@ -16,18 +15,6 @@ struct CommandGroup {
     QString familyId;  // the family whose device it works on; empty: any family
     QString name;
     int (*run)(CliSession& session, CommandArgs& args) = nullptr;
-};
-
-// How the machine commands back up, verify and restore a device of one
-// family: by the family's own commands, as words after the options;
-// "{file}" stands for the device's file in the machine's backup folder.
-struct MachineVerbs {
-    QStringList backup;   // {"backup", "-o", "{file}"}
-    QStringList verify;   // {"verify", "{file}"}: exit 0 equal, 1 differs
-    QStringList restore;  // {"restore", "{file}"}
-    // Added to restore when the person accepted the device answering as the
-    // replacement of the one the file was taken from: {"--replacement"}.
-    QStringList replacement;
 };
 
 // The command groups of cambench-cli: the shell's own (ports, detect) and
@@ -48,13 +35,8 @@ public:
     QStringList familiesWith(const QString& name) const;
     QString help() const;
 
-    void setMachineVerbs(const QString& familyId, MachineVerbs verbs);
-    // Null for a family whose devices a machine backup cannot take.
-    const MachineVerbs* machineVerbs(const QString& familyId) const;
-
 private:
     QList<CommandGroup> m_groups;
-    QHash<QString, MachineVerbs> m_machineVerbs;
     QList<std::pair<QString, QString>> m_help;
 };
 

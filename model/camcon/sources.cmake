@@ -40,6 +40,8 @@ target_sources(cambench_model PRIVATE
   camcon/project_file.cpp
   camcon/eeprom_image_file.h
   camcon/eeprom_image_file.cpp
+  camcon/project_content.h
+  camcon/project_content.cpp
   camcon/csv_io.h
   camcon/csv_io.cpp
   camcon/settings_file.h

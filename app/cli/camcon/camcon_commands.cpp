@@ -106,11 +106,6 @@ void registerCamConCommands(CommandRegistry& registry) {
     };
     for (const auto& [name, run] : groups) registry.add({family, QLatin1String(name), run});
     registry.addHelp(family, camConHelp());
-    // A machine backup holds the CamCon's whole EEPROM image.
-    registry.setMachineVerbs(family, {{"backup", "-o", "{file}"},
-                                      {"verify", "{file}"},
-                                      {"restore", "{file}"},
-                                      {"--replacement"}});
 }
 
 }  // namespace cambench::cli

@@ -113,11 +113,6 @@ Result<QList<Compax3ObjectId>> parseCompax3Objects(const QStringList& words) {
 void registerCompax3Commands(CommandRegistry& registry) {
     registry.add({QStringLiteral("compax3"), QStringLiteral("c3"), runC3});
     registry.addHelp(QStringLiteral("compax3"), compax3Help());
-    // The drive's parameter set.
-    registry.setMachineVerbs(QStringLiteral("compax3"), {{"c3", "backup", "-o", "{file}"},
-                                                         {"c3", "verify", "{file}"},
-                                                         {"c3", "restore", "{file}"},
-                                                         {"--replacement"}});
 }
 
 }  // namespace cambench::cli

@@ -369,10 +369,6 @@ int runMc1Points(CliSession& session, CommandArgs& args, bool io) {
 void registerMc1Commands(CommandRegistry& registry) {
     registry.add({QStringLiteral("mc1"), QStringLiteral("mc"), runMc});
     registry.addHelp(QStringLiteral("mc1"), mc1Help());
-    registry.setMachineVerbs(QStringLiteral("mc1"), {{"mc", "backup", "-o", "{file}"},
-                                                     {"mc", "verify", "{file}"},
-                                                     {"mc", "restore", "{file}"},
-                                                     {"--replacement"}});
 }
 
 }  // namespace cambench::cli

@@ -30,9 +30,18 @@ QString safetyBackupPath(const QString& imagePath, const QDateTime& utc);
 // Reads the whole EEPROM (with the device's identity in image.device).
 Result<EepromImage> backupDevice(comm::CamConDevice& connection,
                                  const UseCaseProgress& progress = {});
+
+// What a backup holds besides the blocks.
+enum class BackupContent {
+    Decoded,    // the content read and decoded too (image.content): a backup a person reads
+    ImageOnly,  // the blocks alone: the safety backup just before a restore
+};
 // Backs up into `path` (atomically); the image is returned as saved.
+// Decoded: after the blocks, everything the device holds is read as a
+// project (readEverything) into image.content.
 Result<EepromImage> backupToFile(comm::CamConDevice& connection, const QString& path,
-                                 const UseCaseProgress& progress = {});
+                                 const UseCaseProgress& progress = {},
+                                 BackupContent content = BackupContent::Decoded);
 
 struct RestoreOptions {
     // The person's word that the device answering replaces the one the
@@ -72,6 +81,10 @@ struct VerifyReport {
     // "the device equals IMAGE (N blocks)" or what differs.
     QString text(const QString& imagePath) const;
 };
+
+// The numbers (4 hex digits) of the blocks where two images differ, the
+// first ten.
+QStringList differingEepromBlocks(const QList<EepromBlock>& a, const QList<EepromBlock>& b);
 
 // Reads the device's EEPROM and compares it with `image`.
 Result<VerifyReport> verifyImage(comm::CamConDevice& connection, const EepromImage& image,
