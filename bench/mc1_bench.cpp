@@ -1,6 +1,7 @@
 #include "mc1_bench.h"
 
 #include "bench_run.h"
+#include "mc1_live_stop_bench.h"
 
 #include "comm/mc1/mc1_controller.h"
 #include "comm/sim/mc1/mc1_simulator.h"
@@ -137,6 +138,7 @@ void benchStop() {
 
 void benchMc1(bool stopOnly) {
     benchStop();
+    benchMc1LiveStop();
     if (stopOnly) return;
     QTextStream(stdout) << "| operation | controller | wire B | requests | time | wire limit "
                            "| ratio |\n| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";

@@ -18,6 +18,10 @@ enum class ErrorKind {
     InvalidData,    // a file or a value that fails validation
     Cancelled,      // the user cancelled
     Usage,          // a caller asked for something impossible (wrong arguments)
+    // What was asked is not there on the connected device: its protocol or
+    // variant lacks the command or the section, or the device is not the
+    // variant named. Nothing was sent for it.
+    Unsupported,
 };
 
 struct Error {
@@ -39,6 +43,9 @@ struct Error {
                 0};
     }
     static Error usage(QString message) { return {ErrorKind::Usage, std::move(message), 0}; }
+    static Error unsupported(QString message) {
+        return {ErrorKind::Unsupported, std::move(message), 0};
+    }
 };
 
 // Value or error, never both. Modelled on ModbusScope's result.h: per-item

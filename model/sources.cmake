@@ -22,4 +22,6 @@ target_sources(cambench_model PRIVATE
   json_reader.cpp
   json_file.h
   json_file.cpp
+  file_differences.h
+  file_differences.cpp
 )

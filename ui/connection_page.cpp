@@ -122,6 +122,7 @@ ConnectionPage::ConnectionPage(DeviceSession* session, QWidget* parent)
         tr("Ask every device number of a bus for an answer, or identify the one device of a "
            "point-to-point line."));
     m_devices = new QListWidget;
+    m_devices->setObjectName(QStringLiteral("busDevices"));
     m_devices->setToolTip(tr("Double-click a device to work with it."));
     busLayout->addWidget(m_scan, 0, Qt::AlignLeft);
     busLayout->addWidget(m_devices);
@@ -155,8 +156,15 @@ ConnectionPage::ConnectionPage(DeviceSession* session, QWidget* parent)
     connect(m_port->lineEdit(), &QLineEdit::returnPressed, m_connect, &QPushButton::click);
     connect(m_port, &QComboBox::currentTextChanged, this, &ConnectionPage::updateButtons);
     connect(m_scan, &QPushButton::clicked, this, &ConnectionPage::scanBus);
-    connect(m_devices, &QListWidget::itemActivated, this,
-            [this](QListWidgetItem* item) { chooseDevice(item->data(Qt::UserRole).toInt()); });
+    connect(m_devices, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        const int device = item->data(Qt::UserRole).toInt();
+        // From now on the STOP would reach the other drive: while this one
+        // may move, asked first (STOP offered), as Disconnect does.
+        if (device != m_session->protocol().device() &&
+            !m_session->mayLeaveDevice(tr("Switch to device %1").arg(device)))
+            return;
+        chooseDevice(device);
+    });
     connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         if (state == comm::ConnectionState::Connecting) m_busSearched = false;
     });

@@ -96,14 +96,21 @@ public:
     quint64 run(QObject* context, const QString& title, Work<Device, T> work,
                 std::function<void(Result<T>)> done,
                 comm::JobPriority priority = comm::JobPriority::User, const QString& pollKey = {}) {
-        return m_worker->run<Result<T>>(
-            context, priority, title,
-            [work = std::move(work)](comm::JobContext& job) -> Result<T> {
-                Result<Device*> device = job.family<Device>();
-                if (!device) return device.error();
-                return work(**device, job);
-            },
-            std::move(done), pollKey);
+        return m_worker->run<Result<T>>(context, priority, title,
+                                        onFamily<Device, T>(std::move(work)), std::move(done),
+                                        pollKey);
+    }
+
+    // As run(), for a job that can start motion or change a drive's power
+    // (a move, a jog, a start, enable, a program run): queued only when the
+    // line is free; when another job runs or waits, `done` gets the refusal
+    // at once, naming it (comm::JobRunner::submitWhenFree). Motion never
+    // waits in a queue to start by itself later.
+    template <class Device, class T>
+    quint64 runMotion(QObject* context, const QString& title, Work<Device, T> work,
+                      std::function<void(Result<T>)> done) {
+        return m_worker->runWhenFree<Result<T>>(
+            context, title, onFamily<Device, T>(std::move(work)), std::move(done));
     }
 
 Q_SIGNALS:
@@ -121,6 +128,16 @@ Q_SIGNALS:
 
 private:
     void onStateChanged(comm::ConnectionState state, const QString& message);
+    // `work` with the connected device as `Device`; a Usage error when the
+    // connection reaches another family.
+    template <class Device, class T>
+    static std::function<Result<T>(comm::JobContext&)> onFamily(Work<Device, T> work) {
+        return [work = std::move(work)](comm::JobContext& job) -> Result<T> {
+            Result<Device*> device = job.family<Device>();
+            if (!device) return device.error();
+            return work(**device, job);
+        };
+    }
 
     std::unique_ptr<comm::JobRunner> m_worker;
     MotionStop* m_motionStop = nullptr;

@@ -110,6 +110,7 @@ void LiveDevicePage::showFreshness() {
         }
         widget->setToolTip(live ? QString() : note);
     }
+    if (m_reportsMotion && !live) m_session->motionStop()->noteLiveStatusOld(this);
     if (m_freshnessLine) {
         m_freshnessLine->setText(note);
         QFont font = m_freshnessLine->font();
@@ -117,6 +118,17 @@ void LiveDevicePage::showFreshness() {
         m_freshnessLine->setFont(font);
     }
     freshnessChanged();
+}
+
+void LiveDevicePage::reportMotion(bool moving, bool wholeDevice, const QString& what) {
+    m_reportsMotion = true;
+    using Motion = MotionStop::Motion;
+    m_session->motionStop()->noteLiveStatus(
+        this, moving ? Motion::Moving : (wholeDevice ? Motion::Standing : Motion::Unknown), what);
+}
+
+void LiveDevicePage::reportMotionSent(const QString& what) {
+    m_session->motionStop()->noteMotionSent(what);
 }
 
 QLabel* LiveDevicePage::resultLine() {

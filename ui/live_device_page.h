@@ -83,11 +83,20 @@ protected:
                     return;
                 }
                 const ErrorKind kind = result.error().kind;
-                if (kind != ErrorKind::Usage) pollAnswered(kind == ErrorKind::DeviceError);
+                // A request this device or protocol lacks, or a wrong
+                // argument, says nothing about the line.
+                if (kind != ErrorKind::Usage && kind != ErrorKind::Unsupported)
+                    pollAnswered(kind == ErrorKind::DeviceError);
                 notRead(result.error());
             },
             comm::JobPriority::Poll, pollKey);
     }
+    // The device's own status as this page read it now, for the machine's
+    // list (MotionStop::noteLiveStatus): said as a fact only while this
+    // page's values are live.
+    void reportMotion(bool moving, bool wholeDevice, const QString& what);
+    // The device acknowledged a move, jog or start: it may move now.
+    void reportMotionSent(const QString& what);
     // A warning box: `question` with `detail` below, Cancel the default; a
     // button named `title` confirms. True on that button.
     bool confirm(const QString& title, const QString& question, const QString& detail = {});
@@ -124,7 +133,8 @@ private:
     QLabel* m_result = nullptr;
     quint64 m_pollJob = 0;
     bool m_pollOnLine = false;
-    bool m_pollProgress = false;  // answers arrived for the poll since the last cycle
+    bool m_pollProgress = false;   // answers arrived for the poll since the last cycle
+    bool m_reportsMotion = false;  // reportMotion() was called: its status goes old with it
 };
 
 }  // namespace cambench

@@ -10,6 +10,7 @@
 #include "last_write_report.h"
 #include "motion_leave_question.h"
 #include "motion_stop.h"
+#include "program_stop.h"
 #include "report_dialog.h"
 #include "sentence.h"
 #include "stop_bar.h"
@@ -74,7 +75,7 @@ MainWindow::MainWindow(DeviceSession* session, const QList<FamilyGui*>& families
                "%1 does the same from every page.")
                 .arg(StopShortcut::key().toString(QKeySequence::NativeText)));
     else
-        new StopShortcut(session->motionStop(), this);
+        ProgramStop::instance().add(session->motionStop());  // Escape and every dialog's STOP
     layout->addLayout(body, 1);
     setCentralWidget(central);
 

@@ -4,8 +4,10 @@
 #include "shell_log.h"
 
 #include <QEventLoop>
+#include <QLocale>
 #include <QTimer>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -32,6 +34,8 @@ QStringList MotionStop::jobTitles() {
 
 MotionStop::MotionStop(DeviceSession* session) : StopControl(session), m_session(session) {
     connect(session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
+        // What was known of the motion was the device's on the line before.
+        if (state != comm::ConnectionState::Connected) setMotion(Motion::Unknown, {});
         switch (state) {
             case comm::ConnectionState::Connected:
                 askAvailability();
@@ -55,7 +59,62 @@ MotionStop::MotionStop(DeviceSession* session) : StopControl(session), m_session
     connect(session, &DeviceSession::deviceCheckedChanged, this, [this](bool checked) {
         if (checked) askAvailability();
     });
-    connect(session, &DeviceSession::targetChanged, this, &MotionStop::askAvailability);
+    connect(session, &DeviceSession::targetChanged, this, [this] {
+        setMotion(Motion::Unknown, {});
+        askAvailability();
+    });
+    connect(this, &StopControl::stopFinished, this, [this](const MotionStopReport& report) {
+        const QString at = QLocale().toString(lastStopTime().time(), QLocale::LongFormat);
+        if (report.allAcknowledged())
+            setMotion(Motion::Unknown, tr("STOP acknowledged at %1").arg(at));
+        else
+            setMotion(Motion::MayMove, tr("may move: STOP NOT acknowledged at %1").arg(at));
+    });
+}
+
+void MotionStop::setMotion(Motion motion, const QString& text) {
+    if (m_motion == motion && m_motionText == text) return;
+    m_motion = motion;
+    m_motionText = text;
+    Q_EMIT motionChanged();
+}
+
+void MotionStop::noteLiveStatus(const QObject* page, Motion motion, const QString& what) {
+    m_liveFrom = page;
+    m_liveAt = QTime::currentTime();
+    switch (motion) {
+        case Motion::Moving:
+            setMotion(motion, tr("moving (%1)").arg(what));
+            break;
+        case Motion::Standing:
+            setMotion(motion, tr("standing (%1)").arg(what));
+            break;
+        case Motion::Unknown:
+            // A "moving" read before is no longer known; a STOP's or a
+            // move's note stays until a status says more.
+            if (m_motion == Motion::Moving || m_motion == Motion::Standing)
+                setMotion(Motion::Unknown, {});
+            break;
+        case Motion::MayMove:
+            setMotion(motion, tr("may move (%1)").arg(what));
+            break;
+    }
+}
+
+void MotionStop::noteLiveStatusOld(const QObject* page) {
+    if (page != m_liveFrom) return;
+    const QString at = QLocale().toString(m_liveAt, QLocale::LongFormat);
+    if (m_motion == Motion::Moving)
+        setMotion(Motion::MayMove, tr("may move: moving when last read at %1").arg(at));
+    else if (m_motion == Motion::Standing)
+        setMotion(Motion::Unknown, {});
+}
+
+void MotionStop::noteMotionSent(const QString& what) {
+    if (m_motion == Motion::Moving) return;  // the live status says more
+    setMotion(Motion::MayMove,
+              tr("may move: %1 sent at %2")
+                  .arg(what, QLocale().toString(QTime::currentTime(), QLocale::LongFormat)));
 }
 
 bool MotionStop::armed() const {
@@ -96,7 +155,14 @@ void MotionStop::stopAll() {
     stopThisDevice();
 }
 
+void MotionStop::raiseStopGeneration() {
+    m_session->worker().raiseStopGeneration();
+}
+
 void MotionStop::stopThisDevice() {
+    // At once, before anything else: no motion of a job asked before now
+    // leaves, also while the STOP's own job waits for the line.
+    raiseStopGeneration();
     if (!m_available) return;
     qCInfo(shellLog) << "STOP pressed";
     // A move that waits for the line must not run after the STOP; the
@@ -182,6 +248,11 @@ Result<MotionStopReport> MotionStop::stopAndWait(int timeoutMs) {
 }
 
 QString MotionStop::reportSummary(const MotionStopReport& report) {
+    const bool noneSent =
+        std::all_of(report.lines.cbegin(), report.lines.cend(),
+                    [](const MotionStopLine& line) { return line.nothingToStop; });
+    if (report.allAcknowledged() && noneSent)
+        return tr("Nothing to stop: nothing was powered, and nothing was sent.");
     if (report.allAcknowledged()) return tr("STOP acknowledged by every axis and drive.");
     return tr("STOP NOT acknowledged everywhere – use the machine's emergency stop.");
 }
@@ -189,10 +260,15 @@ QString MotionStop::reportSummary(const MotionStopReport& report) {
 QString MotionStop::reportText(const MotionStopReport& report) {
     QStringList lines;
     for (const MotionStopLine& line : report.lines) {
+        if (line.absent) {  // no alarm: there is nothing to stop
+            lines << tr("%1: %2").arg(line.what, line.detail);
+            continue;
+        }
         QString text =
             line.acknowledged
                 ? tr("%1: acknowledged").arg(line.what)
                 : tr("%1: NOT acknowledged – use the machine's emergency stop").arg(line.what);
+        if (line.nothingToStop) text = tr("%1: not powered, nothing to stop").arg(line.what);
         if (!line.detail.isEmpty()) text += QStringLiteral(" – ") + line.detail;
         lines << text;
     }

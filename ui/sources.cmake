@@ -31,6 +31,12 @@ target_sources(cambench_ui PRIVATE
   stop_bar.cpp
   stop_shortcut.h
   stop_shortcut.cpp
+  stop_round.h
+  stop_round.cpp
+  program_stop.h
+  program_stop.cpp
+  dialog_stop.h
+  dialog_stop.cpp
   stop_button.h
   stop_button.cpp
   section_page.h

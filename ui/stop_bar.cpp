@@ -7,8 +7,16 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollArea>
 
 namespace cambench {
+
+namespace {
+
+// The bar's height, whatever its report says.
+constexpr int kBarHeight = 48;
+
+}  // namespace
 
 StopBar::StopBar(StopControl* stop, const QString& shortcutText, QWidget* parent)
     : QFrame(parent),
@@ -17,21 +25,33 @@ StopBar::StopBar(StopControl* stop, const QString& shortcutText, QWidget* parent
       m_report(new QLabel) {
     setObjectName(QStringLiteral("stopBar"));
     m_button->setObjectName(QStringLiteral("shellStop"));
-    m_button->setMinimumHeight(48);
+    m_button->setFixedHeight(kBarHeight);
     m_button->setMinimumWidth(200);
     styleAsStop(m_button);
     m_button->setToolTip(tr("Stops every axis and drive of the device, without a question, "
-                            "ahead of everything waiting for the line. %1 does the same "
-                            "from every page.")
+                            "ahead of everything waiting for the line. %1 stops it too, from "
+                            "every window, dialog and menu of CamBench.")
                              .arg(shortcutText));
     m_button->setFocusPolicy(Qt::NoFocus);  // a click leaves the focus where the work is
     m_report->setObjectName(QStringLiteral("shellStopReport"));
     m_report->setWordWrap(true);
     m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_report->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    // The report (one line per axis, ten and more in a machine) scrolls in
+    // a place of its own, as high as the button: the bar never grows, and
+    // the page below never moves under the pointer.
+    auto* scroll = new QScrollArea;
+    scroll->setObjectName(QStringLiteral("shellStopReportArea"));
+    scroll->setWidget(m_report);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFixedHeight(kBarHeight);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_button);
-    layout->addWidget(m_report, 1);
+    layout->addWidget(scroll, 1);
+    setFixedHeight(kBarHeight);
     connect(m_button, &QPushButton::clicked, stop, &StopControl::stopAll);
     connect(stop, &StopControl::availabilityChanged, this, &StopBar::update);
     connect(stop, &StopControl::stopStarted, this, [this] {

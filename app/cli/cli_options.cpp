@@ -3,13 +3,16 @@
 #include "commands.h"
 
 #include "comm/device/family_registry.h"
+#include "comm/transport/transport_registry.h"
+
+#include <functional>
 
 namespace cambench::cli {
 
 namespace {
 
 Error usageError(const QString& what) {
-    return Error::usage(QStringLiteral("%1; see `cambench-cli --help`").arg(what));
+    return Error::usage(what);
 }
 
 // Splits `--name=value`; returns true when `arg` names option `name`.
@@ -67,105 +70,253 @@ Result<int> parseIntArgument(const QString& text, const QString& what, int min, 
     return value;
 }
 
+namespace {
+
+// The options of the shell, each taking a value.
+const QStringList& shellOptions() {
+    static const QStringList names = {QStringLiteral("--port"),     QStringLiteral("--family"),
+                                      QStringLiteral("--protocol"), QStringLiteral("--baud"),
+                                      QStringLiteral("--device"),   QStringLiteral("--pc-number"),
+                                      QStringLiteral("--timeout"),  QStringLiteral("--log"),
+                                      QStringLiteral("--variant"),  QStringLiteral("--address")};
+    return names;
+}
+
+// An option word, not a value: "-5" is a number and "-" stdin or stdout.
+bool isOptionWord(const QString& arg) {
+    return arg.size() > 1 && arg.startsWith(QLatin1Char('-')) && !arg.at(1).isDigit();
+}
+
+// The name of option word `arg` ("--port" of "--port=x"), and its inline value.
+QString optionName(const QString& arg, QString* inlineValue, bool* hasInline) {
+    const qsizetype eq = arg.indexOf(QLatin1Char('='));
+    *hasInline = arg.startsWith(QLatin1String("--")) && eq > 2;
+    if (!*hasInline) return arg;
+    *inlineValue = arg.mid(eq + 1);
+    return arg.left(eq);
+}
+
+// Something on the command line that names a device family, in words for
+// a message when another names a different one.
+struct FamilyClaim {
+    QString familyId;
+    QString says;
+};
+
+// Each family a family-specific word of the command line names: its
+// protocol, the protocol its port names, the command, a family's option,
+// --address, --variant.
+struct Given {
+    QString family;
+    QString protocol;
+    QStringList familyOptions;  // "--axes", in order
+    bool address = false;
+    bool variant = false;
+};
+
+// The families that have a protocol for which `fits` holds.
+QStringList familiesWithProtocol(const std::function<bool(const comm::ProtocolInfo&)>& fits) {
+    QStringList families;
+    for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all())
+        if (fits(*protocol) && !families.contains(protocol->familyId))
+            families << protocol->familyId;
+    return families;
+}
+
+QList<FamilyClaim> familyClaims(const GlobalOptions& options, const Given& given,
+                                const QString& portProtocol) {
+    QList<FamilyClaim> claims;
+    const comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
+    if (!given.family.isEmpty())
+        claims << FamilyClaim{
+            given.family, QStringLiteral("--family %1 asks for the %1 family").arg(given.family)};
+    if (!given.protocol.isEmpty())
+        claims << FamilyClaim{protocols.find(given.protocol)->familyId,
+                              QStringLiteral("--protocol %1 is a protocol of the %2 family")
+                                  .arg(given.protocol, protocols.find(given.protocol)->familyId)};
+    if (const comm::ProtocolInfo* named = protocols.find(portProtocol))
+        claims << FamilyClaim{named->familyId,
+                              QStringLiteral("the port %1 speaks %2, a protocol of the %3 family")
+                                  .arg(options.port, named->id, named->familyId)};
+    const QStringList commandFamilies = CommandRegistry::instance().familiesWith(options.command);
+    if (commandFamilies.size() == 1)
+        claims << FamilyClaim{commandFamilies.first(),
+                              QStringLiteral("\"%1\" is a command of the %2 family")
+                                  .arg(options.command, commandFamilies.first())};
+    for (const QString& name : given.familyOptions) {
+        const QString family = CommandRegistry::instance().option(name)->familyId;
+        claims << FamilyClaim{family,
+                              QStringLiteral("%1 is an option of the %2 family").arg(name, family)};
+    }
+    if (given.address) {
+        const QStringList families = familiesWithProtocol(
+            [](const comm::ProtocolInfo& protocol) { return protocol.numbersAreAddresses; });
+        if (families.size() == 1)
+            claims << FamilyClaim{
+                families.first(),
+                QStringLiteral("--address is for a bus of the %1 family").arg(families.first())};
+    }
+    if (given.variant) {
+        const QStringList families =
+            familiesWithProtocol([&options](const comm::ProtocolInfo& protocol) {
+                return protocol.makeSettings()->variantKeys().contains(options.variant);
+            });
+        if (families.size() == 1)
+            claims << FamilyClaim{families.first(),
+                                  QStringLiteral("--variant %1 is a variant of the %2 family")
+                                      .arg(options.variant, families.first())};
+    }
+    return claims;
+}
+
+// The protocol of `family` whose devices have addresses (Compax3: RS485).
+QString addressProtocol(const QString& family) {
+    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
+        if (info->familyId == family && info->isBus && info->numbersAreAddresses) return info->id;
+    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
+        if (info->familyId == family && info->isBus) return info->id;
+    return {};
+}
+
+// Sets the value of shell option `name`.
+Status applyShellOption(GlobalOptions& options, Given& given, const QString& name,
+                        const QString& value) {
+    if (name == QLatin1String("--port")) {
+        options.port = value;
+    } else if (name == QLatin1String("--family")) {
+        const Result<const comm::FamilyInfo*> family =
+            comm::FamilyRegistry::instance().usable(value);
+        if (!family) return usageError(family.error().message);
+        given.family = (*family)->id;
+    } else if (name == QLatin1String("--protocol")) {
+        const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(value);
+        if (!info) {
+            return usageError(QStringLiteral("--protocol must be one of %1, not \"%2\"")
+                                  .arg(comm::ProtocolRegistry::instance().idList(), value));
+        }
+        given.protocol = info->id;
+    } else if (name == QLatin1String("--log")) {
+        options.logFile = value;
+    } else if (name == QLatin1String("--variant")) {
+        options.variant = value.trimmed().toLower();
+        given.variant = true;
+    } else {
+        struct Range {
+            const char* name;
+            int min;
+            int max;
+            int* target;
+        };
+        const Range ranges[] = {{"--baud", 50, 4000000, &options.baud},
+                                {"--device", 0, 63, &options.device},
+                                {"--address", 0, 99, &options.device},
+                                {"--pc-number", 0, 63, &options.pcNumber},
+                                {"--timeout", 10, 600000, &options.timeoutMs}};
+        for (const Range& range : ranges) {
+            if (name != QLatin1String(range.name)) continue;
+            const Result<int> number = parseIntArgument(value, name, range.min, range.max);
+            if (!number) return number.error();
+            *range.target = *number;
+            if (range.target == &options.timeoutMs) options.timeoutGiven = true;
+            if (name == QLatin1String("--address")) given.address = true;
+        }
+    }
+    return success();
+}
+
+// The family and protocol every family-specific word of the line names;
+// a usage error naming two that disagree.
+Status resolveFamilyAndProtocol(GlobalOptions& options, const Given& given) {
+    const QString portProtocol = comm::TransportRegistry::instance().namedProtocol(options.port);
+    if (!portProtocol.isEmpty() && !given.protocol.isEmpty() && portProtocol != given.protocol)
+        return usageError(QStringLiteral("the port %1 speaks %2, but --protocol %3 was given; "
+                                         "drop one of them")
+                              .arg(options.port, portProtocol, given.protocol));
+    const QList<FamilyClaim> claims = familyClaims(options, given, portProtocol);
+    for (const FamilyClaim& claim : claims) {
+        if (claim.familyId != claims.first().familyId)
+            return usageError(QStringLiteral("%1, but %2; drop one of them")
+                                  .arg(claims.first().says, claim.says));
+    }
+    options.family =
+        claims.isEmpty() ? comm::FamilyRegistry::instance().defaultId() : claims.first().familyId;
+    const Result<const comm::FamilyInfo*> family =
+        comm::FamilyRegistry::instance().usable(options.family);
+    if (!family) return usageError(family.error().message);
+    const CommandGroup* group = CommandRegistry::instance().find(options.family, options.command);
+    if (!given.protocol.isEmpty()) {
+        options.protocol = given.protocol;
+    } else if (!portProtocol.isEmpty()) {
+        options.protocol = portProtocol;
+    } else if (given.address) {
+        options.protocol = addressProtocol(options.family);
+        if (options.protocol.isEmpty())
+            return usageError(QStringLiteral("--address is for devices on a bus; the %1 family "
+                                             "has none")
+                                  .arg(options.family));
+    } else if (group && !group->defaultProtocol.isEmpty()) {
+        options.protocol = group->defaultProtocol;
+    } else {
+        options.protocol = (*family)->defaultProtocol;
+    }
+    return success();
+}
+
+}  // namespace
+
 Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
     GlobalOptions options;
-    bool protocolGiven = false;
-    int i = 0;
-    // Takes the value of the option at args[i] (inline or the next word).
-    auto valueOf = [&](const QString& name, const QString& inlineValue,
-                       bool hasInline) -> Result<QString> {
-        if (hasInline) return inlineValue;
-        if (i + 1 >= args.size()) return usageError(QStringLiteral("%1 needs a value").arg(name));
-        return args.at(++i);
-    };
-    for (; i < args.size(); ++i) {
+    Given given;
+    const CommandRegistry& commands = CommandRegistry::instance();
+    QStringList before;  // a command's options before COMMAND: handed to it after its own words
+    QStringList after;
+    QStringList familyArgs;  // the families' options, wherever they stood
+    bool haveCommand = false;
+    for (int i = 0; i < args.size(); ++i) {
         const QString& arg = args.at(i);
-        if (!arg.startsWith(QLatin1Char('-'))) {
-            options.command = arg;
-            options.commandArgs = args.mid(i + 1);
-            break;
+        if (!isOptionWord(arg)) {
+            if (haveCommand) {
+                after << arg;
+            } else {
+                options.command = arg;
+                haveCommand = true;
+            }
+            continue;
         }
-        static const QStringList kNames = {
-            QStringLiteral("--port"),    QStringLiteral("--family"), QStringLiteral("--protocol"),
-            QStringLiteral("--baud"),    QStringLiteral("--device"), QStringLiteral("--pc-number"),
-            QStringLiteral("--timeout"), QStringLiteral("--log"),    QStringLiteral("--variant"),
-            QStringLiteral("--address")};
-        QString name;
         QString inlineValue;
-        for (const QString& candidate : kNames) {
-            inlineValue.clear();
-            if (matchesOption(arg, candidate, &inlineValue)) {
-                name = candidate;
-                break;
+        bool hasInline = false;
+        const QString name = optionName(arg, &inlineValue, &hasInline);
+        const bool shell = shellOptions().contains(name);
+        if (shell || commands.option(name)) {
+            if (!hasInline && i + 1 >= args.size())
+                return usageError(QStringLiteral("%1 needs a value").arg(name));
+            const QString value = hasInline ? inlineValue : args.at(++i);
+            if (shell) {
+                if (const Status applied = applyShellOption(options, given, name, value); !applied)
+                    return applied.error();
+            } else {
+                familyArgs << name << value;
+                if (!given.familyOptions.contains(name)) given.familyOptions << name;
             }
+            continue;
         }
-        if (name.isEmpty()) return usageError(QStringLiteral("unknown option \"%1\"").arg(arg));
-        const Result<QString> value = valueOf(name, inlineValue, arg.contains(QLatin1Char('=')));
-        if (!value) return value.error();
-        if (name == QLatin1String("--port")) {
-            options.port = *value;
-        } else if (name == QLatin1String("--family")) {
-            const Result<const comm::FamilyInfo*> family =
-                comm::FamilyRegistry::instance().usable(*value);
-            if (!family) return usageError(family.error().message);
-            options.family = (*family)->id;
-        } else if (name == QLatin1String("--protocol")) {
-            protocolGiven = true;
-            const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(*value);
-            if (!info) {
-                return usageError(QStringLiteral("--protocol must be one of %1, not \"%2\"")
-                                      .arg(comm::ProtocolRegistry::instance().idList(), *value));
-            }
-            options.protocol = info->id;
-        } else if (name == QLatin1String("--log")) {
-            options.logFile = *value;
-        } else if (name == QLatin1String("--variant")) {
-            options.variant = value->trimmed().toLower();
-        } else {
-            struct Range {
-                const char* name;
-                int min;
-                int max;
-                int* target;
-            };
-            const Range ranges[] = {{"--baud", 50, 4000000, &options.baud},
-                                    {"--device", 0, 63, &options.device},
-                                    {"--address", 0, 99, &options.device},
-                                    {"--pc-number", 0, 63, &options.pcNumber},
-                                    {"--timeout", 10, 600000, &options.timeoutMs}};
-            for (const Range& range : ranges) {
-                if (name != QLatin1String(range.name)) continue;
-                const Result<int> number = parseIntArgument(*value, name, range.min, range.max);
-                if (!number) return number.error();
-                *range.target = *number;
-                if (range.target == &options.timeoutMs) options.timeoutGiven = true;
-                if (name == QLatin1String("--address")) options.addressGiven = true;
-            }
+        if (haveCommand) {
+            after << arg;
+            continue;
         }
+        // A command's own option before COMMAND: the next word is its value
+        // unless it is an option or a command (`--json info`); a value that
+        // is a command's name is written --name=VALUE there.
+        before << arg;
+        if (!hasInline && i + 1 < args.size() && !isOptionWord(args.at(i + 1)) &&
+            !commands.isCommand(args.at(i + 1)))
+            before << args.at(++i);
     }
     if (options.command.isEmpty()) return usageError(QStringLiteral("no COMMAND given"));
-    // Without --family, --protocol names it; without both, the default family.
-    if (options.family.isEmpty() && protocolGiven) options.family = options.protocolInfo().familyId;
-    if (options.family.isEmpty()) options.family = comm::FamilyRegistry::instance().defaultId();
-    // The protocol follows the family: its default, or one of its own.
-    const comm::FamilyInfo* family = comm::FamilyRegistry::instance().find(options.family);
-    if (!family) return usageError(QStringLiteral("no device family is built into this CamBench"));
-    if (!protocolGiven) {
-        options.protocol = family->defaultProtocol;
-        // An address asks for the family's bus protocol (Compax3: RS485).
-        if (options.addressGiven && !options.isBus()) {
-            for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
-                if (info->familyId == family->id && info->isBus) {
-                    options.protocol = info->id;
-                    break;
-                }
-        }
-    } else if (options.protocolInfo().familyId != family->id) {
-        return usageError(QStringLiteral("--protocol %1 is a protocol of the %2 family, not of %3")
-                              .arg(options.protocol, options.protocolInfo().familyId, family->id));
-    }
-    if (options.addressGiven &&
-        (!options.isBus() || options.device > options.protocolInfo().lastDevice))
+    options.commandArgs = after + before + familyArgs;
+    if (const Status resolved = resolveFamilyAndProtocol(options, given); !resolved)
+        return resolved.error();
+    if (given.address && (!options.isBus() || options.device > options.protocolInfo().lastDevice))
         return usageError(
             options.isBus()
                 ? QStringLiteral("--address of the %1 protocol is 0..%2, not %3")
@@ -269,6 +420,13 @@ QString usageText() {
                "N]\n"
                "                    [--device N] [--address N] [--pc-number N] [--variant V]\n"
                "                    [--timeout MS] [--log FILE] COMMAND\n"
+               "       cambench-cli help COMMAND      the lines below about COMMAND\n"
+               "\n"
+               "Every option may come before or after COMMAND. The family follows from the\n"
+               "command (mc: mc1, c3: compax3), from a family's own option (--address,\n"
+               "--variant, --axes, --dictionary ...), from --protocol or from a port that names\n"
+               "its protocol (sim:protocol=3964r-n96); two that name different families are an\n"
+               "error naming both.\n"
                "\n"
                "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
                "default)\n"
@@ -286,6 +444,7 @@ QString usageText() {
                "  --log FILE    write the traffic (hex and ASCII, user numbers masked) to FILE\n"
                "\n"
                "Commands for every family:\n"
+               "  help [COMMAND]                   this help, or its lines about COMMAND\n"
                "  ports [--json]                   serial ports of this PC with their USB adapter\n"
                "                                   (description, manufacturer, S/N, VID:PID)\n"
                "  detect [--json]                  what answers on --port: each family's "
@@ -304,25 +463,33 @@ QString usageText() {
                "                                   not; exit 3 when any did not answer, 4 when\n"
                "                                   another device answers than the file records\n"
                "  machine backup FILE -o DIR [--resume] [--replacement NAME,...]\n"
-               "                                   each device by its family's own backup into "
+               "                 [--operator NAME] [-m NOTE]\n"
+               "                                   each device by its family's backup part into "
                "DIR\n"
-               "                                   (with machine.json and manifest.json: "
-               "identity,\n"
-               "                                   file, SHA-256, time, result per device); exit "
-               "0\n"
-               "                                   only when every device was saved; FILE records\n"
-               "                                   each identity first seen; another device than\n"
-               "                                   FILE records is not saved unless --replacement\n"
+               "                                   (with machine.json and manifest.json: who, "
+               "why,\n"
+               "                                   tool version; identity, file, SHA-256, time,\n"
+               "                                   result per device); exit 0 only when every\n"
+               "                                   device was saved; FILE records each identity\n"
+               "                                   first seen; another device than FILE records\n"
+               "                                   is not saved unless --replacement\n"
                "  machine verify DIR [--replacement NAME,...]\n"
-               "                                   each device against its file; exit 1 when one\n"
-               "                                   differs (named), 3 when one was not verified,\n"
-               "                                   4 when another device answers\n"
-               "  machine restore DIR [--only NAME,...] [--replacement NAME,...]\n"
+               "                                   each device against its file, each difference\n"
+               "                                   in its family's terms; exit 1 when one "
+               "differs,\n"
+               "                                   3 when one was not verified, 4 when another\n"
+               "                                   device answers\n"
+               "  machine diff DIR1 DIR2           two backups of the machine, device by device,\n"
+               "                                   no device asked; exit 1 when they differ\n"
+               "  machine restore DIR [--only NAME,...] [--replacement NAME,...] [--plan]\n"
+               "                 [--operator NAME] [-m NOTE]\n"
                "                                   each device by its family's restore, with that\n"
                "                                   family's checks first; only to the device each\n"
                "                                   file was taken from (else nothing is written "
                "to\n"
-               "                                   it, exit 4), or to the replacement of NAME\n"
+               "                                   it, exit 4), or to the replacement of NAME;\n"
+               "                                   safety copies go beside DIR; --plan: what\n"
+               "                                   would be written, nothing written\n"
                "                                   The machine commands take devices on different\n"
                "                                   ports at once (those sharing a port one after\n"
                "                                   the other); each device's lines are printed\n"
@@ -338,8 +505,12 @@ QString usageText() {
                "unchanged.\n"
                "\n"
                "Outputs and inputs count from 1, programs from 0.\n"
-               "Exit codes: 0 ok, 1 device error reply (verify: device differs), 2 usage,\n"
-               "            3 communication failure, 4 invalid file or data\n")
+               "Exit codes: 0 ok; 1 the device answered with an error or cannot do what was asked\n"
+               "            (its protocol or variant lacks it, it is not the --variant given; an\n"
+               "            item not sent for that reason), verify: the device differs; 2 a "
+               "command\n"
+               "            line that cannot be understood; 3 communication failure; 4 an invalid\n"
+               "            file or value, or one that does not fit the device\n")
         .arg(families.join(QStringLiteral(";\n                ")),
              protocols.join(QStringLiteral("\n                ")),
              CommandRegistry::instance().help());

@@ -8,21 +8,28 @@
 
 namespace cambench::cli {
 
-// The options before COMMAND (see usageText()).
+// The options of the shell and the command they go with (see usageText()):
+// before or after COMMAND alike.
 struct GlobalOptions {
     QString port = QStringLiteral("sim");
-    QString family;    // a FamilyRegistry id; empty: FamilyRegistry::defaultId()
-    QString protocol;  // a ProtocolRegistry id of `family`: its default unless --protocol
-    int baud = 0;      // 0 = the protocol's default
-    int device = 0;    // --device (CamCon Multiuser, 0..63) or --address (Compax3 RS485, 0..99)
-    bool addressGiven = false;
+    // A FamilyRegistry id: the one --family, --protocol, the port, the
+    // command, a family's option, --address or --variant names; without
+    // any, FamilyRegistry::defaultId().
+    QString family;
+    // A ProtocolRegistry id of `family`: --protocol, else the one the port
+    // names, the bus --address asks for, the command's or the family's default.
+    QString protocol;
+    int baud = 0;    // 0 = the protocol's default
+    int device = 0;  // --device (CamCon Multiuser, 0..63) or --address (Compax3 RS485, 0..99)
     int pcNumber = 63;
     int timeoutMs = 0;  // 0 = derived from the line
     bool timeoutGiven = false;
     QString logFile;
     QString variant;  // --variant: a key of the protocol's variantKeys(); empty: its default
     QString command;
-    QStringList commandArgs;  // everything after COMMAND
+    // The command's own words and options (those given before COMMAND too)
+    // and the families' options (--axes, --dictionary: CommandRegistry::option).
+    QStringList commandArgs;
 
     const comm::ProtocolInfo& protocolInfo() const;  // parseGlobalOptions checked the id
     int effectiveBaud() const;
@@ -32,8 +39,10 @@ struct GlobalOptions {
     comm::ProtocolSettingsPtr protocolSettings() const;
 };
 
-// Parses argv (without the program name). Fails with ErrorKind::Usage, also
-// for a family not built yet and a protocol of another family.
+// Parses argv (without the program name): the shell's and the families'
+// options anywhere, the first other word is COMMAND. Fails with
+// ErrorKind::Usage, also for a family not built yet and for two words that
+// name different families (--family and a command of another) or protocols.
 Result<GlobalOptions> parseGlobalOptions(const QStringList& args);
 
 // The arguments of one command: options and positionals, consumed one by one;

@@ -1,6 +1,5 @@
 #include "cli_output.h"
 
-#include "cli_options.h"
 #include "exit_codes.h"
 
 #include "model/atomic_file.h"
@@ -12,6 +11,7 @@ namespace cambench::cli {
 namespace {
 
 thread_local OutputBlock* t_capture = nullptr;
+QString g_helpCommand;  // written before the command runs, read only then
 
 void writeRaw(bool toStderr, const QByteArray& bytes) {
     std::FILE* stream = toStderr ? stderr : stdout;
@@ -57,9 +57,21 @@ void printError(const QString& message) {
     write(true, QStringLiteral("cambench-cli: %1\n").arg(message).toUtf8());
 }
 
+void setHelpCommand(const QString& name) {
+    g_helpCommand = name;
+}
+
 int reportError(const Error& error) {
     printError(error.message);
-    if (error.kind == ErrorKind::Usage) write(true, "\n" + usageText().toUtf8());
+    if (error.kind == ErrorKind::Usage) {
+        // One line, not the whole help: the error stays the last thing read.
+        write(true, (g_helpCommand.isEmpty()
+                         ? QStringLiteral("Help: `cambench-cli --help`\n")
+                         : QStringLiteral("Help: `cambench-cli help %1`, or `cambench-cli --help` "
+                                          "for everything\n")
+                               .arg(g_helpCommand))
+                        .toUtf8());
+    }
     return exitCodeFor(error.kind);
 }
 

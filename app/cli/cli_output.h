@@ -12,8 +12,12 @@ namespace cambench::cli {
 
 // "cambench-cli: <message>" on stderr.
 void printError(const QString& message);
-// Prints the error (usage errors: and the usage) and returns its exit code.
+// Prints the error (a usage error: and one line saying where the help is)
+// and returns its exit code.
 int reportError(const Error& error);
+// The command a usage error's help line names (`cambench-cli help NAME`);
+// set once, before any command runs.
+void setHelpCommand(const QString& name);
 
 void printOut(const QString& text);  // stdout, as UTF-8
 // Prints `document` indented on stdout; returns ExitOk.

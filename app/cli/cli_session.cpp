@@ -1,6 +1,10 @@
 #include "cli_session.h"
 
+#include "interrupt_watch.h"
+
 #include <QTimer>
+
+#include <csignal>
 
 namespace cambench::cli {
 
@@ -13,6 +17,7 @@ constexpr int kConnectGuardMs = 60000;
 }  // namespace
 
 CliSession::CliSession(GlobalOptions options) : m_options(std::move(options)) {
+    InterruptWatch::add(&m_worker);
     QObject::connect(&m_worker, &comm::CommWorker::jobProgress, &m_context,
                      [this](quint64, qint64 done, qint64 total, const QString& text) {
                          if (m_showProgress) m_progress.update(done, total, text);
@@ -25,7 +30,17 @@ CliSession::CliSession(GlobalOptions options) : m_options(std::move(options)) {
 }
 
 CliSession::~CliSession() {
+    InterruptWatch::remove(&m_worker);
     m_worker.disconnectFromDevice();
+}
+
+std::optional<Error> CliSession::interrupted() {
+    const int signal = InterruptWatch::received();
+    if (signal == 0) return std::nullopt;
+    return Error{ErrorKind::Cancelled,
+                 QStringLiteral("not sent: cambench-cli was interrupted (%1)")
+                     .arg(signal == SIGINT ? QStringLiteral("SIGINT") : QStringLiteral("SIGTERM")),
+                 0};
 }
 
 QString CliSession::where() const {

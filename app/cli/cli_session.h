@@ -48,6 +48,8 @@ public:
 
 private:
     Status ensureConnected();
+    // After SIGINT or SIGTERM no job is submitted: its Cancelled error.
+    static std::optional<Error> interrupted();
 
     GlobalOptions m_options;
     comm::CommWorker m_worker;
@@ -72,6 +74,7 @@ Result<T> CliSession::run(const QString& title, Work<Device, T> work) {
 template <class T>
 Result<T> CliSession::runUnconnected(const QString& title,
                                      std::function<Result<T>(comm::JobContext&)> work) {
+    if (const std::optional<Error> stopped = interrupted()) return *stopped;
     QEventLoop loop;
     std::optional<Result<T>> result;
     m_worker.run<Result<T>>(&m_context, comm::JobPriority::User, title, std::move(work),

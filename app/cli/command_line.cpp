@@ -9,29 +9,38 @@
 
 namespace cambench::cli {
 
+namespace {
+
+// The first word of `args` that names a command: what a usage error's help
+// line and `COMMAND --help` are about.
+QString commandWord(const QStringList& args) {
+    for (const QString& arg : args)
+        if (CommandRegistry::instance().isCommand(arg)) return arg;
+    return {};
+}
+
+}  // namespace
+
 int runCommandLine(const QStringList& args) {
+    const QString command = commandWord(args);
     if (args.contains(QLatin1String("--help")) || args.contains(QLatin1String("-h"))) {
-        printOut(usageText());
+        const QString lines =
+            command.isEmpty() ? QString() : CommandRegistry::instance().helpFor(command);
+        printOut(lines.isEmpty() ? usageText() : lines);
         return ExitOk;
     }
     if (args.contains(QLatin1String("--version"))) {
         printOut(QStringLiteral("cambench-cli %1\n").arg(QLatin1String(CAMBENCH_VERSION_TEXT)));
         return ExitOk;
     }
+    setHelpCommand(command);
     const Result<GlobalOptions> options = parseGlobalOptions(args);
     if (!options) return reportError(options.error());
     const CommandRegistry& commands = CommandRegistry::instance();
     const CommandGroup* group = commands.find(options->family, options->command);
     if (!group) {
-        const QStringList families = commands.familiesWith(options->command);
-        if (!families.isEmpty()) {
-            return reportError(Error::usage(
-                QStringLiteral("\"%1\" is a command of the %2 family, not of %3; add --family %2")
-                    .arg(options->command, families.first(), options->family)));
-        }
         return reportError(
-            Error::usage(QStringLiteral("unknown command \"%1\"; see `cambench-cli --help`")
-                             .arg(options->command)));
+            Error::usage(QStringLiteral("unknown command \"%1\"").arg(options->command)));
     }
     CliSession session(*options);
     CommandArgs commandArgs(options->command, options->commandArgs);

@@ -15,6 +15,17 @@ struct CommandGroup {
     QString familyId;  // the family whose device it works on; empty: any family
     QString name;
     int (*run)(CliSession& session, CommandArgs& args) = nullptr;
+    // The protocol it speaks when neither --protocol nor the port names one
+    // (a command for a bus: backup-line); empty: the family's default.
+    QString defaultProtocol = {};
+};
+
+// An option of a family's commands that says something of the device
+// (--axes, --dictionary): taken before or after COMMAND, handed to the
+// command's arguments, and naming its family as the command does.
+struct FamilyOption {
+    QString familyId;
+    QString name;  // "--axes"; it takes a value
 };
 
 // The command groups of cambench-cli: the shell's own (ports, detect) and
@@ -33,14 +44,25 @@ public:
     const CommandGroup* find(const QString& familyId, const QString& name) const;
     // The families that have a group `name` ("mc1" for `mc1 ...`).
     QStringList familiesWith(const QString& name) const;
+    // Whether any family (or the shell) has a group `name`.
+    bool isCommand(const QString& name) const;
     QString help() const;
+    // The lines of --help about `name` (a command group): its family's
+    // whole part when the family has this one group, else its own lines;
+    // empty for an unknown name.
+    QString helpFor(const QString& name) const;
+
+    void addOption(FamilyOption option);
+    // Null when no family declared `name`.
+    const FamilyOption* option(const QString& name) const;
 
 private:
     QList<CommandGroup> m_groups;
+    QList<FamilyOption> m_options;
     QList<std::pair<QString, QString>> m_help;
 };
 
-// The shell's own groups: ports, detect.
+// The shell's own groups: ports, detect, check, machine, help.
 void registerShellCommands(CommandRegistry& registry);
 
 // "read" or "write" after a group name; a usage error for anything else.

@@ -3,6 +3,7 @@
 #include "cambench_version.h"
 #include "command_line.h"
 #include "commands.h"
+#include "interrupt_watch.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
@@ -19,5 +20,10 @@ int main(int argc, char* argv[]) {
     // stderr carries one clear line per problem; the components' logs would
     // drown it. QT_LOGGING_RULES still turns them on for debugging.
     QLoggingCategory::setFilterRules(QStringLiteral("cambench.*=false"));
-    return cambench::cli::runCommandLine(app.arguments().mid(1));
+    // SIGINT/SIGTERM: nothing that moves or writes leaves after it (interrupt_watch.h).
+    cambench::cli::InterruptWatch::install();
+    const int code = cambench::cli::runCommandLine(app.arguments().mid(1));
+    if (const int signal = cambench::cli::InterruptWatch::received(); signal != 0)
+        return 128 + signal;
+    return code;
 }

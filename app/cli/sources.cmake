@@ -18,6 +18,8 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/traffic_log_file.cpp
   cli/cli_session.h
   cli/cli_session.cpp
+  cli/interrupt_watch.h
+  cli/interrupt_watch.cpp
   cli/commands.h
   cli/commands.cpp
   cli/command_line.h
@@ -25,6 +27,7 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/port_commands.cpp
   cli/detect_command.cpp
   cli/check_command.cpp
+  cli/help_command.cpp
   cli/machine_command.h
   cli/machine_command.cpp
   cli/machine_backup.cpp

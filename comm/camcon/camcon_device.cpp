@@ -67,7 +67,7 @@ QString CamConDevice::lacks(CamConCapability capability) const {
 }
 
 Error CamConDevice::missing(CamConCapability capability) const {
-    return Error::usage(lacks(capability));
+    return Error::unsupported(lacks(capability));
 }
 
 Result<DeadTimeModes> CamConDevice::readDeadTimeModes(int) {

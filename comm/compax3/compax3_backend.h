@@ -11,6 +11,13 @@ namespace cambench::comm {
 // reads both).
 class Compax3Backend : public CrLineBackend {
 public:
+    // How late an answer may still come (FramingBackend::lateAnswerWindowMs):
+    // a Compax3 answer carries nothing that ties it to its request. No
+    // manual page gives the drive's answer time; the public client waits
+    // 0.4 s for every answer (its serial timeout). We wait 1 s past the
+    // first-byte time, 2.5 times that: provisional (README, reading C10).
+    static constexpr int kLateAnswerWindowMs = 1000;
+
     // `address` 0..99 on RS485; -1 on RS232 (no address).
     explicit Compax3Backend(int address) : m_address(address) {}
     void setAddress(int address) { m_address = address; }
@@ -20,6 +27,7 @@ public:
     QString checkHint() const override;
     qint64 requestWireBytes(const Request& request) const override;
     qint64 replyWireBytes(const Request& request) const override;
+    int lateAnswerWindowMs() const override { return kLateAnswerWindowMs; }
 
 protected:
     QByteArray requestLine(const Request& request) const override;

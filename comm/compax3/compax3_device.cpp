@@ -2,6 +2,8 @@
 
 #include <QCoreApplication>
 
+#include <tuple>
+
 namespace cambench::comm {
 
 QString Compax3DriveStatus::summary() const {
@@ -18,6 +20,25 @@ QString Compax3SetValues::modeText() const {
     if (mode == 1) return QCoreApplication::translate("cambench::comm", "absolute");
     if (mode == 2) return QCoreApplication::translate("cambench::comm", "relative");
     return QCoreApplication::translate("cambench::comm", "mode %1").arg(mode);
+}
+
+QStringList Compax3SetValues::changesTo(const Compax3SetValues& now) const {
+    QStringList changes;
+    const std::tuple<QString, double, double> numbers[] = {
+        {QCoreApplication::translate("cambench::comm", "target"), target, now.target},
+        {QCoreApplication::translate("cambench::comm", "velocity"), velocity, now.velocity},
+        {QCoreApplication::translate("cambench::comm", "acceleration"), acceleration,
+         now.acceleration},
+        {QCoreApplication::translate("cambench::comm", "deceleration"), deceleration,
+         now.deceleration}};
+    for (const auto& [name, was, is] : numbers)
+        if (was != is)
+            changes << QStringLiteral("%1 %2 → %3")
+                           .arg(name, compax3NumberText(was), compax3NumberText(is));
+    if (mode != now.mode)
+        changes << QCoreApplication::translate("cambench::comm", "mode %1 → %2")
+                       .arg(modeText(), now.modeText());
+    return changes;
 }
 
 QString Compax3CommandResult::summary() const {
@@ -55,6 +76,9 @@ QString compax3SetMoveText(const Compax3SetMove& move) {
     if (move.acceleration)
         parts << QCoreApplication::translate("cambench::comm", "acceleration %1")
                      .arg(compax3NumberText(*move.acceleration));
+    if (move.deceleration)
+        parts << QCoreApplication::translate("cambench::comm", "deceleration %1")
+                     .arg(compax3NumberText(*move.deceleration));
     const QString what =
         move.set == 0 ? QCoreApplication::translate("cambench::comm", "start homing (set 0)")
                       : QCoreApplication::translate("cambench::comm", "start set %1").arg(move.set);

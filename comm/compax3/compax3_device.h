@@ -7,9 +7,11 @@
 #include "model/compax3/compax3_parameter_file.h"
 #include "model/result.h"
 
+#include <QDateTime>
 #include <QList>
 #include <QString>
 
+#include <memory>
 #include <optional>
 
 namespace cambench::comm {
@@ -29,11 +31,19 @@ struct Compax3DriveStatus {
 
 // The motion of a positioning set: what the confirmation shows and what is
 // written into the set before it starts (unset: as the drive holds it).
+struct Compax3SetValues;
+
 struct Compax3SetMove {
     int set = 1;  // 0 = homing
     std::optional<double> target;
     std::optional<double> velocity;
-    std::optional<double> acceleration;
+    std::optional<double> acceleration;  // 1906.n only
+    std::optional<double> deceleration;  // 1907.n only
+    // The set as the person saw it in the confirmation: the start reads the
+    // set again first, and when the drive holds other values nothing is
+    // sent (Compax3CommandResult::changedSet). Unset: not compared (the
+    // CLI, where nothing was shown).
+    std::shared_ptr<const Compax3SetValues> shown;
 };
 
 // A positioning set as the drive holds it (190x.n), read before a start so
@@ -44,9 +54,13 @@ struct Compax3SetValues {
     double velocity = 0.0;
     double acceleration = 0.0;
     double deceleration = 0.0;
-    int mode = 1;  // 1905.n: 1 absolute, 2 relative (provisional)
+    int mode = 1;      // 1905.n: 1 absolute, 2 relative (provisional)
+    QDateTime readAt;  // when these were read from the drive
     // "absolute", "relative", "mode 7": for a person.
     QString modeText() const;
+    // What differs from `now`, one item each ("target 500 → 5000"); empty
+    // when the drive holds what these say.
+    QStringList changesTo(const Compax3SetValues& now) const;
 };
 
 // What an acting command did. Acknowledged by the drive means done; the
@@ -57,6 +71,12 @@ struct Compax3CommandResult {
     QString readBackFailed;
     // Something the person should know: "already powered: nothing was sent".
     QString note;
+    // Nothing was sent (a powered drive's Enable, a powerless drive's STOP,
+    // a start whose set changed since it was shown).
+    bool nothingSent = false;
+    // A start: the drive held other values than the confirmation showed; they
+    // are here, as read now, and nothing was sent.
+    std::optional<Compax3SetValues> changedSet;
     // "powered, standing at 3 (last set 1)" or "the state could not be read
     // back afterwards: …": one line for a person.
     QString summary() const;
@@ -67,7 +87,8 @@ enum class Compax3Motion {
     Disable,  // powerless (1100.3 = 0): the axis coasts or brakes as the drive is set
     JogPlus,  // moves until Stop
     JogMinus,
-    Stop,  // decelerates with the ramp, stays powered (1100.3 = 1)
+    Stop,  // decelerates with the ramp, stays powered (1100.3 = 1); a powerless
+           // drive: nothing sent (compax3_drive_stop.cpp)
 };
 // "jog the axis in + direction", for confirmations and messages.
 QString compax3MotionText(Compax3Motion motion);

@@ -26,12 +26,17 @@ void Compax3Drive::setDevice(int device) {
 }
 
 Result<Compax3Reply> Compax3Drive::exchange(const QByteArray& command, RetryPolicy retry,
-                                            int longestReply) {
+                                            int longestReply, int maxAttempts) {
     Request request;
     request.label = QString::fromLatin1(command);
     request.message = command;
     request.longestReplyBytes = longestReply;
     request.retry = retry;
+    request.maxAttempts = maxAttempts;
+    // Every write can move the axis or change its power (a set's objects,
+    // select and start, a jog, enable, disable, a restore's objects): none
+    // of a job a STOP overtook leaves. The stop's own writes are no motion.
+    request.motion = command.contains('=') && !m_stopping;
     // An answer with bytes no Compax3 sends was damaged on the line: this
     // attempt failed (a request that may be repeated is sent again).
     request.judge = [](const QByteArray& reply, QString& problem) {
@@ -126,8 +131,13 @@ Result<QList<int>> Compax3Drive::scanBus(int first, int last, const ProgressFn& 
 }
 
 Result<QString> Compax3Drive::readObject(const Compax3ObjectId& id, bool hex) {
+    return readValue(id, hex, 0);
+}
+
+Result<QString> Compax3Drive::readValue(const Compax3ObjectId& id, bool hex, int maxAttempts) {
     const QByteArray command = compax3ReadCommand(id, hex);
-    const Result<Compax3Reply> reply = exchange(command, RetryPolicy::Idempotent, kLongestInfo);
+    const Result<Compax3Reply> reply =
+        exchange(command, RetryPolicy::Idempotent, kLongestInfo, maxAttempts);
     if (!reply) return reply.error();
     if (reply->kind != Compax3Reply::Value)
         return Error::communication(
@@ -155,8 +165,8 @@ Status Compax3Drive::writeCommand(const QByteArray& command, RetryPolicy retry) 
     return success();
 }
 
-Result<double> Compax3Drive::readNumber(const Compax3ObjectId& id) {
-    const Result<QString> text = readObject(id, false);
+Result<double> Compax3Drive::readNumber(const Compax3ObjectId& id, int maxAttempts) {
+    const Result<QString> text = readValue(id, false, maxAttempts);
     if (!text) return text.error();
     const std::optional<double> number = compax3Number(*text);
     if (!number)

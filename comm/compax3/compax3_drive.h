@@ -41,21 +41,26 @@ public:
 private:
     // One command out, its answer back; a '!xxxx' answer becomes the
     // refusal error.
+    // `maxAttempts` > 0: at most that many (RequestEngine's default otherwise).
     Result<Compax3Reply> exchange(const QByteArray& command, RetryPolicy retry,
-                                  int longestReply = 24);
+                                  int longestReply = 24, int maxAttempts = 0);
     // A write or function: '>' expected.
     Status writeCommand(const QByteArray& command, RetryPolicy retry);
-    Result<double> readNumber(const Compax3ObjectId& id);
+    Result<QString> readValue(const Compax3ObjectId& id, bool hex, int maxAttempts);
+    Result<double> readNumber(const Compax3ObjectId& id, int maxAttempts = 0);
     // The control word, sent once when it moves the axis. A lost answer:
     // the state read back, in the error.
     Result<Compax3CommandResult> sendControl(quint16 word, const QString& what, RetryPolicy retry);
     Result<Compax3CommandResult> enable(const QString& what);
+    // STOP that changes nothing but motion (compax3_drive_stop.cpp).
+    Result<Compax3CommandResult> stop(const QString& what);
     // "Compax3 drive at address 3", for STOP's report.
     QString driveName() const;
 
     QString m_protocolId;
     Compax3Backend m_backend;
     RequestEngine m_engine;
+    bool m_stopping = false;  // the stop's writes are going out: no Request::motion
 };
 
 }  // namespace cambench::comm

@@ -8,6 +8,7 @@
 #include "model/compax3/compax3_dictionary.h"
 
 #include <QCoreApplication>
+#include <QScopedValueRollback>
 
 namespace cambench::comm {
 
@@ -66,6 +67,7 @@ Result<Compax3CommandResult> Compax3Drive::enable(const QString& what) {
     if (!before->status.powerless()) {
         Compax3CommandResult result;
         result.after = *before;
+        result.nothingSent = true;
         result.note =
             before->status.noError()
                 ? QCoreApplication::translate("cambench::comm",
@@ -87,6 +89,8 @@ Result<Compax3CommandResult> Compax3Drive::enable(const QString& what) {
 }
 
 Result<Compax3CommandResult> Compax3Drive::motion(Compax3Motion motion) {
+    const QScopedValueRollback<bool> stopping(m_stopping,
+                                              m_stopping || motion == Compax3Motion::Stop);
     const QString what = compax3MotionText(motion);
     switch (motion) {
         case Compax3Motion::Enable:
@@ -94,8 +98,7 @@ Result<Compax3CommandResult> Compax3Drive::motion(Compax3Motion motion) {
         case Compax3Motion::Disable:
             return sendControl(compax3control::kOff, what, RetryPolicy::Idempotent);
         case Compax3Motion::Stop:
-            // A STOP must get through: repeating it only stops again.
-            return sendControl(compax3control::kEnable, what, RetryPolicy::Idempotent);
+            return stop(what);
         case Compax3Motion::JogPlus:
             return sendControl(compax3control::kRun | compax3control::kJogPlus, what,
                                RetryPolicy::Never);
@@ -127,6 +130,7 @@ Result<Compax3SetValues> Compax3Drive::readSet(int set) {
     const Result<double> mode = readNumber(compax3SetMode(set));
     if (!mode) return mode.error();
     values.mode = int(*mode);
+    values.readAt = QDateTime::currentDateTime();
     return values;
 }
 
@@ -141,7 +145,7 @@ Result<Compax3CommandResult> Compax3Drive::moveSet(const Compax3SetMove& move) {
         {move.target, compax3SetTarget(move.set)},
         {move.velocity, compax3SetVelocity(move.set)},
         {move.acceleration, compax3SetAcceleration(move.set)},
-        {move.acceleration, compax3SetDeceleration(move.set)}};
+        {move.deceleration, compax3SetDeceleration(move.set)}};
     QList<std::pair<Compax3ObjectId, QString>> wires;
     for (const auto& [value, id] : values)
         if (value) {
@@ -150,6 +154,26 @@ Result<Compax3CommandResult> Compax3Drive::moveSet(const Compax3SetMove& move) {
             if (!wire) return wire.error();
             wires.append({id, *wire});
         }
+    if (move.shown) {
+        // What the person confirmed, checked against the drive before
+        // anything is written: a value changed meanwhile (another page, the
+        // drive's own program) is no start they agreed to.
+        const Result<Compax3SetValues> now = readSet(move.set);
+        if (!now) return now.error();
+        if (!move.shown->changesTo(*now).isEmpty()) {
+            Compax3CommandResult changed;
+            changed.nothingSent = true;
+            changed.changedSet = *now;
+            changed.note = QCoreApplication::translate(
+                               "cambench::comm",
+                               "set %1 changed on the drive since it was read at %2 (%3): "
+                               "nothing was sent")
+                               .arg(move.set)
+                               .arg(move.shown->readAt.toString(QStringLiteral("HH:mm:ss")),
+                                    move.shown->changesTo(*now).join(QStringLiteral(", ")));
+            return changed;
+        }
+    }
     const Result<Compax3DriveStatus> before = status();
     if (!before) return before.error();
     if (before->status.powerless())
@@ -180,28 +204,46 @@ QString Compax3Drive::driveName() const {
 }
 
 MotionStopReport Compax3Drive::stopAllMotion() {
-    // One drive, one axis: the Motion page's STOP (1100.3 = 1), repeated by
-    // the engine when its answer is lost.
+    // One drive, one axis: the Motion page's STOP (compax3_drive_stop.cpp).
     MotionStopLine line;
     line.what = driveName();
     const Result<Compax3CommandResult> stopped = motion(Compax3Motion::Stop);
-    line.acknowledged = stopped.ok();
-    line.detail = stopped ? stopped->summary() : stopped.error().message;
+    line.nothingToStop = stopped && stopped->nothingSent;
+    line.acknowledged = stopped.ok() && !line.nothingToStop;
+    line.detail = !stopped ? stopped.error().message
+                  : stopped->note.isEmpty() || line.nothingToStop
+                      ? stopped->summary()
+                      : QStringLiteral("%1; %2").arg(stopped->note, stopped->summary());
     MotionStopReport report;
     report.lines << line;
     return report;
 }
 
 Result<QStringList> Compax3Drive::activeMotion() {
+    // The status word's number and bits are a public client's, not Parker's
+    // manual's (reading C2): what they say is shown as read that way, and
+    // "nothing moves" read through them is no fact to leave a drive on.
     const Result<Compax3DriveStatus> now = status();
     if (!now) return now.error();
     if (now->moving())
-        return QStringList{QCoreApplication::translate("cambench::comm", "%1: the axis moves (%2)")
-                               .arg(driveName(), now->summary())};
+        return QStringList{
+            QCoreApplication::translate(
+                "cambench::comm",
+                "%1: the axis moves (%2, as read through provisional object numbers)")
+                .arg(driveName(), now->summary())};
     if (!now->status.powerless())
-        return QStringList{QCoreApplication::translate("cambench::comm", "%1: the axis is powered")
-                               .arg(driveName())};
-    return QStringList();
+        return QStringList{
+            QCoreApplication::translate(
+                "cambench::comm",
+                "%1: the axis is powered (as read through provisional object numbers)")
+                .arg(driveName())};
+    return Error::communication(
+        QCoreApplication::translate(
+            "cambench::comm",
+            "%1 reads as %2, but through the status word 1000.3, whose number and bits are "
+            "provisional (a public client's, not Parker's manual's): whether the axis stands "
+            "cannot be told from it")
+            .arg(driveName(), now->summary()));
 }
 
 }  // namespace cambench::comm

@@ -47,7 +47,11 @@ inline Compax3ObjectId compax3SetDeceleration(int n) {
 namespace compax3control {
 inline constexpr quint16 kOff = 0x0000;     // powerless
 inline constexpr quint16 kEnable = 0x0001;  // b0: powered; its rising edge acknowledges
-inline constexpr quint16 kRun = 0x4003;     // b0 + stop bits b1, b14 (1 = run)
+// STOP of a powered drive: b0 held at 1 (no edge), the stop bits b1 and b14
+// cleared (stop with the ramp), jog, set and start bits 0. The same word as
+// kEnable: only what the drive held before makes it a stop, not an enable.
+inline constexpr quint16 kStop = 0x0001;
+inline constexpr quint16 kRun = 0x4003;  // b0 + stop bits b1, b14 (1 = run)
 inline constexpr quint16 kJogPlus = 0x0004;
 inline constexpr quint16 kJogMinus = 0x0008;
 inline constexpr quint16 kStart = 0x2000;  // b13: a rising edge starts the set

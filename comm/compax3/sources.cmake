@@ -29,6 +29,7 @@ target_sources(cambench_comm PRIVATE
   compax3/compax3_drive.h
   compax3/compax3_drive.cpp
   compax3/compax3_drive_motion.cpp
+  compax3/compax3_drive_stop.cpp
   compax3/compax3_protocol.h
   compax3/compax3_protocol.cpp
 )

@@ -27,6 +27,8 @@ struct ConnectionSettings {
     SerialSettings serial;
     // The protocol id the PC speaks ("standard", "3964r-n96"): a transport
     // ignores it, but a simulated device on the far side answers in it.
+    // Empty: the simulated device is what the port names (Detect: a
+    // device that followed each probe would answer every one).
     QString protocol;
 };
 

@@ -13,15 +13,24 @@ struct MotionStopLine {
     QString what;               // "Axis 2", "Drive at address 3"
     bool acknowledged = false;  // the device acknowledged the stop command
     QString detail;             // what the read-back found, or why it failed
+    // Nothing was sent, because nothing there can move (a powerless drive):
+    // stopped, without a command.
+    bool nothingToStop = false;
+    // The stop went to an axis the device was not known to have, and the
+    // device said it has no such axis: nothing to stop there, no alarm.
+    bool absent = false;
 };
 
 // What a STOP of everything did.
 struct MotionStopReport {
     QList<MotionStopLine> lines;
     bool allAcknowledged() const {
-        for (const MotionStopLine& line : lines)
-            if (!line.acknowledged) return false;
-        return !lines.isEmpty();
+        bool any = false;
+        for (const MotionStopLine& line : lines) {
+            if (!line.acknowledged && !line.nothingToStop && !line.absent) return false;
+            any = true;
+        }
+        return any;
     }
 };
 

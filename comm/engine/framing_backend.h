@@ -104,6 +104,15 @@ public:
     // The protocol answers a repeated request without executing it again
     // (CamCon Multiuser block numbers): every retry is then safe.
     virtual bool deduplicatesRetries() const { return false; }
+    // For a protocol whose answers do not say which request they answer (a
+    // Compax3 answers a value, '>' or '!xxxx'), how long after a request's
+    // first-byte time its answer may still come. After a silent attempt the
+    // engine sends nothing else until the line has been quiet this long, and
+    // takes what comes meanwhile as that request's answer: a late answer is
+    // never taken for another request's. 0: the answers name their request
+    // (command letters, a type, a sequence number), so the request's judge
+    // tells a late one apart, and nothing is waited for.
+    virtual int lateAnswerWindowMs() const { return 0; }
     // Wire bytes of `request` and of its longest reply, framing included:
     // the engine derives the attempt's timeout from them and the line.
     virtual qint64 requestWireBytes(const Request& request) const = 0;

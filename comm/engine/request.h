@@ -53,6 +53,12 @@ struct Request {
     // Silence is an expected answer (a bus scan asking an empty address):
     // no warning in the log when every attempt stays silent.
     bool silenceExpected = false;
+    // Can start or continue motion or change a drive's power (a move, a jog,
+    // homing, a set's objects and its select and start, enable, a program's
+    // start or step, a restore's writes): refused, before it leaves, for a
+    // job asked before the last STOP (stop_generation.h). Set by the family
+    // code that builds the request; a stop command never sets it.
+    bool motion = false;
     // Judges each valid reply message; none = the first valid reply is the answer.
     std::function<Verdict(const QByteArray& reply, QString& problem)> judge;
     // Long requests: an idempotent request the engine sends when the device

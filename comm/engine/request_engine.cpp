@@ -67,6 +67,14 @@ int RequestEngine::firstByteTimeoutMs(const Request& request) const {
     return windowFor(request).firstByteMs;
 }
 
+int RequestEngine::lateAnswerWindowMs(const Request& request) const {
+    // A long request waits (and probes) for its answer anyway; a short look
+    // at a bus address must stay short.
+    if (request.timeout != TimeoutClass::Normal || request.silenceExpected || !request.expectReply)
+        return 0;
+    return std::max(0, m_backend.lateAnswerWindowMs());
+}
+
 int RequestEngine::attemptsFor(const Request& request) const {
     if (request.maxAttempts > 0) return request.maxAttempts;
     const int normal = 1 + std::max(0, m_settings.retries);
@@ -89,6 +97,11 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         BetweenRequests::run();
         m_gate = std::move(held);
     }
+    // After a STOP nothing of a job asked before it moves.
+    if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+        ++m_stats.refusedByStop;
+        return *std::move(stopped);
+    }
     if (m_gate) {
         if (const QString refused = m_gate(request); !refused.isEmpty()) {
             ++m_stats.refusedByGate;
@@ -99,16 +112,27 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
     m_lastAttempts = 0;
     m_lastHeardDevice = false;
     if (cancelled()) return Error::cancelled();
+    if (m_unsettled && !request.silenceExpected) {
+        if (const Status settled = settleLine(); !settled) return settled.error();
+    }
     dropStaleInput();
     m_backend.beginRequest(request);
 
     const int attempts = attemptsFor(request);
+    const int lateWindow = lateAnswerWindowMs(request);
     int resends = 0;
     int silentAttempts = 0;
+    int unheardAttempts = 0;  // silent, and nothing came in their late-answer window either
     qint64 firstStart = -1;
     QString problem;
     for (int attempt = 1; attempt <= attempts; ++attempt) {
         if (cancelled()) return Error::cancelled();
+        // A STOP while the line settled or an earlier attempt waited: no
+        // motion goes out (the check above ran before those waits).
+        if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+            ++m_stats.refusedByStop;
+            return *std::move(stopped);
+        }
         m_lastAttempts = attempt;
         if (attempt > 1) {
             ++m_stats.retries;
@@ -120,10 +144,38 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         const qint64 start = now();
         if (firstStart < 0) firstStart = start;
         Result<Attempt> result = runAttempt(request, attempt);
-        if (!result) return result.error();
+        if (result && result->outcome == Outcome::Failed && result->silent) {
+            ++silentAttempts;
+            ++m_stats.silentAttempts;
+            if (lateWindow > 0) {
+                // The answer may only be late: nothing else goes out until the
+                // line has been quiet for the window, and what comes meanwhile
+                // is this request's (the line was quiet before it was sent).
+                ++m_stats.lateAnswerWaits;
+                const int whole = m_settings.line.wireMs(m_backend.replyWireBytes(request));
+                result = awaitAnswer(request, Window{lateWindow, lateWindow + whole});
+                if (result && result->outcome == Outcome::Answer) ++m_stats.lateAnswersTaken;
+                if (result && result->outcome == Outcome::Failed && result->silent)
+                    ++unheardAttempts;
+            } else if (request.silenceExpected) {
+                // A short look (a bus scan): its answer may come yet. The
+                // next request that is not such a look waits for a quiet line.
+                if (m_backend.lateAnswerWindowMs() > 0) m_unsettled = true;
+            }
+        }
+        if (!result) {
+            // Cancelled while an answer may be on its way.
+            if (m_backend.lateAnswerWindowMs() > 0) m_unsettled = true;
+            return result.error();
+        }
         switch (result->outcome) {
             case Outcome::Answer:
-                if (silentAttempts > 0 && !m_backend.deduplicatesRetries() &&
+                if (unheardAttempts > 0) {
+                    // An earlier attempt stayed silent past its window, so this
+                    // answer may be that one's, and this attempt's may come yet.
+                    m_unsettled = true;
+                }
+                if (lateWindow == 0 && silentAttempts > 0 && !m_backend.deduplicatesRetries() &&
                     request.timeout == TimeoutClass::Normal) {
                     // Without sequence numbers a silent attempt may have been a
                     // slow one: its answer may be the one just accepted, and the
@@ -139,10 +191,6 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
                 return result->answer;
             case Outcome::Failed:
                 problem = result->problem;
-                if (result->silent) {
-                    ++silentAttempts;
-                    ++m_stats.silentAttempts;
-                }
                 break;
             case Outcome::Resend:
                 problem = result->problem;
@@ -375,7 +423,18 @@ Result<int> RequestEngine::consume(BackendStep&& step) {
     return answers;
 }
 
-Status RequestEngine::drain(qint64 untilMs, int enough) {
+Status RequestEngine::settleLine() {
+    ++m_stats.settles;
+    qCDebug(commLinkLog) << "an earlier answer may still come: waiting for a quiet line";
+    const int window = m_backend.lateAnswerWindowMs();
+    const Status drained = drain(now() + window, 0, window);
+    if (!drained) return drained;
+    if (cancelled()) return Error::cancelled();
+    m_unsettled = false;
+    return success();
+}
+
+Status RequestEngine::drain(qint64 untilMs, int enough, int quietMs) {
     int answers = 0;
     while (now() < untilMs && (enough <= 0 || answers < enough) && !cancelled()) {
         qint64 until = untilMs;
@@ -391,9 +450,10 @@ Status RequestEngine::drain(qint64 untilMs, int enough) {
         }
         if (m_backend.nextTimerMs() >= 0 && now() >= m_backend.nextTimerMs())
             step.append(m_backend.poll(now()));
+        if (quietMs > 0 && !chunk->isEmpty()) untilMs = std::max(untilMs, now() + quietMs);
         const Result<int> seen = consume(std::move(step));
         if (!seen) return seen.error();
-        if (*seen > 0 && enough > 0) {
+        if (*seen > 0 && (enough > 0 || quietMs > 0)) {
             m_stats.lateReplies += *seen;
             qCDebug(commLinkLog) << "dropped" << *seen << "late answer(s) to an earlier attempt";
         }
@@ -410,7 +470,8 @@ QString RequestEngine::failureMessage(const Request& request, int attempts,
         silent ? noReply
                : QCoreApplication::translate("cambench::comm", "no valid reply (last: %1)")
                      .arg(problem);
-    const int waitedMs = silent ? firstByteTimeoutMs(request) : attemptTimeoutMs(request);
+    const int waitedMs = silent ? firstByteTimeoutMs(request) + lateAnswerWindowMs(request)
+                                : attemptTimeoutMs(request);
     // Whole phrases, so that a translation can put its own plural.
     const QString tries =
         attempts == 1 ? QCoreApplication::translate("cambench::comm", "1 attempt")

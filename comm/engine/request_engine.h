@@ -4,6 +4,7 @@
 #include "framing_backend.h"
 #include "line_timing.h"
 #include "request.h"
+#include "stop_generation.h"
 
 #include "comm/transport/transport.h"
 #include "model/result.h"
@@ -53,6 +54,11 @@ public:
     // check that must only read installs one (ReadOnlyGate); none = all go.
     using RequestGate = std::function<QString(const Request&)>;
     void setRequestGate(RequestGate gate) { m_gate = std::move(gate); }
+    // The line's STOP generation (the worker's) and the running job's mark:
+    // a motion request of a job asked before the last STOP is refused, and
+    // nothing more of that job is sent (stop_generation.h). None: no check.
+    void setStopGeneration(const StopGeneration* stops) { m_stops = stops; }
+    void setJobStopMark(JobStopMark* mark) { m_jobStop = mark; }
     // Tests: a virtual clock (ms) instead of the wall clock; the transport
     // must advance it while it "waits".
     void setClock(std::function<qint64()> nowMs) { m_clockFn = std::move(nowMs); }
@@ -93,7 +99,12 @@ public:
         int probes = 0;
         int silentAttempts = 0;  // attempts that heard nothing at all
         int lateReplies = 0;     // answers to an earlier attempt, dropped after a retry
-        int refusedByGate = 0;   // requests the request gate kept off the line
+        // A protocol with a late-answer window (FramingBackend::lateAnswerWindowMs):
+        int lateAnswerWaits = 0;   // silent attempts followed by a wait for their answer
+        int lateAnswersTaken = 0;  // answers that came in such a wait
+        int settles = 0;           // waits for a quiet line before a request
+        int refusedByGate = 0;     // requests the request gate kept off the line
+        int refusedByStop = 0;     // requests of a job a STOP overtook, kept off the line
     };
     const Stats& stats() const { return m_stats; }
     void resetStats() { m_stats = {}; }
@@ -126,8 +137,14 @@ private:
     // have been an answer (Message, Damaged).
     Result<int> consume(BackendStep&& step);
     // Reads until `untilMs`, or until `enough` answers (Message, Damaged)
-    // went by when `enough` > 0; nothing is judged.
-    Status drain(qint64 untilMs, int enough);
+    // went by when `enough` > 0; nothing is judged. `quietMs` > 0: also
+    // until the line has been quiet that long (what arrives moves the end).
+    Status drain(qint64 untilMs, int enough, int quietMs = 0);
+    // The late-answer window that applies to `request` (0: none).
+    int lateAnswerWindowMs(const Request& request) const;
+    // Before anything is sent while an answer to an earlier request may
+    // still come: reads until the line has been quiet for the window.
+    Status settleLine();
     // What asking a silent device with the request's probe showed.
     struct Probe {
         enum Kind { StillBusy, AnswerLost, LateAnswer } kind = StillBusy;
@@ -147,12 +164,16 @@ private:
     std::function<void(const TrafficEntry&)> m_sink;
     IncomingObserver m_observer;
     RequestGate m_gate;
+    const StopGeneration* m_stops = nullptr;
+    JobStopMark* m_jobStop = nullptr;
     std::function<qint64()> m_clockFn;
     QElapsedTimer m_clock;
     Stats m_stats;
     int m_lastAttempts = 0;
     bool m_lastHeardDevice = false;
     bool m_sent = false;
+    // An answer to an earlier request may still come (late-answer window).
+    bool m_unsettled = false;
 };
 
 }  // namespace cambench::comm

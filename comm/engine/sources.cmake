@@ -12,4 +12,6 @@ target_sources(cambench_comm PRIVATE
   engine/request_engine.cpp
   engine/between_requests.h
   engine/between_requests.cpp
+  engine/stop_generation.h
+  engine/stop_generation.cpp
 )

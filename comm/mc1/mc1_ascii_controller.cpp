@@ -22,12 +22,16 @@ QString Mc1AsciiController::variantSource() const {
                                        "ASCII protocol, which looks alike on V1 and V2");
 }
 
-Result<QByteArray> Mc1AsciiController::exchange(const QByteArray& line, RetryPolicy retry) {
+Result<QByteArray> Mc1AsciiController::exchange(const QByteArray& line, RetryPolicy retry,
+                                                bool writes) {
     Request request;
     request.label = QString::fromLatin1(line.trimmed());
     request.message = line;
     request.longestReplyBytes = kLongestAnswer;
     request.retry = retry;
+    // A write changes what the PLC program works with: none of a job a
+    // STOP overtook leaves (mc1MayMove).
+    request.motion = writes;
     return m_engine.send(request);
 }
 
@@ -90,7 +94,7 @@ Status Mc1AsciiController::writeVariable(int number, qint64 value) {
         return identified.error();
     const Result<QByteArray> line = mc1AsciiWriteVariable(number, qint32(value));
     if (!line) return line.error();
-    const Result<QByteArray> answer = exchange(*line);
+    const Result<QByteArray> answer = exchange(*line, RetryPolicy::Idempotent, true);
     if (!answer) return answer.error();
     return mc1AsciiOk(*answer);
 }
@@ -122,7 +126,7 @@ Result<bool> Mc1AsciiController::writePoint(const Mc1Point& point, bool on) {
     if (const Result<Mc1Variant> identified = ensureIdentified(); !identified)
         return identified.error();
     // It acts (an output switches a machine part): sent once, as WRBIT is.
-    const Result<QByteArray> answer = exchange(*line, RetryPolicy::Never);
+    const Result<QByteArray> answer = exchange(*line, RetryPolicy::Never, true);
     const Result<QList<bool>> back = readPoints({point}, {});
     if (!answer) {
         if (answer.error().kind != ErrorKind::Communication) return answer.error();
@@ -157,11 +161,11 @@ Result<QByteArray> Mc1AsciiController::readExternalPage(quint8 page, const Progr
 }
 
 Error Mc1AsciiController::notInAscii(const QString& what) const {
-    return Error::usage(QCoreApplication::translate(
-                            "cambench::comm",
-                            "the MC100's ASCII protocol has no requests for %1; an MC200 V2 "
-                            "over the binary protocol (mc1) has")
-                            .arg(what));
+    return Error::unsupported(QCoreApplication::translate(
+                                  "cambench::comm",
+                                  "the MC100's ASCII protocol has no requests for %1; an MC200 V2 "
+                                  "over the binary protocol (mc1) has")
+                                  .arg(what));
 }
 
 Result<Mc1ProgramStatus> Mc1AsciiController::programStatus() {

@@ -47,8 +47,9 @@ public:
 
 private:
     // One line out, the answer line back; `retry` Never sends it once.
-    Result<QByteArray> exchange(const QByteArray& line,
-                                RetryPolicy retry = RetryPolicy::Idempotent);
+    // `writes`: it changes the controller (Request::motion).
+    Result<QByteArray> exchange(const QByteArray& line, RetryPolicy retry = RetryPolicy::Idempotent,
+                                bool writes = false);
     Error notInAscii(const QString& what) const;
 
     Mc1AsciiBackend m_backend;

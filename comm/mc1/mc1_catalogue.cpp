@@ -143,6 +143,29 @@ Mc1Retry mc1AxisRetry(Mc1Op op, quint8 command) {
     return Mc1Retry::Never;
 }
 
+bool mc1MayMove(Mc1Op op, quint8 command) {
+    switch (op) {
+        case Mc1Op::AxisCommand:
+            return command != 0x08 && command != 0x09;
+        case Mc1Op::AxisDataCommand:
+        case Mc1Op::WriteVariable:
+        case Mc1Op::WriteVariable32:
+        case Mc1Op::WriteByteInternal:
+        case Mc1Op::WriteBitInternal:
+        case Mc1Op::WriteByteExternal:
+        case Mc1Op::WriteBitExternal:
+        case Mc1Op::WriteStatus:
+        case Mc1Op::WriteMemory:
+        case Mc1Op::ProgramStart:
+        case Mc1Op::ProgramStep:
+        case Mc1Op::Reset:
+        case Mc1Op::Flash:
+            return true;
+        default:
+            return false;
+    }
+}
+
 Result<QByteArray> mc1Request(const Mc1Telegram& telegram, const QByteArray& parameters) {
     const bool fits =
         telegram.requestData >= 0

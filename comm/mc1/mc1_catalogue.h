@@ -88,6 +88,13 @@ const Mc1Telegram* mc1RequestRow(Mc1Variant variant, const QByteArray& telegram)
 // state; every start or move acts again.
 Mc1Retry mc1AxisRetry(Mc1Op op, quint8 command);
 
+// Whether a telegram can start or continue motion or change what the PLC
+// program works with (issue 35): every axis command but the stops (AXIS_NODATA
+// 08, 09), the program's start, step, reset and flash load, and every write
+// (variables, flags, outputs, memory: a restore's writes). The request
+// engine refuses it for a job asked before the last STOP.
+bool mc1MayMove(Mc1Op op, quint8 command);
+
 // The request for `telegram` with its parameters (after the command byte,
 // which is added): refused when their count does not fit the row.
 Result<QByteArray> mc1Request(const Mc1Telegram& telegram, const QByteArray& parameters);

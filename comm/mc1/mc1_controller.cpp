@@ -59,12 +59,13 @@ Result<Mc1Variant> Mc1Controller::ensureIdentified() {
         m_source = QCoreApplication::translate("cambench::comm", "probed");
     } else if (isMc200(*m_given) != isMc200(*found)) {
         use(*m_given);
-        return Error::usage(QCoreApplication::translate(
-                                "cambench::comm",
-                                "the connection is set to the %1, but the controller answers as "
-                                "an %2 (variables of %3 bits): choose %2 or automatic detection")
-                                .arg(mc1VariantName(*m_given), mc1VariantName(*found))
-                                .arg(mc1VariableBits(*found)));
+        return Error::unsupported(
+            QCoreApplication::translate(
+                "cambench::comm",
+                "the connection is set to the %1, but the controller answers as "
+                "an %2 (variables of %3 bits): choose %2 or automatic detection")
+                .arg(mc1VariantName(*m_given), mc1VariantName(*found))
+                .arg(mc1VariableBits(*found)));
     } else {
         use(*m_given);
         m_source =
@@ -96,7 +97,7 @@ Status Mc1Controller::require(Mc1Capability capability, const QString& what) {
     const Result<Mc1Variant> identified = ensureIdentified();
     if (!identified) return identified.error();
     if (has(capability)) return success();
-    return Error::usage(
+    return Error::unsupported(
         QCoreApplication::translate("cambench::comm", "the %1 cannot %2 (%3)")
             .arg(mc1VariantName(variant()), what,
                  capability == Mc1Capability::MemoryRead
@@ -118,6 +119,17 @@ Result<QString> Mc1Controller::identify() {
             QCoreApplication::translate("cambench::comm", "PLC program %1").arg(status->summary());
     }
     return text;
+}
+
+Result<QString> Mc1Controller::probe() {
+    const EngineSettings usual = m_engine.settings();
+    const Result<QString> first = Mc1Device::probe();
+    if (first || !m_backend.synchronised()) return first;
+    // Reading the identity is safe to ask again, with the usual retries:
+    // a telegram that missed the card's few milliseconds after a 0xFF (a
+    // busy PC) is lost as silently as the first.
+    m_engine.setSettings(usual);
+    return identify();
 }
 
 Result<Mc1Variant> Mc1Controller::identifiedFor(int variable) {

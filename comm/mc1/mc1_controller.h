@@ -36,6 +36,11 @@ public:
     // The variant, RDTABLE's axis table (MC200) and the UDB address
     // (MC200 V2): mc1_controller_identity.cpp.
     Result<DeviceIdentity> readIdentity() override;
+    // identify() without retries, but for one: an MC100MA single-FIFO card
+    // loses the first telegram, sent before the line was heard; when its
+    // 0xFF was heard meanwhile, the identification is asked again, in step
+    // with the 0xFF and with the usual retries (reads only).
+    Result<QString> probe() override;
 
     Mc1Variant variant() const override { return m_link.variant(); }
     QString variantSource() const override { return m_source; }
@@ -56,13 +61,16 @@ public:
     Result<qint32> axisValue(int axis, Mc1AxisValue value) override;
     Result<Mc1AxisDone> axisCommand(int axis, Mc1AxisCommand command, qint32 value) override;
     // The axis command's telegram alone, no read-back: `maxAttempts` > 0
-    // caps its attempts below what its repeat rule allows.
+    // caps its attempts below what its repeat rule allows. A stop goes out
+    // to a controller not identified yet, unprobed: a STOP never waits.
     Status sendAxisCommand(int axis, Mc1AxisCommand command, qint32 value, int maxAttempts = 0);
     // The axes of an MC200 V2 can be stopped from anywhere; nullptr for a
-    // variant without axis telegrams. Identifies the controller first if
-    // that has not happened; when it cannot be identified, a STOP that may
-    // fail is offered unless the settings name a variant without axes.
+    // variant without axis telegrams. Sends nothing: a controller not
+    // identified yet gets a STOP (that may be refused) unless the settings
+    // name a variant without axes.
     MotionControl* motionControl() override;
+    // The axes given, or those RDTABLE found; none before the search.
+    std::optional<Mc1Axes> knownAxes() const;
 
     Result<QByteArray> readMemory(int address, int length, const ProgressFn& progress) override;
     Status writeMemory(int address, const QByteArray& bytes, const ProgressFn& progress) override;
@@ -75,7 +83,7 @@ private:
     Result<Mc1Variant> probeVariant();
     // The identified variant, once `variable` is a number RDVAR/WRVAR carry.
     Result<Mc1Variant> identifiedFor(int variable);
-    // A usage error unless the identified variant has `capability`.
+    // An Unsupported error unless the identified variant has `capability`.
     Status require(Mc1Capability capability, const QString& what);
     // `bytes` bytes of internal RAM (`external` false) or of an external
     // page from `address` on.
@@ -90,8 +98,6 @@ private:
     // One axis value through the parameter table; a refusal names the
     // parameter and, for the built-in guess, what to load.
     Result<qint32> readAxisValue(int axis, Mc1AxisValue value);
-    // The axes given, or those RDTABLE found; none before the search.
-    std::optional<Mc1Axes> knownAxes() const;
     // RDTABLE for every logical axis: those the controller has.
     Result<QList<int>> findAxes();
 

@@ -233,7 +233,9 @@ Mc1Retry mc1AxisCommandRetry(Mc1AxisCommand command) {
 Status Mc1Controller::sendAxisCommand(int axis, Mc1AxisCommand command, qint32 value,
                                       int maxAttempts) {
     const QString what = mc1AxisCommandText(axis, command, value);
-    if (const Status ok = require(Mc1Capability::Axes, what); !ok) return ok.error();
+    const bool stop = command == Mc1AxisCommand::Stop || command == Mc1AxisCommand::QuickStop;
+    if (!stop || m_identified)
+        if (const Status ok = require(Mc1Capability::Axes, what); !ok) return ok.error();
     if (const Status ok = checkAxisNumber(axis); !ok) return ok.error();
     if (command == Mc1AxisCommand::SetSpeed && value <= 0)
         return Error::usage(
@@ -280,9 +282,9 @@ Result<Mc1AxisDone> Mc1Controller::axisCommand(int axis, Mc1AxisCommand command,
 }
 
 MotionControl* Mc1Controller::motionControl() {
-    if (!m_identified) (void)ensureIdentified();
-    // Not identified: a STOP that may fail is better than none, unless the
-    // settings name a variant without axis telegrams.
+    // Not identified: a STOP that may be refused is better than none (or
+    // than a probe before it), unless the settings name a variant without
+    // axis telegrams.
     if (!m_identified) return !m_given || *m_given == Mc1Variant::Mc200V2 ? &m_motion : nullptr;
     return has(Mc1Capability::Axes) ? &m_motion : nullptr;
 }

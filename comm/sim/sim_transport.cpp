@@ -3,6 +3,7 @@
 #include <QThread>
 
 #include <algorithm>
+#include <optional>
 
 namespace cambench::comm {
 
@@ -70,15 +71,38 @@ QString SimTransport::description() const {
     return m_description;
 }
 
+namespace {
+
+// The line of `port` as the PC speaking `protocol` meets it; without a
+// protocol, as the port names it: the first family whose simulator takes
+// the port's keys ("sim" is the first family's default device).
+Result<SimulatedLine> simulatedLine(const QString& port, const SerialSettings& serial,
+                                    const QString& protocol) {
+    if (!protocol.isEmpty()) {
+        const SimulatorInfo* simulator = SimulatorRegistry::instance().forProtocol(protocol);
+        if (!simulator)
+            return Error::usage(QStringLiteral("no simulator is built into this CamBench"));
+        return simulator->fromPort(port, serial, protocol);
+    }
+    std::optional<Error> first;
+    for (const SimulatorInfo* simulator : SimulatorRegistry::instance().all()) {
+        Result<SimulatedLine> line = simulator->fromPort(port, serial, protocol);
+        if (line) return line;
+        if (!first) first = line.error();
+    }
+    if (first) return *first;
+    return Error::usage(QStringLiteral("no simulator is built into this CamBench"));
+}
+
+}  // namespace
+
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
                                                     const SerialSettings& serial,
                                                     const QString& protocol) {
-    const SimulatorInfo* simulator = SimulatorRegistry::instance().forProtocol(protocol);
-    if (!simulator) return Error::usage(QStringLiteral("no simulator is built into this CamBench"));
     // The shaft keys are the host's; the family reads the rest.
     const Result<SimPortWithShaft> split = takeSimShaftKeys(port);
     if (!split) return split.error();
-    Result<SimulatedLine> line = simulator->fromPort(split->port, serial, protocol);
+    Result<SimulatedLine> line = simulatedLine(split->port, serial, protocol);
     if (!line) return line.error();
     if (split->seat) {
         const QString who = QStringLiteral("Simulator port \"%1\"").arg(port);
@@ -93,11 +117,24 @@ bool isSimPort(const QString& port) {
     return port == kPrefix || port.startsWith(kPrefix + QLatin1Char(':'));
 }
 
+QString simPortProtocol(const QString& port) {
+    const Result<SimPortWithShaft> split = takeSimShaftKeys(port);
+    if (!split) return {};
+    for (const SimulatorInfo* simulator : SimulatorRegistry::instance().all()) {
+        if (!simulator->namedProtocol) continue;
+        const QString named = simulator->namedProtocol(split->port);
+        if (!named.isEmpty()) return named;
+    }
+    return {};
+}
+
 void registerSimTransport(TransportRegistry& registry) {
-    registry.add({QStringLiteral("sim"), isSimPort, [](const ConnectionSettings& connection) {
+    registry.add({QStringLiteral("sim"), isSimPort,
+                  [](const ConnectionSettings& connection) {
                       return makeSimTransport(connection.port, connection.serial,
                                               connection.protocol);
-                  }});
+                  },
+                  simPortProtocol});
 }
 
 }  // namespace cambench::comm

@@ -49,9 +49,13 @@ private:
 
 // "sim" or "sim:key=value;..." as a Transport: the simulator of the family
 // `protocol` (a registry id) belongs to builds the line; the keys are its own.
+// Without a protocol, the device the port names (ConnectionSettings::protocol).
 Result<std::unique_ptr<Transport>> makeSimTransport(const QString& port,
                                                     const SerialSettings& serial,
                                                     const QString& protocol = {});
+
+// The protocol the keys of a simulator port name (SimulatorInfo::namedProtocol).
+QString simPortProtocol(const QString& port);
 
 // Adds "sim" and "sim:..." to `registry`.
 void registerSimTransport(TransportRegistry& registry);

@@ -54,6 +54,9 @@ struct SimulatorInfo {
     std::function<Result<SimulatedLine>(const QCommandLineParser& parser,
                                         const SimHostOptions& shared)>
         fromOptions;
+    // The protocol "sim:key=value;..." names by its own keys, whatever the
+    // PC speaks (empty: none; the device then speaks the PC's). Optional.
+    std::function<QString(const QString& port)> namedProtocol = nullptr;
 };
 
 // "0.25" -> 0.25; nullopt unless a number 0..1 (the fault options).

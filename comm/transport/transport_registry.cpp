@@ -82,6 +82,15 @@ Result<std::unique_ptr<Transport>> TransportRegistry::make(
             .arg(port));
 }
 
+QString TransportRegistry::namedProtocol(const QString& port) const {
+    const QString trimmed = port.trimmed();
+    for (const TransportScheme& scheme : m_schemes) {
+        if (!scheme.matches(trimmed)) continue;
+        return scheme.namedProtocol ? scheme.namedProtocol(trimmed) : QString();
+    }
+    return {};
+}
+
 void registerLineTransports(TransportRegistry& registry) {
     registry.add(
         {QStringLiteral("tcp"),

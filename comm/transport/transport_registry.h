@@ -16,6 +16,10 @@ struct TransportScheme {
     // Makes the transport, not opened yet; a Usage error when the name or
     // the settings cannot be used.
     std::function<Result<std::unique_ptr<Transport>>(const ConnectionSettings& connection)> make;
+    // The protocol a port's own name says its device speaks (a simulator
+    // port "sim:protocol=3964r-n96"); empty when the name says none. Unset
+    // for ports whose names never say.
+    std::function<QString(const QString& port)> namedProtocol = nullptr;
 };
 
 // The transports CamBench can open, registered from app/ (one line each):
@@ -27,6 +31,8 @@ public:
     // Schemes are tried in the order added; add the catch-all serial last.
     void add(TransportScheme scheme);
     Result<std::unique_ptr<Transport>> make(const ConnectionSettings& connection) const;
+    // TransportScheme::namedProtocol of the scheme `port` matches.
+    QString namedProtocol(const QString& port) const;
 
 private:
     QList<TransportScheme> m_schemes;

@@ -65,7 +65,7 @@ Result<DetectResult> detectDevice(const QString& port, comm::JobContext& job,
         job.progress(result.attempts.size(), protocols.size(), protocol->title);
         DetectAttempt attempt{protocol->familyId, protocol->id, protocol->defaultSerial, {}, {}};
         Result<std::unique_ptr<comm::Transport>> transport =
-            comm::makeTransport({port, protocol->defaultSerial, protocol->id});
+            comm::makeTransport({port, protocol->defaultSerial, QString()});
         if (!transport) return transport.error();
         if (const Status opened = (*transport)->open(); !opened) return opened.error();
         const comm::ProtocolSettingsPtr settings =

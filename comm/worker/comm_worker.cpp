@@ -4,6 +4,8 @@
 #include "worker_core.h"
 #include "worker_logging.h"
 
+#include <QCoreApplication>
+
 namespace cambench::comm {
 
 namespace {
@@ -14,8 +16,9 @@ constexpr int kStopWaitMs = 3000;
 
 struct CommWorker::Impl {
     std::shared_ptr<JobQueue> queue = std::make_shared<JobQueue>();
+    std::shared_ptr<StopGeneration> stops = std::make_shared<StopGeneration>();
     QThread* thread = new QThread;
-    WorkerCore* core = new WorkerCore(queue);
+    WorkerCore* core = new WorkerCore(queue, stops);
 
     template <class F>
     void post(F&& fn) {
@@ -91,8 +94,8 @@ void CommWorker::setLinkDevice(int device) {
 
 quint64 CommWorker::submit(JobPriority priority, const QString& title, JobFn fn,
                            const QString& pollKey, std::function<void()> dropped) {
-    const JobQueue::Pushed pushed =
-        d->queue->push(priority, title, std::move(fn), pollKey, std::move(dropped));
+    const JobQueue::Pushed pushed = d->queue->push(priority, title, std::move(fn), pollKey,
+                                                   std::move(dropped), d->stops->current());
     if (pushed.replaced != 0) {
         // The replaced poll never runs; it still finishes, like every job.
         QMetaObject::invokeMethod(
@@ -103,6 +106,27 @@ quint64 CommWorker::submit(JobPriority priority, const QString& title, JobFn fn,
     WorkerCore* core = d->core;
     d->post([core] { core->runNextJob(); });
     return pushed.id;
+}
+
+Result<quint64> CommWorker::submitWhenFree(const QString& title, JobFn fn,
+                                           std::function<void()> dropped) {
+    const JobQueue::PushedIfFree pushed =
+        d->queue->pushIfFree(title, std::move(fn), std::move(dropped), d->stops->current());
+    if (!pushed.pushed)
+        return Error::usage(
+            QCoreApplication::translate("cambench::comm",
+                                        "“%1” is running on this device: motion is not queued "
+                                        "(it would start by itself when that ends); ask again then")
+                .arg(pushed.busyWith));
+    WorkerCore* core = d->core;
+    d->post([core] { core->runNextJob(); });
+    return pushed.pushed->id;
+}
+
+void CommWorker::raiseStopGeneration(const QString& cause) {
+    const quint64 raised = d->stops->raise(cause);
+    qCInfo(commWorkerLog) << (cause.isEmpty() ? QStringLiteral("STOP") : cause) << "generation"
+                          << raised;
 }
 
 void CommWorker::cancel(quint64 id) {

@@ -44,6 +44,9 @@ public:
     void cancel(quint64 id) override;
     void cancelAll() override;
     void dropQueued() override;
+    void raiseStopGeneration(const QString& cause = {}) override;
+    Result<quint64> submitWhenFree(const QString& title, JobFn fn,
+                                   std::function<void()> dropped = {}) override;
 
     ConnectionState state() const override { return m_state.load(); }
 

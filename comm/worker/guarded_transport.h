@@ -24,6 +24,8 @@ public:
     QString lossMessage() const;
     // Why calls fail while no transport is attached.
     QString reason() const { return m_reason; }
+    // The connected transport, or nullptr (tests reach a simulated line).
+    Transport* connected() const { return m_inner.get(); }
 
     Status open() override;
     void close() override;

@@ -5,8 +5,26 @@
 namespace cambench::comm {
 
 JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, QString pollKey,
-                                std::function<void()> dropped) {
+                                std::function<void()> dropped, quint64 stopGeneration) {
     std::lock_guard lock(m_mutex);
+    return pushLocked(priority, std::move(title), std::move(fn), std::move(pollKey),
+                      std::move(dropped), stopGeneration);
+}
+
+JobQueue::PushedIfFree JobQueue::pushIfFree(QString title, JobFn fn, std::function<void()> dropped,
+                                            quint64 stopGeneration) {
+    std::lock_guard lock(m_mutex);
+    if (m_runningId != 0 && m_runningPriority != JobPriority::Poll) return {{}, m_runningTitle};
+    for (const JobPriority priority : {JobPriority::Urgent, JobPriority::User})
+        if (!m_queues[int(priority)].empty()) return {{}, m_queues[int(priority)].front().title};
+    return {pushLocked(JobPriority::User, std::move(title), std::move(fn), {}, std::move(dropped),
+                       stopGeneration),
+            {}};
+}
+
+JobQueue::Pushed JobQueue::pushLocked(JobPriority priority, QString title, JobFn fn,
+                                      QString pollKey, std::function<void()> dropped,
+                                      quint64 stopGeneration) {
     QueuedJob job;
     job.id = m_nextId++;
     job.priority = priority;
@@ -15,6 +33,7 @@ JobQueue::Pushed JobQueue::push(JobPriority priority, QString title, JobFn fn, Q
     job.pollKey = priority == JobPriority::Poll ? std::move(pollKey) : QString();
     job.lineEpoch = m_lineChanges;
     job.dropped = std::move(dropped);
+    job.stopGeneration = stopGeneration;
 
     auto& queue = m_queues[int(priority)];
     if (!job.pollKey.isEmpty()) {
@@ -43,6 +62,8 @@ std::optional<QueuedJob> JobQueue::takeNext(quint64 lineChangesDone) {
         QueuedJob job = std::move(queue.front());
         queue.pop_front();
         m_runningId = job.id;
+        m_runningPriority = job.priority;
+        m_runningTitle = job.title;
         m_runningCancel = job.cancel;
         return job;
     }
@@ -61,6 +82,7 @@ std::optional<QueuedJob> JobQueue::takeUrgent(quint64 lineChangesDone) {
 void JobQueue::finishRunning() {
     std::lock_guard lock(m_mutex);
     m_runningId = 0;
+    m_runningTitle.clear();
     m_runningCancel.reset();
 }
 

@@ -30,6 +30,9 @@ struct QueuedJob {
     // Called when a STOP drops the job before it ran (dropQueued()), so
     // that whoever waits for it hears that it was not sent.
     std::function<void()> dropped;
+    // The STOP generation when it was submitted: none of its motion
+    // requests leaves after a later STOP (comm/engine/stop_generation.h).
+    quint64 stopGeneration = 0;
 };
 
 // The worker's pending jobs, shared by the front (any thread) and the worker
@@ -43,7 +46,17 @@ public:
         quint64 replaced = 0;  // the id of the Poll job it replaced, else 0
     };
     Pushed push(JobPriority priority, QString title, JobFn fn, QString pollKey = {},
-                std::function<void()> dropped = {});
+                std::function<void()> dropped = {}, quint64 stopGeneration = 0);
+    // Pushes a User job only when no User or Urgent job runs or waits (a
+    // Poll job may run: it is short, and a User job goes before every
+    // queued poll); else pushes nothing and returns the title of the job
+    // that holds the line. Checked and pushed under one lock.
+    struct PushedIfFree {
+        std::optional<Pushed> pushed;
+        QString busyWith;
+    };
+    PushedIfFree pushIfFree(QString title, JobFn fn, std::function<void()> dropped,
+                            quint64 stopGeneration);
 
     // A connect, disconnect or device change is posted to the worker: jobs
     // pushed from now on wait until it has been carried out.
@@ -73,11 +86,16 @@ public:
     qsizetype size() const;
 
 private:
+    Pushed pushLocked(JobPriority priority, QString title, JobFn fn, QString pollKey,
+                      std::function<void()> dropped, quint64 stopGeneration);
+
     mutable std::mutex m_mutex;
     std::deque<QueuedJob> m_queues[3];  // by JobPriority
     quint64 m_nextId = 1;
     quint64 m_lineChanges = 0;
     quint64 m_runningId = 0;
+    JobPriority m_runningPriority = JobPriority::Poll;
+    QString m_runningTitle;
     std::shared_ptr<std::atomic_bool> m_runningCancel;
 };
 

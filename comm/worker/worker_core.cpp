@@ -18,7 +18,8 @@ namespace {
 constexpr int kServeSliceMs = 20;
 }  // namespace
 
-WorkerCore::WorkerCore(std::shared_ptr<JobQueue> queue) : m_queue(std::move(queue)) {}
+WorkerCore::WorkerCore(std::shared_ptr<JobQueue> queue, std::shared_ptr<const StopGeneration> stops)
+    : m_queue(std::move(queue)), m_stops(std::move(stops)) {}
 
 void WorkerCore::installOnThread() {
     // Every request of a job runs on this thread: urgent jobs run between them.
@@ -75,6 +76,7 @@ void WorkerCore::connectTo(const ConnectionSettings& connection,
     }
     m_device = std::move(device).value();
     m_device->engine().setTrafficSink([this](const TrafficEntry& entry) { Q_EMIT traffic(entry); });
+    m_device->engine().setStopGeneration(m_stops.get());
     qCInfo(commWorkerLog) << "connected to" << description;
     setState(ConnectionState::Connected, description);
     scheduleLineService();
@@ -148,14 +150,24 @@ void WorkerCore::runJob(QueuedJob& job) {
     // interrupted backup must not cancel the STOP; the backup's comes back
     // after it.
     const std::atomic_bool* interrupted = std::exchange(m_jobCancel, job.cancel.get());
-    if (m_device) m_device->engine().setCancelFlag(m_jobCancel);
+    // Its own STOP mark, too: a STOP inside a move it interrupts is not stopped by it.
+    JobStopMark mark{job.stopGeneration, std::nullopt};
+    JobStopMark* interruptedMark = std::exchange(m_jobStop, &mark);
+    if (m_device) {
+        m_device->engine().setCancelFlag(m_jobCancel);
+        m_device->engine().setJobStopMark(m_jobStop);
+    }
     JobContext context(m_device.get(), m_line.reason(), *job.cancel,
                        [this, id](qint64 done, qint64 total, const QString& text) {
                            Q_EMIT jobProgress(id, done, total, text);
                        });
     job.fn(context);
     m_jobCancel = interrupted;
-    if (m_device) m_device->engine().setCancelFlag(m_jobCancel);
+    m_jobStop = interruptedMark;
+    if (m_device) {
+        m_device->engine().setCancelFlag(m_jobCancel);
+        m_device->engine().setJobStopMark(m_jobStop);
+    }
     qCDebug(commWorkerLog) << "job" << id << "finished";
     Q_EMIT jobFinished(id);
 }

@@ -4,6 +4,8 @@
 #include "guarded_transport.h"
 #include "job_queue.h"
 
+#include "comm/engine/stop_generation.h"
+
 #include <QObject>
 
 #include <memory>
@@ -16,7 +18,7 @@ namespace cambench::comm {
 class WorkerCore : public QObject {
     Q_OBJECT
 public:
-    explicit WorkerCore(std::shared_ptr<JobQueue> queue);
+    WorkerCore(std::shared_ptr<JobQueue> queue, std::shared_ptr<const StopGeneration> stops);
     ~WorkerCore() override;
 
     void connectTo(const ConnectionSettings& connection, const ProtocolSettingsPtr& protocol);
@@ -48,12 +50,14 @@ private:
     void runUrgentJobs();
 
     std::shared_ptr<JobQueue> m_queue;
+    std::shared_ptr<const StopGeneration> m_stops;
     GuardedTransport m_line;
     std::unique_ptr<DeviceConnection> m_device;
     quint64 m_lineChangesDone = 0;  // connect, disconnect and device changes carried out
     ConnectionState m_state = ConnectionState::Disconnected;
     bool m_serviceScheduled = false;
     const std::atomic_bool* m_jobCancel = nullptr;  // the running job's
+    JobStopMark* m_jobStop = nullptr;               // the running job's
     bool m_inUrgentJob = false;                     // its requests run no other urgent job
 };
 

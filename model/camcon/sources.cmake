@@ -23,6 +23,8 @@ target_sources(cambench_model PRIVATE
   camcon/eeprom_image.cpp
   camcon/system_settings.h
   camcon/system_settings.cpp
+  camcon/link_settings.h
+  camcon/link_settings.cpp
   camcon/settings_validation.cpp
   camcon/cam_validation.h
   camcon/cam_validation.cpp

@@ -54,10 +54,12 @@ CliRun runCli(const QStringList& args, int timeoutMs) {
     return runProgram(QStringLiteral(CAMBENCH_CLI_EXE), args, timeoutMs);
 }
 
-CliRun runProgram(const QString& program, const QStringList& args, int timeoutMs) {
+CliRun runProgram(const QString& program, const QStringList& args, int timeoutMs,
+                  const QString& workingDirectory) {
     QProcess process;
     process.setProgram(program);
     process.setArguments(args);
+    if (!workingDirectory.isEmpty()) process.setWorkingDirectory(workingDirectory);
     endWithThisTest(process);
     process.start();
     CliRun run;

@@ -38,12 +38,17 @@ struct CliRun {
     bool finished = false;  // false: it had to be killed (hang)
     QString out;
     QString err;
+    // On a simulated Cam-BUS: the turns the simulated users waited for the
+    // PC in vain meanwhile, as the simulator logged them (empty: none).
+    QString busMisses;
 };
 
 // Runs cambench-cli with `args`, bounded by `timeoutMs` on a quiet machine
 // (a hang bound, not a performance limit), stretched by testPace().
 CliRun runCli(const QStringList& args, int timeoutMs = 120000);
-// The same for another program (cambench-sim when it is to refuse).
-CliRun runProgram(const QString& program, const QStringList& args, int timeoutMs = 120000);
+// The same for another program (cambench-sim when it is to refuse), in
+// `workingDirectory` when given.
+CliRun runProgram(const QString& program, const QStringList& args, int timeoutMs = 120000,
+                  const QString& workingDirectory = {});
 
 }  // namespace cambench::e2e

@@ -48,6 +48,10 @@ cambench_add_e2e_test(tst_e2e_machine_families e2e/tst_e2e_machine_families.cpp)
 # the manifest's who, why and with what, the safety copies beside.
 cambench_add_e2e_test(tst_e2e_machine_readable e2e/tst_e2e_machine_readable.cpp)
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
+# Every command line of README.md's code blocks, read from it when it runs.
+cambench_add_e2e_test(tst_e2e_readme e2e/tst_e2e_readme.cpp)
+target_compile_definitions(tst_e2e_readme PRIVATE
+  CAMBENCH_README="${PROJECT_SOURCE_DIR}/README.md" CAMBENCH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 # A test that dies (aborted, killed) takes its simulator with it.
 cambench_add_e2e_test(tst_e2e_cleanup e2e/tst_e2e_cleanup.cpp)
 # Each family's tests of this area, listed in its folder (tests/e2e/<family>/).

@@ -55,6 +55,7 @@ private Q_SLOTS:
     void programOutsideTheDeviceReadsNoCams();
     void writeReportsEveryItem();
     void projectReadThenWriteChangesNothing();
+    void projectOfAnotherProtocolKeepsTheLink();
     void deadTimesRoundTrip_data() { protocolRows(); }
     void deadTimesRoundTrip();
     void namesRoundTrip();
@@ -75,8 +76,8 @@ private Q_SLOTS:
     void rawPrintsReplyBody();
     void portsListsSerialPortsWithoutADevice();
     void guiHelpNeedsNoDisplay();
-    void asciiOnlyCommandsExitTwoNamingTheProtocol_data();
-    void asciiOnlyCommandsExitTwoNamingTheProtocol();
+    void asciiOnlyCommandsExitOneNamingTheProtocol_data();
+    void asciiOnlyCommandsExitOneNamingTheProtocol();
 };
 
 void TestE2eCli::infoPrintsIdentityAndCapacities() {
@@ -198,8 +199,9 @@ void TestE2eCli::programOutsideTheDeviceReadsNoCams() {
     for (const QStringList& args : {QStringList{"cams", "read", "--program", "16"},
                                     QStringList{"diff", "device", "/dev/null", "--program", "16"},
                                     QStringList{"timing", "--program", "16", "--speed", "100"}}) {
+        // A program the device does not have: data that does not fit it (4).
         const CliRun run = session.cli(args);
-        VERIFY_EXIT(run, 2);
+        VERIFY_EXIT(run, 4);
         QVERIFY2(run.err.contains(refusal),
                  qPrintable(args.join(u' ') + QLatin1String(": ") + run.err));
     }
@@ -247,6 +249,57 @@ void TestE2eCli::projectReadThenWriteChangesNothing() {
     QVERIFY2(write.out.contains(QLatin1String(" 0 written, ")), qPrintable(write.out));
     const QByteArray log = readBytes(session.path(QStringLiteral("sim-stderr.log"))).mid(logBefore);
     QVERIFY2(!log.contains("<- !"), log.constData());
+}
+
+// Issue 39: a table-interface device's project written to a CamCon on
+// Standard switched it to 3964R ("settings configuration (..., protocol):
+// written"); the next connection failed. Its communication settings are
+// left out and named; asked for by name, they are written last and the
+// report says what the next connection needs.
+void TestE2eCli::projectOfAnotherProtocolKeepsTheLink() {
+    SimSession table(QStringLiteral("3964r-n96"));
+    START_SIM(table);
+    const QString file = table.path(QStringLiteral("table.cambench"));
+    VERIFY_EXIT(table.cli({"project", "read", "-o", file}), 0);
+    QCOMPARE(QJsonDocument::fromJson(readBytes(file))
+                 .object()
+                 .value(QStringLiteral("settings"))
+                 .toObject()
+                 .value(QStringLiteral("protocol"))
+                 .toInt(),
+             4);
+    SimSession standard;
+    START_SIM(standard, {"--verbose"});
+    const CliRun write = standard.cli({"project", "write", file});
+    QVERIFY2(!write.out.contains(QLatin1String("protocol)")), qPrintable(write.out));
+    QVERIFY2(write.out.contains(QLatin1String("Communication settings left out: Communication "
+                                              "protocol 3964R (the device keeps Communication "
+                                              "protocol Standard)")),
+             qPrintable(write.out));
+    const QByteArray log = readBytes(standard.path(QStringLiteral("sim-stderr.log")));
+    QVERIFY2(!log.contains("<- !GSIO"), log.constData());
+    const CliRun info = standard.cli({"info"});
+    VERIFY_EXIT(info, 0);
+    QVERIFY2(info.out.contains(QLatin1String("protocol: 1\n")), qPrintable(info.out));
+
+    const CliRun asked =
+        standard.cli({"project", "write", file, "--communication-settings", "protocol"});
+    QVERIFY2(asked.err.contains(QLatin1String("note: protocol will be written last")),
+             qPrintable(asked.err));
+    QVERIFY2(asked.out.contains(QLatin1String("settings configuration (protocol): written")),
+             qPrintable(asked.out));
+    QVERIFY2(asked.out.contains(QLatin1String("Communication settings written: the next "
+                                              "connection to this device needs Communication "
+                                              "protocol 3964R.")),
+             qPrintable(asked.out));
+    // (The simulator goes on speaking Standard; a real device would not.)
+    QVERIFY2(standard.cli({"info"}).out.contains(QLatin1String("protocol: 4\n")),
+             "protocol 4 after it was asked for");
+    const CliRun wrong =
+        standard.cli({"project", "write", file, "--communication-settings", "baud"});
+    VERIFY_EXIT(wrong, 2);
+    QVERIFY2(wrong.err.contains(QLatin1String("takes deviceNumber,protocol")),
+             qPrintable(wrong.err));
 }
 
 void TestE2eCli::deadTimesRoundTrip() {
@@ -426,7 +479,7 @@ void TestE2eCli::camBusBackupRestoreVerify() {
     VERIFY_EXIT(session.cli({"--device", "7", "backup", "-o", image}), 0);
     // Device 3 gets 7's EEPROM; then it equals the file.
     const CliRun differs = session.cli({"--device", "3", "verify", image});
-    QVERIFY2(differs.exitCode == 1, describe(differs).constData());
+    VERIFY_EXIT(differs, 1);
     const CliRun restored =
         session.cli({"--device", "3", "restore", image, "--force", "--no-safety-backup"});
     VERIFY_EXIT(restored, 0);
@@ -437,11 +490,14 @@ void TestE2eCli::scanNeedsMultiuser() {
     QFETCH(QString, protocol);
     SimSession session(protocol);
     START_SIM(session);
+    // The protocol has no bus: the device's side, not the command line's (1).
     const CliRun run = session.cli({"scan"});
-    VERIFY_EXIT(run, 2);
+    VERIFY_EXIT(run, 1);
     QVERIFY(run.err.contains(QLatin1String("--protocol multiuser")));
 }
 
+// Issue 39, item 4: a usage error is the error and one line saying where
+// the help is, never the whole help; `help COMMAND` prints that command's lines.
 void TestE2eCli::usageErrorsExitTwoWithUsage() {
     for (const QStringList& args :
          {QStringList{"frobnicate"}, QStringList{"cams", "read"},
@@ -449,8 +505,26 @@ void TestE2eCli::usageErrorsExitTwoWithUsage() {
         const CliRun run = runCli(args, 30000);
         VERIFY_EXIT(run, 2);
         QVERIFY2(run.err.startsWith(QLatin1String("cambench-cli: ")), qPrintable(run.err));
-        QVERIFY(run.err.contains(QLatin1String("Usage: cambench-cli")));
+        QVERIFY2(!run.err.contains(QLatin1String("Usage: cambench-cli")), qPrintable(run.err));
+        QCOMPARE(run.err.count(u'\n'), 2);
+        QVERIFY2(run.err.contains(QLatin1String("Help: `cambench-cli ")), qPrintable(run.err));
     }
+    const CliRun cams = runCli({"cams", "read"}, 30000);
+    QVERIFY2(cams.err.endsWith(QLatin1String(
+                 "Help: `cambench-cli help cams`, or `cambench-cli --help` for everything\n")),
+             qPrintable(cams.err));
+    const CliRun camsHelp = runCli({"help", "cams"}, 30000);
+    VERIFY_EXIT(camsHelp, 0);
+    QVERIFY2(camsHelp.out.contains(QLatin1String("  cams read --program P")) &&
+                 camsHelp.out.contains(QLatin1String("  cams write --program P FILE")) &&
+                 !camsHelp.out.contains(QLatin1String("deadtimes")),
+             qPrintable(camsHelp.out));
+    const CliRun mcHelp = runCli({"help", "mc"}, 30000);
+    VERIFY_EXIT(mcHelp, 0);
+    QVERIFY2(mcHelp.out.contains(QLatin1String("  mc axis N speed V")) &&
+                 mcHelp.out.contains(QLatin1String("--parameters FILE")),
+             qPrintable(mcHelp.out));
+    VERIFY_EXIT(runCli({"help", "frobnicate"}, 30000), 2);
     const CliRun help = runCli({"--help"}, 30000);
     VERIFY_EXIT(help, 0);
     QVERIFY(help.out.contains(QLatin1String("exit 0 when equal")));
@@ -470,7 +544,8 @@ void TestE2eCli::familyOptionNamesTheFamilies() {
              qPrintable(unknown.err));
     const CliRun other = runCli({"--family", "compax3", "info"}, 30000);
     VERIFY_EXIT(other, 2);
-    QVERIFY2(other.err.contains(QLatin1String("\"info\" is a command of the camcon family")),
+    QVERIFY2(other.err.contains(QLatin1String("\"info\" is a command of the camcon family")) &&
+                 other.err.contains(QLatin1String("--family compax3")),
              qPrintable(other.err));
     const CliRun help = runCli({"--help"}, 30000);
     QVERIFY2(help.out.contains(QLatin1String("--family")), qPrintable(help.out));
@@ -484,7 +559,7 @@ void TestE2eCli::rawPrintsReplyBody() {
     QCOMPARE(run.out, QStringLiteral("GPRGMAX0010\n"));
 }
 
-void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol_data() {
+void TestE2eCli::asciiOnlyCommandsExitOneNamingTheProtocol_data() {
     QTest::addColumn<QString>("protocol");
     QTest::addColumn<QStringList>("command");
     QTest::addColumn<QString>("capability");
@@ -504,7 +579,9 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol_data() {
     }
 }
 
-void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
+// What the protocol lacks is the device side's (exit 1), not a command line
+// that cannot be understood (2); nothing is sent.
+void TestE2eCli::asciiOnlyCommandsExitOneNamingTheProtocol() {
     QFETCH(QString, protocol);
     QFETCH(QStringList, command);
     QFETCH(QString, capability);
@@ -518,7 +595,7 @@ void TestE2eCli::asciiOnlyCommandsExitTwoNamingTheProtocol() {
     SimSession session(protocol);
     START_SIM(session);
     const CliRun run = session.cli(command);
-    VERIFY_EXIT(run, 2);
+    VERIFY_EXIT(run, 1);
     QVERIFY2(run.err.contains(capability), qPrintable(run.err));
     QVERIFY2(run.err.contains(QLatin1String("ASCII protocol (Standard or Multiuser)")),
              qPrintable(run.err));

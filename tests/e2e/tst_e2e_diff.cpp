@@ -4,6 +4,7 @@
 #include "e2e_support.h"
 
 #include <QDir>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -221,6 +222,74 @@ private Q_SLOTS:
         const QString added = git(dir, {"diff", "4b825dc642cb6eb9a060e54bf8d69288fbee4904", "HEAD"})
                                   .value_or(QString());
         QVERIFY2(added.contains(QLatin1String("program 0: only in B")), qPrintable(added));
+    }
+
+    // Issue 39, item 3: the driver is installed by the lines `diff
+    // --git-setup` prints (with this cli's absolute path: git finds it
+    // without PATH), and every CamBench file - an EEPROM image, settings, a
+    // machine file, a CSV that is no cam file, a .json that is no JSON -
+    // gets its differences shown, never "external diff died".
+    void gitDiffDriverForEveryCamBenchFile() {
+        if (QStandardPaths::findExecutable(QStringLiteral("git")).isEmpty())
+            QSKIP("git is not installed");
+        const CliRun setup = runCli({"diff", "--git-setup"});
+        VERIFY_EXIT(setup, 0);
+        QVERIFY2(setup.out.contains(
+                     QStringLiteral("git config diff.cambench.command '%1 diff --git'")
+                         .arg(QFileInfo(QStringLiteral(CAMBENCH_CLI_EXE)).absoluteFilePath())),
+                 qPrintable(setup.out));
+        SimSession session;
+        START_SIM(session);
+        QTemporaryDir repo;
+        const QString dir = repo.path();
+        VERIFY_EXIT(session.cli({"backup", "-o", repo.filePath("image.json")}), 0);
+        VERIFY_EXIT(session.cli({"settings", "read", "-o", repo.filePath("settings.json")}), 0);
+        VERIFY_EXIT(session.cli({"names", "read", "-o", repo.filePath("names.csv")}), 0);
+        QVERIFY(writeBytes(repo.filePath("machine.json"),
+                           "{\"machine\": \"Press 7\", \"devices\": [{\"name\": \"cams\", "
+                           "\"family\": \"camcon\", \"port\": \"/dev/ttyUSB0\"}]}\n"));
+        QVERIFY(writeBytes(repo.filePath("notes.json"), "first line\nnot JSON at all\n"));
+        QVERIFY(git(dir, {"init", "-q"}).has_value());
+        QVERIFY(git(dir, {"config", "user.email", "test@example.com"}).has_value());
+        QVERIFY(git(dir, {"config", "user.name", "Test"}).has_value());
+        // The printed lines, run as a person pastes them.
+        QProcess shell;
+        shell.setWorkingDirectory(dir);
+        endWithThisTest(shell);
+        shell.start(QStringLiteral("sh"), {QStringLiteral("-e"), QStringLiteral("-c"), setup.out});
+        QVERIFY(shell.waitForFinished(hangBoundMs(30000)));
+        QCOMPARE(shell.exitCode(), 0);
+        QVERIFY(git(dir, {"add", "."}).has_value());
+        QVERIFY(git(dir, {"commit", "-q", "-m", "first"}).has_value());
+
+        // A changed member in each JSON file, a changed line in the others.
+        for (const char* name : {"image.json", "settings.json"}) {
+            QJsonObject root = QJsonDocument::fromJson(readBytes(repo.filePath(name))).object();
+            QVERIFY2(!root.isEmpty(), name);
+            root.insert(QStringLiteral("note"), QStringLiteral("changed"));
+            QVERIFY(writeBytes(repo.filePath(name), QJsonDocument(root).toJson()));
+        }
+        QVERIFY(writeBytes(repo.filePath("machine.json"),
+                           "{\"machine\": \"Press 7\", \"devices\": [{\"name\": \"cams\", "
+                           "\"family\": \"camcon\", \"port\": \"/dev/ttyUSB1\"}]}\n"));
+        QVERIFY(writeBytes(repo.filePath("notes.json"), "first line\nstill not JSON\n"));
+        QByteArray names = readBytes(repo.filePath("names.csv"));
+        QVERIFY(!names.isEmpty());
+        QVERIFY(writeBytes(repo.filePath("names.csv"), names + "output,9,Glue valve\n"));
+        QVERIFY(git(dir, {"commit", "-q", "-a", "-m", "second"}).has_value());
+
+        // git's own PATH without the cli: the configured path alone finds it.
+        const std::optional<QString> diff = git(dir, {"diff", "HEAD~1", "HEAD"});
+        QVERIFY2(diff.has_value(), "git diff failed: the driver died");
+        for (const char* expected :
+             {"cambench diff image.json\n", "note: only in B: \"changed\"\n",
+              "cambench diff settings.json\n", "cambench diff machine.json\n",
+              "devices[0].port: \"/dev/ttyUSB0\" → \"/dev/ttyUSB1\"\n",
+              "cambench diff notes.json\n", "-not JSON at all\n+still not JSON\n",
+              "cambench diff names.csv\n", "+output,9,Glue valve\n"})
+            QVERIFY2(diff->contains(QString::fromUtf8(expected)),
+                     qPrintable(QStringLiteral("missing \"%1\" in:\n%2")
+                                    .arg(QString::fromUtf8(expected), *diff)));
     }
 };
 

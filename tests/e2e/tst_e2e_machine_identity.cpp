@@ -23,14 +23,6 @@
 
 using namespace cambench::e2e;
 
-// VERIFY_EXIT names its run twice (the check and the message), so a command
-// given to it runs twice; this test counts writes and runs each once.
-#define RUN_EXIT(command, code)        \
-    do {                               \
-        const CliRun ran_ = (command); \
-        VERIFY_EXIT(ran_, code);       \
-    } while (false)
-
 namespace {
 
 QJsonObject deviceAt(const QString& name, const QString& family, const QString& port) {
@@ -137,10 +129,10 @@ struct Machine {
         START_SIM(plcB, {"--variant", "mc200v2", "--udb", "0x14000", "--verbose"});
         START_SIM(camsA, {"--eprom", "03.05.2001", "--outputs", "32", "--verbose"});
         START_SIM(camsB, {"--eprom", "11.10.1994", "--outputs", "32", "--verbose"});
-        RUN_EXIT(feedA.cli({"c3", "write", "1901.1=100"}), 0);
-        RUN_EXIT(feedB.cli({"c3", "write", "1901.1=200"}), 0);
-        RUN_EXIT(plcA.cli({"mc", "var", "write", "12", "111"}), 0);
-        RUN_EXIT(plcB.cli({"mc", "var", "write", "12", "222"}), 0);
+        VERIFY_EXIT(feedA.cli({"c3", "write", "1901.1=100"}), 0);
+        VERIFY_EXIT(feedB.cli({"c3", "write", "1901.1=200"}), 0);
+        VERIFY_EXIT(plcA.cli({"mc", "var", "write", "12", "111"}), 0);
+        VERIFY_EXIT(plcB.cli({"mc", "var", "write", "12", "222"}), 0);
     }
 
     QByteArray file() const {
@@ -189,7 +181,7 @@ private Q_SLOTS:
             readJson(dir + QStringLiteral("/manifest.json")).value("devices").toArray();
         QCOMPARE(manifest.at(1).toObject().value("identity").toObject().value("serial").toString(),
                  QStringLiteral("C3-2002"));
-        RUN_EXIT(runCli({"machine", "status", file}), 0);
+        VERIFY_EXIT(runCli({"machine", "status", file}), 0);
         QCOMPARE(m.writes(), 4);  // the four values written above, nothing since
 
         // The cables are changed over: each pair's ports swapped.
@@ -258,7 +250,7 @@ private Q_SLOTS:
         m.start();
         if (QTest::currentTestFailed()) return;
         const QString file = m.feedA.path(QStringLiteral("feed-a.json"));
-        RUN_EXIT(m.feedA.cli({"c3", "backup", "-o", file}), 0);
+        VERIFY_EXIT(m.feedA.cli({"c3", "backup", "-o", file}), 0);
         const CliRun refused = m.feedB.cli({"c3", "restore", file});
         VERIFY_EXIT(refused, 4);
         QVERIFY2(refused.err.contains(QLatin1String("another device answers: expected serial "
@@ -267,22 +259,23 @@ private Q_SLOTS:
         QVERIFY2(refused.err.contains(QLatin1String("Nothing was written")),
                  qPrintable(refused.err));
         QCOMPARE(compax3Writes(m.feedB), 1);  // its own value, written above
-        RUN_EXIT(m.feedB.cli({"c3", "restore", file, "--replacement"}), 0);
+        VERIFY_EXIT(m.feedB.cli({"c3", "restore", file, "--replacement"}), 0);
         QVERIFY(compax3Writes(m.feedB) > 1);
 
         const QString program = m.plcA.path(QStringLiteral("plc-a.json"));
-        RUN_EXIT(m.plcA.cli({"mc", "backup", "-o", program, "--vars", "10-14", "--no-flags"}), 0);
+        VERIFY_EXIT(m.plcA.cli({"mc", "backup", "-o", program, "--vars", "10-14", "--no-flags"}),
+                    0);
         const CliRun other = m.plcB.cli({"mc", "restore", program});
         VERIFY_EXIT(other, 4);
         QVERIFY2(other.err.contains(QLatin1String("expected program udb 0x00010000, found "
                                                   "program udb 0x00014000")),
                  qPrintable(other.err));
         QCOMPARE(mc1Writes(m.plcB), 1);
-        RUN_EXIT(m.plcB.cli({"mc", "restore", program, "--replacement"}), 0);
+        VERIFY_EXIT(m.plcB.cli({"mc", "restore", program, "--replacement"}), 0);
         QCOMPARE(mc1Writes(m.plcB), 2);  // V12: 222 -> 111
 
         const QString image = m.camsA.path(QStringLiteral("cams-a.json"));
-        RUN_EXIT(m.camsA.cli({"backup", "-o", image}), 0);
+        VERIFY_EXIT(m.camsA.cli({"backup", "-o", image}), 0);
         const CliRun cams = m.camsB.cli({"restore", image});
         VERIFY_EXIT(cams, 4);
         QVERIFY2(cams.err.contains(QLatin1String("another device answers: expected ")) &&
@@ -290,7 +283,7 @@ private Q_SLOTS:
                      cams.err.contains(QLatin1String("eprom 11.10.1994")),
                  qPrintable(cams.err));
         QCOMPARE(camconWrites(m.camsB), 0);  // refused before the safety backup and the erase
-        RUN_EXIT(m.camsB.cli({"restore", image, "--replacement", "--no-safety-backup"}), 0);
+        VERIFY_EXIT(m.camsB.cli({"restore", image, "--replacement", "--no-safety-backup"}), 0);
         QVERIFY(camconWrites(m.camsB) > 0);
     }
 
@@ -301,20 +294,20 @@ private Q_SLOTS:
         Machine m;
         START_SIM(m.plcA, {"--variant", "mc200v2", "--verbose"});
         const QString path = m.plcA.path(QStringLiteral("old.json"));
-        RUN_EXIT(m.plcA.cli({"mc", "backup", "-o", path, "--vars", "10-14", "--no-flags"}), 0);
+        VERIFY_EXIT(m.plcA.cli({"mc", "backup", "-o", path, "--vars", "10-14", "--no-flags"}), 0);
         QJsonObject old = readJson(path);
         QVERIFY(old.contains("identity"));
         old.remove("identity");
         old.remove("sha256");
         cambench::sealWithHash(old);
         QVERIFY(writeBytes(path, QJsonDocument(old).toJson()));
-        RUN_EXIT(m.plcA.cli({"mc", "var", "write", "12", "5"}), 0);
+        VERIFY_EXIT(m.plcA.cli({"mc", "var", "write", "12", "5"}), 0);
         const CliRun refused = m.plcA.cli({"mc", "restore", path});
         VERIFY_EXIT(refused, 4);
         QVERIFY2(refused.err.contains(QLatin1String("records no identity")),
                  qPrintable(refused.err));
         QCOMPARE(mc1Writes(m.plcA), 1);
-        RUN_EXIT(m.plcA.cli({"mc", "restore", path, "--replacement"}), 0);
+        VERIFY_EXIT(m.plcA.cli({"mc", "restore", path, "--replacement"}), 0);
         QCOMPARE(mc1Writes(m.plcA), 2);
     }
 };

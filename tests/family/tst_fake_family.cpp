@@ -279,8 +279,12 @@ private Q_SLOTS:
                                       QStringLiteral("ping"), QStringLiteral("5")}),
                  0);
         QVERIFY(fake::requestsReceived() > before);
-        // Its command belongs to its family: refused for the CamCon (usage).
-        QCOMPARE(cli::runCommandLine({QStringLiteral("ping"), QStringLiteral("5")}), 2);
+        // Its command names its family (issue 39): no --family needed...
+        QCOMPARE(cli::runCommandLine({QStringLiteral("ping"), QStringLiteral("5")}), 0);
+        // ...and another family named with it is refused (usage).
+        QCOMPARE(cli::runCommandLine({QStringLiteral("--family"), QStringLiteral("camcon"),
+                                      QStringLiteral("ping"), QStringLiteral("5")}),
+                 2);
         // And the CamCon's commands are not the fake's.
         QCOMPARE(cli::runCommandLine(
                      {QStringLiteral("--family"), QStringLiteral("fake"), QStringLiteral("info")}),

@@ -207,7 +207,8 @@ void CamConWindow::readStartSections(int program) {
     for (SectionPage* page : m_pages) page->deviceConnected();
     const auto finished = [this](const Status& status) {
         if (!status && status.error().kind != ErrorKind::Cancelled &&
-            status.error().kind != ErrorKind::Usage)
+            status.error().kind != ErrorKind::Usage &&
+            status.error().kind != ErrorKind::Unsupported)
             showMessage(tr("Reading the device: %1").arg(status.error().message));
         if (--m_startReads > 0) return;
         window()->reportLoaded(true);

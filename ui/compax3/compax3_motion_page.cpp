@@ -14,6 +14,9 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <memory>
+#include <utility>
+
 namespace cambench {
 
 using comm::Compax3Motion;
@@ -47,6 +50,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
       m_target(numberBox("compax3Target", -1000000, 1000000, 100)),
       m_velocity(numberBox("compax3Velocity", 0, 100000, 100)),
       m_acceleration(numberBox("compax3Acceleration", 0, 10000000, 1000)),
+      m_deceleration(numberBox("compax3Deceleration", 0, 10000000, 1000)),
       m_mode(new QLabel) {
     setObjectName(QStringLiteral("compax3MotionPage"));
     m_axis->setObjectName(QStringLiteral("compax3MotionAxis"));
@@ -103,6 +107,7 @@ Compax3MotionPage::Compax3MotionPage(DeviceSession* session, QWidget* parent)
     form->addRow(tr("Target:"), m_target);
     form->addRow(tr("Velocity:"), m_velocity);
     form->addRow(tr("Acceleration:"), m_acceleration);
+    form->addRow(tr("Deceleration:"), m_deceleration);
     m_mode->setObjectName(QStringLiteral("compax3SetMode"));
     form->addRow(tr("Mode (1905.n):"), m_mode);
     form->addRow(QString(), move);
@@ -174,7 +179,29 @@ void Compax3MotionPage::showSet(const comm::Compax3SetValues& values) {
     m_target->setValue(values.target);
     m_velocity->setValue(values.velocity);
     m_acceleration->setValue(values.acceleration);
-    m_mode->setText(tr("%1 (as on the drive)").arg(values.modeText()));
+    m_deceleration->setValue(values.deceleration);
+    m_mode->setText(
+        tr("%1 (read at %2)")
+            .arg(values.modeText(), values.readAt.toString(QStringLiteral("HH:mm:ss"))));
+}
+
+void Compax3MotionPage::setChanged(const comm::Compax3SetValues& now, const QString& note) {
+    if (!m_read || now.set != m_read->set || now.set != m_set->value()) return;
+    // What the person typed stays; the rest shows the drive's new values.
+    const std::pair<QDoubleSpinBox*, std::pair<double, double>> fields[] = {
+        {m_target, {m_read->target, now.target}},
+        {m_velocity, {m_read->velocity, now.velocity}},
+        {m_acceleration, {m_read->acceleration, now.acceleration}},
+        {m_deceleration, {m_read->deceleration, now.deceleration}}};
+    QList<double> typed;
+    for (const auto& field : fields) typed << field.first->value();
+    showSet(now);
+    for (int i = 0; i < 4; ++i)
+        if (typed.at(i) != fields[i].second.first) fields[i].first->setValue(typed.at(i));
+    showResult(capitalised(asSentence(note)), false);
+    m_askAgain = capitalised(asSentence(note));
+    // Asked again once this job's answer is handled.
+    QMetaObject::invokeMethod(this, &Compax3MotionPage::moveSet, Qt::QueuedConnection);
 }
 
 bool Compax3MotionPage::poll() {
@@ -215,9 +242,17 @@ void Compax3MotionPage::finished(const QString& what,
     showResult(tr("Sent: %1. Now %2.").arg(what, result->summary()), true);
 }
 
+bool Compax3MotionPage::confirmDisable() {
+    return confirm(tr("Disable"), tr("Switch drive %1 powerless?").arg(facts().identity.serial),
+                   tr("Power is dropped: the motor no longer holds the axis. A hanging (vertical) "
+                      "axis falls unless its brake holds it; a moving axis runs out as the drive "
+                      "is set. Make sure nobody is at the axis."));
+}
+
 void Compax3MotionPage::runMotion(Compax3Motion motion) {
     if (!facts().known) return;
     const QString what = comm::compax3MotionText(motion);
+    if (motion == Compax3Motion::Disable && !confirmDisable()) return;
     if (motion != Compax3Motion::Disable) {
         const QString detail =
             comm::compax3MotionMoves(motion)
@@ -230,7 +265,8 @@ void Compax3MotionPage::runMotion(Compax3Motion motion) {
                      detail))
             return;
     }
-    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
+    // Only when the line is free: motion never waits in a queue.
+    session()->runMotion<comm::Compax3Device, comm::Compax3CommandResult>(
         this, what,
         [motion](comm::Compax3Device& device, comm::JobContext&) { return device.motion(motion); },
         [this, what](Result<comm::Compax3CommandResult> result) {
@@ -248,10 +284,19 @@ void Compax3MotionPage::moveSet() {
         readSet();
         return;
     }
-    // Only what the person changed is written; each value named.
+    // Only what the person changed is written; each value named, with the
+    // time it was read (the start compares the drive's values with these).
     comm::Compax3SetMove move;
     move.set = m_read->set;
+    move.shown = std::make_shared<const comm::Compax3SetValues>(*m_read);
+    const QString readAt = m_read->readAt.toString(QStringLiteral("HH:mm:ss"));
     QStringList lines;
+    if (!m_askAgain.isEmpty()) lines << std::exchange(m_askAgain, QString()) << QString();
+    lines << tr("Set %1 as read from the drive at %2; read again before anything is sent: if the "
+                "drive then holds other values, nothing is sent and you are asked again.")
+                 .arg(move.set)
+                 .arg(readAt)
+          << QString();
     auto value = [&lines](const QString& name, double typed, double onDrive,
                           std::optional<double>& into) {
         if (typed != onDrive) {
@@ -259,24 +304,29 @@ void Compax3MotionPage::moveSet() {
             lines << tr("%1: %2 → %3 (written first)")
                          .arg(name, compax3NumberText(onDrive), compax3NumberText(typed));
         } else {
-            lines << tr("%1: %2 (as on the drive)").arg(name, compax3NumberText(onDrive));
+            lines << tr("%1: %2 (as read)").arg(name, compax3NumberText(onDrive));
         }
     };
     if (move.set != 0) value(tr("Target"), m_target->value(), m_read->target, move.target);
     value(tr("Velocity"), m_velocity->value(), m_read->velocity, move.velocity);
-    value(tr("Acceleration and deceleration"), m_acceleration->value(), m_read->acceleration,
-          move.acceleration);
-    lines << tr("Mode (1905.%1): %2 (as on the drive)").arg(move.set).arg(m_read->modeText());
+    value(tr("Acceleration"), m_acceleration->value(), m_read->acceleration, move.acceleration);
+    value(tr("Deceleration"), m_deceleration->value(), m_read->deceleration, move.deceleration);
+    lines << tr("Mode (1905.%1): %2 (as read)").arg(move.set).arg(m_read->modeText());
     const QString what = comm::compax3SetMoveText(move);
     if (!confirm(tr("Start"), capitalised(tr("%1 on drive %2?").arg(what, facts().identity.serial)),
                  lines.join(QLatin1Char('\n')) + QStringLiteral("\n\n") +
                      tr("The axis moves to the set's target at its velocity. STOP (or Escape) "
                         "stops it. Make sure nobody is at the axis.")))
         return;
-    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
+    // Only when the line is free: motion never waits in a queue.
+    session()->runMotion<comm::Compax3Device, comm::Compax3CommandResult>(
         this, what,
         [move](comm::Compax3Device& device, comm::JobContext&) { return device.moveSet(move); },
         [this, what, set = move.set](Result<comm::Compax3CommandResult> result) {
+            if (result && result->changedSet) {
+                setChanged(*result->changedSet, result->note);
+                return;
+            }
             finished(what, result);
             readSet();  // what the set holds now
             Q_EMIT objectsWritten(statusObjects() +

@@ -7,7 +7,11 @@ bool Compax3Page::pollStatus(std::function<void(const comm::Compax3DriveStatus&)
     runPoll<comm::Compax3Device, comm::Compax3DriveStatus>(
         tr("Read drive status"),
         [](comm::Compax3Device& device, comm::JobContext&) { return device.status(); },
-        std::move(show), QStringLiteral("compax3-status"));
+        [this, show = std::move(show)](const comm::Compax3DriveStatus& status) {
+            reportMotion(status.moving(), true, status.summary());  // one drive, one axis
+            show(status);
+        },
+        QStringLiteral("compax3-status"));
     return true;
 }
 

@@ -115,7 +115,8 @@ void Compax3StatusPage::acknowledge() {
                     "with power afterwards. A powered drive is left as it is (nothing is sent). "
                     "Make sure nobody is at the axis.")))
         return;
-    session()->run<comm::Compax3Device, comm::Compax3CommandResult>(
+    // It powers the drive: only when the line is free, never queued.
+    session()->runMotion<comm::Compax3Device, comm::Compax3CommandResult>(
         this, tr("Acknowledge"),
         [](comm::Compax3Device& device, comm::JobContext&) {
             return device.motion(comm::Compax3Motion::Enable);

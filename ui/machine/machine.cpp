@@ -3,6 +3,7 @@
 #include "machine_stop.h"
 #include "machine_unit.h"
 #include "machine_window.h"
+#include "ui/program_stop.h"
 #include "ui/window_fit.h"
 
 #include "model/atomic_file.h"
@@ -18,6 +19,8 @@ Machine::Machine(const MachineFile& file, QString path, QObject* parent)
       m_shaftFrom(file.shaftFrom),
       m_shaftTo(file.shaftTo),
       m_stop(new MachineStop(this)) {
+    // Escape from every window and dialog, every dialog's STOP: also this machine's.
+    ProgramStop::instance().add(m_stop);
     for (const MachineDevice& device : file.devices) createUnit(device);
 }
 

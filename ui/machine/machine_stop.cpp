@@ -3,8 +3,6 @@
 #include "ui/motion_stop.h"
 #include "ui/shell_log.h"
 
-#include <memory>
-
 namespace cambench {
 
 MachineStop::MachineStop(QObject* parent) : StopControl(parent) {}
@@ -29,52 +27,34 @@ bool MachineStop::armed() const {
 }
 
 void MachineStop::stopAll() {
+    // Every device first, each its own generation: no motion asked before
+    // now leaves on any line, whatever STOP runs first.
+    for (const Member& member : m_members)
+        if (member.stop) member.stop->raiseStopGeneration();
     if (!available()) return;
     qCInfo(shellLog) << "machine STOP pressed";
     // A STOP pressed again while one runs is sent again (never held back);
     // the answers of the one before no longer count.
     delete m_round;
-    m_round = new QObject(this);
-    auto answers = std::make_shared<QList<Answer>>();
-    for (const Member& member : m_members)
-        if (member.stop && member.stop->available())
-            answers->append({member.name, member.stop->armed(), false, {}});
-    Q_EMIT stopStarted();
-    const auto finishIfAllAnswered = [this, answers] {
-        for (const Answer& answer : *answers)
-            if (answer.reached && !answer.answered) return;
-        delete std::exchange(m_round, nullptr);
-        finishRound(*answers);
-    };
-    int index = 0;
+    QList<StopRound::Member> members;
     for (const Member& member : m_members) {
-        if (!member.stop || !member.stop->available()) continue;
-        const int at = index++;
-        if (!member.stop->armed()) continue;
+        MotionStop* stop = member.stop;
+        if (!stop || !stop->available()) continue;
         // Each device's STOP runs on its own worker; its answer comes when
         // that device has acknowledged, whatever the others do.
-        connect(member.stop, &StopControl::stopFinished, m_round,
-                [answers, at, finishIfAllAnswered](const comm::MotionStopReport& report) {
-                    Answer& answer = (*answers)[at];
-                    if (answer.answered) return;
-                    answer.answered = true;
-                    answer.report = report;
-                    finishIfAllAnswered();
-                });
+        members.append({member.name, stop, stop->armed(), [stop] { stop->stopThisDevice(); }});
     }
-    for (const Member& member : m_members)
-        if (member.stop && member.stop->armed()) member.stop->stopThisDevice();
-    // Answers come through the event loop: done now only when no device
-    // could be reached.
-    finishIfAllAnswered();
+    Q_EMIT stopStarted();
+    m_round = StopRound::start(
+        this, members, [this](const QList<StopRound::Answer>& answers) { finishRound(answers); });
 }
 
-void MachineStop::finishRound(const QList<Answer>& answers) {
+void MachineStop::finishRound(const QList<StopRound::Answer>& answers) {
     comm::MotionStopReport report;
     QStringList stopped;
     QStringList notAcknowledged;
     QStringList notReached;
-    for (const Answer& answer : answers) {
+    for (const StopRound::Answer& answer : answers) {
         if (!answer.reached) {
             notReached << answer.name;
             report.lines << comm::MotionStopLine{answer.name, false,

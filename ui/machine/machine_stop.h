@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/stop_control.h"
+#include "ui/stop_round.h"
 
 #include <QList>
 #include <QPointer>
@@ -27,7 +28,7 @@ public:
     bool available() const override;
     bool armed() const override;
     void stopAll() override;
-    bool stopRunning() const { return m_round != nullptr; }
+    bool stopRunning() const { return m_round && !m_round->isDone(); }
 
     // The last STOP for the status bar: which devices were stopped, which
     // did not acknowledge, which could not be reached.
@@ -38,16 +39,10 @@ private:
         QString name;
         QPointer<MotionStop> stop;
     };
-    struct Answer {
-        QString name;
-        bool reached = false;
-        bool answered = false;
-        comm::MotionStopReport report;
-    };
-    void finishRound(const QList<Answer>& answers);
+    void finishRound(const QList<StopRound::Answer>& answers);
 
     QList<Member> m_members;
-    QObject* m_round = nullptr;  // the running STOP's collection of answers
+    QPointer<StopRound> m_round;  // the running STOP's answers
     QString m_summary;
 };
 

@@ -9,6 +9,7 @@
 #include "ui/device_session.h"
 #include "ui/family_gui.h"
 #include "ui/main_window.h"
+#include "ui/motion_stop.h"
 #include "ui/sentence.h"
 
 namespace cambench {
@@ -61,6 +62,7 @@ MachineUnit::MachineUnit(MachineDevice device, StopControl* machineStop, QObject
     connect(m_session, &DeviceSession::targetChanged, this, [this] {
         if (m_session->isOnline()) checkLineAnswer();
     });
+    connect(m_session->motionStop(), &MotionStop::motionChanged, this, &MachineUnit::changed);
     connect(&m_session->worker(), &comm::JobRunner::jobStarted, this,
             [this](quint64 id, const QString&) {
                 if (id == m_watchJob) m_watchOnLine = true;
@@ -233,8 +235,10 @@ MachineUnit::Lamp MachineUnit::lamp() const {
             if (m_check == Check::Silent) return Lamp::Gone;
             // The family's own check found none of its devices.
             if (!m_session->identifyProblem().isEmpty()) return Lamp::Gone;
-            if (m_check == Check::Confirmed && m_session->deviceChecked()) return Lamp::Connected;
-            return Lamp::Connecting;
+            if (m_check != Check::Confirmed || !m_session->deviceChecked()) return Lamp::Connecting;
+            return m_session->motionStop()->motion() == MotionStop::Motion::Moving
+                       ? Lamp::Moving
+                       : Lamp::Connected;
         case comm::ConnectionState::Connecting:
             return m_session->isRetrying() ? Lamp::Gone : Lamp::Connecting;
         case comm::ConnectionState::Lost:
@@ -250,7 +254,10 @@ QString MachineUnit::stateText() const {
     if (!m_problem.isEmpty()) return tr("not opened: %1").arg(m_problem);
     switch (lamp()) {
         case Lamp::Connected:
-            return tr("connected");
+        case Lamp::Moving: {
+            const QString motion = m_session->motionStop()->motionText();
+            return motion.isEmpty() ? tr("connected") : tr("connected, %1").arg(motion);
+        }
         case Lamp::AnotherDevice:
             return m_checkText;
         case Lamp::Connecting:

@@ -44,13 +44,15 @@ public:
 
     // Connected: the device that belongs here identified itself (the
     // machine file's identity, or the first one seen when the file has
-    // none) and its family's pages know it. AnotherDevice: a device answers
-    // with another identity, or not as one of the family's (red, never
-    // green). Gone: the line is lost, or nothing answered a whole watch
-    // cycle.
-    enum class Lamp { Connected, Connecting, Gone, Offline, AnotherDevice };
+    // none) and its family's pages know it. Moving: that, and its own live
+    // status says that it moves. AnotherDevice: a device answers with
+    // another identity, or not as one of the family's (red, never green).
+    // Gone: the line is lost, or nothing answered a whole watch cycle.
+    enum class Lamp { Connected, Connecting, Gone, Offline, AnotherDevice, Moving };
     Lamp lamp() const;
-    // The lamp in words: "connected", "another device answers: ...", ...
+    // The lamp in words: "connected", "connected, moving (...)",
+    // "connected, may move: jog + sent at ...", "another device answers:
+    // ...", "connection lost: ...", ...
     QString stateText() const;
     QString problem() const { return m_problem; }
     int unwrittenCount() const;

@@ -9,7 +9,6 @@
 #include "comm/device/family_registry.h"
 #include "ui/device_session.h"
 #include "ui/main_window.h"
-#include "ui/stop_shortcut.h"
 
 #include <QCloseEvent>
 #include <QCoreApplication>
@@ -33,12 +32,12 @@ namespace {
 
 // The lamp of a device's row: green on the line, amber while connecting
 // and checking which device answers, red when gone or another device
-// answers, grey while offline.
+// answers, grey while offline, blue while it moves.
 QIcon lampIcon(MachineUnit::Lamp lamp) {
     // In the order of MachineUnit::Lamp.
     static const QColor colors[] = {QColor(0x2e, 0x7d, 0x32), QColor(0xf9, 0xa8, 0x25),
                                     QColor(0xc6, 0x28, 0x28), QColor(0x9e, 0x9e, 0x9e),
-                                    QColor(0xc6, 0x28, 0x28)};
+                                    QColor(0xc6, 0x28, 0x28), QColor(0x15, 0x65, 0xc0)};
     const QColor color = colors[int(lamp)];
     QPixmap pixmap(14, 14);
     pixmap.fill(Qt::transparent);
@@ -101,8 +100,6 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
             showMenusOf(unit);
         }
     });
-    // The STOP key from every widget of this window: every device's STOP.
-    new StopShortcut(machine->stop(), this);
     connect(machine->stop(), &MachineStop::stopFinished, this,
             [this] { showMessage(tr("STOP: %1").arg(m_machine->stop()->lastSummary())); });
     showDevice({});

@@ -57,6 +57,11 @@ Mc1AxesPage::Mc1AxesPage(DeviceSession* session, QWidget* parent)
     big.setBold(true);
     m_state->setFont(big);
     m_availability->setWordWrap(true);
+    // Said while the moves are off; its place stays when they come on again,
+    // so that they do not jump up under the pointer.
+    QSizePolicy keepPlace = m_availability->sizePolicy();
+    keepPlace.setRetainSizeWhenHidden(true);
+    m_availability->setSizePolicy(keepPlace);
     m_details->setWordWrap(true);
     m_details->setObjectName(QStringLiteral("axisDetails"));
 
@@ -187,6 +192,8 @@ void Mc1AxesPage::showState(const comm::Mc1AxisState& state) {
     if (!state.moving) m_jogging.remove(state.axis);
     const int jog = m_jogging.value(state.axis);
     m_state->setText(headline(state));
+    // One axis standing says nothing of the others.
+    reportMotion(state.moving, false, headline(state));
     m_details->setText(
         tr("Position %1 · %2 · %3 · %4")
             .arg(state.position)
@@ -226,14 +233,15 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
     const int shown = axis();
     const QString what = comm::mc1AxisCommandText(shown, command, value);
     if (!confirmCommand(command, what, value)) return;
-    session()->run<comm::Mc1Device, comm::Mc1AxisDone>(
-        this, tr("Axis command"),
+    DeviceSession::Work<comm::Mc1Device, comm::Mc1AxisDone> work =
         [shown, command, value](comm::Mc1Device& device, comm::JobContext&) {
             return device.axisCommand(shown, command, value);
-        },
+        };
+    std::function<void(Result<comm::Mc1AxisDone>)> answer =
         [this, what, shown, command](Result<comm::Mc1AxisDone> done) {
             // Acknowledged: the jog runs whether or not its read-back came.
             if (done) {
+                if (comm::mc1AxisCommandMoves(command)) reportMotionSent(what);
                 if (command == Mc1AxisCommand::JogPlus || command == Mc1AxisCommand::JogMinus)
                     m_jogging.insert(shown, command == Mc1AxisCommand::JogPlus ? 1 : -1);
                 else if (command != Mc1AxisCommand::SetSpeed)
@@ -245,7 +253,13 @@ void Mc1AxesPage::command(Mc1AxisCommand command, qint32 value) {
                                .arg(capitalised(what), headline(*state)),
                            true);
             }
-        });
+        };
+    // A stop goes to the line whatever runs; everything else that acts on
+    // an axis only when the line is free (motion never waits in a queue).
+    if (command == Mc1AxisCommand::Stop || command == Mc1AxisCommand::QuickStop)
+        session()->run(this, tr("Axis command"), std::move(work), std::move(answer));
+    else
+        session()->runMotion(this, tr("Axis command"), std::move(work), std::move(answer));
 }
 
 bool Mc1AxesPage::confirmCommand(Mc1AxisCommand command, const QString& what, qint32 value) {

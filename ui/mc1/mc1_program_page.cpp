@@ -138,17 +138,23 @@ void Mc1ProgramPage::run(Mc1ProgramCommand command) {
     if (!confirm(capitalised(what), tr("%1 on the %2?").arg(capitalised(what), controller),
                  consequence(command)))
         return;
-    session()->run<comm::Mc1Device, comm::Mc1Done<comm::Mc1ProgramStatus>>(
-        this, tr("Program command"),
-        [command](comm::Mc1Device& device, comm::JobContext&) {
-            return device.programCommand(command);
-        },
-        [this, what](Result<comm::Mc1Done<comm::Mc1ProgramStatus>> done) {
-            if (const comm::Mc1ProgramStatus* status = acknowledged(done, what)) {
-                showStatus(*status);
-                showResult(tr("Done: %1. PLC program %2.").arg(what, status->summary()), true);
-            }
-        });
+    using Done = comm::Mc1Done<comm::Mc1ProgramStatus>;
+    DeviceSession::Work<comm::Mc1Device, Done> work = [command](comm::Mc1Device& device,
+                                                                comm::JobContext&) {
+        return device.programCommand(command);
+    };
+    std::function<void(Result<Done>)> answer = [this, what](Result<Done> done) {
+        if (const comm::Mc1ProgramStatus* status = acknowledged(done, what)) {
+            showStatus(*status);
+            showResult(tr("Done: %1. PLC program %2.").arg(what, status->summary()), true);
+        }
+    };
+    // The program's stop goes whatever runs; a start, a step, a reset, a
+    // flash load only when the line is free (never waiting in a queue).
+    if (command == Mc1ProgramCommand::Stop)
+        session()->run(this, tr("Program command"), std::move(work), std::move(answer));
+    else
+        session()->runMotion(this, tr("Program command"), std::move(work), std::move(answer));
 }
 
 }  // namespace cambench

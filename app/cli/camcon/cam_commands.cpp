@@ -40,10 +40,11 @@ int readCams(CliSession& session, CommandArgs& args) {
             if (const Status ok = usecases::checkProgramNumber(p, *info); !ok) return ok.error();
             if (o > 0) {
                 if (o > info->outputs) {
-                    return Error::usage(QStringLiteral("output %1 does not exist on the device "
-                                                       "(outputs 1..%2); choose another --output")
-                                            .arg(o)
-                                            .arg(info->outputs));
+                    return Error::invalidData(
+                        QStringLiteral("output %1 does not exist on the device "
+                                       "(outputs 1..%2); choose another --output")
+                            .arg(o)
+                            .arg(info->outputs));
                 }
                 Result<Track> track = client.readTrack(p, o);
                 if (!track) return track.error();

@@ -92,9 +92,10 @@ int runResetErrors(CliSession& session, CommandArgs& args) {
 
 Status checkOutput(int output, const DeviceInfo& info) {
     if (output <= info.outputs) return success();
-    return Error::usage(QStringLiteral("output %1 does not exist: this device has outputs 1..%2")
-                            .arg(output)
-                            .arg(info.outputs));
+    return Error::invalidData(
+        QStringLiteral("output %1 does not exist: this device has outputs 1..%2")
+            .arg(output)
+            .arg(info.outputs));
 }
 
 // The device's identity, once `output` is known to exist on it.
@@ -252,7 +253,7 @@ int runDeadTimeWrite(CliSession& session, CommandArgs& args) {
             const Result<DeviceInfo> info = device.readInfo();
             if (!info) return info.error();
             if (output > info->deadTimeOutputs) {
-                return Error::usage(
+                return Error::invalidData(
                     QStringLiteral("output %1 has no dead time: this device has dead times on "
                                    "outputs 1..%2")
                         .arg(output)

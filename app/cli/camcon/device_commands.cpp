@@ -104,8 +104,10 @@ int runScan(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
     if (!session.options().isBus()) {
-        return reportError(Error::usage(
-            QStringLiteral("scan needs a bus protocol; add --protocol multiuser (or cambus)")));
+        return reportError(Error::unsupported(
+            QStringLiteral("scan needs a bus protocol; the %1 protocol has no bus: use "
+                           "--protocol multiuser (or cambus)")
+                .arg(session.options().protocol)));
     }
     session.setShowProgress(true);
     const Result<comm::BusUsers> found = runOnCamCon<comm::BusUsers>(

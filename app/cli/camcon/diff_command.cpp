@@ -1,7 +1,8 @@
 // diff A B: what differs between the cam programs of two sources - project
 // files, CSV cam files or the device - one difference a line; exit 0 when
 // equal, 1 when they differ. With --git it is git's external diff driver
-// for project files (README: "Project files under git").
+// for every CamBench file (README: "CamBench files under git"); --git-setup
+// prints the lines that install it.
 #include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
@@ -12,12 +13,15 @@
 #include "model/camcon/program_diff.h"
 #include "model/camcon/project_content.h"
 #include "model/camcon/project_file.h"
+#include "model/file_differences.h"
 #include "model/file_read.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 namespace cambench::cli {
 
@@ -206,8 +210,68 @@ QString text(const QList<Line>& lines, bool oneProgram) {
     return out;
 }
 
+// The bytes of one side for the git driver: git passes /dev/null for a
+// file that is new or gone; a file that cannot be read is said.
+QByteArray gitSideBytes(const QString& file, QStringList& notes) {
+    if (file == QLatin1String("/dev/null")) return {};
+    const Result<QByteArray> bytes = readFileBytes(file);
+    if (!bytes) {
+        notes << QStringLiteral("cannot read %1: %2").arg(file, bytes.error().message);
+        return {};
+    }
+    return *bytes;
+}
+
+// A JSON document's top value; an empty side (new or gone) is an empty
+// object. Nullopt for bytes that are not JSON.
+std::optional<QJsonValue> jsonOf(const QByteArray& bytes) {
+    if (bytes.trimmed().isEmpty()) return QJsonValue(QJsonObject());
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(bytes, &error);
+    if (error.error != QJsonParseError::NoError) return std::nullopt;
+    if (document.isArray()) return QJsonValue(document.array());
+    return QJsonValue(document.object());
+}
+
+// What differs between the two versions of `path`: the cam programs of
+// CamCon projects and cam CSV files, then for any JSON file (projects,
+// EEPROM images, settings, machine files, the other families' backups)
+// each member that differs, for anything else the lines. Never fails.
+QString gitDifferences(const QString& path, const QString& fileA, const QString& fileB) {
+    QStringList notes;
+    const QByteArray bytesA = gitSideBytes(fileA, notes);
+    const QByteArray bytesB = gitSideBytes(fileB, notes);
+    QString out = notes.isEmpty() ? QString() : notes.join(u'\n') + u'\n';
+    const Result<Side> a = loadFile(fileA, path);
+    const Result<Side> b = loadFile(fileB, path);
+    bool camsShown = false;
+    if (a && b) {
+        const Result<QList<Line>> lines = compare(*a, *b, -1, -1);
+        if (lines) {
+            out += lines->isEmpty() ? QStringLiteral("no cam program differs\n")
+                                    : text(*lines, a->single && b->single);
+            camsShown = true;
+        }
+    }
+    if (camsShown && isCsv(path)) return out;
+    const std::optional<QJsonValue> jsonA = jsonOf(bytesA);
+    const std::optional<QJsonValue> jsonB = jsonOf(bytesB);
+    if (jsonA && jsonB) {
+        // The cam programs were compared above; the rest member by member.
+        const QStringList members = jsonDifferences(
+            *jsonA, *jsonB, camsShown ? QStringList{QStringLiteral("programs")} : QStringList{});
+        if (camsShown && !members.isEmpty()) out += QStringLiteral("and besides the cams:\n");
+        for (const QString& line : members) out += line + u'\n';
+        if (!camsShown && members.isEmpty()) out += QStringLiteral("no difference\n");
+        return out;
+    }
+    const QString lines = textDifferences(QString::fromUtf8(bytesA), QString::fromUtf8(bytesB));
+    return out + (lines.isEmpty() ? QStringLiteral("no difference\n") : lines);
+}
+
 // git's external diff driver: PATH OLD-FILE OLD-HEX OLD-MODE NEW-FILE NEW-HEX NEW-MODE.
-// Git stops on a non-zero exit, so differences exit 0 here.
+// Git stops on a non-zero exit, so differences exit 0 here, and so does a
+// file it cannot make sense of (shown as text).
 int runGitDriver(CommandArgs& args) {
     QStringList parts;
     for (QString part = args.takePositional(); !part.isEmpty(); part = args.takePositional())
@@ -216,15 +280,28 @@ int runGitDriver(CommandArgs& args) {
         return reportError(Error::usage(QStringLiteral(
             "diff --git takes the 7 arguments git passes to an external diff driver")));
     const QString& path = parts.at(0);
-    const Result<Side> a = loadFile(parts.at(1), path);
-    if (!a) return reportError(a.error());
-    const Result<Side> b = loadFile(parts.at(4), path);
-    if (!b) return reportError(b.error());
-    const Result<QList<Line>> lines = compare(*a, *b, -1, -1);
-    if (!lines) return reportError(lines.error());
-    printOut(QStringLiteral("cambench diff %1\n").arg(path));
-    printOut(lines->isEmpty() ? QStringLiteral("no cam program differs\n")
-                              : text(*lines, a->single && b->single));
+    printOut(QStringLiteral("cambench diff %1\n").arg(path) +
+             gitDifferences(path, parts.at(1), parts.at(4)));
+    return ExitOk;
+}
+
+// A word as the shell reads it back: quoted unless it is plain.
+QString shellQuoted(const QString& word) {
+    static const QRegularExpression plain(QStringLiteral("^[A-Za-z0-9_./+-]+$"));
+    if (plain.match(word).hasMatch()) return word;
+    return QStringLiteral("'%1'").arg(QString(word).replace(u'\'', QLatin1String("'\\''")));
+}
+
+// The lines that make this cambench-cli git's diff driver for CamBench's
+// files, with its absolute path: git runs it without PATH.
+int runGitSetup(CommandArgs& args) {
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    const QString command =
+        shellQuoted(QCoreApplication::applicationFilePath()) + QStringLiteral(" diff --git");
+    printOut(QStringLiteral("echo '*.json diff=cambench' >> .gitattributes\n"
+                            "echo '*.csv diff=cambench' >> .gitattributes\n"
+                            "git config diff.cambench.command %1\n")
+                 .arg(shellQuoted(command)));
     return ExitOk;
 }
 
@@ -232,6 +309,7 @@ int runGitDriver(CommandArgs& args) {
 
 int runDiff(CliSession& session, CommandArgs& args) {
     if (args.takeFlag(QStringLiteral("--git"))) return runGitDriver(args);
+    if (args.takeFlag(QStringLiteral("--git-setup"))) return runGitSetup(args);
     const bool json = args.takeFlag(QStringLiteral("--json"));
     const Result<int> program =
         args.takeIntOption(QStringLiteral("--program"), -1, 0, kMaxProgramNumber);

@@ -62,6 +62,8 @@ int runRestore(CliSession& session, CommandArgs& args) {
             return usecases::restoreImage(device, blocks, file, options, UseCaseProgress::of(job));
         });
     if (!report) return reportError(report.error());
+    if (!report->linkNote.isEmpty() && report->state != usecases::RestoredState::Unchanged)
+        printError(QStringLiteral("note: %1").arg(report->linkNote));
     if (!report->safetyBackupPath.isEmpty()) {
         printError(QStringLiteral("safety backup of the device saved to %1")
                        .arg(report->safetyBackupPath));

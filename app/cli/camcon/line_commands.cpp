@@ -19,8 +19,10 @@ using usecases::UseCaseProgress;
 
 Status needsBus(const CliSession& session, const QString& command) {
     if (session.options().isBus()) return success();
-    return Error::usage(
-        QStringLiteral("%1 works on a Multiuser line; add --protocol multiuser").arg(command));
+    return Error::unsupported(
+        QStringLiteral("%1 works on a Multiuser line or a Cam-BUS, not over the %2 protocol; "
+                       "leave --protocol out (then it speaks Multiuser) or use --protocol cambus")
+            .arg(command, session.options().protocol));
 }
 
 // The bar shows the device being worked on.

@@ -33,10 +33,10 @@ int runAnalogueRead(CliSession& session, CommandArgs& args) {
             const Result<int> count = device.readAnalogueOutputCount();
             if (!count) return count.error();
             if (*count < last && first == last) {
-                return Error::usage(QStringLiteral("Analogue output %1 does not exist: this "
-                                                   "device has %2 analogue outputs.")
-                                        .arg(first)
-                                        .arg(*count));
+                return Error::invalidData(QStringLiteral("Analogue output %1 does not exist: this "
+                                                         "device has %2 analogue outputs.")
+                                              .arg(first)
+                                              .arg(*count));
             }
             QList<AnalogueCamTrack> tracks;
             for (int output = first; output <= std::min(last, *count); ++output) {

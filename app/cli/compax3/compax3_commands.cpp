@@ -22,8 +22,10 @@ QString compax3Help() {
         "  c3 status [--json]               status word bit by bit, last error, position\n"
         "  c3 watch OBJ… [--interval MS] [--count N]   the values, a line per poll\n"
         "  c3 enable|disable|stop           power and acknowledge, powerless, stop with the ramp\n"
+        "                                   (stop sends nothing to a powerless drive)\n"
         "  c3 jog +|-                       moves until `c3 stop`\n"
-        "  c3 move N [--target V] [--velocity V] [--accel V]   writes set N, then starts it\n"
+        "  c3 move N [--target V] [--velocity V] [--accel V] [--decel V]\n"
+        "                                   writes what is given into set N, then starts it\n"
         "  c3 backup -o FILE [--objects LIST]   default: every read-write object of the\n"
         "                                   dictionary; the drive's identity and a SHA-256;\n"
         "                                   objects the drive lacks are recorded as not on\n"
@@ -112,6 +114,8 @@ Result<QList<Compax3ObjectId>> parseCompax3Objects(const QStringList& words) {
 
 void registerCompax3Commands(CommandRegistry& registry) {
     registry.add({QStringLiteral("compax3"), QStringLiteral("c3"), runC3});
+    // runC3 takes it, wherever it stood on the line.
+    registry.addOption({QStringLiteral("compax3"), QStringLiteral("--dictionary")});
     registry.addHelp(QStringLiteral("compax3"), compax3Help());
 }
 

@@ -58,7 +58,8 @@ int runCompax3Motion(CliSession& session, CommandArgs& args, const QString& verb
         const std::pair<const char*, std::optional<double>*> options[] = {
             {"--target", &move.target},
             {"--velocity", &move.velocity},
-            {"--accel", &move.acceleration}};
+            {"--accel", &move.acceleration},
+            {"--decel", &move.deceleration}};
         for (const auto& [name, target] : options) {
             const Result<std::optional<double>> value = numberOption(args, QLatin1String(name));
             if (!value) return reportError(value.error());

@@ -368,6 +368,9 @@ int runMc1Points(CliSession& session, CommandArgs& args, bool io) {
 
 void registerMc1Commands(CommandRegistry& registry) {
     registry.add({QStringLiteral("mc1"), QStringLiteral("mc"), runMc});
+    // applyMc1Options takes them, wherever they stood on the line.
+    registry.addOption({QStringLiteral("mc1"), QStringLiteral("--axes")});
+    registry.addOption({QStringLiteral("mc1"), QStringLiteral("--parameters")});
     registry.addHelp(QStringLiteral("mc1"), mc1Help());
 }
 

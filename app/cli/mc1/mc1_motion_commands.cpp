@@ -103,11 +103,12 @@ int runMc1StopAll(CliSession& session, CommandArgs& args) {
     if (!report) return reportError(report.error());
     QString text;
     for (const comm::MotionStopLine& line : report->lines)
-        text += QStringLiteral("%1: %2; %3\n")
-                    .arg(line.what,
-                         line.acknowledged ? QStringLiteral("acknowledged")
-                                           : QStringLiteral("NOT acknowledged"),
-                         line.detail);
+        text += line.absent ? QStringLiteral("%1: %2\n").arg(line.what, line.detail)
+                            : QStringLiteral("%1: %2; %3\n")
+                                  .arg(line.what,
+                                       line.acknowledged ? QStringLiteral("acknowledged")
+                                                         : QStringLiteral("NOT acknowledged"),
+                                       line.detail);
     printOut(text);
     if (report->allAcknowledged()) return ExitOk;
     return reportError(Error::communication(

@@ -99,7 +99,7 @@ private:
 Result<QList<int>> AsciiCamCon::scanBus(int first, int last, int timeoutMs,
                                         const ProgressFn& progress) {
     if (m_link.settings().framing != Framing::Multiuser) {
-        return Error::usage(QCoreApplication::translate(
+        return Error::unsupported(QCoreApplication::translate(
             "cambench::comm",
             "a bus scan needs the Multiuser protocol; connect with --protocol multiuser"));
     }

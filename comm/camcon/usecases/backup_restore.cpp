@@ -3,6 +3,7 @@
 #include "read_everything.h"
 
 #include "model/camcon/eeprom_image_file.h"
+#include "model/camcon/link_settings.h"
 #include "model/camcon/project_content.h"
 
 #include <QCoreApplication>
@@ -40,6 +41,26 @@ namespace {
 Error withMessage(Error error, const QString& message) {
     error.message = message;
     return error;
+}
+
+SystemSettings linkOf(const DeviceInfo& device) {
+    return {{QStringLiteral("deviceNumber"), qint64(device.deviceNumber)},
+            {QStringLiteral("protocol"), qint64(device.protocol)}};
+}
+
+// Issue 39: an image is a byte image of the device it was taken from, its
+// communication settings included (the blocks are opaque: nothing can be
+// left out of them). A restore puts the device back as it was, those
+// settings too; when the device uses others now, the person must know that
+// the next connection needs the image's.
+QString linkNote(const DeviceInfo& image, const DeviceInfo& now) {
+    if (image.protocol == now.protocol && image.deviceNumber == now.deviceNumber) return {};
+    return QCoreApplication::translate(
+               "cambench::usecases",
+               "The image holds the communication settings the device had when it was taken, "
+               "%1 (it uses %2 now). A restore puts them back with everything else: the next "
+               "connection to the device needs %1.")
+        .arg(linkSettingsText(linkOf(image)), linkSettingsText(linkOf(now)));
 }
 
 }  // namespace
@@ -104,6 +125,7 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
     }
     report.identityMismatch = identityMismatch(image.device, *device);
 
+    report.linkNote = linkNote(image.device, *device);
     const qint64 steps = options.safetyBackup ? 2 : 1;
     if (options.safetyBackup) {
         const QString path = options.safetyBackupPath.isEmpty()

@@ -62,7 +62,11 @@ struct RestoreReport {
     QString safetyBackupPath;      // where the safety backup is; empty when none was taken
     int blocks = 0;                // blocks of the image
     QStringList identityMismatch;  // differences the person accepted (a replacement)
-    Error error;                   // kind None when restored; the message says the device's state
+    // Set when the image's communication settings (protocol, device
+    // number) are not the device's now: the image puts back its own, and the
+    // next connection needs them (empty otherwise).
+    QString linkNote;
+    Error error;  // kind None when restored; the message says the device's state
     bool ok() const { return state == RestoredState::Restored; }
 };
 

@@ -7,12 +7,12 @@ namespace cambench::usecases {
 Status checkProgramNumber(int number, const DeviceInfo& device) {
     if (number >= 0 && number < device.programs) return success();
     if (device.programs <= 0)
-        return Error::usage(QCoreApplication::translate(
-                                "cambench::usecases",
-                                "program %1 does not exist: the device reports no programs; "
-                                "read its identity again or check the connection")
-                                .arg(number));
-    return Error::usage(
+        return Error::invalidData(QCoreApplication::translate(
+                                      "cambench::usecases",
+                                      "program %1 does not exist: the device reports no programs; "
+                                      "read its identity again or check the connection")
+                                      .arg(number));
+    return Error::invalidData(
         QCoreApplication::translate("cambench::usecases",
                                     "program %1 does not exist on the device (it has programs "
                                     "0 to %2): choose one of those")

@@ -41,6 +41,8 @@ OutcomeLine checkedWrite(const QString& label, const T& wanted,
     }
     if (written && after && *after == wanted) {
         outcome.state = WriteState::Written;
+        outcome.note = QCoreApplication::translate("cambench::usecases", "the device reports %1")
+                           .arg(outcome.actualText);
     } else if (written && !after) {
         // The device acknowledged; only the check is missing.
         outcome.state = WriteState::Written;

@@ -96,10 +96,11 @@ Result<Mc1Backup> takeMc1Backup(Mc1Device& device, const Mc1BackupScope& scope,
     const Result<DeviceIdentity> identity = device.readIdentity();
     if (!identity) return identity.error();
     if (!scope.memory.isEmpty() && !device.has(Mc1Capability::MemoryRead))
-        return Error::usage(QCoreApplication::translate(
-                                "cambench::usecases",
-                                "the %1 has no memory telegrams (an MC200 has): leave out --mem")
-                                .arg(comm::mc1VariantName(*variant)));
+        return Error::unsupported(
+            QCoreApplication::translate(
+                "cambench::usecases",
+                "the %1 has no memory telegrams (an MC200 has): leave out --mem")
+                .arg(comm::mc1VariantName(*variant)));
     Mc1Backup like;
     for (int n = scope.firstVariable; n <= scope.lastVariable; ++n) like.variables.insert(n, 0);
     if (scope.flags) {

@@ -35,6 +35,19 @@ Result<SimPortConfig> configForPort(const QString& port, const SerialSettings& s
     return config;
 }
 
+// The protocol the port's own keys name (protocol=, framing=): then the
+// device speaks it whatever the PC speaks (configForPort).
+QString namedProtocol(const QString& port) {
+    const Result<SimPortConfig> config = parseSimPort(port, SerialSettings{});
+    if (!config || !(config->framing || config->tableVariant)) return {};
+    if (config->camBus) return QStringLiteral("cambus");
+    if (config->tableVariant)
+        return *config->tableVariant == table::Rk512Variant::N96 ? QStringLiteral("3964r-n96")
+                                                                 : QStringLiteral("3964r-e38");
+    return *config->framing == Framing::Multiuser ? QStringLiteral("multiuser")
+                                                  : QStringLiteral("standard");
+}
+
 QList<QCommandLineOption> camConOptions() {
     return {
         // --device: the command line's name (a machine file's "device").
@@ -251,7 +264,7 @@ void registerCamConSimulator(SimulatorRegistry& registry) {
                       if (!config) return config.error();
                       return camConSimulatedLine(*config);
                   },
-                  camConOptions, fromOptions});
+                  camConOptions, fromOptions, namedProtocol});
 }
 
 }  // namespace cambench::comm

@@ -20,6 +20,7 @@ struct DriveOptions {
     int baud = kDefaultBaud;
     QList<Compax3ObjectId> lacks;    // a firmware without these objects
     QList<Compax3ObjectId> refuses;  // reads answered !0005
+    int delayMs = 0;                 // a sim: port's delay=…: every answer that late
 };
 
 Result<int> addressFrom(const QString& text) {
@@ -89,6 +90,13 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
                     if (!id) return id.error();
                     into << *id;
                 }
+            } else if (key == QLatin1String("delay")) {
+                // "sim:delay=400": every answer 400 ms late (cambench-sim --delay).
+                bool ok = false;
+                options.delayMs = value.toInt(&ok);
+                if (!ok || options.delayMs < 0)
+                    return Error::usage(
+                        QStringLiteral("delay= needs a whole number of ms, not \"%1\"").arg(value));
             } else if (key == QLatin1String("address") && protocol == kRs485Protocol) {
                 const Result<int> address = addressFrom(value);
                 if (!address) return address.error();
@@ -96,12 +104,13 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
             } else {
                 return Error::usage(
                     QStringLiteral("the Compax3 simulator's port takes type=…, serial=…, "
-                                   "lacks=…, refuse=… and (RS485) address=…, not \"%1\"")
+                                   "lacks=…, refuse=…, delay=… and (RS485) address=…, not \"%1\"")
                         .arg(option));
             }
         }
         SimHostOptions shared;
         shared.throttle = false;
+        shared.faults.extraDelayMs = options.delayMs;
         return lineFor(options, shared);
     };
     info.options = [] {

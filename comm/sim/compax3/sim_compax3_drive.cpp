@@ -65,8 +65,7 @@ void SimCompax3Drive::advance(qint64 nowMs) {
         m_position += m_jog * kJogVelocity * seconds;
         if (std::abs(m_position) > kEndLimit) {
             m_position = std::copysign(kEndLimit, m_position);
-            m_error = m_position > 0 ? 0x7323 : 0x7324;
-            m_jog = 0;
+            raiseError(m_position > 0 ? 0x7323 : 0x7324);
         }
         return;
     }
@@ -89,13 +88,19 @@ SimShaftMotion SimCompax3Drive::motion() const {
     return {m_position, 0.0, std::nullopt};
 }
 
+void SimCompax3Drive::raiseError(int code) {
+    m_error = code;
+    m_powered = false;
+    m_moving = false;
+    m_jog = 0;
+}
+
 quint16 SimCompax3Drive::statusWord() const {
     quint16 word = 0x05;  // inputs I0 and I2
     if (m_error == 1) word |= 0x0100;
-    const bool powered = m_control & compax3control::kEnable;
-    if (powered && !moving()) word |= 0x0200;  // position reached
-    if (!powered) word |= 0x0400;
-    if (powered && !moving()) word |= 0x0800;
+    if (m_powered && !moving()) word |= 0x0200;  // position reached
+    if (!m_powered) word |= 0x0400;
+    if (m_powered && !moving()) word |= 0x0800;
     if (m_zeroKnown) word |= 0x1000;
     return word;
 }
@@ -169,12 +174,19 @@ QByteArray SimCompax3Drive::write(const Compax3ObjectId& id, const QString& valu
 QByteArray SimCompax3Drive::control(quint16 word) {
     const quint16 before = m_control;
     const bool enable = word & compax3control::kEnable;
-    if (enable && !(before & compax3control::kEnable)) m_error = 1;  // rising edge: acknowledge
+    const bool enableEdge = enable && !(before & compax3control::kEnable);
     const bool run = (word & compax3control::kRun) == compax3control::kRun;
     const bool startEdge = (word & compax3control::kStart) && !(before & compax3control::kStart);
-    if (startEdge && (!run || m_error != 1)) return refused(5);
+    // The start needs power: the edge of b0 in the same word gives it.
+    const bool poweredThen = enableEdge || (enable && m_powered);
+    if (startEdge && (!run || !poweredThen || (m_error != 1 && !enableEdge))) return refused(5);
     m_control = word;
-    if (!enable || !run) {  // powerless, or the stop bits cleared: the axis stops
+    if (enableEdge) {  // the rising edge: acknowledge, then power
+        m_error = 1;
+        m_powered = true;
+    }
+    if (!enable) m_powered = false;
+    if (!m_powered || !run) {  // powerless, or the stop bits cleared: the axis stops
         m_moving = false;
         m_jog = 0;
         return ">";

@@ -13,7 +13,11 @@ namespace cambench::comm {
 
 // A simulated Parker Compax3 (docs/protocols/compax3.md): the shipped object
 // dictionary with types, ranges and read-only objects, the status word, and
-// an axis that moves when a set is started or a jog runs. Its answers to a
+// an axis that moves when a set is started or a jog runs. Power follows the
+// control word as the drive's does: only a rising edge of b0 powers the
+// drive, and that edge acknowledges a pending error; b0 = 0 drops power; an
+// error stops the axis, drops power and holds until acknowledged; a
+// powerless drive does not move. Its answers to a
 // request are the drive's: a value, '>', or '!xxxx' (the emulator's
 // numbers: 0001 syntax, 0002 no such object, 0003 read-only, 0004 out of
 // range, 0005 not possible now, 0006 wrong type).
@@ -35,8 +39,11 @@ public:
     // shaft follows it between requests).
     SimShaftMotion motion() const;
     QString infoString() const;
-    // A fault the drive reports in 550.1 (and clears on acknowledge).
-    void raiseError(int code) { m_error = code; }
+    // A fault the drive reports in 550.1: the axis stops and power drops;
+    // it holds until a rising edge of b0 acknowledges it.
+    void raiseError(int code);
+    bool powered() const { return m_powered; }
+    int lastError() const { return m_error; }
     // A firmware without `id`: reading or writing it answers !0002.
     void removeObject(const Compax3ObjectId& id) { m_missing.insert(id); }
     // Reads of `id` answer !0005 (not possible now), writes still work: a
@@ -61,6 +68,8 @@ private:
     QSet<Compax3ObjectId> m_unreadable;
     QList<QByteArray> m_requests;
     quint16 m_control = 0;
+    // Powered: set only by a rising edge of b0, cleared by b0 = 0 or an error.
+    bool m_powered = false;
     int m_error = 1;
     int m_lastSet = 0;
     bool m_zeroKnown = false;

@@ -36,7 +36,7 @@ QList<SimOutput> SimCompax3Line::receive(QByteArrayView bytes, qint64 nowMs) {
         if (m_shaft) m_shaft->publish(m_drive.motion());
         if (m_address >= 0) reply.prepend(kCompax3Rs485Mark);
         if (std::optional<SimOutput> sent =
-                m_faults.apply(SimOutput{reply + kCompax3End, 1}, command))
+                m_faults.apply(SimOutput{reply + kCompax3End, 1 + m_delayMs}, command))
             out << *sent;
     }
     return out;

@@ -22,6 +22,9 @@ public:
     // A simulated machine: the drive's axis drives `shaft` from now on.
     void driveShaft(std::shared_ptr<SimShaft> shaft);
     QList<SimOutput> receive(QByteArrayView bytes, qint64 nowMs) override;
+    // Tests: every later answer comes `ms` late (a slow drive, a gateway),
+    // on top of the faults' own delay.
+    void delayAnswers(int ms) { m_delayMs = ms; }
     QString protocolName() const override;
 
 private:
@@ -29,6 +32,7 @@ private:
     SimCompax3Drive m_drive;
     SimFaults m_faults;
     QByteArray m_pending;
+    int m_delayMs = 0;
     std::unique_ptr<SimShaftDriver> m_shaft;
 };
 

@@ -31,6 +31,9 @@ public:
     BackendStep feed(QByteArrayView bytes, qint64 nowMs) override;
     QByteArray resetInput() override;
     bool deduplicatesRetries() const override { return m_deduplicates; }
+    int lateAnswerWindowMs() const override { return lateWindowMs; }
+    // The late-answer window this fake protocol claims (0: none).
+    int lateWindowMs = 0;
     qint64 requestWireBytes(const Request& request) const override;
     qint64 replyWireBytes(const Request& request) const override;
 

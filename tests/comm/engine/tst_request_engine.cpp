@@ -102,6 +102,11 @@ private Q_SLOTS:
     void cancelEndsTheWait();
     void observerHearsStaleAndListenedFrames();
     void failureMessageNamesAttemptsAndTime();
+    void aLateAnswerIsItsOwnRequests_data();
+    void aLateAnswerIsItsOwnRequests();
+    void anAnswerAfterAnUnheardAttemptSettlesTheLineFirst();
+    void aLineWithoutSilenceWaitsNoLonger();
+    void aShortLookStaysShortAndTheNextRequestWaitsForQuiet();
 };
 
 void TestRequestEngine::timeoutsAreDerivedFromTheBaudRate() {
@@ -367,3 +372,93 @@ void TestRequestEngine::failureMessageNamesAttemptsAndTime() {
 
 QTEST_GUILESS_MAIN(TestRequestEngine)
 #include "tst_request_engine.moc"
+
+// Issue 35 item 9: answers that carry nothing of their request (the
+// Compax3's), late by 150 ms, 400 ms and 1 s, while the first-byte time is
+// about 0.1 s: every request gets its own answer or fails, never another's.
+void TestRequestEngine::aLateAnswerIsItsOwnRequests_data() {
+    QTest::addColumn<int>("delayMs");
+    QTest::newRow("150 ms") << 150;
+    QTest::newRow("400 ms") << 400;
+    QTest::newRow("1 s") << 1000;
+}
+
+void TestRequestEngine::aLateAnswerIsItsOwnRequests() {
+    QFETCH(int, delayMs);
+    // Each request is answered with its own name, `delayMs` after it.
+    Rig rig([delayMs](const QByteArray& written, int) {
+        return replyAfter(delayMs, written.left(written.indexOf('#')).mid(1));
+    });
+    rig.backend.lateWindowMs = 1000;
+    const QList<QByteArray> names = {"serial", "position", "status", "error", "set"};
+    for (const QByteArray& name : names) {
+        const Result<QByteArray> reply = rig.engine.send(query('?' + name));
+        QVERIFY2(reply.ok(), qPrintable(reply.error().message));
+        QCOMPARE(*reply, name);
+    }
+    // Each taken in the wait after its first attempt: nothing sent twice.
+    QCOMPARE(rig.line.writes().size(), names.size());
+    QCOMPARE(rig.engine.stats().lateAnswersTaken, int(names.size()));
+    QVERIFY(rig.engine.firstByteTimeoutMs(query("?serial")) < delayMs);
+    // The next request leaves only after the answer: one at a time.
+    for (int i = 1; i < names.size(); ++i) QVERIFY(rig.writeGap(i) >= delayMs);
+}
+
+void TestRequestEngine::anAnswerAfterAnUnheardAttemptSettlesTheLineFirst() {
+    // The first attempt's answer is lost; the second's comes late, but
+    // within its window. Which attempt it answered cannot be told, so the
+    // next request waits until the line has been quiet for the window.
+    Rig rig([](const QByteArray& written, int index) {
+        if (index == 0) return silence();
+        return replyAfter(300, written.left(written.indexOf('#')).mid(1));
+    });
+    rig.backend.lateWindowMs = 1000;
+    const Result<QByteArray> a = rig.engine.send(query("?a"));
+    QVERIFY2(a.ok(), qPrintable(a.error().message));
+    QCOMPARE(*a, QByteArray("a"));
+    QCOMPARE(rig.line.writes().size(), 2);
+    const qint64 answered = rig.clock.nowMs;
+    const Result<QByteArray> b = rig.engine.send(query("?b"));
+    QCOMPARE(*b, QByteArray("b"));
+    QCOMPARE(rig.engine.stats().settles, 1);
+    QVERIFY(rig.line.writes().at(2).atMs >= answered + 1000);
+}
+
+void TestRequestEngine::aLineWithoutSilenceWaitsNoLonger() {
+    // The window costs nothing while every attempt is answered in time:
+    // the same writes at the same (virtual) times as without one.
+    auto script = [](const QByteArray&, int) { return replyAfter(5, "value"); };
+    Rig plain(script);
+    Rig windowed(script);
+    windowed.backend.lateWindowMs = 1000;
+    for (int i = 0; i < 20; ++i) {
+        QVERIFY(plain.engine.send(query("?x")).ok());
+        QVERIFY(windowed.engine.send(query("?x")).ok());
+    }
+    QCOMPARE(windowed.line.writes().size(), plain.line.writes().size());
+    for (int i = 0; i < plain.line.writes().size(); ++i)
+        QCOMPARE(windowed.line.writes().at(i).atMs, plain.line.writes().at(i).atMs);
+    QCOMPARE(windowed.clock.nowMs, plain.clock.nowMs);
+    QCOMPARE(windowed.engine.stats().lateAnswerWaits, 0);
+    QCOMPARE(windowed.engine.stats().settles, 0);
+}
+
+void TestRequestEngine::aShortLookStaysShortAndTheNextRequestWaitsForQuiet() {
+    // A bus scan's look at an empty address stays short; what it may still
+    // hear later is not taken by the next real request.
+    Rig rig([](const QByteArray& written, int) {
+        return startsWith(written, "?look") ? replyAfter(400, "look") : replyAfter(5, "value");
+    });
+    rig.backend.lateWindowMs = 1000;
+    Request look = query("?look");
+    look.maxAttempts = 1;
+    look.silenceExpected = true;
+    look.turnaroundMs = 30;
+    QVERIFY(!rig.engine.send(look).ok());
+    QVERIFY(rig.clock.nowMs < 100);
+    const Result<QByteArray> value = rig.engine.send(query("?x"));
+    QVERIFY2(value.ok(), qPrintable(value.error().message));
+    QCOMPARE(*value, QByteArray("value"));
+    QCOMPARE(rig.engine.stats().settles, 1);
+    QCOMPARE(rig.engine.stats().lateReplies, 1);  // "look", dropped
+}

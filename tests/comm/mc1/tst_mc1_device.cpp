@@ -54,7 +54,7 @@ private Q_SLOTS:
         // An MC100 named where an MC200 answers: refused, saying what answers.
         Bench wrong(Mc1Variant::Mc200V2, Mc1Variant::Mc100V1);
         const Result<qint64> refused = wrong.device.readVariable(1);
-        QCOMPARE(refused.error().kind, ErrorKind::Usage);
+        QCOMPARE(refused.error().kind, ErrorKind::Unsupported);
         QVERIFY2(refused.error().message.contains(QLatin1String("MC200 V2")),
                  qPrintable(refused.error().message));
         // V1 named where a V2 answers: the user's word, and what the probe found.
@@ -116,10 +116,10 @@ private Q_SLOTS:
         const Result<QByteArray> six = v1.device.readMemory(0x20, 13);
         QVERIFY(six.ok());
         QCOMPARE(six->size(), 13);
-        QCOMPARE(v1.device.writeMemory(0, "x").error().kind, ErrorKind::Usage);
+        QCOMPARE(v1.device.writeMemory(0, "x").error().kind, ErrorKind::Unsupported);
 
         Bench mc100(Mc1Variant::Mc100V2);
-        QCOMPARE(mc100.device.readMemory(0, 4).error().kind, ErrorKind::Usage);
+        QCOMPARE(mc100.device.readMemory(0, 4).error().kind, ErrorKind::Unsupported);
     }
 
     void theProgramStartsStepsAndStops() {
@@ -135,7 +135,7 @@ private Q_SLOTS:
             bench.device.programCommand(Mc1ProgramCommand::Step);
         QCOMPARE(stepped->after->programCounter, quint16(stopped->after->programCounter + 1));
         Bench mc100(Mc1Variant::Mc100V1);
-        QCOMPARE(mc100.device.programStatus().error().kind, ErrorKind::Usage);
+        QCOMPARE(mc100.device.programStatus().error().kind, ErrorKind::Unsupported);
     }
 
     void aLostAnswerToARelativeMoveIsReadBackNotRepeated() {

@@ -94,7 +94,7 @@ private Q_SLOTS:
         // A telegram the variant lacks never leaves the PC.
         Bench mc100(Mc1Variant::Mc100V1);
         const Result<QByteArray> none = mc100.link.exchange(Mc1Op::ProgramStart, {});
-        QCOMPARE(none.error().kind, ErrorKind::Usage);
+        QCOMPARE(none.error().kind, ErrorKind::Unsupported);
         QVERIFY(mc100.transport.isOpen());
     }
 

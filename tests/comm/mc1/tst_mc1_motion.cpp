@@ -93,6 +93,15 @@ private Q_SLOTS:
             QCOMPARE(quint8(sent.at(i).at(0)), quint8(0xE3));
         for (const MotionStopLine& line : report.lines)
             QVERIFY2(line.detail.contains(QLatin1String("stands at")), qPrintable(line.detail));
+        // "Not moving" read through the guessed parameter numbers is no
+        // fact (issue 35): "could not tell", never "nothing moves".
+        const Result<QStringList> moving = motion->activeMotion();
+        QVERIFY(!moving.ok());
+        QVERIFY2(moving.error().message.startsWith(
+                     QLatin1String("could not tell whether axis 1, 2, 3, 4, 5, 6, 7, 8 moves")),
+                 qPrintable(moving.error().message));
+        // Read through the controller's own numbers, standing still is a fact.
+        bench.device.setAxisParameters(mc1AxisParametersFrom(0x1000, QStringLiteral("its own")));
         QVERIFY(motion->activeMotion()->isEmpty());
     }
 
@@ -104,8 +113,12 @@ private Q_SLOTS:
         QCOMPARE(found->numbers, QList<int>({1, 2, 5}));
         QVERIFY2(found->source.contains(QLatin1String("RDTABLE")), qPrintable(found->source));
         QVERIFY(three.device.axisCommand(5, Mc1AxisCommand::JogMinus).ok());
-        QCOMPARE(*three.device.motionControl()->activeMotion(),
-                 QStringList({"axis 5 moves (provisional parameter numbers)"}));
+        const Result<QStringList> moving = three.device.motionControl()->activeMotion();
+        QVERIFY2(moving.error().message.contains(
+                     QLatin1String("could not tell whether axis 1, 2 moves")) &&
+                     moving.error().message.contains(
+                         QLatin1String("(besides: axis 5 moves (provisional parameter numbers))")),
+                 qPrintable(moving.error().message));
         const MotionStopReport report = three.device.motionControl()->stopAllMotion();
         QVERIFY(report.allAcknowledged());  // no false alarm for the axes it lacks
         QCOMPARE(report.lines.size(), 3);
@@ -125,6 +138,55 @@ private Q_SLOTS:
         const qsizetype reads = receivedOf(three, 0xE3).size();
         QCOMPARE(three.device.axisState(4).error().kind, ErrorKind::Usage);
         QCOMPARE(receivedOf(three, 0xE3).size(), reads);
+    }
+
+    // Issue 35, item 6: the STOP sends its stops before anything else. With
+    // the axes not known and the controller not identified, every axis an
+    // MC-1 can have gets its stop - no probe, no RDTABLE before them - and
+    // an axis the controller lacks says "no such axis", not an alarm.
+    void aStopWithNothingKnownSendsEveryStopFirst() {
+        Bench three(Mc1Variant::Mc200V2, std::nullopt, {}, 0, withAxes({1, 2, 5}));
+        MotionControl* motion = three.device.motionControl();
+        QVERIFY(motion);
+        QVERIFY(three.sim().received().isEmpty());  // asking for it sent nothing
+        const MotionStopReport report = motion->stopAllMotion();
+        const QList<QByteArray> sent = three.sim().received();
+        QVERIFY(sent.size() >= 8);
+        for (int i = 0; i < 8; ++i) QCOMPARE(sent.at(i), hex(kStops[i]));
+        QVERIFY(receivedOf(three, 0xE5).isEmpty());  // no RDTABLE at all
+        QCOMPARE(report.lines.size(), 8);
+        QVERIFY2(report.allAcknowledged(), "no alarm for axes it lacks");
+        for (int axis = 1; axis <= 8; ++axis) {
+            const MotionStopLine& line = report.lines.at(axis - 1);
+            const bool has = axis == 1 || axis == 2 || axis == 5;
+            QCOMPARE(line.acknowledged, has);
+            QCOMPARE(line.absent, !has);
+            if (!has)
+                QVERIFY2(line.detail.startsWith(QLatin1String("no such axis")),
+                         qPrintable(line.detail));
+            else
+                QVERIFY2(line.detail.contains(QLatin1String("stands at")), qPrintable(line.detail));
+        }
+        // Identified, axes still unknown: the same eight, still no RDTABLE first.
+        Bench eight(Mc1Variant::Mc200V2);
+        QVERIFY(eight.device.ensureIdentified().ok());
+        const qsizetype before = eight.sim().received().size();
+        QVERIFY(eight.device.motionControl()->stopAllMotion().allAcknowledged());
+        const QList<QByteArray> after = eight.sim().received().mid(before);
+        for (int i = 0; i < 8; ++i) QCOMPARE(after.at(i), hex(kStops[i]));
+        QVERIFY(receivedOf(eight, 0xE5).isEmpty());
+    }
+
+    void anAxisTheControllerIsKnownToHaveThatRefusesIsAnAlarm() {
+        // A refusal from an axis RDTABLE found is no "no such axis".
+        Bench bench(Mc1Variant::Mc200V2, std::nullopt, {}, 0, withAxes({1, 2}));
+        QVERIFY(bench.device.axes().ok());
+        bench.device.setGivenAxes(QList<int>{1, 2, 3});  // told wrong: axis 3 refuses
+        const MotionStopReport report = bench.device.motionControl()->stopAllMotion();
+        QVERIFY(!report.allAcknowledged());
+        QVERIFY(!report.lines.at(2).absent);
+        QVERIFY2(report.lines.at(2).detail.startsWith(QLatin1String("not acknowledged")),
+                 qPrintable(report.lines.at(2).detail));
     }
 
     void givenAxesReplaceTheSearch() {
@@ -225,12 +287,17 @@ private Q_SLOTS:
 
     void anMc100HasNoAxesToStop() {
         Bench mc100(Mc1Variant::Mc100V2);
+        // Not identified yet: a STOP is offered, and asking costs no telegram.
+        QVERIFY(mc100.device.motionControl());
+        QVERIFY(mc100.sim().received().isEmpty());
+        QVERIFY(mc100.device.ensureIdentified().ok());
         QCOMPARE(mc100.device.motionControl(), nullptr);
         const Result<Mc1Axes> axes = mc100.device.axes();
         QVERIFY(axes->numbers.isEmpty());
         QVERIFY2(axes->source.contains(QLatin1String("no axis telegrams")),
                  qPrintable(axes->source));
         Bench mc200v1(Mc1Variant::Mc200V1);
+        QVERIFY(mc200v1.device.ensureIdentified().ok());
         QCOMPARE(mc200v1.device.motionControl(), nullptr);
     }
 };

@@ -32,6 +32,8 @@ private Q_SLOTS:
     void urgentJobsComeFirst();
     void urgentJobTakenWhileAnotherRunsLeavesItRunning();
     void dropQueuedKeepsUrgentAndRunningJobs();
+    void motionIsPushedOnlyWhenTheLineIsFree();
+    void aJobRecordsTheStopGenerationItWasAskedIn();
 };
 
 void TestJobQueue::userJobsComeBeforePollJobs() {
@@ -147,6 +149,40 @@ void TestJobQueue::dropQueuedKeepsUrgentAndRunningJobs() {
     QCOMPARE(queue.cancel(backup.id), JobQueue::Cancelled::Signalled);  // not touched
     queue.finishRunning();
     QCOMPARE(drain(queue), QStringList({"stop"}));
+}
+
+// Issue 35, item 3: motion never waits in a queue - refused, naming what
+// holds the line, while a User or Urgent job runs or waits; a poll may run.
+void TestJobQueue::motionIsPushedOnlyWhenTheLineIsFree() {
+    JobQueue queue;
+    queue.push(JobPriority::Poll, "poll", {}, "poll");
+    QVERIFY(queue.takeNext());  // a poll runs: short, the motion goes next
+    const JobQueue::PushedIfFree jog = queue.pushIfFree("jog", {}, {}, 0);
+    QVERIFY(jog.pushed);
+    queue.finishRunning();
+    QCOMPARE(drain(queue), QStringList({"jog"}));
+
+    queue.push(JobPriority::User, "Back up controller", {});
+    QVERIFY(queue.takeNext());  // the backup runs
+    const JobQueue::PushedIfFree refused = queue.pushIfFree("jog", {}, {}, 0);
+    QVERIFY(!refused.pushed);
+    QCOMPARE(refused.busyWith, QStringLiteral("Back up controller"));
+    queue.push(JobPriority::User, "restore", {});
+    queue.finishRunning();
+    // Not running, but waiting: refused too, naming the waiting one.
+    QCOMPARE(queue.pushIfFree("jog", {}, {}, 0).busyWith, QStringLiteral("restore"));
+    QCOMPARE(drain(queue), QStringList({"restore"}));  // the jog was never queued
+    queue.push(JobPriority::Urgent, "STOP", {});
+    QCOMPARE(queue.pushIfFree("jog", {}, {}, 0).busyWith, QStringLiteral("STOP"));
+}
+
+void TestJobQueue::aJobRecordsTheStopGenerationItWasAskedIn() {
+    JobQueue queue;
+    queue.push(JobPriority::User, "move", {}, {}, {}, 3);
+    QCOMPARE(queue.takeNext()->stopGeneration, 3u);
+    queue.finishRunning();
+    QVERIFY(queue.pushIfFree("jog", {}, {}, 4).pushed);
+    QCOMPARE(queue.takeNext()->stopGeneration, 4u);
 }
 
 QTEST_GUILESS_MAIN(TestJobQueue)

@@ -51,6 +51,30 @@ private Q_SLOTS:
         QVERIFY2(run.out.contains(QLatin1String("(cambus, 38400 baud 8N1)")), describe(run));
     }
 
+    // Issue 39, item 3: the built-in simulated port is one device, as its
+    // name says - a Standard CamCon for "sim" - not whatever each probe
+    // speaks (it said "a Cam-BUS: users 0 get the token").
+    void namesWhatTheSimulatedPortIs() {
+        const CliRun plain = runCli({"detect", "--json"});
+        VERIFY_EXIT(plain, 0);
+        const QJsonObject found = QJsonDocument::fromJson(plain.out.toUtf8())
+                                      .object()
+                                      .value(QStringLiteral("found"))
+                                      .toObject();
+        QCOMPARE(found.value(QStringLiteral("protocol")), QJsonValue(QStringLiteral("standard")));
+        QVERIFY2(found.value(QStringLiteral("found"))
+                     .toString()
+                     .startsWith(QLatin1String("CamCon, EPROM")),
+                 describe(plain));
+        const CliRun table = runCli({"--port", "sim:protocol=3964r-n96", "detect"});
+        VERIFY_EXIT(table, 0);
+        QVERIFY2(table.out.contains(QLatin1String("(3964r-n96, 9600 baud 8N1)")), describe(table));
+        // A port with another family's keys is that family's device.
+        const CliRun mc = runCli({"--port", "sim:variant=mc200v1", "detect"});
+        VERIFY_EXIT(mc, 0);
+        QVERIFY2(mc.out.startsWith(QLatin1String("mc1: MC200 V1 (probed)")), describe(mc));
+    }
+
     void findsAMultiuserDeviceAtTheNumberGiven() {
         SimSession session;
         START_SIM(session, {"--protocol", "multiuser", "--devices", "7"});

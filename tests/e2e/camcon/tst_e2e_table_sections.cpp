@@ -85,7 +85,8 @@ void TestE2eTableSections::modesOverAsciiAreNotSent() {
     const QString file = session.path(QStringLiteral("modes.csv"));
     QVERIFY(writeBytes(file, "output,deadtime,mode,on,off\n7,0,path-time,20,300\n"));
     const CliRun written = session.cli({"deadtimes", "write", file});
-    QVERIFY2(written.exitCode != 0, describe(written).constData());
+    // Not sent because the protocol lacks it: the device's side (issue 39).
+    VERIFY_EXIT(written, 1);
     QVERIFY2(written.out.contains(QLatin1String("dead-time mode of output 7: not sent")),
              describe(written).constData());
     QVERIFY2(!written.out.contains(QLatin1String(": written")), qPrintable(written.out));
@@ -191,14 +192,14 @@ void TestE2eTableSections::tableSectionsOverAsciiAreNotSent() {
     const QString file = session.path(QStringLiteral("analogue.csv"));
     QVERIFY(writeBytes(file, "output,position,value\n1,0,5\n"));
     const CliRun written = session.cli({"analogue", "write", file});
-    QVERIFY2(written.exitCode != 0, describe(written).constData());
+    VERIFY_EXIT(written, 1);
     QVERIFY2(written.out.contains(QLatin1String("analogue output 1: not sent")),
              describe(written).constData());
     const CliRun lock = session.cli({"eeprom-lock", "lock"});
-    QVERIFY2(lock.exitCode != 0, describe(lock).constData());
+    VERIFY_EXIT(lock, 1);
     QVERIFY2(lock.out.contains(QLatin1String("EEPROM lock: not sent")), describe(lock).constData());
     const CliRun read = session.cli({"programming", "read"});
-    QVERIFY2(read.exitCode != 0, describe(read).constData());
+    VERIFY_EXIT(read, 1);
     QVERIFY2(!read.err.isEmpty(), describe(read).constData());
 }
 
@@ -232,7 +233,7 @@ void TestE2eTableSections::deviceWithoutAnalogueOutputsReadsAndWritesProjects() 
     const QString points = bare.path(QStringLiteral("analogue.csv"));
     QVERIFY(writeBytes(points, "output,position,value\n2,0,100\n2,180,-2000\n3,,\n"));
     const CliRun refused = bare.cli({"analogue", "write", points});
-    QVERIFY2(refused.exitCode != 0, describe(refused).constData());
+    VERIFY_EXIT(refused, 1);
     QVERIFY2(refused.out.contains(QLatin1String("analogue output 2: not sent")) &&
                  refused.out.contains(QLatin1String("this device has no analogue outputs")),
              describe(refused).constData());

@@ -87,6 +87,52 @@ private Q_SLOTS:
                  qPrintable(again.out));
     }
 
+    void aStopNeverPowersTheDrive() {
+        // Issue 35 item 2: `c3 disable`, then `c3 stop`: the STOP finds the
+        // drive powerless and sends nothing; it stays powerless.
+        SimSession session(QStringLiteral("compax3"));
+        START_SIM(session);
+        VERIFY_EXIT(session.cli({"c3", "enable"}), 0);
+        VERIFY_EXIT(session.cli({"c3", "disable"}), 0);
+        const CliRun stop = session.cli({"c3", "stop"});
+        VERIFY_EXIT(stop, 0);
+        QVERIFY2(stop.out.startsWith(QLatin1String("note: not powered: nothing to stop (nothing "
+                                                   "was sent)\naxis: powerless at")),
+                 qPrintable(stop.out));
+        const CliRun status = session.cli({"c3", "status"});
+        VERIFY_EXIT(status, 0);
+        QVERIFY2(status.out.contains(QLatin1String("b10 powerless: 1")), qPrintable(status.out));
+    }
+
+    // Issue 35 item 9: a drive whose answers come 150 ms, 400 ms or 1 s
+    // late (the first-byte time is about 0.1 s): every value is its own
+    // request's, never the one before's.
+    void lateAnswersAreNeverAnotherRequests_data() {
+        QTest::addColumn<QString>("delay");
+        QTest::newRow("150 ms") << QStringLiteral("150");
+        QTest::newRow("400 ms") << QStringLiteral("400");
+        QTest::newRow("1 s") << QStringLiteral("1000");
+    }
+
+    void lateAnswersAreNeverAnotherRequests() {
+        QFETCH(QString, delay);
+        SimSession session(QStringLiteral("compax3"));
+        START_SIM(session, {"--delay", delay});
+        const CliRun read = session.cli({"c3", "read", "1.4", "680.5", "1901.3"});
+        VERIFY_EXIT(read, 0);
+        QCOMPARE(read.out, QStringLiteral("1.4 = C3-4711-0815\n680.5 = 0\n1901.3 = 300\n"));
+        const CliRun info = session.cli({"c3", "info"});
+        VERIFY_EXIT(info, 0);
+        QVERIFY2(info.out.contains(QLatin1String("serial: C3-4711-0815\ntype: S025V2\naxis: "
+                                                 "powerless at 0\nlast error: no error\n")),
+                 qPrintable(info.out));
+        // The STOP's status read is late too: still read as powerless.
+        const CliRun stop = session.cli({"c3", "stop"});
+        VERIFY_EXIT(stop, 0);
+        QVERIFY2(stop.out.startsWith(QLatin1String("note: not powered: nothing to stop")),
+                 qPrintable(stop.out));
+    }
+
     void anAcknowledgedCommandWhoseReadBackIsRefusedIsDone() {
         // Issue 27 item 2: every read-back refused (!0005); the jog was
         // acknowledged, so it is done: exit 0 with the note.

@@ -2,7 +2,15 @@
 // on a pseudo-terminal, for each MC100/MC200 variant: identification,
 // variables, flags, I/O, memory, and backup → change → verify → restore →
 // verify with honest counts.
+#include "../child_process.h"
 #include "../e2e_support.h"
+#include "../test_pace.h"
+
+#include <QProcess>
+
+#include <csignal>
+
+#include <signal.h>
 
 #include <QTest>
 
@@ -61,7 +69,7 @@ private Q_SLOTS:
             VERIFY_EXIT(mem, 0);
             QCOMPARE(mem.out, QStringLiteral("0x0100: 0a 0b 0c\n"));
         } else {
-            VERIFY_EXIT(run, 2);  // no SYSDATA: said before anything is sent
+            VERIFY_EXIT(run, 1);  // no SYSDATA: the controller lacks it, nothing is sent
             QVERIFY2(run.err.contains(name), qPrintable(run.err));
         }
 
@@ -99,6 +107,21 @@ private Q_SLOTS:
                  qPrintable(detect.out));
     }
 
+    // Issue 39, item 3: an MC100MA single-FIFO card (0xFF every 10 ms, a
+    // telegram taken only right after one) is found by Detect as `mc info`
+    // finds it, and by the same probe in the desktop application.
+    void detectFindsAnMc100maCard() {
+        SimProcess sim;
+        QVERIFY2(sim.start({"--family", "mc1", "--variant", "mc100v1", "--sync", "10"}),
+                 qPrintable(sim.errorText()));
+        const CliRun info = runCli({"--port", sim.ptyPath(), "mc", "info"});
+        VERIFY_EXIT(info, 0);
+        const CliRun detect = runCli({"--port", sim.ptyPath(), "detect"});
+        VERIFY_EXIT(detect, 0);
+        QVERIFY2(detect.out.contains(QLatin1String("mc1: MC100 V1 (probed)")),
+                 qPrintable(detect.out));
+    }
+
     // An MC100 set to its ASCII protocol: variables, flags, a backup and a
     // restore of the differences; what ASCII lacks is refused by name; Detect
     // finds it after the binary protocols have been tried.
@@ -123,7 +146,7 @@ private Q_SLOTS:
         QVERIFY2(restore.out.contains(QLatin1String("M2327: written")), qPrintable(restore.out));
         VERIFY_EXIT(session.cli({"mc", "verify", file}), 0);
         const CliRun run = session.cli({"mc", "run"});
-        VERIFY_EXIT(run, 2);
+        VERIFY_EXIT(run, 1);
         QVERIFY2(run.err.contains(QLatin1String("ASCII protocol has no requests")),
                  qPrintable(run.err));
         const CliRun detect = runCli({"--port", session.ptyPath(), "detect"});
@@ -152,13 +175,17 @@ private Q_SLOTS:
         QVERIFY2(other.err.contains(QLatin1String("nothing was written")), qPrintable(other.err));
         // A variant named that does not answer so: refused, naming what answers.
         const CliRun wrong = mc100.cli({"--variant", "mc200v2", "mc", "var", "read", "1"});
-        VERIFY_EXIT(wrong, 2);
+        VERIFY_EXIT(wrong, 1);  // the controller is not the one named (issue 39)
         QVERIFY2(wrong.err.contains(QLatin1String("MC100 V1")), qPrintable(wrong.err));
     }
 
     // Issue 27: `mc axis all stop` on two controllers that differ (axes 1,
-    // 2, 5 and all eight): one line per axis it has, exit 0 when every stop
-    // was acknowledged; the stops go out before any read-back.
+    // 2, 5 and all eight): one line per axis, exit 0 when every stop was
+    // acknowledged; the stops go out before anything else. Issue 35: a
+    // fresh `cambench-cli` knows neither the controller nor its axes, so
+    // every axis an MC200 can have gets its stop, first - no probe, no
+    // RDTABLE before them -, and the axes it lacks say "no such axis";
+    // `--axes` names the axes instead.
     void stopOfEveryAxis() {
         SimSession three(QStringLiteral("mc1"));
         START_SIM(three, {"--axes", "1,2,5"});
@@ -167,17 +194,24 @@ private Q_SLOTS:
         const CliRun stop = three.cli({"--log", log, "mc", "axis", "all", "stop"});
         VERIFY_EXIT(stop, 0);
         const QStringList lines = stop.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-        QCOMPARE(lines.size(), 3);
-        QVERIFY2(lines.at(2).startsWith(QLatin1String("Axis 5: acknowledged; axis 5 stands at")),
+        QCOMPARE(lines.size(), 8);
+        QVERIFY2(lines.at(4).startsWith(QLatin1String("Axis 5: acknowledged; axis 5 stands at")),
                  qPrintable(stop.out));
-        // Every stop (9B) before the first read-back (RDSTAT E3).
+        QVERIFY2(
+            lines.at(2) == QLatin1String("Axis 3: no such axis: the controller refused its stop"),
+            qPrintable(stop.out));
+        QCOMPARE(stop.out.count(QLatin1String(": no such axis")), 5);
+        // Every stop (9B) first: the first telegrams are the eight stops.
         QList<QByteArray> sent;
         for (const QByteArray& line : readBytes(log).split('\n'))
             if (line.contains(" > ")) sent << line.mid(line.indexOf(" > ") + 3, 2);
-        const qsizetype lastStop = sent.lastIndexOf("9B");
-        const qsizetype firstRead = sent.indexOf("E3");
-        QCOMPARE(sent.count("9B"), 3);
-        QVERIFY2(lastStop >= 0 && lastStop < firstRead, readBytes(log).constData());
+        QVERIFY2(sent.size() > 8, readBytes(log).constData());
+        QCOMPARE(sent.mid(0, 8), QList<QByteArray>(8, "9B"));
+        QVERIFY(!sent.contains("E5"));  // no RDTABLE
+
+        const CliRun named = three.cli({"mc", "axis", "all", "stop", "--axes", "1,2,5"});
+        VERIFY_EXIT(named, 0);
+        QCOMPARE(named.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts).size(), 3);
 
         SimSession eight(QStringLiteral("mc1"));
         START_SIM(eight);
@@ -245,6 +279,47 @@ private Q_SLOTS:
             QVERIFY2(!line.contains(" > 3B ") && !line.contains(" > BB "), line.constData());
         const CliRun read = session.cli({"mc", "flag", "read", "M2"});
         QCOMPARE(read.out, QStringLiteral("M2 = 0\n"));
+    }
+
+    // Issue 35: SIGINT while `mc restore` writes. Decided: the signal is
+    // not a STOP, but nothing that writes or moves leaves after it; the
+    // write on the wire when it came is the last; stderr says what the
+    // signal did; exit 130. The simulator answers after 400 ms, so the
+    // signal lands while the first write waits for its answer.
+    void anInterruptedRestoreSendsNoMoreWrites() {
+        SimSession changed(QStringLiteral("mc1"));
+        START_SIM(changed);
+        for (int v = 1; v <= 5; ++v)
+            VERIFY_EXIT(
+                changed.cli({"mc", "var", "write", QString::number(v), QString::number(1000 + v)}),
+                0);
+        const QString file = changed.path(QStringLiteral("backup.json"));
+        VERIFY_EXIT(changed.cli({"mc", "backup", "-o", file, "--vars", "1-5", "--no-flags"}), 0);
+
+        SimSession slow(QStringLiteral("mc1"));
+        START_SIM(slow, {"--delay", "400", "--verbose"});
+        QProcess cli;
+        cli.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+        cli.setArguments({"--port", slow.ptyPath(), "--baud", "115200", "--protocol", "mc1", "mc",
+                          "restore", file});
+        endWithThisTest(cli);
+        cli.start();
+        QVERIFY(cli.waitForStarted());
+        const QString simLog = slow.path(QStringLiteral("sim-stderr.log"));
+        // WRVAR (32 bit, CF) arrived at the controller: its answer comes in 400 ms.
+        QVERIFY2(QTest::qWaitFor([&] { return readBytes(simLog).contains("<- cf"); },
+                                 hangBoundMs(60000)),
+                 readBytes(simLog).constData());
+        QCOMPARE(::kill(pid_t(cli.processId()), SIGINT), 0);
+        QVERIFY(cli.waitForFinished(hangBoundMs(60000)));
+        const QByteArray err = cli.readAllStandardError();
+        const QByteArray out = cli.readAllStandardOutput();
+        QCOMPARE(cli.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(cli.exitCode() == 130, (out + err).constData());
+        QVERIFY2(err.contains("SIGINT: nothing that moves or writes is sent from now on"),
+                 err.constData());
+        QTest::qWait(500);  // what the simulator received is all in its log
+        QCOMPARE(readBytes(simLog).count("<- cf"), 1);
     }
 };
 

@@ -156,7 +156,13 @@ private Q_SLOTS:
         QVERIFY(freshnessLine->text().startsWith(QLatin1String("Live")));
 
         // The line goes: the position stays, greyed, "no answer since".
-        shell->session()->disconnectFromDevice();
+        {
+            // "Not moving" read through the guessed parameter numbers is no
+            // fact: the disconnect asks (issue 35).
+            auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
+            shell->session()->disconnectFromDevice();
+            QCOMPARE(leave->answered(), 1);
+        }
         QVERIFY(QTest::qWaitFor([&] { return axes->freshness()->isStale(); }, kDeviceTimeoutMs));
         const QString since =
             QStringLiteral("No answer since %1").arg(axes->freshness()->lastAnswerText());
@@ -253,7 +259,13 @@ private Q_SLOTS:
 
         // A gap (the line lost and back) and a new name: still one colour
         // and one legend entry a value, with the name it has now.
-        shell->session()->disconnectFromDevice();
+        {
+            // "Not moving" read through the guessed parameter numbers is no
+            // fact: the disconnect asks (issue 35).
+            auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
+            shell->session()->disconnectFromDevice();
+            QCOMPARE(leave->answered(), 1);
+        }
         QVERIFY(QTest::qWaitFor([&] { return !shell->session()->isOnline(); }, kDeviceTimeoutMs));
         model->setData(model->index(1, Mc1WatchModel::NameColumn), QStringLiteral("Knife"),
                        Qt::EditRole);

@@ -144,4 +144,21 @@ inline std::unique_ptr<NextDialog<QMessageBox>> answerConfirmation(bool yes) {
     });
 }
 
+// The question before leaving a device that may move or whose motion
+// cannot be told (ui/motion_leave_question.cpp; a Compax3 always, its
+// status word being provisional; an MC200 read through the guessed
+// parameter numbers): presses its button named `button`
+// ("leaveWithoutStop", "stopThenLeave") when it comes, else cancels it;
+// any other message box is left alone.
+inline std::unique_ptr<NextDialog<QMessageBox>> answerLeaveQuestion(
+    const QString& button = QStringLiteral("leaveWithoutStop")) {
+    return std::make_unique<NextDialog<QMessageBox>>([button](QMessageBox* box) {
+        if (box->objectName() != QLatin1String("motionLeaveQuestion")) return;
+        if (QAbstractButton* pressed = box->findChild<QAbstractButton*>(button))
+            pressed->click();
+        else
+            box->reject();
+    });
+}
+
 }  // namespace cambench::test

@@ -54,6 +54,9 @@ bool switchTo(Shell& shell, const QString& port, const QString& protocol) {
     page->setPort(port);
     page->setProtocol(protocol);
     QSignalSpy loaded(shell.window(), &MainWindow::loaded);
+    // Leaving a drive, or an MC200 read through the guessed parameter
+    // numbers, asks first: "not moving" is no fact there (issue 35).
+    auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
     shell.window()->connectAndLoad();
     return loaded.wait(kDeviceTimeoutMs) && loaded.first().first().toBool();
 }
@@ -135,6 +138,7 @@ private Q_SLOTS:
         ConnectionPage* page = window->connectionPage();
         page->setPort(QStringLiteral("/dev/cambench-no-such-port"));
         page->setProtocol(QStringLiteral("mc1"));
+        auto leave = answerLeaveQuestion();
         window->connectAndLoad();
         QTRY_VERIFY_WITH_TIMEOUT(shell->session()->state() == comm::ConnectionState::Disconnected,
                                  kDeviceTimeoutMs);

@@ -6,8 +6,13 @@
 // saved and opened again lists the same devices.
 #include "machine_fixture.h"
 #include "shell_fixture.h"
+#include "stop_reach_checks.h"
+
+#include "../mc1/mc1_jog.h"
 
 #include "model/machine/machine_file.h"
+#include "ui/camcon/backup_wizard.h"
+#include "ui/camcon/compare_programs_dialog.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/family_gui.h"
@@ -28,6 +33,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QStatusBar>
 #include <QTextDocument>
 #include <QTreeWidget>
@@ -80,6 +86,19 @@ std::unique_ptr<CamsAndPlc> openCamsAndPlc() {
     return open;
 }
 
+// The MC200's axis 1 jogs (confirmed on its Axes page); then its window
+// shows its Connection page (no poll: the line is quiet but for the test)
+// unless `keepPolling`, and the machine shows the CamCon's pages.
+bool jogThePlc(const CamsAndPlc& open, bool keepPolling = false) {
+    MainWindow* plc = open.plc->window();
+    open.machine->window()->showDevice(QStringLiteral("press-plc"));
+    Mc1AxesPage* axes = mc1Window(plc)->axesPage();
+    if (!jogPlus(plc, axes)) return false;
+    if (keepPolling) return true;
+    open.machine->window()->showDevice(QStringLiteral("cams"));
+    return leaveForQuietPage(plc, axes);
+}
+
 }  // namespace
 
 class TestMachine : public QObject {
@@ -116,7 +135,13 @@ private Q_SLOTS:
 
         // The MC200 goes away: its row says so, the CamCon stays as it was.
         QSignalSpy camsLine(cams->session(), &DeviceSession::stateChanged);
-        QVERIFY(plc->session()->disconnectFromDevice());
+        {
+            // "Not moving" read through the guessed parameter numbers is no
+            // fact: the disconnect asks (issue 35).
+            auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
+            QVERIFY(plc->session()->disconnectFromDevice());
+            QCOMPARE(leave->answered(), 1);
+        }
         QVERIFY(QTest::qWaitFor([&] { return plc->lamp() == MachineUnit::Lamp::Offline; },
                                 kDeviceTimeoutMs));
         QCOMPARE(machineRow(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
@@ -173,7 +198,13 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitFor([&] { return says("stands at"); }, kDeviceTimeoutMs));
 
         // A device that can move but is not on the line is named as not reached.
-        QVERIFY(plc->session()->disconnectFromDevice());
+        {
+            // "Not moving" read through the guessed parameter numbers is no
+            // fact: the disconnect asks (issue 35).
+            auto leave = answerLeaveQuestion(QStringLiteral("leaveWithoutStop"));
+            QVERIFY(plc->session()->disconnectFromDevice());
+            QCOMPARE(leave->answered(), 1);
+        }
         QVERIFY(QTest::qWaitFor([&] { return !plc->session()->isOnline(); }, kDeviceTimeoutMs));
         // (Offline by the person's own disconnect: nothing left that can move.)
         QVERIFY(!machine->stop()->armed());
@@ -190,6 +221,91 @@ private Q_SLOTS:
         QTest::keyClick(machine->window()->deviceList(), Qt::Key_Escape);
         QVERIFY(stopped.wait(kDeviceTimeoutMs));
         QCOMPARE(stopped.size(), 1);  // once, not once per device window
+    }
+
+    // Issue 35 item 4: in a machine, no device's dialog blocks another
+    // device's STOP. With the MC200 jogging, Escape in the CamCon's dialogs
+    // (its own and Qt's) and in the machine's menus and dialogs stops the
+    // MC200 - the machine's STOP, once, its telegrams and nothing else -
+    // and cancels the dialog.
+    void escapeInAnotherDevicesDialogStopsTheMachine() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MainWindow* cams = open->cams->window();
+        DeviceSession* plc = open->plc->session();
+        QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
+        QVERIFY(jogThePlc(*open));
+        const QList<QByteArray> reference = referenceStop(plc, cams->stopBar(), machine->stop());
+        QVERIFY(!reference.isEmpty());
+
+        QList<StopPlace> places;
+        places << StopPlace{
+            QStringLiteral("CamCon's Compare programs"),
+            menuEntry(cams, QStringLiteral("&Tools"), QStringLiteral("Compare &programs…")),
+            &openDialog<CompareProgramsDialog>};
+        places << StopPlace{
+            QStringLiteral("CamCon's backup wizard"),
+            menuEntry(cams, QStringLiteral("&Device"), QStringLiteral("&Backup and restore…")),
+            &openDialog<BackupWizard>};
+        places << StopPlace{
+            QStringLiteral("CamCon's Open project (file dialog)"),
+            menuEntry(cams, QStringLiteral("&File"), QStringLiteral("&Open project…"))};
+        places << StopPlace{
+            QStringLiteral("CamCon's check report"),
+            menuEntry(cams, QStringLiteral("&Help"), QStringLiteral("&Check this device…"))};
+        places << openMenu(cams, QStringLiteral("&Edit"));
+        places << openMenu(machine->window(), QStringLiteral("&Machine"));
+        places << StopPlace{QStringLiteral("machine's Add device (input dialog)"),
+                            menuEntry(machine->window(), QStringLiteral("&Machine"),
+                                      QStringLiteral("&Add device…"))};
+        escapeStopsFromEach(places, plc, machine->stop(), plc->motionStop(), reference,
+                            [&open] { return jogThePlc(*open); });
+        QCOMPARE(machine->units().size(), 2);  // Add device was cancelled
+    }
+
+    // Item 10: the list shows the device that moves as moving (its own
+    // live status), then what the STOP did; the window stays on the screen.
+    void theListShowsTheDeviceThatMoves() {
+        const std::unique_ptr<CamsAndPlc> open = openCamsAndPlc();
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
+        QTreeWidgetItem* plcRow = machineRow(*machine, QStringLiteral("press-plc"));
+        QCOMPARE(plcRow->text(MachineWindow::State), QStringLiteral("connected"));
+        QVERIFY(jogThePlc(*open, true));
+        const auto rowSays = [plcRow](const char* start) {
+            return QTest::qWaitFor(
+                [&] { return plcRow->text(MachineWindow::State).startsWith(QLatin1String(start)); },
+                kDeviceTimeoutMs);
+        };
+        QVERIFY2(rowSays("connected, moving (axis 1 is jogging +"),
+                 qPrintable(plcRow->text(MachineWindow::State)));
+        QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Moving);
+        QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+                 QStringLiteral("connected"));
+
+        // Another page shown: the status is no longer read, only "may move".
+        open->plc->window()->showSection(MainWindow::Connection);
+        QVERIFY2(rowSays("connected, may move"), qPrintable(plcRow->text(MachineWindow::State)));
+        QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Connected);
+
+        QSignalSpy stopped(machine->stop(), &StopControl::stopFinished);
+        machine->window()->showDevice(QStringLiteral("cams"));
+        open->cams->window()->stopBar()->button()->click();
+        QVERIFY(stopped.wait(kDeviceTimeoutMs));
+        QVERIFY2(plcRow->text(MachineWindow::State)
+                     .startsWith(QLatin1String("connected, STOP acknowledged at")),
+                 qPrintable(plcRow->text(MachineWindow::State)));
+        // The report (a line per axis) does not make the window grow.
+        QTest::qWait(50);
+        const QRect screen = machine->window()->screen()->availableGeometry();
+        QVERIFY2(
+            machine->window()->height() <= screen.height(),
+            qPrintable(
+                QStringLiteral("%1 > %2").arg(machine->window()->height()).arg(screen.height())));
+        QCOMPARE(open->cams->window()->stopBar()->height(),
+                 open->cams->window()->stopBar()->minimumHeight());
     }
 
     // A language switch rebuilds the machine's window and each device's;

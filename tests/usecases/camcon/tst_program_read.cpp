@@ -82,7 +82,7 @@ void TestProgramRead::programOutsideTheDeviceSendsNothing() {
     b.injections().clearLog();
     const Result<CamProgram> read = readProgram(*b.client, info, program);
     QVERIFY(!read.ok());
-    QCOMPARE(read.error().kind, ErrorKind::Usage);
+    QCOMPARE(read.error().kind, ErrorKind::InvalidData);
     QVERIFY(b.injections().received().isEmpty());
 }
 
