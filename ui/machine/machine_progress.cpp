@@ -1,12 +1,8 @@
 #include "machine_progress.h"
 
-#include "machine.h"
-#include "machine_stop.h"
 #include "machine_unit.h"
 
 #include "ui/device_session.h"
-#include "ui/stop_bar.h"
-#include "ui/stop_shortcut.h"
 
 #include <QDialogButtonBox>
 #include <QGridLayout>
@@ -17,16 +13,15 @@
 
 namespace cambench {
 
-MachineProgress::MachineProgress(Machine* machine, const QString& title,
-                                 const QList<MachineUnit*>& units, QWidget* parent)
+MachineProgress::MachineProgress(const QString& title, const QList<MachineUnit*>& units,
+                                 QWidget* parent)
     : QDialog(parent), m_buttons(new QDialogButtonBox(QDialogButtonBox::Cancel)) {
     setObjectName(QStringLiteral("machineProgress"));
     setWindowTitle(title);
     auto* layout = new QVBoxLayout(this);
-    // STOP reachable throughout: the machine's, every device that can move.
-    layout->addWidget(
-        new StopBar(machine->stop(), StopShortcut::key().toString(QKeySequence::NativeText)));
-    new StopShortcut(machine->stop(), this);
+    // STOP reachable throughout: the program's (ProgramStop: Escape, and the
+    // DialogStop every dialog gets while a device can move) reaches every
+    // device of the machine.
     auto* grid = new QGridLayout;
     for (MachineUnit* unit : units) {
         Row row;
@@ -96,6 +91,16 @@ void MachineProgress::finish(const MachineUnit* unit, bool ok, const QString& li
     if (!allFinished()) return;
     m_buttons->setStandardButtons(QDialogButtonBox::Close);
     Q_EMIT finished();
+}
+
+void MachineProgress::restart(const MachineUnit* unit) {
+    Row* row = rowOf(unit->name());
+    if (!row) return;
+    row->done = false;
+    row->bar->setRange(0, 0);
+    row->line->clear();
+    row->line->setStyleSheet(QString());
+    m_buttons->setStandardButtons(QDialogButtonBox::Cancel);
 }
 
 bool MachineProgress::allFinished() const {

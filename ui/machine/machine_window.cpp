@@ -233,7 +233,7 @@ void MachineWindow::writeReport() {
 
 MachineProgress* MachineWindow::writeReportTo(const QString& path) {
     // Everything is read before it is printed: a bar per device.
-    auto* progress = new MachineProgress(m_machine, tr("Machine report"), m_machine->units(), this);
+    auto* progress = new MachineProgress(tr("Machine report"), m_machine->units(), this);
     progress->setAttribute(Qt::WA_DeleteOnClose);
     progress->show();
     QPointer<MachineProgress> shown(progress);
