@@ -1,6 +1,7 @@
 #include "machine_window.h"
 
 #include "machine.h"
+#include "machine_backup_run.h"
 #include "machine_progress.h"
 #include "machine_report.h"
 #include "machine_stop.h"
@@ -16,6 +17,7 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QInputDialog>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
@@ -112,6 +114,28 @@ void MachineWindow::createMenus() {
     QMenu* menu = m_machineMenu;
     menu->addAction(tr("&Add device…"), this, &MachineWindow::addDevice);
     menu->addAction(tr("&Save machine as…"), this, &MachineWindow::saveAs);
+    menu->addSeparator();
+    // Every device at once, each on its own worker (a bar per device).
+    menu->addAction(tr("&Back up…"), this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Back up the machine into"));
+        if (dir.isEmpty()) return;
+        bool ok = false;
+        // The manifest says why (as the command line's -m).
+        const QString note = QInputDialog::getText(this, tr("Back up the machine"),
+                                                   tr("Why (kept in the backup's manifest):"),
+                                                   QLineEdit::Normal, QString(), &ok);
+        if (ok) backUpTo(dir, note);
+    });
+    menu->addAction(tr("&Verify…"), this, [this] {
+        const QString dir =
+            QFileDialog::getExistingDirectory(this, tr("Verify against the backup"));
+        if (!dir.isEmpty()) verifyFrom(dir);
+    });
+    menu->addAction(tr("R&estore…"), this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Restore the backup"));
+        if (!dir.isEmpty()) restoreFrom(dir);
+    });
+    menu->addSeparator();
     menu->addAction(tr("Machine &report…"), this, &MachineWindow::writeReport);
     menu->addSeparator();
     menu->addAction(tr("&Close machine"), this, &QWidget::close);
@@ -248,6 +272,18 @@ MachineProgress* MachineWindow::writeReportTo(const QString& path) {
                                  tr("Machine report"), message);
     });
     return progress;
+}
+
+MachineBackupRun* MachineWindow::backUpTo(const QString& dir, const QString& note) {
+    return MachineBackupRun::backUp(m_machine, dir, note, this);
+}
+
+MachineBackupRun* MachineWindow::verifyFrom(const QString& dir) {
+    return MachineBackupRun::verify(m_machine, dir, this);
+}
+
+MachineBackupRun* MachineWindow::restoreFrom(const QString& dir) {
+    return MachineBackupRun::restore(m_machine, dir, this);
 }
 
 void MachineWindow::addDevice() {

@@ -10,6 +10,7 @@ class QTreeWidgetItem;
 namespace cambench {
 
 class Machine;
+class MachineBackupRun;
 class MachineProgress;
 class MachineUnit;
 
@@ -37,6 +38,11 @@ public:
     // Machine → Machine report… to `path`: reads every device first (the
     // dialog shows a bar per device), then writes the PDF.
     MachineProgress* writeReportTo(const QString& path);
+    // Machine → Back up…, Verify…, Restore… with the folder chosen (and
+    // the backup's note: why). Each device's line says what became of it.
+    MachineBackupRun* backUpTo(const QString& dir, const QString& note);
+    MachineBackupRun* verifyFrom(const QString& dir);
+    MachineBackupRun* restoreFrom(const QString& dir);
 
     // The columns of the device list.
     // State and unwritten edits first: a long port or family name must not

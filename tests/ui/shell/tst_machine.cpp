@@ -43,33 +43,6 @@ using namespace cambench::test;
 
 namespace {
 
-// A CamCon and an MC200 V2, each on its own simulated device, unthrottled.
-MachineFile camsAndPlc() {
-    MachineFile file;
-    file.machine = QStringLiteral("Test press");
-    file.devices << machineDevice(QStringLiteral("cams"), QStringLiteral("camcon"),
-                                  {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
-                                   {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                 << machineDevice(QStringLiteral("press-plc"), QStringLiteral("mc1"),
-                                  {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
-                                   {QStringLiteral("protocol"), QStringLiteral("mc1")},
-                                   {QStringLiteral("variant"), QStringLiteral("mc200v2")}});
-    return file;
-}
-
-// Every device on the line and identified (its family's start reads done).
-bool waitIdentified(const Machine& machine) {
-    return QTest::qWaitFor(
-        [&machine] {
-            for (const MachineUnit* unit : machine.units())
-                if (!unit->session()->deviceChecked() ||
-                    unit->lamp() != MachineUnit::Lamp::Connected)
-                    return false;
-            return true;
-        },
-        kDeviceTimeoutMs);
-}
-
 // The CamCon and the MC200 open in a machine's window, both identified.
 struct CamsAndPlc {
     Shell shell;
@@ -419,11 +392,8 @@ private Q_SLOTS:
     // Issue 36 item 5: every device's section of its family, read from the
     // device before printing (a bar per device), one date format.
     void theReportHasTheMachineAndEachDevice() {
-        MachineFile file = camsAndPlc();
-        file.devices << machineDevice(QStringLiteral("feed"), QStringLiteral("compax3"),
-                                      {{QStringLiteral("port"), QStringLiteral("sim")}});
         Shell shell;
-        Machine* machine = shell.openMachine(file, {});
+        Machine* machine = shell.openMachine(threeFamilies(), {});
         QVERIFY(waitIdentified(*machine));
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
