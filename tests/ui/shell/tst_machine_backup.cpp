@@ -2,12 +2,14 @@
 // machine window. Real widgets, three devices of the three families, each
 // on its own in-process simulated device and its own worker (all at once):
 // a bar and a result line per device, the manifest of the command line's
-// folder, every plan listed before the one question of a restore, and a
-// device that was not done says so on its line. Then the machine report's
-// section of each family.
+// folder, a value changed behind CamBench's back named by verify on its
+// device's line and put back by the restore, every plan listed before the
+// one question of a restore, and a device that was not done says so on
+// its line. Then the machine report's section of each family.
 #include "machine_fixture.h"
 #include "shell_fixture.h"
 
+#include "comm/mc1/mc1_device.h"
 #include "model/file_read.h"
 #include "model/machine/machine_backup_folder.h"
 #include "ui/machine/machine.h"
@@ -100,6 +102,27 @@ private Q_SLOTS:
             QVERIFY2(verify->progress()->resultLine(name).startsWith(QLatin1String("equal: ")),
                      qPrintable(name + QLatin1String(": ") + verify->progress()->resultLine(name)));
 
+        // V12 of the MC200 changes behind CamBench's back: verify names it
+        // in the family's words on that device's line only.
+        Result<Done> changed = Error::communication(QStringLiteral("not run"));
+        machine->unit(QStringLiteral("press-plc"))
+            ->session()
+            ->run<comm::Mc1Device, Done>(
+                open->machine, QStringLiteral("change V12"),
+                [](comm::Mc1Device& device, comm::JobContext&) -> Result<Done> {
+                    return device.writeVariable(12, 77);
+                },
+                [&changed](Result<Done> done) { changed = done; });
+        QVERIFY(QTest::qWaitFor([&] { return changed.ok(); }, kDeviceTimeoutMs));
+        MachineBackupRun* differs = machine->window()->verifyFrom(dir);
+        QVERIFY(waitDone(differs));
+        const QString plcLine = differs->progress()->resultLine(QStringLiteral("press-plc"));
+        QCOMPARE(plcLine, QString::fromUtf8("1 difference(s):\npress-plc: V12 0 → 77"));
+        for (const char* name : {"cams", "feed"})
+            QVERIFY(differs->progress()
+                        ->resultLine(QLatin1String(name))
+                        .startsWith(QLatin1String("equal: ")));
+
         // Restore: every device's plan in the one question before a byte.
         QString asked;
         QString plans;
@@ -117,6 +140,12 @@ private Q_SLOTS:
             const QString line = restore->progress()->resultLine(name);
             QVERIFY2(line.startsWith(QLatin1String("restored: ")), qPrintable(name + ": " + line));
         }
+        QVERIFY2(plans.contains(QLatin1String("V12")), qPrintable(plans));
+        MachineBackupRun* equal = machine->window()->verifyFrom(dir);
+        QVERIFY(waitDone(equal));
+        QVERIFY(equal->progress()
+                    ->resultLine(QStringLiteral("press-plc"))
+                    .startsWith(QLatin1String("equal: ")));
         // The safety copies beside the backup folder, listed.
         QVERIFY(!restore->safetyFolder().isEmpty());
         QVERIFY(!restore->safetyFolder().startsWith(dir + QLatin1Char('/')));
