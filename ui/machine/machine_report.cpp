@@ -105,7 +105,10 @@ void MachineReport::read(Machine& machine, MachineProgress* progress, std::funct
     if (*left == 0 && done) done();
     for (MachineUnit* unit : machine.units()) {
         FamilyGui* family = deviceFamily(*unit);
-        if (!family || unit->lamp() != MachineUnit::Lamp::Connected) {
+        // A device that moves is read too: the report's reads are queries.
+        const MachineUnit::Lamp lamp = unit->lamp();
+        if (!family ||
+            (lamp != MachineUnit::Lamp::Connected && lamp != MachineUnit::Lamp::Moving)) {
             progress->finish(
                 unit, false,
                 tr("not read: %1; its section says what this PC holds.").arg(unit->stateText()));

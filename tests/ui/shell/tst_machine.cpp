@@ -257,6 +257,13 @@ private Q_SLOTS:
         QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Moving);
         QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
                  QStringLiteral("connected"));
+        // The report reads a device that moves all the same (queries only).
+        QTemporaryDir dir;
+        MachineProgress* report =
+            machine->window()->writeReportTo(dir.filePath(QStringLiteral("moving.pdf")));
+        QSignalSpy read(report, &MachineProgress::finished);
+        QVERIFY(read.wait(kDeviceTimeoutMs));
+        QCOMPARE(report->resultLine(QStringLiteral("press-plc")), QStringLiteral("read"));
 
         // Another page shown: the status is no longer read, only "may move".
         open->plc->window()->showSection(MainWindow::Connection);
