@@ -25,6 +25,7 @@
 #include <QProgressBar>
 #include <QTemporaryDir>
 #include <QTextDocument>
+#include <QTimer>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -169,8 +170,9 @@ private Q_SLOTS:
     }
 
     // A device the backup does not hold is not verified and not restored,
-    // and its line says so; the others go on. Nothing says "done" for it.
-    void aDeviceMissingFromTheBackupSaysSo() {
+    // one the person does not accept as the backup's is not restored, and
+    // each line says so; the others go on. Nothing says "done" for them.
+    void eachDeviceNotDoneSaysSo() {
         const std::unique_ptr<Opened> open = openThreeFamilies();
         QVERIFY(waitIdentified(*open->machine));
         Machine* machine = open->machine;
@@ -179,6 +181,10 @@ private Q_SLOTS:
         MachineManifest manifest = manifestIn(dir);
         manifest.devices.removeIf(
             [](const ManifestEntry& entry) { return entry.name == QLatin1String("feed"); });
+        // The MC200's backup was taken from another controller.
+        for (ManifestEntry& entry : manifest.devices)
+            if (entry.name == QLatin1String("press-plc"))
+                entry.identity.set(entry.identity.values().firstKey(), QStringLiteral("other"));
         QFile file(QDir(dir).filePath(kMachineManifestFile));
         QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
         file.write(manifestJson(manifest));
@@ -192,15 +198,30 @@ private Q_SLOTS:
                     ->resultLine(QStringLiteral("cams"))
                     .startsWith(QLatin1String("equal: ")));
 
-        // Cancelled at the question: nothing written, each line says so.
-        NextDialog<QMessageBox> cancel([](QMessageBox* box) { box->reject(); });
+        // Each question declined: the MC200 is not the backup's (its
+        // identity's question), then the CamCon's restore is cancelled.
+        QStringList asked;
+        QTimer answering;
+        answering.setInterval(10);
+        connect(&answering, &QTimer::timeout, this, [&asked] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box || box->property("answered").toBool()) return;
+            box->setProperty("answered", true);
+            asked << box->objectName();
+            box->reject();
+        });
+        answering.start();
         MachineBackupRun* restore = machine->window()->restoreFrom(dir);
         QVERIFY(waitDone(restore));
+        QCOMPARE(asked, (QStringList{QStringLiteral("replacementQuestion"),
+                                     QStringLiteral("machineRestoreQuestion")}));
         QCOMPARE(restore->progress()->resultLine(QStringLiteral("feed")),
                  QStringLiteral("not restored: not in this backup"));
-        for (const char* name : {"cams", "press-plc"})
-            QCOMPARE(restore->progress()->resultLine(QLatin1String(name)),
-                     QStringLiteral("not restored: cancelled, nothing was written"));
+        const QString plc = restore->progress()->resultLine(QStringLiteral("press-plc"));
+        QVERIFY2(plc.startsWith(QLatin1String("not restored: another device answers")),
+                 qPrintable(plc));
+        QCOMPARE(restore->progress()->resultLine(QStringLiteral("cams")),
+                 QStringLiteral("not restored: cancelled, nothing was written"));
         QVERIFY(restore->safetyFolder().isEmpty());
     }
 };
