@@ -163,15 +163,13 @@ ConnectionPage::ConnectionPage(DeviceSession* session, QWidget* parent)
         if (device != m_session->protocol().device() &&
             !m_session->mayLeaveDevice(tr("Switch to device %1").arg(device)))
             return;
-        if (const comm::ProtocolInfo* info = currentProtocol(); info && m_protocolWidget) {
-            std::unique_ptr<comm::ProtocolSettings> settings = info->makeSettings();
-            m_protocolWidget->store(*settings);
-            settings->setDevice(device);
-            m_protocolWidget->load(*settings);
-        }
-        m_session->setDevice(device);
-        Q_EMIT deviceSelected(device);
+        chooseDevice(device);
     });
+    connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
+        if (state == comm::ConnectionState::Connecting) m_busSearched = false;
+    });
+    connect(m_session, &DeviceSession::identifyProblemChanged, this,
+            &ConnectionPage::findBusDevice);
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::updateButtons);
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showIdentityPanel);
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionPage::showConnectFailure);
@@ -455,7 +453,13 @@ void ConnectionPage::scanBus() {
             });
         return;
     }
-    const int last = info->lastDevice;
+    runBusScan([this](const Result<QList<int>>& devices) { showScanResult(devices); });
+}
+
+void ConnectionPage::runBusScan(std::function<void(const Result<QList<int>>&)> done) {
+    const comm::ProtocolInfo* info =
+        comm::ProtocolRegistry::instance().find(m_session->protocol().protocolId());
+    const int last = info ? info->lastDevice : 0;
     m_session->worker().run<Result<QList<int>>>(
         this, comm::JobPriority::User, tr("Scan bus"),
         [last](comm::JobContext& job) -> Result<QList<int>> {
@@ -463,7 +467,42 @@ void ConnectionPage::scanBus() {
             return job.device()->scanBus(
                 0, last, [&job](qint64 done, qint64 total) { job.progress(done, total); });
         },
-        [this](Result<QList<int>> devices) { showScanResult(devices); });
+        [done = std::move(done)](Result<QList<int>> devices) { done(devices); });
+}
+
+void ConnectionPage::chooseDevice(int device) {
+    if (const comm::ProtocolInfo* info = currentProtocol(); info && m_protocolWidget) {
+        std::unique_ptr<comm::ProtocolSettings> settings = info->makeSettings();
+        m_protocolWidget->store(*settings);
+        settings->setDevice(device);
+        m_protocolWidget->load(*settings);
+    }
+    m_session->setDevice(device);
+    Q_EMIT deviceSelected(device);
+}
+
+void ConnectionPage::findBusDevice() {
+    if (!m_findsBusDevice || m_busSearched || m_session->identifyProblem().isEmpty()) return;
+    const comm::ProtocolInfo* info =
+        comm::ProtocolRegistry::instance().find(m_session->protocol().protocolId());
+    if (!info || !info->isBus) return;
+    m_busSearched = true;  // once a connect: a device that stops answering stays said
+    const int asked = m_session->protocol().device();
+    runBusScan([this, asked](const Result<QList<int>>& devices) {
+        showScanResult(devices);
+        if (!devices || devices->isEmpty() || devices->contains(asked) ||
+            m_session->protocol().device() != asked || !m_session->isOnline())
+            return;
+        const int found = devices->first();
+        QStringList numbers;
+        for (int device : *devices) numbers << QString::number(device);
+        Q_EMIT statusMessage(tr("Device %1 does not answer on the bus; device %2 does (the bus "
+                                "has %3): CamBench talks to device %2 now.")
+                                 .arg(asked)
+                                 .arg(found)
+                                 .arg(numbers.join(QStringLiteral(", "))));
+        chooseDevice(found);
+    });
 }
 
 void ConnectionPage::showScanResult(const Result<QList<int>>& devices) {

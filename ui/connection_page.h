@@ -8,6 +8,8 @@
 
 #include <QMap>
 
+#include <functional>
+
 class QComboBox;
 class QFormLayout;
 class QGroupBox;
@@ -54,6 +56,12 @@ public:
     void addIdentityPanel(const QString& familyId, QWidget* panel);
 
     void scanBus();
+    // On a bus, when the device number asked for does not identify itself
+    // after a connect, the bus is scanned and the first device that answers
+    // is chosen (said in the status bar): a connection starts on a device
+    // that answers. Off in a machine, whose file names each device's
+    // number: there another number is never chosen for it.
+    void setFindsBusDevice(bool finds) { m_findsBusDevice = finds; }
     // Tries each family's protocols on the chosen port (closing the
     // connection first) and fills in what answered.
     void detect();
@@ -71,6 +79,12 @@ private:
     void showConnectFailure();
     void showSimulatedNote();
     void showScanResult(const Result<QList<int>>& devices);
+    // Asks the bus which devices answer (scanBus's job).
+    void runBusScan(std::function<void(const Result<QList<int>>&)> done);
+    // `device` of the bus from now on: the form, the session, its identity read.
+    void chooseDevice(int device);
+    // The device asked for did not identify itself: one that answers.
+    void findBusDevice();
     // Puts the settings widget of the protocol chosen in place.
     void showProtocolWidget();
     void fillFamilies();
@@ -96,8 +110,10 @@ private:
     QVBoxLayout* m_identityPanels;
     QMap<QString, QWidget*> m_panels;  // per family
     QGroupBox* m_identity;
-    QLabel* m_failure;               // the last connect that failed: where, what, what to do
-    QLabel* m_simNote;               // on the simulated device: says so, and the way to a real one
+    QLabel* m_failure;  // the last connect that failed: where, what, what to do
+    QLabel* m_simNote;  // on the simulated device: says so, and the way to a real one
+    bool m_findsBusDevice = true;
+    bool m_busSearched = false;      // since the last connect
     QLabel* m_deviceHint = nullptr;  // "Reconnect to reach device 5"
     QGroupBox* m_bus = nullptr;      // the bus scan, only for a protocol with a bus
 };

@@ -46,6 +46,7 @@ ConnectionStrip::ConnectionStrip(DeviceSession* session, QWidget* parent)
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionStrip::update);
     connect(m_session->freshness(), &LiveFreshness::changed, this, &ConnectionStrip::update);
     connect(m_session, &DeviceSession::deviceCheckedChanged, this, &ConnectionStrip::update);
+    connect(m_session, &DeviceSession::identifyProblemChanged, this, &ConnectionStrip::update);
     update();
 }
 
@@ -93,10 +94,19 @@ void ConnectionStrip::update() {
                QLatin1Char('\n') +
                tr("Live values are from then. Check the cable and the device's power; your edits "
                   "are kept.");
+    } else if (state == comm::ConnectionState::Connected &&
+               !m_session->identifyProblem().isEmpty()) {
+        // The port opened, but no device of the protocol's family answers
+        // as one: another device, or none.
+        failed = true;
+        text = tr("%1: %2").arg(m_session->stateText(), asSentence(m_session->identifyProblem())) +
+               QLatin1Char('\n') +
+               tr("Check that the port and the protocol are this device's; nothing is written "
+                  "to it. Your edits are kept.");
     } else if (state == comm::ConnectionState::Connected && !m_session->deviceChecked()) {
         // Until the device on the line has identified itself, no identity
         // from an earlier connect is shown as if it were this one's.
-        text = tr("%1; checking which device answers…").arg(m_session->stateText());
+        text = m_session->stateText();
     } else if (state == comm::ConnectionState::Connected) {
         const QString identity = m_identity ? m_identity() : QString();
         text = identity.isEmpty() ? tr("%1; identity not read yet.").arg(m_session->stateText())
@@ -135,6 +145,9 @@ ConnectionIndicator::ConnectionIndicator(DeviceSession* session, QWidget* parent
     setObjectName(QStringLiteral("connectionIndicator"));
     connect(m_session, &DeviceSession::stateChanged, this, &ConnectionIndicator::update);
     connect(m_session->freshness(), &LiveFreshness::changed, this, &ConnectionIndicator::update);
+    // Green only once the device on the line has identified itself.
+    connect(m_session, &DeviceSession::deviceCheckedChanged, this, &ConnectionIndicator::update);
+    connect(m_session, &DeviceSession::identifyProblemChanged, this, &ConnectionIndicator::update);
     update();
 }
 
@@ -143,7 +156,9 @@ void ConnectionIndicator::update() {
     QColor color = kIdle;
     m_stateText = m_session->stateText();
     if (state == comm::ConnectionState::Connected) {
-        color = kGood;
+        color = !m_session->identifyProblem().isEmpty() ? kAlarm
+                : m_session->deviceChecked()            ? kGood
+                                                        : kBusy;
         if (silent(m_session)) {
             color = kAlarm;
             m_stateText =

@@ -81,16 +81,25 @@ void DeviceSession::setDevice(int device) {
     m_protocol = std::move(changed);
     m_worker->setLinkDevice(device);
     if (!another) return;  // the same device addressed again (after a line backup)
+    // Another device: what the last one answered (or did not) says nothing of it.
+    m_freshness.reset();
     setDeviceChecked(false);
     Q_EMIT targetChanged();
 }
 
 void DeviceSession::setDeviceChecked(bool checked) {
     const bool other = std::exchange(m_anotherDevice, false);
+    if (checked) setIdentifyFailed({});
     if (m_deviceChecked == checked) return;
     m_deviceChecked = checked;
     Q_EMIT deviceCheckedChanged(checked);
     if (checked && std::exchange(m_reestablishing, false)) Q_EMIT reestablished(!other);
+}
+
+void DeviceSession::setIdentifyFailed(const QString& why) {
+    if (m_identifyProblem == why) return;
+    m_identifyProblem = why;
+    Q_EMIT identifyProblemChanged();
 }
 
 QString DeviceSession::stateText() const {
@@ -100,11 +109,20 @@ QString DeviceSession::stateText() const {
                                       : tr("Offline");
         case comm::ConnectionState::Connecting:
             return tr("Connecting to %1…").arg(m_connection.port);
-        case comm::ConnectionState::Connected:
-            return (m_connection.port == QLatin1String("sim") ||
-                    m_connection.port.startsWith(QLatin1String("sim:")))
-                       ? tr("Connected to the simulated device")
-                       : tr("Connected to %1").arg(m_connection.port);
+        case comm::ConnectionState::Connected: {
+            // "Connected" only for a device that identified itself.
+            const bool simulated = m_connection.port == QLatin1String("sim") ||
+                                   m_connection.port.startsWith(QLatin1String("sim:"));
+            if (!m_identifyProblem.isEmpty())
+                return simulated ? tr("No device identifies itself on the simulated line")
+                                 : tr("No device identifies itself on %1").arg(m_connection.port);
+            if (!m_deviceChecked)
+                return simulated
+                           ? tr("Checking which device answers on the simulated line…")
+                           : tr("Checking which device answers on %1…").arg(m_connection.port);
+            return simulated ? tr("Connected to the simulated device")
+                             : tr("Connected to %1").arg(m_connection.port);
+        }
         case comm::ConnectionState::Lost:
             return tr("Connection to %1 lost, retrying").arg(m_connection.port);
     }
@@ -117,6 +135,7 @@ void DeviceSession::onStateChanged(comm::ConnectionState state, const QString& m
     qCInfo(shellLog) << "connection state" << int(state) << message;
     // Every connect may reach another device: it is identified again.
     setDeviceChecked(false);
+    setIdentifyFailed({});
     switch (state) {
         case comm::ConnectionState::Lost:
             m_wasLost = true;

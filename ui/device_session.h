@@ -73,6 +73,11 @@ public:
     // Said by the family's check before setDeviceChecked(true): the device
     // that answers is not the one answering before.
     void noteAnotherDevice() { m_anotherDevice = true; }
+    // The family's check found no device of its own on the line (`why`):
+    // said red until the next connect or a device identifies itself. Empty
+    // while nothing failed.
+    void setIdentifyFailed(const QString& why);
+    QString identifyProblem() const { return m_identifyProblem; }
 
     // How old the live values are; fed by the monitor's poll cycles, made
     // stale by a lost line, reset by a connect to another device.
@@ -118,6 +123,8 @@ Q_SIGNALS:
     // Another device number on the same line (Multiuser): another device.
     void targetChanged();
     void deviceCheckedChanged(bool checked);
+    // identifyProblem() changed.
+    void identifyProblemChanged();
 
 private:
     void onStateChanged(comm::ConnectionState state, const QString& message);
@@ -148,6 +155,7 @@ private:
     bool m_anotherDevice = false;
     bool m_wantConnected = false;
     bool m_deviceChecked = false;
+    QString m_identifyProblem;
 };
 
 }  // namespace cambench

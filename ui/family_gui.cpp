@@ -12,6 +12,11 @@ namespace cambench {
 FamilyGui::FamilyGui(QString familyId, DeviceSession* session, QObject* parent)
     : QObject(parent), m_familyId(std::move(familyId)), m_session(session) {}
 
+void FamilyGui::readForReport(QWidget* parent, std::function<void(const Status&)> done) {
+    Q_UNUSED(parent);
+    done(success());
+}
+
 void FamilyGui::setIdentity(const QString& identity) {
     if (identity == m_identity) return;
     m_identity = identity;
@@ -34,6 +39,8 @@ void FamilyWindow::deviceOnLine(bool load) {
             if (identity) {
                 m_gui->setIdentity(*identity);
                 m_gui->session()->setDeviceChecked(true);
+            } else if (identity.error().kind != ErrorKind::Cancelled) {
+                m_gui->session()->setIdentifyFailed(identity.error().message);
             }
             m_window->showMessage(identity
                                       ? MainWindow::tr("Connected: %1").arg(*identity)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "comm/device/id_registry.h"
+#include "model/result.h"
 
 #include <QList>
 #include <QObject>
@@ -42,6 +43,13 @@ public:
     virtual QString windowSubject() const { return {}; }
     // Edits on this PC that are not on the device.
     virtual int unwrittenCount() const { return 0; }
+    // Reads from the device on the line what reportSection() shows - all
+    // of it, not only what its pages happened to read - on the session's
+    // worker, then calls `done` on `parent`'s thread (an error: what could
+    // not be read; the section then says "not read" where it lacks a
+    // value). `parent` carries a question the read may ask (edits on this
+    // PC that a read would replace). The default reads nothing.
+    virtual void readForReport(QWidget* parent, std::function<void(const Status&)> done);
     // The family's section of a machine's report (HTML; pictures added to
     // `document` under names that begin with `resourcePrefix`): what the
     // PC holds of the device and when it was read. Empty: the family has

@@ -53,6 +53,8 @@ void LiveFamilyWindow::identified(bool load, const Result<QString>& identity,
     if (identity) {
         gui()->setIdentity(*identity);
         gui()->session()->setDeviceChecked(true);
+    } else if (identity.error().kind != ErrorKind::Cancelled) {
+        gui()->session()->setIdentifyFailed(identity.error().message);
     }
     window()->showMessage(identity ? tr("Connected: %1").arg(*identity)
                                    : nobody.arg(asSentence(identity.error().message)));

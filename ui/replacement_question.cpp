@@ -65,16 +65,19 @@ bool acceptsReplacement(QWidget* parent, const QString& title, const QString& ba
 
 void askRestoreTarget(DeviceSession* session, QObject* context, QWidget* parent,
                       const QString& title, const QString& backupName, const DeviceIdentity& backup,
-                      std::function<void(const ReplacementConsent&)> go) {
+                      std::function<void(const ReplacementConsent&)> go,
+                      std::function<void(const QString& why)> declined) {
     session->run<comm::DeviceConnection, DeviceIdentity>(
         context, tr("Check which device answers"),
         [](comm::DeviceConnection& device, comm::JobContext&) { return device.readIdentity(); },
-        [parent, title, backupName, backup, go = std::move(go)](Result<DeviceIdentity> found) {
+        [parent, title, backupName, backup, go = std::move(go),
+         declined = std::move(declined)](Result<DeviceIdentity> found) {
             if (!found) {
-                ReportDialog::present(parent, QMessageBox::Warning, title,
-                                      tr("Nothing was written: which device answers could not "
-                                         "be read: %1")
-                                          .arg(asSentence(found.error().message)));
+                const QString why = tr("Nothing was written: which device answers could not "
+                                       "be read: %1")
+                                        .arg(asSentence(found.error().message));
+                ReportDialog::present(parent, QMessageBox::Warning, title, why);
+                if (declined) declined(why);
                 return;
             }
             if (backup.known() && backup == *found) {
@@ -83,6 +86,8 @@ void askRestoreTarget(DeviceSession* session, QObject* context, QWidget* parent,
             }
             if (acceptsReplacement(parent, title, backupName, backup, *found))
                 go(ReplacementConsent::of(*found));
+            else if (declined)
+                declined(anotherDeviceText(backup, *found));
         });
 }
 

@@ -26,10 +26,12 @@ bool acceptsReplacement(QWidget* parent, const QString& title, const QString& ba
 // and calls `go` with the person's consent: none when it is the backup's
 // own device, the identity found when they accept it as the replacement.
 // `go` is not called when they decline, or when the identity cannot be read
-// (said on `parent`). The restore's use case checks again before its first
-// byte, so a device swapped after the question is refused.
+// (said on `parent`): `declined` is, with why (a machine's restore goes on
+// with its other devices). The restore's use case checks again before its
+// first byte, so a device swapped after the question is refused.
 void askRestoreTarget(DeviceSession* session, QObject* context, QWidget* parent,
                       const QString& title, const QString& backupName, const DeviceIdentity& backup,
-                      std::function<void(const ReplacementConsent&)> go);
+                      std::function<void(const ReplacementConsent&)> go,
+                      std::function<void(const QString& why)> declined = {});
 
 }  // namespace cambench

@@ -2,6 +2,7 @@
 
 #include <QAbstractTextDocumentLayout>
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QPageSize>
 #include <QPagedPaintDevice>
 #include <QPainter>
@@ -19,6 +20,31 @@ namespace {
 // A heading that starts below this part of its page moves to the next page.
 constexpr double kHeadingFoot = 0.8;
 }  // namespace
+
+QString reportTime(const QDateTime& time) {
+    return time.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
+}
+
+QString reportParagraph(const QString& text) {
+    return QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped());
+}
+
+QString reportHeading(const QString& text) {
+    return QStringLiteral("<h2>%1</h2>").arg(text.toHtmlEscaped());
+}
+
+QString reportTable(const QStringList& head, const QList<QStringList>& rows) {
+    const auto row = [](const QStringList& cells, QLatin1String tag) {
+        QString html = QStringLiteral("<tr>");
+        for (const QString& cell : cells)
+            html += QStringLiteral("<%1>%2</%1>").arg(tag, cell.toHtmlEscaped());
+        return html + QStringLiteral("</tr>");
+    };
+    QString html = QStringLiteral("<table border='1' cellspacing='0' cellpadding='3'>");
+    if (!head.isEmpty()) html += row(head, QLatin1String("th"));
+    for (const QStringList& cells : rows) html += row(cells, QLatin1String("td"));
+    return html + QStringLiteral("</table>");
+}
 
 int keepHeadingsWithText(QTextDocument& document) {
     const qreal pageHeight = document.pageSize().height();

@@ -2,12 +2,26 @@
 
 #include "model/result.h"
 
+#include <QList>
 #include <QString>
+#include <QStringList>
 
+class QDateTime;
 class QPagedPaintDevice;
 class QTextDocument;
 
 namespace cambench {
+
+// A time as every printed report writes it, in every language the same:
+// "2025-11-29 14:03" (local time) - one format on a page.
+QString reportTime(const QDateTime& time);
+
+// HTML pieces of a report's section, the texts escaped: a paragraph, a
+// heading below the section's own, a bordered table (its head row first,
+// none when `head` is empty).
+QString reportParagraph(const QString& text);
+QString reportHeading(const QString& text);
+QString reportTable(const QStringList& head, const QList<QStringList>& rows);
 
 // Pages of a printed report. A heading in the last part of a page starts
 // the next one instead, so that it never stands alone at a page's foot;

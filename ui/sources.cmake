@@ -80,6 +80,10 @@ target_sources(cambench_ui PRIVATE
   machine/machine.cpp
   machine/machine_window.h
   machine/machine_window.cpp
+  machine/machine_backup_run.h
+  machine/machine_backup_run.cpp
+  machine/machine_progress.h
+  machine/machine_progress.cpp
   machine/machine_report.h
   machine/machine_report.cpp
   machine/demo_machine.h

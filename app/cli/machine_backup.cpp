@@ -28,10 +28,7 @@
 #include "model/file_read.h"
 
 #include <QDir>
-#include <QFile>
-#include <QFileInfo>
 
-#include <algorithm>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -310,12 +307,6 @@ int verifyExit(const QList<int>& codes) {
     return worst != ExitOk ? worst : codes.contains(ExitDevice) ? ExitDevice : ExitOk;
 }
 
-// A safety copy gets the mode of the file it is a copy of.
-void sameModeAs(const QString& copy, const QString& original) {
-    if (QFileInfo::exists(copy) && QFileInfo::exists(original))
-        QFile::setPermissions(copy, QFile::permissions(original));
-}
-
 }  // namespace
 
 int runMachineVerify(const QString& dir, const QStringList& replacements) {
@@ -402,15 +393,8 @@ int runMachineRestore(const QString& dir, const MachineRun& run) {
             const QString copy = restored->result.safetyCopy;
             if (!copy.isEmpty()) {
                 sameModeAs(copy, QDir(dir).filePath(entry.file));
-                ManifestEntry copied = entry;
-                copied.file = QFileInfo(copy).fileName();
-                copied.incomplete.clear();
-                copied.identity = restored->checked.found.identity;
-                copied.device = restored->checked.found.text;
-                copied.summary = QStringLiteral("what the device held before the restore");
-                copied.sha256 = fileSha256(copy);
-                copied.time = QDateTime::currentDateTimeUtc();
-                copied.result = QStringLiteral("saved");
+                const ManifestEntry copied = safetyCopyEntry(
+                    entry, copy, restored->checked.found.identity, restored->checked.found.text);
                 const QList<MachineDevice>& devices = folder->setup.machine.devices;
                 for (size_t i = 0; i < copies.size(); ++i)
                     if (devices.at(qsizetype(i)).name == entry.name) copies[i] = copied;
@@ -428,37 +412,19 @@ int runMachineRestore(const QString& dir, const MachineRun& run) {
         });
     // The safety folder is a backup folder of its own: `machine restore`
     // takes it back.
-    MachineManifest safety;
-    safety.machine = folder->setup.machine.machine;
-    safety.author = run.author;
-    safety.started = QDateTime::currentDateTimeUtc();
-    safety.safetyCopyOf = QFileInfo(dir).absoluteFilePath();
+    QList<ManifestEntry> listed;
     for (const std::optional<ManifestEntry>& copy : copies)
-        if (copy) safety.devices << *copy;
-    if (safety.devices.isEmpty()) {
-        QDir().rmdir(safetyDir);  // made, but no family took a copy
-        return code;
-    }
-    const QString machine = QDir(safetyDir).filePath(kMachineBackupFile);
-    const QString manifestPath = QDir(safetyDir).filePath(kMachineManifestFile);
-    // Its machine file names the devices it holds a copy of.
-    MachineFile copied = folder->setup.machine;
-    copied.devices.erase(std::remove_if(copied.devices.begin(), copied.devices.end(),
-                                        [&safety](const MachineDevice& device) {
-                                            return !safety.entry(device.name);
-                                        }),
-                         copied.devices.end());
-    const Status written = writeFileAtomically(machine, machineFileJson(copied));
-    const Status listed =
-        written ? writeFileAtomically(manifestPath, manifestJson(safety)) : written;
-    if (!listed) {
+        if (copy) listed << *copy;
+    if (const Status written =
+            listSafetyCopies(dir, safetyDir, folder->setup.machine, run.author, listed);
+        !written) {
         printError(QStringLiteral("the safety copies in %1 are not listed: %2")
-                       .arg(safetyDir, listed.error().message));
+                       .arg(safetyDir, written.error().message));
         return code;
     }
-    sameModeAs(machine, QDir(dir).filePath(kMachineBackupFile));
-    sameModeAs(manifestPath, QDir(dir).filePath(kMachineManifestFile));
-    printOut(QStringLiteral("safety copies listed in %1\n").arg(manifestPath));
+    if (!listed.isEmpty())
+        printOut(QStringLiteral("safety copies listed in %1\n")
+                     .arg(QDir(safetyDir).filePath(kMachineManifestFile)));
     return code;
 }
 

@@ -1,6 +1,6 @@
 # The use-case frame every family shares: progress and cancel, the outcome
 # of one written item and the tally of a write, and Detect (which family
-# answers on a port).
+# answers on a port), who answers on a device's line.
 target_sources(cambench_usecases PRIVATE
   use_case_progress.h
   use_case_progress.cpp
@@ -14,4 +14,6 @@ target_sources(cambench_usecases PRIVATE
   family_backup.cpp
   machine_backup.h
   machine_backup.cpp
+  line_answer.h
+  line_answer.cpp
 )

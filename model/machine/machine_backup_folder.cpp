@@ -1,11 +1,13 @@
 #include "machine_backup_folder.h"
 
+#include "model/atomic_file.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/readable_json.h"
 
 #include <QCryptographicHash>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -142,6 +144,52 @@ QString safetyFolderPath(const QString& dir, const QDateTime& utc) {
     QString path = base;
     for (int n = 2; QFileInfo::exists(path); ++n) path = base + QStringLiteral("-%1").arg(n);
     return path;
+}
+
+ManifestEntry safetyCopyEntry(const ManifestEntry& entry, const QString& copy,
+                              const DeviceIdentity& identity, const QString& device) {
+    ManifestEntry copied = entry;
+    copied.file = QFileInfo(copy).fileName();
+    copied.incomplete.clear();
+    copied.identity = identity;
+    copied.device = device;
+    copied.summary = QStringLiteral("what the device held before the restore");
+    copied.sha256 = fileSha256(copy);
+    copied.time = QDateTime::currentDateTimeUtc();
+    copied.result = QStringLiteral("saved");
+    return copied;
+}
+
+void sameModeAs(const QString& copy, const QString& original) {
+    if (QFileInfo::exists(copy) && QFileInfo::exists(original))
+        QFile::setPermissions(copy, QFile::permissions(original));
+}
+
+Status listSafetyCopies(const QString& backupDir, const QString& safetyDir,
+                        const MachineFile& machine, const BackupAuthor& author,
+                        const QList<ManifestEntry>& copies) {
+    if (copies.isEmpty()) {
+        QDir().rmdir(safetyDir);  // made, but no family took a copy
+        return success();
+    }
+    MachineManifest safety;
+    safety.machine = machine.machine;
+    safety.author = author;
+    safety.started = QDateTime::currentDateTimeUtc();
+    safety.safetyCopyOf = QFileInfo(backupDir).absoluteFilePath();
+    safety.devices = copies;
+    MachineFile copied = machine;
+    copied.devices.removeIf(
+        [&safety](const MachineDevice& device) { return !safety.entry(device.name); });
+    const QString machinePath = QDir(safetyDir).filePath(kMachineBackupFile);
+    const QString manifestPath = QDir(safetyDir).filePath(kMachineManifestFile);
+    if (const Status written = writeFileAtomically(machinePath, machineFileJson(copied)); !written)
+        return written;
+    if (const Status listed = writeFileAtomically(manifestPath, manifestJson(safety)); !listed)
+        return listed;
+    sameModeAs(machinePath, QDir(backupDir).filePath(kMachineBackupFile));
+    sameModeAs(manifestPath, QDir(backupDir).filePath(kMachineManifestFile));
+    return success();
 }
 
 }  // namespace cambench

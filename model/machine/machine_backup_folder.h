@@ -89,4 +89,23 @@ bool stillSaved(const ManifestEntry& entry, const QString& dir);
 // that exists). Not made here.
 QString safetyFolderPath(const QString& dir, const QDateTime& utc);
 
+// The safety copy's entry of `entry`'s device: its file `copy` (in the
+// safety folder), what the device held before the restore, and the
+// identity and self-description (`device`) it answered with.
+ManifestEntry safetyCopyEntry(const ManifestEntry& entry, const QString& copy,
+                              const DeviceIdentity& identity, const QString& device);
+
+// A safety copy gets the mode of the file it is a copy of.
+void sameModeAs(const QString& copy, const QString& original);
+
+// Makes the safety folder `safetyDir` of a restore from `backupDir` a
+// backup folder of its own (a restore takes it back): its machine file
+// names the devices of `copies` only, its manifest says of which folder it
+// is the safety copy; both with the mode of the backup's. A folder without
+// copies (no family took one) is removed, and that is no error. The
+// machine commands and the machine window list them alike.
+Status listSafetyCopies(const QString& backupDir, const QString& safetyDir,
+                        const MachineFile& machine, const BackupAuthor& author,
+                        const QList<ManifestEntry>& copies);
+
 }  // namespace cambench

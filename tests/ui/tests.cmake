@@ -13,6 +13,10 @@ cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp 
 # Issue 28 item 4: a family switch or another device leaves nothing of the one before.
 cambench_add_test(ui_shell_family_switch_test SOURCES ui/register_widgets.cpp ui/shell/tst_family_switch.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 30: the machine window (several devices at once, STOP for all, the machine file).
-cambench_add_test(ui_shell_machine_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine.cpp ui/shell/shell_fixture.h ui/shell/stop_reach_checks.h LIBS cambench_ui cambench_gui_registry)
+cambench_add_test(ui_shell_machine_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine.cpp ui/shell/shell_fixture.h ui/shell/machine_fixture.h ui/shell/stop_reach_checks.h LIBS cambench_ui cambench_gui_registry)
+# Issue 36 item 4: Machine -> Back up, Verify, Restore in the machine window.
+cambench_add_test(ui_shell_machine_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine_backup.cpp ui/shell/shell_fixture.h ui/shell/machine_fixture.h LIBS cambench_ui cambench_gui_registry)
+# Issue 36 items 6 and 7: the right devices on ptys, every family's edits, one menu bar, columns.
+cambench_add_test(ui_shell_machine_devices_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine_devices.cpp ui/shell/shell_fixture.h ui/shell/machine_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
 # Each family's GUI tests, listed in its folder.
 cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

@@ -2,6 +2,7 @@
 
 #include "camcon_window.h"
 #include "commissioning_report.h"
+#include "device_reads.h"
 #include "workspace.h"
 
 #include "ui/main_window.h"
@@ -44,6 +45,15 @@ QString CamConGui::windowSubject() const {
 
 int CamConGui::unwrittenCount() const {
     return m_workspace->changedCount();
+}
+
+void CamConGui::readForReport(QWidget* parent, std::function<void(const Status&)> done) {
+    // Edits on this PC that a read would replace are asked about first.
+    devicereads::readEverything(
+        parent, session(), m_workspace, [done](const Status& status, const QStringList& skipped) {
+            Q_UNUSED(skipped);  // the report says "not read" where a part is missing
+            done(status);
+        });
 }
 
 QString CamConGui::reportSection(QTextDocument& document, const QString& resourcePrefix) const {

@@ -21,6 +21,8 @@ public:
     QString identityLine() const override;
     QString windowSubject() const override;
     int unwrittenCount() const override;
+    // Everything the device holds, every program too (Read everything).
+    void readForReport(QWidget* parent, std::function<void(const Status&)> done) override;
     QString reportSection(QTextDocument& document, const QString& resourcePrefix) const override;
 
 private:

@@ -167,6 +167,7 @@ void CamConWindow::checkDevice() {
             m_pendingProgram = -1;
             if (!status) {
                 if (status.error().kind != ErrorKind::Cancelled) {
+                    session->setIdentifyFailed(status.error().message);
                     showMessage(tr("The device did not identify itself: %1 Your edits are kept.")
                                     .arg(asSentence(status.error().message)));
                     if (pending >= 0) window()->reportLoaded(false);

@@ -93,8 +93,7 @@ public:
 private:
     QString readTime(ProjectPart part) const {
         const QDateTime time = m_workspace.readTimes().parts.value(part);
-        return time.isValid() ? QLocale().toString(time.toLocalTime(), QLocale::ShortFormat)
-                              : QString();
+        return time.isValid() ? reportTime(time) : QString();
     }
 
     // Whether the part was read from the device this report is of (a read
@@ -114,13 +113,11 @@ private:
     }
 
     QString title() const {
-        const QLocale locale;
         QString html =
             QStringLiteral("<h1>%1</h1>").arg(CommissioningReport::tr("Commissioning report"));
-        html +=
-            paragraph(CommissioningReport::tr("Created %1 with CamBench %2")
-                          .arg(locale.toString(QDateTime::currentDateTime(), QLocale::LongFormat),
-                               QStringLiteral(CAMBENCH_VERSION)));
+        html += paragraph(
+            CommissioningReport::tr("Created %1 with CamBench %2")
+                .arg(reportTime(QDateTime::currentDateTime()), QStringLiteral(CAMBENCH_VERSION)));
         const int changes = m_workspace.changedCount();
         html += paragraph(
             changes > 0
@@ -323,9 +320,8 @@ private:
             html += paragraph(CommissioningReport::tr(
                 "Not read from the device: these cams exist on this PC only."));
         } else if (read.isValid()) {
-            html +=
-                paragraph(CommissioningReport::tr("Read from the device at %1.")
-                              .arg(QLocale().toString(read.toLocalTime(), QLocale::ShortFormat)));
+            html += paragraph(
+                CommissioningReport::tr("Read from the device at %1.").arg(reportTime(read)));
         }
         if (program.tracks.isEmpty()) return html + paragraph(CommissioningReport::tr("No cams."));
         const int outputs = m_workspace.info().outputs;

@@ -220,18 +220,21 @@ Status Compax3ObjectModel::setEdit(const Compax3ObjectId& id, const QString& typ
     if (!wire) return wire.error();
     m_edits.insert(id, Edit{typed.trimmed(), *wire, {}});
     refreshRow(id);
+    Q_EMIT editsChanged();
     return success();
 }
 
 void Compax3ObjectModel::clearEdit(const Compax3ObjectId& id) {
-    m_edits.remove(id);
+    if (!m_edits.remove(id)) return;
     refreshRow(id);
+    Q_EMIT editsChanged();
 }
 
 void Compax3ObjectModel::clearEdits() {
     const QList<Compax3ObjectId> ids = m_edits.keys();
     m_edits.clear();
     for (const Compax3ObjectId& id : ids) refreshRow(id);
+    if (!ids.isEmpty()) Q_EMIT editsChanged();
 }
 
 QList<Compax3ObjectId> Compax3ObjectModel::readableObjects() const {

@@ -24,6 +24,8 @@ public:
 
     // Rebuilds the tree; edits and values of objects still in it are kept.
     void setDictionary(const Compax3Dictionary& dictionary);
+    // The headers, names and groups again in the language now in use.
+    void retranslate() { rebuild(); }
     const Compax3Dictionary& dictionary() const { return m_dictionary; }
 
     // A value read from the drive, or a refusal (`error`); clears stale.
@@ -63,6 +65,8 @@ Q_SIGNALS:
     void editRefused(const QString& message);
     // A value typed into the tree was taken as an edit.
     void editAccepted();
+    // edits() changed: one added, changed, written or dropped.
+    void editsChanged();
 
 private:
     struct Known {

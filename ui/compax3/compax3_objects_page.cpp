@@ -26,7 +26,7 @@ namespace cambench {
 Compax3ObjectsPage::Compax3ObjectsPage(DeviceSession* session, Compax3Gui* gui, QWidget* parent)
     : Compax3Page(session, parent),
       m_gui(gui),
-      m_model(new Compax3ObjectModel(this)),
+      m_model(gui->objects()),
       m_filter(new QSortFilterProxyModel(this)),
       m_tree(new QTreeView),
       m_search(new QLineEdit),
@@ -34,7 +34,8 @@ Compax3ObjectsPage::Compax3ObjectsPage(DeviceSession* session, Compax3Gui* gui, 
       m_rawValue(new QLineEdit),
       m_write(new QPushButton(tr("Write changes…"))) {
     setObjectName(QStringLiteral("compax3ObjectsPage"));
-    m_model->setDictionary(gui->dictionary());
+    // A window built again (another language) shows the same typed values.
+    m_model->retranslate();
     m_filter->setSourceModel(m_model);
     m_filter->setRecursiveFilteringEnabled(true);
     m_filter->setFilterCaseSensitivity(Qt::CaseInsensitive);
@@ -61,7 +62,6 @@ Compax3ObjectsPage::Compax3ObjectsPage(DeviceSession* session, Compax3Gui* gui, 
                    true);
     });
     connect(gui, &Compax3Gui::dictionaryChanged, this, [this] {
-        m_model->setDictionary(m_gui->dictionary());
         m_tree->expandToDepth(0);
         if (const QStringList problems = m_model->editProblems(); !problems.isEmpty())
             showResult(tr("The loaded dictionary refuses %n typed value(s); they stay typed in "

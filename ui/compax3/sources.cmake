@@ -3,6 +3,8 @@
 target_sources(cambench_ui PRIVATE
   compax3/compax3_page.h
   compax3/compax3_page.cpp
+  compax3/compax3_report.h
+  compax3/compax3_report.cpp
   compax3/compax3_gui.h
   compax3/compax3_gui.cpp
   compax3/compax3_object_model.h

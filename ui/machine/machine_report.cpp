@@ -1,6 +1,7 @@
 #include "machine_report.h"
 
 #include "machine.h"
+#include "machine_progress.h"
 #include "machine_unit.h"
 
 #include "comm/device/family_registry.h"
@@ -9,8 +10,10 @@
 #include "ui/report_pages.h"
 
 #include <QDateTime>
-#include <QLocale>
+#include <QPointer>
 #include <QTextDocument>
+
+#include <memory>
 
 namespace cambench {
 
@@ -27,8 +30,8 @@ QString familyTitle(const QString& familyId) {
 }
 
 // The family part of `unit` that speaks for its device.
-const FamilyGui* deviceFamily(const MachineUnit& unit) {
-    for (const FamilyGui* family : unit.families())
+FamilyGui* deviceFamily(const MachineUnit& unit) {
+    for (FamilyGui* family : unit.families())
         if (family->familyId() == unit.device().family) return family;
     return nullptr;
 }
@@ -40,8 +43,7 @@ QString identityOf(const MachineUnit& unit) {
 }
 
 QString when(const QDateTime& time) {
-    return time.isValid() ? QLocale().toString(time.toLocalTime(), QLocale::ShortFormat)
-                          : MachineReport::tr("never");
+    return time.isValid() ? reportTime(time) : MachineReport::tr("never");
 }
 
 QString summary(const Machine& machine) {
@@ -80,8 +82,9 @@ QString section(QTextDocument& document, const MachineUnit& unit, int index) {
         MachineReport::tr("Identity: %1").arg(identityOf(unit)),
         MachineReport::tr("Line: %1 on %2")
             .arg(unit.stateText(), unit.device().option(QStringLiteral("port"))),
-        MachineReport::tr("Its live values last answered: %1")
-            .arg(when(unit.session()->freshness()->lastAnswer())),
+        MachineReport::tr("Recorded identity: %1").arg(unit.device().identity.text()),
+        // The line's watch asks every device, whichever page is shown.
+        MachineReport::tr("Last answered: %1").arg(when(unit.lastAnswer())),
         MachineReport::tr("Edits on this PC not written to the device: %1")
             .arg(unit.unwrittenCount())};
     for (const QString& line : lines) html += QStringLiteral("<p>%1</p>").arg(escaped(line));
@@ -93,6 +96,34 @@ QString section(QTextDocument& document, const MachineUnit& unit, int index) {
 }
 
 }  // namespace
+
+void MachineReport::read(Machine& machine, MachineProgress* progress, std::function<void()> done) {
+    auto left = std::make_shared<int>(int(machine.units().size()));
+    const auto oneDone = [left, done] {
+        if (--*left == 0 && done) done();
+    };
+    if (*left == 0 && done) done();
+    for (MachineUnit* unit : machine.units()) {
+        FamilyGui* family = deviceFamily(*unit);
+        // A device that moves is read too: the report's reads are queries.
+        const MachineUnit::Lamp lamp = unit->lamp();
+        if (!family ||
+            (lamp != MachineUnit::Lamp::Connected && lamp != MachineUnit::Lamp::Moving)) {
+            progress->finish(
+                unit, false,
+                tr("not read: %1; its section says what this PC holds.").arg(unit->stateText()));
+            oneDone();
+            continue;
+        }
+        QPointer<MachineProgress> shown(progress);
+        family->readForReport(progress, [shown, unit, oneDone](const Status& read) {
+            if (shown)
+                shown->finish(unit, read.ok(),
+                              read ? tr("read") : tr("not read: %1").arg(read.error().message));
+            oneDone();
+        });
+    }
+}
 
 void MachineReport::build(QTextDocument& document, const Machine& machine) {
     QString html = summary(machine);

@@ -2,13 +2,36 @@
 
 #include "machine_connection.h"
 
+#include "comm/device/device_connection.h"
+#include "comm/device/family_registry.h"
+#include "comm/usecases/line_answer.h"
 #include "ui/connection_page.h"
 #include "ui/device_session.h"
 #include "ui/family_gui.h"
 #include "ui/main_window.h"
 #include "ui/motion_stop.h"
+#include "ui/sentence.h"
 
 namespace cambench {
+
+namespace {
+
+QString familyTitle(const QString& familyId) {
+    const comm::FamilyInfo* info = comm::FamilyRegistry::instance().find(familyId);
+    return info ? QCoreApplication::translate("cambench::comm", info->title.toUtf8().constData())
+                : familyId;
+}
+
+QString watchTitle() {
+    return MachineUnit::tr("Watch the line");
+}
+
+// "14:03:07": the time of day, to the second (a cycle is half of one).
+QString answerTime(const QDateTime& at) {
+    return at.isValid() ? at.toString(QStringLiteral("HH:mm:ss")) : MachineUnit::tr("the connect");
+}
+
+}  // namespace
 
 MachineUnit::MachineUnit(MachineDevice device, StopControl* machineStop, QObject* parent)
     : QObject(parent),
@@ -19,13 +42,33 @@ MachineUnit::MachineUnit(MachineDevice device, StopControl* machineStop, QObject
     connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         // The machine file holds what the device is reached with: also a
         // port or protocol chosen on its Connection page.
-        if (state == comm::ConnectionState::Connected)
+        // The identity stays: it is the device that belongs here.
+        if (state == comm::ConnectionState::Connected) {
+            const DeviceIdentity identity = m_device.identity;
             m_device =
                 machineDeviceFor(m_device.name, m_session->connection(), m_session->protocol());
+            m_device.identity = identity;
+        }
+        lineChanged();
         Q_EMIT changed();
     });
-    connect(m_session, &DeviceSession::deviceCheckedChanged, this, &MachineUnit::changed);
+    connect(m_session, &DeviceSession::deviceCheckedChanged, this, [this](bool checked) {
+        // The family found its device where the check found none or another
+        // (a device swapped back, a bus device chosen): asked again.
+        if (checked && (m_check == Check::Another || m_check == Check::Silent)) checkLineAnswer();
+        Q_EMIT changed();
+    });
+    connect(m_session, &DeviceSession::identifyProblemChanged, this, &MachineUnit::changed);
+    connect(m_session, &DeviceSession::targetChanged, this, [this] {
+        if (m_session->isOnline()) checkLineAnswer();
+    });
     connect(m_session->motionStop(), &MotionStop::motionChanged, this, &MachineUnit::changed);
+    connect(&m_session->worker(), &comm::JobRunner::jobStarted, this,
+            [this](quint64 id, const QString&) {
+                if (id == m_watchJob) m_watchOnLine = true;
+            });
+    m_watch.setInterval(kWatchMs);
+    connect(&m_watch, &QTimer::timeout, this, &MachineUnit::watchLine);
     for (FamilyGui* family : m_families) {
         connect(family, &FamilyGui::titleChanged, this, &MachineUnit::changed);
         connect(family, &FamilyGui::identityChanged, this, &MachineUnit::changed);
@@ -46,6 +89,10 @@ MainWindow* MachineUnit::createWindow() {
     m_window = new MainWindow(m_session, m_families, m_machineStop);
     // A part of the machine's window, not a window of its own.
     m_window->setWindowFlags(Qt::Widget);
+    // The machine file names the device on a bus: never another number.
+    m_window->connectionPage()->setFindsBusDevice(false);
+    // The line's watch runs all the time: not a job for the progress bar.
+    m_window->addQuietJobTitle(watchTitle());
     connect(m_window, &MainWindow::languageRequested, this, &MachineUnit::languageRequested,
             Qt::QueuedConnection);
     return m_window;
@@ -66,10 +113,129 @@ void MachineUnit::connectDevice() {
     m_window->connectAndLoad();
 }
 
+void MachineUnit::lineChanged() {
+    m_checkJob = 0;
+    m_watchJob = 0;
+    m_watchOnLine = false;
+    if (m_session->state() == comm::ConnectionState::Connected) {
+        checkLineAnswer();
+        m_watch.start();
+        return;
+    }
+    m_watch.stop();
+    setCheck(Check::Unchecked);
+}
+
+void MachineUnit::setCheck(Check check, const QString& text) {
+    if (m_check == check && m_checkText == text) return;
+    m_check = check;
+    m_checkText = text;
+    Q_EMIT changed();
+}
+
+void MachineUnit::checkLineAnswer() {
+    if (m_checkJob != 0) return;
+    // Asked again about another device or none: it stays red until a
+    // device that belongs here answers (no amber flicker between checks).
+    if (m_check != Check::Another && m_check != Check::Silent) setCheck(Check::Checking);
+    m_recheckTicks = 0;
+    using usecases::LineAnswer;
+    const quint64 job = m_session->worker().run<Result<LineAnswer>>(
+        this, comm::JobPriority::User, tr("Check which device answers"),
+        [](comm::JobContext& context) -> Result<LineAnswer> {
+            if (!context.device()) return Error::communication(tr("not connected"));
+            return usecases::lineAnswer(*context.device(), true);
+        },
+        [this](Result<LineAnswer> answer) {
+            if (!std::exchange(m_checkJob, 0)) return;  // the line changed since
+            if (!answer) {
+                // Cancelled (a STOP, a reconnect): asked again in a few cycles.
+                if (m_check == Check::Checking) setCheck(Check::Unchecked);
+                return;
+            }
+            if (!answer->identified) {
+                setCheck(answer->heardOther ? Check::Another : Check::Silent,
+                         answer->heardOther
+                             ? tr("another device answers: no %1 identifies itself (%2)")
+                                   .arg(familyTitle(m_device.family), asSentence(answer->problem))
+                             : tr("no answer: %1").arg(asSentence(answer->problem)));
+                return;
+            }
+            m_lastAnswer = QDateTime::currentDateTime();
+            if (m_device.identity.known() && m_device.identity != answer->identity) {
+                setCheck(Check::Another, anotherDeviceText(m_device.identity, answer->identity));
+                return;
+            }
+            // The first device seen here is the one the machine file records.
+            if (!m_device.identity.known()) m_device.identity = answer->identity;
+            m_answerLine = answer->text;
+            setCheck(Check::Confirmed);
+        });
+    m_checkJob = job;
+}
+
+void MachineUnit::watchLine() {
+    ++m_watchCycles;
+    if (!m_session->isOnline() || m_checkJob != 0) return;
+    if (m_check != Check::Confirmed) {
+        // Another device or none: asked again every few cycles, queries only.
+        constexpr int kRecheckTicks = 4;
+        if (++m_recheckTicks >= kRecheckTicks) checkLineAnswer();
+        return;
+    }
+    if (m_watchJob != 0) {
+        // The last cycle's query was on the line a whole cycle unanswered.
+        if (m_watchOnLine)
+            setCheck(Check::Silent, tr("no answer since %1").arg(answerTime(m_lastAnswer)));
+        return;
+    }
+    using usecases::LineAnswer;
+    m_watchOnLine = false;
+    const quint64 ticket = ++m_watchTicket;
+    m_watchJob = m_session->worker().run<Result<LineAnswer>>(
+        this, comm::JobPriority::Poll, watchTitle(),
+        [](comm::JobContext& context) -> Result<LineAnswer> {
+            if (!context.device()) return Error::communication(tr("not connected"));
+            return usecases::lineAnswer(*context.device(), false);
+        },
+        [this, ticket](Result<LineAnswer> answer) {
+            if (ticket != m_watchTicket || m_watchJob == 0) return;  // the line changed since
+            watchAnswered(answer);
+        },
+        QStringLiteral("machine-line-watch"));
+}
+
+void MachineUnit::watchAnswered(const Result<usecases::LineAnswer>& answer) {
+    m_watchJob = 0;
+    m_watchOnLine = false;
+    if (!answer || m_checkJob != 0) return;  // dropped by a STOP; or a full check runs
+    if (!answer->identified) {
+        setCheck(answer->heardOther ? Check::Another : Check::Silent,
+                 answer->heardOther
+                     ? tr("another device answers: no %1 identifies itself (%2)")
+                           .arg(familyTitle(m_device.family), asSentence(answer->problem))
+                     : tr("no answer since %1: %2")
+                           .arg(answerTime(m_lastAnswer), asSentence(answer->problem)));
+        return;
+    }
+    m_lastAnswer = QDateTime::currentDateTime();
+    // Another line than the confirmed device's: who it is, in full.
+    if (answer->text != m_answerLine) {
+        checkLineAnswer();
+        return;
+    }
+    setCheck(Check::Confirmed);
+}
+
 MachineUnit::Lamp MachineUnit::lamp() const {
     if (!m_problem.isEmpty()) return Lamp::Gone;
     switch (m_session->state()) {
         case comm::ConnectionState::Connected:
+            if (m_check == Check::Another) return Lamp::AnotherDevice;
+            if (m_check == Check::Silent) return Lamp::Gone;
+            // The family's own check found none of its devices.
+            if (!m_session->identifyProblem().isEmpty()) return Lamp::Gone;
+            if (m_check != Check::Confirmed || !m_session->deviceChecked()) return Lamp::Connecting;
             return m_session->motionStop()->motion() == MotionStop::Motion::Moving
                        ? Lamp::Moving
                        : Lamp::Connected;
@@ -89,13 +255,19 @@ QString MachineUnit::stateText() const {
     switch (lamp()) {
         case Lamp::Connected:
         case Lamp::Moving: {
-            if (!m_session->deviceChecked()) return tr("connected, identifying…");
             const QString motion = m_session->motionStop()->motionText();
             return motion.isEmpty() ? tr("connected") : tr("connected, %1").arg(motion);
         }
+        case Lamp::AnotherDevice:
+            return m_checkText;
         case Lamp::Connecting:
-            return tr("connecting…");
+            return m_session->isOnline() ? tr("checking which device answers…") : tr("connecting…");
         case Lamp::Gone:
+            if (m_session->isOnline())
+                return m_check == Check::Silent
+                           ? m_checkText
+                           : tr("did not identify itself: %1")
+                                 .arg(asSentence(m_session->identifyProblem()));
             if (m_session->isRetrying() || m_session->state() == comm::ConnectionState::Lost)
                 return tr("gone, retrying: %1").arg(m_session->lastMessage());
             return tr("not connected: %1").arg(m_session->lastMessage());

@@ -1,6 +1,8 @@
 #include "machine_window.h"
 
 #include "machine.h"
+#include "machine_backup_run.h"
+#include "machine_progress.h"
 #include "machine_report.h"
 #include "machine_stop.h"
 #include "machine_unit.h"
@@ -15,9 +17,12 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QInputDialog>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
+#include <QPointer>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -27,13 +32,14 @@ namespace cambench {
 
 namespace {
 
-// The lamp of a device's row: green on the line, amber while connecting,
-// red when gone, grey while offline, blue while it moves.
+// The lamp of a device's row: green on the line, amber while connecting
+// and checking which device answers, red when gone or another device
+// answers, grey while offline, blue while it moves.
 QIcon lampIcon(MachineUnit::Lamp lamp) {
     // In the order of MachineUnit::Lamp.
     static const QColor colors[] = {QColor(0x2e, 0x7d, 0x32), QColor(0xf9, 0xa8, 0x25),
                                     QColor(0xc6, 0x28, 0x28), QColor(0x9e, 0x9e, 0x9e),
-                                    QColor(0x15, 0x65, 0xc0)};
+                                    QColor(0xc6, 0x28, 0x28), QColor(0x15, 0x65, 0xc0)};
     const QColor color = colors[int(lamp)];
     QPixmap pixmap(14, 14);
     pixmap.fill(Qt::transparent);
@@ -65,14 +71,23 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
     m_list->setHeaderLabels(
         {tr("Device"), tr("State"), tr("Not written"), tr("Family"), tr("Port")});
     m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    // Wide enough for the name, the lamp and its words and the count; family
-    // and port scroll into view where the screen is narrow.
-    m_list->setMinimumWidth(280);
+    m_list->header()->setStretchLastSection(false);
+    // The state's words may be long ("another device answers: expected
+    // ..., found ..."): they wrap in a column of their own width, so that
+    // family and port stay in sight whole, in every language.
+    m_list->header()->setSectionResizeMode(State, QHeaderView::Interactive);
+    constexpr int kStateChars = 30;
+    m_list->header()->resizeSection(
+        State, std::max(m_list->header()->sectionSizeHint(State),
+                        m_list->fontMetrics().averageCharWidth() * kStateChars));
+    m_list->setWordWrap(true);
+    m_list->setUniformRowHeights(false);
+    m_list->setTextElideMode(Qt::ElideNone);
     auto* splitter = new QSplitter;
     splitter->addWidget(m_list);
     splitter->addWidget(m_stack);
     splitter->setStretchFactor(1, 1);
-    splitter->setSizes({380, 1220});
+    splitter->setChildrenCollapsible(false);
     setCentralWidget(splitter);
     createMenus();
     for (MachineUnit* unit : machine->units()) addRow(unit);
@@ -82,8 +97,10 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
     });
     connect(m_list, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
         if (!item) return;
-        if (MachineUnit* unit = m_machine->unit(item->text(Name)))
+        if (MachineUnit* unit = m_machine->unit(item->text(Name))) {
             m_stack->setCurrentWidget(unit->window());
+            showMenusOf(unit);
+        }
     });
     connect(machine->stop(), &MachineStop::stopFinished, this,
             [this] { showMessage(tr("STOP: %1").arg(m_machine->stop()->lastSummary())); });
@@ -93,12 +110,46 @@ MachineWindow::MachineWindow(Machine* machine, QWidget* parent)
 }
 
 void MachineWindow::createMenus() {
-    QMenu* menu = menuBar()->addMenu(tr("&Machine"));
+    m_machineMenu = menuBar()->addMenu(tr("&Machine"));
+    QMenu* menu = m_machineMenu;
     menu->addAction(tr("&Add device…"), this, &MachineWindow::addDevice);
     menu->addAction(tr("&Save machine as…"), this, &MachineWindow::saveAs);
+    menu->addSeparator();
+    // Every device at once, each on its own worker (a bar per device).
+    menu->addAction(tr("&Back up…"), this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Back up the machine into"));
+        if (dir.isEmpty()) return;
+        bool ok = false;
+        // The manifest says why (as the command line's -m).
+        const QString note = QInputDialog::getText(this, tr("Back up the machine"),
+                                                   tr("Why (kept in the backup's manifest):"),
+                                                   QLineEdit::Normal, QString(), &ok);
+        if (ok) backUpTo(dir, note);
+    });
+    menu->addAction(tr("&Verify…"), this, [this] {
+        const QString dir =
+            QFileDialog::getExistingDirectory(this, tr("Verify against the backup"));
+        if (!dir.isEmpty()) verifyFrom(dir);
+    });
+    menu->addAction(tr("R&estore…"), this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Restore the backup"));
+        if (!dir.isEmpty()) restoreFrom(dir);
+    });
+    menu->addSeparator();
     menu->addAction(tr("Machine &report…"), this, &MachineWindow::writeReport);
     menu->addSeparator();
     menu->addAction(tr("&Close machine"), this, &QWidget::close);
+}
+
+void MachineWindow::showMenusOf(MachineUnit* unit) {
+    for (QAction* action : menuBar()->actions())
+        if (action != m_machineMenu->menuAction()) menuBar()->removeAction(action);
+    if (!unit || !unit->window()) return;
+    // The device's File, Edit, Device, ... menus themselves: what they
+    // enable and show follows its line and family as in its own window.
+    QMenuBar* own = unit->window()->menuBar();
+    own->hide();
+    for (QAction* action : own->actions()) menuBar()->addAction(action);
 }
 
 void MachineWindow::addRow(MachineUnit* unit) {
@@ -106,6 +157,8 @@ void MachineWindow::addRow(MachineUnit* unit) {
     item->setText(Name, unit->name());
     item->setTextAlignment(Unwritten, Qt::AlignRight | Qt::AlignVCenter);
     m_stack->addWidget(unit->createWindow());
+    // One menu bar: the machine window's shows the device's menus.
+    unit->window()->menuBar()->hide();
     updateRow(unit);
     connect(unit, &MachineUnit::changed, this, [this, unit] { updateRow(unit); });
     // One device going away is said once, naming it; the others stay as they are.
@@ -134,7 +187,21 @@ void MachineWindow::updateRow(MachineUnit* unit) {
     item->setToolTip(State, unit->stateText());
     const int unwritten = unit->unwrittenCount();
     item->setText(Unwritten, unwritten > 0 ? QString::number(unwritten) : QString());
+    fitColumns();
     updateTitle();
+}
+
+void MachineWindow::fitColumns() {
+    QHeaderView* header = m_list->header();
+    int width = 2 * m_list->frameWidth();
+    for (int column = 0; column < m_list->columnCount(); ++column) {
+        if (column != State) m_list->resizeColumnToContents(column);
+        width += header->sectionSize(column);
+    }
+    width += m_list->verticalScrollBar()->sizeHint().width();
+    m_list->setMinimumWidth(width);
+    // Rows grow with a state that wraps to another line.
+    m_list->doItemsLayout();
 }
 
 void MachineWindow::updateTitle() {
@@ -158,6 +225,7 @@ void MachineWindow::showDevice(const QString& name) {
     if (!unit) return;
     m_list->setCurrentItem(rowOf(unit));
     m_stack->setCurrentWidget(unit->window());
+    showMenusOf(unit);
 }
 
 void MachineWindow::showMessage(const QString& text) {
@@ -184,13 +252,38 @@ void MachineWindow::saveAs() {
 void MachineWindow::writeReport() {
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Machine report"), m_machine->name() + QStringLiteral(".pdf"), tr("PDF (*.pdf)"));
-    if (path.isEmpty()) return;
-    const Status written = MachineReport::write(path, *m_machine);
-    if (!written) {
-        QMessageBox::warning(this, tr("Machine report"), written.error().message);
-        return;
-    }
-    showMessage(tr("Machine report written to %1.").arg(QFileInfo(path).fileName()));
+    if (!path.isEmpty()) writeReportTo(path);
+}
+
+MachineProgress* MachineWindow::writeReportTo(const QString& path) {
+    // Everything is read before it is printed: a bar per device.
+    auto* progress = new MachineProgress(tr("Machine report"), m_machine->units(), this);
+    progress->setAttribute(Qt::WA_DeleteOnClose);
+    progress->show();
+    QPointer<MachineProgress> shown(progress);
+    MachineReport::read(*m_machine, progress, [this, shown, path] {
+        const Status written = MachineReport::write(path, *m_machine);
+        const QString message =
+            written ? tr("Machine report written to %1.").arg(QFileInfo(path).fileName())
+                    : written.error().message;
+        showMessage(message);
+        if (!written)
+            QMessageBox::warning(shown ? static_cast<QWidget*>(shown.data()) : this,
+                                 tr("Machine report"), message);
+    });
+    return progress;
+}
+
+MachineBackupRun* MachineWindow::backUpTo(const QString& dir, const QString& note) {
+    return MachineBackupRun::backUp(m_machine, dir, note, this);
+}
+
+MachineBackupRun* MachineWindow::verifyFrom(const QString& dir) {
+    return MachineBackupRun::verify(m_machine, dir, this);
+}
+
+MachineBackupRun* MachineWindow::restoreFrom(const QString& dir) {
+    return MachineBackupRun::restore(m_machine, dir, this);
 }
 
 void MachineWindow::addDevice() {

@@ -2,6 +2,7 @@
 
 #include <QMainWindow>
 
+class QMenu;
 class QStackedWidget;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -9,12 +10,15 @@ class QTreeWidgetItem;
 namespace cambench {
 
 class Machine;
+class MachineBackupRun;
+class MachineProgress;
 class MachineUnit;
 
 // The window of a machine: the list of its devices (name, family, port, a
 // lamp with the line's state in words, the edits not written) beside the
-// selected device's own window of pages, its menus and its STOP (the
-// machine's: it stops every device). The STOP key works from every widget
+// selected device's own window of pages and its STOP (the machine's: it
+// stops every device). One menu bar: the Machine menu, then the selected
+// device's menus (its window's own menu bar is hidden). The STOP key works from every widget
 // of the window; the status bar says what the last STOP reached and which
 // device went away.
 class MachineWindow : public QMainWindow {
@@ -31,6 +35,14 @@ public:
 
     // Every device is asked (a move to stop, edits not written); true: may close.
     bool confirmClose();
+    // Machine → Machine report… to `path`: reads every device first (the
+    // dialog shows a bar per device), then writes the PDF.
+    MachineProgress* writeReportTo(const QString& path);
+    // Machine → Back up…, Verify…, Restore… with the folder chosen (and
+    // the backup's note: why). Each device's line says what became of it.
+    MachineBackupRun* backUpTo(const QString& dir, const QString& note);
+    MachineBackupRun* verifyFrom(const QString& dir);
+    MachineBackupRun* restoreFrom(const QString& dir);
 
     // The columns of the device list.
     // State and unwritten edits first: a long port or family name must not
@@ -45,8 +57,12 @@ protected:
 
 private:
     void createMenus();
+    // The Machine menu and `unit`'s menus in the one menu bar.
+    void showMenusOf(MachineUnit* unit);
     void addRow(MachineUnit* unit);
     void updateRow(MachineUnit* unit);
+    // The list as wide as its columns: no name cut (a long state wraps).
+    void fitColumns();
     void updateTitle();
     void saveAs();
     void writeReport();
@@ -56,6 +72,7 @@ private:
     Machine* m_machine;
     QTreeWidget* m_list;
     QStackedWidget* m_stack;
+    QMenu* m_machineMenu = nullptr;
     QString m_lastMessage;
 };
 

@@ -16,6 +16,22 @@ Mc1Gui::Mc1Gui(DeviceSession* session, QObject* parent)
             [this] { mc1settings::saveWatchList(m_watch->toProject(QStringLiteral("auto"))); });
 }
 
+void Mc1Gui::readForReport(QWidget* parent, std::function<void(const Status&)> done) {
+    Q_UNUSED(parent);
+    Mc1Report::read(session(), this, [this, done](Result<Mc1ReportReading> reading) {
+        // A report never shows the last device's values as this one's.
+        m_report.reset();
+        if (reading) m_report = *reading;
+        done(reading ? success() : Status(reading.error()));
+    });
+}
+
+QString Mc1Gui::reportSection(QTextDocument& document, const QString& resourcePrefix) const {
+    Q_UNUSED(document);
+    Q_UNUSED(resourcePrefix);
+    return Mc1Report::html(m_report);
+}
+
 FamilyWindow* Mc1Gui::createWindow(MainWindow* window) {
     return new Mc1Window(this, window);
 }

@@ -1,6 +1,10 @@
 #pragma once
 
+#include "mc1_report.h"
+
 #include "ui/family_gui.h"
+
+#include <optional>
 
 namespace cambench {
 
@@ -17,9 +21,12 @@ public:
     Mc1WatchModel* watchList() const { return m_watch; }
     FamilyWindow* createWindow(MainWindow* window) override;
     QString windowSubject() const override { return identityLine(); }
+    void readForReport(QWidget* parent, std::function<void(const Status&)> done) override;
+    QString reportSection(QTextDocument& document, const QString& resourcePrefix) const override;
 
 private:
     Mc1WatchModel* m_watch;
+    std::optional<Mc1ReportReading> m_report;  // the last reading for a report
 };
 
 }  // namespace cambench

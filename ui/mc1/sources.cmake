@@ -22,6 +22,8 @@ target_sources(cambench_ui PRIVATE
   mc1/mc1_memory_page.cpp
   mc1/mc1_trend_page.h
   mc1/mc1_trend_page.cpp
+  mc1/mc1_report.h
+  mc1/mc1_report.cpp
   mc1/mc1_gui.h
   mc1/mc1_gui.cpp
   mc1/mc1_window.h

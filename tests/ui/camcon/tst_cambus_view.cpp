@@ -9,6 +9,8 @@
 #include "ui/camcon/cambus/cambus_settings_widget.h"
 #include "ui/camcon/cambus/cambus_view_widget.h"
 #include "ui/connection_page.h"
+#include "ui/connection_status.h"
+#include "ui/device_session.h"
 
 #include <QLabel>
 #include <QPushButton>
@@ -66,6 +68,22 @@ private Q_SLOTS:
             },
             kDeviceTimeoutMs));
         QCOMPARE(view->highlightedUser(), -1);
+    }
+
+    // Issue 36 item 7: a Cam-BUS connection starts on a device that
+    // answers; the form's device 0 is not on this bus (CamCons 3 and 5).
+    void aConnectionStartsOnADeviceThatAnswers() {
+        Shell shell;
+        shell.start(QStringLiteral("sim:devices=3,5"), QStringLiteral("cambus"));
+        DeviceSession* session = shell.window()->session();
+        QCOMPARE(session->protocol().device(), 0);
+        QVERIFY(QTest::qWaitFor(
+            [session] { return session->deviceChecked() && session->protocol().device() == 3; },
+            kDeviceTimeoutMs));
+        QVERIFY2(
+            shell.window()->connectionStrip()->text().contains(QLatin1String("device number 3")),
+            qPrintable(shell.window()->connectionStrip()->text()));
+        QVERIFY(session->identifyProblem().isEmpty());
     }
 };
 

@@ -4,6 +4,7 @@
 // going away leaves the other as it was; the STOP of any device's page
 // stops the device that moves and the status bar names it; a machine file
 // saved and opened again lists the same devices.
+#include "machine_fixture.h"
 #include "shell_fixture.h"
 #include "stop_reach_checks.h"
 
@@ -18,6 +19,7 @@
 #include "ui/machine/demo_machine.h"
 #include "ui/machine/machine.h"
 #include "ui/machine/machine_connection.h"
+#include "ui/machine/machine_progress.h"
 #include "ui/machine/machine_report.h"
 #include "ui/machine/machine_stop.h"
 #include "ui/machine/machine_unit.h"
@@ -28,7 +30,9 @@
 #include "ui/stop_bar.h"
 
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScreen>
 #include <QStatusBar>
 #include <QTextDocument>
@@ -38,38 +42,6 @@ using namespace cambench;
 using namespace cambench::test;
 
 namespace {
-
-MachineDevice device(const QString& name, const QString& family,
-                     const QList<QPair<QString, QString>>& options) {
-    return MachineDevice{name, family, options, {}};
-}
-
-// A CamCon and an MC200 V2, each on its own simulated device, unthrottled.
-MachineFile camsAndPlc() {
-    MachineFile file;
-    file.machine = QStringLiteral("Test press");
-    file.devices << device(QStringLiteral("cams"), QStringLiteral("camcon"),
-                           {{QStringLiteral("port"), QStringLiteral("sim:throttle=0")},
-                            {QStringLiteral("protocol"), QStringLiteral("standard")}})
-                 << device(QStringLiteral("press-plc"), QStringLiteral("mc1"),
-                           {{QStringLiteral("port"), QStringLiteral("sim:variant=mc200v2")},
-                            {QStringLiteral("protocol"), QStringLiteral("mc1")},
-                            {QStringLiteral("variant"), QStringLiteral("mc200v2")}});
-    return file;
-}
-
-// Every device on the line and identified (its family's start reads done).
-bool waitIdentified(const Machine& machine) {
-    return QTest::qWaitFor(
-        [&machine] {
-            for (const MachineUnit* unit : machine.units())
-                if (!unit->session()->deviceChecked() ||
-                    unit->lamp() != MachineUnit::Lamp::Connected)
-                    return false;
-            return true;
-        },
-        kDeviceTimeoutMs);
-}
 
 // The CamCon and the MC200 open in a machine's window, both identified.
 struct CamsAndPlc {
@@ -100,13 +72,6 @@ bool jogThePlc(const CamsAndPlc& open, bool keepPolling = false) {
     return leaveForQuietPage(plc, axes);
 }
 
-QTreeWidgetItem* row(const Machine& machine, const QString& name) {
-    QTreeWidget* list = machine.window()->deviceList();
-    for (int i = 0; i < list->topLevelItemCount(); ++i)
-        if (list->topLevelItem(i)->text(MachineWindow::Name) == name) return list->topLevelItem(i);
-    return nullptr;
-}
-
 }  // namespace
 
 class TestMachine : public QObject {
@@ -131,9 +96,9 @@ private Q_SLOTS:
         QVERIFY(!camsIdentity.contains(QLatin1String("MC200")));
         // The list: name, family, port, lamp in words.
         QCOMPARE(machine->window()->deviceList()->topLevelItemCount(), 2);
-        QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::Port),
+        QCOMPARE(machineRow(*machine, QStringLiteral("press-plc"))->text(MachineWindow::Port),
                  QStringLiteral("sim:variant=mc200v2"));
-        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
                  QStringLiteral("connected"));
         // Switching shows the other device's pages.
         machine->window()->showDevice(QStringLiteral("press-plc"));
@@ -152,13 +117,13 @@ private Q_SLOTS:
         }
         QVERIFY(QTest::qWaitFor([&] { return plc->lamp() == MachineUnit::Lamp::Offline; },
                                 kDeviceTimeoutMs));
-        QCOMPARE(row(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("press-plc"))->text(MachineWindow::State),
                  QStringLiteral("offline"));
         QTest::qWait(200);
         QCOMPARE(cams->lamp(), MachineUnit::Lamp::Connected);
         QVERIFY(cams->session()->deviceChecked());
         QCOMPARE(cams->window()->connectionStrip()->text(), camsIdentity);
-        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
                  QStringLiteral("connected"));
         QCOMPARE(camsLine.size(), 0);  // the CamCon's line was not touched
     }
@@ -279,7 +244,7 @@ private Q_SLOTS:
         QVERIFY(open);
         Machine* machine = open->machine;
         QVERIFY(QTest::qWaitFor([&] { return machine->stop()->armed(); }, kDeviceTimeoutMs));
-        QTreeWidgetItem* plcRow = row(*machine, QStringLiteral("press-plc"));
+        QTreeWidgetItem* plcRow = machineRow(*machine, QStringLiteral("press-plc"));
         QCOMPARE(plcRow->text(MachineWindow::State), QStringLiteral("connected"));
         QVERIFY(jogThePlc(*open, true));
         const auto rowSays = [plcRow](const char* start) {
@@ -290,8 +255,15 @@ private Q_SLOTS:
         QVERIFY2(rowSays("connected, moving (axis 1 is jogging +"),
                  qPrintable(plcRow->text(MachineWindow::State)));
         QCOMPARE(open->plc->lamp(), MachineUnit::Lamp::Moving);
-        QCOMPARE(row(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
+        QCOMPARE(machineRow(*machine, QStringLiteral("cams"))->text(MachineWindow::State),
                  QStringLiteral("connected"));
+        // The report reads a device that moves all the same (queries only).
+        QTemporaryDir dir;
+        MachineProgress* report =
+            machine->window()->writeReportTo(dir.filePath(QStringLiteral("moving.pdf")));
+        QSignalSpy read(report, &MachineProgress::finished);
+        QVERIFY(read.wait(kDeviceTimeoutMs));
+        QCOMPARE(report->resultLine(QStringLiteral("press-plc")), QStringLiteral("read"));
 
         // Another page shown: the status is no longer read, only "may move".
         open->plc->window()->showSection(MainWindow::Connection);
@@ -385,7 +357,7 @@ private Q_SLOTS:
         QCOMPARE(open->machine->window()->currentDevice(), QStringLiteral("feed"));
         QCOMPARE(unit->lamp(), MachineUnit::Lamp::Offline);
         QVERIFY(!unit->session()->wantsConnection());
-        QVERIFY(row(*open->machine, QStringLiteral("feed"))
+        QVERIFY(machineRow(*open->machine, QStringLiteral("feed"))
                     ->text(MachineWindow::State)
                     .startsWith(QLatin1String("not connected yet")));
         QVERIFY(!open->machine->addDevice(feed));  // the name is taken
@@ -399,7 +371,7 @@ private Q_SLOTS:
         QCOMPARE(file.devices.size(), 3);
         QCOMPARE(file.devices.at(2).family, QStringLiteral("compax3"));
         QCOMPARE(file.devices.at(2).option(QStringLiteral("port")), QStringLiteral("sim"));
-        QCOMPARE(row(*open->machine, QStringLiteral("feed"))->text(MachineWindow::Port),
+        QCOMPARE(machineRow(*open->machine, QStringLiteral("feed"))->text(MachineWindow::Port),
                  QStringLiteral("sim"));
         QCOMPARE(open->cams->lamp(), MachineUnit::Lamp::Connected);
     }
@@ -419,31 +391,62 @@ private Q_SLOTS:
             QTest::qWaitFor([&] { return cams->session()->deviceChecked(); }, kDeviceTimeoutMs));
         QCOMPARE(plc->lamp(), MachineUnit::Lamp::Gone);
         QVERIFY(!plc->session()->wantsConnection());  // no line opened for it
-        QVERIFY(row(*machine, QStringLiteral("press-plc"))
+        QVERIFY(machineRow(*machine, QStringLiteral("press-plc"))
                     ->text(MachineWindow::State)
                     .contains(QLatin1String("not opened: press-plc: the protocol")));
     }
 
+    // Issue 36 item 5: every device's section of its family, read from the
+    // device before printing (a bar per device), one date format.
     void theReportHasTheMachineAndEachDevice() {
         Shell shell;
-        Machine* machine = shell.openMachine(camsAndPlc(), {});
+        Machine* machine = shell.openMachine(threeFamilies(), {});
         QVERIFY(waitIdentified(*machine));
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
+        MachineProgress* progress = machine->window()->writeReportTo(pdf);
+        QCOMPARE(progress->names(),
+                 (QList<QString>{QStringLiteral("cams"), QStringLiteral("press-plc"),
+                                 QStringLiteral("feed")}));
+        QVERIFY(progress->bar(QStringLiteral("feed")));
+        QSignalSpy finished(progress, &MachineProgress::finished);
+        QVERIFY(finished.wait(kDeviceTimeoutMs));
+        for (const QString& name : progress->names())
+            QCOMPARE(progress->resultLine(name), QStringLiteral("read"));
+        QVERIFY(QTest::qWaitFor([&] { return QFile::exists(pdf); }, kDeviceTimeoutMs));
+        QFile written(pdf);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        QVERIFY(written.read(5) == "%PDF-");
+
         QTextDocument document;
         MachineReport::build(document, *machine);
         const QString text = document.toPlainText();
         QVERIFY(text.contains(QLatin1String("Machine report: Test press")));
         for (const MachineUnit* unit : machine->units())
             QVERIFY2(text.contains(unit->name() + QLatin1String(" (")), qPrintable(unit->name()));
-        // Each device's identity as its family gave it, and the CamCon's own report.
-        QVERIFY2(text.contains(QLatin1String("MC200")), qPrintable(text));
+        // The CamCon's own report, every program read first.
         QVERIFY(text.contains(QLatin1String("Commissioning report")));
+        QVERIFY2(!text.contains(QLatin1String("Not read from the device: its content is "
+                                              "unknown.")),
+                 qPrintable(text));
+        // The MC200's: controller, program, axes through the table in use,
+        // variables and flags.
+        for (const char* part : {"MC200", "PLC program", "Axes", "Parameter table in use",
+                                 "Variables", "External flags", "variables read (V1 to V"})
+            QVERIFY2(text.contains(QLatin1String(part)), part);
+        // The Compax3's: identity, status and last error, the set with names.
+        for (const char* part : {"Serial number C3-4711-0815", "Last error (550.1)",
+                                 "Parameter set", "Set 1 velocity", "Read from the drive at"})
+            QVERIFY2(text.contains(QLatin1String(part)), part);
+        QVERIFY(!text.contains(QLatin1String("last answered: never")));
         QVERIFY(text.contains(QLatin1String("Edits on this PC not written to the device: 0")));
-        QTemporaryDir dir;
-        const QString pdf = dir.filePath(QStringLiteral("press.pdf"));
-        QVERIFY(MachineReport::write(pdf, *machine));
-        QFile file(pdf);
-        QVERIFY(file.open(QIODevice::ReadOnly));
-        QVERIFY(file.read(5) == "%PDF-");
+        // One date format on the page: 2025-11-29 14:03, nothing else.
+        static const QRegularExpression other(QStringLiteral(
+            "\\d{1,2}/\\d{1,2}/\\d{2}|\\d{1,2}\\.\\d{1,2}\\.\\d{2}(?!\\d)|[AP]M\\b"));
+        const QRegularExpressionMatch found = other.match(text);
+        QVERIFY2(!found.hasMatch(), qPrintable(found.captured()));
+        static const QRegularExpression iso(QStringLiteral("\\d{4}-\\d{2}-\\d{2} \\d{2}:\\d{2}"));
+        QVERIFY(iso.match(text).hasMatch());
     }
 
     void theDemoMachineIsBuiltIn() {
