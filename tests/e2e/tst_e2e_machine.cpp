@@ -109,7 +109,7 @@ private Q_SLOTS:
         VERIFY_EXIT(cams.cli({"cams", "write", "--program", "0", one}), 0);
         const CliRun differs = runCli({"machine", "verify", dir});
         VERIFY_EXIT(differs, 1);
-        QVERIFY2(differs.out.contains(QLatin1String("cams: DIFFERS\nfeed: equal")),
+        QVERIFY2(differs.out.contains(QLatin1String("cams: DIFFERS (3)\nfeed: equal")),
                  qPrintable(differs.out));
 
         const CliRun restore = runCli({"machine", "restore", dir, "--only", "cams"});

@@ -3,7 +3,6 @@
 #include "comm/mc1/mc1_address.h"
 #include "comm/mc1/mc1_catalogue.h"
 #include "comm/mc1/mc1_parameters.h"
-#include "comm/sim/sim_log.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,9 +83,7 @@ void SimMc1Controller::setAxes(const QList<int>& logical) {
 }
 
 QByteArray SimMc1Controller::handle(const QByteArray& request, qint64 nowMs) {
-    m_received << request;
-    // `cambench-sim --verbose`: each telegram as it arrives.
-    qCDebug(commSimLog).noquote() << "<-" << request.toHex(' ');
+    m_received << request;  // (SimMc1Line::receive logs it for --verbose)
     if (request.size() < 2 || requestLength(request) != request.size() ||
         mc1Checksum(request) != at(request, 1))
         return nak();
