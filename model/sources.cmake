@@ -6,6 +6,10 @@ target_sources(cambench_model PRIVATE
   walked_list.cpp
   machine/machine_file.h
   machine/machine_file.cpp
+  machine/machine_archive.h
+  machine/machine_archive.cpp
+  machine/volatile_items.h
+  machine/volatile_items.cpp
   model_log.h
   model_log.cpp
   atomic_file.h
