@@ -340,6 +340,12 @@ int main(int argc, char** argv) {
         QStringLiteral("Only Cam-BUS: an EEPROM backup and a program read of one CamCon at 38400 "
                        "baud while two displays poll."));
     parser.addOption(cambus);
+    QCommandLineOption cambusAnswers(
+        QStringLiteral("cambus-answers"),
+        QStringLiteral("Only the PC's answer times on a Cam-BUS: cambench-cli backup, restore and "
+                       "verify against cambench-sim at 38400 baud and T = 10 ms (a display "
+                       "polling), as the simulated users saw them."));
+    parser.addOption(cambusAnswers);
     QCommandLineOption machine(
         QStringLiteral("machine"),
         QStringLiteral("Only a machine: `cambench-cli machine backup` of a CamCon, an MC200 and "
@@ -359,6 +365,10 @@ int main(int argc, char** argv) {
     const Line multiuser{QStringLiteral("Multiuser 38400"), Framing::Multiuser, 38400};
     const QList<Line> lines =
         parser.isSet(quick) ? QList<Line>{multiuser} : QList<Line>{standard, multiuser};
+    if (parser.isSet(cambusAnswers)) {
+        bench::benchCamBusAnswers();
+        return 0;
+    }
     if (parser.isSet(cambus)) {
         bench::benchCamBus();
         return 0;

@@ -1,5 +1,6 @@
 #include "cambus_bench.h"
 
+#include "bench_process.h"
 #include "bench_run.h"
 
 #include "comm/camcon/cambus/cambus_camcon.h"
@@ -8,6 +9,9 @@
 #include "comm/sim/camcon/sim_port_config.h"
 #include "comm/sim/sim_transport.h"
 
+#include <QElapsedTimer>
+#include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTextStream>
 
 #include <algorithm>
@@ -68,7 +72,69 @@ void resetPauses(SimCamBusLine& line) {
     for (int i = 0; i < line.displayCount(); ++i) line.display(i)->resetPauses(-1);
 }
 
+struct CliResult {
+    int exitCode = -1;
+    double seconds = 0;
+    QString err;
+};
+
+CliResult runCli(const QStringList& args) {
+    QProcess cli;
+    cli.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
+    cli.setArguments(args);
+    dieWithBenchmark(cli);
+    QElapsedTimer timer;
+    timer.start();
+    cli.start();
+    CliResult result;
+    if (cli.waitForFinished(-1) && cli.exitStatus() == QProcess::NormalExit)
+        result.exitCode = cli.exitCode();
+    result.seconds = timer.nsecsElapsed() / 1e9;
+    result.err = QString::fromUtf8(cli.readAllStandardError()).trimmed();
+    return result;
+}
+
 }  // namespace
+
+void benchCamBusAnswers() {
+    QTextStream out(stdout);
+    QTemporaryDir dir;
+    QProcess sim;
+    const QString port = startSim(
+        sim, {QStringLiteral("--protocol"), QStringLiteral("cambus"), QStringLiteral("--devices"),
+              QStringLiteral("3,7"), QStringLiteral("--display"), QStringLiteral("12"),
+              QStringLiteral("--verbose")});
+    const QStringList line{QStringLiteral("--port"), port, QStringLiteral("--protocol"),
+                           QStringLiteral("cambus")};
+    const QString image = dir.filePath(QStringLiteral("b3.json"));
+    const QList<QStringList> commands{
+        {QStringLiteral("--device"), QStringLiteral("3"), QStringLiteral("backup"),
+         QStringLiteral("-o"), image},
+        {QStringLiteral("--device"), QStringLiteral("3"), QStringLiteral("restore"), image,
+         QStringLiteral("--no-safety-backup")},
+        {QStringLiteral("--device"), QStringLiteral("3"), QStringLiteral("verify"), image},
+        {QStringLiteral("--device"), QStringLiteral("7"), QStringLiteral("info")}};
+    out << "| cambench-cli --protocol cambus (38400 baud, T = 10 ms, display 12 polling 3) | "
+           "exit | time |\n| --- | ---: | ---: |\n";
+    for (const QStringList& command : commands) {
+        const CliResult run = runCli(line + command);
+        out << QStringLiteral("| %1 | %2 | %3 s |\n")
+                   .arg(command.join(QLatin1Char(' ')).replace(image, QStringLiteral("b3.json")))
+                   .arg(run.exitCode)
+                   .arg(run.seconds, 0, 'f', 2);
+        if (run.exitCode != 0) out << "\n    " << run.err << "\n\n";
+        out.flush();
+    }
+    sim.terminate();
+    sim.waitForFinished(10000);
+    const QString log = QString::fromUtf8(sim.readAllStandardError());
+    const QRegularExpression summary(QStringLiteral("Cam-BUS: the PC answered [^\n]*"));
+    const QRegularExpressionMatch match = summary.match(log);
+    out << "\nthe simulated users' view of the PC's answers: "
+        << (match.hasMatch() ? match.captured(0)
+                             : QStringLiteral("(no summary from the simulator)"))
+        << "\n";
+}
 
 void benchCamBus() {
     QTextStream(stdout) << "| operation (CamCon 3, 38400 baud, displays 12 and 13 polling) | "

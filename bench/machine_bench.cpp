@@ -1,5 +1,7 @@
 #include "machine_bench.h"
 
+#include "bench_process.h"
+
 #include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
@@ -8,11 +10,6 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTextStream>
-
-#ifdef Q_OS_LINUX
-#include <sys/prctl.h>
-#include <csignal>
-#endif
 
 #include <algorithm>
 #include <memory>
@@ -53,31 +50,6 @@ QList<Device> devices(int baud) {
              {QStringLiteral("--protocol"), QStringLiteral("compax3"),
               QStringLiteral("--drive-type"), QStringLiteral("S150V4")},
              entry(QStringLiteral("feed"), QStringLiteral("compax3"))}};
-}
-
-// Each program the benchmark starts dies with it, however it ends.
-void dieWithBenchmark(QProcess& process) {
-#ifdef Q_OS_LINUX
-    process.setChildProcessModifier([] { prctl(PR_SET_PDEATHSIG, SIGKILL); });
-#else
-    Q_UNUSED(process);
-#endif
-}
-
-// A simulator that dies with the benchmark; its pty path, or a fatal error.
-QString startSim(QProcess& sim, const QStringList& args) {
-    sim.setProgram(QStringLiteral(CAMBENCH_SIM_EXE));
-    sim.setArguments(args);
-    sim.setProcessChannelMode(QProcess::SeparateChannels);
-    dieWithBenchmark(sim);
-    sim.start();
-    while (!sim.canReadLine() && sim.waitForReadyRead(10000)) {
-    }
-    const QString path = QString::fromUtf8(sim.readLine()).trimmed();
-    if (path.isEmpty())
-        qFatal("cambench-sim %s did not start: %s", qPrintable(args.join(' ')),
-               sim.readAllStandardError().constData());
-    return path;
 }
 
 // Seconds of one `machine backup` of `entries` into `name`-backup, or with

@@ -6,6 +6,12 @@ target_sources(cambench_model PRIVATE
   walked_list.cpp
   machine/machine_file.h
   machine/machine_file.cpp
+  machine/machine_backup_folder.h
+  machine/machine_backup_folder.cpp
+  backup_difference.h
+  backup_difference.cpp
+  readable_json.h
+  readable_json.cpp
   machine/machine_archive.h
   machine/machine_archive.cpp
   machine/volatile_items.h

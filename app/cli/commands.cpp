@@ -57,15 +57,6 @@ const FamilyOption* CommandRegistry::option(const QString& name) const {
     return nullptr;
 }
 
-void CommandRegistry::setMachineVerbs(const QString& familyId, MachineVerbs verbs) {
-    m_machineVerbs.insert(familyId, std::move(verbs));
-}
-
-const MachineVerbs* CommandRegistry::machineVerbs(const QString& familyId) const {
-    const auto it = m_machineVerbs.constFind(familyId);
-    return it == m_machineVerbs.cend() ? nullptr : &*it;
-}
-
 namespace {
 
 QString familyHeading(const QString& familyId) {

@@ -3,7 +3,6 @@
 #include "cli_options.h"
 #include "cli_session.h"
 
-#include <QHash>
 #include <QList>
 #include <QString>
 
@@ -29,18 +28,6 @@ struct FamilyOption {
     QString name;  // "--axes"; it takes a value
 };
 
-// How the machine commands back up, verify and restore a device of one
-// family: by the family's own commands, as words after the options;
-// "{file}" stands for the device's file in the machine's backup folder.
-struct MachineVerbs {
-    QStringList backup;   // {"backup", "-o", "{file}"}
-    QStringList verify;   // {"verify", "{file}"}: exit 0 equal, 1 differs
-    QStringList restore;  // {"restore", "{file}"}
-    // Added to restore when the person accepted the device answering as the
-    // replacement of the one the file was taken from: {"--replacement"}.
-    QStringList replacement;
-};
-
 // The command groups of cambench-cli: the shell's own (ports, detect) and
 // each family's, registered by its FamilyParts (app/registry/<family>/),
 // with the family's part of --help. Nothing else lists them.
@@ -55,7 +42,7 @@ public:
     // The group `name` for a device of `familyId` (its own, or one of any
     // family); null when there is none.
     const CommandGroup* find(const QString& familyId, const QString& name) const;
-    // The families that have a group `name` ("mc1" for `mc ...`).
+    // The families that have a group `name` ("mc1" for `mc1 ...`).
     QStringList familiesWith(const QString& name) const;
     // Whether any family (or the shell) has a group `name`.
     bool isCommand(const QString& name) const;
@@ -69,14 +56,9 @@ public:
     // Null when no family declared `name`.
     const FamilyOption* option(const QString& name) const;
 
-    void setMachineVerbs(const QString& familyId, MachineVerbs verbs);
-    // Null for a family whose devices a machine backup cannot take.
-    const MachineVerbs* machineVerbs(const QString& familyId) const;
-
 private:
     QList<CommandGroup> m_groups;
     QList<FamilyOption> m_options;
-    QHash<QString, MachineVerbs> m_machineVerbs;
     QList<std::pair<QString, QString>> m_help;
 };
 

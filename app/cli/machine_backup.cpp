@@ -1,35 +1,37 @@
-// `machine backup FILE -o DIR`, `machine verify DIR`, `machine restore DIR`:
-// each device of the machine by its family's own command (the verbs each
-// family registers: the CamCon's EEPROM image, the MC-1 backup, the Compax3
-// parameter set), devices on different ports at once (machine_parallel.h),
-// each device's lines printed whole in the file's order. DIR holds the
-// machine file (machine.json; at the end with each saved device's identity),
-// one file per device and manifest.json, rewritten after each device:
-// machine, and per device its name, family, identity (to compare) and what
-// it said of itself (device), file, SHA-256, time and result. Each device
-// is first asked who it is: another one than the machine file or the
-// backup records is said ("another device answers: expected ..., found
-// ...") and nothing is saved from it, verified or written to it unless the
-// person named it with --replacement. Names no family.
+// `machine backup FILE -o DIR`, `machine verify DIR`, `machine restore DIR`,
+// `machine diff DIR1 DIR2`: each device of the machine through its family's
+// typed backup part (usecases::FamilyBackup, registered by its FamilyParts;
+// comm/usecases/machine_backup.h asks the device who it is first), devices
+// on different ports at once (machine_parallel.h), each device's lines
+// printed whole in the file's order. The folder (model/machine/
+// machine_backup_folder.h) holds the machine file (machine.json; at the
+// end with each saved device's identity), one file per device and
+// manifest.json, rewritten after each device: who took it, why and with
+// what, and per device its name, family, identity, what it said of itself,
+// file, SHA-256, time and result. Another device than the machine file or
+// the backup records is said ("another device answers: expected ...,
+// found ...") and nothing is saved from it, verified or written to it
+// unless the person named it with --replacement. A restore's safety
+// copies go to a folder beside the backup folder, with a manifest of their
+// own. Names no family: the words of each difference are the family's.
 #include "machine_command.h"
 
+#include "backup_output.h"
 #include "cli_output.h"
 #include "cli_session.h"
-#include "commands.h"
 #include "exit_codes.h"
 #include "machine_parallel.h"
+#include "outcome_output.h"
 
+#include "comm/usecases/machine_backup.h"
 #include "model/atomic_file.h"
 #include "model/file_read.h"
-#include "model/json_file.h"
 
-#include <QCryptographicHash>
-#include <QDateTime>
 #include <QDir>
-#include <QJsonArray>
-#include <QJsonObject>
-#include <QRegularExpression>
+#include <QFile>
+#include <QFileInfo>
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -38,16 +40,15 @@ namespace cambench::cli {
 
 namespace {
 
-const JsonFileType kManifest{"cambench-machine-backup", 1, "machine backup manifest"};
-const QString kMachineFileName = QStringLiteral("machine.json");
-const QString kManifestName = QStringLiteral("manifest.json");
+using usecases::BackupComparison;
+using usecases::DeviceChecked;
 
 QString exitText(int code) {
     switch (code) {
         case ExitDevice:
             return QStringLiteral("exit 1: the device refused or differs");
         case ExitUsage:
-            return QStringLiteral("exit 2: the family's command does not fit this device");
+            return QStringLiteral("exit 2: the family's part does not fit this device");
         case ExitCommunication:
             return QStringLiteral("exit 3: not reached or the line failed");
         case ExitInvalidData:
@@ -57,39 +58,15 @@ QString exitText(int code) {
     }
 }
 
-// The device's file in DIR: its name with anything but letters, digits,
-// '.', '-' and '_' as '_' (a name may hold a slash).
-QString fileNameOf(const MachineDevice& device) {
-    QString name = device.name;
-    name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]")), QStringLiteral("_"));
-    return name + QStringLiteral(".json");
-}
-
-QString sha256Of(const QString& path) {
-    const Result<QByteArray> bytes = readFileBytes(path);
-    return bytes ? QString::fromLatin1(
-                       QCryptographicHash::hash(*bytes, QCryptographicHash::Sha256).toHex())
-                 : QString();
-}
-
-// Runs the family's `verb` words ({file} replaced) on `session`; the exit code.
-int runFamilyVerb(CliSession& session, const QString& family, QStringList words,
-                  const QString& file) {
-    for (QString& word : words) word.replace(QLatin1String("{file}"), file);
-    const CommandGroup* group = CommandRegistry::instance().find(family, words.value(0));
-    if (!group) return ExitUsage;
-    CommandArgs args(words.value(0), words.mid(1));
-    return group->run(session, args);
-}
-
 // The machine file and the manifest a backup left in `dir`.
 struct MachineFolder {
+    QString dir;
     MachineSetup setup;
-    QHash<QString, QJsonObject> entries;  // by device name
+    MachineManifest manifest;
 };
 
 Result<MachineFolder> loadFolder(const QString& dir) {
-    const QString machinePath = QDir(dir).filePath(kMachineFileName);
+    const QString machinePath = QDir(dir).filePath(kMachineBackupFile);
     const Result<QByteArray> machineBytes = readFileBytes(machinePath);
     if (!machineBytes)
         return Error::invalidData(
@@ -97,106 +74,60 @@ Result<MachineFolder> loadFolder(const QString& dir) {
                 .arg(dir, machineBytes.error().message));
     Result<MachineSetup> setup = loadMachine(*machineBytes, machinePath);
     if (!setup) return setup.error();
-    const Result<QByteArray> manifestBytes = readFileBytes(QDir(dir).filePath(kManifestName));
+    const QString manifestPath = QDir(dir).filePath(kMachineManifestFile);
+    const Result<QByteArray> manifestBytes = readFileBytes(manifestPath);
     if (!manifestBytes) return manifestBytes.error();
-    const Result<QJsonObject> manifest = parseJsonFile(*manifestBytes, kManifest);
+    const Result<MachineManifest> manifest = parseManifest(*manifestBytes, manifestPath);
     if (!manifest) return manifest.error();
-    MachineFolder folder{*setup, {}};
-    for (const QJsonValue& value : manifest->value(QStringLiteral("devices")).toArray()) {
-        const QJsonObject entry = value.toObject();
-        folder.entries.insert(entry.value(QStringLiteral("name")).toString(), entry);
-    }
-    return folder;
+    return MachineFolder{dir, *setup, *manifest};
 }
 
-Status writeManifest(const QString& dir, const QString& machine, const QJsonArray& devices) {
-    QJsonObject root = jsonFileHeader(kManifest);
-    root.insert(QStringLiteral("machine"), machine);
-    root.insert(QStringLiteral("devices"), devices);
-    return writeFileAtomically(QDir(dir).filePath(kManifestName), toIndentedJson(root));
-}
-
-// An entry of an earlier run that still holds: saved, and its file unchanged.
-bool stillSaved(const QJsonObject& entry, const QString& dir) {
-    return entry.value(QStringLiteral("result")).toString() == QLatin1String("saved") &&
-           sha256Of(QDir(dir).filePath(entry.value(QStringLiteral("file")).toString())) ==
-               entry.value(QStringLiteral("sha256")).toString();
-}
-
-// The identity an entry of the manifest records; not known in a manifest
-// older than that record (it held identify()'s text there).
-DeviceIdentity recordedIdentity(const QJsonObject& entry) {
-    const Result<DeviceIdentity> identity =
-        DeviceIdentity::fromJson(entry.value(QStringLiteral("identity")), QString());
-    return identity ? *identity : DeviceIdentity();
-}
-
-// "another device answers: ... Nothing was ... NAME." on stderr, as the
-// device's own lines say it; the text for its summary line.
-QString sayAnotherDevice(const QString& name, const DeviceIdentity& expected,
-                         const DeviceIdentity& found, const QString& nothing) {
-    const QString another = anotherDeviceText(expected, found);
+// "another device answers: ... NAME." on stderr, as the device's own
+// lines say it.
+void sayAnotherDevice(const QString& name, const QString& another, const QString& nothing) {
     reportError(Error::invalidData(
         QStringLiteral("%1: %2. %3. Only if it replaces that device, add --replacement %1.")
             .arg(name, another, nothing)));
-    return another;
 }
 
-QJsonObject backUp(const MachineDevice& device, const GlobalOptions& options, const QString& dir,
-                   bool replacement) {
-    QJsonObject entry{{QStringLiteral("name"), device.name},
-                      {QStringLiteral("family"), device.family},
-                      {QStringLiteral("file"), fileNameOf(device)}};
-    const MachineVerbs* verbs = CommandRegistry::instance().machineVerbs(device.family);
+ManifestEntry backUp(const MachineDevice& device, const GlobalOptions& options, const QString& dir,
+                     bool replacement) {
     CliSession session(options);
     printOut(QStringLiteral("== %1 (%2, %3)\n").arg(device.name, device.family, session.where()));
-    if (!verbs) {
-        entry.insert(QStringLiteral("result"),
-                     QStringLiteral("failed: the %1 family has no backup").arg(device.family));
+    const Result<usecases::DeviceBackedUp> done =
+        session.run<comm::DeviceConnection, usecases::DeviceBackedUp>(
+            QStringLiteral("back up %1").arg(device.name),
+            [&device, dir, replacement](comm::DeviceConnection&,
+                                        comm::JobContext& job) -> Result<usecases::DeviceBackedUp> {
+                return usecases::backUpMachineDevice(job, device, dir, replacement);
+            });
+    // Connecting failed: the job never ran.
+    if (!done) {
+        reportError(done.error());
+        ManifestEntry entry;
+        entry.name = device.name;
+        entry.family = device.family;
+        entry.file = deviceFileName(device.name);
+        entry.result = QStringLiteral("failed: not reached: %1").arg(done.error().message);
         return entry;
     }
-    const Result<MachineDeviceIdentity> identity = identifyMachineDevice(session, device.name);
-    if (!identity) {
-        reportError(identity.error());
-        entry.insert(QStringLiteral("result"),
-                     QStringLiteral("failed: not reached: %1").arg(identity.error().message));
-        return entry;
-    }
-    entry.insert(QStringLiteral("identity"), identity->identity.toJson());
-    entry.insert(QStringLiteral("device"), identity->text);
-    if (device.identity.known() && device.identity != identity->identity && !replacement) {
-        // Saved under this name, its file would later be restored into the
-        // device the machine file names.
-        const QString another = sayAnotherDevice(device.name, device.identity, identity->identity,
-                                                 QStringLiteral("Nothing was saved from it"));
-        entry.insert(QStringLiteral("result"), QStringLiteral("failed: %1").arg(another));
-        return entry;
-    }
-    const QString path = QDir(dir).filePath(fileNameOf(device));
-    const int code = runFamilyVerb(session, device.family, verbs->backup, path);
-    entry.insert(QStringLiteral("time"),
-                 QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
-    if (code != ExitOk) {
-        entry.insert(QStringLiteral("result"), QStringLiteral("failed: %1").arg(exitText(code)));
-        return entry;
-    }
-    entry.insert(QStringLiteral("sha256"), sha256Of(path));
-    entry.insert(QStringLiteral("result"), QStringLiteral("saved"));
-    return entry;
+    if (done->checked && !done->checked->another.isEmpty())
+        sayAnotherDevice(device.name, done->checked->another,
+                         QStringLiteral("Nothing was saved from it"));
+    else if (done->error.kind != ErrorKind::None)
+        reportError(done->error);
+    else
+        printOut(QStringLiteral("saved %1 to %2\n")
+                     .arg(done->entry.summary, QDir(dir).filePath(done->entry.file)));
+    return done->entry;
 }
 
-}  // namespace
-
-namespace {
-
 // The machine file with the identity each saved device answered with.
-MachineFile withIdentities(MachineFile machine, const QJsonArray& devices) {
-    for (const QJsonValue& value : devices) {
-        const QJsonObject entry = value.toObject();
-        if (entry.value(QStringLiteral("result")).toString() != QLatin1String("saved")) continue;
+MachineFile withIdentities(MachineFile machine, const QList<ManifestEntry>& entries) {
+    for (const ManifestEntry& entry : entries) {
+        if (!entry.saved()) continue;
         for (MachineDevice& device : machine.devices)
-            if (device.name == entry.value(QStringLiteral("name")).toString())
-                device.identity = recordedIdentity(entry);
+            if (device.name == entry.name) device.identity = entry.identity;
     }
     return machine;
 }
@@ -229,74 +160,75 @@ void recordIdentities(const MachineFile& given, const MachineFile& now, const QS
 
 }  // namespace
 
-int runMachineBackup(const MachineSetup& setup, const QString& machinePath, const QString& dir,
-                     bool resume, const QStringList& replacements) {
+int runMachineBackup(const MachineSetup& setup, const MachineRun& run) {
+    const QString& dir = run.dir;
     if (!QDir().mkpath(dir))
         return reportError(Error::communication(
             QStringLiteral("cannot make the folder %1; check the path and its rights").arg(dir)));
-    QHash<QString, QJsonObject> earlier;
-    if (resume) {
+    std::optional<MachineManifest> earlier;
+    if (run.resume) {
         const Result<MachineFolder> folder = loadFolder(dir);
-        if (folder) earlier = folder->entries;
+        if (folder) earlier = folder->manifest;
     }
     // The machine file as given first: an interrupted backup still holds it.
-    const QString folderMachine = QDir(dir).filePath(kMachineFileName);
+    const QString folderMachine = QDir(dir).filePath(kMachineBackupFile);
     if (const Status saved = writeFileAtomically(folderMachine, machineFileJson(setup.machine));
         !saved)
         return reportError(saved.error());
     const QList<MachineDevice>& all = setup.machine.devices;
-    std::vector<std::optional<QJsonObject>> entries(size_t(all.size()));  // a slot per thread
+    std::vector<std::optional<ManifestEntry>> entries(size_t(all.size()));  // a slot per thread
     QList<int> indices;
     for (int i = 0; i < all.size(); ++i) indices << i;
     const auto backUpOrKeep = [&](int i) {
-        const QJsonObject before = earlier.value(all.at(i).name);
-        if (resume && stillSaved(before, dir)) {
+        const ManifestEntry* before = earlier ? earlier->entry(all.at(i).name) : nullptr;
+        if (before && stillSaved(*before, dir)) {
             printOut(QStringLiteral("== %1: kept from the earlier run (%2)\n")
-                         .arg(all.at(i).name, before.value(QStringLiteral("time")).toString()));
-            entries[size_t(i)] = before;
+                         .arg(all.at(i).name, before->time.toString(Qt::ISODateWithMs)));
+            entries[size_t(i)] = *before;
         } else {
-            entries[size_t(i)] =
-                backUp(all.at(i), setup.options.at(i), dir, replacements.contains(all.at(i).name));
+            entries[size_t(i)] = backUp(all.at(i), setup.options.at(i), dir,
+                                        run.replacements.contains(all.at(i).name));
         }
     };
     // Rewritten after each device, one at a time, with every device finished
     // so far in the file's order: an interrupted backup says what it has.
     // Only finished devices' slots are read here: the others are still being
     // written by their threads.
-    Status manifest = success();
-    QJsonArray devices;
+    MachineManifest manifest;
+    manifest.machine = setup.machine.machine;
+    manifest.author = run.author;
+    manifest.started = QDateTime::currentDateTimeUtc();
+    Status written = success();
     std::vector<bool> finished(size_t(all.size()), false);
     const auto recordDone = [&](int done) {
         finished[size_t(done)] = true;
-        devices = {};
+        manifest.devices.clear();
         for (size_t i = 0; i < entries.size(); ++i)
-            if (finished[i]) devices << *entries[i];
-        if (manifest) manifest = writeManifest(dir, setup.machine.machine, devices);
+            if (finished[i]) manifest.devices << *entries[i];
+        if (written)
+            written = writeFileAtomically(QDir(dir).filePath(kMachineManifestFile),
+                                          manifestJson(manifest));
     };
     runDevicesByPort(setup.options, indices, backUpOrKeep, recordDone);
-    if (!manifest) return reportError(manifest.error());
-    const MachineFile identified = withIdentities(setup.machine, devices);
+    if (!written) return reportError(written.error());
+    const MachineFile identified = withIdentities(setup.machine, manifest.devices);
     if (const Status saved = writeFileAtomically(folderMachine, machineFileJson(identified));
         !saved)
         return reportError(saved.error());
-    recordIdentities(setup.machine, identified, machinePath, replacements);
+    recordIdentities(setup.machine, identified, run.machinePath, run.replacements);
     int saved = 0;
-    for (const QJsonValue& value : devices)
-        if (value.toObject().value(QStringLiteral("result")).toString() == QLatin1String("saved"))
-            ++saved;
-    printOut(QStringLiteral("%1: %2 of %3 devices saved in %4\n")
+    for (const ManifestEntry& entry : manifest.devices) saved += entry.saved() ? 1 : 0;
+    printOut(QStringLiteral("%1: %2 of %3 devices saved in %4 (by %5%6)\n")
                  .arg(setup.machine.machine)
                  .arg(saved)
-                 .arg(setup.machine.devices.size())
-                 .arg(dir));
-    for (const QJsonValue& value : devices) {
-        const QJsonObject entry = value.toObject();
-        if (entry.value(QStringLiteral("result")).toString() != QLatin1String("saved"))
-            printOut(QStringLiteral("NOT SAVED: %1: %2\n")
-                         .arg(entry.value(QStringLiteral("name")).toString(),
-                              entry.value(QStringLiteral("result")).toString()));
-    }
-    return saved == setup.machine.devices.size() ? ExitOk : ExitCommunication;
+                 .arg(all.size())
+                 .arg(dir, run.author.operatorName,
+                      run.author.note.isEmpty() ? QString()
+                                                : QStringLiteral(": \"%1\"").arg(run.author.note)));
+    for (const ManifestEntry& entry : manifest.devices)
+        if (!entry.saved())
+            printOut(QStringLiteral("NOT SAVED: %1: %2\n").arg(entry.name, entry.result));
+    return saved == all.size() ? ExitOk : ExitCommunication;
 }
 
 namespace {
@@ -308,55 +240,29 @@ struct DeviceOutcome {
     QString line;
 };
 
-// Asks the device who it is and, when it is the one the backup recorded or
-// the person accepted it (`accepted`), runs `words`; `says(code)` words the
-// outcome of a family command that ran. A manifest older than the identity
-// record leaves the check to the family's command (a restore refuses a
-// file that records no identity unless accepted).
-DeviceOutcome runChecked(CliSession& session, const MachineDevice& device, const QJsonObject& entry,
-                         bool accepted, const QStringList& words, const QString& file,
-                         const QString& nothing, const std::function<QString(int)>& says) {
-    const DeviceIdentity expected = recordedIdentity(entry);
-    if (expected.known()) {
-        const Result<MachineDeviceIdentity> found = identifyMachineDevice(session, device.name);
-        if (!found) {
-            reportError(found.error());
-            return {
-                exitCodeFor(found.error().kind),
-                QStringLiteral("%1: %2").arg(device.name, says(exitCodeFor(found.error().kind)))};
-        }
-        if (found->identity != expected && !accepted) {
-            const QString another =
-                sayAnotherDevice(device.name, expected, found->identity, nothing);
-            return {ExitInvalidData,
-                    QStringLiteral("%1: ANOTHER DEVICE: %2").arg(device.name, another)};
-        }
-    }
-    const int code = runFamilyVerb(session, device.family, words, file);
-    return {code, QStringLiteral("%1: %2").arg(device.name, says(code))};
-}
+// One device's work of a verify or a restore on its own session: `work`
+// runs the checked use case in a job and says what became of it.
+using DeviceWork =
+    std::function<DeviceOutcome(CliSession& session, const ManifestEntry& entry, bool accepted)>;
 
-// Runs `verb` of each device the folder saved (and `only` names, when
-// given), each after asking it who it is (runChecked); `says(code)` words
-// each device's outcome. The worst exit code.
-int forEachSaved(const QString& dir, const QStringList& only, const QStringList& replacements,
-                 QStringList MachineVerbs::*verb, const QString& nothing,
-                 const std::function<QString(int)>& says,
+// Runs `work` on each device the folder saved (and `only` names, when
+// given), devices on different ports at once; the summary and the exit
+// code `exitFor` makes of the devices' codes.
+int forEachSaved(const MachineFolder& folder, const QStringList& only,
+                 const QStringList& replacements, const DeviceWork& work,
                  const std::function<int(const QList<int>&)>& exitFor) {
-    const Result<MachineFolder> folder = loadFolder(dir);
-    if (!folder) return reportError(folder.error());
     for (const auto& [names, option] : {std::pair{only, QStringLiteral("--only")},
                                         std::pair{replacements, QStringLiteral("--replacement")}})
-        if (const Status known = checkDeviceNames(folder->setup.machine, names, option); !known)
+        if (const Status known = checkDeviceNames(folder.setup.machine, names, option); !known)
             return reportError(known.error());
-    const QList<MachineDevice>& all = folder->setup.machine.devices;
+    const QList<MachineDevice>& all = folder.setup.machine.devices;
     std::vector<DeviceOutcome> outcomes(size_t(all.size()));  // a slot per thread
     QList<int> saved;  // the devices to run, in the file's order
     for (int i = 0; i < all.size(); ++i) {
         const MachineDevice& device = all.at(i);
         if (!only.isEmpty() && !only.contains(device.name)) continue;
-        if (!stillSaved(folder->entries.value(device.name), dir) ||
-            !CommandRegistry::instance().machineVerbs(device.family)) {
+        const ManifestEntry* entry = folder.manifest.entry(device.name);
+        if (!entry || !stillSaved(*entry, folder.dir)) {
             outcomes[size_t(i)] = {
                 ExitInvalidData,
                 QStringLiteral("%1: not in the backup or its file changed since").arg(device.name)};
@@ -364,19 +270,13 @@ int forEachSaved(const QString& dir, const QStringList& only, const QStringList&
         }
         saved << i;
     }
-    runDevicesByPort(folder->setup.options, saved, [&](int i) {
+    runDevicesByPort(folder.setup.options, saved, [&](int i) {
         const MachineDevice& device = all.at(i);
-        CliSession session(folder->setup.options.at(i));
+        CliSession session(folder.setup.options.at(i));
         printOut(
             QStringLiteral("== %1 (%2, %3)\n").arg(device.name, device.family, session.where()));
-        const QJsonObject entry = folder->entries.value(device.name);
-        const MachineVerbs& verbs = *CommandRegistry::instance().machineVerbs(device.family);
-        const bool accepted = replacements.contains(device.name);
-        QStringList words = verbs.*verb;
-        if (accepted && verb == &MachineVerbs::restore) words << verbs.replacement;
-        outcomes[size_t(i)] = runChecked(
-            session, device, entry, accepted, words,
-            QDir(dir).filePath(entry.value(QStringLiteral("file")).toString()), nothing, says);
+        outcomes[size_t(i)] =
+            work(session, *folder.manifest.entry(device.name), replacements.contains(device.name));
     });
     QStringList summary;
     QList<int> codes;
@@ -385,43 +285,225 @@ int forEachSaved(const QString& dir, const QStringList& only, const QStringList&
         summary << outcome.line;
         codes << outcome.code;
     }
-    printOut(QStringLiteral("%1:\n%2\n").arg(folder->setup.machine.machine, summary.join('\n')));
+    printOut(QStringLiteral("%1:\n%2\n").arg(folder.setup.machine.machine, summary.join('\n')));
     return exitFor(codes);
+}
+
+// A device not reached, or whose job failed: said, and its outcome.
+DeviceOutcome failedWith(const QString& name, const Error& error, const QString& what) {
+    reportError(error);
+    const int code = exitCodeFor(error.kind);
+    return {code, QStringLiteral("%1: %2 (%3)").arg(name, what, exitText(code))};
+}
+
+DeviceOutcome anotherDevice(const QString& name, const DeviceChecked& checked,
+                            const QString& nothing) {
+    sayAnotherDevice(name, checked.another, nothing);
+    return {ExitInvalidData, QStringLiteral("%1: ANOTHER DEVICE: %2").arg(name, checked.another)};
+}
+
+// Exit 1 when a device differs; a device not verified is worse.
+int verifyExit(const QList<int>& codes) {
+    int worst = ExitOk;
+    for (int code : codes)
+        if (code != ExitOk && code != ExitDevice) worst = code;
+    return worst != ExitOk ? worst : codes.contains(ExitDevice) ? ExitDevice : ExitOk;
+}
+
+// A safety copy gets the mode of the file it is a copy of.
+void sameModeAs(const QString& copy, const QString& original) {
+    if (QFileInfo::exists(copy) && QFileInfo::exists(original))
+        QFile::setPermissions(copy, QFile::permissions(original));
 }
 
 }  // namespace
 
 int runMachineVerify(const QString& dir, const QStringList& replacements) {
+    const Result<MachineFolder> folder = loadFolder(dir);
+    if (!folder) return reportError(folder.error());
     return forEachSaved(
-        dir, {}, replacements, &MachineVerbs::verify, QStringLiteral("It was not verified"),
-        [](int code) {
-            return code == ExitOk       ? QStringLiteral("equal")
-                   : code == ExitDevice ? QStringLiteral("DIFFERS")
-                                        : QStringLiteral("NOT VERIFIED (%1)").arg(exitText(code));
+        *folder, {}, replacements,
+        [&dir](CliSession& session, const ManifestEntry& entry, bool accepted) -> DeviceOutcome {
+            const Result<usecases::DeviceVerified> verified =
+                session.run<comm::DeviceConnection, usecases::DeviceVerified>(
+                    QStringLiteral("verify %1").arg(entry.name),
+                    [&](comm::DeviceConnection&, comm::JobContext& job) {
+                        return usecases::verifyMachineDevice(
+                            job, entry, dir,
+                            accepted ? ReplacementConsent::any() : ReplacementConsent{});
+                    });
+            if (!verified)
+                return failedWith(entry.name, verified.error(), QStringLiteral("NOT VERIFIED"));
+            if (!verified->checked.another.isEmpty())
+                return anotherDevice(entry.name, verified->checked,
+                                     QStringLiteral("It was not verified"));
+            printComparison(verified->comparison);
+            if (verified->comparison.equal())
+                return {ExitOk, QStringLiteral("%1: equal").arg(entry.name)};
+            return {ExitDevice, QStringLiteral("%1: DIFFERS (%2)")
+                                    .arg(entry.name)
+                                    .arg(verified->comparison.differences.size())};
         },
-        [](const QList<int>& codes) {
-            // Exit 1 when a device differs; a device not verified is worse.
-            int worst = ExitOk;
-            for (int code : codes)
-                if (code != ExitOk && code != ExitDevice) worst = code;
-            return worst != ExitOk ? worst : codes.contains(ExitDevice) ? ExitDevice : ExitOk;
-        });
+        verifyExit);
 }
 
-int runMachineRestore(const QString& dir, const QStringList& only,
-                      const QStringList& replacements) {
-    return forEachSaved(
-        dir, only, replacements, &MachineVerbs::restore,
-        QStringLiteral("Nothing was written to it"),
-        [](int code) {
-            return code == ExitOk ? QStringLiteral("restored")
-                                  : QStringLiteral("NOT RESTORED (%1)").arg(exitText(code));
+int runMachineRestore(const QString& dir, const MachineRun& run) {
+    const Result<MachineFolder> folder = loadFolder(dir);
+    if (!folder) return reportError(folder.error());
+    // The safety copies of this restore: a folder beside the backup's,
+    // made when the first device takes one.
+    const QString safetyDir = safetyFolderPath(dir, QDateTime::currentDateTimeUtc());
+    std::vector<std::optional<ManifestEntry>> copies(size_t(folder->setup.machine.devices.size()));
+    const int code = forEachSaved(
+        *folder, run.only, run.replacements,
+        [&](CliSession& session, const ManifestEntry& entry, bool accepted) -> DeviceOutcome {
+            usecases::RestoreRequest request;
+            if (accepted) request.replacement = ReplacementConsent::any();
+            request.safetyCopy = QDir(safetyDir).filePath(entry.file);
+            if (!run.planOnly && !QDir().mkpath(safetyDir))
+                return failedWith(
+                    entry.name,
+                    Error::communication(QStringLiteral("cannot make the folder %1 for the safety "
+                                                        "copies: nothing was written")
+                                             .arg(safetyDir)),
+                    QStringLiteral("NOT RESTORED"));
+            if (run.planOnly) {
+                const Result<usecases::DevicePlanned> planned =
+                    session.run<comm::DeviceConnection, usecases::DevicePlanned>(
+                        QStringLiteral("plan %1").arg(entry.name),
+                        [&](comm::DeviceConnection&, comm::JobContext& job) {
+                            return usecases::planMachineDevice(job, entry, dir, request);
+                        });
+                if (!planned)
+                    return failedWith(entry.name, planned.error(), QStringLiteral("NO PLAN"));
+                if (!planned->checked.another.isEmpty())
+                    return anotherDevice(entry.name, planned->checked,
+                                         QStringLiteral("Nothing would be written to it"));
+                QString text;
+                for (const QString& step : planned->plan.steps) text += step + QLatin1Char('\n');
+                for (const BackupDifference& change : planned->plan.changes)
+                    text += QStringLiteral("will write: %1\n").arg(change.line());
+                printOut(text);
+                return {ExitOk, QStringLiteral("%1: items to change: %2")
+                                    .arg(entry.name)
+                                    .arg(planned->plan.changes.size())};
+            }
+            const Result<usecases::DeviceRestored> restored =
+                session.run<comm::DeviceConnection, usecases::DeviceRestored>(
+                    QStringLiteral("restore %1").arg(entry.name),
+                    [&](comm::DeviceConnection&, comm::JobContext& job) {
+                        return usecases::restoreMachineDevice(job, entry, dir, request);
+                    });
+            if (!restored)
+                return failedWith(entry.name, restored.error(), QStringLiteral("NOT RESTORED"));
+            if (!restored->checked.another.isEmpty())
+                return anotherDevice(entry.name, restored->checked,
+                                     QStringLiteral("Nothing was written to it"));
+            const QString copy = restored->result.safetyCopy;
+            if (!copy.isEmpty()) {
+                sameModeAs(copy, QDir(dir).filePath(entry.file));
+                ManifestEntry copied = entry;
+                copied.file = QFileInfo(copy).fileName();
+                copied.incomplete.clear();
+                copied.identity = restored->checked.found.identity;
+                copied.device = restored->checked.found.text;
+                copied.summary = QStringLiteral("what the device held before the restore");
+                copied.sha256 = fileSha256(copy);
+                copied.time = QDateTime::currentDateTimeUtc();
+                copied.result = QStringLiteral("saved");
+                const QList<MachineDevice>& devices = folder->setup.machine.devices;
+                for (size_t i = 0; i < copies.size(); ++i)
+                    if (devices.at(qsizetype(i)).name == entry.name) copies[i] = copied;
+                printOut(QStringLiteral("safety copy of what %1 held: %2\n").arg(entry.name, copy));
+            }
+            const int tally = printOutcomeTally(restored->result.outcomes);
+            if (tally == ExitOk) return {ExitOk, QStringLiteral("%1: restored").arg(entry.name)};
+            return {tally,
+                    QStringLiteral("%1: NOT RESTORED (%2)").arg(entry.name, exitText(tally))};
         },
         [](const QList<int>& codes) {
             for (int code : codes)
                 if (code != ExitOk) return code;
             return int(ExitOk);
         });
+    // The safety folder is a backup folder of its own: `machine restore`
+    // takes it back.
+    MachineManifest safety;
+    safety.machine = folder->setup.machine.machine;
+    safety.author = run.author;
+    safety.started = QDateTime::currentDateTimeUtc();
+    safety.safetyCopyOf = QFileInfo(dir).absoluteFilePath();
+    for (const std::optional<ManifestEntry>& copy : copies)
+        if (copy) safety.devices << *copy;
+    if (safety.devices.isEmpty()) {
+        QDir().rmdir(safetyDir);  // made, but no family took a copy
+        return code;
+    }
+    const QString machine = QDir(safetyDir).filePath(kMachineBackupFile);
+    const QString manifestPath = QDir(safetyDir).filePath(kMachineManifestFile);
+    // Its machine file names the devices it holds a copy of.
+    MachineFile copied = folder->setup.machine;
+    copied.devices.erase(std::remove_if(copied.devices.begin(), copied.devices.end(),
+                                        [&safety](const MachineDevice& device) {
+                                            return !safety.entry(device.name);
+                                        }),
+                         copied.devices.end());
+    const Status written = writeFileAtomically(machine, machineFileJson(copied));
+    const Status listed =
+        written ? writeFileAtomically(manifestPath, manifestJson(safety)) : written;
+    if (!listed) {
+        printError(QStringLiteral("the safety copies in %1 are not listed: %2")
+                       .arg(safetyDir, listed.error().message));
+        return code;
+    }
+    sameModeAs(machine, QDir(dir).filePath(kMachineBackupFile));
+    sameModeAs(manifestPath, QDir(dir).filePath(kMachineManifestFile));
+    printOut(QStringLiteral("safety copies listed in %1\n").arg(manifestPath));
+    return code;
+}
+
+int runMachineDiff(const QString& first, const QString& second) {
+    const Result<MachineFolder> one = loadFolder(first);
+    if (!one) return reportError(one.error());
+    const Result<MachineFolder> two = loadFolder(second);
+    if (!two) return reportError(two.error());
+    QStringList summary;
+    int worst = ExitOk;
+    bool differs = false;
+    QStringList names;
+    for (const MachineDevice& device : one->setup.machine.devices) names << device.name;
+    for (const MachineDevice& device : two->setup.machine.devices)
+        if (!names.contains(device.name)) names << device.name;
+    for (const QString& name : names) {
+        const ManifestEntry* a = one->manifest.entry(name);
+        const ManifestEntry* b = two->manifest.entry(name);
+        if (!a || !b || !a->saved() || !b->saved()) {
+            summary << QStringLiteral("%1: not saved in %2")
+                           .arg(name, !a || !a->saved() ? first : second);
+            worst = ExitInvalidData;
+            continue;
+        }
+        const Result<BackupComparison> comparison =
+            usecases::diffMachineDevice(*a, first, *b, second);
+        if (!comparison) {
+            reportError(comparison.error());
+            summary << QStringLiteral("%1: NOT COMPARED (%2)")
+                           .arg(name, exitText(exitCodeFor(comparison.error().kind)));
+            worst = exitCodeFor(comparison.error().kind);
+            continue;
+        }
+        QString text;
+        for (const BackupDifference& difference : comparison->differences)
+            text += difference.line() + QLatin1Char('\n');
+        printOut(text);
+        differs = differs || !comparison->equal();
+        summary << (comparison->equal() ? QStringLiteral("%1: equal").arg(name)
+                                        : QStringLiteral("%1: DIFFERS (%2)")
+                                              .arg(name)
+                                              .arg(comparison->differences.size()));
+    }
+    printOut(QStringLiteral("%1:\n%2\n").arg(one->setup.machine.machine, summary.join('\n')));
+    return worst != ExitOk ? worst : differs ? ExitDevice : ExitOk;
 }
 
 }  // namespace cambench::cli

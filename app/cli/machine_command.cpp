@@ -11,8 +11,11 @@
 #include "machine_parallel.h"
 
 #include "comm/device/device_connection.h"
+#include "comm/usecases/machine_backup.h"
 #include "model/file_read.h"
 #include "model/machine/machine_file.h"
+
+#include "cambench_version.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -28,7 +31,7 @@ struct DeviceStatus {
     QString name;
     QString family;
     QString where;
-    Result<MachineDeviceIdentity> identity = MachineDeviceIdentity{};
+    Result<usecases::DeviceAnswer> identity = usecases::DeviceAnswer{};
     // "another device answers: expected ..., found ..." when the file
     // records another identity than the one that answered.
     QString another;
@@ -51,7 +54,11 @@ DeviceStatus statusOf(const MachineDevice& device, const GlobalOptions& options)
     status.name = device.name;
     status.family = device.family;
     status.where = session.where();
-    status.identity = identifyMachineDevice(session, device.name);
+    status.identity = session.run<comm::DeviceConnection, usecases::DeviceAnswer>(
+        QStringLiteral("identify %1").arg(device.name),
+        [](comm::DeviceConnection& connection, comm::JobContext&) {
+            return usecases::whoAnswers(connection);
+        });
     if (status.identity && device.identity.known() && status.identity->identity != device.identity)
         status.another = anotherDeviceText(device.identity, status.identity->identity);
     return status;
@@ -81,18 +88,6 @@ QJsonObject statusJson(const DeviceStatus& status) {
 }
 
 }  // namespace
-
-Result<MachineDeviceIdentity> identifyMachineDevice(CliSession& session, const QString& name) {
-    return session.run<comm::DeviceConnection, MachineDeviceIdentity>(
-        QStringLiteral("identify %1").arg(name),
-        [](comm::DeviceConnection& connection, comm::JobContext&) -> Result<MachineDeviceIdentity> {
-            const Result<QString> text = connection.identify();
-            if (!text) return text.error();
-            const Result<DeviceIdentity> identity = connection.readIdentity();
-            if (!identity) return identity.error();
-            return MachineDeviceIdentity{*text, *identity};
-        });
-}
 
 Status checkDeviceNames(const MachineFile& machine, const QStringList& names,
                         const QString& option) {
@@ -149,54 +144,89 @@ int runMachineStatus(const MachineSetup& setup, bool json) {
     return !allAnswered ? ExitCommunication : anyOther ? ExitInvalidData : ExitOk;
 }
 
+namespace {
+
+// --operator NAME (default: the login name) and -m NOTE, with this build's
+// version and revision.
+Result<BackupAuthor> takeAuthor(CommandArgs& args) {
+    const Result<QString> operatorName = args.takeOption(QStringLiteral("--operator"));
+    if (!operatorName) return operatorName.error();
+    const Result<QString> note = args.takeOption(QStringLiteral("--message"), QStringLiteral("-m"));
+    if (!note) return note.error();
+    return BackupAuthor{operatorName->isEmpty() ? loginName() : *operatorName, *note,
+                        QStringLiteral(CAMBENCH_VERSION_NUMBER), QStringLiteral(CAMBENCH_REVISION)};
+}
+
+QStringList namesOf(const QString& list) {
+    return list.split(QLatin1Char(','), Qt::SkipEmptyParts);
+}
+
+}  // namespace
+
 int runMachine(CliSession&, CommandArgs& args) {
-    const Result<QString> verb =
-        takeVerb(args, {QStringLiteral("status"), QStringLiteral("backup"),
-                        QStringLiteral("verify"), QStringLiteral("restore")});
+    const Result<QString> verb = takeVerb(
+        args, {QStringLiteral("status"), QStringLiteral("backup"), QStringLiteral("verify"),
+               QStringLiteral("restore"), QStringLiteral("diff")});
     if (!verb) return reportError(verb.error());
-    const bool onFolder = *verb == QLatin1String("verify") || *verb == QLatin1String("restore");
+    const auto is = [&verb](const char* name) { return *verb == QLatin1String(name); };
+    if (is("diff")) {
+        const Result<QString> first =
+            args.takeRequiredPositional(QStringLiteral("the first backup folder"));
+        if (!first) return reportError(first.error());
+        const Result<QString> second =
+            args.takeRequiredPositional(QStringLiteral("the second backup folder"));
+        if (!second) return reportError(second.error());
+        if (const Status done = args.finish(); !done) return reportError(done.error());
+        return runMachineDiff(*first, *second);
+    }
+    const bool onFolder = is("verify") || is("restore");
     const Result<QString> path =
         args.takeRequiredPositional(onFolder ? QStringLiteral("the machine's backup folder")
                                              : QStringLiteral("the machine file"));
     if (!path) return reportError(path.error());
-    const bool json = *verb == QLatin1String("status") && args.takeFlag(QStringLiteral("--json"));
-    const bool resume =
-        *verb == QLatin1String("backup") && args.takeFlag(QStringLiteral("--resume"));
-    Result<QString> dir = QString();
-    if (*verb == QLatin1String("backup")) {
-        dir = args.takeOption(QStringLiteral("--output"), QStringLiteral("-o"));
-        if (dir && dir->isEmpty())
-            dir = Error::usage(QStringLiteral("machine backup needs -o DIR, the folder to fill"));
+    const bool json = is("status") && args.takeFlag(QStringLiteral("--json"));
+    MachineRun run;
+    run.machinePath = *path;
+    run.resume = is("backup") && args.takeFlag(QStringLiteral("--resume"));
+    run.planOnly = is("restore") && args.takeFlag(QStringLiteral("--plan"));
+    if (is("backup")) {
+        const Result<QString> dir =
+            args.takeOption(QStringLiteral("--output"), QStringLiteral("-o"));
+        if (!dir) return reportError(dir.error());
+        if (dir->isEmpty())
+            return reportError(
+                Error::usage(QStringLiteral("machine backup needs -o DIR, the folder to fill")));
+        run.dir = *dir;
     }
-    if (!dir) return reportError(dir.error());
-    Result<QString> only = QString();
-    if (*verb == QLatin1String("restore")) only = args.takeOption(QStringLiteral("--only"));
-    if (!only) return reportError(only.error());
-    Result<QString> replacement = QString();
-    if (*verb != QLatin1String("status"))
-        replacement = args.takeOption(QStringLiteral("--replacement"));
-    if (!replacement) return reportError(replacement.error());
-    const QStringList replacements = replacement->split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (is("backup") || is("restore")) {
+        const Result<BackupAuthor> author = takeAuthor(args);
+        if (!author) return reportError(author.error());
+        run.author = *author;
+    }
+    if (is("restore")) {
+        const Result<QString> only = args.takeOption(QStringLiteral("--only"));
+        if (!only) return reportError(only.error());
+        run.only = namesOf(*only);
+    }
+    if (!is("status")) {
+        const Result<QString> replacement = args.takeOption(QStringLiteral("--replacement"));
+        if (!replacement) return reportError(replacement.error());
+        run.replacements = namesOf(*replacement);
+    }
     if (const Status done = args.finish(); !done) return reportError(done.error());
 
-    if (onFolder) {
-        return *verb == QLatin1String("verify")
-                   ? runMachineVerify(*path, replacements)
-                   : runMachineRestore(*path, only->split(QLatin1Char(','), Qt::SkipEmptyParts),
-                                       replacements);
-    }
+    if (is("verify")) return runMachineVerify(*path, run.replacements);
+    if (is("restore")) return runMachineRestore(*path, run);
     const Result<QByteArray> bytes = readFileBytes(*path);
     if (!bytes) return reportError(bytes.error());
     // Every device's options are checked before the first device is asked.
     const Result<MachineSetup> setup = loadMachine(*bytes, *path);
     if (!setup) return reportError(setup.error());
     if (const Status names =
-            checkDeviceNames(setup->machine, replacements, QStringLiteral("--replacement"));
+            checkDeviceNames(setup->machine, run.replacements, QStringLiteral("--replacement"));
         !names)
         return reportError(names.error());
-    return *verb == QLatin1String("status")
-               ? runMachineStatus(*setup, json)
-               : runMachineBackup(*setup, *path, *dir, resume, replacements);
+    return is("status") ? runMachineStatus(*setup, json) : runMachineBackup(*setup, run);
 }
 
 }  // namespace cambench::cli

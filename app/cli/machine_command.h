@@ -3,6 +3,7 @@
 #include "cli_options.h"
 #include "cli_session.h"
 
+#include "model/machine/machine_backup_folder.h"
 #include "model/machine/machine_file.h"
 
 #include <QByteArray>
@@ -23,28 +24,33 @@ struct MachineSetup {
 // (a wrong family, a protocol of another family) is refused naming it.
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where);
 
-// Who the device on `session` is: its family's identify() for a person and
-// its identity (DeviceConnection::readIdentity) to compare, for status,
-// the backup's manifest, verify and restore alike.
-struct MachineDeviceIdentity {
-    QString text;
-    DeviceIdentity identity;
-};
-Result<MachineDeviceIdentity> identifyMachineDevice(CliSession& session, const QString& name);
-
 // The devices `names` (--replacement a,b) are: refused naming the one the
 // machine lacks.
 Status checkDeviceNames(const MachineFile& machine, const QStringList& names,
                         const QString& option);
 
-// machine status / backup / verify / restore; each returns the exit code.
-// `replacements`: the devices the person accepts in place of the ones
-// recorded (machine backup records their new identity; machine restore
-// writes their backup into them).
+// What a machine backup or restore was asked for on the command line.
+struct MachineRun {
+    QString machinePath;  // backup: the person's machine file (identities recorded there)
+    QString dir;          // backup: the folder to fill
+    bool resume = false;  // backup: keep the devices an earlier run saved
+    // The devices the person accepts in place of the ones recorded
+    // (machine backup records their new identity; machine restore writes
+    // their backup into them).
+    QStringList replacements;
+    QStringList only;       // restore: these devices only
+    bool planOnly = false;  // restore --plan: say what would be written, write nothing
+    BackupAuthor author;    // who, why, with what (--operator, -m, this build)
+};
+
+// machine status / backup / verify / restore / diff; each returns the
+// exit code.
 int runMachineStatus(const MachineSetup& setup, bool json);
-int runMachineBackup(const MachineSetup& setup, const QString& machinePath, const QString& dir,
-                     bool resume, const QStringList& replacements);
+int runMachineBackup(const MachineSetup& setup, const MachineRun& run);
 int runMachineVerify(const QString& dir, const QStringList& replacements);
-int runMachineRestore(const QString& dir, const QStringList& only, const QStringList& replacements);
+int runMachineRestore(const QString& dir, const MachineRun& run);
+// Two backup folders of the machine, device by device, no device asked:
+// exit 0 equal, 1 differ.
+int runMachineDiff(const QString& first, const QString& second);
 
 }  // namespace cambench::cli

@@ -10,6 +10,8 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/cli_output.cpp
   cli/outcome_output.h
   cli/outcome_output.cpp
+  cli/backup_output.h
+  cli/backup_output.cpp
   cli/progress_bar.h
   cli/progress_bar.cpp
   cli/traffic_log_file.h

@@ -4,6 +4,7 @@
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/simulator_registry.h"
 #include "comm/usecases/device_check.h"
+#include "comm/usecases/family_backup.h"
 
 #include <cstdio>
 
@@ -68,6 +69,7 @@ void registerFamily(const FamilyParts& parts) {
     if (parts.protocols) parts.protocols(comm::ProtocolRegistry::instance());
     if (parts.simulator) parts.simulator(comm::SimulatorRegistry::instance());
     if (parts.checks) parts.checks(usecases::CheckRegistry::instance());
+    if (parts.backup) parts.backup(usecases::BackupRegistry::instance());
     if (parts.gui) parts.gui();
     if (parts.cli) parts.cli();
 }

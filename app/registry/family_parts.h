@@ -18,6 +18,7 @@ class ProtocolRegistry;
 class SimulatorRegistry;
 }  // namespace comm
 namespace usecases {
+class BackupRegistry;
 class CheckRegistry;
 }  // namespace usecases
 
@@ -27,10 +28,6 @@ class CheckRegistry;
 // (tests/family/). Each part is a function that registers it in the
 // registry the shell reads it from. The GUI's and the CLI's part are null
 // in a program that does not link them (the GUI in cambench-cli).
-//
-// Not parts yet, because nothing registers them today: a family's file
-// formats and its backup/verify/restore use cases are called directly by
-// its own pages and commands (comm/<family>/usecases/, model/<family>/).
 struct FamilyParts {
     using Register = void (*)();
     FamilyParts() = default;
@@ -38,12 +35,14 @@ struct FamilyParts {
     FamilyParts(QString id, void (*family)(comm::FamilyRegistry&),
                 void (*protocols)(comm::ProtocolRegistry&),
                 void (*simulator)(comm::SimulatorRegistry&),
-                void (*checks)(usecases::CheckRegistry&), Register gui, Register cli)
+                void (*checks)(usecases::CheckRegistry&), void (*backup)(usecases::BackupRegistry&),
+                Register gui, Register cli)
         : id(std::move(id)),
           family(family),
           protocols(protocols),
           simulator(simulator),
           checks(checks),
+          backup(backup),
           gui(gui),
           cli(cli) {}
 
@@ -56,6 +55,12 @@ struct FamilyParts {
     void (*simulator)(comm::SimulatorRegistry& registry) = nullptr;
     // Its checks and their gate (cambench-cli check, Help -> Check this device).
     void (*checks)(usecases::CheckRegistry& registry) = nullptr;
+    // Its backup, verify, diff and restore of one device, typed
+    // (usecases::FamilyBackup, comm/usecases/family_backup.h): the
+    // single-device commands, the machine commands and the machine window
+    // call it. A family without one: a machine backup says "the xy family
+    // has no backup" for its devices.
+    void (*backup)(usecases::BackupRegistry& registry) = nullptr;
     // The GUI's part: its protocols' settings widgets (ProtocolWidgetRegistry)
     // and its FamilyGui (FamilyGuiRegistry).
     Register gui = nullptr;

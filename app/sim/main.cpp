@@ -76,7 +76,7 @@ QString deviceOptionOnCommandLine(const QCommandLineParser& parser) {
 
 void quietUnless(bool verbose) {
     QLoggingCategory::setFilterRules(
-        verbose ? QStringLiteral("cambench.comm.sim.debug=true")
+        verbose ? QStringLiteral("cambench.comm.sim.debug=true\ncambench.comm.sim.info=true")
                 : QStringLiteral("cambench.comm.sim.debug=false\ncambench.comm.sim.info=false"));
 }
 

@@ -1,5 +1,7 @@
 #include "mc1_address.h"
 
+#include "model/mc1/mc1_backup_file.h"
+
 #include <QRegularExpression>
 
 namespace cambench::comm {
@@ -148,9 +150,9 @@ quint8 mc1ExternalFlagPage(bool isMc200) {
 }
 
 Mc1Point mc1ExternalFlagAt(int index, bool isMc200) {
-    // MC100: M1–499 then M2000–3548 (the inverse of mc100() above).
-    if (isMc200 || index < 499) return {Mc1Area::Flag, index + 1};
-    return {Mc1Area::Flag, index + 1501};
+    // MC100: M1–499 then M2000–3548 (the inverse of mc100() above); the
+    // backup file names its flags the same way.
+    return {Mc1Area::Flag, mc1ExternalFlagNumber(index, isMc200)};
 }
 
 }  // namespace cambench::comm

@@ -10,4 +10,8 @@ target_sources(cambench_usecases PRIVATE
   detect_device.cpp
   device_check.h
   device_check.cpp
+  family_backup.h
+  family_backup.cpp
+  machine_backup.h
+  machine_backup.cpp
 )

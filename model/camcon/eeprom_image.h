@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QDateTime>
+#include <QJsonObject>
 #include <QList>
 
 namespace cambench {
@@ -24,6 +25,13 @@ struct EepromImage {
     QDateTime taken;      // UTC
     QString toolVersion;  // CamBench version that took it
     QList<EepromBlock> blocks;
+    // The same content decoded for a person (issue 36): the device's
+    // project as read alongside the blocks (programs, cams, dead times,
+    // names, settings, users without their numbers, PLC networks), a
+    // project file's object without its read times. Empty in an image of
+    // an older format or a safety backup. Never restored: a restore writes
+    // the blocks.
+    QJsonObject content;
 
     int totalBytes() const;
 };

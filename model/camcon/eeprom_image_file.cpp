@@ -5,6 +5,7 @@
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
+#include "model/readable_json.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -153,8 +154,9 @@ QByteArray eepromImageToJson(const EepromImage& image) {
                                   {key("data"), QString::fromLatin1(block.data.toHex())}});
     }
     root.insert(key("blocks"), blocks);
+    if (!image.content.isEmpty()) root.insert(key("content"), image.content);
     sealWithHash(root);
-    return toIndentedJson(root);
+    return toReadableJson(root);
 }
 
 Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
@@ -178,6 +180,7 @@ Result<EepromImage> eepromImageFromJson(const QByteArray& bytes) {
                                        QCoreApplication::translate("cambench::model", "tool"));
     image.toolVersion = tool.startsWith(kToolPrefix) ? tool.mid(kToolPrefix.size()) : tool;
     image.blocks = readBlocks(reader, reader.array(root, {}, key("blocks")));
+    if (root.contains(key("content"))) image.content = reader.object(root, {}, key("content"));
     if (reader.failed()) return Error::invalidData(reader.problem() + QLatin1Char('.'));
     const Status blocks = checkImageBlocks(image.blocks);
     if (!blocks) return blocks.error();

@@ -11,7 +11,9 @@
 
 namespace cambench {
 
-constexpr int kEepromImageFormatVersion = 1;
+// 2: the content decoded beside the blocks, one item a line; version 1
+// images (the blocks alone) still load and restore byte for byte.
+constexpr int kEepromImageFormatVersion = 2;
 // Block 0000 is the basic-parameter block (notes 6).
 constexpr int kEepromBasicBlockBytes = 128;
 
@@ -28,10 +30,12 @@ Status checkImageBlocks(const QList<EepromBlock>& blocks);
 // replaces that one.
 QStringList identityMismatch(const DeviceInfo& image, const DeviceInfo& device);
 
-// {"format":"cambench-eeprom-image","version":1,"device":{...},"taken":ISO UTC,
+// {"format":"cambench-eeprom-image","version":2,"device":{...},"taken":ISO UTC,
 //  "tool":"CamBench x.y.z","blocks":[{"number":0,"data":"<hex>"},...],
-//  "sha256":"<hex>"}, where sha256 is taken over the compact JSON of the same
-// object without "sha256".
+//  "content":{...a project...},"sha256":"<hex>"}, where sha256 is taken over
+// the compact JSON of the same object without "sha256" (so the content
+// cannot be edited unnoticed either). One item a line (toReadableJson): a
+// block, a cam track, a dead time, a setting.
 QByteArray eepromImageToJson(const EepromImage& image);
 // Checks format, version, the hash (a mismatch means the file was changed
 // or damaged), the device, and the blocks (checkImageBlocks).

@@ -23,6 +23,8 @@ target_sources(cambench_model PRIVATE
   camcon/eeprom_image.cpp
   camcon/system_settings.h
   camcon/system_settings.cpp
+  camcon/link_settings.h
+  camcon/link_settings.cpp
   camcon/settings_validation.cpp
   camcon/cam_validation.h
   camcon/cam_validation.cpp
@@ -40,6 +42,8 @@ target_sources(cambench_model PRIVATE
   camcon/project_file.cpp
   camcon/eeprom_image_file.h
   camcon/eeprom_image_file.cpp
+  camcon/project_content.h
+  camcon/project_content.cpp
   camcon/csv_io.h
   camcon/csv_io.cpp
   camcon/settings_file.h

@@ -4,10 +4,10 @@
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
+#include "model/readable_json.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
-#include <QRegularExpression>
 #include <QSet>
 
 #include <algorithm>
@@ -51,7 +51,8 @@ QByteArray compax3ParametersToJson(const Compax3ParameterSet& set) {
                      [](const auto& a, const auto& b) { return a.id < b.id; });
     QJsonArray objects;
     for (const Compax3ParameterValue& value : values)
-        objects.append(QJsonArray{value.id.text(), value.value});
+        objects.append(value.name.isEmpty() ? QJsonArray{value.id.text(), value.value}
+                                            : QJsonArray{value.id.text(), value.value, value.name});
     root.insert(key("objects"), objects);
     if (!set.absent.isEmpty()) {
         QList<Compax3ObjectId> absent = set.absent;
@@ -62,10 +63,7 @@ QByteArray compax3ParametersToJson(const Compax3ParameterSet& set) {
     }
     sealWithHash(root);
     // One object a line: a diff of two files shows the objects that differ.
-    QByteArray json = toIndentedJson(root);
-    static const QRegularExpression pair(
-        QStringLiteral("\\[\\s*(\"[^\"\\n]*\"),\\s*(\"(?:[^\"\\\\\\n]|\\\\.)*\")\\s*\\]"));
-    return QString::fromUtf8(json).replace(pair, QStringLiteral("[\\1, \\2]")).toUtf8();
+    return toReadableJson(root);
 }
 
 Result<Compax3ParameterSet> compax3ParametersFromJson(const QByteArray& bytes) {
@@ -93,9 +91,10 @@ Result<Compax3ParameterSet> compax3ParametersFromJson(const QByteArray& bytes) {
     for (int i = 0; i < objects.size() && !reader.failed(); ++i) {
         const QString path = JsonReader::element(key("objects"), i);
         const QJsonArray pair = objects.at(i).toArray();
-        if (pair.size() != 2 || !pair.at(0).isString() || !pair.at(1).isString()) {
+        if (pair.size() < 2 || pair.size() > 3 || !pair.at(0).isString() ||
+            !pair.at(1).isString() || (pair.size() == 3 && !pair.at(2).isString())) {
             reader.fail(path, QCoreApplication::translate("cambench::model",
-                                                          "not a pair [\"object\", \"value\"]"));
+                                                          "not [\"object\", \"value\", \"name\"]"));
             break;
         }
         const Result<Compax3ObjectId> id = parseCompax3Object(pair.at(0).toString());
@@ -110,7 +109,7 @@ Result<Compax3ParameterSet> compax3ParametersFromJson(const QByteArray& bytes) {
             break;
         }
         seen.insert(*id);
-        set.values << Compax3ParameterValue{*id, pair.at(1).toString()};
+        set.values << Compax3ParameterValue{*id, pair.at(1).toString(), pair.at(2).toString()};
     }
     const QJsonArray absent = root.value(key("absent")).toArray();
     for (int i = 0; i < absent.size() && !reader.failed(); ++i) {

@@ -11,7 +11,9 @@
 
 namespace cambench {
 
-constexpr int kCompax3ParameterFormatVersion = 1;
+// 2: each object with its name (["1902.1", "200", "Set 1 velocity"]);
+// version 1 files (pairs) still load.
+constexpr int kCompax3ParameterFormatVersion = 2;
 
 // Which drive a parameter set was read from.
 struct Compax3Identity {
@@ -29,6 +31,10 @@ struct Compax3Identity {
 struct Compax3ParameterValue {
     Compax3ObjectId id;
     QString value;
+    // Its name in the dictionary the set was read with ("Set 1
+    // velocity"), for a person reading the file; empty when unknown.
+    // Never read back as a fact about the drive.
+    QString name = {};
 };
 
 // What `c3 backup` saves: the drive's identity and a list of objects, in
@@ -44,9 +50,9 @@ struct Compax3ParameterSet {
     QList<Compax3ObjectId> absent;
 };
 
-// {"format":"cambench-compax3-parameters","version":1,"family":"compax3",
+// {"format":"cambench-compax3-parameters","version":2,"family":"compax3",
 //  "drive":{"info":…,"serial":…,"type":…},"taken":ISO UTC,"tool":…,
-//  "objects":[["1901.1","100"],…],"absent":["1901.0",…],"sha256":…}
+//  "objects":[["1901.1","100","Set 1 target"],…],"absent":["1901.0",…],"sha256":…}
 // ("absent" only when the drive lacked objects): stable order (by object),
 // one object a line, so that two files diff cleanly.
 QByteArray compax3ParametersToJson(const Compax3ParameterSet& set);

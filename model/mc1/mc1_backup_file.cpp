@@ -4,6 +4,7 @@
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
+#include "model/readable_json.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -60,6 +61,34 @@ void readVariables(JsonReader& reader, const QJsonArray& array, Mc1Backup& backu
     }
 }
 
+// The flags one a line: each [name, 0 or 1] in bit order, the name the
+// flag's at that bit (a line moved or edited by hand is refused).
+QByteArray readFlags(JsonReader& reader, const QJsonArray& array, bool mc200) {
+    if (array.isEmpty()) return {};
+    if (array.size() != kPageBytes * 8) {
+        reader.fail(key("flags"),
+                    QCoreApplication::translate("cambench::model", "%1 flags, not the page's %2")
+                        .arg(array.size())
+                        .arg(kPageBytes * 8));
+        return {};
+    }
+    QByteArray page(kPageBytes, '\0');
+    for (int bit = 0; bit < array.size() && !reader.failed(); ++bit) {
+        const QString path = JsonReader::element(key("flags"), bit);
+        const QJsonArray pair = reader.arrayValue(array.at(bit), path);
+        const QString name = QStringLiteral("M%1").arg(mc1ExternalFlagNumber(bit, mc200));
+        if (!reader.failed() && (pair.size() != 2 || pair.at(0).toString() != name))
+            reader.fail(
+                path,
+                QCoreApplication::translate("cambench::model", "not [\"%1\", 0 or 1]").arg(name));
+        const qint64 on =
+            reader.integerValue(pair.at(1), JsonReader::element(path, 1),
+                                QCoreApplication::translate("cambench::model", "flag"), 0, 1);
+        if (on) page[bit >> 3] = char(quint8(page.at(bit >> 3)) | (1u << (bit & 7)));
+    }
+    return page;
+}
+
 void readMemory(JsonReader& reader, const QJsonArray& array, Mc1Backup& backup) {
     int end = -1;
     for (int i = 0; i < array.size() && !reader.failed(); ++i) {
@@ -91,6 +120,11 @@ void readMemory(JsonReader& reader, const QJsonArray& array, Mc1Backup& backup) 
 
 }  // namespace
 
+int mc1ExternalFlagNumber(int index, bool mc200) {
+    // MC100: M1–499 then M2000–3548 (tables 47 and 48).
+    return mc200 || index < 499 ? index + 1 : index + 1501;
+}
+
 QByteArray mc1BackupToJson(const Mc1Backup& backup) {
     QJsonObject root = jsonFileHeader(kBackupFile);
     root.insert(key("variant"), backup.variant);
@@ -102,14 +136,19 @@ QByteArray mc1BackupToJson(const Mc1Backup& backup) {
         variables.append(QJsonArray{it.key(), it.value()});
     root.insert(key("variables"), variables);
     root.insert(key("flagPage"), backup.flagPage);
-    root.insert(key("flags"), QString::fromLatin1(backup.flags.toHex()));
+    QJsonArray flags;
+    for (int bit = 0; bit < backup.flags.size() * 8; ++bit)
+        flags.append(
+            QJsonArray{QStringLiteral("M%1").arg(mc1ExternalFlagNumber(bit, backup.mc200())),
+                       (quint8(backup.flags.at(bit >> 3)) >> (bit & 7)) & 1});
+    root.insert(key("flags"), flags);
     QJsonArray memory;
     for (const Mc1MemoryRange& range : backup.memory)
         memory.append(QJsonObject{{key("address"), range.address},
                                   {key("data"), QString::fromLatin1(range.data.toHex())}});
     root.insert(key("memory"), memory);
     sealWithHash(root);
-    return toIndentedJson(root);
+    return toReadableJson(root);
 }
 
 Result<Mc1Backup> mc1BackupFromJson(const QByteArray& bytes) {
@@ -148,10 +187,13 @@ Result<Mc1Backup> mc1BackupFromJson(const QByteArray& bytes) {
     backup.flagPage =
         int(reader.integer(root, {}, key("flagPage"),
                            QCoreApplication::translate("cambench::model", "flag page"), 0, 255));
-    backup.flags = fromHex(reader,
-                           reader.string(root, {}, key("flags"),
-                                         QCoreApplication::translate("cambench::model", "flags")),
-                           key("flags"));
+    backup.flags =
+        root.value(key("flags")).isArray()
+            ? readFlags(reader, root.value(key("flags")).toArray(), backup.mc200())
+            : fromHex(reader,
+                      reader.string(root, {}, key("flags"),
+                                    QCoreApplication::translate("cambench::model", "flags")),
+                      key("flags"));
     if (!reader.failed() && !backup.flags.isEmpty() && backup.flags.size() != kPageBytes)
         reader.fail(key("flags"),
                     QCoreApplication::translate("cambench::model", "%1 bytes, not the page's %2")

@@ -11,7 +11,14 @@
 
 namespace cambench {
 
-constexpr int kMc1BackupFormatVersion = 1;
+// 2: the flags one a line (["M12", 1]); version 1 files (the page as
+// one hex string) still load.
+constexpr int kMc1BackupFormatVersion = 2;
+
+// The number of the flag at bit `index` of the external flag page (bit 0
+// of byte 0 first): M1–M2048 on an MC200; M1–M499, then M2000–M3548 on an
+// MC100 (tables 47 and 48).
+int mc1ExternalFlagNumber(int index, bool mc200);
 
 // A range of an MC200's memory as it was read.
 struct Mc1MemoryRange {
@@ -37,12 +44,14 @@ struct Mc1Backup {
     bool mc200() const { return variant.startsWith(QLatin1String("mc200")); }
 };
 
-// {"format":"cambench-mc1-backup","version":1,"family":"mc1",
+// {"format":"cambench-mc1-backup","version":2,"family":"mc1",
 //  "variant":"mc200v2","identity":{"variant":"mc200v2","axes":…,…},
 //  "taken":ISO UTC,"tool":"CamBench x.y.z",
-//  "variables":[[1,-250],[2,-150],...],"flagPage":0,"flags":"<hex>",
+//  "variables":[[1,-250],[2,-150],...],"flagPage":0,
+//  "flags":[["M1",0],["M2",1],...] (every flag of the page, in bit order),
 //  "memory":[{"address":4096,"data":"<hex>"}],"sha256":"<hex>"}, sha256
-// over the compact JSON of the same object without "sha256".
+// over the compact JSON of the same object without "sha256". One item a
+// line (toReadableJson): two backups diff line by line.
 QByteArray mc1BackupToJson(const Mc1Backup& backup);
 // Checks format, version, family, the hash (a mismatch: changed or
 // damaged), the variant, the identity (optional: older backups lack it), every value against its

@@ -38,6 +38,9 @@ struct CliRun {
     bool finished = false;  // false: it had to be killed (hang)
     QString out;
     QString err;
+    // On a simulated Cam-BUS: the turns the simulated users waited for the
+    // PC in vain meanwhile, as the simulator logged them (empty: none).
+    QString busMisses;
 };
 
 // Runs cambench-cli with `args`, bounded by `timeoutMs` on a quiet machine

@@ -44,6 +44,9 @@ target_compile_definitions(tst_e2e_sim_machine PRIVATE
   CAMBENCH_DEMO_MACHINE="${PROJECT_SOURCE_DIR}/docs/demo-machine.json")
 # A CamCon, an MC200 and a Compax3 on three ptys, taken at once.
 cambench_add_e2e_test(tst_e2e_machine_families e2e/tst_e2e_machine_families.cpp)
+# Issue 36: backups a person reads, differences in each family's terms,
+# the manifest's who, why and with what, the safety copies beside.
+cambench_add_e2e_test(tst_e2e_machine_readable e2e/tst_e2e_machine_readable.cpp)
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
 # Every command line of README.md's code blocks, read from it when it runs.
 cambench_add_e2e_test(tst_e2e_readme e2e/tst_e2e_readme.cpp)

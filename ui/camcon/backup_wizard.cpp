@@ -293,7 +293,9 @@ void BackupWizard::runRestore() {
                         tr("Restore complete: %n block(s) written, 0 failed. The safety backup of "
                            "the previous content is %1.",
                            nullptr, report.blocks)
-                            .arg(report.safetyBackupPath));
+                                .arg(report.safetyBackupPath) +
+                            (report.linkNote.isEmpty() ? QString()
+                                                       : QLatin1Char(' ') + report.linkNote));
                     return;
                 case usecases::RestoredState::Unchanged:
                     finishWork(false, tr("Restore NOT done, the device is unchanged: %1")

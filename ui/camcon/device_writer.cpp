@@ -1,5 +1,6 @@
 #include "device_writer.h"
 #include "ui/camcon/camcon_jobs.h"
+#include "ui/camcon/link_settings_question.h"
 
 #include "ui/last_write_report.h"
 
@@ -12,6 +13,7 @@
 
 #include <QCoreApplication>
 #include <QSet>
+#include <QWidget>
 
 namespace cambench {
 
@@ -106,10 +108,12 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
                       const usecases::WriteReport& report) {
     const usecases::WritePlan& plan = planned.plan;
     CamDocument& cams = *workspace.cams();
-    for (const auto& outcome : report.settings) {
-        if (!outcome.actual) continue;
-        for (auto it = outcome.actual->cbegin(); it != outcome.actual->cend(); ++it)
-            workspace.settings().setDevice(it.key(), *it);
+    for (const auto* outcomes : {&report.settings, &report.linkSettings}) {
+        for (const auto& outcome : *outcomes) {
+            if (!outcome.actual) continue;
+            for (auto it = outcome.actual->cbegin(); it != outcome.actual->cend(); ++it)
+                workspace.settings().setDevice(it.key(), *it);
+        }
     }
     applyTracks(cams, planned, report);
     for (int i = 0; i < plan.deadTimes.size() && i < report.deadTimes.size(); ++i) {
@@ -138,7 +142,26 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
 quint64 writeToDevice(QObject* context, DeviceSession* session, Workspace* workspace,
                       const QList<WorkspaceItem>& items,
                       std::function<void(const WriteResult&)> done) {
-    const PlannedWrite planned = planForItems(*workspace, items);
+    PlannedWrite planned = planForItems(*workspace, items);
+    // Communication settings among the values (a project's, another
+    // device's): asked for by name, or left out (issue 39).
+    SystemSettings wanted;
+    for (const usecases::SettingsWrite& group : planned.plan.settings) wanted.insert(group.wanted);
+    const SystemSettings onDevice = workspace->settings().device();
+    if (const SystemSettings link = linkSettingsToAsk(wanted, onDevice); !link.isEmpty()) {
+        const std::optional<QStringList> asked =
+            askLinkSettings(qobject_cast<QWidget*>(context), link, onDevice);
+        if (!asked) {
+            if (done)
+                done(Error{
+                    ErrorKind::Cancelled,
+                    QCoreApplication::translate("cambench::DeviceWriter",
+                                                "Nothing was written: the write was cancelled."),
+                    0});
+            return 0;
+        }
+        planned.plan.linkSettingsAsked = *asked;
+    }
     const usecases::WritePlan plan = planned.plan;
     // The plan leaves out what the device copies say the device already
     // holds: it may only go to the device those copies were read from.
@@ -191,6 +214,8 @@ QString writeDetails(const WriteResult& result) {
 
 void presentWriteResult(QWidget* parent, DeviceSession* session, const QString& title,
                         const WriteResult& result) {
+    // The person cancelled before anything was sent: nothing to report.
+    if (!result && result.error().kind == ErrorKind::Cancelled) return;
     const bool complete = result && result->complete();
     // The device's own: in a machine, another device's window never shows it.
     session->lastWriteReport().record(title, writeSummary(result), writeDetails(result), complete);

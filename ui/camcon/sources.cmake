@@ -6,6 +6,8 @@ target_sources(cambench_ui PRIVATE
   camcon/workspace.h
   camcon/workspace.cpp
   camcon/workspace_item.h
+  camcon/link_settings_question.h
+  camcon/link_settings_question.cpp
   camcon/camcon_section_page.h
   camcon/camcon_section_page.cpp
   camcon/camcon_gui.h

@@ -18,11 +18,17 @@ QString camConHelp() {
         "                                   the table interface adds \",mode,on,off\"\n"
         "  names read [-o FILE] | names write FILE        CSV \"kind,number,name\" "
         "(output|program)\n"
-        "  settings read [-o FILE] | settings write FILE  JSON, system and encoder settings\n"
+        "  settings read [-o FILE] | settings write FILE [--communication-settings KEYS]\n"
+        "                                   JSON, system and encoder settings; the file's\n"
+        "                                   protocol and deviceNumber are left out unless KEYS\n"
+        "                                   names them (e.g. protocol,deviceNumber): they\n"
+        "                                   decide how the device is reached\n"
         "  users list                       names and rights, numbers masked\n"
         "  plc read [-o FILE] | plc write FILE            JSON\n"
         "  project read [-o FILE] [--with-user-numbers]   everything on the device as a project\n"
-        "  project write FILE               makes the device hold the project's contents\n"
+        "  project write FILE [--communication-settings KEYS]\n"
+        "                                   makes the device hold the project's contents\n"
+        "                                   (its communication settings only as KEYS names them)\n"
         "  diff A B [--program P [--program-b Q]] [--json]\n"
         "                                   the cams that differ between A and B (project or\n"
         "                                   CSV files, or device: needs --program), one a line;\n"
@@ -113,11 +119,6 @@ void registerCamConCommands(CommandRegistry& registry) {
                       lineCommands.contains(command) ? QStringLiteral("multiuser") : QString()});
     }
     registry.addHelp(family, camConHelp());
-    // A machine backup holds the CamCon's whole EEPROM image.
-    registry.setMachineVerbs(family, {{"backup", "-o", "{file}"},
-                                      {"verify", "{file}"},
-                                      {"restore", "{file}"},
-                                      {"--replacement"}});
 }
 
 }  // namespace cambench::cli

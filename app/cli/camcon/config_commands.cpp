@@ -55,19 +55,23 @@ int readSettings(CliSession& session, CommandArgs& args) {
 int writeSettings(CliSession& session, CommandArgs& args) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a JSON FILE"));
     if (!path) return reportError(path.error());
+    const Result<QStringList> link = takeCommunicationSettings(args);
+    if (!link) return reportError(link.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<SystemSettings> settings = loadSettingsFile(*path);
     if (!settings) return reportError(fileError(settings.error()));
     const SystemSettings wanted = *settings;
+    const QStringList asked = *link;
     // Read once; the same values serve as the device's for the write.
     return runWritePlan(
         session, QStringLiteral("settings write"),
-        [wanted](CamConDevice& device, const DeviceInfo&) -> Result<usecases::WritePlan> {
+        [wanted, asked](CamConDevice& device, const DeviceInfo&) -> Result<usecases::WritePlan> {
             Result<SystemSettings> onDevice = device.readSettings();
             if (!onDevice) return onDevice.error();
             usecases::WritePlan plan;
             plan.settings = usecases::settingsGroups(wanted);
             plan.settingsOnDevice = *onDevice;
+            plan.linkSettingsAsked = asked;
             return plan;
         });
 }

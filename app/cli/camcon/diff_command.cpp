@@ -9,7 +9,9 @@
 
 #include "comm/camcon/usecases/program_read.h"
 #include "model/camcon/csv_io.h"
+#include "model/camcon/eeprom_image_file.h"
 #include "model/camcon/program_diff.h"
+#include "model/camcon/project_content.h"
 #include "model/camcon/project_file.h"
 #include "model/file_differences.h"
 #include "model/file_read.h"
@@ -44,6 +46,26 @@ bool isCsv(const QString& path) {
     return QFileInfo(path).suffix().compare(QLatin1String("csv"), Qt::CaseInsensitive) == 0;
 }
 
+// A CamCon backup (an EEPROM image) rather than a project file.
+bool isBackup(const QString& path) {
+    const Result<QByteArray> bytes = readFileBytes(path);
+    return bytes && QJsonDocument::fromJson(*bytes).object().value(QStringLiteral("format")) ==
+                        QLatin1String("cambench-eeprom-image");
+}
+
+// The programs a backup holds decoded beside its blocks.
+Result<Project> backupProject(const QString& path) {
+    const Result<EepromImage> image = loadEepromImage(path);
+    if (!image) return image.error();
+    if (image->content.isEmpty())
+        return Error::invalidData(
+            QStringLiteral("%1 is a backup of the older format: its blocks are not decoded, so "
+                           "its cams cannot be compared. Compare it with the device (`verify "
+                           "%1`) or take a new backup")
+                .arg(path));
+    return projectFromContent(image->content, image->device);
+}
+
 Result<Side> loadFile(const QString& path, const QString& kindFrom) {
     Side side;
     side.label = path;
@@ -59,7 +81,7 @@ Result<Side> loadFile(const QString& path, const QString& kindFrom) {
         return side;
     }
     if (path == QLatin1String("/dev/null")) return side;
-    const Result<Project> project = loadProject(path);
+    const Result<Project> project = isBackup(path) ? backupProject(path) : loadProject(path);
     if (!project) return project.error();
     for (const CamProgram& program : project->programs)
         side.programs.insert(program.number, program);

@@ -1,5 +1,7 @@
-// backup, restore, verify: the whole EEPROM as an image file, on the
-// backup/restore use case (comm/usecases/backup_restore.h).
+// backup, restore, verify: the whole EEPROM as an image file with its
+// content decoded, on the backup/restore use case
+// (comm/camcon/usecases/backup_restore.h) and the CamCon's backup part.
+#include "app/cli/backup_output.h"
 #include "app/cli/camcon/camcon_commands.h"
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
@@ -60,6 +62,8 @@ int runRestore(CliSession& session, CommandArgs& args) {
             return usecases::restoreImage(device, blocks, file, options, UseCaseProgress::of(job));
         });
     if (!report) return reportError(report.error());
+    if (!report->linkNote.isEmpty() && report->state != usecases::RestoredState::Unchanged)
+        printError(QStringLiteral("note: %1").arg(report->linkNote));
     if (!report->safetyBackupPath.isEmpty()) {
         printError(QStringLiteral("safety backup of the device saved to %1")
                        .arg(report->safetyBackupPath));
@@ -74,21 +78,14 @@ int runRestore(CliSession& session, CommandArgs& args) {
     return ExitOk;
 }
 
+// Through the CamCon's backup part: the blocks compared, and where they
+// differ the content item by item ("program 2, output 9: cam 300–310
+// removed"), the same as `machine verify`.
 int runVerify(CliSession& session, CommandArgs& args) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("an image FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    const Result<EepromImage> image = loadEepromImage(*path);
-    if (!image) return reportError(image.error());
-    session.setShowProgress(true);
-    const EepromImage blocks = *image;
-    const Result<usecases::VerifyReport> report = runOnCamCon<usecases::VerifyReport>(
-        session, QStringLiteral("verify"), [blocks](CamConDevice& device, JobContext& job) {
-            return usecases::verifyImage(device, blocks, UseCaseProgress::of(job));
-        });
-    if (!report) return reportError(report.error());
-    printOut(report->text(*path) + QLatin1Char('\n'));
-    return report->equal ? ExitOk : ExitDevice;  // documented: verify exits 1 when it differs
+    return verifyWithPart(session, QStringLiteral("camcon"), *path);
 }
 
 }  // namespace cambench::cli

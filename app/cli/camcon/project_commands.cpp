@@ -51,13 +51,17 @@ int readProject(CliSession& session, CommandArgs& args) {
 int writeProject(CliSession& session, CommandArgs& args) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a project FILE"));
     if (!path) return reportError(path.error());
+    const Result<QStringList> link = takeCommunicationSettings(args);
+    if (!link) return reportError(link.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const Result<Project> wanted = loadProject(*path);
     if (!wanted) return reportError(wanted.error());
     const Project project = *wanted;
+    const QStringList asked = *link;
     return runWritePlan(
         session, QStringLiteral("project write"),
-        [project](CamConDevice& device, const DeviceInfo& info) -> Result<usecases::WritePlan> {
+        [project, asked](CamConDevice& device,
+                         const DeviceInfo& info) -> Result<usecases::WritePlan> {
             // What the plan needs to know of the device: its outputs (every
             // program of the project replaces the whole program), the
             // settings (written against them) and the users (matched by
@@ -75,7 +79,9 @@ int writeProject(CliSession& session, CommandArgs& args) {
                 onDevice.users = *users;
                 onDevice.readAt.parts.insert(ProjectPart::Users, QDateTime::currentDateTimeUtc());
             }
-            return usecases::planFromProject(project, onDevice);
+            usecases::WritePlan plan = usecases::planFromProject(project, onDevice);
+            plan.linkSettingsAsked = asked;
+            return plan;
         });
 }
 

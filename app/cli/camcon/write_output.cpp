@@ -3,6 +3,8 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 
+#include "model/camcon/link_settings.h"
+
 namespace cambench::cli {
 
 using comm::CamConDevice;
@@ -29,6 +31,24 @@ int runWritePlan(CliSession& session, const QString& title,
         });
     if (!report) return reportError(report.error());
     return printWriteReport(*report);
+}
+
+Result<QStringList> takeCommunicationSettings(CommandArgs& args) {
+    const Result<QString> option = args.takeOption(QStringLiteral("--communication-settings"));
+    if (!option) return option.error();
+    if (option->isEmpty()) return QStringList();
+    QStringList keys;
+    for (const QString& key : option->split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        if (!isLinkSetting(key.trimmed()))
+            return Error::usage(QStringLiteral("--communication-settings takes %1, not \"%2\"")
+                                    .arg(linkSettingKeys().join(QLatin1Char(',')), key));
+        keys << key.trimmed();
+    }
+    printError(QStringLiteral("note: %1 will be written last where the file's value differs from "
+                              "the device's; the next connection to the device then needs the new "
+                              "value (--protocol, --device)")
+                   .arg(keys.join(QLatin1String(", "))));
+    return keys;
 }
 
 int printWriteReport(const WriteReport& report) {

@@ -21,6 +21,13 @@ int runWritePlan(
 // The same for a plan made before any device work (from a file).
 int runWritePlan(CliSession& session, const QString& title, const usecases::WritePlan& plan);
 
+// --communication-settings KEYS of a write from a file (issue 39): the
+// communication settings (protocol, deviceNumber) the person names, to be
+// written; empty when not given. Names them on stderr with what the next
+// connection will need, before anything is sent. A key that is no
+// communication setting is a usage error that lists them.
+Result<QStringList> takeCommunicationSettings(CommandArgs& args);
+
 // `read [-o FILE]` of a section: runs `read` and writes `toText` of what it
 // returns to FILE or stdout.
 template <class T>

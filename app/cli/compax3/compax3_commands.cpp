@@ -117,11 +117,6 @@ void registerCompax3Commands(CommandRegistry& registry) {
     // runC3 takes it, wherever it stood on the line.
     registry.addOption({QStringLiteral("compax3"), QStringLiteral("--dictionary")});
     registry.addHelp(QStringLiteral("compax3"), compax3Help());
-    // The drive's parameter set.
-    registry.setMachineVerbs(QStringLiteral("compax3"), {{"c3", "backup", "-o", "{file}"},
-                                                         {"c3", "verify", "{file}"},
-                                                         {"c3", "restore", "{file}"},
-                                                         {"--replacement"}});
 }
 
 }  // namespace cambench::cli

@@ -2,6 +2,7 @@
 // (comm/compax3/usecases), the same the GUI runs.
 #include "compax3_commands.h"
 
+#include "app/cli/backup_output.h"
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 #include "app/cli/outcome_output.h"
@@ -76,38 +77,13 @@ int runCompax3Backup(CliSession& session, CommandArgs& args, const Compax3Dictio
     return ExitDevice;
 }
 
-int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictionary& dictionary) {
-    QString path;
-    const Result<Compax3ParameterSet> set = takeParameterFile(args, path);
-    if (!set) return reportError(set.error());
-    session.setShowProgress(true);
-    const Result<usecases::Compax3Comparison> comparison =
-        runOnCompax3<usecases::Compax3Comparison>(
-            session, QStringLiteral("c3 verify"),
-            [s = *set, dictionary](Compax3Device& device, JobContext& job) {
-                return usecases::compareCompax3Parameters(device, s, dictionary,
-                                                          UseCaseProgress::of(job));
-            });
-    if (!comparison) return reportError(comparison.error());
-    QString text;
-    for (const usecases::Compax3Refusal& ignored : comparison->ignored)
-        text += QStringLiteral("%1: not compared: %2\n").arg(ignored.id.text(), ignored.reason);
-    for (const usecases::Compax3Difference& difference : comparison->differences)
-        text += usecases::Compax3Comparison::lineFor(difference, dictionary) + QLatin1Char('\n');
-    const QString absent =
-        comparison->absentOnBoth == 0
-            ? QString()
-            : QStringLiteral("; %1 objects are not on this drive, nor on the file's")
-                  .arg(comparison->absentOnBoth);
-    text += comparison->differences.isEmpty()
-                ? QStringLiteral("equal: the drive holds all %1 values of %2%3\n")
-                      .arg(comparison->compared - comparison->absentOnBoth)
-                      .arg(path, absent)
-                : QStringLiteral("%1 differences in %2 objects compared\n")
-                      .arg(comparison->differences.size())
-                      .arg(comparison->compared);
-    printOut(text);
-    return comparison->differences.isEmpty() ? ExitOk : ExitDevice;
+// Through the Compax3's backup part, as `machine verify`: "1901.4 Set 4
+// target 400 → -7.5", with the dictionary the connection holds (--dictionary).
+int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictionary&) {
+    const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a parameter FILE"));
+    if (!path) return reportError(path.error());
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    return verifyWithPart(session, QStringLiteral("compax3"), *path);
 }
 
 int runCompax3Restore(CliSession& session, CommandArgs& args, const Compax3Dictionary& dictionary) {

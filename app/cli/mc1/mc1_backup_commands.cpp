@@ -2,6 +2,7 @@
 // (comm/mc1/usecases), the same the GUI runs.
 #include "mc1_commands.h"
 
+#include "app/cli/backup_output.h"
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
 #include "app/cli/outcome_output.h"
@@ -156,27 +157,12 @@ int runMc1Backup(CliSession& session, CommandArgs& args) {
     return ExitOk;
 }
 
+// Through the MC-1's backup part, as `machine verify`: "V12 -5 → 77".
 int runMc1Verify(CliSession& session, CommandArgs& args) {
-    QString path;
-    const Result<Mc1Backup> backup = takeBackupFile(args, path);
-    if (!backup) return reportError(backup.error());
-    session.setShowProgress(true);
-    const Result<usecases::Mc1VerifyReport> report = runOnMc1<usecases::Mc1VerifyReport>(
-        session, QStringLiteral("mc verify"), [b = *backup](Mc1Device& device, JobContext& job) {
-            return usecases::verifyMc1Backup(device, b, UseCaseProgress::of(job));
-        });
-    if (!report) return reportError(report.error());
-    QString text;
-    for (const QString& line : report->differences) text += line + QLatin1Char('\n');
-    text += report->differences.isEmpty()
-                ? QStringLiteral("equal: the controller holds all %1 values of %2\n")
-                      .arg(report->compared)
-                      .arg(path)
-                : QStringLiteral("%1 differences in %2 values compared\n")
-                      .arg(report->differences.size())
-                      .arg(report->compared);
-    printOut(text);
-    return report->differences.isEmpty() ? ExitOk : ExitDevice;
+    const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a backup FILE"));
+    if (!path) return reportError(path.error());
+    if (const Status done = args.finish(); !done) return reportError(done.error());
+    return verifyWithPart(session, QStringLiteral("mc1"), *path);
 }
 
 int runMc1Restore(CliSession& session, CommandArgs& args) {

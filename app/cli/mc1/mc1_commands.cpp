@@ -372,10 +372,6 @@ void registerMc1Commands(CommandRegistry& registry) {
     registry.addOption({QStringLiteral("mc1"), QStringLiteral("--axes")});
     registry.addOption({QStringLiteral("mc1"), QStringLiteral("--parameters")});
     registry.addHelp(QStringLiteral("mc1"), mc1Help());
-    registry.setMachineVerbs(QStringLiteral("mc1"), {{"mc", "backup", "-o", "{file}"},
-                                                     {"mc", "verify", "{file}"},
-                                                     {"mc", "restore", "{file}"},
-                                                     {"--replacement"}});
 }
 
 }  // namespace cambench::cli

@@ -8,6 +8,7 @@
 #include "comm/camcon/cambus/cambus_protocol.h"
 #include "comm/camcon/camcon_family.h"
 #include "comm/camcon/table/table_protocol.h"
+#include "comm/camcon/usecases/camcon_backup_part.h"
 #include "comm/camcon/usecases/camcon_check.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/camcon/camcon_simulator.h"
@@ -48,6 +49,7 @@ static void registerCamConProtocols(cambench::comm::ProtocolRegistry& protocols)
 cambench::FamilyParts cambench::camconParts() {
     return FamilyParts(QStringLiteral("camcon"), comm::registerCamConFamily,
                        registerCamConProtocols, comm::registerCamConSimulator,
-                       usecases::registerCamConCheck, CAMBENCH_GUI_PART(registerCamConGui),
+                       usecases::registerCamConCheck, usecases::registerCamConBackup,
+                       CAMBENCH_GUI_PART(registerCamConGui),
                        CAMBENCH_CLI_PART(cli::registerCamConCommands));
 }

@@ -6,6 +6,7 @@
 #include "app/cli/compax3/compax3_commands.h"
 #include "comm/compax3/compax3_family.h"
 #include "comm/compax3/compax3_protocol.h"
+#include "comm/compax3/usecases/compax3_backup_part.h"
 #include "comm/compax3/usecases/compax3_check.h"
 #include "comm/sim/compax3/compax3_simulator.h"
 
@@ -29,6 +30,7 @@ static void registerCompax3Gui() {
 cambench::FamilyParts cambench::compax3Parts() {
     return FamilyParts(QStringLiteral("compax3"), comm::registerCompax3Family,
                        comm::registerCompax3Protocol, comm::registerCompax3Simulator,
-                       usecases::registerCompax3Check, CAMBENCH_GUI_PART(registerCompax3Gui),
+                       usecases::registerCompax3Check, usecases::registerCompax3Backup,
+                       CAMBENCH_GUI_PART(registerCompax3Gui),
                        CAMBENCH_CLI_PART(cli::registerCompax3Commands));
 }

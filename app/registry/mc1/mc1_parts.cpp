@@ -6,6 +6,7 @@
 #include "app/cli/mc1/mc1_commands.h"
 #include "comm/mc1/mc1_family.h"
 #include "comm/mc1/mc1_protocol.h"
+#include "comm/mc1/usecases/mc1_backup_part.h"
 #include "comm/mc1/usecases/mc1_check.h"
 #include "comm/sim/mc1/mc1_simulator.h"
 
@@ -24,6 +25,6 @@ static void registerMc1Gui() {
 cambench::FamilyParts cambench::mc1Parts() {
     return FamilyParts(QStringLiteral("mc1"), comm::registerMc1Family, comm::registerMc1Protocol,
                        comm::registerMc1Simulator, usecases::registerMc1Check,
-                       CAMBENCH_GUI_PART(registerMc1Gui),
+                       usecases::registerMc1Backup, CAMBENCH_GUI_PART(registerMc1Gui),
                        CAMBENCH_CLI_PART(cli::registerMc1Commands));
 }

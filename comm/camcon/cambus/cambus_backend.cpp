@@ -98,6 +98,7 @@ BackendStep CamBusBackend::startAttempt(const Request& request, int attempt, qin
         return step;
     }
     station.resetJoinTries();
+    m_lateAtStart = station.view().lateAnswers;
     m_blockId = station.send(m_device, data);
     m_blockBytes = data.size() + kBlockOverhead - 2;
     m_turnLimit = nowMs + kTurnLimitMs;
@@ -126,7 +127,8 @@ BackendStep CamBusBackend::poll(qint64 nowMs) {
                 "adapter's latency timer should be 1 ms; or another user has number %2); the "
                 "request was not sent")
                 .arg(CamBusStation::kMaxJoinTries)
-                .arg(m_config.number);
+                .arg(m_config.number) +
+            latenessNote();
         return step;
     }
     if (m_blockId && m_turnLimit >= 0 && nowMs >= m_turnLimit) {
@@ -137,7 +139,7 @@ BackendStep CamBusBackend::poll(qint64 nowMs) {
         if (!station.cancel(*m_blockId)) return step;
         m_turnLimit = -1;
         m_blockId.reset();
-        step.linkFailure = noTurnMessage(full, station.view().users.isEmpty());
+        step.linkFailure = noTurnMessage(full, station.view().users.isEmpty()) + latenessNote();
     }
     return step;
 }
@@ -160,6 +162,18 @@ QString CamBusBackend::noTurnMessage(int fullQueueAnswers, bool silentBus) const
                                        "the PC (user %1) got no turn on the Cam-BUS in %2 s")
         .arg(m_config.number)
         .arg(seconds);
+}
+
+QString CamBusBackend::latenessNote() const {
+    const qint64 late = m_station ? m_station->view().lateAnswers - m_lateAtStart : 0;
+    if (late <= 0) return {};
+    return QCoreApplication::translate(
+               "cambench::comm",
+               "; the PC was too late to answer on the bus %n time(s) during this request (the "
+               "bus waits %1 ms for an answer: a USB adapter's latency timer should be 1 ms, "
+               "and a computer this busy is too slow for the bus)",
+               nullptr, int(std::min<qint64>(late, 1000000)))
+        .arg(m_config.answerMs);
 }
 
 qint64 CamBusBackend::nextTimerMs() const {
@@ -192,7 +206,8 @@ BackendStep CamBusBackend::collect(qint64 nowMs) {
                                        "it was not executed")
                                        .arg(delivery.destination)
                                        .arg(m_config.maxSilentTurns)
-                                       .arg(delivery.problem);
+                                       .arg(delivery.problem) +
+                                   latenessNote();
                 break;
             case CamBusStation::Delivery::Uncertain:
                 step.linkFailure = QCoreApplication::translate(
@@ -200,7 +215,8 @@ BackendStep CamBusBackend::collect(qint64 nowMs) {
                                        "the request went to device %1 but was not acknowledged "
                                        "(%2); it may have been executed")
                                        .arg(delivery.destination)
-                                       .arg(delivery.problem);
+                                       .arg(delivery.problem) +
+                                   latenessNote();
                 break;
         }
     }

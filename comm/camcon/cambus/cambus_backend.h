@@ -68,6 +68,9 @@ private:
     void publish(qint64 nowMs);
     // Why the request got no turn in time (the turn limit passed).
     QString noTurnMessage(int fullQueueAnswers, bool silentBus) const;
+    // Said after a failure when the PC was too late to answer meanwhile
+    // (empty when it kept the bus's timing).
+    QString latenessNote() const;
 
     int m_device;
     CamBusStationConfig m_config;
@@ -80,6 +83,7 @@ private:
     qint64 m_published = -1;
     qint64 m_lastOwnBlocks = 0;
     qint64 m_ownBytes = 0;
+    qint64 m_lateAtStart = 0;  // the station's late answers when the request started
     bool m_listenOnly = false;
     qint64 m_blockBytes = 0;  // wire bytes of the request's block in flight  // blocks the PC sent:
                               // a write with a new one is logged

@@ -88,14 +88,22 @@ bool CamBusStation::cancel(quint64 id) {
 
 void CamBusStation::feed(QByteArrayView encoded, qint64 nowMs) {
     m_pending += encoded.toByteArray();
-    for (const MarkedRead& read : takeBreakMarked(m_pending)) {
+    const QList<MarkedRead> reads = takeBreakMarked(m_pending);
+    for (qsizetype r = 0; r < reads.size(); ++r) {
+        const MarkedRead& read = reads.at(r);
         if (read.kind == MarkedRead::Break) {
             hearBreak(nowMs);
             continue;
         }
         if (nowMs < m_deafUntil) continue;
-        for (char c : read.data) hearByte(quint8(c), nowMs);
+        for (qsizetype i = 0; i < read.data.size(); ++i) {
+            // What came with this byte came after it: nobody waits for an
+            // answer to it any more (see lateToAnswer()).
+            m_lineWentOn = i + 1 < read.data.size() || r + 1 < reads.size();
+            hearByte(quint8(read.data.at(i)), nowMs);
+        }
     }
+    m_lineWentOn = false;
     poll(nowMs);
 }
 
@@ -111,7 +119,26 @@ void CamBusStation::write(const QByteArray& bytes, qint64 nowMs) {
 void CamBusStation::expectWithin(qint64 nowMs, int user) {
     const int ms =
         user >= 0 && m_config.answerMsFor ? m_config.answerMsFor(user) : m_config.answerMs;
-    m_deadline = std::max(nowMs, m_lineFreeAt) + ms;
+    m_awaitedSince = std::max(nowMs, m_lineFreeAt);
+    m_awaitedUser = user;
+    m_deadline = m_awaitedSince + ms;
+}
+
+bool CamBusStation::lateToAnswer() {
+    if (!m_lineWentOn) return false;
+    ++m_view.lateAnswers;
+    return true;
+}
+
+void CamBusStation::answered(qint64 nowMs, bool theAnswer) {
+    if (!m_answerObserver || m_awaitedUser < 0) return;
+    // Another byte instead: the awaited user let its turn go.
+    m_answerObserver(m_awaitedUser,
+                     theAnswer ? std::max<qint64>(0, nowMs - m_awaitedSince) : qint64(-1));
+}
+
+void CamBusStation::answerMissed() {
+    if (m_answerObserver && m_awaitedUser >= 0) m_answerObserver(m_awaitedUser, -1);
 }
 
 void CamBusStation::hearByte(quint8 byte, qint64 nowMs) {
@@ -153,6 +180,7 @@ void CamBusStation::hearByte(quint8 byte, qint64 nowMs) {
             return;
         case Phase::TxAnswer:
             m_view.users[m_tokenUser].answers = true;
+            answered(nowMs, byte == ack(m_tokenUser) || byte == nak(m_tokenUser));
             if (byte == ack(m_tokenUser)) {
                 m_phase = Phase::To;
                 expectWithin(nowMs, m_tokenUser);
@@ -172,15 +200,22 @@ void CamBusStation::hearByte(quint8 byte, qint64 nowMs) {
             m_destination = user;
             m_phase = Phase::RxAnswer;
             expectWithin(nowMs, m_destination);
-            if (user == number() && !m_silent)
+            if (user == number() && !m_silent && !lateToAnswer())
                 writeByte((!m_room || m_room()) ? ack(user) : nak(user), nowMs);
             return;
         case Phase::RxAnswer:
+            answered(nowMs, byte == ack(m_destination) || byte == nak(m_destination));
             if (byte == ack(m_destination)) {
                 m_phase = Phase::Block;
                 m_block.clear();
                 expectWithin(nowMs, m_tokenUser);
                 if (m_tokenUser == number() && !m_tx.empty()) {
+                    // Too late for the block: the turn has passed; it goes
+                    // at our next token (it did not leave).
+                    if (lateToAnswer()) {
+                        endTurn(nowMs);
+                        return;
+                    }
                     Outgoing& head = m_tx.front();
                     const Result<QByteArray> wire =
                         encodeCamBusBlock({head.data, m_sendBit[head.destination]});
@@ -196,16 +231,17 @@ void CamBusStation::hearByte(quint8 byte, qint64 nowMs) {
                 }
                 endTurn(nowMs);
             } else {
-                if (m_tokenUser == number())
-                    senderTurnFailed(QCoreApplication::translate("cambench::comm",
-                                                                 "user %1 answered its TO with %2")
-                                         .arg(m_destination)
-                                         .arg(byte, 2, 16, QLatin1Char('0')));
+                // Another user's byte instead of the answer to our TO: the
+                // others had gone on, our TO came too late. The turn was
+                // ours to lose, not the destination's silence (P9): the
+                // block goes at our next token (CB8).
+                if (m_tokenUser == number()) ++m_view.lateAnswers;
                 endTurn(nowMs);
                 hearByte(byte, nowMs);
             }
             return;
         case Phase::Block:
+            if (m_block.isEmpty()) answered(nowMs, true);
             m_block += char(byte);
             expectWithin(nowMs, m_tokenUser);
             if (quint8(m_block.at(0)) == 0) {
@@ -215,6 +251,7 @@ void CamBusStation::hearByte(quint8 byte, qint64 nowMs) {
             }
             return;
         case Phase::BlockAck:
+            answered(nowMs, byte == nak(m_destination));
             if (byte == nak(m_destination)) {
                 if (m_tokenUser == number() && !m_tx.empty())
                     finishHead(Delivery::Delivered, QString());
@@ -286,7 +323,7 @@ void CamBusStation::ridHeard(int user, qint64 nowMs) {
     m_ridUser = user;
     m_phase = Phase::RidAnswer;
     expectWithin(nowMs, user);
-    if (user == number() && !m_silent) {
+    if (user == number() && !m_silent && !lateToAnswer()) {
         m_joined = true;
         writeByte(ack(user), nowMs);
     }
@@ -330,7 +367,7 @@ void CamBusStation::tokenHeard(int user, qint64 nowMs) {
     if (user != number()) return;
     m_lastActivity = nowMs;
     m_joinTries = 0;  // in the table
-    if (m_silent) return;
+    if (m_silent || lateToAnswer()) return;
     if (m_config.joinBeforeFirstBlock && !m_joined && !m_tx.empty()) m_wantsBreakIn = true;
     if (maySend()) {
         QByteArray answer;
@@ -361,8 +398,11 @@ void CamBusStation::blockHeard(qint64 nowMs) {
         m_acceptedBit[source] = bit;
         m_received << Received{source, (*block)->data};
     }
-    // A repeat (its acknowledgement was lost) is acknowledged, not taken again.
-    writeByte(nak(number()), nowMs);
+    // A repeat (its acknowledgement was lost) is acknowledged, not taken
+    // again. Heard too late to acknowledge, the block is taken all the same:
+    // its sender repeats it at its next token, and the repeat is
+    // acknowledged.
+    if (!lateToAnswer()) writeByte(nak(number()), nowMs);
 }
 
 void CamBusStation::endTurn(qint64 nowMs) {
@@ -374,6 +414,7 @@ void CamBusStation::endTurn(qint64 nowMs) {
 }
 
 void CamBusStation::turnTimedOut(qint64 nowMs) {
+    if (m_phase != Phase::RidAnswer) answerMissed();
     switch (m_phase) {
         case Phase::TxAnswer:
             m_view.users[m_tokenUser].answers = false;

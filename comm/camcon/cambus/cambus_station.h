@@ -77,6 +77,14 @@ public:
     };
     QList<Delivery> takeDeliveries();
 
+    // Told of every answer this user waited for (to a DID, to a TO, the
+    // first byte of a block after the room answer, an acknowledgement): who
+    // owed it and how long after the byte it answers it came, or -1 when
+    // none came within T (or a block stopped for longer) and the turn
+    // ended. The simulator measures the PC's answers with it.
+    using AnswerObserver = std::function<void(int user, qint64 ms)>;
+    void setAnswerObserver(AnswerObserver observer) { m_answerObserver = std::move(observer); }
+
     // Receiving: whether the receive queue has room (P10; default: always).
     void setRoomCheck(std::function<bool()> room) { m_room = std::move(room); }
     struct Received {
@@ -132,6 +140,16 @@ private:
     void writeByte(quint8 byte, qint64 nowMs) { write(QByteArray(1, char(byte)), nowMs); }
     // The next byte is due from `user` (-1: an RID search, plain T).
     void expectWithin(qint64 nowMs, int user);
+    // True (and counted) when the byte being heard came together with bytes
+    // after it: the others did not wait for our answer, the line has gone
+    // on, and an answer now would fall into somebody else's turn. A late
+    // PC (a busy computer, a USB adapter's latency timer) then lets the turn
+    // go instead of garbling the next one.
+    bool lateToAnswer();
+    // The byte awaited since expectWithin() came at nowMs (false: another
+    // byte came instead).
+    void answered(qint64 nowMs, bool theAnswer);
+    void answerMissed();
     void tokenHeard(int user, qint64 nowMs);
     void blockHeard(qint64 nowMs);
     void endTurn(qint64 nowMs);
@@ -150,9 +168,12 @@ private:
     CamBusStationConfig m_config;
     bool m_silent = false;
     QByteArray m_out;
-    QByteArray m_pending;  // an undecoded FF at the end of the input
+    QByteArray m_pending;       // an undecoded FF at the end of the input
+    bool m_lineWentOn = false;  // the byte being heard has others after it (feed)
     Phase m_phase = Phase::Idle;
     qint64 m_deadline = -1;       // a turn's answer or gap is due by then
+    qint64 m_awaitedSince = -1;   // ... counted from then
+    int m_awaitedUser = -1;       // ... from this user
     qint64 m_lastActivity = 0;    // own token, last break, last RID heard, start
     qint64 m_masterWaitEnd = -1;  // after breaks: master if no RID heard by then
     qint64 m_masterNextAt = -1;   // master: next token or RID then
@@ -179,6 +200,7 @@ private:
     QList<Delivery> m_deliveries;
     QList<Received> m_received;
     std::function<bool()> m_room;
+    AnswerObserver m_answerObserver;
     CamBusView m_view;
 };
 

@@ -25,6 +25,10 @@ struct CamBusView {
     int master = -1;
     int initPhases = 0;  // heard since the start
     qint64 tokens = 0;   // tokens heard since the start
+    // Turns this user was too late for: it heard what it was to answer
+    // only with bytes after it (and let the turn go), or another user's
+    // byte came instead of the answer to its TO. Its answers do not keep T.
+    qint64 lateAnswers = 0;
     bool inInitPhase = false;
     qint64 nowMs = 0;  // when this was taken
 };

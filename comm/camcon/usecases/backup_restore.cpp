@@ -1,6 +1,10 @@
 #include "backup_restore.h"
 
+#include "read_everything.h"
+
 #include "model/camcon/eeprom_image_file.h"
+#include "model/camcon/link_settings.h"
+#include "model/camcon/project_content.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -19,7 +23,10 @@ QString hex4(int number) {
     return QStringLiteral("%1").arg(number, 4, 16, QLatin1Char('0')).toUpper();
 }
 
-QStringList differingBlocks(const QList<EepromBlock>& device, const QList<EepromBlock>& image) {
+}  // namespace
+
+QStringList differingEepromBlocks(const QList<EepromBlock>& device,
+                                  const QList<EepromBlock>& image) {
     QStringList differences;
     const int count = int(qMax(device.size(), image.size()));
     for (int i = 0; i < count && differences.size() < kListedBlocks; ++i) {
@@ -29,9 +36,31 @@ QStringList differingBlocks(const QList<EepromBlock>& device, const QList<Eeprom
     return differences;
 }
 
+namespace {
+
 Error withMessage(Error error, const QString& message) {
     error.message = message;
     return error;
+}
+
+SystemSettings linkOf(const DeviceInfo& device) {
+    return {{QStringLiteral("deviceNumber"), qint64(device.deviceNumber)},
+            {QStringLiteral("protocol"), qint64(device.protocol)}};
+}
+
+// Issue 39: an image is a byte image of the device it was taken from, its
+// communication settings included (the blocks are opaque: nothing can be
+// left out of them). A restore puts the device back as it was, those
+// settings too; when the device uses others now, the person must know that
+// the next connection needs the image's.
+QString linkNote(const DeviceInfo& image, const DeviceInfo& now) {
+    if (image.protocol == now.protocol && image.deviceNumber == now.deviceNumber) return {};
+    return QCoreApplication::translate(
+               "cambench::usecases",
+               "The image holds the communication settings the device had when it was taken, "
+               "%1 (it uses %2 now). A restore puts them back with everything else: the next "
+               "connection to the device needs %1.")
+        .arg(linkSettingsText(linkOf(image)), linkSettingsText(linkOf(now)));
 }
 
 }  // namespace
@@ -54,10 +83,19 @@ Result<EepromImage> backupDevice(CamConDevice& connection, const UseCaseProgress
 }
 
 Result<EepromImage> backupToFile(CamConDevice& connection, const QString& path,
-                                 const UseCaseProgress& progress) {
-    Result<EepromImage> image = backupDevice(connection, progress);
-    if (!image) return image.error();
-    const Status saved = saveEepromImage(path, *image);
+                                 const UseCaseProgress& progress, BackupContent content) {
+    const bool decoded = content == BackupContent::Decoded;
+    const Result<EepromImage> blocks =
+        backupDevice(connection, decoded ? progress.slice(0, 1, 2) : progress);
+    if (!blocks) return blocks.error();
+    EepromImage image = *blocks;
+    if (decoded) {
+        const Result<ReadEverything> read =
+            readEverything(connection, image.device, progress.slice(1, 1, 2));
+        if (!read) return read.error();
+        image.content = projectContentJson(read->project);
+    }
+    const Status saved = saveEepromImage(path, image);
     if (!saved) return saved.error();
     return image;
 }
@@ -87,6 +125,7 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
     }
     report.identityMismatch = identityMismatch(image.device, *device);
 
+    report.linkNote = linkNote(image.device, *device);
     const qint64 steps = options.safetyBackup ? 2 : 1;
     if (options.safetyBackup) {
         const QString path = options.safetyBackupPath.isEmpty()
@@ -101,7 +140,8 @@ RestoreReport restoreImage(CamConDevice& connection, const EepromImage& image,
                                 QCoreApplication::translate("cambench::usecases",
                                                             "step 1 of 2: safety backup"));
                 },
-                [progress] { return progress.cancelled(); }));
+                [progress] { return progress.cancelled(); }),
+            BackupContent::ImageOnly);
         if (!safety) {
             report.error = withMessage(
                 safety.error(),
@@ -175,7 +215,7 @@ Result<VerifyReport> verifyImage(CamConDevice& connection, const EepromImage& im
     VerifyReport report;
     report.deviceBlocks = int(device->blocks.size());
     report.imageBlocks = int(image.blocks.size());
-    report.differingBlocks = differingBlocks(device->blocks, image.blocks);
+    report.differingBlocks = differingEepromBlocks(device->blocks, image.blocks);
     report.identityMismatch = identityMismatch(image.device, device->device);
     report.equal = report.differingBlocks.isEmpty();
     return report;

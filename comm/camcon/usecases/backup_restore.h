@@ -30,9 +30,18 @@ QString safetyBackupPath(const QString& imagePath, const QDateTime& utc);
 // Reads the whole EEPROM (with the device's identity in image.device).
 Result<EepromImage> backupDevice(comm::CamConDevice& connection,
                                  const UseCaseProgress& progress = {});
+
+// What a backup holds besides the blocks.
+enum class BackupContent {
+    Decoded,    // the content read and decoded too (image.content): a backup a person reads
+    ImageOnly,  // the blocks alone: the safety backup just before a restore
+};
 // Backs up into `path` (atomically); the image is returned as saved.
+// Decoded: after the blocks, everything the device holds is read as a
+// project (readEverything) into image.content.
 Result<EepromImage> backupToFile(comm::CamConDevice& connection, const QString& path,
-                                 const UseCaseProgress& progress = {});
+                                 const UseCaseProgress& progress = {},
+                                 BackupContent content = BackupContent::Decoded);
 
 struct RestoreOptions {
     // The person's word that the device answering replaces the one the
@@ -53,7 +62,11 @@ struct RestoreReport {
     QString safetyBackupPath;      // where the safety backup is; empty when none was taken
     int blocks = 0;                // blocks of the image
     QStringList identityMismatch;  // differences the person accepted (a replacement)
-    Error error;                   // kind None when restored; the message says the device's state
+    // Set when the image's communication settings (protocol, device
+    // number) are not the device's now: the image puts back its own, and the
+    // next connection needs them (empty otherwise).
+    QString linkNote;
+    Error error;  // kind None when restored; the message says the device's state
     bool ok() const { return state == RestoredState::Restored; }
 };
 
@@ -72,6 +85,10 @@ struct VerifyReport {
     // "the device equals IMAGE (N blocks)" or what differs.
     QString text(const QString& imagePath) const;
 };
+
+// The numbers (4 hex digits) of the blocks where two images differ, the
+// first ten.
+QStringList differingEepromBlocks(const QList<EepromBlock>& a, const QList<EepromBlock>& b);
 
 // Reads the device's EEPROM and compares it with `image`.
 Result<VerifyReport> verifyImage(comm::CamConDevice& connection, const EepromImage& image,

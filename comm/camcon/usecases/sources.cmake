@@ -18,6 +18,8 @@ target_sources(cambench_usecases PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/program_read.cpp
   ${CMAKE_CURRENT_LIST_DIR}/backup_restore.h
   ${CMAKE_CURRENT_LIST_DIR}/backup_restore.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_backup_part.h
+  ${CMAKE_CURRENT_LIST_DIR}/camcon_backup_part.cpp
   ${CMAKE_CURRENT_LIST_DIR}/line_backup.h
   ${CMAKE_CURRENT_LIST_DIR}/line_backup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/short_coupling.h

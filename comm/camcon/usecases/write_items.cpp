@@ -7,6 +7,7 @@
 #include "value_text.h"
 
 #include "model/camcon/cam_validation.h"
+#include "model/camcon/link_settings.h"
 
 #include <functional>
 
@@ -98,18 +99,69 @@ void resolveUserNumbers(WritePlan& plan) {
     }
 }
 
+// The communication settings of a plan's settings groups, taken out of
+// them: those asked for by name, one group each in the order they are
+// sent, and the others, left out (only those that differ from the device's
+// are worth naming).
+struct LinkSettings {
+    QList<SettingsWrite> asked;
+    SystemSettings leftOut;
+};
+
+LinkSettings takeLinkSettings(WritePlan& plan) {
+    LinkSettings link;
+    SystemSettings asked;
+    QString group;
+    for (SettingsWrite& write : plan.settings) {
+        for (const QString& key : linkSettingKeys()) {
+            if (!write.wanted.contains(key)) continue;
+            const QVariant value = write.wanted.take(key);
+            group = write.group;
+            if (plan.linkSettingsAsked.contains(key)) {
+                asked.insert(key, value);
+                continue;
+            }
+            const bool same =
+                plan.settingsOnDevice && plan.settingsOnDevice->contains(key) &&
+                canonical(key, plan.settingsOnDevice->value(key)) == canonical(key, value);
+            if (!same) link.leftOut.insert(key, value);
+        }
+    }
+    plan.settings.removeIf([](const SettingsWrite& write) { return write.wanted.isEmpty(); });
+    for (const QString& key : linkSettingKeys()) {
+        if (asked.contains(key)) link.asked << SettingsWrite{group, {{key, asked.value(key)}}};
+    }
+    return link;
+}
+
+QString leftOutNote(const SystemSettings& leftOut, const SystemSettings& onDevice) {
+    SystemSettings device;
+    for (auto it = leftOut.cbegin(); it != leftOut.cend(); ++it) {
+        if (onDevice.contains(it.key())) device.insert(it.key(), onDevice.value(it.key()));
+    }
+    return QCoreApplication::translate(
+               "cambench::usecases",
+               "Communication settings left out: %1 (the device keeps %2). They decide how the "
+               "device is reached and are written only when asked for by name.")
+        .arg(linkSettingsText(leftOut),
+             device.isEmpty() ? QCoreApplication::translate("cambench::usecases", "its own")
+                              : linkSettingsText(device));
+}
+
 class Writer {
 public:
-    Writer(CamConDevice& connection, const WritePlan& plan, const UseCaseProgress& progress)
+    Writer(CamConDevice& connection, const WritePlan& plan, const LinkSettings& link,
+           const UseCaseProgress& progress)
         : m_connection(connection),
           m_plan(plan),
+          m_link(link),
           m_progress(progress),
           m_settings(plan.settingsOnDevice.value_or(SystemSettings())),
           m_users(plan.usersOnDevice.value_or(QList<User>())) {}
 
     WriteReport run() {
         WriteReport report;
-        m_total = m_plan.itemCount();
+        m_total = m_plan.itemCount() + m_link.asked.size();
         readEepromLockFirst();
         // An unlock first, so that everything after it is stored.
         report.eepromLockFirst = m_plan.eepromLock && !m_plan.eepromLock->wanted;
@@ -119,7 +171,8 @@ public:
             report.programNames << writeName(name, true);
         const std::optional<ProgrammingProgram> programming = programmingBeforeTracks();
         for (const TrackWrite& track : m_plan.tracks) report.tracks << writeTrack(track);
-        if (programming) setProgrammingProgramBack(*programming, report);
+        if (programming && setProgrammingProgramBack(*programming, report))
+            m_programmingAtStart = programming;
         fillDeadTimeBeliefs();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
             report.deadTimes << writeDeadTime(deadTime);
@@ -138,7 +191,12 @@ public:
         // A lock last, so that everything before it is stored first.
         if (m_plan.eepromLock && !report.eepromLockFirst)
             report.eepromLock = writeEepromLock(*m_plan.eepromLock);
+        // Last of all: after them this connection may not reach the device.
+        for (const SettingsWrite& link : m_link.asked) report.linkSettings << writeLink(link);
         if (const QString note = eepromNote(report); !note.isEmpty()) report.notes << note;
+        report.linkSettingsLeftOut = m_link.leftOut;
+        if (!m_link.leftOut.isEmpty()) report.notes << leftOutNote(m_link.leftOut, m_settings);
+        if (const QString note = linkWrittenNote(report); !note.isEmpty()) report.notes << note;
         m_progress.report(m_total, m_total,
                           QCoreApplication::translate("cambench::usecases", "written"));
         return report;
@@ -259,6 +317,41 @@ private:
         ops.text = settingsText;
         return writeItem<SystemSettings>(settingsLabel(group.group, group.wanted), group.wanted,
                                          onlyKeys(m_settings, keys), ops);
+    }
+
+    // A communication setting asked for by name. Once the device number is
+    // written, a bus protocol addresses the device by its new number.
+    ItemOutcome<SystemSettings> writeLink(const SettingsWrite& link) {
+        ItemOutcome<SystemSettings> outcome = writeSettings(link);
+        const QString key = link.wanted.firstKey();
+        if (key == QLatin1String("deviceNumber") && outcome.state == WriteState::Written)
+            m_connection.setDevice(int(link.wanted.first().toLongLong()));
+        return outcome;
+    }
+
+    // What the next connection needs once communication settings were
+    // written (or may have been).
+    static QString linkWrittenNote(const WriteReport& report) {
+        SystemSettings written;
+        bool uncertain = false;
+        for (const auto& outcome : report.linkSettings) {
+            if (outcome.state == WriteState::Written) {
+                for (auto it = outcome.actual->cbegin(); it != outcome.actual->cend(); ++it)
+                    written.insert(it.key(), *it);
+            }
+            uncertain = uncertain || outcome.state == WriteState::Unknown ||
+                        outcome.state == WriteState::ChangedThoughFailed;
+        }
+        if (written.isEmpty() && !uncertain) return {};
+        if (written.isEmpty())
+            return QCoreApplication::translate(
+                "cambench::usecases",
+                "Whether the communication settings changed is not known: if the next "
+                "connection fails, try the settings that were to be written.");
+        return QCoreApplication::translate("cambench::usecases",
+                                           "Communication settings written: the next connection "
+                                           "to this device needs %1.")
+            .arg(linkSettingsText(written));
     }
 
     // Program names (0-based) and output names (1-based) take the same course.
@@ -447,10 +540,13 @@ private:
         };
         ops.same = [](const ProgrammingProgram& a, const ProgrammingProgram& b) { return a == b; };
         ops.text = programmingProgramText;
-        // Writing cams selected their program: what the caller believed
-        // before is no longer the device's state.
+        // Reading and writing cams selected their programs; the programming
+        // program was set back to what it was before them, so an item the
+        // device held already is unchanged (issue 39: it was "written" on
+        // every write of an unchanged project). Without that, what the
+        // caller believed is no longer the device's state: read it.
         const std::optional<ProgrammingProgram> before =
-            m_plan.tracks.isEmpty() ? write.believed : std::nullopt;
+            m_plan.tracks.isEmpty() ? write.believed : m_programmingAtStart;
         return writeItem<ProgrammingProgram>(programmingProgramLabel(), write.wanted, before, ops);
     }
 
@@ -469,28 +565,31 @@ private:
                                m_lockedAtStart ? m_lockedAtStart : write.believed, ops);
     }
 
-    // Writing cams over the table interface selects their program as the
-    // programming program, which a PLC may be editing: unless the plan sets
-    // it, the write leaves it as it found it.
+    // Reading and writing cams over the table interface selects their
+    // program as the programming program, which a PLC may be editing: the
+    // write leaves it as it found it, and then writes the plan's item
+    // against that.
     std::optional<ProgrammingProgram> programmingBeforeTracks() {
-        if (m_plan.tracks.isEmpty() || m_plan.programmingProgram ||
-            !m_connection.has(CamConCapability::ProgrammingProgram))
+        if (m_plan.tracks.isEmpty() || !m_connection.has(CamConCapability::ProgrammingProgram))
             return std::nullopt;
         const Result<ProgrammingProgram> read = m_connection.readProgrammingProgram();
         return read ? std::optional<ProgrammingProgram>(*read) : std::nullopt;
     }
 
-    void setProgrammingProgramBack(const ProgrammingProgram& before, WriteReport& report) {
-        if (m_stop) return;
+    // True when the device holds `before` again.
+    bool setProgrammingProgramBack(const ProgrammingProgram& before, WriteReport& report) {
+        if (m_stop) return false;
         const Result<ProgrammingProgram> now = m_connection.readProgrammingProgram();
-        if (now && *now == before) return;
+        if (now && *now == before) return true;
         const Status restored = m_connection.writeProgrammingProgram(before);
-        if (restored) return;
+        if (restored) return true;
+        if (m_plan.programmingProgram) return false;  // its item is read and written
         report.notes << QCoreApplication::translate(
                             "cambench::usecases",
                             "Writing the cams changed the programming program; setting it back "
                             "to %1 failed (%2): check it on the Programming program page.")
                             .arg(programmingProgramText(before), restored.error().message);
+        return false;
     }
 
     // Where the EEPROM can be locked, whether it is: with the lock on, what
@@ -590,6 +689,7 @@ private:
 
     CamConDevice& m_connection;
     const WritePlan& m_plan;
+    const LinkSettings& m_link;
     const UseCaseProgress& m_progress;
     SystemSettings m_settings;  // the device's settings as known now
     QList<User> m_users;        // the device's users as known now
@@ -598,8 +698,11 @@ private:
     std::optional<int> m_analogueOutputs;  // as the device says, read at the first analogue item
     bool m_lockQuestion = false;           // the protocol has the lock and items are written
     std::optional<bool> m_lockedAtStart;   // the EEPROM lock before the first item
-    QString m_lockError;                   // why the lock could not be read
-    std::optional<Error> m_stop;           // set: the remaining items are not sent
+    // The programming program before the cams were read and written, once
+    // it has been set back to it.
+    std::optional<ProgrammingProgram> m_programmingAtStart;
+    QString m_lockError;          // why the lock could not be read
+    std::optional<Error> m_stop;  // set: the remaining items are not sent
     qint64 m_done = 0;
     qint64 m_total = 0;
 };
@@ -640,16 +743,20 @@ Result<WriteReport> writeItems(CamConDevice& connection, const DeviceInfo& devic
         resolved.usersOnDevice = *users;
     }
     if (resolved.usersOnDevice) resolveUserNumbers(resolved);
+    const LinkSettings link = takeLinkSettings(resolved);
 
+    // Checked with the communication settings that will be written.
+    WritePlan checked = resolved;
+    checked.settings += link.asked;
     CheckContext context;
-    const SystemSettings after = settingsAfter(resolved);
+    const SystemSettings after = settingsAfter(checked);
     context.rotary = isRotaryAxis(after);
     context.plcNetworksPerArea = plcNetworkCounts(after);
     context.usersOnDevice = resolved.usersOnDevice.value_or(QList<User>());
-    const PlanCheck check = checkPlan(resolved, device, context);
+    const PlanCheck check = checkPlan(checked, device, context);
     if (!check.fits()) return check.refusal(device);
     if (progress.cancelled()) return Error::cancelled();
-    return Writer(connection, resolved, progress).run();
+    return Writer(connection, resolved, link, progress).run();
 }
 
 }  // namespace cambench::usecases

@@ -123,6 +123,16 @@ struct WritePlan {
     std::optional<SystemSettings> settingsOnDevice;
     std::optional<QList<User>> usersOnDevice;
 
+    // The communication settings (linkSettingKeys(): device number,
+    // protocol) the person asked for by name. Only these of the settings
+    // groups' communication settings are written, each on its own and last
+    // of all, even after an EEPROM lock (over this connection nothing may
+    // reach the device after them); every other one is left out and the
+    // report names it. A project, a settings file or another device's copy
+    // holds them as that device had them: written unasked, they would change
+    // how this device is reached (issue 39).
+    QStringList linkSettingsAsked;
+
     int itemCount() const;
     bool isEmpty() const { return itemCount() == 0; }
 };

@@ -24,6 +24,7 @@ QList<OutcomeLine> WriteReport::lines() const {
     add(analogueCams);
     addOne(programmingProgram);
     if (!unlockFirst) addOne(eepromLock);
+    add(linkSettings);
     return lines;
 }
 

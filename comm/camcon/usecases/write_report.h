@@ -18,6 +18,8 @@
 namespace cambench::usecases {
 
 struct WriteReport {
+    // The plan's settings groups without their communication settings
+    // (a group of nothing else is dropped).
     QList<ItemOutcome<SystemSettings>> settings;
     QList<ItemOutcome<QString>> programNames;
     QList<ItemOutcome<Track>> tracks;
@@ -32,6 +34,12 @@ struct WriteReport {
     std::optional<ItemOutcome<ProgrammingProgram>> programmingProgram;
     std::optional<ItemOutcome<bool>> eepromLock;
     bool eepromLockFirst = false;  // an unlock, written before every other item
+    // The communication settings asked for by name (WritePlan::
+    // linkSettingsAsked), one item each, written last.
+    QList<ItemOutcome<SystemSettings>> linkSettings;
+    // Those the plan held but nobody asked for, as the plan wanted them
+    // (only those that differ from the device's): not sent, named in notes.
+    SystemSettings linkSettingsLeftOut;
     // Things a person must know about the whole write, e.g. that the
     // device's EEPROM is locked and what was written lives in RAM only.
     QStringList notes;

@@ -82,7 +82,7 @@ Result<Compax3Backup> takeCompax3Parameters(Compax3Device& device,
         }
         const Result<QString> value = readAgreed(device, id);
         if (value)
-            backup.set.values << Compax3ParameterValue{id, *value};
+            backup.set.values << Compax3ParameterValue{id, *value, nameIn(dictionary, id)};
         else if (comm::compax3RefusalMeansAbsent(value.error(), device.dictionary().refusals()))
             backup.set.absent << id;
         else if (value.error().kind == ErrorKind::DeviceError)
@@ -343,10 +343,13 @@ OutcomeTally writeCompax3Objects(Compax3Device& device, const QList<Compax3Write
     return OutcomeTally(lines);
 }
 
-Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compax3ParameterSet& set,
-                                              const Compax3Dictionary& dictionary,
-                                              const Compax3RestoreOptions& options,
-                                              const UseCaseProgress& progress) {
+namespace {
+
+// The checks before the first byte: the drive's identity, its type, each
+// value; the writes they leave.
+Result<QList<Compax3Write>> checkedWrites(Compax3Device& device, const Compax3ParameterSet& set,
+                                          const Compax3Dictionary& dictionary,
+                                          const Compax3RestoreOptions& options) {
     const Result<Compax3Identity> identity = device.identity();
     if (!identity) return identity.error();
     if (const Status target = checkRestoreTarget(
@@ -354,13 +357,42 @@ Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compa
             QCoreApplication::translate("cambench::usecases", "The parameter set"));
         !target)
         return target.error();
-    QList<Compax3Write> writes;
-    {
-        const Result<QList<Compax3Write>> checked =
-            checkRestore(*identity, set, dictionary, options);
-        if (!checked) return checked.error();
-        writes = *checked;
+    return checkRestore(*identity, set, dictionary, options);
+}
+
+}  // namespace
+
+Result<QList<BackupDifference>> planCompax3Restore(Compax3Device& device,
+                                                   const Compax3ParameterSet& set,
+                                                   const Compax3Dictionary& dictionary,
+                                                   const Compax3RestoreOptions& options,
+                                                   const UseCaseProgress& progress) {
+    if (const Result<QList<Compax3Write>> checked = checkedWrites(device, set, dictionary, options);
+        !checked)
+        return checked.error();
+    const Result<Compax3Comparison> comparison =
+        compareCompax3Parameters(device, set, dictionary, progress);
+    if (!comparison) return comparison.error();
+    QList<BackupDifference> changes;
+    // The comparison's old side is the file's: a plan's is the drive's. An
+    // object the file records absent is left as it is (not written).
+    for (const Compax3Difference& difference : comparison->differences) {
+        if (difference.absentInFile) continue;
+        if (!options.only.isEmpty() && !options.only.contains(difference.id)) continue;
+        Compax3Difference towardsFile = difference;
+        std::swap(towardsFile.fileValue, towardsFile.driveValue);
+        changes << compax3ObjectDifference(towardsFile, nameOf(set, dictionary, difference.id));
     }
+    return changes;
+}
+
+Result<OutcomeTally> restoreCompax3Parameters(Compax3Device& device, const Compax3ParameterSet& set,
+                                              const Compax3Dictionary& dictionary,
+                                              const Compax3RestoreOptions& options,
+                                              const UseCaseProgress& progress) {
+    const Result<QList<Compax3Write>> checked = checkedWrites(device, set, dictionary, options);
+    if (!checked) return checked.error();
+    const QList<Compax3Write> writes = *checked;
     const OutcomeTally tally =
         writeCompax3Objects(device, writes, dictionary, Compax3WriteSource::File, progress);
     if (!options.store) return tally;

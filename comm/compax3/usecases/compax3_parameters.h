@@ -8,6 +8,7 @@
 #include "comm/compax3/compax3_device.h"
 #include "comm/usecases/item_outcome.h"
 #include "comm/usecases/use_case_progress.h"
+#include "model/backup_difference.h"
 #include "model/compax3/compax3_dictionary.h"
 #include "model/compax3/compax3_parameter_file.h"
 
@@ -68,6 +69,26 @@ struct Compax3Comparison {
                            const Compax3Dictionary& dictionary);
 };
 
+// An object's name as the set records it, else the dictionary's; empty
+// when neither knows it.
+QString nameOf(const Compax3ParameterSet& set, const Compax3Dictionary& dictionary,
+               const Compax3ObjectId& id);
+// The object's name in `dictionary`, or empty.
+QString nameIn(const Compax3Dictionary& dictionary, const Compax3ObjectId& id);
+
+// One difference as the machine says it: "1902.1 Set 1 velocity 200 →
+// 321" (old = fileValue, new = driveValue).
+BackupDifference compax3ObjectDifference(const Compax3Difference& difference, const QString& name);
+// Every difference of a comparison (old = the file's, new = the drive's).
+QList<BackupDifference> compax3ComparisonItems(const Compax3Comparison& comparison,
+                                               const Compax3ParameterSet& set,
+                                               const Compax3Dictionary& dictionary);
+// Two parameter sets, no drive: old = `before`, new = `after`; the drive
+// itself (type, serial number) too.
+QList<BackupDifference> diffCompax3Sets(const Compax3ParameterSet& before,
+                                        const Compax3ParameterSet& after,
+                                        const Compax3Dictionary& dictionary);
+
 // Reads every object of the file (and those it records absent) from the
 // drive and lists the differences.
 Result<Compax3Comparison> compareCompax3Parameters(comm::Compax3Device& device,
@@ -109,6 +130,15 @@ struct Compax3RestoreOptions {
     // flash (1904.n = $32).
     bool store = false;
 };
+
+// What restoreCompax3Parameters would write, after the same checks (an
+// error: nothing would be written, and nothing was): old = the drive's
+// value now, new = the file's ("1902.1 Set 1 velocity 321 → 200").
+Result<QList<BackupDifference>> planCompax3Restore(comm::Compax3Device& device,
+                                                   const Compax3ParameterSet& set,
+                                                   const Compax3Dictionary& dictionary,
+                                                   const Compax3RestoreOptions& options,
+                                                   const UseCaseProgress& progress = {});
 
 // Checks before the first byte: the drive's identity (serial number and
 // type: another drive is refused unless accepted as the replacement), its

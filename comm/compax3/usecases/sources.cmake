@@ -3,6 +3,9 @@
 target_sources(cambench_usecases PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/compax3_parameters.h
   ${CMAKE_CURRENT_LIST_DIR}/compax3_parameters.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_backup_diff.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_backup_part.h
+  ${CMAKE_CURRENT_LIST_DIR}/compax3_backup_part.cpp
   ${CMAKE_CURRENT_LIST_DIR}/compax3_read_objects.h
   ${CMAKE_CURRENT_LIST_DIR}/compax3_read_objects.cpp
   ${CMAKE_CURRENT_LIST_DIR}/compax3_check.h

@@ -12,16 +12,6 @@ using comm::Mc1Capability;
 using comm::Mc1Device;
 using comm::Mc1Point;
 
-QString hex4(int address) {
-    return QStringLiteral("0x") +
-           QStringLiteral("%1").arg(address, 4, 16, QLatin1Char('0')).toUpper();
-}
-
-QString memoryLabel(int address, int length) {
-    return QCoreApplication::translate("cambench::usecases", "memory %1–%2")
-        .arg(hex4(address), hex4(address + length - 1));
-}
-
 // What the controller holds of everything `like` holds (the same
 // variables, the flags if it has them, the same memory ranges).
 Result<Mc1Backup> readLike(Mc1Device& device, const Mc1Backup& like,
@@ -133,51 +123,20 @@ Result<Mc1VerifyReport> verifyMc1Backup(Mc1Device& device, const Mc1Backup& back
     const Result<Mc1Backup> now = readLike(device, backup, progress);
     if (!now) return now.error();
     Mc1VerifyReport report;
-    for (auto it = backup.variables.begin(); it != backup.variables.end(); ++it) {
-        ++report.compared;
-        const qint64 there = now->variables.value(it.key());
-        if (there != it.value())
-            report.differences << QCoreApplication::translate("cambench::usecases",
-                                                              "V%1: file %2, controller %3")
-                                      .arg(it.key())
-                                      .arg(it.value())
-                                      .arg(there);
-    }
-    for (int bit = 0; bit < backup.flags.size() * 8; ++bit) {
-        ++report.compared;
-        const bool file = quint8(backup.flags.at(bit >> 3)) & (1u << (bit & 7));
-        const bool there = quint8(now->flags.at(bit >> 3)) & (1u << (bit & 7));
-        if (file != there)
-            report.differences << QCoreApplication::translate("cambench::usecases",
-                                                              "%1: file %2, controller %3")
-                                      .arg(comm::mc1PointText(
-                                          comm::mc1ExternalFlagAt(bit, backup.mc200())))
-                                      .arg(file ? 1 : 0)
-                                      .arg(there ? 1 : 0);
-    }
-    for (int i = 0; i < backup.memory.size(); ++i) {
-        const Mc1MemoryRange& range = backup.memory.at(i);
-        report.compared += int(range.data.size());
-        int differing = 0;
-        int first = -1;
-        for (int b = 0; b < range.data.size(); ++b) {
-            if (range.data.at(b) == now->memory.at(i).data.at(b)) continue;
-            ++differing;
-            if (first < 0) first = range.address + b;
-        }
-        if (differing)
-            report.differences << QCoreApplication::translate(
-                                      "cambench::usecases", "%1: %2 bytes differ, the first at %3")
-                                      .arg(memoryLabel(range.address, int(range.data.size())))
-                                      .arg(differing)
-                                      .arg(hex4(first));
-    }
+    report.compared = mc1ItemCount(backup);
+    report.items = diffMc1Backups(backup, *now);
+    for (const BackupDifference& item : report.items) report.differences << item.text;
     return report;
 }
 
-Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup,
-                                      const ReplacementConsent& replacement,
-                                      const UseCaseProgress& progress) {
+namespace {
+
+// The controller the file is for, and what it holds now (the file's
+// items); an error when another controller answers (without consent) or
+// the file does not fit: nothing was written.
+Result<Mc1Backup> readForRestore(Mc1Device& device, const Mc1Backup& backup,
+                                 const ReplacementConsent& replacement,
+                                 const UseCaseProgress& progress) {
     const Result<DeviceIdentity> identity = device.readIdentity();
     if (!identity) return identity.error();
     if (const Status target =
@@ -186,7 +145,24 @@ Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup
         !target)
         return target.error();
     if (const Status fits = checkFits(device, backup); !fits) return fits.error();
-    const Result<Mc1Backup> now = readLike(device, backup, progress.slice(0, 1, 2));
+    return readLike(device, backup, progress);
+}
+
+}  // namespace
+
+Result<QList<BackupDifference>> planMc1Restore(Mc1Device& device, const Mc1Backup& backup,
+                                               const ReplacementConsent& replacement,
+                                               const UseCaseProgress& progress) {
+    const Result<Mc1Backup> now = readForRestore(device, backup, replacement, progress);
+    if (!now) return now.error();
+    return diffMc1Backups(*now, backup);
+}
+
+Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup,
+                                      const ReplacementConsent& replacement,
+                                      const UseCaseProgress& progress) {
+    const Result<Mc1Backup> now =
+        readForRestore(device, backup, replacement, progress.slice(0, 1, 2));
     if (!now) return now.error();
     const UseCaseProgress writing = progress.slice(1, 1, 2);
     QList<OutcomeLine> lines;
@@ -281,7 +257,7 @@ Result<OutcomeTally> restoreMc1Backup(Mc1Device& device, const Mc1Backup& backup
             const QByteArray wanted = range.data.mid(at, comm::kMc1MaxMemoryWrite);
             const QByteArray old = now->memory.at(i).data.mid(at, comm::kMc1MaxMemoryWrite);
             const int address = range.address + at;
-            const QString label = memoryLabel(address, int(wanted.size()));
+            const QString label = mc1MemoryLabel(address, int(wanted.size()));
             if (stopped.kind != ErrorKind::None) {
                 notSent(label);
                 continue;

@@ -725,7 +725,7 @@ private Q_SLOTS:
         QCOMPARE(differs->differences.size(), 2);
         QCOMPARE(differs->differences.first().error, QStringLiteral("not on this drive"));
         Compax3RestoreOptions forced;
-        forced.force = true;  // the types differ
+        forced.force = true;                             // the types differ
         forced.replacement = ReplacementConsent::any();  // and so the drives
         const qsizetype from = lacking.sim().requests().size();
         const Result<OutcomeTally> restored = restoreCompax3Parameters(

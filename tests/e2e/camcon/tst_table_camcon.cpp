@@ -35,7 +35,8 @@ struct Bench {
     SimProcess sim;
     std::unique_ptr<Transport> transport;
     std::unique_ptr<TableCamCon> device;
-    int stxSent = 0;  // STX the PC sent: more than requests when faults made it repeat
+    int stxSent = 0;              // STX the PC sent: more than requests when faults made it repeat
+    QMap<int, int> writesToArea;  // RK512 write telegrams ('A') the PC sent, by data area
 
     bool start(const QString& protocol, const QStringList& simArgs = {}) {
         if (!sim.start(QStringList{QStringLiteral("--protocol"), protocol, QStringLiteral("--baud"),
@@ -60,6 +61,10 @@ struct Bench {
         device->engine().setTrafficSink([this](const TrafficEntry& entry) {
             // An STX alone, or after the DLE that acknowledged a telegram.
             if (entry.outgoing && entry.bytes.size() <= 2 && entry.bytes.endsWith(kStx)) ++stxSent;
+            const QByteArray& t = entry.bytes;
+            if (entry.outgoing && t.size() > 4 && t.at(0) == 0 && t.at(1) == 0 &&
+                quint8(t.at(2)) == quint8(Rk512Order::Write))
+                ++writesToArea[quint8(t.at(4))];
         });
         return true;
     }
@@ -446,19 +451,32 @@ void TestTableCamCon::projectsWithAndWithoutAnalogueOutputs() {
         without->skipped.join(QLatin1Char('\n')).contains(QLatin1String("no analogue outputs")),
         qPrintable(without->skipped.join(QLatin1Char('\n'))));
 
+    const Result<ProgrammingProgram> programmingBefore = bare.device->readProgrammingProgram();
+    VERIFY_OK(programmingBefore);
+    bare.writesToArea.clear();
     const Result<usecases::WriteReport> back = usecases::writeItems(
         *bare.device, *bareInfo, usecases::planFromProject(without->project, without->project));
     VERIFY_OK(back);
-    // The programming program is written once on the way (as on any
-    // table-interface CamCon: the cam reads select their programs).
+    // Every item unchanged, the programming program too (issue 39: it was
+    // "written" on every write of an unchanged project, as the cam reads
+    // had selected their programs).
     QStringList changed;
     for (const usecases::OutcomeLine& item : back->lines()) {
-        if (item.state != usecases::WriteState::Unchanged &&
-            item.label != QLatin1String("programming program"))
-            changed << item.text;
+        if (item.state != usecases::WriteState::Unchanged) changed << item.text;
     }
     QVERIFY(back->analogueCams.isEmpty());
+    QVERIFY(back->programmingProgram.has_value());
     QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QLatin1Char('\n'))));
+    // The only write telegrams: to area 201, selecting each program whose
+    // cams are read (the table interface reaches the cams of the
+    // programming program only) and setting the programming program back
+    // as it was. None wrote an item.
+    QCOMPARE(bare.writesToArea.keys(), QList<int>{201});
+    qInfo(
+        "%d write telegrams to area 201 (program selections and setting it back) for %d "
+        "programs",
+        bare.writesToArea.value(201), int(without->project.programs.size()));
+    QCOMPARE(*bare.device->readProgrammingProgram(), *programmingBefore);
 
     // The other device's analogue cams (and nothing else of its settings).
     Project analogueOnly;

@@ -85,10 +85,8 @@ private Q_SLOTS:
         if (v2mc200) VERIFY_EXIT(session.cli({"mc", "mem", "write", "0x101", "ff"}), 0);
         const CliRun differs = session.cli({"mc", "verify", file});
         VERIFY_EXIT(differs, 1);
-        QVERIFY2(differs.out.contains(QLatin1String("V12: file -5, controller 77")),
-                 qPrintable(differs.out));
-        QVERIFY2(differs.out.contains(QLatin1String("M7: file 1, controller 0")),
-                 qPrintable(differs.out));
+        QVERIFY2(differs.out.contains(QStringLiteral("V12 -5 → 77")), qPrintable(differs.out));
+        QVERIFY2(differs.out.contains(QStringLiteral("M7 1 → 0")), qPrintable(differs.out));
         const CliRun restore = session.cli({"mc", "restore", file});
         VERIFY_EXIT(restore, 0);
         const QString written = v2mc200 ? QStringLiteral("3 written") : QStringLiteral("2 written");

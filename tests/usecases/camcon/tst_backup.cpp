@@ -33,6 +33,7 @@ private Q_SLOTS:
     void safetyBackupIsNamedAfterTheImageAndTime();
     void restoreTakesSafetyBackupThenRestores();
     void restoreOfForeignImageIsRefusedUnlessAcceptedAsReplacement();
+    void restorePutsBackTheImagesCommunicationSettingsAndSaysSo();
     void failedRestoreSaysTheDeviceIsErased();
     void lineBackupGoesOnPastADeadDevice();
     void verifyLineComparesEverySavedDevice();
@@ -117,6 +118,41 @@ void TestBackup::restoreOfForeignImageIsRefusedUnlessAcceptedAsReplacement() {
         restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
     QVERIFY2(accepted.ok(), qPrintable(accepted.error.message));
     QCOMPARE(accepted.identityMismatch.size(), 2);
+}
+
+// Issue 39: an image is the device's own byte image, its communication
+// settings included. Restored after the device was set to another protocol
+// and number, it puts back its own, and the report says what the next
+// connection needs.
+void TestBackup::restorePutsBackTheImagesCommunicationSettingsAndSaysSo() {
+    SimBench bench;
+    const Result<EepromImage> image = backupDevice(*bench.client);
+    QVERIFY(image.ok());
+    RestoreOptions options;
+    options.safetyBackup = false;
+    const RestoreReport same =
+        restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
+    QVERIFY2(same.ok(), qPrintable(same.error.message));
+    QCOMPARE(same.linkNote, QString());
+    const Result<SystemSettings> settings = bench.client->readSettings();
+    QVERIFY(settings.ok());
+    // (The simulator goes on speaking Standard; a real device would not.)
+    QVERIFY(bench.client
+                ->writeSettings({{QStringLiteral("protocol"), qint64(2)},
+                                 {QStringLiteral("deviceNumber"), qint64(9)}},
+                                *settings)
+                .ok());
+    const RestoreReport back =
+        restoreImage(*bench.client, *image, QStringLiteral("x.json"), options);
+    QVERIFY2(back.ok(), qPrintable(back.error.message));
+    QCOMPARE(back.linkNote,
+             QStringLiteral("The image holds the communication settings the device had when it "
+                            "was taken, Device number 0, Communication protocol Standard (it uses "
+                            "Device number 9, Communication protocol Multiuser now). A restore "
+                            "puts them back with everything else: the next connection to the "
+                            "device needs Device number 0, Communication protocol Standard."));
+    QCOMPARE(bench.client->readSetting(QStringLiteral("protocol"))->toLongLong(), 1);
+    QCOMPARE(bench.client->readSetting(QStringLiteral("deviceNumber"))->toLongLong(), 0);
 }
 
 void TestBackup::failedRestoreSaysTheDeviceIsErased() {

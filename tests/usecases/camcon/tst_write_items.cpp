@@ -4,6 +4,7 @@
 #include "sim_bench.h"
 
 #include "comm/camcon/usecases/plan_check.h"
+#include "comm/camcon/usecases/read_everything.h"
 #include "comm/camcon/usecases/write_items.h"
 
 #include <QLoggingCategory>
@@ -55,6 +56,9 @@ private Q_SLOTS:
     void deadTimesNamesAndPlcAreWrittenOrUnchanged();
     void settingsAreWrittenAgainstTheValuesPassedIn();
     void readOnlySettingThatDiffersIsRefused();
+    void communicationSettingsAreLeftOutUnlessAskedByName();
+    void communicationSettingsAskedByNameGoLastAndSaySo();
+    void unchangedProjectSendsNoCommand();
     void duplicateUserNumberIsRefused();
     void userWithoutNumberKeepsTheDevicesNumber();
     void plcNetworkBeyondTheDevicesCountIsRefused();
@@ -317,6 +321,111 @@ void TestWriteItems::readOnlySettingThatDiffersIsRefused() {
     QVERIFY(!report.ok());
     QVERIFY2(report.error().message.contains(QLatin1String("read-only")),
              qPrintable(report.error().message));
+}
+
+namespace {
+
+// Another device's settings, as a project of a table-interface CamCon holds
+// them (issue 39): its protocol (3964R), its device number, and a cable
+// length that differs too.
+SystemSettings otherDevicesSettings(const SystemSettings& onDevice) {
+    SystemSettings wanted = onDevice;
+    wanted.insert(QStringLiteral("protocol"), qint64(4));
+    wanted.insert(QStringLiteral("deviceNumber"), qint64(5));
+    wanted.insert(QStringLiteral("cableLength"),
+                  onDevice.value(QStringLiteral("cableLength")).toLongLong() + 3);
+    return wanted;
+}
+
+QStringList commandNames(const SimInjections& injections) {
+    QStringList names;
+    for (const SimInjections::Received& received : injections.received())
+        if (received.kind == '!') names << QString::fromLatin1(received.name);
+    return names;
+}
+
+}  // namespace
+
+// Issue 39: a project written to a Standard device changed its protocol to
+// the project's (3964R); the next connection failed.
+void TestWriteItems::communicationSettingsAreLeftOutUnlessAskedByName() {
+    SimBench bench;
+    const DeviceInfo info = bench.info();
+    const Result<SystemSettings> onDevice = bench.client->readSettings();
+    QVERIFY(onDevice.ok());
+    QCOMPARE(onDevice->value(QStringLiteral("protocol")).toLongLong(), 1);  // Standard
+    WritePlan plan;
+    plan.settings = settingsGroups(otherDevicesSettings(*onDevice));
+    plan.settingsOnDevice = *onDevice;
+    bench.injections().clearLog();
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
+    QVERIFY2(report.ok(), qPrintable(report.error().message));
+    QVERIFY(report->complete());
+    // The cable length went; neither !GSIO nor !GNR did.
+    QCOMPARE(commandNames(bench.injections()), QStringList{QStringLiteral("GKL")});
+    QCOMPARE(report->count(WriteState::Written), 1);
+    QVERIFY(report->linkSettings.isEmpty());
+    QCOMPARE(report->linkSettingsLeftOut.keys(),
+             QStringList({QStringLiteral("deviceNumber"), QStringLiteral("protocol")}));
+    for (const OutcomeLine& line : report->lines())
+        QVERIFY2(!line.label.contains(QLatin1String("protocol")), qPrintable(line.text));
+    QVERIFY2(report->summary().contains(QLatin1String(
+                 "Communication settings left out: Device number 5, Communication protocol "
+                 "3964R (the device keeps Device number 0, Communication protocol Standard)")),
+             qPrintable(report->summary()));
+    QCOMPARE(bench.client->readSetting(QStringLiteral("protocol"))->toLongLong(), 1);
+    QCOMPARE(bench.client->readSetting(QStringLiteral("deviceNumber"))->toLongLong(), 0);
+}
+
+void TestWriteItems::communicationSettingsAskedByNameGoLastAndSaySo() {
+    SimBench bench;
+    const DeviceInfo info = bench.info();
+    const Result<SystemSettings> onDevice = bench.client->readSettings();
+    QVERIFY(onDevice.ok());
+    WritePlan plan;
+    plan.settings = settingsGroups(otherDevicesSettings(*onDevice));
+    plan.settingsOnDevice = *onDevice;
+    plan.linkSettingsAsked = {QStringLiteral("protocol")};
+    plan.programNames << NameWrite{1, QStringLiteral("Night"), {}};
+    bench.injections().clearLog();
+    const Result<WriteReport> report = writeItems(*bench.client, info, plan);
+    QVERIFY2(report.ok(), qPrintable(report.error().message));
+    // The protocol last of all, after the program name; the device number
+    // was not asked for.
+    const QStringList sent = commandNames(bench.injections());
+    QCOMPARE(sent.last(), QStringLiteral("GSIO"));
+    QCOMPARE(sent.count(QStringLiteral("GSIO")), 1);
+    QVERIFY(!sent.contains(QStringLiteral("GNR")));
+    QCOMPARE(report->linkSettings.size(), 1);
+    QCOMPARE(report->linkSettings.first().state, WriteState::Written);
+    QCOMPARE(report->lines().last().label, QStringLiteral("settings configuration (protocol)"));
+    QCOMPARE(report->linkSettingsLeftOut.keys(), QStringList{QStringLiteral("deviceNumber")});
+    QVERIFY2(report->summary().contains(QLatin1String(
+                 "Communication settings written: the next connection to this device needs "
+                 "Communication protocol 3964R.")),
+             qPrintable(report->summary()));
+    // (The simulator goes on speaking Standard; a real device would not.)
+    QCOMPARE(bench.client->readSetting(QStringLiteral("protocol"))->toLongLong(), 4);
+}
+
+// Issue 39: the device's own project written back changes nothing and
+// sends no command at all.
+void TestWriteItems::unchangedProjectSendsNoCommand() {
+    SimBench bench;
+    const DeviceInfo info = bench.info();
+    const Result<ReadEverything> read = readEverything(*bench.client, info);
+    QVERIFY2(read.ok(), qPrintable(read.error().message));
+    bench.injections().clearLog();
+    const Result<WriteReport> report =
+        writeItems(*bench.client, info, planFromProject(read->project, read->project));
+    QVERIFY2(report.ok(), qPrintable(report.error().message));
+    QVERIFY(report->total() > 20);
+    QStringList changed;
+    for (const OutcomeLine& line : report->lines())
+        if (line.state != WriteState::Unchanged) changed << line.text;
+    QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QLatin1Char('\n'))));
+    QCOMPARE(commandNames(bench.injections()), QStringList());
+    QVERIFY(report->notes.isEmpty());
 }
 
 void TestWriteItems::duplicateUserNumberIsRefused() {

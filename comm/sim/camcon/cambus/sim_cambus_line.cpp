@@ -1,6 +1,28 @@
 #include "sim_cambus_line.h"
 
+#include "comm/sim/sim_log.h"
+
 namespace cambench::comm {
+
+qint64 SimPcAnswers::count() const {
+    qint64 total = 0;
+    for (qint64 n : countByMs) total += n;
+    return total;
+}
+
+qint64 SimPcAnswers::medianMs() const {
+    const qint64 half = (count() + 1) / 2;
+    qint64 seen = 0;
+    for (auto it = countByMs.cbegin(); it != countByMs.cend(); ++it) {
+        seen += *it;
+        if (seen >= half) return it.key();
+    }
+    return -1;
+}
+
+qint64 SimPcAnswers::worstMs() const {
+    return countByMs.isEmpty() ? -1 : countByMs.lastKey();
+}
 
 SimCamBusLine::SimCamBusLine(std::vector<std::unique_ptr<SimDevice>> devices, const Setup& setup,
                              qint64 nowMs)
@@ -34,6 +56,12 @@ SimCamBusLine::SimCamBusLine(std::vector<std::unique_ptr<SimDevice>> devices, co
         m_silentFromMs = setup.silentFromMs;
     }
     m_reinitAtMs = setup.reinitAtMs;
+    m_pcAnswerMs = pcAnswerMs;
+    // Every simulated user hears every answer: one of them counts the PC's.
+    if (!m_camCons.empty())
+        m_camCons.front()->station().setAnswerObserver([this, simulated](int user, qint64 ms) {
+            if (!simulated.contains(user) && m_external->contains(user)) notePcAnswer(user, ms);
+        });
     for (int i = 0; i < setup.displays.size(); ++i) {
         CamBusStationConfig config = station;
         config.number = setup.displays.at(i);
@@ -59,6 +87,46 @@ void SimCamBusLine::applyScheduledFaults(qint64 nowMs) {
         m_reinitAtMs = -1;
         m_camCons.front()->station().breakIn(nowMs);
     }
+}
+
+SimCamBusLine::~SimCamBusLine() {
+    if (m_pcAnswers.count() == 0 && m_pcAnswers.missed == 0) return;
+    qCInfo(commSimLog).noquote()
+        << QStringLiteral(
+               "Cam-BUS: the PC answered %1 times, median %2 ms, worst %3 ms after the byte it "
+               "answered; %4 answers did not come within %5 ms")
+               .arg(m_pcAnswers.count())
+               .arg(m_pcAnswers.medianMs())
+               .arg(m_pcAnswers.worstMs())
+               .arg(m_pcAnswers.missed)
+               .arg(m_pcAnswerMs);
+}
+
+void SimCamBusLine::notePcAnswer(int user, qint64 ms) {
+    // A PC that has closed its port stays in the table (P4) and misses
+    // every turn until the next initialisation phase: misses count once the
+    // PC answers again in the same table.
+    const int initPhases = m_camCons.front()->station().view().initPhases;
+    if (initPhases != m_initPhasesSeen) {
+        m_initPhasesSeen = initPhases;
+        m_pcMissesPending = 0;
+    }
+    if (ms < 0) {
+        ++m_pcMissesPending;
+        return;
+    }
+    ++m_pcAnswers.countByMs[ms];
+    if (m_pcMissesPending == 0) return;
+    m_pcAnswers.missed += m_pcMissesPending;
+    qCInfo(commSimLog).noquote()
+        << QStringLiteral(
+               "Cam-BUS: the PC (user %1) let %2 turn(s) in a row go by without an answer "
+               "within %3 ms, then answered again (%4 missed in all)")
+               .arg(user)
+               .arg(m_pcMissesPending)
+               .arg(m_pcAnswerMs)
+               .arg(m_pcAnswers.missed);
+    m_pcMissesPending = 0;
 }
 
 SimCamBusCamCon* SimCamBusLine::camCon(int number) const {

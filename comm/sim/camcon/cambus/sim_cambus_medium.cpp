@@ -6,13 +6,27 @@ namespace cambench::comm {
 
 namespace {
 
-// The bytes of `encoded` without P12's doubling of FF (breaks stay as they are).
-qint64 wireBytes(const QByteArray& encoded) {
+// One character on the wire (in P12's encoding: a data FF doubled) or one
+// break, with the character times it takes.
+struct WireUnit {
+    QByteArray encoded;
+    int characters = 1;
+};
+
+// `encoded` as the wire carries it, one unit after the other. A break holds
+// the line for 2 character times and leaves it idle for 2
+// (docs/protocols/cambus.md).
+QList<WireUnit> wireUnits(const QByteArray& encoded) {
     QByteArray pending = encoded;
-    qint64 bytes = 0;
-    for (const MarkedRead& read : takeBreakMarked(pending))
-        bytes += read.kind == MarkedRead::Break ? 4 : read.data.size();
-    return bytes;
+    QList<WireUnit> units;
+    for (const MarkedRead& read : takeBreakMarked(pending)) {
+        if (read.kind == MarkedRead::Break) {
+            units << WireUnit{QByteArray::fromHex("ff0000"), 4};
+            continue;
+        }
+        for (char c : read.data) units << WireUnit{escapeBreakMarks(QByteArray(1, c)), 1};
+    }
+    return units;
 }
 
 bool isAck(const QByteArray& encoded) {
@@ -58,18 +72,27 @@ void SimCamBusMedium::inject(const QByteArray& encoded, qint64 nowMs) {
     const QByteArray bytes = applyFaults(encoded);
     if (bytes.isEmpty()) return;
     // The PC's bytes cross the wire like everybody's.
-    put(-1, bytes, nowMs, wireBytes(encoded));
+    put(-1, bytes, nowMs);
 }
 
-void SimCamBusMedium::put(int from, const QByteArray& bytes, qint64 nowMs, qint64 wireBytes) {
+void SimCamBusMedium::put(int from, const QByteArray& bytes, qint64 nowMs) {
     // One sender's bytes follow each other; two senders' may overlap (the
     // breaks of users that start an initialisation phase at once do). What
     // was written later is never heard earlier: an answer cannot overtake
-    // what it answers.
+    // what it answers. Each character reaches the others once it has
+    // crossed, not the whole piece at its end: a block longer than T has no
+    // gap of T in it (P11), and a listener that heard only its end would
+    // take the turn for over halfway through.
     qint64& free = m_senderFreeAt[from];
-    free = std::max(nowMs, free) + wireMs(wireBytes);
-    const qint64 at = m_wire.empty() ? free : std::max(free, m_wire.back().atMs);
-    m_wire.push_back(InFlight{at, bytes, from});
+    const qint64 start = std::max(nowMs, free);
+    qint64 characters = 0;
+    for (const WireUnit& unit : wireUnits(bytes)) {
+        characters += unit.characters;
+        const qint64 crossed = start + wireMs(characters);
+        const qint64 at = m_wire.empty() ? crossed : std::max(crossed, m_wire.back().atMs);
+        m_wire.push_back(InFlight{at, unit.encoded, from});
+    }
+    free = start + wireMs(characters);
 }
 
 void SimCamBusMedium::deliver(const InFlight& piece, qint64 nowMs) {
@@ -117,7 +140,7 @@ QByteArray SimCamBusMedium::advance(qint64 nowMs) {
             wrote = true;
             const QByteArray bytes = applyFaults(out);
             toPc += bytes;
-            if (!bytes.isEmpty()) put(int(i), bytes, at, wireBytes(out));
+            if (!bytes.isEmpty()) put(int(i), bytes, at);
         }
         if (!wrote && !delivered && nextTimerMs() <= next) break;
     }

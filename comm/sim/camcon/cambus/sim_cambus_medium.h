@@ -59,13 +59,13 @@ public:
 
 private:
     struct InFlight {
-        qint64 atMs = 0;  // fully on the wire then
-        QByteArray bytes;
-        int from = -1;  // index into m_users; -1: the PC
+        qint64 atMs = 0;   // crossed the wire then
+        QByteArray bytes;  // one character (P12 encoding) or one break
+        int from = -1;     // index into m_users; -1: the PC
     };
     QByteArray applyFaults(QByteArray encoded);
     void deliver(const InFlight& piece, qint64 nowMs);
-    void put(int from, const QByteArray& bytes, qint64 nowMs, qint64 wireBytes);
+    void put(int from, const QByteArray& bytes, qint64 nowMs);
     qint64 wireMs(qint64 bytes) const;
 
     int m_baud;

@@ -171,6 +171,91 @@ private Q_SLOTS:
         QCOMPARE(bus.line->device(7)->executions(), 20);
     }
 
+    // Issue 39: a block longer than T on the wire (38400 baud: 10 ms is 38
+    // bytes) has no gap in it; every listener hears its bytes as they cross
+    // and waits T from the last one, not from its start. Before, the
+    // simulated users heard a block only once its last byte had crossed, so
+    // the master took the turn for over and passed the token across it.
+    void blocksLongerThanTCrossTheWire() {
+        VirtualBus bus({3, 7}, 12);
+        bus.run(4000);
+        bus.plugPc();
+        QCOMPARE(bus.ask(3, "?GNR"), QByteArray(":GNR03"));
+        // A request of 200 characters to the master (52 ms on the wire): the
+        // device takes it and answers that it does not know it.
+        bus.deliveries.clear();
+        const QByteArray unknown = "?ZZ" + QByteArray(197, 'A');
+        QVERIFY(bus.ask(3, unknown).startsWith(":Z"));
+        QCOMPARE(bus.deliveries.size(), 1);
+        QCOMPARE(bus.deliveries.first().result, CamBusStation::Delivery::Delivered);
+        // A long reply from 7 while 3, the master, listens: an EEPROM block.
+        const QByteArray block = bus.ask(7, "?EE0000");
+        QVERIFY2(block.size() > 100, block.toHex().constData());
+        QVERIFY(block.startsWith(":EE0000"));
+        // Nobody broke in meanwhile: one initialisation phase, the PC's own.
+        QCOMPARE(bus.pc->view().initPhases, 1);
+    }
+
+    // Issue 39: a PC that reads the line late (a busy computer) gets the byte
+    // it should answer together with what the others sent after T went by.
+    // Answering then would put its bytes into the next turn (the master's
+    // "user 3 answered its TO with 87"): it lets the turn go, counts it, and
+    // its block goes whole at a later token.
+    void aLatePcLetsTheTurnGoInsteadOfAnsweringIntoTheNext() {
+        CamBusStationConfig config;
+        config.number = 63;
+        config.joinBeforeFirstBlock = true;
+        CamBusStation pc(config, 0);
+        pc.feed(QByteArray::fromHex("ffff"), 0);  // C0+63: joined
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("7f"));
+        pc.send(3, camBusPayload('?', "GNR"));
+        // Its token, and after it (the PC was silent for T) 3's token and answer.
+        pc.feed(camBusToken(63) + camBusToken(3) + QByteArray::fromHex("83"), 20);
+        QCOMPARE(pc.takeOutput(), QByteArray());
+        QCOMPARE(pc.view().lateAnswers, 1);
+        // In time for its token, late for 3's room answer: no block.
+        pc.feed(camBusToken(63), 40);
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("7f03"));
+        pc.feed(QByteArray::fromHex("43") + camBusToken(7) + QByteArray::fromHex("87"), 60);
+        QCOMPARE(pc.takeOutput(), QByteArray());
+        QCOMPARE(pc.view().lateAnswers, 2);
+        QVERIFY(pc.takeDeliveries().isEmpty());
+        QVERIFY(pc.hasQueued());
+        // Its answer to the token came too late (read in time, but the
+        // master had gone on): the next token instead of 3's room answer.
+        // Three times: no failure blamed on 3, the block stays.
+        for (int i = 0; i < 3; ++i) {
+            pc.feed(camBusToken(63), 62 + 2 * i);
+            QCOMPARE(pc.takeOutput(), QByteArray::fromHex("7f03"));
+            pc.feed(camBusToken(7) + QByteArray::fromHex("87"), 63 + 2 * i);
+        }
+        QVERIFY(pc.takeDeliveries().isEmpty());
+        QVERIFY(pc.hasQueued());
+        QCOMPARE(pc.view().lateAnswers, 5);
+        // In time: the block goes as in the worked example.
+        pc.feed(camBusToken(63), 80);
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("7f03"));
+        pc.feed(QByteArray::fromHex("43"), 81);
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("063f474e52443901a9"));
+        pc.feed(QByteArray::fromHex("83"), 82);
+        QCOMPARE(pc.takeDeliveries().size(), 1);
+        // A reply heard late is taken but not acknowledged; its repeat is
+        // acknowledged and not taken again.
+        const QByteArray reply = QByteArray::fromHex("a5370303433f");
+        const QByteArray block = QByteArray::fromHex("083a474e52303337420205");
+        pc.feed(reply, 100);
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("7f"));
+        pc.feed(block + camBusToken(7), 101);
+        QCOMPARE(pc.takeOutput(), QByteArray());
+        QCOMPARE(pc.takeReceived().size(), 1);
+        pc.feed(reply, 120);
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("7f"));
+        pc.feed(block, 121);
+        QCOMPARE(pc.takeOutput(), QByteArray::fromHex("bf"));
+        QVERIFY(pc.takeReceived().isEmpty());
+        QCOMPARE(pc.view().lateAnswers, 6);
+    }
+
     void aRepeatedBlockIsAcknowledgedButNotTakenAgain() {
         // The PC 63 hears CamCon 3's token and its block to the PC, sent
         // twice with the same block bit (the PC's acknowledgement was lost).

@@ -8,10 +8,13 @@
 #include "ui/camcon/cameditor/cam_editor_widget.h"
 #include "ui/camcon/compare_dialog.h"
 #include "ui/camcon/device_writer.h"
+#include "ui/camcon/settings_page.h"
 #include "ui/language.h"
 #include "ui/report_dialog.h"
 
+#include <QCheckBox>
 #include <QDialogButtonBox>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
 #include <QTemporaryDir>
@@ -61,6 +64,7 @@ private Q_SLOTS:
     void writeRefusedHalfwayReportsTheDevicesRealState();
     void editKnownInvalidIsRefusedBeforeAnyCommand();
     void projectFor96OutputsIsRefusedBeforeAnyWriteCommand();
+    void aProjectsCommunicationSettingsGoOnlyWhenTicked();
 };
 
 void WriteTruthTest::writeRefusedHalfwayReportsTheDevicesRealState() {
@@ -197,6 +201,116 @@ void WriteTruthTest::projectFor96OutputsIsRefusedBeforeAnyWriteCommand() {
     QCOMPARE(sim.track(0, 1), program0Output1);
     QVERIFY2(seen.summary.contains(QStringLiteral("33")), qPrintable(seen.summary));
     QVERIFY2(seen.fitsScreen, "the refusal must fit the screen with its OK button");
+}
+
+namespace {
+
+// The commands ('!') the device received, by name.
+QStringList commandNames(PtySimulator& sim) {
+    QStringList names;
+    for (const comm::SimInjections::Received& received : sim.injections().received())
+        if (received.kind == '!') names << QString::fromLatin1(received.name);
+    return names;
+}
+
+// The question before the write: what it said; ticks "Also write" or not,
+// then presses Write (or Cancel).
+std::unique_ptr<NextDialog<QMessageBox>> answerLinkQuestion(QString& said, bool tick,
+                                                            bool write = true) {
+    return std::make_unique<NextDialog<QMessageBox>>([&said, tick, write](QMessageBox* box) {
+        said = box->text() + QLatin1Char('\n') + box->informativeText() + QLatin1Char('\n') +
+               box->checkBox()->text();
+        QVERIFY(!box->checkBox()->isChecked());  // left out unless ticked
+        box->checkBox()->setChecked(tick);
+        for (QAbstractButton* button : box->buttons()) {
+            const bool accept = box->buttonRole(button) == QMessageBox::AcceptRole;
+            if (accept == write) {
+                button->click();
+                return;
+            }
+        }
+    });
+}
+
+}  // namespace
+
+// Issue 39: a table-interface project opened on a CamCon on Standard
+// carries protocol 3964R and another device number. The write asks first,
+// saying what the next connection would need; unticked they are left out
+// and the report names them, ticked they go last; Cancel sends nothing.
+void WriteTruthTest::aProjectsCommunicationSettingsGoOnlyWhenTicked() {
+    PtySimulator sim;
+    auto shell = startOnPty(sim);
+    QVERIFY(shell);
+    SettingsPage* page = camConWindow(shell->window())->settingsPage();
+    const auto writeAndWait = [&](const std::function<void()>& answer) -> WriteResult {
+        std::optional<WriteResult> result;
+        answer();
+        page->writeChanges([&result](const WriteResult& done) { result = done; });
+        if (!QTest::qWaitFor([&result] { return result.has_value(); }, kDeviceTimeoutMs))
+            return WriteResult(Error::communication(QStringLiteral("the write did not end")));
+        return *result;
+    };
+    // The device's settings are known (the question names the device's values).
+    if (!camConWorkspace(*shell)->settings().known()) page->readFromDevice();
+    QTRY_VERIFY_WITH_TIMEOUT(camConWorkspace(*shell)->settings().known(), kDeviceTimeoutMs);
+    Project project;
+    project.device = camConWorkspace(*shell)->info();
+    project.settings = {{QStringLiteral("protocol"), qint64(4)},
+                        {QStringLiteral("deviceNumber"), qint64(5)},
+                        {QStringLiteral("cableLength"), qint64(17)}};
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("table.json"));
+    QVERIFY(saveProject(path, project).ok());
+    camConWindow(shell->window())->openProjectFile(path);
+
+    // Cancel: nothing at all is sent.
+    QString said;
+    std::unique_ptr<NextDialog<QMessageBox>> question;
+    sim.injections().clearLog();
+    const WriteResult cancelled =
+        writeAndWait([&] { question = answerLinkQuestion(said, false, false); });
+    QCOMPARE(question->answered(), 1);
+    QVERIFY(!cancelled.ok());
+    QCOMPARE(commandNames(sim), QStringList());
+    QVERIFY2(said.contains(QLatin1String("Device number 5, Communication protocol 3964R (the "
+                                         "device has Device number 0, Communication protocol "
+                                         "Standard)")),
+             qPrintable(said));
+    QVERIFY2(said.contains(QLatin1String("the next connection to this device needs them")),
+             qPrintable(said));
+
+    // Not ticked: the cable length only; the report names what was left out.
+    SeenReport seen;
+    std::unique_ptr<NextDialog<ReportDialog>> report;
+    const WriteResult leftOut = writeAndWait([&] {
+        question = answerLinkQuestion(said, false);
+        report = recordReport(seen);
+    });
+    QVERIFY2(leftOut.ok(), qPrintable(leftOut.error().message));
+    QCOMPARE(commandNames(sim), QStringList{QStringLiteral("GKL")});
+    QVERIFY2(seen.summary.contains(QLatin1String("Communication settings left out")),
+             qPrintable(seen.summary));
+    QCOMPARE(camConWorkspace(*shell)
+                 ->settings()
+                 .deviceValue(QStringLiteral("protocol"))
+                 .value_or(QVariant())
+                 .toLongLong(),
+             1);
+
+    // Ticked: the device number, then the protocol, last.
+    sim.injections().clearLog();
+    const WriteResult written = writeAndWait([&] {
+        question = answerLinkQuestion(said, true);
+        report = recordReport(seen);
+    });
+    QVERIFY2(written.ok(), qPrintable(written.error().message));
+    QCOMPARE(commandNames(sim), QStringList({QStringLiteral("GNR"), QStringLiteral("GSIO")}));
+    QVERIFY2(seen.summary.contains(QLatin1String("the next connection to this device needs "
+                                                 "Device number 5, Communication protocol "
+                                                 "3964R")),
+             qPrintable(seen.summary));
+    QCOMPARE(camConWorkspace(*shell)->settings().changedCount(), 0);
 }
 
 QTEST_MAIN(WriteTruthTest)

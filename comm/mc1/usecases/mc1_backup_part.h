@@ -1,0 +1,14 @@
+#pragma once
+
+// The MC-1's backup part (issue 36): its variables, external flags (and
+// memory ranges) as a backup file (model/mc1/mc1_backup_file.h), on the
+// use cases of mc1_backup_restore.h.
+
+#include "comm/usecases/family_backup.h"
+
+namespace cambench::usecases {
+
+// Registers it (the MC-1's FamilyParts::backup).
+void registerMc1Backup(BackupRegistry& registry);
+
+}  // namespace cambench::usecases
