@@ -132,10 +132,10 @@ void benchMachine(int baud, int repeat) {
     QList<double> first;
     QList<double> again;
     for (int i = 0; i < repeat; ++i) {
-        first << timeBackup(dir, QStringLiteral("machine"), machine,
-                            {QStringLiteral("--archive"),
-                             dir.filePath(QStringLiteral("archive-%1").arg(i)),
-                             QStringLiteral("-m"), QStringLiteral("bench")});
+        first << timeBackup(
+            dir, QStringLiteral("machine"), machine,
+            {QStringLiteral("--archive"), dir.filePath(QStringLiteral("archive-%1").arg(i)),
+             QStringLiteral("-m"), QStringLiteral("bench")});
         again << timeBackup(dir, QStringLiteral("machine"), machine,
                             {QStringLiteral("--archive"), dir.filePath(QStringLiteral("archive-0")),
                              QStringLiteral("-m"), QStringLiteral("bench")});
@@ -146,8 +146,9 @@ void benchMachine(int baud, int repeat) {
                .arg(archived, 0, 'f', 2)
         << QStringLiteral("| the machine into its archive, nothing changed | 3 | %1 s |\n\n")
                .arg(compared, 0, 'f', 2)
-        << QStringLiteral("into the archive / slowest alone: %1 (first version), %2 (nothing "
-                          "changed); target <= 1.2\n")
+        << QStringLiteral(
+               "into the archive / slowest alone: %1 (first version), %2 (nothing "
+               "changed); target <= 1.2\n")
                .arg(archived / slowest, 0, 'f', 2)
                .arg(compared / slowest, 0, 'f', 2)
         << QStringLiteral(

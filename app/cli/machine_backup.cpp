@@ -352,7 +352,8 @@ int runMachineRestore(const QString& dir, const MachineRun& run) {
     if (!folder) return reportError(folder.error());
     // The safety copies of this restore: a folder beside the backup's,
     // made when the first device takes one.
-    const QString safetyDir = safetyFolderPath(dir, QDateTime::currentDateTimeUtc());
+    const QString safetyDir = safetyFolderPath(run.safetyBeside.isEmpty() ? dir : run.safetyBeside,
+                                               QDateTime::currentDateTimeUtc());
     std::vector<std::optional<ManifestEntry>> copies(size_t(folder->setup.machine.devices.size()));
     const int code = forEachSaved(
         *folder, run.only, run.replacements,

@@ -54,14 +54,14 @@ int printChanges(const MachineChanges& changes, const QString& machine) {
     QStringList summary;
     int worst = ExitOk;
     for (const DeviceChange& device : changes.devices) {
-        if (!device.identity.isEmpty()) text += device.name + QStringLiteral(": ") + device.identity + u'\n';
+        if (!device.identity.isEmpty())
+            text += device.name + QStringLiteral(": ") + device.identity + u'\n';
         for (const BackupDifference& difference : device.differences)
             text += difference.line() + u'\n';
         const QString volatileNote =
-            device.volatileLeftOut == 0
-                ? QString()
-                : QStringLiteral(" (%1 changes of volatile items left out)")
-                      .arg(device.volatileLeftOut);
+            device.volatileLeftOut == 0 ? QString()
+                                        : QStringLiteral(" (%1 changes of volatile items left out)")
+                                              .arg(device.volatileLeftOut);
         switch (device.kind) {
             case DeviceChange::Kind::Equal:
                 summary << QStringLiteral("%1: equal%2").arg(device.name, volatileNote);
@@ -116,10 +116,11 @@ int runHistory(const QString& dir) {
         text += QStringLiteral("%1  %2  %3  %4%5\n")
                     .arg(version.shortId(), timeText(version.time), version.author,
                          version.note.isEmpty() ? QStringLiteral("(no note)") : version.note,
-                         marks.isEmpty() ? QString()
-                                         : QStringLiteral("  [%1]").arg(marks.join(
-                                               QLatin1String(", "))));
-        for (const QString& change : version.changes) text += QStringLiteral("    %1\n").arg(change);
+                         marks.isEmpty()
+                             ? QString()
+                             : QStringLiteral("  [%1]").arg(marks.join(QLatin1String(", "))));
+        for (const QString& change : version.changes)
+            text += QStringLiteral("    %1\n").arg(change);
         if (version.changes.isEmpty()) text += QStringLiteral("    (no change recorded)\n");
     }
     printOut(text);
@@ -167,9 +168,9 @@ int runWatch(const QString& dir, bool commit, const BackupAuthor& author) {
 
     QTemporaryDir now;
     if (!now.isValid())
-        return reportError(Error::invalidData(
-            QStringLiteral("no temporary folder for the devices' backup: %1")
-                .arg(now.errorString())));
+        return reportError(
+            Error::invalidData(QStringLiteral("no temporary folder for the devices' backup: %1")
+                                   .arg(now.errorString())));
     MachineRun run;
     run.machinePath = machinePath;  // identities first seen go to the copy, not the archive
     run.dir = now.path();
@@ -187,8 +188,7 @@ int runWatch(const QString& dir, bool commit, const BackupAuthor& author) {
     // difference of the device.
     changes.machineFile.clear();
     printOut(QStringLiteral("%1: the devices now against the released version %2 [%3]\n")
-                 .arg(setup->machine.machine, versionText(*released),
-                      released->releases.value(0)));
+                 .arg(setup->machine.machine, versionText(*released), released->releases.value(0)));
     const int code = printChanges(changes, setup->machine.machine);
     if (code == ExitDevice && commit) {
         BackupAuthor by = author;
@@ -279,7 +279,8 @@ int runMachineArchiveBackup(const MachineSetup& setup, const MachineRun& run) {
     }
     QString text = QStringLiteral("version %1 stored in %2 by %3\n")
                        .arg(stored->id.left(10), run.archive, run.author.operatorName);
-    for (const QString& line : stored->changes.lines()) text += QStringLiteral("    %1\n").arg(line);
+    for (const QString& line : stored->changes.lines())
+        text += QStringLiteral("    %1\n").arg(line);
     printOut(text);
     return ExitOk;
 }

@@ -82,8 +82,8 @@ DeviceChange compareDevice(const MachineFolderRead& older, const MachineFolderRe
         withoutVolatile(compared->differences, volatileItemsOf(older.machine, newer.machine, name),
                         &change.volatileLeftOut);
     if (before->identity.known() && after->identity.known() && before->identity != after->identity)
-        change.identity = tr("another device: %1 → %2")
-                              .arg(before->identity.text(), after->identity.text());
+        change.identity =
+            tr("another device: %1 → %2").arg(before->identity.text(), after->identity.text());
     change.kind = change.differences.isEmpty() && change.identity.isEmpty()
                       ? DeviceChange::Kind::Equal
                       : DeviceChange::Kind::Changed;
@@ -155,9 +155,8 @@ QString changeLine(const DeviceChange& change) {
         case DeviceChange::Kind::NotCompared:
             return {};
         case DeviceChange::Kind::Added:
-            return change.why.isEmpty()
-                       ? tr("%1: added").arg(change.name)
-                       : tr("%1: added (%2)").arg(change.name, change.why);
+            return change.why.isEmpty() ? tr("%1: added").arg(change.name)
+                                        : tr("%1: added (%2)").arg(change.name, change.why);
         case DeviceChange::Kind::Removed:
             return tr("%1: taken out of the machine").arg(change.name);
         case DeviceChange::Kind::Changed:
@@ -223,7 +222,8 @@ MachineChanges compareMachineFolders(const QString& older, const QString& newer)
     }
     for (const MachineDevice& device : before->machine.devices)
         if (!after->machine.device(device.name))
-            changes.devices << DeviceChange{device.name, DeviceChange::Kind::Removed, {}, 0, {}, {}};
+            changes.devices << DeviceChange{device.name, DeviceChange::Kind::Removed, {}, 0, {},
+                                            {}};
     changes.machineFile = machineFileChanges(before->machine, after->machine);
     return changes;
 }
@@ -246,9 +246,9 @@ MachineChanges firstVersionOf(const QString& folder) {
 Result<VersionFolder> takeOutVersion(const MachineArchive& archive, const QString& id) {
     VersionFolder version{id, std::make_unique<QTemporaryDir>()};
     if (!version.folder->isValid())
-        return Error::invalidData(tr("No temporary folder to take version %1 out of %2 into: %3")
-                                      .arg(id.left(10), archive.dir(),
-                                           version.folder->errorString()));
+        return Error::invalidData(
+            tr("No temporary folder to take version %1 out of %2 into: %3")
+                .arg(id.left(10), archive.dir(), version.folder->errorString()));
     if (const Status taken = archive.extract(id, version.path()); !taken) return taken.error();
     return version;
 }

@@ -14,4 +14,6 @@ target_sources(cambench_usecases PRIVATE
   family_backup.cpp
   machine_backup.h
   machine_backup.cpp
+  machine_history.h
+  machine_history.cpp
 )

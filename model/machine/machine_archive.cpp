@@ -75,10 +75,11 @@ Result<GitRun> runGit(const QString& dir, const QStringList& args, const QString
                 .arg(kGitTimeoutMs / 1000));
     }
     if (git.exitStatus() != QProcess::NormalExit || git.exitCode() != 0)
-        return Error::invalidData(tr("%1 in %2 failed (exit %3): %4")
-                                      .arg(command, dir)
-                                      .arg(git.exitCode())
-                                      .arg(QString::fromUtf8(git.readAllStandardError()).trimmed()));
+        return Error::invalidData(
+            tr("%1 in %2 failed (exit %3): %4")
+                .arg(command, dir)
+                .arg(git.exitCode())
+                .arg(QString::fromUtf8(git.readAllStandardError()).trimmed()));
     return GitRun{git.readAllStandardOutput()};
 }
 
@@ -122,8 +123,7 @@ QString versionMessageText(const VersionMessage& message) {
     QString text = message.note.trimmed().isEmpty() ? QStringLiteral("machine backup")
                                                     : message.note.trimmed();
     if (!message.changes.isEmpty())
-        text += QStringLiteral("\n\n") + kChangedHeading + u'\n' +
-                message.changes.join(u'\n');
+        text += QStringLiteral("\n\n") + kChangedHeading + u'\n' + message.changes.join(u'\n');
     return text + u'\n';
 }
 
@@ -133,8 +133,7 @@ VersionMessage parseVersionMessage(const QString& text) {
     const qsizetype at = text.lastIndexOf(marker);
     message.note = (at < 0 ? text : text.left(at)).trimmed();
     if (at >= 0)
-        message.changes =
-            text.mid(at + marker.size()).trimmed().split(u'\n', Qt::SkipEmptyParts);
+        message.changes = text.mid(at + marker.size()).trimmed().split(u'\n', Qt::SkipEmptyParts);
     return message;
 }
 
@@ -161,9 +160,8 @@ Result<MachineArchive> MachineArchive::openOrCreate(const QString& dir) {
         return Error::invalidData(tr("%1 holds files but is no git repository: it is not made "
                                      "an archive (name an empty or new folder).")
                                       .arg(dir));
-    if (const Result<GitRun> made =
-            runGit(dir, {QStringLiteral("init"), QStringLiteral("--quiet"),
-                         QStringLiteral("--initial-branch=main")});
+    if (const Result<GitRun> made = runGit(dir, {QStringLiteral("init"), QStringLiteral("--quiet"),
+                                                 QStringLiteral("--initial-branch=main")});
         !made)
         return made.error();
     return open(dir);
@@ -235,11 +233,10 @@ Result<QString> MachineArchive::release(const QString& id, const QString& operat
     const QString name =
         kReleasePrefix + QString::number(tags->isEmpty() ? 1 : tags->first().number + 1);
     const QString message = note.trimmed().isEmpty() ? QStringLiteral("released") : note.trimmed();
-    if (const Result<GitRun> tagged =
-            runGit(m_dir,
-                   {QStringLiteral("tag"), QStringLiteral("--annotate"), QStringLiteral("--file=-"),
-                    name, id},
-                   operatorName, {}, message.toUtf8() + '\n');
+    if (const Result<GitRun> tagged = runGit(m_dir,
+                                             {QStringLiteral("tag"), QStringLiteral("--annotate"),
+                                              QStringLiteral("--file=-"), name, id},
+                                             operatorName, {}, message.toUtf8() + '\n');
         !tagged)
         return tagged.error();
     return name;
@@ -288,9 +285,9 @@ Result<QString> MachineArchive::store(const QString& folder, const QStringList& 
     if (!tracked) return tracked.error();
     for (const QString& path : QString::fromUtf8(tracked->out).split(QChar(0), Qt::SkipEmptyParts))
         if (!files.contains(path))
-            if (const Result<GitRun> removed =
-                    runGit(m_dir, {QStringLiteral("rm"), QStringLiteral("--quiet"),
-                                   QStringLiteral("--"), path});
+            if (const Result<GitRun> removed = runGit(
+                    m_dir,
+                    {QStringLiteral("rm"), QStringLiteral("--quiet"), QStringLiteral("--"), path});
                 !removed)
                 return removed.error();
     for (const QString& path : files) {
@@ -311,11 +308,10 @@ Result<QString> MachineArchive::store(const QString& folder, const QStringList& 
             runGit(m_dir, QStringList{QStringLiteral("add"), QStringLiteral("--")} + files);
         !added)
         return added.error();
-    if (const Result<GitRun> committed =
-            runGit(m_dir,
-                   {QStringLiteral("commit"), QStringLiteral("--quiet"),
-                    QStringLiteral("--file=-")},
-                   {}, message.author, versionMessageText(message).toUtf8());
+    if (const Result<GitRun> committed = runGit(
+            m_dir,
+            {QStringLiteral("commit"), QStringLiteral("--quiet"), QStringLiteral("--file=-")}, {},
+            message.author, versionMessageText(message).toUtf8());
         !committed)
         return committed.error();
     return resolve({});

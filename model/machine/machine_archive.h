@@ -24,12 +24,12 @@ namespace cambench {
 
 // A version of the archive (a commit).
 struct ArchiveVersion {
-    QString id;        // the full commit id
-    QDateTime time;    // when it was stored (UTC)
-    QString author;    // the operator
-    QString note;      // why (-m); may be empty
-    QStringList changes;  // one line per changed device: "cams: program 3: output 2, output 7"
-    QStringList releases;  // the release tags on it ("released-2")
+    QString id;             // the full commit id
+    QDateTime time;         // when it was stored (UTC)
+    QString author;         // the operator
+    QString note;           // why (-m); may be empty
+    QStringList changes;    // one line per changed device: "cams: program 3: output 2, output 7"
+    QStringList releases;   // the release tags on it ("released-2")
     bool released = false;  // it is the current release (the highest released-N)
 
     QString shortId() const { return id.left(10); }

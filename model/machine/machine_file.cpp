@@ -37,10 +37,11 @@ QString optionText(const QJsonValue& value, bool* ok) {
 
 // "volatile": ["V100-V199", "V12"]: a list of texts, each an item or a range.
 Result<QStringList> volatileItemsOf(const QJsonValue& value, const QString& label) {
-    const QString shape = QStringLiteral(
-        "%1: \"volatile\" is a list of the items that change by themselves, as a comparison "
-        "names them: [\"V100-V199\", \"V12\"].")
-                              .arg(label);
+    const QString shape =
+        QStringLiteral(
+            "%1: \"volatile\" is a list of the items that change by themselves, as a comparison "
+            "names them: [\"V100-V199\", \"V12\"].")
+            .arg(label);
     if (!value.isArray()) return Error::invalidData(shape);
     QStringList items;
     for (const QJsonValue& item : value.toArray()) {
@@ -91,7 +92,7 @@ Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QStr
                                                  "name, family, %3.")
                                       .arg(label, it.key(),
                                            (keys + QStringList{QStringLiteral("volatile"),
-                                                   QStringLiteral("identity")})
+                                                               QStringLiteral("identity")})
                                                .join(QLatin1String(", "))));
         bool ok = false;
         const QString text = optionText(it.value(), &ok);

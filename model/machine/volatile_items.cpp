@@ -24,8 +24,7 @@ std::optional<KeyRange> rangeOf(const QString& item) {
     static const QRegularExpression range(QStringLiteral("^(.*?)(\\d+)-(.*?)(\\d+)$"));
     const QRegularExpressionMatch match = range.match(item);
     if (!match.hasMatch()) return std::nullopt;
-    if (!match.captured(3).isEmpty() && match.captured(3) != match.captured(1))
-        return std::nullopt;
+    if (!match.captured(3).isEmpty() && match.captured(3) != match.captured(1)) return std::nullopt;
     return KeyRange{match.captured(1), match.captured(2).toLongLong(),
                     match.captured(4).toLongLong()};
 }

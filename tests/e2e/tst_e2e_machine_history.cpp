@@ -109,15 +109,14 @@ private Q_SLOTS:
                  qPrintable(h));  // newest first
         for (const char* expected :
              {"bob  new glue pattern", "alice  commissioning", "    cams: program 0",
-              "    plc: V12 0 → 77", "    feed: 1901.1", "    cams: first version"})
+              "    plc: V12 0 → 77", "    feed: 1901.1", "    cams: added (first version: "})
             QVERIFY2(h.contains(QString::fromUtf8(expected)), qPrintable(expected + ("\n" + h)));
 
         // The differences of the last change, per device in its family's terms.
         const CliRun diff = runCli({"machine", "diff", archive});
         VERIFY_EXIT(diff, 1);
-        for (const char* expected : {"cams: program 0, output 1", "plc: V12 0 → 77",
-                                     "feed: 1901.1", "cams: DIFFERS", "plc: DIFFERS (1)",
-                                     "feed: DIFFERS (1)"})
+        for (const char* expected : {"cams: program 0, output 1", "plc: V12 0 → 77", "feed: 1901.1",
+                                     "cams: DIFFERS", "plc: DIFFERS (1)", "feed: DIFFERS (1)"})
             QVERIFY2(diff.out.contains(QString::fromUtf8(expected)),
                      qPrintable(expected + ("\n" + diff.out)));
         VERIFY_EXIT(runCli({"machine", "diff", archive, firstId.left(7), firstId}), 0);
@@ -133,8 +132,7 @@ private Q_SLOTS:
                  describe(watched).constData());
 
         // The released version restored: the devices are as released.
-        const CliRun restored =
-            runCli({"machine", "restore", archive, "--version", "released"});
+        const CliRun restored = runCli({"machine", "restore", archive, "--version", "released"});
         VERIFY_EXIT(restored, 0);
         QVERIFY2(restored.out.contains(QLatin1String("cams: restored\nplc: restored\nfeed: "
                                                      "restored")),
@@ -154,8 +152,8 @@ private Q_SLOTS:
 
         // The drive alone changes: only it is named; --commit stores it.
         VERIFY_EXIT(feed.cli({"c3", "write", "1901.1=7.5"}), 0);
-        const CliRun drive = runCli({"machine", "watch", archive, "--commit", "--operator",
-                                     "night-watch"});
+        const CliRun drive =
+            runCli({"machine", "watch", archive, "--commit", "--operator", "night-watch"});
         VERIFY_EXIT(drive, 1);
         QVERIFY2(drive.out.contains(QLatin1String("cams: equal\nplc: equal (1 changes of "
                                                   "volatile items left out)\nfeed: DIFFERS (1)")),

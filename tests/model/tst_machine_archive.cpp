@@ -71,19 +71,20 @@ private Q_SLOTS:
 
         writeText(QDir(stage).filePath(QStringLiteral("cams.json")), "first cams\n");
         writeText(QDir(stage).filePath(QStringLiteral("feed.json")), "first feed\n");
-        const Result<QString> first =
-            archive->store(stage, {QStringLiteral("cams.json"), QStringLiteral("feed.json")},
-                           {QStringLiteral("alice"), QStringLiteral("commissioning"),
-                            {QStringLiteral("cams: first version"),
-                             QStringLiteral("feed: first version")}});
+        const Result<QString> first = archive->store(
+            stage, {QStringLiteral("cams.json"), QStringLiteral("feed.json")},
+            {QStringLiteral("alice"),
+             QStringLiteral("commissioning"),
+             {QStringLiteral("cams: first version"), QStringLiteral("feed: first version")}});
         QVERIFY2(first.ok(), qPrintable(first.error().message));
 
         // The second version lacks feed (taken out of the machine).
         writeText(QDir(stage).filePath(QStringLiteral("cams.json")), "second cams\n");
-        const Result<QString> second = archive->store(
-            stage, {QStringLiteral("cams.json")},
-            {QStringLiteral("bob"), QStringLiteral("new glue pattern"),
-             {QStringLiteral("cams: program 3: output 2, output 7")}});
+        const Result<QString> second =
+            archive->store(stage, {QStringLiteral("cams.json")},
+                           {QStringLiteral("bob"),
+                            QStringLiteral("new glue pattern"),
+                            {QStringLiteral("cams: program 3: output 2, output 7")}});
         QVERIFY2(second.ok(), qPrintable(second.error().message));
         QVERIFY(!QFile::exists(QDir(dir).filePath(QStringLiteral("feed.json"))));
 

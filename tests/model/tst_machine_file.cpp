@@ -152,9 +152,9 @@ private Q_SLOTS:
     // written back on the device's line; a range ending below its start or
     // a list of numbers is refused naming the device.
     void volatileItemsReadAndWrittenBack() {
-        const QByteArray text =
-            json("{'machine': 'P', 'devices': [{'name': 'press-plc', 'family': 'mc1', 'port': "
-                 "'sim', 'volatile': ['V100-V199', 'V12']}]}");
+        const QByteArray text = json(
+            "{'machine': 'P', 'devices': [{'name': 'press-plc', 'family': 'mc1', 'port': "
+            "'sim', 'volatile': ['V100-V199', 'V12']}]}");
         const Result<MachineFile> machine = parseMachineFile(text, QStringLiteral("m.json"));
         QVERIFY2(machine.ok(), qPrintable(machine.error().message));
         QCOMPARE(machine->devices.at(0).volatileItems, QStringList({"V100-V199", "V12"}));
@@ -188,12 +188,14 @@ private Q_SLOTS:
                                          QStringLiteral("camcon"),
                                          {{QStringLiteral("port"), QStringLiteral("5")},
                                           {QStringLiteral("protocol"), QStringLiteral("standard")}},
+                                         {},
                                          {}}
                         << MachineDevice{
                                QStringLiteral("feed"),
                                QStringLiteral("compax3"),
                                {{QStringLiteral("address"), QStringLiteral("3")},
                                 {QStringLiteral("port"), QStringLiteral("tcp://ds:4001")}},
+                               {},
                                {}};
         machine.shaftFrom = QStringLiteral("feed");
         machine.shaftTo = QStringLiteral("cams");
