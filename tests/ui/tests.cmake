@@ -14,5 +14,7 @@ cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp 
 cambench_add_test(ui_shell_family_switch_test SOURCES ui/register_widgets.cpp ui/shell/tst_family_switch.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 30: the machine window (several devices at once, STOP for all, the machine file).
 cambench_add_test(ui_shell_machine_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine.cpp ui/shell/shell_fixture.h ui/shell/stop_reach_checks.h LIBS cambench_ui cambench_gui_registry)
+# Issue 37: Machine → History… (versions compared, one marked released).
+cambench_add_test(ui_shell_machine_history_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine_history.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Each family's GUI tests, listed in its folder.
 cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

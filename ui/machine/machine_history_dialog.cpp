@@ -189,9 +189,10 @@ void MachineHistoryDialog::showChanges(const usecases::MachineChanges& changes,
         if (device.differences.isEmpty() || !device.identity.isEmpty())
             addRow({device.name, QString(), QString(), QString(), deviceState(device)});
         for (const BackupDifference& difference : device.differences)
-            addRow({device.name, difference.key + (difference.what.isEmpty()
-                                                       ? QString()
-                                                       : QStringLiteral(" ") + difference.what),
+            addRow({device.name,
+                    difference.key + (difference.what.isEmpty()
+                                          ? QString()
+                                          : QStringLiteral(" ") + difference.what),
                     difference.oldValue, difference.newValue, difference.text});
     }
     for (const QString& line : changes.machineFile)
@@ -217,7 +218,7 @@ void MachineHistoryDialog::compareSelected() {
     }
     showChanges(usecases::compareMachineFolders(older->path(), newer->path()),
                 tr("Version %1 → %2").arg(ids.at(1).left(10), ids.at(0).left(10)));
-    emit finished();
+    Q_EMIT finished();
 }
 
 bool MachineHistoryDialog::takeOutSelected() {
@@ -239,7 +240,7 @@ void MachineHistoryDialog::compareWithDevicesNow() {
     m_jobs->compareWithDevices(m_folder->path(), [this, id](usecases::MachineChanges changes) {
         showChanges(changes, tr("Version %1 → the devices now").arg(id.left(10)));
         updateButtons();
-        emit finished();
+        Q_EMIT finished();
     });
     updateButtons();
 }
@@ -254,7 +255,7 @@ void MachineHistoryDialog::markReleased() {
     }
     reload();
     say(tr("Version %1 is the released version now (%2).").arg(ids.first().left(10), *tag));
-    emit finished();
+    Q_EMIT finished();
 }
 
 void MachineHistoryDialog::restoreSelected() {
@@ -273,14 +274,15 @@ void MachineHistoryDialog::restoreSelected() {
             ready << device.name;
             text += tr("%1: %n item(s) to change\n", nullptr, int(device.plan->changes.size()))
                         .arg(device.name);
-            for (const QString& step : device.plan->steps) text += QStringLiteral("    %1\n").arg(step);
+            for (const QString& step : device.plan->steps)
+                text += QStringLiteral("    %1\n").arg(step);
             for (const BackupDifference& change : device.plan->changes)
                 text += QStringLiteral("    %1\n").arg(change.text);
         }
         if (ready.isEmpty()) {
             say(tr("Version %1 is not restored: no device can take it.\n%2")
                     .arg(id.left(10), text));
-            emit finished();
+            Q_EMIT finished();
             return;
         }
         QMessageBox question(QMessageBox::Warning, tr("Restore version %1").arg(id.left(10)),
@@ -294,21 +296,20 @@ void MachineHistoryDialog::restoreSelected() {
         question.setDefaultButton(QMessageBox::Cancel);
         if (question.exec() != QMessageBox::Yes) {
             say(tr("Version %1 was not restored; nothing was written.").arg(id.left(10)));
-            emit finished();
+            Q_EMIT finished();
             return;
         }
-        const QString safety =
-            safetyFolderPath(m_archive->dir(), QDateTime::currentDateTimeUtc());
-        m_jobs->restore(m_folder->path(), ready, safety,
-                        [this, id](QList<MachineHistoryJobs::DeviceRestored> lines) {
-                            QStringList said;
-                            for (const auto& line : lines)
-                                said << QStringLiteral("%1: %2").arg(line.name, line.text);
-                            say(tr("Restore of version %1:\n%2")
-                                    .arg(id.left(10), said.join(u'\n')));
-                            updateButtons();
-                            emit finished();
-                        });
+        const QString safety = safetyFolderPath(m_archive->dir(), QDateTime::currentDateTimeUtc());
+        m_jobs->restore(
+            m_folder->path(), ready, safety,
+            [this, id](QList<MachineHistoryJobs::DeviceRestored> lines) {
+                QStringList said;
+                for (const auto& line : lines)
+                    said << QStringLiteral("%1: %2").arg(line.name, line.text);
+                say(tr("Restore of version %1:\n%2").arg(id.left(10), said.join(u'\n')));
+                updateButtons();
+                Q_EMIT finished();
+            });
         updateButtons();
     });
     updateButtons();

@@ -62,7 +62,7 @@ void MachineHistoryJobs::forEachDevice(
     m_pending += *waiting;
     for (const auto& [unit, entry] : asked) {
         const QString name = unit->name();
-        unit->session()->run<comm::DeviceConnection, T>(
+        unit->session()->template run<comm::DeviceConnection, T>(
             this, tr("%1: %2").arg(name, entry.file),
             [work, entry = entry](comm::DeviceConnection&, comm::JobContext& job) {
                 return work(entry, job);
@@ -103,8 +103,8 @@ void MachineHistoryJobs::compareWithDevices(const QString& dir,
                     if (folder)
                         if (const MachineDevice* device = folder->machine.device(name))
                             items << device->volatileItems;
-                    change.differences = usecases::withoutVolatile(
-                        verified->comparison.differences, items, &change.volatileLeftOut);
+                    change.differences = usecases::withoutVolatile(verified->comparison.differences,
+                                                                   items, &change.volatileLeftOut);
                     change.kind = change.differences.isEmpty()
                                       ? usecases::DeviceChange::Kind::Equal
                                       : usecases::DeviceChange::Kind::Changed;
@@ -168,11 +168,12 @@ void MachineHistoryJobs::restore(const QString& dir, const QStringList& names,
                     lines << DeviceRestored{
                         name, false,
                         tr("NOT RESTORED: %1")
-                            .arg(anotherDeviceWhy(restored->checked, "Nothing was written to it."))};
+                            .arg(
+                                anotherDeviceWhy(restored->checked, "Nothing was written to it."))};
                 } else if (!restored->result.ok()) {
-                    lines << DeviceRestored{name, false,
-                                            tr("NOT RESTORED completely: %1")
-                                                .arg(restored->result.outcomes.summary())};
+                    lines << DeviceRestored{
+                        name, false,
+                        tr("NOT RESTORED completely: %1").arg(restored->result.outcomes.summary())};
                 } else {
                     lines << DeviceRestored{name, true, tr("restored")};
                 }

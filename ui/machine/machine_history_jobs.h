@@ -31,8 +31,7 @@ public:
 
     // Each device of the backup folder `dir` against the device now; the
     // volatile items of the folder's and the machine's file left out.
-    void compareWithDevices(const QString& dir,
-                            std::function<void(usecases::MachineChanges)> done);
+    void compareWithDevices(const QString& dir, std::function<void(usecases::MachineChanges)> done);
 
     // One device's plan of a restore: what it will write, or why nothing.
     struct DevicePlan {

@@ -19,9 +19,14 @@ MachineUnit::MachineUnit(MachineDevice device, StopControl* machineStop, QObject
     connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         // The machine file holds what the device is reached with: also a
         // port or protocol chosen on its Connection page.
-        if (state == comm::ConnectionState::Connected)
+        // The items that change by themselves are the file's, not the
+        // connection's: they stay.
+        if (state == comm::ConnectionState::Connected) {
+            const QStringList volatileItems = m_device.volatileItems;
             m_device =
                 machineDeviceFor(m_device.name, m_session->connection(), m_session->protocol());
+            m_device.volatileItems = volatileItems;
+        }
         Q_EMIT changed();
     });
     connect(m_session, &DeviceSession::deviceCheckedChanged, this, &MachineUnit::changed);

@@ -1,6 +1,7 @@
 #include "machine_window.h"
 
 #include "machine.h"
+#include "machine_history_dialog.h"
 #include "machine_report.h"
 #include "machine_stop.h"
 #include "machine_unit.h"
@@ -97,6 +98,7 @@ void MachineWindow::createMenus() {
     menu->addAction(tr("&Add device…"), this, &MachineWindow::addDevice);
     menu->addAction(tr("&Save machine as…"), this, &MachineWindow::saveAs);
     menu->addAction(tr("Machine &report…"), this, &MachineWindow::writeReport);
+    menu->addAction(tr("&History…"), this, [this] { openMachineHistory(m_machine, this); });
     menu->addSeparator();
     menu->addAction(tr("&Close machine"), this, &QWidget::close);
 }

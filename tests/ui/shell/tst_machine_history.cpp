@@ -92,8 +92,8 @@ Result<usecases::VersionStored> storeVersion(Machine* machine, const MachineArch
 }
 
 bool writeVariable(MachineUnit* plc, int number, qint64 value) {
-    const auto written = runOn<comm::Mc1Device, Done>(
-        plc, [=](comm::Mc1Device& device, comm::JobContext&) {
+    const auto written =
+        runOn<comm::Mc1Device, Done>(plc, [=](comm::Mc1Device& device, comm::JobContext&) {
             return device.writeVariable(number, value);
         });
     return written && *written;
@@ -139,6 +139,9 @@ private Q_SLOTS:
         Machine* machine = shell.openMachine(press(), {});
         QVERIFY(waitConnected(*machine));
         MachineUnit* plc = machine->unit(QStringLiteral("press-plc"));
+        // Connected, the device's line is rebuilt from its connection: the
+        // items that change by themselves stay the file's.
+        QCOMPARE(machine->file().devices.at(1).volatileItems, QStringList{"V100-V199"});
         QTemporaryDir work;
         const Result<MachineArchive> archive =
             MachineArchive::openOrCreate(work.filePath(QStringLiteral("archive")));
