@@ -46,54 +46,6 @@ Result<ArchiveVersion> versionOf(const MachineArchive& archive, const QString& i
     return Error::usage(QStringLiteral("%1 is no version of %2").arg(id, archive.dir()));
 }
 
-// Every difference a line ("cams: program 3, output 2: cam 100–200
-// added"), then a line per device; the exit code: 4 when a device could not
-// be compared, 3 when one was not saved, 1 when one differs.
-int printChanges(const MachineChanges& changes, const QString& machine) {
-    QString text;
-    QStringList summary;
-    int worst = ExitOk;
-    for (const DeviceChange& device : changes.devices) {
-        if (!device.identity.isEmpty())
-            text += device.name + QStringLiteral(": ") + device.identity + u'\n';
-        for (const BackupDifference& difference : device.differences)
-            text += difference.line() + u'\n';
-        const QString volatileNote =
-            device.volatileLeftOut == 0 ? QString()
-                                        : QStringLiteral(" (%1 changes of volatile items left out)")
-                                              .arg(device.volatileLeftOut);
-        switch (device.kind) {
-            case DeviceChange::Kind::Equal:
-                summary << QStringLiteral("%1: equal%2").arg(device.name, volatileNote);
-                break;
-            case DeviceChange::Kind::Changed:
-                summary << QStringLiteral("%1: DIFFERS (%2)%3")
-                               .arg(device.name)
-                               .arg(device.differences.size() + (device.identity.isEmpty() ? 0 : 1))
-                               .arg(volatileNote);
-                break;
-            case DeviceChange::Kind::Added:
-            case DeviceChange::Kind::Removed:
-                summary << QStringLiteral("%1: DIFFERS: %2")
-                               .arg(device.name,
-                                    usecases::changeLine(device).mid(device.name.size() + 2));
-                break;
-            case DeviceChange::Kind::NotSaved:
-                summary << QStringLiteral("%1: NOT REACHED: %2").arg(device.name, device.why);
-                if (worst != ExitInvalidData) worst = ExitCommunication;
-                break;
-            case DeviceChange::Kind::NotCompared:
-                summary << QStringLiteral("%1: NOT COMPARED: %2").arg(device.name, device.why);
-                worst = ExitInvalidData;
-                break;
-        }
-    }
-    for (const QString& line : changes.machineFile)
-        text += QStringLiteral("machine file: %1\n").arg(line);
-    printOut(text + QStringLiteral("%1:\n%2\n").arg(machine, summary.join(u'\n')));
-    return worst != ExitOk ? worst : changes.changed() ? ExitDevice : ExitOk;
-}
-
 // The machine's name a folder's machine file gives; the folder's when none.
 QString machineName(const QString& folder) {
     const Result<usecases::MachineFolderRead> read = usecases::readMachineFolder(folder);
@@ -189,7 +141,7 @@ int runWatch(const QString& dir, bool commit, const BackupAuthor& author) {
     changes.machineFile.clear();
     printOut(QStringLiteral("%1: the devices now against the released version %2 [%3]\n")
                  .arg(setup->machine.machine, versionText(*released), released->releases.value(0)));
-    const int code = printChanges(changes, setup->machine.machine);
+    const int code = printMachineChanges(changes, setup->machine.machine, ExitCommunication);
     if (code == ExitDevice && commit) {
         BackupAuthor by = author;
         if (by.note.isEmpty())
@@ -211,6 +163,51 @@ int runWatch(const QString& dir, bool commit, const BackupAuthor& author) {
 }
 
 }  // namespace
+
+int printMachineChanges(const MachineChanges& changes, const QString& machine, int notSavedExit) {
+    QString text;
+    QStringList summary;
+    int worst = ExitOk;
+    for (const DeviceChange& device : changes.devices) {
+        if (!device.identity.isEmpty())
+            text += device.name + QStringLiteral(": ") + device.identity + u'\n';
+        for (const BackupDifference& difference : device.differences)
+            text += difference.line() + u'\n';
+        const QString volatileNote =
+            device.volatileLeftOut == 0 ? QString()
+                                        : QStringLiteral(" (%1 changes of volatile items left out)")
+                                              .arg(device.volatileLeftOut);
+        switch (device.kind) {
+            case DeviceChange::Kind::Equal:
+                summary << QStringLiteral("%1: equal%2").arg(device.name, volatileNote);
+                break;
+            case DeviceChange::Kind::Changed:
+                summary << QStringLiteral("%1: DIFFERS (%2)%3")
+                               .arg(device.name)
+                               .arg(device.differences.size() + (device.identity.isEmpty() ? 0 : 1))
+                               .arg(volatileNote);
+                break;
+            case DeviceChange::Kind::Added:
+            case DeviceChange::Kind::Removed:
+                summary << QStringLiteral("%1: DIFFERS: %2")
+                               .arg(device.name,
+                                    usecases::changeLine(device).mid(device.name.size() + 2));
+                break;
+            case DeviceChange::Kind::NotSaved:
+                summary << QStringLiteral("%1: NOT REACHED: %2").arg(device.name, device.why);
+                if (worst != ExitInvalidData) worst = notSavedExit;
+                break;
+            case DeviceChange::Kind::NotCompared:
+                summary << QStringLiteral("%1: NOT COMPARED: %2").arg(device.name, device.why);
+                worst = ExitInvalidData;
+                break;
+        }
+    }
+    for (const QString& line : changes.machineFile)
+        text += QStringLiteral("machine file: %1\n").arg(line);
+    printOut(text + QStringLiteral("%1:\n%2\n").arg(machine, summary.join(u'\n')));
+    return worst != ExitOk ? worst : changes.changed() ? ExitDevice : ExitOk;
+}
 
 bool isMachineArchive(const QString& dir) {
     return QFileInfo(QDir(dir).filePath(QStringLiteral(".git"))).exists() &&
@@ -240,8 +237,9 @@ int runMachineVersionDiff(const QString& dir, const QStringList& versions) {
     if (!newerFolder) return reportError(newerFolder.error());
     printOut(QStringLiteral("version %1\n     → %2\n")
                  .arg(versionText(*olderVersion), versionText(*newerVersion)));
-    return printChanges(usecases::compareMachineFolders(olderFolder->path(), newerFolder->path()),
-                        machineName(newerFolder->path()));
+    return printMachineChanges(
+        usecases::compareMachineFolders(olderFolder->path(), newerFolder->path()),
+        machineName(newerFolder->path()), ExitInvalidData);
 }
 
 int runMachineArchiveBackup(const MachineSetup& setup, const MachineRun& run) {

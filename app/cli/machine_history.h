@@ -10,10 +10,20 @@
 #include "cli_options.h"
 #include "machine_command.h"
 
+#include "comm/usecases/machine_history.h"
+
 #include <QString>
 #include <QStringList>
 
 namespace cambench::cli {
+
+// Every difference a line ("cams: program 3, output 2: cam 100–200
+// added"), then a line per device; the exit code: 4 when a device could not
+// be compared, `notSavedExit` when one was not saved (3 for the devices now:
+// not reached; 4 for a folder that lacks it), 1 when one differs. `machine
+// diff` of two folders or two versions and `machine watch` print so.
+int printMachineChanges(const usecases::MachineChanges& changes, const QString& machine,
+                        int notSavedExit);
 
 // Whether `dir` is the top folder of a git repository (an archive).
 bool isMachineArchive(const QString& dir);
