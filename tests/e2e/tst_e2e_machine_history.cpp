@@ -9,6 +9,7 @@
 // names only it, and --commit stores it; a device not reached exits 3;
 // plain `git log` and `git show` read the archive.
 #include "e2e_support.h"
+#include "press_machine.h"
 
 #include <QDir>
 #include <QJsonArray>
@@ -24,21 +25,6 @@
 using namespace cambench::e2e;
 
 namespace {
-
-QJsonObject deviceAt(const QString& name, const QString& family, const QString& port) {
-    return {{"name", name}, {"family", family}, {"port", port}, {"baud", 115200}};
-}
-
-// The press; the MC200's V100-V199 count pieces and change by themselves.
-QByteArray machineFile(const QString& cams, const QString& plc, const QString& feed) {
-    QJsonObject mc200 = deviceAt("plc", "mc1", plc);
-    mc200.insert("protocol", "mc1");
-    mc200.insert("variant", "mc200v2");
-    mc200.insert("volatile", QJsonArray{"V100-V199"});
-    const QJsonArray devices{deviceAt("cams", "camcon", cams), mc200,
-                             deviceAt("feed", "compax3", feed)};
-    return QJsonDocument(QJsonObject{{"machine", "Press 7"}, {"devices", devices}}).toJson();
-}
 
 // Plain git in the archive, as a person would run it (no configuration of
 // theirs needed): what it printed.
@@ -70,7 +56,8 @@ private Q_SLOTS:
         START_SIM(plc, {"--variant", "mc200v2"});
         START_SIM(feed, {"--drive-type", "S150V4"});
         const QString file = cams.path(QStringLiteral("press7.json"));
-        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        QVERIFY(writeBytes(
+            file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath(), {"V100-V199"})));
         const QString archive = cams.path(QStringLiteral("press7-archive"));  // made by the backup
 
         const CliRun first = runCli({"machine", "backup", file, "--archive", archive, "-m",
