@@ -67,20 +67,12 @@ struct MachineFolder {
 };
 
 Result<MachineFolder> loadFolder(const QString& dir) {
-    const QString machinePath = QDir(dir).filePath(kMachineBackupFile);
-    const Result<QByteArray> machineBytes = readFileBytes(machinePath);
-    if (!machineBytes)
-        return Error::invalidData(
-            QStringLiteral("%1 is no machine backup folder: %2 (made by `machine backup`)")
-                .arg(dir, machineBytes.error().message));
-    Result<MachineSetup> setup = loadMachine(*machineBytes, machinePath);
+    const Result<usecases::MachineFolderRead> read = usecases::readMachineFolder(dir);
+    if (!read) return read.error();
+    const Result<MachineSetup> setup =
+        machineSetup(read->machine, QDir(dir).filePath(kMachineBackupFile));
     if (!setup) return setup.error();
-    const QString manifestPath = QDir(dir).filePath(kMachineManifestFile);
-    const Result<QByteArray> manifestBytes = readFileBytes(manifestPath);
-    if (!manifestBytes) return manifestBytes.error();
-    const Result<MachineManifest> manifest = parseManifest(*manifestBytes, manifestPath);
-    if (!manifest) return manifest.error();
-    return MachineFolder{dir, *setup, *manifest};
+    return MachineFolder{dir, *setup, read->manifest};
 }
 
 // "another device answers: ... NAME." on stderr, as the device's own

@@ -102,7 +102,11 @@ Status checkDeviceNames(const MachineFile& machine, const QStringList& names,
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where) {
     Result<MachineFile> machine = parseMachineFile(bytes, where);
     if (!machine) return machine.error();
-    MachineSetup setup{*machine, {}};
+    return machineSetup(*machine, where);
+}
+
+Result<MachineSetup> machineSetup(const MachineFile& machine, const QString& where) {
+    MachineSetup setup{machine, {}};
     for (const MachineDevice& device : setup.machine.devices) {
         const Result<GlobalOptions> parsed = deviceOptions(device, where);
         if (!parsed) return parsed.error();

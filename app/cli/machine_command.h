@@ -23,6 +23,8 @@ struct MachineSetup {
 // `where` names the file in messages. A device whose options do not fit
 // (a wrong family, a protocol of another family) is refused naming it.
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where);
+// The same of a machine file already read.
+Result<MachineSetup> machineSetup(const MachineFile& machine, const QString& where);
 
 // The devices `names` (--replacement a,b) are: refused naming the one the
 // machine lacks.
