@@ -52,9 +52,11 @@ QList<Device> devices(int baud) {
              entry(QStringLiteral("feed"), QStringLiteral("compax3"))}};
 }
 
-// Seconds of one `machine backup` of `entries`; a failed backup is fatal
-// (a figure of a failed run would say nothing).
-double timeBackup(const QTemporaryDir& dir, const QString& name, const QJsonArray& entries) {
+// Seconds of one `machine backup` of `entries` into `name`-backup, or with
+// `into` (--archive DIR ...) as given; a failed backup is fatal (a figure
+// of a failed run would say nothing).
+double timeBackup(const QTemporaryDir& dir, const QString& name, const QJsonArray& entries,
+                  const QStringList& into = {}) {
     const QString file = dir.filePath(name + QStringLiteral(".json"));
     QFile out(file);
     if (!out.open(QIODevice::WriteOnly) ||
@@ -65,8 +67,10 @@ double timeBackup(const QTemporaryDir& dir, const QString& name, const QJsonArra
     out.close();
     QProcess cli;
     cli.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
-    cli.setArguments({QStringLiteral("machine"), QStringLiteral("backup"), file,
-                      QStringLiteral("-o"), dir.filePath(name + QStringLiteral("-backup"))});
+    cli.setArguments(QStringList{QStringLiteral("machine"), QStringLiteral("backup"), file} +
+                     (into.isEmpty() ? QStringList{QStringLiteral("-o"),
+                                                   dir.filePath(name + QStringLiteral("-backup"))}
+                                     : into));
     dieWithBenchmark(cli);
     QElapsedTimer timer;
     timer.start();
@@ -120,8 +124,33 @@ void benchMachine(int baud, int repeat) {
     QList<double> times;
     for (int i = 0; i < repeat; ++i) times << timeBackup(dir, QStringLiteral("machine"), machine);
     const double together = median(times);
-    out << QStringLiteral("| the machine, 3 ports at once | 3 | %1 s |\n\n")
-               .arg(together, 0, 'f', 2)
+    out << QStringLiteral("| the machine, 3 ports at once | 3 | %1 s |\n").arg(together, 0, 'f', 2);
+    out.flush();
+    // Into an archive (issue 37): a new one each run (the first version:
+    // git init, the commit), then one archive again and again (nothing
+    // changed: the latest version taken out and compared, no commit).
+    QList<double> first;
+    QList<double> again;
+    for (int i = 0; i < repeat; ++i) {
+        first << timeBackup(
+            dir, QStringLiteral("machine"), machine,
+            {QStringLiteral("--archive"), dir.filePath(QStringLiteral("archive-%1").arg(i)),
+             QStringLiteral("-m"), QStringLiteral("bench")});
+        again << timeBackup(dir, QStringLiteral("machine"), machine,
+                            {QStringLiteral("--archive"), dir.filePath(QStringLiteral("archive-0")),
+                             QStringLiteral("-m"), QStringLiteral("bench")});
+    }
+    const double archived = median(first);
+    const double compared = median(again);
+    out << QStringLiteral("| the machine into a new archive (first version) | 3 | %1 s |\n")
+               .arg(archived, 0, 'f', 2)
+        << QStringLiteral("| the machine into its archive, nothing changed | 3 | %1 s |\n\n")
+               .arg(compared, 0, 'f', 2)
+        << QStringLiteral(
+               "into the archive / slowest alone: %1 (first version), %2 (nothing "
+               "changed); target <= 1.2\n")
+               .arg(archived / slowest, 0, 'f', 2)
+               .arg(compared / slowest, 0, 'f', 2)
         << QStringLiteral(
                "machine / slowest alone: %1 (target <= 1.2); the devices one after "
                "the other would take their sum, %2 s\n")

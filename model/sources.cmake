@@ -12,6 +12,10 @@ target_sources(cambench_model PRIVATE
   backup_difference.cpp
   readable_json.h
   readable_json.cpp
+  machine/machine_archive.h
+  machine/machine_archive.cpp
+  machine/volatile_items.h
+  machine/volatile_items.cpp
   model_log.h
   model_log.cpp
   atomic_file.h

@@ -86,6 +86,10 @@ target_sources(cambench_ui PRIVATE
   machine/machine_progress.cpp
   machine/machine_report.h
   machine/machine_report.cpp
+  machine/machine_history_dialog.h
+  machine/machine_history_dialog.cpp
+  machine/machine_history_jobs.h
+  machine/machine_history_jobs.cpp
   machine/demo_machine.h
   machine/demo_machine.cpp
   shell.h

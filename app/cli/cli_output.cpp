@@ -37,8 +37,10 @@ void OutputBlock::append(bool toStderr, const QByteArray& bytes) {
         m_pieces.append({toStderr, bytes});
 }
 
+// Into this thread's block when its output is captured too (a machine
+// backup run inside `machine watch`, whose lines are said only on failure).
 void OutputBlock::print() const {
-    for (const auto& [toStderr, bytes] : m_pieces) writeRaw(toStderr, bytes);
+    for (const auto& [toStderr, bytes] : m_pieces) write(toStderr, bytes);
 }
 
 CaptureOutput::CaptureOutput(OutputBlock& block) : m_previous(t_capture) {

@@ -29,7 +29,9 @@ int runCommandLine(const QStringList& args) {
         printOut(lines.isEmpty() ? usageText() : lines);
         return ExitOk;
     }
-    if (args.contains(QLatin1String("--version"))) {
+    // After a command word --version is the command's (machine restore DIR
+    // --version A names a version of the machine's archive).
+    if (command.isEmpty() && args.contains(QLatin1String("--version"))) {
         printOut(QStringLiteral("cambench-cli %1\n").arg(QLatin1String(CAMBENCH_VERSION_TEXT)));
         return ExitOk;
     }

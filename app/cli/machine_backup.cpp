@@ -15,6 +15,7 @@
 // copies go to a folder beside the backup folder, with a manifest of their
 // own. Names no family: the words of each difference are the family's.
 #include "machine_command.h"
+#include "machine_history.h"
 
 #include "backup_output.h"
 #include "cli_output.h"
@@ -63,20 +64,12 @@ struct MachineFolder {
 };
 
 Result<MachineFolder> loadFolder(const QString& dir) {
-    const QString machinePath = QDir(dir).filePath(kMachineBackupFile);
-    const Result<QByteArray> machineBytes = readFileBytes(machinePath);
-    if (!machineBytes)
-        return Error::invalidData(
-            QStringLiteral("%1 is no machine backup folder: %2 (made by `machine backup`)")
-                .arg(dir, machineBytes.error().message));
-    Result<MachineSetup> setup = loadMachine(*machineBytes, machinePath);
+    const Result<usecases::MachineFolderRead> read = usecases::readMachineFolder(dir);
+    if (!read) return read.error();
+    const Result<MachineSetup> setup =
+        machineSetup(read->machine, QDir(dir).filePath(kMachineBackupFile));
     if (!setup) return setup.error();
-    const QString manifestPath = QDir(dir).filePath(kMachineManifestFile);
-    const Result<QByteArray> manifestBytes = readFileBytes(manifestPath);
-    if (!manifestBytes) return manifestBytes.error();
-    const Result<MachineManifest> manifest = parseManifest(*manifestBytes, manifestPath);
-    if (!manifest) return manifest.error();
-    return MachineFolder{dir, *setup, *manifest};
+    return MachineFolder{dir, *setup, read->manifest};
 }
 
 // "another device answers: ... NAME." on stderr, as the device's own
@@ -343,7 +336,8 @@ int runMachineRestore(const QString& dir, const MachineRun& run) {
     if (!folder) return reportError(folder.error());
     // The safety copies of this restore: a folder beside the backup's,
     // made when the first device takes one.
-    const QString safetyDir = safetyFolderPath(dir, QDateTime::currentDateTimeUtc());
+    const QString safetyDir = safetyFolderPath(run.safetyBeside.isEmpty() ? dir : run.safetyBeside,
+                                               QDateTime::currentDateTimeUtc());
     std::vector<std::optional<ManifestEntry>> copies(size_t(folder->setup.machine.devices.size()));
     const int code = forEachSaved(
         *folder, run.only, run.replacements,
@@ -431,45 +425,12 @@ int runMachineRestore(const QString& dir, const MachineRun& run) {
 int runMachineDiff(const QString& first, const QString& second) {
     const Result<MachineFolder> one = loadFolder(first);
     if (!one) return reportError(one.error());
-    const Result<MachineFolder> two = loadFolder(second);
-    if (!two) return reportError(two.error());
-    QStringList summary;
-    int worst = ExitOk;
-    bool differs = false;
-    QStringList names;
-    for (const MachineDevice& device : one->setup.machine.devices) names << device.name;
-    for (const MachineDevice& device : two->setup.machine.devices)
-        if (!names.contains(device.name)) names << device.name;
-    for (const QString& name : names) {
-        const ManifestEntry* a = one->manifest.entry(name);
-        const ManifestEntry* b = two->manifest.entry(name);
-        if (!a || !b || !a->saved() || !b->saved()) {
-            summary << QStringLiteral("%1: not saved in %2")
-                           .arg(name, !a || !a->saved() ? first : second);
-            worst = ExitInvalidData;
-            continue;
-        }
-        const Result<BackupComparison> comparison =
-            usecases::diffMachineDevice(*a, first, *b, second);
-        if (!comparison) {
-            reportError(comparison.error());
-            summary << QStringLiteral("%1: NOT COMPARED (%2)")
-                           .arg(name, exitText(exitCodeFor(comparison.error().kind)));
-            worst = exitCodeFor(comparison.error().kind);
-            continue;
-        }
-        QString text;
-        for (const BackupDifference& difference : comparison->differences)
-            text += difference.line() + QLatin1Char('\n');
-        printOut(text);
-        differs = differs || !comparison->equal();
-        summary << (comparison->equal() ? QStringLiteral("%1: equal").arg(name)
-                                        : QStringLiteral("%1: DIFFERS (%2)")
-                                              .arg(name)
-                                              .arg(comparison->differences.size()));
-    }
-    printOut(QStringLiteral("%1:\n%2\n").arg(one->setup.machine.machine, summary.join('\n')));
-    return worst != ExitOk ? worst : differs ? ExitDevice : ExitOk;
+    if (const Result<MachineFolder> two = loadFolder(second); !two) return reportError(two.error());
+    // The history's comparison (the volatile items left out); where a
+    // device is reached is no difference of the device.
+    usecases::MachineChanges changes = usecases::compareMachineFolders(first, second);
+    changes.machineFile.clear();
+    return printMachineChanges(changes, one->setup.machine.machine, ExitInvalidData);
 }
 
 }  // namespace cambench::cli

@@ -8,6 +8,7 @@
 #include "cli_output.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "machine_history.h"
 #include "machine_parallel.h"
 
 #include "comm/device/device_connection.h"
@@ -101,7 +102,11 @@ Status checkDeviceNames(const MachineFile& machine, const QStringList& names,
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where) {
     Result<MachineFile> machine = parseMachineFile(bytes, where);
     if (!machine) return machine.error();
-    MachineSetup setup{*machine, {}};
+    return machineSetup(*machine, where);
+}
+
+Result<MachineSetup> machineSetup(const MachineFile& machine, const QString& where) {
+    MachineSetup setup{machine, {}};
     for (const MachineDevice& device : setup.machine.devices) {
         const Result<GlobalOptions> parsed = deviceOptions(device, where);
         if (!parsed) return parsed.error();
@@ -146,6 +151,12 @@ int runMachineStatus(const MachineSetup& setup, bool json) {
 
 namespace {
 
+QStringList namesOf(const QString& list) {
+    return list.split(QLatin1Char(','), Qt::SkipEmptyParts);
+}
+
+}  // namespace
+
 // --operator NAME (default: the login name) and -m NOTE, with this build's
 // version and revision.
 Result<BackupAuthor> takeAuthor(CommandArgs& args) {
@@ -157,22 +168,27 @@ Result<BackupAuthor> takeAuthor(CommandArgs& args) {
                         QStringLiteral(CAMBENCH_VERSION_NUMBER), QStringLiteral(CAMBENCH_REVISION)};
 }
 
-QStringList namesOf(const QString& list) {
-    return list.split(QLatin1Char(','), Qt::SkipEmptyParts);
-}
-
-}  // namespace
-
 int runMachine(CliSession&, CommandArgs& args) {
     const Result<QString> verb = takeVerb(
         args, {QStringLiteral("status"), QStringLiteral("backup"), QStringLiteral("verify"),
-               QStringLiteral("restore"), QStringLiteral("diff")});
+               QStringLiteral("restore"), QStringLiteral("diff"), QStringLiteral("history"),
+               QStringLiteral("release"), QStringLiteral("watch")});
     if (!verb) return reportError(verb.error());
     const auto is = [&verb](const char* name) { return *verb == QLatin1String(name); };
+    if (is("history") || is("release") || is("watch")) return runMachineHistoryVerb(*verb, args);
     if (is("diff")) {
         const Result<QString> first =
             args.takeRequiredPositional(QStringLiteral("the first backup folder"));
         if (!first) return reportError(first.error());
+        // An archive: machine diff DIR [A [B]], versions of it (issue 37).
+        if (isMachineArchive(*first)) {
+            QStringList versions;
+            for (int i = 0; i < 2; ++i)
+                if (const QString version = args.takePositional(); !version.isEmpty())
+                    versions << version;
+            if (const Status done = args.finish(); !done) return reportError(done.error());
+            return runMachineVersionDiff(*first, versions);
+        }
         const Result<QString> second =
             args.takeRequiredPositional(QStringLiteral("the second backup folder"));
         if (!second) return reportError(second.error());
@@ -193,10 +209,14 @@ int runMachine(CliSession&, CommandArgs& args) {
         const Result<QString> dir =
             args.takeOption(QStringLiteral("--output"), QStringLiteral("-o"));
         if (!dir) return reportError(dir.error());
-        if (dir->isEmpty())
-            return reportError(
-                Error::usage(QStringLiteral("machine backup needs -o DIR, the folder to fill")));
+        const Result<QString> archive = args.takeOption(QStringLiteral("--archive"));
+        if (!archive) return reportError(archive.error());
+        if (dir->isEmpty() == archive->isEmpty())
+            return reportError(Error::usage(
+                QStringLiteral("machine backup needs -o DIR, the folder to fill, or --archive "
+                               "DIR, the machine's archive (one of them)")));
         run.dir = *dir;
+        run.archive = *archive;
     }
     if (is("backup") || is("restore")) {
         const Result<BackupAuthor> author = takeAuthor(args);
@@ -208,6 +228,12 @@ int runMachine(CliSession&, CommandArgs& args) {
         if (!only) return reportError(only.error());
         run.only = namesOf(*only);
     }
+    QString version;
+    if (is("restore")) {
+        const Result<QString> named = args.takeOption(QStringLiteral("--version"));
+        if (!named) return reportError(named.error());
+        version = *named;
+    }
     if (!is("status")) {
         const Result<QString> replacement = args.takeOption(QStringLiteral("--replacement"));
         if (!replacement) return reportError(replacement.error());
@@ -216,6 +242,12 @@ int runMachine(CliSession&, CommandArgs& args) {
     if (const Status done = args.finish(); !done) return reportError(done.error());
 
     if (is("verify")) return runMachineVerify(*path, run.replacements);
+    if (is("restore") && !version.isEmpty()) return runMachineVersionRestore(*path, version, run);
+    if (is("restore") && isMachineArchive(*path))
+        return reportError(Error::usage(
+            QStringLiteral("%1 is a machine archive: name the version to restore with --version "
+                           "ID (a commit id or a prefix, a tag, or \"released\")")
+                .arg(*path)));
     if (is("restore")) return runMachineRestore(*path, run);
     const Result<QByteArray> bytes = readFileBytes(*path);
     if (!bytes) return reportError(bytes.error());
@@ -226,7 +258,9 @@ int runMachine(CliSession&, CommandArgs& args) {
             checkDeviceNames(setup->machine, run.replacements, QStringLiteral("--replacement"));
         !names)
         return reportError(names.error());
-    return is("status") ? runMachineStatus(*setup, json) : runMachineBackup(*setup, run);
+    if (is("status")) return runMachineStatus(*setup, json);
+    return run.archive.isEmpty() ? runMachineBackup(*setup, run)
+                                 : runMachineArchiveBackup(*setup, run);
 }
 
 }  // namespace cambench::cli

@@ -23,6 +23,8 @@ struct MachineSetup {
 // `where` names the file in messages. A device whose options do not fit
 // (a wrong family, a protocol of another family) is refused naming it.
 Result<MachineSetup> loadMachine(const QByteArray& bytes, const QString& where);
+// The same of a machine file already read.
+Result<MachineSetup> machineSetup(const MachineFile& machine, const QString& where);
 
 // The devices `names` (--replacement a,b) are: refused naming the one the
 // machine lacks.
@@ -41,7 +43,15 @@ struct MachineRun {
     QStringList only;       // restore: these devices only
     bool planOnly = false;  // restore --plan: say what would be written, write nothing
     BackupAuthor author;    // who, why, with what (--operator, -m, this build)
+    QString archive;        // backup --archive: the machine's archive (issue 37)
+    // restore: the folder the safety copies go beside (empty: the backup
+    // folder; a version of an archive is restored from a temporary folder).
+    QString safetyBeside;
 };
+
+// --operator NAME and -m WHY (the login name when no operator is named),
+// with this build's version and revision.
+Result<BackupAuthor> takeAuthor(CommandArgs& args);
 
 // machine status / backup / verify / restore / diff; each returns the
 // exit code.

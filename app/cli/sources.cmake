@@ -31,6 +31,8 @@ add_library(cambench_cli_front ${CAMBENCH_LIBRARY_TYPE}
   cli/machine_command.h
   cli/machine_command.cpp
   cli/machine_backup.cpp
+  cli/machine_history.h
+  cli/machine_history.cpp
   cli/machine_parallel.h
   cli/machine_parallel.cpp
 )

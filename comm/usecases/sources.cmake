@@ -16,4 +16,6 @@ target_sources(cambench_usecases PRIVATE
   machine_backup.cpp
   line_answer.h
   line_answer.cpp
+  machine_history.h
+  machine_history.cpp
 )

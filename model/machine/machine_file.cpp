@@ -1,5 +1,7 @@
 #include "machine_file.h"
 
+#include "volatile_items.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -33,6 +35,23 @@ QString optionText(const QJsonValue& value, bool* ok) {
     return {};
 }
 
+// "volatile": ["V100-V199", "V12"]: a list of texts, each an item or a range.
+Result<QStringList> volatileItemsOf(const QJsonValue& value, const QString& label) {
+    const QString shape =
+        QStringLiteral(
+            "%1: \"volatile\" is a list of the items that change by themselves, as a comparison "
+            "names them: [\"V100-V199\", \"V12\"].")
+            .arg(label);
+    if (!value.isArray()) return Error::invalidData(shape);
+    QStringList items;
+    for (const QJsonValue& item : value.toArray()) {
+        if (!item.isString()) return Error::invalidData(shape);
+        items << item.toString().trimmed();
+    }
+    if (const Status checked = checkVolatileItems(items, label); !checked) return checked.error();
+    return items;
+}
+
 Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QString& where) {
     if (!value.isObject())
         return refused(where, QStringLiteral("%1 is not an object {\"name\": ..., \"family\": "
@@ -62,11 +81,18 @@ Result<MachineDevice> parseDevice(const QJsonValue& value, int index, const QStr
             device.identity = *identity;
             continue;
         }
+        if (it.key() == QLatin1String("volatile")) {
+            const Result<QStringList> items = volatileItemsOf(it.value(), label);
+            if (!items) return refused(where, items.error().message);
+            device.volatileItems = *items;
+            continue;
+        }
         if (!keys.contains(it.key()))
             return refused(where, QStringLiteral("%1: unknown key \"%2\"; a device's keys are "
                                                  "name, family, %3.")
                                       .arg(label, it.key(),
-                                           (keys + QStringList{QStringLiteral("identity")})
+                                           (keys + QStringList{QStringLiteral("volatile"),
+                                                               QStringLiteral("identity")})
                                                .join(QLatin1String(", "))));
         bool ok = false;
         const QString text = optionText(it.value(), &ok);
@@ -179,6 +205,11 @@ QByteArray deviceJson(const MachineDevice& device) {
                            "\"family\": " + jsonValue(device.family, false)};
     for (const auto& [key, value] : device.options)
         members << jsonValue(key, false) + ": " + jsonValue(value, numericKeys.contains(key));
+    if (!device.volatileItems.isEmpty()) {
+        QByteArrayList items;
+        for (const QString& item : device.volatileItems) items << jsonValue(item, false);
+        members << "\"volatile\": [" + items.join(", ") + "]";
+    }
     if (device.identity.known()) {
         QByteArrayList parts;
         for (auto it = device.identity.values().begin(); it != device.identity.values().end(); ++it)

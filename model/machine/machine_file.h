@@ -18,12 +18,15 @@ namespace cambench {
 // "address", "variant", "baud", "pc-number"), in the file's order; and,
 // once known, its identity ("identity": {"serial": ..., "type": ...}): the
 // device that belongs there, so that another one answering is said
-// (`machine status`, `machine backup`; issue 36).
+// (`machine status`, `machine backup`; issue 36); and the items that change
+// by themselves, never a difference in the machine's history ("volatile":
+// ["V100-V199"], model/machine/volatile_items.h; issue 37).
 struct MachineDevice {
     QString name;
     QString family;
     QList<QPair<QString, QString>> options;
     DeviceIdentity identity;
+    QStringList volatileItems;
 
     QString option(const QString& key) const;
     // The options as command-line arguments: --family F --port P ...
@@ -63,8 +66,8 @@ QStringList machineDeviceKeys();
 Result<MachineFile> parseMachineFile(const QByteArray& bytes, const QString& where);
 
 // The file's text: "machine", "devices" (each "name", "family", then its
-// options in their order, whole numbers as numbers, then its "identity"
-// when known) and "shaft", in that
+// options in their order, whole numbers as numbers, then its "volatile"
+// items and its "identity" when known) and "shaft", in that
 // order, one device a line: saving twice gives the same bytes, and a
 // changed device is one changed line. parseMachineFile() reads it back.
 QByteArray machineFileJson(const MachineFile& machine);

@@ -47,6 +47,8 @@ cambench_add_e2e_test(tst_e2e_machine_families e2e/tst_e2e_machine_families.cpp)
 # Issue 36: backups a person reads, differences in each family's terms,
 # the manifest's who, why and with what, the safety copies beside.
 cambench_add_e2e_test(tst_e2e_machine_readable e2e/tst_e2e_machine_readable.cpp)
+# Issue 37: a machine's history in a git archive (versions, release, watch).
+cambench_add_e2e_test(tst_e2e_machine_history e2e/tst_e2e_machine_history.cpp)
 cambench_add_e2e_test(tst_e2e_check e2e/tst_e2e_check.cpp)
 # Every command line of README.md's code blocks, read from it when it runs.
 cambench_add_e2e_test(tst_e2e_readme e2e/tst_e2e_readme.cpp)

@@ -10,6 +10,7 @@
 // Two names for one port (a path and a link to it) are asked one after the
 // other.
 #include "e2e_support.h"
+#include "press_machine.h"
 
 #include <QDeadlineTimer>
 #include <QFile>
@@ -25,19 +26,6 @@
 using namespace cambench::e2e;
 
 namespace {
-
-QJsonObject deviceAt(const QString& name, const QString& family, const QString& port) {
-    return {{"name", name}, {"family", family}, {"port", port}, {"baud", 115200}};
-}
-
-QByteArray machineFile(const QString& cams, const QString& plc, const QString& feed) {
-    QJsonObject mc200 = deviceAt("plc", "mc1", plc);
-    mc200.insert("protocol", "mc1");
-    mc200.insert("variant", "mc200v2");
-    const QJsonArray devices{deviceAt("cams", "camcon", cams), mc200,
-                             deviceAt("feed", "compax3", feed)};
-    return QJsonDocument(QJsonObject{{"machine", "Press 7"}, {"devices", devices}}).toJson();
-}
 
 QJsonArray manifestDevices(const QString& dir) {
     return QJsonDocument::fromJson(readBytes(dir + QStringLiteral("/manifest.json")))
@@ -91,7 +79,7 @@ private Q_SLOTS:
         startPress(cams, plc, feed, {"--outputs", "16"}, {});
         if (QTest::currentTestFailed()) return;
         const QString file = cams.path(QStringLiteral("press7.json"));
-        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        QVERIFY(writeBytes(file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
         const QString dir = cams.path(QStringLiteral("press7-backup"));
 
         const CliRun status = runCli({"machine", "status", file});
@@ -153,7 +141,8 @@ private Q_SLOTS:
         startPress(cams, plc, refusing, {"--verbose"}, {"--refuse", "1901.1"});
         if (QTest::currentTestFailed()) return;
         const QString file = cams.path(QStringLiteral("press7.json"));
-        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), refusing.ptyPath())));
+        QVERIFY(
+            writeBytes(file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), refusing.ptyPath())));
         const QString dir = cams.path(QStringLiteral("press7-backup"));
 
         const CliRun failed = runCli({"machine", "backup", file, "-o", dir});
@@ -173,7 +162,7 @@ private Q_SLOTS:
 
         SimSession feed(QStringLiteral("compax3"));
         START_SIM(feed, {"--drive-type", "S150V4"});
-        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        QVERIFY(writeBytes(file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
         const CliRun resumed = runCli({"machine", "backup", file, "-o", dir, "--resume"});
         VERIFY_EXIT(resumed, 0);
         QVERIFY2(resumed.out.contains(QLatin1String("== cams: kept from the earlier run")) &&
@@ -201,7 +190,7 @@ private Q_SLOTS:
         startPress(cams, plc, feed, {"--fill", "1", "--verbose"}, {});
         if (QTest::currentTestFailed()) return;
         const QString file = cams.path(QStringLiteral("press7.json"));
-        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        QVERIFY(writeBytes(file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
         const QString dir = cams.path(QStringLiteral("press7-backup"));
 
         QProcess backup;
@@ -229,7 +218,7 @@ private Q_SLOTS:
 
         SimSession again;
         START_SIM(again, {"--eprom", "03.05.2001", "--verbose"});
-        QVERIFY(writeBytes(file, machineFile(again.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        QVERIFY(writeBytes(file, pressMachineFile(again.ptyPath(), plc.ptyPath(), feed.ptyPath())));
         const CliRun resumed = runCli({"machine", "backup", file, "-o", dir, "--resume"});
         VERIFY_EXIT(resumed, 0);
         QVERIFY2(resumed.out.contains(QLatin1String("== plc: kept from the earlier run")) &&

@@ -7,6 +7,7 @@
 // the restore's safety copy lies beside the backup folder (never inside),
 // listed in a manifest of its own, with the mode of the file it copies.
 #include "e2e_support.h"
+#include "press_machine.h"
 
 #include <QDir>
 #include <QFile>
@@ -19,19 +20,6 @@
 using namespace cambench::e2e;
 
 namespace {
-
-QJsonObject deviceAt(const QString& name, const QString& family, const QString& port) {
-    return {{"name", name}, {"family", family}, {"port", port}, {"baud", 115200}};
-}
-
-QByteArray machineFile(const QString& cams, const QString& plc, const QString& feed) {
-    QJsonObject mc200 = deviceAt("plc", "mc1", plc);
-    mc200.insert("protocol", "mc1");
-    mc200.insert("variant", "mc200v2");
-    const QJsonArray devices{deviceAt("cams", "camcon", cams), mc200,
-                             deviceAt("feed", "compax3", feed)};
-    return QJsonDocument(QJsonObject{{"machine", "Press 7"}, {"devices", devices}}).toJson();
-}
 
 QJsonObject manifestOf(const QString& dir) {
     return QJsonDocument::fromJson(readBytes(dir + QStringLiteral("/manifest.json"))).object();
@@ -64,7 +52,7 @@ private Q_SLOTS:
         START_SIM(plc, {"--variant", "mc200v2"});
         START_SIM(feed, {"--drive-type", "S150V4"});
         const QString file = cams.path(QStringLiteral("press7.json"));
-        QVERIFY(writeBytes(file, machineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
+        QVERIFY(writeBytes(file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath())));
         const QString first = cams.path(QStringLiteral("first"));
         const QString second = cams.path(QStringLiteral("second"));
 

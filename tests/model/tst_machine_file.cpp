@@ -148,6 +148,36 @@ private Q_SLOTS:
                  qPrintable(wrong.error().message));
     }
 
+    // Issue 37: the items that change by themselves ("volatile"), read and
+    // written back on the device's line; a range ending below its start or
+    // a list of numbers is refused naming the device.
+    void volatileItemsReadAndWrittenBack() {
+        const QByteArray text = json(
+            "{'machine': 'P', 'devices': [{'name': 'press-plc', 'family': 'mc1', 'port': "
+            "'sim', 'volatile': ['V100-V199', 'V12']}]}");
+        const Result<MachineFile> machine = parseMachineFile(text, QStringLiteral("m.json"));
+        QVERIFY2(machine.ok(), qPrintable(machine.error().message));
+        QCOMPARE(machine->devices.at(0).volatileItems, QStringList({"V100-V199", "V12"}));
+        QCOMPARE(machine->devices.at(0).arguments(),
+                 QStringList({"--family", "mc1", "--port", "sim"}));  // no option
+        const QByteArray written = machineFileJson(*machine);
+        QVERIFY2(written.contains(json("'port': 'sim', 'volatile': ['V100-V199', 'V12']}")),
+                 written.constData());
+        QCOMPARE(parseMachineFile(written, QStringLiteral("m.json"))->devices.at(0).volatileItems,
+                 machine->devices.at(0).volatileItems);
+        for (const char* wrong : {"'volatile': ['V199-V100']", "'volatile': [12]",
+                                  "'volatile': 'V12'", "'volatile': ['']"}) {
+            const Result<MachineFile> refused = parseMachineFile(
+                json(QByteArray("{'machine': 'P', 'devices': [{'name': 'press-plc', 'family': "
+                                "'mc1', 'port': 'sim', ") +
+                     wrong + "}]}"),
+                QStringLiteral("m.json"));
+            QVERIFY2(!refused.ok(), wrong);
+            QVERIFY2(refused.error().message.contains(QLatin1String("device 1 (press-plc)")),
+                     qPrintable(refused.error().message));
+        }
+    }
+
     // The GUI's Save machine: name and family first, numbers as numbers, a
     // port that looks like a number stays text, one device a line; read
     // back it is the same machine, and written again the same bytes.
@@ -158,12 +188,14 @@ private Q_SLOTS:
                                          QStringLiteral("camcon"),
                                          {{QStringLiteral("port"), QStringLiteral("5")},
                                           {QStringLiteral("protocol"), QStringLiteral("standard")}},
+                                         {},
                                          {}}
                         << MachineDevice{
                                QStringLiteral("feed"),
                                QStringLiteral("compax3"),
                                {{QStringLiteral("address"), QStringLiteral("3")},
                                 {QStringLiteral("port"), QStringLiteral("tcp://ds:4001")}},
+                               {},
                                {}};
         machine.shaftFrom = QStringLiteral("feed");
         machine.shaftTo = QStringLiteral("cams");

@@ -18,5 +18,7 @@ cambench_add_test(ui_shell_machine_test SOURCES ui/register_widgets.cpp ui/shell
 cambench_add_test(ui_shell_machine_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine_backup.cpp ui/shell/shell_fixture.h ui/shell/machine_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 36 items 6 and 7: the right devices on ptys, every family's edits, one menu bar, columns.
 cambench_add_test(ui_shell_machine_devices_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine_devices.cpp ui/shell/shell_fixture.h ui/shell/machine_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
+# Issue 37: Machine → History… (versions compared, one marked released).
+cambench_add_test(ui_shell_machine_history_test SOURCES ui/register_widgets.cpp ui/shell/tst_machine_history.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Each family's GUI tests, listed in its folder.
 cambench_include_family_lists(${CMAKE_CURRENT_LIST_DIR} tests.cmake)

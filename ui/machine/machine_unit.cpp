@@ -42,12 +42,15 @@ MachineUnit::MachineUnit(MachineDevice device, StopControl* machineStop, QObject
     connect(m_session, &DeviceSession::stateChanged, this, [this](comm::ConnectionState state) {
         // The machine file holds what the device is reached with: also a
         // port or protocol chosen on its Connection page.
-        // The identity stays: it is the device that belongs here.
+        // The identity (the device that belongs here) and the items that
+        // change by themselves are the file's, not the connection's: they stay.
         if (state == comm::ConnectionState::Connected) {
             const DeviceIdentity identity = m_device.identity;
+            const QStringList volatileItems = m_device.volatileItems;
             m_device =
                 machineDeviceFor(m_device.name, m_session->connection(), m_session->protocol());
             m_device.identity = identity;
+            m_device.volatileItems = volatileItems;
         }
         lineChanged();
         Q_EMIT changed();

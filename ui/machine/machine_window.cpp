@@ -3,6 +3,7 @@
 #include "machine.h"
 #include "machine_backup_run.h"
 #include "machine_progress.h"
+#include "machine_history_dialog.h"
 #include "machine_report.h"
 #include "machine_stop.h"
 #include "machine_unit.h"
@@ -137,6 +138,7 @@ void MachineWindow::createMenus() {
     });
     menu->addSeparator();
     menu->addAction(tr("Machine &report…"), this, &MachineWindow::writeReport);
+    menu->addAction(tr("&History…"), this, [this] { openMachineHistory(m_machine, this); });
     menu->addSeparator();
     menu->addAction(tr("&Close machine"), this, &QWidget::close);
 }

@@ -18,7 +18,7 @@ namespace cambench::test {
 
 inline MachineDevice machineDevice(const QString& name, const QString& family,
                                    const QList<QPair<QString, QString>>& options) {
-    return MachineDevice{name, family, options, {}};
+    return MachineDevice{name, family, options, {}, {}};
 }
 
 // A CamCon and an MC200 V2, each on its own simulated device, unthrottled.
