@@ -12,7 +12,8 @@
 //   after it ("feed /dev/pts/9") say which of its ports the README's paths
 //   are;
 // - each example exits 0 unless its comment begins "exit N"; the lines the
-//   README shows after a `$ cambench-cli` example are in its output.
+//   README shows after a `$ cambench-cli` example are in its output;
+// - a ```text block is what a run on a real machine printed: not run.
 //
 // The simulators are started once each and shared by the examples, at the
 // fast test rate (a pseudo-terminal has no baud rate; the cli keeps the one
@@ -116,17 +117,21 @@ QList<Example> readmeExamples(const QString& path, QStringList& problems) {
     const QStringList lines = QString::fromUtf8(file.readAll()).split(u'\n');
     QList<Example> examples;
     bool inBlock = false;
+    bool shownOnly = false;
     int block = 0;
     bool lastWasPrompt = false;
     for (int i = 0; i < lines.size(); ++i) {
         const QString line = lines.at(i).trimmed();
         if (line.startsWith(QLatin1String("```"))) {
             inBlock = !inBlock;
+            // A ```text block shows what a run on a real machine printed
+            // (a machine changed since its backup): read, not run.
+            shownOnly = inBlock && line == QLatin1String("```text");
             ++block;
             lastWasPrompt = false;
             continue;
         }
-        if (!inBlock || line.isEmpty()) continue;
+        if (!inBlock || shownOnly || line.isEmpty()) continue;
         const bool prompt = line.startsWith(QLatin1String("$ "));
         const QString command = prompt ? line.mid(2) : line;
         QStringList words;
