@@ -4,6 +4,7 @@
 #include "../shell/shell_fixture.h"
 
 #include "ui/mc1/mc1_axes_page.h"
+#include "ui/mc1/mc1_axis_parameters_box.h"
 
 #include <QFile>
 #include <QLabel>
