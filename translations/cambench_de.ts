@@ -1037,6 +1037,86 @@
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
+    <message>
+        <source>not recorded</source>
+        <translation>nicht aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1: %2 (the same)</source>
+        <translation>%1: %2 (gleich)</translation>
+    </message>
+    <message>
+        <source>%1: backup %2, this device %3  ← differs</source>
+        <translation>%1: Sicherung %2, dieses Gerät %3  ← weicht ab</translation>
+    </message>
+    <message>
+        <source>The device answering is not the one %1 was taken from.</source>
+        <translation>Das antwortende Gerät ist nicht das, von dem %1 stammt.</translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (an older backup): CamBench cannot tell whether the device answering is that device.</source>
+        <translation>%1 zeichnet keine Identität des Geräts auf, von dem es stammt (eine ältere Sicherung): CamBench kann nicht sagen, ob das antwortende Gerät dieses Gerät ist.</translation>
+    </message>
+    <message>
+        <source>%1
+
+Restore it here only if this device replaces the one the backup was taken from (or, for an older backup, is that device). Nothing has been written yet.</source>
+        <translation>%1
+
+Stellen Sie sie hier nur wieder her, wenn dieses Gerät das ersetzt, von dem die Sicherung stammt (oder, bei einer älteren Sicherung, dieses Gerät ist). Noch wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>It replaces that device: restore</source>
+        <translation>Es ersetzt jenes Gerät: wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation>Prüfen, welches Gerät antwortet</translation>
+    </message>
+    <message>
+        <source>Nothing was written: which device answers could not be read: %1</source>
+        <translation>Nichts wurde geschrieben: welches Gerät antwortet, ließ sich nicht lesen: %1</translation>
+    </message>
+    <message>
+        <source>which device this is cannot be told: no identity was recorded for it; found %1</source>
+        <translation>welches Gerät dies ist, lässt sich nicht sagen: für es wurde keine Identität aufgezeichnet; gefunden %1</translation>
+    </message>
+    <message>
+        <source>another device answers: expected %1, found %2</source>
+        <translation>ein anderes Gerät antwortet: erwartet %1, gefunden %2</translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (a backup older than that record), so CamBench cannot tell whether the device answering (%2) is that device. Nothing was written. If it is, or if it replaces that device, confirm it (on the command line: --replacement).</source>
+        <translation>%1 zeichnet keine Identität des Geräts auf, von dem es stammt (eine Sicherung, älter als diese Aufzeichnung), daher kann CamBench nicht sagen, ob das antwortende Gerät (%2) dieses Gerät ist. Nichts wurde geschrieben. Wenn es das ist oder es dieses Gerät ersetzt, bestätigen Sie es (auf der Kommandozeile: --replacement).</translation>
+    </message>
+    <message>
+        <source>%1 was taken from another device: %2 (the backup&apos;s device: %3; the device answering: %4). Nothing was written. Only if this device replaces that one, confirm it (on the command line: --replacement).</source>
+        <translation>%1 stammt von einem anderen Gerät: %2 (das Gerät der Sicherung: %3; das antwortende Gerät: %4). Nichts wurde geschrieben. Nur wenn dieses Gerät jenes ersetzt, bestätigen Sie es (auf der Kommandozeile: --replacement).</translation>
+    </message>
+    <message>
+        <source>The git program could not be started (%1); the machine archive is a git repository: install git (Debian: apt install git).</source>
+        <translation>Das Programm git konnte nicht gestartet werden (%1); das Maschinenarchiv ist ein git-Repository: installieren Sie git (Debian: apt install git).</translation>
+    </message>
+    <message>
+        <source>%1 in %2 did not finish within %3 s (a lock held by another git?); nothing more was done.</source>
+        <translation>%1 in %2 wurde nicht innerhalb von %3 s fertig (eine Sperre eines anderen git?); nichts weiter wurde getan.</translation>
+    </message>
+    <message>
+        <source>%1 in %2 failed (exit %3): %4</source>
+        <translation>%1 in %2 fehlgeschlagen (Exit %3): %4</translation>
+    </message>
+    <message>
+        <source>%1: &quot;volatile&quot; holds an empty item; name items as a comparison names them (&quot;V12&quot;) or a range (&quot;V100-V199&quot;).</source>
+        <translation>%1: &quot;volatile&quot; enthält ein leeres Element; nennen Sie Elemente so, wie ein Vergleich sie nennt (&quot;V12&quot;), oder als Bereich (&quot;V100-V199&quot;).</translation>
+    </message>
+    <message>
+        <source>%1: the volatile range &quot;%2&quot; ends below its start; write it low to high.</source>
+        <translation>%1: der flüchtige Bereich &quot;%2&quot; endet unter seinem Anfang; schreiben Sie ihn von niedrig nach hoch.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::AccessGridModel</name>
@@ -1146,16 +1226,16 @@
 <context>
     <name>cambench::BackupPage</name>
     <message>
-        <source>&lt;h3&gt;Backup and restore&lt;/h3&gt;&lt;p&gt;A &lt;b&gt;backup&lt;/b&gt; copies the whole EEPROM of the device (cam programs, dead times, settings, users, PLC) block by block into a file.&lt;/p&gt;&lt;p&gt;A &lt;b&gt;restore&lt;/b&gt; erases the device and writes such a file back. CamBench checks the file first, asks for a confirmation when it comes from a different device, and saves what the device holds now into a safety backup before it erases anything.&lt;/p&gt;&lt;p&gt;If a restore is interrupted, the device stays erased and does not run until an image is restored completely: keep the safety backup.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Sichern und Wiederherstellen&lt;/h3&gt;&lt;p&gt;Eine &lt;b&gt;Sicherung&lt;/b&gt; kopiert das ganze EEPROM des Geräts (Nockenprogramme, Totzeiten, Einstellungen, Benutzer, SPS) Block für Block in eine Datei.&lt;/p&gt;&lt;p&gt;Eine &lt;b&gt;Wiederherstellung&lt;/b&gt; löscht das Gerät und schreibt eine solche Datei zurück. CamBench prüft die Datei vorher, fragt nach einer Bestätigung, wenn sie von einem anderen Gerät stammt, und sichert den jetzigen Inhalt des Geräts in eine Sicherheitskopie, bevor es etwas löscht.&lt;/p&gt;&lt;p&gt;Wird eine Wiederherstellung unterbrochen, bleibt das Gerät gelöscht und läuft nicht, bis ein Abbild vollständig wiederhergestellt ist: Bewahren Sie die Sicherheitskopie auf.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Backup or restore…</source>
         <translation>Sichern oder wiederherstellen…</translation>
     </message>
     <message>
         <source>Backup</source>
         <translation>Sicherung</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Backup and restore&lt;/h3&gt;&lt;p&gt;A &lt;b&gt;backup&lt;/b&gt; copies the whole EEPROM of the device (cam programs, dead times, settings, users, PLC) block by block into a file.&lt;/p&gt;&lt;p&gt;A &lt;b&gt;restore&lt;/b&gt; erases the device and writes such a file back. CamBench checks the file first, restores it only to the device it was taken from (or to its replacement when you say so), and saves what the device holds now into a safety backup before it erases anything.&lt;/p&gt;&lt;p&gt;If a restore is interrupted, the device stays erased and does not run until an image is restored completely: keep the safety backup.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sichern und Wiederherstellen&lt;/h3&gt;&lt;p&gt;Eine &lt;b&gt;Sicherung&lt;/b&gt; kopiert das ganze EEPROM des Geräts (Nockenprogramme, Totzeiten, Einstellungen, Benutzer, SPS) Block für Block in eine Datei.&lt;/p&gt;&lt;p&gt;Eine &lt;b&gt;Wiederherstellung&lt;/b&gt; löscht das Gerät und schreibt eine solche Datei zurück. CamBench prüft die Datei vorher, stellt sie nur auf dem Gerät wieder her, von dem sie stammt (oder auf Ihre Angabe hin auf seinem Ersatz), und sichert den jetzigen Inhalt des Geräts in eine Sicherheitskopie, bevor es etwas löscht.&lt;/p&gt;&lt;p&gt;Wird eine Wiederherstellung unterbrochen, bleibt das Gerät gelöscht und läuft nicht, bis ein Abbild vollständig wiederhergestellt ist: Bewahren Sie die Sicherheitskopie auf.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -1209,10 +1289,6 @@
         <translation>Die Wiederherstellung löscht das Gerät. Vorher sichert CamBench den jetzigen Inhalt des Geräts in eine Sicherheitskopie.</translation>
     </message>
     <message>
-        <source>Restore although the image comes from a different device</source>
-        <translation>Wiederherstellen, obwohl das Abbild von einem anderen Gerät stammt</translation>
-    </message>
-    <message>
         <source>Safety backup:</source>
         <translation>Sicherheitskopie:</translation>
     </message>
@@ -1227,10 +1303,6 @@
     <message>
         <source>This file cannot be restored: %1</source>
         <translation>Diese Datei kann nicht wiederhergestellt werden: %1</translation>
-    </message>
-    <message>
-        <source>The image comes from a different device. Confirm that you want to restore it anyway, or choose another file.</source>
-        <translation>Das Abbild stammt von einem anderen Gerät. Bestätigen Sie, dass Sie es trotzdem wiederherstellen wollen, oder wählen Sie eine andere Datei.</translation>
     </message>
     <message>
         <source>Choose where the safety backup goes.</source>
@@ -2782,6 +2854,13 @@ Jetzt löschen und wiederherstellen?</translation>
         <source>Use dictionary</source>
         <translation>Objektverzeichnis verwenden</translation>
     </message>
+    <message numerus="yes">
+        <source>%n value(s) typed in on this PC are NOT on the drive; the values below are the drive&apos;s.</source>
+        <translation>
+            <numerusform>%n auf diesem PC eingegebener Wert ist NICHT im Antrieb; die Werte unten sind die des Antriebs.</numerusform>
+            <numerusform>%n auf diesem PC eingegebene Werte sind NICHT im Antrieb; die Werte unten sind die des Antriebs.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::Compax3MotionPage</name>
@@ -2910,10 +2989,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Satz %1 nicht gelesen: %2</translation>
     </message>
     <message>
-        <source>%1 (as on the drive)</source>
-        <translation>%1 (wie auf dem Antrieb)</translation>
-    </message>
-    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2926,10 +3001,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>%1: %2 → %3 (wird zuerst geschrieben)</translation>
     </message>
     <message>
-        <source>%1: %2 (as on the drive)</source>
-        <translation>%1: %2 (wie auf dem Antrieb)</translation>
-    </message>
-    <message>
         <source>Target</source>
         <translation>Ziel</translation>
     </message>
@@ -2938,12 +3009,40 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <source>Acceleration and deceleration</source>
-        <translation>Beschleunigung und Verzögerung</translation>
+        <source>Deceleration:</source>
+        <translation>Verzögerung:</translation>
     </message>
     <message>
-        <source>Mode (1905.%1): %2 (as on the drive)</source>
-        <translation>Modus (1905.%1): %2 (wie auf dem Antrieb)</translation>
+        <source>%1 (read at %2)</source>
+        <translation>%1 (gelesen am %2)</translation>
+    </message>
+    <message>
+        <source>Switch drive %1 powerless?</source>
+        <translation>Antrieb %1 stromlos schalten?</translation>
+    </message>
+    <message>
+        <source>Power is dropped: the motor no longer holds the axis. A hanging (vertical) axis falls unless its brake holds it; a moving axis runs out as the drive is set. Make sure nobody is at the axis.</source>
+        <translation>Die Bestromung wird abgeschaltet: der Motor hält die Achse nicht mehr. Eine hängende (senkrechte) Achse fällt, wenn ihre Bremse sie nicht hält; eine fahrende Achse läuft aus, wie der Antrieb eingestellt ist. Stellen Sie sicher, dass niemand an der Achse ist.</translation>
+    </message>
+    <message>
+        <source>Set %1 as read from the drive at %2; read again before anything is sent: if the drive then holds other values, nothing is sent and you are asked again.</source>
+        <translation>Satz %1 wie am %2 aus dem Antrieb gelesen; vor dem Senden wird er erneut gelesen: enthält der Antrieb dann andere Werte, wird nichts gesendet und Sie werden erneut gefragt.</translation>
+    </message>
+    <message>
+        <source>%1: %2 (as read)</source>
+        <translation>%1: %2 (wie gelesen)</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Deceleration</source>
+        <translation>Verzögerung</translation>
+    </message>
+    <message>
+        <source>Mode (1905.%1): %2 (as read)</source>
+        <translation>Modus (1905.%1): %2 (wie gelesen)</translation>
     </message>
 </context>
 <context>
@@ -3392,6 +3491,77 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Compax3Report</name>
+    <message>
+        <source>Last error (550.1): %1</source>
+        <translation>Letzter Fehler (550.1): %1</translation>
+    </message>
+    <message>
+        <source>Status word (1000.3): %1; set: %2</source>
+        <translation>Statuswort (1000.3): %1; gesetzt: %2</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Not on this drive: %1.</source>
+        <translation>Nicht auf diesem Antrieb: %1.</translation>
+    </message>
+    <message>
+        <source>%1 not read: %2</source>
+        <translation>%1 nicht gelesen: %2</translation>
+    </message>
+    <message>
+        <source>Read the drive for the report</source>
+        <translation>Antrieb für den Bericht lesen</translation>
+    </message>
+    <message>
+        <source>Not read from the drive for this report.</source>
+        <translation>Für diesen Bericht nicht aus dem Antrieb gelesen.</translation>
+    </message>
+    <message>
+        <source>Read from the drive at %1.</source>
+        <translation>Aus dem Antrieb gelesen am %1.</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Antrieb</translation>
+    </message>
+    <message>
+        <source>Serial number %1, type %2</source>
+        <translation>Seriennummer %1, Typ %2</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>Parameter set</source>
+        <translation>Parametersatz</translation>
+    </message>
+</context>
+<context>
     <name>cambench::Compax3SettingsWidget</name>
     <message>
         <source>The drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;). Scan bus lists the addresses that answer.</source>
@@ -3768,6 +3938,14 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>%1, address %2</source>
         <translation>%1, Adresse %2</translation>
     </message>
+    <message>
+        <source>Switch to device %1</source>
+        <translation>Zu Gerät %1 wechseln</translation>
+    </message>
+    <message>
+        <source>Device %1 does not answer on the bus; device %2 does (the bus has %3): CamBench talks to device %2 now.</source>
+        <translation>Gerät %1 antwortet nicht auf dem Bus; Gerät %2 antwortet (der Bus hat %3): CamBench spricht jetzt mit Gerät %2.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -3800,10 +3978,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <translation>Offline. Was Sie bearbeiten, bleibt auf diesem PC, bis Sie sich verbinden und es schreiben.</translation>
     </message>
     <message>
-        <source>%1; checking which device answers…</source>
-        <translation>%1; es wird geprüft, welches Gerät antwortet…</translation>
-    </message>
-    <message>
         <source>Not connected to %1: %2</source>
         <translation>Nicht verbunden mit %1: %2</translation>
     </message>
@@ -3818,6 +3992,10 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Check that the port and the protocol are this device&apos;s; nothing is written to it. Your edits are kept.</source>
+        <translation>Prüfen Sie, ob Schnittstelle und Protokoll die dieses Geräts sind; es wird nichts hineingeschrieben. Ihre Änderungen bleiben erhalten.</translation>
     </message>
 </context>
 <context>
@@ -4114,6 +4292,21 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     </message>
 </context>
 <context>
+    <name>cambench::DeviceIdentity</name>
+    <message>
+        <source>not recorded</source>
+        <translation>nicht aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>%1 is not an object of names and texts ({&quot;serial&quot;: &quot;...&quot;}).</source>
+        <translation>%1 ist kein Objekt aus Namen und Texten ({&quot;serial&quot;: &quot;...&quot;}).</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; must be a text, as CamBench wrote it.</source>
+        <translation>%1: &quot;%2&quot; muss ein Text sein, wie CamBench ihn geschrieben hat.</translation>
+    </message>
+</context>
+<context>
     <name>cambench::DeviceReads</name>
     <message>
         <source>Not taken: your edits and the values shown are unchanged.</source>
@@ -4178,6 +4371,22 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
+    <message>
+        <source>No device identifies itself on the simulated line</source>
+        <translation>Auf der simulierten Leitung meldet sich kein Gerät</translation>
+    </message>
+    <message>
+        <source>No device identifies itself on %1</source>
+        <translation>Auf %1 meldet sich kein Gerät</translation>
+    </message>
+    <message>
+        <source>Checking which device answers on the simulated line…</source>
+        <translation>Es wird geprüft, welches Gerät auf der simulierten Leitung antwortet…</translation>
+    </message>
+    <message>
+        <source>Checking which device answers on %1…</source>
+        <translation>Es wird geprüft, welches Gerät auf %1 antwortet…</translation>
+    </message>
 </context>
 <context>
     <name>cambench::DeviceWriter</name>
@@ -4190,6 +4399,29 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
 Read the device again or use Compare with device; your edits are kept.</source>
         <translation>Nichts wurde geschrieben: Das Gerät an der Leitung (CamCon %1, Gerätenummer %2, %3 Nocken programmiert) ist nicht das, von dem die als „auf dem Gerät“ gezeigten Werte gelesen wurden (CamCon %4, Gerätenummer %5, %6 Nocken programmiert).
 Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the write was cancelled.</source>
+        <translation>Nichts wurde geschrieben: das Schreiben wurde abgebrochen.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DialogStop</name>
+    <message>
+        <source>STOP (%1)</source>
+        <translation>STOPP (%1)</translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive CamBench can reach, without a question. %1 does the same and closes this dialog.</source>
+        <translation>Stoppt jede Achse und jeden Antrieb, die CamBench erreicht, ohne Rückfrage. %1 tut dasselbe und schließt diesen Dialog.</translation>
+    </message>
+    <message>
+        <source>STOP sent…</source>
+        <translation>STOPP gesendet…</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
     </message>
 </context>
 <context>
@@ -4377,6 +4609,33 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
+    <name>cambench::LinkSettingsQuestion</name>
+    <message>
+        <source>Communication settings</source>
+        <translation>Kommunikationseinstellungen</translation>
+    </message>
+    <message>
+        <source>The values to write include communication settings: %1 (the device has %2).</source>
+        <translation>Die zu schreibenden Werte enthalten Kommunikationseinstellungen: %1 (das Gerät hat %2).</translation>
+    </message>
+    <message>
+        <source>others</source>
+        <translation>andere</translation>
+    </message>
+    <message>
+        <source>They decide how the device is reached. Written, the next connection to this device needs them: change the connection settings to match afterwards. Left out, the device keeps its own and everything else is written.</source>
+        <translation>Sie bestimmen, wie das Gerät erreicht wird. Werden sie geschrieben, braucht die nächste Verbindung zu diesem Gerät sie: passen Sie danach die Verbindungseinstellungen an. Werden sie ausgelassen, behält das Gerät seine eigenen, und alles andere wird geschrieben.</translation>
+    </message>
+    <message>
+        <source>Also write %1</source>
+        <translation>Auch %1 schreiben</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+</context>
+<context>
     <name>cambench::LiveDevicePage</name>
     <message>
         <source>STOP (Esc)</source>
@@ -4449,6 +4708,416 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
+    <name>cambench::MachineArchive</name>
+    <message>
+        <source>%1 is no machine archive: there is no such folder (`machine backup M.json --archive %1` makes one).</source>
+        <translation>%1 ist kein Maschinenarchiv: diesen Ordner gibt es nicht (`machine backup M.json --archive %1` legt einen an).</translation>
+    </message>
+    <message>
+        <source>%1 is no machine archive: it is not the top folder of a git repository (`machine backup M.json --archive DIR` makes one).</source>
+        <translation>%1 ist kein Maschinenarchiv: es ist nicht der oberste Ordner eines git-Repositorys (`machine backup M.json --archive DIR` legt einen an).</translation>
+    </message>
+    <message>
+        <source>Cannot make the archive folder %1; check the path and its rights.</source>
+        <translation>Der Archivordner %1 kann nicht angelegt werden; prüfen Sie den Pfad und seine Rechte.</translation>
+    </message>
+    <message>
+        <source>%1 holds files but is no git repository: it is not made an archive (name an empty or new folder).</source>
+        <translation>%1 enthält Dateien, ist aber kein git-Repository: es wird nicht zum Archiv gemacht (nennen Sie einen leeren oder neuen Ordner).</translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2.</source>
+        <translation>%1 nennt keine Version von %2.</translation>
+    </message>
+    <message>
+        <source>%1 holds no version yet (`machine backup M.json --archive %1 -m WHY` stores the first).</source>
+        <translation>%1 enthält noch keine Version (`machine backup M.json --archive %1 -m WHY` speichert die erste).</translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2 (`machine history %2` lists them: a commit id, a prefix of one or a tag).</source>
+        <translation>%1 nennt keine Version von %2 (`machine history %2` listet sie auf: eine Commit-ID, ein Präfix davon oder ein Tag).</translation>
+    </message>
+    <message>
+        <source>No version of %1 is released (`machine release %1 VERSION` marks the one that should be on the machine).</source>
+        <translation>Keine Version von %1 ist freigegeben (`machine release %1 VERSION` markiert die, die auf der Maschine sein soll).</translation>
+    </message>
+    <message>
+        <source>Cannot make the folder for %1.</source>
+        <translation>Der Ordner für %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2; no version was stored.</source>
+        <translation>%1 kann nicht gelesen werden: %2; es wurde keine Version gespeichert.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineBackupRun</name>
+    <message numerus="yes">
+        <source>… and %n more (Details)</source>
+        <translation>
+            <numerusform>… und %n weiteres (Details)</numerusform>
+            <numerusform>… und %n weitere (Details)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 is not a machine backup folder: %2</source>
+        <translation>%1 ist kein Maschinen-Sicherungsordner: %2</translation>
+    </message>
+    <message>
+        <source>not in this backup</source>
+        <translation>nicht in dieser Sicherung</translation>
+    </message>
+    <message>
+        <source>not saved in this backup (%1)</source>
+        <translation>nicht in dieser Sicherung gesichert (%1)</translation>
+    </message>
+    <message>
+        <source>its file in the backup changed since it was saved</source>
+        <translation>seine Datei in der Sicherung wurde seit dem Sichern verändert</translation>
+    </message>
+    <message>
+        <source>Back up the machine</source>
+        <translation>Maschine sichern</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1; check the path and its rights</source>
+        <translation>der Ordner %1 kann nicht angelegt werden; prüfen Sie den Pfad und seine Rechte</translation>
+    </message>
+    <message>
+        <source>not saved: %1</source>
+        <translation>nicht gesichert: %1</translation>
+    </message>
+    <message>
+        <source>Back up %1</source>
+        <translation>%1 sichern</translation>
+    </message>
+    <message>
+        <source>failed: %1 - nothing was saved from it</source>
+        <translation>fehlgeschlagen: %1 – nichts davon wurde gesichert</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>saved: %1</source>
+        <translation>gesichert: %1</translation>
+    </message>
+    <message>
+        <source>NOT SAVED: %1</source>
+        <translation>NICHT GESICHERT: %1</translation>
+    </message>
+    <message>
+        <source>(the manifest: %1)</source>
+        <translation>(das Verzeichnis: %1)</translation>
+    </message>
+    <message>
+        <source>The machine file in %1 lacks the identities: %2</source>
+        <translation>Der Maschinendatei in %1 fehlen die Identitäten: %2</translation>
+    </message>
+    <message>
+        <source>Verify the machine</source>
+        <translation>Maschine vergleichen</translation>
+    </message>
+    <message>
+        <source>not verified: %1</source>
+        <translation>nicht verglichen: %1</translation>
+    </message>
+    <message>
+        <source>Verify %1</source>
+        <translation>%1 vergleichen</translation>
+    </message>
+    <message>
+        <source>%1 - not verified</source>
+        <translation>%1 – nicht verglichen</translation>
+    </message>
+    <message numerus="yes">
+        <source>equal: %n item(s) compared</source>
+        <translation>
+            <numerusform>gleich: %n Element verglichen</numerusform>
+            <numerusform>gleich: %n Elemente verglichen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s):</source>
+        <translation>
+            <numerusform>%n Unterschied:</numerusform>
+            <numerusform>%n Unterschiede:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore the machine</source>
+        <translation>Maschine wiederherstellen</translation>
+    </message>
+    <message>
+        <source>not restored: %1</source>
+        <translation>nicht wiederhergestellt: %1</translation>
+    </message>
+    <message>
+        <source>the backup of %1</source>
+        <translation>die Sicherung von %1</translation>
+    </message>
+    <message>
+        <source>Restore %1</source>
+        <translation>%1 wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Plan the restore of %1</source>
+        <translation>Wiederherstellung von %1 planen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s) to change</source>
+        <translation>
+            <numerusform>%1: %n Element zu ändern</numerusform>
+            <numerusform>%1: %n Elemente zu ändern</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>plan read: %n item(s) to change</source>
+        <translation>
+            <numerusform>Plan gelesen: %n Element zu ändern</numerusform>
+            <numerusform>Plan gelesen: %n Elemente zu ändern</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore %1 from %2?</source>
+        <translation>%1 aus %2 wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>What each device holds is saved beside the backup folder first. Then this is written:</source>
+        <translation>Der Inhalt jedes Geräts wird zuerst neben dem Sicherungsordner gesichert. Dann wird dies geschrieben:</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Wiederherstellung</translation>
+    </message>
+    <message>
+        <source>not restored: cancelled, nothing was written</source>
+        <translation>nicht wiederhergestellt: abgebrochen, nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>not restored: cannot make the folder %1 for the safety copies; nothing was written</source>
+        <translation>nicht wiederhergestellt: der Ordner %1 für die Sicherheitskopien kann nicht angelegt werden; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>restored: %1</source>
+        <translation>wiederhergestellt: %1</translation>
+    </message>
+    <message>
+        <source>NOT RESTORED completely: %1</source>
+        <translation>NICHT vollständig WIEDERHERGESTELLT: %1</translation>
+    </message>
+    <message>
+        <source>safety copies of a restore from %1</source>
+        <translation>Sicherheitskopien einer Wiederherstellung aus %1</translation>
+    </message>
+    <message>
+        <source>The safety copies in %1 are not listed: %2</source>
+        <translation>Die Sicherheitskopien in %1 sind nicht aufgelistet: %2</translation>
+    </message>
+    <message>
+        <source>What the devices held before: %1</source>
+        <translation>Was die Geräte vorher enthielten: %1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineHistoryDialog</name>
+    <message>
+        <source>equal</source>
+        <translation>gleich</translation>
+    </message>
+    <message numerus="yes">
+        <source>equal (%n change(s) of volatile items left out)</source>
+        <translation>
+            <numerusform>gleich (%n Änderung flüchtiger Elemente ausgelassen)</numerusform>
+            <numerusform>gleich (%n Änderungen flüchtiger Elemente ausgelassen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>added: %1</source>
+        <translation>hinzugefügt: %1</translation>
+    </message>
+    <message>
+        <source>taken out of the machine</source>
+        <translation>aus der Maschine genommen</translation>
+    </message>
+    <message>
+        <source>NOT COMPARED: %1</source>
+        <translation>NICHT VERGLICHEN: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Compare the two</source>
+        <translation>Die beiden &amp;vergleichen</translation>
+    </message>
+    <message>
+        <source>Compare with the devices &amp;now</source>
+        <translation>Mit den Geräten &amp;jetzt vergleichen</translation>
+    </message>
+    <message>
+        <source>&amp;Restore this version…</source>
+        <translation>Diese Version &amp;wiederherstellen…</translation>
+    </message>
+    <message>
+        <source>&amp;Mark as released</source>
+        <translation>Als &amp;freigegeben markieren</translation>
+    </message>
+    <message>
+        <source>History of %1 - %2</source>
+        <translation>Verlauf von %1 – %2</translation>
+    </message>
+    <message>
+        <source>Version</source>
+        <translation>Version</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation>Wer</translation>
+    </message>
+    <message>
+        <source>Why</source>
+        <translation>Warum</translation>
+    </message>
+    <message>
+        <source>Released</source>
+        <translation>Freigegeben</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Vorher</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Nachher</translation>
+    </message>
+    <message>
+        <source>Difference</source>
+        <translation>Unterschied</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>freigegeben</translation>
+    </message>
+    <message>
+        <source>%1 holds no version yet: Machine → Back up… into it, or `cambench-cli machine backup M.json --archive %1 -m WHY`.</source>
+        <translation>%1 enthält noch keine Version: Maschine → Sichern… dorthinein oder `cambench-cli machine backup M.json --archive %1 -m WHY`.</translation>
+    </message>
+    <message>
+        <source>machine file</source>
+        <translation>Maschinendatei</translation>
+    </message>
+    <message>
+        <source>%1: no difference.</source>
+        <translation>%1: kein Unterschied.</translation>
+    </message>
+    <message>
+        <source>%1: differences in %2.</source>
+        <translation>%1: Unterschiede in %2.</translation>
+    </message>
+    <message>
+        <source>the machine file</source>
+        <translation>die Maschinendatei</translation>
+    </message>
+    <message>
+        <source>Not every device was compared (see the table).</source>
+        <translation>Nicht jedes Gerät wurde verglichen (siehe Tabelle).</translation>
+    </message>
+    <message>
+        <source>Version %1 → %2</source>
+        <translation>Version %1 → %2</translation>
+    </message>
+    <message>
+        <source>Reading every device to compare it with version %1…</source>
+        <translation>Jedes Gerät wird gelesen, um es mit Version %1 zu vergleichen…</translation>
+    </message>
+    <message>
+        <source>Version %1 → the devices now</source>
+        <translation>Version %1 → die Geräte jetzt</translation>
+    </message>
+    <message>
+        <source>Version %1 is the released version now (%2).</source>
+        <translation>Version %1 ist jetzt die freigegebene Version (%2).</translation>
+    </message>
+    <message>
+        <source>Reading each device&apos;s plan of restoring version %1…</source>
+        <translation>Der Plan jedes Geräts zum Wiederherstellen von Version %1 wird gelesen…</translation>
+    </message>
+    <message>
+        <source>%1: NOT RESTORED: %2
+</source>
+        <translation>%1: NICHT WIEDERHERGESTELLT: %2
+</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s) to change
+</source>
+        <translation>
+            <numerusform>%1: %n Element zu ändern
+</numerusform>
+            <numerusform>%1: %n Elemente zu ändern
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Version %1 is not restored: no device can take it.
+%2</source>
+        <translation>Version %1 wird nicht wiederhergestellt: kein Gerät kann sie übernehmen.
+%2</translation>
+    </message>
+    <message>
+        <source>Restore version %1</source>
+        <translation>Version %1 wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Restore version %1 into %2? Each device&apos;s plan is in the details; a safety copy of what a device holds is taken first where its family takes one.</source>
+        <translation>Version %1 in %2 wiederherstellen? Der Plan jedes Geräts steht in den Details; wo seine Familie eine anlegt, wird zuerst eine Sicherheitskopie des Inhalts eines Geräts angelegt.</translation>
+    </message>
+    <message>
+        <source>Version %1 was not restored; nothing was written.</source>
+        <translation>Version %1 wurde nicht wiederhergestellt; nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>Restore of version %1:
+%2</source>
+        <translation>Wiederherstellung von Version %1:
+%2</translation>
+    </message>
+    <message>
+        <source>The archive of %1</source>
+        <translation>Das Archiv von %1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineHistoryJobs</name>
+    <message>
+        <source>NOT RESTORED: cannot make the folder %1 for the safety copies; nothing was written.</source>
+        <translation>NICHT WIEDERHERGESTELLT: der Ordner %1 für die Sicherheitskopien kann nicht angelegt werden; nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>NOT RESTORED: %1</source>
+        <translation>NICHT WIEDERHERGESTELLT: %1</translation>
+    </message>
+    <message>
+        <source>NOT RESTORED completely: %1</source>
+        <translation>NICHT vollständig WIEDERHERGESTELLT: %1</translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation>wiederhergestellt</translation>
+    </message>
+</context>
+<context>
     <name>cambench::MachineReport</name>
     <message>
         <source>not identified</source>
@@ -4507,10 +5176,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Leitung: %1 an %2</translation>
     </message>
     <message>
-        <source>Its live values last answered: %1</source>
-        <translation>Live-Werte zuletzt beantwortet: %1</translation>
-    </message>
-    <message>
         <source>Edits on this PC not written to the device: %1</source>
         <translation>Änderungen auf diesem PC, nicht ins Gerät geschrieben: %1</translation>
     </message>
@@ -4521,6 +5186,26 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Page %1 of %2</source>
         <translation>Seite %1 von %2</translation>
+    </message>
+    <message>
+        <source>Recorded identity: %1</source>
+        <translation>Aufgezeichnete Identität: %1</translation>
+    </message>
+    <message>
+        <source>Last answered: %1</source>
+        <translation>Zuletzt geantwortet: %1</translation>
+    </message>
+    <message>
+        <source>not read: %1; its section says what this PC holds.</source>
+        <translation>nicht gelesen: %1; sein Abschnitt zeigt, was dieser PC enthält.</translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation>gelesen</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>nicht gelesen: %1</translation>
     </message>
 </context>
 <context>
@@ -4553,10 +5238,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>verbunden</translation>
     </message>
     <message>
-        <source>connected, identifying…</source>
-        <translation>verbunden, Gerät wird erkannt…</translation>
-    </message>
-    <message>
         <source>connecting…</source>
         <translation>verbinde…</translation>
     </message>
@@ -4575,6 +5256,50 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>offline</source>
         <translation>offline</translation>
+    </message>
+    <message>
+        <source>Watch the line</source>
+        <translation>Leitung beobachten</translation>
+    </message>
+    <message>
+        <source>the connect</source>
+        <translation>dem Verbinden</translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation>Prüfen, welches Gerät antwortet</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>another device answers: no %1 identifies itself (%2)</source>
+        <translation>ein anderes Gerät antwortet: kein Gerät %1 meldet sich (%2)</translation>
+    </message>
+    <message>
+        <source>no answer: %1</source>
+        <translation>keine Antwort: %1</translation>
+    </message>
+    <message>
+        <source>no answer since %1</source>
+        <translation>keine Antwort seit %1</translation>
+    </message>
+    <message>
+        <source>no answer since %1: %2</source>
+        <translation>keine Antwort seit %1: %2</translation>
+    </message>
+    <message>
+        <source>connected, %1</source>
+        <translation>verbunden, %1</translation>
+    </message>
+    <message>
+        <source>checking which device answers…</source>
+        <translation>es wird geprüft, welches Gerät antwortet…</translation>
+    </message>
+    <message>
+        <source>did not identify itself: %1</source>
+        <translation>hat sich nicht gemeldet: %1</translation>
     </message>
 </context>
 <context>
@@ -4673,6 +5398,42 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>%1: choose its port on its Connection page (Detect finds the protocol), then Connect.</source>
         <translation>%1: Schnittstelle auf seiner Seite Verbindung wählen (Gerät suchen findet das Protokoll), dann Verbinden.</translation>
+    </message>
+    <message>
+        <source>&amp;Back up…</source>
+        <translation>S&amp;ichern…</translation>
+    </message>
+    <message>
+        <source>Back up the machine into</source>
+        <translation>Maschine sichern in</translation>
+    </message>
+    <message>
+        <source>Back up the machine</source>
+        <translation>Maschine sichern</translation>
+    </message>
+    <message>
+        <source>Why (kept in the backup&apos;s manifest):</source>
+        <translation>Warum (wird im Verzeichnis der Sicherung festgehalten):</translation>
+    </message>
+    <message>
+        <source>&amp;Verify…</source>
+        <translation>&amp;Vergleichen…</translation>
+    </message>
+    <message>
+        <source>Verify against the backup</source>
+        <translation>Mit der Sicherung vergleichen</translation>
+    </message>
+    <message>
+        <source>R&amp;estore…</source>
+        <translation>&amp;Wiederherstellen…</translation>
+    </message>
+    <message>
+        <source>Restore the backup</source>
+        <translation>Sicherung wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;History…</source>
+        <translation>Verl&amp;auf…</translation>
     </message>
 </context>
 <context>
@@ -5265,6 +6026,141 @@ Die verwendete Tabelle bleibt: %3</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Mc1Report</name>
+    <message>
+        <source>%1 variables read (V%2 to V%3); %4 of them are 0 and not listed.</source>
+        <translation>%1 Variablen gelesen (V%2 bis V%3); %4 davon sind 0 und nicht aufgeführt.</translation>
+    </message>
+    <message>
+        <source>The flags were not read.</source>
+        <translation>Die Merker wurden nicht gelesen.</translation>
+    </message>
+    <message>
+        <source>All %1 external flags are clear.</source>
+        <translation>Alle %1 externen Merker sind gelöscht.</translation>
+    </message>
+    <message>
+        <source>Of %1 external flags, these %2 are set: %3. All others are clear.</source>
+        <translation>Von %1 externen Merkern sind diese %2 gesetzt: %3. Alle anderen sind gelöscht.</translation>
+    </message>
+    <message>
+        <source>Parameter table in use: %1 - PROVISIONAL parameter numbers (a guess, not from the controller&apos;s documentation): the axis values above are not facts.</source>
+        <translation>Verwendete Parametertabelle: %1 – VORLÄUFIGE Parameternummern (geraten, nicht aus der Dokumentation der Steuerung): die Achswerte oben sind keine Tatsachen.</translation>
+    </message>
+    <message>
+        <source>Parameter table in use: %1.</source>
+        <translation>Verwendete Parametertabelle: %1.</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Read the controller for the report</source>
+        <translation>Steuerung für den Bericht lesen</translation>
+    </message>
+    <message>
+        <source>the %1 reports no program state</source>
+        <translation>die %1 meldet keinen Programmzustand</translation>
+    </message>
+    <message>
+        <source>axis %1: %2</source>
+        <translation>Achse %1: %2</translation>
+    </message>
+    <message>
+        <source>the %1 has no axis telegrams</source>
+        <translation>die %1 hat keine Achstelegramme</translation>
+    </message>
+    <message>
+        <source>Not read from the controller for this report.</source>
+        <translation>Für diesen Bericht nicht aus der Steuerung gelesen.</translation>
+    </message>
+    <message>
+        <source>Read from the controller at %1.</source>
+        <translation>Aus der Steuerung gelesen am %1.</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <source>Identity: %1</source>
+        <translation>Identität: %1</translation>
+    </message>
+    <message>
+        <source>PLC program</source>
+        <translation>SPS-Programm</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation>Achsen</translation>
+    </message>
+    <message>
+        <source>No axis read: %1</source>
+        <translation>Keine Achse gelesen: %1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>fährt</translation>
+    </message>
+    <message>
+        <source>standing</source>
+        <translation>steht</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>Referenziert</translation>
+    </message>
+    <message>
+        <source>Axes: %1.</source>
+        <translation>Achsen: %1.</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>External flags</source>
+        <translation>Externe Merker</translation>
+    </message>
+</context>
+<context>
     <name>cambench::Mc1SettingsWidget</name>
     <message>
         <source>Automatic (probe the controller)</source>
@@ -5846,6 +6742,46 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>Nothing answered the STOP – use the machine&apos;s emergency stop</source>
         <translation>Nichts hat auf den STOPP geantwortet – benutzen Sie den Not-Halt der Maschine</translation>
+    </message>
+    <message>
+        <source>STOP acknowledged at %1</source>
+        <translation>STOPP quittiert um %1</translation>
+    </message>
+    <message>
+        <source>may move: STOP NOT acknowledged at %1</source>
+        <translation>kann fahren: STOPP NICHT quittiert um %1</translation>
+    </message>
+    <message>
+        <source>moving (%1)</source>
+        <translation>fährt (%1)</translation>
+    </message>
+    <message>
+        <source>standing (%1)</source>
+        <translation>steht (%1)</translation>
+    </message>
+    <message>
+        <source>may move (%1)</source>
+        <translation>kann fahren (%1)</translation>
+    </message>
+    <message>
+        <source>may move: moving when last read at %1</source>
+        <translation>kann fahren: fuhr beim letzten Lesen um %1</translation>
+    </message>
+    <message>
+        <source>may move: %1 sent at %2</source>
+        <translation>kann fahren: %1 gesendet um %2</translation>
+    </message>
+    <message>
+        <source>Nothing to stop: nothing was powered, and nothing was sent.</source>
+        <translation>Nichts zu stoppen: nichts war bestromt, und nichts wurde gesendet.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: not powered, nothing to stop</source>
+        <translation>%1: nicht bestromt, nichts zu stoppen</translation>
     </message>
 </context>
 <context>
@@ -6556,10 +7492,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>STOPP (%1)</translation>
     </message>
     <message>
-        <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 does the same from every page.</source>
-        <translation>Stoppt jede Achse und jeden Antrieb des Geräts ohne Rückfrage, vor allem, was auf die Leitung wartet. %1 tut dasselbe auf jeder Seite.</translation>
-    </message>
-    <message>
         <source>STOP sent…</source>
         <translation>STOPP gesendet…</translation>
     </message>
@@ -6568,6 +7500,21 @@ Die verwendete Tabelle bleibt: %3</translation>
 %3</source>
         <translation>%1 %2
 %3</translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 stops it too, from every window, dialog and menu of CamBench.</source>
+        <translation>Stoppt jede Achse und jeden Antrieb des Geräts ohne Rückfrage, vor allem, was auf die Leitung wartet. %1 stoppt es ebenfalls, aus jedem Fenster, Dialog und Menü von CamBench.</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::T</name>
+    <message>
+        <source>not in this version of the machine</source>
+        <translation>nicht in dieser Version der Maschine</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -8744,10 +9691,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>ein Rahmen in einem Cam-BUS-Block mit Prüfsumme %1 statt %2</translation>
     </message>
     <message>
-        <source>user %1 answered its TO with %2</source>
-        <translation>Teilnehmer %1 beantwortete sein TO mit %2</translation>
-    </message>
-    <message>
         <source>user %1 did not acknowledge the block</source>
         <translation>Teilnehmer %1 hat den Block nicht quittiert</translation>
     </message>
@@ -8912,20 +9855,12 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Steuerung</translation>
     </message>
     <message>
-        <source>no stop was sent: %1</source>
-        <translation>kein Stopp wurde gesendet: %1</translation>
-    </message>
-    <message>
         <source>reading the axis back failed: %1</source>
         <translation>das Zurücklesen der Achse ist fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>Axis %1</source>
         <translation>Achse %1</translation>
-    </message>
-    <message>
-        <source> (the controller&apos;s axes could not be read: %1; it may have no axis %2)</source>
-        <translation> (die Achsen der Steuerung waren nicht lesbar: %1; sie hat vielleicht keine Achse %2)</translation>
     </message>
     <message>
         <source>not acknowledged: %1; %2</source>
@@ -8980,12 +9915,83 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Compax3-Antrieb an Adresse %1</translation>
     </message>
     <message>
-        <source>%1: the axis moves (%2)</source>
-        <translation>%1: die Achse fährt (%2)</translation>
+        <source>STOP</source>
+        <translation>STOPP</translation>
     </message>
     <message>
-        <source>%1: the axis is powered</source>
-        <translation>%1: die Achse ist bestromt</translation>
+        <source>stopped before it moved: %1 at %2</source>
+        <translation>angehalten, bevor sie fuhr: %1 um %2</translation>
+    </message>
+    <message>
+        <source>“%1” is running on this device: motion is not queued (it would start by itself when that ends); ask again then</source>
+        <translation>„%1“ läuft auf diesem Gerät: die Bewegung wird nicht eingereiht (sie würde von selbst starten, wenn das endet); fragen Sie dann erneut</translation>
+    </message>
+    <message numerus="yes">
+        <source>; the PC was too late to answer on the bus %n time(s) during this request (the bus waits %1 ms for an answer: a USB adapter&apos;s latency timer should be 1 ms, and a computer this busy is too slow for the bus)</source>
+        <translation>
+            <numerusform>; der PC war während dieser Anfrage %n Mal zu spät mit seiner Antwort auf dem Bus (der Bus wartet %1 ms auf eine Antwort: der Latenz-Timer eines USB-Adapters sollte 1 ms sein, und ein so ausgelasteter Computer ist zu langsam für den Bus)</numerusform>
+            <numerusform>; der PC war während dieser Anfrage %n Mal zu spät mit seiner Antwort auf dem Bus (der Bus wartet %1 ms auf eine Antwort: der Latenz-Timer eines USB-Adapters sollte 1 ms sein, und ein so ausgelasteter Computer ist zu langsam für den Bus)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no such axis: the controller refused its stop</source>
+        <translation>keine solche Achse: die Steuerung hat ihren Stopp abgelehnt</translation>
+    </message>
+    <message>
+        <source>could not tell whether axis %1 moves: its status was read through CamBench&apos;s guessed parameter numbers (provisional), not the controller&apos;s; load the controller&apos;s parameter table%2</source>
+        <translation>ob Achse %1 fährt, ließ sich nicht sagen: ihr Zustand wurde über die von CamBench geratenen Parameternummern (vorläufig) gelesen, nicht über die der Steuerung; laden Sie die Parametertabelle der Steuerung%2</translation>
+    </message>
+    <message>
+        <source> (besides: %1)</source>
+        <translation> (außerdem: %1)</translation>
+    </message>
+    <message>
+        <source>target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <source>deceleration</source>
+        <translation>Verzögerung</translation>
+    </message>
+    <message>
+        <source>mode %1 → %2</source>
+        <translation>Modus %1 → %2</translation>
+    </message>
+    <message>
+        <source>deceleration %1</source>
+        <translation>Verzögerung %1</translation>
+    </message>
+    <message>
+        <source>set %1 changed on the drive since it was read at %2 (%3): nothing was sent</source>
+        <translation>Satz %1 wurde im Antrieb geändert, seit er um %2 gelesen wurde (%3): nichts wurde gesendet</translation>
+    </message>
+    <message>
+        <source>%1: the axis moves (%2, as read through provisional object numbers)</source>
+        <translation>%1: die Achse fährt (%2, gelesen über vorläufige Objektnummern)</translation>
+    </message>
+    <message>
+        <source>%1: the axis is powered (as read through provisional object numbers)</source>
+        <translation>%1: die Achse ist bestromt (gelesen über vorläufige Objektnummern)</translation>
+    </message>
+    <message>
+        <source>%1 reads as %2, but through the status word 1000.3, whose number and bits are provisional (a public client&apos;s, not Parker&apos;s manual&apos;s): whether the axis stands cannot be told from it</source>
+        <translation>%1 lautet %2, aber über das Statuswort 1000.3, dessen Nummer und Bits vorläufig sind (aus einem öffentlichen Client, nicht aus Parkers Handbuch): ob die Achse steht, lässt sich daraus nicht sagen</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s status could not be read (%1), so the axis was stopped by switching its power off (1100.3 = $0000), the one stop that can never power the drive; acknowledged by the drive</source>
+        <translation>der Zustand des Antriebs konnte nicht gelesen werden (%1), daher wurde die Achse durch Abschalten ihrer Bestromung angehalten (1100.3 = $0000), der einzige Stopp, der den Antrieb nie bestromen kann; vom Antrieb quittiert</translation>
+    </message>
+    <message>
+        <source>not powered: nothing to stop (nothing was sent)</source>
+        <translation>nicht bestromt: nichts zu stoppen (nichts wurde gesendet)</translation>
     </message>
 </context>
 <context>
@@ -9309,10 +10315,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>%1 has %2 bytes, but its first byte 0x%3 says %4.</source>
         <translation>%1 hat %2 Bytes, aber sein erstes Byte 0x%3 sagt %4.</translation>
-    </message>
-    <message>
-        <source>EPROM date: image &quot;%1&quot;, device &quot;%2&quot;.</source>
-        <translation>EPROM-Datum: Abbild „%1“, Gerät „%2“.</translation>
     </message>
     <message>
         <source>%1: image %2, device %3.</source>
@@ -9811,10 +10813,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>Info-String</translation>
     </message>
     <message>
-        <source>not a pair [&quot;object&quot;, &quot;value&quot;]</source>
-        <translation>kein Paar [&quot;Objekt&quot;, &quot;Wert&quot;]</translation>
-    </message>
-    <message>
         <source>not an object of name, group and help</source>
         <translation>kein Objekt aus name, group und help</translation>
     </message>
@@ -9833,6 +10831,38 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>object %1 both with a value and absent</source>
         <translation>Objekt %1 zugleich mit Wert und als fehlend</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 hinzugefügt</translation>
+    </message>
+    <message>
+        <source>%1 removed</source>
+        <translation>%1 entfernt</translation>
+    </message>
+    <message>
+        <source>cam</source>
+        <translation>Nocken</translation>
+    </message>
+    <message>
+        <source>program %1, output %2</source>
+        <translation>Programm %1, Ausgang %2</translation>
+    </message>
+    <message>
+        <source>%1 flags, not the page&apos;s %2</source>
+        <translation>%1 Merker, nicht die %2 der Seite</translation>
+    </message>
+    <message>
+        <source>not [&quot;%1&quot;, 0 or 1]</source>
+        <translation>nicht [&quot;%1&quot;, 0 oder 1]</translation>
+    </message>
+    <message>
+        <source>flag</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>not [&quot;object&quot;, &quot;value&quot;, &quot;name&quot;]</source>
+        <translation>nicht [&quot;object&quot;, &quot;value&quot;, &quot;name&quot;]</translation>
     </message>
 </context>
 <context>
@@ -10139,10 +11169,6 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>%1 Das Gerät wurde nicht verändert.</translation>
     </message>
     <message>
-        <source>%1 was taken from another kind of device: %2 It must be forced to be restored here. The device was not changed.</source>
-        <translation>%1 stammt von einer anderen Art Gerät: %2 Es muss ausdrücklich erzwungen werden, um hier wiederhergestellt zu werden. Das Gerät wurde nicht verändert.</translation>
-    </message>
-    <message>
         <source>step 1 of 2: safety backup</source>
         <translation>Schritt 1 von 2: Sicherheitskopie</translation>
     </message>
@@ -10436,18 +11462,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>the %1 has no memory telegrams (an MC200 has): leave out --mem</source>
         <translation>die %1 hat keine Speichertelegramme (eine MC200 hat sie): lassen Sie --mem weg</translation>
-    </message>
-    <message>
-        <source>V%1: file %2, controller %3</source>
-        <translation>V%1: Datei %2, Steuerung %3</translation>
-    </message>
-    <message>
-        <source>%1: file %2, controller %3</source>
-        <translation>%1: Datei %2, Steuerung %3</translation>
-    </message>
-    <message>
-        <source>%1: %2 bytes differ, the first at %3</source>
-        <translation>%1: %2 Bytes weichen ab, das erste bei %3</translation>
     </message>
     <message>
         <source>Writing variables</source>
@@ -10748,6 +11762,254 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>program %1 does not exist on the device (it has programs 0 to %2): choose one of those</source>
         <translation>Programm %1 gibt es auf dem Gerät nicht (es hat die Programme 0 bis %2): wählen Sie eines davon</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>the %1 family has no backup</source>
+        <translation>die Familie %1 hat keine Sicherung</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>not reached: %1</source>
+        <translation>nicht erreicht: %1</translation>
+    </message>
+    <message>
+        <source>incomplete: %1</source>
+        <translation>unvollständig: %1</translation>
+    </message>
+    <message>
+        <source>%1 is a device of the %2 family in one folder and of the %3 family in the other: not compared</source>
+        <translation>%1 ist im einen Ordner ein Gerät der Familie %2 und im anderen der Familie %3: nicht verglichen</translation>
+    </message>
+    <message>
+        <source>machine name %1 → %2</source>
+        <translation>Maschinenname %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1: family %2 → %3</source>
+        <translation>%1: Familie %2 → %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation>%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>%1: volatile items %2 → %3</source>
+        <translation>%1: flüchtige Elemente %2 → %3</translation>
+    </message>
+    <message>
+        <source>not saved in %1%2</source>
+        <translation>nicht gesichert in %1%2</translation>
+    </message>
+    <message>
+        <source>another device: %1 → %2</source>
+        <translation>anderes Gerät: %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 is no machine backup folder: %2 (made by `machine backup`)</source>
+        <translation>%1 ist kein Maschinen-Sicherungsordner: %2 (erstellt von `machine backup`)</translation>
+    </message>
+    <message>
+        <source>%1: added</source>
+        <translation>%1: hinzugefügt</translation>
+    </message>
+    <message>
+        <source>%1: added (%2)</source>
+        <translation>%1: hinzugefügt (%2)</translation>
+    </message>
+    <message>
+        <source>%1: taken out of the machine</source>
+        <translation>%1: aus der Maschine genommen</translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> und %1 weitere</translation>
+    </message>
+    <message>
+        <source>machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>first version</source>
+        <translation>erste Version</translation>
+    </message>
+    <message>
+        <source>first version: %1</source>
+        <translation>erste Version: %1</translation>
+    </message>
+    <message>
+        <source>No temporary folder to take version %1 out of %2 into: %3</source>
+        <translation>Kein temporärer Ordner, um Version %1 aus %2 dorthin zu holen: %3</translation>
+    </message>
+    <message>
+        <source>%1 not saved: no version was stored (a version without a device would read as the device taken out of the machine).</source>
+        <translation>%1 nicht gesichert: es wurde keine Version gespeichert (eine Version ohne ein Gerät sähe aus, als sei das Gerät aus der Maschine genommen).</translation>
+    </message>
+    <message>
+        <source>The backup could not be compared with the latest version, no version was stored: %1</source>
+        <translation>Die Sicherung konnte nicht mit der letzten Version verglichen werden, es wurde keine Version gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Communication settings left out: %1 (the device keeps %2). They decide how the device is reached and are written only when asked for by name.</source>
+        <translation>Kommunikationseinstellungen ausgelassen: %1 (das Gerät behält %2). Sie bestimmen, wie das Gerät erreicht wird, und werden nur geschrieben, wenn sie ausdrücklich verlangt werden.</translation>
+    </message>
+    <message>
+        <source>its own</source>
+        <translation>seine eigenen</translation>
+    </message>
+    <message>
+        <source>Whether the communication settings changed is not known: if the next connection fails, try the settings that were to be written.</source>
+        <translation>Ob sich die Kommunikationseinstellungen geändert haben, ist nicht bekannt: schlägt die nächste Verbindung fehl, versuchen Sie die Einstellungen, die geschrieben werden sollten.</translation>
+    </message>
+    <message>
+        <source>Communication settings written: the next connection to this device needs %1.</source>
+        <translation>Kommunikationseinstellungen geschrieben: die nächste Verbindung zu diesem Gerät braucht %1.</translation>
+    </message>
+    <message>
+        <source>The image holds the communication settings the device had when it was taken, %1 (it uses %2 now). A restore puts them back with everything else: the next connection to the device needs %1.</source>
+        <translation>Das Abbild enthält die Kommunikationseinstellungen, die das Gerät bei der Aufnahme hatte, %1 (jetzt verwendet es %2). Eine Wiederherstellung stellt sie mit allem anderen zurück: die nächste Verbindung zum Gerät braucht %1.</translation>
+    </message>
+    <message>
+        <source>EEPROM: blocks %1 differ%2</source>
+        <translation>EEPROM: Blöcke %1 unterscheiden sich%2</translation>
+    </message>
+    <message>
+        <source>blocks</source>
+        <translation>Blöcke</translation>
+    </message>
+    <message>
+        <source> (a backup of the older format: its content is not decoded)</source>
+        <translation> (eine Sicherung im älteren Format: ihr Inhalt wird nicht entschlüsselt)</translation>
+    </message>
+    <message>
+        <source> (the decoded content is equal: what differs is not in it)</source>
+        <translation> (der entschlüsselte Inhalt ist gleich: der Unterschied liegt nicht darin)</translation>
+    </message>
+    <message>
+        <source>the device reports %1</source>
+        <translation>das Gerät meldet %1</translation>
+    </message>
+    <message>
+        <source>The backup</source>
+        <translation>Die Sicherung</translation>
+    </message>
+    <message>
+        <source>the flag page</source>
+        <translation>die Merkerseite</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes differ, from %3: %4 → %5</source>
+        <translation>%1: %2 Bytes unterscheiden sich, ab %3: %4 → %5</translation>
+    </message>
+    <message>
+        <source>variant</source>
+        <translation>Variante</translation>
+    </message>
+    <message>
+        <source>The parameter set</source>
+        <translation>Der Parametersatz</translation>
+    </message>
+    <message>
+        <source>not on the drive it was read from</source>
+        <translation>nicht auf dem Antrieb, von dem gelesen wurde</translation>
+    </message>
+    <message>
+        <source>the file&apos;s</source>
+        <translation>laut Datei</translation>
+    </message>
+    <message>
+        <source>drive</source>
+        <translation>Antrieb</translation>
+    </message>
+    <message>
+        <source>not on the drive</source>
+        <translation>nicht auf dem Antrieb</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::CamConBackups</name>
+    <message>
+        <source>%1 EEPROM blocks (%2 bytes), decoded: %3 programs</source>
+        <translation>%1 EEPROM-Blöcke (%2 Bytes), entschlüsselt: %3 Programme</translation>
+    </message>
+    <message>
+        <source>a safety copy of what the device holds now is saved first%1</source>
+        <translation>zuerst wird eine Sicherheitskopie des jetzigen Inhalts des Geräts angelegt%1</translation>
+    </message>
+    <message>
+        <source>then the whole EEPROM is erased and written again: %1 blocks, and the device starts</source>
+        <translation>dann wird das ganze EEPROM gelöscht und neu geschrieben: %1 Blöcke, und das Gerät startet</translation>
+    </message>
+    <message>
+        <source> (a safety copy was saved to %1)</source>
+        <translation> (eine Sicherheitskopie wurde in %1 gesichert)</translation>
+    </message>
+    <message>
+        <source>EEPROM, %1 blocks</source>
+        <translation>EEPROM, %1 Blöcke</translation>
+    </message>
+    <message>
+        <source>erased or partly written</source>
+        <translation>gelöscht oder teilweise geschrieben</translation>
+    </message>
+    <message>
+        <source> (a backup of the older format: its content is not decoded)</source>
+        <translation> (eine Sicherung im älteren Format: ihr Inhalt wird nicht entschlüsselt)</translation>
+    </message>
+    <message>
+        <source> (the decoded content is equal: what differs is not in it)</source>
+        <translation> (der entschlüsselte Inhalt ist gleich: der Unterschied liegt nicht darin)</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::Compax3Backups</name>
+    <message>
+        <source>%1 objects of %2 (serial number %3)</source>
+        <translation>%1 Objekte von %2 (Seriennummer %3)</translation>
+    </message>
+    <message>
+        <source>; %1 objects are not on this drive</source>
+        <translation>; %1 Objekte sind nicht auf diesem Antrieb</translation>
+    </message>
+    <message>
+        <source>%1: not saved: %2</source>
+        <translation>%1: nicht gesichert: %2</translation>
+    </message>
+    <message>
+        <source>%1 objects are not on this drive, nor on the file&apos;s</source>
+        <translation>%1 Objekte sind nicht auf diesem Antrieb und nicht auf dem der Datei</translation>
+    </message>
+    <message>
+        <source>%1: not compared: %2</source>
+        <translation>%1: nicht verglichen: %2</translation>
+    </message>
+    <message>
+        <source>only the differing objects are written, each read back; control words and functions never from a file</source>
+        <translation>nur die abweichenden Objekte werden geschrieben, jedes zurückgelesen; Steuerwörter und Funktionen nie aus einer Datei</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::MachineChanges</name>
+    <message>
+        <source>machine file: %1</source>
+        <translation>Maschinendatei: %1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::Mc1Backups</name>
+    <message>
+        <source>%1 variables and %2 flags of the %3</source>
+        <translation>%1 Variablen und %2 Merker der %3</translation>
+    </message>
+    <message>
+        <source>only the differing variables, flags and memory are written, each read back</source>
+        <translation>nur die abweichenden Variablen, Merker und Speicher werden geschrieben, jedes zurückgelesen</translation>
     </message>
 </context>
 </TS>

@@ -1037,6 +1037,84 @@
         <source>%1 ms</source>
         <translation type="unfinished">%1 ms</translation>
     </message>
+    <message>
+        <source>not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">none</translation>
+    </message>
+    <message>
+        <source>%1: %2 (the same)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: backup %2, this device %3  ← differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device answering is not the one %1 was taken from.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (an older backup): CamBench cannot tell whether the device answering is that device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+
+Restore it here only if this device replaces the one the backup was taken from (or, for an older backup, is that device). Nothing has been written yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>It replaces that device: restore</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was written: which device answers could not be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>which device this is cannot be told: no identity was recorded for it; found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another device answers: expected %1, found %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (a backup older than that record), so CamBench cannot tell whether the device answering (%2) is that device. Nothing was written. If it is, or if it replaces that device, confirm it (on the command line: --replacement).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was taken from another device: %2 (the backup&apos;s device: %3; the device answering: %4). Nothing was written. Only if this device replaces that one, confirm it (on the command line: --replacement).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The git program could not be started (%1); the machine archive is a git repository: install git (Debian: apt install git).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 in %2 did not finish within %3 s (a lock held by another git?); nothing more was done.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 in %2 failed (exit %3): %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &quot;volatile&quot; holds an empty item; name items as a comparison names them (&quot;V12&quot;) or a range (&quot;V100-V199&quot;).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the volatile range &quot;%2&quot; ends below its start; write it low to high.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::AccessGridModel</name>
@@ -1146,16 +1224,16 @@
 <context>
     <name>cambench::BackupPage</name>
     <message>
-        <source>&lt;h3&gt;Backup and restore&lt;/h3&gt;&lt;p&gt;A &lt;b&gt;backup&lt;/b&gt; copies the whole EEPROM of the device (cam programs, dead times, settings, users, PLC) block by block into a file.&lt;/p&gt;&lt;p&gt;A &lt;b&gt;restore&lt;/b&gt; erases the device and writes such a file back. CamBench checks the file first, asks for a confirmation when it comes from a different device, and saves what the device holds now into a safety backup before it erases anything.&lt;/p&gt;&lt;p&gt;If a restore is interrupted, the device stays erased and does not run until an image is restored completely: keep the safety backup.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Backup and restore&lt;/h3&gt;&lt;p&gt;A &lt;b&gt;backup&lt;/b&gt; copies the whole EEPROM of the device (cam programs, dead times, settings, users, PLC) block by block into a file.&lt;/p&gt;&lt;p&gt;A &lt;b&gt;restore&lt;/b&gt; erases the device and writes such a file back. CamBench checks the file first, asks for a confirmation when it comes from a different device, and saves what the device holds now into a safety backup before it erases anything.&lt;/p&gt;&lt;p&gt;If a restore is interrupted, the device stays erased and does not run until an image is restored completely: keep the safety backup.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Backup or restore…</source>
         <translation>Backup or restore…</translation>
     </message>
     <message>
         <source>Backup</source>
         <translation>Backup</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Backup and restore&lt;/h3&gt;&lt;p&gt;A &lt;b&gt;backup&lt;/b&gt; copies the whole EEPROM of the device (cam programs, dead times, settings, users, PLC) block by block into a file.&lt;/p&gt;&lt;p&gt;A &lt;b&gt;restore&lt;/b&gt; erases the device and writes such a file back. CamBench checks the file first, restores it only to the device it was taken from (or to its replacement when you say so), and saves what the device holds now into a safety backup before it erases anything.&lt;/p&gt;&lt;p&gt;If a restore is interrupted, the device stays erased and does not run until an image is restored completely: keep the safety backup.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1209,10 +1287,6 @@
         <translation>The restore erases the device. Before that, CamBench saves what the device holds now into a safety backup.</translation>
     </message>
     <message>
-        <source>Restore although the image comes from a different device</source>
-        <translation>Restore although the image comes from a different device</translation>
-    </message>
-    <message>
         <source>Safety backup:</source>
         <translation>Safety backup:</translation>
     </message>
@@ -1227,10 +1301,6 @@
     <message>
         <source>This file cannot be restored: %1</source>
         <translation>This file cannot be restored: %1</translation>
-    </message>
-    <message>
-        <source>The image comes from a different device. Confirm that you want to restore it anyway, or choose another file.</source>
-        <translation>The image comes from a different device. Confirm that you want to restore it anyway, or choose another file.</translation>
     </message>
     <message>
         <source>Choose where the safety backup goes.</source>
@@ -2782,6 +2852,13 @@ Erase and restore now?</translation>
         <source>Use dictionary</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>%n value(s) typed in on this PC are NOT on the drive; the values below are the drive&apos;s.</source>
+        <translation>
+            <numerusform>%n value typed in on this PC is NOT on the drive; the values below are the drive&apos;s.</numerusform>
+            <numerusform>%n values typed in on this PC are NOT on the drive; the values below are the drive&apos;s.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cambench::Compax3MotionPage</name>
@@ -2910,10 +2987,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (as on the drive)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 (%2)</source>
         <translation type="unfinished">%1 (%2)</translation>
     </message>
@@ -2926,10 +2999,6 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1: %2 (as on the drive)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Target</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2938,11 +3007,39 @@ Erase and restore now?</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Acceleration and deceleration</source>
+        <source>Deceleration:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Mode (1905.%1): %2 (as on the drive)</source>
+        <source>%1 (read at %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch drive %1 powerless?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Power is dropped: the motor no longer holds the axis. A hanging (vertical) axis falls unless its brake holds it; a moving axis runs out as the drive is set. Make sure nobody is at the axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set %1 as read from the drive at %2; read again before anything is sent: if the drive then holds other values, nothing is sent and you are asked again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 (as read)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode (1905.%1): %2 (as read)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3392,6 +3489,77 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
+    <name>cambench::Compax3Report</name>
+    <message>
+        <source>Last error (550.1): %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status word (1000.3): %1; set: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">none</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished">Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished">Value</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not on this drive: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 not read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the drive for the report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read from the drive for this report.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from the drive at %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serial number %1, type %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation type="unfinished">Not read: %1</translation>
+    </message>
+    <message>
+        <source>Parameter set</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::Compax3SettingsWidget</name>
     <message>
         <source>The drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;). Scan bus lists the addresses that answer.</source>
@@ -3767,6 +3935,14 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>%1, address %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Switch to device %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device %1 does not answer on the bus; device %2 does (the bus has %3): CamBench talks to device %2 now.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::ConnectionStrip</name>
@@ -3799,10 +3975,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <translation>Offline. What you edit stays on this PC until you connect and write it.</translation>
     </message>
     <message>
-        <source>%1; checking which device answers…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Not connected to %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3817,6 +3989,10 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     <message>
         <source>%1: %2</source>
         <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message>
+        <source>Check that the port and the protocol are this device&apos;s; nothing is written to it. Your edits are kept.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4113,6 +4289,21 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     </message>
 </context>
 <context>
+    <name>cambench::DeviceIdentity</name>
+    <message>
+        <source>not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not an object of names and texts ({&quot;serial&quot;: &quot;...&quot;}).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; must be a text, as CamBench wrote it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::DeviceReads</name>
     <message>
         <source>Not taken: your edits and the values shown are unchanged.</source>
@@ -4177,6 +4368,22 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Disconnect</source>
         <translation type="unfinished">Disconnect</translation>
     </message>
+    <message>
+        <source>No device identifies itself on the simulated line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No device identifies itself on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Checking which device answers on the simulated line…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Checking which device answers on %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::DeviceWriter</name>
@@ -4188,6 +4395,29 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
         <source>Nothing was written: the device on the line (CamCon %1, device number %2, %3 cams programmed) is not the one the values shown as on the device were read from (CamCon %4, device number %5, %6 cams programmed).
 Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was written: the write was cancelled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::DialogStop</name>
+    <message>
+        <source>STOP (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive CamBench can reach, without a question. %1 does the same and closes this dialog.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP sent…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished">%1 %2</translation>
     </message>
 </context>
 <context>
@@ -4375,6 +4605,33 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
+    <name>cambench::LinkSettingsQuestion</name>
+    <message>
+        <source>Communication settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The values to write include communication settings: %1 (the device has %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>others</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>They decide how the device is reached. Written, the next connection to this device needs them: change the connection settings to match afterwards. Left out, the device keeps its own and everything else is written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Also write %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::LiveDevicePage</name>
     <message>
         <source>STOP (Esc)</source>
@@ -4447,6 +4704,413 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
+    <name>cambench::MachineArchive</name>
+    <message>
+        <source>%1 is no machine archive: there is no such folder (`machine backup M.json --archive %1` makes one).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is no machine archive: it is not the top folder of a git repository (`machine backup M.json --archive DIR` makes one).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot make the archive folder %1; check the path and its rights.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds files but is no git repository: it is not made an archive (name an empty or new folder).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds no version yet (`machine backup M.json --archive %1 -m WHY` stores the first).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2 (`machine history %2` lists them: a commit id, a prefix of one or a tag).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No version of %1 is released (`machine release %1 VERSION` marks the one that should be on the machine).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot make the folder for %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2; no version was stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineBackupRun</name>
+    <message numerus="yes">
+        <source>… and %n more (Details)</source>
+        <translation>
+            <numerusform>… and %n more (Details)</numerusform>
+            <numerusform>… and %n more (Details)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 is not a machine backup folder: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in this backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not saved in this backup (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its file in the backup changed since it was saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back up the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1; check the path and its rights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back up %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed: %1 - nothing was saved from it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT SAVED: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(the manifest: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine file in %1 lacks the identities: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not verified: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 - not verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>equal: %n item(s) compared</source>
+        <translation>
+            <numerusform>equal: %n item compared</numerusform>
+            <numerusform>equal: %n items compared</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s):</source>
+        <translation>
+            <numerusform>%n difference:</numerusform>
+            <numerusform>%n differences:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not restored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the backup of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plan the restore of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s) to change</source>
+        <translation>
+            <numerusform>%1: %n item to change</numerusform>
+            <numerusform>%1: %n items to change</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>plan read: %n item(s) to change</source>
+        <translation>
+            <numerusform>plan read: %n item to change</numerusform>
+            <numerusform>plan read: %n items to change</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore %1 from %2?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What each device holds is saved beside the backup folder first. Then this is written:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation type="unfinished">Restore</translation>
+    </message>
+    <message>
+        <source>not restored: cancelled, nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not restored: cannot make the folder %1 for the safety copies; nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>restored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT RESTORED completely: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>safety copies of a restore from %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The safety copies in %1 are not listed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the devices held before: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineHistoryDialog</name>
+    <message>
+        <source>equal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>equal (%n change(s) of volatile items left out)</source>
+        <translation>
+            <numerusform>equal (%n change of volatile items left out)</numerusform>
+            <numerusform>equal (%n changes of volatile items left out)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>added: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>taken out of the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT COMPARED: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Compare the two</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare with the devices &amp;now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Restore this version…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Mark as released</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>History of %1 - %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Why</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Released</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation type="unfinished">Device</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation type="unfinished">Item</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Difference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds no version yet: Machine → Back up… into it, or `cambench-cli machine backup M.json --archive %1 -m WHY`.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: no difference.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: differences in %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the machine file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not every device was compared (see the table).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Version %1 → %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading every device to compare it with version %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Version %1 → the devices now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Version %1 is the released version now (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading each device&apos;s plan of restoring version %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: NOT RESTORED: %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s) to change
+</source>
+        <translation>
+            <numerusform>%1: %n item to change
+</numerusform>
+            <numerusform>%1: %n items to change
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Version %1 is not restored: no device can take it.
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore version %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore version %1 into %2? Each device&apos;s plan is in the details; a safety copy of what a device holds is taken first where its family takes one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Version %1 was not restored; nothing was written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore of version %1:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The archive of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineHistoryJobs</name>
+    <message>
+        <source>NOT RESTORED: cannot make the folder %1 for the safety copies; nothing was written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT RESTORED: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT RESTORED completely: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::MachineReport</name>
     <message>
         <source>not identified</source>
@@ -4505,10 +5169,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Its live values last answered: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Edits on this PC not written to the device: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4518,6 +5178,26 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Page %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recorded identity: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last answered: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read: %1; its section says what this PC holds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4551,10 +5231,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>connected, identifying…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>connecting…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4573,6 +5249,50 @@ Read the device again or use Compare with device; your edits are kept.</source>
     <message>
         <source>offline</source>
         <translation type="unfinished">offline</translation>
+    </message>
+    <message>
+        <source>Watch the line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the connect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another device answers: no %1 identifies itself (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer since %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer since %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>checking which device answers…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>did not identify itself: %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4670,6 +5390,42 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>%1: choose its port on its Connection page (Detect finds the protocol), then Connect.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Back up…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back up the machine into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back up the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Why (kept in the backup&apos;s manifest):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Verify…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify against the backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R&amp;estore…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restore the backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;History…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5262,6 +6018,141 @@ The table in use stays: %3</source>
     </message>
 </context>
 <context>
+    <name>cambench::Mc1Report</name>
+    <message>
+        <source>%1 variables read (V%2 to V%3); %4 of them are 0 and not listed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The flags were not read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All %1 external flags are clear.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Of %1 external flags, these %2 are set: %3. All others are clear.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter table in use: %1 - PROVISIONAL parameter numbers (a guess, not from the controller&apos;s documentation): the axis values above are not facts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter table in use: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished">Axis</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished">Value</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the controller for the report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 reports no program state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 has no axis telegrams</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read from the controller for this report.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from the controller at %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identity: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation type="unfinished">Not read: %1</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No axis read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>standing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished">Position</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished">State</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axes: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>External flags</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::Mc1SettingsWidget</name>
     <message>
         <source>Automatic (probe the controller)</source>
@@ -5840,6 +6731,46 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>Nothing answered the STOP – use the machine&apos;s emergency stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP acknowledged at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may move: STOP NOT acknowledged at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>moving (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>standing (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may move (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may move: moving when last read at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>may move: %1 sent at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to stop: nothing was powered, and nothing was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: not powered, nothing to stop</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -6551,10 +7482,6 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 does the same from every page.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>STOP sent…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6563,6 +7490,21 @@ The table in use stays: %3</source>
 %3</source>
         <translation type="unfinished">%1 %2
 %3</translation>
+    </message>
+    <message>
+        <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 stops it too, from every window, dialog and menu of CamBench.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::T</name>
+    <message>
+        <source>not in this version of the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
     </message>
 </context>
 <context>
@@ -8739,10 +9681,6 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>user %1 answered its TO with %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>user %1 did not acknowledge the block</source>
         <translation type="unfinished"></translation>
     </message>
@@ -8907,19 +9845,11 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>no stop was sent: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>reading the axis back failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Axis %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> (the controller&apos;s axes could not be read: %1; it may have no axis %2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -8975,11 +9905,82 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1: the axis moves (%2)</source>
+        <source>STOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1: the axis is powered</source>
+        <source>stopped before it moved: %1 at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is running on this device: motion is not queued (it would start by itself when that ends); ask again then</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>; the PC was too late to answer on the bus %n time(s) during this request (the bus waits %1 ms for an answer: a USB adapter&apos;s latency timer should be 1 ms, and a computer this busy is too slow for the bus)</source>
+        <translation>
+            <numerusform>; the PC was too late to answer on the bus %n time during this request (the bus waits %1 ms for an answer: a USB adapter&apos;s latency timer should be 1 ms, and a computer this busy is too slow for the bus)</numerusform>
+            <numerusform>; the PC was too late to answer on the bus %n times during this request (the bus waits %1 ms for an answer: a USB adapter&apos;s latency timer should be 1 ms, and a computer this busy is too slow for the bus)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no such axis: the controller refused its stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>could not tell whether axis %1 moves: its status was read through CamBench&apos;s guessed parameter numbers (provisional), not the controller&apos;s; load the controller&apos;s parameter table%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (besides: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mode %1 → %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deceleration %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set %1 changed on the drive since it was read at %2 (%3): nothing was sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the axis moves (%2, as read through provisional object numbers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the axis is powered (as read through provisional object numbers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 reads as %2, but through the status word 1000.3, whose number and bits are provisional (a public client&apos;s, not Parker&apos;s manual&apos;s): whether the axis stands cannot be told from it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive&apos;s status could not be read (%1), so the axis was stopped by switching its power off (1100.3 = $0000), the one stop that can never power the drive; acknowledged by the drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not powered: nothing to stop (nothing was sent)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -9304,10 +10305,6 @@ The table in use stays: %3</source>
     <message>
         <source>%1 has %2 bytes, but its first byte 0x%3 says %4.</source>
         <translation>%1 has %2 bytes, but its first byte 0x%3 says %4.</translation>
-    </message>
-    <message>
-        <source>EPROM date: image &quot;%1&quot;, device &quot;%2&quot;.</source>
-        <translation>EPROM date: image &quot;%1&quot;, device &quot;%2&quot;.</translation>
     </message>
     <message>
         <source>%1: image %2, device %3.</source>
@@ -9806,10 +10803,6 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>not a pair [&quot;object&quot;, &quot;value&quot;]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>not an object of name, group and help</source>
         <translation type="unfinished"></translation>
     </message>
@@ -9827,6 +10820,38 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>object %1 both with a value and absent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cam</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program %1, output %2</source>
+        <translation type="unfinished">program %1, output %2</translation>
+    </message>
+    <message>
+        <source>%1 flags, not the page&apos;s %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not [&quot;%1&quot;, 0 or 1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not [&quot;object&quot;, &quot;value&quot;, &quot;name&quot;]</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -10134,10 +11159,6 @@ The table in use stays: %3</source>
         <translation>%1 The device was not changed.</translation>
     </message>
     <message>
-        <source>%1 was taken from another kind of device: %2 It must be forced to be restored here. The device was not changed.</source>
-        <translation>%1 was taken from another kind of device: %2 It must be forced to be restored here. The device was not changed.</translation>
-    </message>
-    <message>
         <source>step 1 of 2: safety backup</source>
         <translation>step 1 of 2: safety backup</translation>
     </message>
@@ -10430,18 +11451,6 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>the %1 has no memory telegrams (an MC200 has): leave out --mem</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>V%1: file %2, controller %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: file %2, controller %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2 bytes differ, the first at %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -10742,6 +11751,254 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>program %1 does not exist on the device (it has programs 0 to %2): choose one of those</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 family has no backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not reached: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>incomplete: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a device of the %2 family in one folder and of the %3 family in the other: not compared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine name %1 → %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: family %2 → %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation type="unfinished">%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>%1: volatile items %2 → %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not saved in %1%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another device: %1 → %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is no machine backup folder: %2 (made by `machine backup`)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: added (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: taken out of the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>first version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>first version: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No temporary folder to take version %1 out of %2 into: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 not saved: no version was stored (a version without a device would read as the device taken out of the machine).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The backup could not be compared with the latest version, no version was stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Communication settings left out: %1 (the device keeps %2). They decide how the device is reached and are written only when asked for by name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whether the communication settings changed is not known: if the next connection fails, try the settings that were to be written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Communication settings written: the next connection to this device needs %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The image holds the communication settings the device had when it was taken, %1 (it uses %2 now). A restore puts them back with everything else: the next connection to the device needs %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EEPROM: blocks %1 differ%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>blocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (a backup of the older format: its content is not decoded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (the decoded content is equal: what differs is not in it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device reports %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The backup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the flag page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes differ, from %3: %4 → %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The parameter set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not on the drive it was read from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not on the drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::CamConBackups</name>
+    <message>
+        <source>%1 EEPROM blocks (%2 bytes), decoded: %3 programs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a safety copy of what the device holds now is saved first%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>then the whole EEPROM is erased and written again: %1 blocks, and the device starts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (a safety copy was saved to %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EEPROM, %1 blocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>erased or partly written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (a backup of the older format: its content is not decoded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (the decoded content is equal: what differs is not in it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::Compax3Backups</name>
+    <message>
+        <source>%1 objects of %2 (serial number %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; %1 objects are not on this drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: not saved: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 objects are not on this drive, nor on the file&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: not compared: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only the differing objects are written, each read back; control words and functions never from a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::MachineChanges</name>
+    <message>
+        <source>machine file: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::usecases::Mc1Backups</name>
+    <message>
+        <source>%1 variables and %2 flags of the %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only the differing variables, flags and memory are written, each read back</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
