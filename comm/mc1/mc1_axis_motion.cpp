@@ -46,11 +46,12 @@ MotionStopReport Mc1AxisMotion::stopAllMotion() {
         const int axis = numbers.at(i);
         if (!known && !sent.at(i) && isMc1Refusal(sent.at(i).error())) {
             // Asked blind: the controller says it has no such axis.
-            report.lines << MotionStopLine{
+            MotionStopLine absent{
                 axisName(axis), false,
                 QCoreApplication::translate("cambench::comm",
-                                            "no such axis: the controller refused its stop"),
-                true};
+                                            "no such axis: the controller refused its stop")};
+            absent.absent = true;  // named: a positional true was nothingToStop once
+            report.lines << absent;
             continue;
         }
         const Result<Mc1AxisState> state = m_controller.axisState(axis);
