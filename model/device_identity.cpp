@@ -8,10 +8,6 @@ namespace cambench {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("cambench::model", text);
-}
-
 QString valuesText(const QMap<QString, QString>& values) {
     QStringList parts;
     for (auto it = values.begin(); it != values.end(); ++it)
@@ -22,7 +18,8 @@ QString valuesText(const QMap<QString, QString>& values) {
 }  // namespace
 
 QString DeviceIdentity::text() const {
-    return known() ? valuesText(m_values) : tr("not recorded");
+    return known() ? valuesText(m_values)
+                   : QCoreApplication::translate("cambench::model", "not recorded");
 }
 
 QJsonObject DeviceIdentity::toJson() const {
@@ -35,13 +32,18 @@ QJsonObject DeviceIdentity::toJson() const {
 Result<DeviceIdentity> DeviceIdentity::fromJson(const QJsonValue& value, const QString& where) {
     if (!value.isObject())
         return Error::invalidData(
-            tr("%1 is not an object of names and texts ({\"serial\": \"...\"}).").arg(where));
+            QCoreApplication::translate(
+                "cambench::model",
+                "%1 is not an object of names and texts ({\"serial\": \"...\"}).")
+                .arg(where));
     DeviceIdentity identity;
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (!it.value().isString() || it.key().isEmpty())
             return Error::invalidData(
-                tr("%1: \"%2\" must be a text, as CamBench wrote it.").arg(where, it.key()));
+                QCoreApplication::translate("cambench::model",
+                                            "%1: \"%2\" must be a text, as CamBench wrote it.")
+                    .arg(where, it.key()));
         identity.set(it.key(), it.value().toString());
     }
     return identity;
@@ -49,7 +51,9 @@ Result<DeviceIdentity> DeviceIdentity::fromJson(const QJsonValue& value, const Q
 
 QString anotherDeviceText(const DeviceIdentity& expected, const DeviceIdentity& found) {
     if (!expected.known())
-        return tr("which device this is cannot be told: no identity was recorded for it; found %1")
+        return QCoreApplication::translate(
+                   "cambench::model",
+                   "which device this is cannot be told: no identity was recorded for it; found %1")
             .arg(found.text());
     QSet<QString> keys;
     for (const QString& key : expected.values().keys()) keys.insert(key);
@@ -58,10 +62,13 @@ QString anotherDeviceText(const DeviceIdentity& expected, const DeviceIdentity& 
     QMap<QString, QString> now;
     for (const QString& key : keys) {
         if (expected.value(key) == found.value(key)) continue;
-        was.insert(key, expected.values().value(key, tr("none")));
-        now.insert(key, found.values().value(key, tr("none")));
+        was.insert(key, expected.values().value(
+                            key, QCoreApplication::translate("cambench::model", "none")));
+        now.insert(
+            key, found.values().value(key, QCoreApplication::translate("cambench::model", "none")));
     }
-    return tr("another device answers: expected %1, found %2")
+    return QCoreApplication::translate("cambench::model",
+                                       "another device answers: expected %1, found %2")
         .arg(valuesText(was), valuesText(now));
 }
 
@@ -70,15 +77,19 @@ Status checkRestoreTarget(const DeviceIdentity& backup, const DeviceIdentity& fo
     if ((backup.known() && backup == found) || consent.accepts(found)) return success();
     if (!backup.known())
         return Error::invalidData(
-            tr("%1 records no identity of the device it was taken from (a backup older than "
-               "that record), so CamBench cannot tell whether the device answering (%2) is that "
-               "device. Nothing was written. If it is, or if it replaces that device, confirm "
-               "it (on the command line: --replacement).")
+            QCoreApplication::translate(
+                "cambench::model",
+                "%1 records no identity of the device it was taken from (a backup older than "
+                "that record), so CamBench cannot tell whether the device answering (%2) is that "
+                "device. Nothing was written. If it is, or if it replaces that device, confirm "
+                "it (on the command line: --replacement).")
                 .arg(what, found.text()));
     return Error::invalidData(
-        tr("%1 was taken from another device: %2 (the backup's device: %3; the device "
-           "answering: %4). Nothing was written. Only if this device replaces that one, confirm "
-           "it (on the command line: --replacement).")
+        QCoreApplication::translate(
+            "cambench::model",
+            "%1 was taken from another device: %2 (the backup's device: %3; the device "
+            "answering: %4). Nothing was written. Only if this device replaces that one, confirm "
+            "it (on the command line: --replacement).")
             .arg(what, anotherDeviceText(backup, found), backup.text(), found.text()));
 }
 

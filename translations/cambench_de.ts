@@ -98,6 +98,53 @@
     </message>
 </context>
 <context>
+    <name>ReplacementQuestion</name>
+    <message>
+        <source>not recorded</source>
+        <translation>nicht aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1: %2 (the same)</source>
+        <translation>%1: %2 (gleich)</translation>
+    </message>
+    <message>
+        <source>%1: backup %2, this device %3  ← differs</source>
+        <translation>%1: Sicherung %2, dieses Gerät %3  ← weicht ab</translation>
+    </message>
+    <message>
+        <source>The device answering is not the one %1 was taken from.</source>
+        <translation>Das antwortende Gerät ist nicht das, von dem %1 stammt.</translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (an older backup): CamBench cannot tell whether the device answering is that device.</source>
+        <translation>%1 zeichnet keine Identität des Geräts auf, von dem es stammt (eine ältere Sicherung): CamBench kann nicht sagen, ob das antwortende Gerät dieses Gerät ist.</translation>
+    </message>
+    <message>
+        <source>%1
+
+Restore it here only if this device replaces the one the backup was taken from (or, for an older backup, is that device). Nothing has been written yet.</source>
+        <translation>%1
+
+Stellen Sie sie hier nur wieder her, wenn dieses Gerät das ersetzt, von dem die Sicherung stammt (oder, bei einer älteren Sicherung, dieses Gerät ist). Noch wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>It replaces that device: restore</source>
+        <translation>Es ersetzt jenes Gerät: wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation>Prüfen, welches Gerät antwortet</translation>
+    </message>
+    <message>
+        <source>Nothing was written: which device answers could not be read: %1</source>
+        <translation>Nichts wurde geschrieben: welches Gerät antwortet, ließ sich nicht lesen: %1</translation>
+    </message>
+</context>
+<context>
     <name>Settings</name>
     <message>
         <source>Encoder</source>
@@ -1036,78 +1083,6 @@
     <message>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
-    </message>
-    <message>
-        <source>not recorded</source>
-        <translation>nicht aufgezeichnet</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <source>%1: %2 (the same)</source>
-        <translation>%1: %2 (gleich)</translation>
-    </message>
-    <message>
-        <source>%1: backup %2, this device %3  ← differs</source>
-        <translation>%1: Sicherung %2, dieses Gerät %3  ← weicht ab</translation>
-    </message>
-    <message>
-        <source>The device answering is not the one %1 was taken from.</source>
-        <translation>Das antwortende Gerät ist nicht das, von dem %1 stammt.</translation>
-    </message>
-    <message>
-        <source>%1 records no identity of the device it was taken from (an older backup): CamBench cannot tell whether the device answering is that device.</source>
-        <translation>%1 zeichnet keine Identität des Geräts auf, von dem es stammt (eine ältere Sicherung): CamBench kann nicht sagen, ob das antwortende Gerät dieses Gerät ist.</translation>
-    </message>
-    <message>
-        <source>%1
-
-Restore it here only if this device replaces the one the backup was taken from (or, for an older backup, is that device). Nothing has been written yet.</source>
-        <translation>%1
-
-Stellen Sie sie hier nur wieder her, wenn dieses Gerät das ersetzt, von dem die Sicherung stammt (oder, bei einer älteren Sicherung, dieses Gerät ist). Noch wurde nichts geschrieben.</translation>
-    </message>
-    <message>
-        <source>It replaces that device: restore</source>
-        <translation>Es ersetzt jenes Gerät: wiederherstellen</translation>
-    </message>
-    <message>
-        <source>Check which device answers</source>
-        <translation>Prüfen, welches Gerät antwortet</translation>
-    </message>
-    <message>
-        <source>Nothing was written: which device answers could not be read: %1</source>
-        <translation>Nichts wurde geschrieben: welches Gerät antwortet, ließ sich nicht lesen: %1</translation>
-    </message>
-    <message>
-        <source>which device this is cannot be told: no identity was recorded for it; found %1</source>
-        <translation>welches Gerät dies ist, lässt sich nicht sagen: für es wurde keine Identität aufgezeichnet; gefunden %1</translation>
-    </message>
-    <message>
-        <source>another device answers: expected %1, found %2</source>
-        <translation>ein anderes Gerät antwortet: erwartet %1, gefunden %2</translation>
-    </message>
-    <message>
-        <source>%1 records no identity of the device it was taken from (a backup older than that record), so CamBench cannot tell whether the device answering (%2) is that device. Nothing was written. If it is, or if it replaces that device, confirm it (on the command line: --replacement).</source>
-        <translation>%1 zeichnet keine Identität des Geräts auf, von dem es stammt (eine Sicherung, älter als diese Aufzeichnung), daher kann CamBench nicht sagen, ob das antwortende Gerät (%2) dieses Gerät ist. Nichts wurde geschrieben. Wenn es das ist oder es dieses Gerät ersetzt, bestätigen Sie es (auf der Kommandozeile: --replacement).</translation>
-    </message>
-    <message>
-        <source>%1 was taken from another device: %2 (the backup&apos;s device: %3; the device answering: %4). Nothing was written. Only if this device replaces that one, confirm it (on the command line: --replacement).</source>
-        <translation>%1 stammt von einem anderen Gerät: %2 (das Gerät der Sicherung: %3; das antwortende Gerät: %4). Nichts wurde geschrieben. Nur wenn dieses Gerät jenes ersetzt, bestätigen Sie es (auf der Kommandozeile: --replacement).</translation>
-    </message>
-    <message>
-        <source>The git program could not be started (%1); the machine archive is a git repository: install git (Debian: apt install git).</source>
-        <translation>Das Programm git konnte nicht gestartet werden (%1); das Maschinenarchiv ist ein git-Repository: installieren Sie git (Debian: apt install git).</translation>
-    </message>
-    <message>
-        <source>%1 in %2 did not finish within %3 s (a lock held by another git?); nothing more was done.</source>
-        <translation>%1 in %2 wurde nicht innerhalb von %3 s fertig (eine Sperre eines anderen git?); nichts weiter wurde getan.</translation>
-    </message>
-    <message>
-        <source>%1 in %2 failed (exit %3): %4</source>
-        <translation>%1 in %2 fehlgeschlagen (Exit %3): %4</translation>
     </message>
     <message>
         <source>%1: &quot;volatile&quot; holds an empty item; name items as a comparison names them (&quot;V12&quot;) or a range (&quot;V100-V199&quot;).</source>
@@ -4292,21 +4267,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     </message>
 </context>
 <context>
-    <name>cambench::DeviceIdentity</name>
-    <message>
-        <source>not recorded</source>
-        <translation>nicht aufgezeichnet</translation>
-    </message>
-    <message>
-        <source>%1 is not an object of names and texts ({&quot;serial&quot;: &quot;...&quot;}).</source>
-        <translation>%1 ist kein Objekt aus Namen und Texten ({&quot;serial&quot;: &quot;...&quot;}).</translation>
-    </message>
-    <message>
-        <source>%1: &quot;%2&quot; must be a text, as CamBench wrote it.</source>
-        <translation>%1: &quot;%2&quot; muss ein Text sein, wie CamBench ihn geschrieben hat.</translation>
-    </message>
-</context>
-<context>
     <name>cambench::DeviceReads</name>
     <message>
         <source>Not taken: your edits and the values shown are unchanged.</source>
@@ -4708,49 +4668,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     </message>
 </context>
 <context>
-    <name>cambench::MachineArchive</name>
-    <message>
-        <source>%1 is no machine archive: there is no such folder (`machine backup M.json --archive %1` makes one).</source>
-        <translation>%1 ist kein Maschinenarchiv: diesen Ordner gibt es nicht (`machine backup M.json --archive %1` legt einen an).</translation>
-    </message>
-    <message>
-        <source>%1 is no machine archive: it is not the top folder of a git repository (`machine backup M.json --archive DIR` makes one).</source>
-        <translation>%1 ist kein Maschinenarchiv: es ist nicht der oberste Ordner eines git-Repositorys (`machine backup M.json --archive DIR` legt einen an).</translation>
-    </message>
-    <message>
-        <source>Cannot make the archive folder %1; check the path and its rights.</source>
-        <translation>Der Archivordner %1 kann nicht angelegt werden; prüfen Sie den Pfad und seine Rechte.</translation>
-    </message>
-    <message>
-        <source>%1 holds files but is no git repository: it is not made an archive (name an empty or new folder).</source>
-        <translation>%1 enthält Dateien, ist aber kein git-Repository: es wird nicht zum Archiv gemacht (nennen Sie einen leeren oder neuen Ordner).</translation>
-    </message>
-    <message>
-        <source>%1 names no version of %2.</source>
-        <translation>%1 nennt keine Version von %2.</translation>
-    </message>
-    <message>
-        <source>%1 holds no version yet (`machine backup M.json --archive %1 -m WHY` stores the first).</source>
-        <translation>%1 enthält noch keine Version (`machine backup M.json --archive %1 -m WHY` speichert die erste).</translation>
-    </message>
-    <message>
-        <source>%1 names no version of %2 (`machine history %2` lists them: a commit id, a prefix of one or a tag).</source>
-        <translation>%1 nennt keine Version von %2 (`machine history %2` listet sie auf: eine Commit-ID, ein Präfix davon oder ein Tag).</translation>
-    </message>
-    <message>
-        <source>No version of %1 is released (`machine release %1 VERSION` marks the one that should be on the machine).</source>
-        <translation>Keine Version von %1 ist freigegeben (`machine release %1 VERSION` markiert die, die auf der Maschine sein soll).</translation>
-    </message>
-    <message>
-        <source>Cannot make the folder for %1.</source>
-        <translation>Der Ordner für %1 kann nicht angelegt werden.</translation>
-    </message>
-    <message>
-        <source>Cannot read %1: %2; no version was stored.</source>
-        <translation>%1 kann nicht gelesen werden: %2; es wurde keine Version gespeichert.</translation>
-    </message>
-</context>
-<context>
     <name>cambench::MachineBackupRun</name>
     <message numerus="yes">
         <source>… and %n more (Details)</source>
@@ -5115,6 +5032,26 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>restored</source>
         <translation>wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>not in this version of the machine</source>
+        <translation>nicht in dieser Version der Maschine</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>It was not compared.</source>
+        <translation>Es wurde nicht verglichen.</translation>
+    </message>
+    <message>
+        <source>Nothing will be written to it.</source>
+        <translation>Es wird nichts darauf geschrieben.</translation>
+    </message>
+    <message>
+        <source>Nothing was written to it.</source>
+        <translation>Es wurde nichts darauf geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -7504,17 +7441,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 stops it too, from every window, dialog and menu of CamBench.</source>
         <translation>Stoppt jede Achse und jeden Antrieb des Geräts ohne Rückfrage, vor allem, was auf die Leitung wartet. %1 stoppt es ebenfalls, aus jedem Fenster, Dialog und Menü von CamBench.</translation>
-    </message>
-</context>
-<context>
-    <name>cambench::T</name>
-    <message>
-        <source>not in this version of the machine</source>
-        <translation>nicht in dieser Version der Maschine</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -10864,6 +10790,90 @@ Die verwendete Tabelle bleibt: %3</translation>
         <source>not [&quot;object&quot;, &quot;value&quot;, &quot;name&quot;]</source>
         <translation>nicht [&quot;object&quot;, &quot;value&quot;, &quot;name&quot;]</translation>
     </message>
+    <message>
+        <source>not recorded</source>
+        <translation>nicht aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>%1 is not an object of names and texts ({&quot;serial&quot;: &quot;...&quot;}).</source>
+        <translation>%1 ist kein Objekt aus Namen und Texten ({&quot;serial&quot;: &quot;...&quot;}).</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; must be a text, as CamBench wrote it.</source>
+        <translation>%1: &quot;%2&quot; muss ein Text sein, wie CamBench ihn geschrieben hat.</translation>
+    </message>
+    <message>
+        <source>which device this is cannot be told: no identity was recorded for it; found %1</source>
+        <translation>welches Gerät dies ist, lässt sich nicht sagen: für es wurde keine Identität aufgezeichnet; gefunden %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>another device answers: expected %1, found %2</source>
+        <translation>ein anderes Gerät antwortet: erwartet %1, gefunden %2</translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (a backup older than that record), so CamBench cannot tell whether the device answering (%2) is that device. Nothing was written. If it is, or if it replaces that device, confirm it (on the command line: --replacement).</source>
+        <translation>%1 zeichnet keine Identität des Geräts auf, von dem es stammt (eine Sicherung, älter als diese Aufzeichnung), daher kann CamBench nicht sagen, ob das antwortende Gerät (%2) dieses Gerät ist. Nichts wurde geschrieben. Wenn es das ist oder es dieses Gerät ersetzt, bestätigen Sie es (auf der Kommandozeile: --replacement).</translation>
+    </message>
+    <message>
+        <source>%1 was taken from another device: %2 (the backup&apos;s device: %3; the device answering: %4). Nothing was written. Only if this device replaces that one, confirm it (on the command line: --replacement).</source>
+        <translation>%1 stammt von einem anderen Gerät: %2 (das Gerät der Sicherung: %3; das antwortende Gerät: %4). Nichts wurde geschrieben. Nur wenn dieses Gerät jenes ersetzt, bestätigen Sie es (auf der Kommandozeile: --replacement).</translation>
+    </message>
+    <message>
+        <source>The git program could not be started (%1); the machine archive is a git repository: install git (Debian: apt install git).</source>
+        <translation>Das Programm git konnte nicht gestartet werden (%1); das Maschinenarchiv ist ein git-Repository: installieren Sie git (Debian: apt install git).</translation>
+    </message>
+    <message>
+        <source>%1 in %2 did not finish within %3 s (a lock held by another git?); nothing more was done.</source>
+        <translation>%1 in %2 wurde nicht innerhalb von %3 s fertig (eine Sperre eines anderen git?); nichts weiter wurde getan.</translation>
+    </message>
+    <message>
+        <source>%1 in %2 failed (exit %3): %4</source>
+        <translation>%1 in %2 fehlgeschlagen (Exit %3): %4</translation>
+    </message>
+    <message>
+        <source>%1 is no machine archive: there is no such folder (`machine backup M.json --archive %1` makes one).</source>
+        <translation>%1 ist kein Maschinenarchiv: diesen Ordner gibt es nicht (`machine backup M.json --archive %1` legt einen an).</translation>
+    </message>
+    <message>
+        <source>%1 is no machine archive: it is not the top folder of a git repository (`machine backup M.json --archive DIR` makes one).</source>
+        <translation>%1 ist kein Maschinenarchiv: es ist nicht der oberste Ordner eines git-Repositorys (`machine backup M.json --archive DIR` legt einen an).</translation>
+    </message>
+    <message>
+        <source>Cannot make the archive folder %1; check the path and its rights.</source>
+        <translation>Der Archivordner %1 kann nicht angelegt werden; prüfen Sie den Pfad und seine Rechte.</translation>
+    </message>
+    <message>
+        <source>%1 holds files but is no git repository: it is not made an archive (name an empty or new folder).</source>
+        <translation>%1 enthält Dateien, ist aber kein git-Repository: es wird nicht zum Archiv gemacht (nennen Sie einen leeren oder neuen Ordner).</translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2.</source>
+        <translation>%1 nennt keine Version von %2.</translation>
+    </message>
+    <message>
+        <source>%1 holds no version yet (`machine backup M.json --archive %1 -m WHY` stores the first).</source>
+        <translation>%1 enthält noch keine Version (`machine backup M.json --archive %1 -m WHY` speichert die erste).</translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2 (`machine history %2` lists them: a commit id, a prefix of one or a tag).</source>
+        <translation>%1 nennt keine Version von %2 (`machine history %2` listet sie auf: eine Commit-ID, ein Präfix davon oder ein Tag).</translation>
+    </message>
+    <message>
+        <source>No version of %1 is released (`machine release %1 VERSION` marks the one that should be on the machine).</source>
+        <translation>Keine Version von %1 ist freigegeben (`machine release %1 VERSION` markiert die, die auf der Maschine sein soll).</translation>
+    </message>
+    <message>
+        <source>Cannot make the folder for %1.</source>
+        <translation>Der Ordner für %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2; no version was stored.</source>
+        <translation>%1 kann nicht gelesen werden: %2; es wurde keine Version gespeichert.</translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -11931,9 +11941,10 @@ Die verwendete Tabelle bleibt: %3</translation>
         <source>not on the drive</source>
         <translation>nicht auf dem Antrieb</translation>
     </message>
-</context>
-<context>
-    <name>cambench::usecases::CamConBackups</name>
+    <message>
+        <source>machine file: %1</source>
+        <translation>Maschinendatei: %1</translation>
+    </message>
     <message>
         <source>%1 EEPROM blocks (%2 bytes), decoded: %3 programs</source>
         <translation>%1 EEPROM-Blöcke (%2 Bytes), entschlüsselt: %3 Programme</translation>
@@ -11959,16 +11970,13 @@ Die verwendete Tabelle bleibt: %3</translation>
         <translation>gelöscht oder teilweise geschrieben</translation>
     </message>
     <message>
-        <source> (a backup of the older format: its content is not decoded)</source>
-        <translation> (eine Sicherung im älteren Format: ihr Inhalt wird nicht entschlüsselt)</translation>
+        <source>%1 variables and %2 flags of the %3</source>
+        <translation>%1 Variablen und %2 Merker der %3</translation>
     </message>
     <message>
-        <source> (the decoded content is equal: what differs is not in it)</source>
-        <translation> (der entschlüsselte Inhalt ist gleich: der Unterschied liegt nicht darin)</translation>
+        <source>only the differing variables, flags and memory are written, each read back</source>
+        <translation>nur die abweichenden Variablen, Merker und Speicher werden geschrieben, jedes zurückgelesen</translation>
     </message>
-</context>
-<context>
-    <name>cambench::usecases::Compax3Backups</name>
     <message>
         <source>%1 objects of %2 (serial number %3)</source>
         <translation>%1 Objekte von %2 (Seriennummer %3)</translation>
@@ -11992,24 +12000,6 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>only the differing objects are written, each read back; control words and functions never from a file</source>
         <translation>nur die abweichenden Objekte werden geschrieben, jedes zurückgelesen; Steuerwörter und Funktionen nie aus einer Datei</translation>
-    </message>
-</context>
-<context>
-    <name>cambench::usecases::MachineChanges</name>
-    <message>
-        <source>machine file: %1</source>
-        <translation>Maschinendatei: %1</translation>
-    </message>
-</context>
-<context>
-    <name>cambench::usecases::Mc1Backups</name>
-    <message>
-        <source>%1 variables and %2 flags of the %3</source>
-        <translation>%1 Variablen und %2 Merker der %3</translation>
-    </message>
-    <message>
-        <source>only the differing variables, flags and memory are written, each read back</source>
-        <translation>nur die abweichenden Variablen, Merker und Speicher werden geschrieben, jedes zurückgelesen</translation>
     </message>
 </context>
 </TS>

@@ -98,6 +98,51 @@
     </message>
 </context>
 <context>
+    <name>ReplacementQuestion</name>
+    <message>
+        <source>not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">none</translation>
+    </message>
+    <message>
+        <source>%1: %2 (the same)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: backup %2, this device %3  ← differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device answering is not the one %1 was taken from.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (an older backup): CamBench cannot tell whether the device answering is that device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+
+Restore it here only if this device replaces the one the backup was taken from (or, for an older backup, is that device). Nothing has been written yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>It replaces that device: restore</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check which device answers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was written: which device answers could not be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Settings</name>
     <message>
         <source>Encoder</source>
@@ -1036,76 +1081,6 @@
     <message>
         <source>%1 ms</source>
         <translation type="unfinished">%1 ms</translation>
-    </message>
-    <message>
-        <source>not recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation type="unfinished">none</translation>
-    </message>
-    <message>
-        <source>%1: %2 (the same)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: backup %2, this device %3  ← differs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The device answering is not the one %1 was taken from.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 records no identity of the device it was taken from (an older backup): CamBench cannot tell whether the device answering is that device.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1
-
-Restore it here only if this device replaces the one the backup was taken from (or, for an older backup, is that device). Nothing has been written yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>It replaces that device: restore</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Check which device answers</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Nothing was written: which device answers could not be read: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>which device this is cannot be told: no identity was recorded for it; found %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>another device answers: expected %1, found %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 records no identity of the device it was taken from (a backup older than that record), so CamBench cannot tell whether the device answering (%2) is that device. Nothing was written. If it is, or if it replaces that device, confirm it (on the command line: --replacement).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 was taken from another device: %2 (the backup&apos;s device: %3; the device answering: %4). Nothing was written. Only if this device replaces that one, confirm it (on the command line: --replacement).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The git program could not be started (%1); the machine archive is a git repository: install git (Debian: apt install git).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 in %2 did not finish within %3 s (a lock held by another git?); nothing more was done.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 in %2 failed (exit %3): %4</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>%1: &quot;volatile&quot; holds an empty item; name items as a comparison names them (&quot;V12&quot;) or a range (&quot;V100-V199&quot;).</source>
@@ -4289,21 +4264,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     </message>
 </context>
 <context>
-    <name>cambench::DeviceIdentity</name>
-    <message>
-        <source>not recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is not an object of names and texts ({&quot;serial&quot;: &quot;...&quot;}).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: &quot;%2&quot; must be a text, as CamBench wrote it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>cambench::DeviceReads</name>
     <message>
         <source>Not taken: your edits and the values shown are unchanged.</source>
@@ -4704,49 +4664,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
 </context>
 <context>
-    <name>cambench::MachineArchive</name>
-    <message>
-        <source>%1 is no machine archive: there is no such folder (`machine backup M.json --archive %1` makes one).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is no machine archive: it is not the top folder of a git repository (`machine backup M.json --archive DIR` makes one).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot make the archive folder %1; check the path and its rights.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 holds files but is no git repository: it is not made an archive (name an empty or new folder).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 names no version of %2.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 holds no version yet (`machine backup M.json --archive %1 -m WHY` stores the first).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 names no version of %2 (`machine history %2` lists them: a commit id, a prefix of one or a tag).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No version of %1 is released (`machine release %1 VERSION` marks the one that should be on the machine).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot make the folder for %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot read %1: %2; no version was stored.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>cambench::MachineBackupRun</name>
     <message numerus="yes">
         <source>… and %n more (Details)</source>
@@ -5107,6 +5024,26 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>restored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in this version of the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+    <message>
+        <source>It was not compared.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing will be written to it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was written to it.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7494,17 +7431,6 @@ The table in use stays: %3</source>
     <message>
         <source>Stops every axis and drive of the device, without a question, ahead of everything waiting for the line. %1 stops it too, from every window, dialog and menu of CamBench.</source>
         <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>cambench::T</name>
-    <message>
-        <source>not in this version of the machine</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished">%1: %2</translation>
     </message>
 </context>
 <context>
@@ -10854,6 +10780,90 @@ The table in use stays: %3</source>
         <source>not [&quot;object&quot;, &quot;value&quot;, &quot;name&quot;]</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not an object of names and texts ({&quot;serial&quot;: &quot;...&quot;}).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; must be a text, as CamBench wrote it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>which device this is cannot be told: no identity was recorded for it; found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">none</translation>
+    </message>
+    <message>
+        <source>another device answers: expected %1, found %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 records no identity of the device it was taken from (a backup older than that record), so CamBench cannot tell whether the device answering (%2) is that device. Nothing was written. If it is, or if it replaces that device, confirm it (on the command line: --replacement).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was taken from another device: %2 (the backup&apos;s device: %3; the device answering: %4). Nothing was written. Only if this device replaces that one, confirm it (on the command line: --replacement).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The git program could not be started (%1); the machine archive is a git repository: install git (Debian: apt install git).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 in %2 did not finish within %3 s (a lock held by another git?); nothing more was done.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 in %2 failed (exit %3): %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is no machine archive: there is no such folder (`machine backup M.json --archive %1` makes one).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is no machine archive: it is not the top folder of a git repository (`machine backup M.json --archive DIR` makes one).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot make the archive folder %1; check the path and its rights.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds files but is no git repository: it is not made an archive (name an empty or new folder).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds no version yet (`machine backup M.json --archive %1 -m WHY` stores the first).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 names no version of %2 (`machine history %2` lists them: a commit id, a prefix of one or a tag).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No version of %1 is released (`machine release %1 VERSION` marks the one that should be on the machine).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot make the folder for %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2; no version was stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::plcsymbol</name>
@@ -11921,9 +11931,10 @@ The table in use stays: %3</source>
         <source>not on the drive</source>
         <translation type="unfinished"></translation>
     </message>
-</context>
-<context>
-    <name>cambench::usecases::CamConBackups</name>
+    <message>
+        <source>machine file: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message>
         <source>%1 EEPROM blocks (%2 bytes), decoded: %3 programs</source>
         <translation type="unfinished"></translation>
@@ -11949,16 +11960,13 @@ The table in use stays: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> (a backup of the older format: its content is not decoded)</source>
+        <source>%1 variables and %2 flags of the %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> (the decoded content is equal: what differs is not in it)</source>
+        <source>only the differing variables, flags and memory are written, each read back</source>
         <translation type="unfinished"></translation>
     </message>
-</context>
-<context>
-    <name>cambench::usecases::Compax3Backups</name>
     <message>
         <source>%1 objects of %2 (serial number %3)</source>
         <translation type="unfinished"></translation>
@@ -11981,24 +11989,6 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>only the differing objects are written, each read back; control words and functions never from a file</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>cambench::usecases::MachineChanges</name>
-    <message>
-        <source>machine file: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>cambench::usecases::Mc1Backups</name>
-    <message>
-        <source>%1 variables and %2 flags of the %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>only the differing variables, flags and memory are written, each read back</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -15,10 +15,6 @@ namespace cambench {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("ReplacementQuestion", text);
-}
-
 // One line per value: "serial: C3-1 (backup), C3-2 (this device)  ← differs".
 QString comparison(const DeviceIdentity& backup, const DeviceIdentity& found) {
     QSet<QString> keys;
@@ -28,10 +24,16 @@ QString comparison(const DeviceIdentity& backup, const DeviceIdentity& found) {
     sorted.sort();
     QStringList lines;
     for (const QString& key : sorted) {
-        const QString was = backup.values().value(key, tr("not recorded"));
-        const QString now = found.values().value(key, tr("none"));
-        lines << (was == now ? tr("%1: %2 (the same)").arg(key, now)
-                             : tr("%1: backup %2, this device %3  ← differs").arg(key, was, now));
+        const QString was = backup.values().value(
+            key, QCoreApplication::translate("ReplacementQuestion", "not recorded"));
+        const QString now =
+            found.values().value(key, QCoreApplication::translate("ReplacementQuestion", "none"));
+        lines << (was == now
+                      ? QCoreApplication::translate("ReplacementQuestion", "%1: %2 (the same)")
+                            .arg(key, now)
+                      : QCoreApplication::translate("ReplacementQuestion",
+                                                    "%1: backup %2, this device %3  ← differs")
+                            .arg(key, was, now));
     }
     return lines.join(QLatin1Char('\n'));
 }
@@ -43,20 +45,27 @@ bool acceptsReplacement(QWidget* parent, const QString& title, const QString& ba
     QMessageBox ask(
         QMessageBox::Warning, title,
         backup.known()
-            ? tr("The device answering is not the one %1 was taken from.").arg(backupName)
-            : tr("%1 records no identity of the device it was taken from (an older "
-                 "backup): CamBench cannot tell whether the device answering is "
-                 "that device.")
+            ? QCoreApplication::translate("ReplacementQuestion",
+                                          "The device answering is not the one %1 was taken from.")
+                  .arg(backupName)
+            : QCoreApplication::translate(
+                  "ReplacementQuestion",
+                  "%1 records no identity of the device it was taken from (an older "
+                  "backup): CamBench cannot tell whether the device answering is "
+                  "that device.")
                   .arg(backupName),
         QMessageBox::Cancel, parent);
     ask.setObjectName(QStringLiteral("replacementQuestion"));
     // Both identities in full sight, not behind "Show Details".
     ask.setInformativeText(
-        tr("%1\n\nRestore it here only if this device replaces the one the backup was taken "
-           "from (or, for an older backup, is that device). Nothing has been written yet.")
+        QCoreApplication::translate(
+            "ReplacementQuestion",
+            "%1\n\nRestore it here only if this device replaces the one the backup was taken "
+            "from (or, for an older backup, is that device). Nothing has been written yet.")
             .arg(comparison(backup, found)));
-    QPushButton* replace =
-        ask.addButton(tr("It replaces that device: restore"), QMessageBox::DestructiveRole);
+    QPushButton* replace = ask.addButton(
+        QCoreApplication::translate("ReplacementQuestion", "It replaces that device: restore"),
+        QMessageBox::DestructiveRole);
     replace->setObjectName(QStringLiteral("acceptReplacement"));
     ask.setDefaultButton(QMessageBox::Cancel);
     ask.exec();
@@ -68,13 +77,15 @@ void askRestoreTarget(DeviceSession* session, QObject* context, QWidget* parent,
                       std::function<void(const ReplacementConsent&)> go,
                       std::function<void(const QString& why)> declined) {
     session->run<comm::DeviceConnection, DeviceIdentity>(
-        context, tr("Check which device answers"),
+        context, QCoreApplication::translate("ReplacementQuestion", "Check which device answers"),
         [](comm::DeviceConnection& device, comm::JobContext&) { return device.readIdentity(); },
         [parent, title, backupName, backup, go = std::move(go),
          declined = std::move(declined)](Result<DeviceIdentity> found) {
             if (!found) {
-                const QString why = tr("Nothing was written: which device answers could not "
-                                       "be read: %1")
+                const QString why = QCoreApplication::translate(
+                                        "ReplacementQuestion",
+                                        "Nothing was written: which device answers could not "
+                                        "be read: %1")
                                         .arg(asSentence(found.error().message));
                 ReportDialog::present(parent, QMessageBox::Warning, title, why);
                 if (declined) declined(why);

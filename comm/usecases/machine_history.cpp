@@ -11,10 +11,6 @@ namespace cambench::usecases {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("cambench::usecases", text);
-}
-
 // Items a device's line names before it says "and N more".
 constexpr int kItemsPerLine = 8;
 
@@ -31,16 +27,19 @@ QString optionsText(const MachineDevice& device) {
 QStringList machineFileChanges(const MachineFile& older, const MachineFile& newer) {
     QStringList lines;
     if (older.machine != newer.machine)
-        lines << tr("machine name %1 → %2").arg(older.machine, newer.machine);
+        lines << QCoreApplication::translate("cambench::usecases", "machine name %1 → %2")
+                     .arg(older.machine, newer.machine);
     for (const MachineDevice& device : newer.devices) {
         const MachineDevice* before = older.device(device.name);
         if (!before) continue;  // an added device is its own line
         if (before->family != device.family)
-            lines << tr("%1: family %2 → %3").arg(device.name, before->family, device.family);
+            lines << QCoreApplication::translate("cambench::usecases", "%1: family %2 → %3")
+                         .arg(device.name, before->family, device.family);
         if (before->options != device.options)
-            lines << tr("%1: %2 → %3").arg(device.name, optionsText(*before), optionsText(device));
+            lines << QCoreApplication::translate("cambench::usecases", "%1: %2 → %3")
+                         .arg(device.name, optionsText(*before), optionsText(device));
         if (before->volatileItems != device.volatileItems)
-            lines << tr("%1: volatile items %2 → %3")
+            lines << QCoreApplication::translate("cambench::usecases", "%1: volatile items %2 → %3")
                          .arg(device.name, before->volatileItems.join(u' '),
                               device.volatileItems.join(u' '));
     }
@@ -66,7 +65,7 @@ DeviceChange compareDevice(const MachineFolderRead& older, const MachineFolderRe
         const bool olderLacks = !before || !before->saved();
         const ManifestEntry* lacking = olderLacks ? before : after;
         change.kind = DeviceChange::Kind::NotSaved;
-        change.why = tr("not saved in %1%2")
+        change.why = QCoreApplication::translate("cambench::usecases", "not saved in %1%2")
                          .arg(olderLacks ? older.dir : newer.dir,
                               lacking ? QStringLiteral(" (%1)").arg(lacking->result) : QString());
         return change;
@@ -83,7 +82,8 @@ DeviceChange compareDevice(const MachineFolderRead& older, const MachineFolderRe
                         &change.volatileLeftOut);
     if (before->identity.known() && after->identity.known() && before->identity != after->identity)
         change.identity =
-            tr("another device: %1 → %2").arg(before->identity.text(), after->identity.text());
+            QCoreApplication::translate("cambench::usecases", "another device: %1 → %2")
+                .arg(before->identity.text(), after->identity.text());
     change.kind = change.differences.isEmpty() && change.identity.isEmpty()
                       ? DeviceChange::Kind::Equal
                       : DeviceChange::Kind::Changed;
@@ -109,9 +109,11 @@ Result<MachineFolderRead> readMachineFolder(const QString& dir) {
     const QString machinePath = QDir(dir).filePath(kMachineBackupFile);
     const Result<QByteArray> machineBytes = readFileBytes(machinePath);
     if (!machineBytes)
-        return Error::invalidData(tr("%1 is no machine backup folder: %2 (made by `machine "
-                                     "backup`)")
-                                      .arg(dir, machineBytes.error().message));
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::usecases",
+                                        "%1 is no machine backup folder: %2 (made by `machine "
+                                        "backup`)")
+                .arg(dir, machineBytes.error().message));
     const Result<MachineFile> machine = parseMachineFile(*machineBytes, machinePath);
     if (!machine) return machine.error();
     const QString manifestPath = QDir(dir).filePath(kMachineManifestFile);
@@ -144,7 +146,8 @@ QStringList MachineChanges::lines() const {
     for (const DeviceChange& device : devices)
         if (const QString line = changeLine(device); !line.isEmpty()) lines << line;
     if (!machineFile.isEmpty())
-        lines << tr("machine file: %1").arg(machineFile.join(QLatin1String("; ")));
+        lines << QCoreApplication::translate("cambench::usecases", "machine file: %1")
+                     .arg(machineFile.join(QLatin1String("; ")));
     return lines;
 }
 
@@ -155,10 +158,14 @@ QString changeLine(const DeviceChange& change) {
         case DeviceChange::Kind::NotCompared:
             return {};
         case DeviceChange::Kind::Added:
-            return change.why.isEmpty() ? tr("%1: added").arg(change.name)
-                                        : tr("%1: added (%2)").arg(change.name, change.why);
+            return change.why.isEmpty()
+                       ? QCoreApplication::translate("cambench::usecases", "%1: added")
+                             .arg(change.name)
+                       : QCoreApplication::translate("cambench::usecases", "%1: added (%2)")
+                             .arg(change.name, change.why);
         case DeviceChange::Kind::Removed:
-            return tr("%1: taken out of the machine").arg(change.name);
+            return QCoreApplication::translate("cambench::usecases", "%1: taken out of the machine")
+                .arg(change.name);
         case DeviceChange::Kind::Changed:
             break;
     }
@@ -176,7 +183,8 @@ QString changeLine(const DeviceChange& change) {
             named << (head.isEmpty() ? key : key.mid(head.size() + 2));
         QString items = named.join(QLatin1String(", "));
         if (keys.size() > kItemsPerLine)
-            items += tr(" and %1 more").arg(keys.size() - kItemsPerLine);
+            items += QCoreApplication::translate("cambench::usecases", " and %1 more")
+                         .arg(keys.size() - kItemsPerLine);
         parts << (head.isEmpty() ? items : head + QStringLiteral(": ") + items);
     }
     return change.name + QStringLiteral(": ") + parts.join(QLatin1String("; "));
@@ -202,7 +210,7 @@ MachineChanges compareMachineFolders(const QString& older, const QString& newer)
     const Result<MachineFolderRead> after = readMachineFolder(newer);
     if (!before || !after) {
         DeviceChange unreadable;
-        unreadable.name = tr("machine");
+        unreadable.name = QCoreApplication::translate("cambench::usecases", "machine");
         unreadable.kind = DeviceChange::Kind::NotCompared;
         unreadable.why = (!before ? before : after).error().message;
         changes.devices << unreadable;
@@ -236,8 +244,10 @@ MachineChanges firstVersionOf(const QString& folder) {
         DeviceChange first;
         first.name = entry.name;
         first.kind = DeviceChange::Kind::Added;
-        first.why = entry.summary.isEmpty() ? tr("first version")
-                                            : tr("first version: %1").arg(entry.summary);
+        first.why = entry.summary.isEmpty()
+                        ? QCoreApplication::translate("cambench::usecases", "first version")
+                        : QCoreApplication::translate("cambench::usecases", "first version: %1")
+                              .arg(entry.summary);
         changes.devices << first;
     }
     return changes;
@@ -247,7 +257,8 @@ Result<VersionFolder> takeOutVersion(const MachineArchive& archive, const QStrin
     VersionFolder version{id, std::make_unique<QTemporaryDir>()};
     if (!version.folder->isValid())
         return Error::invalidData(
-            tr("No temporary folder to take version %1 out of %2 into: %3")
+            QCoreApplication::translate("cambench::usecases",
+                                        "No temporary folder to take version %1 out of %2 into: %3")
                 .arg(id.left(10), archive.dir(), version.folder->errorString()));
     if (const Status taken = archive.extract(id, version.path()); !taken) return taken.error();
     return version;
@@ -268,8 +279,10 @@ Result<VersionStored> storeMachineVersion(const MachineArchive& archive, const Q
     }
     if (!notSaved.isEmpty())
         return Error::communication(
-            tr("%1 not saved: no version was stored (a version without a device would read as "
-               "the device taken out of the machine).")
+            QCoreApplication::translate(
+                "cambench::usecases",
+                "%1 not saved: no version was stored (a version without a device would read as "
+                "the device taken out of the machine).")
                 .arg(notSaved.join(QLatin1String(", "))));
     const Result<QList<ArchiveVersion>> versions = archive.versions();
     if (!versions) return versions.error();
@@ -286,8 +299,10 @@ Result<VersionStored> storeMachineVersion(const MachineArchive& archive, const Q
                 if (!device.why.isEmpty() && device.kind != DeviceChange::Kind::Added)
                     why << QStringLiteral("%1: %2").arg(device.name, device.why);
             return Error::invalidData(
-                tr("The backup could not be compared with the latest version, no version was "
-                   "stored: %1")
+                QCoreApplication::translate(
+                    "cambench::usecases",
+                    "The backup could not be compared with the latest version, no version was "
+                    "stored: %1")
                     .arg(why.join(QLatin1String("; "))));
         }
         if (!stored.changes.changed()) return stored;

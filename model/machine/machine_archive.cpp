@@ -16,10 +16,6 @@ namespace cambench {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("cambench::model", text);
-}
-
 const QString kReleasePrefix = QStringLiteral("released-");
 const QString kChangedHeading = QStringLiteral("Changed:");
 // The committer of every version and of nothing else: the operator is the
@@ -60,8 +56,10 @@ Result<GitRun> runGit(const QString& dir, const QStringList& args, const QString
     git.start();
     if (!git.waitForStarted())
         return Error::unsupported(
-            tr("The git program could not be started (%1); the machine archive is a git "
-               "repository: install git (Debian: apt install git).")
+            QCoreApplication::translate(
+                "cambench::model",
+                "The git program could not be started (%1); the machine archive is a git "
+                "repository: install git (Debian: apt install git).")
                 .arg(git.errorString()));
     if (!input.isEmpty()) git.write(input);
     git.closeWriteChannel();
@@ -69,14 +67,16 @@ Result<GitRun> runGit(const QString& dir, const QStringList& args, const QString
         git.kill();
         git.waitForFinished();
         return Error::communication(
-            tr("%1 in %2 did not finish within %3 s (a lock held by another git?); nothing "
-               "more was done.")
+            QCoreApplication::translate(
+                "cambench::model",
+                "%1 in %2 did not finish within %3 s (a lock held by another git?); nothing "
+                "more was done.")
                 .arg(command, dir)
                 .arg(kGitTimeoutMs / 1000));
     }
     if (git.exitStatus() != QProcess::NormalExit || git.exitCode() != 0)
         return Error::invalidData(
-            tr("%1 in %2 failed (exit %3): %4")
+            QCoreApplication::translate("cambench::model", "%1 in %2 failed (exit %3): %4")
                 .arg(command, dir)
                 .arg(git.exitCode())
                 .arg(QString::fromUtf8(git.readAllStandardError()).trimmed()));
@@ -140,14 +140,18 @@ VersionMessage parseVersionMessage(const QString& text) {
 Result<MachineArchive> MachineArchive::open(const QString& dir) {
     if (!QFileInfo(dir).isDir())
         return Error::invalidData(
-            tr("%1 is no machine archive: there is no such folder (`machine backup M.json "
-               "--archive %1` makes one).")
+            QCoreApplication::translate(
+                "cambench::model",
+                "%1 is no machine archive: there is no such folder (`machine backup M.json "
+                "--archive %1` makes one).")
                 .arg(dir));
     if (!isRepositoryTop(dir))
-        return Error::invalidData(tr("%1 is no machine archive: it is not the top folder of a "
-                                     "git repository (`machine backup M.json --archive DIR` "
-                                     "makes one).")
-                                      .arg(dir));
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model",
+                                        "%1 is no machine archive: it is not the top folder of a "
+                                        "git repository (`machine backup M.json --archive DIR` "
+                                        "makes one).")
+                .arg(dir));
     return MachineArchive(QFileInfo(dir).absoluteFilePath());
 }
 
@@ -155,11 +159,16 @@ Result<MachineArchive> MachineArchive::openOrCreate(const QString& dir) {
     if (QFileInfo(dir).isDir() && isRepositoryTop(dir)) return open(dir);
     if (!QDir().mkpath(dir))
         return Error::invalidData(
-            tr("Cannot make the archive folder %1; check the path and its rights.").arg(dir));
+            QCoreApplication::translate(
+                "cambench::model",
+                "Cannot make the archive folder %1; check the path and its rights.")
+                .arg(dir));
     if (!QDir(dir).isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden))
-        return Error::invalidData(tr("%1 holds files but is no git repository: it is not made "
-                                     "an archive (name an empty or new folder).")
-                                      .arg(dir));
+        return Error::invalidData(
+            QCoreApplication::translate("cambench::model",
+                                        "%1 holds files but is no git repository: it is not made "
+                                        "an archive (name an empty or new folder).")
+                .arg(dir));
     if (const Result<GitRun> made = runGit(dir, {QStringLiteral("init"), QStringLiteral("--quiet"),
                                                  QStringLiteral("--initial-branch=main")});
         !made)
@@ -201,17 +210,23 @@ Result<QString> MachineArchive::resolve(const QString& name) const {
     const QString revision = name.isEmpty() ? QStringLiteral("HEAD") : name;
     // A name that starts with '-' would be an option to git.
     if (revision.startsWith(u'-'))
-        return Error::usage(tr("%1 names no version of %2.").arg(name, m_dir));
+        return Error::usage(
+            QCoreApplication::translate("cambench::model", "%1 names no version of %2.")
+                .arg(name, m_dir));
     const Result<GitRun> found =
         runGit(m_dir, {QStringLiteral("rev-parse"), QStringLiteral("--verify"),
                        QStringLiteral("--quiet"), revision + QStringLiteral("^{commit}")});
     if (!found)
         return Error::usage(name.isEmpty()
-                                ? tr("%1 holds no version yet (`machine backup M.json --archive "
-                                     "%1 -m WHY` stores the first).")
+                                ? QCoreApplication::translate(
+                                      "cambench::model",
+                                      "%1 holds no version yet (`machine backup M.json --archive "
+                                      "%1 -m WHY` stores the first).")
                                       .arg(m_dir)
-                                : tr("%1 names no version of %2 (`machine history %2` lists "
-                                     "them: a commit id, a prefix of one or a tag).")
+                                : QCoreApplication::translate(
+                                      "cambench::model",
+                                      "%1 names no version of %2 (`machine history %2` lists "
+                                      "them: a commit id, a prefix of one or a tag).")
                                       .arg(name, m_dir));
     return QString::fromUtf8(found->out).trimmed();
 }
@@ -220,8 +235,10 @@ Result<QString> MachineArchive::released() const {
     const Result<QList<ReleaseTag>> tags = releaseTags(m_dir);
     if (!tags) return tags.error();
     if (tags->isEmpty())
-        return Error::usage(tr("No version of %1 is released (`machine release %1 VERSION` "
-                               "marks the one that should be on the machine).")
+        return Error::usage(QCoreApplication::translate(
+                                "cambench::model",
+                                "No version of %1 is released (`machine release %1 VERSION` "
+                                "marks the one that should be on the machine).")
                                 .arg(m_dir));
     return tags->first().commit;
 }
@@ -259,7 +276,9 @@ Status MachineArchive::extract(const QString& id, const QString& folder) const {
         if (!blob) return blob.error();
         const QString target = QDir(folder).filePath(path);
         if (!QDir().mkpath(QFileInfo(target).absolutePath()))
-            return Error::invalidData(tr("Cannot make the folder for %1.").arg(target));
+            return Error::invalidData(
+                QCoreApplication::translate("cambench::model", "Cannot make the folder for %1.")
+                    .arg(target));
         // A CamCon image holds access codes: no file of a version is
         // readable by others than its owner once taken out of the archive.
         if (const Status written = writeFileAtomically(target, blob->out, FileAccess::OwnerOnly);
@@ -296,7 +315,9 @@ Result<QString> MachineArchive::store(const QString& folder, const QStringList& 
         QFile file(source);
         if (!file.open(QIODevice::ReadOnly))
             return Error::invalidData(
-                tr("Cannot read %1: %2; no version was stored.").arg(source, file.errorString()));
+                QCoreApplication::translate("cambench::model",
+                                            "Cannot read %1: %2; no version was stored.")
+                    .arg(source, file.errorString()));
         const QFileDevice::Permissions mode = file.permissions();
         if (const Status written = writeFileAtomically(
                 target, file.readAll(),

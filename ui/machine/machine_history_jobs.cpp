@@ -47,8 +47,10 @@ void MachineHistoryJobs::forEachDevice(
         if (!entry || !entry->saved()) {
             *answers << QPair<QString, Result<T>>(
                 unit->name(),
-                Error::invalidData(!folder ? folder.error().message
-                                           : tr("not in this version of the machine")));
+                Error::invalidData(
+                    !folder ? folder.error().message
+                            : QCoreApplication::translate("cambench::MachineHistoryJobs",
+                                                          "not in this version of the machine")));
             continue;
         }
         *answers << QPair<QString, Result<T>>(unit->name(), Error::cancelled());
@@ -63,7 +65,9 @@ void MachineHistoryJobs::forEachDevice(
     for (const auto& [unit, entry] : asked) {
         const QString name = unit->name();
         unit->session()->template run<comm::DeviceConnection, T>(
-            this, tr("%1: %2").arg(name, entry.file),
+            this,
+            QCoreApplication::translate("cambench::MachineHistoryJobs", "%1: %2")
+                .arg(name, entry.file),
             [work, entry = entry](comm::DeviceConnection&, comm::JobContext& job) {
                 return work(entry, job);
             },
@@ -95,7 +99,9 @@ void MachineHistoryJobs::compareWithDevices(const QString& dir,
                     change.why = verified.error().message;
                 } else if (!verified->checked.another.isEmpty()) {
                     change.kind = usecases::DeviceChange::Kind::NotSaved;
-                    change.why = anotherDeviceWhy(verified->checked, "It was not compared.");
+                    change.why = anotherDeviceWhy(
+                        verified->checked,
+                        QT_TRANSLATE_NOOP("cambench::MachineHistoryJobs", "It was not compared."));
                 } else {
                     QStringList items;
                     if (const MachineDevice* device = now.device(name))
@@ -128,7 +134,9 @@ void MachineHistoryJobs::plan(const QString& dir, std::function<void(QList<Devic
                 if (!planned)
                     plan.why = planned.error().message;
                 else if (!planned->checked.another.isEmpty())
-                    plan.why = anotherDeviceWhy(planned->checked, "Nothing will be written to it.");
+                    plan.why = anotherDeviceWhy(
+                        planned->checked, QT_TRANSLATE_NOOP("cambench::MachineHistoryJobs",
+                                                            "Nothing will be written to it."));
                 else
                     plan.plan = planned->plan;
                 plans << plan;
@@ -144,8 +152,10 @@ void MachineHistoryJobs::restore(const QString& dir, const QStringList& names,
         QList<DeviceRestored> none;
         for (const QString& name : names)
             none << DeviceRestored{name, false,
-                                   tr("NOT RESTORED: cannot make the folder %1 for the safety "
-                                      "copies; nothing was written.")
+                                   QCoreApplication::translate(
+                                       "cambench::MachineHistoryJobs",
+                                       "NOT RESTORED: cannot make the folder %1 for the safety "
+                                       "copies; nothing was written.")
                                        .arg(safetyDir)};
         done(none);
         return;
@@ -163,19 +173,28 @@ void MachineHistoryJobs::restore(const QString& dir, const QStringList& names,
             for (const auto& [name, restored] : answers) {
                 if (!restored) {
                     lines << DeviceRestored{name, false,
-                                            tr("NOT RESTORED: %1").arg(restored.error().message)};
+                                            QCoreApplication::translate(
+                                                "cambench::MachineHistoryJobs", "NOT RESTORED: %1")
+                                                .arg(restored.error().message)};
                 } else if (!restored->checked.another.isEmpty()) {
                     lines << DeviceRestored{
                         name, false,
-                        tr("NOT RESTORED: %1")
+                        QCoreApplication::translate("cambench::MachineHistoryJobs",
+                                                    "NOT RESTORED: %1")
                             .arg(
-                                anotherDeviceWhy(restored->checked, "Nothing was written to it."))};
+                                anotherDeviceWhy(restored->checked,
+                                                 QT_TRANSLATE_NOOP("cambench::MachineHistoryJobs",
+                                                                   "Nothing was written to it.")))};
                 } else if (!restored->result.ok()) {
                     lines << DeviceRestored{
                         name, false,
-                        tr("NOT RESTORED completely: %1").arg(restored->result.outcomes.summary())};
+                        QCoreApplication::translate("cambench::MachineHistoryJobs",
+                                                    "NOT RESTORED completely: %1")
+                            .arg(restored->result.outcomes.summary())};
                 } else {
-                    lines << DeviceRestored{name, true, tr("restored")};
+                    lines << DeviceRestored{
+                        name, true,
+                        QCoreApplication::translate("cambench::MachineHistoryJobs", "restored")};
                 }
             }
             done(lines);

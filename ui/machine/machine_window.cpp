@@ -2,8 +2,8 @@
 
 #include "machine.h"
 #include "machine_backup_run.h"
-#include "machine_progress.h"
 #include "machine_history_dialog.h"
+#include "machine_progress.h"
 #include "machine_report.h"
 #include "machine_stop.h"
 #include "machine_unit.h"

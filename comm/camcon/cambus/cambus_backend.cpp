@@ -167,12 +167,15 @@ QString CamBusBackend::noTurnMessage(int fullQueueAnswers, bool silentBus) const
 QString CamBusBackend::latenessNote() const {
     const qint64 late = m_station ? m_station->view().lateAnswers - m_lateAtStart : 0;
     if (late <= 0) return {};
+    // Counted before the call: lupdate (Qt 6.4) hangs on a template call
+    // among translate()'s arguments.
+    const int times = int(std::min<qint64>(late, 1000000));
     return QCoreApplication::translate(
                "cambench::comm",
                "; the PC was too late to answer on the bus %n time(s) during this request (the "
                "bus waits %1 ms for an answer: a USB adapter's latency timer should be 1 ms, "
                "and a computer this busy is too slow for the bus)",
-               nullptr, int(std::min<qint64>(late, 1000000)))
+               nullptr, times)
         .arg(m_config.answerMs);
 }
 

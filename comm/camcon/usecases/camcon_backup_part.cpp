@@ -17,10 +17,6 @@ namespace {
 using comm::CamConDevice;
 using comm::JobContext;
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("cambench::usecases", text);
-}
-
 struct Loaded {
     EepromImage image;
     CamConDevice* device = nullptr;
@@ -39,8 +35,14 @@ Result<Loaded> loadFor(JobContext& job, const QString& path) {
 BackupDifference blocksItem(const QStringList& blocks, const QString& why) {
     const QString key = QStringLiteral("EEPROM");
     const QString text =
-        tr("EEPROM: blocks %1 differ%2").arg(blocks.join(QStringLiteral(", ")), why);
-    return {{},  key, tr("blocks"), {}, blocks.join(QStringLiteral(", ")), ChangeKind::Changed,
+        QCoreApplication::translate("cambench::usecases", "EEPROM: blocks %1 differ%2")
+            .arg(blocks.join(QStringLiteral(", ")), why);
+    return {{},
+            key,
+            QCoreApplication::translate("cambench::usecases", "blocks"),
+            {},
+            blocks.join(QStringLiteral(", ")),
+            ChangeKind::Changed,
             text};
 }
 
@@ -52,7 +54,9 @@ Result<QList<BackupDifference>> contentDifferences(CamConDevice& device, const E
     if (image.content.isEmpty())
         return QList<BackupDifference>{
             blocksItem(blocks.differingBlocks,
-                       tr(" (a backup of the older format: its content is not decoded)"))};
+                       QCoreApplication::translate(
+                           "cambench::usecases",
+                           " (a backup of the older format: its content is not decoded)"))};
     const Result<Project> file = projectFromContent(image.content, image.device);
     if (!file) return file.error();
     const Result<DeviceInfo> info = device.readInfo();
@@ -62,8 +66,11 @@ Result<QList<BackupDifference>> contentDifferences(CamConDevice& device, const E
     QList<BackupDifference> differences = fileIsOld ? diffProjectContent(*file, now->project)
                                                     : diffProjectContent(now->project, *file);
     if (differences.isEmpty())
-        differences << blocksItem(blocks.differingBlocks,
-                                  tr(" (the decoded content is equal: what differs is not in it)"));
+        differences << blocksItem(
+            blocks.differingBlocks,
+            QCoreApplication::translate(
+                "cambench::usecases",
+                " (the decoded content is equal: what differs is not in it)"));
     return differences;
 }
 
@@ -78,10 +85,12 @@ public:
         BackupTaken taken;
         taken.path = path;
         taken.identity = camConIdentity(image->device);
-        taken.summary = tr("%1 EEPROM blocks (%2 bytes), decoded: %3 programs")
-                            .arg(image->blocks.size())
-                            .arg(image->totalBytes())
-                            .arg(image->content.value(QStringLiteral("programs")).toArray().size());
+        taken.summary =
+            QCoreApplication::translate("cambench::usecases",
+                                        "%1 EEPROM blocks (%2 bytes), decoded: %3 programs")
+                .arg(image->blocks.size())
+                .arg(image->totalBytes())
+                .arg(image->content.value(QStringLiteral("programs")).toArray().size());
         return taken;
     }
 
@@ -133,12 +142,16 @@ public:
             verifyImage(*loaded->device, loaded->image, progress.slice(0, 1, 2));
         if (!blocks) return blocks.error();
         RestorePlan plan;
-        plan.steps << tr("a safety copy of what the device holds now is saved first%1")
+        plan.steps << QCoreApplication::translate(
+                          "cambench::usecases",
+                          "a safety copy of what the device holds now is saved first%1")
                           .arg(request.safetyCopy.isEmpty()
                                    ? QString()
                                    : QStringLiteral(" (%1)").arg(request.safetyCopy))
-                   << tr("then the whole EEPROM is erased and written again: %1 blocks, "
-                         "and the device starts")
+                   << QCoreApplication::translate(
+                          "cambench::usecases",
+                          "then the whole EEPROM is erased and written again: %1 blocks, "
+                          "and the device starts")
                           .arg(loaded->image.blocks.size());
         if (blocks->equal) return plan;
         const Result<QList<BackupDifference>> changes = contentDifferences(
@@ -161,14 +174,18 @@ public:
         if (report.state == RestoredState::Unchanged) {
             Error error = report.error;
             if (!report.safetyBackupPath.isEmpty())
-                error.message +=
-                    tr(" (a safety copy was saved to %1)").arg(report.safetyBackupPath);
+                error.message += QCoreApplication::translate("cambench::usecases",
+                                                             " (a safety copy was saved to %1)")
+                                     .arg(report.safetyBackupPath);
             return error;
         }
-        const QString label = tr("EEPROM, %1 blocks").arg(report.blocks);
+        const QString label = QCoreApplication::translate("cambench::usecases", "EEPROM, %1 blocks")
+                                  .arg(report.blocks);
         const WriteState state =
             report.ok() ? WriteState::Written : WriteState::ChangedThoughFailed;
-        const QString actual = report.ok() ? QString() : tr("erased or partly written");
+        const QString actual = report.ok() ? QString()
+                                           : QCoreApplication::translate(
+                                                 "cambench::usecases", "erased or partly written");
         return RestoreResult{
             OutcomeTally({OutcomeLine{
                 label, state, outcomeText(label, state, actual, report.error, {}), report.error}}),
@@ -194,8 +211,12 @@ private:
             comparison.differences << blocksItem(
                 blocks.differingBlocks,
                 before.content.isEmpty() || after.content.isEmpty()
-                    ? tr(" (a backup of the older format: its content is not decoded)")
-                    : tr(" (the decoded content is equal: what differs is not in it)"));
+                    ? QCoreApplication::translate(
+                          "cambench::usecases",
+                          " (a backup of the older format: its content is not decoded)")
+                    : QCoreApplication::translate(
+                          "cambench::usecases",
+                          " (the decoded content is equal: what differs is not in it)"));
         }
         return comparison;
     }

@@ -13,10 +13,6 @@ namespace {
 using comm::Compax3Device;
 using comm::JobContext;
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("cambench::usecases", text);
-}
-
 struct Loaded {
     Compax3ParameterSet set;
     Compax3Device* device = nullptr;
@@ -51,14 +47,18 @@ public:
         BackupTaken taken;
         taken.path = path;
         taken.identity = backup->set.drive.deviceIdentity();
-        taken.summary = tr("%1 objects of %2 (serial number %3)")
-                            .arg(backup->set.values.size())
-                            .arg(backup->set.drive.info, backup->set.drive.serial);
+        taken.summary =
+            QCoreApplication::translate("cambench::usecases", "%1 objects of %2 (serial number %3)")
+                .arg(backup->set.values.size())
+                .arg(backup->set.drive.info, backup->set.drive.serial);
         if (!backup->set.absent.isEmpty())
-            taken.summary +=
-                tr("; %1 objects are not on this drive").arg(backup->set.absent.size());
+            taken.summary += QCoreApplication::translate("cambench::usecases",
+                                                         "; %1 objects are not on this drive")
+                                 .arg(backup->set.absent.size());
         for (const Compax3Refusal& refusal : backup->refused)
-            taken.incomplete << tr("%1: not saved: %2").arg(refusal.id.text(), refusal.reason);
+            taken.incomplete << QCoreApplication::translate("cambench::usecases",
+                                                            "%1: not saved: %2")
+                                    .arg(refusal.id.text(), refusal.reason);
         return taken;
     }
 
@@ -79,10 +79,14 @@ public:
         result.compared = comparison->compared;
         result.differences = compax3ComparisonItems(*comparison, loaded->set, dictionary);
         if (comparison->absentOnBoth > 0)
-            result.notes << tr("%1 objects are not on this drive, nor on the file's")
+            result.notes << QCoreApplication::translate(
+                                "cambench::usecases",
+                                "%1 objects are not on this drive, nor on the file's")
                                 .arg(comparison->absentOnBoth);
         for (const Compax3Refusal& ignored : comparison->ignored)
-            result.notes << tr("%1: not compared: %2").arg(ignored.id.text(), ignored.reason);
+            result.notes << QCoreApplication::translate("cambench::usecases",
+                                                        "%1: not compared: %2")
+                                .arg(ignored.id.text(), ignored.reason);
         return result;
     }
 
@@ -104,9 +108,11 @@ public:
             planCompax3Restore(*loaded->device, loaded->set, loaded->device->dictionary(),
                                optionsOf(request), UseCaseProgress::of(job));
         if (!changes) return changes.error();
-        return RestorePlan{*changes,
-                           {tr("only the differing objects are written, each read back; "
-                               "control words and functions never from a file")}};
+        return RestorePlan{
+            *changes,
+            {QCoreApplication::translate("cambench::usecases",
+                                         "only the differing objects are written, each read back; "
+                                         "control words and functions never from a file")}};
     }
 
     Result<RestoreResult> restore(JobContext& job, const QString& path,

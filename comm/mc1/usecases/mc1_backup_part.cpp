@@ -14,10 +14,6 @@ namespace {
 using comm::JobContext;
 using comm::Mc1Device;
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("cambench::usecases", text);
-}
-
 class Mc1Backups final : public FamilyBackup {
 public:
     Result<BackupTaken> backup(JobContext& job, const QString& path) const override {
@@ -32,10 +28,11 @@ public:
         BackupTaken taken;
         taken.path = path;
         taken.identity = backup->identity;
-        taken.summary = tr("%1 variables and %2 flags of the %3")
-                            .arg(backup->variables.size())
-                            .arg(backup->flags.size() * 8)
-                            .arg(comm::mc1VariantName(*variant));
+        taken.summary =
+            QCoreApplication::translate("cambench::usecases", "%1 variables and %2 flags of the %3")
+                .arg(backup->variables.size())
+                .arg(backup->flags.size() * 8)
+                .arg(comm::mc1VariantName(*variant));
         return taken;
     }
 
@@ -74,7 +71,9 @@ public:
             planMc1Restore(**device, *backup, request.replacement, UseCaseProgress::of(job));
         if (!changes) return changes.error();
         return RestorePlan{*changes,
-                           {tr("only the differing variables, flags and memory are written, "
+                           {QCoreApplication::translate(
+                               "cambench::usecases",
+                               "only the differing variables, flags and memory are written, "
                                "each read back")}};
     }
 
