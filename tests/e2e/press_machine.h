@@ -5,6 +5,8 @@
 // 115200 baud. `plcVolatile` is the MC200's "volatile" list (issue 37),
 // none when empty.
 
+#include "e2e_support.h"
+
 #include <QByteArray>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -26,6 +28,15 @@ inline QByteArray pressMachineFile(const QString& cams, const QString& plc, cons
     const QJsonArray devices{deviceAt("cams", "camcon", cams), mc200,
                              deviceAt("feed", "compax3", feed)};
     return QJsonDocument(QJsonObject{{"machine", "Press 7"}, {"devices", devices}}).toJson();
+}
+
+// Its three simulators started: the CamCon of EPROM 03.05.2001, the MC200
+// V2, the Compax3 S150V4, each with the arguments given besides.
+inline void startPress(SimSession& cams, SimSession& plc, SimSession& feed,
+                       const QStringList& camsArgs = {}, const QStringList& feedArgs = {}) {
+    START_SIM(cams, QStringList{"--eprom", "03.05.2001"} + camsArgs);
+    START_SIM(plc, {"--variant", "mc200v2"});
+    START_SIM(feed, QStringList{"--drive-type", "S150V4"} + feedArgs);
 }
 
 }  // namespace cambench::e2e

@@ -62,15 +62,6 @@ bool inFileOrder(const QString& out, const QStringList& names) {
 class TestE2eMachineFamilies : public QObject {
     Q_OBJECT
 
-    // The press: a CamCon (EPROM 03.05.2001), an MC200 V2 and a Compax3
-    // S150V4, each with `camsArgs` / `feedArgs` added.
-    static void startPress(SimSession& cams, SimSession& plc, SimSession& feed,
-                           const QStringList& camsArgs, const QStringList& feedArgs) {
-        START_SIM(cams, QStringList{"--eprom", "03.05.2001"} + camsArgs);
-        START_SIM(plc, {"--variant", "mc200v2"});
-        START_SIM(feed, QStringList{"--drive-type", "S150V4"} + feedArgs);
-    }
-
 private Q_SLOTS:
     void threeFamiliesBackupVerifyRestore() {
         SimSession cams;

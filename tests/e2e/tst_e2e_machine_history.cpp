@@ -52,9 +52,8 @@ private Q_SLOTS:
         SimSession cams;
         SimSession plc(QStringLiteral("mc1"));
         SimSession feed(QStringLiteral("compax3"));
-        START_SIM(cams, {"--eprom", "03.05.2001", "--outputs", "16"});
-        START_SIM(plc, {"--variant", "mc200v2"});
-        START_SIM(feed, {"--drive-type", "S150V4"});
+        startPress(cams, plc, feed, {"--outputs", "16"});
+        if (QTest::currentTestFailed()) return;
         const QString file = cams.path(QStringLiteral("press7.json"));
         QVERIFY(writeBytes(
             file, pressMachineFile(cams.ptyPath(), plc.ptyPath(), feed.ptyPath(), {"V100-V199"})));
