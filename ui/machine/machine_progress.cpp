@@ -32,6 +32,11 @@ MachineProgress::MachineProgress(const QString& title, const QList<MachineUnit*>
         row.line = new QLabel;
         row.line->setWordWrap(true);
         row.line->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        // Room for a result of three lines from the start: a result that
+        // comes later neither is cut off nor moves the buttons under the
+        // pointer (the whole line is also its tooltip).
+        row.line->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+        row.line->setMinimumHeight(row.line->fontMetrics().lineSpacing() * 3);
         const int at = grid->rowCount();
         grid->addWidget(new QLabel(unit->name()), at, 0);
         grid->addWidget(row.bar, at, 1);
@@ -87,6 +92,7 @@ void MachineProgress::finish(const MachineUnit* unit, bool ok, const QString& li
     row->bar->setRange(0, 1000);
     if (ok) row->bar->setValue(1000);
     row->line->setText(line);
+    row->line->setToolTip(line);
     row->line->setStyleSheet(ok ? QString() : QStringLiteral("color: #c62828"));
     if (!allFinished()) return;
     m_buttons->setStandardButtons(QDialogButtonBox::Close);

@@ -187,13 +187,15 @@ void MachineUnit::watchLine() {
         return;
     }
     if (m_watchJob != 0) {
-        // The last cycle's query was on the line a whole cycle unanswered.
-        if (m_watchOnLine)
+        // The query has been on the line two whole cycles unanswered.
+        constexpr int kSilentTicks = 2;
+        if (m_watchOnLine && ++m_unansweredTicks >= kSilentTicks)
             setCheck(Check::Silent, tr("no answer since %1").arg(answerTime(m_lastAnswer)));
         return;
     }
     using usecases::LineAnswer;
     m_watchOnLine = false;
+    m_unansweredTicks = 0;
     const quint64 ticket = ++m_watchTicket;
     m_watchJob = m_session->worker().run<Result<LineAnswer>>(
         this, comm::JobPriority::Poll, watchTitle(),

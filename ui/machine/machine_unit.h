@@ -97,6 +97,9 @@ private:
     quint64 m_watchJob = 0;      // the watch cycle's query not answered yet
     quint64 m_watchTicket = 0;   // which watch query an answer belongs to
     bool m_watchOnLine = false;  // ... and it is on the line (not queued)
+    // Cycles it has been on the line unanswered: a device is "gone" after
+    // two (an answer slower than one cycle on a busy computer is no silence).
+    int m_unansweredTicks = 0;
     int m_recheckTicks = 0;
     int m_watchCycles = 0;
 };
