@@ -97,6 +97,12 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
         BetweenRequests::run();
         m_gate = std::move(held);
     }
+    // A late answer the line may still carry is waited out first, so that
+    // a STOP during that wait is seen by the check below.
+    if (m_unsettled && !request.silenceExpected) {
+        if (cancelled()) return Error::cancelled();
+        if (const Status settled = settleLine(); !settled) return settled.error();
+    }
     // After a STOP nothing of a job asked before it moves.
     if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
         ++m_stats.refusedByStop;
@@ -112,9 +118,6 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
     m_lastAttempts = 0;
     m_lastHeardDevice = false;
     if (cancelled()) return Error::cancelled();
-    if (m_unsettled && !request.silenceExpected) {
-        if (const Status settled = settleLine(); !settled) return settled.error();
-    }
     dropStaleInput();
     m_backend.beginRequest(request);
 
@@ -127,11 +130,13 @@ Result<QByteArray> RequestEngine::send(const Request& request) {
     QString problem;
     for (int attempt = 1; attempt <= attempts; ++attempt) {
         if (cancelled()) return Error::cancelled();
-        // A STOP while the line settled or an earlier attempt waited: no
-        // motion goes out (the check above ran before those waits).
-        if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
-            ++m_stats.refusedByStop;
-            return *std::move(stopped);
+        // A STOP while an earlier attempt waited: no motion is sent again
+        // (the check above ran before that wait).
+        if (attempt > 1) {
+            if (std::optional<Error> stopped = refusedByStop(m_stops, m_jobStop, request)) {
+                ++m_stats.refusedByStop;
+                return *std::move(stopped);
+            }
         }
         m_lastAttempts = attempt;
         if (attempt > 1) {

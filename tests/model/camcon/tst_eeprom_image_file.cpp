@@ -96,7 +96,7 @@ private Q_SLOTS:
         const QJsonObject object = sampleObject();
         QCOMPARE(object.value(QStringLiteral("format")).toString(),
                  QStringLiteral("cambench-eeprom-image"));
-        QCOMPARE(object.value(QStringLiteral("version")).toInt(), 1);
+        QCOMPARE(object.value(QStringLiteral("version")).toInt(), kEepromImageFormatVersion);
         QCOMPARE(object.value(QStringLiteral("tool")).toString(), QStringLiteral("CamBench 0.1.0"));
         QCOMPARE(object.value(QStringLiteral("taken")).toString(),
                  QStringLiteral("2024-05-17T13:45:12.250Z"));
@@ -142,7 +142,7 @@ private Q_SLOTS:
 
     void newerVersionIsRejectedClearly() {
         QJsonObject object = sampleObject();
-        object.insert(QStringLiteral("version"), 2);
+        object.insert(QStringLiteral("version"), kEepromImageFormatVersion + 1);
         const QString error = loadError(resealed(object));
         QVERIFY2(error.contains(QStringLiteral("newer CamBench")), qPrintable(error));
     }

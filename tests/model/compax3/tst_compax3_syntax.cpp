@@ -243,7 +243,7 @@ private Q_SLOTS:
                       {{1, 4}, QStringLiteral("\"x\"")}};
         const QByteArray json = compax3ParametersToJson(set);
         // One object a line, in object order (1901.2 before 1901.10).
-        QVERIFY2(json.contains("[\"1901.2\", \"12.5\"],\n        [\"1901.10\", \"5\"]"),
+        QVERIFY2(json.contains("[\"1901.2\",\"12.5\"],\n        [\"1901.10\",\"5\"]"),
                  json.constData());
         QCOMPARE(compax3ParametersToJson(set), json);
         const Result<Compax3ParameterSet> back = compax3ParametersFromJson(json);
