@@ -143,6 +143,12 @@ Compax3MotionPage* enabledMotionPage(const std::unique_ptr<Shell>& shell) {
     if (!shell) return nullptr;
     Compax3MotionPage* motion = compax3Window(shell->window())->motionPage();
     shell->window()->showPage(motion);
+    // The page's first read done: a motion is never queued behind a job
+    // (issue 35), so one asked while the page reads is refused.
+    if (!QTest::qWaitFor([&] { return motion->axisText().startsWith(QLatin1String("Powerless")); },
+                         kDeviceTimeoutMs))
+        return nullptr;
+    QTest::qWait(200);
     auto yes = answerConfirmation(true);
     motion->runMotion(comm::Compax3Motion::Enable);
     const bool powered = QTest::qWaitFor(
