@@ -165,7 +165,10 @@ void TestE2eRecovery::standardUserListOfTwentyOnANoisyLineIsShownWhole() {
 
 void TestE2eRecovery::standardRestoreOnALossyLineFinishes_data() {
     QTest::addColumn<QStringList>("faults");
-    for (const char* seed : {"1", "2", "3"})
+    // Seeds whose first 20000 replies hold no four losses in a row: four
+    // unanswered attempts are a dead line to the cli, rightly (seed 2 has
+    // such a run at reply 1558, which this test's runs reach).
+    for (const char* seed : {"1", "3", "4"})
         QTest::addRow("5 %% lost replies, seed %s", seed)
             << QStringList{"--drop", "0.05", "--seed", seed};
     for (const char* seed : {"1", "2"})
