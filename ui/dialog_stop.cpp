@@ -1,5 +1,6 @@
 #include "dialog_stop.h"
 
+#include "clock_time.h"
 #include "motion_stop.h"
 #include "stop_button.h"
 #include "stop_control.h"
@@ -11,7 +12,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLayout>
-#include <QLocale>
 #include <QPushButton>
 #include <QWizard>
 
@@ -79,10 +79,9 @@ DialogStop::DialogStop(QDialog* dialog, StopControl* stop)
     connect(stop, &StopControl::stopStarted, this,
             [this] { showReport(tr("STOP sent…"), QString(), true); });
     connect(stop, &StopControl::stopFinished, this, [this](const comm::MotionStopReport& report) {
-        showReport(
-            tr("%1 %2").arg(QLocale().toString(m_stop->lastStopTime().time(), QLocale::LongFormat),
-                            MotionStop::reportSummary(report)),
-            MotionStop::reportText(report), report.allAcknowledged());
+        showReport(tr("%1 %2").arg(clockTime(m_stop->lastStopTime().time()),
+                                   MotionStop::reportSummary(report)),
+                   MotionStop::reportText(report), report.allAcknowledged());
     });
     update();
     if (auto* wizard = qobject_cast<QWizard*>(dialog)) {

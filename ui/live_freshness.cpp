@@ -1,6 +1,6 @@
 #include "live_freshness.h"
 
-#include <QLocale>
+#include "clock_time.h"
 
 namespace cambench {
 
@@ -42,9 +42,7 @@ void LiveFreshness::setState(State state) {
 }
 
 QString LiveFreshness::lastAnswerText() const {
-    return m_lastAnswer.isValid()
-               ? QLocale().toString(m_lastAnswer.time(), QStringLiteral("HH:mm:ss"))
-               : QStringLiteral("—");
+    return m_lastAnswer.isValid() ? clockTime(m_lastAnswer.time()) : QStringLiteral("—");
 }
 
 QString LiveFreshness::describe() const {

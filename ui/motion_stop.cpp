@@ -1,10 +1,10 @@
 #include "motion_stop.h"
 
+#include "clock_time.h"
 #include "device_session.h"
 #include "shell_log.h"
 
 #include <QEventLoop>
-#include <QLocale>
 #include <QTimer>
 
 #include <algorithm>
@@ -64,7 +64,7 @@ MotionStop::MotionStop(DeviceSession* session) : StopControl(session), m_session
         askAvailability();
     });
     connect(this, &StopControl::stopFinished, this, [this](const MotionStopReport& report) {
-        const QString at = QLocale().toString(lastStopTime().time(), QLocale::LongFormat);
+        const QString at = clockTime(lastStopTime().time());
         if (report.allAcknowledged())
             setMotion(Motion::Unknown, tr("STOP acknowledged at %1").arg(at));
         else
@@ -103,7 +103,7 @@ void MotionStop::noteLiveStatus(const QObject* page, Motion motion, const QStrin
 
 void MotionStop::noteLiveStatusOld(const QObject* page) {
     if (page != m_liveFrom) return;
-    const QString at = QLocale().toString(m_liveAt, QLocale::LongFormat);
+    const QString at = clockTime(m_liveAt);
     if (m_motion == Motion::Moving)
         setMotion(Motion::MayMove, tr("may move: moving when last read at %1").arg(at));
     else if (m_motion == Motion::Standing)
@@ -113,8 +113,7 @@ void MotionStop::noteLiveStatusOld(const QObject* page) {
 void MotionStop::noteMotionSent(const QString& what) {
     if (m_motion == Motion::Moving) return;  // the live status says more
     setMotion(Motion::MayMove,
-              tr("may move: %1 sent at %2")
-                  .arg(what, QLocale().toString(QTime::currentTime(), QLocale::LongFormat)));
+              tr("may move: %1 sent at %2").arg(what, clockTime(QTime::currentTime())));
 }
 
 bool MotionStop::armed() const {

@@ -6,6 +6,7 @@ target_sources(cambench_ui PRIVATE
   check_report_dialog.h
   check_report_dialog.cpp
   change_marker.h
+  clock_time.h
   live_freshness.h
   live_freshness.cpp
   live_device_page.h

@@ -1,11 +1,11 @@
 #include "stop_bar.h"
 
+#include "clock_time.h"
 #include "motion_stop.h"
 #include "stop_button.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLocale>
 #include <QPushButton>
 #include <QScrollArea>
 
@@ -74,10 +74,9 @@ void StopBar::update() {
 
 void StopBar::showReport() {
     const comm::MotionStopReport& report = m_stop->lastReport();
-    m_report->setText(
-        tr("%1 %2\n%3")
-            .arg(QLocale().toString(m_stop->lastStopTime().time(), QLocale::LongFormat),
-                 MotionStop::reportSummary(report), MotionStop::reportText(report)));
+    m_report->setText(tr("%1 %2\n%3")
+                          .arg(clockTime(m_stop->lastStopTime().time()),
+                               MotionStop::reportSummary(report), MotionStop::reportText(report)));
     m_report->setStyleSheet(report.allAcknowledged() ? QString()
                                                      : QStringLiteral("color: #c62828;"));
 }

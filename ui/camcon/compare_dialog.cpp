@@ -2,6 +2,7 @@
 
 #include "device_change_dialog.h"
 #include "ui/camcon/camcon_jobs.h"
+#include "ui/clock_time.h"
 
 #include "incoming_values.h"
 #include "ui/camcon/camcon_section_page.h"
@@ -14,7 +15,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QProgressBar>
@@ -28,7 +28,7 @@ namespace {
 constexpr int kItemRole = Qt::UserRole;
 
 QString timeText(const QDateTime& utc) {
-    return QLocale().toString(utc.toLocalTime().time(), QStringLiteral("HH:mm:ss"));
+    return clockTime(utc.toLocalTime().time());
 }
 }  // namespace
 
