@@ -23,6 +23,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QPointer>
+#include <QScreen>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -201,7 +202,15 @@ void MachineWindow::fitColumns() {
         width += header->sectionSize(column);
     }
     width += m_list->verticalScrollBar()->sizeHint().width();
-    m_list->setMinimumWidth(width);
+    // Every column in sight where the screen has room for them beside the
+    // device's window; on a narrower screen (a laptop's 1366 pixels, German
+    // words) the list scrolls sideways instead of pushing the window's
+    // right edge off the screen.
+    constexpr int kLeastListChars = 24;
+    const int least = m_list->fontMetrics().averageCharWidth() * kLeastListChars;
+    const int room = screen()->availableGeometry().width() - m_stack->minimumSizeHint().width() -
+                     static_cast<QSplitter*>(centralWidget())->handleWidth();
+    m_list->setMinimumWidth(std::clamp(room, least, std::max(least, width)));
     // Rows grow with a state that wraps to another line.
     m_list->doItemsLayout();
 }
