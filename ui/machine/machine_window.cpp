@@ -293,16 +293,17 @@ MachineProgress* MachineWindow::writeReportTo(const QString& path, const QString
                                  tr("Machine report"), message);
     };
     MachineReport::read(*m_machine, progress, [this, shown, archive, write] {
-        if (archive.isEmpty() || !shown) {
+        if (archive.isEmpty()) {
             write(ReleasedChanges{});
             return;
         }
         // Each device's line: what its read said, then its comparison.
         QHash<QString, QString> readLines;
-        for (MachineUnit* unit : m_machine->units()) {
-            readLines.insert(unit->name(), shown->resultLine(unit->name()));
-            shown->restart(unit);
-        }
+        if (shown)
+            for (MachineUnit* unit : m_machine->units()) {
+                readLines.insert(unit->name(), shown->resultLine(unit->name()));
+                shown->restart(unit);
+            }
         MachineReportChanges::compare(
             m_machine, archive, this, [this, shown, readLines, write](ReleasedChanges released) {
                 if (shown)

@@ -43,6 +43,7 @@
 #include <QTextDocument>
 #include <QTreeWidget>
 
+#include <memory>
 #include <optional>
 
 using namespace cambench;
@@ -158,6 +159,36 @@ QStringList rowsOf(const QTableWidget* table) {
     return rows;
 }
 
+// A machine of simulated devices, connected, whose CamCon holds `cams`
+// (program, track) and whose archive holds a first version of it
+// ("commissioning"), as the tests below start.
+struct Archived {
+    Shell shell;
+    Machine* machine = nullptr;
+    MachineUnit* cams = nullptr;
+    QTemporaryDir work;
+    std::optional<MachineArchive> archive;
+    QString first;  // the first version's id
+};
+
+std::unique_ptr<Archived> archived(const MachineFile& file, const QList<QPair<int, Track>>& cams) {
+    auto made = std::make_unique<Archived>();
+    made->machine = made->shell.openMachine(file, {});
+    if (!waitConnected(*made->machine)) return {};
+    made->cams = made->machine->unit(QStringLiteral("cams"));
+    for (const auto& [program, track] : cams)
+        if (!writeCams(made->cams, program, track)) return {};
+    Result<MachineArchive> archive =
+        MachineArchive::openOrCreate(made->work.filePath(QStringLiteral("archive")));
+    if (!archive) return {};
+    made->archive = std::move(archive).value();
+    const Result<usecases::VersionStored> first =
+        storeVersion(made->machine, *made->archive, QStringLiteral("commissioning"));
+    if (!first || !first->stored) return {};
+    made->first = first->id;
+    return made;
+}
+
 }  // namespace
 
 class TestMachineHistory : public QObject {
@@ -238,19 +269,12 @@ private Q_SLOTS:
     // their changed cams listed as Compare programs words them; the MC200
     // has its table only.
     void camProgramsDrawn() {
-        Shell shell;
-        Machine* machine = shell.openMachine(press(), {});
-        QVERIFY(waitConnected(*machine));
-        MachineUnit* cams = machine->unit(QStringLiteral("cams"));
-        QVERIFY(writeCams(cams, 0, Track{1, {{10, 20}}}));
-        QVERIFY(writeCams(cams, 3, Track{5, {{100, 200}}}));
-        QTemporaryDir work;
-        const Result<MachineArchive> archive =
-            MachineArchive::openOrCreate(work.filePath(QStringLiteral("archive")));
-        QVERIFY(archive.ok());
-        const Result<usecases::VersionStored> first =
-            storeVersion(machine, *archive, QStringLiteral("commissioning"));
-        QVERIFY2(first.ok() && first->stored, qPrintable(first.error().message));
+        const std::unique_ptr<Archived> open =
+            archived(press(), {{0, Track{1, {{10, 20}}}}, {3, Track{5, {{100, 200}}}}});
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        const MachineArchive* archive = &*open->archive;
         // Program 0: output 1's cam made longer, a cam added on output 4;
         // program 3: output 5's cam taken away.
         QVERIFY(writeCams(cams, 0, Track{1, {{10, 40}}}));
@@ -287,7 +311,7 @@ private Q_SLOTS:
         dialog.drawButton()->click();
         QDialog* drawing = dialog.drawingOf(QStringLiteral("cams"));
         QVERIFY(QTest::qWaitForWindowExposed(drawing));
-        QVERIFY2(drawing->windowTitle().contains(first->id.left(10)) &&
+        QVERIFY2(drawing->windowTitle().contains(open->first.left(10)) &&
                      drawing->windowTitle().contains(second->id.left(10)),
                  qPrintable(drawing->windowTitle()));
         // The MC200 can move: the drawing has its STOP, as every dialog.
@@ -304,7 +328,7 @@ private Q_SLOTS:
         // Only the outputs that differ are drawn (the others fold away).
         QCOMPARE(view->view()->shownOutputs(), (QList<int>{1, 4}));
         QVERIFY2(view->summary().contains(
-                     QStringLiteral("A: version %1, program 0").arg(first->id.left(10))) &&
+                     QStringLiteral("A: version %1, program 0").arg(open->first.left(10))) &&
                      view->summary().contains(
                          QStringLiteral("B: version %1, program 0").arg(second->id.left(10))),
                  qPrintable(view->summary()));
@@ -337,18 +361,11 @@ private Q_SLOTS:
                                       {{QStringLiteral("port"), QStringLiteral("sim")}},
                                       {},
                                       {}};
-        Shell shell;
-        Machine* machine = shell.openMachine(file, {});
-        QVERIFY(waitConnected(*machine));
-        MachineUnit* cams = machine->unit(QStringLiteral("cams"));
-        QVERIFY(writeCams(cams, 0, Track{1, {{10, 20}}}));
-        QTemporaryDir work;
-        const Result<MachineArchive> archive =
-            MachineArchive::openOrCreate(work.filePath(QStringLiteral("archive")));
-        QVERIFY(archive.ok());
-        const Result<usecases::VersionStored> first =
-            storeVersion(machine, *archive, QStringLiteral("commissioning"));
-        QVERIFY2(first.ok() && first->stored, qPrintable(first.error().message));
+        const std::unique_ptr<Archived> open = archived(file, {{0, Track{1, {{10, 20}}}}});
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        const MachineArchive* archive = &*open->archive;
 
         const auto sectionText = [machine](const QString& archiveDir) {
             std::optional<ReleasedChanges> said;
@@ -366,7 +383,7 @@ private Q_SLOTS:
         QVERIFY2(unreleased.contains(QLatin1String("Nothing was compared: No version of")) &&
                      !unreleased.contains(QLatin1String("equal to the released version")),
                  qPrintable(unreleased));
-        QVERIFY(archive->release(first->id, QStringLiteral("tester"), {}).ok());
+        QVERIFY(archive->release(open->first, QStringLiteral("tester"), {}).ok());
 
         QVERIFY(writeCams(cams, 0, Track{1, {{10, 40}}}));
         QVERIFY(writeVariable(machine->unit(QStringLiteral("press-plc")), 12, 4711));
@@ -379,10 +396,9 @@ private Q_SLOTS:
         const QString text = sectionText(archive->dir());
         QVERIFY2(text.contains(QLatin1String("Changes since the released version")),
                  qPrintable(text));
-        QVERIFY2(
-            text.contains(
-                QStringLiteral("Released version: released-1: version %1").arg(first->id.left(10))),
-            qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Released version: released-1: version %1")
+                                   .arg(open->first.left(10))),
+                 qPrintable(text));
         static const QRegularExpression camsDiffer(QStringLiteral(
             "cams\\s+DIFFERS: 1 difference\\(s\\)\\s+program 0, output 1: cam 10–20 → 10–40"));
         QVERIFY2(camsDiffer.match(text).hasMatch(), qPrintable(text));
@@ -396,7 +412,7 @@ private Q_SLOTS:
 
         // Through the window: the PDF is written after the comparison, and
         // each device's line says its read and its comparison.
-        const QString pdf = work.filePath(QStringLiteral("press.pdf"));
+        const QString pdf = open->work.filePath(QStringLiteral("press.pdf"));
         MachineProgress* progress = machine->window()->writeReportTo(pdf, archive->dir());
         QVERIFY(QTest::qWaitFor([&] { return QFile::exists(pdf); }, 4 * kDeviceTimeoutMs));
         QVERIFY2(progress->resultLine(QStringLiteral("cams"))
@@ -423,18 +439,11 @@ private Q_SLOTS:
     // is written (the identity checked first), and after the restore every
     // device equals that version again.
     void restoreThisVersion() {
-        Shell shell;
-        Machine* machine = shell.openMachine(press(), {});
-        QVERIFY(waitConnected(*machine));
-        MachineUnit* cams = machine->unit(QStringLiteral("cams"));
-        QVERIFY(writeCams(cams, 0, Track{1, {{10, 20}}}));
-        QTemporaryDir work;
-        const Result<MachineArchive> archive =
-            MachineArchive::openOrCreate(work.filePath(QStringLiteral("archive")));
-        QVERIFY(archive.ok());
-        const Result<usecases::VersionStored> first =
-            storeVersion(machine, *archive, QStringLiteral("commissioning"));
-        QVERIFY2(first.ok() && first->stored, qPrintable(first.error().message));
+        const std::unique_ptr<Archived> open = archived(press(), {{0, Track{1, {{10, 20}}}}});
+        QVERIFY(open);
+        Machine* machine = open->machine;
+        MachineUnit* cams = open->cams;
+        const MachineArchive* archive = &*open->archive;
         QVERIFY(writeCams(cams, 0, Track{1, {{10, 40}}}));
         QVERIFY(writeVariable(machine->unit(QStringLiteral("press-plc")), 12, 4711));
 
