@@ -367,7 +367,7 @@ private Q_SLOTS:
         MachineUnit* cams = open->cams;
         const MachineArchive* archive = &*open->archive;
 
-        const auto sectionText = [machine](const QString& archiveDir) {
+        const auto sectionText = [](Machine* machine, const QString& archiveDir) {
             std::optional<ReleasedChanges> said;
             QObject context;
             MachineReportChanges::compare(machine, archiveDir, &context,
@@ -379,7 +379,7 @@ private Q_SLOTS:
             return document.toPlainText();
         };
         // Nothing released yet: said, nothing compared.
-        const QString unreleased = sectionText(archive->dir());
+        const QString unreleased = sectionText(machine, archive->dir());
         QVERIFY2(unreleased.contains(QLatin1String("Nothing was compared: No version of")) &&
                      !unreleased.contains(QLatin1String("equal to the released version")),
                  qPrintable(unreleased));
@@ -393,7 +393,7 @@ private Q_SLOTS:
         QVERIFY(feed->session()->disconnectFromDevice());
         QVERIFY(QTest::qWaitFor([feed] { return !feed->session()->isOnline(); }, kDeviceTimeoutMs));
 
-        const QString text = sectionText(archive->dir());
+        const QString text = sectionText(machine, archive->dir());
         QVERIFY2(text.contains(QLatin1String("Changes since the released version")),
                  qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("Released version: released-1: version %1")
@@ -426,6 +426,15 @@ private Q_SLOTS:
                 progress->resultLine(QStringLiteral("feed"))
                     .contains(QLatin1String("NOT COMPARED")),
             qPrintable(progress->resultLine(QStringLiteral("feed"))));
+
+        // A machine without the feed: the released version's feed is said,
+        // not left out.
+        Machine* smaller = open->shell.openMachine(press(), {});
+        QVERIFY(waitConnected(*smaller));
+        const QString withoutFeed = sectionText(smaller, archive->dir());
+        static const QRegularExpression feedGone(QStringLiteral(
+            "feed\\s+in the released version, but no longer a device of this machine"));
+        QVERIFY2(feedGone.match(withoutFeed).hasMatch(), qPrintable(withoutFeed));
 
         // No archive chosen: the report says the section is not part of it.
         QTextDocument without;
