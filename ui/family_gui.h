@@ -59,6 +59,22 @@ public:
         Q_UNUSED(resourcePrefix);
         return {};
     }
+    // Two backups of one of the family's devices - files its FamilyBackup
+    // saved, `older` first, each named for the person by its label
+    // ("version 1a2b3c4d5e") - drawn in the family's own terms where a
+    // table of differences says too little (the CamCon: each program whose
+    // cams differ, one over the other). The files are read at once; the
+    // widget is the caller's. nullptr: the family draws none, or nothing of
+    // what it draws differs (the table says all).
+    struct BackupSide {
+        QString path;
+        QString label;
+    };
+    virtual QWidget* backupDrawing(const BackupSide& older, const BackupSide& newer) const {
+        Q_UNUSED(older);
+        Q_UNUSED(newer);
+        return nullptr;
+    }
     // A family that keeps no identity of its own stores what identify() said.
     void setIdentity(const QString& identity);
 

@@ -87,6 +87,8 @@ target_sources(cambench_ui PRIVATE
   machine/machine_progress.cpp
   machine/machine_report.h
   machine/machine_report.cpp
+  machine/machine_report_changes.h
+  machine/machine_report_changes.cpp
   machine/machine_history_dialog.h
   machine/machine_history_dialog.cpp
   machine/machine_history_jobs.h

@@ -1,5 +1,6 @@
 #include "camcon_gui.h"
 
+#include "backup_programs_view.h"
 #include "camcon_window.h"
 #include "commissioning_report.h"
 #include "device_reads.h"
@@ -61,6 +62,10 @@ QString CamConGui::reportSection(QTextDocument& document, const QString& resourc
     CommissioningReport::Options options;
     options.resourcePrefix = resourcePrefix;
     return CommissioningReport::html(document, *m_workspace, options);
+}
+
+QWidget* CamConGui::backupDrawing(const BackupSide& older, const BackupSide& newer) const {
+    return BackupProgramsView::create(older.path, older.label, newer.path, newer.label);
 }
 
 Workspace* camConWorkspace(const Shell& shell) {

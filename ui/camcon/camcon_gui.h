@@ -24,6 +24,8 @@ public:
     // Everything the device holds, every program too (Read everything).
     void readForReport(QWidget* parent, std::function<void(const Status&)> done) override;
     QString reportSection(QTextDocument& document, const QString& resourcePrefix) const override;
+    // The programs whose cams differ, drawn one over the other (BackupProgramsView).
+    QWidget* backupDrawing(const BackupSide& older, const BackupSide& newer) const override;
 
 private:
     Workspace* m_workspace;

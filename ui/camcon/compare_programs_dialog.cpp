@@ -24,7 +24,6 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
-#include <QPainter>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
@@ -37,23 +36,6 @@ namespace cambench {
 namespace {
 
 constexpr int kMaxProgram = 32767;
-
-// A legend entry: the swatch as the diagram draws it, and its meaning.
-QWidget* legendEntry(ProgramDiffView::Swatch swatch, const QString& text, const QPalette& palette) {
-    QPixmap pixmap(36, 16);
-    pixmap.fill(palette.color(QPalette::Base));
-    QPainter painter(&pixmap);
-    ProgramDiffView::paintSwatch(painter, QRectF(1, 1, 34, 14), swatch, palette);
-    painter.end();
-    auto* entry = new QWidget;
-    auto* layout = new QHBoxLayout(entry);
-    layout->setContentsMargins(0, 0, 8, 0);
-    auto* icon = new QLabel;
-    icon->setPixmap(pixmap);
-    layout->addWidget(icon);
-    layout->addWidget(new QLabel(text));
-    return entry;
-}
 
 }  // namespace
 
@@ -93,15 +75,6 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
     splitter->setStretchFactor(1, 1);
     splitter->setSizes({720, 340});
 
-    auto* legend = new QHBoxLayout;
-    using Swatch = ProgramDiffView::Swatch;
-    legend->addWidget(legendEntry(Swatch::Same, tr("the same in both"), palette()));
-    legend->addWidget(legendEntry(Swatch::Changed,
-                                  tr("changed: A dashed, B solid, moved edges marked"), palette()));
-    legend->addWidget(legendEntry(Swatch::OnlyInA, tr("only in A"), palette()));
-    legend->addWidget(legendEntry(Swatch::OnlyInB, tr("only in B"), palette()));
-    legend->addStretch();
-
     auto* actions = new QHBoxLayout;
     actions->addWidget(m_compare);
     actions->addWidget(m_fold);
@@ -119,7 +92,7 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
     layout->addLayout(actions);
     layout->addWidget(m_summary);
     layout->addWidget(splitter, 1);
-    layout->addLayout(legend);
+    layout->addLayout(ProgramDiffView::legend(palette()));
     layout->addWidget(buttons);
     resize(1100, 640);
 

@@ -2,8 +2,12 @@
 
 #include "ui/camcon/cameditor/diagram_layout.h"
 
+#include <QCoreApplication>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPixmap>
 #include <QSet>
 
 namespace cambench {
@@ -29,7 +33,50 @@ DiagramLayout layoutFor(const Axis& axis, const QRect& plot) {
     return layout;
 }
 
+// A legend entry: the swatch as the diagram draws it, and its meaning.
+QWidget* legendEntry(ProgramDiffView::Swatch swatch, const QString& text, const QPalette& palette) {
+    QPixmap pixmap(36, 16);
+    pixmap.fill(palette.color(QPalette::Base));
+    QPainter painter(&pixmap);
+    ProgramDiffView::paintSwatch(painter, QRectF(1, 1, 34, 14), swatch, palette);
+    painter.end();
+    auto* entry = new QWidget;
+    auto* layout = new QHBoxLayout(entry);
+    layout->setContentsMargins(0, 0, 8, 0);
+    auto* icon = new QLabel;
+    icon->setPixmap(pixmap);
+    layout->addWidget(icon);
+    layout->addWidget(new QLabel(text));
+    return entry;
+}
+
+// The legend's words kept where they were first translated.
+QString legendText(const char* text) {
+    return QCoreApplication::translate("cambench::CompareProgramsDialog", text);
+}
+
 }  // namespace
+
+QLayout* ProgramDiffView::legend(const QPalette& palette) {
+    auto* legend = new QHBoxLayout;
+    legend->addWidget(legendEntry(
+        Swatch::Same,
+        legendText(QT_TRANSLATE_NOOP("cambench::CompareProgramsDialog", "the same in both")),
+        palette));
+    legend->addWidget(
+        legendEntry(Swatch::Changed,
+                    legendText(QT_TRANSLATE_NOOP("cambench::CompareProgramsDialog",
+                                                 "changed: A dashed, B solid, moved edges marked")),
+                    palette));
+    legend->addWidget(legendEntry(
+        Swatch::OnlyInA,
+        legendText(QT_TRANSLATE_NOOP("cambench::CompareProgramsDialog", "only in A")), palette));
+    legend->addWidget(legendEntry(
+        Swatch::OnlyInB,
+        legendText(QT_TRANSLATE_NOOP("cambench::CompareProgramsDialog", "only in B")), palette));
+    legend->addStretch();
+    return legend;
+}
 
 ProgramDiffView::ProgramDiffView(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("programDiffView"));

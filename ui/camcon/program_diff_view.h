@@ -6,6 +6,7 @@
 #include <QMap>
 #include <QWidget>
 
+class QLayout;
 class QPainter;
 
 namespace cambench {
@@ -33,6 +34,8 @@ public:
     enum class Swatch { Same, Changed, OnlyInA, OnlyInB };
     static void paintSwatch(QPainter& painter, const QRectF& rect, Swatch swatch,
                             const QPalette& palette);
+    // The diagram's legend in a row: each swatch and what it means.
+    static QLayout* legend(const QPalette& palette);
 
     QSize sizeHint() const override;
 

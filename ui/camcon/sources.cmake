@@ -22,6 +22,8 @@ target_sources(cambench_ui PRIVATE
   camcon/program_diff_view.cpp
   camcon/compare_programs_dialog.h
   camcon/compare_programs_dialog.cpp
+  camcon/backup_programs_view.h
+  camcon/backup_programs_view.cpp
   camcon/write_plan_builder.h
   camcon/write_plan_builder.cpp
   camcon/device_writer.h

@@ -2,11 +2,14 @@
 
 #include "machine.h"
 #include "machine_history_jobs.h"
+#include "machine_unit.h"
 
 #include "model/machine/machine_backup_folder.h"
+#include "ui/family_gui.h"
 
 #include <QDateTime>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -52,6 +55,14 @@ QString deviceState(const usecases::DeviceChange& change) {
     return change.identity;
 }
 
+// The GUI part of family `familyId` (every device holds one of each family).
+const FamilyGui* familyGui(const Machine& machine, const QString& familyId) {
+    for (const MachineUnit* unit : machine.units())
+        for (const FamilyGui* family : unit->families())
+            if (family->familyId() == familyId) return family;
+    return nullptr;
+}
+
 }  // namespace
 
 MachineHistoryDialog::MachineHistoryDialog(Machine* machine, const QString& archive,
@@ -65,6 +76,7 @@ MachineHistoryDialog::MachineHistoryDialog(Machine* machine, const QString& arch
       m_compareNow(new QPushButton(tr("Compare with the devices &now"))),
       m_restore(new QPushButton(tr("&Restore this version…"))),
       m_release(new QPushButton(tr("&Mark as released"))),
+      m_draw(new QPushButton(tr("&Draw the differences…"))),
       m_jobs(new MachineHistoryJobs(machine, this)) {
     setWindowTitle(tr("History of %1 - %2").arg(machine->name(), archive));
     m_versions->setObjectName(QStringLiteral("machineHistoryVersions"));
@@ -81,8 +93,14 @@ MachineHistoryDialog::MachineHistoryDialog(Machine* machine, const QString& arch
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
+    m_draw->setObjectName(QStringLiteral("drawDifferences"));
+    m_draw->setToolTip(
+        tr("The device's changes between the two versions compared, drawn in its family's "
+           "terms (a double click on its row does the same); a table is all there is for a "
+           "family that draws none, and for a comparison with the devices now."));
+
     auto* buttons = new QHBoxLayout;
-    for (QPushButton* button : {m_compare, m_compareNow, m_restore, m_release})
+    for (QPushButton* button : {m_compare, m_compareNow, m_draw, m_restore, m_release})
         buttons->addWidget(button);
     buttons->addStretch();
     auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
@@ -103,6 +121,11 @@ MachineHistoryDialog::MachineHistoryDialog(Machine* machine, const QString& arch
             &MachineHistoryDialog::compareWithDevicesNow);
     connect(m_restore, &QPushButton::clicked, this, &MachineHistoryDialog::restoreSelected);
     connect(m_release, &QPushButton::clicked, this, &MachineHistoryDialog::markReleased);
+    connect(m_draw, &QPushButton::clicked, this, &MachineHistoryDialog::showDrawing);
+    connect(m_differences, &QTableWidget::currentCellChanged, this,
+            &MachineHistoryDialog::updateButtons);
+    connect(m_differences, &QTableWidget::cellDoubleClicked, this,
+            &MachineHistoryDialog::showDrawing);
 
     const Result<MachineArchive> opened = MachineArchive::open(archive);
     if (opened)
@@ -169,11 +192,64 @@ void MachineHistoryDialog::updateButtons() {
     m_compareNow->setEnabled(idle && selected == 1);
     m_restore->setEnabled(idle && selected == 1);
     m_release->setEnabled(idle && selected == 1);
+    m_draw->setEnabled(drawingOf(currentDevice()) != nullptr);
+}
+
+QString MachineHistoryDialog::currentDevice() const {
+    const QTableWidgetItem* cell = m_differences->item(m_differences->currentRow(), Device);
+    return cell ? cell->text() : QString();
+}
+
+void MachineHistoryDialog::dropDrawings() {
+    for (const QPointer<QDialog>& drawing : std::as_const(m_drawings))
+        if (drawing) drawing->deleteLater();
+    m_drawings.clear();
+}
+
+void MachineHistoryDialog::makeDrawings(const usecases::MachineChanges& changes,
+                                        const usecases::VersionFolder& older,
+                                        const usecases::VersionFolder& newer) {
+    const Result<usecases::MachineFolderRead> before = usecases::readMachineFolder(older.path());
+    const Result<usecases::MachineFolderRead> after = usecases::readMachineFolder(newer.path());
+    if (!before || !after) return;
+    const QString olderLabel = tr("version %1").arg(older.id.left(10));
+    const QString newerLabel = tr("version %1").arg(newer.id.left(10));
+    for (const usecases::DeviceChange& change : changes.devices) {
+        if (change.kind != usecases::DeviceChange::Kind::Changed) continue;
+        const ManifestEntry* first = before->manifest.entry(change.name);
+        const ManifestEntry* second = after->manifest.entry(change.name);
+        if (!first || !second || first->family != second->family) continue;
+        const FamilyGui* family = familyGui(*m_machine, second->family);
+        QWidget* drawn =
+            family ? family->backupDrawing({QDir(older.path()).filePath(first->file), olderLabel},
+                                           {QDir(newer.path()).filePath(second->file), newerLabel})
+                   : nullptr;
+        if (!drawn) continue;
+        auto* drawing = new QDialog(this);
+        drawing->setObjectName(QStringLiteral("machineHistoryDrawing"));
+        drawing->setWindowTitle(tr("%1: %2 → %3").arg(change.name, olderLabel, newerLabel));
+        auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
+        connect(close, &QDialogButtonBox::rejected, drawing, &QDialog::reject);
+        auto* layout = new QVBoxLayout(drawing);
+        layout->addWidget(drawn, 1);
+        layout->addWidget(close);
+        drawing->resize(1000, 600);
+        m_drawings.insert(change.name, drawing);
+    }
+}
+
+void MachineHistoryDialog::showDrawing() {
+    QDialog* drawing = drawingOf(currentDevice());
+    if (!drawing) return;
+    drawing->show();
+    drawing->raise();
+    drawing->activateWindow();
 }
 
 void MachineHistoryDialog::showChanges(const usecases::MachineChanges& changes,
                                        const QString& heading) {
     m_differences->setRowCount(0);
+    dropDrawings();
     const auto addRow = [this](const QStringList& cells) {
         const int row = m_differences->rowCount();
         m_differences->insertRow(row);
@@ -216,8 +292,15 @@ void MachineHistoryDialog::compareSelected() {
         say((!newer ? newer : older).error().message);
         return;
     }
-    showChanges(usecases::compareMachineFolders(older->path(), newer->path()),
-                tr("Version %1 → %2").arg(ids.at(1).left(10), ids.at(0).left(10)));
+    const usecases::MachineChanges changes =
+        usecases::compareMachineFolders(older->path(), newer->path());
+    showChanges(changes, tr("Version %1 → %2").arg(ids.at(1).left(10), ids.at(0).left(10)));
+    makeDrawings(changes, *older, *newer);
+    if (!m_drawings.isEmpty())
+        say(m_status->text() + u' ' +
+            tr("Drawn as well: %1 (Draw the differences…, or a double click on its row).")
+                .arg(QStringList(m_drawings.keys()).join(QLatin1String(", "))));
+    updateButtons();
     Q_EMIT finished();
 }
 

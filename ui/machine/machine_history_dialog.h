@@ -14,6 +14,8 @@
 
 #include <QDialog>
 #include <QList>
+#include <QMap>
+#include <QPointer>
 #include <QString>
 
 #include <memory>
@@ -48,6 +50,14 @@ public:
     QPushButton* compareNowButton() const { return m_compareNow; }
     QPushButton* restoreButton() const { return m_restore; }
     QPushButton* releaseButton() const { return m_release; }
+    QPushButton* drawButton() const { return m_draw; }
+
+    // The drawing of device `name`'s changes between the two versions
+    // compared last (hidden until shown); nullptr when its family draws
+    // none or it did not change.
+    QDialog* drawingOf(const QString& name) const { return m_drawings.value(name); }
+    // Shows the drawing of the device of the difference table's current row.
+    void showDrawing();
 
     // The two selected versions compared (the older first).
     void compareSelected();
@@ -69,6 +79,12 @@ private:
     // The selected versions' ids, newest first.
     QStringList selectedIds() const;
     void showChanges(const usecases::MachineChanges& changes, const QString& heading);
+    // The device of the difference table's current row.
+    QString currentDevice() const;
+    // A drawing of each device that changed from `older` to `newer` whose family draws one.
+    void makeDrawings(const usecases::MachineChanges& changes, const usecases::VersionFolder& older,
+                      const usecases::VersionFolder& newer);
+    void dropDrawings();
     // The selected version taken out for the devices' jobs; false (said) when it failed.
     bool takeOutSelected();
     void say(const QString& text);
@@ -83,6 +99,8 @@ private:
     QPushButton* m_compareNow;
     QPushButton* m_restore;
     QPushButton* m_release;
+    QPushButton* m_draw;
+    QMap<QString, QPointer<QDialog>> m_drawings;
     std::optional<usecases::VersionFolder> m_folder;  // while devices' jobs use it
     MachineHistoryJobs* m_jobs = nullptr;
 };

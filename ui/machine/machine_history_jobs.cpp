@@ -84,12 +84,15 @@ void MachineHistoryJobs::compareWithDevices(const QString& dir,
                                             std::function<void(usecases::MachineChanges)> done) {
     const Result<usecases::MachineFolderRead> folder = usecases::readMachineFolder(dir);
     const MachineFile now = m_machine->file();
+    QStringList present;
+    for (const MachineUnit* unit : m_machine->units()) present << unit->name();
     forEachDevice<usecases::DeviceVerified>(
         dir, {},
         [dir](const ManifestEntry& entry, comm::JobContext& job) {
             return usecases::verifyMachineDevice(job, entry, dir, ReplacementConsent{});
         },
-        [folder, now, done](QList<QPair<QString, Result<usecases::DeviceVerified>>> answers) {
+        [folder, now, present,
+         done](QList<QPair<QString, Result<usecases::DeviceVerified>>> answers) {
             usecases::MachineChanges changes;
             for (const auto& [name, verified] : answers) {
                 usecases::DeviceChange change;
@@ -117,6 +120,13 @@ void MachineHistoryJobs::compareWithDevices(const QString& dir,
                 }
                 changes.devices << change;
             }
+            // A device of the version that the machine no longer has is
+            // said, not left out.
+            if (folder)
+                for (const MachineDevice& device : folder->machine.devices)
+                    if (!present.contains(device.name))
+                        changes.devices << usecases::DeviceChange{
+                            device.name, usecases::DeviceChange::Kind::Removed, {}, 0, {}, {}};
             done(changes);
         });
 }

@@ -29,8 +29,12 @@ public:
 
     bool busy() const { return m_pending > 0; }
 
-    // Each device of the backup folder `dir` against the device now; the
+    // Each device of the machine against its backup in the folder `dir`
+    // (read now, on its own line); a device the folder lacks is not
+    // compared, one only in the folder is taken out of the machine. The
     // volatile items of the folder's and the machine's file left out.
+    // History → Compare with the devices now, and the machine report's
+    // changes since the released version.
     void compareWithDevices(const QString& dir, std::function<void(usecases::MachineChanges)> done);
 
     // One device's plan of a restore: what it will write, or why nothing.

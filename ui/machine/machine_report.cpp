@@ -2,6 +2,7 @@
 
 #include "machine.h"
 #include "machine_progress.h"
+#include "machine_report_changes.h"
 #include "machine_unit.h"
 
 #include "comm/device/family_registry.h"
@@ -125,16 +126,19 @@ void MachineReport::read(Machine& machine, MachineProgress* progress, std::funct
     }
 }
 
-void MachineReport::build(QTextDocument& document, const Machine& machine) {
+void MachineReport::build(QTextDocument& document, const Machine& machine,
+                          const ReleasedChanges* released) {
     QString html = summary(machine);
+    if (released) html += MachineReportChanges::html(*released);
     int index = 0;
     for (const MachineUnit* unit : machine.units()) html += section(document, *unit, index++);
     document.setHtml(html);
 }
 
-Status MachineReport::write(const QString& path, const Machine& machine) {
+Status MachineReport::write(const QString& path, const Machine& machine,
+                            const ReleasedChanges* released) {
     QTextDocument document;
-    build(document, machine);
+    build(document, machine, released);
     return writeReportPdf(path, document, tr("Machine report"), tr("Page %1 of %2"));
 }
 

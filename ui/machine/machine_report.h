@@ -12,6 +12,7 @@ namespace cambench {
 
 class Machine;
 class MachineProgress;
+struct ReleasedChanges;
 
 // Machine → Machine report…: one PDF of the whole machine. First its
 // summary (name, file, when, each device: family, port, line, identity,
@@ -20,7 +21,9 @@ class MachineProgress;
 // reportSection: the CamCon's commissioning report, the MC-1's program,
 // axes, parameter table, variables and flags, the Compax3's status, last
 // error and parameter set with names), read from the device just before
-// (read()). Every time on the page in one format (reportTime).
+// (read()). With `released`, the changes since the released version
+// (machine_report_changes.h) follow the summary. Every time on the page in
+// one format (reportTime).
 class MachineReport {
     Q_DECLARE_TR_FUNCTIONS(cambench::MachineReport)
 public:
@@ -29,8 +32,10 @@ public:
     // `progress`; `done` when every device is done. A device not on the
     // line is not read, and its line says so.
     static void read(Machine& machine, MachineProgress* progress, std::function<void()> done);
-    static void build(QTextDocument& document, const Machine& machine);
-    static Status write(const QString& path, const Machine& machine);
+    static void build(QTextDocument& document, const Machine& machine,
+                      const ReleasedChanges* released = nullptr);
+    static Status write(const QString& path, const Machine& machine,
+                        const ReleasedChanges* released = nullptr);
 };
 
 }  // namespace cambench

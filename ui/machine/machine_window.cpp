@@ -5,6 +5,7 @@
 #include "machine_history_dialog.h"
 #include "machine_progress.h"
 #include "machine_report.h"
+#include "machine_report_changes.h"
 #include "machine_stop.h"
 #include "machine_unit.h"
 
@@ -16,6 +17,7 @@
 #include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHash>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLineEdit>
@@ -23,6 +25,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QPointer>
+#include <QPushButton>
 #include <QScreen>
 #include <QScrollBar>
 #include <QSplitter>
@@ -263,17 +266,33 @@ void MachineWindow::saveAs() {
 void MachineWindow::writeReport() {
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Machine report"), m_machine->name() + QStringLiteral(".pdf"), tr("PDF (*.pdf)"));
-    if (!path.isEmpty()) writeReportTo(path);
+    if (path.isEmpty()) return;
+    // The archive is not part of the machine file: asked each time.
+    QMessageBox question(QMessageBox::Question, tr("Machine report"),
+                         tr("Add the changes since the released version? Each device is then "
+                            "compared with its backup in the version released in the machine's "
+                            "archive."),
+                         QMessageBox::NoButton, this);
+    question.setObjectName(QStringLiteral("reportChangesQuestion"));
+    QPushButton* choose = question.addButton(tr("Choose the archive…"), QMessageBox::AcceptRole);
+    question.addButton(tr("Without"), QMessageBox::RejectRole);
+    question.exec();
+    QString archive;
+    if (question.clickedButton() == choose)
+        archive = QFileDialog::getExistingDirectory(
+            this, tr("The archive of %1").arg(m_machine->name()),
+            m_machine->path().isEmpty() ? QString() : QFileInfo(m_machine->path()).absolutePath());
+    writeReportTo(path, archive);
 }
 
-MachineProgress* MachineWindow::writeReportTo(const QString& path) {
+MachineProgress* MachineWindow::writeReportTo(const QString& path, const QString& archive) {
     // Everything is read before it is printed: a bar per device.
     auto* progress = new MachineProgress(tr("Machine report"), m_machine->units(), this);
     progress->setAttribute(Qt::WA_DeleteOnClose);
     progress->show();
     QPointer<MachineProgress> shown(progress);
-    MachineReport::read(*m_machine, progress, [this, shown, path] {
-        const Status written = MachineReport::write(path, *m_machine);
+    const auto write = [this, shown, path](const ReleasedChanges& released) {
+        const Status written = MachineReport::write(path, *m_machine, &released);
         const QString message =
             written ? tr("Machine report written to %1.").arg(QFileInfo(path).fileName())
                     : written.error().message;
@@ -281,6 +300,37 @@ MachineProgress* MachineWindow::writeReportTo(const QString& path) {
         if (!written)
             QMessageBox::warning(shown ? static_cast<QWidget*>(shown.data()) : this,
                                  tr("Machine report"), message);
+    };
+    MachineReport::read(*m_machine, progress, [this, shown, archive, write] {
+        if (archive.isEmpty()) {
+            write(ReleasedChanges{});
+            return;
+        }
+        // Each device's line: what its read said, then its comparison.
+        QHash<QString, QString> readLines;
+        if (shown)
+            for (MachineUnit* unit : m_machine->units()) {
+                readLines.insert(unit->name(), shown->resultLine(unit->name()));
+                shown->restart(unit);
+            }
+        MachineReportChanges::compare(
+            m_machine, archive, this, [this, shown, readLines, write](ReleasedChanges released) {
+                if (shown)
+                    for (MachineUnit* unit : m_machine->units()) {
+                        QString line = tr("not compared: %1").arg(released.problem);
+                        bool ok = false;
+                        for (const usecases::DeviceChange& change : released.changes.devices)
+                            if (change.name == unit->name()) {
+                                line = MachineReportChanges::deviceLine(change);
+                                ok = change.kind == usecases::DeviceChange::Kind::Equal ||
+                                     change.kind == usecases::DeviceChange::Kind::Changed;
+                            }
+                        shown->finish(
+                            unit, ok,
+                            QStringLiteral("%1; %2").arg(readLines.value(unit->name()), line));
+                    }
+                write(released);
+            });
     });
     return progress;
 }

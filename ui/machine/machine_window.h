@@ -36,8 +36,10 @@ public:
     // Every device is asked (a move to stop, edits not written); true: may close.
     bool confirmClose();
     // Machine → Machine report… to `path`: reads every device first (the
-    // dialog shows a bar per device), then writes the PDF.
-    MachineProgress* writeReportTo(const QString& path);
+    // dialog shows a bar per device), then writes the PDF. With `archive`
+    // (the machine's archive), each device is then compared with the
+    // released version there, and the report says what changed since.
+    MachineProgress* writeReportTo(const QString& path, const QString& archive = {});
     // Machine → Back up…, Verify…, Restore… with the folder chosen (and
     // the backup's note: why). Each device's line says what became of it.
     MachineBackupRun* backUpTo(const QString& dir, const QString& note);
