@@ -21,6 +21,7 @@
 
 #include <QHeaderView>
 #include <QMenuBar>
+#include <QScreen>
 #include <QScrollBar>
 #include <QTreeWidget>
 
@@ -291,8 +292,17 @@ private Q_SLOTS:
                                             .arg(needed)));
                 }
             }
-            // Nothing out of sight to the right.
-            QCOMPARE(list->horizontalScrollBar()->maximum(), 0);
+            // Nothing out of sight to the right where the screen has room for
+            // the whole list beside the device's window. A narrower screen
+            // (the offscreen one of a test run, 800 pixels) keeps the window
+            // within it: the list scrolls sideways instead.
+            const int columns = list->header()->length();
+            const int room = machine->window()->screen()->availableGeometry().width();
+            const int beside = machine->window()->minimumSizeHint().width() - list->minimumWidth();
+            if (room >= columns + beside)
+                QCOMPARE(list->horizontalScrollBar()->maximum(), 0);
+            else
+                QVERIFY(list->minimumWidth() < columns);
             // The drive's objects carry their units in the language in use.
             for (FamilyGui* family : machine->unit(QStringLiteral("feed"))->families())
                 if (auto* c3 = qobject_cast<Compax3Gui*>(family)) {
