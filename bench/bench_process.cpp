@@ -1,25 +1,14 @@
 #include "bench_process.h"
 
-#ifdef Q_OS_LINUX
-#include <sys/prctl.h>
-#include <csignal>
-#endif
+#include "tests/e2e/child_process.h"
 
 namespace cambench::bench {
-
-void dieWithBenchmark(QProcess& process) {
-#ifdef Q_OS_LINUX
-    process.setChildProcessModifier([] { prctl(PR_SET_PDEATHSIG, SIGKILL); });
-#else
-    Q_UNUSED(process);
-#endif
-}
 
 QString startSim(QProcess& sim, const QStringList& args) {
     sim.setProgram(QStringLiteral(CAMBENCH_SIM_EXE));
     sim.setArguments(args);
     sim.setProcessChannelMode(QProcess::SeparateChannels);
-    dieWithBenchmark(sim);
+    e2e::endWithThisTest(sim);
     sim.start();
     while (!sim.canReadLine() && sim.waitForReadyRead(10000)) {
     }

@@ -6,10 +6,9 @@
 
 namespace cambench::bench {
 
-// The real programs, as a person runs them: the benchmark starts them and
-// they die with it, however it ends.
-void dieWithBenchmark(QProcess& process);
-// Starts cambench-sim with `args`; its pty path, or a fatal error.
+// Starts cambench-sim with `args`, ending with the benchmark however it ends
+// (tests/e2e/child_process.h, the tests' own helper); its pty path, or a
+// fatal error.
 QString startSim(QProcess& sim, const QStringList& args);
 
 }  // namespace cambench::bench

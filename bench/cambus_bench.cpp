@@ -2,6 +2,7 @@
 
 #include "bench_process.h"
 #include "bench_run.h"
+#include "tests/e2e/child_process.h"
 
 #include "comm/camcon/cambus/cambus_camcon.h"
 #include "comm/sim/camcon/cambus/sim_cambus_line.h"
@@ -82,7 +83,7 @@ CliResult runCli(const QStringList& args) {
     QProcess cli;
     cli.setProgram(QStringLiteral(CAMBENCH_CLI_EXE));
     cli.setArguments(args);
-    dieWithBenchmark(cli);
+    e2e::endWithThisTest(cli);
     QElapsedTimer timer;
     timer.start();
     cli.start();

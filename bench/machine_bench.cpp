@@ -1,6 +1,7 @@
 #include "machine_bench.h"
 
 #include "bench_process.h"
+#include "tests/e2e/child_process.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -71,7 +72,7 @@ double timeBackup(const QTemporaryDir& dir, const QString& name, const QJsonArra
                      (into.isEmpty() ? QStringList{QStringLiteral("-o"),
                                                    dir.filePath(name + QStringLiteral("-backup"))}
                                      : into));
-    dieWithBenchmark(cli);
+    e2e::endWithThisTest(cli);
     QElapsedTimer timer;
     timer.start();
     cli.start();

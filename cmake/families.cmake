@@ -1,9 +1,9 @@
 # The device families this CamBench is built with: the names of their
 # folders, wherever those sit (comm/<family>/, comm/sim/<family>/,
 # model/<family>/, ui/<family>/, app/cli/<family>/, tests/<area>/<family>/,
-# translations/<family>/). Each family lists its own files in a
-# sources.cmake (tests.cmake for tests) in its folders; the shell's lists
-# name none of them and include the families' lists through
+# translations/<family>/, packaging/<family>/). Each family lists its own
+# files in a sources.cmake (tests.cmake for tests) in its folders; the
+# shell's lists name none of them and include the families' lists through
 # cambench_include_family_lists. Adding a family adds its name here (the
 # CTests `layering`, `family_sources` and `architecture_doc` read this list
 # too).

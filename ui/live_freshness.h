@@ -45,8 +45,6 @@ public:
     // A few words beside a value: "live", "no answer since 12:03:04",
     // "paused (Back up controller), read 12:03:04", "not read".
     QString valueNote() const;
-    // What holds polling while Paused (empty: nothing named).
-    QString pauseReason() const { return m_pauseReason; }
 
 Q_SIGNALS:
     void changed(cambench::LiveFreshness::State state);

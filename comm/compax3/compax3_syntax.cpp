@@ -63,10 +63,6 @@ Result<Compax3Reply> parseCompax3Reply(const QByteArray& raw) {
     return reply;
 }
 
-QString compax3ErrorMeaning(int code) {
-    return compax3RefusalMeaning(code);
-}
-
 bool compax3RefusalMeansAbsent(const cambench::Error& error) {
     return compax3RefusalMeansAbsent(error, compax3Refusals());
 }

@@ -45,10 +45,6 @@ struct Compax3Reply {
 // with InvalidData saying what arrived.
 Result<Compax3Reply> parseCompax3Reply(const QByteArray& line);
 
-// "!0004" in words, where known (the shipped table of refusals,
-// model/compax3/compax3_refusals.h: the emulator's numbers, provisional):
-// "the value is outside the object's range"; empty for an unknown number.
-QString compax3ErrorMeaning(int code);
 // Whether a refusal says the drive does not have the object (!0002 "no
 // such object" in the table of refusals, provisional): the object is "not on this drive", which a
 // backup records instead of failing.

@@ -39,11 +39,13 @@ struct DetectResult {
 // by default its own defaults.
 using DetectSettings = std::function<comm::ProtocolSettingsPtr(const comm::ProtocolInfo& protocol)>;
 
-// What is on `port`: each built family's protocols, in the order they were
-// registered, each at its default line settings, until a device identifies
-// itself. Only identification queries are sent. Opens its own transport per
-// try: the worker must not hold the port. Fails only when the port cannot
-// be opened at all; a line where nothing answers is a result with every
+// What is on `port`: each built family's protocols, each at its default
+// line settings, until a device identifies itself: first those whose probe
+// only listens (ProtocolInfo::listeningProbe: a token bus, which the others'
+// requests would disturb), then the rest in the order they were registered.
+// Only identification queries are sent. Opens its own transport per try:
+// the worker must not hold the port. Fails only when the port cannot be
+// opened at all; a line where nothing answers is a result with every
 // attempt's failure.
 Result<DetectResult> detectDevice(const QString& port, comm::JobContext& job,
                                   const DetectSettings& settingsFor = {});

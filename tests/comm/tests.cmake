@@ -2,7 +2,7 @@ cambench_add_test(tst_link_serial_transport SOURCES comm/link/tst_serial_transpo
 cambench_add_test(tst_link_tcp_transport SOURCES comm/link/tst_tcp_transport.cpp comm/link/pty_device.h comm/link/pty_device.cpp LIBS cambench_sim)
 cambench_add_test(tst_link_transport_factory SOURCES comm/link/tst_transport_factory.cpp LIBS cambench_sim)
 cambench_add_test(tst_link_traffic SOURCES comm/link/tst_traffic.cpp LIBS cambench_sim)
-cambench_add_test(tst_sim_executable SOURCES comm/sim/tst_sim_executable.cpp e2e/child_process.h e2e/child_process.cpp LIBS cambench_comm Qt6::SerialPort Qt6::Network)
+cambench_add_test(tst_sim_executable SOURCES comm/sim/tst_sim_executable.cpp LIBS cambench_comm cambench_child_process Qt6::SerialPort Qt6::Network)
 target_compile_definitions(tst_sim_executable PRIVATE CAMBENCH_SIM_EXECUTABLE="$<TARGET_FILE:cambench-sim>")
 add_dependencies(tst_sim_executable cambench-sim)
 cambench_add_test(tst_worker_job_queue SOURCES comm/worker/tst_job_queue.cpp LIBS cambench_sim)

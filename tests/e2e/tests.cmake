@@ -4,8 +4,8 @@
 # The end-to-end tests start both executables as subprocesses.
 function(cambench_add_e2e_test name)
   cambench_add_test(${name} SOURCES ${ARGN} e2e/sim_process.h e2e/sim_process.cpp
-                    e2e/e2e_support.h e2e/e2e_support.cpp e2e/child_process.h
-                    e2e/child_process.cpp e2e/test_pace.h e2e/test_pace.cpp LIBS cambench_model)
+                    e2e/e2e_support.h e2e/e2e_support.cpp e2e/test_pace.h e2e/test_pace.cpp
+                    LIBS cambench_model cambench_child_process)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
   target_compile_definitions(${name} PRIVATE
     CAMBENCH_SIM_EXE="$<TARGET_FILE:cambench-sim>"

@@ -32,7 +32,6 @@ public:
     void readFromDevice();
     // Every edited output through the one write path.
     void writeChanges(std::function<void(const WriteResult&)> done = {});
-    QSpinBox* outputChooser() const { return m_output; }
     QTableWidget* table() const { return m_table; }
     // The points shown, as edited.
     AnalogueCamTrack edited() const;

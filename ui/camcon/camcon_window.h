@@ -73,7 +73,6 @@ public:
     UsersPage* usersPage() const { return m_users; }
     PlcPage* plcPage() const { return m_plc; }
     MonitorPage* monitorPage() const { return m_monitor; }
-    TerminalPage* terminalPage() const { return m_terminal; }
     // The pages Compare lists differences of.
     QList<CamConSectionPage*> dataPages() const;
     Workspace* workspace() const { return m_workspace; }

@@ -40,7 +40,6 @@ public:
     QString reportText() const;
     // "Device values read at 12:03:04" and what the read said.
     QString sourceText() const;
-    QStringList deviceSideChanges() const { return m_deviceChanges; }
 
 Q_SIGNALS:
     void writeFinished(const cambench::WriteResult& result);

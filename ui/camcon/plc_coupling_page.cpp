@@ -268,7 +268,6 @@ void PlcCouplingPage::readStatus() {
 }
 
 bool PlcCouplingPage::confirmed(const QString& question) {
-    if (!m_ask) return true;
     // No is the default: Enter alone must not switch a machine's outputs.
     return QMessageBox::question(this, tr("PLC coupling"), question,
                                  QMessageBox::Yes | QMessageBox::No,

@@ -52,9 +52,6 @@ public:
     QTableWidget* camTable() const { return m_cams; }
     QDoubleSpinBox* deadTimeBox() const { return m_deadTime; }
 
-    // Whether writes ask first; tests answer in their place.
-    void setAskBeforeWriting(bool ask) { m_ask = ask; }
-
 private:
     void showStatus(const comm::table::ShortStatus& status);
     // `sayWhatWasRead`: a read of its own, not the check after a write.
@@ -82,7 +79,6 @@ private:
     QDoubleSpinBox* m_deadTime;
     QLabel* m_deadTimeArea;
     QLabel* m_outcome;
-    bool m_ask = true;
 };
 
 }  // namespace cambench

@@ -36,8 +36,6 @@ public:
     // `selectedOnly`: the ticked rows of the comparison.
     void writeFile(bool selectedOnly);
     QTableWidget* differences() const { return m_table; }
-    QCheckBox* forceBox() const { return m_force; }
-    QCheckBox* storeBox() const { return m_store; }
 
 protected:
     // Another drive (or none): an earlier comparison's file header, result

@@ -29,10 +29,7 @@ public:
     void setDevice(int device) override;
     int pcNumber() const { return m_pcNumber; }
     // The block number the next request to `device` takes.
-    int nextBlock(int device) const { return m_nextBlock[clampNumber(device)]; }
     void setNextBlock(int device, int block) { m_nextBlock[clampNumber(device)] = block & 63; }
-    // The block number of the request begun last (Multiuser).
-    std::optional<MultiuserAddress> currentAddress() const { return m_address; }
 
     void setLineTiming(const LineTiming& line) override { m_gapMs = line.frameGapMs(); }
     QString describe() const override;

@@ -17,9 +17,6 @@ namespace cambench::comm::client {
 inline qint64 wireOutput(int output) {
     return output - 1;
 }
-inline int modelOutput(qint64 wireNumber) {
-    return int(wireNumber) + 1;
-}
 
 // Device texts are single-byte characters padded with NUL.
 inline QString text(const Fields& fields, const char* name) {

@@ -334,11 +334,6 @@ void CamDocument::forgetDeviceCopies(CarryOver carry) {
     notifyChangedCount();
 }
 
-int CamDocument::carriedCount() const {
-    return int(m_carriedTracks.size() + m_carriedProgramNames.size() + m_carriedOutputNames.size() +
-               m_carriedDeadTimes.size());
-}
-
 bool CamDocument::carriedTrack(int program, int output) const {
     return m_carriedTracks.contains(trackKey(program, output));
 }

@@ -112,8 +112,6 @@ public:
     // mergeOutputSettings with keepEdits). The undo history goes with the
     // values it was made on.
     void forgetDeviceCopies(CarryOver carry = CarryOver::Changes);
-    // Items carried from another device that wait for this device's values.
-    int carriedCount() const;
     std::optional<CamProgram> deviceProgram(int program) const;
     std::optional<Track> deviceTrack(int program, int output) const;
     bool outputSettingsKnown() const { return m_outputSettingsKnown; }
@@ -121,7 +119,6 @@ public:
     std::optional<QString> deviceOutputName(int output) const;
     bool hasDeviceCopy(int program) const { return m_device.contains(program); }
     QList<int> editedPrograms() const { return m_edited.keys(); }
-    QList<int> devicePrograms() const { return m_device.keys(); }
 
     ChangeState programState(int program) const;
     ChangeState trackState(int program, int output) const;

@@ -64,8 +64,6 @@ public:
     qint64 nextTimerMs() const override;
     QString protocolName() const override { return QStringLiteral("Cam-BUS"); }
 
-    const SimPcAnswers& pcAnswers() const { return m_pcAnswers; }
-
 private:
     static QList<SimOutput> outputs(const QByteArray& bytes);
     // The faults that come at a time: a user falling silent, a second
