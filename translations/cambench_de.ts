@@ -1214,6 +1214,43 @@ Stellen Sie sie hier nur wieder her, wenn dieses Gerät das ersetzt, von dem die
     </message>
 </context>
 <context>
+    <name>cambench::BackupProgramsView</name>
+    <message>
+        <source>Hide outputs without a difference</source>
+        <translation>Ausgänge ohne Unterschied ausblenden</translation>
+    </message>
+    <message>
+        <source>Program %1</source>
+        <translation>Programm %1</translation>
+    </message>
+    <message>
+        <source>Program %1 (%2)</source>
+        <translation>Programm %1 (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n Unterschied</numerusform>
+            <numerusform>%n Unterschiede</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Programs that differ:</source>
+        <translation>Programme mit Unterschieden:</translation>
+    </message>
+    <message numerus="yes">
+        <source>A: %1, program %2. B: %3, program %2. %n difference(s) of cams.</source>
+        <translation>
+            <numerusform>A: %1, Programm %2. B: %3, Programm %2. %n Unterschied der Nocken.</numerusform>
+            <numerusform>A: %1, Programm %2. B: %3, Programm %2. %n Unterschiede der Nocken.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Name &quot;%1&quot; → &quot;%2&quot;.</source>
+        <translation>Name „%1“ → „%2“.</translation>
+    </message>
+</context>
+<context>
     <name>cambench::BackupWizard</name>
     <message>
         <source>EPROM %1, device number %2, %3 outputs, %4 programs, positions %5 … %6</source>
@@ -5014,6 +5051,26 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <source>The archive of %1</source>
         <translation>Das Archiv von %1</translation>
     </message>
+    <message>
+        <source>&amp;Draw the differences…</source>
+        <translation>Unterschiede &amp;zeichnen…</translation>
+    </message>
+    <message>
+        <source>The device&apos;s changes between the two versions compared, drawn in its family&apos;s terms (a double click on its row does the same); a table is all there is for a family that draws none, and for a comparison with the devices now.</source>
+        <translation>Die Änderungen des Geräts zwischen den beiden verglichenen Versionen, gezeichnet in den Begriffen seiner Gerätefamilie (ein Doppelklick auf seine Zeile tut dasselbe); für eine Gerätefamilie ohne Zeichnung und für einen Vergleich mit den Geräten jetzt gibt es nur die Tabelle.</translation>
+    </message>
+    <message>
+        <source>version %1</source>
+        <translation>Version %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation>%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>Drawn as well: %1 (Draw the differences…, or a double click on its row).</source>
+        <translation>Auch gezeichnet: %1 (Unterschiede zeichnen… oder ein Doppelklick auf seine Zeile).</translation>
+    </message>
 </context>
 <context>
     <name>cambench::MachineHistoryJobs</name>
@@ -5143,6 +5200,79 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>not read: %1</source>
         <translation>nicht gelesen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineReportChanges</name>
+    <message>
+        <source>%1: version %2 of %3 by %4</source>
+        <translation>%1: Version %2 vom %3 von %4</translation>
+    </message>
+    <message>
+        <source>version %1</source>
+        <translation>Version %1</translation>
+    </message>
+    <message>
+        <source>equal to the released version</source>
+        <translation>gleich der freigegebenen Version</translation>
+    </message>
+    <message numerus="yes">
+        <source>equal to the released version (%n change(s) of volatile items left out)</source>
+        <translation>
+            <numerusform>gleich der freigegebenen Version (%n Änderung flüchtiger Werte nicht gezählt)</numerusform>
+            <numerusform>gleich der freigegebenen Version (%n Änderungen flüchtiger Werte nicht gezählt)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>DIFFERS: %n difference(s)</source>
+        <translation>
+            <numerusform>UNTERSCHIEDLICH: %n Unterschied</numerusform>
+            <numerusform>UNTERSCHIEDLICH: %n Unterschiede</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not in the released version: not compared</source>
+        <translation>nicht in der freigegebenen Version: nicht verglichen</translation>
+    </message>
+    <message>
+        <source>in the released version, but no longer a device of this machine</source>
+        <translation>in der freigegebenen Version, aber kein Gerät dieser Maschine mehr</translation>
+    </message>
+    <message>
+        <source>NOT COMPARED: %1</source>
+        <translation>NICHT VERGLICHEN: %1</translation>
+    </message>
+    <message>
+        <source>Changes since the released version</source>
+        <translation>Änderungen seit der freigegebenen Version</translation>
+    </message>
+    <message>
+        <source>Not part of this report: no machine archive was chosen.</source>
+        <translation>Nicht Teil dieses Protokolls: Es wurde kein Maschinenarchiv gewählt.</translation>
+    </message>
+    <message>
+        <source>Archive: %1</source>
+        <translation>Archiv: %1</translation>
+    </message>
+    <message>
+        <source>Nothing was compared: %1</source>
+        <translation>Nichts wurde verglichen: %1</translation>
+    </message>
+    <message>
+        <source>Released version: %1</source>
+        <translation>Freigegebene Version: %1</translation>
+    </message>
+    <message>
+        <source>Each device was read for this report and compared with its backup in that version.</source>
+        <translation>Jedes Gerät wurde für dieses Protokoll gelesen und mit seiner Sicherung in dieser Version verglichen.</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Since the released version</source>
+        <translation>Seit der freigegebenen Version</translation>
     </message>
 </context>
 <context>
@@ -5371,6 +5501,26 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>&amp;History…</source>
         <translation>Verl&amp;auf…</translation>
+    </message>
+    <message>
+        <source>Add the changes since the released version? Each device is then compared with its backup in the version released in the machine&apos;s archive.</source>
+        <translation>Die Änderungen seit der freigegebenen Version hinzufügen? Jedes Gerät wird dann mit seiner Sicherung in der Version verglichen, die im Archiv der Maschine freigegeben ist.</translation>
+    </message>
+    <message>
+        <source>Choose the archive…</source>
+        <translation>Archiv wählen…</translation>
+    </message>
+    <message>
+        <source>Without</source>
+        <translation>Ohne</translation>
+    </message>
+    <message>
+        <source>The archive of %1</source>
+        <translation>Das Archiv von %1</translation>
+    </message>
+    <message>
+        <source>not compared: %1</source>
+        <translation>nicht verglichen: %1</translation>
     </message>
 </context>
 <context>

@@ -1212,6 +1212,43 @@ Restore it here only if this device replaces the one the backup was taken from (
     </message>
 </context>
 <context>
+    <name>cambench::BackupProgramsView</name>
+    <message>
+        <source>Hide outputs without a difference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program %1</source>
+        <translation type="unfinished">Program %1</translation>
+    </message>
+    <message>
+        <source>Program %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Programs that differ:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>A: %1, program %2. B: %3, program %2. %n difference(s) of cams.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Name &quot;%1&quot; → &quot;%2&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>cambench::BackupWizard</name>
     <message>
         <source>EPROM %1, device number %2, %3 outputs, %4 programs, positions %5 … %6</source>
@@ -5007,6 +5044,26 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <source>The archive of %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Draw the differences…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device&apos;s changes between the two versions compared, drawn in its family&apos;s terms (a double click on its row does the same); a table is all there is for a family that draws none, and for a comparison with the devices now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>version %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 → %3</source>
+        <translation type="unfinished">%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>Drawn as well: %1 (Draw the differences…, or a double click on its row).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>cambench::MachineHistoryJobs</name>
@@ -5135,6 +5192,79 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>not read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cambench::MachineReportChanges</name>
+    <message>
+        <source>%1: version %2 of %3 by %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>version %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>equal to the released version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>equal to the released version (%n change(s) of volatile items left out)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>DIFFERS: %n difference(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not in the released version: not compared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in the released version, but no longer a device of this machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT COMPARED: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changes since the released version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not part of this report: no machine archive was chosen.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Archive: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was compared: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Released version: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each device was read for this report and compared with its backup in that version.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation type="unfinished">Device</translation>
+    </message>
+    <message>
+        <source>Since the released version</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5363,6 +5493,26 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>&amp;History…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the changes since the released version? Each device is then compared with its backup in the version released in the machine&apos;s archive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the archive…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The archive of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not compared: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
