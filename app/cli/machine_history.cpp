@@ -135,10 +135,9 @@ int runWatch(const QString& dir, bool commit, const BackupAuthor& author) {
     }
     if (backedUp != ExitOk) backupLines.print();
 
-    MachineChanges changes = usecases::compareMachineFolders(releasedFolder->path(), now.path());
-    // Where a device is reached (the machine file's options) is no
-    // difference of the device.
-    changes.machineFile.clear();
+    const Result<usecases::MachineFolderRead> backup = usecases::readMachineFolder(now.path());
+    if (!backup) return reportError(backup.error());
+    const MachineChanges changes = usecases::compareWithDevicesNow(releasedFolder->path(), *backup);
     printOut(QStringLiteral("%1: the devices now against the released version %2 [%3]\n")
                  .arg(setup->machine.machine, versionText(*released), released->releases.value(0)));
     const int code = printMachineChanges(changes, setup->machine.machine, ExitCommunication);

@@ -204,35 +204,71 @@ QList<BackupDifference> withoutVolatile(const QList<BackupDifference>& differenc
     return kept;
 }
 
-MachineChanges compareMachineFolders(const QString& older, const QString& newer) {
+namespace {
+
+// Two states read, device by device, then the machine file's own changes.
+MachineChanges compareStates(const MachineFolderRead& before, const MachineFolderRead& after) {
     MachineChanges changes;
-    const Result<MachineFolderRead> before = readMachineFolder(older);
-    const Result<MachineFolderRead> after = readMachineFolder(newer);
-    if (!before || !after) {
-        DeviceChange unreadable;
-        unreadable.name = QCoreApplication::translate("cambench::usecases", "machine");
-        unreadable.kind = DeviceChange::Kind::NotCompared;
-        unreadable.why = (!before ? before : after).error().message;
-        changes.devices << unreadable;
-        return changes;
-    }
-    for (const MachineDevice& device : after->machine.devices) {
-        if (before->machine.device(device.name)) {
-            changes.devices << compareDevice(*before, *after, device.name);
+    for (const MachineDevice& device : after.machine.devices) {
+        if (before.machine.device(device.name)) {
+            changes.devices << compareDevice(before, after, device.name);
             continue;
         }
         DeviceChange added;
         added.name = device.name;
         added.kind = DeviceChange::Kind::Added;
-        if (const ManifestEntry* entry = after->manifest.entry(device.name))
+        if (const ManifestEntry* entry = after.manifest.entry(device.name))
             added.why = entry->summary;
         changes.devices << added;
     }
-    for (const MachineDevice& device : before->machine.devices)
-        if (!after->machine.device(device.name))
+    for (const MachineDevice& device : before.machine.devices)
+        if (!after.machine.device(device.name))
             changes.devices << DeviceChange{device.name, DeviceChange::Kind::Removed, {}, 0, {},
                                             {}};
-    changes.machineFile = machineFileChanges(before->machine, after->machine);
+    changes.machineFile = machineFileChanges(before.machine, after.machine);
+    return changes;
+}
+
+// The one line of a machine folder that could not be read.
+MachineChanges unreadable(const Error& error) {
+    DeviceChange machine;
+    machine.name = QCoreApplication::translate("cambench::usecases", "machine");
+    machine.kind = DeviceChange::Kind::NotCompared;
+    machine.why = error.message;
+    MachineChanges changes;
+    changes.devices << machine;
+    return changes;
+}
+
+}  // namespace
+
+MachineChanges compareMachineFolders(const QString& older, const QString& newer) {
+    const Result<MachineFolderRead> before = readMachineFolder(older);
+    const Result<MachineFolderRead> after = readMachineFolder(newer);
+    if (!before || !after) return unreadable((!before ? before : after).error());
+    return compareStates(*before, *after);
+}
+
+MachineChanges compareWithDevicesNow(const QString& version, const MachineFolderRead& now) {
+    const Result<MachineFolderRead> released = readMachineFolder(version);
+    if (!released) return unreadable(released.error());
+    MachineChanges changes = compareStates(*released, now);
+    changes.machineFile.clear();
+    for (DeviceChange& change : changes.devices) {
+        if (change.kind != DeviceChange::Kind::NotSaved) continue;
+        const ManifestEntry* read = now.manifest.entry(change.name);
+        if (read && read->saved()) {
+            const ManifestEntry* kept = released->manifest.entry(change.name);
+            change.why =
+                QCoreApplication::translate("cambench::usecases", "not saved in the version%1")
+                    .arg(kept ? QStringLiteral(" (%1)").arg(kept->result) : QString());
+        } else
+            change.why =
+                read ? QCoreApplication::translate("cambench::usecases", "its backup now %1")
+                           .arg(read->result)
+                     : QCoreApplication::translate("cambench::usecases",
+                                                   "not read from the device now");
+    }
     return changes;
 }
 

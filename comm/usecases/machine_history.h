@@ -85,6 +85,16 @@ QList<BackupDifference> withoutVolatile(const QList<BackupDifference>& differenc
 // The volatile items of either machine file are left out.
 MachineChanges compareMachineFolders(const QString& older, const QString& newer);
 
+// The devices now - a backup of each just taken into `now.dir`, its
+// manifest and the machine file in `now` (`machine watch`, History →
+// Compare with the devices now, the machine report's changes since the
+// released version) - against the version taken out into `version`, as
+// compareMachineFolders compares them. Where a device is reached (the
+// machine file's options) is no difference of the device; one whose
+// backup now failed says why in its manifest's words, not as a folder
+// that was temporary.
+MachineChanges compareWithDevicesNow(const QString& version, const MachineFolderRead& now);
+
 // The first state of a machine (no version before it): every saved device
 // "first version" with its summary.
 MachineChanges firstVersionOf(const QString& folder);

@@ -95,9 +95,9 @@ MachineHistoryDialog::MachineHistoryDialog(Machine* machine, const QString& arch
 
     m_draw->setObjectName(QStringLiteral("drawDifferences"));
     m_draw->setToolTip(
-        tr("The device's changes between the two versions compared, drawn in its family's "
-           "terms (a double click on its row does the same); a table is all there is for a "
-           "family that draws none, and for a comparison with the devices now."));
+        tr("The device's changes between the two states compared (two versions, or a version "
+           "and the devices now), drawn in its family's terms (a double click on its row does "
+           "the same); a table is all there is for a family that draws none."));
 
     auto* buttons = new QHBoxLayout;
     for (QPushButton* button : {m_compare, m_compareNow, m_draw, m_restore, m_release})
@@ -206,24 +206,20 @@ void MachineHistoryDialog::dropDrawings() {
     m_drawings.clear();
 }
 
-void MachineHistoryDialog::makeDrawings(const usecases::MachineChanges& changes,
-                                        const usecases::VersionFolder& older,
-                                        const usecases::VersionFolder& newer) {
-    const Result<usecases::MachineFolderRead> before = usecases::readMachineFolder(older.path());
-    const Result<usecases::MachineFolderRead> after = usecases::readMachineFolder(newer.path());
-    if (!before || !after) return;
-    const QString olderLabel = tr("version %1").arg(older.id.left(10));
-    const QString newerLabel = tr("version %1").arg(newer.id.left(10));
+void MachineHistoryDialog::makeDrawings(const usecases::MachineChanges& changes, const State& older,
+                                        const State& newer) {
+    const QString& olderLabel = older.label;
+    const QString& newerLabel = newer.label;
     for (const usecases::DeviceChange& change : changes.devices) {
         if (change.kind != usecases::DeviceChange::Kind::Changed) continue;
-        const ManifestEntry* first = before->manifest.entry(change.name);
-        const ManifestEntry* second = after->manifest.entry(change.name);
+        const ManifestEntry* first = older.folder.manifest.entry(change.name);
+        const ManifestEntry* second = newer.folder.manifest.entry(change.name);
         if (!first || !second || first->family != second->family) continue;
         const FamilyGui* family = familyGui(*m_machine, second->family);
-        QWidget* drawn =
-            family ? family->backupDrawing({QDir(older.path()).filePath(first->file), olderLabel},
-                                           {QDir(newer.path()).filePath(second->file), newerLabel})
-                   : nullptr;
+        QWidget* drawn = family ? family->backupDrawing(
+                                      {QDir(older.folder.dir).filePath(first->file), olderLabel},
+                                      {QDir(newer.folder.dir).filePath(second->file), newerLabel})
+                                : nullptr;
         if (!drawn) continue;
         auto* drawing = new QDialog(this);
         drawing->setObjectName(QStringLiteral("machineHistoryDrawing"));
@@ -236,6 +232,10 @@ void MachineHistoryDialog::makeDrawings(const usecases::MachineChanges& changes,
         drawing->resize(1000, 600);
         m_drawings.insert(change.name, drawing);
     }
+    if (!m_drawings.isEmpty())
+        say(m_status->text() + u' ' +
+            tr("Drawn as well: %1 (Draw the differences…, or a double click on its row).")
+                .arg(QStringList(m_drawings.keys()).join(QLatin1String(", "))));
 }
 
 void MachineHistoryDialog::showDrawing() {
@@ -295,11 +295,11 @@ void MachineHistoryDialog::compareSelected() {
     const usecases::MachineChanges changes =
         usecases::compareMachineFolders(older->path(), newer->path());
     showChanges(changes, tr("Version %1 → %2").arg(ids.at(1).left(10), ids.at(0).left(10)));
-    makeDrawings(changes, *older, *newer);
-    if (!m_drawings.isEmpty())
-        say(m_status->text() + u' ' +
-            tr("Drawn as well: %1 (Draw the differences…, or a double click on its row).")
-                .arg(QStringList(m_drawings.keys()).join(QLatin1String(", "))));
+    const Result<usecases::MachineFolderRead> before = usecases::readMachineFolder(older->path());
+    const Result<usecases::MachineFolderRead> after = usecases::readMachineFolder(newer->path());
+    if (before && after)
+        makeDrawings(changes, {*before, tr("version %1").arg(older->id.left(10))},
+                     {*after, tr("version %1").arg(newer->id.left(10))});
     updateButtons();
     Q_EMIT finished();
 }
@@ -320,11 +320,18 @@ void MachineHistoryDialog::compareWithDevicesNow() {
     if (!takeOutSelected()) return;
     const QString id = m_folder->id;
     say(tr("Reading every device to compare it with version %1…").arg(id.left(10)));
-    m_jobs->compareWithDevices(m_folder->path(), [this, id](usecases::MachineChanges changes) {
-        showChanges(changes, tr("Version %1 → the devices now").arg(id.left(10)));
-        updateButtons();
-        Q_EMIT finished();
-    });
+    m_jobs->compareWithDevices(
+        m_folder->path(), [this, id](const usecases::MachineChanges& changes,
+                                     const usecases::MachineFolderRead& now) {
+            showChanges(changes, tr("Version %1 → the devices now").arg(id.left(10)));
+            // Drawn while the backup now is still there.
+            if (const Result<usecases::MachineFolderRead> version =
+                    usecases::readMachineFolder(m_folder->path()))
+                makeDrawings(changes, {*version, tr("version %1").arg(id.left(10))},
+                             {now, tr("the devices now")});
+            updateButtons();
+            Q_EMIT finished();
+        });
     updateButtons();
 }
 

@@ -3,7 +3,8 @@
 // Machine → History… (issue 37): the versions of the machine's archive
 // (model/machine/machine_archive.h) with who, when, why and what changed
 // in each; two versions - or one and the devices now - compared device by
-// device in each family's terms (a table: device, item, before, after);
+// device in each family's terms (a table: device, item, before, after;
+// where the family draws its backups, a drawing too);
 // Restore this version (each device's identity checked and the plan listed
 // before anything is written); Mark as released. The comparisons are the
 // use case's (comm/usecases/machine_history.h), as for `machine diff` and
@@ -52,9 +53,10 @@ public:
     QPushButton* releaseButton() const { return m_release; }
     QPushButton* drawButton() const { return m_draw; }
 
-    // The drawing of device `name`'s changes between the two versions
-    // compared last (hidden until shown); nullptr when its family draws
-    // none or it did not change.
+    // The drawing of device `name`'s changes between the two states
+    // compared last - two versions, or a version and the devices now
+    // (hidden until shown); nullptr when its family draws none or it did
+    // not change.
     QDialog* drawingOf(const QString& name) const { return m_drawings.value(name); }
     // Shows the drawing of the device of the difference table's current row.
     void showDrawing();
@@ -81,9 +83,16 @@ private:
     void showChanges(const usecases::MachineChanges& changes, const QString& heading);
     // The device of the difference table's current row.
     QString currentDevice() const;
-    // A drawing of each device that changed from `older` to `newer` whose family draws one.
-    void makeDrawings(const usecases::MachineChanges& changes, const usecases::VersionFolder& older,
-                      const usecases::VersionFolder& newer);
+    // A machine backup folder read and what the drawings call it
+    // ("version 1a2b3c4d5e", "the devices now").
+    struct State {
+        usecases::MachineFolderRead folder;
+        QString label;
+    };
+    // A drawing of each device that changed from `older` to `newer` whose
+    // family draws one, and the status line says which.
+    void makeDrawings(const usecases::MachineChanges& changes, const State& older,
+                      const State& newer);
     void dropDrawings();
     // The selected version taken out for the devices' jobs; false (said) when it failed.
     bool takeOutSelected();

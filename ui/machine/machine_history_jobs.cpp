@@ -4,11 +4,11 @@
 #include "machine_unit.h"
 
 #include "comm/device/device_connection.h"
-#include "model/machine/volatile_items.h"
 #include "ui/device_session.h"
 
 #include <QDir>
 #include <QPair>
+#include <QTemporaryDir>
 
 #include <memory>
 
@@ -80,55 +80,57 @@ void MachineHistoryJobs::forEachDevice(
     }
 }
 
-void MachineHistoryJobs::compareWithDevices(const QString& dir,
-                                            std::function<void(usecases::MachineChanges)> done) {
-    const Result<usecases::MachineFolderRead> folder = usecases::readMachineFolder(dir);
-    const MachineFile now = m_machine->file();
-    QStringList present;
-    for (const MachineUnit* unit : m_machine->units()) present << unit->name();
-    forEachDevice<usecases::DeviceVerified>(
-        dir, {},
-        [dir](const ManifestEntry& entry, comm::JobContext& job) {
-            return usecases::verifyMachineDevice(job, entry, dir, ReplacementConsent{});
-        },
-        [folder, now, present,
-         done](QList<QPair<QString, Result<usecases::DeviceVerified>>> answers) {
-            usecases::MachineChanges changes;
-            for (const auto& [name, verified] : answers) {
-                usecases::DeviceChange change;
-                change.name = name;
-                if (!verified) {
-                    change.kind = usecases::DeviceChange::Kind::NotSaved;
-                    change.why = verified.error().message;
-                } else if (!verified->checked.another.isEmpty()) {
-                    change.kind = usecases::DeviceChange::Kind::NotSaved;
-                    change.why = anotherDeviceWhy(
-                        verified->checked,
-                        QT_TRANSLATE_NOOP("cambench::MachineHistoryJobs", "It was not compared."));
-                } else {
-                    QStringList items;
-                    if (const MachineDevice* device = now.device(name))
-                        items << device->volatileItems;
-                    if (folder)
-                        if (const MachineDevice* device = folder->machine.device(name))
-                            items << device->volatileItems;
-                    change.differences = usecases::withoutVolatile(verified->comparison.differences,
-                                                                   items, &change.volatileLeftOut);
-                    change.kind = change.differences.isEmpty()
-                                      ? usecases::DeviceChange::Kind::Equal
-                                      : usecases::DeviceChange::Kind::Changed;
-                }
-                changes.devices << change;
-            }
-            // A device of the version that the machine no longer has is
-            // said, not left out.
-            if (folder)
-                for (const MachineDevice& device : folder->machine.devices)
-                    if (!present.contains(device.name))
-                        changes.devices << usecases::DeviceChange{
-                            device.name, usecases::DeviceChange::Kind::Removed, {}, 0, {}, {}};
-            done(changes);
-        });
+void MachineHistoryJobs::compareWithDevices(
+    const QString& dir, std::function<void(const usecases::MachineChanges& changes,
+                                           const usecases::MachineFolderRead& now)>
+                            done) {
+    // The backup now as `machine watch` takes it: one file per device and
+    // its manifest line; the machine file is the machine's.
+    auto backup = std::make_shared<QTemporaryDir>();
+    auto now = std::make_shared<usecases::MachineFolderRead>();
+    now->dir = backup->path();
+    now->machine = m_machine->file();
+    now->manifest.machine = m_machine->name();
+    const auto compare = [dir, backup, now, done] {
+        done(usecases::compareWithDevicesNow(dir, *now), *now);
+    };
+    const QList<MachineUnit*> units = m_machine->units();
+    for (const MachineUnit* unit : units) {
+        ManifestEntry entry;
+        entry.name = unit->name();
+        entry.family = unit->device().family;
+        entry.file = deviceFileName(unit->name());
+        if (!backup->isValid())
+            entry.result =
+                tr("failed: no temporary folder for the backup now: %1").arg(backup->errorString());
+        now->manifest.devices << entry;
+    }
+    if (!backup->isValid() || units.isEmpty()) {
+        compare();
+        return;
+    }
+    auto waiting = std::make_shared<int>(int(units.size()));
+    m_pending += *waiting;
+    for (qsizetype i = 0; i < units.size(); ++i) {
+        MachineUnit* unit = units.at(i);
+        const MachineDevice device = unit->device();
+        const QString into = backup->path();
+        unit->session()->run<comm::DeviceConnection, usecases::DeviceBackedUp>(
+            this, tr("%1: back up to compare").arg(unit->name()),
+            [device, into](comm::DeviceConnection&, comm::JobContext& job) {
+                return Result<usecases::DeviceBackedUp>(
+                    usecases::backUpMachineDevice(job, device, into, false));
+            },
+            [this, now, waiting, i, compare](Result<usecases::DeviceBackedUp> taken) {
+                ManifestEntry& entry = now->manifest.devices[i];
+                if (taken)
+                    entry = taken->entry;
+                else  // the job never ran (not connected, dropped by a STOP)
+                    entry.result = tr("failed: %1").arg(taken.error().message);
+                --m_pending;
+                if (--*waiting == 0) compare();
+            });
+    }
 }
 
 void MachineHistoryJobs::plan(const QString& dir, std::function<void(QList<DevicePlan>)> done) {

@@ -5,8 +5,8 @@
 // restore - each device on its own worker (its MachineUnit's session), all
 // at once, the answer once every device has answered. The machine use
 // cases (comm/usecases/machine_backup.h) do the work: the identity first
-// (another device is said and nothing is compared with or written to it),
-// then its family's part. Names no family.
+// (another device is said and nothing is read from, compared with or
+// written to it), then its family's part. Names no family.
 
 #include "comm/usecases/machine_backup.h"
 #include "comm/usecases/machine_history.h"
@@ -29,13 +29,20 @@ public:
 
     bool busy() const { return m_pending > 0; }
 
-    // Each device of the machine against its backup in the folder `dir`
-    // (read now, on its own line); a device the folder lacks is not
-    // compared, one only in the folder is taken out of the machine. The
-    // volatile items of the folder's and the machine's file left out.
-    // History → Compare with the devices now, and the machine report's
-    // changes since the released version.
-    void compareWithDevices(const QString& dir, std::function<void(usecases::MachineChanges)> done);
+    // Each device of the machine backed up now (on its own line; nothing
+    // is written to a device) into a temporary folder and compared with
+    // the version in the folder `dir` as `machine watch` compares them
+    // (usecases::compareWithDevicesNow): a device the version lacks is
+    // added, one only in the version taken out of the machine, the
+    // volatile items of both machine files left out. `done` gets the
+    // changes and the backup now - its folder's files are the devices as
+    // they are now, for a family's drawing; the folder is removed once
+    // `done` returns. History → Compare with the devices now, and the
+    // machine report's changes since the released version.
+    void compareWithDevices(const QString& dir,
+                            std::function<void(const usecases::MachineChanges& changes,
+                                               const usecases::MachineFolderRead& now)>
+                                done);
 
     // One device's plan of a restore: what it will write, or why nothing.
     struct DevicePlan {

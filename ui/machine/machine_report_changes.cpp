@@ -82,12 +82,13 @@ void MachineReportChanges::compare(Machine* machine, const QString& archive, QOb
     // The folder stays while the devices' jobs read it.
     auto folder = std::make_shared<usecases::VersionFolder>(std::move(taken).value());
     auto* jobs = new MachineHistoryJobs(machine, context);
-    jobs->compareWithDevices(folder->path(),
-                             [folder, jobs, said, done](usecases::MachineChanges changes) mutable {
-                                 said.changes = std::move(changes);
-                                 jobs->deleteLater();
-                                 done(said);
-                             });
+    jobs->compareWithDevices(
+        folder->path(), [folder, jobs, said, done](const usecases::MachineChanges& changes,
+                                                   const usecases::MachineFolderRead&) mutable {
+            said.changes = changes;
+            jobs->deleteLater();
+            done(said);
+        });
 }
 
 QString MachineReportChanges::html(const ReleasedChanges& changes) {

@@ -1,10 +1,11 @@
 #pragma once
 
 // The machine report's "Changes since the released version" (issue 37,
-// item 4): every device read now and compared with its backup in the
+// item 4): every device backed up now and compared with its backup in the
 // version released in the machine's archive - the comparison of History →
-// Compare with the devices now (MachineHistoryJobs::compareWithDevices),
-// volatile items left out - and said device by device. A device that was
+// Compare with the devices now and of `machine watch`
+// (MachineHistoryJobs::compareWithDevices), volatile items left out - and
+// said device by device. A device that was
 // not compared says so and why; never "equal" for it. Names no family.
 
 #include "comm/usecases/machine_history.h"

@@ -6,7 +6,9 @@
 // the devices now, and marks the first released - a tag that plain git
 // and the archive read back. Then the CamCon's programs changed between
 // two versions are drawn (the CamCon's FamilyGui::backupDrawing), one
-// program at a time, the MC200 keeping its table.
+// program at a time, the MC200 keeping its table; and those changed since
+// a version on the device, compared with the devices now (each backed up
+// into a temporary folder, as `machine watch` does).
 #include "shell_fixture.h"
 
 #include "comm/camcon/camcon_device.h"
@@ -267,7 +269,9 @@ private Q_SLOTS:
     // Two CamCon programs changed between the versions (and the MC200's
     // V12): the CamCon's row offers the drawing of exactly those programs,
     // their changed cams listed as Compare programs words them; the MC200
-    // has its table only.
+    // has its table only. A program changed on the device since the
+    // newer version: compared with the devices now, exactly that program
+    // and output is drawn, from the backup just read, which is removed.
     void camProgramsDrawn() {
         const std::unique_ptr<Archived> open =
             archived(press(), {{0, Track{1, {{10, 20}}}}, {3, Track{5, {{100, 200}}}}});
@@ -341,13 +345,49 @@ private Q_SLOTS:
                  QStringList{QStringLiteral("output 5: cam 100..200 only in A")});
         QCOMPARE(view->view()->shownOutputs(), QList<int>{5});
 
-        // Compared with the devices now, nothing is drawn (no second file).
-        selectVersions(dialog.versionList(), {1});
+        // The second against the devices now, after program 3's output 6
+        // got a cam on the device: that program and output drawn, from the
+        // backup just read (program 0 is the same as in the version).
+        QVERIFY(writeCams(cams, 3, Track{6, {{50, 70}}}));
+        selectVersions(dialog.versionList(), {0});
         QSignalSpy finished(&dialog, &MachineHistoryDialog::finished);
+        QTemporaryDir temporary;
+        const bool tmpWasSet = qEnvironmentVariableIsSet("TMPDIR");
+        const QByteArray tmpBefore = qgetenv("TMPDIR");
+        qputenv("TMPDIR", QFile::encodeName(temporary.path()));
         dialog.compareNowButton()->click();
-        QVERIFY(finished.wait(kDeviceTimeoutMs));
-        QVERIFY(!dialog.drawingOf(QStringLiteral("cams")));
-        QVERIFY(!dialog.drawButton()->isEnabled());
+        const bool answered = finished.wait(kDeviceTimeoutMs);
+        if (tmpWasSet)
+            qputenv("TMPDIR", tmpBefore);
+        else
+            qunsetenv("TMPDIR");
+        QVERIFY(answered);
+        const QStringList now = rowsOf(dialog.differenceTable());
+        QCOMPARE(now, (QStringList{QStringLiteral("cams|program 3, output 6 cam||50–70|"
+                                                  "program 3, output 6: cam 50–70 added"),
+                                   QStringLiteral("press-plc||||equal")}));
+        QVERIFY2(dialog.statusLabel()->text().contains(QLatin1String("Drawn as well: cams")),
+                 qPrintable(dialog.statusLabel()->text()));
+        QVERIFY(!dialog.drawingOf(QStringLiteral("press-plc")));
+        table->setCurrentCell(rowOf(QStringLiteral("cams")), 0);
+        QVERIFY(dialog.drawButton()->isEnabled());
+        dialog.drawButton()->click();
+        QDialog* drawnNow = dialog.drawingOf(QStringLiteral("cams"));
+        QVERIFY(QTest::qWaitForWindowExposed(drawnNow));
+        QCOMPARE(drawnNow->windowTitle(),
+                 QStringLiteral("cams: version %1 → the devices now").arg(second->id.left(10)));
+        auto* viewNow = drawnNow->findChild<BackupProgramsView*>();
+        QVERIFY(viewNow);
+        QCOMPARE(viewNow->programs(), QList<int>{3});
+        QCOMPARE(textsOf(viewNow->differenceList()),
+                 QStringList{QStringLiteral("output 6: cam 50..70 only in B")});
+        QCOMPARE(viewNow->view()->shownOutputs(), QList<int>{6});
+        QVERIFY2(viewNow->summary().contains(QLatin1String("B: the devices now, program 3")),
+                 qPrintable(viewNow->summary()));
+        // The backup read for it is removed: of the temporary folders only
+        // the version's is left, which the dialog keeps for its devices' jobs.
+        QCOMPARE(QDir(temporary.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot).size(),
+                 1);
     }
 
     // Machine report with the changes since the released version: the
