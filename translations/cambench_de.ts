@@ -5056,10 +5056,6 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>Unterschiede &amp;zeichnen…</translation>
     </message>
     <message>
-        <source>The device&apos;s changes between the two versions compared, drawn in its family&apos;s terms (a double click on its row does the same); a table is all there is for a family that draws none, and for a comparison with the devices now.</source>
-        <translation>Die Änderungen des Geräts zwischen den beiden verglichenen Versionen, gezeichnet in den Begriffen seiner Gerätefamilie (ein Doppelklick auf seine Zeile tut dasselbe); für eine Gerätefamilie ohne Zeichnung und für einen Vergleich mit den Geräten jetzt gibt es nur die Tabelle.</translation>
-    </message>
-    <message>
         <source>version %1</source>
         <translation>Version %1</translation>
     </message>
@@ -5070,6 +5066,14 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Drawn as well: %1 (Draw the differences…, or a double click on its row).</source>
         <translation>Auch gezeichnet: %1 (Unterschiede zeichnen… oder ein Doppelklick auf seine Zeile).</translation>
+    </message>
+    <message>
+        <source>The device&apos;s changes between the two states compared (two versions, or a version and the devices now), drawn in its family&apos;s terms (a double click on its row does the same); a table is all there is for a family that draws none.</source>
+        <translation>Die Änderungen des Geräts zwischen den beiden verglichenen Ständen (zwei Versionen oder eine Version und die Geräte jetzt), gezeichnet in den Begriffen seiner Gerätefamilie (ein Doppelklick auf seine Zeile tut dasselbe); für eine Gerätefamilie ohne Zeichnung gibt es nur die Tabelle.</translation>
+    </message>
+    <message>
+        <source>the devices now</source>
+        <translation>die Geräte jetzt</translation>
     </message>
 </context>
 <context>
@@ -5099,16 +5103,24 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
         <translation>%1: %2</translation>
     </message>
     <message>
-        <source>It was not compared.</source>
-        <translation>Es wurde nicht verglichen.</translation>
-    </message>
-    <message>
         <source>Nothing will be written to it.</source>
         <translation>Es wird nichts darauf geschrieben.</translation>
     </message>
     <message>
         <source>Nothing was written to it.</source>
         <translation>Es wurde nichts darauf geschrieben.</translation>
+    </message>
+    <message>
+        <source>failed: no temporary folder for the backup now: %1</source>
+        <translation>fehlgeschlagen: kein temporärer Ordner für die Sicherung jetzt: %1</translation>
+    </message>
+    <message>
+        <source>%1: back up to compare</source>
+        <translation>%1: sichern zum Vergleich</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>fehlgeschlagen: %1</translation>
     </message>
 </context>
 <context>
@@ -12150,6 +12162,18 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>only the differing objects are written, each read back; control words and functions never from a file</source>
         <translation>nur die abweichenden Objekte werden geschrieben, jedes zurückgelesen; Steuerwörter und Funktionen nie aus einer Datei</translation>
+    </message>
+    <message>
+        <source>not saved in the version%1</source>
+        <translation>in der Version nicht gesichert%1</translation>
+    </message>
+    <message>
+        <source>its backup now %1</source>
+        <translation>die Sicherung jetzt: %1</translation>
+    </message>
+    <message>
+        <source>not read from the device now</source>
+        <translation>jetzt nicht vom Gerät gelesen</translation>
     </message>
 </context>
 </TS>

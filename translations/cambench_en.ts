@@ -5049,10 +5049,6 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The device&apos;s changes between the two versions compared, drawn in its family&apos;s terms (a double click on its row does the same); a table is all there is for a family that draws none, and for a comparison with the devices now.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>version %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5062,6 +5058,14 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Drawn as well: %1 (Draw the differences…, or a double click on its row).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device&apos;s changes between the two states compared (two versions, or a version and the devices now), drawn in its family&apos;s terms (a double click on its row does the same); a table is all there is for a family that draws none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the devices now</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5092,15 +5096,23 @@ Read the device again or use Compare with device; your edits are kept.</source>
         <translation type="unfinished">%1: %2</translation>
     </message>
     <message>
-        <source>It was not compared.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Nothing will be written to it.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Nothing was written to it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed: no temporary folder for the backup now: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: back up to compare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -12139,6 +12151,18 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>only the differing objects are written, each read back; control words and functions never from a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not saved in the version%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its backup now %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not read from the device now</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
