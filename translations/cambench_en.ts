@@ -1227,9 +1227,9 @@ Restore it here only if this device replaces the one the backup was taken from (
     </message>
     <message numerus="yes">
         <source>%n difference(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n difference</numerusform>
+            <numerusform>%n differences</numerusform>
         </translation>
     </message>
     <message>
@@ -1238,9 +1238,9 @@ Restore it here only if this device replaces the one the backup was taken from (
     </message>
     <message numerus="yes">
         <source>A: %1, program %2. B: %3, program %2. %n difference(s) of cams.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>A: %1, program %2. B: %3, program %2. %n difference of cams.</numerusform>
+            <numerusform>A: %1, program %2. B: %3, program %2. %n differences of cams.</numerusform>
         </translation>
     </message>
     <message>
@@ -5223,16 +5223,16 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message numerus="yes">
         <source>equal to the released version (%n change(s) of volatile items left out)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>equal to the released version (%n change of volatile items left out)</numerusform>
+            <numerusform>equal to the released version (%n changes of volatile items left out)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>DIFFERS: %n difference(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>DIFFERS: %n difference</numerusform>
+            <numerusform>DIFFERS: %n differences</numerusform>
         </translation>
     </message>
     <message>

@@ -3,11 +3,16 @@
 #include <QScreen>
 #include <QWidget>
 
+#include <algorithm>
+
 namespace cambench {
+
+namespace {
+constexpr int kFrameAllowance = 60;  // title bar and borders of the window manager
+}  // namespace
 
 void showFitting(QWidget& window, bool restored) {
     const QScreen* screen = window.screen();
-    constexpr int kFrameAllowance = 60;  // title bar and borders of the window manager
     if (!restored && screen &&
         (screen->availableGeometry().height() < window.height() + kFrameAllowance ||
          screen->availableGeometry().width() < window.width())) {
@@ -15,6 +20,15 @@ void showFitting(QWidget& window, bool restored) {
         return;
     }
     window.show();
+}
+
+void resizeWithinScreen(QWidget& window, int width, int height) {
+    if (const QScreen* screen = window.screen()) {
+        const QRect room = screen->availableGeometry();
+        width = std::min(width, room.width());
+        height = std::min(height, room.height() - kFrameAllowance);
+    }
+    window.resize(width, height);
 }
 
 }  // namespace cambench

@@ -10,4 +10,9 @@ namespace cambench {
 // `restored`: the size is the person's own from the last run; kept as is.
 void showFitting(QWidget& window, bool restored);
 
+// Resizes a window (a dialog) to `width` x `height`, or to what its screen
+// has room for, the window manager's frame included: a dialog taller than
+// a laptop's 768 pixels hid its buttons below the screen's edge.
+void resizeWithinScreen(QWidget& window, int width, int height);
+
 }  // namespace cambench

@@ -6,6 +6,8 @@
 
 #include "model/machine/machine_backup_folder.h"
 #include "ui/family_gui.h"
+#include "ui/report_pages.h"
+#include "ui/window_fit.h"
 
 #include <QDateTime>
 #include <QDialogButtonBox>
@@ -16,7 +18,6 @@
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
-#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSplitter>
@@ -28,8 +29,9 @@ namespace cambench {
 
 namespace {
 
+// As the printed report and `machine history` write it, in every language.
 QString when(const QDateTime& time) {
-    return QLocale().toString(time.toLocalTime(), QLocale::ShortFormat);
+    return reportTime(time);
 }
 
 // The word the table's last column shows for a device without differences.
@@ -133,7 +135,7 @@ MachineHistoryDialog::MachineHistoryDialog(Machine* machine, const QString& arch
     else
         say(opened.error().message);
     reload();
-    resize(1100, 760);
+    resizeWithinScreen(*this, 1100, 760);
 }
 
 MachineHistoryDialog::~MachineHistoryDialog() = default;
@@ -229,7 +231,7 @@ void MachineHistoryDialog::makeDrawings(const usecases::MachineChanges& changes,
         auto* layout = new QVBoxLayout(drawing);
         layout->addWidget(drawn, 1);
         layout->addWidget(close);
-        drawing->resize(1000, 600);
+        resizeWithinScreen(*drawing, 1000, 600);
         m_drawings.insert(change.name, drawing);
     }
     if (!m_drawings.isEmpty())

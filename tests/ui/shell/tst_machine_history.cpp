@@ -39,6 +39,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -222,6 +223,9 @@ private Q_SLOTS:
 
         MachineHistoryDialog dialog(machine, archive->dir());
         dialog.show();
+        // Within the screen, its buttons included (it was 760 high: on a
+        // laptop's 768 pixels its buttons were below the edge).
+        QVERIFY(dialog.frameGeometry().height() <= dialog.screen()->availableGeometry().height());
         QTreeWidget* list = dialog.versionList();
         QCOMPARE(list->topLevelItemCount(), 2);
         QTreeWidgetItem* newest = list->topLevelItem(0);
