@@ -13,7 +13,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
-#include <QScrollArea>
 #include <QSet>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -86,32 +85,19 @@ BackupProgramsView::BackupProgramsView(Project older, QString olderLabel, Projec
     m_view->setFoldUnchanged(true);
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_list->setObjectName(QStringLiteral("differenceList"));
 
     auto* top = new QHBoxLayout;
     top->addWidget(new QLabel(tr("Programs that differ:")));
     top->addWidget(m_choice, 1);
     top->addWidget(m_fold);
-    auto* scroll = new QScrollArea;
-    scroll->setWidget(m_view);
-    scroll->setWidgetResizable(true);
-    auto* splitter = new QSplitter;
-    splitter->addWidget(scroll);
-    splitter->addWidget(m_list);
-    splitter->setStretchFactor(0, 3);
-    splitter->setStretchFactor(1, 1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(top);
     layout->addWidget(m_summary);
-    layout->addWidget(splitter, 1);
+    layout->addWidget(ProgramDiffView::besideList(m_view, m_list, m_fold), 1);
     layout->addLayout(ProgramDiffView::legend(palette()));
 
     connect(m_choice, &QComboBox::currentIndexChanged, this, &BackupProgramsView::showChoice);
-    connect(m_fold, &QCheckBox::toggled, m_view, &ProgramDiffView::setFoldUnchanged);
-    connect(m_list, &QListWidget::currentRowChanged, m_view, &ProgramDiffView::setSelected);
-    connect(m_view, &ProgramDiffView::differenceClicked, m_list,
-            [this](int row) { m_list->setCurrentRow(row); });
     showChoice(m_choice->currentIndex());
 }
 

@@ -25,7 +25,6 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
@@ -64,15 +63,7 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
 
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    auto* scroll = new QScrollArea;
-    scroll->setWidget(m_view);
-    scroll->setWidgetResizable(true);
-    m_list->setObjectName(QStringLiteral("differenceList"));
-    auto* splitter = new QSplitter;
-    splitter->addWidget(scroll);
-    splitter->addWidget(m_list);
-    splitter->setStretchFactor(0, 3);
-    splitter->setStretchFactor(1, 1);
+    QSplitter* splitter = ProgramDiffView::besideList(m_view, m_list, m_fold);
     splitter->setSizes({720, 340});
 
     auto* actions = new QHBoxLayout;
@@ -101,10 +92,6 @@ CompareProgramsDialog::CompareProgramsDialog(DeviceSession* session, Workspace* 
     connect(m_list, &QListWidget::itemChanged, this, &CompareProgramsDialog::updateApply);
     connect(m_session, &DeviceSession::stateChanged, this, &CompareProgramsDialog::updateApply);
     updateApply();
-    connect(m_fold, &QCheckBox::toggled, m_view, &ProgramDiffView::setFoldUnchanged);
-    connect(m_list, &QListWidget::currentRowChanged, m_view, &ProgramDiffView::setSelected);
-    connect(m_view, &ProgramDiffView::differenceClicked, m_list,
-            [this](int row) { m_list->setCurrentRow(row); });
 }
 
 void CompareProgramsDialog::buildSide(int side, QWidget* box) {

@@ -2,13 +2,17 @@
 
 #include "ui/camcon/cameditor/diagram_layout.h"
 
+#include <QCheckBox>
 #include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QListWidget>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
+#include <QScrollArea>
 #include <QSet>
+#include <QSplitter>
 
 namespace cambench {
 
@@ -56,6 +60,23 @@ QString legendText(const char* text) {
 }
 
 }  // namespace
+
+QSplitter* ProgramDiffView::besideList(ProgramDiffView* view, QListWidget* list, QCheckBox* fold) {
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(view);
+    scroll->setWidgetResizable(true);
+    list->setObjectName(QStringLiteral("differenceList"));
+    auto* splitter = new QSplitter;
+    splitter->addWidget(scroll);
+    splitter->addWidget(list);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 1);
+    connect(fold, &QCheckBox::toggled, view, &ProgramDiffView::setFoldUnchanged);
+    connect(list, &QListWidget::currentRowChanged, view, &ProgramDiffView::setSelected);
+    connect(view, &ProgramDiffView::differenceClicked, list,
+            [list](int row) { list->setCurrentRow(row); });
+    return splitter;
+}
 
 QLayout* ProgramDiffView::legend(const QPalette& palette) {
     auto* legend = new QHBoxLayout;

@@ -6,7 +6,10 @@
 #include <QMap>
 #include <QWidget>
 
+class QCheckBox;
 class QLayout;
+class QListWidget;
+class QSplitter;
 class QPainter;
 
 namespace cambench {
@@ -36,6 +39,10 @@ public:
                             const QPalette& palette);
     // The diagram's legend in a row: each swatch and what it means.
     static QLayout* legend(const QPalette& palette);
+    // `view` in a scroll area beside `list` (the differences it draws, in
+    // its order), a click on either selecting the difference in both, and
+    // `fold` hiding the outputs without one: as every comparison shows it.
+    static QSplitter* besideList(ProgramDiffView* view, QListWidget* list, QCheckBox* fold);
 
     QSize sizeHint() const override;
 

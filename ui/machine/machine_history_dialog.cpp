@@ -29,11 +29,6 @@ namespace cambench {
 
 namespace {
 
-// As the printed report and `machine history` write it, in every language.
-QString when(const QDateTime& time) {
-    return reportTime(time);
-}
-
 // The word the table's last column shows for a device without differences.
 QString deviceState(const usecases::DeviceChange& change) {
     using Kind = usecases::DeviceChange::Kind;
@@ -158,7 +153,8 @@ void MachineHistoryDialog::reload() {
         auto* item = new QTreeWidgetItem(m_versions);
         item->setText(Version, version.shortId());
         item->setData(Version, Qt::UserRole, version.id);
-        item->setText(Time, when(version.time));
+        // As the printed report and `machine history` write it, in every language.
+        item->setText(Time, reportTime(version.time));
         item->setText(Author, version.author);
         item->setText(Note, version.note);
         QStringList marks = version.releases;
