@@ -6,6 +6,7 @@
 #include "family_gui.h"
 #include "sentence.h"
 
+#include "ui/protocols/protocol_options_form.h"
 #include "ui/protocols/protocol_settings_widget.h"
 
 #include "comm/device/family_registry.h"
@@ -359,13 +360,9 @@ const comm::ProtocolInfo* ConnectionPage::currentProtocol() const {
 }
 
 QString ConnectionPage::protocolTitle(const comm::ProtocolInfo& info) {
-    if (info.id == QLatin1String("standard")) return tr("Standard (point to point)");
-    if (info.id == QLatin1String("multiuser")) return tr("Multiuser (RS485 bus)");
-    if (info.id == QLatin1String("3964r-n96")) return tr("Table interface, 3964R n96 (9600 8N1)");
-    if (info.id == QLatin1String("3964r-e38")) return tr("Table interface, 3964R e38 (38400 8E1)");
-    if (info.id == QLatin1String("cambus")) return tr("Cam-BUS (RS485 token bus)");
     // Registered before any translator was installed: translated here.
-    return QCoreApplication::translate("cambench::comm", info.title.toUtf8().constData());
+    const QString title = info.choiceTitle.isEmpty() ? info.title : info.choiceTitle;
+    return QCoreApplication::translate("cambench::comm", title.toUtf8().constData());
 }
 
 comm::ConnectionSettings ConnectionPage::connectionSettings() const {
@@ -394,7 +391,12 @@ comm::ProtocolSettingsPtr ConnectionPage::protocolSettings() const {
 void ConnectionPage::showProtocolWidget() {
     delete m_protocolWidget;
     const comm::ProtocolInfo* info = currentProtocol();
-    m_protocolWidget = info ? ProtocolWidgetRegistry::instance().create(info->id) : nullptr;
+    if (!info) return;
+    // A protocol shows a widget of its own where it has one, else the
+    // fields of the options it declares.
+    m_protocolWidget = ProtocolWidgetRegistry::instance().create(info->id);
+    if (!m_protocolWidget && (!info->options.isEmpty() || !info->note.isEmpty()))
+        m_protocolWidget = new ProtocolOptionsForm(*info);
     if (!m_protocolWidget) return;
     m_protocolBox->addWidget(m_protocolWidget);
     connect(m_protocolWidget, &ProtocolSettingsWidget::protocolRequested, this,

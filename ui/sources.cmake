@@ -49,6 +49,8 @@ target_sources(cambench_ui PRIVATE
   replace_edits_question.cpp
   last_write_report.h
   last_write_report.cpp
+  protocols/protocol_options_form.h
+  protocols/protocol_options_form.cpp
   protocols/protocol_settings_widget.h
   protocols/protocol_settings_widget.cpp
   connection_page.h

@@ -48,13 +48,7 @@ comm::ConnectionSettings GlobalOptions::connection() const {
 }
 
 comm::ProtocolSettingsPtr GlobalOptions::protocolSettings() const {
-    std::unique_ptr<comm::ProtocolSettings> settings = protocolInfo().makeSettings();
-    QVariantMap map{{QStringLiteral("device"), device},
-                    {QStringLiteral("pcNumber"), pcNumber},
-                    {QStringLiteral("timeoutMs"), timeoutMs}};
-    if (!variant.isEmpty()) map.insert(QStringLiteral("variant"), variant);
-    settings->fromMap(map);
-    return comm::ProtocolSettingsPtr(std::move(settings));
+    return comm::ProtocolSettingsPtr(comm::settingsWith(protocolInfo(), protocolValues, timeoutMs));
 }
 
 Result<int> parseIntArgument(const QString& text, const QString& what, int min, int max) {
@@ -76,10 +70,15 @@ namespace {
 const QStringList& shellOptions() {
     static const QStringList names = {QStringLiteral("--port"),     QStringLiteral("--family"),
                                       QStringLiteral("--protocol"), QStringLiteral("--baud"),
-                                      QStringLiteral("--device"),   QStringLiteral("--pc-number"),
-                                      QStringLiteral("--timeout"),  QStringLiteral("--log"),
-                                      QStringLiteral("--variant"),  QStringLiteral("--address")};
+                                      QStringLiteral("--timeout"),  QStringLiteral("--log")};
     return names;
+}
+
+// The protocol option `arg` names ("device" of "--device"), or empty.
+QString protocolOptionOf(const QString& optionWord) {
+    if (!optionWord.startsWith(QLatin1String("--"))) return {};
+    const QString name = optionWord.mid(2);
+    return comm::protocolOptionNames().contains(name) ? name : QString();
 }
 
 // An option word, not a value: "-5" is a number and "-" stdin or stdout.
@@ -105,23 +104,12 @@ struct FamilyClaim {
 
 // Each family a family-specific word of the command line names: its
 // protocol, the protocol its port names, the command, a family's option,
-// --address, --variant.
+// a protocol's option.
 struct Given {
     QString family;
     QString protocol;
     QStringList familyOptions;  // "--axes", in order
-    bool address = false;
-    bool variant = false;
 };
-
-// The families that have a protocol for which `fits` holds.
-QStringList familiesWithProtocol(const std::function<bool(const comm::ProtocolInfo&)>& fits) {
-    QStringList families;
-    for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all())
-        if (fits(*protocol) && !families.contains(protocol->familyId))
-            families << protocol->familyId;
-    return families;
-}
 
 QList<FamilyClaim> familyClaims(const GlobalOptions& options, const Given& given,
                                 const QString& portProtocol) {
@@ -148,34 +136,16 @@ QList<FamilyClaim> familyClaims(const GlobalOptions& options, const Given& given
         claims << FamilyClaim{family,
                               QStringLiteral("%1 is an option of the %2 family").arg(name, family)};
     }
-    if (given.address) {
-        const QStringList families = familiesWithProtocol(
-            [](const comm::ProtocolInfo& protocol) { return protocol.numbersAreAddresses; });
-        if (families.size() == 1)
-            claims << FamilyClaim{
-                families.first(),
-                QStringLiteral("--address is for a bus of the %1 family").arg(families.first())};
-    }
-    if (given.variant) {
-        const QStringList families =
-            familiesWithProtocol([&options](const comm::ProtocolInfo& protocol) {
-                return protocol.makeSettings()->variantKeys().contains(options.variant);
-            });
+    // An option only one family's protocols take (--address 7: a drive's
+    // address; --variant mc200v2: a controller of the mc1 family).
+    for (const auto& [name, value] : options.protocolValues) {
+        const QStringList families = comm::familiesTaking(name, value);
         if (families.size() == 1)
             claims << FamilyClaim{families.first(),
-                                  QStringLiteral("--variant %1 is a variant of the %2 family")
-                                      .arg(options.variant, families.first())};
+                                  QStringLiteral("--%1 %2 is for a protocol of the %3 family")
+                                      .arg(name, value, families.first())};
     }
     return claims;
-}
-
-// The protocol of `family` whose devices have addresses (Compax3: RS485).
-QString addressProtocol(const QString& family) {
-    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
-        if (info->familyId == family && info->isBus && info->numbersAreAddresses) return info->id;
-    for (const comm::ProtocolInfo* info : comm::ProtocolRegistry::instance().all())
-        if (info->familyId == family && info->isBus) return info->id;
-    return {};
 }
 
 // Sets the value of shell option `name`.
@@ -197,9 +167,6 @@ Status applyShellOption(GlobalOptions& options, Given& given, const QString& nam
         given.protocol = info->id;
     } else if (name == QLatin1String("--log")) {
         options.logFile = value;
-    } else if (name == QLatin1String("--variant")) {
-        options.variant = value.trimmed().toLower();
-        given.variant = true;
     } else {
         struct Range {
             const char* name;
@@ -208,9 +175,6 @@ Status applyShellOption(GlobalOptions& options, Given& given, const QString& nam
             int* target;
         };
         const Range ranges[] = {{"--baud", 50, 4000000, &options.baud},
-                                {"--device", 0, 63, &options.device},
-                                {"--address", 0, 99, &options.device},
-                                {"--pc-number", 0, 63, &options.pcNumber},
                                 {"--timeout", 10, 600000, &options.timeoutMs}};
         for (const Range& range : ranges) {
             if (name != QLatin1String(range.name)) continue;
@@ -218,7 +182,6 @@ Status applyShellOption(GlobalOptions& options, Given& given, const QString& nam
             if (!number) return number.error();
             *range.target = *number;
             if (range.target == &options.timeoutMs) options.timeoutGiven = true;
-            if (name == QLatin1String("--address")) given.address = true;
         }
     }
     return success();
@@ -248,18 +211,17 @@ Status resolveFamilyAndProtocol(GlobalOptions& options, const Given& given) {
         options.protocol = given.protocol;
     } else if (!portProtocol.isEmpty()) {
         options.protocol = portProtocol;
-    } else if (given.address) {
-        options.protocol = addressProtocol(options.family);
-        if (options.protocol.isEmpty())
-            return usageError(QStringLiteral("--address is for devices on a bus; the %1 family "
-                                             "has none")
-                                  .arg(options.family));
-    } else if (group && !group->defaultProtocol.isEmpty()) {
-        options.protocol = group->defaultProtocol;
     } else {
-        options.protocol = (*family)->defaultProtocol;
+        const QString preferred = group && !group->defaultProtocol.isEmpty()
+                                      ? group->defaultProtocol
+                                      : (*family)->defaultProtocol;
+        const Result<const comm::ProtocolInfo*> taking = comm::protocolTaking(
+            options.family, preferred, options.protocolValues, comm::commandLineOption);
+        if (!taking) return taking.error();
+        options.protocol = (*taking)->id;
     }
-    return success();
+    return comm::checkOptionValues(options.protocolInfo(), options.protocolValues,
+                                   comm::commandLineOption);
 }
 
 }  // namespace
@@ -287,11 +249,14 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
         bool hasInline = false;
         const QString name = optionName(arg, &inlineValue, &hasInline);
         const bool shell = shellOptions().contains(name);
-        if (shell || commands.option(name)) {
+        const QString protocolOption = protocolOptionOf(name);
+        if (shell || !protocolOption.isEmpty() || commands.option(name)) {
             if (!hasInline && i + 1 >= args.size())
                 return usageError(QStringLiteral("%1 needs a value").arg(name));
             const QString value = hasInline ? inlineValue : args.at(++i);
-            if (shell) {
+            if (!protocolOption.isEmpty()) {
+                options.protocolValues << qMakePair(protocolOption, value);
+            } else if (shell) {
                 if (const Status applied = applyShellOption(options, given, name, value); !applied)
                     return applied.error();
             } else {
@@ -316,25 +281,6 @@ Result<GlobalOptions> parseGlobalOptions(const QStringList& args) {
     options.commandArgs = after + before + familyArgs;
     if (const Status resolved = resolveFamilyAndProtocol(options, given); !resolved)
         return resolved.error();
-    if (given.address && (!options.isBus() || options.device > options.protocolInfo().lastDevice))
-        return usageError(
-            options.isBus()
-                ? QStringLiteral("--address of the %1 protocol is 0..%2, not %3")
-                      .arg(options.protocol)
-                      .arg(options.protocolInfo().lastDevice)
-                      .arg(options.device)
-                : QStringLiteral("--address is for devices on a bus; the %1 protocol has none")
-                      .arg(options.protocol));
-    if (!options.variant.isEmpty()) {
-        const QStringList variants = options.protocolInfo().makeSettings()->variantKeys();
-        if (variants.isEmpty())
-            return usageError(QStringLiteral("--variant is for families with variants; the %1 "
-                                             "protocol has none")
-                                  .arg(options.protocol));
-        if (!variants.contains(options.variant))
-            return usageError(QStringLiteral("--variant must be one of %1, not \"%2\"")
-                                  .arg(variants.join(QStringLiteral(", ")), options.variant));
-    }
     return options;
 }
 
@@ -404,6 +350,58 @@ Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what) 
     return numbers;
 }
 
+namespace {
+
+// The --help lines of the options protocols declare: each name once, with
+// its help, its range or words, and the protocols that take it.
+QString protocolOptionsHelp() {
+    QString lines;
+    for (const QString& name : comm::protocolOptionNames()) {
+        const comm::ProtocolOption* first = nullptr;
+        QStringList protocols;
+        for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all()) {
+            const comm::ProtocolOption* option = comm::declaredOption(*protocol, name);
+            if (!option || option->name != name) continue;  // an alias: listed with its name
+            if (!first) first = option;
+            protocols << protocol->id;
+        }
+        if (!first) continue;
+        const QString values =
+            first->isChoice()
+                ? QStringLiteral("%1 (default %2)")
+                      .arg(first->choices.join(QStringLiteral(", ")), first->choices.first())
+                : QStringLiteral("%1..%2 (default %3)")
+                      .arg(first->min)
+                      .arg(first->max)
+                      .arg(first->fallback);
+        const QString word = QStringLiteral("--%1 %2").arg(name, first->isChoice() ? "V" : "N");
+        lines +=
+            QStringLiteral("  %1%2\n                %3; %4%5\n")
+                .arg(word.leftJustified(14), first->help, values,
+                     protocols.join(QStringLiteral(", ")),
+                     first->aliases.isEmpty() ? QString()
+                                              : QStringLiteral("; also --") +
+                                                    first->aliases.join(QStringLiteral(", --")));
+    }
+    return lines;
+}
+
+// "[--device N] [--pc-number N] ..." for the usage line.
+QString protocolOptionsUsage() {
+    QStringList words;
+    for (const QString& name : comm::protocolOptionNames()) {
+        for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all()) {
+            const comm::ProtocolOption* option = comm::declaredOption(*protocol, name);
+            if (!option || option->name != name) continue;
+            words << QStringLiteral("[--%1 %2]").arg(name, option->isChoice() ? "V" : "N");
+            break;
+        }
+    }
+    return words.join(u' ');
+}
+
+}  // namespace
+
 QString usageText() {
     QStringList families;
     for (const comm::FamilyInfo* family : comm::FamilyRegistry::instance().all()) {
@@ -418,15 +416,15 @@ QString usageText() {
     return QStringLiteral(
                "Usage: cambench-cli [--port PORT] [--family FAMILY] [--protocol PROTOCOL] [--baud "
                "N]\n"
-               "                    [--device N] [--address N] [--pc-number N] [--variant V]\n"
+               "                    %4\n"
                "                    [--timeout MS] [--log FILE] COMMAND\n"
                "       cambench-cli help COMMAND      the lines below about COMMAND\n"
                "\n"
                "Every option may come before or after COMMAND. The family follows from the\n"
-               "command (mc: mc1, c3: compax3), from a family's own option (--address,\n"
-               "--variant, --axes, --dictionary ...), from --protocol or from a port that names\n"
-               "its protocol (sim:protocol=3964r-n96); two that name different families are an\n"
-               "error naming both.\n"
+               "command (mc: mc1, c3: compax3), from a family's own option (--axes,\n"
+               "--dictionary ...) or one only its protocols take (below), from --protocol or\n"
+               "from a port that names its protocol (sim:protocol=3964r-n96); two that name\n"
+               "different families are an error naming both.\n"
                "\n"
                "PORT: /dev/ttyUSB0, COM3, tcp://HOST:PORT, or sim (built-in simulated device; the "
                "default)\n"
@@ -435,11 +433,7 @@ QString usageText() {
                "  --protocol    a protocol of the family (default: its first):\n"
                "                %2\n"
                "  --baud N      line speed; overrides the protocol's default\n"
-               "  --device N    bus protocols: device number 0..63 (default 0)\n"
-               "  --address N   a drive's bus address (Compax3 on RS485: 0..99, compax3-rs485)\n"
-               "  --pc-number N this PC's number on a Multiuser bus or Cam-BUS 0..63 (default 63)\n"
-               "  --variant V   the device's variant, for families that have them (see below);\n"
-               "                auto (the default) probes and names what it found\n"
+               "%5"
                "  --timeout MS  reply timeout per attempt (default: derived from the baud rate)\n"
                "  --log FILE    write the traffic (hex and ASCII, user numbers masked) to FILE\n"
                "\n"
@@ -513,7 +507,7 @@ QString usageText() {
                "            file or value, or one that does not fit the device\n")
         .arg(families.join(QStringLiteral(";\n                ")),
              protocols.join(QStringLiteral("\n                ")),
-             CommandRegistry::instance().help());
+             CommandRegistry::instance().help(), protocolOptionsUsage(), protocolOptionsHelp());
 }
 
 }  // namespace cambench::cli

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "comm/device/protocol_options.h"
 #include "comm/device/protocol_registry.h"
 #include "model/result.h"
 
@@ -13,19 +14,21 @@ namespace cambench::cli {
 struct GlobalOptions {
     QString port = QStringLiteral("sim");
     // A FamilyRegistry id: the one --family, --protocol, the port, the
-    // command, a family's option, --address or --variant names; without
+    // command, a family's option or a protocol's option names; without
     // any, FamilyRegistry::defaultId().
     QString family;
     // A ProtocolRegistry id of `family`: --protocol, else the one the port
-    // names, the bus --address asks for, the command's or the family's default.
+    // names, else the command's or the family's default when it takes the
+    // protocol options given, else the family's first that does (--address
+    // asks for a bus whose devices have addresses).
     QString protocol;
-    int baud = 0;    // 0 = the protocol's default
-    int device = 0;  // --device (CamCon Multiuser, 0..63) or --address (Compax3 RS485, 0..99)
-    int pcNumber = 63;
+    int baud = 0;       // 0 = the protocol's default
     int timeoutMs = 0;  // 0 = derived from the line
     bool timeoutGiven = false;
     QString logFile;
-    QString variant;  // --variant: a key of the protocol's variantKeys(); empty: its default
+    // The options protocols declare (--device, --pc-number, --address,
+    // --variant: ProtocolInfo::options), as typed, checked against `protocol`.
+    comm::OptionValues protocolValues;
     QString command;
     // The command's own words and options (those given before COMMAND too)
     // and the families' options (--axes, --dictionary: CommandRegistry::option).

@@ -45,7 +45,9 @@ std::optional<Error> CliSession::interrupted() {
 
 QString CliSession::where() const {
     if (m_options.isBus()) {
-        return QStringLiteral("%1 (device %2)").arg(m_options.port).arg(m_options.device);
+        return QStringLiteral("%1 (device %2)")
+            .arg(m_options.port)
+            .arg(m_options.protocolSettings()->device());
     }
     return m_options.port;
 }

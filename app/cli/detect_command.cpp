@@ -32,13 +32,11 @@ int runDetect(CliSession& session, CommandArgs& args) {
     const bool json = args.takeFlag(QStringLiteral("--json"));
     if (const Status done = args.finish(); !done) return reportError(done.error());
     const GlobalOptions& options = session.options();
-    // The device and PC numbers given on the command line are tried.
+    // The protocol options given on the command line (a device number, a
+    // PC number) are tried with each protocol that takes them.
     const usecases::DetectSettings settings = [&options](const comm::ProtocolInfo& protocol) {
-        std::unique_ptr<comm::ProtocolSettings> made = protocol.makeSettings();
-        made->fromMap({{QStringLiteral("device"), options.device},
-                       {QStringLiteral("pcNumber"), options.pcNumber},
-                       {QStringLiteral("timeoutMs"), options.timeoutMs}});
-        return comm::ProtocolSettingsPtr(std::move(made));
+        return comm::ProtocolSettingsPtr(
+            comm::settingsWith(protocol, options.protocolValues, options.timeoutMs));
     };
     const Result<usecases::DetectResult> result = session.runUnconnected<usecases::DetectResult>(
         QStringLiteral("detect"),

@@ -1,10 +1,12 @@
 #include "family_parts.h"
 
 #include "comm/device/family_registry.h"
+#include "comm/device/protocol_options.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/simulator_registry.h"
 #include "comm/usecases/device_check.h"
 #include "comm/usecases/family_backup.h"
+#include "model/machine/machine_file.h"
 
 #include <cstdio>
 
@@ -67,6 +69,9 @@ void registerFamily(const FamilyParts& parts) {
     registered().append(parts);
     if (parts.family) parts.family(comm::FamilyRegistry::instance());
     if (parts.protocols) parts.protocols(comm::ProtocolRegistry::instance());
+    // A machine file names its devices' protocol options as the command
+    // line does; model/ learns them here.
+    addMachineDeviceKeys(comm::protocolOptionNames());
     if (parts.simulator) parts.simulator(comm::SimulatorRegistry::instance());
     if (parts.checks) parts.checks(usecases::CheckRegistry::instance());
     if (parts.backup) parts.backup(usecases::BackupRegistry::instance());

@@ -37,6 +37,23 @@ ProtocolInfo compax3Protocol(bool rs485) {
     info.isBus = rs485;
     info.lastDevice = rs485 ? kCompax3LastAddress : 0;
     info.numbersAreAddresses = rs485;
+    info.note = rs485 ? QT_TRANSLATE_NOOP("cambench::comm",
+                                          "RS485, 115200 8N1 unless set otherwise in the drive.")
+                      : QT_TRANSLATE_NOOP("cambench::comm",
+                                          "RS232, 115200 8N1 with RTS/CTS unless set otherwise in "
+                                          "the drive; a null-modem cable with RTS/CTS.");
+    if (rs485) {
+        ProtocolOption address = ProtocolOption::number(
+            QStringLiteral("address"), QStringLiteral("device"), 0, kCompax3LastAddress, 0,
+            QT_TRANSLATE_NOOP("cambench::comm", "Drive address:"),
+            QT_TRANSLATE_NOOP("cambench::comm",
+                              "the drive's RS485 address (C3 ServoManager, \"RS485 settings\"); "
+                              "Scan bus lists the addresses that answer"));
+        // Machine files written before the option had its name say "device".
+        address.aliases = {QStringLiteral("device")};
+        address.alwaysWritten = true;
+        info.options = {address};
+    }
     info.makeSettings = [rs485] { return std::make_unique<Compax3ProtocolSettings>(rs485); };
     info.connect = [rs485, id = info.id](
                        Transport& transport, const ProtocolSettings& settings,

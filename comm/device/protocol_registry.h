@@ -2,6 +2,7 @@
 
 #include "device_connection.h"
 #include "id_registry.h"
+#include "protocol_option.h"
 #include "protocol_settings.h"
 
 #include "comm/engine/line_timing.h"
@@ -17,13 +18,23 @@
 namespace cambench::comm {
 
 // What the rest of CamBench knows of one protocol: its name, the family of
-// devices it reaches, its default line, and how to open a device
-// connection over a transport. Protocols register themselves from app/
+// devices it reaches, its default line, the options it takes, and how to
+// open a device connection over a transport. Protocols register themselves from app/
 // (one line each); nothing else lists them.
 struct ProtocolInfo {
     QString id;        // "standard": the CLI's --protocol value, the settings key
     QString familyId;  // "camcon"
     QString title;     // "CamCon ASCII, Multiuser (RS485)" (English; ui/ translates)
+    // How the connection page lists it among its family's protocols,
+    // "Multiuser (RS485 bus)"; empty: the title. And a line it shows below
+    // its fields ("RS485, 115200 8N1 unless set otherwise in the drive").
+    // Both English, written with QT_TRANSLATE_NOOP("cambench::comm", ...).
+    QString choiceTitle;
+    QString note;
+    // Its settings beside the line's, each declared once: the command
+    // line, a machine file and the connection page read them from here
+    // (protocol_options.h).
+    QList<ProtocolOption> options;
     SerialSettings defaultSerial;
     bool isBus = false;  // devices are addressed by number (and may be scanned)
     int lastDevice = 0;  // a bus: the highest device number (CamCon Multiuser: 63)

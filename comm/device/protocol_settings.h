@@ -26,9 +26,6 @@ public:
     virtual void setDevice(int device) { Q_UNUSED(device); }
     // The user's fixed per-attempt timeout; 0 = derived from the line.
     virtual int timeoutMs() const { return 0; }
-    // The device variants the protocol can be told to expect ("auto" first:
-    // probe), the values of toMap()'s "variant"; empty when it has none.
-    virtual QStringList variantKeys() const { return {}; }
 
     // For QSettings and logs: only plain values.
     virtual QVariantMap toMap() const = 0;

@@ -9,6 +9,9 @@ target_sources(cambench_comm PRIVATE
   device/job_runner.h
   device/error_context.h
   device/protocol_settings.h
+  device/protocol_option.h
+  device/protocol_options.h
+  device/protocol_options.cpp
   device/protocol_registry.h
   device/protocol_registry.cpp
   device/family_registry.h

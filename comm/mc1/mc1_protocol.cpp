@@ -8,7 +8,7 @@ std::unique_ptr<ProtocolSettings> Mc1ProtocolSettings::clone() const {
     return std::make_unique<Mc1ProtocolSettings>(*this);
 }
 
-QStringList Mc1ProtocolSettings::variantKeys() const {
+QStringList Mc1ProtocolSettings::variantKeys() {
     QStringList keys{QStringLiteral("auto")};
     for (Mc1Variant variant : allMc1Variants()) keys << mc1VariantKey(variant);
     return keys;
@@ -85,6 +85,12 @@ void registerMc1Protocol(ProtocolRegistry& registry) {
     info.defaultSerial.baud = 9600;  // MC100: 9600 only; MC200: as set in the device
     info.defaultSerial.dtr = true;   // DTR high and RTS low power the MC200's driver
     info.defaultSerial.rts = false;
+    info.options = {ProtocolOption::choice(
+        QStringLiteral("variant"), QStringLiteral("variant"), Mc1ProtocolSettings::variantKeys(),
+        QT_TRANSLATE_NOOP("cambench::comm", "Controller:"),
+        QT_TRANSLATE_NOOP("cambench::comm",
+                          "the controller variant to expect; auto (the default) probes and names "
+                          "what it found"))};
     info.makeSettings = [] { return std::make_unique<Mc1ProtocolSettings>(); };
     info.connect = [](Transport& transport, const ProtocolSettings& settings,
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {

@@ -18,7 +18,9 @@ public:
     QString protocolId() const override { return QStringLiteral("mc1"); }
     std::unique_ptr<ProtocolSettings> clone() const override;
     int timeoutMs() const override { return mc1.timeoutMs; }
-    QStringList variantKeys() const override;
+    // The variants it can be told to expect ("auto" first: probe), the
+    // words of its "variant" option.
+    static QStringList variantKeys();
     QVariantMap toMap() const override;
     void fromMap(const QVariantMap& map) override;
 };

@@ -179,10 +179,23 @@ const MachineDevice* MachineFile::device(const QString& name) const {
     return nullptr;
 }
 
+namespace {
+
+QStringList& protocolKeys() {
+    static QStringList keys;
+    return keys;
+}
+
+}  // namespace
+
 QStringList machineDeviceKeys() {
-    return {QStringLiteral("port"),     QStringLiteral("protocol"), QStringLiteral("device"),
-            QStringLiteral("address"),  QStringLiteral("variant"),  QStringLiteral("baud"),
-            QStringLiteral("pc-number")};
+    return QStringList{QStringLiteral("port"), QStringLiteral("protocol"), QStringLiteral("baud")} +
+           protocolKeys();
+}
+
+void addMachineDeviceKeys(const QStringList& keys) {
+    for (const QString& key : keys)
+        if (!protocolKeys().contains(key)) protocolKeys() << key;
 }
 
 namespace {
@@ -198,13 +211,15 @@ QByteArray jsonValue(const QString& text, bool numberAllowed) {
 }
 
 QByteArray deviceJson(const MachineDevice& device) {
-    // The options the command line takes as numbers; a port stays text.
-    static const QStringList numericKeys{QStringLiteral("address"), QStringLiteral("baud"),
-                                         QStringLiteral("device"), QStringLiteral("pc-number")};
+    // A whole number is written as one (a device number, a baud rate),
+    // but a port and a protocol stay text whatever they look like.
+    const auto numberAllowed = [](const QString& key) {
+        return key != QLatin1String("port") && key != QLatin1String("protocol");
+    };
     QByteArrayList members{"\"name\": " + jsonValue(device.name, false),
                            "\"family\": " + jsonValue(device.family, false)};
     for (const auto& [key, value] : device.options)
-        members << jsonValue(key, false) + ": " + jsonValue(value, numericKeys.contains(key));
+        members << jsonValue(key, false) + ": " + jsonValue(value, numberAllowed(key));
     if (!device.volatileItems.isEmpty()) {
         QByteArrayList items;
         for (const QString& item : device.volatileItems) items << jsonValue(item, false);

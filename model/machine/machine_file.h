@@ -14,8 +14,8 @@
 namespace cambench {
 
 // One device of a machine: its name, its family and how to reach it, in
-// the command line's own option names ("port", "protocol", "device",
-// "address", "variant", "baud", "pc-number"), in the file's order; and,
+// the command line's own option names ("port", "protocol", "baud" and its
+// protocol's options, machineDeviceKeys()), in the file's order; and,
 // once known, its identity ("identity": {"serial": ..., "type": ...}): the
 // device that belongs there, so that another one answering is said
 // (`machine status`, `machine backup`; issue 36); and the items that change
@@ -56,8 +56,12 @@ struct MachineFile {
 // "device 2 (feed)": how messages name the device at `index` (0-based).
 QString machineDeviceLabel(int index, const QString& name);
 
-// The option names a device may carry besides "name" and "family".
+// The option names a device may carry besides "name", "family",
+// "identity" and "volatile": the line's ("port", "protocol", "baud") and
+// each registered protocol's options, which app/registry adds as it
+// registers a family (model/ knows no protocol).
 QStringList machineDeviceKeys();
+void addMachineDeviceKeys(const QStringList& keys);
 
 // Parses a machine file. `where` names it in messages (its path). A wrong
 // key, a duplicate or missing name, a value that is neither text nor a

@@ -57,7 +57,8 @@ private Q_SLOTS:
             QCOMPARE(parsed->port, QStringLiteral("/dev/ttyUSB3"));
             QCOMPARE(parsed->family, QStringLiteral("mc1"));
             QCOMPARE(parsed->protocol, QStringLiteral("mc1"));
-            QCOMPARE(parsed->variant, QStringLiteral("mc100v1"));
+            QCOMPARE(parsed->protocolSettings()->toMap().value(QStringLiteral("variant")),
+                     QStringLiteral("mc100v1"));
             QCOMPARE(parsed->timeoutMs, 500);
             QCOMPARE(parsed->command, QStringLiteral("mc"));
             QCOMPARE(parsed->commandArgs, QStringList({"var", "read", "12", "--axes", "1,2"}));
@@ -108,7 +109,7 @@ private Q_SLOTS:
                  QStringLiteral("compax3 compax3-rs485"));
         const Result<GlobalOptions> address = parseGlobalOptions({"--address", "7", "c3", "info"});
         QVERIFY(address);
-        QCOMPARE(address->device, 7);
+        QCOMPARE(address->protocolSettings()->device(), 7);
     }
 
     // A line command speaks Multiuser unless the line says otherwise; a

@@ -52,8 +52,6 @@ target_sources(cambench_ui PRIVATE
   camcon/plc_coupling_page.cpp
   camcon/programming_program_page.h
   camcon/programming_program_page.cpp
-  camcon/protocols/ascii_settings_widget.h
-  camcon/protocols/ascii_settings_widget.cpp
   camcon/protocols/table_settings_widget.h
   camcon/protocols/table_settings_widget.cpp
   camcon/cambus/cambus_settings_widget.h

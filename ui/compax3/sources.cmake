@@ -22,6 +22,4 @@ target_sources(cambench_ui PRIVATE
   compax3/compax3_window.h
   compax3/compax3_window.cpp
   compax3/compax3_tour.cpp
-  compax3/protocols/compax3_settings_widget.h
-  compax3/protocols/compax3_settings_widget.cpp
 )

@@ -1,27 +1,45 @@
 #include "machine_connection.h"
 
 #include "comm/device/family_registry.h"
+#include "comm/device/protocol_options.h"
 #include "comm/device/protocol_registry.h"
 
 namespace cambench {
 
 namespace {
 
+// The keys of a machine file's device that are the line's, not its
+// protocol's (the command line's --port, --protocol, --baud).
+const QString kPort = QStringLiteral("port");
+const QString kProtocol = QStringLiteral("protocol");
+const QString kBaud = QStringLiteral("baud");
+
 Error refused(const MachineDevice& device, const QString& what) {
     return Error::invalidData(QStringLiteral("%1: %2").arg(device.name, what));
 }
 
+// The device's options its protocol declares (all but the line's).
+comm::OptionValues protocolValuesOf(const MachineDevice& device) {
+    comm::OptionValues values;
+    for (const auto& [key, text] : device.options)
+        if (key != kPort && key != kProtocol && key != kBaud) values << qMakePair(key, text);
+    return values;
+}
+
 // The protocol the device's options ask for: the one named, else the
-// family's bus protocol where an address is given, else its default.
+// family's default when it takes the options given, else the family's
+// first that does (an "address": the family's bus of addressed devices).
 Result<const comm::ProtocolInfo*> chosenProtocol(const MachineDevice& device,
-                                                 const comm::FamilyInfo& family) {
+                                                 const comm::FamilyInfo& family,
+                                                 const comm::OptionValues& values) {
     const comm::ProtocolRegistry& protocols = comm::ProtocolRegistry::instance();
-    QString id = device.option(QStringLiteral("protocol"));
-    if (id.isEmpty() && !device.option(QStringLiteral("address")).isEmpty()) {
-        for (const comm::ProtocolInfo* info : protocols.all())
-            if (info->familyId == family.id && info->isBus) return info;
+    const QString id = device.option(kProtocol);
+    if (id.isEmpty()) {
+        const Result<const comm::ProtocolInfo*> taking =
+            comm::protocolTaking(family.id, family.defaultProtocol, values, comm::fileKey);
+        if (!taking) return refused(device, taking.error().message + u'.');
+        return taking;
     }
-    if (id.isEmpty()) id = family.defaultProtocol;
     const comm::ProtocolInfo* info = protocols.find(id);
     if (!info)
         return refused(device, QStringLiteral("unknown protocol \"%1\"; the protocols are %2.")
@@ -33,65 +51,35 @@ Result<const comm::ProtocolInfo*> chosenProtocol(const MachineDevice& device,
     return info;
 }
 
-// A whole number option within [min, max], `fallback` when not given.
-Result<int> numberOption(const MachineDevice& device, const QString& key, int fallback, int min,
-                         int max) {
-    const QString text = device.option(key);
-    if (text.isEmpty()) return fallback;
-    bool ok = false;
-    const int value = text.toInt(&ok);
-    if (!ok || value < min || value > max)
-        return refused(device, QStringLiteral("\"%1\" must be a whole number from %2 to %3, not "
-                                              "\"%4\".")
-                                   .arg(key)
-                                   .arg(min)
-                                   .arg(max)
-                                   .arg(text));
-    return value;
-}
-
 }  // namespace
 
 Result<MachineConnection> machineConnection(const MachineDevice& device) {
     const Result<const comm::FamilyInfo*> family =
         comm::FamilyRegistry::instance().usable(device.family);
     if (!family) return refused(device, family.error().message);
-    const Result<const comm::ProtocolInfo*> protocol = chosenProtocol(device, **family);
+    const comm::OptionValues values = protocolValuesOf(device);
+    const Result<const comm::ProtocolInfo*> protocol = chosenProtocol(device, **family, values);
     if (!protocol) return protocol.error();
     const comm::ProtocolInfo& info = **protocol;
 
-    const Result<int> baud =
-        numberOption(device, QStringLiteral("baud"), info.defaultSerial.baud, 50, 4000000);
-    const bool addressed = !device.option(QStringLiteral("address")).isEmpty();
-    const Result<int> address =
-        numberOption(device, addressed ? QStringLiteral("address") : QStringLiteral("device"), 0, 0,
-                     info.isBus ? info.lastDevice : 63);
-    const Result<int> pcNumber = numberOption(device, QStringLiteral("pc-number"), 63, 0, 63);
-    for (const Result<int>* number : {&baud, &address, &pcNumber})
-        if (!*number) return number->error();
-    if (addressed && !info.isBus)
-        return refused(device, QStringLiteral("\"address\" is for devices on a bus; the %1 "
-                                              "protocol has none.")
-                                   .arg(info.id));
-
-    std::unique_ptr<comm::ProtocolSettings> settings = info.makeSettings();
-    QVariantMap map{{QStringLiteral("device"), *address}, {QStringLiteral("pcNumber"), *pcNumber}};
-    const QString variant = device.option(QStringLiteral("variant")).trimmed().toLower();
-    if (!variant.isEmpty()) {
-        if (!settings->variantKeys().contains(variant))
-            return refused(device,
-                           QStringLiteral("\"variant\" must be one of %1, not \"%2\".")
-                               .arg(settings->variantKeys().join(QStringLiteral(", ")), variant));
-        map.insert(QStringLiteral("variant"), variant);
+    int baud = info.defaultSerial.baud;
+    if (const QString text = device.option(kBaud); !text.isEmpty()) {
+        bool ok = false;
+        baud = text.toInt(&ok);
+        if (!ok || baud < 50 || baud > 4000000)
+            return refused(device, QStringLiteral("\"baud\" must be a whole number from 50 to "
+                                                  "4000000, not \"%1\".")
+                                       .arg(text));
     }
-    settings->fromMap(map);
+    if (const Status fits = comm::checkOptionValues(info, values, comm::fileKey); !fits)
+        return refused(device, fits.error().message + u'.');
 
     MachineConnection result;
-    result.connection.port = device.option(QStringLiteral("port"));
+    result.connection.port = device.option(kPort);
     result.connection.serial = info.defaultSerial;
-    result.connection.serial.baud = *baud;
+    result.connection.serial.baud = baud;
     result.connection.protocol = info.id;
-    result.protocol = comm::ProtocolSettingsPtr(std::move(settings));
+    result.protocol = comm::ProtocolSettingsPtr(comm::settingsWith(info, values));
     return result;
 }
 
@@ -101,15 +89,11 @@ MachineDevice machineDeviceFor(const QString& name, const comm::ConnectionSettin
     device.name = name;
     const comm::ProtocolInfo* info = comm::ProtocolRegistry::instance().find(protocol.protocolId());
     device.family = info ? info->familyId : QString();
-    device.options = {{QStringLiteral("port"), connection.port},
-                      {QStringLiteral("protocol"), protocol.protocolId()}};
-    if (info && connection.serial.baud != info->defaultSerial.baud)
-        device.options.append({QStringLiteral("baud"), QString::number(connection.serial.baud)});
-    if (info && info->isBus)
-        device.options.append({QStringLiteral("device"), QString::number(protocol.device())});
-    const QString variant = protocol.toMap().value(QStringLiteral("variant")).toString();
-    if (!variant.isEmpty() && variant != QLatin1String("auto"))
-        device.options.append({QStringLiteral("variant"), variant});
+    device.options = {{kPort, connection.port}, {kProtocol, protocol.protocolId()}};
+    if (!info) return device;
+    if (connection.serial.baud != info->defaultSerial.baud)
+        device.options.append({kBaud, QString::number(connection.serial.baud)});
+    device.options += comm::optionValuesOf(*info, protocol);
     return device;
 }
 

@@ -9,16 +9,16 @@ namespace cambench {
 
 // How the GUI reaches one device of a machine file: its line and its
 // protocol's settings, read from the device's options as the command line
-// reads them ("protocol" or the family's default, the family's bus
-// protocol when only an "address" is given, "baud", "device"/"address",
-// "pc-number", "variant").
+// reads them: "port", "protocol" (or the family's default, or its first
+// protocol that takes the options given), "baud", and the options the
+// protocol declares (comm/device/protocol_options.h).
 struct MachineConnection {
     comm::ConnectionSettings connection;
     comm::ProtocolSettingsPtr protocol;  // never null
 };
 
-// An unknown family or protocol, a protocol of another family, a number
-// out of range or a variant the protocol does not know is refused naming
+// An unknown family or protocol, a protocol of another family, an option
+// the protocol does not take or a value outside its range is refused naming
 // the device ("feed: ...") before any line is opened.
 Result<MachineConnection> machineConnection(const MachineDevice& device);
 

@@ -16,19 +16,14 @@
 #ifdef CAMBENCH_PARTS_GUI
 #include "ui/camcon/cambus/cambus_settings_widget.h"
 #include "ui/camcon/camcon_gui.h"
-#include "ui/camcon/protocols/ascii_settings_widget.h"
 #include "ui/camcon/protocols/table_settings_widget.h"
 
-// The GUI's part: a settings widget per protocol (the ASCII one with or
-// without the Multiuser numbers, one for both table variants), the
-// CamCon's workspace and pages.
+// The GUI's part: the settings widgets of the protocols that show more
+// than their options' fields (Cam-BUS: the bus; the table interface: the
+// choice of its variant), the CamCon's workspace and pages.
 static void registerCamConGui() {
     using namespace cambench;
     ProtocolWidgetRegistry& widgets = ProtocolWidgetRegistry::instance();
-    widgets.add(QStringLiteral("standard"),
-                [](const QString&) { return new AsciiSettingsWidget(false); });
-    widgets.add(QStringLiteral("multiuser"),
-                [](const QString&) { return new AsciiSettingsWidget(true); });
     widgets.add(QStringLiteral("cambus"), [](const QString&) { return new CamBusSettingsWidget; });
     for (const char* id : {"3964r-n96", "3964r-e38"}) {
         widgets.add(QLatin1String(id),

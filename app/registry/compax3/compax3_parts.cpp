@@ -12,17 +12,10 @@
 
 #ifdef CAMBENCH_PARTS_GUI
 #include "ui/compax3/compax3_gui.h"
-#include "ui/compax3/protocols/compax3_settings_widget.h"
 
-// The GUI's part: one settings widget for RS232 and RS485 (with the
-// address), the pages.
+// The GUI's part: the pages (the drive's address is a field its protocol
+// declares, shown by the connection page).
 static void registerCompax3Gui() {
-    using cambench::Compax3SettingsWidget;
-    cambench::ProtocolWidgetRegistry& widgets = cambench::ProtocolWidgetRegistry::instance();
-    widgets.add(QStringLiteral("compax3"),
-                [](const QString&) { return new Compax3SettingsWidget(false); });
-    widgets.add(QStringLiteral("compax3-rs485"),
-                [](const QString&) { return new Compax3SettingsWidget(true); });
     cambench::addFamilyGui<cambench::Compax3Gui>(QStringLiteral("compax3"));
 }
 #endif

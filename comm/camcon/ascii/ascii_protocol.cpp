@@ -6,6 +6,18 @@
 
 namespace cambench::comm {
 
+QList<ProtocolOption> camConBusOptions(int lastDevice) {
+    ProtocolOption device = ProtocolOption::number(
+        QStringLiteral("device"), QStringLiteral("device"), 0, lastDevice, 0,
+        QT_TRANSLATE_NOOP("cambench::comm", "Device number:"),
+        QT_TRANSLATE_NOOP("cambench::comm", "the number of the CamCon to talk to on the bus"));
+    device.alwaysWritten = true;
+    return {device, ProtocolOption::number(
+                        QStringLiteral("pc-number"), QStringLiteral("pcNumber"), 0, 63, 63,
+                        QT_TRANSLATE_NOOP("cambench::comm", "PC number:"),
+                        QT_TRANSLATE_NOOP("cambench::comm", "this PC's own number on the bus"))};
+}
+
 namespace {
 
 // Functions, not namespace-scope QStrings: registration may run during
@@ -28,6 +40,10 @@ ProtocolInfo asciiProtocol(Framing framing) {
     info.defaultSerial.baud = multi ? 38400 : 9600;  // notes 1, both 8N1
     info.isBus = multi;
     info.lastDevice = multi ? 63 : 0;  // device numbers 0..63
+    info.choiceTitle = multi ? QT_TRANSLATE_NOOP("cambench::comm", "Multiuser (RS485 bus)")
+                             : QT_TRANSLATE_NOOP("cambench::comm", "Standard (point to point)");
+    // A Standard line is point to point: no numbers to give.
+    if (multi) info.options = camConBusOptions(info.lastDevice);
     info.makeSettings = [framing] { return std::make_unique<AsciiProtocolSettings>(framing); };
     info.connect = [](Transport& transport, const ProtocolSettings& settings,
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {

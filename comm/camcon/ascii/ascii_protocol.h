@@ -26,6 +26,10 @@ public:
     void fromMap(const QVariantMap& map) override;
 };
 
+// The device number (0..lastDevice) and the PC's own number (0..63) a
+// CamCon bus protocol takes: Multiuser and Cam-BUS.
+QList<ProtocolOption> camConBusOptions(int lastDevice);
+
 // Adds "standard" and "multiuser" to `registry`.
 void registerCamConAscii(ProtocolRegistry& registry);
 

@@ -2,6 +2,8 @@
 
 #include "cambus_camcon.h"
 
+#include "comm/camcon/ascii/ascii_protocol.h"
+
 #include <QCoreApplication>
 
 namespace cambench::comm {
@@ -51,6 +53,12 @@ void registerCamConCamBus(ProtocolRegistry& registry) {
     info.isBus = true;
     info.listeningProbe = true;
     info.lastDevice = kCamBusLastUser;
+    info.choiceTitle = QT_TRANSLATE_NOOP("cambench::comm", "Cam-BUS (RS485 token bus)");
+    info.options = camConBusOptions(info.lastDevice);
+    info.options[1].help = QT_TRANSLATE_NOOP(
+        "cambench::comm",
+        "this PC's own number on the Cam-BUS, usually 63; no other user of the bus (CamCon, "
+        "display, another PC) may have it");
     info.makeSettings = [] { return std::make_unique<CamBusProtocolSettings>(); };
     info.connect = [](Transport& transport, const ProtocolSettings& settings,
                       const LineTiming& line) -> Result<std::unique_ptr<DeviceConnection>> {

@@ -21,6 +21,10 @@ ProtocolInfo tableProtocol(Rk512Variant variant) {
             .arg(variantInfo.baudRate)
             .arg(QChar::fromLatin1(variantInfo.parity))
             .arg(1);
+    info.choiceTitle =
+        variant == Rk512Variant::N96
+            ? QT_TRANSLATE_NOOP("cambench::comm", "Table interface, 3964R n96 (9600 8N1)")
+            : QT_TRANSLATE_NOOP("cambench::comm", "Table interface, 3964R e38 (38400 8E1)");
     info.defaultSerial.baud = variantInfo.baudRate;
     info.defaultSerial.parity = variantInfo.parity;
     info.makeSettings = [variant] { return std::make_unique<TableProtocolSettings>(variant); };

@@ -31,7 +31,7 @@ private Q_SLOTS:
         ConnectionPage* page = shell->window()->connectionPage();
         auto* settings = page->findChild<CamBusSettingsWidget*>();
         QVERIFY(settings);
-        QCOMPARE(settings->pcNumber()->value(), 63);
+        QCOMPARE(settings->numberField(QStringLiteral("pc-number"))->value(), 63);
         CamBusView* view = settings->busView();
         QVERIFY(QTest::qWaitFor(
             [view] {

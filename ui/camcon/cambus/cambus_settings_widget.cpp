@@ -2,6 +2,7 @@
 
 #include "cambus_view_widget.h"
 
+#include "comm/camcon/cambus/cambus_protocol.h"
 #include "comm/camcon/cambus/cambus_view.h"
 
 #include <QFormLayout>
@@ -10,13 +11,14 @@
 namespace cambench {
 
 CamBusSettingsWidget::CamBusSettingsWidget(QWidget* parent)
-    : AsciiSettingsWidget(true, parent), m_view(new CamBusView(comm::CamBusMonitor::shared())) {
-    deviceNumber()->setToolTip(tr("The number of the CamCon to talk to on the Cam-BUS (0–63)."));
-    pcNumber()->setToolTip(
-        tr("This PC's own number on the Cam-BUS (0–63, usually 63). No other user of the bus "
-           "(CamCon, display, another PC) may have it."));
-    m_view->setOwnNumber([this] { return pcNumber()->value(); });
-    if (auto* form = qobject_cast<QFormLayout*>(layout())) form->addRow(m_view);
+    : ProtocolOptionsForm(
+          *comm::ProtocolRegistry::instance().find(comm::CamBusProtocolSettings().protocolId()),
+          parent),
+      m_view(new CamBusView(comm::CamBusMonitor::shared())) {
+    // The bus view marks the PC's own number among the users it hears.
+    QSpinBox* pcNumber = numberField(QStringLiteral("pc-number"));
+    m_view->setOwnNumber([pcNumber] { return pcNumber ? pcNumber->value() : -1; });
+    form()->addRow(m_view);
 }
 
 }  // namespace cambench

@@ -1,15 +1,15 @@
 #pragma once
 
-#include "ui/camcon/protocols/ascii_settings_widget.h"
+#include "ui/protocols/protocol_options_form.h"
 
 namespace cambench {
 
 class CamBusView;
 
-// Cam-BUS: the CamCon to talk to and this PC's own number on the bus
-// (default 63; no other user may have it), as for Multiuser, and below them
-// the bus as the PC hears it.
-class CamBusSettingsWidget : public AsciiSettingsWidget {
+// Cam-BUS: the fields of its options (the CamCon to talk to and this PC's
+// own number on the bus, default 63, which no other user may have), and
+// below them the bus as the PC hears it.
+class CamBusSettingsWidget : public ProtocolOptionsForm {
     Q_OBJECT
 public:
     explicit CamBusSettingsWidget(QWidget* parent = nullptr);
