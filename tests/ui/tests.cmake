@@ -1,11 +1,6 @@
-cambench_add_test(ui_shell_main_window_test SOURCES ui/register_widgets.cpp ui/shell/tst_main_window.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_pages_test SOURCES ui/register_widgets.cpp ui/shell/tst_shell_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-
+# The shell's GUI tests (tests/ui/shell/, paths relative to tests/); each
+# family's are listed in its folder (tests/ui/<family>/tests.cmake).
 cambench_add_test(ui_shell_small_faults_test SOURCES ui/register_widgets.cpp ui/shell/tst_small_faults.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_gui_settings_test SOURCES ui/register_widgets.cpp ui/shell/tst_gui_settings.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_line_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_line_backup.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_plc_coupling_test SOURCES ui/register_widgets.cpp ui/shell/tst_plc_coupling.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
-cambench_add_test(ui_shell_table_page_edits_test SOURCES ui/register_widgets.cpp ui/shell/tst_table_page_edits.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 13: the connection page's family choice and Detect on a pty.
 cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
 # Issue 27: the shell's poll cycle (stale after a missed cycle, paused behind a long job).
