@@ -167,6 +167,8 @@ public:
         layout->addWidget(number);
         layout->addWidget(table);
         connect(ping, &QPushButton::clicked, this, [this] {
+            // "…" while it runs: the shell takes it away when the job is done.
+            Q_EMIT statusMessage(QStringLiteral("Pinging the fake device…"));
             m_session->worker().run<Result<QString>>(
                 this, comm::JobPriority::User, QStringLiteral("ping"),
                 [](comm::JobContext& job) -> Result<QString> {

@@ -20,3 +20,11 @@ endif()
 
 # Issue 31, item 1: the startup check names a family lacking a part.
 cambench_add_test(tst_family_parts SOURCES family/tst_family_parts.cpp)
+
+# Issue 38, item 4: the shell's GUI tests (tests/ui/shell/) run with the
+# fake family as their family; it is built once for all of them.
+if(CAMBENCH_GUI AND TARGET cambench_cli_front)
+  add_library(cambench_test_fake_family STATIC family/fake_family.cpp family/fake_family.h)
+  target_link_libraries(cambench_test_fake_family
+    PUBLIC cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
+endif()

@@ -1,10 +1,10 @@
 // The smaller faults of issue 6 the shell has, each as a person would meet
 // it: the connection strip, status messages, the error dialog's height, the
-// words of messages. Those on the CamCon's pages are in
-// tests/ui/camcon/tst_camcon_small_faults.cpp.
-#include "../camcon/camcon_fixture.h"
+// words of messages. On the test-only fake family (tests/family/); those on
+// a family's pages are in its folder (tests/ui/<family>/).
+#include "../../family/fake_family.h"
+#include "shell_fixture.h"
 
-#include "ui/camcon/cam_page.h"
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
 #include "ui/language.h"
@@ -12,6 +12,7 @@
 #include "ui/sentence.h"
 
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
@@ -27,6 +28,7 @@ private Q_SLOTS:
     void initTestCase() {
         useTestSettings();
         QVERIFY(setLanguage(QStringLiteral("en")));
+        fake::registerFakeFamily();
     }
     void connectionStripKeepsItsHeightAndSpeaksInSentences();
     void progressMessageGoesWhenItsJobIsDone();
@@ -35,7 +37,7 @@ private Q_SLOTS:
 };
 
 void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
-    auto shell = startOnSimulator();
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
     QVERIFY(shell);
     ConnectionStrip* strip = shell->window()->connectionStrip();
     const int height = strip->height();
@@ -59,12 +61,14 @@ void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
 }
 
 void SmallFaultsTest::progressMessageGoesWhenItsJobIsDone() {
-    auto shell = startOnSimulator();
+    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
     QVERIFY(shell);
-    std::optional<Status> read;
-    camConWindow(shell->window())->camPage()->readProgram(1, [&](const Status& s) { read = s; });
+    auto* page = shell->window()->findChild<QWidget*>(QStringLiteral("fakePage"));
+    QVERIFY(page);
+    page->findChild<QPushButton*>(QStringLiteral("fakePing"))->click();
     QVERIFY(shell->window()->statusBar()->currentMessage().endsWith(QChar(0x2026)));
-    QTRY_VERIFY_WITH_TIMEOUT(read.has_value(), kDeviceTimeoutMs);
+    auto* answer = page->findChild<QLabel*>(QStringLiteral("fakeAnswer"));
+    QTRY_COMPARE_WITH_TIMEOUT(answer->text(), QStringLiteral("PONG 7"), kDeviceTimeoutMs);
     QVERIFY(!shell->window()->statusBar()->currentMessage().endsWith(QChar(0x2026)));
 }
 
