@@ -4,8 +4,7 @@
 // behaviour needs only some family, the test-only fake family
 // (tests/family/fake_family.h; registered after the built-in ones, so
 // tried last).
-#include "../../family/fake_family.h"
-#include "shell_fixture.h"
+#include "fake_shell_fixture.h"
 
 #include "ui/device_session.h"
 #include "ui/motion_stop.h"
@@ -87,10 +86,7 @@ QString waitForDetect(ConnectionPage* page) {
 class TestDetect : public QObject {
     Q_OBJECT
 private Q_SLOTS:
-    void initTestCase() {
-        useTestSettings();
-        fake::registerFakeFamily();
-    }
+    void initTestCase() { QVERIFY(setUpWithTheFakeFamily()); }
 
     // Every family is offered (one not built yet would be greyed:
     // tst_fake_family); the protocol list is the family's.
@@ -144,8 +140,7 @@ private Q_SLOTS:
     void aConnectFailureGoesWhenDetectFinds() {
         PtyFake device;
         QVERIFY(device.isOpen());
-        std::unique_ptr<Shell> shell =
-            startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
+        std::unique_ptr<Shell> shell = startOnFake();
         QVERIFY(shell);
         ConnectionPage* page = shell->window()->connectionPage();
         auto* failure = page->findChild<QLabel*>(QStringLiteral("connectFailure"));
@@ -208,8 +203,7 @@ private Q_SLOTS:
     // Cancelled there, Detect stops: the line stays, nothing is sent, no
     // detection starts.
     void detectStopsWhenLeavingTheMovingDeviceIsCancelled() {
-        std::unique_ptr<Shell> shell =
-            startOnSimulator(QStringLiteral("sim:throttle=0,axes=2"), QStringLiteral("fake-line"));
+        std::unique_ptr<Shell> shell = startOnFake(QStringLiteral("sim:throttle=0,axes=2"));
         QVERIFY(shell);
         DeviceSession* session = shell->session();
         QVERIFY(QTest::qWaitFor([session] { return session->motionStop()->armed(); },

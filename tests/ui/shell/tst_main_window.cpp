@@ -5,8 +5,7 @@
 // anything unwritten. Real widgets, the in-process simulator through the
 // real worker, two fake devices that differ (2 and 3 axes). What the
 // families' own pages do is tested in their folders (tests/ui/<family>/).
-#include "../../family/fake_family.h"
-#include "shell_fixture.h"
+#include "fake_shell_fixture.h"
 
 #include "ui/connection_page.h"
 #include "ui/connection_status.h"
@@ -59,11 +58,7 @@ class MainWindowTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() {
-        useTestSettings();
-        QVERIFY(setLanguage(QStringLiteral("en")));
-        fake::registerFakeFamily();
-    }
+    void initTestCase() { QVERIFY(setUpWithTheFakeFamily()); }
     void connectionStateFollowsTheLineAndTheDevice();
     void theShellLogsEachConnectionStateWithItsReason();
     void statusBarShowsTheRunningJobAndItsProgress();
@@ -74,7 +69,7 @@ private Q_SLOTS:
 // nothing of it and says why; another device reached through the
 // connection page is named as itself.
 void MainWindowTest::connectionStateFollowsTheLineAndTheDevice() {
-    auto shell = startOnSimulator(kTwoAxes, kFakeLine);
+    auto shell = startOnFake(kTwoAxes);
     QVERIFY(shell);
     MainWindow* window = shell->window();
     DeviceSession* session = shell->session();
@@ -105,7 +100,7 @@ void MainWindowTest::connectionStateFollowsTheLineAndTheDevice() {
 // The shell's category says each state the line goes through, with the
 // reason of a failed connect (for a log a person sends along).
 void MainWindowTest::theShellLogsEachConnectionStateWithItsReason() {
-    auto shell = startOnSimulator(kTwoAxes, kFakeLine);
+    auto shell = startOnFake(kTwoAxes);
     QVERIFY(shell);
     DeviceSession* session = shell->session();
     g_shellLog.clear();
@@ -129,7 +124,7 @@ void MainWindowTest::theShellLogsEachConnectionStateWithItsReason() {
 // A job's title and bar show while it runs (its progress as it reports
 // it) and go when it is done.
 void MainWindowTest::statusBarShowsTheRunningJobAndItsProgress() {
-    auto shell = startOnSimulator(kTwoAxes, kFakeLine);
+    auto shell = startOnFake(kTwoAxes);
     QVERIFY(shell);
     MainWindow* window = shell->window();
     auto* bar = window->statusBar()->findChild<QProgressBar*>();
@@ -164,7 +159,7 @@ void MainWindowTest::statusBarShowsTheRunningJobAndItsProgress() {
 // A family without edits leaves nothing unwritten: the title counts none
 // and closing asks nothing.
 void MainWindowTest::closingAsksNothingWhenNothingIsUnwritten() {
-    auto shell = startOnSimulator(kTwoAxes, kFakeLine);
+    auto shell = startOnFake(kTwoAxes);
     QVERIFY(shell);
     MainWindow* window = shell->window();
     QVERIFY2(!window->windowTitle().contains(QLatin1String("not written")),

@@ -2,8 +2,7 @@
 // it: the connection strip, status messages, the error dialog's height, the
 // words of messages. On the test-only fake family (tests/family/); those on
 // a family's pages are in its folder (tests/ui/<family>/).
-#include "../../family/fake_family.h"
-#include "shell_fixture.h"
+#include "fake_shell_fixture.h"
 
 #include "ui/connection_status.h"
 #include "ui/device_session.h"
@@ -25,11 +24,7 @@ class SmallFaultsTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() {
-        useTestSettings();
-        QVERIFY(setLanguage(QStringLiteral("en")));
-        fake::registerFakeFamily();
-    }
+    void initTestCase() { QVERIFY(setUpWithTheFakeFamily()); }
     void connectionStripKeepsItsHeightAndSpeaksInSentences();
     void progressMessageGoesWhenItsJobIsDone();
     void errorDialogIsNeverTallerThanTheScreen();
@@ -37,7 +32,7 @@ private Q_SLOTS:
 };
 
 void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
-    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
+    auto shell = startOnFake();
     QVERIFY(shell);
     ConnectionStrip* strip = shell->window()->connectionStrip();
     const int height = strip->height();
@@ -61,7 +56,7 @@ void SmallFaultsTest::connectionStripKeepsItsHeightAndSpeaksInSentences() {
 }
 
 void SmallFaultsTest::progressMessageGoesWhenItsJobIsDone() {
-    auto shell = startOnSimulator(QStringLiteral("sim:throttle=0"), QStringLiteral("fake-line"));
+    auto shell = startOnFake();
     QVERIFY(shell);
     auto* page = shell->window()->findChild<QWidget*>(QStringLiteral("fakePage"));
     QVERIFY(page);
