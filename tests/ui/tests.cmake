@@ -7,7 +7,7 @@ cambench_add_test(ui_shell_main_window_test SOURCES ui/register_widgets.cpp ui/s
 # Issue 13: the connection page's family choice and Detect on a pty.
 cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h ui/shell/fake_shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim cambench_test_fake_family)
 # Issue 27: the shell's poll cycle (stale after a missed cycle, paused behind a long job).
-cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp ui/shell/tst_live_poll_cycle.cpp ui/shell/shell_fixture.h ui/shell/live_value_checks.h LIBS cambench_ui cambench_gui_registry)
+cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp ui/shell/tst_live_poll_cycle.cpp ui/shell/shell_fixture.h ui/shell/fake_shell_fixture.h ui/shell/live_value_checks.h LIBS cambench_ui cambench_gui_registry cambench_test_fake_family)
 # Issue 28 item 4: a family switch or another device leaves nothing of the one before.
 cambench_add_test(ui_shell_family_switch_test SOURCES ui/register_widgets.cpp ui/shell/tst_family_switch.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 30: the machine window (several devices at once, STOP for all, the machine file).
