@@ -97,7 +97,7 @@ public:
         QList<comm::SimOutput> replies;
         m_input += bytes.toByteArray();
         for (qsizetype end = m_input.indexOf('\n'); end >= 0; end = m_input.indexOf('\n')) {
-            const QByteArray request = m_input.left(end);
+            const QByteArray request = withoutNoise(m_input.left(end));
             m_input.remove(0, end + 1);
             g_requests.fetchAndAddRelaxed(1);
             {
@@ -111,6 +111,15 @@ public:
     QString protocolName() const override { return QStringLiteral("fake line"); }
 
 private:
+    // On a line others spoke on first (Detect's tries of other protocols),
+    // what came before the device's own request is noise, as for a device
+    // that waits for its command.
+    static QByteArray withoutNoise(const QByteArray& line) {
+        qsizetype from = 0;
+        for (const char* start : {"ID?", "PING ", "MOVE ", "STOP ", "STATE?"})
+            from = std::max(from, line.lastIndexOf(start));
+        return line.mid(from);
+    }
     QByteArray answer(const QByteArray& request) {
         const int axis = request.mid(request.indexOf(' ') + 1).toInt();
         const bool known = axis >= 1 && axis <= m_axes;
@@ -167,6 +176,8 @@ public:
         layout->addWidget(number);
         layout->addWidget(table);
         connect(ping, &QPushButton::clicked, this, [this] {
+            // "…" while it runs: the shell takes it away when the job is done.
+            Q_EMIT statusMessage(QStringLiteral("Pinging the fake device…"));
             m_session->worker().run<Result<QString>>(
                 this, comm::JobPriority::User, QStringLiteral("ping"),
                 [](comm::JobContext& job) -> Result<QString> {

@@ -21,13 +21,21 @@ endif()
 # Issue 31, item 1: the startup check names a family lacking a part.
 cambench_add_test(tst_family_parts SOURCES family/tst_family_parts.cpp)
 
+# Issue 38, item 4: the shell's GUI tests (tests/ui/shell/) run with the
+# fake family as their family; it is built once for all of them.
+if(CAMBENCH_GUI AND TARGET cambench_cli_front)
+  add_library(cambench_test_fake_family STATIC family/fake_family.cpp family/fake_family.h)
+  target_link_libraries(cambench_test_fake_family
+    PUBLIC cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
+endif()
+
 # Issue 38, item 1: a second test family whose protocol has an option of
 # its own, taken by the command line, a machine file and the connection
 # page; and no option or protocol of a family named in the shell.
 if(CAMBENCH_GUI AND TARGET cambench_cli_front)
   cambench_add_test(tst_protocol_options
     SOURCES family/tst_protocol_options.cpp family/slotted_family.h family/slotted_family.cpp
-            family/fake_family.h family/fake_family.cpp ui/register_widgets.cpp
-    LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
+            ui/register_widgets.cpp
+    LIBS cambench_ui cambench_gui_registry cambench_test_fake_family)
   target_compile_definitions(tst_protocol_options PRIVATE CAMBENCH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()

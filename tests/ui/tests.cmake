@@ -1,15 +1,13 @@
-cambench_add_test(ui_shell_main_window_test SOURCES ui/register_widgets.cpp ui/shell/tst_main_window.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_pages_test SOURCES ui/register_widgets.cpp ui/shell/tst_shell_pages.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-
-cambench_add_test(ui_shell_small_faults_test SOURCES ui/register_widgets.cpp ui/shell/tst_small_faults.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_gui_settings_test SOURCES ui/register_widgets.cpp ui/shell/tst_gui_settings.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_line_backup_test SOURCES ui/register_widgets.cpp ui/shell/tst_line_backup.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
-cambench_add_test(ui_shell_plc_coupling_test SOURCES ui/register_widgets.cpp ui/shell/tst_plc_coupling.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
-cambench_add_test(ui_shell_table_page_edits_test SOURCES ui/register_widgets.cpp ui/shell/tst_table_page_edits.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
+# The shell's GUI tests (tests/ui/shell/, paths relative to tests/); each
+# family's are listed in its folder (tests/ui/<family>/tests.cmake).
+# Issue 6: the shell's small faults, on the fake family.
+cambench_add_test(ui_shell_small_faults_test SOURCES ui/register_widgets.cpp ui/shell/tst_small_faults.cpp ui/shell/shell_fixture.h ui/shell/fake_shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_test_fake_family)
+# Issue 38 item 4: the main window on the fake family (connection state, log, job progress).
+cambench_add_test(ui_shell_main_window_test SOURCES ui/register_widgets.cpp ui/shell/tst_main_window.cpp ui/shell/shell_fixture.h ui/shell/fake_shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_test_fake_family)
 # Issue 13: the connection page's family choice and Detect on a pty.
-cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim)
+cambench_add_test(ui_shell_detect_test SOURCES ui/register_widgets.cpp ui/shell/tst_detect.cpp ui/shell/shell_fixture.h ui/shell/fake_shell_fixture.h LIBS cambench_ui cambench_gui_registry cambench_sim cambench_test_fake_family)
 # Issue 27: the shell's poll cycle (stale after a missed cycle, paused behind a long job).
-cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp ui/shell/tst_live_poll_cycle.cpp ui/shell/shell_fixture.h ui/shell/live_value_checks.h LIBS cambench_ui cambench_gui_registry)
+cambench_add_test(ui_shell_live_poll_cycle_test SOURCES ui/register_widgets.cpp ui/shell/tst_live_poll_cycle.cpp ui/shell/shell_fixture.h ui/shell/fake_shell_fixture.h ui/shell/live_value_checks.h LIBS cambench_ui cambench_gui_registry cambench_test_fake_family)
 # Issue 28 item 4: a family switch or another device leaves nothing of the one before.
 cambench_add_test(ui_shell_family_switch_test SOURCES ui/register_widgets.cpp ui/shell/tst_family_switch.cpp ui/shell/shell_fixture.h LIBS cambench_ui cambench_gui_registry)
 # Issue 30: the machine window (several devices at once, STOP for all, the machine file).

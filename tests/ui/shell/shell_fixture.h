@@ -1,12 +1,5 @@
 #pragma once
 
-#include "ui/camcon/camcon_gui.h"
-#include "ui/camcon/camcon_window.h"
-#include "ui/camcon/cameditor/cam_document.h"
-#include "ui/camcon/capability_gate.h"
-#include "ui/camcon/replace_edits_dialog.h"
-#include "ui/camcon/users_page.h"
-#include "ui/camcon/workspace.h"
 #include "ui/connection_page.h"
 #include "ui/main_window.h"
 #include "ui/shell.h"
@@ -39,7 +32,7 @@ inline void useTestSettings() {
     QStandardPaths::setTestModeEnabled(true);
     // Each test process its own settings file: under `ctest -j2` two GUI
     // tests shared ~/.qttest's, and one's clear() at its start emptied what
-    // the other had just remembered (ui_mc1_axes_parameters_test under
+    // the other had just remembered (the MC-1 axes and parameters test under
     // AddressSanitizer read back "" for the table it had loaded).
     static const QTemporaryDir settingsDir;
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
@@ -61,26 +54,6 @@ inline std::unique_ptr<Shell> startOnSimulator(
     QSignalSpy loaded(shell->window(), &MainWindow::loaded);
     if (!loaded.wait(kDeviceTimeoutMs) || !loaded.first().first().toBool()) return nullptr;
     return shell;
-}
-
-// The gate of the section that shows `page`, or nullptr for an ungated one.
-inline CapabilityGate* gateOf(MainWindow* window, QWidget* page) {
-    for (CapabilityGate* gate : window->findChildren<CapabilityGate*>())
-        if (gate->page() == page) return gate;
-    return nullptr;
-}
-
-// Lets queued reads (dead times, settings, users where the protocol has
-// them) of the start finish.
-inline bool waitForSections(Shell& shell) {
-    Workspace* ws = camConWorkspace(shell);
-    CapabilityGate* users = gateOf(shell.window(), camConWindow(shell.window())->usersPage());
-    return QTest::qWaitFor(
-        [ws, users] {
-            return ws->outputSettingsKnown() && ws->settings().known() &&
-                   (!users->isAvailable() || ws->users().size() > 0);
-        },
-        kDeviceTimeoutMs);
 }
 
 // Answers the next modal dialog of type Dialog, whenever it comes up
@@ -107,27 +80,6 @@ private:
     QTimer m_timer;
     int m_answered = 0;
 };
-
-// "Keep my edits / take the device's values": the same for every section.
-inline std::unique_ptr<NextDialog<ReplaceEditsDialog>> answerReplaceEdits(bool keepEdits) {
-    return std::make_unique<NextDialog<ReplaceEditsDialog>>(
-        [keepEdits](ReplaceEditsDialog* dialog) {
-            for (EditSection section : dialog->sections()) dialog->choose(section, keepEdits);
-            dialog->accept();
-        });
-}
-
-inline std::unique_ptr<NextDialog<ReplaceEditsDialog>> cancelReplaceEdits() {
-    return std::make_unique<NextDialog<ReplaceEditsDialog>>(
-        [](ReplaceEditsDialog* dialog) { dialog->reject(); });
-}
-
-// The rows of a test that runs once per CamCon protocol.
-inline void protocolRows() {
-    QTest::addColumn<QString>("protocol");
-    for (const char* protocol : {"standard", "3964r-n96", "3964r-e38"})
-        QTest::newRow(protocol) << QString::fromLatin1(protocol);
-}
 
 // Presses the confirmation's action (yes) or Cancel; a box without a
 // Cancel gets its first button.

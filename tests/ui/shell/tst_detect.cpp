@@ -1,7 +1,10 @@
 // The connection page's family choice and Detect (issue 13, point 3): the
 // real GUI, the real QSerialPort, a simulated CamCon on a pseudo-terminal
-// that speaks the table interface (or nothing at all).
-#include "shell_fixture.h"
+// that speaks the table interface (or nothing at all). Where Detect's
+// behaviour needs only some family, the test-only fake family
+// (tests/family/fake_family.h; registered after the built-in ones, so
+// tried last).
+#include "fake_shell_fixture.h"
 
 #include "ui/device_session.h"
 #include "ui/motion_stop.h"
@@ -9,12 +12,15 @@
 #include "comm/sim/camcon/sim_demo.h"
 #include "comm/sim/sim_pacer.h"
 #include "comm/sim/sim_pty_server.h"
+#include "comm/sim/simulator_registry.h"
 
 #include <QComboBox>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QStandardItemModel>
+
+#include <optional>
 
 using namespace cambench;
 using namespace cambench::test;
@@ -43,6 +49,28 @@ private:
     bool m_open = false;
 };
 
+// A fake device (two axes) on a pty, as its family's simulator makes it.
+class PtyFake {
+public:
+    PtyFake() {
+        const comm::SimulatorInfo* simulator =
+            comm::SimulatorRegistry::instance().forProtocol(QStringLiteral("fake-line"));
+        Result<comm::SimulatedLine> line =
+            simulator->fromPort(QStringLiteral("sim:axes=2"), {}, QStringLiteral("fake-line"));
+        if (!line) return;
+        m_line = std::move(line).value();
+        m_server = std::make_unique<comm::SimPtyServer>(*m_line->endpoint, m_line->pacer);
+        m_open = m_server->open().ok();
+    }
+    bool isOpen() const { return m_open; }
+    QString path() const { return m_server->slavePath(); }
+
+private:
+    std::optional<comm::SimulatedLine> m_line;
+    std::unique_ptr<comm::SimPtyServer> m_server;
+    bool m_open = false;
+};
+
 QString waitForDetect(ConnectionPage* page) {
     auto* result = page->findChild<QLabel*>(QStringLiteral("detectResult"));
     (void)QTest::qWaitFor(
@@ -58,7 +86,7 @@ QString waitForDetect(ConnectionPage* page) {
 class TestDetect : public QObject {
     Q_OBJECT
 private Q_SLOTS:
-    void initTestCase() { useTestSettings(); }
+    void initTestCase() { QVERIFY(setUpWithTheFakeFamily()); }
 
     // Every family is offered (one not built yet would be greyed:
     // tst_fake_family); the protocol list is the family's.
@@ -110,9 +138,9 @@ private Q_SLOTS:
     // state of a port where Detect found a device: it goes, and the
     // result is not red.
     void aConnectFailureGoesWhenDetectFinds() {
-        PtyDevice device(QStringLiteral("3964r-n96"));
+        PtyFake device;
         QVERIFY(device.isOpen());
-        std::unique_ptr<Shell> shell = startOnSimulator();
+        std::unique_ptr<Shell> shell = startOnFake();
         QVERIFY(shell);
         ConnectionPage* page = shell->window()->connectionPage();
         auto* failure = page->findChild<QLabel*>(QStringLiteral("connectFailure"));
@@ -126,6 +154,7 @@ private Q_SLOTS:
         page->detect();
         const QString text = waitForDetect(page);
         QVERIFY2(text.contains(QLatin1String("Found on")), qPrintable(text));
+        QVERIFY2(text.contains(QLatin1String("fake-line")), qPrintable(text));
         QVERIFY(!failure->isVisible());
         const auto* result = page->findChild<QLabel*>(QStringLiteral("detectResult"));
         QVERIFY(result->palette().color(QPalette::WindowText) != QColor(0xd0, 0x30, 0x20));
@@ -150,27 +179,31 @@ private Q_SLOTS:
         QVERIFY2(text.contains(QLatin1String("Nothing answered on ") + device.path()),
                  qPrintable(text));
         // One short line per try on the page, what each said in full in the tooltip.
-        QCOMPARE(text.count(QLatin1String(": no answer")), 9);
+        // The fake family, registered after the built-in ones, is tried last.
+        QCOMPARE(text.count(QLatin1String(": no answer")), 10);
         for (const char* title :
              {"Cam-BUS", "Standard", "Multiuser", "3964R n96", "3964R e38", "MC-1", "MC100 ASCII",
-              "Compax3 ASCII (RS232)", "Compax3 ASCII (RS485)"})
+              "Compax3 ASCII (RS232)", "Compax3 ASCII (RS485)", "Fake line protocol"})
             QVERIFY2(text.contains(QLatin1String(title)), qPrintable(text));
         // Cam-BUS only listens, and before the others' bytes could disturb a bus.
         QVERIFY2(text.indexOf(QLatin1String("Cam-BUS")) < text.indexOf(QLatin1String("Standard")),
                  qPrintable(text));
+        QVERIFY2(text.indexOf(QLatin1String("Fake line protocol")) >
+                     text.indexOf(QLatin1String("Compax3 ASCII (RS485)")),
+                 qPrintable(text));
         const QString details = page->findChild<QLabel*>(QStringLiteral("detectResult"))->toolTip();
         for (const char* protocol : {"cambus", "standard", "multiuser", "3964r-n96", "3964r-e38",
-                                     "mc1", "mc1-ascii", "compax3", "compax3-rs485"})
+                                     "mc1", "mc1-ascii", "compax3", "compax3-rs485", "fake-line"})
             QVERIFY2(details.contains(QLatin1String(protocol)), qPrintable(details));
         QVERIFY(text.contains(QLatin1String("Check the cable")));
     }
 
-    // A drive that can move is on the line: Detect asks its own question,
-    // then the one before leaving a moving device. Cancelled there, Detect
-    // stops: the line stays, nothing is sent, no detection starts.
+    // A device that can move is on the line (a fake one with axes): Detect
+    // asks its own question, then the one before leaving a moving device.
+    // Cancelled there, Detect stops: the line stays, nothing is sent, no
+    // detection starts.
     void detectStopsWhenLeavingTheMovingDeviceIsCancelled() {
-        std::unique_ptr<Shell> shell =
-            startOnSimulator(QStringLiteral("sim"), QStringLiteral("compax3"));
+        std::unique_ptr<Shell> shell = startOnFake(QStringLiteral("sim:throttle=0,axes=2"));
         QVERIFY(shell);
         DeviceSession* session = shell->session();
         QVERIFY(QTest::qWaitFor([session] { return session->motionStop()->armed(); },

@@ -4,8 +4,9 @@
 // long job pauses them and names the job, a page not shown is paused; its
 // live values are greyed and say so. Driven cycle by cycle (tick()), on the
 // real worker against the simulator, with polls held on the line by the
-// test: no clock decides anything here.
-#include "shell_fixture.h"
+// test: no clock decides anything here. The device is a fake one
+// (tests/family/): the machinery is the shell's, whatever the family.
+#include "fake_shell_fixture.h"
 
 #include "live_value_checks.h"
 
@@ -86,10 +87,10 @@ bool liveAfter(const GatedPage& page, int answers) {
 class LivePollCycleTest : public QObject {
     Q_OBJECT
 private Q_SLOTS:
-    void initTestCase() { useTestSettings(); }
+    void initTestCase() { QVERIFY(setUpWithTheFakeFamily()); }
 
     void aCycleOnTheLineWithoutAnAnswerMakesTheValuesStale() {
-        std::unique_ptr<Shell> shell = startOnSimulator();
+        std::unique_ptr<Shell> shell = startOnFake();
         QVERIFY(shell);
         DeviceSession* session = shell->session();
         GatedPage page(session);
@@ -133,7 +134,7 @@ private Q_SLOTS:
     }
 
     void answersArrivingAreSlowNotSilent() {
-        std::unique_ptr<Shell> shell = startOnSimulator();
+        std::unique_ptr<Shell> shell = startOnFake();
         QVERIFY(shell);
         GatedPage page(shell->session());
         page.withProgress = true;
@@ -153,7 +154,7 @@ private Q_SLOTS:
     }
 
     void aPollQueuedBehindABackupPausesTheValues() {
-        std::unique_ptr<Shell> shell = startOnSimulator();
+        std::unique_ptr<Shell> shell = startOnFake();
         QVERIFY(shell);
         DeviceSession* session = shell->session();
         GatedPage page(session);
@@ -199,7 +200,7 @@ private Q_SLOTS:
     }
 
     void aPageNoLongerShownIsPaused() {
-        std::unique_ptr<Shell> shell = startOnSimulator();
+        std::unique_ptr<Shell> shell = startOnFake();
         QVERIFY(shell);
         GatedPage first(shell->session());
         GatedPage second(shell->session());

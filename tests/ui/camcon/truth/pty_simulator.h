@@ -1,6 +1,6 @@
 #pragma once
 
-#include "../../shell/shell_fixture.h"
+#include "../camcon_fixture.h"
 
 #include "comm/sim/camcon/sim_demo.h"
 #include "comm/sim/camcon/sim_line.h"

@@ -1,7 +1,7 @@
 // Issue 6, points 8 and 9: the PDF report is a record of the device and of
 // what is not written; counts add up; the backup's time left is no guess;
 // a restore to the very device asks its own "this erases the device".
-#include "../../shell/shell_fixture.h"
+#include "../camcon_fixture.h"
 
 #include "model/camcon/eeprom_image_file.h"
 #include "ui/camcon/backup_wizard.h"

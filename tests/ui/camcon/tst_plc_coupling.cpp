@@ -4,7 +4,7 @@
 // what the device holds afterwards. The GUI on the real QSerialPort against
 // a simulated CamCon speaking 3964R on a pseudo-terminal; the simulator's
 // state is the witness.
-#include "shell_fixture.h"
+#include "camcon_fixture.h"
 
 #include "comm/sim/camcon/sim_demo.h"
 #include "comm/sim/camcon/sim_device.h"

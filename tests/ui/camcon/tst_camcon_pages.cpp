@@ -1,7 +1,7 @@
-// Pages and models of the shell: generated settings form, masked user
-// numbers, PLC symbols, language switch, and every model under
-// QAbstractItemModelTester.
-#include "shell_fixture.h"
+// The CamCon's pages and models: generated settings form, masked user
+// numbers, PLC symbols, language switch, report, project, and every model
+// under QAbstractItemModelTester.
+#include "camcon_fixture.h"
 
 #include "ui/camcon/access_grid_model.h"
 #include "ui/camcon/commissioning_report.h"
@@ -32,7 +32,7 @@
 using namespace cambench;
 using namespace cambench::test;
 
-class ShellPagesTest : public QObject {
+class CamConPagesTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
@@ -53,7 +53,7 @@ private Q_SLOTS:
     void projectRoundTripKeepsEditsAsUnwritten();
 };
 
-void ShellPagesTest::modelsPassTheModelTester() {
+void CamConPagesTest::modelsPassTheModelTester() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
@@ -87,7 +87,7 @@ void ShellPagesTest::modelsPassTheModelTester() {
     QVERIFY(!plc.setData(plc.index(1, 2), QStringLiteral("not a symbol")));
 }
 
-void ShellPagesTest::settingsFormShowsRangeAndTooltipOfSpec() {
+void CamConPagesTest::settingsFormShowsRangeAndTooltipOfSpec() {
     Workspace workspace;
     DeviceSession session;
     SettingsPage page(&session, &workspace);
@@ -122,7 +122,7 @@ void ShellPagesTest::settingsFormShowsRangeAndTooltipOfSpec() {
     }
 }
 
-void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
+void CamConPagesTest::settingsEditMarksFieldUntilWritten() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
@@ -155,7 +155,7 @@ void ShellPagesTest::settingsEditMarksFieldUntilWritten() {
     QVERIFY(!field->label()->text().startsWith(QStringLiteral("● ")));
 }
 
-void ShellPagesTest::userNumbersMaskedUntilRevealed() {
+void CamConPagesTest::userNumbersMaskedUntilRevealed() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
@@ -177,7 +177,7 @@ void ShellPagesTest::userNumbersMaskedUntilRevealed() {
     QCOMPARE(cell.data().toString(), QStringLiteral("*****"));
 }
 
-void ShellPagesTest::plcSymbolsDecodeWhereKnownAndStayEditableAsHex() {
+void CamConPagesTest::plcSymbolsDecodeWhereKnownAndStayEditableAsHex() {
     QCOMPARE(plcsymbol::display(0), QString());
     QCOMPARE(plcsymbol::display(0x0A0A), QStringLiteral("M 11"));
     QCOMPARE(plcsymbol::display(0x0101), QStringLiteral("0x0101"));
@@ -190,7 +190,7 @@ void ShellPagesTest::plcSymbolsDecodeWhereKnownAndStayEditableAsHex() {
     QCOMPARE(plcsymbol::editText(0x0A0A), QStringLiteral("0A0A"));
 }
 
-void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
+void CamConPagesTest::plcMatrixEditMarksNetworkChanged() {
     Workspace workspace;
     PlcNetwork network;
     network.area = PlcNetwork::X;
@@ -207,7 +207,7 @@ void ShellPagesTest::plcMatrixEditMarksNetworkChanged() {
     QCOMPARE(workspace.plc().changedKeys(), QList<int>{Workspace::plcKey(PlcNetwork::X, 2)});
 }
 
-void ShellPagesTest::languageSwitchShowsGermanLabels() {
+void CamConPagesTest::languageSwitchShowsGermanLabels() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     CamDocument* cams = camConWorkspace(*shell)->cams();
@@ -236,7 +236,7 @@ void ShellPagesTest::languageSwitchShowsGermanLabels() {
     QCOMPARE(nav->item(MainWindow::Connection)->text(), QStringLiteral("Connection"));
 }
 
-void ShellPagesTest::everySettingTextHasAGermanTranslation() {
+void CamConPagesTest::everySettingTextHasAGermanTranslation() {
     QTranslator german;
     QVERIFY(german.load(QStringLiteral(":/i18n/cambench_de.qm")));
     QStringList missing;
@@ -255,7 +255,7 @@ void ShellPagesTest::everySettingTextHasAGermanTranslation() {
                         missing.join(QStringLiteral(" | "))));
 }
 
-void ShellPagesTest::reportPdfHoldsIdentityAndPrograms() {
+void CamConPagesTest::reportPdfHoldsIdentityAndPrograms() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QTextDocument document;
@@ -271,7 +271,7 @@ void ShellPagesTest::reportPdfHoldsIdentityAndPrograms() {
     QVERIFY(pdf.read(5) == "%PDF-");
 }
 
-void ShellPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
+void CamConPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
     auto shell = startOnSimulator();
     QVERIFY(shell);
     QVERIFY(waitForSections(*shell));
@@ -290,5 +290,5 @@ void ShellPagesTest::projectRoundTripKeepsEditsAsUnwritten() {
     QCOMPARE(projectToJson(projectFromWorkspace(offline)), projectToJson(expected));
 }
 
-QTEST_MAIN(ShellPagesTest)
-#include "tst_shell_pages.moc"
+QTEST_MAIN(CamConPagesTest)
+#include "tst_camcon_pages.moc"

@@ -1,6 +1,6 @@
 // Issue 9: Device → Back up all devices on this line, one progress bar per
 // device, going on past a device that does not answer and saying so.
-#include "shell_fixture.h"
+#include "camcon_fixture.h"
 
 #include "comm/camcon/ascii/ascii_protocol.h"
 #include "model/camcon/line_manifest.h"

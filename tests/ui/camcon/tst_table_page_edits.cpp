@@ -4,7 +4,7 @@
 // listed in Compare with device and written through the one write path; a
 // value the device would refuse is refused before anything is sent, saying
 // what and where; values never read say so; a project carries them.
-#include "shell_fixture.h"
+#include "camcon_fixture.h"
 
 #include "model/camcon/project_file.h"
 #include "ui/camcon/analogue_cams_page.h"

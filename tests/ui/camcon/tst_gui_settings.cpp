@@ -1,8 +1,9 @@
-// Issue 9, item 3: what the GUI remembers survives a restart: the last
-// connection (port, protocol and its settings), the window, the language,
-// the palette and the recent projects, with a File → Recent files menu.
-// Settings live in a temporary directory for the test.
-#include "shell_fixture.h"
+// Issue 9, item 3: what the GUI remembers survives a restart, shown on a
+// CamCon: the last connection (port, Multiuser protocol and its device and
+// PC numbers), the window, its section, the language, the palette and the
+// recent projects, with the CamCon's File → Recent files menu. Settings live
+// in a temporary directory for the test.
+#include "camcon_fixture.h"
 
 #include "ui/connection_page.h"
 #include "ui/device_session.h"
