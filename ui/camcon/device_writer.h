@@ -1,6 +1,6 @@
 #pragma once
 
-#include "workspace_item.h"
+#include "model/camcon/workspace_item.h"
 #include "write_plan_builder.h"
 
 #include "comm/camcon/usecases/write_report.h"

@@ -14,9 +14,9 @@ struct WorkspaceItem {
         DeadTime,     // number = output
         OutputName,   // number = output
         Setting,      // key = setting key
-        User,         // number = index into Workspace::users()
+        User,         // number = index into the workspace's users()
         DeletedUser,  // key = the user's number on the device
-        PlcNetwork,   // number = Workspace::plcKey(area, number)
+        PlcNetwork,   // number = DeviceWorkspace::plcKey(area, number)
         // The table interface's own sections.
         DeadTimeMode,        // number = output
         AnalogueCams,        // number = analogue output 1..14
