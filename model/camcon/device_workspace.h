@@ -82,7 +82,7 @@ public:
     const UserCopies& users() const { return m_users; }
 
     // --- PLC networks, key = plcKey(area, number)
-    static int plcKey(int area, int number) { return (area << 8) | number; }
+    static int plcKey(int area, int number) { return plcNetworkKey(area, number); }
     using PlcCopies = SectionCopies<int, PlcNetwork>;
     PlcCopies& plc() { return m_plc; }
     const PlcCopies& plc() const { return m_plc; }

@@ -16,3 +16,5 @@ cambench_add_truth_test(ui_truth_report_and_counts_test ui/camcon/truth/tst_repo
 cambench_add_truth_test(ui_truth_other_device_test ui/camcon/truth/tst_other_device.cpp)
 cambench_add_truth_test(ui_shell_typed_port_test ui/camcon/truth/tst_typed_port.cpp)
 cambench_add_test(ui_workspace_sections_test SOURCES ui/register_widgets.cpp ui/camcon/tst_workspace_sections.cpp LIBS cambench_ui cambench_gui_registry)
+# Issue 38 item 3: a write report is applied by the key each outcome carries.
+cambench_add_test(ui_write_pairing_test SOURCES ui/register_widgets.cpp ui/camcon/tst_write_pairing.cpp ui/camcon/cameditor/cam_test_support.h LIBS cambench_ui cambench_gui_registry)
