@@ -30,4 +30,10 @@ struct PlcNetwork {
     }
 };
 
+// One number for a network's place (area, number): the key the workspace
+// keeps networks under.
+inline int plcNetworkKey(int area, int number) {
+    return (area << 8) | number;
+}
+
 }  // namespace cambench

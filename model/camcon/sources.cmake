@@ -10,6 +10,10 @@ target_sources(cambench_model PRIVATE
   camcon/dead_time_modes.cpp
   camcon/carry_over.h
   camcon/section_copies.h
+  camcon/cam_section.h
+  camcon/workspace_item.h
+  camcon/device_workspace.h
+  camcon/device_workspace.cpp
   camcon/analogue_cams.h
   camcon/analogue_cams.cpp
   camcon/programming_program.h

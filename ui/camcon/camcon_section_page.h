@@ -1,7 +1,7 @@
 #pragma once
 
+#include "model/camcon/workspace_item.h"
 #include "ui/camcon/device_writer.h"
-#include "ui/camcon/workspace_item.h"
 #include "ui/section_page.h"
 
 #include "model/result.h"

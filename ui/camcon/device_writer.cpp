@@ -8,10 +8,12 @@
 #include "ui/report_dialog.h"
 #include "workspace.h"
 
+#include "comm/camcon/usecases/value_text.h"
 #include "comm/camcon/usecases/write_items.h"
 #include "ui/camcon/cameditor/cam_document.h"
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QSet>
 #include <QWidget>
 
@@ -38,15 +40,56 @@ bool knownAfter(usecases::WriteState state) {
     return state != usecases::WriteState::Unknown && state != usecases::WriteState::NotSent;
 }
 
-void applyTracks(CamDocument& cams, const PlannedWrite& planned,
-                 const usecases::WriteReport& report) {
+// The outcome of an item of the plan the report says nothing of.
+template <class T>
+usecases::ItemOutcome<T> notSent(const QString& label) {
+    usecases::ItemOutcome<T> missing;
+    missing.label = label;
+    missing.state = usecases::WriteState::NotSent;
+    missing.error = Error{ErrorKind::InvalidData,
+                          QCoreApplication::translate(
+                              "cambench::DeviceWriter",
+                              "The write's report says nothing of this item: it counts as not "
+                              "written. Read the device to see what it holds."),
+                          0};
+    return missing;
+}
+
+// One list of a report's outcomes, found by the key of their item. An item
+// of the plan the report says nothing of is added to the report as not
+// sent: nothing applies it, and the report never counts it as done.
+template <class T>
+class OutcomesByItem {
+public:
+    explicit OutcomesByItem(QList<usecases::KeyedOutcome<T>>& outcomes) : m_outcomes(outcomes) {
+        for (qsizetype i = 0; i < outcomes.size(); ++i) m_index.insert(outcomes.at(i).item, i);
+    }
+
+    usecases::KeyedOutcome<T> of(const WorkspaceItem& item, const QString& label) {
+        if (const auto it = m_index.constFind(item); it != m_index.cend())
+            return m_outcomes.at(*it);
+        const usecases::KeyedOutcome<T> missing = usecases::keyed(item, notSent<T>(label));
+        m_index.insert(item, m_outcomes.size());
+        m_outcomes.append(missing);
+        return missing;
+    }
+
+private:
+    QList<usecases::KeyedOutcome<T>>& m_outcomes;
+    QHash<WorkspaceItem, qsizetype> m_index;
+};
+
+void applyTracks(CamDocument& cams, const usecases::WritePlan& plan,
+                 usecases::WriteReport& report) {
     // Programs never read are written whole; their device copy is known
     // afterwards only when every one of their items is.
     QMap<int, CamProgram> assembled;
     QSet<int> incomplete;
-    for (int i = 0; i < planned.plan.programNames.size() && i < report.programNames.size(); ++i) {
-        const int program = planned.plan.programNames.at(i).number;
-        const auto& outcome = report.programNames.at(i);
+    OutcomesByItem<QString> names(report.programNames);
+    for (const usecases::NameWrite& write : plan.programNames) {
+        const int program = write.number;
+        const auto outcome =
+            names.of(usecases::programNameItem(write), usecases::programNameLabel(program));
         if (cams.hasDeviceCopy(program)) {
             if (outcome.actual) cams.setDeviceProgramName(program, *outcome.actual);
         } else if (outcome.actual) {
@@ -56,9 +99,11 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned,
             incomplete.insert(program);
         }
     }
-    for (int i = 0; i < planned.plan.tracks.size() && i < report.tracks.size(); ++i) {
-        const int program = planned.plan.tracks.at(i).program;
-        const auto& outcome = report.tracks.at(i);
+    OutcomesByItem<Track> tracks(report.tracks);
+    for (const usecases::TrackWrite& write : plan.tracks) {
+        const int program = write.program;
+        const auto outcome =
+            tracks.of(usecases::itemOf(write), usecases::trackLabel(program, write.wanted.output));
         if (cams.hasDeviceCopy(program)) {
             if (outcome.actual) {
                 cams.setDeviceTrack(program, *outcome.actual);
@@ -67,7 +112,7 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned,
                 // more: say so there; the other outputs keep what the report
                 // established.
                 if (outcome.state == usecases::WriteState::Unknown)
-                    cams.forgetDeviceTrack(program, planned.plan.tracks.at(i).wanted.output);
+                    cams.forgetDeviceTrack(program, write.wanted.output);
             }
         } else if (outcome.actual) {
             assembled[program].number = program;
@@ -84,20 +129,30 @@ void applyTracks(CamDocument& cams, const PlannedWrite& planned,
 
 // The table interface's own sections: their device copies follow.
 void applyTableSections(Workspace& workspace, const usecases::WritePlan& plan,
-                        const usecases::WriteReport& report) {
-    for (int i = 0; i < plan.deadTimeModes.size() && i < report.deadTimeModes.size(); ++i) {
-        const auto& actual = report.deadTimeModes.at(i).actual;
+                        usecases::WriteReport& report) {
+    OutcomesByItem<OutputDeadTime> modes(report.deadTimeModes);
+    for (const usecases::DeadTimeModeWrite& write : plan.deadTimeModes) {
+        const auto actual =
+            modes.of(usecases::itemOf(write), usecases::deadTimeModeLabel(write.output)).actual;
         if (!actual) continue;
-        workspace.deadTimeModes().setDevice(plan.deadTimeModes.at(i).output, *actual);
+        workspace.deadTimeModes().setDevice(write.output, *actual);
         // Word 0 is the dead time of mode Normal, the one Dead times shows.
-        workspace.cams()->setDeviceDeadTime(plan.deadTimeModes.at(i).output, actual->normal);
+        workspace.cams()->setDeviceDeadTime(write.output, actual->normal);
     }
-    for (const auto& outcome : report.analogueCams) {
-        if (outcome.actual)
-            workspace.analogueCams().setDevice(outcome.actual->output, *outcome.actual);
+    OutcomesByItem<AnalogueCamTrack> analogue(report.analogueCams);
+    for (const usecases::AnalogueCamWrite& write : plan.analogueCams) {
+        const auto actual =
+            analogue.of(usecases::itemOf(write), usecases::analogueCamsLabel(write.wanted.output))
+                .actual;
+        if (actual) workspace.analogueCams().setDevice(actual->output, *actual);
     }
+    if (plan.programmingProgram && !report.programmingProgram)
+        report.programmingProgram =
+            notSent<ProgrammingProgram>(usecases::programmingProgramLabel());
     if (report.programmingProgram && report.programmingProgram->actual)
         workspace.programmingProgram().setDevice(*report.programmingProgram->actual);
+    if (plan.eepromLock && !report.eepromLock)
+        report.eepromLock = notSent<bool>(usecases::eepromLockLabel());
     if (report.eepromLock && report.eepromLock->actual)
         workspace.eepromLock().setDevice(*report.eepromLock->actual);
 }
@@ -105,7 +160,7 @@ void applyTableSections(Workspace& workspace, const usecases::WritePlan& plan,
 }  // namespace
 
 void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
-                      const usecases::WriteReport& report) {
+                      usecases::WriteReport& report) {
     const usecases::WritePlan& plan = planned.plan;
     CamDocument& cams = *workspace.cams();
     for (const auto* outcomes : {&report.settings, &report.linkSettings}) {
@@ -115,25 +170,32 @@ void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
                 workspace.settings().setDevice(it.key(), *it);
         }
     }
-    applyTracks(cams, planned, report);
-    for (int i = 0; i < plan.deadTimes.size() && i < report.deadTimes.size(); ++i) {
-        if (report.deadTimes.at(i).actual)
-            cams.setDeviceDeadTime(plan.deadTimes.at(i).output, *report.deadTimes.at(i).actual);
+    applyTracks(cams, plan, report);
+    OutcomesByItem<qint32> deadTimes(report.deadTimes);
+    for (const usecases::DeadTimeWrite& write : plan.deadTimes) {
+        const auto actual =
+            deadTimes.of(usecases::itemOf(write), usecases::deadTimeLabel(write.output)).actual;
+        if (actual) cams.setDeviceDeadTime(write.output, *actual);
     }
-    for (int i = 0; i < plan.outputNames.size() && i < report.outputNames.size(); ++i) {
-        if (report.outputNames.at(i).actual)
-            cams.setDeviceOutputName(plan.outputNames.at(i).number,
-                                     *report.outputNames.at(i).actual);
+    OutcomesByItem<QString> outputNames(report.outputNames);
+    for (const usecases::NameWrite& write : plan.outputNames) {
+        const auto actual =
+            outputNames.of(usecases::outputNameItem(write), usecases::outputNameLabel(write.number))
+                .actual;
+        if (actual) cams.setDeviceOutputName(write.number, *actual);
     }
     // Users last but one: each changes the numbers the following ones are found by.
-    for (int i = 0; i < plan.users.size() && i < report.users.size(); ++i) {
-        const auto& outcome = report.users.at(i);
+    OutcomesByItem<std::optional<User>> users(report.users);
+    for (const usecases::UserWrite& write : plan.users) {
+        const QString name = write.wanted ? write.wanted->name : QString();
+        const auto outcome = users.of(usecases::itemOf(write), usecases::userLabel(name));
         if (!knownAfter(outcome.state) || !outcome.actual) continue;
-        workspace.users().setDevice(planned.userIndex.value(i, -1), plan.users.at(i).deviceNumber,
-                                    *outcome.actual);
+        workspace.users().setDevice(write.row, write.deviceNumber, *outcome.actual);
     }
-    for (int i = 0; i < plan.plcNetworks.size() && i < report.plcNetworks.size(); ++i) {
-        if (const auto& actual = report.plcNetworks.at(i).actual)
+    OutcomesByItem<PlcNetwork> networks(report.plcNetworks);
+    for (const usecases::PlcWrite& write : plan.plcNetworks) {
+        if (const auto actual =
+                networks.of(usecases::itemOf(write), usecases::plcLabel(write.wanted)).actual)
             workspace.plc().setDevice(Workspace::plcKey(actual->area, actual->number), *actual);
     }
     applyTableSections(workspace, plan, report);

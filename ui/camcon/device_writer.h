@@ -1,6 +1,6 @@
 #pragma once
 
-#include "workspace_item.h"
+#include "model/camcon/workspace_item.h"
 #include "write_plan_builder.h"
 
 #include "comm/camcon/usecases/write_report.h"
@@ -22,10 +22,11 @@ class Workspace;
 using WriteResult = Result<usecases::WriteReport>;
 
 // Makes the workspace's device copy what the report says the device holds,
-// item by item. Edits are never touched: an item that failed stays edited,
-// with its undo history.
+// item by item, each outcome found by the key of its item. Edits are never
+// touched: an item that failed stays edited, with its undo history. An item
+// of the plan the report says nothing of is added to it as not sent.
 void applyWriteReport(Workspace& workspace, const PlannedWrite& planned,
-                      const usecases::WriteReport& report);
+                      usecases::WriteReport& report);
 
 // The one write of the GUI: `items` (all differing ones when empty) go
 // through usecases::writeItems in one job. The connected device's identity

@@ -5,7 +5,6 @@ include(${CMAKE_CURRENT_LIST_DIR}/cameditor/sources.cmake)
 target_sources(cambench_ui PRIVATE
   camcon/workspace.h
   camcon/workspace.cpp
-  camcon/workspace_item.h
   camcon/link_settings_question.h
   camcon/link_settings_question.cpp
   camcon/camcon_section_page.h

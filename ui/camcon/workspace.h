@@ -1,194 +1,24 @@
 #pragma once
 
-#include "model/camcon/analogue_cams.h"
-#include "model/camcon/dead_time_modes.h"
-#include "model/camcon/dead_times.h"
-#include "model/camcon/device_info.h"
-#include "model/camcon/plc_network.h"
-#include "model/camcon/programming_program.h"
-#include "model/camcon/project_file.h"
-#include "model/camcon/section_copies.h"
-#include "model/camcon/system_settings.h"
-#include "model/camcon/user_copies.h"
-
-#include <QList>
-#include <QMap>
-#include <QObject>
-
-#include <optional>
+#include "model/camcon/device_workspace.h"
 
 namespace cambench {
 
 class CamDocument;
 
-// Everything the user works on for one device, beside what the device holds
-// (the copy last read from or written to it). Lives outside the main window,
-// so a reconnect, a language switch (which rebuilds the window) or a failed
-// read never loses an unwritten edit. Cam programs, names and dead times are
-// in the cam editor's CamDocument; settings, users, PLC networks and the
-// table interface's sections here.
-//
-// One rule for values that arrive (a read, an opened project): with
-// `keepEdits`, an item the user edited keeps the edit and every other item
-// takes the new value; without, every item takes it (SectionCopies::merge).
-class Workspace : public QObject {
+// The workspace of model/camcon/device_workspace.h with its cam section:
+// the cam editor's document, whose edits are undo commands (QUndoStack is
+// QtGui, so the document is the GUI's).
+class Workspace : public DeviceWorkspace {
     Q_OBJECT
 public:
     explicit Workspace(QObject* parent = nullptr);
     ~Workspace() override;
 
-    const DeviceInfo& info() const { return m_info; }
-    bool infoFromDevice() const { return m_infoFromDevice; }
-    // Capacities for the editors: from the device, or chosen for a project.
-    void setInfo(const DeviceInfo& info, bool fromDevice);
-
     CamDocument* cams() const { return m_cams; }
 
-    // The project file this work was last opened from or saved to (empty:
-    // none). Kept here, not in the window, so a language switch keeps it.
-    QString projectPath() const { return m_projectPath; }
-    void setProjectPath(const QString& path);
-    // Forgets everything, edits and device copies (a new project).
-    void clear(const DeviceInfo& info);
-
-    // When each part of the device copy was read (UTC); empty: not read.
-    const ProjectReadTimes& readTimes() const { return m_readAt; }
-    void setReadTime(ProjectPart part, const QDateTime& utc);
-    void setProgramReadTime(int program, const QDateTime& utc);
-    // The newest time anything was read from the device (invalid: never).
-    QDateTime lastReadTime() const;
-
-    // --- Output names and dead times: edited and device copy in the CamDocument.
-    bool outputSettingsKnown() const;
-    qint32 deviceDeadTime(int output) const;
-    QString deviceOutputName(int output) const;
-    void mergeOutputSettings(const QMap<int, QString>& names, const DeadTimes& deadTimes,
-                             ValueSource source, bool keepEdits);
-    int outputSettingsEditCount() const;
-
-    // --- The sections with an edited copy beside the device's, one shape
-    // each (SectionCopies); a change of one emits its signal below.
-    // Encoder & system settings, key = a key of settingSpecs(). A device's
-    // values are its whole section (mergeWhole).
-    using SettingsCopies = SectionCopies<QString, QVariant>;
-    SettingsCopies& settings() { return m_settings; }
-    const SettingsCopies& settings() const { return m_settings; }
-
-    // --- Users, in the same shape with the list the users page shows
-    // (UserCopies); a change emits usersChanged.
-    UserCopies& users() { return m_users; }
-    const UserCopies& users() const { return m_users; }
-
-    // --- PLC networks, key = plcKey(area, number)
-    static int plcKey(int area, int number) { return (area << 8) | number; }
-    using PlcCopies = SectionCopies<int, PlcNetwork>;
-    PlcCopies& plc() { return m_plc; }
-    const PlcCopies& plc() const { return m_plc; }
-    static QMap<int, PlcNetwork> plcByKey(const QList<PlcNetwork>& networks);
-    // As shown, or an empty network of that place.
-    PlcNetwork plcNetwork(int area, int number) const;
-
-    // --- Dead-time modes (table interface), key = output (1-based). The
-    // Dead-time modes page shows and edits them here.
-    using DeadTimeModeCopies = SectionCopies<int, OutputDeadTime>;
-    DeadTimeModeCopies& deadTimeModes() { return m_deadTimeModes; }
-    const DeadTimeModeCopies& deadTimeModes() const { return m_deadTimeModes; }
-    // Modes that arrive, by merge()'s rule; a device's are its whole
-    // section. Only outputs the device has keep or take an edit once it was
-    // read (the page has no row to show another in).
-    void mergeDeadTimeModes(const DeadTimeModes& modes, ValueSource source, bool keepEdits);
-
-    // --- The table interface's other sections; a change of any emits
-    // tableSectionsChanged. Analogue cams, key = analogue output 1..14.
-    using AnalogueCamCopies = SectionCopies<int, AnalogueCamTrack>;
-    AnalogueCamCopies& analogueCams() { return m_analogueCams; }
-    const AnalogueCamCopies& analogueCams() const { return m_analogueCams; }
-    SingleCopy<ProgrammingProgram>& programmingProgram() { return m_programmingProgram; }
-    const SingleCopy<ProgrammingProgram>& programmingProgram() const {
-        return m_programmingProgram;
-    }
-    // true: locked.
-    SingleCopy<bool>& eepromLock() { return m_eepromLock; }
-    const SingleCopy<bool>& eepromLock() const { return m_eepromLock; }
-
-    // Every item that differs from the device, across all sections.
-    int changedCount() const;
-
-    // --- Which device the device copies are from: the identity and
-    // fingerprint read last (on a connect, or with a read of everything).
-    const std::optional<DeviceInfo>& copiesFrom() const { return m_copiesFrom; }
-    // Whether the fingerprint in copiesFrom() is still the device's: a
-    // write of ours changes the counts of programmed cams and dead times.
-    bool copiesFingerprintKnown() const { return m_fingerprintKnown; }
-    void setCopiesFrom(const DeviceInfo& identity);
-    void fingerprintChangedByWrite() { m_fingerprintKnown = false; }
-    // Whether a device that identified itself as `now` is the one the device
-    // copies were read from (true when there are none to compare with).
-    bool copiesAreFrom(const DeviceInfo& now) const;
-    // Another device answers: every device copy and read time is forgotten
-    // (see CamDocument::forgetDeviceCopies), and with them what was only
-    // the old device's; of the edits, what `carry` says stays and counts as
-    // not on the device, and a read of the new device keeps it over its
-    // values without asking (takeIncoming). `note` says so until the next
-    // read of everything.
-    void forgetDeviceCopies(const QString& note, CarryOver carry);
-    // A section the connected protocol lacks: its device copy is not this
-    // device's state and is forgotten with its read time, edits stay.
-    void forgetDeviceSection(ProjectPart part);
-    // The table interface's sections (dead-time modes, analogue cams,
-    // programming program, EEPROM lock) on a protocol without them.
-    void forgetDeviceTableSections();
-    // After another device answered: which device the edits were carried
-    // from and how (nullopt: no device change, or nothing carried).
-    struct CarriedFrom {
-        DeviceInfo device;
-        CarryOver carry = CarryOver::Changes;
-    };
-    const std::optional<CarriedFrom>& carriedFrom() const { return m_carriedFrom; }
-    // Whether a section's values are yet to be read from the device since
-    // edits were carried to it: such a read keeps them without asking.
-    bool awaitsCarried(ProjectPart part) const;
-    bool awaitsCarriedProgram(int program) const;
-    QString otherDeviceNote() const { return m_otherDeviceNote; }
-    void clearOtherDeviceNote();
-
-Q_SIGNALS:
-    void infoChanged();
-    void projectPathChanged();
-    void settingsChanged();
-    void usersChanged();
-    void plcChanged();
-    void deadTimeModesChanged();
-    void tableSectionsChanged();
-    void readTimesChanged();
-    void changedCountChanged(int count);
-    void otherDeviceNoteChanged();
-
 private:
-    void notifyChanged();
-    // Calls visit(section, the part its read time is kept under, its
-    // signal) for each of the sections in the one shape (self: this
-    // workspace, const or not).
-    template <class Self, class Visit>
-    static void forEachSection(Self& self, Visit visit);
-
-    DeviceInfo m_info;
-    QString m_projectPath;
-    bool m_infoFromDevice = false;
     CamDocument* m_cams;
-    ProjectReadTimes m_readAt;
-    SettingsCopies m_settings;
-    UserCopies m_users;
-    PlcCopies m_plc;
-    DeadTimeModeCopies m_deadTimeModes;
-    AnalogueCamCopies m_analogueCams;
-    SingleCopy<ProgrammingProgram> m_programmingProgram;
-    SingleCopy<bool> m_eepromLock;
-    int m_lastCount = 0;
-    std::optional<DeviceInfo> m_copiesFrom;
-    bool m_fingerprintKnown = false;
-    QString m_otherDeviceNote;
-    std::optional<CarriedFrom> m_carriedFrom;
 };
 
 }  // namespace cambench

@@ -111,13 +111,11 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
             case WorkspaceItem::Kind::User: {
                 if (item.number < 0 || item.number >= workspace.users().size()) break;
                 const UserCopies::EditedUser edited = workspace.users().row(item.number);
-                plan.users << usecases::UserWrite{edited.deviceNumber, edited.user};
-                planned.userIndex << item.number;
+                plan.users << usecases::UserWrite{edited.deviceNumber, edited.user, item.number};
                 break;
             }
             case WorkspaceItem::Kind::DeletedUser:
-                plan.users << usecases::UserWrite{item.key, std::nullopt};
-                planned.userIndex << -1;
+                plan.users << usecases::UserWrite{item.key, std::nullopt, -1};
                 break;
             case WorkspaceItem::Kind::DeadTimeMode: {
                 const Workspace::DeadTimeModeCopies& modes = workspace.deadTimeModes();

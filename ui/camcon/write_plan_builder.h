@@ -1,6 +1,6 @@
 #pragma once
 
-#include "workspace_item.h"
+#include "model/camcon/workspace_item.h"
 
 #include "comm/camcon/usecases/write_plan.h"
 
@@ -10,11 +10,10 @@ namespace cambench {
 
 class Workspace;
 
-// A write plan made from workspace items, and what each of its users
-// stands for (the plan knows users by their device number only).
+// A write plan made from workspace items (each user write knows its row of
+// Workspace::users(): UserWrite::row).
 struct PlannedWrite {
     usecases::WritePlan plan;
-    QList<int> userIndex;  // parallel to plan.users: Workspace::users() index, -1 = deletion
 };
 
 // Every item of the workspace that differs from the device, in plan order.

@@ -168,24 +168,26 @@ public:
         if (report.eepromLockFirst) report.eepromLock = writeEepromLock(*m_plan.eepromLock);
         for (const SettingsWrite& group : m_plan.settings) report.settings << writeSettings(group);
         for (const NameWrite& name : m_plan.programNames)
-            report.programNames << writeName(name, true);
+            report.programNames << keyed(programNameItem(name), writeName(name, true));
         const std::optional<ProgrammingProgram> programming = programmingBeforeTracks();
-        for (const TrackWrite& track : m_plan.tracks) report.tracks << writeTrack(track);
+        for (const TrackWrite& track : m_plan.tracks)
+            report.tracks << keyed(itemOf(track), writeTrack(track));
         if (programming && setProgrammingProgramBack(*programming, report))
             m_programmingAtStart = programming;
         fillDeadTimeBeliefs();
         for (const DeadTimeWrite& deadTime : m_plan.deadTimes)
-            report.deadTimes << writeDeadTime(deadTime);
+            report.deadTimes << keyed(itemOf(deadTime), writeDeadTime(deadTime));
         fillDeadTimeModeBeliefs();
         for (const DeadTimeModeWrite& mode : m_plan.deadTimeModes)
-            report.deadTimeModes << writeDeadTimeMode(mode);
+            report.deadTimeModes << keyed(itemOf(mode), writeDeadTimeMode(mode));
         for (const NameWrite& name : m_plan.outputNames)
-            report.outputNames << writeName(name, false);
-        for (const UserWrite& user : m_plan.users) report.users << writeUser(user);
+            report.outputNames << keyed(outputNameItem(name), writeName(name, false));
+        for (const UserWrite& user : m_plan.users)
+            report.users << keyed(itemOf(user), writeUser(user));
         for (const PlcWrite& network : m_plan.plcNetworks)
-            report.plcNetworks << writePlcNetwork(network);
+            report.plcNetworks << keyed(itemOf(network), writePlcNetwork(network));
         for (const AnalogueCamWrite& track : m_plan.analogueCams)
-            report.analogueCams << writeAnalogueCams(track);
+            report.analogueCams << keyed(itemOf(track), writeAnalogueCams(track));
         if (m_plan.programmingProgram)
             report.programmingProgram = writeProgrammingProgram(*m_plan.programmingProgram);
         // A lock last, so that everything before it is stored first.

@@ -138,6 +138,39 @@ int WritePlan::itemCount() const {
                analogueCams.size() + (programmingProgram ? 1 : 0) + (eepromLock ? 1 : 0));
 }
 
+WorkspaceItem itemOf(const TrackWrite& write) {
+    return WorkspaceItem::track(write.program, write.wanted.output);
+}
+
+WorkspaceItem itemOf(const DeadTimeWrite& write) {
+    return WorkspaceItem::deadTime(write.output);
+}
+
+WorkspaceItem itemOf(const DeadTimeModeWrite& write) {
+    return WorkspaceItem::deadTimeMode(write.output);
+}
+
+WorkspaceItem itemOf(const UserWrite& write) {
+    return write.row >= 0 ? WorkspaceItem::user(write.row)
+                          : WorkspaceItem::deletedUser(write.deviceNumber);
+}
+
+WorkspaceItem itemOf(const PlcWrite& write) {
+    return WorkspaceItem::plcNetwork(plcNetworkKey(write.wanted.area, write.wanted.number));
+}
+
+WorkspaceItem itemOf(const AnalogueCamWrite& write) {
+    return WorkspaceItem::analogueCams(write.wanted.output);
+}
+
+WorkspaceItem programNameItem(const NameWrite& write) {
+    return WorkspaceItem::programName(write.number);
+}
+
+WorkspaceItem outputNameItem(const NameWrite& write) {
+    return WorkspaceItem::outputName(write.number);
+}
+
 QList<SettingsWrite> settingsGroups(const SystemSettings& wanted) {
     QList<SettingsWrite> groups;
     const auto groupOf = [&groups](const QString& name) -> SettingsWrite& {

@@ -10,6 +10,7 @@
 #include "model/camcon/project_file.h"
 #include "model/camcon/system_settings.h"
 #include "model/camcon/user.h"
+#include "model/camcon/workspace_item.h"
 
 #include <QList>
 #include <QString>
@@ -85,9 +86,12 @@ struct SettingsWrite {
 // number of the device's user with the same name. What the device holds
 // before is WritePlan::usersOnDevice (read by writeItems when absent: the
 // check needs every user for duplicate numbers anyway).
+// `row`: the row of the workspace's user list it stands for (the GUI's;
+// -1: a user deleted there, or a plan not made from a workspace).
 struct UserWrite {
     QString deviceNumber;
     std::optional<User> wanted;
+    int row = -1;
 };
 
 // One PLC network; identified by its area and number.
@@ -136,6 +140,19 @@ struct WritePlan {
     int itemCount() const;
     bool isEmpty() const { return itemCount() == 0; }
 };
+
+// The item each entry of a plan is about: the key its outcome carries
+// (WriteReport), by which a report is paired with its plan.
+WorkspaceItem itemOf(const TrackWrite& write);
+WorkspaceItem itemOf(const DeadTimeWrite& write);
+WorkspaceItem itemOf(const DeadTimeModeWrite& write);
+// By `row`; without one (a deletion, a plan not made from a workspace) by
+// the device number.
+WorkspaceItem itemOf(const UserWrite& write);
+WorkspaceItem itemOf(const PlcWrite& write);
+WorkspaceItem itemOf(const AnalogueCamWrite& write);
+WorkspaceItem programNameItem(const NameWrite& write);
+WorkspaceItem outputNameItem(const NameWrite& write);
 
 // Splits `wanted` into one SettingsWrite per settings group, in the order
 // of settingSpecs(). Keys that are no setting go into a group "unknown"

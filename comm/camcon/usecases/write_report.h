@@ -1,8 +1,9 @@
 #pragma once
 
 // What writeItems() did, item by item, and the device's real state after a
-// failure. Parallel to the plan: report.tracks[i] is the outcome of
-// plan.tracks[i], and so on.
+// failure. Each outcome of a list carries the key of the item it is about
+// (itemOf(), write_plan.h): whoever applies a report pairs it with the plan
+// by that key, never by the place in the list.
 
 #include "comm/usecases/item_outcome.h"
 #include "write_plan.h"
@@ -14,23 +15,37 @@
 #include <QStringList>
 
 #include <optional>
+#include <utility>
 
 namespace cambench::usecases {
+
+template <class T>
+struct KeyedOutcome : ItemOutcome<T> {
+    WorkspaceItem item;
+};
+
+template <class T>
+KeyedOutcome<T> keyed(const WorkspaceItem& item, ItemOutcome<T> outcome) {
+    KeyedOutcome<T> result;
+    static_cast<ItemOutcome<T>&>(result) = std::move(outcome);
+    result.item = item;
+    return result;
+}
 
 struct WriteReport {
     // The plan's settings groups without their communication settings
     // (a group of nothing else is dropped).
     QList<ItemOutcome<SystemSettings>> settings;
-    QList<ItemOutcome<QString>> programNames;
-    QList<ItemOutcome<Track>> tracks;
-    QList<ItemOutcome<qint32>> deadTimes;
-    QList<ItemOutcome<OutputDeadTime>> deadTimeModes;
-    QList<ItemOutcome<QString>> outputNames;
+    QList<KeyedOutcome<QString>> programNames;
+    QList<KeyedOutcome<Track>> tracks;
+    QList<KeyedOutcome<qint32>> deadTimes;
+    QList<KeyedOutcome<OutputDeadTime>> deadTimeModes;
+    QList<KeyedOutcome<QString>> outputNames;
     // `actual`: the user as on the device after the write, empty when the
     // device has no such user (deleted, or never created).
-    QList<ItemOutcome<std::optional<User>>> users;
-    QList<ItemOutcome<PlcNetwork>> plcNetworks;
-    QList<ItemOutcome<AnalogueCamTrack>> analogueCams;
+    QList<KeyedOutcome<std::optional<User>>> users;
+    QList<KeyedOutcome<PlcNetwork>> plcNetworks;
+    QList<KeyedOutcome<AnalogueCamTrack>> analogueCams;
     std::optional<ItemOutcome<ProgrammingProgram>> programmingProgram;
     std::optional<ItemOutcome<bool>> eepromLock;
     bool eepromLockFirst = false;  // an unlock, written before every other item

@@ -11,3 +11,4 @@ cambench_add_test(tst_program_diff SOURCES model/camcon/tst_program_diff.cpp LIB
 cambench_add_test(tst_cam_timing SOURCES model/camcon/tst_cam_timing.cpp LIBS cambench_model)
 cambench_add_test(tst_section_copies SOURCES model/camcon/tst_section_copies.cpp LIBS cambench_model)
 cambench_add_test(tst_user_copies SOURCES model/camcon/tst_user_copies.cpp LIBS cambench_model)
+cambench_add_test(tst_device_workspace SOURCES model/camcon/tst_device_workspace.cpp LIBS cambench_model)

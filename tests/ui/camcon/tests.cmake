@@ -37,3 +37,5 @@ cambench_add_camcon_gui_test(ui_camcon_table_page_edits_test tst_table_page_edit
 # Issue 9, item 3: what the GUI remembers of a CamCon line, its project and
 # its section survives a restart.
 cambench_add_camcon_gui_test(ui_camcon_gui_settings_test tst_gui_settings.cpp)
+# Issue 38 item 3: a write report is applied by the key each outcome carries.
+cambench_add_test(ui_write_pairing_test SOURCES ui/register_widgets.cpp ui/camcon/tst_write_pairing.cpp ui/camcon/cameditor/cam_test_support.h LIBS cambench_ui cambench_gui_registry)

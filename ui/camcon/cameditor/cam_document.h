@@ -2,6 +2,7 @@
 
 #include "model/camcon/cam_axis.h"
 #include "model/camcon/cam_program.h"
+#include "model/camcon/cam_section.h"
 #include "model/camcon/cam_validation.h"
 #include "model/camcon/carry_over.h"
 #include "model/camcon/dead_times.h"
@@ -40,7 +41,7 @@ struct TrackDifference {
 // through undo commands on undoStack(); the apply*() setters are for those
 // commands only. Nothing here talks to the device: the shell reads and
 // writes, then calls loadProgramFromDevice(), setDeviceProgram() or setDeviceTrack().
-class CamDocument : public QObject {
+class CamDocument : public QObject, public CamSection {
     Q_OBJECT
 
 public:
@@ -48,9 +49,9 @@ public:
     ~CamDocument() override;
 
     // Limits of the device (IMIN..IMAX, outputs, programs) and the axis kind.
-    void setLimits(const DeviceInfo& info, bool rotary);
+    void setLimits(const DeviceInfo& info, bool rotary) override;
     const DeviceInfo& deviceInfo() const { return m_info; }
-    bool isRotary() const { return m_rotary; }
+    bool isRotary() const override { return m_rotary; }
     qint32 minPosition() const { return m_info.minPosition; }
     qint32 maxPosition() const { return m_info.maxPosition; }
     Axis axis() const { return {m_info.minPosition, m_info.maxPosition, m_rotary}; }
@@ -62,8 +63,8 @@ public:
     QString programName(int program) const;
     QString outputName(int output) const;
     qint32 deadTime(int output) const;  // 0.1 ms steps
-    const Names& names() const { return m_names; }
-    const DeadTimes& deadTimes() const { return m_deadTimes; }
+    const Names& names() const override { return m_names; }
+    const DeadTimes& deadTimes() const override { return m_deadTimes; }
     // The user's minimum pulse per output (0.1 ms) for the timing check:
     // kept on this PC and in the project file, never written to a device.
     const MinimumPulses& minimumPulses() const { return m_minimumPulses; }
@@ -76,9 +77,9 @@ public:
     // value; without, everything does. Edits replaced are one undo step.
     void mergeProgram(const CamProgram& program, bool fromDevice, bool keepEdits);
     // Forgets everything: edits, device copies, undo history (a new project).
-    void clear();
+    void clear() override;
     void mergeOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes,
-                             bool fromDevice, bool keepEdits);
+                             bool fromDevice, bool keepEdits) override;
     // Takes the device's program / output settings as device copy and
     // edited state (mergeProgram from the device, not keeping edits).
     void loadProgramFromDevice(const CamProgram& program) { mergeProgram(program, true, false); }
@@ -89,7 +90,7 @@ public:
     // Whether the program holds anything not on the device (edits, or
     // content of a program not read).
     bool programEdited(int program) const;
-    int outputSettingsEditCount() const;
+    int outputSettingsEditCount() const override;
     // Only the device copy ("keep mine"): edits stay and now compare with it.
     void setDeviceProgram(const CamProgram& program);
     // After a write: what the device holds now, item by item. A track or a
@@ -111,12 +112,12 @@ public:
     // keeps its value over the new device's when that is read (mergeProgram,
     // mergeOutputSettings with keepEdits). The undo history goes with the
     // values it was made on.
-    void forgetDeviceCopies(CarryOver carry = CarryOver::Changes);
+    void forgetDeviceCopies(CarryOver carry = CarryOver::Changes) override;
     std::optional<CamProgram> deviceProgram(int program) const;
     std::optional<Track> deviceTrack(int program, int output) const;
-    bool outputSettingsKnown() const { return m_outputSettingsKnown; }
-    std::optional<qint32> deviceDeadTime(int output) const;
-    std::optional<QString> deviceOutputName(int output) const;
+    bool outputSettingsKnown() const override { return m_outputSettingsKnown; }
+    std::optional<qint32> deviceDeadTime(int output) const override;
+    std::optional<QString> deviceOutputName(int output) const override;
     bool hasDeviceCopy(int program) const { return m_device.contains(program); }
     QList<int> editedPrograms() const { return m_edited.keys(); }
 
@@ -135,7 +136,7 @@ public:
     Cam suggestNewCam(int program, int output) const;
     // Tracks, program names, output names and dead times that differ from
     // the device (for the window title).
-    int changedCount() const;
+    int changedCount() const override;
 
     QUndoStack* undoStack() const { return m_undoStack; }
     // A key no other edit uses: all setCam() calls with it merge into one

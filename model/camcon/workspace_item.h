@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QHashFunctions>
 #include <QMetaType>
 #include <QString>
 
@@ -14,9 +15,9 @@ struct WorkspaceItem {
         DeadTime,     // number = output
         OutputName,   // number = output
         Setting,      // key = setting key
-        User,         // number = index into Workspace::users()
+        User,         // number = index into the workspace's users() (-1: none)
         DeletedUser,  // key = the user's number on the device
-        PlcNetwork,   // number = Workspace::plcKey(area, number)
+        PlcNetwork,   // number = DeviceWorkspace::plcKey(area, number)
         // The table interface's own sections.
         DeadTimeMode,        // number = output
         AnalogueCams,        // number = analogue output 1..14
@@ -47,6 +48,9 @@ struct WorkspaceItem {
 
     friend bool operator==(const WorkspaceItem& a, const WorkspaceItem& b) {
         return a.kind == b.kind && a.program == b.program && a.number == b.number && a.key == b.key;
+    }
+    friend size_t qHash(const WorkspaceItem& item, size_t seed = 0) {
+        return qHashMulti(seed, int(item.kind), item.program, item.number, item.key);
     }
 };
 
