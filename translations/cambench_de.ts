@@ -1180,25 +1180,6 @@ Stellen Sie sie hier nur wieder her, wenn dieses Gerät das ersetzt, von dem die
     </message>
 </context>
 <context>
-    <name>cambench::AsciiSettingsWidget</name>
-    <message>
-        <source>Multiuser: the number of the CamCon to talk to (0–63).</source>
-        <translation>Multiuser: die Nummer der CamCon, mit der gesprochen wird (0–63).</translation>
-    </message>
-    <message>
-        <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
-        <translation>Multiuser: die eigene Nummer dieses PCs am Bus (0–63).</translation>
-    </message>
-    <message>
-        <source>Device number:</source>
-        <translation>Gerätenummer:</translation>
-    </message>
-    <message>
-        <source>PC number:</source>
-        <translation>PC-Nummer:</translation>
-    </message>
-</context>
-<context>
     <name>cambench::BackupPage</name>
     <message>
         <source>Backup or restore…</source>
@@ -1410,17 +1391,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back. The file holds the users&apos; access codes: keep it where only you can read it.</source>
         <translation>Eine Sicherung kopiert das ganze EEPROM des Geräts in eine Datei. Eine Wiederherstellung löscht das Gerät und schreibt eine solche Datei zurück. Die Datei enthält die Zugangscodes der Benutzer: bewahren Sie sie so auf, dass nur Sie sie lesen können.</translation>
-    </message>
-</context>
-<context>
-    <name>cambench::CamBusSettingsWidget</name>
-    <message>
-        <source>The number of the CamCon to talk to on the Cam-BUS (0–63).</source>
-        <translation>Die Nummer der CamCon, mit der am Cam-BUS gesprochen wird (0–63).</translation>
-    </message>
-    <message>
-        <source>This PC&apos;s own number on the Cam-BUS (0–63, usually 63). No other user of the bus (CamCon, display, another PC) may have it.</source>
-        <translation>Die eigene Nummer dieses PCs am Cam-BUS (0–63, meist 63). Kein anderer Teilnehmer des Busses (CamCon, Anzeige, anderer PC) darf sie haben.</translation>
     </message>
 </context>
 <context>
@@ -3574,25 +3544,6 @@ Jetzt löschen und wiederherstellen?</translation>
     </message>
 </context>
 <context>
-    <name>cambench::Compax3SettingsWidget</name>
-    <message>
-        <source>The drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;). Scan bus lists the addresses that answer.</source>
-        <translation>Die RS485-Adresse des Antriebs (C3 ServoManager, „RS485 Einstellungen“). „Bus durchsuchen“ listet die Adressen, die antworten.</translation>
-    </message>
-    <message>
-        <source>RS485, 115200 8N1 unless set otherwise in the drive.</source>
-        <translation>RS485, 115200 8N1, sofern im Antrieb nicht anders eingestellt.</translation>
-    </message>
-    <message>
-        <source>RS232, 115200 8N1 with RTS/CTS unless set otherwise in the drive; a null-modem cable with RTS/CTS.</source>
-        <translation>RS232, 115200 8N1 mit RTS/CTS, sofern im Antrieb nicht anders eingestellt; ein Nullmodemkabel mit RTS/CTS.</translation>
-    </message>
-    <message>
-        <source>Drive address:</source>
-        <translation>Antriebsadresse:</translation>
-    </message>
-</context>
-<context>
     <name>cambench::Compax3StatusPage</name>
     <message>
         <source>Status</source>
@@ -3758,14 +3709,6 @@ Jetzt löschen und wiederherstellen?</translation>
         <translation>Schnittstelle:</translation>
     </message>
     <message>
-        <source>Standard (point to point)</source>
-        <translation>Standard (Punkt zu Punkt)</translation>
-    </message>
-    <message>
-        <source>Multiuser (RS485 bus)</source>
-        <translation>Multiuser (RS485-Bus)</translation>
-    </message>
-    <message>
         <source>Protocol:</source>
         <translation>Protokoll:</translation>
     </message>
@@ -3827,14 +3770,6 @@ Jetzt löschen und wiederherstellen?</translation>
     <message>
         <source>Connection</source>
         <translation>Verbindung</translation>
-    </message>
-    <message>
-        <source>Table interface, 3964R n96 (9600 8N1)</source>
-        <translation>Tabellenschnittstelle, 3964R n96 (9600 8N1)</translation>
-    </message>
-    <message>
-        <source>Table interface, 3964R e38 (38400 8E1)</source>
-        <translation>Tabellenschnittstelle, 3964R e38 (38400 8E1)</translation>
     </message>
     <message>
         <source>Not connected to %1: %2
@@ -3937,10 +3872,6 @@ Prüfen Sie den Schnittstellennamen (eine serielle Schnittstelle, tcp://Host:Por
     <message>
         <source>%1, device number %2</source>
         <translation>%1, Gerätenummer %2</translation>
-    </message>
-    <message>
-        <source>Cam-BUS (RS485 token bus)</source>
-        <translation>Cam-BUS (RS485-Token-Bus)</translation>
     </message>
     <message>
         <source>Reconnect to reach device %1.</source>
@@ -4400,6 +4331,10 @@ Lesen Sie das Gerät neu oder verwenden Sie „Mit Gerät vergleichen“; Ihre �
     <message>
         <source>Nothing was written: the write was cancelled.</source>
         <translation>Nichts wurde geschrieben: das Schreiben wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The write&apos;s report says nothing of this item: it counts as not written. Read the device to see what it holds.</source>
+        <translation>Der Bericht des Schreibens sagt nichts über diesen Eintrag: Er gilt als nicht geschrieben. Lesen Sie das Gerät, um zu sehen, was es enthält.</translation>
     </message>
 </context>
 <context>
@@ -10080,6 +10015,70 @@ Die verwendete Tabelle bleibt: %3</translation>
     <message>
         <source>not powered: nothing to stop (nothing was sent)</source>
         <translation>nicht bestromt: nichts zu stoppen (nichts wurde gesendet)</translation>
+    </message>
+    <message>
+        <source>Device number:</source>
+        <translation>Gerätenummer:</translation>
+    </message>
+    <message>
+        <source>the number of the CamCon to talk to on the bus</source>
+        <translation>die Nummer der CamCon, mit der am Bus gesprochen wird</translation>
+    </message>
+    <message>
+        <source>PC number:</source>
+        <translation>PC-Nummer:</translation>
+    </message>
+    <message>
+        <source>this PC&apos;s own number on the bus</source>
+        <translation>die eigene Nummer dieses PCs am Bus</translation>
+    </message>
+    <message>
+        <source>Multiuser (RS485 bus)</source>
+        <translation>Multiuser (RS485-Bus)</translation>
+    </message>
+    <message>
+        <source>Standard (point to point)</source>
+        <translation>Standard (Punkt zu Punkt)</translation>
+    </message>
+    <message>
+        <source>Table interface, 3964R n96 (9600 8N1)</source>
+        <translation>Tabellenschnittstelle, 3964R n96 (9600 8N1)</translation>
+    </message>
+    <message>
+        <source>Table interface, 3964R e38 (38400 8E1)</source>
+        <translation>Tabellenschnittstelle, 3964R e38 (38400 8E1)</translation>
+    </message>
+    <message>
+        <source>Cam-BUS (RS485 token bus)</source>
+        <translation>Cam-BUS (RS485-Token-Bus)</translation>
+    </message>
+    <message>
+        <source>this PC&apos;s own number on the Cam-BUS, usually 63; no other user of the bus (CamCon, display, another PC) may have it</source>
+        <translation>die eigene Nummer dieses PCs am Cam-BUS, meist 63; kein anderer Teilnehmer des Busses (CamCon, Anzeige, anderer PC) darf sie haben</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Steuerung:</translation>
+    </message>
+    <message>
+        <source>the controller variant to expect; auto (the default) probes and names what it found</source>
+        <translation>die erwartete Steuerungsvariante; auto (die Vorgabe) fragt die Steuerung und nennt, was sie gefunden hat</translation>
+    </message>
+    <message>
+        <source>RS485, 115200 8N1 unless set otherwise in the drive.</source>
+        <translation>RS485, 115200 8N1, sofern im Antrieb nicht anders eingestellt.</translation>
+    </message>
+    <message>
+        <source>RS232, 115200 8N1 with RTS/CTS unless set otherwise in the drive; a null-modem cable with RTS/CTS.</source>
+        <translation>RS232, 115200 8N1 mit RTS/CTS, sofern im Antrieb nicht anders eingestellt; ein Nullmodemkabel mit RTS/CTS.</translation>
+    </message>
+    <message>
+        <source>Drive address:</source>
+        <translation>Antriebsadresse:</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;); Scan bus lists the addresses that answer</source>
+        <translation>die RS485-Adresse des Antriebs (C3 ServoManager, „RS485 Einstellungen“); „Bus durchsuchen“ listet die Adressen, die antworten</translation>
     </message>
 </context>
 <context>

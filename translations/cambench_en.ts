@@ -1178,25 +1178,6 @@ Restore it here only if this device replaces the one the backup was taken from (
     </message>
 </context>
 <context>
-    <name>cambench::AsciiSettingsWidget</name>
-    <message>
-        <source>Multiuser: the number of the CamCon to talk to (0–63).</source>
-        <translation type="unfinished">Multiuser: the number of the CamCon to talk to (0–63).</translation>
-    </message>
-    <message>
-        <source>Multiuser: this PC&apos;s own number on the bus (0–63).</source>
-        <translation type="unfinished">Multiuser: this PC&apos;s own number on the bus (0–63).</translation>
-    </message>
-    <message>
-        <source>Device number:</source>
-        <translation type="unfinished">Device number:</translation>
-    </message>
-    <message>
-        <source>PC number:</source>
-        <translation type="unfinished">PC number:</translation>
-    </message>
-</context>
-<context>
     <name>cambench::BackupPage</name>
     <message>
         <source>Backup or restore…</source>
@@ -1407,17 +1388,6 @@ Erase and restore now?</translation>
     </message>
     <message>
         <source>A backup copies the device&apos;s whole EEPROM into a file. A restore erases the device and writes such a file back. The file holds the users&apos; access codes: keep it where only you can read it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>cambench::CamBusSettingsWidget</name>
-    <message>
-        <source>The number of the CamCon to talk to on the Cam-BUS (0–63).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>This PC&apos;s own number on the Cam-BUS (0–63, usually 63). No other user of the bus (CamCon, display, another PC) may have it.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3572,25 +3542,6 @@ Erase and restore now?</translation>
     </message>
 </context>
 <context>
-    <name>cambench::Compax3SettingsWidget</name>
-    <message>
-        <source>The drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;). Scan bus lists the addresses that answer.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RS485, 115200 8N1 unless set otherwise in the drive.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RS232, 115200 8N1 with RTS/CTS unless set otherwise in the drive; a null-modem cable with RTS/CTS.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drive address:</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>cambench::Compax3StatusPage</name>
     <message>
         <source>Status</source>
@@ -3756,14 +3707,6 @@ Erase and restore now?</translation>
         <translation>Port:</translation>
     </message>
     <message>
-        <source>Standard (point to point)</source>
-        <translation>Standard (point to point)</translation>
-    </message>
-    <message>
-        <source>Multiuser (RS485 bus)</source>
-        <translation>Multiuser (RS485 bus)</translation>
-    </message>
-    <message>
         <source>Protocol:</source>
         <translation>Protocol:</translation>
     </message>
@@ -3825,14 +3768,6 @@ Erase and restore now?</translation>
     <message>
         <source>Connection</source>
         <translation>Connection</translation>
-    </message>
-    <message>
-        <source>Table interface, 3964R n96 (9600 8N1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Table interface, 3964R e38 (38400 8E1)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Not connected to %1: %2
@@ -3933,10 +3868,6 @@ Check the port name (a serial port, tcp://host:port for a device server), the pr
     </message>
     <message>
         <source>%1, device number %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cam-BUS (RS485 token bus)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4395,6 +4326,10 @@ Read the device again or use Compare with device; your edits are kept.</source>
     </message>
     <message>
         <source>Nothing was written: the write was cancelled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The write&apos;s report says nothing of this item: it counts as not written. Read the device to see what it holds.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -10069,6 +10004,70 @@ The table in use stays: %3</source>
     </message>
     <message>
         <source>not powered: nothing to stop (nothing was sent)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device number:</source>
+        <translation type="unfinished">Device number:</translation>
+    </message>
+    <message>
+        <source>the number of the CamCon to talk to on the bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PC number:</source>
+        <translation type="unfinished">PC number:</translation>
+    </message>
+    <message>
+        <source>this PC&apos;s own number on the bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Multiuser (RS485 bus)</source>
+        <translation type="unfinished">Multiuser (RS485 bus)</translation>
+    </message>
+    <message>
+        <source>Standard (point to point)</source>
+        <translation type="unfinished">Standard (point to point)</translation>
+    </message>
+    <message>
+        <source>Table interface, 3964R n96 (9600 8N1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table interface, 3964R e38 (38400 8E1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cam-BUS (RS485 token bus)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this PC&apos;s own number on the Cam-BUS, usually 63; no other user of the bus (CamCon, display, another PC) may have it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller variant to expect; auto (the default) probes and names what it found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RS485, 115200 8N1 unless set otherwise in the drive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RS232, 115200 8N1 with RTS/CTS unless set otherwise in the drive; a null-modem cable with RTS/CTS.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the drive&apos;s RS485 address (C3 ServoManager, &quot;RS485 settings&quot;); Scan bus lists the addresses that answer</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

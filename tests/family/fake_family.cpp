@@ -355,32 +355,44 @@ void clearRequestLog() {
     g_log.clear();
 }
 
+comm::FamilyInfo builtTestFamily(const QString& id, const QString& title,
+                                 const QString& defaultProtocol) {
+    comm::FamilyInfo family;
+    family.id = id;
+    family.title = title;
+    family.defaultProtocol = defaultProtocol;
+    family.built = true;
+    return family;
+}
+
+comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& familyId,
+                                    const QString& title) {
+    comm::ProtocolInfo protocol;
+    protocol.id = id;
+    protocol.familyId = familyId;
+    protocol.title = title;
+    protocol.makeSettings = [] { return std::make_unique<FakeSettings>(); };
+    protocol.connect =
+        [](comm::Transport& transport, const comm::ProtocolSettings&,
+           const comm::LineTiming& line) -> Result<std::unique_ptr<comm::DeviceConnection>> {
+        return std::unique_ptr<comm::DeviceConnection>(
+            std::make_unique<FakeDevice>(transport, line));
+    };
+    return protocol;
+}
+
 // Every part of the family, named in one place as a built-in family's are
 // (app/registry/<family>/<family>_parts.cpp), and registered the same way.
 FamilyParts fakeParts() {
     FamilyParts parts;
     parts.id = QStringLiteral("fake");
     parts.family = [](comm::FamilyRegistry& registry) {
-        comm::FamilyInfo family;
-        family.id = QStringLiteral("fake");
-        family.title = QStringLiteral("Fake test device");
-        family.defaultProtocol = QStringLiteral("fake-line");
-        family.built = true;
-        registry.add(family);
+        registry.add(builtTestFamily(QStringLiteral("fake"), QStringLiteral("Fake test device"),
+                                     QStringLiteral("fake-line")));
     };
     parts.protocols = [](comm::ProtocolRegistry& registry) {
-        comm::ProtocolInfo protocol;
-        protocol.id = QStringLiteral("fake-line");
-        protocol.familyId = QStringLiteral("fake");
-        protocol.title = QStringLiteral("Fake line protocol");
-        protocol.makeSettings = [] { return std::make_unique<FakeSettings>(); };
-        protocol.connect =
-            [](comm::Transport& transport, const comm::ProtocolSettings&,
-               const comm::LineTiming& line) -> Result<std::unique_ptr<comm::DeviceConnection>> {
-            return std::unique_ptr<comm::DeviceConnection>(
-                std::make_unique<FakeDevice>(transport, line));
-        };
-        registry.add(protocol);
+        registry.add(fakeLineProtocol(QStringLiteral("fake-line"), QStringLiteral("fake"),
+                                      QStringLiteral("Fake line protocol")));
     };
     parts.simulator = [](comm::SimulatorRegistry& registry) {
         registry.add({QStringLiteral("fake"),

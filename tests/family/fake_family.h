@@ -8,6 +8,8 @@
 
 #include "app/registry/family_parts.h"
 #include "comm/device/device_connection.h"
+#include "comm/device/family_registry.h"
+#include "comm/device/protocol_registry.h"
 #include "comm/device/motion_control.h"
 #include "comm/engine/framing_backend.h"
 
@@ -48,6 +50,13 @@ int requestsReceived();
 // Their text, in the order they arrived ("PING 3", "STOP 1"), and a fresh start.
 QStringList requestLog();
 void clearRequestLog();
+
+// A built family of the tests, and a protocol of it that reaches the fake
+// device (another test family builds on these: slotted_family.h).
+comm::FamilyInfo builtTestFamily(const QString& id, const QString& title,
+                                 const QString& defaultProtocol);
+comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& familyId,
+                                    const QString& title);
 
 // Every part of the family: family, protocol, simulator and check (comm),
 // page (GUI) and command group (CLI).

@@ -31,28 +31,18 @@ FamilyParts slottedParts() {
     FamilyParts parts;
     parts.id = QStringLiteral("slotted");
     parts.family = [](comm::FamilyRegistry& registry) {
-        comm::FamilyInfo family;
-        family.id = QStringLiteral("slotted");
-        family.title = QStringLiteral("Slotted test device");
-        family.defaultProtocol = QStringLiteral("slotted-line");
-        family.built = true;
-        registry.add(family);
+        registry.add(builtTestFamily(QStringLiteral("slotted"),
+                                     QStringLiteral("Slotted test device"),
+                                     QStringLiteral("slotted-line")));
     };
     parts.protocols = [](comm::ProtocolRegistry& registry) {
-        comm::ProtocolInfo protocol;
-        protocol.id = QStringLiteral("slotted-line");
-        protocol.familyId = QStringLiteral("slotted");
-        protocol.title = QStringLiteral("Slotted line protocol");
+        comm::ProtocolInfo protocol =
+            fakeLineProtocol(QStringLiteral("slotted-line"), QStringLiteral("slotted"),
+                             QStringLiteral("Slotted line protocol"));
         protocol.options = {comm::ProtocolOption::number(
             QStringLiteral("slot"), QStringLiteral("slot"), 1, 8, 1, QStringLiteral("Slot:"),
             QStringLiteral("the slot of the rack the device sits in"))};
         protocol.makeSettings = [] { return std::make_unique<SlottedSettings>(); };
-        protocol.connect =
-            [](comm::Transport& transport, const comm::ProtocolSettings&,
-               const comm::LineTiming& line) -> Result<std::unique_ptr<comm::DeviceConnection>> {
-            return std::unique_ptr<comm::DeviceConnection>(
-                std::make_unique<FakeDevice>(transport, line));
-        };
         registry.add(protocol);
     };
     return parts;

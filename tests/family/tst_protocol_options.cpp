@@ -6,6 +6,8 @@
 // shell names an option or a protocol of a family.
 #include "slotted_family.h"
 
+#include "../ui/shell/shell_fixture.h"
+
 #include "app/cli/cli_options.h"
 #include "comm/device/protocol_options.h"
 #include "model/machine/machine_file.h"
@@ -49,13 +51,7 @@ class TestProtocolOptions : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase() {
-        QCoreApplication::setOrganizationName(QStringLiteral("CamBench"));
-        QCoreApplication::setApplicationName(QStringLiteral("CamBench-tests"));
-        QStandardPaths::setTestModeEnabled(true);
-        QVERIFY(m_settings.isValid());
-        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settings.path());
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
-        QSettings().clear();
+        test::useTestSettings();
         // The one registration line the family takes.
         registerFamily(fake::slottedParts());
     }
@@ -193,9 +189,6 @@ private Q_SLOTS:
         }
         QVERIFY2(found.isEmpty(), qPrintable(found.join(u'\n')));
     }
-
-private:
-    QTemporaryDir m_settings;
 };
 
 QTEST_MAIN(TestProtocolOptions)
