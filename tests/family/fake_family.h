@@ -9,8 +9,8 @@
 #include "app/registry/family_parts.h"
 #include "comm/device/device_connection.h"
 #include "comm/device/family_registry.h"
-#include "comm/device/protocol_registry.h"
 #include "comm/device/motion_control.h"
+#include "comm/device/protocol_registry.h"
 #include "comm/engine/framing_backend.h"
 
 #include <QAtomicInt>
