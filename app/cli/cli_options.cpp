@@ -5,8 +5,6 @@
 #include "comm/device/family_registry.h"
 #include "comm/transport/transport_registry.h"
 
-#include <functional>
-
 namespace cambench::cli {
 
 namespace {
@@ -352,19 +350,37 @@ Result<QList<int>> parseDeviceNumbers(const QString& text, const QString& what) 
 
 namespace {
 
+// An option name as protocols declare it: the first declaration (its
+// help, range and words) and every protocol that has it by that name (one
+// that has it as an older name is listed with the name it has now).
+struct Declared {
+    const comm::ProtocolOption* first = nullptr;
+    QStringList protocols;
+};
+
+Declared declarationsOf(const QString& name) {
+    Declared declared;
+    for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all()) {
+        const comm::ProtocolOption* option = comm::declaredOption(*protocol, name);
+        if (!option || option->name != name) continue;
+        if (!declared.first) declared.first = option;
+        declared.protocols << protocol->id;
+    }
+    return declared;
+}
+
+// "--device N", "--variant V".
+QString optionWord(const QString& name, const comm::ProtocolOption& option) {
+    return QStringLiteral("--%1 %2").arg(name, option.isChoice() ? "V" : "N");
+}
+
 // The --help lines of the options protocols declare: each name once, with
 // its help, its range or words, and the protocols that take it.
 QString protocolOptionsHelp() {
     QString lines;
     for (const QString& name : comm::protocolOptionNames()) {
-        const comm::ProtocolOption* first = nullptr;
-        QStringList protocols;
-        for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all()) {
-            const comm::ProtocolOption* option = comm::declaredOption(*protocol, name);
-            if (!option || option->name != name) continue;  // an alias: listed with its name
-            if (!first) first = option;
-            protocols << protocol->id;
-        }
+        const Declared declared = declarationsOf(name);
+        const comm::ProtocolOption* first = declared.first;
         if (!first) continue;
         const QString values =
             first->isChoice()
@@ -374,11 +390,10 @@ QString protocolOptionsHelp() {
                       .arg(first->min)
                       .arg(first->max)
                       .arg(first->fallback);
-        const QString word = QStringLiteral("--%1 %2").arg(name, first->isChoice() ? "V" : "N");
         lines +=
             QStringLiteral("  %1%2\n                %3; %4%5\n")
-                .arg(word.leftJustified(14), first->help, values,
-                     protocols.join(QStringLiteral(", ")),
+                .arg(optionWord(name, *first).leftJustified(14), first->help, values,
+                     declared.protocols.join(QStringLiteral(", ")),
                      first->aliases.isEmpty() ? QString()
                                               : QStringLiteral("; also --") +
                                                     first->aliases.join(QStringLiteral(", --")));
@@ -389,14 +404,9 @@ QString protocolOptionsHelp() {
 // "[--device N] [--pc-number N] ..." for the usage line.
 QString protocolOptionsUsage() {
     QStringList words;
-    for (const QString& name : comm::protocolOptionNames()) {
-        for (const comm::ProtocolInfo* protocol : comm::ProtocolRegistry::instance().all()) {
-            const comm::ProtocolOption* option = comm::declaredOption(*protocol, name);
-            if (!option || option->name != name) continue;
-            words << QStringLiteral("[--%1 %2]").arg(name, option->isChoice() ? "V" : "N");
-            break;
-        }
-    }
+    for (const QString& name : comm::protocolOptionNames())
+        if (const comm::ProtocolOption* first = declarationsOf(name).first)
+            words << QLatin1Char('[') + optionWord(name, *first) + QLatin1Char(']');
     return words.join(u' ');
 }
 
