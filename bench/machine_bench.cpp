@@ -1,6 +1,9 @@
 #include "machine_bench.h"
 
 #include "bench_process.h"
+#include "model/camcon/camcon_family_id.h"
+#include "model/compax3/compax3_family_id.h"
+#include "model/mc1/mc1_family_id.h"
 #include "tests/e2e/child_process.h"
 
 #include <QElapsedTimer>
@@ -33,24 +36,24 @@ QList<Device> devices(int baud) {
                            {QStringLiteral("family"), family},
                            {QStringLiteral("baud"), baud}};
     };
-    QJsonObject plc = entry(QStringLiteral("plc"), QStringLiteral("mc1"));
+    QJsonObject plc = entry(QStringLiteral("plc"), mc1FamilyId);
     plc.insert(QStringLiteral("protocol"), QStringLiteral("mc1"));
     plc.insert(QStringLiteral("variant"), QStringLiteral("mc200v2"));
     return {{QStringLiteral("cams"),
-             QStringLiteral("camcon"),
+             camconFamilyId,
              {QStringLiteral("--eprom"), QStringLiteral("03.05.2001"), QStringLiteral("--fill"),
               QStringLiteral("1")},
-             entry(QStringLiteral("cams"), QStringLiteral("camcon"))},
+             entry(QStringLiteral("cams"), camconFamilyId)},
             {QStringLiteral("plc"),
-             QStringLiteral("mc1"),
+             mc1FamilyId,
              {QStringLiteral("--protocol"), QStringLiteral("mc1"), QStringLiteral("--variant"),
               QStringLiteral("mc200v2")},
              plc},
             {QStringLiteral("feed"),
-             QStringLiteral("compax3"),
+             compax3FamilyId,
              {QStringLiteral("--protocol"), QStringLiteral("compax3"),
               QStringLiteral("--drive-type"), QStringLiteral("S150V4")},
-             entry(QStringLiteral("feed"), QStringLiteral("compax3"))}};
+             entry(QStringLiteral("feed"), compax3FamilyId)}};
 }
 
 // Seconds of one `machine backup` of `entries` into `name`-backup, or with

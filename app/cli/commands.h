@@ -6,6 +6,8 @@
 #include <QList>
 #include <QString>
 
+#include <utility>
+
 namespace cambench::cli {
 
 // One command group. `run` parses its own arguments (usage errors before
@@ -67,5 +69,28 @@ void registerShellCommands(CommandRegistry& registry);
 
 // "read" or "write" after a group name; a usage error for anything else.
 Result<QString> takeVerb(CommandArgs& args, const QStringList& verbs);
+
+// One family's part of the CommandRegistry, as its FamilyParts' CLI part
+// gets it (CAMBENCH_CLI_PART): every group, option and help text it adds
+// is that family's, so the part never spells its family's id.
+class FamilyCommands {
+public:
+    FamilyCommands(CommandRegistry& registry, QString familyId)
+        : m_registry(registry), m_familyId(std::move(familyId)) {}
+
+    // The group `name`; `defaultProtocol` as CommandGroup's.
+    void add(const QString& name, int (*run)(CliSession& session, CommandArgs& args),
+             const QString& defaultProtocol = {}) {
+        m_registry.add({m_familyId, name, run, defaultProtocol});
+    }
+    // An option of its commands (FamilyOption).
+    void addOption(const QString& name) { m_registry.addOption({m_familyId, name}); }
+    // Its lines of --help.
+    void addHelp(const QString& text) { m_registry.addHelp(m_familyId, text); }
+
+private:
+    CommandRegistry& m_registry;
+    QString m_familyId;
+};
 
 }  // namespace cambench::cli

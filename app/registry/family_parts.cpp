@@ -67,16 +67,33 @@ QStringList missingOf(const comm::FamilyInfo& family, Program program) {
 void registerFamily(const FamilyParts& parts) {
     if (findParts(parts.id)) return;
     registered().append(parts);
-    if (parts.family) parts.family(comm::FamilyRegistry::instance());
-    if (parts.protocols) parts.protocols(comm::ProtocolRegistry::instance());
+    if (parts.family) {
+        comm::FamilyInfo family = parts.family();
+        family.id = parts.id;
+        comm::FamilyRegistry::instance().add(family);
+    }
+    if (parts.protocols) {
+        for (comm::ProtocolInfo protocol : parts.protocols()) {
+            protocol.familyId = parts.id;
+            comm::ProtocolRegistry::instance().add(protocol);
+        }
+    }
     // A machine file names its devices' protocol options as the command
     // line does; model/ learns them here.
     addMachineDeviceKeys(comm::protocolOptionNames());
-    if (parts.simulator) parts.simulator(comm::SimulatorRegistry::instance());
-    if (parts.checks) parts.checks(usecases::CheckRegistry::instance());
-    if (parts.backup) parts.backup(usecases::BackupRegistry::instance());
-    if (parts.gui) parts.gui();
-    if (parts.cli) parts.cli();
+    if (parts.simulator) {
+        comm::SimulatorInfo simulator = parts.simulator();
+        simulator.familyId = parts.id;
+        comm::SimulatorRegistry::instance().add(simulator);
+    }
+    if (parts.checks) {
+        usecases::FamilyCheck check = parts.checks();
+        check.familyId = parts.id;
+        usecases::CheckRegistry::instance().add(check);
+    }
+    if (parts.backup) usecases::BackupRegistry::instance().add(parts.id, parts.backup());
+    if (parts.gui) parts.gui(parts.id);
+    if (parts.cli) parts.cli(parts.id);
 }
 
 QList<FamilyParts> registeredFamilies() {

@@ -4,6 +4,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <memory>
 #include <utility>
 
 #ifdef CAMBENCH_PARTS_GUI
@@ -13,30 +14,32 @@
 namespace cambench {
 
 namespace comm {
-class FamilyRegistry;
-class ProtocolRegistry;
-class SimulatorRegistry;
+struct FamilyInfo;
+struct ProtocolInfo;
+struct SimulatorInfo;
 }  // namespace comm
 namespace usecases {
-class BackupRegistry;
-class CheckRegistry;
+class FamilyBackup;
+struct FamilyCheck;
 }  // namespace usecases
 
 // Every part of one device family, named in one place: for a built-in
 // family its app/registry/<family>/<family>_parts.cpp, listed once in
 // app/registry/builtin_registry.cpp; the tests' fake family names its own
-// (tests/family/). Each part is a function that registers it in the
-// registry the shell reads it from. The GUI's and the CLI's part are null
-// in a program that does not link them (the GUI in cambench-cli).
+// (tests/family/). Each part is a function that makes it; registerFamily
+// puts what it makes in the registry the shell reads it from, keyed by
+// `id`: a part never spells its family's id, so no part can land under
+// another family's. The GUI's and the CLI's part are null in a program
+// that does not link them (the GUI in cambench-cli).
 struct FamilyParts {
-    using Register = void (*)();
+    // A part of the GUI or of the CLI: registers itself as `familyId`'s.
+    using Register = void (*)(const QString& familyId);
     FamilyParts() = default;
     // Every part in the order of the members below.
-    FamilyParts(QString id, void (*family)(comm::FamilyRegistry&),
-                void (*protocols)(comm::ProtocolRegistry&),
-                void (*simulator)(comm::SimulatorRegistry&),
-                void (*checks)(usecases::CheckRegistry&), void (*backup)(usecases::BackupRegistry&),
-                Register gui, Register cli)
+    FamilyParts(QString id, comm::FamilyInfo (*family)(), QList<comm::ProtocolInfo> (*protocols)(),
+                comm::SimulatorInfo (*simulator)(), usecases::FamilyCheck (*checks)(),
+                std::shared_ptr<const usecases::FamilyBackup> (*backup)(), Register gui,
+                Register cli)
         : id(std::move(id)),
           family(family),
           protocols(protocols),
@@ -46,26 +49,28 @@ struct FamilyParts {
           gui(gui),
           cli(cli) {}
 
-    QString id;  // its FamilyInfo::id (the --family value)
-    // Its FamilyInfo (id, title, default protocol).
-    void (*family)(comm::FamilyRegistry& registry) = nullptr;
-    // Every protocol of the family.
-    void (*protocols)(comm::ProtocolRegistry& registry) = nullptr;
+    // Its id (the family's *_family_id.h constant): the --family value,
+    // FamilyInfo::id, and the key of every part below in its registry.
+    QString id;
+    // Its FamilyInfo (title, default protocol; its id is `id`).
+    comm::FamilyInfo (*family)() = nullptr;
+    // Every protocol of the family (their familyId is `id`).
+    QList<comm::ProtocolInfo> (*protocols)() = nullptr;
     // Its simulated device (the in-process `sim` port, cambench-sim --family).
-    void (*simulator)(comm::SimulatorRegistry& registry) = nullptr;
+    comm::SimulatorInfo (*simulator)() = nullptr;
     // Its checks and their gate (cambench-cli check, Help -> Check this device).
-    void (*checks)(usecases::CheckRegistry& registry) = nullptr;
+    usecases::FamilyCheck (*checks)() = nullptr;
     // Its backup, verify, diff and restore of one device, typed
     // (usecases::FamilyBackup, comm/usecases/family_backup.h): the
     // single-device commands, the machine commands and the machine window
     // call it. A family without one: a machine backup says "the xy family
     // has no backup" for its devices.
-    void (*backup)(usecases::BackupRegistry& registry) = nullptr;
+    std::shared_ptr<const usecases::FamilyBackup> (*backup)() = nullptr;
     // The GUI's part: its protocols' settings widgets (ProtocolWidgetRegistry)
     // and its FamilyGui (FamilyGuiRegistry).
     Register gui = nullptr;
     // The CLI's part: its command groups and their part of --help
-    // (cli::CommandRegistry).
+    // (cli::CommandRegistry, through cli::FamilyCommands).
     Register cli = nullptr;
 };
 
@@ -75,17 +80,23 @@ struct FamilyParts {
 // else null.
 #ifdef CAMBENCH_PARTS_GUI
 #define CAMBENCH_GUI_PART(function) function
-// Registers Gui, a FamilyGui, as family `id`'s (a GUI part's last line).
+// Registers Gui, a FamilyGui, as family `familyId`'s (a GUI part's last
+// line).
 template <class Gui>
-void addFamilyGui(const QString& id) {
-    FamilyGuiRegistry::instance().add(
-        {id, [](DeviceSession* session, QObject* parent) { return new Gui(session, parent); }});
+void addFamilyGui(const QString& familyId) {
+    FamilyGuiRegistry::instance().add({familyId, [](DeviceSession* session, QObject* parent) {
+                                           return new Gui(session, parent);
+                                       }});
 }
 #else
 #define CAMBENCH_GUI_PART(function) nullptr
 #endif
 #ifdef CAMBENCH_PARTS_CLI
-#define CAMBENCH_CLI_PART(function) [] { function(cli::CommandRegistry::instance()); }
+#define CAMBENCH_CLI_PART(function)                                               \
+    [](const QString& familyId) {                                                 \
+        cli::FamilyCommands commands(cli::CommandRegistry::instance(), familyId); \
+        function(commands);                                                       \
+    }
 #else
 #define CAMBENCH_CLI_PART(function) nullptr
 #endif

@@ -5,6 +5,7 @@
 
 #include "model/camcon/analogue_cams.h"
 #include "model/camcon/cam_program.h"
+#include "model/camcon/camcon_family_id.h"
 #include "model/camcon/dead_time_modes.h"
 #include "model/camcon/dead_times.h"
 #include "model/camcon/device_info.h"
@@ -59,7 +60,7 @@ struct BusUsers {
 // their folders.
 class CamConDevice : public DeviceConnection {
 public:
-    QString familyId() const override { return QStringLiteral("camcon"); }
+    QString familyId() const override { return camconFamilyId; }
 
     virtual bool has(CamConCapability capability) const = 0;
     // Why `capability` is missing, as a sentence naming the protocol that

@@ -4,13 +4,12 @@
 
 namespace cambench::comm {
 
-void registerCamConFamily(FamilyRegistry& registry) {
-    FamilyInfo info;
-    info.id = QStringLiteral("camcon");
-    info.title = QStringLiteral("Digitronic CamCon");
-    info.defaultProtocol = QStringLiteral("standard");
-    info.built = true;
-    registry.add(info);
+FamilyInfo camconFamily() {
+    FamilyInfo family;
+    family.title = QStringLiteral("Digitronic CamCon");
+    family.defaultProtocol = QStringLiteral("standard");
+    family.built = true;
+    return family;
 }
 
 }  // namespace cambench::comm

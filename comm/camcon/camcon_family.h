@@ -2,9 +2,11 @@
 
 namespace cambench::comm {
 
-class FamilyRegistry;
+struct FamilyInfo;
 
-// Adds the Digitronic CamCon family ("camcon") to `registry`.
-void registerCamConFamily(FamilyRegistry& registry);
+// The family of the Digitronic CamCon cam controllers: its title, default
+// protocol and that it is built (its id is its FamilyParts', the constant
+// of model/camcon/camcon_family_id.h); its protocols are camconProtocols (app/registry/camcon).
+FamilyInfo camconFamily();
 
 }  // namespace cambench::comm

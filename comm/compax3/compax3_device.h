@@ -4,6 +4,7 @@
 
 #include "comm/device/device_connection.h"
 #include "model/compax3/compax3_dictionary.h"
+#include "model/compax3/compax3_family_id.h"
 #include "model/compax3/compax3_parameter_file.h"
 #include "model/result.h"
 
@@ -104,7 +105,7 @@ bool compax3MotionMoves(Compax3Motion motion);
 // drive's state is read back and the error says what was found.
 class Compax3Device : public DeviceConnection {
 public:
-    QString familyId() const override { return QStringLiteral("compax3"); }
+    QString familyId() const override { return compax3FamilyId; }
 
     // The info string (`_?`) and serial number (1.4).
     virtual Result<Compax3Identity> identity() = 0;

@@ -4,13 +4,12 @@
 
 namespace cambench::comm {
 
-void registerCompax3Family(FamilyRegistry& registry) {
+FamilyInfo compax3Family() {
     FamilyInfo family;
-    family.id = QStringLiteral("compax3");
     family.title = QStringLiteral("Parker Compax3");
     family.defaultProtocol = QStringLiteral("compax3");
     family.built = true;
-    registry.add(family);
+    return family;
 }
 
 }  // namespace cambench::comm

@@ -29,7 +29,6 @@ namespace {
 ProtocolInfo compax3Protocol(bool rs485) {
     ProtocolInfo info;
     info.id = rs485 ? QStringLiteral("compax3-rs485") : QStringLiteral("compax3");
-    info.familyId = QStringLiteral("compax3");
     info.title = rs485 ? QCoreApplication::translate("cambench::comm", "Compax3 ASCII (RS485)")
                        : QCoreApplication::translate("cambench::comm", "Compax3 ASCII (RS232)");
     info.defaultSerial.baud = 115200;
@@ -71,9 +70,8 @@ ProtocolInfo compax3Protocol(bool rs485) {
 
 }  // namespace
 
-void registerCompax3Protocol(ProtocolRegistry& registry) {
-    registry.add(compax3Protocol(false));
-    registry.add(compax3Protocol(true));
+QList<ProtocolInfo> compax3Protocols() {
+    return {compax3Protocol(false), compax3Protocol(true)};
 }
 
 }  // namespace cambench::comm

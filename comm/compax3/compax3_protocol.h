@@ -26,8 +26,8 @@ private:
     bool m_rs485;
 };
 
-// Adds "compax3" (RS232, no address) and "compax3-rs485" (addresses
-// 0..99): both 115200 8N1 with RTS/CTS by default.
-void registerCompax3Protocol(ProtocolRegistry& registry);
+// "compax3" (RS232, no address) and "compax3-rs485" (addresses 0..99):
+// both 115200 8N1 with RTS/CTS by default.
+QList<ProtocolInfo> compax3Protocols();
 
 }  // namespace cambench::comm

@@ -5,6 +5,7 @@
 #include "mc1_variant.h"
 
 #include "comm/device/device_connection.h"
+#include "model/mc1/mc1_family_id.h"
 #include "model/result.h"
 
 #include <QByteArray>
@@ -121,7 +122,7 @@ QString mc1HexLines(int address, const QByteArray& bytes);
 // back and the error says what was found.
 class Mc1Device : public DeviceConnection {
 public:
-    QString familyId() const override { return QStringLiteral("mc1"); }
+    QString familyId() const override { return mc1FamilyId; }
 
     // The variant in use (after identification; before it, the settings').
     virtual Mc1Variant variant() const = 0;

@@ -4,13 +4,12 @@
 
 namespace cambench::comm {
 
-void registerMc1Family(FamilyRegistry& registry) {
+FamilyInfo mc1Family() {
     FamilyInfo family;
-    family.id = QStringLiteral("mc1");
     family.title = QStringLiteral("MICRO DESIGN MC100/MC200 (MC-1)");
     family.defaultProtocol = QStringLiteral("mc1");
     family.built = true;
-    registry.add(family);
+    return family;
 }
 
 }  // namespace cambench::comm

@@ -2,10 +2,11 @@
 
 namespace cambench::comm {
 
-class FamilyRegistry;
+struct FamilyInfo;
 
-// Registers the MICRO DESIGN MC100/MC200 (MC-1) family ("mc1") in `registry`;
-// its protocol is registerMc1Protocol (mc1_protocol.h).
-void registerMc1Family(FamilyRegistry& registry);
+// The family of the MICRO DESIGN MC100/MC200 (MC-1) motion controllers: its title, default
+// protocol and that it is built (its id is its FamilyParts', the constant
+// of model/mc1/mc1_family_id.h); its protocols are mc1Protocols (mc1_protocol.h).
+FamilyInfo mc1Family();
 
 }  // namespace cambench::comm

@@ -61,7 +61,6 @@ Error otherSettings(const QString& protocol) {
 ProtocolInfo asciiProtocol() {
     ProtocolInfo info;
     info.id = QStringLiteral("mc1-ascii");
-    info.familyId = QStringLiteral("mc1");
     info.title = QCoreApplication::translate("cambench::comm", "MC100 ASCII (RS232)");
     info.defaultSerial.baud = 9600;
     info.makeSettings = [] { return std::make_unique<Mc1AsciiProtocolSettings>(); };
@@ -77,10 +76,9 @@ ProtocolInfo asciiProtocol() {
 
 }  // namespace
 
-void registerMc1Protocol(ProtocolRegistry& registry) {
+QList<ProtocolInfo> mc1Protocols() {
     ProtocolInfo info;
     info.id = QStringLiteral("mc1");
-    info.familyId = QStringLiteral("mc1");
     info.title = QCoreApplication::translate("cambench::comm", "MC-1 (RS232)");
     info.defaultSerial.baud = 9600;  // MC100: 9600 only; MC200: as set in the device
     info.defaultSerial.dtr = true;   // DTR high and RTS low power the MC200's driver
@@ -99,8 +97,7 @@ void registerMc1Protocol(ProtocolRegistry& registry) {
         return std::unique_ptr<DeviceConnection>(
             std::make_unique<Mc1Controller>(transport, mc1->mc1, line));
     };
-    registry.add(info);
-    registry.add(asciiProtocol());
+    return {info, asciiProtocol()};
 }
 
 }  // namespace cambench::comm

@@ -37,9 +37,9 @@ public:
     void fromMap(const QVariantMap& map) override;
 };
 
-// Adds the family's protocols to `registry`: "mc1", the binary MC-1 (RS232,
-// 9600 8N1, DTR high and RTS low: they power an MC200's interface), and
-// "mc1-ascii", the MC100's ASCII protocol.
-void registerMc1Protocol(ProtocolRegistry& registry);
+// The family's protocols: "mc1", the binary MC-1 (RS232, 9600 8N1, DTR
+// high and RTS low: they power an MC200's interface), and "mc1-ascii", the
+// MC100's ASCII protocol.
+QList<ProtocolInfo> mc1Protocols();
 
 }  // namespace cambench::comm

@@ -2,6 +2,7 @@
 
 #include "device_info_json.h"
 #include "model/atomic_file.h"
+#include "model/camcon/camcon_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
@@ -19,7 +20,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kImageFile{"cambench-eeprom-image", kEepromImageFormatVersion, "EEPROM image",
-                              "camcon"};
+                              camconFamilyId.latin1()};
 const QLatin1String kToolPrefix("CamBench ");
 constexpr int kEndBlockNumber = 0xFFFF;
 

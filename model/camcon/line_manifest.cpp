@@ -2,6 +2,7 @@
 
 #include "device_info_json.h"
 #include "model/atomic_file.h"
+#include "model/camcon/camcon_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
@@ -17,7 +18,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kManifestFile{"cambench-line-backup", kLineManifestFormatVersion,
-                                 "line backup manifest", "camcon"};
+                                 "line backup manifest", camconFamilyId.latin1()};
 
 QString key(const char* text) {
     return QString::fromLatin1(text);

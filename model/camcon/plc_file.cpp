@@ -2,6 +2,7 @@
 
 #include "data_validation.h"
 #include "model/atomic_file.h"
+#include "model/camcon/camcon_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 
@@ -12,7 +13,8 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kPlcFile{"cambench-plc", kPlcFileFormatVersion, "PLC file", "camcon"};
+const JsonFileType kPlcFile{"cambench-plc", kPlcFileFormatVersion, "PLC file",
+                            camconFamilyId.latin1()};
 
 constexpr char kLetters[] = "OPMX";
 

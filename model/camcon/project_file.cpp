@@ -4,6 +4,7 @@
 #include "data_validation.h"
 #include "device_info_json.h"
 #include "model/atomic_file.h"
+#include "model/camcon/camcon_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
@@ -21,7 +22,8 @@ namespace cambench {
 
 namespace {
 
-const JsonFileType kProjectFile{"cambench-project", kProjectFormatVersion, "project", "camcon"};
+const JsonFileType kProjectFile{"cambench-project", kProjectFormatVersion, "project",
+                                camconFamilyId.latin1()};
 
 // Outputs the user access table can address (32 bytes of bits).
 constexpr int kUserAccessOutputs = 256;

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 
+#include "model/camcon/camcon_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 
@@ -12,7 +13,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kSettingsFile{"cambench-settings", kSettingsFileFormatVersion, "settings file",
-                                 "camcon"};
+                                 camconFamilyId.latin1()};
 
 }  // namespace
 

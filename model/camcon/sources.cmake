@@ -2,6 +2,7 @@
 # PLC, EEPROM images, project, CSV, line manifest, program diff and timing;
 # paths relative to model/.
 target_sources(cambench_model PRIVATE
+  camcon/camcon_family_id.h
   camcon/cam_program.h
   camcon/device_info.h
   camcon/device_info.cpp

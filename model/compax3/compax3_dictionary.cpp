@@ -2,6 +2,7 @@
 
 #include "compax3_builtin_objects.h"
 
+#include "model/compax3/compax3_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
@@ -15,7 +16,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kDictionaryFile{"cambench-compax3-dictionary", 1, "Compax3 object dictionary",
-                                   "compax3"};
+                                   compax3FamilyId.latin1()};
 
 // The line of the file where object `position` of "objects" starts: a
 // problem with its content is reported there.

@@ -1,6 +1,7 @@
 #include "compax3_parameter_file.h"
 
 #include "model/atomic_file.h"
+#include "model/compax3/compax3_family_id.h"
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
@@ -17,7 +18,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kParameterFile{"cambench-compax3-parameters", kCompax3ParameterFormatVersion,
-                                  "Compax3 parameter file", "compax3"};
+                                  "Compax3 parameter file", compax3FamilyId.latin1()};
 const QLatin1String kToolPrefix("CamBench ");
 
 QString key(const char* text) {

@@ -6,6 +6,7 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/compax3_builtin_objects.cpp.in
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
              ${CMAKE_CURRENT_LIST_DIR}/compax3-objects.json)
 target_sources(cambench_model PRIVATE
+  compax3/compax3_family_id.h
   compax3/compax3_object.h
   compax3/compax3_object.cpp
   compax3/compax3_value.h

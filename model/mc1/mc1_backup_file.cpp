@@ -4,6 +4,7 @@
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
+#include "model/mc1/mc1_family_id.h"
 #include "model/readable_json.h"
 
 #include <QCoreApplication>
@@ -16,7 +17,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kBackupFile{"cambench-mc1-backup", kMc1BackupFormatVersion, "MC-1 backup",
-                               "mc1"};
+                               mc1FamilyId.latin1()};
 const QLatin1String kToolPrefix("CamBench ");
 constexpr int kPageBytes = 256;
 constexpr int kMemoryEnd = 0x10000;

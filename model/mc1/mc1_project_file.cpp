@@ -4,6 +4,7 @@
 #include "model/file_read.h"
 #include "model/json_file.h"
 #include "model/json_reader.h"
+#include "model/mc1/mc1_family_id.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -15,7 +16,7 @@ namespace cambench {
 namespace {
 
 const JsonFileType kProjectFile{"cambench-mc1-project", kMc1ProjectFormatVersion, "MC-1 project",
-                                "mc1"};
+                                mc1FamilyId.latin1()};
 
 QString key(const char* text) {
     return QString::fromLatin1(text);

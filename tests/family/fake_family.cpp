@@ -355,21 +355,17 @@ void clearRequestLog() {
     g_log.clear();
 }
 
-comm::FamilyInfo builtTestFamily(const QString& id, const QString& title,
-                                 const QString& defaultProtocol) {
+comm::FamilyInfo builtTestFamily(const QString& title, const QString& defaultProtocol) {
     comm::FamilyInfo family;
-    family.id = id;
     family.title = title;
     family.defaultProtocol = defaultProtocol;
     family.built = true;
     return family;
 }
 
-comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& familyId,
-                                    const QString& title) {
+comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& title) {
     comm::ProtocolInfo protocol;
     protocol.id = id;
-    protocol.familyId = familyId;
     protocol.title = title;
     protocol.makeSettings = [] { return std::make_unique<FakeSettings>(); };
     protocol.connect =
@@ -386,35 +382,41 @@ comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& familyId,
 FamilyParts fakeParts() {
     FamilyParts parts;
     parts.id = QStringLiteral("fake");
-    parts.family = [](comm::FamilyRegistry& registry) {
-        registry.add(builtTestFamily(QStringLiteral("fake"), QStringLiteral("Fake test device"),
-                                     QStringLiteral("fake-line")));
+    parts.family = [] {
+        return builtTestFamily(QStringLiteral("Fake test device"), QStringLiteral("fake-line"));
     };
-    parts.protocols = [](comm::ProtocolRegistry& registry) {
-        registry.add(fakeLineProtocol(QStringLiteral("fake-line"), QStringLiteral("fake"),
-                                      QStringLiteral("Fake line protocol")));
+    parts.protocols = [] {
+        return QList{
+            fakeLineProtocol(QStringLiteral("fake-line"), QStringLiteral("Fake line protocol"))};
     };
-    parts.simulator = [](comm::SimulatorRegistry& registry) {
-        registry.add({QStringLiteral("fake"),
-                      [](const QString& port, const comm::SerialSettings& serial, const QString&)
-                          -> Result<comm::SimulatedLine> { return fakeLine(port, serial); },
-                      [] { return QList<QCommandLineOption>{}; },
-                      [](const QCommandLineParser&, const comm::SimHostOptions&)
-                          -> Result<comm::SimulatedLine> { return fakeLine({}, {}); }});
+    parts.simulator = [] {
+        comm::SimulatorInfo simulator;
+        simulator.fromPort = [](const QString& port, const comm::SerialSettings& serial,
+                                const QString&) -> Result<comm::SimulatedLine> {
+            return fakeLine(port, serial);
+        };
+        simulator.options = [] { return QList<QCommandLineOption>{}; };
+        simulator.fromOptions = [](const QCommandLineParser&,
+                                   const comm::SimHostOptions&) -> Result<comm::SimulatedLine> {
+            return fakeLine({}, {});
+        };
+        return simulator;
     };
-    parts.checks = [](usecases::CheckRegistry& registry) {
-        registry.add({QStringLiteral("fake"), refusesAllButIdentity, checkIdentity});
+    parts.checks = [] {
+        usecases::FamilyCheck check;
+        check.refuses = refusesAllButIdentity;
+        check.run = checkIdentity;
+        return check;
     };
-    parts.gui = [] {
-        FamilyGuiRegistry::instance().add(
-            {QStringLiteral("fake"),
-             [](DeviceSession* session, QObject* parent) { return new FakeGui(session, parent); }});
+    parts.gui = [](const QString& familyId) {
+        FamilyGuiRegistry::instance().add({familyId, [](DeviceSession* session, QObject* parent) {
+                                               return new FakeGui(session, parent);
+                                           }});
     };
-    parts.cli = [] {
-        cli::CommandRegistry::instance().add(
-            {QStringLiteral("fake"), QStringLiteral("ping"), runPing});
-        cli::CommandRegistry::instance().addHelp(QStringLiteral("fake"),
-                                                 QStringLiteral("  ping N    answers PONG N\n"));
+    parts.cli = [](const QString& familyId) {
+        cli::FamilyCommands commands(cli::CommandRegistry::instance(), familyId);
+        commands.add(QStringLiteral("ping"), runPing);
+        commands.addHelp(QStringLiteral("  ping N    answers PONG N\n"));
     };
     return parts;
 }

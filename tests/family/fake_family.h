@@ -52,11 +52,10 @@ QStringList requestLog();
 void clearRequestLog();
 
 // A built family of the tests, and a protocol of it that reaches the fake
-// device (another test family builds on these: slotted_family.h).
-comm::FamilyInfo builtTestFamily(const QString& id, const QString& title,
-                                 const QString& defaultProtocol);
-comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& familyId,
-                                    const QString& title);
+// device (another test family builds on these: slotted_family.h); their
+// family id is their FamilyParts'.
+comm::FamilyInfo builtTestFamily(const QString& title, const QString& defaultProtocol);
+comm::ProtocolInfo fakeLineProtocol(const QString& id, const QString& title);
 
 // Every part of the family: family, protocol, simulator and check (comm),
 // page (GUI) and command group (CLI).

@@ -30,20 +30,18 @@ private:
 FamilyParts slottedParts() {
     FamilyParts parts;
     parts.id = QStringLiteral("slotted");
-    parts.family = [](comm::FamilyRegistry& registry) {
-        registry.add(builtTestFamily(QStringLiteral("slotted"),
-                                     QStringLiteral("Slotted test device"),
-                                     QStringLiteral("slotted-line")));
+    parts.family = [] {
+        return builtTestFamily(QStringLiteral("Slotted test device"),
+                               QStringLiteral("slotted-line"));
     };
-    parts.protocols = [](comm::ProtocolRegistry& registry) {
-        comm::ProtocolInfo protocol =
-            fakeLineProtocol(QStringLiteral("slotted-line"), QStringLiteral("slotted"),
-                             QStringLiteral("Slotted line protocol"));
+    parts.protocols = [] {
+        comm::ProtocolInfo protocol = fakeLineProtocol(QStringLiteral("slotted-line"),
+                                                       QStringLiteral("Slotted line protocol"));
         protocol.options = {comm::ProtocolOption::number(
             QStringLiteral("slot"), QStringLiteral("slot"), 1, 8, 1, QStringLiteral("Slot:"),
             QStringLiteral("the slot of the rack the device sits in"))};
         protocol.makeSettings = [] { return std::make_unique<SlottedSettings>(); };
-        registry.add(protocol);
+        return QList{protocol};
     };
     return parts;
 }

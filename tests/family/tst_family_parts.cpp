@@ -63,15 +63,14 @@ private Q_SLOTS:
     void aFamilyWithoutSimulatorOrChecksIsNamed() {
         FamilyParts half;
         half.id = QStringLiteral("half");
-        half.family = [](comm::FamilyRegistry& registry) {
-            registry.add(builtFamily(QStringLiteral("half"), QStringLiteral("Half Device")));
+        half.family = [] {
+            return builtFamily(QStringLiteral("half"), QStringLiteral("Half Device"));
         };
-        half.protocols = [](comm::ProtocolRegistry& registry) {
+        half.protocols = [] {
             comm::ProtocolInfo protocol;
             protocol.id = QStringLiteral("half-line");
-            protocol.familyId = QStringLiteral("half");
             protocol.title = QStringLiteral("Half line");
-            registry.add(protocol);
+            return QList{protocol};
         };
         registerFamily(half);
         registerFamily(half);  // again: left as it is

@@ -3,12 +3,14 @@
 // option of its own, "slot" 1..8; registered from here alone, it is offered
 // on the connection page, taken by the command line and by a machine file,
 // and refused out of its range with its own message. And no file of the
-// shell names an option or a protocol of a family.
+// shell names an option or a protocol of a family; a family's id is one
+// constant (item 2).
 #include "slotted_family.h"
 
 #include "../ui/shell/shell_fixture.h"
 
 #include "app/cli/cli_options.h"
+#include "comm/device/family_registry.h"
 #include "comm/device/protocol_options.h"
 #include "model/machine/machine_file.h"
 #include "ui/connection_page.h"
@@ -28,6 +30,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <functional>
+
 using namespace cambench;
 
 namespace {
@@ -43,6 +47,39 @@ Result<MachineFile> machineWithSlot(const QByteArray& slot) {
         "\"family\": \"slotted\", \"port\": \"sim\", \"slot\": " +
             slot + "}]}",
         QStringLiteral("rack.json"));
+}
+
+// "path:line: literal" for each of `literals` in the code (not the
+// comments) of app/, comm/, model/ and ui/ in a file `searched(path, text)`
+// accepts (path relative to the source tree).
+QStringList literalsIn(
+    const QStringList& literals,
+    const std::function<bool(const QString& path, const QString& text)>& searched) {
+    const QString root = QStringLiteral(CAMBENCH_SOURCE_DIR);
+    QStringList found;
+    for (const char* layer : {"app", "comm", "model", "ui"}) {
+        QDirIterator it(root + u'/' + QLatin1String(layer),
+                        {QStringLiteral("*.cpp"), QStringLiteral("*.h")}, QDir::Files,
+                        QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString path = QDir(root).relativeFilePath(it.next());
+            QFile file(it.filePath());
+            if (!file.open(QIODevice::ReadOnly)) {
+                found << path + QStringLiteral(": cannot be read");
+                continue;
+            }
+            const QString text = QString::fromUtf8(file.readAll());
+            if (!searched(path, text)) continue;
+            const QStringList lines = text.split(u'\n');
+            for (int i = 0; i < lines.size(); ++i) {
+                const QString code = lines.at(i).section(QStringLiteral("//"), 0, 0);
+                for (const QString& literal : literals)
+                    if (code.contains(literal))
+                        found << QStringLiteral("%1:%2: %3").arg(path).arg(i + 1).arg(literal);
+            }
+        }
+    }
+    return found;
 }
 
 }  // namespace
@@ -166,26 +203,29 @@ private Q_SLOTS:
         // "device" is also the shell's own word (a device's name in a
         // backup's manifest, the identity's "device" line).
         literals.removeAll(QStringLiteral("\"device\""));
-        const QString root = QStringLiteral(CAMBENCH_SOURCE_DIR);
         const QRegularExpression familyFolder(QStringLiteral("(^|/)(camcon|mc1|compax3)/"));
+        const QStringList found = literalsIn(literals, [&](const QString& path, const QString&) {
+            return !familyFolder.match(path).hasMatch();
+        });
+        QVERIFY2(found.isEmpty(), qPrintable(found.join(u'\n')));
+    }
+
+    // Issue 38, item 2: a built-in family's id is one constant
+    // (model/xy/xy_family_id.h), spelled as a string nowhere else. Where a
+    // protocol has its family's name ("mc1", "compax3"), the family's own
+    // folders spell that protocol id.
+    void eachFamilyIdIsSpelledOnce() {
         QStringList found;
-        for (const char* layer : {"app", "comm", "model", "ui"}) {
-            QDirIterator it(root + u'/' + QLatin1String(layer),
-                            {QStringLiteral("*.cpp"), QStringLiteral("*.h")}, QDir::Files,
-                            QDirIterator::Subdirectories);
-            while (it.hasNext()) {
-                const QString path = QDir(root).relativeFilePath(it.next());
-                if (familyFolder.match(path).hasMatch()) continue;
-                QFile file(it.filePath());
-                QVERIFY(file.open(QIODevice::ReadOnly));
-                const QStringList lines = QString::fromUtf8(file.readAll()).split(u'\n');
-                for (int i = 0; i < lines.size(); ++i) {
-                    const QString code = lines.at(i).section(QStringLiteral("//"), 0, 0);
-                    for (const QString& literal : literals)
-                        if (code.contains(literal))
-                            found << QStringLiteral("%1:%2: %3").arg(path).arg(i + 1).arg(literal);
-                }
-            }
+        for (const QString& id :
+             {QStringLiteral("camcon"), QStringLiteral("mc1"), QStringLiteral("compax3")}) {
+            QVERIFY(comm::FamilyRegistry::instance().find(id));
+            const bool alsoAProtocol = comm::ProtocolRegistry::instance().find(id) != nullptr;
+            const QString constant = QStringLiteral("model/%1/%1_family_id.h").arg(id);
+            const QRegularExpression ownFolder(QStringLiteral("(^|/)%1/").arg(id));
+            found << literalsIn({u'"' + id + u'"'}, [&](const QString& path, const QString&) {
+                if (path == constant) return false;
+                return !(alsoAProtocol && ownFolder.match(path).hasMatch());
+            });
         }
         QVERIFY2(found.isEmpty(), qPrintable(found.join(u'\n')));
     }

@@ -6,6 +6,7 @@
 #include "device_reads.h"
 #include "workspace.h"
 
+#include "model/camcon/camcon_family_id.h"
 #include "ui/main_window.h"
 #include "ui/shell.h"
 
@@ -14,7 +15,7 @@
 namespace cambench {
 
 CamConGui::CamConGui(DeviceSession* session, QObject* parent)
-    : FamilyGui(QStringLiteral("camcon"), session, parent), m_workspace(new Workspace(this)) {
+    : FamilyGui(camconFamilyId, session, parent), m_workspace(new Workspace(this)) {
     connect(m_workspace, &Workspace::infoChanged, this, &FamilyGui::identityChanged);
     connect(m_workspace, &Workspace::otherDeviceNoteChanged, this, &FamilyGui::identityChanged);
     connect(m_workspace, &Workspace::changedCountChanged, this, &FamilyGui::titleChanged);
@@ -69,13 +70,12 @@ QWidget* CamConGui::backupDrawing(const BackupSide& older, const BackupSide& new
 }
 
 Workspace* camConWorkspace(const Shell& shell) {
-    auto* camcon = qobject_cast<CamConGui*>(shell.family(QStringLiteral("camcon")));
+    auto* camcon = qobject_cast<CamConGui*>(shell.family(camconFamilyId));
     return camcon ? camcon->workspace() : nullptr;
 }
 
 CamConWindow* camConWindow(const MainWindow* window) {
-    return window ? qobject_cast<CamConWindow*>(window->familyWindow(QStringLiteral("camcon")))
-                  : nullptr;
+    return window ? qobject_cast<CamConWindow*>(window->familyWindow(camconFamilyId)) : nullptr;
 }
 
 }  // namespace cambench

@@ -3,6 +3,7 @@
 #include "ui/camcon/camcon_jobs.h"
 #include "ui/family_gui.h"
 
+#include "model/camcon/camcon_family_id.h"
 #include "ui/device_session.h"
 #include "ui/led_strip.h"
 #include "ui/live_freshness.h"
@@ -230,7 +231,7 @@ void MonitorPage::setLiveWanted(bool wanted) {
 bool MonitorPage::onCamCon() const {
     // Connected to another family, the CamCon's polls would only fail
     // there and call that line silent.
-    return m_session->isOnline() && sessionFamily(*m_session) == QLatin1String("camcon");
+    return m_session->isOnline() && sessionFamily(*m_session) == camconFamilyId;
 }
 
 void MonitorPage::updateRunning() {

@@ -5,12 +5,13 @@
 
 #include "comm/compax3/compax3_device.h"
 #include "comm/compax3/compax3_objects.h"
+#include "model/compax3/compax3_family_id.h"
 #include "ui/device_session.h"
 
 namespace cambench {
 
 Compax3Gui::Compax3Gui(DeviceSession* session, QObject* parent)
-    : FamilyGui(QStringLiteral("compax3"), session, parent),
+    : FamilyGui(compax3FamilyId, session, parent),
       m_dictionary(Compax3Dictionary::builtin()),
       m_objects(new Compax3ObjectModel(this)),
       // A first look: where the axis is.

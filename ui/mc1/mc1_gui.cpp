@@ -3,11 +3,12 @@
 #include "mc1_settings.h"
 #include "mc1_watch_model.h"
 #include "mc1_window.h"
+#include "model/mc1/mc1_family_id.h"
 
 namespace cambench {
 
 Mc1Gui::Mc1Gui(DeviceSession* session, QObject* parent)
-    : FamilyGui(QStringLiteral("mc1"), session, parent), m_watch(new Mc1WatchModel(this)) {
+    : FamilyGui(mc1FamilyId, session, parent), m_watch(new Mc1WatchModel(this)) {
     if (const std::optional<Mc1Project> kept = mc1settings::loadWatchList())
         m_watch->restore(*kept);  // the last session's list and names, not read yet
     else

@@ -84,8 +84,7 @@ QString camConHelp() {
 
 }  // namespace
 
-void registerCamConCommands(CommandRegistry& registry) {
-    const QString family = QStringLiteral("camcon");
+void registerCamConCommands(FamilyCommands& commands) {
     const std::pair<const char*, int (*)(CliSession&, CommandArgs&)> groups[] = {
         {"info", runInfo},
         {"status", runStatus},
@@ -115,10 +114,10 @@ void registerCamConCommands(CommandRegistry& registry) {
     const QStringList lineCommands = {QStringLiteral("backup-line"), QStringLiteral("verify-line")};
     for (const auto& [name, run] : groups) {
         const QString command = QLatin1String(name);
-        registry.add({family, command, run,
-                      lineCommands.contains(command) ? QStringLiteral("multiuser") : QString()});
+        commands.add(command, run,
+                     lineCommands.contains(command) ? QStringLiteral("multiuser") : QString());
     }
-    registry.addHelp(family, camConHelp());
+    commands.addHelp(camConHelp());
 }
 
 }  // namespace cambench::cli

@@ -16,7 +16,7 @@ Result<T> runOnCamCon(CliSession& session, const QString& title, CamConWork<T> w
 }
 
 // The CamCon's command groups and its part of --help.
-void registerCamConCommands(CommandRegistry& registry);
+void registerCamConCommands(FamilyCommands& commands);
 
 // Defined in one file per group.
 int runInfo(CliSession& session, CommandArgs& args);

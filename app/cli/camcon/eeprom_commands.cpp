@@ -7,6 +7,7 @@
 #include "app/cli/exit_codes.h"
 
 #include "comm/camcon/usecases/backup_restore.h"
+#include "model/camcon/camcon_family_id.h"
 #include "model/camcon/eeprom_image_file.h"
 
 namespace cambench::cli {
@@ -85,7 +86,7 @@ int runVerify(CliSession& session, CommandArgs& args) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("an image FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    return verifyWithPart(session, QStringLiteral("camcon"), *path);
+    return verifyWithPart(session, camconFamilyId, *path);
 }
 
 }  // namespace cambench::cli

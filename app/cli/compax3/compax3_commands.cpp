@@ -112,11 +112,11 @@ Result<QList<Compax3ObjectId>> parseCompax3Objects(const QStringList& words) {
     return ids;
 }
 
-void registerCompax3Commands(CommandRegistry& registry) {
-    registry.add({QStringLiteral("compax3"), QStringLiteral("c3"), runC3});
+void registerCompax3Commands(FamilyCommands& commands) {
+    commands.add(QStringLiteral("c3"), runC3);
     // runC3 takes it, wherever it stood on the line.
-    registry.addOption({QStringLiteral("compax3"), QStringLiteral("--dictionary")});
-    registry.addHelp(QStringLiteral("compax3"), compax3Help());
+    commands.addOption(QStringLiteral("--dictionary"));
+    commands.addHelp(compax3Help());
 }
 
 }  // namespace cambench::cli

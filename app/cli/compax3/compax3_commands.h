@@ -17,7 +17,7 @@ Result<T> runOnCompax3(CliSession& session, const QString& title, Compax3Work<T>
 }
 
 // The Compax3 family's command group `c3` and its part of --help.
-void registerCompax3Commands(CommandRegistry& registry);
+void registerCompax3Commands(FamilyCommands& commands);
 
 // Defined in one file per kind of work; `dictionary` is the shipped one or
 // the --dictionary FILE given.

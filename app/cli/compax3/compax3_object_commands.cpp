@@ -6,6 +6,7 @@
 
 #include "comm/compax3/compax3_syntax.h"
 #include "comm/compax3/usecases/compax3_read_objects.h"
+#include "model/compax3/compax3_family_id.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -64,7 +65,7 @@ int runCompax3Info(CliSession& session, CommandArgs& args) {
     if (!info) return reportError(info.error());
     if (json)
         return printJson(
-            QJsonDocument(QJsonObject{{QStringLiteral("family"), QStringLiteral("compax3")},
+            QJsonDocument(QJsonObject{{QStringLiteral("family"), compax3FamilyId},
                                       {QStringLiteral("info"), info->identity.info},
                                       {QStringLiteral("serial"), info->identity.serial},
                                       {QStringLiteral("type"), info->identity.type()},

@@ -8,6 +8,7 @@
 #include "app/cli/outcome_output.h"
 
 #include "comm/compax3/usecases/compax3_parameters.h"
+#include "model/compax3/compax3_family_id.h"
 
 namespace cambench::cli {
 
@@ -83,7 +84,7 @@ int runCompax3Verify(CliSession& session, CommandArgs& args, const Compax3Dictio
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a parameter FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    return verifyWithPart(session, QStringLiteral("compax3"), *path);
+    return verifyWithPart(session, compax3FamilyId, *path);
 }
 
 int runCompax3Restore(CliSession& session, CommandArgs& args, const Compax3Dictionary& dictionary) {

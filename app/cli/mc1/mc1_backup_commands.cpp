@@ -9,6 +9,7 @@
 
 #include "comm/mc1/mc1_parameters.h"
 #include "comm/mc1/usecases/mc1_backup_restore.h"
+#include "model/mc1/mc1_family_id.h"
 
 #include <QRegularExpression>
 
@@ -162,7 +163,7 @@ int runMc1Verify(CliSession& session, CommandArgs& args) {
     const Result<QString> path = args.takeRequiredPositional(QStringLiteral("a backup FILE"));
     if (!path) return reportError(path.error());
     if (const Status done = args.finish(); !done) return reportError(done.error());
-    return verifyWithPart(session, QStringLiteral("mc1"), *path);
+    return verifyWithPart(session, mc1FamilyId, *path);
 }
 
 int runMc1Restore(CliSession& session, CommandArgs& args) {

@@ -4,6 +4,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/exit_codes.h"
+#include "model/mc1/mc1_family_id.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -187,7 +188,7 @@ int runMc1Info(CliSession& session, CommandArgs& args) {
         });
     if (!info) return reportError(info.error());
     const QList<std::pair<QString, QString>> lines{
-        {QStringLiteral("family"), QStringLiteral("mc1")},
+        {QStringLiteral("family"), mc1FamilyId},
         {QStringLiteral("variant"), comm::mc1VariantName(info->variant)},
         {QStringLiteral("variantKey"), comm::mc1VariantKey(info->variant)},
         {QStringLiteral("found"), info->source},
@@ -366,12 +367,12 @@ int runMc1Points(CliSession& session, CommandArgs& args, bool io) {
     return ExitOk;
 }
 
-void registerMc1Commands(CommandRegistry& registry) {
-    registry.add({QStringLiteral("mc1"), QStringLiteral("mc"), runMc});
+void registerMc1Commands(FamilyCommands& commands) {
+    commands.add(QStringLiteral("mc"), runMc);
     // applyMc1Options takes them, wherever they stood on the line.
-    registry.addOption({QStringLiteral("mc1"), QStringLiteral("--axes")});
-    registry.addOption({QStringLiteral("mc1"), QStringLiteral("--parameters")});
-    registry.addHelp(QStringLiteral("mc1"), mc1Help());
+    commands.addOption(QStringLiteral("--axes"));
+    commands.addOption(QStringLiteral("--parameters"));
+    commands.addHelp(mc1Help());
 }
 
 }  // namespace cambench::cli

@@ -16,7 +16,7 @@ Result<T> runOnMc1(CliSession& session, const QString& title, Mc1Work<T> work) {
 }
 
 // The MC-1 family's command group `mc` and its part of --help.
-void registerMc1Commands(CommandRegistry& registry);
+void registerMc1Commands(FamilyCommands& commands);
 
 // Defined in one file per kind of work.
 int runMc1Info(CliSession& session, CommandArgs& args);

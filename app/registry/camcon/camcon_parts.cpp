@@ -12,6 +12,7 @@
 #include "comm/camcon/usecases/camcon_check.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/sim/camcon/camcon_simulator.h"
+#include "model/camcon/camcon_family_id.h"
 
 #ifdef CAMBENCH_PARTS_GUI
 #include "ui/camcon/cambus/cambus_settings_widget.h"
@@ -21,7 +22,7 @@
 // The GUI's part: the settings widgets of the protocols that show more
 // than their options' fields (Cam-BUS: the bus; the table interface: the
 // choice of its variant), the CamCon's workspace and pages.
-static void registerCamConGui() {
+static void registerCamConGui(const QString& familyId) {
     using namespace cambench;
     ProtocolWidgetRegistry& widgets = ProtocolWidgetRegistry::instance();
     widgets.add(QStringLiteral("cambus"), [](const QString&) { return new CamBusSettingsWidget; });
@@ -29,22 +30,20 @@ static void registerCamConGui() {
         widgets.add(QLatin1String(id),
                     [](const QString& protocol) { return new TableSettingsWidget(protocol); });
     }
-    addFamilyGui<CamConGui>(QStringLiteral("camcon"));
+    addFamilyGui<CamConGui>(familyId);
 }
 #endif
 
 // Its protocols: ASCII (Standard, Multiuser), the table interface (two
 // 3964R variants), the Cam-BUS.
-static void registerCamConProtocols(cambench::comm::ProtocolRegistry& protocols) {
-    cambench::comm::registerCamConAscii(protocols);
-    cambench::comm::registerCamConTable(protocols);
-    cambench::comm::registerCamConCamBus(protocols);
+static QList<cambench::comm::ProtocolInfo> camconProtocols() {
+    using namespace cambench::comm;
+    return camconAsciiProtocols() + camconTableProtocols() + QList{camconCamBusProtocol()};
 }
 
 cambench::FamilyParts cambench::camconParts() {
-    return FamilyParts(QStringLiteral("camcon"), comm::registerCamConFamily,
-                       registerCamConProtocols, comm::registerCamConSimulator,
-                       usecases::registerCamConCheck, usecases::registerCamConBackup,
+    return FamilyParts(camconFamilyId, comm::camconFamily, camconProtocols, comm::camconSimulator,
+                       usecases::camconCheck, usecases::camconBackup,
                        CAMBENCH_GUI_PART(registerCamConGui),
                        CAMBENCH_CLI_PART(cli::registerCamConCommands));
 }

@@ -9,21 +9,21 @@
 #include "comm/compax3/usecases/compax3_backup_part.h"
 #include "comm/compax3/usecases/compax3_check.h"
 #include "comm/sim/compax3/compax3_simulator.h"
+#include "model/compax3/compax3_family_id.h"
 
 #ifdef CAMBENCH_PARTS_GUI
 #include "ui/compax3/compax3_gui.h"
 
 // The GUI's part: the pages (the drive's address is a field its protocol
 // declares, shown by the connection page).
-static void registerCompax3Gui() {
-    cambench::addFamilyGui<cambench::Compax3Gui>(QStringLiteral("compax3"));
+static void registerCompax3Gui(const QString& familyId) {
+    cambench::addFamilyGui<cambench::Compax3Gui>(familyId);
 }
 #endif
 
 cambench::FamilyParts cambench::compax3Parts() {
-    return FamilyParts(QStringLiteral("compax3"), comm::registerCompax3Family,
-                       comm::registerCompax3Protocol, comm::registerCompax3Simulator,
-                       usecases::registerCompax3Check, usecases::registerCompax3Backup,
+    return FamilyParts(compax3FamilyId, comm::compax3Family, comm::compax3Protocols,
+                       comm::compax3Simulator, usecases::compax3Check, usecases::compax3Backup,
                        CAMBENCH_GUI_PART(registerCompax3Gui),
                        CAMBENCH_CLI_PART(cli::registerCompax3Commands));
 }

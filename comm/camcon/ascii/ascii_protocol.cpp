@@ -33,7 +33,6 @@ ProtocolInfo asciiProtocol(Framing framing) {
     const bool multi = framing == Framing::Multiuser;
     ProtocolInfo info;
     info.id = multi ? multiuserId() : standardId();
-    info.familyId = QStringLiteral("camcon");
     info.title =
         multi ? QCoreApplication::translate("cambench::comm", "CamCon ASCII, Multiuser (RS485 bus)")
               : QCoreApplication::translate("cambench::comm", "CamCon ASCII, Standard (RS232)");
@@ -87,9 +86,8 @@ void AsciiProtocolSettings::fromMap(const QVariantMap& map) {
     ascii.retries = qBound(0, map.value(QStringLiteral("retries"), ascii.retries).toInt(), 10);
 }
 
-void registerCamConAscii(ProtocolRegistry& registry) {
-    registry.add(asciiProtocol(Framing::Standard));
-    registry.add(asciiProtocol(Framing::Multiuser));
+QList<ProtocolInfo> camconAsciiProtocols() {
+    return {asciiProtocol(Framing::Standard), asciiProtocol(Framing::Multiuser)};
 }
 
 }  // namespace cambench::comm

@@ -30,7 +30,7 @@ public:
 // CamCon bus protocol takes: Multiuser and Cam-BUS.
 QList<ProtocolOption> camConBusOptions(int lastDevice);
 
-// Adds "standard" and "multiuser" to `registry`.
-void registerCamConAscii(ProtocolRegistry& registry);
+// "standard" and "multiuser".
+QList<ProtocolInfo> camconAsciiProtocols();
 
 }  // namespace cambench::comm

@@ -43,10 +43,9 @@ void CamBusProtocolSettings::fromMap(const QVariantMap& map) {
     ascii.retries = qBound(0, map.value(QStringLiteral("retries"), ascii.retries).toInt(), 10);
 }
 
-void registerCamConCamBus(ProtocolRegistry& registry) {
+ProtocolInfo camconCamBusProtocol() {
     ProtocolInfo info;
     info.id = camBusId();
-    info.familyId = QStringLiteral("camcon");
     info.title = QCoreApplication::translate("cambench::comm", "CamCon Cam-BUS (RS485 token bus)");
     info.defaultSerial.baud = 38400;  // docs/protocols/cambus.md: 38400 8N1
     info.defaultSerial.inBandBreaks = true;
@@ -74,7 +73,7 @@ void registerCamConCamBus(ProtocolRegistry& registry) {
         return std::unique_ptr<DeviceConnection>(
             std::make_unique<CamBusCamCon>(transport, bus->ascii, line, station, bus->monitor));
     };
-    registry.add(info);
+    return info;
 }
 
 }  // namespace cambench::comm

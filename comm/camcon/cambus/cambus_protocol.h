@@ -28,7 +28,7 @@ public:
     void fromMap(const QVariantMap& map) override;
 };
 
-// Adds "cambus" to `registry`.
-void registerCamConCamBus(ProtocolRegistry& registry);
+// "cambus".
+ProtocolInfo camconCamBusProtocol();
 
 }  // namespace cambench::comm

@@ -14,7 +14,6 @@ ProtocolInfo tableProtocol(Rk512Variant variant) {
     const table::Rk512VariantInfo& variantInfo = table::rk512VariantInfo(variant);
     ProtocolInfo info;
     info.id = tableProtocolId(variant);
-    info.familyId = QStringLiteral("camcon");
     info.title =
         QCoreApplication::translate("cambench::comm", "CamCon table interface, %1 (%2 8%3%4)")
             .arg(QLatin1String(variantInfo.name))
@@ -66,9 +65,8 @@ void TableProtocolSettings::fromMap(const QVariantMap& map) {
     table.retries = qBound(0, map.value(QStringLiteral("retries"), table.retries).toInt(), 10);
 }
 
-void registerCamConTable(ProtocolRegistry& registry) {
-    registry.add(tableProtocol(Rk512Variant::N96));
-    registry.add(tableProtocol(Rk512Variant::E38));
+QList<ProtocolInfo> camconTableProtocols() {
+    return {tableProtocol(Rk512Variant::N96), tableProtocol(Rk512Variant::E38)};
 }
 
 }  // namespace cambench::comm

@@ -29,7 +29,7 @@ public:
 // The registry id of a variant: "3964r-n96", "3964r-e38".
 QString tableProtocolId(table::Rk512Variant variant);
 
-// Adds "3964r-n96" and "3964r-e38" to `registry`.
-void registerCamConTable(ProtocolRegistry& registry);
+// "3964r-n96" and "3964r-e38".
+QList<ProtocolInfo> camconTableProtocols();
 
 }  // namespace cambench::comm

@@ -224,8 +224,8 @@ private:
 
 }  // namespace
 
-void registerCamConBackup(BackupRegistry& registry) {
-    registry.add(QStringLiteral("camcon"), std::make_shared<CamConBackups>());
+std::shared_ptr<const FamilyBackup> camconBackup() {
+    return std::make_shared<CamConBackups>();
 }
 
 }  // namespace cambench::usecases

@@ -11,7 +11,7 @@
 
 namespace cambench::usecases {
 
-// Registers it (the CamCon's FamilyParts::backup).
-void registerCamConBackup(BackupRegistry& registry);
+// It (the CamCon's FamilyParts::backup).
+std::shared_ptr<const FamilyBackup> camconBackup();
 
 }  // namespace cambench::usecases

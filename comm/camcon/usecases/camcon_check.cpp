@@ -59,8 +59,11 @@ Result<QList<CheckResult>> run(comm::DeviceConnection& connection,
 
 }  // namespace
 
-void registerCamConCheck(CheckRegistry& registry) {
-    registry.add({QStringLiteral("camcon"), refuses, run});
+FamilyCheck camconCheck() {
+    FamilyCheck check;
+    check.refuses = refuses;
+    check.run = run;
+    return check;
 }
 
 }  // namespace cambench::usecases

@@ -9,7 +9,7 @@
 
 namespace cambench::usecases {
 
-// Registers the CamCon's FamilyCheck (app/registry, one line).
-void registerCamConCheck(CheckRegistry& registry);
+// The CamCon's FamilyCheck (its FamilyParts::checks).
+FamilyCheck camconCheck();
 
 }  // namespace cambench::usecases

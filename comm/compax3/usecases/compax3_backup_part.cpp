@@ -129,8 +129,8 @@ public:
 
 }  // namespace
 
-void registerCompax3Backup(BackupRegistry& registry) {
-    registry.add(QStringLiteral("compax3"), std::make_shared<Compax3Backups>());
+std::shared_ptr<const FamilyBackup> compax3Backup() {
+    return std::make_shared<Compax3Backups>();
 }
 
 }  // namespace cambench::usecases

@@ -9,7 +9,7 @@
 
 namespace cambench::usecases {
 
-// Registers it (the Compax3's FamilyParts::backup).
-void registerCompax3Backup(BackupRegistry& registry);
+// It (the Compax3's FamilyParts::backup).
+std::shared_ptr<const FamilyBackup> compax3Backup();
 
 }  // namespace cambench::usecases

@@ -216,11 +216,12 @@ Result<CheckTable> dictionaryFile(const QString& path) {
 
 }  // namespace
 
-void registerCompax3Check(CheckRegistry& registry) {
-    registry.add({QStringLiteral("compax3"),
-                  refuses,
-                  run,
-                  {CheckTableOption{QStringLiteral("--dictionary"), dictionaryFile}}});
+FamilyCheck compax3Check() {
+    FamilyCheck check;
+    check.refuses = refuses;
+    check.run = run;
+    check.tables = {CheckTableOption{QStringLiteral("--dictionary"), dictionaryFile}};
+    return check;
 }
 
 }  // namespace cambench::usecases

@@ -9,7 +9,7 @@
 
 namespace cambench::usecases {
 
-// Registers the Compax3's FamilyCheck (app/registry, one line).
-void registerCompax3Check(CheckRegistry& registry);
+// The Compax3's FamilyCheck (its FamilyParts::checks).
+FamilyCheck compax3Check();
 
 }  // namespace cambench::usecases

@@ -92,8 +92,8 @@ public:
 
 }  // namespace
 
-void registerMc1Backup(BackupRegistry& registry) {
-    registry.add(QStringLiteral("mc1"), std::make_shared<Mc1Backups>());
+std::shared_ptr<const FamilyBackup> mc1Backup() {
+    return std::make_shared<Mc1Backups>();
 }
 
 }  // namespace cambench::usecases

@@ -8,7 +8,7 @@
 
 namespace cambench::usecases {
 
-// Registers it (the MC-1's FamilyParts::backup).
-void registerMc1Backup(BackupRegistry& registry);
+// It (the MC-1's FamilyParts::backup).
+std::shared_ptr<const FamilyBackup> mc1Backup();
 
 }  // namespace cambench::usecases

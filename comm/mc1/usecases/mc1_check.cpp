@@ -228,11 +228,12 @@ Result<CheckTable> parametersFile(const QString& path) {
 
 }  // namespace
 
-void registerMc1Check(CheckRegistry& registry) {
-    registry.add({QStringLiteral("mc1"),
-                  refuses,
-                  run,
-                  {CheckTableOption{QStringLiteral("--parameters"), parametersFile}}});
+FamilyCheck mc1Check() {
+    FamilyCheck check;
+    check.refuses = refuses;
+    check.run = run;
+    check.tables = {CheckTableOption{QStringLiteral("--parameters"), parametersFile}};
+    return check;
 }
 
 }  // namespace cambench::usecases

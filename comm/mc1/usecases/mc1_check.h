@@ -8,7 +8,7 @@
 
 namespace cambench::usecases {
 
-// Registers the MC-1's FamilyCheck (app/registry, one line).
-void registerMc1Check(CheckRegistry& registry);
+// The MC-1's FamilyCheck (its FamilyParts::checks).
+FamilyCheck mc1Check();
 
 }  // namespace cambench::usecases

@@ -256,15 +256,18 @@ Result<std::unique_ptr<Transport>> makeCamConSimTransport(const QString& port,
     return std::unique_ptr<Transport>(std::make_unique<SimTransport>(camConSimulatedLine(*config)));
 }
 
-void registerCamConSimulator(SimulatorRegistry& registry) {
-    registry.add({QStringLiteral("camcon"),
-                  [](const QString& port, const SerialSettings& serial,
-                     const QString& protocol) -> Result<SimulatedLine> {
-                      Result<SimPortConfig> config = configForPort(port, serial, protocol);
-                      if (!config) return config.error();
-                      return camConSimulatedLine(*config);
-                  },
-                  camConOptions, fromOptions, namedProtocol});
+SimulatorInfo camconSimulator() {
+    SimulatorInfo info;
+    info.fromPort = [](const QString& port, const SerialSettings& serial,
+                       const QString& protocol) -> Result<SimulatedLine> {
+        Result<SimPortConfig> config = configForPort(port, serial, protocol);
+        if (!config) return config.error();
+        return camConSimulatedLine(*config);
+    };
+    info.options = camConOptions;
+    info.fromOptions = fromOptions;
+    info.namedProtocol = namedProtocol;
+    return info;
 }
 
 }  // namespace cambench::comm

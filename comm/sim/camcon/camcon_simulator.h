@@ -19,6 +19,6 @@ Result<std::unique_ptr<Transport>> makeCamConSimTransport(const QString& port,
                                                           const QString& protocol = {});
 
 // The CamCon simulator: "sim" ports and cambench-sim --family camcon.
-void registerCamConSimulator(SimulatorRegistry& registry);
+SimulatorInfo camconSimulator();
 
 }  // namespace cambench::comm

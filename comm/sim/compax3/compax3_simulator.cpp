@@ -64,9 +64,8 @@ SimulatedLine lineFor(const DriveOptions& options, const SimHostOptions& shared)
 
 }  // namespace
 
-void registerCompax3Simulator(SimulatorRegistry& registry) {
+SimulatorInfo compax3Simulator() {
     SimulatorInfo info;
-    info.familyId = QStringLiteral("compax3");
     info.fromPort = [](const QString& port, const SerialSettings& serial,
                        const QString& protocol) -> Result<SimulatedLine> {
         DriveOptions options;
@@ -176,7 +175,7 @@ void registerCompax3Simulator(SimulatorRegistry& registry) {
         }
         return lineFor(options, shared);
     };
-    registry.add(info);
+    return info;
 }
 
 }  // namespace cambench::comm

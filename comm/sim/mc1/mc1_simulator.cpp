@@ -133,9 +133,8 @@ SimulatedLine mc1SimulatedLine(Mc1Variant variant, int baud, const SimHostOption
     return simulated;
 }
 
-void registerMc1Simulator(SimulatorRegistry& registry) {
+SimulatorInfo mc1Simulator() {
     SimulatorInfo info;
-    info.familyId = QStringLiteral("mc1");
     // "sim" or "sim:variant=mc100v1": the in-process simulator.
     info.fromPort = [](const QString& port, const SerialSettings& serial,
                        const QString& protocol) -> Result<SimulatedLine> {
@@ -252,7 +251,7 @@ void registerMc1Simulator(SimulatorRegistry& registry) {
         }
         return mc1SimulatedLine(variant, baud, shared, syncMs, axes);
     };
-    registry.add(info);
+    return info;
 }
 
 }  // namespace cambench::comm

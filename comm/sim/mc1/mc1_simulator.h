@@ -28,6 +28,6 @@ SimulatedLine mc1AsciiSimulatedLine(int baud, const SimHostOptions& shared);
 // "sim:axes=1,3;parameters=0x2000;udb=0x12000" ports when the PC speaks
 // mc1, and cambench-sim --family mc1 [--variant V] [--sync MS] [--baud B]
 // [--axes 1,3] [--parameter-base 0x2000] [--udb 0x12000].
-void registerMc1Simulator(SimulatorRegistry& registry);
+SimulatorInfo mc1Simulator();
 
 }  // namespace cambench::comm
