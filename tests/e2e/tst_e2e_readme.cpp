@@ -37,12 +37,6 @@ using namespace cambench::e2e;
 
 namespace {
 
-// A Cam-BUS user answers the PC after this long at most: the bus's own 10 ms
-// on a quiet machine is the Cam-BUS tests' business (tst_e2e_cli_cambus); here
-// the README's command lines are, on a machine that may be loaded.
-constexpr int kQuietPcAnswerMs = 60;
-constexpr int kMostPcAnswerMs = 1000;
-
 // One command line of the README.
 struct Example {
     int line = 0;       // in README.md, from 1

@@ -36,6 +36,8 @@ public:
     QList<int> numbers() const;
     // Adds first..last (those not watched yet); returns how many were added.
     int addRange(int first, int last);
+    // Removes `rows` (the model's own removeRows(row, count) stays usable).
+    using QAbstractTableModel::removeRows;
     void removeRows(const QList<int>& rows);
     // Names by number ("12" -> "Feed length"); numbers not watched are added.
     void setNames(const QMap<int, QString>& names);

@@ -169,7 +169,7 @@ Result<Request> AsciiLink::makeRequest(const CommandSpec& spec, const Fields& fi
     if (request.timeout == TimeoutClass::Long && timeoutMs <= 0) {
         // A silent busy device does not answer ?ERR either; one that answers
         // it has lost the long command's answer.
-        request.probe = [this]() {
+        request.probe = []() {
             const CommandSpec* err = findCommand(kQuery, "ERR");
             Request probe;
             probe.label = QStringLiteral("?ERR");

@@ -14,7 +14,6 @@ using table::Rk512Error;
 namespace {
 
 constexpr int kFirstPlcArea = 0x08;  // O in the ASCII protocol
-constexpr int kNetworksPerArea = 256;
 constexpr int kHighNumberShift = 10;
 // Area 216 words the model has no field for, kept per network.
 constexpr int kWordsPerNetwork = 64;
