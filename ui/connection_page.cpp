@@ -480,6 +480,10 @@ void ConnectionPage::chooseDevice(int device) {
         m_protocolWidget->load(*settings);
     }
     m_session->setDevice(device);
+    // The field's change above asked before the session had the device:
+    // its "Reconnect to reach device N" would say a reconnect is needed
+    // for the device CamBench already talks to.
+    updateButtons();
     Q_EMIT deviceSelected(device);
 }
 

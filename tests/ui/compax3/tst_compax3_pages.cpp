@@ -190,6 +190,31 @@ private Q_SLOTS:
         }
     }
 
+    // A drive that does not answer at the address typed is looked for on
+    // the bus; the one found is the one CamBench then talks to, and the
+    // page says so: its field shows that address and it does not ask for a
+    // reconnect to reach the drive it already reaches.
+    void aDriveFoundAtAnotherAddressIsTheOneShown() {
+        std::unique_ptr<Shell> shell = startCompax3();
+        QVERIFY(shell);
+        ConnectionPage* page = shell->window()->connectionPage();
+        page->setPort(QStringLiteral("sim:address=7"));
+        page->setProtocol(QStringLiteral("compax3-rs485"));
+        std::unique_ptr<comm::ProtocolSettings> settings = page->protocolSettings()->clone();
+        settings->setDevice(0);
+        page->showConnection(page->connectionSettings(), *settings);
+        auto leave = answerLeaveQuestion();
+        shell->window()->connectAndLoad();
+        DeviceSession* session = shell->window()->session();
+        QVERIFY(QTest::qWaitFor([&] { return session->protocol().device() == 7; },
+                                4 * kDeviceTimeoutMs));
+        QCOMPARE(page->protocolSettings()->device(), 7);
+        for (const QLabel* label : page->findChildren<QLabel*>()) {
+            if (label->text().startsWith(QLatin1String("Reconnect to reach")))
+                QVERIFY2(label->isHidden(), qPrintable(label->text()));
+        }
+    }
+
     void objectsShowTheDriveAndWriteOnlyAfterYes() {
         std::unique_ptr<Shell> shell = startCompax3();
         QVERIFY(shell);
