@@ -137,6 +137,16 @@ void delayDriveAnswers(DeviceSession* session, int ms) {
     QVERIFY(found);
 }
 
+// `page` set to RS485 and the simulated drive at address 7, with `typed`
+// as the address to connect to.
+void showRs485DriveAt7(ConnectionPage* page, int typed) {
+    page->setPort(QStringLiteral("sim:address=7"));
+    page->setProtocol(QStringLiteral("compax3-rs485"));
+    std::unique_ptr<comm::ProtocolSettings> settings = page->protocolSettings()->clone();
+    settings->setDevice(typed);
+    page->showConnection(page->connectionSettings(), *settings);
+}
+
 // The Motion page of `shell`'s drive shown and the drive enabled (the
 // confirmation answered Yes); nullptr when that fails.
 Compax3MotionPage* enabledMotionPage(const std::unique_ptr<Shell>& shell) {
@@ -169,11 +179,7 @@ private Q_SLOTS:
         std::unique_ptr<Shell> shell = startCompax3();
         QVERIFY(shell);
         ConnectionPage* page = shell->window()->connectionPage();
-        page->setPort(QStringLiteral("sim:address=7"));
-        page->setProtocol(QStringLiteral("compax3-rs485"));
-        std::unique_ptr<comm::ProtocolSettings> settings = page->protocolSettings()->clone();
-        settings->setDevice(7);
-        page->showConnection(page->connectionSettings(), *settings);
+        showRs485DriveAt7(page, 7);
         QSignalSpy loaded(shell->window(), &MainWindow::loaded);
         auto leave = answerLeaveQuestion();
         shell->window()->connectAndLoad();
@@ -198,11 +204,7 @@ private Q_SLOTS:
         std::unique_ptr<Shell> shell = startCompax3();
         QVERIFY(shell);
         ConnectionPage* page = shell->window()->connectionPage();
-        page->setPort(QStringLiteral("sim:address=7"));
-        page->setProtocol(QStringLiteral("compax3-rs485"));
-        std::unique_ptr<comm::ProtocolSettings> settings = page->protocolSettings()->clone();
-        settings->setDevice(0);
-        page->showConnection(page->connectionSettings(), *settings);
+        showRs485DriveAt7(page, 0);
         auto leave = answerLeaveQuestion();
         shell->window()->connectAndLoad();
         DeviceSession* session = shell->window()->session();
