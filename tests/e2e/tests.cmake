@@ -1,10 +1,16 @@
 # End-to-end runs of the real cambench-cli against the real cambench-sim
 # (paths relative to tests/).
 
-# The end-to-end tests start both executables as subprocesses.
+# The end-to-end tests start both executables as subprocesses; what they
+# share to do so is compiled once.
+add_library(cambench_e2e_support OBJECT e2e/sim_process.h e2e/sim_process.cpp e2e/e2e_support.h
+            e2e/e2e_support.cpp e2e/test_pace.h e2e/test_pace.cpp)
+target_link_libraries(cambench_e2e_support PRIVATE cambench_model cambench_child_process Qt6::Test)
+target_compile_definitions(cambench_e2e_support PRIVATE
+  CAMBENCH_SIM_EXE="$<TARGET_FILE:cambench-sim>"
+  CAMBENCH_CLI_EXE="$<TARGET_FILE:cambench-cli>")
 function(cambench_add_e2e_test name)
-  cambench_add_test(${name} SOURCES ${ARGN} e2e/sim_process.h e2e/sim_process.cpp
-                    e2e/e2e_support.h e2e/e2e_support.cpp e2e/test_pace.h e2e/test_pace.cpp
+  cambench_add_test(${name} SOURCES ${ARGN} $<TARGET_OBJECTS:cambench_e2e_support>
                     LIBS cambench_model cambench_child_process)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})
   target_compile_definitions(${name} PRIVATE

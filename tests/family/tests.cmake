@@ -3,7 +3,7 @@
 if(CAMBENCH_GUI AND TARGET cambench_cli_front)
   cambench_add_test(tst_fake_family
     SOURCES family/tst_fake_family.cpp family/fake_family.h family/fake_family.cpp
-            ui/register_widgets.cpp
+            $<TARGET_OBJECTS:cambench_test_gui_check>
     LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
   # It counts the files outside tests/family/ that name the fake family.
   target_compile_definitions(tst_fake_family PRIVATE CAMBENCH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -14,7 +14,7 @@ endif()
 if(CAMBENCH_GUI AND TARGET cambench_cli_front)
   cambench_add_test(tst_motion_stop
     SOURCES family/tst_motion_stop.cpp family/fake_family.h family/fake_family.cpp
-            ui/register_widgets.cpp ui/shell/shell_fixture.h
+            $<TARGET_OBJECTS:cambench_test_gui_check> ui/shell/shell_fixture.h
     LIBS cambench_ui cambench_gui_registry cambench_sim cambench_cli_front)
 endif()
 
@@ -35,7 +35,7 @@ endif()
 if(CAMBENCH_GUI AND TARGET cambench_cli_front)
   cambench_add_test(tst_protocol_options
     SOURCES family/tst_protocol_options.cpp family/slotted_family.h family/slotted_family.cpp
-            ui/register_widgets.cpp
+            $<TARGET_OBJECTS:cambench_test_gui_check>
     LIBS cambench_ui cambench_gui_registry cambench_test_fake_family)
   target_compile_definitions(tst_protocol_options PRIVATE CAMBENCH_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
