@@ -4,6 +4,8 @@
 #include "test_pace.h"
 
 #include <QDeadlineTimer>
+#include <QDir>
+#include <QFile>
 
 namespace cambench::e2e {
 
@@ -40,7 +42,10 @@ bool SimProcess::start(const QStringList& args, const QString& stderrLog) {
         }
         m_process.waitForReadyRead(100);
     }
-    m_ptyPath = QString::fromUtf8(m_process.readLine()).trimmed();
+    const QString pty = QString::fromUtf8(m_process.readLine()).trimmed();
+    m_ptyPath = pty.isEmpty() || !m_linkFolder.isValid()
+                    ? pty
+                    : linkedPort(pty, m_linkFolder.path(), QStringLiteral("ttySIM"));
     return !m_ptyPath.isEmpty();
 }
 
@@ -48,6 +53,12 @@ void SimProcess::stop() {
     if (m_process.state() == QProcess::NotRunning) return;
     m_process.kill();
     m_process.waitForFinished(5000);
+}
+
+QString linkedPort(const QString& ptyPath, const QString& folder, const QString& name) {
+    const QString link = QDir(folder).filePath(name);
+    QFile::remove(link);
+    return QFile::link(ptyPath, link) ? link : ptyPath;
 }
 
 CliRun runCli(const QStringList& args, int timeoutMs) {

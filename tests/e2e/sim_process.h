@@ -3,6 +3,7 @@
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+#include <QTemporaryDir>
 
 namespace cambench::e2e {
 
@@ -22,15 +23,28 @@ public:
     bool start(const QStringList& args, const QString& stderrLog = {});
     void stop();
 
+    // The port to give the cli: a link of this object's own to the pty
+    // (linkedPort()).
     QString ptyPath() const { return m_ptyPath; }
     qint64 processId() const { return m_process.processId(); }
     QString errorText() const { return m_error; }
 
 private:
     QProcess m_process;
+    QTemporaryDir m_linkFolder;
     QString m_ptyPath;
     QString m_error;
 };
+
+// A name of its own for the pseudo-terminal `ptyPath`: the link
+// `folder`/`name` to it, or `ptyPath` itself when no link can be made.
+// QSerialPort locks a port by its name (/var/lock/LCK..pts_2; a live
+// holder's lock counts for 30 s), and the kernel gives a new simulator the
+// lowest free pty number. Under parallel tests a cli of one test was refused
+// /dev/pts/2 ("Permission error while locking the device") that another
+// process still held the lock of, just after this test's simulator had got
+// pts/2. A link's name is the test's alone; the cli opens the pty through it.
+QString linkedPort(const QString& ptyPath, const QString& folder, const QString& name);
 
 // One run of the real `cambench-cli` executable.
 struct CliRun {

@@ -307,7 +307,8 @@ void TestE2eReadme::everyExampleExitsAsTheReadmeSays() {
                 const QString real = blockSim->lines.at(i).section(u' ', -1);
                 QCOMPARE(blockSim->lines.at(i).section(u' ', 0, -2),
                          example.shown.at(i).section(u' ', 0, -2));
-                readmePorts.insert(shown, real);
+                readmePorts.insert(
+                    shown, linkedPort(real, folder.path(), QStringLiteral("ttyBLOCK%1").arg(i)));
             }
             continue;
         }
@@ -323,6 +324,9 @@ void TestE2eReadme::everyExampleExitsAsTheReadmeSays() {
                     auto sim = std::make_unique<RunningSim>();
                     const QString error = startSim(*sim, simArgs, folder.path(), 1);
                     QVERIFY2(error.isEmpty(), qPrintable(where + u'\n' + error));
+                    sim->lines.first() =
+                        linkedPort(sim->lines.first(), folder.path(),
+                                   QStringLiteral("ttySIM%1").arg(simulators.size()));
                     simulators[key] = std::move(sim);
                 }
                 pty = simulators[key]->lines.first();
