@@ -38,12 +38,11 @@ private:
 
 // A name of its own for the pseudo-terminal `ptyPath`: the link
 // `folder`/`name` to it, or `ptyPath` itself when no link can be made.
-// QSerialPort locks a port by its name (/var/lock/LCK..pts_2; a live
-// holder's lock counts for 30 s), and the kernel gives a new simulator the
-// lowest free pty number. Under parallel tests a cli of one test was refused
-// /dev/pts/2 ("Permission error while locking the device") that another
-// process still held the lock of, just after this test's simulator had got
-// pts/2. A link's name is the test's alone; the cli opens the pty through it.
+// QSerialPort locks a port by its name (/var/lock/LCK..pts_2), and pty
+// numbers are handed out again. Under parallel tests a cli was refused the
+// /dev/pts/2 of its test's new simulator ("Permission error while locking
+// the device"): a lock of that name was still held. A link's name is the
+// test's alone; the cli opens the pty through it.
 QString linkedPort(const QString& ptyPath, const QString& folder, const QString& name);
 
 // One run of the real `cambench-cli` executable.
