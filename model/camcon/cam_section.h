@@ -43,6 +43,15 @@ public:
     virtual void mergeOutputSettings(const QMap<int, QString>& outputNames,
                                      const DeadTimes& deadTimes, bool fromDevice,
                                      bool keepEdits) = 0;
+    // One output's dead time that arrives alone (word 0 of its dead-time
+    // mode on the table interface, read or opened): from the device it
+    // becomes the device copy; the value shown takes it unless `keepEdits`
+    // and the person edited it.
+    virtual void mergeDeadTime(int output, qint32 deadTime, bool fromDevice, bool keepEdits) = 0;
+    // The device holds `deadTime` on `output` now (a write's read-back).
+    virtual void setDeviceDeadTime(int output, qint32 deadTime) = 0;
+    // The person wants `deadTime` on `output` (an undo step).
+    virtual void setDeadTime(int output, qint32 deadTime) = 0;
 
 protected:
     CamSection() = default;

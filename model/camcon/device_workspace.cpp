@@ -146,21 +146,82 @@ int DeviceWorkspace::changedCount() const {
     return count;
 }
 
-void DeviceWorkspace::mergeDeadTimeModes(const DeadTimeModes& modes, ValueSource source,
+namespace {
+
+// What the dead-time mode copies hold of a mode: all but word 0.
+OutputDeadTime withoutWordZero(OutputDeadTime deadTime) {
+    deadTime.normal = 0;
+    return deadTime;
+}
+
+}  // namespace
+
+std::optional<OutputDeadTime> DeviceWorkspace::deadTimeMode(int output) const {
+    std::optional<OutputDeadTime> mode = m_deadTimeModes.value(output);
+    if (mode && m_camSection) mode->normal = m_camSection->deadTimes().value(output);
+    return mode;
+}
+
+std::optional<OutputDeadTime> DeviceWorkspace::deviceDeadTimeMode(int output) const {
+    std::optional<OutputDeadTime> mode = m_deadTimeModes.deviceValue(output);
+    if (mode && m_camSection) mode->normal = m_camSection->deviceDeadTime(output).value_or(0);
+    return mode;
+}
+
+DeadTimeModes DeviceWorkspace::shownDeadTimeModes() const {
+    DeadTimeModes modes;
+    for (const int output : m_deadTimeModes.shown().keys())
+        modes.insert(output, *deadTimeMode(output));
+    return modes;
+}
+
+DeadTimeModes DeviceWorkspace::deviceDeadTimeModes() const {
+    DeadTimeModes modes;
+    for (const int output : m_deadTimeModes.device().keys())
+        modes.insert(output, *deviceDeadTimeMode(output));
+    return modes;
+}
+
+bool DeviceWorkspace::deadTimeModeChanged(int output) const {
+    return deadTimeMode(output) != deviceDeadTimeMode(output);
+}
+
+void DeviceWorkspace::editDeadTimeMode(int output, const OutputDeadTime& deadTime) {
+    if (m_camSection) m_camSection->setDeadTime(output, deadTime.normal);
+    m_deadTimeModes.edit(output, withoutWordZero(deadTime));
+}
+
+void DeviceWorkspace::setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime) {
+    if (m_camSection) m_camSection->setDeviceDeadTime(output, deadTime.normal);
+    m_deadTimeModes.setDevice(output, withoutWordZero(deadTime));
+}
+
+void DeviceWorkspace::mergeDeadTimeModes(const DeadTimeModes& arriving, ValueSource source,
                                          bool keepEdits) {
-    if (source == ValueSource::Device) {
+    DeadTimeModes modes;
+    for (auto it = arriving.cbegin(); it != arriving.cend(); ++it)
+        modes.insert(it.key(), withoutWordZero(*it));
+    const bool fromDevice = source == ValueSource::Device;
+    if (fromDevice) {
         for (const int output : m_deadTimeModes.changedKeys()) {
             if (!modes.contains(output)) m_deadTimeModes.dropEdit(output);
         }
+    } else {
+        const DeadTimeModes& device = m_deadTimeModes.device();
+        for (const int output : arriving.keys()) {
+            if (!device.isEmpty() && !device.contains(output)) modes.remove(output);
+        }
+    }
+    // Word 0 first: the modes' signal then shows the whole mode.
+    if (m_camSection) {
+        for (const int output : modes.keys())
+            m_camSection->mergeDeadTime(output, arriving.value(output).normal, fromDevice,
+                                        keepEdits);
+    }
+    if (fromDevice)
         m_deadTimeModes.mergeWhole(modes, keepEdits);
-        return;
-    }
-    const DeadTimeModes& device = m_deadTimeModes.device();
-    DeadTimeModes shown = modes;
-    for (const int output : modes.keys()) {
-        if (!device.isEmpty() && !device.contains(output)) shown.remove(output);
-    }
-    m_deadTimeModes.merge(shown, source, keepEdits);
+    else
+        m_deadTimeModes.merge(modes, source, keepEdits);
 }
 
 // --- which device the copies are from

@@ -90,11 +90,25 @@ public:
     // As shown, or an empty network of that place.
     PlcNetwork plcNetwork(int area, int number) const;
 
-    // --- Dead-time modes (table interface), key = output (1-based). The
-    // Dead-time modes page shows and edits them here.
+    // --- Dead-time modes (table interface), key = output (1-based). Word 0
+    // of a mode, the dead time of mode Normal, is the plain dead time the
+    // Dead times page shows: its one home is the cam section. The copies
+    // here hold the mode and the switch-on/-off times, and 0 for word 0;
+    // the functions below read and take a whole OutputDeadTime.
     using DeadTimeModeCopies = SectionCopies<int, OutputDeadTime>;
-    DeadTimeModeCopies& deadTimeModes() { return m_deadTimeModes; }
     const DeadTimeModeCopies& deadTimeModes() const { return m_deadTimeModes; }
+    // One output's mode as shown / as on the device (nullopt: not known).
+    std::optional<OutputDeadTime> deadTimeMode(int output) const;
+    std::optional<OutputDeadTime> deviceDeadTimeMode(int output) const;
+    // Every output's, as shown (what a project saved now holds) / on the device.
+    DeadTimeModes shownDeadTimeModes() const;
+    DeadTimeModes deviceDeadTimeModes() const;
+    // Whether the output's mode, or its times, differ from the device's.
+    bool deadTimeModeChanged(int output) const;
+    // The person wants `deadTime` on `output`: word 0 goes to the cam section.
+    void editDeadTimeMode(int output, const OutputDeadTime& deadTime);
+    // The device holds `deadTime` on `output` now (a write's read-back).
+    void setDeviceDeadTimeMode(int output, const OutputDeadTime& deadTime);
     // Modes that arrive, by merge()'s rule; a device's are its whole
     // section. Only outputs the device has keep or take an edit once it was
     // read (the page has no row to show another in).

@@ -1,4 +1,5 @@
 #include "fake_family.h"
+#include "fake_backup.h"
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
@@ -16,6 +17,7 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QMap>
 #include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -92,7 +94,10 @@ public:
 // "PING n", "MOVE n", "STOP n" (not for its deaf axis) and "STATE?".
 class FakeEndpoint : public comm::SimEndpoint {
 public:
-    FakeEndpoint(int axes, int deafAxis) : m_axes(axes), m_deafAxis(deafAxis) {}
+    FakeEndpoint(int axes, int deafAxis, int serial, int registers)
+        : m_axes(axes), m_deafAxis(deafAxis), m_serial(serial) {
+        for (int n = 1; n <= registers; ++n) m_registers.insert(n, serial * 100 + n);
+    }
     QList<comm::SimOutput> receive(QByteArrayView bytes, qint64) override {
         QList<comm::SimOutput> replies;
         m_input += bytes.toByteArray();
@@ -116,14 +121,29 @@ private:
     // that waits for its command.
     static QByteArray withoutNoise(const QByteArray& line) {
         qsizetype from = 0;
-        for (const char* start : {"ID?", "PING ", "MOVE ", "STOP ", "STATE?"})
+        for (const char* start : {"ID?", "PING ", "MOVE ", "STOP ", "STATE?", "GET ", "SET "})
             from = std::max(from, line.lastIndexOf(start));
         return line.mid(from);
     }
     QByteArray answer(const QByteArray& request) {
         const int axis = request.mid(request.indexOf(' ') + 1).toInt();
         const bool known = axis >= 1 && axis <= m_axes;
-        if (request == "ID?") return "FAKE-1 simulated axes=" + QByteArray::number(m_axes);
+        if (request == "ID?")
+            return "FAKE-1 simulated axes=" + QByteArray::number(m_axes) +
+                   " serial=" + QByteArray::number(m_serial) +
+                   " regs=" + QByteArray::number(m_registers.size());
+        if (request.startsWith("GET ") && m_registers.contains(axis))
+            return "VAL " + QByteArray::number(axis) + ' ' +
+                   QByteArray::number(m_registers.value(axis));
+        if (request.startsWith("SET ")) {
+            const QList<QByteArray> fields = request.split(' ');
+            bool ok = fields.size() == 3;
+            const int n = ok ? fields.at(1).toInt() : 0;
+            const int value = ok ? fields.at(2).toInt(&ok) : 0;
+            if (!ok || !m_registers.contains(n)) return "ERR";
+            m_registers.insert(n, value);
+            return "VAL " + QByteArray::number(n) + ' ' + QByteArray::number(value);
+        }
         if (request.startsWith("PING ")) return "PONG " + request.mid(5);
         if (request.startsWith("MOVE ") && known) {
             m_moving.insert(axis);
@@ -146,12 +166,16 @@ private:
     QByteArray m_input;
     int m_axes;
     int m_deafAxis;
+    int m_serial;
+    QMap<int, qint32> m_registers;
     QSet<int> m_moving;
 };
 
 comm::SimulatedLine fakeLine(const QString& port, const comm::SerialSettings& serial) {
     return {std::make_unique<FakeEndpoint>(portNumber(port, QStringLiteral("axes"), 1),
-                                           portNumber(port, QStringLiteral("deaf"), 0)),
+                                           portNumber(port, QStringLiteral("deaf"), 0),
+                                           portNumber(port, QStringLiteral("serial"), 1),
+                                           portNumber(port, QStringLiteral("regs"), 4)),
             comm::SimPacer(serial.baud, false), QStringLiteral("fake simulator")};
 }
 
@@ -273,7 +297,11 @@ struct FakeDevice::Impl {
                            comm::RetryPolicy retry = comm::RetryPolicy::Idempotent);
     LineBackend backend;
     comm::RequestEngine engine;
+    // "VAL n v" -> v.
+    Result<qint32> registerValue(const QByteArray& message, int n);
     int axes = 0;  // from the identity; 0 until identified
+    int serial = 0;
+    int registers = 0;
 };
 
 FakeDevice::FakeDevice(comm::Transport& transport, const comm::LineTiming& line)
@@ -299,8 +327,47 @@ Result<QString> FakeDevice::identify() {
     if (!reply) return reply.error();
     if (!reply->startsWith("FAKE"))
         return Error::communication(QStringLiteral("not a fake device"));
-    d->axes = portNumber(QString::fromLatin1(*reply), QStringLiteral("axes"), 1);
-    return QString::fromLatin1(*reply);
+    const QString text = QString::fromLatin1(*reply);
+    d->axes = portNumber(text, QStringLiteral("axes"), 1);
+    d->serial = portNumber(text, QStringLiteral("serial"), 0);
+    d->registers = portNumber(text, QStringLiteral("regs"), 0);
+    return text;
+}
+
+DeviceIdentity FakeDevice::identity() const {
+    DeviceIdentity identity;
+    if (d->serial > 0) identity.set(QStringLiteral("serial"), QString::number(d->serial));
+    return identity;
+}
+
+Result<DeviceIdentity> FakeDevice::readIdentity() {
+    if (const Result<QString> text = identify(); !text) return text.error();
+    return identity();
+}
+
+int FakeDevice::registers() const {
+    return d->registers;
+}
+
+Result<qint32> FakeDevice::Impl::registerValue(const QByteArray& message, int n) {
+    const Result<QByteArray> reply = ask(message);
+    if (!reply) return reply.error();
+    const QList<QByteArray> fields = reply->split(' ');
+    bool ok = fields.size() == 3 && fields.at(0) == "VAL" && fields.at(1).toInt() == n;
+    const qint32 value = ok ? fields.at(2).toInt(&ok) : 0;
+    if (!ok)
+        return Error::communication(QStringLiteral("register %1: the fake device answered \"%2\"")
+                                        .arg(n)
+                                        .arg(QString::fromLatin1(*reply)));
+    return value;
+}
+
+Result<qint32> FakeDevice::readRegister(int n) {
+    return d->registerValue("GET " + QByteArray::number(n), n);
+}
+
+Result<qint32> FakeDevice::writeRegister(int n, qint32 value) {
+    return d->registerValue("SET " + QByteArray::number(n) + ' ' + QByteArray::number(value), n);
 }
 
 Result<QString> FakeDevice::ping(int n) {
@@ -408,6 +475,7 @@ FamilyParts fakeParts() {
         check.run = checkIdentity;
         return check;
     };
+    parts.backup = fakeBackup;
     parts.gui = [](const QString& familyId) {
         FamilyGuiRegistry::instance().add({familyId, [](DeviceSession* session, QObject* parent) {
                                                return new FakeGui(session, parent);

@@ -12,6 +12,7 @@
 #include "comm/device/motion_control.h"
 #include "comm/device/protocol_registry.h"
 #include "comm/engine/framing_backend.h"
+#include "model/device_identity.h"
 
 #include <QAtomicInt>
 #include <QStringList>
@@ -21,7 +22,9 @@ namespace cambench::fake {
 // The device interface of the family: what its page and command use. Its
 // axes (how many, and one that never acknowledges a STOP, come from the
 // simulator's port: "sim:throttle=0,axes=2,deaf=2") move on "MOVE n" until
-// "STOP n": the MotionControl the shell's STOP is tested with.
+// "STOP n": the MotionControl the shell's STOP is tested with. Its
+// registers ("regs=4", each n starting at serial × 100 + n) and serial
+// number ("serial=1") are what its backup holds (fake_backup.h).
 class FakeDevice : public comm::DeviceConnection, public comm::MotionControl {
 public:
     FakeDevice(comm::Transport& transport, const comm::LineTiming& line);
@@ -35,6 +38,17 @@ public:
     Result<QString> ping(int n);
     // Starts axis `axis` (1-based) moving.
     Result<QString> move(int axis);
+
+    // What identify() found: the serial number ("serial=3" on the port)
+    // tells two fake devices apart; how many registers the device has.
+    DeviceIdentity identity() const;
+    int registers() const;
+    // identify(), then identity(): what a machine and a restore compare.
+    Result<DeviceIdentity> readIdentity() override;
+    // Register n (1-based): "GET n" -> "VAL n v"; "SET n v" -> "VAL n v".
+    // Setting a register to a value twice leaves it as once: a retry is safe.
+    Result<qint32> readRegister(int n);
+    Result<qint32> writeRegister(int n, qint32 value);
 
     MotionControl* motionControl() override { return this; }
     comm::MotionStopReport stopAllMotion() override;

@@ -212,10 +212,10 @@ private:
 
     // Table interface only: absent when neither read nor in the project.
     QString deadTimeModes() const {
-        const DeadTimeModes modes = m_workspace.deadTimeModes().shown();
+        const DeadTimeModes modes = m_workspace.shownDeadTimeModes();
         if (modes.isEmpty()) return {};
         const DeadTimeModes onDevice = readFromDevice(ProjectPart::DeadTimeModes)
-                                           ? m_workspace.deadTimeModes().device()
+                                           ? m_workspace.deviceDeadTimeModes()
                                            : DeadTimeModes{};
         QString rows =
             headerRow({CommissioningReport::tr("Output"), CommissioningReport::tr("Mode"),
@@ -357,7 +357,7 @@ private:
         const Axis axis = m_cams.axis();
         const double v = toPositionsPerSecond(*m_options.timingSpeed, axis);
         const QList<OutputTiming> outputs = timeProgram(
-            program, deadTimesAsModes(m_cams.deadTimes(), m_workspace.deadTimeModes().shown()), v,
+            program, deadTimesAsModes(m_cams.deadTimes(), m_workspace.shownDeadTimeModes()), v,
             axis, m_cams.minimumPulses());
         QString rows = headerRow(
             {CommissioningReport::tr("Output"), CommissioningReport::tr("Dead time on / off"),

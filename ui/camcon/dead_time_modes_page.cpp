@@ -101,7 +101,7 @@ void DeadTimeModesPage::readFromDevice() {
 }
 
 void DeadTimeModesPage::showModes() {
-    const DeadTimeModes& device = onDevice();
+    const DeadTimeModes device = onDevice();
     {
         // Filled row by row: the edits are marked once all rows are there.
         const QSignalBlocker blocker(m_table);
@@ -146,7 +146,8 @@ void DeadTimeModesPage::markEdits() {
         QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
         if (!outputItem) continue;
         const int output = outputItem->data(Qt::UserRole).toInt();
-        const OutputDeadTime device = onDevice().value(output);
+        const OutputDeadTime device =
+            m_workspace->deviceDeadTimeMode(output).value_or(OutputDeadTime{});
         const OutputDeadTime now = edited(output);
         auto* mode = qobject_cast<QComboBox*>(m_table->cellWidget(row, ModeColumn));
         if (!mode) continue;  // the row is being filled
@@ -174,11 +175,11 @@ void DeadTimeModesPage::takeRow(int row) {
     const QTableWidgetItem* outputItem = m_table->item(row, OutputColumn);
     const auto* mode = qobject_cast<const QComboBox*>(m_table->cellWidget(row, ModeColumn));
     if (!outputItem || !mode) return;  // the row is being filled
-    m_workspace->deadTimeModes().edit(outputItem->data(Qt::UserRole).toInt(),
-                                      OutputDeadTime{DeadTimeMode(mode->currentData().toInt()),
-                                                     tenthsOf(m_table->item(row, NormalColumn)),
-                                                     tenthsOf(m_table->item(row, OnColumn)),
-                                                     tenthsOf(m_table->item(row, OffColumn))});
+    m_workspace->editDeadTimeMode(outputItem->data(Qt::UserRole).toInt(),
+                                  OutputDeadTime{DeadTimeMode(mode->currentData().toInt()),
+                                                 tenthsOf(m_table->item(row, NormalColumn)),
+                                                 tenthsOf(m_table->item(row, OnColumn)),
+                                                 tenthsOf(m_table->item(row, OffColumn))});
 }
 
 void DeadTimeModesPage::fillRow(int row, const OutputDeadTime& deadTime) {
@@ -194,15 +195,15 @@ void DeadTimeModesPage::fillRow(int row, const OutputDeadTime& deadTime) {
 }
 
 OutputDeadTime DeadTimeModesPage::edited(int output) const {
-    return m_workspace->deadTimeModes().value(output).value_or(OutputDeadTime{});
+    return m_workspace->deadTimeMode(output).value_or(OutputDeadTime{});
 }
 
 void DeadTimeModesPage::setEdited(int output, const OutputDeadTime& deadTime) {
-    if (onDevice().contains(output)) m_workspace->deadTimeModes().edit(output, deadTime);
+    if (onDevice().contains(output)) m_workspace->editDeadTimeMode(output, deadTime);
 }
 
-const DeadTimeModes& DeadTimeModesPage::onDevice() const {
-    return m_workspace->deadTimeModes().device();
+DeadTimeModes DeadTimeModesPage::onDevice() const {
+    return m_workspace->deviceDeadTimeModes();
 }
 
 QList<int> DeadTimeModesPage::shownOutputs() const {
@@ -224,8 +225,11 @@ int DeadTimeModesPage::rowOf(int output) const {
 
 QList<SectionDifference> DeadTimeModesPage::differences() const {
     QList<SectionDifference> list;
-    for (auto it = onDevice().begin(); it != onDevice().end(); ++it) {
-        if (!m_workspace->deadTimeModes().isChanged(it.key())) continue;
+    const DeadTimeModes device = onDevice();
+    for (auto it = device.begin(); it != device.end(); ++it) {
+        // A mode, or only its dead time (word 0, which the Dead times page
+        // shows too): the mode's write carries every word of it.
+        if (!m_workspace->deadTimeModeChanged(it.key())) continue;
         const OutputDeadTime now = edited(it.key());
         list.append({WorkspaceItem::deadTimeMode(it.key()),
                      tr("Output %1 dead-time mode").arg(it.key()),
@@ -237,7 +241,7 @@ QList<SectionDifference> DeadTimeModesPage::differences() const {
 void DeadTimeModesPage::writeChanges(std::function<void(const WriteResult&)> done) {
     // Checked against the connected device before the first byte, written
     // and read back item by item; the device copy follows the report
-    // (Workspace::deadTimeModes().setDevice).
+    // (Workspace::setDeviceDeadTimeMode).
     writeDifferences(m_session, m_workspace, std::move(done));
 }
 

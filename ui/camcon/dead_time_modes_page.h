@@ -36,7 +36,7 @@ public:
     OutputDeadTime edited(int output) const;
     // An edit of an output the device has (as typing into its row does).
     void setEdited(int output, const OutputDeadTime& deadTime);
-    const DeadTimeModes& onDevice() const;
+    DeadTimeModes onDevice() const;
 
 private:
     // The table is a view of the workspace's section: a row for each output

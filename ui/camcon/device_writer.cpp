@@ -135,9 +135,7 @@ void applyTableSections(Workspace& workspace, const usecases::WritePlan& plan,
         const auto actual =
             modes.of(usecases::itemOf(write), usecases::deadTimeModeLabel(write.output)).actual;
         if (!actual) continue;
-        workspace.deadTimeModes().setDevice(write.output, *actual);
-        // Word 0 is the dead time of mode Normal, the one Dead times shows.
-        workspace.cams()->setDeviceDeadTime(write.output, actual->normal);
+        workspace.setDeviceDeadTimeMode(write.output, *actual);
     }
     OutcomesByItem<AnalogueCamTrack> analogue(report.analogueCams);
     for (const usecases::AnalogueCamWrite& write : plan.analogueCams) {

@@ -38,13 +38,13 @@ Project projectFromWorkspace(const Workspace& workspace) {
         project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
     project.plcNetworks = workspace.plc().shown().values();
     // As the Dead-time modes page shows them, edits included.
-    project.deadTimeModes = workspace.deadTimeModes().shown();
+    project.deadTimeModes = workspace.shownDeadTimeModes();
     if (workspace.deadTimeModes().changedCount() == 0 &&
         read.parts.contains(ProjectPart::DeadTimeModes))
         project.readAt.parts.insert(ProjectPart::DeadTimeModes,
                                     read.parts.value(ProjectPart::DeadTimeModes));
-    // The other table-interface sections, as their pages show them.    project.analogueCams =
-    // workspace.analogueCams().shown().values();
+    // The other table-interface sections, as their pages show them.
+    project.analogueCams = workspace.analogueCams().shown().values();
     project.programmingProgram = workspace.programmingProgram().value();
     project.eepromLock = workspace.eepromLock().value();
     const auto stampIf = [&](ProjectPart part, bool edited) {

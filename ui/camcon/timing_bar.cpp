@@ -188,10 +188,9 @@ void TimingBar::recompute() {
     const CamDocument* cams = m_workspace->cams();
     const Axis a = axis();
     const double v = toPositionsPerSecond(m_speed->value(), a);
-    m_timing =
-        timeProgram(cams->program(m_editor->currentProgram()),
-                    deadTimesAsModes(cams->deadTimes(), m_workspace->deadTimeModes().shown()), v, a,
-                    cams->minimumPulses());
+    m_timing = timeProgram(cams->program(m_editor->currentProgram()),
+                           deadTimesAsModes(cams->deadTimes(), m_workspace->shownDeadTimeModes()),
+                           v, a, cams->minimumPulses());
     diagram->setTiming(m_timing, speedText(v, a));
     const QString text = summary();
     m_summary->setText(text);

@@ -118,10 +118,9 @@ PlannedWrite planForItems(const Workspace& workspace, const QList<WorkspaceItem>
                 plan.users << usecases::UserWrite{item.key, std::nullopt, -1};
                 break;
             case WorkspaceItem::Kind::DeadTimeMode: {
-                const Workspace::DeadTimeModeCopies& modes = workspace.deadTimeModes();
                 plan.deadTimeModes << usecases::DeadTimeModeWrite{
-                    item.number, modes.value(item.number).value_or(OutputDeadTime{}),
-                    modes.deviceValue(item.number)};
+                    item.number, workspace.deadTimeMode(item.number).value_or(OutputDeadTime{}),
+                    workspace.deviceDeadTimeMode(item.number)};
                 break;
             }
             case WorkspaceItem::Kind::AnalogueCams:

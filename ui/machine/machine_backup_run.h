@@ -2,6 +2,7 @@
 
 #include "comm/usecases/machine_backup.h"
 #include "model/machine/machine_backup_folder.h"
+#include "ui/machine/machine_progress.h"
 
 #include <QHash>
 #include <QObject>
@@ -13,7 +14,6 @@ class QWidget;
 namespace cambench {
 
 class Machine;
-class MachineProgress;
 class MachineUnit;
 
 // Machine → Back up…, Verify…, Restore… (issue 36, item 4): each device

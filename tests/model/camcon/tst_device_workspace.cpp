@@ -32,6 +32,11 @@ public:
                              bool) override {
         m_deadTimes = deadTimes;
     }
+    void mergeDeadTime(int output, qint32 deadTime, bool, bool) override {
+        m_deadTimes.insert(output, deadTime);
+    }
+    void setDeviceDeadTime(int, qint32) override {}
+    void setDeadTime(int output, qint32 deadTime) override { m_deadTimes.insert(output, deadTime); }
 
     DeviceInfo limits;
     int clears = 0;

@@ -11,6 +11,8 @@
 #include "ui/camcon/commissioning_report.h"
 #include "ui/camcon/compare_dialog.h"
 #include "ui/camcon/dead_time_modes_page.h"
+#include "ui/camcon/dead_times_model.h"
+#include "ui/camcon/dead_times_page.h"
 #include "ui/camcon/eeprom_lock_page.h"
 #include "ui/camcon/programming_program_page.h"
 #include "ui/camcon/workspace.h"
@@ -62,6 +64,8 @@ private Q_SLOTS:
     void analogueEditIsCountedAndARefusalSaysWhere();
     void programmingProgramEditIsMarkedAndCounted();
     void projectFileCarriesDeadTimeModesThroughThePage();
+    void aDeadTimeIsOneValueOnBothPages();
+    void projectFileKeepsTheAnalogueCams();
     void compareListsAndWritesTheTableSections();
     void settingsOfAnotherProtocolAreNoEdits();
 };
@@ -206,6 +210,78 @@ void TablePageEditsTest::projectFileCarriesDeadTimeModesThroughThePage() {
     QVERIFY2(reloaded.ok(), qPrintable(reloaded.error().message));
     QCOMPARE(reloaded->deadTimeModes.value(6), wanted);
     QVERIFY(!reloaded->readAt.parts.contains(ProjectPart::DeadTimeModes));
+}
+
+void TablePageEditsTest::aDeadTimeIsOneValueOnBothPages() {
+    // Issue 38, item 3: word 0 of a dead-time mode is the plain dead time of
+    // the Dead times page; typed on either page it is one edit, shown on
+    // both, and one write settles both.
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* modes = shell->window()->findChild<DeadTimeModesPage*>();
+    auto* plain = shell->window()->findChild<DeadTimesPage*>();
+    QVERIFY(plain);
+    QTRY_VERIFY_WITH_TIMEOUT(modes->onDevice().size() == 32, kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
+    const int before = camConWorkspace(*shell)->changedCount();
+    DeadTimesModel* model = plain->model();
+    const auto shownPlain = [model](int output) {
+        return model->data(model->index(output - 1, DeadTimesModel::DeadTimeColumn), Qt::EditRole)
+            .toDouble();
+    };
+
+    // Output 3's dead time typed on the Dead-time modes page as 4.5 ms.
+    QTableWidgetItem* normal = modes->table()->item(2, DeadTimeModesPage::NormalColumn);
+    normal->setData(Qt::EditRole, 4.5);
+    QCOMPARE(shownPlain(3), 4.5);
+    QVERIFY(model->isChanged(3));
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 1);
+    // Output 4's typed on the Dead times page as 6 ms: the modes page shows it, marked.
+    QVERIFY(model->setData(model->index(3, DeadTimesModel::DeadTimeColumn), 6.0));
+    QCOMPARE(
+        modes->table()->item(3, DeadTimeModesPage::NormalColumn)->data(Qt::EditRole).toDouble(),
+        6.0);
+    QVERIFY(modes->table()->item(3, DeadTimeModesPage::NormalColumn)->font().bold());
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 2);
+
+    // Written from the modes page: both outputs, once each; no edit stays on either page.
+    std::optional<WriteResult> result;
+    modes->writeChanges([&](const WriteResult& r) { result = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), kDeviceTimeoutMs);
+    QVERIFY2(result->ok() && (*result)->complete(), qPrintable(writeDetails(*result)));
+    QCOMPARE((*result)->deadTimeModes.size(), 2);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before);
+    QVERIFY(!model->isChanged(3));
+    QVERIFY(!model->isChanged(4));
+    QCOMPARE(modes->onDevice().value(3).normal, 45);
+    QCOMPARE(camConWorkspace(*shell)->cams()->deviceDeadTime(4), std::optional<qint32>(60));
+
+    // Read again from the device: both pages show what it holds.
+    modes->readFromDevice();
+    QTRY_COMPARE_WITH_TIMEOUT(modes->onDevice().value(4).normal, 60, kDeviceTimeoutMs);
+    QCOMPARE(shownPlain(4), 6.0);
+    QCOMPARE(camConWorkspace(*shell)->changedCount(), before);
+}
+
+void TablePageEditsTest::projectFileKeepsTheAnalogueCams() {
+    // A saved project holds the analogue cams as the page shows them, an
+    // edit included (they were left out of the file before).
+    auto shell = startOnTable();
+    QVERIFY(shell);
+    auto* analogue = shell->window()->findChild<AnalogueCamsPage*>();
+    QTRY_COMPARE_WITH_TIMEOUT(analogue->onDevice().points.size(), 3, kDeviceTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!camConWindow(shell->window())->isReadingDevice(), kDeviceTimeoutMs);
+    AnalogueCamTrack edited = analogue->onDevice();
+    edited.points.last().value += 1;
+    analogue->setEdited(edited);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("p.json"));
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
+    const Result<Project> saved = loadProject(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error().message));
+    bool found = false;
+    for (const AnalogueCamTrack& track : saved->analogueCams) found |= track == edited;
+    QVERIFY(found);
 }
 
 void TablePageEditsTest::compareListsAndWritesTheTableSections() {

@@ -2,6 +2,7 @@
 // change keeps with each CarryOver, the totals and the signals, and the
 // dead-time modes' rule of outputs the device lacks. Two devices that
 // differ, A and B.
+#include "ui/camcon/cameditor/cam_document.h"
 #include "ui/camcon/workspace.h"
 
 #include <QSignalSpy>
@@ -63,10 +64,18 @@ void editEach(Workspace& workspace) {
     PlcNetwork network = workspace.plcNetwork(PlcNetwork::M, 3);
     network.value = 99;
     workspace.plc().edit(Workspace::plcKey(PlcNetwork::M, 3), network);
-    workspace.deadTimeModes().edit(1, {DeadTimeMode::SeparateOnOff, 0, 1, 2});
+    workspace.editDeadTimeMode(1, {DeadTimeMode::SeparateOnOff, 5, 1, 2});  // A's dead time kept
     workspace.analogueCams().edit(2, {2, {{30, 300}}});
     workspace.programmingProgram().edit({9, 0, 0});
     workspace.eepromLock().edit(false);
+}
+
+// The outputs 1..8 whose dead-time mode, or its dead time, is edited.
+QList<int> changedModes(const Workspace& workspace) {
+    QList<int> outputs;
+    for (int output = 1; output <= 8; ++output)
+        if (workspace.deadTimeModeChanged(output)) outputs << output;
+    return outputs;
 }
 
 }  // namespace
@@ -100,9 +109,11 @@ private Q_SLOTS:
         QTest::addColumn<int>("changedAfter");
         QTest::newRow("nothing") << int(CarryOver::Nothing) << 0;
         QTest::newRow("changes") << int(CarryOver::Changes) << 2;
-        // Every item shown: 2 settings, 1 network, 2 modes, 1 analogue
-        // output, the programming program, the lock.
-        QTest::newRow("everything") << int(CarryOver::Everything) << 8;
+        // Every item shown: 2 settings, 1 network, 2 modes, output 1's dead
+        // time (word 0, in the cam section; output 2's is 0, which a device
+        // without it holds too), 1 analogue output, the programming
+        // program, the lock.
+        QTest::newRow("everything") << int(CarryOver::Everything) << 9;
     }
     void anotherDeviceKeepsWhatCarryOverSays() {
         QFETCH(int, carry);
@@ -111,7 +122,7 @@ private Q_SLOTS:
         read(workspace, deviceA(), false);
         workspace.setCopiesFrom(DeviceInfo{});
         workspace.settings().edit(QStringLiteral("speedFactor"), 1);
-        workspace.deadTimeModes().edit(2, {DeadTimeMode::Normal, 1, 0, 0});
+        workspace.editDeadTimeMode(2, {DeadTimeMode::Normal, 0, 0, 0});
         QSignalSpy modes(&workspace, &Workspace::deadTimeModesChanged);
         QSignalSpy tables(&workspace, &Workspace::tableSectionsChanged);
         workspace.forgetDeviceCopies(QStringLiteral("another device"), CarryOver(carry));
@@ -135,12 +146,49 @@ private Q_SLOTS:
                                    {5, {DeadTimeMode::Normal, 8, 0, 0}}};
         // Before a read both wait as edits for the device's rows.
         workspace.mergeDeadTimeModes(wanted, ValueSource::File, false);
-        QCOMPARE(workspace.deadTimeModes().changedKeys(), (QList<int>{1, 5}));
+        QCOMPARE(changedModes(workspace), (QList<int>{1, 5}));
         workspace.mergeDeadTimeModes(deviceB().modes, ValueSource::Device, true);
-        QCOMPARE(workspace.deadTimeModes().changedKeys(), QList<int>{1});
+        QCOMPARE(changedModes(workspace), QList<int>{1});
+        QCOMPARE(workspace.deadTimeMode(1)->normal, 7);  // the project's, over B's 6
         // Once read, a project's output the device lacks is no edit.
         workspace.mergeDeadTimeModes(wanted, ValueSource::File, false);
-        QCOMPARE(workspace.deadTimeModes().changedKeys(), QList<int>{1});
+        QCOMPARE(changedModes(workspace), QList<int>{1});
+    }
+
+    // Word 0 of a dead-time mode is the plain dead time of the Dead times
+    // page (issue 38, item 3): one value, whichever page it is typed on,
+    // read or written through.
+    void theDeadTimeOfModeNormalHasOneHome() {
+        Workspace workspace;
+        read(workspace, deviceA(), false);
+        CamDocument& cams = *workspace.cams();
+        QCOMPARE(cams.deadTime(1), 5);  // read with the modes
+        QCOMPARE(cams.deviceDeadTime(1), std::optional<qint32>(5));
+        QSignalSpy modes(&workspace, &Workspace::deadTimeModesChanged);
+        // Typed on the Dead times page: the modes page shows it, edited.
+        cams.setDeadTime(1, 42);
+        QVERIFY(!modes.isEmpty());
+        QCOMPARE(workspace.deadTimeMode(1)->normal, 42);
+        QCOMPARE(workspace.deviceDeadTimeMode(1)->normal, 5);
+        QVERIFY(workspace.deadTimeModeChanged(1));
+        QCOMPARE(workspace.changedCount(), 1);  // one item, not one on each page
+        // Typed on the Dead-time modes page: the Dead times page shows it.
+        workspace.editDeadTimeMode(1, {DeadTimeMode::Normal, 43, 0, 0});
+        QCOMPARE(cams.deadTime(1), 43);
+        QCOMPARE(workspace.changedCount(), 1);
+        // A plain dead time written and read back: no edit on either page.
+        cams.setDeviceDeadTime(1, 43);
+        QVERIFY(!workspace.deadTimeModeChanged(1));
+        QCOMPARE(workspace.changedCount(), 0);
+        // A mode written and read back: the plain dead time's device copy too.
+        workspace.editDeadTimeMode(2, {DeadTimeMode::Normal, 12, 0, 0});
+        QCOMPARE(workspace.changedCount(), 2);  // its mode and its dead time
+        workspace.setDeviceDeadTimeMode(2, {DeadTimeMode::Normal, 12, 0, 0});
+        QCOMPARE(cams.deviceDeadTime(2), std::optional<qint32>(12));
+        QCOMPARE(workspace.changedCount(), 0);
+        // What a project saves is the one value.
+        QCOMPARE(workspace.shownDeadTimeModes().value(2).normal, 12);
+        QCOMPARE(cams.deadTimes().value(2), 12);
     }
 
     void aSectionTheProtocolLacksForgetsItsDeviceCopyOnly() {

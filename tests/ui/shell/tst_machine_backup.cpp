@@ -35,31 +35,9 @@ namespace {
 const QStringList kNames{QStringLiteral("cams"), QStringLiteral("press-plc"),
                          QStringLiteral("feed")};
 
-// Waits for the run's end; false when it did not end in time.
-bool waitDone(MachineBackupRun* run) {
-    QSignalSpy finished(run, &MachineBackupRun::finished);
-    return run->isDone() || finished.wait(kDeviceTimeoutMs);
-}
-
-MachineManifest manifestIn(const QString& dir) {
-    const Result<QByteArray> bytes = readFileBytes(QDir(dir).filePath(kMachineManifestFile));
-    if (!bytes) return {};
-    const Result<MachineManifest> manifest = parseManifest(*bytes, dir);
-    return manifest ? *manifest : MachineManifest{};
-}
-
 // A device of each family open in a machine's window; a backup folder's path.
-struct Opened {
-    Shell shell;
-    Machine* machine = nullptr;
-    QTemporaryDir folder;
-    QString dir;
-};
-std::unique_ptr<Opened> openThreeFamilies() {
-    auto open = std::make_unique<Opened>();
-    open->machine = open->shell.openMachine(threeFamilies(), {});
-    open->dir = open->folder.filePath(QStringLiteral("press-backup"));
-    return open;
+std::unique_ptr<OpenedMachine> openThreeFamilies() {
+    return openWithBackupFolder(threeFamilies(), QStringLiteral("press-backup"));
 }
 
 }  // namespace
@@ -70,7 +48,7 @@ private Q_SLOTS:
     void initTestCase() { useTestSettings(); }
 
     void backsUpVerifiesAndRestoresEveryDevice() {
-        const std::unique_ptr<Opened> open = openThreeFamilies();
+        const std::unique_ptr<OpenedMachine> open = openThreeFamilies();
         QVERIFY(waitIdentified(*open->machine));
         Machine* machine = open->machine;
         const QString dir = open->dir;
@@ -173,7 +151,7 @@ private Q_SLOTS:
     // one the person does not accept as the backup's is not restored, and
     // each line says so; the others go on. Nothing says "done" for them.
     void eachDeviceNotDoneSaysSo() {
-        const std::unique_ptr<Opened> open = openThreeFamilies();
+        const std::unique_ptr<OpenedMachine> open = openThreeFamilies();
         QVERIFY(waitIdentified(*open->machine));
         Machine* machine = open->machine;
         const QString dir = open->dir;
@@ -185,10 +163,7 @@ private Q_SLOTS:
         for (ManifestEntry& entry : manifest.devices)
             if (entry.name == QLatin1String("press-plc"))
                 entry.identity.set(entry.identity.values().firstKey(), QStringLiteral("other"));
-        QFile file(QDir(dir).filePath(kMachineManifestFile));
-        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        file.write(manifestJson(manifest));
-        file.close();
+        QVERIFY(rewriteManifest(dir, manifest));
 
         MachineBackupRun* verify = machine->window()->verifyFrom(dir);
         QVERIFY(waitDone(verify));
@@ -200,21 +175,11 @@ private Q_SLOTS:
 
         // Each question declined: the MC200 is not the backup's (its
         // identity's question), then the CamCon's restore is cancelled.
-        QStringList asked;
-        QTimer answering;
-        answering.setInterval(10);
-        connect(&answering, &QTimer::timeout, this, [&asked] {
-            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-            if (!box || box->property("answered").toBool()) return;
-            box->setProperty("answered", true);
-            asked << box->objectName();
-            box->reject();
-        });
-        answering.start();
+        const DeclineEveryQuestion declining;
         MachineBackupRun* restore = machine->window()->restoreFrom(dir);
         QVERIFY(waitDone(restore));
-        QCOMPARE(asked, (QStringList{QStringLiteral("replacementQuestion"),
-                                     QStringLiteral("machineRestoreQuestion")}));
+        QCOMPARE(declining.asked(), (QStringList{QStringLiteral("replacementQuestion"),
+                                                 QStringLiteral("machineRestoreQuestion")}));
         QCOMPARE(restore->progress()->resultLine(QStringLiteral("feed")),
                  QStringLiteral("not restored: not in this backup"));
         const QString plc = restore->progress()->resultLine(QStringLiteral("press-plc"));

@@ -9,6 +9,7 @@
 // program at a time, the MC200 keeping its table; and those changed since
 // a version on the device, compared with the devices now (each backed up
 // into a temporary folder, as `machine watch` does).
+#include "history_fixture.h"
 #include "shell_fixture.h"
 
 #include "comm/camcon/camcon_device.h"
@@ -74,44 +75,6 @@ MachineFile press() {
     return file;
 }
 
-// Waits for `result` of a job on `unit`'s worker.
-template <class Device, class T>
-std::optional<Result<T>> runOn(MachineUnit* unit, DeviceSession::Work<Device, T> work) {
-    std::optional<Result<T>> answer;
-    QObject context;
-    unit->session()->run<Device, T>(&context, QStringLiteral("test"), std::move(work),
-                                    [&answer](Result<T> result) { answer = std::move(result); });
-    if (!QTest::qWaitFor([&answer] { return answer.has_value(); }, kDeviceTimeoutMs)) return {};
-    return answer;
-}
-
-// Every device backed up into a new folder and stored as a version of
-// `archive` (what `machine backup --archive` does on the command line).
-Result<usecases::VersionStored> storeVersion(Machine* machine, const MachineArchive& archive,
-                                             const QString& note) {
-    QTemporaryDir staged;
-    MachineManifest manifest;
-    manifest.machine = machine->name();
-    manifest.author = BackupAuthor{QStringLiteral("tester"), note, {}, {}};
-    MachineFile file = machine->file();
-    for (MachineUnit* unit : machine->units()) {
-        const MachineDevice device = unit->device();
-        const auto taken = runOn<comm::DeviceConnection, usecases::DeviceBackedUp>(
-            unit, [&](comm::DeviceConnection&, comm::JobContext& job) {
-                return Result<usecases::DeviceBackedUp>(
-                    usecases::backUpMachineDevice(job, device, staged.path(), false));
-            });
-        if (!taken || !*taken) return Error::communication(QStringLiteral("no backup"));
-        manifest.devices << (*taken)->entry;
-    }
-    if (!writeFileAtomically(QDir(staged.path()).filePath(kMachineBackupFile),
-                             machineFileJson(file)) ||
-        !writeFileAtomically(QDir(staged.path()).filePath(kMachineManifestFile),
-                             manifestJson(manifest)))
-        return Error::invalidData(QStringLiteral("not written"));
-    return usecases::storeMachineVersion(archive, staged.path(), manifest.author);
-}
-
 bool writeVariable(MachineUnit* plc, int number, qint64 value) {
     const auto written =
         runOn<comm::Mc1Device, Done>(plc, [=](comm::Mc1Device& device, comm::JobContext&) {
@@ -132,34 +95,6 @@ QStringList textsOf(const QListWidget* list) {
     QStringList texts;
     for (int row = 0; row < list->count(); ++row) texts << list->item(row)->text();
     return texts;
-}
-
-bool waitConnected(const Machine& machine) {
-    return QTest::qWaitFor(
-        [&machine] {
-            for (const MachineUnit* unit : machine.units())
-                if (unit->lamp() != MachineUnit::Lamp::Connected ||
-                    !unit->session()->deviceChecked())
-                    return false;
-            return true;
-        },
-        kDeviceTimeoutMs);
-}
-
-void selectVersions(QTreeWidget* list, const QList<int>& rows) {
-    list->clearSelection();
-    for (int row : rows) list->topLevelItem(row)->setSelected(true);
-}
-
-QStringList rowsOf(const QTableWidget* table) {
-    QStringList rows;
-    for (int row = 0; row < table->rowCount(); ++row) {
-        QStringList cells;
-        for (int column = 0; column < table->columnCount(); ++column)
-            cells << (table->item(row, column) ? table->item(row, column)->text() : QString());
-        rows << cells.join(u'|');
-    }
-    return rows;
 }
 
 // A machine of simulated devices, connected, whose CamCon holds `cams`

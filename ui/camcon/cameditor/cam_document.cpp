@@ -179,6 +179,17 @@ void CamDocument::mergeOutputSettings(const QMap<int, QString>& outputNames,
     notifyChangedCount();
 }
 
+void CamDocument::mergeDeadTime(int output, qint32 deadTime, bool fromDevice, bool keepEdits) {
+    const bool edited = m_carriedDeadTimes.contains(output) ||
+                        m_deadTimes.value(output) != m_deviceDeadTimes.value(output);
+    if (fromDevice || !keepEdits) m_carriedDeadTimes.remove(output);
+    if (fromDevice) m_deviceDeadTimes.insert(output, deadTime);
+    if (!(keepEdits && edited) && m_deadTimes.value(output) != deadTime)
+        applyDeadTime(output, deadTime);
+    Q_EMIT deviceStateChanged();
+    notifyChangedCount();
+}
+
 int CamDocument::outputSettingsEditCount() const {
     int count = 0;
     for (int output = 1; output <= m_info.outputs; ++output) {
@@ -302,7 +313,10 @@ void CamDocument::forgetDeviceCopies(CarryOver carry) {
         const bool known = m_outputSettingsKnown;
         if (known ? name != m_deviceOutputNames.value(output) || all : !name.isEmpty())
             outputNames.insert(output);
-        if (known ? deadTime != m_deviceDeadTimes.value(output) || all : deadTime != 0)
+        // A dead time is known alone too: read or written with its output's
+        // dead-time mode (table interface).
+        const bool timeKnown = known || m_deviceDeadTimes.contains(output);
+        if (timeKnown ? deadTime != m_deviceDeadTimes.value(output) || all : deadTime != 0)
             deadTimes.insert(output);
     }
     QList<int> programs = m_edited.keys() + m_device.keys();

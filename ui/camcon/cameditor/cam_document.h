@@ -80,6 +80,7 @@ public:
     void clear() override;
     void mergeOutputSettings(const QMap<int, QString>& outputNames, const DeadTimes& deadTimes,
                              bool fromDevice, bool keepEdits) override;
+    void mergeDeadTime(int output, qint32 deadTime, bool fromDevice, bool keepEdits) override;
     // Takes the device's program / output settings as device copy and
     // edited state (mergeProgram from the device, not keeping edits).
     void loadProgramFromDevice(const CamProgram& program) { mergeProgram(program, true, false); }
@@ -97,7 +98,7 @@ public:
     // program name of a program whose device copy is unknown stays unknown.
     void setDeviceTrack(int program, const Track& track);
     void setDeviceProgramName(int program, const QString& name);
-    void setDeviceDeadTime(int output, qint32 deadTime);
+    void setDeviceDeadTime(int output, qint32 deadTime) override;
     void setDeviceOutputName(int output, const QString& name);
     // One track's state on the device is no longer known (its write was cut
     // off): that output shows "not read" and is written again; the rest of
@@ -155,7 +156,7 @@ public:
     void replaceTracks(int program, const QMap<int, Track>& tracks, const QString& text);
     void setProgramName(int program, const QString& name);
     void setOutputName(int output, const QString& name);
-    void setDeadTime(int output, qint32 deadTime);
+    void setDeadTime(int output, qint32 deadTime) override;
 
     // For the undo commands: change state without recording undo.
     void applyTrack(int program, const Track& track);

@@ -327,10 +327,10 @@ void ReportAndCountsTest::reportShowsOnlyValuesOfTheConnectedDevice() {
     camConWindow(shell->window())->readEverything(0);
     QVERIFY(done.wait(kDeviceTimeoutMs));
     QTRY_VERIFY_WITH_TIMEOUT(!workspace->deadTimeModes().device().isEmpty(), kDeviceTimeoutMs);
-    const OutputDeadTime first = workspace->deadTimeModes().value(1).value_or(OutputDeadTime{});
+    const OutputDeadTime first = workspace->deadTimeMode(1).value_or(OutputDeadTime{});
     OutputDeadTime edited = first;
-    edited.normal += 10;
-    workspace->deadTimeModes().edit(1, edited);
+    edited.on += 10;  // the mode's own word (word 0 is the Dead times section's)
+    workspace->editDeadTimeMode(1, edited);
     QVERIFY(reportText(*workspace).contains(QStringLiteral("(device: ")));
 
     const comm::ProtocolInfo* cambus =
