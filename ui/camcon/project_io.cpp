@@ -38,8 +38,10 @@ Project projectFromWorkspace(const Workspace& workspace) {
         project.readAt.parts.insert(ProjectPart::Users, read.parts.value(ProjectPart::Users));
     project.plcNetworks = workspace.plc().shown().values();
     // As the Dead-time modes page shows them, edits included.
+    // Stamped as read only when no mode differs from the device's, its dead
+    // time (word 0, edited on either page) included.
     project.deadTimeModes = workspace.shownDeadTimeModes();
-    if (workspace.deadTimeModes().changedCount() == 0 &&
+    if (project.deadTimeModes == workspace.deviceDeadTimeModes() &&
         read.parts.contains(ProjectPart::DeadTimeModes))
         project.readAt.parts.insert(ProjectPart::DeadTimeModes,
                                     read.parts.value(ProjectPart::DeadTimeModes));

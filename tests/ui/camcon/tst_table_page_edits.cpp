@@ -243,6 +243,14 @@ void TablePageEditsTest::aDeadTimeIsOneValueOnBothPages() {
         6.0);
     QVERIFY(modes->table()->item(3, DeadTimeModesPage::NormalColumn)->font().bold());
     QCOMPARE(camConWorkspace(*shell)->changedCount(), before + 2);
+    // A project saved now does not call the modes read from the device.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("p.json"));
+    QVERIFY(camConWindow(shell->window())->saveProjectTo(path).ok());
+    const Result<Project> saved = loadProject(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.error().message));
+    QCOMPARE(saved->deadTimeModes.value(4).normal, 60);
+    QVERIFY(!saved->readAt.parts.contains(ProjectPart::DeadTimeModes));
 
     // Written from the modes page: both outputs, once each; no edit stays on either page.
     std::optional<WriteResult> result;
